@@ -1,0 +1,14 @@
+"""electrogrowth: growth, voltage and wrinkling of soft electro-elastic tubes."""
+
+from .errors import (BaseStateError, ConvergenceError, ElectrogrowthError, MaterialError,
+                     NoBifurcationFound, ParameterError)
+from .materials import Material, gent, material_by_name, mooney_rivlin, neo_hookean
+from .params import TubeParameters
+
+__all__ = [
+    "BaseStateError", "ConvergenceError", "ElectrogrowthError", "MaterialError",
+    "NoBifurcationFound", "ParameterError",
+    "Material", "gent", "material_by_name", "mooney_rivlin", "neo_hookean",
+    "TubeParameters",
+]
+__version__ = "0.1.0"
