@@ -108,6 +108,11 @@ def _energy_derivatives(energy: sp.Expr) -> Callable:
     return sp.lambdify(INVARIANTS, (first, second), "numpy")
 
 
+@functools.lru_cache(maxsize=64)
+def _energy_value(energy: sp.Expr) -> Callable:
+    return sp.lambdify(INVARIANTS, energy, "numpy")
+
+
 def _invariants(l1, l2, l3, d):
     dt2 = (d / l1) ** 2
     return (l1**2 + l2**2 + l3**2, (l1 * l2) ** 2 + (l2 * l3) ** 2 + (l3 * l1) ** 2,
@@ -138,7 +143,13 @@ class Material:
     energy: sp.Expr
 
     def __post_init__(self):
-        expr = sp.sympify(self.energy)
+        # Match invariants by name, so sp.Symbol("I1") or a string energy work too.
+        names = {str(s): s for s in INVARIANTS}
+        try:
+            expr = sp.sympify(self.energy, locals=names)
+        except (sp.SympifyError, TypeError) as exc:
+            raise MaterialError(f"energy of {self.name!r} is not an expression: {exc}") from None
+        expr = expr.subs({s: names[str(s)] for s in expr.free_symbols if str(s) in names})
         extra = expr.free_symbols - set(INVARIANTS)
         if extra:
             raise MaterialError(
@@ -148,13 +159,24 @@ class Material:
 
     def _derivs(self, l1, l2, l3, d):
         l1, l2, l3, d = np.broadcast_arrays(*(np.asarray(x, float) for x in (l1, l2, l3, d)))
-        w, W = _energy_derivatives(self.energy)(*_invariants(l1, l2, l3, d))
+        inv = _invariants(l1, l2, l3, d)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            omega = np.asarray(_energy_value(self.energy)(*inv), dtype=float)
+        if not np.all(np.isfinite(omega)):
+            bad = np.argmax(~np.isfinite(np.broadcast_to(omega, l1.shape)).ravel())
+            raise ParameterError(
+                f"deformation outside the domain of {self.name!r} (I1 = "
+                f"{np.ravel(inv[0])[bad]:.6g}): the energy is not finite there")
+        w, W = _energy_derivatives(self.energy)(*inv)
         w = [np.broadcast_to(np.asarray(x, float), l1.shape) for x in w]
         W = [np.broadcast_to(np.asarray(x, float), l1.shape) for row in W for x in row]
         return (l1, l2, l3, d, w, W)
 
     def stress(self, l1, l2, l3, d):
-        """Principal tau_i = sigma_ii + p (i = r, theta, z), total (Maxwell included)."""
+        """Principal tau_i = sigma_ii + p (i = r, theta, z), total (Maxwell included).
+
+        Shape ``(3,) + broadcast shape``: the component is the FIRST axis.
+        """
         tau_f, _, _ = _universal_forms()
         return np.array(tau_f(*self._derivs(l1, l2, l3, d)), dtype=float)
 
@@ -189,7 +211,7 @@ def gent(jm: float = 97.2) -> Material:
     ``jm`` > 0 is the dimensionless stiffening parameter; jm -> infinity recovers
     neo-Hookean. 97.2 is the classical value for VHB-type elastomers.
     """
-    if not np.isfinite(jm) or jm <= 0:
+    if isinstance(jm, bool) or not isinstance(jm, (int, float)) or not np.isfinite(jm) or jm <= 0:
         raise ParameterError(f"Gent parameter jm = {jm!r} is invalid; need 0 < jm < inf")
     jm = sp.nsimplify(jm) if float(jm).is_integer() else sp.Float(jm)
     return Material(f"gent(jm={float(jm):g})", -jm / 2 * sp.log(1 - (I1 - 3) / jm) + I5 / 2)
@@ -200,7 +222,7 @@ def mooney_rivlin(alpha: float = 0.5) -> Material:
 
     ``alpha`` in (0, 1] splits the unit shear modulus; alpha = 1 is neo-Hookean.
     """
-    if not (0 < alpha <= 1):
+    if isinstance(alpha, bool) or not isinstance(alpha, (int, float)) or not (0 < alpha <= 1):
         raise ParameterError(f"Mooney-Rivlin alpha = {alpha!r} is invalid; need 0 < alpha <= 1")
     a = sp.Float(alpha)
     return Material(f"mooney-rivlin(alpha={alpha:g})",
@@ -224,7 +246,7 @@ def neo_hookean_moduli(l1, l2, l3, d):
     """Closed-form moduli of the ideal neo-Hookean dielectric (paper Sec. 4.2).
 
     A_0piqj = delta_ij (B_pq + D_p D_q), Gamma_0 from I5/2 and K_0 = I, derived in
-    docs/derivation.md; used as a fast path and to test the generic route.
+    docs/derivation-stroh.md; used as a fast path and to test the generic route.
     """
     l1, l2, l3, d = np.broadcast_arrays(*(np.asarray(x, float) for x in (l1, l2, l3, d)))
     out = np.zeros(l1.shape + (len(MODULI_NAMES),))

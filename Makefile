@@ -1,0 +1,47 @@
+# electrogrowth developer tasks. Needs only GNU make and python3 (>= 3.11):
+# the first target run creates the virtualenv $(VENV) and installs the package into it.
+
+PYTHON ?= python3
+VENV ?= .venv
+BIN := $(VENV)/bin
+OUT ?= out
+
+.PHONY: install test test-slow demo bench figures clean distclean
+
+# Re-install only when pyproject.toml changes (the stamp is older than it).
+$(VENV)/.installed: pyproject.toml
+	$(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install -q --upgrade pip
+	$(BIN)/python -m pip install -q -e '.[test]'
+	touch $@
+
+# The heavier optional extras (sweep = xarray/zarr/dask, vtk = meshio), on demand.
+$(VENV)/.installed-%: $(VENV)/.installed
+	$(BIN)/python -m pip install -q -e '.[test,$*]'
+	touch $@
+
+install: $(VENV)/.installed
+
+test: $(VENV)/.installed
+	$(BIN)/python -m pytest -q
+
+# Exit status 5 (no test selected) is not a failure while no test is marked slow.
+test-slow: $(VENV)/.installed
+	$(BIN)/python -m pytest -q -m slow || [ $$? -eq 5 ]
+
+demo: $(VENV)/.installed
+	$(BIN)/electrogrowth demo --out $(OUT)
+
+bench: $(VENV)/.installed-sweep
+	$(BIN)/python -m electrogrowth.bench
+
+figures: $(VENV)/.installed
+	$(BIN)/electrogrowth reproduce --out $(OUT)/figures
+
+clean:
+	rm -rf $(OUT) build .pytest_cache src/*.egg-info
+	find . -path ./$(VENV) -prune -o -name __pycache__ -type d -prune -exec rm -rf {} +
+
+# clean, and also remove the virtualenv.
+distclean: clean
+	rm -rf $(VENV)

@@ -1,0 +1,29 @@
+"""Shared fixtures. Plots are drawn off-screen (MPLBACKEND=Agg) before anything imports
+matplotlib."""
+
+import os
+
+os.environ["MPLBACKEND"] = "Agg"
+
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+
+from electrogrowth.materials import gent, neo_hookean  # noqa: E402
+
+
+@pytest.fixture
+def neo():
+    """The ideal neo-Hookean dielectric, Omega = (I1 - 3)/2 + I5/2."""
+    return neo_hookean()
+
+
+@pytest.fixture
+def gent_mat():
+    """The ideal Gent dielectric with the VHB value jm = 97.2."""
+    return gent(97.2)
+
+
+@pytest.fixture
+def rng():
+    """A seeded generator: every run draws the same 'random' points."""
+    return np.random.default_rng(20240611)
