@@ -4,6 +4,9 @@ matplotlib."""
 import os
 
 os.environ["MPLBACKEND"] = "Agg"
+# Small dense matrices only: BLAS threads just contend with numba's on 2 cores.
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+os.environ.setdefault("OMP_NUM_THREADS", "1")
 
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
