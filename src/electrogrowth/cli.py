@@ -1,0 +1,200 @@
+"""The ``electrogrowth`` command line (also ``python -m electrogrowth``).
+
+Each subcommand is a pair of functions in :data:`COMMANDS`: ``configure(parser)`` adds its
+options, ``run(args) -> int`` does the work. :func:`main` parses, dispatches and turns every
+failure into one line ``electrogrowth: error: <message>`` on stderr with exit status 2
+(1 for an unexpected internal error); no traceback reaches the user. To add a subcommand,
+write the two functions and add an entry to :data:`COMMANDS`; to add a figure, add an entry
+to :data:`FIGURES`.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+from pathlib import Path
+from typing import Callable
+
+from . import __version__, figures_base
+from .errors import ElectrogrowthError, ParameterError
+from .materials import BUILTIN, material_by_name
+from .params import TubeParameters
+from .tube import solve_base_state
+
+PROG = "electrogrowth"
+
+#: Paper figure number -> function(*, quick: bool) returning a figures_base.FigureResult;
+#: the first line of its docstring is the help text.
+FIGURES: dict[int, Callable[..., figures_base.FigureResult]] = {
+    4: figures_base.figure4,
+    5: figures_base.figure5,
+}
+
+
+class UsageError(Exception):
+    """A bad command line (raised by the parser instead of printing usage and exiting)."""
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message):
+        raise UsageError(message)
+
+
+def _number(text: str) -> float:
+    """A finite real number (ranges are checked by TubeParameters, which names the value)."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
+    if not math.isfinite(value):
+        raise argparse.ArgumentTypeError(f"{text!r} is not a finite number")
+    return value
+
+
+# -- state -----------------------------------------------------------------------------------
+
+def configure_state(parser: argparse.ArgumentParser) -> None:
+    tube = parser.add_argument_group("tube and loading (units mu = eps = R_i = 1)")
+    tube.add_argument("--outer-radius", type=_number, required=True, metavar="RBAR_O",
+                      help="Rbar_o = R_o / R_i > 1, undeformed outer over inner radius")
+    tube.add_argument("--growth", type=_number, default=1.0, metavar="G",
+                      help="isotropic growth factor g > 0, F_g = g I (default 1: no growth)")
+    tube.add_argument("--stretch", type=_number, default=1.0, metavar="LAMBDA_Z",
+                      help="total axial stretch lambda_z = l / L > 0, growth included"
+                           " (default 1)")
+    tube.add_argument("--voltage", type=_number, default=0.0, metavar="VBAR",
+                      help="Vbar = V / (R_o - R_i) sqrt(eps / mu) >= 0, the radial voltage;"
+                           " must stay below the threshold (default 0)")
+    tube.add_argument("--length", type=_number, default=1.0, metavar="L",
+                      help="L / R_i > 0, undeformed length; does not change the base state"
+                           " (default 1)")
+    mat = parser.add_argument_group("material (ideal dielectric, Omega = W + I5 / 2)")
+    mat.add_argument("--material", choices=sorted(BUILTIN), default="neo-hookean",
+                     help="elastic energy W (default neo-hookean)")
+    mat.add_argument("--jm", type=_number, metavar="JM",
+                     help="Gent stiffening parameter J_m > 0 (only with --material gent;"
+                          " default 97.2)")
+    mat.add_argument("--alpha", type=_number, metavar="ALPHA",
+                     help="Mooney-Rivlin weight 0 < alpha <= 1 of I1 (only with"
+                          " --material mooney-rivlin; default 0.5)")
+    parser.add_argument("--json", action="store_true",
+                        help="print one JSON object instead of text")
+
+
+def _material(args):
+    options = {}
+    for flag, name, owner in (("--jm", "jm", "gent"), ("--alpha", "alpha", "mooney-rivlin")):
+        value = getattr(args, name)
+        if value is not None:
+            if args.material != owner:
+                raise ParameterError(f"{flag} = {value:g} applies only to --material {owner},"
+                                     f" not {args.material}")
+            options[name] = value
+    return material_by_name(args.material, **options)
+
+
+def state_record(state) -> dict:
+    """The JSON record of a base state (inf -> null): geometry, charge, threshold, axial force
+    and the extremes of the three principal Cauchy stresses over 401 points of the wall."""
+    p = state.params
+    prof = state.profiles(401)
+    finite = lambda x: float(x) if math.isfinite(x) else None  # noqa: E731
+    record = {
+        "material": p.material.name, "outer_radius": p.outer_radius, "growth": p.growth,
+        "stretch": p.stretch, "voltage": p.voltage, "length": p.length,
+        "lambda_i": state.lambda_i, "lambda_o": state.lambda_o, "r_i": state.r_i,
+        "r_o": state.r_o, "charge": state.charge,
+        "voltage_threshold": finite(state.voltage_threshold),
+        "threshold_kind": state.threshold_kind, "axial_force": state.axial_force,
+    }
+    for key in ("sigma_rr", "sigma_tt", "sigma_zz"):
+        record[f"{key}_min"] = float(prof[key].min())
+        record[f"{key}_max"] = float(prof[key].max())
+    return record
+
+
+def run_state(args) -> int:
+    params = TubeParameters(outer_radius=args.outer_radius, length=args.length,
+                            growth=args.growth, stretch=args.stretch, voltage=args.voltage,
+                            material=_material(args))
+    rec = state_record(solve_base_state(params))
+    if args.json:
+        print(json.dumps(rec))
+        return 0
+    thr = rec["voltage_threshold"]
+    lines = [
+        f"base state: {rec['material']}, Rbar_o = {params.outer_radius:g}, g = {params.growth:g},"
+        f" lambda_z = {params.stretch:g}, Vbar = {params.voltage:g}",
+        f"  lambda_i = r_i / R_i         {rec['lambda_i']:.12g}",
+        f"  lambda_o = r_o / R_o         {rec['lambda_o']:.12g}",
+        f"  r_i, r_o                     {rec['r_i']:.12g}, {rec['r_o']:.12g}",
+        f"  charge c (D_r = c / r)       {rec['charge']:.12g}",
+        f"  Vbar threshold               {'none (unbounded)' if thr is None else f'{thr:.12g}'}"
+        f" ({rec['threshold_kind']})",
+        f"  axial force N / (mu R_i^2)   {rec['axial_force']:.12g}",
+    ]
+    for key, name in (("sigma_rr", "sigma_rr"), ("sigma_tt", "sigma_theta"),
+                      ("sigma_zz", "sigma_zz")):
+        lines.append(f"  {name + ' / mu (min, max)':<29}{rec[key + '_min']:.6g},"
+                     f" {rec[key + '_max']:.6g}")
+    print("\n".join(lines))
+    return 0
+
+
+# -- figure ----------------------------------------------------------------------------------
+
+def configure_figure(parser: argparse.ArgumentParser) -> None:
+    titles = ((n, (FIGURES[n].__doc__ or "").strip().split("\n")[0].rstrip("."))
+              for n in sorted(FIGURES))
+    parser.add_argument("number", type=int, choices=sorted(FIGURES),
+                        help="paper figure: " + "; ".join(f"{n}: {t}" for n, t in titles))
+    parser.add_argument("--out", type=Path, default=Path("out"), metavar="DIR",
+                        help="directory for fig<N>.png and fig<N>.csv (default ./out)")
+    parser.add_argument("--quick", action="store_true",
+                        help="low resolution (previews and tests)")
+
+
+def run_figure(args) -> int:
+    result = FIGURES[args.number](quick=args.quick)
+    for path in result.save(args.out):
+        print(path)
+    return 0
+
+
+#: Subcommand name -> (one-line help, configure(parser), run(args) -> exit status).
+COMMANDS: dict[str, tuple[str, Callable, Callable]] = {
+    "state": ("solve the axisymmetric base state of a grown, stretched, charged tube",
+              configure_state, run_state),
+    "figure": ("reproduce a figure of the paper (PNG + CSV)", configure_figure, run_figure),
+}
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = _Parser(prog=PROG, description="Growth, voltage and wrinkling of soft"
+                     " electro-elastic tubes (units mu = eps = R_i = 1).")
+    parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    for name, (help_text, configure, run) in COMMANDS.items():
+        cmd = sub.add_parser(name, help=help_text, description=help_text)
+        configure(cmd)
+        cmd.set_defaults(run=run)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run the command line; return the exit status (0 ok, 2 bad input, 1 internal error)."""
+    try:
+        try:
+            args = build_parser().parse_args(argv)
+        except SystemExit as done:  # --help, --version
+            return done.code if isinstance(done.code, int) else 0
+        return args.run(args)
+    except (UsageError, ElectrogrowthError) as exc:
+        print(f"{PROG}: error: {' '.join(str(exc).split())}", file=sys.stderr)
+        return 2
+    except Exception as exc:  # a bug: still one line, never a traceback
+        print(f"{PROG}: internal error: {type(exc).__name__}: {' '.join(str(exc).split())}",
+              file=sys.stderr)
+        return 1
