@@ -1,0 +1,302 @@
+"""Compiled surface-impedance kernel: the Riccati equation through the wall, batched.
+
+For a mode (m, k) the solutions of the Stroh system d eta/dr = G eta / r (paper eq. Stroh)
+that satisfy the inner-face conditions S(r_i) = 0 span a 4-dimensional subspace. Written
+as S = z U, its conditional impedance z obeys the Riccati equation (paper eq. Riccati)
+
+    dz/dr = (1/r) (G3 + G4 z - z G1 - z G2 z),     z(r_i) = 0,
+
+and the tube bifurcates when det z(r_o) = 0. The impedance has poles inside the wall for
+some parameters (the subspace stops being a graph over U), so a naive search reports them
+as roots. We therefore integrate the same subspace in whichever of the 16 coordinate
+charts of the Lagrangian Grassmannian keeps it bounded: chart J exchanges (U_j, S_j) ->
+(S_j, -U_j) for j in J, a symplectic swap under which the Riccati form and the symmetry of
+z are preserved. J = {} is the paper's impedance, J = {0,1,2,3} its inverse. The target
+
+    f = sign(det U~) det(z~[J', J']) / sqrt(det(I + z~^T z~)),   J' = complement of J,
+
+equals det(M2) / sqrt(det(M^T M)) for the propagated basis M = [M1; M2] of the subspace:
+it is continuous, bounded by 1, independent of the chart and zero exactly at bifurcation.
+S is scaled by s = max(1, |(m, k r_o)|) so that z~ is O(1) for every mode.
+
+Integration is in the reference radius R in [1, Rbar_o] (dr/dR = a R / r, a = g^3 /
+lambda_z) with Dormand-Prince 8(5,3) and per-member error control; the moduli come from a
+Chebyshev table (radial_table.py), so the kernel knows no material.
+"""
+
+from __future__ import annotations
+
+import numba as nb
+import numpy as np
+from scipy.integrate._ivp import dop853_coefficients as _dop
+
+from .stroh import stroh_matrix
+
+_NS = _dop.N_STAGES
+_A = np.ascontiguousarray(_dop.A[:_NS, :_NS])
+_B = np.ascontiguousarray(_dop.B)
+_C = np.ascontiguousarray(_dop.C[:_NS])
+_E3 = np.ascontiguousarray(_dop.E3)
+_E5 = np.ascontiguousarray(_dop.E5)
+
+SWITCH = 4.0  # leave a chart once an entry of z~ exceeds this (some chart has all <= ~1.5)
+
+#: status codes written by the kernel
+OK, MAX_STEPS, STEP_UNDERFLOW, NO_CHART = 0, 1, 2, 3
+STATUS_TEXT = {OK: "ok", MAX_STEPS: "too many steps", STEP_UNDERFLOW: "step size underflow",
+               NO_CHART: "no bounded impedance chart"}
+
+
+@nb.njit(cache=True)
+def _clenshaw(c, n, x):
+    b1 = 0.0
+    b2 = 0.0
+    for j in range(n - 1, 0, -1):
+        b1, b2 = 2.0 * x * b1 - b2 + c[j], b1
+    return x * b1 - b2 + c[0]
+
+
+@nb.njit(cache=True)
+def _base_at(R, coef, degree, fmap, geom, mod):
+    """Fill mod[23] at R; return (p, r, w = (dr/dR)/r)."""
+    ro = geom[0]
+    x = (2.0 * R - 1.0 - ro) / (ro - 1.0)
+    for f in range(23):
+        j = fmap[f]
+        mod[f] = _clenshaw(coef[j], degree[j], x)
+    j = fmap[23]
+    p = _clenshaw(coef[j], degree[j], x)
+    r = np.sqrt(geom[1] + geom[2] * (R * R - 1.0))
+    return p, r, geom[2] * R / (r * r)
+
+
+@nb.njit(cache=True)
+def _chart_perm(J, perm, sign):
+    """eta~_a = sign[a] * eta^_{perm[a]} for chart J (bit j set: swap pair j)."""
+    for j in range(4):
+        if (J >> j) & 1:
+            perm[j], sign[j] = 4 + j, 1.0
+            perm[4 + j], sign[4 + j] = j, -1.0
+        else:
+            perm[j], sign[j] = j, 1.0
+            perm[4 + j], sign[4 + j] = 4 + j, 1.0
+
+
+@nb.njit(cache=True)
+def _rhs(R, z, J, s, m, k, coef, degree, fmap, geom, mod, G, Gt, perm, sign, out):
+    p, r, w = _base_at(R, coef, degree, fmap, geom, mod)
+    stroh_matrix(mod, p, m, k * r, G)
+    _chart_perm(J, perm, sign)
+    for a in range(8):
+        for b in range(8):
+            pa, pb = perm[a], perm[b]
+            v = G[pa, pb] * sign[a] * sign[b]
+            if pa < 4 and pb >= 4:
+                v *= s
+            elif pa >= 4 and pb < 4:
+                v /= s
+            Gt[a, b] = v
+    # F = G3 + G4 z - z G1 - z G2 z
+    for i in range(4):
+        for j in range(4):
+            acc = Gt[4 + i, j]
+            for q in range(4):
+                acc += Gt[4 + i, 4 + q] * z[q, j] - z[i, q] * Gt[q, j]
+                zg = 0.0
+                for t in range(4):
+                    zg += z[i, t] * Gt[t, 4 + q]
+                acc -= zg * z[q, j]
+            out[i, j] = w * acc
+
+
+@nb.njit(cache=True)
+def _det4(a):
+    m = a.copy()
+    det = 1.0
+    n = a.shape[0]
+    for c in range(n):
+        piv = c
+        for i in range(c + 1, n):
+            if abs(m[i, c]) > abs(m[piv, c]):
+                piv = i
+        if m[piv, c] == 0.0:
+            return 0.0
+        if piv != c:
+            for j in range(n):
+                m[c, j], m[piv, j] = m[piv, j], m[c, j]
+            det = -det
+        det *= m[c, c]
+        for i in range(c + 1, n):
+            f = m[i, c] / m[c, c]
+            for j in range(c, n):
+                m[i, j] -= f * m[c, j]
+    return det
+
+
+@nb.njit(cache=True)
+def _switch_chart(z, J):
+    """Best chart for the subspace z~ (chart J); returns (z_new, J_new, sign of det W1)."""
+    X = np.zeros((8, 4))  # basis in hat coordinates: X = P_J^T [I; z]
+    perm = np.empty(8, np.int64)
+    sign = np.empty(8)
+    _chart_perm(J, perm, sign)
+    for a in range(8):
+        for c in range(4):
+            val = (1.0 if a == c else 0.0) if a < 4 else z[a - 4, c]
+            X[perm[a], c] += sign[a] * val
+    best, bestJ, bestsgn = np.inf, -1, 1.0
+    zbest = np.zeros((4, 4))
+    for Jn in range(16):
+        _chart_perm(Jn, perm, sign)
+        W1 = np.empty((4, 4))
+        W2 = np.empty((4, 4))
+        for a in range(4):
+            for c in range(4):
+                W1[a, c] = sign[a] * X[perm[a], c]
+                W2[a, c] = sign[4 + a] * X[perm[4 + a], c]
+        d = _det4(W1)
+        if abs(d) < 1e-12:
+            continue
+        zn = np.linalg.solve(W1.T, W2.T).T  # W2 W1^-1
+        size = np.max(np.abs(zn))
+        if size < best:
+            best, bestJ, bestsgn = size, Jn, np.sign(d)
+            zbest[:, :] = zn
+    return zbest, bestJ, bestsgn
+
+
+@nb.njit(cache=True)
+def _target(z, J, orient):
+    """f = orient * det(z[J', J']) / sqrt(det(I + z^T z))."""
+    idx = np.empty(4, np.int64)
+    n = 0
+    for j in range(4):
+        if not (J >> j) & 1:
+            idx[n] = j
+            n += 1
+    num = 1.0
+    if n > 0:
+        sub = np.empty((n, n))
+        for a in range(n):
+            for b in range(n):
+                sub[a, b] = z[idx[a], idx[b]]
+        num = _det4(sub)
+    M = np.eye(4) + z.T @ z
+    return orient * num / np.sqrt(_det4(M))
+
+
+@nb.njit(cache=True)
+def integrate_one(m, k, coef, degree, fmap, geom, rtol, max_steps, switch=SWITCH):
+    """Integrate one mode through the wall. Returns (f, z~, J, status, steps)."""
+    ro = geom[0]
+    s = max(1.0, np.sqrt(m * m + (k * np.sqrt(geom[1] + geom[2] * (ro * ro - 1.0))) ** 2))
+    # keep in step with impedance_scale()
+    z = np.zeros((4, 4))
+    J, orient = 0, 1.0
+    mod = np.empty(23)
+    G = np.empty((8, 8))
+    Gt = np.empty((8, 8))
+    perm = np.empty(8, np.int64)
+    sign = np.empty(8)
+    K = np.empty((_NS + 1, 4, 4))
+    ztmp = np.empty((4, 4))
+    znew = np.empty((4, 4))
+    R = 1.0
+    h = (ro - 1.0) / (4.0 + s)
+    _rhs(R, z, J, s, m, k, coef, degree, fmap, geom, mod, G, Gt, perm, sign, K[0])
+    steps = 0
+    while R < ro:
+        if steps >= max_steps:
+            return np.nan, z, J, MAX_STEPS, steps
+        if h < 1e-14 * (ro - 1.0):
+            return np.nan, z, J, STEP_UNDERFLOW, steps
+        last = R + h >= ro
+        if last:
+            h = ro - R
+        for st in range(1, _NS):
+            for i in range(4):
+                for j in range(4):
+                    acc = 0.0
+                    for q in range(st):
+                        acc += _A[st, q] * K[q, i, j]
+                    ztmp[i, j] = z[i, j] + h * acc
+            _rhs(R + _C[st] * h, ztmp, J, s, m, k, coef, degree, fmap, geom, mod, G, Gt,
+                 perm, sign, K[st])
+        for i in range(4):
+            for j in range(4):
+                acc = 0.0
+                for q in range(_NS):
+                    acc += _B[q] * K[q, i, j]
+                znew[i, j] = z[i, j] + h * acc
+        _rhs(R + h, znew, J, s, m, k, coef, degree, fmap, geom, mod, G, Gt, perm, sign, K[_NS])
+        e5 = 0.0
+        e3 = 0.0
+        for i in range(4):
+            for j in range(4):
+                a5 = 0.0
+                a3 = 0.0
+                for q in range(_NS + 1):
+                    a5 += _E5[q] * K[q, i, j]
+                    a3 += _E3[q] * K[q, i, j]
+                sc = rtol * (1.0 + max(abs(z[i, j]), abs(znew[i, j])))
+                e5 += (a5 / sc) ** 2
+                e3 += (a3 / sc) ** 2
+        err = 0.0
+        if e5 > 0.0 or e3 > 0.0:
+            err = h * e5 / np.sqrt((e5 + 0.01 * e3) * 16.0)
+        steps += 1
+        if err <= 1.0:
+            R = ro if last else R + h
+            for i in range(4):
+                for j in range(4):
+                    z[i, j] = 0.5 * (znew[i, j] + znew[j, i])
+            h *= min(10.0, 0.9 * err ** (-1.0 / 8.0)) if err > 0.0 else 10.0
+            if np.max(np.abs(z)) > switch:
+                zn, Jn, sgn = _switch_chart(z, J)
+                if Jn < 0:
+                    return np.nan, z, J, NO_CHART, steps
+                if Jn != J:
+                    z[:, :] = zn
+                    J = Jn
+                    orient *= sgn
+            _rhs(R, z, J, s, m, k, coef, degree, fmap, geom, mod, G, Gt, perm, sign, K[0])
+        else:
+            h *= max(0.2, 0.9 * err ** (-1.0 / 8.0))
+    return _target(z, J, orient), z, J, OK, steps
+
+
+@nb.njit(parallel=True, cache=True)
+def target_batch(m, k, table_index, coef, degree, fmap, geom, rtol, max_steps,
+                 out_f, out_status, out_steps):
+    """Bifurcation target f for a batch of (mode, base state) pairs, in parallel.
+
+    ``table_index[b]`` selects the stacked base-state table of member b.
+    """
+    for b in nb.prange(m.shape[0]):
+        t = table_index[b]
+        f, _, _, status, steps = integrate_one(m[b], k[b], coef[t], degree[t], fmap[t],
+                                               geom[t], rtol, max_steps)
+        out_f[b] = f
+        out_status[b] = status
+        out_steps[b] = steps
+
+
+def physical_impedance(z_chart: np.ndarray, chart: int, scale: float) -> np.ndarray:
+    """The paper's impedance z (S = z U) from the kernel's chart representation.
+
+    Infinite where the subspace is not a graph over U (a pole of z), which is exactly why
+    the kernel does not use it.
+    """
+    perm = np.empty(8, np.int64)
+    sign = np.empty(8)
+    _chart_perm(chart, perm, sign)
+    X = np.zeros((8, 4))
+    Y = np.vstack([np.eye(4), z_chart])
+    for a in range(8):
+        X[perm[a]] += sign[a] * Y[a]
+    return scale * X[4:] @ np.linalg.inv(X[:4])
+
+
+def impedance_scale(m: float, k: float, r_o: float) -> float:
+    """The scale s of S used by the kernel: max(1, |(m, k r_o)|)."""
+    return max(1.0, float(np.hypot(m, k * r_o)))

@@ -1,0 +1,116 @@
+"""Which mode comes first: the critical value over m in [m_lo, m_hi], n in [n_lo, n_hi].
+
+The scan is organised around the batch kernel. The base state does not depend on the
+mode, so the march (march.py) evaluates every mode at once on one base state per step
+(impedance.target_batch, parallel over modes), at a loose tolerance that only has to get
+signs right; the modes that change sign in a step are narrowed together by bisection and
+finished by Brent's method at full accuracy. Marching on yields the runner-up modes.
+
+When the best mode sits on the edge of the range the range is doubled in that direction
+(up to a cap); if the critical value still falls with n (or m) at the cap, the result is
+flagged as a short-wavelength (surface) instability.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+
+from .bifurcation import (CriticalPoint, check_side, critical_value, impedance_targets)
+from .errors import ParameterError
+from .march import ModeValue, first_bifurcations
+from .params import TubeParameters
+
+LOOSE = 1e-7  # kernel tolerance for signs along the march
+M_CAP, N_CAP = 64, 320
+
+
+@dataclasses.dataclass(frozen=True)
+class ScanResult:
+    """Result of :func:`scan_modes`: the critical point and the next modes after it."""
+
+    critical: CriticalPoint
+    runners_up: tuple[ModeValue, ...]
+    m_range: tuple[int, int]
+    n_range: tuple[int, int]
+    surface_instability: bool = False
+
+    def as_dict(self) -> dict:
+        out = self.critical.as_dict()
+        out["runners_up"] = [dataclasses.asdict(r) for r in self.runners_up]
+        out["m_range"], out["n_range"] = list(self.m_range), list(self.n_range)
+        out["surface_instability"] = self.surface_instability
+        return out
+
+
+def mode_grid(m_range, n_range) -> np.ndarray:
+    """All (m, n) pairs, rows, as floats."""
+    m, n = np.meshgrid(np.arange(m_range[0], m_range[1] + 1),
+                       np.arange(n_range[0], n_range[1] + 1), indexing="ij")
+    return np.stack([m.ravel(), n.ravel()], axis=1).astype(float)
+
+
+def scan_modes(params: TubeParameters, solve_for: str, *, side: str | None = None,
+               m_range: tuple[int, int] = (0, 12), n_range: tuple[int, int] = (1, 30),
+               top: int = 5, rtol: float = 1e-12, extend: bool = True) -> ScanResult:
+    """Critical value of ``solve_for`` minimised (first reached) over all modes.
+
+    Parameters
+    ----------
+    params : TubeParameters
+        The tube; the field named by ``solve_for`` is the unknown.
+    solve_for : {"growth", "stretch", "voltage"}
+        As in :func:`bifurcation.critical_value`.
+    side : {"compression", "extension"}, optional
+        For the stretch only (default compression).
+    m_range, n_range : (int, int)
+        Inclusive ranges of the circumferential and axial wavenumbers; extended
+        automatically while the optimum sits on an upper edge (``extend``).
+    top : int
+        Number of modes reported (the critical one and top - 1 runners-up).
+
+    Returns
+    -------
+    ScanResult
+    """
+    side = check_side(solve_for, side)
+    _check_range("m", m_range, 0)
+    _check_range("n", n_range, 1)
+    while True:
+        result = _scan_once(params, solve_for, side, m_range, n_range, top, rtol)
+        c = result.critical
+        grow_m = c.kind == "bifurcation" and c.m == m_range[1] and m_range[1] < M_CAP
+        grow_n = c.kind == "bifurcation" and c.n == n_range[1] and n_range[1] < N_CAP
+        if not extend or not (grow_m or grow_n):
+            break
+        m_range = (m_range[0], min(2 * m_range[1] + 1, M_CAP)) if grow_m else m_range
+        n_range = (n_range[0], min(2 * n_range[1], N_CAP)) if grow_n else n_range
+    surface = c.kind == "bifurcation" and (c.n == n_range[1] or c.m == m_range[1])
+    return dataclasses.replace(result, surface_instability=surface)
+
+
+def _check_range(name, rng, lowest):
+    lo, hi = rng
+    if int(lo) != lo or int(hi) != hi or lo < lowest or hi < lo:
+        raise ParameterError(f"{name} range {rng} is invalid; need integers "
+                             f"{lowest} <= {name}_min <= {name}_max")
+
+
+def _scan_once(params, solve_for, side, m_range, n_range, top, rtol) -> ScanResult:
+    modes = mode_grid(m_range, n_range)
+    loose = lambda state, md: impedance_targets(state, md, rtol=LOOSE)  # noqa: E731
+    fine = lambda state, md: impedance_targets(state, md, rtol=rtol)  # noqa: E731
+    res = first_bifurcations(params, solve_for, side, modes, loose, top=top,
+                             brent_targets=fine)
+    at = lambda x: dataclasses.replace(params, **{solve_for: float(x)})  # noqa: E731
+    found = res.found
+    if not found:  # the march stops at the threshold, so found modes come before it
+        crit = CriticalPoint(solve_for, res.threshold, -1, -1, "threshold", 0.0, "impedance",
+                             side, at(res.threshold))
+        return ScanResult(crit, (), m_range, n_range)
+    best = found[0]
+    w = 1e-7 * max(1.0, abs(best.value))
+    crit = critical_value(params, best.m, best.n, solve_for, side=side, rtol=rtol,
+                          bracket=(best.value - w, best.value + w))
+    return ScanResult(crit, tuple(found[1:top]), m_range, n_range)
