@@ -18,9 +18,10 @@ from pathlib import Path
 from typing import Callable
 
 from . import __version__, figures_base
-from .errors import ElectrogrowthError, ParameterError
-from .materials import BUILTIN, material_by_name
-from .params import TubeParameters
+from .cli_options import (UsageError, _Parser, _material, _number,  # noqa: F401 (re-export)
+                          add_tube_options, tube_from_args)
+from .cli_critical import configure_critical, run_critical
+from .errors import ElectrogrowthError
 from .tube import solve_base_state
 
 PROG = "electrogrowth"
@@ -33,66 +34,10 @@ FIGURES: dict[int, Callable[..., figures_base.FigureResult]] = {
 }
 
 
-class UsageError(Exception):
-    """A bad command line (raised by the parser instead of printing usage and exiting)."""
-
-
-class _Parser(argparse.ArgumentParser):
-    def error(self, message):
-        raise UsageError(message)
-
-
-def _number(text: str) -> float:
-    """A finite real number (ranges are checked by TubeParameters, which names the value)."""
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
-    if not math.isfinite(value):
-        raise argparse.ArgumentTypeError(f"{text!r} is not a finite number")
-    return value
-
-
-# -- state -----------------------------------------------------------------------------------
-
 def configure_state(parser: argparse.ArgumentParser) -> None:
-    tube = parser.add_argument_group("tube and loading (units mu = eps = R_i = 1)")
-    tube.add_argument("--outer-radius", type=_number, required=True, metavar="RBAR_O",
-                      help="Rbar_o = R_o / R_i > 1, undeformed outer over inner radius")
-    tube.add_argument("--growth", type=_number, default=1.0, metavar="G",
-                      help="isotropic growth factor g > 0, F_g = g I (default 1: no growth)")
-    tube.add_argument("--stretch", type=_number, default=1.0, metavar="LAMBDA_Z",
-                      help="total axial stretch lambda_z = l / L > 0, growth included"
-                           " (default 1)")
-    tube.add_argument("--voltage", type=_number, default=0.0, metavar="VBAR",
-                      help="Vbar = V / (R_o - R_i) sqrt(eps / mu) >= 0, the radial voltage;"
-                           " must stay below the threshold (default 0)")
-    tube.add_argument("--length", type=_number, default=1.0, metavar="L",
-                      help="L / R_i > 0, undeformed length; does not change the base state"
-                           " (default 1)")
-    mat = parser.add_argument_group("material (ideal dielectric, Omega = W + I5 / 2)")
-    mat.add_argument("--material", choices=sorted(BUILTIN), default="neo-hookean",
-                     help="elastic energy W (default neo-hookean)")
-    mat.add_argument("--jm", type=_number, metavar="JM",
-                     help="Gent stiffening parameter J_m > 0 (only with --material gent;"
-                          " default 97.2)")
-    mat.add_argument("--alpha", type=_number, metavar="ALPHA",
-                     help="Mooney-Rivlin weight 0 < alpha <= 1 of I1 (only with"
-                          " --material mooney-rivlin; default 0.5)")
+    add_tube_options(parser)
     parser.add_argument("--json", action="store_true",
                         help="print one JSON object instead of text")
-
-
-def _material(args):
-    options = {}
-    for flag, name, owner in (("--jm", "jm", "gent"), ("--alpha", "alpha", "mooney-rivlin")):
-        value = getattr(args, name)
-        if value is not None:
-            if args.material != owner:
-                raise ParameterError(f"{flag} = {value:g} applies only to --material {owner},"
-                                     f" not {args.material}")
-            options[name] = value
-    return material_by_name(args.material, **options)
 
 
 def state_record(state) -> dict:
@@ -116,9 +61,7 @@ def state_record(state) -> dict:
 
 
 def run_state(args) -> int:
-    params = TubeParameters(outer_radius=args.outer_radius, length=args.length,
-                            growth=args.growth, stretch=args.stretch, voltage=args.voltage,
-                            material=_material(args))
+    params = tube_from_args(args)
     rec = state_record(solve_base_state(params))
     if args.json:
         print(json.dumps(rec))
@@ -168,6 +111,9 @@ COMMANDS: dict[str, tuple[str, Callable, Callable]] = {
     "state": ("solve the axisymmetric base state of a grown, stretched, charged tube",
               configure_state, run_state),
     "figure": ("reproduce a figure of the paper (PNG + CSV)", configure_figure, run_figure),
+    "critical": ("critical growth factor, axial stretch or voltage for the onset of"
+                 " wrinkling, for one mode or scanned over modes", configure_critical,
+                 run_critical),
 }
 
 

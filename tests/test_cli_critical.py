@@ -1,0 +1,65 @@
+"""``electrogrowth critical``: JSON contract, agreement with the API, bad input."""
+
+import json
+
+import pytest
+
+from electrogrowth import TubeParameters
+from electrogrowth.bifurcation import critical_value
+from electrogrowth.cli import main
+
+BASE = ["critical", "--outer-radius", "1.4", "--length", "1.0"]
+
+
+def _json(capsys, argv):
+    assert main(argv + ["--json"]) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+def test_single_mode_json_equals_api(capsys):
+    rec = _json(capsys, BASE + ["--solve-for", "growth", "--voltage", "0.4", "--mode", "3", "1"])
+    want = critical_value(TubeParameters(1.4, 1.0, voltage=0.4), 3, 1, "growth")
+    assert {"solve_for", "value", "m", "n", "error_estimate", "kind"} <= rec.keys()
+    assert rec["kind"] == "bifurcation" and (rec["m"], rec["n"]) == (3, 1)
+    assert rec["value"] == pytest.approx(want.value, rel=1e-12)
+    assert rec["error_estimate"] < 1e-9
+
+
+def test_scan_reports_critical_mode_and_runners_up(capsys):
+    rec = _json(capsys, BASE + ["--solve-for", "voltage", "--m-max", "4", "--n-max", "4"])
+    values = [rec["value"]] + [r["value"] for r in rec["runners_up"]]
+    assert values == sorted(values) and len(values) == 5
+    direct = critical_value(TubeParameters(1.4, 1.0), rec["m"], rec["n"], "voltage")
+    assert rec["value"] == pytest.approx(direct.value, rel=1e-11)
+    for r in rec["runners_up"][:2]:  # each runner-up is a genuine critical value of its mode
+        c = critical_value(TubeParameters(1.4, 1.0), r["m"], r["n"], "voltage")
+        assert r["value"] == pytest.approx(c.value, rel=1e-8)
+
+
+def test_certify_agrees_with_collocation(capsys):
+    rec = _json(capsys, BASE + ["--solve-for", "stretch", "--voltage", "0.2", "--mode", "2", "1",
+                                "--certify"])
+    assert rec["certified"] and rec["certification_difference"] < 1e-9
+
+
+def test_text_output_names_mode(capsys):
+    assert main(BASE + ["--solve-for", "growth", "--voltage", "0.4", "--mode", "0", "1"]) == 0
+    out = capsys.readouterr().out
+    assert "g_cr = 1.2661115622" in out and "(m, n) = (0, 1)" in out
+
+
+@pytest.mark.parametrize("extra, needle", [
+    (["--solve-for", "growth", "--mode", "-1", "1"], "mode"),
+    (["--solve-for", "growth", "--mode", "0", "0"], "mode"),
+    (["--solve-for", "heat"], "solve-for"),
+    (["--solve-for", "growth", "--side", "extension"], "--side"),
+    (["--solve-for", "growth", "--voltage", "nan"], "nan"),
+    (["--solve-for", "growth", "--voltage", "-0.1"], "Vbar"),
+    (["--solve-for", "growth", "--rtol", "1"], "rtol"),
+    (["--solve-for", "stretch", "--mode", "0", "1", "--voltage", "5"], "threshold"),
+    (["--solve-for", "growth", "--method", "collocation"], "collocation"),
+])
+def test_bad_input_is_one_line_exit_2(capsys, extra, needle):
+    assert main(BASE + extra) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and needle in err and "Traceback" not in err
