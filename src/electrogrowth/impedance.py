@@ -48,26 +48,30 @@ STATUS_TEXT = {OK: "ok", MAX_STEPS: "too many steps", STEP_UNDERFLOW: "step size
 
 
 @nb.njit(cache=True)
-def _clenshaw(c, n, x):
-    b1 = 0.0
-    b2 = 0.0
-    for j in range(n - 1, 0, -1):
-        b1, b2 = 2.0 * x * b1 - b2 + c[j], b1
-    return x * b1 - b2 + c[0]
+def _base_at(R, coef, degree, fmap, geom, vals, mod):
+    """Fill mod[23] at R; return (p, r, w = (dr/dR)/r).
 
-
-@nb.njit(cache=True)
-def _base_at(R, coef, degree, fmap, geom, mod):
-    """Fill mod[23] at R; return (p, r, w = (dr/dR)/r)."""
+    One Clenshaw recurrence for all distinct functions at once (the coefficient rows are
+    zero-padded), so the inner loop runs across functions and vectorises.
+    """
     ro = geom[0]
-    x = (2.0 * R - 1.0 - ro) / (ro - 1.0)
+    x2 = 2.0 * (2.0 * R - 1.0 - ro) / (ro - 1.0)
+    nf = int(geom[3])
+    width = coef.shape[1]
+    b1 = vals  # reuse scratch: vals[:nf] = b1, vals[nf:2nf] = b2
+    for f in range(2 * nf):
+        b1[f] = 0.0
+    for j in range(width - 1, 0, -1):
+        for f in range(nf):
+            t = x2 * b1[f] - b1[nf + f] + coef[f, j]
+            b1[nf + f] = b1[f]
+            b1[f] = t
+    for f in range(nf):
+        b1[f] = 0.5 * x2 * b1[f] - b1[nf + f] + coef[f, 0]
     for f in range(23):
-        j = fmap[f]
-        mod[f] = _clenshaw(coef[j], degree[j], x)
-    j = fmap[23]
-    p = _clenshaw(coef[j], degree[j], x)
+        mod[f] = vals[fmap[f]]
     r = np.sqrt(geom[1] + geom[2] * (R * R - 1.0))
-    return p, r, geom[2] * R / (r * r)
+    return vals[fmap[23]], r, geom[2] * R / (r * r)
 
 
 @nb.njit(cache=True)
@@ -83,30 +87,44 @@ def _chart_perm(J, perm, sign):
 
 
 @nb.njit(cache=True)
-def _rhs(R, z, J, s, m, k, coef, degree, fmap, geom, mod, G, Gt, perm, sign, out):
-    p, r, w = _base_at(R, coef, degree, fmap, geom, mod)
-    stroh_matrix(mod, p, m, k * r, G)
+def _chart_setup(J, s, perm, mult):
+    """G~[a, b] = G[perm[a], perm[b]] * mult[a, b]: chart J and the scaling S -> S / s."""
+    sign = np.empty(8)
     _chart_perm(J, perm, sign)
     for a in range(8):
         for b in range(8):
-            pa, pb = perm[a], perm[b]
-            v = G[pa, pb] * sign[a] * sign[b]
-            if pa < 4 and pb >= 4:
+            v = sign[a] * sign[b]
+            if perm[a] < 4 and perm[b] >= 4:
                 v *= s
-            elif pa >= 4 and pb < 4:
+            elif perm[a] >= 4 and perm[b] < 4:
                 v /= s
-            Gt[a, b] = v
-    # F = G3 + G4 z - z G1 - z G2 z
+            mult[a, b] = v
+
+
+@nb.njit(cache=True)
+def _rhs(R, z, m, k, coef, degree, fmap, geom, vals, mod, G, perm, mult, Gt, P, out):
+    """dz~/dR = w (G3 - z G1 - (z G1)^T - z G2 z), using G4 = -G1^T (G Hamiltonian)."""
+    p, r, w = _base_at(R, coef, degree, fmap, geom, vals, mod)
+    stroh_matrix(mod, p, m, k * r, G)
+    for a in range(8):  # the blocks G~1, G~2 (rows 0-3) and G~3 (rows 4-7, cols 0-3)
+        for b in range(8 if a < 4 else 4):
+            Gt[a, b] = G[perm[a], perm[b]] * mult[a, b]
     for i in range(4):
         for j in range(4):
-            acc = Gt[4 + i, j]
+            a1 = 0.0
+            a2 = 0.0
             for q in range(4):
-                acc += Gt[4 + i, 4 + q] * z[q, j] - z[i, q] * Gt[q, j]
-                zg = 0.0
-                for t in range(4):
-                    zg += z[i, t] * Gt[t, 4 + q]
-                acc -= zg * z[q, j]
+                a1 += z[i, q] * Gt[q, j]
+                a2 += z[i, q] * Gt[q, 4 + j]
+            P[i, j] = a1
+            P[i, 4 + j] = a2
+    for i in range(4):
+        for j in range(i, 4):
+            acc = Gt[4 + i, j] - P[i, j] - P[j, i]
+            for q in range(4):
+                acc -= P[i, 4 + q] * z[q, j]
             out[i, j] = w * acc
+            out[j, i] = w * acc
 
 
 @nb.njit(cache=True)
@@ -194,16 +212,19 @@ def integrate_one(m, k, coef, degree, fmap, geom, rtol, max_steps, switch=SWITCH
     z = np.zeros((4, 4))
     J, orient = 0, 1.0
     mod = np.empty(23)
+    vals = np.empty(2 * coef.shape[0])
     G = np.empty((8, 8))
     Gt = np.empty((8, 8))
+    P = np.empty((4, 8))
     perm = np.empty(8, np.int64)
-    sign = np.empty(8)
+    mult = np.empty((8, 8))
+    _chart_setup(J, s, perm, mult)
     K = np.empty((_NS + 1, 4, 4))
     ztmp = np.empty((4, 4))
     znew = np.empty((4, 4))
     R = 1.0
     h = (ro - 1.0) / (4.0 + s)
-    _rhs(R, z, J, s, m, k, coef, degree, fmap, geom, mod, G, Gt, perm, sign, K[0])
+    _rhs(R, z, m, k, coef, degree, fmap, geom, vals, mod, G, perm, mult, Gt, P, K[0])
     steps = 0
     while R < ro:
         if steps >= max_steps:
@@ -220,15 +241,15 @@ def integrate_one(m, k, coef, degree, fmap, geom, rtol, max_steps, switch=SWITCH
                     for q in range(st):
                         acc += _A[st, q] * K[q, i, j]
                     ztmp[i, j] = z[i, j] + h * acc
-            _rhs(R + _C[st] * h, ztmp, J, s, m, k, coef, degree, fmap, geom, mod, G, Gt,
-                 perm, sign, K[st])
+            _rhs(R + _C[st] * h, ztmp, m, k, coef, degree, fmap, geom, vals, mod, G, perm,
+                 mult, Gt, P, K[st])
         for i in range(4):
             for j in range(4):
                 acc = 0.0
                 for q in range(_NS):
                     acc += _B[q] * K[q, i, j]
                 znew[i, j] = z[i, j] + h * acc
-        _rhs(R + h, znew, J, s, m, k, coef, degree, fmap, geom, mod, G, Gt, perm, sign, K[_NS])
+        _rhs(R + h, znew, m, k, coef, degree, fmap, geom, vals, mod, G, perm, mult, Gt, P, K[_NS])
         e5 = 0.0
         e3 = 0.0
         for i in range(4):
@@ -259,7 +280,8 @@ def integrate_one(m, k, coef, degree, fmap, geom, rtol, max_steps, switch=SWITCH
                     z[:, :] = zn
                     J = Jn
                     orient *= sgn
-            _rhs(R, z, J, s, m, k, coef, degree, fmap, geom, mod, G, Gt, perm, sign, K[0])
+                    _chart_setup(J, s, perm, mult)
+            _rhs(R, z, m, k, coef, degree, fmap, geom, vals, mod, G, perm, mult, Gt, P, K[0])
         else:
             h *= max(0.2, 0.9 * err ** (-1.0 / 8.0))
     return _target(z, J, orient), z, J, OK, steps

@@ -68,6 +68,46 @@ def control_path(params: TubeParameters, solve_for: str, side: str | None):
         f"solve_for = {solve_for!r} is unknown; choose growth, stretch or voltage")
 
 
+class _History:
+    """Last two samples (x, signed target) of every mode, and when each is due again.
+
+    A mode's target is extrapolated linearly to its root; the mode is re-evaluated once
+    the march has covered half that distance (a quarter of the scale at most), so modes
+    far from bifurcation cost a few evaluations, not one per step.
+    """
+
+    def __init__(self, x0, g0, sense, scale):
+        n = g0.size
+        self.sense, self.scale = sense, scale
+        self.xa, self.ga = np.full(n, x0), g0.copy()
+        self.xb, self.gb = np.full(n, np.nan), np.full(n, np.nan)
+        self.alive = np.ones(n, bool)
+        self.due = np.full(n, x0)
+
+    def root_distance(self):
+        """Extrapolated |x_root - x_a| per mode (inf when not approaching)."""
+        with np.errstate(invalid="ignore", divide="ignore"):
+            dist = self.ga * np.abs(self.xa - self.xb) / (self.gb - self.ga)
+        return np.where(self.gb > self.ga, dist, np.inf)
+
+    def needs(self, x):
+        """Alive modes to evaluate at x: due, or predicted to have crossed by x."""
+        reach = self.sense * (x - self.xa)
+        return self.alive & ((self.sense * (x - self.due) >= 0) |
+                             (reach >= self.root_distance()))
+
+    def record(self, idx, x, g):
+        self.xb[idx], self.gb[idx] = self.xa[idx], self.ga[idx]
+        self.xa[idx], self.ga[idx] = x, g
+        wait = np.minimum(0.5 * self.root_distance()[idx], 0.25 * self.scale)
+        self.due[idx] = x + self.sense * wait
+
+    def step_limit(self):
+        """0.7 of the smallest extrapolated distance to a root, relative to the scale."""
+        dist = self.root_distance()[self.alive]
+        return 0.7 * dist.min() / self.scale if dist.size else np.inf
+
+
 def first_bifurcations(params: TubeParameters, solve_for: str, side: str | None,
                        modes: np.ndarray, targets: Targets, *, top: int = 1,
                        brent_targets: Targets | None = None) -> MarchResult:
@@ -81,51 +121,45 @@ def first_bifurcations(params: TubeParameters, solve_for: str, side: str | None,
     sref = np.sign(targets(solve_base_state(ref), modes))
     x0, end, scale = control_path(params, solve_for, side)
     sense = 1.0 if end > x0 else -1.0
-    alive = np.arange(len(modes))
     state = solve_base_state(at(x0))
     g0 = sref * targets(state, modes)
     if (g0 <= 0).any():
         m, n = modes[int(np.argmax(g0 <= 0))].astype(int)
         raise ParameterError(f"the tube is already unstable in mode ({m}, {n}) at "
                              f"{solve_for} = {x0:g}; start from a stable state")
-    signed = lambda x, idx: sref[idx] * targets(solve_base_state(at(x)), modes[idx])  # noqa
     fine = brent_targets or targets
+    signed = lambda x, idx: sref[idx] * targets(solve_base_state(at(x)), modes[idx])  # noqa
     signed_fine = lambda x, i: float(sref[i] * fine(solve_base_state(at(x)), modes[[i]])[0])
+    hist = _History(x0, g0, sense, scale)
     found, threshold = [], None
     x_prev, lam_prev, lam0, d = x0, state.lambda_i, state.lambda_i, FIRST_STEP
-    x_before, g_before, g_prev = None, None, g0
-    while (end - x_prev) * sense > 0 and len(found) < top and alive.size:
-        x = x_prev + sense * d * scale
-        if (x - end) * sense > 0:
-            x = end
-        try:
-            state = solve_base_state(at(x))
-        except BaseStateError:
-            threshold = _threshold_between(at, params, x_prev, x)
-            end = threshold - sense * 1e-12 * scale
-            d /= 4
-            continue
-        if abs(state.lambda_i / lam_prev - 1) > MAX_LAMBDA_JUMP and d > 1e-12:
-            d /= 2
-            continue
-        if threshold is not None and state.lambda_i > LAMBDA_CAP * lam0:
+    while hist.alive.any():
+        done = (end - x_prev) * sense <= 0 or len(found) >= top
+        if not done:
+            x = min(x_prev + sense * d * scale, end, key=lambda v: sense * v)
+            try:
+                state = solve_base_state(at(x))
+            except BaseStateError:
+                threshold = _threshold_between(at, params, x_prev, x)
+                end = threshold - sense * 1e-12 * scale
+                d /= 4
+                continue
+            if abs(state.lambda_i / lam_prev - 1) > MAX_LAMBDA_JUMP and d > 1e-12:
+                d /= 2
+                continue
+            done = threshold is not None and state.lambda_i > LAMBDA_CAP * lam0
+        if done:  # a last look at every mode not seen at x_prev: nothing left behind
+            idx = np.nonzero(hist.alive & (hist.xa != x_prev))[0]
+            if idx.size:
+                found += _advance(hist, idx, x_prev, signed(x_prev, idx), signed,
+                                  signed_fine, modes)
             break
-        g = sref[alive] * targets(state, modes[alive])
-        hit = g <= 0
-        if hit.any():
-            found += _refine(signed, signed_fine, modes, alive[hit], x_prev, x)
-        if g_before is not None:
-            for j in _dips(g_before, g_prev, g, hit):
-                i = int(alive[j])
-                bracket = _dip(lambda y: signed_fine(y, i), x_before, x)
-                if bracket is not None:
-                    found.append(ModeValue(int(modes[i, 0]), int(modes[i, 1]),
-                                           brent(lambda y: signed_fine(y, i), *bracket)))
-                    hit[j] = True
-        keep = ~hit
-        d = _next_step(d, g_prev[keep], g[keep], abs(x - x_prev) / scale)
-        alive, g_before, g_prev = alive[keep], g_prev[keep], g[keep]
-        x_before, x_prev, lam_prev = x_prev, x, state.lambda_i
+        idx = np.nonzero(hist.needs(x))[0]
+        if idx.size:
+            found += _advance(hist, idx, x, sref[idx] * targets(state, modes[idx]), signed,
+                              signed_fine, modes)
+        d = float(np.clip(hist.step_limit(), MIN_STEP, min(2 * d, MAX_STEP)))
+        x_prev, lam_prev = x, state.lambda_i
     found.sort(key=lambda mv: sense * mv.value)
     if not found and threshold is None:
         if solve_for == "voltage" and math.isfinite(voltage_threshold(params)[0]):
@@ -133,22 +167,30 @@ def first_bifurcations(params: TubeParameters, solve_for: str, side: str | None,
         else:
             raise NoBifurcationFound(f"no mode bifurcates for {solve_for} between {x0:g} "
                                      f"and {end:g}")
-    return MarchResult(found, threshold)
+    return MarchResult(found[:top], threshold)
 
 
-def _next_step(d, g_prev, g, taken):
-    """Double the step, but stay within 0.7 of the extrapolated distance to any root."""
-    falling = g < g_prev
-    if falling.any():
-        to_root = g[falling] * taken / (g_prev[falling] - g[falling])
-        return float(np.clip(0.7 * to_root.min(), MIN_STEP, min(2 * d, MAX_STEP)))
-    return min(2 * d, MAX_STEP)
-
-
-def _dips(a, b, g, hit):
-    """Indices whose signed target had a deep local minimum at the previous step."""
-    cand = np.nonzero((b < 0.25 * np.minimum(a, g)) & ~hit)[0]
-    return cand[np.argsort(b[cand])][:8]
+def _advance(hist, idx, x, g, signed, signed_fine, modes) -> list:
+    """Record the samples at x; roots of the modes that changed sign or dipped to zero."""
+    found = []
+    hit = g <= 0
+    groups = {}
+    for i in idx[hit]:
+        groups.setdefault(hist.xa[i], []).append(i)
+    for xa, cand in groups.items():  # modes last seen together are bisected together
+        found += _refine(signed, signed_fine, modes, np.array(cand), xa, x)
+    mid, old = hist.ga[idx], hist.gb[idx]  # the two samples before x
+    dips = np.nonzero(~hit & (mid < 0.25 * np.minimum(old, g)))[0]
+    for j in dips[np.argsort(mid[dips])][:8]:
+        i = idx[j]
+        bracket = _dip(lambda y: signed_fine(y, i), hist.xb[i], x)
+        if bracket is not None:
+            found.append(ModeValue(int(modes[i, 0]), int(modes[i, 1]),
+                                   brent(lambda y: signed_fine(y, i), *bracket)))
+            hit[j] = True
+    hist.alive[idx[hit]] = False
+    hist.record(idx[~hit], x, g[~hit])
+    return found
 
 
 def _dip(f, a, b):

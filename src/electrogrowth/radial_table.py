@@ -36,7 +36,8 @@ class RadialTable:
     fmap : (24,) int array
         Function f of MODULI_NAMES + ("p",) is row fmap[f] of ``coef``.
     geom : (4,) array
-        (Rbar_o, r_i^2, a, 0) with r(R)^2 = r_i^2 + a (R^2 - 1), a = g^3 / lambda_z.
+        (Rbar_o, r_i^2, a, F) with r(R)^2 = r_i^2 + a (R^2 - 1), a = g^3 / lambda_z, and
+        F the number of distinct functions (as a float, to keep one array).
     """
 
     coef: np.ndarray
@@ -106,7 +107,7 @@ def _dedupe(coef, degree, state) -> RadialTable:
     for j, row in enumerate(rows):
         table[j, :len(row)] = row
     g, lz = state.params.growth, state.params.stretch
-    geom = np.array([state.params.outer_radius, state.r_i**2, g**3 / lz, 0.0])
+    geom = np.array([state.params.outer_radius, state.r_i**2, g**3 / lz, float(len(rows))])
     return RadialTable(table, np.array(degs, dtype=np.int64), fmap, geom)
 
 

@@ -22,7 +22,8 @@ from .errors import ParameterError
 from .march import ModeValue, first_bifurcations
 from .params import TubeParameters
 
-LOOSE = 1e-7  # kernel tolerance for signs along the march
+LOOSE = 1e-6  # kernel tolerance for signs along the march
+MEDIUM = 1e-9  # for the runners-up; the critical mode is re-solved at the requested rtol
 M_CAP, N_CAP = 64, 320
 
 
@@ -100,7 +101,7 @@ def _check_range(name, rng, lowest):
 def _scan_once(params, solve_for, side, m_range, n_range, top, rtol) -> ScanResult:
     modes = mode_grid(m_range, n_range)
     loose = lambda state, md: impedance_targets(state, md, rtol=LOOSE)  # noqa: E731
-    fine = lambda state, md: impedance_targets(state, md, rtol=rtol)  # noqa: E731
+    fine = lambda state, md: impedance_targets(state, md, rtol=max(rtol, MEDIUM))  # noqa
     res = first_bifurcations(params, solve_for, side, modes, loose, top=top,
                              brent_targets=fine)
     at = lambda x: dataclasses.replace(params, **{solve_for: float(x)})  # noqa: E731
