@@ -32,8 +32,8 @@ test-slow: $(VENV)/.installed
 demo: $(VENV)/.installed
 	$(BIN)/electrogrowth demo --out $(OUT)
 
-bench: $(VENV)/.installed-sweep
-	$(BIN)/python -m electrogrowth.bench
+bench: $(VENV)/.installed
+	$(BIN)/python benchmarks/bench.py
 
 figures: $(VENV)/.installed
 	$(BIN)/electrogrowth reproduce --out $(OUT)/figures

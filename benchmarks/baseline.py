@@ -1,0 +1,57 @@
+"""The baseline: how a careful Python user computes a critical value today.
+
+The paper's method, written plainly: for each trial value of the control parameter, solve
+the base state, integrate the Riccati equation of the conditional impedance with
+``scipy.integrate.solve_ivp`` (DOP853) from the inner face (z = 0) to the outer face,
+and take det z(r_o) as the dispersion function; march the parameter in 1 % steps until
+det z changes sign, then ``scipy.optimize.brentq``. One mode at a time, no compiled code.
+The Stroh matrix and base state are the package's (they are not what is being timed);
+what is timed is the per-mode SciPy integration inside a root finder.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+from scipy.integrate import solve_ivp
+from scipy.optimize import brentq
+
+from electrogrowth.stroh import stroh_matrix_py
+from electrogrowth.tube import solve_base_state
+
+
+def det_impedance(params, m: int, n: int, rtol: float) -> float:
+    """det z(r_o) of mode (m, n), with z scaled like S / max(1, |(m, k r_o)|)."""
+    state = solve_base_state(params)
+    k = n * math.pi / (params.stretch * params.length)
+    a = params.growth**3 / params.stretch
+    G = np.empty((8, 8))
+
+    def rhs(R, y):
+        z = y.reshape(4, 4)
+        r = math.sqrt(state.r_i**2 + a * (R * R - 1.0))
+        stroh_matrix_py(state.moduli(np.array(R)), float(state.pressure(np.array(R))),
+                        float(m), k * r, G)
+        G1, G2, G3, G4 = G[:4, :4], G[:4, 4:], G[4:, :4], G[4:, 4:]
+        return (a * R / r**2 * (G3 + G4 @ z - z @ G1 - z @ G2 @ z)).ravel()
+
+    sol = solve_ivp(rhs, (1.0, params.outer_radius), np.zeros(16), method="DOP853",
+                    rtol=rtol, atol=rtol * 1e-2)
+    s = max(1.0, math.hypot(m, k * state.r_o))
+    return float(np.linalg.det(sol.y[:, -1].reshape(4, 4) / s))
+
+
+def critical_growth(params, m: int, n: int, *, rtol: float = 1e-10, step: float = 0.01,
+                    g_max: float = 6.0) -> float:
+    """Smallest g > 1 with det z(r_o) = 0 for mode (m, n): 1 % march, then brentq."""
+    f = lambda g: det_impedance(dataclasses.replace(params, growth=g), m, n, rtol)  # noqa
+    g, fg = 1.0, f(1.0)
+    while g < g_max:
+        g_new = g * (1 + step)
+        f_new = f(g_new)
+        if fg * f_new <= 0:
+            return brentq(f, g, g_new, xtol=1e-14, rtol=1e-14)
+        g, fg = g_new, f_new
+    raise RuntimeError(f"no critical growth below {g_max} for mode ({m}, {n})")
