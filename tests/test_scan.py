@@ -1,0 +1,61 @@
+"""Mode scans: the batched march finds the same first mode as one-by-one solves."""
+
+import pytest
+
+from electrogrowth import ParameterError, TubeParameters
+from electrogrowth.bifurcation import critical_value
+from electrogrowth.errors import NoBifurcationFound
+from electrogrowth.scan import mode_grid, scan_modes
+
+P = TubeParameters(1.4, 1.0, stretch=1.0, voltage=0.4)
+
+
+def _brute(params, solve_for, modes, side=None):
+    out = []
+    for m, n in modes:
+        try:
+            c = critical_value(params, int(m), int(n), solve_for, side=side)
+        except NoBifurcationFound:
+            continue
+        if c.kind == "bifurcation":
+            out.append((c.value, int(m), int(n)))
+    return sorted(out, reverse=(side == "compression"))
+
+
+@pytest.mark.parametrize("solve_for, side", [("growth", None), ("voltage", None),
+                                             ("stretch", "compression")])
+def test_scan_equals_brute_force(solve_for, side):
+    params = P if solve_for != "voltage" else TubeParameters(1.4, 1.0)
+    res = scan_modes(params, solve_for, side=side, m_range=(0, 3), n_range=(1, 3), top=3,
+                     extend=False)
+    brute = _brute(params, solve_for, mode_grid((0, 3), (1, 3)), side)
+    value, m, n = brute[0]
+    assert (res.critical.m, res.critical.n) == (m, n)
+    assert res.critical.value == pytest.approx(value, rel=1e-12)
+    for got, (want, mm, nn) in zip(res.runners_up, brute[1:3]):
+        assert (got.m, got.n) == (mm, nn)
+        assert got.value == pytest.approx(want, rel=1e-8)
+
+
+def test_range_is_widened_while_the_optimum_sits_on_its_edge():
+    res = scan_modes(P, "growth", m_range=(0, 0), n_range=(1, 1))
+    assert res.m_range == (0, 1) and res.n_range == (1, 2)
+    assert (res.critical.m, res.critical.n) == (0, 1)
+    assert not res.surface_instability
+
+
+def test_extension_finds_bifurcation_before_the_threshold():
+    """Vbar = 0.4: modes wrinkle just before lambda_z reaches the threshold 2.5117."""
+    res = scan_modes(P, "stretch", side="extension", m_range=(0, 3), n_range=(1, 2))
+    assert res.critical.kind == "bifurcation"
+    assert 2.49 < res.critical.value < 2.5117
+    direct = critical_value(P, res.critical.m, res.critical.n, "stretch", side="extension")
+    assert res.critical.value == pytest.approx(direct.value, rel=1e-12)
+
+
+@pytest.mark.parametrize("kw, needle", [
+    (dict(m_range=(-1, 3)), "m range"), (dict(n_range=(0, 3)), "n range"),
+    (dict(n_range=(4, 2)), "n range"), (dict(side="up"), "side")])
+def test_bad_ranges(kw, needle):
+    with pytest.raises(ParameterError, match=needle):
+        scan_modes(P, "growth", **kw)
