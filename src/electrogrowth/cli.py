@@ -21,6 +21,7 @@ from . import __version__, figures_base
 from .cli_options import (UsageError, _Parser, _material, _number,  # noqa: F401 (re-export)
                           add_tube_options, tube_from_args)
 from .cli_critical import configure_critical, run_critical
+from .cli_demo import configure_demo, run_demo
 from .errors import ElectrogrowthError
 from .tube import solve_base_state
 
@@ -114,6 +115,9 @@ COMMANDS: dict[str, tuple[str, Callable, Callable]] = {
     "critical": ("critical growth factor, axial stretch or voltage for the onset of"
                  " wrinkling, for one mode or scanned over modes", configure_critical,
                  run_critical),
+    "demo": ("the paper's headline tube (Rbar_o = 1.4, L = 1, lambda_z = 1, Vbar = 0.4):"
+             " base state, critical growth and mode, curve and 3D pattern",
+             configure_demo, run_demo),
 }
 
 
