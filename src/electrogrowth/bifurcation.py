@@ -153,7 +153,8 @@ def critical_value(params: TubeParameters, m: int, n: int, solve_for: str, *,
     if bracket is not None and g(bracket[0]) * g(bracket[1]) < 0:
         value = brent(g, *bracket)
     else:
-        res = first_bifurcations(params, solve_for, side, mode, fine)
+        loose = targets_for(method, max(rtol, 1e-8))  # signs only, along the march
+        res = first_bifurcations(params, solve_for, side, mode, loose, brent_targets=fine)
         if not res.found:
             return CriticalPoint(solve_for, res.threshold, int(m), int(n), "threshold", 0.0,
                                  method, side, at(res.threshold))
