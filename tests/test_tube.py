@@ -2,7 +2,9 @@
 
 The neo-Hookean closed forms below are written here, independently of the package, from
 docs/derivation-base-state.md; the "slow twins" integrate with scipy.integrate.quad in the
-current radius r instead of Gauss-Legendre / Chebyshev in R.
+current radius r instead of Gauss-Legendre / Chebyshev in R. The package's own neo-Hookean
+closed-form route (the fast path) is checked against its generic quadrature route, reached by
+writing the same energy in a form the package does not recognise.
 """
 
 import dataclasses
@@ -15,7 +17,7 @@ import sympy as sp
 from scipy.integrate import quad
 from scipy.optimize import brentq, minimize_scalar
 
-from electrogrowth import tube
+from electrogrowth import _voltage, tube
 from electrogrowth.errors import BaseStateError
 from electrogrowth.materials import I1, I4, I5, I6, Material, gent, mooney_rivlin
 from electrogrowth.params import TubeParameters
@@ -29,6 +31,9 @@ CASES = [  # (Rbar_o, g, lambda_z, Vbar)
 KNOWLES = Material("knowles-1/2", (sp.sqrt(1 + 2 * (I1 - 3)) - 1) / 2 + I5 / 2)  # softening
 NON_IDEAL = [Material("nh+I6/10", (I1 - 3) / 2 + I5 / 2 + I6 / 10),
              Material("nh+I4/5", (I1 - 3) / 2 + I5 / 2 + I4 / 5)]
+# the ideal neo-Hookean energy in disguise: equal on I1 >= 3, but takes the generic route
+NH_TWINS = [Material("nh-trig", (I1 - 3) / 2 * (sp.cos(I1)**2 + sp.sin(I1)**2) + I5 / 2),
+            Material("nh-rational", (I1**2 - 9) / (2 * (I1 + 3)) + I5 / 2)]
 
 
 def params(Ro, g, lz, V, material=None):
@@ -353,6 +358,116 @@ def test_moduli_are_the_materials_at_the_local_state():
     assert got.shape == (2, 2, 23)
     want = s.params.material.moduli(*s.elastic_stretches(R), s.displacement(R))
     np.testing.assert_array_equal(got, want)
+
+
+# -- the neo-Hookean fast path against the generic route ---------------------------------------
+
+@pytest.mark.parametrize("twin", NH_TWINS, ids=lambda m: m.name)
+def test_closed_form_route_matches_the_generic_route(twin, rng):
+    """16 random (Rbar_o, g, lambda_z, Vbar / Vbar_inf): every output of the base state agrees
+    to 1e-12 (measured: 1e-15 - 1e-13)."""
+    assert tube._kind(twin) == "ideal"  # not recognised: Gauss quadrature, scan, Chebyshev
+    for Ro, g, lz, frac in zip(rng.uniform(1.05, 4.0, 16), rng.uniform(0.7, 2.0, 16),
+                               rng.uniform(0.6, 1.6, 16), rng.uniform(0.02, 0.97, 16)):
+        p = params(Ro, g, lz, frac * neo_hookean_asymptote(params(Ro, g, lz, 0.0)))
+        q = dataclasses.replace(p, material=twin)
+        fast, slow = solve_base_state(p), solve_base_state(q)
+        assert tube._info(p).nodes == 0 and tube._info(q).nodes > 0  # two routes indeed
+        for name in ("lambda_i", "lambda_o", "r_i", "r_o", "charge", "voltage_threshold"):
+            assert getattr(fast, name) == pytest.approx(getattr(slow, name), rel=1e-12), name
+        assert fast.threshold_kind == slow.threshold_kind == "asymptote"
+        assert fast.axial_force == pytest.approx(slow.axial_force, rel=1e-12, abs=1e-12)
+        assert fast.quadrature_error < 1e-14 and slow.quadrature_error < 1e-13
+        R = np.linspace(1.0, Ro, 17)
+        want = slow.stresses(R)
+        scale = max(np.abs(w).max() for w in want)
+        for got, w in zip(fast.stresses(R), want):
+            np.testing.assert_allclose(got, w, rtol=0, atol=1e-12 * scale)
+        for f in ("pressure", "moduli", "electric_field", "displacement", "radius"):
+            w = getattr(slow, f)(R)
+            np.testing.assert_allclose(getattr(fast, f)(R), w, rtol=0,
+                                       atol=1e-12 * np.abs(w).max(), err_msg=f)
+        lam = math.sqrt(g**3 / lz) * np.geomspace(1.001, 300.0, 13)
+        np.testing.assert_allclose(voltage_curve(p, lam), voltage_curve(q, lam), rtol=1e-12)
+        assert voltage_threshold(p) == (fast.voltage_threshold, "asymptote", math.inf)
+
+
+def test_closed_form_voltage_rises_strictly_to_the_asymptote():
+    """(NH-6) over Rbar_o = 1.005 .. 32: Vbar^2 / Vbar_inf^2 falls strictly in
+    y = (lambda_i0 / lambda_i)^2 from 1 (y = 0) to 0 (y = 1), and m = lambda_z M / g falls
+    strictly in y on (0, 100]: one lambda_i0, and one lambda_i per Vbar (proof in the docs)."""
+    square, traction = (np.vectorize(f, otypes=[float])
+                        for f in (_voltage.nh_square, _voltage.nh_traction))
+    y = np.geomspace(1e-4, 1.0, 1500)
+    for k in np.geomspace(1e-2, 1e3, 30):  # k = Rbar_o^2 - 1
+        f = square(y, k)
+        assert np.all(np.diff(f) < 0) and f[0] < 1.0 and f[-1] == 0.0
+        assert square(0.0, k) == 1.0
+        m = traction(np.geomspace(1e-4, 100.0, 1500), k)
+        assert np.all(np.diff(m) < 0) and np.all(m < 0.5 * math.log1p(k))
+
+
+@pytest.mark.parametrize("frac", [0.2, 0.5, 0.9, 0.999, 1 - 1e-6, 1 - 1e-10])
+def test_closed_form_root_is_backward_stable(frac):
+    """Vbar(lambda_i) of the test's own closed form (NH-3) returns the requested Vbar."""
+    p = params(1.4, 1.3, 0.9, 0.0)
+    V = frac * neo_hookean_asymptote(p)
+    s = solve_base_state(dataclasses.replace(p, voltage=V))
+    assert nh_voltage(p, s.lambda_i) == pytest.approx(V, rel=1e-14)
+    log_ratio = 0.5 * math.log1p(1.3**3 / 0.9 * (1.4**2 - 1) / s.r_i**2)  # ln(r_o / r_i)
+    assert s.charge * log_ratio == pytest.approx(V * 0.4, rel=1e-14)
+
+
+@pytest.mark.parametrize("Ro, g, lz", [(2.0, 1.0, 1.0), (1.4, 1.3, 0.9), (4.0, 1.05, 0.8),
+                                       (1.1, 1.0, 1.0)])
+def test_one_ulp_below_the_asymptote(Ro, g, lz):
+    """A state far out on the branch, or a named error if Vbar / Vbar_inf rounds to 1."""
+    p = params(Ro, g, lz, 0.0)
+    V = float(np.nextafter(neo_hookean_asymptote(p), 0.0))
+    for _ in range(3):
+        try:
+            s = solve_base_state(dataclasses.replace(p, voltage=V))
+        except BaseStateError as err:
+            assert "within rounding of the threshold" in str(err)
+        else:
+            assert 1e3 * math.sqrt(g**3 / lz) < s.lambda_i < math.inf
+            assert s.quadrature_error < 1e-15
+        V = float(np.nextafter(V, 0.0))
+
+
+def test_neo_hookean_takes_the_closed_form_route(monkeypatch):
+    """No generic stress, field or moduli evaluation for the paper's material."""
+    def generic(*args, **kwargs):
+        raise AssertionError("generic route taken")
+    for name in ("stress", "electric_field", "moduli"):
+        monkeypatch.setattr(Material, name, generic)
+    p = params(1.4, 1.2345, 0.9876, 0.4)  # a new (g, lambda_z): nothing cached
+    s = solve_base_state(p, rtol=1e-10)
+    R = np.linspace(1.0, 1.4, 33)
+    assert s.moduli(R).shape == (33, 23) and s.pressure(R).shape == (33,)
+    assert set(s.profiles(5)) >= {"sigma_rr", "E_r"}
+    assert voltage_curve(p, [2.0, 3.0]).shape == (2,) and voltage_threshold(p)[1] == "asymptote"
+
+
+@pytest.mark.parametrize("material", [gent(20.0), KNOWLES, mooney_rivlin(0.3), *NON_IDEAL],
+                         ids=lambda m: m.name)
+def test_mechanical_state_is_the_homogeneous_one_for_every_energy(material):
+    """lambda_i0 = sqrt(g^3 / lambda_z): l1 = l2 throughout, so tau_1 = tau_2 (docs Sec. 3), and
+    M < 0 below, > 0 above (Baker-Ericksen). The root found here by brentq on the quadrature."""
+    g, lz = 1.15, 0.85
+    wall = tube._Tube(material, 2.0, g, lz, 64)
+
+    def m(lam):
+        return float(wall.hoop(np.array([lam]), 0.0)[0][0])
+    lam0 = math.sqrt(g**3 / lz)
+    assert brentq(m, 0.6 * lam0, 1.7 * lam0, xtol=1e-15, rtol=1e-15) == pytest.approx(
+        lam0, rel=1e-13)
+    lam = lam0 * np.concatenate([np.geomspace(0.6, 0.999, 10), np.geomspace(1.001, 1.7, 10)])
+    assert np.array_equal(np.sign([m(x) for x in lam]), np.sign(lam - lam0))
+    s = solve_base_state(params(2.0, g, lz, 0.0, material))
+    assert s.lambda_i == lam0 and s.charge == 0.0
+    srr, stt, _ = s.stresses(np.linspace(1.0, 2.0, 9))
+    assert np.abs(srr).max() < 1e-14 and np.abs(stt).max() < 1e-14  # uniaxial: only sigma_zz
 
 
 def test_docstring_examples():

@@ -109,6 +109,15 @@ def _energy_derivatives(energy: sp.Expr) -> Callable:
 
 
 @functools.lru_cache(maxsize=64)
+def _energy_gradient(energy: sp.Expr) -> Callable:
+    """Lambdify dOmega/dI_k alone: all that stress and field need (no Hessian)."""
+    return sp.lambdify(INVARIANTS, [sp.diff(energy, s) for s in INVARIANTS], "numpy")
+
+
+_NO_HESSIAN = [0.0] * 25  # placeholder W for the forms that do not read it (stress, field)
+
+
+@functools.lru_cache(maxsize=64)
 def _energy_value(energy: sp.Expr) -> Callable:
     return sp.lambdify(INVARIANTS, energy, "numpy")
 
@@ -157,7 +166,7 @@ class Material:
                 " use only I1, I2, I4, I5, I6 with parameters substituted")
         object.__setattr__(self, "energy", expr)
 
-    def _derivs(self, l1, l2, l3, d):
+    def _derivs(self, l1, l2, l3, d, *, hessian: bool = True):
         l1, l2, l3, d = np.broadcast_arrays(*(np.asarray(x, float) for x in (l1, l2, l3, d)))
         inv = _invariants(l1, l2, l3, d)
         with np.errstate(invalid="ignore", divide="ignore"):
@@ -167,6 +176,10 @@ class Material:
             raise ParameterError(
                 f"deformation outside the domain of {self.name!r} (I1 = "
                 f"{np.ravel(inv[0])[bad]:.6g}): the energy is not finite there")
+        if not hessian:
+            w = [np.broadcast_to(np.asarray(x, float), l1.shape)
+                 for x in _energy_gradient(self.energy)(*inv)]
+            return (l1, l2, l3, d, w, _NO_HESSIAN)
         w, W = _energy_derivatives(self.energy)(*inv)
         w = [np.broadcast_to(np.asarray(x, float), l1.shape) for x in w]
         W = [np.broadcast_to(np.asarray(x, float), l1.shape) for row in W for x in row]
@@ -178,12 +191,12 @@ class Material:
         Shape ``(3,) + broadcast shape``: the component is the FIRST axis.
         """
         tau_f, _, _ = _universal_forms()
-        return np.array(tau_f(*self._derivs(l1, l2, l3, d)), dtype=float)
+        return np.array(tau_f(*self._derivs(l1, l2, l3, d, hessian=False)), dtype=float)
 
     def electric_field(self, l1, l2, l3, d):
         """Radial current electric field E_1 for radial current displacement d."""
         _, e_f, _ = _universal_forms()
-        args = self._derivs(l1, l2, l3, d)
+        args = self._derivs(l1, l2, l3, d, hessian=False)
         return np.broadcast_to(np.asarray(e_f(*args), float), args[0].shape).copy()
 
     def moduli(self, l1, l2, l3, d):

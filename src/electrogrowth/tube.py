@@ -6,282 +6,32 @@ and deforms (det F_e = 1) into r_i <= r <= r_o at total axial stretch lambda_z (
     r(R)^2 = r_i^2 + b (R^2 - 1),   b = g^3 / lambda_z,   dr/dR = b R / r,
 
 with elastic stretches l2 = r / (g R), l3 = lambda_z / g, l1 = 1 / (l2 l3). Maxwell's equation
-gives D_r = c / r and the voltage is V = Vbar (Rbar_o - 1) = int_{r_i}^{r_o} E_r dr. Radial
-equilibrium d sigma_rr / dr = (sigma_tt - sigma_rr) / r = (tau_2 - tau_1) / r with both faces
-traction-free (eq. 25) fixes c for each lambda_i = r_i:
+gives D_r = c / r, the voltage is V = Vbar (Rbar_o - 1) = int_{r_i}^{r_o} E_r dr, and radial
+equilibrium with both faces traction-free (eq. 25) fixes c for each lambda_i = r_i: the curve
+Vbar(lambda_i) and its threshold live in ``_voltage``. Here: the public entry points, and the
+through-wall profile of the solved state, sigma_rr(R) = int_{r_i}^{r} (tau_2 - tau_1) dr / r.
 
-    int_{r_i}^{r_o} (tau_2 - tau_1) dr / r = 0.                                          (*)
-
-For an ideal dielectric tau_1 = tau_1^mech + D_r^2 and E_r = D_r, so (*) is linear in c^2:
-c^2 = 2 M r_i^2 r_o^2 / (r_o^2 - r_i^2), M the purely mechanical integral, V = c ln(r_o/r_i).
-Other energies solve (*) for c^2 by a bracketed secant (Illinois) iteration. Integrals are
-Gauss-Legendre in R on [1, Rbar_o] (analytic integrands); the profile sigma_rr(R) is a Chebyshev
-antiderivative, exact to quadrature accuracy at any R. Derivation, neo-Hookean closed forms and
-the paper's typos: docs/derivation-base-state.md.
+Two routes. The ideal neo-Hookean dielectric (the paper's material) is solved in closed form:
+lambda_i by brentq on (NH-6), sigma_rr by (NH-1), N by (NH-4), moduli by
+``materials.neo_hookean_moduli``. Every other energy takes the generic route: Gauss-Legendre
+quadratures, a scanned threshold, and sigma_rr as a Chebyshev antiderivative, exact to
+quadrature accuracy at any R; it is also the reference the closed form is tested against.
+Derivation, closed forms and the paper's typos: docs/derivation-base-state.md.
 """
 
 from __future__ import annotations
 
 import dataclasses
-import functools
 import math
 
 import numpy as np
-import sympy as sp
 from numpy.polynomial import chebyshev as cheb
-from scipy.optimize import brentq
 
+from ._voltage import (_ORDERS, _Tube, _cell_root, _info, _kind, nh_asymptote, nh_lambda_i,
+                       nh_traction, nh_voltage)
 from .errors import BaseStateError, ConvergenceError, ParameterError
-from .materials import I1, I5, INVARIANTS, Material
+from .materials import neo_hookean_moduli
 from .params import TubeParameters
-
-_ORDERS = (16, 24, 32, 48, 64, 96, 128, 192, 256, 384)  # Gauss-Legendre node counts tried
-_SCAN_RATIO, _SCAN_SPAN = 1.08, 1e3  # threshold scan: lambda_i0 1.08^k up to 1e3 lambda_i0
-_QUIET = dict(invalid="ignore", divide="ignore", over="ignore")
-
-
-@functools.lru_cache(maxsize=None)
-def _gauss(n: int):
-    return np.polynomial.legendre.leggauss(n)
-
-
-@functools.lru_cache(maxsize=64)
-def _kind(material: Material) -> str:
-    """'neo-hookean', 'ideal' (W(I1, I2) + I5/2) or 'general', decided once per energy."""
-    if sp.expand(material.energy - (I1 - 3) / 2 - I5 / 2) == 0:
-        return "neo-hookean"
-    return "ideal" if material.is_ideal_dielectric() else "general"
-
-
-@functools.lru_cache(maxsize=64)
-def _energy(material: Material):
-    """Numeric Omega(I1, ..., I6), or None for a polynomial energy (finite everywhere)."""
-    if material.energy.is_polynomial(*INVARIANTS):
-        return None
-    return sp.lambdify(INVARIANTS, material.energy, "numpy")
-
-
-@dataclasses.dataclass(frozen=True)
-class _Tube:
-    """Geometry and quadrature of one (material, Rbar_o, g, lambda_z); vectorised in lambda_i."""
-
-    material: Material
-    outer_radius: float
-    growth: float
-    stretch: float
-    nodes: int = 32
-
-    @property
-    def b(self) -> float:
-        return self.growth**3 / self.stretch
-
-    def kinematics(self, lam_i, R):
-        """r, elastic stretches (l1, l2, l3) and dr/dR at R (lam_i and R broadcast)."""
-        r = np.sqrt(lam_i**2 + self.b * (R**2 - 1.0))
-        l2 = r / (self.growth * R)
-        l3 = np.full_like(l2, self.stretch / self.growth)
-        return r, (1.0 / (l2 * l3), l2, l3), self.b * R / r
-
-    def _quadrature(self, lam_i, q):
-        """Nodes: r, stretches, D_r = sqrt(q) / r and weights of dr, shape lam_i.shape + (n,)."""
-        x, w = _gauss(self.nodes)
-        h = 0.5 * (self.outer_radius - 1.0)
-        r, stretches, drdR = self.kinematics(np.asarray(lam_i, float)[..., None], 1.0 + h * (x + 1))
-        return r, stretches, np.sqrt(np.asarray(q, float))[..., None] / r, h * w * drdR
-
-    def hoop(self, lam_i, q):
-        """(int (tau_2 - tau_1) dr / r, int (|tau_1| + |tau_2|) dr / r) at D_r = sqrt(q) / r."""
-        r, stretches, d, wdr = self._quadrature(lam_i, q)
-        tau1, tau2, _ = self.material.stress(*stretches, d)
-        return ((tau2 - tau1) * wdr / r).sum(-1), ((abs(tau2) + abs(tau1)) * wdr / r).sum(-1)
-
-    def in_domain(self, lam_i) -> np.ndarray:
-        """The energy is finite on both faces and at every node at D = 0 (False beyond a locking
-        stretch, e.g. Gent's)."""
-        if (energy := _energy(self.material)) is None:
-            return np.ones(np.shape(lam_i), bool)
-        R = np.concatenate([[1.0], 0.5 * (self.outer_radius - 1.0) * (_gauss(self.nodes)[0] + 1)
-                            + 1.0, [self.outer_radius]])  # faces and nodes
-        _, (l1, l2, l3), _ = self.kinematics(np.asarray(lam_i, float)[..., None], R)
-        with np.errstate(**_QUIET):
-            w = energy(l1**2 + l2**2 + l3**2, (l1 * l2)**2 + (l2 * l3)**2 + (l3 * l1)**2, 0, 0, 0)
-        return np.all(np.isfinite(np.broadcast_to(w, l1.shape)), axis=-1)
-
-    def charge_and_voltage(self, lam_i, *, rtol: float = 1e-13):
-        """Charge c and Vbar solving (*) at each lambda_i (1-d arrays). Below lambda_i0 an ideal
-        dielectric gives negative values (signed square root, monotone for root finding), a
-        general energy NaN; outside the energy's domain NaN."""
-        lam_i = np.atleast_1d(np.asarray(lam_i, float))
-        c, v = np.full_like(lam_i, np.nan), np.full_like(lam_i, np.nan)
-        ok = self.in_domain(lam_i)
-        lam = lam_i[ok]
-        delta = self.b * (self.outer_radius**2 - 1.0)  # r_o^2 - r_i^2, exact
-        with np.errstate(**_QUIET):
-            m0, scale = self.hoop(lam, 0.0)
-            m0 = np.where(abs(m0) <= 1e-13 * scale, 0.0, m0)
-            q = 2.0 * m0 * lam**2 * (lam**2 + delta) / delta
-            if _kind(self.material) != "general":
-                c[ok] = np.sign(q) * np.sqrt(abs(q))
-                v[ok] = c[ok] * 0.5 * np.log1p(delta / lam**2)
-            else:
-                up = m0 >= 0  # else below lambda_i0: NaN
-                ok[ok] = up
-                c[ok] = np.sqrt(self._solve_q(lam[up], m0[up], q[up], rtol))
-                r, stretches, d, wdr = self._quadrature(lam[up], c[ok] ** 2)
-                v[ok] = (self.material.electric_field(*stretches, d) * wdr).sum(-1)
-        return c, v / (self.outer_radius - 1.0)
-
-    def voltage(self, lam_i) -> np.ndarray:
-        return self.charge_and_voltage(lam_i)[1]
-
-    def _solve_q(self, lam_i, f_lo, q_hi, rtol):
-        """Illinois (modified regula falsi) for hoop(lam_i, q) = 0 in q = c^2, given f(0) >= 0."""
-        q_lo, q_hi = np.zeros_like(q_hi), np.maximum(q_hi, 1e-300)
-        f_hi = self.hoop(lam_i, q_hi)[0]
-        for _ in range(200):  # expand until f(q_hi) <= 0
-            up = f_hi > 0
-            if not up.any():
-                break
-            q_lo, f_lo = np.where(up, q_hi, q_lo), np.where(up, f_hi, f_lo)
-            q_hi = np.where(up, 2.0 * q_hi, q_hi)
-            f_hi = self.hoop(lam_i, q_hi)[0]
-        side = np.zeros(q_hi.shape, int)
-        for _ in range(100):
-            q = np.where(f_hi == f_lo, q_hi, (q_lo * f_hi - q_hi * f_lo) / (f_hi - f_lo))
-            f, scale = self.hoop(lam_i, q)
-            done = (abs(f) <= 1e-14 * scale) | (abs(q_hi - q_lo) <= 1e-2 * rtol * abs(q))
-            if np.all(done | ~np.isfinite(q)):
-                return np.where(f_lo == 0, q_lo, q)
-            hi = f < 0  # replace the endpoint of f's sign; halve the kept one's f (Illinois)
-            f_lo = np.where(hi & (side == 1), f_lo / 2, f_lo)
-            f_hi = np.where(~hi & (side == -1), f_hi / 2, f_hi)
-            q_hi, f_hi = np.where(hi, q, q_hi), np.where(hi, f, f_hi)
-            q_lo, f_lo = np.where(hi, q_lo, q), np.where(hi, f_lo, f)
-            side = np.where(hi, 1, -1)
-        raise ConvergenceError(f"charge c not converged at lambda_i = {lam_i[~done][0]!r}")
-
-
-@dataclasses.dataclass(frozen=True)
-class _Threshold:
-    lambda_i0: float  # purely mechanical state, Vbar = 0
-    value: float  # Vbar threshold (inf if none)
-    kind: str  # "asymptote", "limit point" or "none"
-    lambda_i: float  # lambda_i at the threshold (inf: asymptote; locking stretch: "none")
-    error: float  # estimated absolute error of value
-    nodes: int  # Gauss-Legendre nodes meeting rtol
-    grid: np.ndarray  # lambda_i on the monotone branch, from lambda_i0 ...
-    values: np.ndarray  # ... and Vbar there (increasing, starts at 0)
-
-
-@functools.lru_cache(maxsize=4096)
-def _mechanical(material, outer_radius, growth, stretch, rtol) -> tuple[float, int]:
-    """lambda_i0, solving (*) at c = 0, and the fewest Gauss-Legendre nodes meeting rtol."""
-    tube = _Tube(material, outer_radius, growth, stretch, _ORDERS[0])
-    lam0 = _lambda_i0(tube)
-    nodes = _nodes(tube, lam0 * np.array([1.0, 1.5, 3.0]), rtol)
-    if nodes != tube.nodes:
-        lam0 = _lambda_i0(dataclasses.replace(tube, nodes=nodes))
-    return lam0, nodes
-
-
-def _lambda_i0(tube: _Tube) -> float:
-    """Root of M(lambda_i), bracketed on a grid around the homogeneous lambda^2 lz = g^3."""
-    guess = tube.growth**1.5 / math.sqrt(tube.stretch)
-    for span in (2.0, 8.0, 64.0):
-        lam = guess * span ** np.linspace(-1.0, 1.0, 33)
-        f = np.full_like(lam, np.nan)
-        ok = tube.in_domain(lam)
-        f[ok] = tube.hoop(lam[ok], 0.0)[0]
-        k = np.flatnonzero((f[:-1] < 0) & (f[1:] >= 0))
-        if k.size:
-            return _cell_root(lambda x: tube.hoop(x, 0.0)[0], lam[k[0]], lam[k[0] + 1])
-    raise BaseStateError(f"no traction-free state at Vbar = 0 for g = {tube.growth:g},"
-                         f" lambda_z = {tube.stretch:g}, Rbar_o = {tube.outer_radius:g}")
-
-
-def _nodes(tube: _Tube, lam: np.ndarray, rtol: float) -> int:
-    """Fewest nodes whose M at lam agrees with the next rule to 1e-2 rtol of the stress scale."""
-    lam = lam[tube.in_domain(lam)]
-    for n, n2 in zip(_ORDERS, _ORDERS[1:]):
-        (a, s), (b, _) = (dataclasses.replace(tube, nodes=k).hoop(lam, 0.0) for k in (n, n2))
-        if np.all(abs(a - b) <= 0.01 * rtol * s):
-            return n
-    raise ConvergenceError(f"quadrature not converged to rtol = {rtol} with {n2} nodes")
-
-
-def _cell_root(f, a: float, b: float) -> float:
-    """Root of an analytic vectorised f changing sign on [a, b]: root of its degree-12 Chebyshev
-    interpolant, polished by one Newton step with the interpolant's slope (relative accuracy
-    ~1e-15); brentq (xtol 1e-15 a, rtol 1e-14) when the interpolant is not resolved."""
-    with np.errstate(**_QUIET):
-        poly = cheb.Chebyshev.interpolate(f, 12, domain=[a, b])
-    tol = 1e-12 * (b - a)
-    roots = [x.real for x in poly.roots() if abs(x.imag) < tol and a - tol <= x.real <= b + tol]
-    size = abs(poly.coef).max()
-    if len(roots) == 1 and np.isfinite(size) and abs(poly.coef[-2:]).max() <= 1e-14 * size:
-        x = roots[0] - float(f(np.array([roots[0]]))[0]) / poly.deriv()(roots[0])
-        if a - tol <= x <= b + tol:
-            return float(x)
-    return brentq(lambda x: float(f(np.array([x]))[0]), a, b, xtol=1e-15 * a, rtol=1e-14)
-
-
-@functools.lru_cache(maxsize=4096)
-def _threshold(material, outer_radius, growth, stretch, rtol) -> _Threshold:
-    """Scan Vbar(lambda_i) geometrically from lambda_i0 for the first local maximum; without one,
-    Vbar -> inf at a locking stretch ("none"), or the asymptote (neo-Hookean closed form, else
-    Richardson extrapolation in x = lambda_i^-2, whose order is measured)."""
-    lam0, nodes = _mechanical(material, outer_radius, growth, stretch, rtol)
-    tube = _Tube(material, outer_radius, growth, stretch, nodes)
-    lam = lam0 * _SCAN_RATIO ** np.arange(0, math.ceil(math.log(_SCAN_SPAN, _SCAN_RATIO)) + 1)
-    v = np.concatenate([[0.0], tube.voltage(lam[1:])])
-    bad = np.flatnonzero(~np.isfinite(v))
-    end = bad[0] if bad.size else v.size
-    rises = np.diff(v[:end]) > 0
-    peak = np.flatnonzero(rises[:-1] & ~rises[1:])
-    if peak.size:
-        return _limit_point(tube, lam0, lam[: peak[0] + 3], v[: peak[0] + 3])
-    if not rises.all():
-        raise ConvergenceError(f"Vbar(lambda_i) does not rise from lambda_i0 = {lam0:.12g}")
-    out = dict(lambda_i0=lam0, error=0.0, nodes=nodes, grid=lam[:end], values=v[:end])
-    if end < v.size:  # the energy ends (e.g. Gent): locate the locking stretch
-        a, b = lam[end - 1], lam[end]
-        while b - a > 1e-14 * b:  # 64-section of the domain's edge
-            x = np.linspace(a, b, 65)
-            j = np.argmin(tube.in_domain(x)) - 1
-            a, b = x[j], x[j + 1]
-        return _Threshold(value=math.inf, kind="none", lambda_i=a, **out)
-    if _kind(material) == "neo-hookean":
-        value = neo_hookean_asymptote(TubeParameters(outer_radius, 1.0, growth, stretch))
-        return _Threshold(value=value, kind="asymptote", lambda_i=math.inf, **out)
-    # Richardson: Vbar = V_inf + a x^p + b x^(p+1) + ..., x = lambda_i^-2 (p = 2 for nH, MR)
-    t = tube.voltage(100.0 * lam0 * 2.0 ** np.arange(5))  # x shrinks 4x per step
-    d = np.diff(t)
-    if not (np.all(d > 0) and d[-2] > d[-1]):  # not converging: Vbar unbounded
-        return _Threshold(value=math.inf, kind="none", lambda_i=math.inf, **out)
-    p = math.log(d[-2] / d[-1], 4.0)  # observed order in x
-    p = round(p) if abs(p - round(p)) < 0.05 else p
-    for j in range(3):
-        prev, t = t[-1], t[1:] + (t[1:] - t[:-1]) / (4.0 ** (p + j) - 1.0)
-    out["error"] = abs(t[-1] - prev)
-    return _Threshold(value=float(t[-1]), kind="asymptote", lambda_i=math.inf, **out)
-
-
-def _limit_point(tube: _Tube, lam0: float, lam: np.ndarray, v: np.ndarray) -> _Threshold:
-    """Maximise Vbar on [lam[-3], lam[-1]]: root of the derivative of a degree-24 Chebyshev
-    interpolant of Vbar^2 (analytic there), then Vbar evaluated exactly at that root."""
-    def vsq(x):
-        return np.sign(y := tube.voltage(x)) * y**2
-    a, b = lam[-3], lam[-1]
-    poly = cheb.Chebyshev.interpolate(vsq, 24, domain=[a, b])
-    crit = [x.real for x in poly.deriv().roots() if abs(x.imag) < 1e-9 and a <= x.real <= b]
-    if not crit:
-        raise ConvergenceError(f"limit point of Vbar not located in [{a:.6g}, {b:.6g}]")
-    top = max(crit, key=poly)
-    value = math.sqrt(float(vsq(top)[0]))
-    keep = lam < top
-    return _Threshold(lam0, value, "limit point", float(top), abs(poly(top) - value**2) / value,
-                      tube.nodes, np.append(lam[keep], top), np.append(v[keep], value))
-
 
 def neo_hookean_asymptote(params: TubeParameters) -> float:
     """Neo-Hookean lim_{lambda_i -> inf} Vbar (material ignored), derived in the docs:
@@ -291,13 +41,7 @@ def neo_hookean_asymptote(params: TubeParameters) -> float:
     >>> round(neo_hookean_asymptote(TubeParameters(outer_radius=2.0)), 6)
     1.019667
     """
-    Ro = params.outer_radius
-    return params.growth**2 / (params.stretch * (Ro - 1.0)) * math.sqrt(
-        (Ro**2 - 1.0) * math.log(Ro) / 2.0)
-
-
-def _info(params: TubeParameters, rtol: float = 1e-12) -> _Threshold:
-    return _threshold(params.material, params.outer_radius, params.growth, params.stretch, rtol)
+    return nh_asymptote(params.outer_radius, params.growth, params.stretch)
 
 
 def voltage_threshold(params: TubeParameters) -> tuple[float, str, float]:
@@ -333,6 +77,9 @@ def voltage_curve(params: TubeParameters, lambda_i) -> np.ndarray:
     if low.any():
         raise BaseStateError(f"lambda_i = {lam[low].flat[0]:.12g} is below the Vbar = 0 value"
                              f" {info.lambda_i0:.12g}; no real voltage there")
+    if info.nodes == 0:  # neo-Hookean closed form (NH-6)
+        return np.maximum(nh_voltage(params.outer_radius, params.growth, params.stretch, lam),
+                          0.0)
     tube = _Tube(params.material, params.outer_radius, params.growth, params.stretch, info.nodes)
     v = tube.voltage(lam.ravel())
     if not np.all(np.isfinite(v)):
@@ -344,15 +91,18 @@ def voltage_curve(params: TubeParameters, lambda_i) -> np.ndarray:
 def solve_base_state(params: TubeParameters, *, rtol: float = 1e-12) -> "BaseState":
     """Solve the base state (paper Sec. 3.1) at the requested Vbar = ``params.voltage``.
 
-    lambda_i solves Vbar(lambda_i) = Vbar (brentq) on the monotone branch from lambda_i0
-    (Vbar = 0) to the threshold of :func:`voltage_threshold`.
+    lambda_i solves Vbar(lambda_i) = Vbar on the monotone branch from lambda_i0 (Vbar = 0) to
+    the threshold of :func:`voltage_threshold`: in closed form for the ideal neo-Hookean
+    dielectric (brentq on NH-6, to rounding, ~20 us), else by a Chebyshev root in the cell of
+    the scanned curve that brackets Vbar (~2 ms).
 
     Parameters
     ----------
     params : TubeParameters
         Rbar_o, g, lambda_z, Vbar and the energy.
     rtol : float, keyword-only
-        Relative accuracy of quadratures and root finding (default 1e-12).
+        Relative accuracy of quadratures and root finding (default 1e-12); the neo-Hookean
+        closed form is always at rounding level.
 
     Raises
     ------
@@ -370,7 +120,14 @@ def solve_base_state(params: TubeParameters, *, rtol: float = 1e-12) -> "BaseSta
             f"Vbar = {target:.12g} is at or above the threshold Vbar = {info.value:.12g}"
             f" ({info.kind}) for g = {params.growth:g}, lambda_z = {params.stretch:g},"
             f" Rbar_o = {params.outer_radius:g}, {params.material.name}; no axisymmetric state")
-    tube = _Tube(params.material, params.outer_radius, params.growth, params.stretch, info.nodes)
+    Ro, g, lz = params.outer_radius, params.growth, params.stretch
+    if info.nodes == 0:  # neo-Hookean closed form
+        if not (ratio := target / info.value) < 1.0:
+            raise BaseStateError(f"Vbar = {target:.12g} is within rounding of the threshold"
+                                 f" {info.value:.12g}; no base state resolved")
+        tube = _Tube(params.material, Ro, g, lz)
+        return BaseState._neo_hookean(params, tube, nh_lambda_i(Ro, g, lz, ratio), info)
+    tube = _Tube(params.material, Ro, g, lz, info.nodes)
     if target == 0:
         return BaseState._build(params, tube, info.lambda_i0, info, rtol)
     grid, v = info.grid, info.values
@@ -400,7 +157,8 @@ class BaseState:
     Attributes: lambda_i = r_i, lambda_o = r_o / Rbar_o, r_i, r_o, charge c (D_r = c / r), the
     Vbar threshold and its kind, the axial force N = 2 pi int sigma_zz r dr holding lambda_z,
     and quadrature_error, the residuals (outer traction over the stress scale, voltage) of an
-    independent Chebyshev quadrature of the solved state.
+    independent Chebyshev quadrature of the solved state (neo-Hookean: the traction residual
+    of (*) at the solved lambda_i and c, rounding level).
     """
 
     params: TubeParameters
@@ -414,7 +172,8 @@ class BaseState:
     axial_force: float
     quadrature_error: float = 0.0
     _tube: _Tube = dataclasses.field(default=None, repr=False, compare=False)
-    _sigma: cheb.Chebyshev = dataclasses.field(default=None, repr=False, compare=False)
+    # sigma_rr(R) on the generic route; None: the neo-Hookean closed form (NH-1)
+    _sigma: cheb.Chebyshev | None = dataclasses.field(default=None, repr=False, compare=False)
 
     @classmethod
     def _build(cls, params, tube, lam, info, rtol) -> "BaseState":
@@ -440,13 +199,35 @@ class BaseState:
                 break
         else:
             raise ConvergenceError(f"base-state profile not resolved to rtol = {rtol}")
-        sigma, scale, force, volt = (cheb.Chebyshev(k, domain=[1.0, Ro]).integ(lbnd=1.0)
-                                     for k in coef.T)
+        sigma = cheb.Chebyshev(coef[:, 0], domain=[1.0, Ro]).integ(lbnd=1.0)
+        weights = np.zeros(coef.shape[0])  # int_1^Ro T_k = (Ro - 1) / (1 - k^2), k even
+        weights[::2] = (Ro - 1.0) / (1.0 - np.arange(0, coef.shape[0], 2) ** 2)
+        scale, force, volt = weights @ coef[:, 1:]
         r_o = math.sqrt(lam**2 + tube.b * (Ro**2 - 1.0))
-        error = max(abs(sigma(Ro)) / max(1.0, abs(scale(Ro))),
-                    abs(volt(Ro) / (Ro - 1.0) - params.voltage) / max(1.0, params.voltage))
+        error = max(abs(sigma(Ro)) / max(1.0, abs(scale)),
+                    abs(volt / (Ro - 1.0) - params.voltage) / max(1.0, params.voltage))
         return cls(params, float(lam), r_o / Ro, float(lam), r_o, c, info.value, info.kind,
-                   float(math.pi * force(Ro)), float(error), tube, sigma)
+                   float(math.pi * force), float(error), tube, sigma)
+
+    @classmethod
+    def _neo_hookean(cls, params, tube, lam, info) -> "BaseState":
+        """Closed forms at lambda_i = lam: c from (V), N from (NH-4), and as quadrature_error
+        the traction residual M - c^2 Delta / (2 r_i^2 r_o^2) of (*), M = (g / lz) m by (NH-6),
+        over max(1, (g / lz) ln Rbar_o)."""
+        Ro, g, lz = params.outer_radius, params.growth, params.stretch
+        b, x = tube.b, lam * lam
+        delta = b * (Ro**2 - 1.0)  # r_o^2 - r_i^2
+        s = 0.5 * math.log1p(delta / x)  # ln(r_o / r_i)
+        c = params.voltage * (Ro - 1.0) / s
+        residual = (g / lz * nh_traction(b / x, Ro**2 - 1.0)
+                    - 0.5 * c * c * delta / (x * (x + delta)))
+        a = x - b  # A = r^2 - b R^2
+        force = math.pi * (lz**2 * delta / g**2 - c * c * s
+                           - g**4 / lz**2 * (0.5 * (Ro**2 - 1.0) - a / b * s)
+                           - b / g**2 * (a * math.log(Ro) + 0.5 * delta))
+        r_o = math.sqrt(x + delta)
+        return cls(params, lam, r_o / Ro, lam, r_o, c, info.value, info.kind, force,
+                   abs(residual) / max(1.0, g / lz * math.log(Ro)), tube, None)
 
     def _local(self, R):
         R = np.asarray(R, float)
@@ -454,6 +235,25 @@ class BaseState:
             raise ParameterError(f"R outside the wall [1, {self.params.outer_radius:g}]")
         r, stretches, _ = self._tube.kinematics(self.lambda_i, R)
         return R, r, stretches, self.charge / r
+
+    def _tau(self, stretches, d) -> np.ndarray:
+        """tau_i (Maxwell included); neo-Hookean (l1^2 + d^2, l2^2, l3^2)."""
+        if self._sigma is not None:
+            return self.params.material.stress(*stretches, d)
+        l1, l2, l3 = stretches
+        return np.array([l1**2 + d**2, l2**2, l3**2])
+
+    def _sigma_rr(self, R, r) -> np.ndarray:
+        """sigma_rr; neo-Hookean (NH-1) with rho = (R^2 - 1) / (Rbar_o^2 - 1):
+        (g / 2 lz) [log1p((R^2 - 1) A / r^2) - log1p(kappa_o) (r_o / r)^2 rho],
+        A = r_i^2 - b, kappa_o = (Rbar_o^2 - 1) A / r_o^2: exactly 0 at R = 1 and at Vbar = 0."""
+        if self._sigma is not None:
+            return self._sigma(R)
+        p = self.params
+        a, ro2, k = self.r_i**2 - self._tube.b, self.r_o**2, p.outer_radius**2 - 1.0
+        R2m1 = R**2 - 1.0
+        return 0.5 * p.growth / p.stretch * (np.log1p(R2m1 * a / r**2)
+                                             - math.log1p(k * a / ro2) * ro2 / r**2 * R2m1 / k)
 
     def radius(self, R) -> np.ndarray:
         """r(R) = sqrt(r_i^2 + g^3 (R^2 - 1) / lambda_z)."""
@@ -470,27 +270,32 @@ class BaseState:
     def electric_field(self, R) -> np.ndarray:
         """Radial current electric field E_r = dOmega/dD~ / l1 (= D_r for ideal dielectrics)."""
         _, _, stretches, d = self._local(R)
+        if self._sigma is None:
+            return d
         return self.params.material.electric_field(*stretches, d)
 
     def sigma_rr(self, R) -> np.ndarray:
         """Radial Cauchy stress sigma_rr(R) = int_{r_i}^{r(R)} (tau_2 - tau_1) dr / r."""
-        return self._sigma(self._local(R)[0])
+        R, r, _, _ = self._local(R)
+        return self._sigma_rr(R, r)
 
     def stresses(self, R) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(sigma_rr, sigma_tt, sigma_zz), sigma_ii = tau_i - p with p = tau_1 - sigma_rr."""
-        R, _, stretches, d = self._local(R)
-        tau = self.params.material.stress(*stretches, d)
-        srr = self._sigma(R)
+        R, r, stretches, d = self._local(R)
+        tau = self._tau(stretches, d)
+        srr = self._sigma_rr(R, r)
         return srr, tau[1] - tau[0] + srr, tau[2] - tau[0] + srr
 
     def pressure(self, R) -> np.ndarray:
         """Lagrange multiplier p = tau_1 - sigma_rr."""
-        R, _, stretches, d = self._local(R)
-        return self.params.material.stress(*stretches, d)[0] - self._sigma(R)
+        R, r, stretches, d = self._local(R)
+        return self._tau(stretches, d)[0] - self._sigma_rr(R, r)
 
     def moduli(self, R) -> np.ndarray:
         """Updated moduli (materials.MODULI_NAMES order), shape R.shape + (23,)."""
         _, _, stretches, d = self._local(R)
+        if self._sigma is None:
+            return neo_hookean_moduli(*stretches, d)
         return self.params.material.moduli(*stretches, d)
 
     def profiles(self, n: int = 101) -> dict[str, np.ndarray]:
@@ -502,4 +307,3 @@ class BaseState:
         return {"R": R, "r": r, "lambda": r / R, "sigma_rr": srr, "sigma_tt": stt,
                 "sigma_zz": szz, "p": self.pressure(R), "D_r": self.displacement(R),
                 "E_r": self.electric_field(R)}
-
