@@ -96,7 +96,7 @@ def _universal_forms():
             comps.append(d2O[9 + p, 9 + q] / (Fd[p, p] * Fd[q, q]))
     args = (l1, l2, l3, d, w, list(W))
     return (sp.lambdify(args, tau, "numpy"), sp.lambdify(args, E1, "numpy"),
-            sp.lambdify(args, [sp.expand(c) for c in comps], "numpy"))
+            sp.lambdify(args, [sp.expand(c) for c in comps], "numpy", cse=True))
 
 
 @functools.lru_cache(maxsize=64)
@@ -213,6 +213,7 @@ class Material:
         return not (rest.free_symbols & {I4, I5, I6})
 
 
+@functools.lru_cache(maxsize=1)
 def neo_hookean() -> Material:
     """Ideal neo-Hookean dielectric, Omega = (I1 - 3)/2 + I5/2 (paper eq. neo-Hookean)."""
     return Material("neo-hookean", (I1 - 3) / 2 + I5 / 2)
