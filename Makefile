@@ -12,7 +12,7 @@ OUT ?= out
 $(VENV)/.installed: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install -q --upgrade pip
-	$(BIN)/python -m pip install -q -e '.[test]'
+	$(BIN)/python -m pip install -q -e '.[test,vtk,sweep]'
 	touch $@
 
 # The heavier optional extras (sweep = xarray/zarr/dask, vtk = meshio), on demand.

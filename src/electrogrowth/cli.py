@@ -22,6 +22,8 @@ from .cli_options import (UsageError, _Parser, _material, _number,  # noqa: F401
                           add_tube_options, tube_from_args)
 from .cli_critical import configure_critical, run_critical
 from .cli_demo import configure_demo, run_demo
+from .cli_pattern import HELP as PATTERN_HELP
+from .cli_pattern import configure_pattern, run_pattern
 from .errors import ElectrogrowthError
 from .tube import solve_base_state
 
@@ -118,6 +120,7 @@ COMMANDS: dict[str, tuple[str, Callable, Callable]] = {
     "demo": ("the paper's headline tube (Rbar_o = 1.4, L = 1, lambda_z = 1, Vbar = 0.4):"
              " base state, critical growth and mode, curve and 3D pattern",
              configure_demo, run_demo),
+    "pattern": (PATTERN_HELP, configure_pattern, run_pattern),
 }
 
 

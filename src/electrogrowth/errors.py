@@ -27,3 +27,7 @@ class ConvergenceError(ElectrogrowthError, RuntimeError):
 
 class NoBifurcationFound(ElectrogrowthError, RuntimeError):
     """No bifurcation of the requested kind lies in the searched range."""
+
+
+class MissingDependencyError(ElectrogrowthError, ImportError):
+    """An optional package (an extra such as ``vtk`` or ``sweep``) is not installed."""
