@@ -24,6 +24,7 @@ from .cli_critical import configure_critical, run_critical
 from .cli_demo import configure_demo, run_demo
 from .cli_pattern import HELP as PATTERN_HELP
 from .cli_pattern import configure_pattern, run_pattern
+from .cli_sweep import configure_plot, configure_sweep, run_plot, run_sweep
 from .errors import ElectrogrowthError
 from .tube import solve_base_state
 
@@ -121,6 +122,9 @@ COMMANDS: dict[str, tuple[str, Callable, Callable]] = {
              " base state, critical growth and mode, curve and 3D pattern",
              configure_demo, run_demo),
     "pattern": (PATTERN_HELP, configure_pattern, run_pattern),
+    "sweep": ("critical points over a grid of tubes, in parallel, into a resumable Zarr store",
+              configure_sweep, run_sweep),
+    "plot": ("phase diagram (PNG + SVG) of a sweep store", configure_plot, run_plot),
 }
 
 
