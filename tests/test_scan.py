@@ -59,3 +59,16 @@ def test_extension_finds_bifurcation_before_the_threshold():
 def test_bad_ranges(kw, needle):
     with pytest.raises(ParameterError, match=needle):
         scan_modes(P, "growth", **kw)
+
+
+def test_surface_instability_is_extrapolated_not_scanned_forever():
+    """Thick, long, compressed tube under voltage: the critical voltage keeps falling with n."""
+    p = TubeParameters(2.5, 3.0, stretch=0.8)
+    res = scan_modes(p, "voltage", m_range=(0, 2), n_range=(1, 6))
+    c = res.critical
+    assert res.surface_instability and res.n_range == (1, 24) and c.n == 24
+    assert res.short_wave_limit < c.value  # the limit lies below every finite-n value
+    v48 = critical_value(p, c.m, 48, "voltage").value
+    assert res.short_wave_limit < v48 < c.value
+    assert abs(res.short_wave_limit - v48) < 1.5 * abs(v48 - c.value)  # O(1/n) approach
+    assert res.short_wave_error < abs(v48 - c.value)

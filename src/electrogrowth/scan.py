@@ -22,9 +22,11 @@ from .errors import ParameterError
 from .march import ModeValue, first_bifurcations
 from .params import TubeParameters
 
-LOOSE = 1e-6  # kernel tolerance for signs along the march
+LOOSE = 1e-5  # kernel tolerance for signs along the march (no sign error seen at 1e-4)
 MEDIUM = 1e-9  # for the runners-up; the critical mode is re-solved at the requested rtol
 M_CAP, N_CAP = 64, 320
+DOUBLINGS = 2  # widen a range at most this often; an optimum still on its edge is a
+               # short-wavelength (surface) instability, extrapolated instead of scanned
 
 
 @dataclasses.dataclass(frozen=True)
@@ -36,12 +38,16 @@ class ScanResult:
     m_range: tuple[int, int]
     n_range: tuple[int, int]
     surface_instability: bool = False
+    short_wave_limit: float | None = None  # Richardson limit n (or m) -> inf, if surface
+    short_wave_error: float | None = None
 
     def as_dict(self) -> dict:
         out = self.critical.as_dict()
         out["runners_up"] = [dataclasses.asdict(r) for r in self.runners_up]
         out["m_range"], out["n_range"] = list(self.m_range), list(self.n_range)
         out["surface_instability"] = self.surface_instability
+        out["short_wave_limit"] = self.short_wave_limit
+        out["short_wave_error"] = self.short_wave_error
         return out
 
 
@@ -78,17 +84,35 @@ def scan_modes(params: TubeParameters, solve_for: str, *, side: str | None = Non
     side = check_side(solve_for, side)
     _check_range("m", m_range, 0)
     _check_range("n", n_range, 1)
+    grown = {"m": 0, "n": 0}
     while True:
         result = _scan_once(params, solve_for, side, m_range, n_range, top, rtol)
         c = result.critical
-        grow_m = c.kind == "bifurcation" and c.m == m_range[1] and m_range[1] < M_CAP
-        grow_n = c.kind == "bifurcation" and c.n == n_range[1] and n_range[1] < N_CAP
-        if not extend or not (grow_m or grow_n):
+        edge = {"m": c.kind == "bifurcation" and c.m == m_range[1] and m_range[1] < M_CAP,
+                "n": c.kind == "bifurcation" and c.n == n_range[1] and n_range[1] < N_CAP}
+        grow = {k: edge[k] and grown[k] < DOUBLINGS for k in edge}
+        if not extend or not any(grow.values()):
             break
-        m_range = (m_range[0], min(2 * m_range[1] + 1, M_CAP)) if grow_m else m_range
-        n_range = (n_range[0], min(2 * n_range[1], N_CAP)) if grow_n else n_range
-    surface = c.kind == "bifurcation" and (c.n == n_range[1] or c.m == m_range[1])
-    return dataclasses.replace(result, surface_instability=surface)
+        if grow["m"]:
+            m_range, grown["m"] = (m_range[0], min(2 * m_range[1] + 1, M_CAP)), grown["m"] + 1
+        if grow["n"]:
+            n_range, grown["n"] = (n_range[0], min(2 * n_range[1], N_CAP)), grown["n"] + 1
+    if not (extend and c.kind == "bifurcation" and any(edge.values())):
+        return result
+    along = "n" if edge["n"] else "m"
+    limit, err = _short_wave_limit(params, solve_for, side, c.m, c.n, along, rtol)
+    return dataclasses.replace(result, surface_instability=True, short_wave_limit=limit,
+                               short_wave_error=err)
+
+
+def _short_wave_limit(params, solve_for, side, m, n, along, rtol):
+    """Critical value as n (or m) -> inf: the O(1/n) approach extrapolated from n, 2n, 4n."""
+    v = []
+    for j in (1, 2, 4):
+        mm, nn = (m, j * n) if along == "n" else (j * m, n)
+        v.append(critical_value(params, mm, nn, solve_for, side=side, rtol=rtol).value)
+    first, second = 2 * v[1] - v[0], 2 * v[2] - v[1]
+    return second, abs(second - first)
 
 
 def _check_range(name, rng, lowest):
