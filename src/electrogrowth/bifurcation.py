@@ -20,13 +20,14 @@ import math
 import numpy as np
 
 from .errors import ConvergenceError, ParameterError
-from .impedance import STATUS_TEXT, target_batch
+from .impedance import STATUS_TEXT, target_batch, target_serial
 from .march import Targets, brent, first_bifurcations
 from .params import TubeParameters
 from .radial_table import build_table, stack_tables
 from .tube import solve_base_state
 
 METHODS = ("impedance", "collocation")
+PARALLEL_FROM = 16  # batches smaller than this run on one thread (thread launch costs more)
 SIDES = ("compression", "extension")
 
 
@@ -73,8 +74,9 @@ def impedance_targets(state, modes, *, rtol: float = 1e-12,
     f = np.empty(nb_)
     status = np.empty(nb_, dtype=np.int64)
     steps = np.empty(nb_, dtype=np.int64)
-    target_batch(np.ascontiguousarray(modes[:, 0]), k, np.zeros(nb_, dtype=np.int64), coef,
-                 degree, fmap, geom, rtol, max_steps, f, status, steps)
+    kernel = target_batch if nb_ >= PARALLEL_FROM else target_serial
+    kernel(np.ascontiguousarray(modes[:, 0]), k, np.zeros(nb_, dtype=np.int64), coef,
+           degree, fmap, geom, rtol, max_steps, f, status, steps)
     bad = status != 0
     if bad.any():
         i = int(np.argmax(bad))

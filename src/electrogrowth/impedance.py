@@ -287,6 +287,17 @@ def integrate_one(m, k, coef, degree, fmap, geom, rtol, max_steps, switch=SWITCH
     return _target(z, J, orient), z, J, OK, steps
 
 
+@nb.njit(cache=True)
+def _target_member(b, m, k, table_index, coef, degree, fmap, geom, rtol, max_steps,
+                   out_f, out_status, out_steps):
+    t = table_index[b]
+    f, _, _, status, steps = integrate_one(m[b], k[b], coef[t], degree[t], fmap[t], geom[t],
+                                           rtol, max_steps)
+    out_f[b] = f
+    out_status[b] = status
+    out_steps[b] = steps
+
+
 @nb.njit(parallel=True, cache=True)
 def target_batch(m, k, table_index, coef, degree, fmap, geom, rtol, max_steps,
                  out_f, out_status, out_steps):
@@ -295,12 +306,17 @@ def target_batch(m, k, table_index, coef, degree, fmap, geom, rtol, max_steps,
     ``table_index[b]`` selects the stacked base-state table of member b.
     """
     for b in nb.prange(m.shape[0]):
-        t = table_index[b]
-        f, _, _, status, steps = integrate_one(m[b], k[b], coef[t], degree[t], fmap[t],
-                                               geom[t], rtol, max_steps)
-        out_f[b] = f
-        out_status[b] = status
-        out_steps[b] = steps
+        _target_member(b, m, k, table_index, coef, degree, fmap, geom, rtol, max_steps,
+                       out_f, out_status, out_steps)
+
+
+@nb.njit(cache=True)
+def target_serial(m, k, table_index, coef, degree, fmap, geom, rtol, max_steps,
+                  out_f, out_status, out_steps):
+    """:func:`target_batch` on one thread: small batches do not pay the thread launch."""
+    for b in range(m.shape[0]):
+        _target_member(b, m, k, table_index, coef, degree, fmap, geom, rtol, max_steps,
+                       out_f, out_status, out_steps)
 
 
 def physical_impedance(z_chart: np.ndarray, chart: int, scale: float) -> np.ndarray:

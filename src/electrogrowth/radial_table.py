@@ -86,28 +86,22 @@ def build_table(state, *, tol: float = 1e-15, max_nodes: int = 129) -> RadialTab
         raise ConvergenceError(
             f"base state not resolved by {max_nodes} Chebyshev points (Rbar_o = {ro});"
             " the wall is too thick or strained for the table")
-    degree = np.array([n - np.argmax(~row[::-1]) if (~row).any() else 1 for row in small])
+    # significant coefficients: n minus the trailing run of small ones (at least 1)
+    degree = np.maximum(n - np.argmax(~small[:, ::-1], axis=1) * (~small).any(axis=1), 1)
+    degree[~(~small).any(axis=1)] = 1
     return _dedupe(coef, degree, state)
 
 
 def _dedupe(coef, degree, state) -> RadialTable:
-    rows, degs, fmap = [], [], np.empty(N_FUNCS, dtype=np.int64)
+    seen: dict[bytes, int] = {}
+    fmap = np.empty(N_FUNCS, dtype=np.int64)
     for f in range(N_FUNCS):
-        c = coef[f, :degree[f]]
-        for j, (row, d) in enumerate(zip(rows, degs)):
-            if d == degree[f] and np.array_equal(row, c):
-                fmap[f] = j
-                break
-        else:
-            fmap[f] = len(rows)
-            rows.append(c)
-            degs.append(degree[f])
-    width = max(degs)
-    table = np.zeros((len(rows), width))
-    for j, row in enumerate(rows):
-        table[j, :len(row)] = row
+        fmap[f] = seen.setdefault(coef[f, :degree[f]].tobytes(), len(seen))
+    first = np.unique(fmap, return_index=True)[1]  # first function of each distinct row
+    degs = degree[first]
+    table = coef[first, :degs.max()] * (np.arange(degs.max()) < degs[:, None])
     g, lz = state.params.growth, state.params.stretch
-    geom = np.array([state.params.outer_radius, state.r_i**2, g**3 / lz, float(len(rows))])
+    geom = np.array([state.params.outer_radius, state.r_i**2, g**3 / lz, float(len(first))])
     return RadialTable(table, np.array(degs, dtype=np.int64), fmap, geom)
 
 
