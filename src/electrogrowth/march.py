@@ -68,11 +68,17 @@ def control_path(params: TubeParameters, solve_for: str, side: str | None):
         f"solve_for = {solve_for!r} is unknown; choose growth, stretch or voltage")
 
 
+def unloaded_signs(params: TubeParameters, modes: np.ndarray, targets: Targets) -> np.ndarray:
+    """Signs of the targets on the unloaded tube (g = 1, lambda_z = 1, Vbar = 0)."""
+    ref = dataclasses.replace(params, growth=1.0, stretch=1.0, voltage=0.0)
+    return np.sign(targets(solve_base_state(ref), modes))
+
+
 class _History:
     """Last two samples (x, signed target) of every mode, and when each is due again.
 
     A mode's target is extrapolated linearly to its root; the mode is re-evaluated once
-    the march has covered half that distance (a quarter of the scale at most), so modes
+    the march has covered 0.6 of that distance (half the scale at most), so modes
     far from bifurcation cost a few evaluations, not one per step.
     """
 
@@ -99,7 +105,7 @@ class _History:
     def record(self, idx, x, g):
         self.xb[idx], self.gb[idx] = self.xa[idx], self.ga[idx]
         self.xa[idx], self.ga[idx] = x, g
-        wait = np.minimum(0.5 * self.root_distance()[idx], 0.25 * self.scale)
+        wait = np.minimum(0.6 * self.root_distance()[idx], 0.5 * self.scale)
         self.due[idx] = x + self.sense * wait
 
     def step_limit(self):
@@ -110,15 +116,19 @@ class _History:
 
 def first_bifurcations(params: TubeParameters, solve_for: str, side: str | None,
                        modes: np.ndarray, targets: Targets, *, top: int = 1,
-                       brent_targets: Targets | None = None) -> MarchResult:
+                       brent_targets: Targets | None = None,
+                       stable_signs: np.ndarray | None = None) -> MarchResult:
     """Critical values of the first ``top`` modes of ``modes`` reached by the march.
 
     ``targets`` is used for signs along the march (it may be loose); ``brent_targets``
-    (default ``targets``) for the final roots.
+    (default ``targets``) for the final roots. ``stable_signs``, the signs of the targets
+    on the unloaded tube, are computed unless given (they depend only on the material,
+    Rbar_o, L and the modes, so a curve or sweep can reuse them).
     """
     at = lambda x: dataclasses.replace(params, **{solve_for: float(x)})  # noqa: E731
-    ref = dataclasses.replace(params, growth=1.0, stretch=1.0, voltage=0.0)
-    sref = np.sign(targets(solve_base_state(ref), modes))
+    if stable_signs is None:
+        stable_signs = unloaded_signs(params, modes, targets)
+    sref = stable_signs
     x0, end, scale = control_path(params, solve_for, side)
     sense = 1.0 if end > x0 else -1.0
     state = solve_base_state(at(x0))

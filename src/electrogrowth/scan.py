@@ -14,12 +14,13 @@ flagged as a short-wavelength (surface) instability.
 from __future__ import annotations
 
 import dataclasses
+import functools
 
 import numpy as np
 
 from .bifurcation import (CriticalPoint, check_side, critical_value, impedance_targets)
 from .errors import ParameterError
-from .march import ModeValue, first_bifurcations
+from .march import ModeValue, first_bifurcations, unloaded_signs
 from .params import TubeParameters
 
 LOOSE = 1e-5  # kernel tolerance for signs along the march (no sign error seen at 1e-4)
@@ -127,7 +128,9 @@ def _scan_once(params, solve_for, side, m_range, n_range, top, rtol) -> ScanResu
     loose = lambda state, md: impedance_targets(state, md, rtol=LOOSE)  # noqa: E731
     fine = lambda state, md: impedance_targets(state, md, rtol=max(rtol, MEDIUM))  # noqa
     res = first_bifurcations(params, solve_for, side, modes, loose, top=top,
-                             brent_targets=fine)
+                             brent_targets=fine,
+                             stable_signs=_stable_signs(params.material, params.outer_radius,
+                                                        params.length, m_range, n_range))
     at = lambda x: dataclasses.replace(params, **{solve_for: float(x)})  # noqa: E731
     found = res.found
     if not found:  # the march stops at the threshold, so found modes come before it
@@ -139,3 +142,11 @@ def _scan_once(params, solve_for, side, m_range, n_range, top, rtol) -> ScanResu
     crit = critical_value(params, best.m, best.n, solve_for, side=side, rtol=rtol,
                           bracket=(best.value - w, best.value + w))
     return ScanResult(crit, tuple(found[1:top]), m_range, n_range)
+
+
+@functools.lru_cache(maxsize=64)
+def _stable_signs(material, outer_radius, length, m_range, n_range) -> np.ndarray:
+    """Signs on the unloaded tube, shared by every scan of a curve or sweep."""
+    modes = mode_grid(m_range, n_range)
+    ref = TubeParameters(outer_radius, length, material=material)
+    return unloaded_signs(ref, modes, lambda s, md: impedance_targets(s, md, rtol=LOOSE))
