@@ -31,7 +31,8 @@ from .params import TubeParameters
 from .tube import solve_base_state, voltage_threshold
 
 FIRST_STEP, MIN_STEP, MAX_STEP, MAX_LAMBDA_JUMP = 0.004, 1e-4, 0.05, 0.05
-LAMBDA_CAP = 200.0  # stop approaching a threshold once lambda_i has grown this much
+MAX_WAIT = 0.25
+LAMBDA_CAP = 50.0  # stop approaching a threshold once lambda_i has grown this much
 
 #: targets(state, modes (k, 2) array) -> (k,) array of target values
 Targets = Callable[[object, np.ndarray], np.ndarray]
@@ -75,26 +76,44 @@ def unloaded_signs(params: TubeParameters, modes: np.ndarray, targets: Targets) 
 
 
 class _History:
-    """Last two samples (x, signed target) of every mode, and when each is due again.
+    """Last three samples (x, signed target) of every mode, and when each is due again.
 
-    A mode's target is extrapolated linearly to its root; the mode is re-evaluated once
-    the march has covered 0.6 of that distance (half the scale at most), so modes
-    far from bifurcation cost a few evaluations, not one per step.
+    A mode's target is extrapolated to its root, by the line through its last two samples
+    and the parabola through its last three, whichever reaches zero first (near Vbar = 0
+    targets fall like Vbar^2, which a line overestimates). The mode is re-evaluated once
+    the march has covered half that distance, and at least every MAX_WAIT of the scale (a
+    mode may lose and regain stability between two distant samples), so modes far from
+    bifurcation cost a few evaluations, not one per step.
     """
 
     def __init__(self, x0, g0, sense, scale):
         n = g0.size
         self.sense, self.scale = sense, scale
-        self.xa, self.ga = np.full(n, x0), g0.copy()
-        self.xb, self.gb = np.full(n, np.nan), np.full(n, np.nan)
+        self.x = np.full((3, n), np.nan)  # rows: newest, previous, oldest
+        self.g = np.full((3, n), np.nan)
+        self.x[0], self.g[0] = x0, g0
         self.alive = np.ones(n, bool)
         self.due = np.full(n, x0)
 
+    @property
+    def xa(self):
+        return self.x[0]
+
     def root_distance(self):
-        """Extrapolated |x_root - x_a| per mode (inf when not approaching)."""
-        with np.errstate(invalid="ignore", divide="ignore"):
-            dist = self.ga * np.abs(self.xa - self.xb) / (self.gb - self.ga)
-        return np.where(self.gb > self.ga, dist, np.inf)
+        """Extrapolated distance from the newest sample to the root (inf if receding)."""
+        (xa, xb, xc), (ga, gb, gc) = self.x, self.g
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            slope = (ga - gb) / (xa - xb)
+            line = np.where(slope * self.sense < 0, -ga / slope * self.sense, np.inf)
+            curv = ((ga - gb) / (xa - xb) - (gb - gc) / (xb - xc)) / (xa - xc)
+            # g(xa + sense t) = ga + s t + c t^2 with s = slope sense, c = curv
+            s_, c_ = slope * self.sense, curv
+            disc = s_ * s_ - 4 * c_ * ga
+            t = (-s_ - np.sqrt(np.maximum(disc, 0))) / (2 * c_)
+            t2 = (-s_ + np.sqrt(np.maximum(disc, 0))) / (2 * c_)
+            t = np.where((t > 0) & (disc >= 0), t, np.where((t2 > 0) & (disc >= 0), t2, np.inf))
+        return np.fmin(np.where(np.isnan(line), np.inf, line),
+                       np.where(np.isnan(t), np.inf, t))
 
     def needs(self, x):
         """Alive modes to evaluate at x: due, or predicted to have crossed by x."""
@@ -103,9 +122,9 @@ class _History:
                              (reach >= self.root_distance()))
 
     def record(self, idx, x, g):
-        self.xb[idx], self.gb[idx] = self.xa[idx], self.ga[idx]
-        self.xa[idx], self.ga[idx] = x, g
-        wait = np.minimum(0.6 * self.root_distance()[idx], 0.5 * self.scale)
+        self.x[:, idx] = np.vstack([np.full(idx.size, x), self.x[0, idx], self.x[1, idx]])
+        self.g[:, idx] = np.vstack([g, self.g[0, idx], self.g[1, idx]])
+        wait = np.minimum(0.5 * self.root_distance()[idx], MAX_WAIT * self.scale)
         self.due[idx] = x + self.sense * wait
 
     def step_limit(self):
@@ -157,7 +176,7 @@ def first_bifurcations(params: TubeParameters, solve_for: str, side: str | None,
             if abs(state.lambda_i / lam_prev - 1) > MAX_LAMBDA_JUMP and d > 1e-12:
                 d /= 2
                 continue
-            done = threshold is not None and state.lambda_i > LAMBDA_CAP * lam0
+            done = state.lambda_i > LAMBDA_CAP * lam0  # the wall is a film: at the threshold
         if done:  # a last look at every mode not seen at x_prev: nothing left behind
             idx = np.nonzero(hist.alive & (hist.xa != x_prev))[0]
             if idx.size:
@@ -189,11 +208,11 @@ def _advance(hist, idx, x, g, signed, signed_fine, modes) -> list:
         groups.setdefault(hist.xa[i], []).append(i)
     for xa, cand in groups.items():  # modes last seen together are bisected together
         found += _refine(signed, signed_fine, modes, np.array(cand), xa, x)
-    mid, old = hist.ga[idx], hist.gb[idx]  # the two samples before x
+    mid, old = hist.g[0, idx], hist.g[1, idx]  # the two samples before x
     dips = np.nonzero(~hit & (mid < 0.25 * np.minimum(old, g)))[0]
     for j in dips[np.argsort(mid[dips])][:8]:
         i = idx[j]
-        bracket = _dip(lambda y: signed_fine(y, i), hist.xb[i], x)
+        bracket = _dip(lambda y: signed_fine(y, i), hist.x[1, i], x)
         if bracket is not None:
             found.append(ModeValue(int(modes[i, 0]), int(modes[i, 1]),
                                    brent(lambda y: signed_fine(y, i), *bracket)))
