@@ -17,13 +17,15 @@ import sys
 from pathlib import Path
 from typing import Callable
 
-from . import __version__, figures_base
+from . import __version__, figures_base, figures_modes
 from .cli_options import (UsageError, _Parser, _material, _number,  # noqa: F401 (re-export)
                           add_tube_options, tube_from_args)
 from .cli_critical import configure_critical, run_critical
+from .cli_curve import configure_curve, run_curve
 from .cli_demo import configure_demo, run_demo
 from .cli_pattern import HELP as PATTERN_HELP
 from .cli_pattern import configure_pattern, run_pattern
+from .cli_reproduce import configure_reproduce, run_reproduce
 from .cli_sweep import configure_plot, configure_sweep, run_plot, run_sweep
 from .errors import ElectrogrowthError
 from .tube import solve_base_state
@@ -35,6 +37,7 @@ PROG = "electrogrowth"
 FIGURES: dict[int, Callable[..., figures_base.FigureResult]] = {
     4: figures_base.figure4,
     5: figures_base.figure5,
+    **figures_modes.FIGURES,
 }
 
 
@@ -122,6 +125,10 @@ COMMANDS: dict[str, tuple[str, Callable, Callable]] = {
              " base state, critical growth and mode, curve and 3D pattern",
              configure_demo, run_demo),
     "pattern": (PATTERN_HELP, configure_pattern, run_pattern),
+    "curve": ("critical value along a parameter, with the mode switches located",
+              configure_curve, run_curve),
+    "reproduce": ("the paper's Figures 4-10, the 3D patterns of Figs 9B/10B and an index page",
+                  configure_reproduce, run_reproduce),
     "sweep": ("critical points over a grid of tubes, in parallel, into a resumable Zarr store",
               configure_sweep, run_sweep),
     "plot": ("phase diagram (PNG + SVG) of a sweep store", configure_plot, run_plot),

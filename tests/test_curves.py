@@ -1,0 +1,166 @@
+"""Critical curves along a parameter: located mode switches, consistency with single-mode
+solves, failures as data, and the ``electrogrowth curve`` command."""
+
+import argparse
+import csv
+import dataclasses
+import json
+
+import numpy as np
+import pytest
+
+from electrogrowth.bifurcation import critical_value
+from electrogrowth.cli_curve import configure_curve, run_curve
+from electrogrowth.curves import Switch, critical_curve
+from electrogrowth.errors import ParameterError
+from electrogrowth.params import TubeParameters
+from electrogrowth.scan import scan_modes
+
+SMALL = {"m_range": (0, 2), "n_range": (1, 2)}  # the optimum on an edge extends the range
+
+
+@pytest.fixture(scope="module")
+def thin_to_thick():
+    """lambda_z,cr (compression, Vbar = 0, L = 1) across Rbar_o = 1.2 .. 1.3: the critical
+    mode switches from (m, n) = (1, 1) to (0, 1) near Rbar_o = 1.256."""
+    calls = []
+    curve = critical_curve(TubeParameters(length=1.0), "stretch", "outer_radius", [1.2, 1.3],
+                           side="compression", progress=calls.append, **SMALL)
+    return curve, calls
+
+
+def test_switch_is_where_the_two_modes_are_equally_critical(thin_to_thick):
+    curve, calls = thin_to_thick
+    assert calls == [1, 1]
+    (sw,) = curve.switches
+    assert isinstance(sw, Switch) and 1.2 < sw.x < 1.3
+    assert sw.value_after == pytest.approx(sw.value, abs=1e-10)  # a crossing, not a jump
+    assert (sw.mode_before, sw.mode_after) == ((1, 1), (0, 1))
+    at = dataclasses.replace(curve.params, outer_radius=sw.x)
+    before = critical_value(at, 1, 1, "stretch", side="compression").value
+    after = critical_value(at, 0, 1, "stretch", side="compression").value
+    assert abs(before - after) < 1e-8
+    assert sw.value == pytest.approx(before, abs=1e-10)
+    rows = np.nonzero(curve.kind == "switch")[0]  # end of one branch, start of the next
+    assert len(rows) == 2 and np.all(curve.x[rows] == sw.x)
+    assert [(curve.m[i], curve.n[i]) for i in rows] == [(1, 1), (0, 1)]
+
+
+def test_values_between_grid_points_are_the_direct_critical_values(thin_to_thick):
+    curve, _ = thin_to_thick
+    sw = curve.switches[0]
+    for x in (0.5 * (1.2 + sw.x), 0.5 * (sw.x + 1.3)):  # inside each branch
+        p = dataclasses.replace(curve.params, outer_radius=x)
+        scan = scan_modes(p, "stretch", side="compression", **SMALL).critical
+        mode = (1, 1) if x < sw.x else (0, 1)
+        assert (scan.m, scan.n) == mode
+        direct = critical_value(p, *mode, "stretch", side="compression").value
+        assert scan.value == pytest.approx(direct, abs=1e-10)
+        # monotone pieces: thicker tubes need a stronger compression (smaller lambda_z)
+        lo, hi = (1.2, sw.x) if x < sw.x else (sw.x, 1.3)
+        v_lo = curve.value[curve.x == lo][-1 if lo == sw.x else 0]
+        v_hi = curve.value[curve.x == hi][0]
+        assert v_lo > direct > v_hi
+    assert np.all(np.diff(curve.x) >= 0) and np.all(np.diff(curve.value) < 1e-9)
+
+
+def test_branches_csv_and_plot(thin_to_thick, tmp_path):
+    curve, _ = thin_to_thick
+    modes = [mode for mode, _ in curve.branches()]
+    assert modes == [(1, 1), (0, 1)]
+    path = curve.to_csv(tmp_path / "c.csv")
+    with path.open() as fh:
+        rows = list(csv.reader(fh))
+    assert rows[0] == ["outer_radius", "stretch_cr", "m", "n", "kind", "surface",
+                       "short_wave_limit", "status"]
+    assert len(rows) == 1 + len(curve.x) and float(rows[1][1]) == curve.value[0]
+    ax = curve.plot()
+    labels = {t.get_text() for t in ax.texts}
+    assert labels == {"1, 1", "1, 0"}  # "n, m" as in the paper
+    assert "lambda" in ax.get_ylabel() and "R" in ax.get_xlabel()
+    json.dumps(curve.as_dict())
+
+
+def test_failures_are_data():
+    """At Vbar = 0.6 the ungrown tube (Rbar_o = 1.4, L = 1) buckles in extension at
+    lambda_z = 1.583: beyond it there is no stable start for the growth factor."""
+    p = TubeParameters(outer_radius=1.4, voltage=0.6)
+    curve = critical_curve(p, "growth", "stretch", [1.6, 1.65], **SMALL)
+    assert list(curve.kind) == ["failed", "failed"]
+    assert np.isnan(curve.value).all() and "already unstable" in curve.status[0]
+    assert curve.branches() == [] and curve.switches == ()
+
+
+@pytest.mark.parametrize("solve_for, along, extra, named", [
+    ("growth", "growth", {}, "along = 'growth'"),
+    ("stretch", "stretch", {}, "along = 'stretch'"),
+    ("growth", "radius", {}, "along = 'radius'"),
+    ("pressure", "stretch", {}, "solve_for = 'pressure'"),
+    ("voltage", "stretch", {"side": "extension"}, "side"),
+    ("stretch", "voltage", {"side": "sideways"}, "sideways"),
+])
+def test_bad_combinations_raise(solve_for, along, extra, named):
+    with pytest.raises(ParameterError, match=named):
+        critical_curve(TubeParameters(), solve_for, along, [1.0, 1.1], **extra)
+
+
+@pytest.mark.parametrize("values, named", [
+    ([1.2, 1.1, 1.3], "monotone"),
+    ([], "non-empty"),
+    ([0.5, 1.5], "Rbar_o = 0.5"),
+])
+def test_bad_grids_raise(values, named):
+    with pytest.raises(ParameterError, match=named):
+        critical_curve(TubeParameters(), "voltage", "outer_radius", values)
+
+
+def _args(*argv):
+    parser = argparse.ArgumentParser()
+    configure_curve(parser)
+    return parser.parse_args(list(argv))
+
+
+def test_cli_writes_csv_png_and_json(tmp_path, capsys):
+    args = _args("--solve-for", "stretch", "--side", "compression", "--along", "outer_radius",
+                 "--from", "1.2", "--to", "1.3", "--points", "2", "--m-max", "2", "--n-max",
+                 "2", "--out", str(tmp_path), "--json")
+    assert run_curve(args) == 0
+    out, err = capsys.readouterr()
+    rec = json.loads(out)
+    assert err == ""  # no progress bar with --json
+    assert rec["switches"][0]["mode_before"] == [1, 1] and rec["fixed"]["voltage"] == 0.0
+    assert (tmp_path / "curve_stretch_vs_outer_radius.csv").exists()
+    assert (tmp_path / "curve_stretch_vs_outer_radius.png").stat().st_size > 0
+
+
+def test_cli_text_summary(tmp_path, capsys):
+    args = _args("--solve-for", "growth", "--along", "stretch", "--from", "1.6", "--to",
+                 "1.65", "--points", "2", "--voltage", "0.6", "--out", str(tmp_path))
+    assert run_curve(args) == 0
+    out = capsys.readouterr().out
+    assert "critical growth along stretch" in out and "Vbar = 0.6" in out
+    assert "failed at stretch = 1.6" in out and "already unstable" in out
+
+
+def test_cli_help_speaks_the_papers_terms():
+    parser = argparse.ArgumentParser()
+    configure_curve(parser)
+    text = parser.format_help()
+    for word in ("g_cr", "lambda_z", "Vbar", "Rbar_o", "(m, n)", "--m-max", "--json"):
+        assert word in text
+
+
+@pytest.mark.parametrize("argv, named", [
+    (["--solve-for", "growth", "--along", "growth"], "along = 'growth'"),
+    (["--solve-for", "voltage", "--along", "stretch", "--side", "extension"], "--side"),
+    (["--solve-for", "voltage", "--along", "stretch", "--points", "1"], "--points = 1"),
+    (["--solve-for", "voltage", "--along", "stretch", "--to", "1"], "--from = --to"),
+    (["--solve-for", "voltage", "--along", "length", "--from", "-1"], "L = -1"),
+])
+def test_cli_bad_input_is_a_parameter_error(argv, named, tmp_path):
+    argv = list(argv)
+    for flag, value in (("--from", "1"), ("--to", "2")):
+        if flag not in argv:
+            argv += [flag, value]
+    with pytest.raises(ParameterError, match=named):
+        run_curve(_args(*argv, "--out", str(tmp_path)))
