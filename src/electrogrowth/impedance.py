@@ -173,7 +173,7 @@ def _switch_chart(z, J):
                 W1[a, c] = sign[a] * X[perm[a], c]
                 W2[a, c] = sign[4 + a] * X[perm[4 + a], c]
         d = _det4(W1)
-        if abs(d) < 1e-12:
+        if not np.isfinite(d) or abs(d) < 1e-12:  # W1 (entries O(1)) not invertible
             continue
         zn = np.linalg.solve(W1.T, W2.T).T  # W2 W1^-1
         size = np.max(np.abs(zn))
@@ -265,6 +265,8 @@ def integrate_one(m, k, coef, degree, fmap, geom, rtol, max_steps, switch=SWITCH
         err = 0.0
         if e5 > 0.0 or e3 > 0.0:
             err = h * e5 / np.sqrt((e5 + 0.01 * e3) * 16.0)
+        if not (np.isfinite(err) and np.all(np.isfinite(znew))):
+            err = 1e6  # overflow or NaN in a stage: retry with a smaller step
         steps += 1
         if err <= 1.0:
             R = ro if last else R + h

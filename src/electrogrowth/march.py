@@ -94,6 +94,7 @@ class _History:
         self.x[0], self.g[0] = x0, g0
         self.alive = np.ones(n, bool)
         self.due = np.full(n, x0)
+        self.x0 = x0
 
     @property
     def xa(self):
@@ -204,10 +205,15 @@ def _advance(hist, idx, x, g, signed, signed_fine, modes) -> list:
     found = []
     hit = g <= 0
     groups = {}
-    for i in idx[hit]:
-        groups.setdefault(hist.xa[i], []).append(i)
-    for xa, cand in groups.items():  # modes last seen together are bisected together
-        found += _refine(signed, signed_fine, modes, np.array(cand), xa, x)
+    for j in np.nonzero(hit)[0]:
+        groups.setdefault(hist.xa[idx[j]], []).append(j)
+    for xa, js in groups.items():  # modes last seen together are bisected together
+        roots = _refine(signed, signed_fine, modes, idx[js], xa, x, hist.x0)
+        for j, root in zip(js, roots):
+            if root is None:  # the loose sign was wrong: the mode is not past a root yet
+                hit[j] = False
+            else:
+                found.append(root)
     mid, old = hist.g[0, idx], hist.g[1, idx]  # the two samples before x
     dips = np.nonzero(~hit & (mid < 0.25 * np.minimum(old, g)))[0]
     for j in dips[np.argsort(mid[dips])][:8]:
@@ -232,36 +238,35 @@ def _dip(f, a, b):
     return None
 
 
-def _refine(signed, signed_fine, modes, cand, a, b) -> list:
-    """Shared bisection of the step (a, b] over the candidates, then Brent for each."""
-    for _ in range(6):
+def _refine(signed, signed_fine, modes, cand, xa, x, x0) -> list:
+    """Roots of the candidates, which changed sign between xa and x (loose targets).
+
+    Shared bisection points narrow every candidate's own bracket, then Brent's method
+    with the fine targets finishes each. A candidate whose fine target is still positive
+    at x was misjudged by the loose one: None (it stays in the march).
+    """
+    lo, hi = np.full(cand.size, xa, float), np.full(cand.size, x, float)
+    a, b = xa, x
+    for _ in range(6):  # bisect towards the earliest root; sample the others on the way
         c = 0.5 * (a + b)
-        g = signed(c, cand)
-        if (g <= 0).any():
-            cand, b = cand[g <= 0], c
-        else:
-            a = c
+        inside = (c - lo) * (c - hi) < 0
+        g = signed(c, cand[inside])
+        neg = np.zeros(cand.size, bool)
+        neg[inside] = g <= 0
+        hi[neg], lo[inside & ~neg] = c, c
+        a, b = (a, c) if neg.any() else (c, b)
     out = []
-    for i in cand:
-        f = lambda x: signed_fine(x, i)  # noqa: E731
-        lo, hi = (a, b) if a < b else (b, a)
-        flo, fhi = f(lo), f(hi)
-        if flo * fhi > 0:  # the loose march misjudged a sign this close to the root
-            lo, hi = _widen(f, lo, hi, flo)
-        out.append(ModeValue(int(modes[i, 0]), int(modes[i, 1]), brent(f, lo, hi)))
+    for i, l, h in zip(cand, lo, hi):
+        f = lambda y: signed_fine(y, i)  # noqa: E731
+        if f(h) > 0:  # fine and loose disagree at h: fall back to the whole step
+            if f(x) > 0:
+                out.append(None)
+                continue
+            h = x
+        if f(l) <= 0:
+            l = xa if f(xa) > 0 else x0  # the mode is stable at the start of the march
+        out.append(ModeValue(int(modes[i, 0]), int(modes[i, 1]), brent(f, *sorted((l, h)))))
     return out
-
-
-def _widen(f, lo, hi, flo):
-    w = hi - lo
-    for _ in range(20):
-        lo2, hi2 = lo - w, hi + w
-        if f(lo2) * flo < 0:
-            return lo2, lo
-        if f(hi2) * flo < 0:
-            return hi, hi2
-        w *= 2
-    raise ConvergenceError(f"lost the sign change near [{lo}, {hi}]")
 
 
 def brent(f, a, b) -> float:

@@ -86,24 +86,52 @@ def scan_modes(params: TubeParameters, solve_for: str, *, side: str | None = Non
     _check_range("m", m_range, 0)
     _check_range("n", n_range, 1)
     grown = {"m": 0, "n": 0}
+    probes = extend
     while True:
-        result = _scan_once(params, solve_for, side, m_range, n_range, top, rtol)
+        result = _scan_once(params, solve_for, side, m_range, n_range, top, rtol, probes)
         c = result.critical
-        edge = {"m": c.kind == "bifurcation" and c.m == m_range[1] and m_range[1] < M_CAP,
-                "n": c.kind == "bifurcation" and c.n == n_range[1] and n_range[1] < N_CAP}
-        grow = {k: edge[k] and grown[k] < DOUBLINGS for k in edge}
+        if probes and c.kind == "bifurcation" and (c.m > m_range[1] or c.n > n_range[1]):
+            # a probe beyond the range wins: the optimum is a short wave, widen to it once
+            grown = {"m": int(c.m > m_range[1]), "n": int(c.n > n_range[1])}
+            m_range = (m_range[0], max(m_range[1], c.m))
+            n_range = (n_range[0], max(n_range[1], c.n))
+            probes = False
+            continue
+        probes = False
+        edge = {"m": c.kind == "bifurcation" and c.m == m_range[1],
+                "n": c.kind == "bifurcation" and c.n == n_range[1]}
+        grow = {"m": edge["m"] and m_range[1] < M_CAP and grown["m"] < DOUBLINGS,
+                "n": edge["n"] and n_range[1] < N_CAP and grown["n"] < DOUBLINGS}
         if not extend or not any(grow.values()):
             break
         if grow["m"]:
             m_range, grown["m"] = (m_range[0], min(2 * m_range[1] + 1, M_CAP)), grown["m"] + 1
         if grow["n"]:
             n_range, grown["n"] = (n_range[0], min(2 * n_range[1], N_CAP)), grown["n"] + 1
-    if not (extend and c.kind == "bifurcation" and any(edge.values())):
+    if not (extend and any(edge.values())) or (c.m == 0 and not edge["n"]):
         return result
     along = "n" if edge["n"] else "m"
     limit, err = _short_wave_limit(params, solve_for, side, c.m, c.n, along, rtol)
     return dataclasses.replace(result, surface_instability=True, short_wave_limit=limit,
                                short_wave_error=err)
+
+
+def scan_grid(m_range, n_range, probes: bool) -> np.ndarray:
+    """The (m, n) rectangle, plus a few short waves beyond it when ``probes``.
+
+    The critical value need not be monotone in m or n: at Rbar_o = 1.4, Vbar = 0.4 in
+    extension it rises from m = 0 to m = 12 and then falls towards an inner-face short
+    wave as m grows. Probes at 2 and 4 times the range catch such optima.
+    """
+    grid = mode_grid(m_range, n_range)
+    if not probes:
+        return grid
+    (m0, m1), (n0, n1) = m_range, n_range
+    ms = sorted({min(2 * m1 + 1, M_CAP), min(4 * m1 + 3, M_CAP)} - set(range(m0, m1 + 1)))
+    ns = sorted({min(2 * n1, N_CAP), min(4 * n1, N_CAP)} - set(range(n0, n1 + 1)))
+    extra = [(m, n) for m in ms for n in (n0, n0 + 1)]
+    extra += [(m, n) for n in ns for m in (m0, m0 + 1)]
+    return np.vstack([grid, np.array(extra, float).reshape(-1, 2)])
 
 
 def _short_wave_limit(params, solve_for, side, m, n, along, rtol):
@@ -123,14 +151,15 @@ def _check_range(name, rng, lowest):
                              f"{lowest} <= {name}_min <= {name}_max")
 
 
-def _scan_once(params, solve_for, side, m_range, n_range, top, rtol) -> ScanResult:
-    modes = mode_grid(m_range, n_range)
+def _scan_once(params, solve_for, side, m_range, n_range, top, rtol, probes) -> ScanResult:
+    modes = scan_grid(m_range, n_range, probes)
     loose = lambda state, md: impedance_targets(state, md, rtol=LOOSE)  # noqa: E731
     fine = lambda state, md: impedance_targets(state, md, rtol=max(rtol, MEDIUM))  # noqa
     res = first_bifurcations(params, solve_for, side, modes, loose, top=top,
                              brent_targets=fine,
                              stable_signs=_stable_signs(params.material, params.outer_radius,
-                                                        params.length, m_range, n_range))
+                                                        params.length, m_range, n_range,
+                                                        probes))
     at = lambda x: dataclasses.replace(params, **{solve_for: float(x)})  # noqa: E731
     found = res.found
     if not found:  # the march stops at the threshold, so found modes come before it
@@ -145,8 +174,8 @@ def _scan_once(params, solve_for, side, m_range, n_range, top, rtol) -> ScanResu
 
 
 @functools.lru_cache(maxsize=64)
-def _stable_signs(material, outer_radius, length, m_range, n_range) -> np.ndarray:
+def _stable_signs(material, outer_radius, length, m_range, n_range, probes) -> np.ndarray:
     """Signs on the unloaded tube, shared by every scan of a curve or sweep."""
-    modes = mode_grid(m_range, n_range)
+    modes = scan_grid(m_range, n_range, probes)
     ref = TubeParameters(outer_radius, length, material=material)
     return unloaded_signs(ref, modes, lambda s, md: impedance_targets(s, md, rtol=LOOSE))
