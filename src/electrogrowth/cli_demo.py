@@ -13,8 +13,11 @@ from pathlib import Path
 
 import numpy as np
 
+from .curves import critical_curve
 from .figures_base import COLORS, _figure
+from .modes import mode_shape
 from .params import TubeParameters
+from .patterns import render_pattern
 from .scan import scan_modes
 from .tube import solve_base_state
 
@@ -83,26 +86,10 @@ def _stress_profile(state, out: Path) -> None:
 
 
 def _extras(params, crit, out: Path, quick: bool) -> list[Path]:
-    """The g_cr curve and the 3D pattern (from curves.py and patterns.py)."""
-    written = []
-    try:
-        from .curves import critical_curve
-    except ImportError:
-        critical_curve = None
-    if critical_curve is not None:
-        xs = np.linspace(0.95, 1.25, 4 if quick else 13)
-        curve = critical_curve(params, "growth", "stretch", xs, m_range=(0, 12),
-                               n_range=(1, 30))
-        curve.to_csv(out / "gcr_curve.csv")
-        fig = curve.plot().figure
-        fig.savefig(out / "gcr_curve.png", dpi=200)
-        written += [out / "gcr_curve.csv", out / "gcr_curve.png"]
-    try:
-        from .modes import mode_shape
-        from .patterns import render_pattern
-    except ImportError:
-        return written
-    shape = mode_shape(crit)
-    render_pattern(shape, path=out / "pattern.png")
-    written.append(out / "pattern.png")
-    return written
+    """The g_cr curve along the axial stretch and the 3D pattern of the critical mode."""
+    xs = np.linspace(0.95, 1.25, 4 if quick else 13)
+    curve = critical_curve(params, "growth", "stretch", xs)
+    curve.to_csv(out / "gcr_curve.csv")
+    curve.plot().figure.savefig(out / "gcr_curve.png", dpi=200)
+    render_pattern(mode_shape(crit), path=out / "pattern.png")
+    return [out / "gcr_curve.csv", out / "gcr_curve.png", out / "pattern.png"]
