@@ -112,7 +112,7 @@ def test_unknown_subcommand_and_figure(capsys):
     assert status == 2 and "99" in err and err.count("\n") == 1
 
 
-@pytest.mark.parametrize("number", sorted(FIGURES))
+@pytest.mark.parametrize("number", [4, 5])  # Figures 6-10: tests/test_figures_modes.py
 def test_figure_writes_png_and_csv(capsys, tmp_path, number):
     status, out, err = run(capsys, "figure", str(number), "--quick", "--out", str(tmp_path))
     assert status == 0 and err == ""
