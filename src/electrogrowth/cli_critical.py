@@ -5,8 +5,9 @@ from __future__ import annotations
 import argparse
 import json
 
-from .bifurcation import METHODS, SIDES, critical_value
-from .cli_options import add_tube_options, tube_from_args
+from .bifurcation import METHODS, critical_value
+from .cli_options import (add_control_options, add_mode_range_options, add_tube_options,
+                          tube_from_args)
 from .errors import ConvergenceError, ParameterError
 from .scan import scan_modes
 
@@ -14,15 +15,7 @@ CERTIFY_RTOL = 1e-8  # the two methods must agree this well for a certified valu
 
 
 def configure_critical(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--solve-for", required=True, choices=("growth", "stretch", "voltage"),
-                        help="the control parameter to find: growth = smallest g > 1 at which"
-                             " the tube wrinkles; stretch = critical lambda_z on --side;"
-                             " voltage = smallest Vbar (or the threshold where the"
-                             " axisymmetric state is lost, if that comes first). The value"
-                             " given for it below is ignored.")
-    parser.add_argument("--side", choices=SIDES, default=None,
-                        help="for --solve-for stretch: axial compression (lambda_z < g,"
-                             " default) or extension (lambda_z > g)")
+    add_control_options(parser)
     add_tube_options(parser)
     modes = parser.add_argument_group("wrinkling modes u ~ cos(m theta) cos(k z),"
                                       " k = n pi / (lambda_z L)")
@@ -31,11 +24,7 @@ def configure_critical(parser: argparse.ArgumentParser) -> None:
                             " half-wavenumber n >= 1; without it all modes 0 <= m <= M_MAX,"
                             " 1 <= n <= N_MAX are scanned and the first to bifurcate is"
                             " reported")
-    modes.add_argument("--m-max", type=int, default=12, metavar="M_MAX",
-                       help="largest m of the scan (default 12; widened automatically when"
-                            " the critical mode sits on the edge)")
-    modes.add_argument("--n-max", type=int, default=30, metavar="N_MAX",
-                       help="largest n of the scan (default 30; widened likewise)")
+    add_mode_range_options(modes)
     modes.add_argument("--top", type=int, default=5,
                        help="number of modes to report in a scan (default 5)")
     num = parser.add_argument_group("numerics")

@@ -14,10 +14,10 @@ from pathlib import Path
 
 import numpy as np
 
-from .cli_options import _material, _number
+from .cli_options import (_material, _number, add_control_options, add_mode_range_options,
+                          add_tube_options)
 from .curves import ALONG, check_curve, critical_curve
 from .errors import ParameterError
-from .materials import BUILTIN
 from .params import TubeParameters
 
 #: How each parameter is described in the options' help (the paper's terms).
@@ -30,24 +30,9 @@ MEANING = {
 }
 
 
-def _count(text: str) -> int:
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"{text!r} is not an integer") from None
-    return value
-
-
 def configure_curve(parser: argparse.ArgumentParser) -> None:
     what = parser.add_argument_group("what to compute")
-    what.add_argument("--solve-for", choices=("growth", "stretch", "voltage"), required=True,
-                      help="the critical quantity: growth = smallest g_cr > 1; stretch ="
-                           " lambda_z,cr nearest to lambda_z = g on --side; voltage ="
-                           " smallest Vbar_cr > 0 (or the threshold where the axisymmetric"
-                           " state is lost)")
-    what.add_argument("--side", choices=("compression", "extension"),
-                      help="with --solve-for stretch: buckling in axial compression"
-                           " (lambda_z < g, default) or extension (lambda_z > g)")
+    add_control_options(what)
     what.add_argument("--along", choices=ALONG, required=True,
                       help="the abscissa: " + "; ".join(f"{k} = {v}"
                                                         for k, v in MEANING.items()))
@@ -55,42 +40,12 @@ def configure_curve(parser: argparse.ArgumentParser) -> None:
                       help="first value of the --along parameter")
     what.add_argument("--to", dest="stop", type=_number, required=True, metavar="X1",
                       help="last value of the --along parameter")
-    what.add_argument("--points", type=_count, default=30, metavar="N",
+    what.add_argument("--points", type=int, default=30, metavar="N",
                       help="grid points from X0 to X1 (>= 2, default 30); switches of the"
                            " critical mode (m, n) between them are located exactly")
-    tube = parser.add_argument_group(
-        "fixed tube and loading (units mu = eps = R_i = 1; the --along and --solve-for"
-        " parameters are ignored)")
-    tube.add_argument("--outer-radius", type=_number, default=1.4, metavar="RBAR_O",
-                      help="Rbar_o = R_o / R_i > 1, undeformed outer over inner radius"
-                           " (default 1.4)")
-    tube.add_argument("--length", type=_number, default=1.0, metavar="L",
-                      help="L / R_i > 0, undeformed length; the axial wavenumber is"
-                           " k = n pi / (lambda_z L) (default 1)")
-    tube.add_argument("--growth", type=_number, default=1.0, metavar="G",
-                      help="isotropic growth factor g > 0 (default 1: no growth)")
-    tube.add_argument("--stretch", type=_number, default=1.0, metavar="LAMBDA_Z",
-                      help="total axial stretch lambda_z > 0, growth included (default 1)")
-    tube.add_argument("--voltage", type=_number, default=0.0, metavar="VBAR",
-                      help="Vbar = V / (R_o - R_i) sqrt(eps / mu) >= 0 (default 0)")
+    add_tube_options(parser, outer_radius=1.4)  # the --along and --solve-for values are ignored
     modes = parser.add_argument_group("modes u ~ cos(m theta) cos(n pi z / l)")
-    modes.add_argument("--m-max", type=_count, default=12, metavar="M",
-                       help="largest circumferential wavenumber m scanned, from 0 (default"
-                            " 12; extended automatically if the optimum is at M). Near the"
-                            " voltage threshold the critical value can rise with m and fall"
-                            " again for m > 12 (a short-wavelength mode of the inner face):"
-                            " use 64 there")
-    modes.add_argument("--n-max", type=_count, default=30, metavar="N",
-                       help="largest axial half-wavenumber n scanned, from 1 (default 30;"
-                            " extended automatically if the optimum is at N)")
-    mat = parser.add_argument_group("material (ideal dielectric, Omega = W + I5 / 2)")
-    mat.add_argument("--material", choices=sorted(BUILTIN), default="neo-hookean",
-                     help="elastic energy W (default neo-hookean)")
-    mat.add_argument("--jm", type=_number, metavar="JM",
-                     help="Gent stiffening parameter J_m > 0 (only with --material gent)")
-    mat.add_argument("--alpha", type=_number, metavar="ALPHA",
-                     help="Mooney-Rivlin weight 0 < alpha <= 1 of I1 (only with"
-                          " --material mooney-rivlin)")
+    add_mode_range_options(modes)
     parser.add_argument("--out", type=Path, default=Path("out"), metavar="DIR",
                         help="directory for the CSV and PNG (default ./out)")
     parser.add_argument("--json", action="store_true",

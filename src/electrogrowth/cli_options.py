@@ -32,11 +32,17 @@ def _number(text: str) -> float:
 
 # -- the tube --------------------------------------------------------------------------------
 
-def add_tube_options(parser: argparse.ArgumentParser) -> None:
-    """The tube, its loading and its material, shared by every subcommand."""
+def add_tube_options(parser: argparse.ArgumentParser, *,
+                     outer_radius: float | None = None) -> None:
+    """The tube, its loading and its material, shared by every subcommand.
+
+    ``outer_radius``: a default for --outer-radius (None: the option is required).
+    """
     tube = parser.add_argument_group("tube and loading (units mu = eps = R_i = 1)")
-    tube.add_argument("--outer-radius", type=_number, required=True, metavar="RBAR_O",
-                      help="Rbar_o = R_o / R_i > 1, undeformed outer over inner radius")
+    tube.add_argument("--outer-radius", type=_number, required=outer_radius is None,
+                      default=outer_radius, metavar="RBAR_O",
+                      help="Rbar_o = R_o / R_i > 1, undeformed outer over inner radius"
+                           + ("" if outer_radius is None else f" (default {outer_radius:g})"))
     tube.add_argument("--growth", type=_number, default=1.0, metavar="G",
                       help="isotropic growth factor g > 0, F_g = g I (default 1: no growth)")
     tube.add_argument("--stretch", type=_number, default=1.0, metavar="LAMBDA_Z",
@@ -76,3 +82,29 @@ def _material(args):
                                      f" not {args.material}")
             options[name] = value
     return material_by_name(args.material, **options)
+
+
+# -- what to solve for, and over which modes ------------------------------------------------
+
+def add_control_options(parser: argparse.ArgumentParser) -> None:
+    """--solve-for and --side: the control parameter whose critical value is sought."""
+    parser.add_argument("--solve-for", required=True, choices=("growth", "stretch", "voltage"),
+                        help="the control parameter to find: growth = g_cr, the smallest"
+                             " g > 1 at which the tube wrinkles; stretch = lambda_z,cr on"
+                             " --side; voltage = Vbar_cr, the smallest Vbar (or the threshold"
+                             " where the axisymmetric state is lost, if that comes first)."
+                             " The value given for it below is ignored.")
+    parser.add_argument("--side", choices=("compression", "extension"), default=None,
+                        help="for --solve-for stretch: axial compression (lambda_z < g,"
+                             " default) or extension (lambda_z > g)")
+
+
+def add_mode_range_options(group) -> None:
+    """--m-max and --n-max: the rectangle of modes a scan starts from."""
+    group.add_argument("--m-max", type=int, default=12, metavar="M_MAX",
+                       help="largest circumferential wavenumber m of the scan, from 0"
+                            " (default 12; widened automatically when the critical mode sits"
+                            " on the edge, and probed beyond for short waves)")
+    group.add_argument("--n-max", type=int, default=30, metavar="N_MAX",
+                       help="largest axial half-wavenumber n of the scan, from 1 (default 30;"
+                            " widened likewise)")

@@ -18,7 +18,8 @@ from pathlib import Path
 import numpy as np
 
 from .bifurcation import SIDES, critical_value
-from .cli_options import _number, add_tube_options, tube_from_args
+from .cli_options import (_number, add_control_options, add_mode_range_options,
+                          add_tube_options, tube_from_args)
 from .errors import MissingDependencyError, ParameterError
 from .modes import ROUTES, mode_shape, plot_mode_shape
 from .patterns import export_vtk, render_pattern
@@ -28,14 +29,7 @@ HELP = "mode shape of the wrinkles at onset: 3D picture, plot and CSV, VTK mesh 
 
 
 def configure_pattern(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--solve-for", required=True, choices=("growth", "stretch", "voltage"),
-                        help="the control parameter whose critical value starts the"
-                             " wrinkling: growth = smallest g > 1; stretch = critical"
-                             " lambda_z on --side; voltage = smallest Vbar. The value given"
-                             " for it below is ignored.")
-    parser.add_argument("--side", choices=SIDES, default=None,
-                        help="for --solve-for stretch: axial compression (lambda_z < g,"
-                             " default) or extension (lambda_z > g)")
+    add_control_options(parser)
     add_tube_options(parser)
     modes = parser.add_argument_group("wrinkling mode u_r = U_r(r) cos(m theta) cos(k z),"
                                       " k = n pi / (lambda_z L)")
@@ -44,11 +38,7 @@ def configure_pattern(parser: argparse.ArgumentParser) -> None:
                             " around) and axial half-wavenumber n >= 1 (half-waves along"
                             " the tube); without it the first mode to bifurcate among"
                             " 0 <= m <= M_MAX, 1 <= n <= N_MAX is used")
-    modes.add_argument("--m-max", type=int, default=12, metavar="M_MAX",
-                       help="largest m of the scan (default 12; widened automatically when"
-                            " the critical mode sits on the edge)")
-    modes.add_argument("--n-max", type=int, default=30, metavar="N_MAX",
-                       help="largest n of the scan (default 30; widened likewise)")
+    add_mode_range_options(modes)
     shape = parser.add_argument_group("mode shape and output")
     shape.add_argument("--shape-method", choices=ROUTES, default="impedance",
                        help="impedance = Riccati equation for the surface impedance, then"
