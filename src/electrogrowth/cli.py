@@ -18,8 +18,7 @@ from pathlib import Path
 from typing import Callable
 
 from . import __version__, figures_base, figures_modes
-from .cli_options import (UsageError, _Parser, _material, _number,  # noqa: F401 (re-export)
-                          add_tube_options, tube_from_args)
+from .cli_options import UsageError, _Parser, add_tube_options, tube_from_args
 from .cli_critical import configure_critical, run_critical
 from .cli_curve import configure_curve, run_curve
 from .cli_demo import configure_demo, run_demo

@@ -17,7 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .bifurcation import SIDES, critical_value
+from .bifurcation import critical_value
 from .cli_options import (_number, add_control_options, add_mode_range_options,
                           add_tube_options, tube_from_args)
 from .errors import MissingDependencyError, ParameterError
