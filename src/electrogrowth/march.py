@@ -153,6 +153,9 @@ def first_bifurcations(params: TubeParameters, solve_for: str, side: str | None,
     sense = 1.0 if end > x0 else -1.0
     state = solve_base_state(at(x0))
     g0 = sref * targets(state, modes)
+    doubt = np.nonzero(g0 <= 0)[0]
+    if doubt.size and brent_targets is not None:  # a loose sign may be wrong: ask again
+        g0[doubt] = sref[doubt] * brent_targets(state, modes[doubt])
     if (g0 <= 0).any():
         m, n = modes[int(np.argmax(g0 <= 0))].astype(int)
         raise ParameterError(f"the tube is already unstable in mode ({m}, {n}) at "

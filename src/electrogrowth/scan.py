@@ -178,4 +178,4 @@ def _stable_signs(material, outer_radius, length, m_range, n_range, probes) -> n
     """Signs on the unloaded tube, shared by every scan of a curve or sweep."""
     modes = scan_grid(m_range, n_range, probes)
     ref = TubeParameters(outer_radius, length, material=material)
-    return unloaded_signs(ref, modes, lambda s, md: impedance_targets(s, md, rtol=LOOSE))
+    return unloaded_signs(ref, modes, lambda s, md: impedance_targets(s, md, rtol=MEDIUM))
