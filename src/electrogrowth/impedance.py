@@ -204,11 +204,16 @@ def _target(z, J, orient):
 
 
 @nb.njit(cache=True)
+def impedance_scale(m: float, k: float, r_o: float) -> float:
+    """The scale s of S used by the kernel: max(1, |(m, k r_o)|)."""
+    return max(1.0, np.sqrt(m * m + (k * r_o) ** 2))
+
+
+@nb.njit(cache=True)
 def integrate_one(m, k, coef, degree, fmap, geom, rtol, max_steps, switch=SWITCH):
     """Integrate one mode through the wall. Returns (f, z~, J, status, steps)."""
     ro = geom[0]
-    s = max(1.0, np.sqrt(m * m + (k * np.sqrt(geom[1] + geom[2] * (ro * ro - 1.0))) ** 2))
-    # keep in step with impedance_scale()
+    s = impedance_scale(m, k, np.sqrt(geom[1] + geom[2] * (ro * ro - 1.0)))
     z = np.zeros((4, 4))
     J, orient = 0, 1.0
     mod = np.empty(23)
@@ -335,8 +340,3 @@ def physical_impedance(z_chart: np.ndarray, chart: int, scale: float) -> np.ndar
     for a in range(8):
         X[perm[a]] += sign[a] * Y[a]
     return scale * X[4:] @ np.linalg.inv(X[:4])
-
-
-def impedance_scale(m: float, k: float, r_o: float) -> float:
-    """The scale s of S used by the kernel: max(1, |(m, k r_o)|)."""
-    return max(1.0, float(np.hypot(m, k * r_o)))

@@ -16,6 +16,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from .errors import ConvergenceError
+from .impedance import impedance_scale
 from .stroh import stroh_matrix
 
 _stroh = stroh_matrix.py_func
@@ -54,6 +55,6 @@ def impedance_reference(state, m: float, k: float, *, rtol: float = 1e-11,
 def target_reference(state, m: float, k: float, **kwargs) -> float:
     """Pole-free target det z / sqrt(det(I + z^T z)) with S scaled like the kernel."""
     z = impedance_reference(state, m, k, **kwargs)
-    s = max(1.0, float(np.hypot(m, k * state.r_o)))
+    s = impedance_scale(float(m), float(k), float(state.r_o))
     z = z / s
     return float(np.linalg.det(z) / np.sqrt(np.linalg.det(np.eye(4) + z.T @ z)))

@@ -41,6 +41,7 @@ from scipy.interpolate import CubicSpline
 from .bifurcation import CriticalPoint, check_mode, wavenumber
 from .collocation import mode_shape_collocation
 from .errors import ConvergenceError, NoBifurcationFound, ParameterError
+from .impedance import impedance_scale
 from .impedance_reference import impedance_rhs
 from .materials import MODULI_INDEX
 from .params import TubeParameters
@@ -237,7 +238,7 @@ def impedance_profile(state: BaseState, m: int, k: float, *, rtol: float = 1e-12
     """z(R) for R in [1, Rbar_o]: the Riccati equation (paper eq. Riccati) integrated by
     SciPy DOP853 from z(1) = 0, as a callable R -> symmetric 4x4 (dense output)."""
     Ro = state.params.outer_radius
-    scale = max(1.0, math.hypot(m, k * state.r_o))
+    scale = impedance_scale(float(m), float(k), float(state.r_o))
     with np.errstate(all="ignore"):
         ric = solve_ivp(impedance_rhs(state, m, k), (1.0, Ro), np.zeros(16), method="DOP853",
                         rtol=rtol, atol=1e-3 * rtol, dense_output=True)
