@@ -17,8 +17,8 @@ import time
 import numpy as np
 
 from electrogrowth import TubeParameters
-from electrogrowth.bifurcation import critical_value
-from electrogrowth.scan import scan_modes
+from electrogrowth.bifurcation.critical import critical_value
+from electrogrowth.bifurcation.scan import scan_modes
 
 sys.path.insert(0, os.path.dirname(__file__))
 import baseline  # noqa: E402
@@ -125,7 +125,7 @@ def scaling() -> None:
 def first_call_cost() -> None:
     """Wall time of a fresh process computing one critical value (kernel from cache)."""
     code = ("import time; t=time.time(); from electrogrowth import TubeParameters;"
-            "from electrogrowth.bifurcation import critical_value;"
+            "from electrogrowth.bifurcation.critical import critical_value;"
             "critical_value(TubeParameters(1.4, 1.0, voltage=0.4), 0, 1, 'growth');"
             "print(time.time()-t)")
     t = float(subprocess.run([sys.executable, "-c", code], capture_output=True,

@@ -11,7 +11,7 @@ os.environ.setdefault("OMP_NUM_THREADS", "1")
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
-from electrogrowth.materials import gent, neo_hookean  # noqa: E402
+from electrogrowth.model.materials import gent, neo_hookean  # noqa: E402
 
 
 @pytest.fixture

@@ -7,8 +7,8 @@ import pytest
 from scipy.optimize import brentq
 
 from electrogrowth import NoBifurcationFound, ParameterError, TubeParameters
-from electrogrowth.bifurcation import critical_value, impedance_targets, stable_sign
-from electrogrowth.tube import solve_base_state
+from electrogrowth.bifurcation.critical import critical_value, impedance_targets, stable_sign
+from electrogrowth.basestate.tube import solve_base_state
 
 
 def _f(params, m, n):

@@ -5,8 +5,8 @@ import json
 import pytest
 
 from electrogrowth import TubeParameters
-from electrogrowth.bifurcation import critical_value
-from electrogrowth.cli import main
+from electrogrowth.bifurcation.critical import critical_value
+from electrogrowth.cli.app import main
 
 
 def test_demo_writes_results_and_the_critical_growth(tmp_path, capsys):

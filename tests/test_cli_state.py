@@ -10,10 +10,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from electrogrowth.cli import FIGURES, main
-from electrogrowth.materials import gent
-from electrogrowth.params import TubeParameters
-from electrogrowth.tube import neo_hookean_asymptote, solve_base_state
+from electrogrowth.cli.app import FIGURES, main
+from electrogrowth.model.materials import gent
+from electrogrowth.model.params import TubeParameters
+from electrogrowth.basestate.tube import neo_hookean_asymptote, solve_base_state
 
 BASE = ["state", "--outer-radius", "2.0", "--growth", "1.1", "--stretch", "1.0"]
 

@@ -1,7 +1,7 @@
 """Chebyshev collocation of the incremental problem: analytic limits, convergence, identities.
 
 The base states come from a small independent fixture (ideal dielectric, traction-free faces,
-Gauss-Legendre integrals), so these tests do not depend on ``electrogrowth.tube`` or the
+Gauss-Legendre integrals), so these tests do not depend on ``electrogrowth.basestate.tube`` or the
 Stroh/Riccati engine except the two slow ones that cross-check them. Exact reference: the
 Bessel-function solution of the homogeneously compressed neo-Hookean tube (V = 0, g = 1).
 """
@@ -16,11 +16,11 @@ import pytest
 import scipy.optimize
 from scipy.special import ivp, kvp
 
-from electrogrowth import collocation as col
+from electrogrowth.incremental import collocation as col
 from electrogrowth.errors import NoBifurcationFound, ParameterError
-from electrogrowth.materials import (I1, I2, I4, I5, I6, MODULI_INDEX, Material, gent,
+from electrogrowth.model.materials import (I1, I2, I4, I5, I6, MODULI_INDEX, Material, gent,
                                      mooney_rivlin, neo_hookean)
-from electrogrowth.params import TubeParameters
+from electrogrowth.model.params import TubeParameters
 
 HALF_SPACE = 0.443745615894947  # lambda_z with lambda_z^{3/2} = root of x^3 + x^2 + 3x - 1
 
@@ -339,7 +339,7 @@ def test_growth_is_a_rescaling_of_the_critical_value():
     assert g_cr == pytest.approx(1 / lz_cr, abs=1e-11)
 
 
-# -- the base-state contract of electrogrowth.tube ------------------------------------------
+# -- the base-state contract of electrogrowth.basestate.tube ------------------------------------------
 
 @pytest.mark.slow
 def test_agrees_with_the_tube_base_state():
@@ -352,7 +352,7 @@ def test_agrees_with_the_tube_base_state():
 @pytest.mark.parametrize("m, n, bracket", [(2, 1, (1.15, 1.175)), (0, 1, (1.4, 1.425))])
 def test_certifies_the_impedance_engine(m, n, bracket):
     """The Stroh/Riccati engine and the collocation agree on a grown, charged tube."""
-    bifurcation = pytest.importorskip("electrogrowth.bifurcation")
+    bifurcation = pytest.importorskip("electrogrowth.bifurcation.critical")
     params = tube(voltage=0.6)
     riccati = bifurcation.critical_value(params, m, n, "growth", bracket=bracket).value
     assert critical(params, m, n, "growth", bracket) == pytest.approx(riccati, abs=2e-11)

@@ -9,12 +9,12 @@ import json
 import numpy as np
 import pytest
 
-from electrogrowth.bifurcation import critical_value
-from electrogrowth.cli_curve import configure_curve, run_curve
-from electrogrowth.curves import Switch, critical_curve
+from electrogrowth.bifurcation.critical import critical_value
+from electrogrowth.cli.curve import configure_curve, run_curve
+from electrogrowth.bifurcation.curves import Switch, critical_curve
 from electrogrowth.errors import ParameterError
-from electrogrowth.params import TubeParameters
-from electrogrowth.scan import scan_modes
+from electrogrowth.model.params import TubeParameters
+from electrogrowth.bifurcation.scan import scan_modes
 
 SMALL = {"m_range": (0, 2), "n_range": (1, 2)}  # the optimum on an edge extends the range
 

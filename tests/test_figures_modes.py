@@ -8,10 +8,10 @@ import dataclasses
 import numpy as np
 import pytest
 
-from electrogrowth import figures_modes as fm
-from electrogrowth.bifurcation import critical_value
-from electrogrowth.params import TubeParameters
-from electrogrowth.scan import scan_modes
+from electrogrowth.figures import critical as fm
+from electrogrowth.bifurcation.critical import critical_value
+from electrogrowth.model.params import TubeParameters
+from electrogrowth.bifurcation.scan import scan_modes
 
 RO14 = TubeParameters(outer_radius=1.4, length=1.0)
 

@@ -5,13 +5,13 @@ import math
 import numpy as np
 import pytest
 
-from electrogrowth.bifurcation import impedance_targets, wavenumber
-from electrogrowth.impedance import (integrate_one, physical_impedance, impedance_scale,
+from electrogrowth.bifurcation.critical import impedance_targets, wavenumber
+from electrogrowth.incremental.impedance import (integrate_one, physical_impedance, impedance_scale,
                                      target_batch)
-from electrogrowth.impedance_reference import impedance_reference, target_reference
-from electrogrowth.params import TubeParameters
-from electrogrowth.radial_table import build_table, stack_tables
-from electrogrowth.tube import solve_base_state
+from electrogrowth.incremental.impedance_reference import impedance_reference, target_reference
+from electrogrowth.model.params import TubeParameters
+from electrogrowth.incremental.radial_table import build_table, stack_tables
+from electrogrowth.basestate.tube import solve_base_state
 
 CASES = [  # (Rbar_o, L, g, lambda_z, Vbar, m, n)
     (1.4, 1.0, 1.0, 1.0, 0.0, 0, 1),

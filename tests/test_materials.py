@@ -22,9 +22,9 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from electrogrowth import materials
+from electrogrowth.model import materials as materials
 from electrogrowth.errors import MaterialError, ParameterError
-from electrogrowth.materials import (I1, I2, I4, I5, I6, INVARIANTS, MODULI_INDEX,
+from electrogrowth.model.materials import (I1, I2, I4, I5, I6, INVARIANTS, MODULI_INDEX,
                                      MODULI_NAMES, Material, gent, material_by_name,
                                      mooney_rivlin, neo_hookean, neo_hookean_moduli)
 

@@ -9,10 +9,10 @@ import pytest
 
 from electrogrowth import ParameterError, TubeParameters
 from electrogrowth.errors import MissingDependencyError
-from electrogrowth.bifurcation import critical_value
-from electrogrowth.cli_pattern import configure_pattern, run_pattern
-from electrogrowth.modes import mode_shape
-from electrogrowth.patterns import (deformed_surface, export_vtk, render_pattern, wall_mesh,
+from electrogrowth.bifurcation.critical import critical_value
+from electrogrowth.cli.pattern import configure_pattern, run_pattern
+from electrogrowth.shapes.mode_shape import mode_shape
+from electrogrowth.shapes.wall import (deformed_surface, export_vtk, render_pattern, wall_mesh,
                                     wall_surface)
 
 _SHAPES = {}

@@ -3,9 +3,9 @@
 import pytest
 
 from electrogrowth import ParameterError, TubeParameters
-from electrogrowth.bifurcation import critical_value
+from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.errors import NoBifurcationFound
-from electrogrowth.scan import mode_grid, scan_modes
+from electrogrowth.bifurcation.scan import mode_grid, scan_modes
 
 P = TubeParameters(1.4, 1.0, stretch=1.0, voltage=0.4)
 

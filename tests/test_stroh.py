@@ -1,4 +1,4 @@
-"""Tests of the Stroh matrix G of the electro-elastic tube (electrogrowth.stroh)."""
+"""Tests of the Stroh matrix G of the electro-elastic tube (electrogrowth.incremental.stroh)."""
 
 from __future__ import annotations
 
@@ -10,9 +10,9 @@ import pytest
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from electrogrowth.materials import (MODULI_INDEX, MODULI_NAMES, gent, mooney_rivlin,
+from electrogrowth.model.materials import (MODULI_INDEX, MODULI_NAMES, gent, mooney_rivlin,
                                      neo_hookean, neo_hookean_moduli)
-from electrogrowth.stroh import (SIGN_DELTA, SIGN_PHI, neo_hookean_stroh_matrix,
+from electrogrowth.incremental.stroh import (SIGN_DELTA, SIGN_PHI, neo_hookean_stroh_matrix,
                                  stroh_blocks, stroh_matrix, stroh_matrix_py)
 
 MATERIALS = {"neo-hookean": neo_hookean(), "gent5": gent(jm=5.0),

@@ -16,10 +16,12 @@ pytest.importorskip("xarray")
 pytest.importorskip("zarr")
 
 import electrogrowth  # noqa: E402
-from electrogrowth import TubeParameters, cli, cli_sweep  # noqa: E402
-from electrogrowth.sweep import ScanSpec, compute_point, compute_sweep  # noqa: E402
-from electrogrowth.sweep_file import parse_config  # noqa: E402
-from electrogrowth.sweep_store import block_shape, grid_blocks, open_results  # noqa: E402
+from electrogrowth import TubeParameters  # noqa: E402
+from electrogrowth.cli import app as cli  # noqa: E402
+from electrogrowth.cli import sweep as cli_sweep  # noqa: E402
+from electrogrowth.sweep.unit import ScanSpec, compute_point, compute_sweep  # noqa: E402
+from electrogrowth.sweep.file import parse_config  # noqa: E402
+from electrogrowth.sweep.store import block_shape, grid_blocks, open_results  # noqa: E402
 
 TINY = """\
 [solve]
@@ -45,7 +47,8 @@ COMPARED = ("critical_value", "m", "n", "kind", "error_estimate", "status", "mes
             "surface_instability", "runner_up_value", "runner_up_m", "runner_up_n")
 SRC = Path(electrogrowth.__file__).resolve().parents[1]
 LAUNCHER = """\
-from electrogrowth import cli, cli_sweep
+from electrogrowth.cli import app as cli
+from electrogrowth.cli import sweep as cli_sweep
 cli.COMMANDS["sweep"] = ("sweep", cli_sweep.configure_sweep, cli_sweep.run_sweep)
 if __name__ == "__main__":
     raise SystemExit(cli.main())
@@ -112,7 +115,7 @@ def test_unit_turns_every_exception_into_a_record(monkeypatch):
     spec = ScanSpec("growth", m_range=(0, 1), n_range=(1, 1))
     rec = compute_point(TubeParameters(1.4, voltage=5.0), spec)
     assert rec.status == "failed" and rec.message.startswith("BaseStateError: Vbar = 5")
-    import electrogrowth.sweep as sweep
+    import electrogrowth.sweep.unit as sweep
 
     def boom(*args, **kwargs):
         raise ZeroDivisionError("a bug")

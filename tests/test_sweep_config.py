@@ -3,9 +3,10 @@ reason, with exit status 2 and nothing written."""
 
 import pytest
 
-from electrogrowth import cli, cli_sweep
-from electrogrowth.sweep_config import ConfigError, SweepConfig, differences
-from electrogrowth.sweep_file import line_of, parse_config
+from electrogrowth.cli import app as cli
+from electrogrowth.cli import sweep as cli_sweep
+from electrogrowth.sweep.config import ConfigError, SweepConfig, differences
+from electrogrowth.sweep.file import line_of, parse_config
 
 GOOD = """\
 [solve]

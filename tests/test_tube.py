@@ -1,4 +1,4 @@
-"""The axisymmetric base state (electrogrowth.tube) against closed forms, limits and twins.
+"""The axisymmetric base state (electrogrowth.basestate.tube) against closed forms, limits and twins.
 
 The neo-Hookean closed forms below are written here, independently of the package, from
 docs/derivation-base-state.md; the "slow twins" integrate with scipy.integrate.quad in the
@@ -17,11 +17,12 @@ import sympy as sp
 from scipy.integrate import quad
 from scipy.optimize import brentq, minimize_scalar
 
-from electrogrowth import _voltage, tube
+from electrogrowth.basestate import voltage as _voltage
+from electrogrowth.basestate import tube as tube
 from electrogrowth.errors import BaseStateError
-from electrogrowth.materials import I1, I4, I5, I6, Material, gent, mooney_rivlin
-from electrogrowth.params import TubeParameters
-from electrogrowth.tube import (neo_hookean_asymptote, solve_base_state, voltage_curve,
+from electrogrowth.model.materials import I1, I4, I5, I6, Material, gent, mooney_rivlin
+from electrogrowth.model.params import TubeParameters
+from electrogrowth.basestate.tube import (neo_hookean_asymptote, solve_base_state, voltage_curve,
                                 voltage_threshold)
 
 CASES = [  # (Rbar_o, g, lambda_z, Vbar)

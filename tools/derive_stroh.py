@@ -3,7 +3,7 @@
 Run ``PYTHONPATH=src .venv/bin/python tools/derive_stroh.py`` to print the entries of G for
 generic moduli (the 23 symbols of ``materials.MODULI_NAMES``, plus p, m, k, r) and for the
 ideal neo-Hookean dielectric. The package does not import this file; the tests load it to
-compare ``electrogrowth.stroh`` with the derivation. The maths is in docs/derivation-stroh.md.
+compare ``electrogrowth.incremental.stroh`` with the derivation. The maths is in docs/derivation-stroh.md.
 
 Route (nothing is transcribed from the paper's Appendix B):
 
@@ -29,10 +29,10 @@ import sys
 import sympy as sp
 
 try:
-    from electrogrowth.materials import MODULI_NAMES
+    from electrogrowth.model.materials import MODULI_NAMES
 except ImportError:  # pragma: no cover - run without PYTHONPATH=src
     sys.path.insert(0, "src")
-    from electrogrowth.materials import MODULI_NAMES
+    from electrogrowth.model.materials import MODULI_NAMES
 
 #: Signs of the electric entries of the Stroh vector: eta = [U_r, U_th, U_z, S1 r Delta_r,
 #: r Sigma_rr, r Sigma_rth, r Sigma_rz, S2 Phi]. S1 * S2 = -1 makes G Hamiltonian.

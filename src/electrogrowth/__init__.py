@@ -2,8 +2,8 @@
 
 from .errors import (BaseStateError, ConvergenceError, ElectrogrowthError, MaterialError,
                      NoBifurcationFound, ParameterError)
-from .materials import Material, gent, material_by_name, mooney_rivlin, neo_hookean
-from .params import TubeParameters
+from .model.materials import Material, gent, material_by_name, mooney_rivlin, neo_hookean
+from .model.params import TubeParameters
 
 __all__ = [
     "BaseStateError", "ConvergenceError", "ElectrogrowthError", "MaterialError",

@@ -1,4 +1,4 @@
-"""``python -m electrogrowth``: the command line of :mod:`electrogrowth.cli`."""
+"""``python -m electrogrowth``: the command line of :mod:`electrogrowth.cli.app`."""
 
 from .cli import main
 

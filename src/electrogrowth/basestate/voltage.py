@@ -1,0 +1,333 @@
+"""The voltage curve Vbar(lambda_i) of the traction-free tube and its threshold (paper Sec. 3.1).
+
+For each inner stretch lambda_i = r_i the traction-free condition
+
+    int_{r_i}^{r_o} (tau_2 - tau_1) dr / r = 0                                          (*)
+
+fixes the charge c (D_r = c / r) and so Vbar = int_{r_i}^{r_o} E_r dr / (Rbar_o - 1). An ideal
+dielectric has tau_1 = tau_1^mech + D_r^2, E_r = D_r, so (*) is linear in c^2:
+c^2 = 2 M r_i^2 r_o^2 / (r_o^2 - r_i^2), M the mechanical integral, V = c ln(r_o / r_i); other
+energies solve (*) for c^2 by a bracketed secant (Illinois). Integrals are Gauss-Legendre in R
+on [1, Rbar_o]. The threshold is the largest Vbar on the branch rising from Vbar = 0 at
+lambda_i0: a limit point, an asymptote, or none (locking). The generic route scans Vbar(lambda_i);
+the ideal neo-Hookean tube needs no scan:
+
+    Vbar / Vbar_inf = (s / sinh s) sqrt(m / ln Rbar_o),  y = (lambda_i0 / lambda_i)^2,   (NH-6)
+
+with k = Rbar_o^2 - 1, kappa = k (1 - y) / (1 + k y), m = [log1p(kappa) + y kappa] / 2,
+s = log1p(k y) / 2 = ln(r_o / r_i) and lambda_i0 = sqrt(g^3 / lambda_z) (the homogeneous state),
+strictly increasing in lambda_i from 0 to 1. Derivations: docs/derivation-base-state.md.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import math
+
+import numpy as np
+import sympy as sp
+from numpy.polynomial import chebyshev as cheb
+from scipy.optimize import brentq
+
+from ..errors import BaseStateError, ConvergenceError
+from ..model.materials import I1, I5, INVARIANTS, Material
+
+_ORDERS = (16, 24, 32, 48, 64, 96, 128, 192, 256, 384)  # Gauss-Legendre node counts tried
+_SCAN_RATIO, _SCAN_SPAN = 1.08, 1e3  # threshold scan: lambda_i0 1.08^k up to 1e3 lambda_i0
+_QUIET = dict(invalid="ignore", divide="ignore", over="ignore")
+_RTOL_MIN = 4.0 * np.finfo(float).eps  # brentq's smallest rtol
+
+
+@functools.lru_cache(maxsize=None)
+def _gauss(n: int):
+    return np.polynomial.legendre.leggauss(n)
+
+
+@functools.lru_cache(maxsize=64)
+def _kind(material: Material) -> str:
+    """'neo-hookean', 'ideal' (W(I1, I2) + I5/2) or 'general', decided once per energy."""
+    if sp.expand(material.energy - (I1 - 3) / 2 - I5 / 2) == 0:
+        return "neo-hookean"
+    return "ideal" if material.is_ideal_dielectric() else "general"
+
+
+@functools.lru_cache(maxsize=64)
+def _energy(material: Material):
+    """Numeric Omega(I1, ..., I6), or None for a polynomial energy (finite everywhere)."""
+    if material.energy.is_polynomial(*INVARIANTS):
+        return None
+    return sp.lambdify(INVARIANTS, material.energy, "numpy")
+
+
+@dataclasses.dataclass(frozen=True)
+class _Tube:
+    """Geometry and quadrature of one (material, Rbar_o, g, lambda_z); vectorised in lambda_i."""
+
+    material: Material
+    outer_radius: float
+    growth: float
+    stretch: float
+    nodes: int = 32
+
+    @property
+    def b(self) -> float:
+        return self.growth**3 / self.stretch
+
+    def kinematics(self, lam_i, R):
+        """r, elastic stretches (l1, l2, l3) and dr/dR at R (lam_i and R broadcast)."""
+        r = np.sqrt(lam_i**2 + self.b * (R**2 - 1.0))
+        l2 = r / (self.growth * R)
+        l3 = np.full_like(l2, self.stretch / self.growth)
+        return r, (1.0 / (l2 * l3), l2, l3), self.b * R / r
+
+    def _quadrature(self, lam_i, q, rule=None):
+        """Nodes: r, stretches, D_r = sqrt(q) / r and weights of dr, shape lam_i.shape + (n,);
+        rule (x, w) on [-1, 1], default Gauss-Legendre with self.nodes points."""
+        x, w = _gauss(self.nodes) if rule is None else rule
+        h = 0.5 * (self.outer_radius - 1.0)
+        r, stretches, drdR = self.kinematics(np.asarray(lam_i, float)[..., None], 1.0 + h * (x + 1))
+        return r, stretches, np.sqrt(np.asarray(q, float))[..., None] / r, h * w * drdR
+
+    def hoop(self, lam_i, q):
+        """(int (tau_2 - tau_1) dr / r, int (|tau_1| + |tau_2|) dr / r) at D_r = sqrt(q) / r."""
+        return self.hoops(lam_i, q, (self.nodes,))[0]
+
+    def hoops(self, lam_i, q, orders) -> list:
+        """hoop(lam_i, q) with each Gauss-Legendre rule of ``orders``, in one stress call."""
+        rule = tuple(np.concatenate(a) for a in zip(*(_gauss(n) for n in orders)))
+        r, stretches, d, wdr = self._quadrature(lam_i, q, rule)
+        tau1, tau2, _ = self.material.stress(*stretches, d)
+        f, size = (tau2 - tau1) * wdr / r, (abs(tau2) + abs(tau1)) * wdr / r
+        cut = np.cumsum((0,) + tuple(orders))
+        return [(f[..., a:b].sum(-1), size[..., a:b].sum(-1)) for a, b in zip(cut, cut[1:])]
+
+    def in_domain(self, lam_i) -> np.ndarray:
+        """The energy is finite on both faces and at every node at D = 0 (False beyond a locking
+        stretch, e.g. Gent's)."""
+        if (energy := _energy(self.material)) is None:
+            return np.ones(np.shape(lam_i), bool)
+        R = np.concatenate([[1.0], 0.5 * (self.outer_radius - 1.0) * (_gauss(self.nodes)[0] + 1)
+                            + 1.0, [self.outer_radius]])  # faces and nodes
+        _, (l1, l2, l3), _ = self.kinematics(np.asarray(lam_i, float)[..., None], R)
+        with np.errstate(**_QUIET):
+            w = energy(l1**2 + l2**2 + l3**2, (l1 * l2)**2 + (l2 * l3)**2 + (l3 * l1)**2, 0, 0, 0)
+        return np.all(np.isfinite(np.broadcast_to(w, l1.shape)), axis=-1)
+
+    def charge_and_voltage(self, lam_i, *, rtol: float = 1e-13):
+        """Charge c and Vbar solving (*) at each lambda_i (1-d arrays). Below lambda_i0 an ideal
+        dielectric gives negative values (signed square root, monotone for root finding), a
+        general energy NaN; outside the energy's domain NaN."""
+        lam_i = np.atleast_1d(np.asarray(lam_i, float))
+        c, v = np.full_like(lam_i, np.nan), np.full_like(lam_i, np.nan)
+        ok = self.in_domain(lam_i)
+        lam = lam_i[ok]
+        delta = self.b * (self.outer_radius**2 - 1.0)  # r_o^2 - r_i^2, exact
+        with np.errstate(**_QUIET):
+            m0, scale = self.hoop(lam, 0.0)
+            m0 = np.where(abs(m0) <= 1e-13 * scale, 0.0, m0)
+            q = 2.0 * m0 * lam**2 * (lam**2 + delta) / delta
+            if _kind(self.material) != "general":
+                c[ok] = np.sign(q) * np.sqrt(abs(q))
+                v[ok] = c[ok] * 0.5 * np.log1p(delta / lam**2)
+            else:
+                up = m0 >= 0  # else below lambda_i0: NaN
+                ok[ok] = up
+                c[ok] = np.sqrt(self._solve_q(lam[up], m0[up], q[up], rtol))
+                r, stretches, d, wdr = self._quadrature(lam[up], c[ok] ** 2)
+                v[ok] = (self.material.electric_field(*stretches, d) * wdr).sum(-1)
+        return c, v / (self.outer_radius - 1.0)
+
+    def voltage(self, lam_i) -> np.ndarray:
+        return self.charge_and_voltage(lam_i)[1]
+
+    def _solve_q(self, lam_i, f_lo, q_hi, rtol):
+        """Illinois (modified regula falsi) for hoop(lam_i, q) = 0 in q = c^2, given f(0) >= 0."""
+        q_lo, q_hi = np.zeros_like(q_hi), np.maximum(q_hi, 1e-300)
+        f_hi = self.hoop(lam_i, q_hi)[0]
+        for _ in range(200):  # expand until f(q_hi) <= 0
+            up = f_hi > 0
+            if not up.any():
+                break
+            q_lo, f_lo = np.where(up, q_hi, q_lo), np.where(up, f_hi, f_lo)
+            q_hi = np.where(up, 2.0 * q_hi, q_hi)
+            f_hi = self.hoop(lam_i, q_hi)[0]
+        side = np.zeros(q_hi.shape, int)
+        for _ in range(100):
+            q = np.where(f_hi == f_lo, q_hi, (q_lo * f_hi - q_hi * f_lo) / (f_hi - f_lo))
+            f, scale = self.hoop(lam_i, q)
+            done = (abs(f) <= 1e-14 * scale) | (abs(q_hi - q_lo) <= 1e-2 * rtol * abs(q))
+            if np.all(done | ~np.isfinite(q)):
+                return np.where(f_lo == 0, q_lo, q)
+            hi = f < 0  # replace the endpoint of f's sign; halve the kept one's f (Illinois)
+            f_lo = np.where(hi & (side == 1), f_lo / 2, f_lo)
+            f_hi = np.where(~hi & (side == -1), f_hi / 2, f_hi)
+            q_hi, f_hi = np.where(hi, q, q_hi), np.where(hi, f, f_hi)
+            q_lo, f_lo = np.where(hi, q_lo, q), np.where(hi, f_lo, f)
+            side = np.where(hi, 1, -1)
+        raise ConvergenceError(f"charge c not converged at lambda_i = {lam_i[~done][0]!r}")
+
+
+@dataclasses.dataclass(frozen=True)
+class _Threshold:
+    lambda_i0: float  # purely mechanical state, Vbar = 0
+    value: float  # Vbar threshold (inf if none)
+    kind: str  # "asymptote", "limit point" or "none"
+    lambda_i: float  # lambda_i at the threshold (inf: asymptote; locking stretch: "none")
+    error: float  # estimated absolute error of value
+    nodes: int  # Gauss-Legendre nodes meeting rtol (0: neo-Hookean closed form, no quadrature)
+    grid: np.ndarray  # lambda_i on the monotone branch, from lambda_i0 ...
+    values: np.ndarray  # ... and Vbar there (increasing, starts at 0)
+
+
+@functools.lru_cache(maxsize=4096)
+def _mechanical(material, outer_radius, growth, stretch, rtol) -> tuple[float, int]:
+    """lambda_i0 and the fewest Gauss-Legendre nodes meeting rtol. lambda_i0 = sqrt(g^3 / lz) is
+    the homogeneous state: there l1 = l2 at every R, so tau_1 = tau_2 at D = 0 for any isotropic
+    energy and (*) holds pointwise; under Baker-Ericksen ((tau_2 - tau_1)(l2 - l1) > 0) M has
+    the sign of lambda_i - lambda_i0, so no other state has Vbar = 0 (docs Sec. 3)."""
+    tube = _Tube(material, outer_radius, growth, stretch, _ORDERS[0])
+    lam0 = math.sqrt(growth**3 / stretch)
+    if not tube.in_domain(np.array([lam0]))[0]:
+        raise BaseStateError(f"no traction-free state at Vbar = 0 for g = {growth:g},"
+                             f" lambda_z = {stretch:g}, Rbar_o = {outer_radius:g}: the energy"
+                             f" of {material.name} is undefined in the homogeneous state")
+    return lam0, _nodes(tube, lam0 * np.array([1.0, 1.5, 3.0]), rtol)
+
+
+def _nodes(tube: _Tube, lam: np.ndarray, rtol: float) -> int:
+    """Fewest nodes whose M at lam agrees with the next rule to 1e-2 rtol of the stress scale
+    (four successive rules per stress call)."""
+    lam = lam[tube.in_domain(lam)]
+    for start in range(0, len(_ORDERS) - 1, 3):
+        orders = _ORDERS[start:start + 4]
+        hoops = tube.hoops(lam, 0.0, orders)
+        for n, (a, s), (b, _) in zip(orders, hoops, hoops[1:]):
+            if np.all(abs(a - b) <= 0.01 * rtol * s):
+                return n
+    raise ConvergenceError(f"quadrature not converged to rtol = {rtol} with {_ORDERS[-1]} nodes")
+
+
+def _cell_root(f, a: float, b: float) -> float:
+    """Root of an analytic vectorised f changing sign on [a, b]: root of its degree-12 Chebyshev
+    interpolant, polished by one Newton step with the interpolant's slope (relative accuracy
+    ~1e-15); brentq (xtol 1e-15 a, rtol 1e-14) when the interpolant is not resolved."""
+    with np.errstate(**_QUIET):
+        poly = cheb.Chebyshev.interpolate(f, 12, domain=[a, b])
+    tol = 1e-12 * (b - a)
+    roots = [x.real for x in poly.roots() if abs(x.imag) < tol and a - tol <= x.real <= b + tol]
+    size = abs(poly.coef).max()
+    if len(roots) == 1 and np.isfinite(size) and abs(poly.coef[-2:]).max() <= 1e-14 * size:
+        x = roots[0] - float(f(np.array([roots[0]]))[0]) / poly.deriv()(roots[0])
+        if a - tol <= x <= b + tol:
+            return float(x)
+    return brentq(lambda x: float(f(np.array([x]))[0]), a, b, xtol=1e-15 * a, rtol=1e-14)
+
+
+@functools.lru_cache(maxsize=4096)
+def _threshold(material, outer_radius, growth, stretch, rtol) -> _Threshold:
+    """Scan Vbar(lambda_i) geometrically from lambda_i0 for the first local maximum; without one,
+    Vbar -> inf at a locking stretch ("none"), or the asymptote (neo-Hookean closed form, else
+    Richardson extrapolation in x = lambda_i^-2, whose order is measured)."""
+    if _kind(material) == "neo-hookean":  # (NH-5, NH-6): nothing to scan
+        lam0 = math.sqrt(growth**3 / stretch)
+        return _Threshold(lam0, nh_asymptote(outer_radius, growth, stretch), "asymptote",
+                          math.inf, 0.0, 0, np.array([lam0]), np.array([0.0]))
+    lam0, nodes = _mechanical(material, outer_radius, growth, stretch, rtol)
+    tube = _Tube(material, outer_radius, growth, stretch, nodes)
+    lam = lam0 * _SCAN_RATIO ** np.arange(0, math.ceil(math.log(_SCAN_SPAN, _SCAN_RATIO)) + 1)
+    v = np.concatenate([[0.0], tube.voltage(lam[1:])])
+    bad = np.flatnonzero(~np.isfinite(v))
+    end = bad[0] if bad.size else v.size
+    rises = np.diff(v[:end]) > 0
+    peak = np.flatnonzero(rises[:-1] & ~rises[1:])
+    if peak.size:
+        return _limit_point(tube, lam0, lam[: peak[0] + 3], v[: peak[0] + 3])
+    if not rises.all():
+        raise ConvergenceError(f"Vbar(lambda_i) does not rise from lambda_i0 = {lam0:.12g}")
+    out = dict(lambda_i0=lam0, error=0.0, nodes=nodes, grid=lam[:end], values=v[:end])
+    if end < v.size:  # the energy ends (e.g. Gent): locate the locking stretch
+        a, b = lam[end - 1], lam[end]
+        while b - a > 1e-14 * b:  # 64-section of the domain's edge
+            x = np.linspace(a, b, 65)
+            j = np.argmin(tube.in_domain(x)) - 1
+            a, b = x[j], x[j + 1]
+        return _Threshold(value=math.inf, kind="none", lambda_i=a, **out)
+    # Richardson: Vbar = V_inf + a x^p + b x^(p+1) + ..., x = lambda_i^-2 (p = 2 for nH, MR)
+    t = tube.voltage(100.0 * lam0 * 2.0 ** np.arange(5))  # x shrinks 4x per step
+    d = np.diff(t)
+    if not (np.all(d > 0) and d[-2] > d[-1]):  # not converging: Vbar unbounded
+        return _Threshold(value=math.inf, kind="none", lambda_i=math.inf, **out)
+    p = math.log(d[-2] / d[-1], 4.0)  # observed order in x
+    p = round(p) if abs(p - round(p)) < 0.05 else p
+    for j in range(3):
+        prev, t = t[-1], t[1:] + (t[1:] - t[:-1]) / (4.0 ** (p + j) - 1.0)
+    out["error"] = abs(t[-1] - prev)
+    return _Threshold(value=float(t[-1]), kind="asymptote", lambda_i=math.inf, **out)
+
+
+def _limit_point(tube: _Tube, lam0: float, lam: np.ndarray, v: np.ndarray) -> _Threshold:
+    """Maximise Vbar on [lam[-3], lam[-1]]: root of the derivative of a degree-24 Chebyshev
+    interpolant of Vbar^2 (analytic there), then Vbar evaluated exactly at that root."""
+    def vsq(x):
+        return np.sign(y := tube.voltage(x)) * y**2
+    a, b = lam[-3], lam[-1]
+    poly = cheb.Chebyshev.interpolate(vsq, 24, domain=[a, b])
+    crit = [x.real for x in poly.deriv().roots() if abs(x.imag) < 1e-9 and a <= x.real <= b]
+    if not crit:
+        raise ConvergenceError(f"limit point of Vbar not located in [{a:.6g}, {b:.6g}]")
+    top = max(crit, key=poly)
+    value = math.sqrt(float(vsq(top)[0]))
+    keep = lam < top
+    return _Threshold(lam0, value, "limit point", float(top), abs(poly(top) - value**2) / value,
+                      tube.nodes, np.append(lam[keep], top), np.append(v[keep], value))
+
+
+def _info(params, rtol: float = 1e-12) -> _Threshold:
+    return _threshold(params.material, params.outer_radius, params.growth, params.stretch, rtol)
+
+
+# -- the ideal neo-Hookean tube in closed form (docs eqs. NH-3, NH-5, NH-6) --------------------
+
+def nh_asymptote(outer_radius: float, growth: float, stretch: float) -> float:
+    """Vbar_inf = g^2 / (lambda_z (Rbar_o - 1)) sqrt((Rbar_o^2 - 1) ln(Rbar_o) / 2)   (NH-5)."""
+    Ro = outer_radius
+    return growth**2 / (stretch * (Ro - 1.0)) * math.sqrt((Ro**2 - 1.0) * math.log(Ro) / 2.0)
+
+
+def nh_traction(y: float, k: float) -> float:
+    """m = (lambda_z / g) M = ln(lambda_i / lambda_o) + b (lambda_o^-2 - lambda_i^-2) / 2 of (NH-6)
+    at y = (lambda_i0 / lambda_i)^2 >= 0, k = Rbar_o^2 - 1: [log1p(kappa) + y kappa] / 2, free of
+    cancellation, exactly 0 at y = 1 (lambda_i0) and strictly decreasing in y."""
+    kappa = k * (1.0 - y) / (1.0 + k * y)  # (lambda_i / lambda_o)^2 - 1
+    return 0.5 * (math.log1p(kappa) + y * kappa)
+
+
+def nh_square(y: float, k: float) -> float:
+    """(Vbar / Vbar_inf)^2 = (s / sinh s)^2 m / ln Rbar_o of (NH-6), signed like m (negative
+    below lambda_i0), analytic in y, exactly 1 at y = 0; s = log1p(k y) / 2 = ln(r_o / r_i)."""
+    s = 0.5 * math.log1p(k * y)
+    damp = s / math.sinh(s) if s > 0.0 else 1.0
+    return 2.0 * nh_traction(y, k) / math.log1p(k) * damp * damp
+
+
+def nh_voltage(outer_radius: float, growth: float, stretch: float, lam_i) -> np.ndarray:
+    """Vbar(lambda_i) by (NH-6), vectorised; signed (negative below lambda_i0)."""
+    y = (growth**3 / stretch) / np.asarray(lam_i, float) ** 2
+    ratio = np.vectorize(nh_square, otypes=[float])(y, outer_radius**2 - 1.0)
+    return nh_asymptote(outer_radius, growth, stretch) * np.sign(ratio) * np.sqrt(abs(ratio))
+
+
+def nh_lambda_i(outer_radius: float, growth: float, stretch: float, ratio: float) -> float:
+    """lambda_i with Vbar = ratio Vbar_inf, 0 <= ratio < 1. (NH-6) falls strictly from 1 at y = 0
+    to 0 at y = 1 (docs), so brentq on [0, 1] holds the one root, to 4e-16 relative in y. The
+    result is backward stable (Vbar(lambda_i) = Vbar to rounding); near the asymptote lambda_i
+    is ill-conditioned (relative condition number ~ 1 / (4 (1 - ratio))), where (NH-6) is flat
+    at rounding level and brentq falls back to bisection: up to ~120 iterations, hence maxiter."""
+    lam0 = math.sqrt(growth**3 / stretch)
+    if ratio == 0.0:
+        return lam0
+    k, target = outer_radius**2 - 1.0, ratio * ratio
+    y = brentq(lambda y: nh_square(y, k) - target, 0.0, 1.0, xtol=1e-300, rtol=_RTOL_MIN,
+               maxiter=500)
+    return lam0 / math.sqrt(y)

@@ -1,0 +1,186 @@
+"""Critical growth factor, axial stretch or voltage of one wrinkling mode (m, n).
+
+The tube wrinkles in mode (m, n), k = n pi / (lambda_z L), when the incremental problem
+has a non-trivial solution: det z(r_o) = 0 (paper eq. dispersion-eq). We use the pole-free
+target f of the impedance kernel (impedance.py) or of the collocation method
+(collocation.py); both change sign exactly at bifurcation. Which sign is stable is read
+off the unloaded tube (g = 1, lambda_z = 1, Vbar = 0), stress free and stable in every
+mode: along any path of parameters f keeps that sign until the first bifurcation.
+
+A critical value is found by marching the control parameter from the stable start
+(march.py), then converging with Brent's method. If the axisymmetric base state ceases to
+exist first (the voltage threshold), that is reported instead.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+
+from ..errors import ConvergenceError, ParameterError
+from ..incremental.impedance import STATUS_TEXT, target_batch, target_serial
+from .march import Targets, brent, first_bifurcations
+from ..model.params import TubeParameters
+from ..incremental.radial_table import build_table, stack_tables
+from ..basestate.tube import solve_base_state
+
+METHODS = ("impedance", "collocation")
+PARALLEL_FROM = 16  # batches smaller than this run on one thread (thread launch costs more)
+SIDES = ("compression", "extension")
+
+
+@dataclasses.dataclass(frozen=True)
+class CriticalPoint:
+    """Result of :func:`critical_value`.
+
+    ``kind`` is "bifurcation" (wrinkling in mode (m, n)) or "threshold" (the
+    axisymmetric base state is lost first, at ``value``).
+    """
+
+    solve_for: str
+    value: float
+    m: int
+    n: int
+    kind: str
+    error_estimate: float
+    method: str
+    side: str | None
+    params: TubeParameters
+
+    def as_dict(self) -> dict:
+        p = self.params
+        return {"solve_for": self.solve_for, "value": self.value, "m": self.m, "n": self.n,
+                "kind": self.kind, "error_estimate": self.error_estimate,
+                "method": self.method, "side": self.side, "material": p.material.name,
+                "outer_radius": p.outer_radius, "length": p.length, "growth": p.growth,
+                "stretch": p.stretch, "voltage": p.voltage}
+
+
+def wavenumber(params: TubeParameters, n: int) -> float:
+    """Axial wavenumber k = n pi / (lambda_z L) in the current configuration."""
+    return n * math.pi / (params.stretch * params.length)
+
+
+def impedance_targets(state, modes, *, rtol: float = 1e-12,
+                      max_steps: int = 20000) -> np.ndarray:
+    """Kernel target f for many modes (rows (m, n)) on one base state."""
+    modes = np.atleast_2d(np.asarray(modes, dtype=float))
+    # the table need only be a little more accurate than the integration
+    table = build_table(state, tol=min(1e-9, max(1e-15, 1e-4 * rtol)))
+    coef, degree, fmap, geom = stack_tables([table])
+    nb_ = modes.shape[0]
+    k = modes[:, 1] * math.pi / (state.params.stretch * state.params.length)
+    f = np.empty(nb_)
+    status = np.empty(nb_, dtype=np.int64)
+    steps = np.empty(nb_, dtype=np.int64)
+    kernel = target_batch if nb_ >= PARALLEL_FROM else target_serial
+    kernel(np.ascontiguousarray(modes[:, 0]), k, np.zeros(nb_, dtype=np.int64), coef,
+           degree, fmap, geom, rtol, max_steps, f, status, steps)
+    bad = status != 0
+    if bad.any():
+        i = int(np.argmax(bad))
+        raise ConvergenceError(
+            f"impedance integration failed for mode (m, n) = ({modes[i, 0]:g}, "
+            f"{modes[i, 1]:g}): {STATUS_TEXT[int(status[i])]}")
+    return f
+
+
+def targets_for(method: str, rtol: float) -> Targets:
+    """targets(state, modes) of the impedance kernel or of the collocation method."""
+    if method == "impedance":
+        return lambda state, modes: impedance_targets(state, modes, rtol=rtol)
+    if method == "collocation":
+        from ..incremental.collocation import collocation_target
+        nodes = 40 if rtol >= 1e-11 else 56
+        return lambda state, modes: np.array(
+            [collocation_target(state, int(m), int(n), nodes=nodes) for m, n in modes])
+    raise ParameterError(f"method = {method!r} is unknown; choose one of {METHODS}")
+
+
+def check_mode(m, n) -> None:
+    """Raise ParameterError unless m >= 0 and n >= 1 are integers."""
+    if m < 0 or n < 1 or int(m) != m or int(n) != n:
+        raise ParameterError(
+            f"mode (m, n) = ({m}, {n}) is invalid; need integers m >= 0, n >= 1")
+
+
+def check_side(solve_for: str, side: str | None) -> str | None:
+    """Validate ``side``; default compression for the stretch, None otherwise."""
+    if side is not None and side not in SIDES:
+        raise ParameterError(f"side = {side!r} is unknown; choose compression or extension")
+    return side or ("compression" if solve_for == "stretch" else None)
+
+
+def critical_value(params: TubeParameters, m: int, n: int, solve_for: str, *,
+                   side: str | None = None, method: str = "impedance",
+                   rtol: float = 1e-12, bracket: tuple[float, float] | None = None
+                   ) -> CriticalPoint:
+    """Critical value of ``solve_for`` for mode (m, n), the other parameters fixed.
+
+    Parameters
+    ----------
+    params : TubeParameters
+        The tube; the field named by ``solve_for`` is ignored (it is the unknown).
+    m, n : int
+        Circumferential wavenumber m >= 0 and axial half-wavenumber n >= 1.
+    solve_for : {"growth", "stretch", "voltage"}
+        Growth: smallest g > 1. Stretch: the lambda_z nearest to lambda_z = g on ``side``
+        ("compression", default, or "extension"). Voltage: smallest Vbar > 0.
+    method : {"impedance", "collocation"}
+        The compiled Riccati kernel or the independent spectral collocation.
+    rtol : float
+        Local accuracy of the integration; the value is converged to ~10 rtol.
+    bracket : (float, float), optional
+        A known sign-change interval (e.g. from a mode scan); the march is skipped when
+        the target does change sign on it.
+
+    Returns
+    -------
+    CriticalPoint
+        With an error estimate from a second solve at 100 times looser accuracy.
+
+    Raises
+    ------
+    ParameterError, NoBifurcationFound, ConvergenceError
+    """
+    check_mode(m, n)
+    side = check_side(solve_for, side)
+    mode = np.array([[m, n]], dtype=float)
+    fine, coarse = targets_for(method, rtol), targets_for(method, rtol * 100)
+    at = lambda x: dataclasses.replace(params, **{solve_for: float(x)})  # noqa: E731
+    sref = stable_sign(m, n, params, method)
+    signed = lambda t: lambda x: sref * float(t(solve_base_state(at(x)), mode)[0])  # noqa
+    g = signed(fine)
+    if bracket is not None and g(bracket[0]) * g(bracket[1]) < 0:
+        value = brent(g, *bracket)
+    else:
+        loose = targets_for(method, max(rtol, 1e-8))  # signs only, along the march
+        res = first_bifurcations(params, solve_for, side, mode, loose, brent_targets=fine)
+        if not res.found:
+            return CriticalPoint(solve_for, res.threshold, int(m), int(n), "threshold", 0.0,
+                                 method, side, at(res.threshold))
+        value = res.found[0].value
+    return CriticalPoint(solve_for, value, int(m), int(n), "bifurcation",
+                         _second_resolution(signed(coarse), value), method, side, at(value))
+
+
+def stable_sign(m: int, n: int, params: TubeParameters, method: str = "impedance") -> float:
+    """Sign of the target on the unloaded tube (g = 1, lambda_z = 1, Vbar = 0)."""
+    ref = dataclasses.replace(params, growth=1.0, stretch=1.0, voltage=0.0)
+    f = float(targets_for(method, 1e-10)(solve_base_state(ref), np.array([[m, n]], float))[0])
+    if f == 0.0 or not math.isfinite(f):
+        raise ConvergenceError(f"target undefined on the unloaded tube for mode ({m}, {n})")
+    return math.copysign(1.0, f)
+
+
+def _second_resolution(g_coarse, value: float) -> float:
+    """|root of the 100x looser target - value|: the error estimate of the value."""
+    w = 1e-6 * max(1.0, abs(value))
+    for _ in range(12):
+        lo, hi = value - w, value + w
+        if g_coarse(lo) * g_coarse(hi) < 0:
+            return abs(brent(g_coarse, lo, hi) - value)
+        w *= 4
+    raise ConvergenceError(f"no root of the coarse target near {value}")

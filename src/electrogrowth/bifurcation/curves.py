@@ -1,0 +1,423 @@
+"""Critical value along a parameter, with the switches of the critical mode located.
+
+A curve is ``x -> value(x)``: the critical ``solve_for`` ("growth", "stretch" or "voltage",
+as in :func:`scan.scan_modes`) minimised over the modes (m, n) while the parameter ``along``
+(any other field of :class:`TubeParameters`) runs over a grid. Each grid point is one mode
+scan (:func:`curve_point`, a pure picklable function, so a process pool's ``map`` can run
+them). Between two grid points whose critical modes differ, A at x_a and B at x_b, the
+switch is located exactly:
+
+* two wrinkling modes: Brent's method on d(x) = s (v_A(x) - v_B(x)), with v the first
+  critical value of one mode (:func:`bifurcation.critical_value`; the threshold value when
+  the mode is not reached before it) and s = +1, or -1 for the stretch in compression (there
+  the first mode reached is the largest lambda_z). Where a mode's first critical value
+  jumps (a window of instability opens), d jumps too and the switch is that jump;
+* a mode and the threshold (the axisymmetric state is lost first): bisection on whether the
+  mode still bifurcates before the threshold.
+
+The located switch is checked by a scan there; if a third mode comes first, the interval is
+split at it and both halves are located again. If a single-mode solve fails (e.g. the
+kernel cannot integrate a high mode next to the threshold), the switch is bisected with
+scans instead, to a relative 1e-7 only. A point whose scan fails (e.g. the tube is
+already unstable at the start of the march) is kept as kind "failed" with its message.
+"""
+
+from __future__ import annotations
+
+import csv
+import dataclasses
+import functools
+import math
+from pathlib import Path
+from typing import Callable, Iterable, NamedTuple
+
+import numpy as np
+
+from .critical import check_side, critical_value
+from ..errors import ElectrogrowthError, ParameterError
+from ..model.params import CONTROLS, TubeParameters
+from .scan import scan_modes
+
+#: The parameters a curve can run along (fields of TubeParameters).
+ALONG = ("stretch", "voltage", "outer_radius", "length", "growth")
+#: Symbols of the parameters, for labels and summaries.
+SYMBOLS = {"stretch": r"\lambda_z", "voltage": r"\bar V", "outer_radius": r"\bar R_o",
+           "length": "L", "growth": "g"}
+CRITICAL = {"stretch": r"\lambda_{z,\rm cr}", "voltage": r"\bar V_{\rm cr}",
+            "growth": r"g_{\rm cr}"}
+THRESHOLD = (-1, -1)  # the "mode" of a point where the base state is lost first
+MAX_SPLITS = 6  # depth of the re-location when a third mode intervenes
+
+
+class Switch(NamedTuple):
+    """The critical mode changes at ``x`` from ``mode_before`` to ``mode_after`` (m, n), in
+    the order of the grid; (-1, -1) stands for the threshold. At a crossing the two modes
+    are equally critical there: ``value`` = ``value_after``. At a jump (a mode's first
+    critical value appears or vanishes discontinuously, e.g. a new window of instability)
+    they are the one-sided limits of the critical value."""
+
+    x: float
+    value: float
+    mode_before: tuple[int, int]
+    mode_after: tuple[int, int]
+    value_after: float
+
+
+@dataclasses.dataclass(frozen=True)
+class CurvePoint:
+    """One grid point: critical value and mode, kind "bifurcation", "threshold" or "failed"
+    (then ``status`` is the error message and value NaN), the runners-up (m, n, value), and
+    whether the critical mode sits on the upper edge of the scanned m or n range (a
+    short-wavelength, "surface", instability), with the scan's extrapolated limit of the
+    critical value as m or n -> inf when it gave one (else NaN)."""
+
+    x: float
+    value: float
+    mode: tuple[int, int]
+    kind: str
+    status: str = ""
+    runners_up: tuple[tuple[int, int, float], ...] = ()
+    surface: bool = False
+    short_wave_limit: float = math.nan
+
+
+def curve_point(params: TubeParameters, solve_for: str, along: str, x: float, *,
+                side: str | None = None, m_range=(0, 12), n_range=(1, 30)) -> CurvePoint:
+    """Scan the modes at ``along`` = x; a failure becomes kind "failed" (never raises)."""
+    try:
+        res = scan_modes(dataclasses.replace(params, **{along: float(x)}), solve_for,
+                         side=side, m_range=m_range, n_range=n_range)
+    except Exception as exc:  # noqa: BLE001 -- failures are data in a sweep
+        return CurvePoint(float(x), math.nan, THRESHOLD, "failed", _message(exc))
+    c = res.critical
+    mode = (c.m, c.n) if c.kind == "bifurcation" else THRESHOLD
+    edge = c.kind == "bifurcation" and (c.m == res.m_range[1] or c.n == res.n_range[1])
+    limit = getattr(res, "short_wave_limit", None)
+    return CurvePoint(float(x), c.value, mode, c.kind, "",
+                      tuple((r.m, r.n, r.value) for r in res.runners_up),
+                      bool(res.surface_instability or edge),
+                      math.nan if limit is None else float(limit))
+
+
+def _message(exc: Exception) -> str:
+    """One line; an unexpected (non-electrogrowth) error is named by its type."""
+    text = " ".join(str(exc).split())
+    return text if isinstance(exc, ElectrogrowthError) else f"{type(exc).__name__}: {text}"
+
+
+@dataclasses.dataclass(frozen=True)
+class Curve:
+    """The critical ``solve_for`` along ``along``.
+
+    Rows are the grid points and, at every switch, two rows at the same x: the end of the
+    branch before and the start of the branch after (kind "switch"). ``kind`` is
+    "bifurcation" (mode m, n), "threshold" (m = n = -1: the axisymmetric state is lost
+    first), "switch" or "failed" (value NaN, ``status`` says why). ``surface`` marks rows
+    whose scan ended at the mode cap (m or n keeps lowering the critical value: a
+    short-wavelength instability; the value is that of the capped mode, an upper bound in
+    the order of the march).
+    """
+
+    along: str
+    solve_for: str
+    side: str | None
+    x: np.ndarray
+    value: np.ndarray
+    m: np.ndarray
+    n: np.ndarray
+    kind: np.ndarray
+    status: tuple[str, ...]
+    switches: tuple[Switch, ...]
+    params: TubeParameters
+    surface: np.ndarray
+    short_wave_limit: np.ndarray
+
+    def branches(self) -> list[tuple[tuple[int, int], np.ndarray]]:
+        """Maximal runs of rows with one mode ((-1, -1): threshold), failed rows excluded:
+        [((m, n), row indices), ...] in order."""
+        out, start = [], None
+        for i in range(len(self.x) + 1):
+            end = i == len(self.x)
+            ok = not end and self.kind[i] != "failed"
+            if start is not None and (not ok or (self.m[i], self.n[i])
+                                      != (self.m[start], self.n[start])):
+                out.append(((int(self.m[start]), int(self.n[start])), np.arange(start, i)))
+                start = None
+            if ok and start is None:
+                start = i
+        return out
+
+    def to_csv(self, path: str | Path) -> Path:
+        """Columns <along>, <solve_for>_cr, m, n, kind, surface (0/1), short_wave_limit,
+        status."""
+        path = Path(path)
+        path.parent.mkdir(parents=True, exist_ok=True)
+        with path.open("w", newline="") as fh:
+            w = csv.writer(fh)
+            w.writerow([self.along, f"{self.solve_for}_cr", "m", "n", "kind", "surface",
+                        "short_wave_limit", "status"])
+            for row in zip(self.x, self.value, self.m, self.n, self.kind, self.surface,
+                           self.short_wave_limit, self.status):
+                x, v, m, n, kind, surf, limit, status = row
+                w.writerow([repr(float(x)), repr(float(v)), int(m), int(n), kind, int(surf),
+                            repr(float(limit)), status])
+        return path
+
+    def as_dict(self) -> dict:
+        """JSON-ready record (NaN -> None)."""
+        num = lambda a: [None if not math.isfinite(v) else float(v) for v in a]  # noqa: E731
+        p = self.params
+        return {"along": self.along, "solve_for": self.solve_for, "side": self.side,
+                "material": p.material.name,
+                "fixed": {f: getattr(p, f) for f in ALONG if f not in (self.along,
+                                                                      self.solve_for)},
+                "x": num(self.x), "value": num(self.value), "m": self.m.tolist(),
+                "n": self.n.tolist(), "kind": self.kind.tolist(), "status": list(self.status),
+                "surface": self.surface.tolist(),
+                "short_wave_limit": num(self.short_wave_limit),
+                "switches": [{"x": s.x, "value": s.value, "mode_before": list(s.mode_before),
+                              "mode_after": list(s.mode_after), "value_after": s.value_after}
+                             for s in self.switches]}
+
+    def plot(self, ax=None, *, color: str = "k", label: str | None = None,
+             annotate: bool = True):
+        """Draw the curve on ``ax`` (a new figure when None) and return ``ax``.
+
+        Each branch is labelled "n, m" (the paper's order; "m+" when the scan hit its cap,
+        a surface instability) at its middle; switches are dots, the threshold a dashed
+        line.
+        """
+        if ax is None:
+            from matplotlib.figure import Figure
+            ax = Figure(figsize=(4.0, 3.0), layout="constrained").subplots()
+        first, k = True, 0
+        for (m, n), rows in self.branches():
+            x, v = self.x[rows], self.value[rows]
+            if (m, n) == THRESHOLD:
+                ax.plot(x, v, "--", color=color, lw=0.9)
+                continue
+            ax.plot(x, v, "-", color=color, label=label if first else None)
+            first = False
+            if annotate:
+                i = len(rows) // 2
+                xm, vm = (x[i], v[i]) if len(rows) > 2 else (x.mean(), v.mean())
+                cap = "+" if self.surface[rows].any() else ""
+                ax.annotate(f"{n}, {m}{cap}", (xm, vm), xytext=(0, 4 if k % 2 else -10),
+                            textcoords="offset points", ha="center", fontsize=7, color=color)
+                k += 1
+        if self.switches:
+            ax.plot([s.x for s in self.switches] * 2,
+                    [s.value for s in self.switches] + [s.value_after for s in self.switches],
+                    "o", color=color, ms=2.5)
+        ax.set_xlabel(f"${SYMBOLS[self.along]}$")
+        ax.set_ylabel(f"${CRITICAL[self.solve_for]}$")
+        return ax
+
+
+def check_curve(solve_for: str, along: str) -> None:
+    """Raise ParameterError unless ``solve_for`` is a control and ``along`` another field."""
+    if solve_for not in CONTROLS:
+        raise ParameterError(f"solve_for = {solve_for!r} is unknown; choose one of "
+                             f"{', '.join(CONTROLS)}")
+    if along not in ALONG:
+        raise ParameterError(f"along = {along!r} is unknown; choose one of {', '.join(ALONG)}")
+    if along == solve_for:
+        raise ParameterError(f"along = {along!r} is the unknown itself; choose another of "
+                             f"{', '.join(a for a in ALONG if a != solve_for)}")
+
+
+def critical_curve(params: TubeParameters, solve_for: str, along: str,
+                   values: Iterable[float], *, side: str | None = None,
+                   m_range: tuple[int, int] = (0, 12), n_range: tuple[int, int] = (1, 30),
+                   progress: Callable[[int], object] | None = None,
+                   mapper: Callable = map) -> Curve:
+    """Critical ``solve_for`` as ``along`` runs over ``values``, switches located.
+
+    Parameters
+    ----------
+    params : TubeParameters
+        The fixed parameters; fields ``along`` and ``solve_for`` are overridden.
+    solve_for : {"growth", "stretch", "voltage"}
+        The unknown, as in :func:`scan.scan_modes` (``side`` for the stretch).
+    along : {"stretch", "voltage", "outer_radius", "length", "growth"}
+        The parameter of the abscissa; not ``solve_for``.
+    values : sequence of float
+        Strictly monotone grid of ``along``.
+    m_range, n_range : (int, int)
+        Mode ranges of each scan (extended automatically when the optimum is on an edge).
+    progress : callable, optional
+        Called with 1 after each grid point (``tqdm(...).update`` fits).
+    mapper : callable
+        ``map``-like function running :func:`curve_point` over the grid (e.g. a process
+        pool's ``map``); the builtin by default.
+
+    Returns
+    -------
+    Curve
+
+    Raises
+    ------
+    ParameterError
+        Unknown ``solve_for``/``along``, equal, a bad ``side``, a non-monotone grid or a grid
+        value out of the parameter's range.
+
+    Examples
+    --------
+    Buckling under axial compression (Vbar = 0, L = 1): thin tubes in mode (1, 1), thicker
+    ones in (0, 1), the switch between Rbar_o = 1.2 and 1.3 located exactly:
+
+    >>> c = critical_curve(TubeParameters(), "stretch", "outer_radius", [1.2, 1.3],
+    ...                    side="compression", m_range=(0, 2), n_range=(1, 2))
+    >>> [(s.mode_before, s.mode_after, round(s.x, 6)) for s in c.switches]
+    [((1, 1), (0, 1), 1.256361)]
+    """
+    check_curve(solve_for, along)
+    side = check_side(solve_for, side)
+    if side is not None and solve_for != "stretch":
+        raise ParameterError(f"side = {side!r} applies to the stretch only, not {solve_for}")
+    xs = np.asarray(list(values), dtype=float)
+    if xs.ndim != 1 or xs.size == 0:
+        raise ParameterError("values must be a non-empty sequence of numbers")
+    steps = np.diff(xs)
+    if xs.size > 1 and not ((steps > 0).all() or (steps < 0).all()):
+        raise ParameterError(f"values of {along} must be strictly monotone, got {xs.tolist()}")
+    for x in xs:  # the ranges are checked before any work
+        dataclasses.replace(params, **{along: float(x)})
+    unit = functools.partial(curve_point, params, solve_for, along, side=side,
+                             m_range=m_range, n_range=n_range)
+    points = []
+    for pt in mapper(unit, xs):
+        points.append(pt)
+        if progress is not None:
+            progress(1)
+    loc = _Locator(params, solve_for, along, side, unit)
+    rows, switches = [], []
+    for i, pt in enumerate(points):
+        prev = points[i - 1] if i else None
+        if prev is not None and "failed" not in (prev.kind, pt.kind) and prev.mode != pt.mode:
+            try:
+                new_rows, new_switches = loc.between(prev, pt, MAX_SPLITS)
+            except Exception as exc:  # noqa: BLE001 -- keep the grid points
+                new_rows, new_switches = [], []
+                pt = dataclasses.replace(pt, status=f"switch from {prev.mode} not located: "
+                                                    f"{_message(exc)}")
+            rows += new_rows
+            switches += new_switches
+        rows.append(_row(pt))
+    x, v, modes, kinds, status, surface, limit = zip(*rows)
+    modes = np.array(modes, dtype=int).reshape(-1, 2)
+    return Curve(along, solve_for, side, np.array(x), np.array(v), modes[:, 0], modes[:, 1],
+                 np.array(kinds), tuple(status), tuple(switches), params,
+                 np.array(surface, dtype=bool), np.array(limit, dtype=float))
+
+
+def _row(pt: CurvePoint):
+    return (pt.x, pt.value, pt.mode, pt.kind, pt.status, pt.surface, pt.short_wave_limit)
+
+
+class _Locator:
+    """Locates the switches between two grid points (see the module docstring)."""
+
+    def __init__(self, params, solve_for, along, side, unit):
+        self.params, self.solve_for, self.along, self.side = params, solve_for, along, side
+        self.unit = unit  # x -> CurvePoint (a scan)
+        self.sense = -1.0 if side == "compression" else 1.0
+        self.known: dict[tuple[tuple[int, int], float], tuple[float, str]] = {}
+
+    def _remember(self, pt: CurvePoint):
+        if pt.kind == "bifurcation":
+            self.known[pt.mode, pt.x] = (pt.value, "bifurcation")
+        for m, n, value in pt.runners_up:
+            self.known[(m, n), pt.x] = (value, "bifurcation")
+
+    def mode_value(self, mode, x) -> tuple[float, str]:
+        """First critical value of ``mode`` at x, by the single-mode march (the threshold,
+        kind "threshold", if the base state is lost first: then the mode comes after all)."""
+        key = (mode, float(x))
+        if key not in self.known:
+            at = dataclasses.replace(self.params, **{self.along: float(x)})
+            c = critical_value(at, *mode, self.solve_for, side=self.side)
+            self.known[key] = (c.value, c.kind)
+        return self.known[key]
+
+    def between(self, a: CurvePoint, b: CurvePoint, depth: int):
+        """Rows and switches strictly between grid points a and b, in grid order."""
+        self._remember(a)
+        self._remember(b)
+        try:
+            if THRESHOLD in (a.mode, b.mode):
+                found = self._threshold_switch(a, b)
+            else:
+                found = self._crossing(a, b)
+        except ElectrogrowthError:  # a single-mode solve failed: bisect with scans
+            found = self._scan_bisection(a, b)
+            if isinstance(found, CurvePoint):
+                return self._split(a, found, b, depth)
+        if found is None:  # d keeps its sign: a third mode in between; look in the middle
+            return self._split(a, self.unit(0.5 * (a.x + b.x)), b, depth)
+        x, v_before, v_after = found
+        if depth > 0:
+            check = self.unit(x)
+            first = min(v_before, v_after, key=lambda v: self.sense * v)
+            if check.kind != "failed" and check.mode not in (a.mode, b.mode) \
+                    and self.sense * (check.value - first) < -1e-9 * max(1.0, abs(first)):
+                return self._split(a, check, b, depth)
+        rows = [(x, v_before, a.mode, "switch", "", a.surface, math.nan),
+                (x, v_after, b.mode, "switch", "", b.surface, math.nan)]
+        return rows, [Switch(x, v_before, a.mode, b.mode, v_after)]
+
+    def _split(self, a, mid, b, depth):
+        """Locate the switches on both sides of a scanned point ``mid`` (kept as a row)."""
+        if depth <= 0 or mid.kind == "failed":
+            return [], []
+        rows, switches = [], []
+        if mid.mode != a.mode:
+            rows, switches = self.between(a, mid, depth - 1)
+        rows = rows + [_row(mid)]
+        if mid.mode != b.mode:
+            more_rows, more_switches = self.between(mid, b, depth - 1)
+            rows, switches = rows + more_rows, switches + more_switches
+        return rows, switches
+
+    def _crossing(self, a, b):
+        """(x, value before, value after) where d = s (v_A - v_B) changes sign (Brent), or
+        None if it does not. At a jump (a mode's first root appears or vanishes) the two
+        values differ: they are taken just before and just after x."""
+        from scipy.optimize import brentq
+
+        def d(x):
+            return self.sense * (self.mode_value(a.mode, x)[0] - self.mode_value(b.mode, x)[0])
+
+        if not d(a.x) < 0 < d(b.x):
+            return None
+        tol = 1e-13 * max(1.0, abs(a.x))
+        x = brentq(d, a.x, b.x, xtol=tol, rtol=1e-14, maxiter=100)
+        va, vb = self.mode_value(a.mode, x)[0], self.mode_value(b.mode, x)[0]
+        if abs(va - vb) > 1e-9 * max(1.0, abs(va)):  # a jump: one-sided values
+            step = math.copysign(4 * tol, b.x - a.x)
+            va, vb = self.mode_value(a.mode, x - step)[0], self.mode_value(b.mode, x + step)[0]
+        return x, va, vb
+
+    def _scan_bisection(self, a, b):
+        """Fallback: bisect on the mode the scans find, to a relative 1e-7 in x; returns
+        (x, value before, value after), or the scanned point where a third mode is first."""
+        lo, hi = a, b
+        while abs(hi.x - lo.x) > 1e-7 * max(1.0, abs(lo.x)):
+            mid = self.unit(0.5 * (lo.x + hi.x))
+            if mid.kind == "failed" or mid.mode not in (a.mode, b.mode):
+                return mid
+            lo, hi = (mid, hi) if mid.mode == a.mode else (lo, mid)
+        return 0.5 * (lo.x + hi.x), lo.value, hi.value
+
+    def _threshold_switch(self, a, b):
+        """Bisection on 'the non-threshold mode bifurcates before the threshold'."""
+        mode = b.mode if a.mode == THRESHOLD else a.mode
+        good, bad = (b.x, a.x) if a.mode == THRESHOLD else (a.x, b.x)
+        while abs(bad - good) > 1e-12 * max(1.0, abs(good)):
+            mid = 0.5 * (good + bad)
+            if self.mode_value(mode, mid)[1] == "bifurcation":
+                good = mid
+            else:
+                bad = mid
+        value = self.mode_value(mode, good)[0]
+        return good, value, value

@@ -1,0 +1,181 @@
+"""Which mode comes first: the critical value over m in [m_lo, m_hi], n in [n_lo, n_hi].
+
+The scan is organised around the batch kernel. The base state does not depend on the
+mode, so the march (march.py) evaluates every mode at once on one base state per step
+(impedance.target_batch, parallel over modes), at a loose tolerance that only has to get
+signs right; the modes that change sign in a step are narrowed together by bisection and
+finished by Brent's method at full accuracy. Marching on yields the runner-up modes.
+
+When the best mode sits on the edge of the range the range is doubled in that direction
+(up to a cap); if the critical value still falls with n (or m) at the cap, the result is
+flagged as a short-wavelength (surface) instability.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+
+import numpy as np
+
+from .critical import (CriticalPoint, check_side, critical_value, impedance_targets)
+from ..errors import ParameterError
+from .march import ModeValue, first_bifurcations, unloaded_signs
+from ..model.params import TubeParameters
+
+LOOSE = 1e-5  # kernel tolerance for signs along the march (no sign error seen at 1e-4)
+MEDIUM = 1e-9  # for the runners-up; the critical mode is re-solved at the requested rtol
+M_CAP, N_CAP = 64, 320
+DOUBLINGS = 2  # widen a range at most this often; an optimum still on its edge is a
+               # short-wavelength (surface) instability, extrapolated instead of scanned
+
+
+@dataclasses.dataclass(frozen=True)
+class ScanResult:
+    """Result of :func:`scan_modes`: the critical point and the next modes after it."""
+
+    critical: CriticalPoint
+    runners_up: tuple[ModeValue, ...]
+    m_range: tuple[int, int]
+    n_range: tuple[int, int]
+    surface_instability: bool = False
+    short_wave_limit: float | None = None  # Richardson limit n (or m) -> inf, if surface
+    short_wave_error: float | None = None
+
+    def as_dict(self) -> dict:
+        out = self.critical.as_dict()
+        out["runners_up"] = [dataclasses.asdict(r) for r in self.runners_up]
+        out["m_range"], out["n_range"] = list(self.m_range), list(self.n_range)
+        out["surface_instability"] = self.surface_instability
+        out["short_wave_limit"] = self.short_wave_limit
+        out["short_wave_error"] = self.short_wave_error
+        return out
+
+
+def mode_grid(m_range, n_range) -> np.ndarray:
+    """All (m, n) pairs, rows, as floats."""
+    m, n = np.meshgrid(np.arange(m_range[0], m_range[1] + 1),
+                       np.arange(n_range[0], n_range[1] + 1), indexing="ij")
+    return np.stack([m.ravel(), n.ravel()], axis=1).astype(float)
+
+
+def scan_modes(params: TubeParameters, solve_for: str, *, side: str | None = None,
+               m_range: tuple[int, int] = (0, 12), n_range: tuple[int, int] = (1, 30),
+               top: int = 5, rtol: float = 1e-12, extend: bool = True) -> ScanResult:
+    """Critical value of ``solve_for`` minimised (first reached) over all modes.
+
+    Parameters
+    ----------
+    params : TubeParameters
+        The tube; the field named by ``solve_for`` is the unknown.
+    solve_for : {"growth", "stretch", "voltage"}
+        As in :func:`bifurcation.critical_value`.
+    side : {"compression", "extension"}, optional
+        For the stretch only (default compression).
+    m_range, n_range : (int, int)
+        Inclusive ranges of the circumferential and axial wavenumbers; extended
+        automatically while the optimum sits on an upper edge (``extend``).
+    top : int
+        Number of modes reported (the critical one and top - 1 runners-up).
+
+    Returns
+    -------
+    ScanResult
+    """
+    side = check_side(solve_for, side)
+    _check_range("m", m_range, 0)
+    _check_range("n", n_range, 1)
+    grown = {"m": 0, "n": 0}
+    probes = extend
+    while True:
+        result = _scan_once(params, solve_for, side, m_range, n_range, top, rtol, probes)
+        c = result.critical
+        if probes and c.kind == "bifurcation" and (c.m > m_range[1] or c.n > n_range[1]):
+            # a probe beyond the range wins: the optimum is a short wave, widen to it once
+            grown = {"m": int(c.m > m_range[1]), "n": int(c.n > n_range[1])}
+            m_range = (m_range[0], max(m_range[1], c.m))
+            n_range = (n_range[0], max(n_range[1], c.n))
+            probes = False
+            continue
+        probes = False
+        edge = {"m": c.kind == "bifurcation" and c.m == m_range[1],
+                "n": c.kind == "bifurcation" and c.n == n_range[1]}
+        grow = {"m": edge["m"] and m_range[1] < M_CAP and grown["m"] < DOUBLINGS,
+                "n": edge["n"] and n_range[1] < N_CAP and grown["n"] < DOUBLINGS}
+        if not extend or not any(grow.values()):
+            break
+        if grow["m"]:
+            m_range, grown["m"] = (m_range[0], min(2 * m_range[1] + 1, M_CAP)), grown["m"] + 1
+        if grow["n"]:
+            n_range, grown["n"] = (n_range[0], min(2 * n_range[1], N_CAP)), grown["n"] + 1
+    if not (extend and any(edge.values())) or (c.m == 0 and not edge["n"]):
+        return result
+    along = "n" if edge["n"] else "m"
+    limit, err = _short_wave_limit(params, solve_for, side, c.m, c.n, along, rtol)
+    return dataclasses.replace(result, surface_instability=True, short_wave_limit=limit,
+                               short_wave_error=err)
+
+
+def scan_grid(m_range, n_range, probes: bool) -> np.ndarray:
+    """The (m, n) rectangle, plus a few short waves beyond it when ``probes``.
+
+    The critical value need not be monotone in m or n: at Rbar_o = 1.4, Vbar = 0.4 in
+    extension it rises from m = 0 to m = 12 and then falls towards an inner-face short
+    wave as m grows. Probes at 2 and 4 times the range catch such optima.
+    """
+    grid = mode_grid(m_range, n_range)
+    if not probes:
+        return grid
+    (m0, m1), (n0, n1) = m_range, n_range
+    ms = sorted({min(2 * m1 + 1, M_CAP), min(4 * m1 + 3, M_CAP)} - set(range(m0, m1 + 1)))
+    ns = sorted({min(2 * n1, N_CAP), min(4 * n1, N_CAP)} - set(range(n0, n1 + 1)))
+    extra = [(m, n) for m in ms for n in (n0, n0 + 1)]
+    extra += [(m, n) for n in ns for m in (m0, m0 + 1)]
+    return np.vstack([grid, np.array(extra, float).reshape(-1, 2)])
+
+
+def _short_wave_limit(params, solve_for, side, m, n, along, rtol):
+    """Critical value as n (or m) -> inf: the O(1/n) approach extrapolated from n, 2n, 4n."""
+    v = []
+    for j in (1, 2, 4):
+        mm, nn = (m, j * n) if along == "n" else (j * m, n)
+        v.append(critical_value(params, mm, nn, solve_for, side=side, rtol=rtol).value)
+    first, second = 2 * v[1] - v[0], 2 * v[2] - v[1]
+    return second, abs(second - first)
+
+
+def _check_range(name, rng, lowest):
+    lo, hi = rng
+    if int(lo) != lo or int(hi) != hi or lo < lowest or hi < lo:
+        raise ParameterError(f"{name} range {rng} is invalid; need integers "
+                             f"{lowest} <= {name}_min <= {name}_max")
+
+
+def _scan_once(params, solve_for, side, m_range, n_range, top, rtol, probes) -> ScanResult:
+    modes = scan_grid(m_range, n_range, probes)
+    loose = lambda state, md: impedance_targets(state, md, rtol=LOOSE)  # noqa: E731
+    fine = lambda state, md: impedance_targets(state, md, rtol=max(rtol, MEDIUM))  # noqa
+    res = first_bifurcations(params, solve_for, side, modes, loose, top=top,
+                             brent_targets=fine,
+                             stable_signs=_stable_signs(params.material, params.outer_radius,
+                                                        params.length, m_range, n_range,
+                                                        probes))
+    at = lambda x: dataclasses.replace(params, **{solve_for: float(x)})  # noqa: E731
+    found = res.found
+    if not found:  # the march stops at the threshold, so found modes come before it
+        crit = CriticalPoint(solve_for, res.threshold, -1, -1, "threshold", 0.0, "impedance",
+                             side, at(res.threshold))
+        return ScanResult(crit, (), m_range, n_range)
+    best = found[0]
+    w = 1e-7 * max(1.0, abs(best.value))
+    crit = critical_value(params, best.m, best.n, solve_for, side=side, rtol=rtol,
+                          bracket=(best.value - w, best.value + w))
+    return ScanResult(crit, tuple(found[1:top]), m_range, n_range)
+
+
+@functools.lru_cache(maxsize=64)
+def _stable_signs(material, outer_radius, length, m_range, n_range, probes) -> np.ndarray:
+    """Signs on the unloaded tube, shared by every scan of a curve or sweep."""
+    modes = scan_grid(m_range, n_range, probes)
+    ref = TubeParameters(outer_radius, length, material=material)
+    return unloaded_signs(ref, modes, lambda s, md: impedance_targets(s, md, rtol=MEDIUM))

@@ -1,0 +1,2 @@
+"""TODO"""
+from .app import main

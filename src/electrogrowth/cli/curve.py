@@ -1,0 +1,140 @@
+"""``electrogrowth curve``: the critical value along a parameter, mode switches located.
+
+Registered in :data:`cli.COMMANDS` as ("...", configure_curve, run_curve). Writes
+``curve_<solve_for>_vs_<along>.csv`` and ``.png`` into ``--out`` and prints a summary
+(``--json``: one JSON object). A tqdm progress bar goes to stderr when it is a terminal.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from .options import (_material, _number, add_control_options, add_mode_range_options,
+                          add_tube_options)
+from ..bifurcation.curves import ALONG, check_curve, critical_curve
+from ..errors import ParameterError
+from ..model.params import TubeParameters
+
+#: How each parameter is described in the options' help (the paper's terms).
+MEANING = {
+    "growth": "the isotropic growth factor g (F_g = g I)",
+    "stretch": "the total axial stretch lambda_z = l / L, growth included",
+    "voltage": "the radial voltage Vbar = V / (R_o - R_i) sqrt(eps / mu)",
+    "outer_radius": "the undeformed outer radius Rbar_o = R_o / R_i",
+    "length": "the undeformed length L / R_i",
+}
+
+
+def configure_curve(parser: argparse.ArgumentParser) -> None:
+    what = parser.add_argument_group("what to compute")
+    add_control_options(what)
+    what.add_argument("--along", choices=ALONG, required=True,
+                      help="the abscissa: " + "; ".join(f"{k} = {v}"
+                                                        for k, v in MEANING.items()))
+    what.add_argument("--from", dest="start", type=_number, required=True, metavar="X0",
+                      help="first value of the --along parameter")
+    what.add_argument("--to", dest="stop", type=_number, required=True, metavar="X1",
+                      help="last value of the --along parameter")
+    what.add_argument("--points", type=int, default=30, metavar="N",
+                      help="grid points from X0 to X1 (>= 2, default 30); switches of the"
+                           " critical mode (m, n) between them are located exactly")
+    add_tube_options(parser, outer_radius=1.4)  # the --along and --solve-for values are ignored
+    modes = parser.add_argument_group("modes u ~ cos(m theta) cos(n pi z / l)")
+    add_mode_range_options(modes)
+    parser.add_argument("--out", type=Path, default=Path("out"), metavar="DIR",
+                        help="directory for the CSV and PNG (default ./out)")
+    parser.add_argument("--json", action="store_true",
+                        help="print one JSON object instead of text (no progress bar)")
+
+
+def curve_params(args) -> TubeParameters:
+    """The fixed parameters; the --along and --solve-for fields are placeholders."""
+    fixed = {"outer_radius": args.outer_radius, "length": args.length,
+             "growth": args.growth, "stretch": args.stretch, "voltage": args.voltage}
+    fixed[args.along] = args.start
+    fixed[args.solve_for] = {"growth": 1.0, "stretch": fixed["growth"], "voltage": 0.0}[
+        args.solve_for]
+    return TubeParameters(**fixed, material=_material(args))
+
+
+def run_curve(args) -> int:
+    check_curve(args.solve_for, args.along)
+    if args.points < 2:
+        raise ParameterError(f"--points = {args.points} is too small; need >= 2")
+    if args.m_max < 0 or args.n_max < 1:
+        raise ParameterError(f"--m-max = {args.m_max}, --n-max = {args.n_max} invalid;"
+                             " need M >= 0 and N >= 1")
+    if args.side is not None and args.solve_for != "stretch":
+        raise ParameterError(f"--side {args.side} applies to --solve-for stretch only")
+    if args.start == args.stop:
+        raise ParameterError(f"--from = --to = {args.start:g}; need two different values")
+    params = curve_params(args)
+    values = np.linspace(args.start, args.stop, args.points)
+    bar = None
+    if not args.json and sys.stderr.isatty():
+        from tqdm import tqdm
+        bar = tqdm(total=args.points, unit="point", file=sys.stderr,
+                   desc=f"{args.solve_for} along {args.along}")
+    try:
+        curve = critical_curve(params, args.solve_for, args.along, values, side=args.side,
+                               m_range=(0, args.m_max), n_range=(1, args.n_max),
+                               progress=bar.update if bar is not None else None)
+    finally:
+        if bar is not None:
+            bar.close()
+    stem = f"curve_{args.solve_for}_vs_{args.along}"
+    csv = curve.to_csv(args.out / f"{stem}.csv")
+    png = args.out / f"{stem}.png"
+    ax = curve.plot()
+    ax.set_title(_fixed_text(curve), fontsize=8)
+    ax.figure.savefig(png, dpi=200)
+    if args.json:
+        print(json.dumps({**curve.as_dict(), "csv": str(csv), "png": str(png)}))
+        return 0
+    print("\n".join(summary(curve) + [str(csv), str(png)]))
+    return 0
+
+
+def _fixed_text(curve) -> str:
+    d = curve.as_dict()["fixed"]
+    names = {"outer_radius": "Rbar_o", "length": "L", "growth": "g", "stretch": "lambda_z",
+             "voltage": "Vbar"}
+    return ", ".join(f"{names[k]} = {v:g}" for k, v in d.items())
+
+
+def summary(curve) -> list[str]:
+    """Text lines: the fixed parameters, the range of the critical value, each branch
+    (mode and extent) and each switch."""
+    side = f" ({curve.side})" if curve.side else ""
+    lines = [f"critical {curve.solve_for}{side} along {curve.along}: "
+             f"{curve.params.material.name}, {_fixed_text(curve)}"]
+    ok = np.isfinite(curve.value)
+    if ok.any():
+        lines.append(f"  {curve.solve_for}_cr from {curve.value[ok].min():.10g} to "
+                     f"{curve.value[ok].max():.10g}")
+    for (m, n), rows in curve.branches():
+        what = "threshold (axisymmetric state lost)" if m < 0 else f"mode (m, n) = ({m}, {n})"
+        if curve.surface[rows].any():
+            what += " at the mode cap: short-wavelength (surface) instability"
+        lines.append(f"  {curve.along} {curve.x[rows[0]]:.10g} .. {curve.x[rows[-1]]:.10g}:"
+                     f" {what}")
+    for s in curve.switches:
+        jump = abs(s.value_after - s.value) > 1e-9 * max(1.0, abs(s.value))
+        value = (f"jumps from {s.value:.12g} to {s.value_after:.12g}" if jump
+                 else f"= {s.value:.12g}")
+        lines.append(f"  switch at {curve.along} = {s.x:.12g}, {curve.solve_for}_cr {value}:"
+                     f" {_mode(s.mode_before)} -> {_mode(s.mode_after)}")
+    failed = [i for i, k in enumerate(curve.kind) if k == "failed"]
+    for i in failed:
+        lines.append(f"  failed at {curve.along} = {curve.x[i]:.10g}: {curve.status[i]}")
+    return lines
+
+
+def _mode(mode) -> str:
+    return "threshold" if mode[0] < 0 else f"({mode[0]}, {mode[1]})"
+

@@ -1,0 +1,95 @@
+"""``electrogrowth demo``: the paper's headline tube, from base state to wrinkling pattern.
+
+Rbar_o = 1.4, L = 1, lambda_z = 1, Vbar = 0.4 (paper Sec. 4.4): the residual stress of the
+charged tube, the critical growth factor and mode with the runners-up, the critical growth
+factor along the axial stretch, and the 3D wrinkled tube. Everything lands in --out.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+import numpy as np
+
+from ..bifurcation.curves import critical_curve
+from ..figures.base_state import COLORS, _figure
+from ..shapes.mode_shape import mode_shape
+from ..model.params import TubeParameters
+from ..shapes.wall import render_pattern
+from ..bifurcation.scan import scan_modes
+from ..basestate.tube import solve_base_state
+
+HEADLINE = TubeParameters(outer_radius=1.4, length=1.0, growth=1.0, stretch=1.0, voltage=0.4)
+
+
+def configure_demo(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--out", type=Path, default=Path("out"), metavar="DIR",
+                        help="directory for the PNG, CSV and JSON results (default ./out)")
+    parser.add_argument("--quick", action="store_true",
+                        help="fewer curve points (for tests)")
+
+
+def run_demo(args) -> int:
+    from .app import state_record  # cli imports this module
+
+    out = args.out
+    out.mkdir(parents=True, exist_ok=True)
+    p = HEADLINE
+    state = solve_base_state(p)
+    rec = state_record(state)
+    (out / "state.json").write_text(json.dumps(rec, indent=1))
+    _stress_profile(state, out)
+    scan = scan_modes(p, "growth")
+    crit = scan.critical
+    (out / "critical.json").write_text(json.dumps(scan.as_dict(), indent=1))
+    lines = [
+        f"Tube Rbar_o = {p.outer_radius:g}, L = {p.length:g}, lambda_z = {p.stretch:g},"
+        f" Vbar = {p.voltage:g} ({p.material.name}); units mu = eps = R_i = 1",
+        f"  base state: lambda_i = {state.lambda_i:.10f}, lambda_o = {state.lambda_o:.10f},"
+        f" voltage threshold {state.voltage_threshold:.6f} ({state.threshold_kind})",
+        f"  residual hoop stress from {rec['sigma_tt_min']:.4f} to {rec['sigma_tt_max']:.4f},"
+        f" axial force {state.axial_force:.6f}",
+        f"  wrinkles at g_cr = {crit.value:.10f} in mode (m, n) = ({crit.m}, {crit.n})"
+        f"  (error estimate {crit.error_estimate:.0e})",
+        "  next modes: " + ", ".join(f"({r.m}, {r.n}) at {r.value:.6f}"
+                                    for r in scan.runners_up),
+    ]
+    written = [out / "state.json", out / "stress_profile.csv", out / "stress_profile.png",
+               out / "critical.json"]
+    written += _extras(p, crit, out, args.quick)
+    lines.append("  wrote " + ", ".join(str(w) for w in written))
+    print("\n".join(lines))
+    return 0
+
+
+def _stress_profile(state, out: Path) -> None:
+    prof = state.profiles(201)
+    cols = ("r", "sigma_rr", "sigma_tt", "sigma_zz", "p", "D_r", "E_r")
+    np.savetxt(out / "stress_profile.csv", np.column_stack([prof[c] for c in cols]),
+               delimiter=",", header=",".join(cols), comments="", fmt="%.15g")
+    fig, axes = _figure(4.0, 3.0, 1, 1)
+    ax = axes[0, 0]
+    for key, label, color in zip(("sigma_rr", "sigma_tt", "sigma_zz"),
+                                 (r"$\sigma_{rr}$", r"$\sigma_{\theta\theta}$",
+                                  r"$\sigma_{zz}$"), COLORS):
+        ax.plot(prof["r"], prof[key], color=color, label=label)
+    ax.axhline(0.0, color="0.6", lw=0.6)
+    ax.set_xlabel("r / R_i")
+    ax.set_ylabel(r"Cauchy stress / $\mu$")
+    ax.set_title(rf"$\bar R_o$ = {state.params.outer_radius:g}, $\bar V$ ="
+                 rf" {state.params.voltage:g}, $\lambda_z$ = {state.params.stretch:g}",
+                 fontsize=9)
+    ax.legend()
+    fig.savefig(out / "stress_profile.png", dpi=200)
+
+
+def _extras(params, crit, out: Path, quick: bool) -> list[Path]:
+    """The g_cr curve along the axial stretch and the 3D pattern of the critical mode."""
+    xs = np.linspace(0.95, 1.25, 4 if quick else 13)
+    curve = critical_curve(params, "growth", "stretch", xs)
+    curve.to_csv(out / "gcr_curve.csv")
+    curve.plot().figure.savefig(out / "gcr_curve.png", dpi=200)
+    render_pattern(mode_shape(crit), path=out / "pattern.png")
+    return [out / "gcr_curve.csv", out / "gcr_curve.png", out / "pattern.png"]

@@ -1,0 +1,392 @@
+"""Chebyshev collocation of the incremental problem: an independent onset criterion.
+
+The Stroh/Riccati engine eliminates the incremental pressure and works with an 8x8 Stroh
+matrix. This module does neither: it discretises the displacement-pressure-potential
+equations of paper Sec. 3.2 directly, assembled from the full moduli tensors A_piqj,
+Gamma_piq, K_pq, so a match between the two certifies the Stroh derivation.
+
+Increments (paper eq. incremental-solutions), collocated in the current radius
+r_i <= r <= r_o (moduli and p taken at R(r) = sqrt(1 + lambda_z (r^2 - r_i^2) / g^3))::
+
+    u_r = U_r cos(m th) cos(kz),  u_th = U_th sin(m th) cos(kz),  u_z = U_z cos(m th) sin(kz),
+    pdot = P cos(m th) cos(kz),   phidot = Phi cos(m th) cos(kz),  k = n pi / (lambda_z L).
+
+They are assembled as u = (U_r, -i U_th, -i U_z) e^{i(m th + k z)}: cos <-> 1, sin <-> -i,
+so the rows of the theta and z components, multiplied by i, are exactly the real
+cos/sin equations. Equations (docs/conventions.md, lengths in units of the current
+half-thickness h = (r_o - r_i)/2, so the matrix is invariant under isotropic growth):
+
+    L_jq = du_j/dx_q (paper eq. 52),    E = -grad phidot,
+    D    = K^{-1} (E - Gamma_qjp L_jq)                        (eq16-1_2 solved for D),
+    S_pi = A_piqj L_jq + Gamma_piq D_q + p L_pi - pdot delta_pi (eq16-1_1),
+    div S = 0 on the first index (eq. incremental-constitutive3), div D = 0
+    (eq. incremental-Maxwell), tr L = 0 (eq. incremental-incompressibility),
+    S_rr = S_rth = S_rz = Phi = 0 at r = r_i, r_o (eq. 57).
+
+The moduli vary with r and are never differentiated: the fluxes S_rr, S_rth, S_rz, D_r
+are built at the nodes as linear maps of the unknowns and the differentiation matrix is
+applied to them ("differentiate the flux"). The pressure lives on the interior nodes
+(P_N - P_{N-2}), which keeps the discrete system free of a spurious pressure mode.
+Details, validation and convergence: docs/collocation.md.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from typing import Callable
+
+import numpy as np
+import numpy.typing as npt
+import scipy.linalg
+import scipy.optimize
+
+from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
+from ..model.materials import MODULI_INDEX
+from ..model.params import CONTROLS, TubeParameters
+
+FloatArray = npt.NDArray[np.float64]
+#: A linear map from the 5 nodes - 2 unknowns (U_r, U_th, U_z, P, Phi) to nodal values.
+Operator = npt.NDArray[np.complex128]
+
+_FIELDS = ("U_r", "U_th", "U_z", "P", "Phi")
+
+
+def chebyshev_lobatto(nodes: int) -> tuple[FloatArray, FloatArray]:
+    """Chebyshev-Lobatto points x_j = cos(j pi / (nodes-1)) and the matrix of d/dx.
+
+    Trefethen's construction (Spectral Methods in MATLAB, ch. 6) with the diagonal set by
+    the negative row sum, so the matrix differentiates constants exactly.
+
+    >>> x, Dx = chebyshev_lobatto(5)
+    >>> bool(np.allclose(Dx @ x**3, 3 * x**2))
+    True
+    """
+    N = nodes - 1
+    j = np.arange(nodes)
+    x = np.cos(np.pi * j / N)
+    c = np.where((j == 0) | (j == N), 2.0, 1.0) * (-1.0) ** j
+    dX = x[:, None] - x[None, :]
+    Dx = np.outer(c, 1.0 / c) / (dX + np.eye(nodes))
+    Dx -= np.diag(Dx.sum(axis=1))
+    return x, Dx
+
+
+def interior_interpolation(nodes: int) -> FloatArray:
+    """Values at all ``nodes`` Lobatto points of the degree nodes-3 polynomial through the
+    interior points x_1 .. x_{nodes-2} (the pressure space of the P_N - P_{N-2} scheme).
+
+    Barycentric formula; the interior points are the zeros of U_{N-1}, whose barycentric
+    weights are (-1)^j sin^2(j pi / N).
+
+    >>> P = interior_interpolation(8)
+    >>> x = chebyshev_lobatto(8)[0]
+    >>> bool(np.allclose(P @ x[1:-1]**5, x**5))
+    True
+    """
+    N = nodes - 1
+    j = np.arange(1, N)
+    x = np.cos(np.pi * np.arange(nodes) / N)
+    y, w = x[1:-1], (-1.0) ** j * np.sin(np.pi * j / N) ** 2
+    P = np.zeros((nodes, N - 1))
+    P[1:-1] = np.eye(N - 1)
+    for row in (0, N):
+        c = w / (x[row] - y)
+        P[row] = c / c.sum()
+    return P
+
+
+def full_moduli(moduli: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """Expand the 23 principal moduli (last axis, order MODULI_NAMES) into full tensors.
+
+    Returns A[p, i, q, j, ...], G[p, i, q, ...] and K[p, q, ...] with the node axis last,
+    filled with the symmetries A_piqj = A_qjpi and Gamma_piq = Gamma_ipq
+    (docs/conventions.md).
+    """
+    mod = np.moveaxis(np.asarray(moduli, float), -1, 0)
+    shape = mod.shape[1:]
+    A = np.zeros((3, 3, 3, 3) + shape)
+    G = np.zeros((3, 3, 3) + shape)
+    K = np.zeros((3, 3) + shape)
+    for name, k in MODULI_INDEX.items():
+        idx = tuple(int(c) - 1 for c in name[1:])
+        if name[0] == "A":
+            p, i, q, j = idx
+            A[p, i, q, j] = A[q, j, p, i] = mod[k]
+        elif name[0] == "G":
+            p, i, q = idx
+            G[p, i, q] = G[i, p, q] = mod[k]
+        else:
+            K[idx] = K[idx[::-1]] = mod[k]
+    return A, G, K
+
+
+@dataclasses.dataclass(frozen=True)
+class _Grid:
+    """Nodes of one discretisation: r = h (c + x), everything in units of h."""
+
+    r: FloatArray        # physical current radius at the nodes (outer face first)
+    rh: FloatArray       # r / h
+    Dx: FloatArray       # d/d(r/h) = d/dx
+    kh: float            # k h
+    h: float
+
+
+def _grid(state, n: float, nodes: int) -> _Grid:
+    if not (isinstance(nodes, (int, np.integer)) and nodes >= 6):
+        raise ParameterError(f"nodes = {nodes!r} is invalid; need an integer >= 6")
+    prm = state.params
+    x, Dx = chebyshev_lobatto(int(nodes))
+    h = 0.5 * (state.r_o - state.r_i)
+    r = 0.5 * (state.r_o + state.r_i) + h * x
+    k = n * math.pi / (prm.stretch * prm.length)
+    return _Grid(r=r, rh=r / h, Dx=Dx, kh=k * h, h=h)
+
+
+def _reference_radius(state, r: FloatArray) -> FloatArray:
+    """R(r) = sqrt(1 + lambda_z (r^2 - r_i^2) / g^3) (paper eq. 15, R_i = 1)."""
+    prm = state.params
+    R = np.sqrt(1.0 + prm.stretch * (r**2 - state.r_i**2) / prm.growth**3)
+    return np.clip(R, 1.0, prm.outer_radius)  # end nodes: remove rounding outside [1, R_o]
+
+
+def _layout(nn: int) -> dict[str, slice]:
+    """Column ranges of the unknowns: nn values of U_r, U_th, U_z, Phi; nn - 2 of P."""
+    sizes = {"U_r": nn, "U_th": nn, "U_z": nn, "P": nn - 2, "Phi": nn}
+    out, start = {}, 0
+    for f in _FIELDS:
+        out[f] = slice(start, start + sizes[f])
+        start += sizes[f]
+    return out
+
+
+def _operators(grid: _Grid, m: float) -> tuple[Operator, Operator, Operator]:
+    """Nodal maps of L_jq = du_j/dx_q (paper eq. 52), E_p = -(grad phidot)_p and pdot.
+
+    With u = (U_r, -i U_th, -i U_z) e^{i(m th + k z)}, phidot = Phi e^{...}, d/dth -> i m,
+    d/dz -> i k. Returns L[j, q], E[p] and pdot, each of shape (nodes, 5 nodes - 2).
+    """
+    nn = grid.rh.size
+    cols = _layout(nn)
+    eye, D, inv_r, ik = np.eye(nn), grid.Dx, np.diag(1.0 / grid.rh), 1j * grid.kh
+
+    def op(**parts):
+        out = np.zeros((nn, 5 * nn - 2), complex)
+        for f, block in parts.items():
+            out[:, cols[f]] = block
+        return out
+
+    Ur, Ut, Uz = "U_r", "U_th", "U_z"
+    L = np.empty((3, 3, nn, 5 * nn - 2), complex)
+    L[0, 0] = op(**{Ur: D})                                        # dU_r/dr
+    L[0, 1] = op(**{Ur: 1j * m * inv_r, Ut: 1j * inv_r})           # (d_th u_r - u_th)/r
+    L[0, 2] = op(**{Ur: ik * eye})                                 # d_z u_r
+    L[1, 0] = op(**{Ut: -1j * D})                                  # d_r u_th
+    L[1, 1] = op(**{Ur: inv_r, Ut: m * inv_r})                     # (d_th u_th + u_r)/r
+    L[1, 2] = op(**{Ut: grid.kh * eye})                            # d_z u_th
+    L[2, 0] = op(**{Uz: -1j * D})                                  # d_r u_z
+    L[2, 1] = op(**{Uz: m * inv_r})                                # d_th u_z / r
+    L[2, 2] = op(**{Uz: grid.kh * eye})                            # d_z u_z
+    E = np.stack([op(Phi=-D), op(Phi=-1j * m * inv_r), op(Phi=-ik * eye)])
+    pdot = op(P=interior_interpolation(nn))
+    return L, E, pdot
+
+
+def _contract(T: FloatArray, X: Operator, out_rank: int) -> Operator:
+    """sum over the trailing tensor indices of T[..., n] X[..., n, c] over the non-zero
+    entries of T only (the moduli are sparse: 21 of 81 A, 7 of 27 Gamma)."""
+    out = np.zeros(T.shape[:out_rank] + X.shape[-2:], complex)
+    for idx in np.argwhere(np.any(T != 0, axis=-1)):
+        out[tuple(idx[:out_rank])] += T[tuple(idx)][:, None] * X[tuple(idx[out_rank:])]
+    return out
+
+
+def _fluxes(state, grid: _Grid, m: float) -> tuple[Operator, Operator, Operator]:
+    """Nodal maps of L, the incremental stress S_pi and displacement D_q."""
+    R = _reference_radius(state, grid.r)
+    A, G, K = full_moduli(state.moduli(R))
+    p = np.asarray(state.pressure(R), float)
+    L, E, pdot = _operators(grid, m)
+    Lt = L.transpose(1, 0, 2, 3)  # Lt[q, j] = L_jq
+    # E_p = Gamma_qjp L_jq + K_pq D_q  =>  D = K^{-1} (E - Gamma_qjp L_jq)
+    Kinv = np.moveaxis(np.linalg.inv(np.moveaxis(K, -1, 0)), 0, -1)
+    Dq = _contract(Kinv, E - _contract(G.transpose(2, 0, 1, 3), Lt, 1), 1)
+    # S_pi = A_piqj L_jq + Gamma_piq D_q + p L_pi - pdot delta_pi
+    S = _contract(A, Lt, 2) + _contract(G, Dq, 2) + p[:, None] * L
+    for a in range(3):
+        S[a, a] -= pdot
+    return L, S, Dq
+
+
+def collocation_matrix(state, m: int, n: float, *, nodes: int = 40) -> FloatArray:
+    """The real square matrix of the collocated incremental boundary-value problem.
+
+    Unknowns: U_r, U_th, U_z, Phi at the ``nodes`` Chebyshev-Lobatto points of the
+    current wall and P at the ``nodes - 2`` interior ones (P_N - P_{N-2}: the pressure is
+    a polynomial two degrees lower, extended to the faces by interpolation), lengths
+    scaled by the half-thickness h, Phi also in units of h. Row blocks (outer face first):
+
+    * r, theta, z equilibrium (paper eq. incremental-constitutive3, fluxes differentiated
+      by the Chebyshev matrix) at every node, end rows replaced by S_rr, S_rth, S_rz = 0;
+    * Maxwell div D = 0 (eq. incremental-Maxwell), end rows replaced by Phi = 0;
+    * incompressibility tr L = 0 at the interior nodes (the pressure has no boundary
+      condition, so neither has its constraint).
+
+    Parameters
+    ----------
+    state : BaseState
+        The axisymmetric base state (``electrogrowth.basestate.tube.solve_base_state``): needs
+        ``params``, ``r_i``, ``r_o``, ``moduli(R)`` and ``pressure(R)``.
+    m : int
+        Circumferential wavenumber.
+    n : float
+        Axial half-wavenumber, k = n pi / (lambda_z L).
+    nodes : int, keyword-only
+        Chebyshev-Lobatto points per field (default 40, at least 6).
+
+    Returns
+    -------
+    ndarray, shape (5 nodes - 2, 5 nodes - 2)
+        Singular exactly when (m, n) is a bifurcation of the discrete problem.
+
+    Examples
+    --------
+    >>> from electrogrowth.basestate.tube import solve_base_state
+    >>> state = solve_base_state(TubeParameters(outer_radius=1.5, length=3.0))
+    >>> collocation_matrix(state, 2, 1, nodes=20).shape
+    (98, 98)
+    >>> collocation_target(state, 2, 1, nodes=20) > 0  # the unloaded tube is stable
+    True
+    """
+    return _complex_matrix(state, m, n, nodes).real.copy()
+
+
+def _complex_matrix(state, m: float, n: float, nodes: int) -> Operator:
+    """The matrix before dropping its imaginary part, which vanishes identically."""
+    grid = _grid(state, n, nodes)
+    L, S, Dq = _fluxes(state, grid, m)
+    D, ir, ik, im = grid.Dx, 1.0 / grid.rh[:, None], 1j * grid.kh, 1j * m
+    eq_r = D @ S[0, 0] + im * ir * S[1, 0] + ir * (S[0, 0] - S[1, 1]) + ik * S[2, 0]
+    eq_t = D @ S[0, 1] + im * ir * S[1, 1] + ir * (S[1, 0] + S[0, 1]) + ik * S[2, 1]
+    eq_z = D @ S[0, 2] + im * ir * S[1, 2] + ir * S[0, 2] + ik * S[2, 2]
+    maxwell = D @ Dq[0] + ir * (im * Dq[1] + Dq[0]) + ik * Dq[2]
+    incompressible = L[0, 0] + L[1, 1] + L[2, 2]
+    nn = grid.rh.size
+    ends = [0, nn - 1]
+    phi = _layout(nn)["Phi"]
+    eq_r[ends], eq_t[ends], eq_z[ends] = S[0, 0][ends], S[0, 1][ends], S[0, 2][ends]
+    maxwell[ends] = 0.0
+    maxwell[[0, nn - 1], [phi.start, phi.stop - 1]] = 1.0
+    # theta and z rows carry sin factors: times i they are the real cos/sin equations
+    return np.vstack([eq_r, 1j * eq_t, 1j * eq_z, maxwell, incompressible[1:-1]])
+
+
+def collocation_target(state, m: int, n: float, *, nodes: int = 40) -> float:
+    """f = -sign(det M) sigma_min(M) / sigma_max(M), the bifurcation criterion.
+
+    Continuous in the parameters (det M, continuous, changes sign only through
+    sigma_min = 0), free of poles, |f| <= 1, and zero exactly where M is singular, i.e. at
+    a bifurcation (m, n). The minus sign makes f > 0 on the stable side: with the row and
+    column order of :func:`collocation_matrix`, det M < 0 for the unloaded tube (g = 1,
+    lambda_z = 1, Vbar = 0) at every ``nodes`` and mode, and so on every state reached from
+    it without crossing a bifurcation (tested). Roots of even multiplicity are not seen.
+
+    Parameters are those of :func:`collocation_matrix`.
+    """
+    M = collocation_matrix(state, m, n, nodes=nodes)
+    sign, _ = np.linalg.slogdet(M)
+    s = scipy.linalg.svdvals(M, check_finite=False)
+    return float(-sign * s[-1] / s[0])
+
+
+def critical_collocation(params: TubeParameters, m: int, n: float, solve_for: str,
+                         bracket: tuple[float, float], *, nodes: int = 40,
+                         xtol: float = 1e-13,
+                         base_state: Callable | None = None) -> float:
+    """Critical value of one control parameter for mode (m, n): root of the target.
+
+    Parameters
+    ----------
+    params : TubeParameters
+        The tube; the field named by ``solve_for`` is varied with ``dataclasses.replace``.
+    m, n : int
+        Circumferential and axial mode numbers.
+    solve_for : {'growth', 'stretch', 'voltage'}
+        The control parameter g, lambda_z or Vbar.
+    bracket : (float, float)
+        Interval over which :func:`collocation_target` changes sign once.
+    nodes, xtol : keyword-only
+        Collocation points per field (default 40); absolute tolerance of ``brentq``.
+    base_state : callable, keyword-only
+        ``params -> BaseState``; default ``electrogrowth.basestate.tube.solve_base_state``.
+
+    Raises
+    ------
+    ParameterError
+        Unknown ``solve_for``.
+    NoBifurcationFound
+        The target has the same sign at both ends of ``bracket``.
+    ConvergenceError
+        ``brentq`` did not converge.
+
+    Examples
+    --------
+    Axial compression of the unloaded tube (exact Bessel value 0.8024795851541):
+
+    >>> params = TubeParameters(outer_radius=1.5, length=3.0)
+    >>> round(critical_collocation(params, 2, 1, "stretch", (0.79, 0.81), nodes=24), 10)
+    0.8024795852
+    """
+    if solve_for not in CONTROLS:
+        raise ParameterError(f"solve_for = {solve_for!r} is invalid; choose one of "
+                             f"{', '.join(CONTROLS)}")
+    if base_state is None:
+        from ..basestate.tube import solve_base_state as base_state
+    field = CONTROLS[solve_for]
+
+    def target(value: float) -> float:
+        state = base_state(dataclasses.replace(params, **{field: float(value)}))
+        return collocation_target(state, m, n, nodes=nodes)
+
+    a, b = map(float, bracket)
+    fa, fb = target(a), target(b)
+    if fa == 0.0:
+        return a
+    if fb == 0.0:
+        return b
+    if np.sign(fa) == np.sign(fb):
+        raise NoBifurcationFound(
+            f"no sign change of the collocation target for {solve_for} in [{a}, {b}] "
+            f"(mode m={m}, n={n}); widen or move the bracket")
+    root, info = scipy.optimize.brentq(target, a, b, xtol=xtol, full_output=True)
+    if not info.converged:
+        raise ConvergenceError(f"brentq did not converge for {solve_for} in [{a}, {b}]: "
+                               f"{info.flag}")
+    return float(root)
+
+
+def mode_shape_collocation(state, m: int, n: float, *,
+                           nodes: int = 40) -> dict[str, FloatArray]:
+    """Null vector of the collocation matrix at a (near-)critical state.
+
+    Returns arrays over the current radius ``r`` (inner face first) of the amplitudes
+    ``U_r, U_th, U_z, Phi`` and ``P`` of paper eq. incremental-solutions, normalised so
+    that max |U| = 1 over the three displacement components, with the largest
+    displacement entry positive. It is the right singular vector of the smallest
+    singular value, so it is meaningful only where the target is (close to) zero.
+    """
+    M = collocation_matrix(state, m, n, nodes=nodes)
+    v = np.linalg.svd(M)[2][-1]
+    grid = _grid(state, n, nodes)
+    nn = grid.rh.size
+    cols = _layout(nn)
+    parts = {f: v[cols[f]] for f in _FIELDS}
+    parts["P"] = interior_interpolation(nn) @ parts["P"]
+    for f in ("U_r", "U_th", "U_z", "Phi"):
+        parts[f] = parts[f] * grid.h  # back from units of h
+    parts = {f: a[::-1] for f, a in parts.items()}
+    disp = np.concatenate([parts["U_r"], parts["U_th"], parts["U_z"]])
+    scale = disp[np.argmax(np.abs(disp))]
+    out = {f: parts[f] / scale for f in _FIELDS}
+    out["r"] = grid.r[::-1].copy()
+    return out

@@ -1,0 +1,60 @@
+"""The slow twin of the compiled kernel: the paper's Riccati equation with SciPy.
+
+Plain and obviously correct: ``scipy.integrate.solve_ivp`` (DOP853) of
+
+    dz/dR = (dr/dR) (1/r) (G3 + G4 z - z G1 - z G2 z),  z(R=1) = 0,
+
+with the moduli taken straight from the base state (no Chebyshev table) and the Stroh
+matrix from the pure-Python version of ``stroh_matrix``. It uses the impedance chart only,
+so it stops with an error when z has a pole inside the wall; the compiled kernel
+(impedance.py) must agree with it wherever it runs.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from ..errors import ConvergenceError
+from .impedance import impedance_scale
+from .stroh import stroh_matrix
+
+_stroh = stroh_matrix.py_func
+
+
+def impedance_rhs(state, m: float, k: float):
+    """Right-hand side of the Riccati equation in R for ``solve_ivp`` (z flattened)."""
+    g, lz = state.params.growth, state.params.stretch
+    a = g**3 / lz
+    G = np.empty((8, 8))
+
+    def rhs(R, y):
+        z = y.reshape(4, 4)
+        r = float(state.radius(R))
+        mod = state.moduli(np.array(R))
+        _stroh(np.ascontiguousarray(mod, dtype=float), float(state.pressure(np.array(R))),
+               float(m), k * r, G)
+        G1, G2, G3, G4 = G[:4, :4], G[:4, 4:], G[4:, :4], G[4:, 4:]
+        return (a * R / r**2 * (G3 + G4 @ z - z @ G1 - z @ G2 @ z)).ravel()
+
+    return rhs
+
+
+def impedance_reference(state, m: float, k: float, *, rtol: float = 1e-11,
+                        atol: float = 1e-13) -> np.ndarray:
+    """Conditional impedance z(r_o) of mode (m, k): the paper's method, unscaled."""
+    ro = state.params.outer_radius
+    sol = solve_ivp(impedance_rhs(state, m, k), (1.0, ro), np.zeros(16), method="DOP853",
+                    rtol=rtol, atol=atol)
+    if not sol.success or not np.all(np.isfinite(sol.y[:, -1])):
+        raise ConvergenceError(f"reference Riccati integration failed for mode m={m}, "
+                               f"k={k}: {sol.message} (a pole of the impedance?)")
+    return sol.y[:, -1].reshape(4, 4)
+
+
+def target_reference(state, m: float, k: float, **kwargs) -> float:
+    """Pole-free target det z / sqrt(det(I + z^T z)) with S scaled like the kernel."""
+    z = impedance_reference(state, m, k, **kwargs)
+    s = impedance_scale(float(m), float(k), float(state.r_o))
+    z = z / s
+    return float(np.linalg.det(z) / np.sqrt(np.linalg.det(np.eye(4) + z.T @ z)))

@@ -1,0 +1,274 @@
+"""Isotropic, incompressible electro-elastic energies Omega(I1, I2, I4, I5, I6).
+
+The energy is per unit volume of the virtual (grown, stress-free) configuration, in units
+mu = eps = 1, and depends on the invariants (paper Sec. 2, eq. 8)
+
+    I1 = tr C,  I2 = [(tr C)^2 - tr C^2] / 2,  I4 = D~.D~,  I5 = D~.C D~,  I6 = D~.C^2 D~,
+
+with C = F_e^T F_e and D~ the electric displacement in the virtual configuration.
+Everything the solvers need is derived from the energy alone, symbolically at definition
+time (sympy) and evaluated numerically (numpy, vectorised):
+
+* ``stress(l1, l2, l3, d)``: tau_i = sigma_ii + p, the principal Cauchy stress without the
+  Lagrange multiplier (paper eq. 9);
+* ``electric_field(l1, l2, l3, d)``: E_1 = F_e^{-T} dOmega/dD~ (paper eq. 9);
+* ``moduli(l1, l2, l3, d)``: the non-zero updated electro-elastic moduli A_0, Gamma_0, K_0
+  (paper eq. after 16-1) in the principal basis, as an array whose last axis follows
+  ``MODULI_NAMES``.
+
+Arguments are the principal elastic stretches l1 (radial), l2 (hoop), l3 (axial), with
+l1 l2 l3 = 1, and the current (Eulerian) electric displacement d = D_1, which is radial.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+from typing import Callable
+
+import numpy as np
+import sympy as sp
+
+from ..errors import MaterialError, ParameterError
+
+I1, I2, I4, I5, I6 = INVARIANTS = sp.symbols("I1 I2 I4 I5 I6", real=True)
+_ORDER = (1, 2, 4, 5, 6)
+
+#: Order of the moduli returned by :meth:`Material.moduli` (indices 1 = r, 2 = theta,
+#: 3 = z; ``G`` stands for Gamma_0). ``Apiqj`` multiplies L_jq = du_j/dx_q in the updated
+#: incremental nominal stress S_pi; ``Gpiq`` multiplies D_q; ``Kpq`` gives E_p.
+MODULI_NAMES = (
+    "A1111", "A2222", "A3333", "A1122", "A1133", "A2233",
+    "A1212", "A2121", "A1313", "A3131", "A2323", "A3232",
+    "A1221", "A1331", "A2332",
+    "G111", "G221", "G331", "G122", "G133",
+    "K11", "K22", "K33",
+)
+MODULI_INDEX = {name: i for i, name in enumerate(MODULI_NAMES)}
+
+
+def _index(name: str) -> tuple[int, ...]:
+    return tuple(int(c) - 1 for c in name[1:])
+
+
+@functools.lru_cache(maxsize=1)
+def _universal_forms():
+    """Chain-rule forms of stress, field and moduli at a principal point.
+
+    Returns lambdified functions of (l1, l2, l3, d, w, W) where w[k] = dOmega/dI_k and
+    W[k][l] = d2Omega/dI_k dI_l, k, l over (I1, I2, I4, I5, I6). Derived once: the
+    invariants are polynomials in F and D~, so their gradients and Hessians at
+    F = diag(l1, l2, l3), D~ = (d / l1, 0, 0) are small exact expressions.
+    """
+    F = sp.Matrix(3, 3, sp.symbols("F0:9", real=True))
+    Dt = sp.Matrix(sp.symbols("Dt0:3", real=True))
+    C = F.T * F
+    inv = [C.trace(), (C.trace() ** 2 - (C * C).trace()) / 2,
+           (Dt.T * Dt)[0], (Dt.T * C * Dt)[0], (Dt.T * C * C * Dt)[0]]
+    X = list(F) + list(Dt)
+    l1, l2, l3, d = sp.symbols("l1 l2 l3 d", positive=True)
+    point = {s: 0 for s in X}
+    point.update({F[0, 0]: l1, F[1, 1]: l2, F[2, 2]: l3, Dt[0]: d / l1})
+    grad = [sp.Matrix([sp.diff(I, x) for x in X]).subs(point) for I in inv]
+    hess = [sp.hessian(I, X).subs(point) for I in inv]
+    w = sp.symbols("w0:5", real=True)
+    W = sp.Matrix(5, 5, lambda a, b: sp.Symbol(f"W{min(a, b)}{max(a, b)}", real=True))
+    dO = sum((w[k] * grad[k] for k in range(5)), sp.zeros(12, 1))
+    d2O = sum((w[k] * hess[k] for k in range(5)), sp.zeros(12, 12))
+    d2O += sum((W[a, b] * grad[a] * grad[b].T for a in range(5) for b in range(5)),
+               sp.zeros(12, 12))
+    Fd = sp.diag(l1, l2, l3)
+    fi = lambda i, a: 9 + a if i is None else 3 * i + a  # noqa: E731  F_{i alpha} -> X
+    # tau_ij = F_ia dOmega/dF_ja ; E_i = F^-1_ai dOmega/dD~_a (diagonal F)
+    tau = [sp.simplify(Fd[i, i] * dO[fi(i, i)]) for i in range(3)]
+    E1 = sp.simplify(dO[9] / l1)
+    comps = []
+    for name in MODULI_NAMES:
+        idx = _index(name)
+        if name[0] == "A":
+            p, i, q, j = idx  # F_pa F_qb A_{a i b j}, diagonal F: a = p, b = q
+            comps.append(Fd[p, p] * Fd[q, q] * d2O[fi(i, p), fi(j, q)])
+        elif name[0] == "G":
+            p, i, q = idx  # F_pa F^-1_bq Gamma_{a i b}
+            comps.append(Fd[p, p] / Fd[q, q] * d2O[fi(i, p), 9 + q])
+        else:
+            p, q = idx
+            comps.append(d2O[9 + p, 9 + q] / (Fd[p, p] * Fd[q, q]))
+    args = (l1, l2, l3, d, w, list(W))
+    return (sp.lambdify(args, tau, "numpy"), sp.lambdify(args, E1, "numpy"),
+            sp.lambdify(args, [sp.expand(c) for c in comps], "numpy", cse=True))
+
+
+@functools.lru_cache(maxsize=64)
+def _energy_derivatives(energy: sp.Expr) -> Callable:
+    """Lambdify (dOmega/dI_k, d2Omega/dI_k dI_l) of one energy, once per energy."""
+    first = [sp.diff(energy, INVARIANTS[k]) for k in range(5)]
+    second = [[sp.diff(energy, INVARIANTS[a], INVARIANTS[b]) for b in range(5)]
+              for a in range(5)]
+    return sp.lambdify(INVARIANTS, (first, second), "numpy")
+
+
+@functools.lru_cache(maxsize=64)
+def _energy_gradient(energy: sp.Expr) -> Callable:
+    """Lambdify dOmega/dI_k alone: all that stress and field need (no Hessian)."""
+    return sp.lambdify(INVARIANTS, [sp.diff(energy, s) for s in INVARIANTS], "numpy")
+
+
+_NO_HESSIAN = [0.0] * 25  # placeholder W for the forms that do not read it (stress, field)
+
+
+@functools.lru_cache(maxsize=64)
+def _energy_value(energy: sp.Expr) -> Callable:
+    return sp.lambdify(INVARIANTS, energy, "numpy")
+
+
+def _invariants(l1, l2, l3, d):
+    dt2 = (d / l1) ** 2
+    return (l1**2 + l2**2 + l3**2, (l1 * l2) ** 2 + (l2 * l3) ** 2 + (l3 * l1) ** 2,
+            dt2, dt2 * l1**2, dt2 * l1**4)
+
+
+@dataclasses.dataclass(frozen=True)
+class Material:
+    """An ideal or non-ideal isotropic incompressible electro-elastic material.
+
+    Parameters
+    ----------
+    name : str
+        Short label used in output.
+    energy : sympy.Expr
+        Omega in the symbols ``I1, I2, I4, I5, I6`` of this module, in units mu = eps = 1
+        (the initial shear modulus and permittivity), zero-stress in the virtual state.
+
+    Examples
+    --------
+    >>> from electrogrowth.model.materials import Material, I1, I5
+    >>> mat = Material("my-neo-Hookean", (I1 - 3) / 2 + I5 / 2)
+    >>> float(mat.stress(1.0, 1.0, 1.0, 0.0)[0])
+    1.0
+    """
+
+    name: str
+    energy: sp.Expr
+
+    def __post_init__(self):
+        # Match invariants by name, so sp.Symbol("I1") or a string energy work too.
+        names = {str(s): s for s in INVARIANTS}
+        try:
+            expr = sp.sympify(self.energy, locals=names)
+        except (sp.SympifyError, TypeError) as exc:
+            raise MaterialError(f"energy of {self.name!r} is not an expression: {exc}") from None
+        expr = expr.subs({s: names[str(s)] for s in expr.free_symbols if str(s) in names})
+        extra = expr.free_symbols - set(INVARIANTS)
+        if extra:
+            raise MaterialError(
+                f"energy of {self.name!r} has unknown symbols {sorted(map(str, extra))};"
+                " use only I1, I2, I4, I5, I6 with parameters substituted")
+        object.__setattr__(self, "energy", expr)
+
+    def _derivs(self, l1, l2, l3, d, *, hessian: bool = True):
+        l1, l2, l3, d = np.broadcast_arrays(*(np.asarray(x, float) for x in (l1, l2, l3, d)))
+        inv = _invariants(l1, l2, l3, d)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            omega = np.asarray(_energy_value(self.energy)(*inv), dtype=float)
+        if not np.all(np.isfinite(omega)):
+            bad = np.argmax(~np.isfinite(np.broadcast_to(omega, l1.shape)).ravel())
+            raise ParameterError(
+                f"deformation outside the domain of {self.name!r} (I1 = "
+                f"{np.ravel(inv[0])[bad]:.6g}): the energy is not finite there")
+        if not hessian:
+            w = [np.broadcast_to(np.asarray(x, float), l1.shape)
+                 for x in _energy_gradient(self.energy)(*inv)]
+            return (l1, l2, l3, d, w, _NO_HESSIAN)
+        w, W = _energy_derivatives(self.energy)(*inv)
+        w = [np.broadcast_to(np.asarray(x, float), l1.shape) for x in w]
+        W = [np.broadcast_to(np.asarray(x, float), l1.shape) for row in W for x in row]
+        return (l1, l2, l3, d, w, W)
+
+    def stress(self, l1, l2, l3, d):
+        """Principal tau_i = sigma_ii + p (i = r, theta, z), total (Maxwell included).
+
+        Shape ``(3,) + broadcast shape``: the component is the FIRST axis.
+        """
+        tau_f, _, _ = _universal_forms()
+        return np.array(tau_f(*self._derivs(l1, l2, l3, d, hessian=False)), dtype=float)
+
+    def electric_field(self, l1, l2, l3, d):
+        """Radial current electric field E_1 for radial current displacement d."""
+        _, e_f, _ = _universal_forms()
+        args = self._derivs(l1, l2, l3, d, hessian=False)
+        return np.broadcast_to(np.asarray(e_f(*args), float), args[0].shape).copy()
+
+    def moduli(self, l1, l2, l3, d):
+        """Updated moduli, shape ``broadcast(l1, ...).shape + (23,)``, order MODULI_NAMES."""
+        _, _, m_f = _universal_forms()
+        args = self._derivs(l1, l2, l3, d)
+        shape = args[0].shape
+        return np.stack([np.broadcast_to(np.asarray(c, float), shape)
+                         for c in m_f(*args)], axis=-1)
+
+    def is_ideal_dielectric(self) -> bool:
+        """True when Omega = W(I1, I2) + I5 / 2 (E = D / eps, paper Sec. 3.1)."""
+        rest = sp.simplify(self.energy - I5 / 2)
+        return not (rest.free_symbols & {I4, I5, I6})
+
+
+@functools.lru_cache(maxsize=1)
+def neo_hookean() -> Material:
+    """Ideal neo-Hookean dielectric, Omega = (I1 - 3)/2 + I5/2 (paper eq. neo-Hookean)."""
+    return Material("neo-hookean", (I1 - 3) / 2 + I5 / 2)
+
+
+def gent(jm: float = 97.2) -> Material:
+    """Ideal Gent dielectric, Omega = -(Jm/2) ln(1 - (I1 - 3)/Jm) + I5/2.
+
+    ``jm`` > 0 is the dimensionless stiffening parameter; jm -> infinity recovers
+    neo-Hookean. 97.2 is the classical value for VHB-type elastomers.
+    """
+    if isinstance(jm, bool) or not isinstance(jm, (int, float)) or not np.isfinite(jm) or jm <= 0:
+        raise ParameterError(f"Gent parameter jm = {jm!r} is invalid; need 0 < jm < inf")
+    jm = sp.nsimplify(jm) if float(jm).is_integer() else sp.Float(jm)
+    return Material(f"gent(jm={float(jm):g})", -jm / 2 * sp.log(1 - (I1 - 3) / jm) + I5 / 2)
+
+
+def mooney_rivlin(alpha: float = 0.5) -> Material:
+    """Ideal Mooney-Rivlin dielectric, Omega = [alpha (I1-3) + (1-alpha)(I2-3)]/2 + I5/2.
+
+    ``alpha`` in (0, 1] splits the unit shear modulus; alpha = 1 is neo-Hookean.
+    """
+    if isinstance(alpha, bool) or not isinstance(alpha, (int, float)) or not (0 < alpha <= 1):
+        raise ParameterError(f"Mooney-Rivlin alpha = {alpha!r} is invalid; need 0 < alpha <= 1")
+    a = sp.Float(alpha)
+    return Material(f"mooney-rivlin(alpha={alpha:g})",
+                    (a * (I1 - 3) + (1 - a) * (I2 - 3)) / 2 + I5 / 2)
+
+
+BUILTIN = {"neo-hookean": neo_hookean, "gent": gent, "mooney-rivlin": mooney_rivlin}
+
+
+def material_by_name(name: str, **params) -> Material:
+    """Look up a built-in material; ``params`` are passed to its constructor."""
+    try:
+        make = BUILTIN[name]
+    except KeyError:
+        raise MaterialError(
+            f"unknown material {name!r}; choose one of {', '.join(BUILTIN)}") from None
+    return make(**params)
+
+
+def neo_hookean_moduli(l1, l2, l3, d):
+    """Closed-form moduli of the ideal neo-Hookean dielectric (paper Sec. 4.2).
+
+    A_0piqj = delta_ij (B_pq + D_p D_q), Gamma_0 from I5/2 and K_0 = I, derived in
+    docs/derivation-stroh.md; used as a fast path and to test the generic route.
+    """
+    l1, l2, l3, d = np.broadcast_arrays(*(np.asarray(x, float) for x in (l1, l2, l3, d)))
+    out = np.zeros(l1.shape + (len(MODULI_NAMES),))
+    b1, b2, b3, d2 = l1**2, l2**2, l3**2, d**2
+    for name, val in (("A1111", b1 + d2), ("A1212", b1 + d2), ("A1313", b1 + d2),
+                      ("A2121", b2), ("A2222", b2), ("A2323", b2),
+                      ("A3131", b3), ("A3232", b3), ("A3333", b3),
+                      ("G111", 2 * d), ("G122", d), ("G133", d),
+                      ("K11", 1.0), ("K22", 1.0), ("K33", 1.0)):
+        out[..., MODULI_INDEX[name]] = val
+    return out

@@ -1,0 +1,67 @@
+"""The parameters of a grown, stretched, electrically loaded tube (paper Sec. 3.1).
+
+Non-dimensional units: mu = eps = R_i = 1. Vary one field with ``dataclasses.replace``.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+from ..errors import ParameterError
+from .materials import Material, neo_hookean
+
+
+def _check(name: str, value: float, valid: str, ok) -> None:
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise ParameterError(f"{name} = {value!r} is not a number; valid range: {valid}")
+    if not math.isfinite(value) or not ok(value):
+        raise ParameterError(f"{name} = {value!r} is out of range; valid range: {valid}")
+
+
+@dataclasses.dataclass(frozen=True)
+class TubeParameters:
+    """One tube and its loading.
+
+    Parameters
+    ----------
+    outer_radius : float
+        Rbar_o = R_o / R_i > 1, the undeformed outer radius (inner radius is 1).
+    length : float
+        L / R_i > 0, the undeformed length (sets the axial wavenumber k = n pi / (lambda_z L)).
+    growth : float
+        Isotropic growth factor g > 0 (F_g = g I).
+    stretch : float
+        Total axial stretch lambda_z = l / L > 0, growth included.
+    voltage : float
+        Vbar = V / (R_o - R_i) sqrt(eps / mu) >= 0, the radial voltage.
+    material : Material
+        The energy Omega(I1, I2, I4, I5, I6); default the ideal neo-Hookean dielectric.
+    """
+
+    outer_radius: float = 1.4
+    length: float = 1.0
+    growth: float = 1.0
+    stretch: float = 1.0
+    voltage: float = 0.0
+    material: Material = dataclasses.field(default_factory=neo_hookean)
+
+    def __post_init__(self):
+        _check("outer radius Rbar_o", self.outer_radius, "1 < Rbar_o < inf", lambda v: v > 1)
+        _check("length L", self.length, "0 < L < inf", lambda v: v > 0)
+        _check("growth factor g", self.growth, "0 < g < inf", lambda v: v > 0)
+        _check("axial stretch lambda_z", self.stretch, "0 < lambda_z < inf", lambda v: v > 0)
+        _check("voltage Vbar", self.voltage, "0 <= Vbar < threshold", lambda v: v >= 0)
+        if not isinstance(self.material, Material):
+            raise ParameterError(f"material = {self.material!r} is not a Material")
+        for f in ("outer_radius", "length", "growth", "stretch", "voltage"):
+            object.__setattr__(self, f, float(getattr(self, f)))
+
+    @property
+    def physical_voltage(self) -> float:
+        """V in units sqrt(mu/eps) R_i: V = Vbar (Rbar_o - 1)."""
+        return self.voltage * (self.outer_radius - 1.0)
+
+
+#: The control parameters a critical value can be solved for, and their field names.
+CONTROLS = {"growth": "growth", "stretch": "stretch", "voltage": "voltage"}

@@ -1,0 +1,230 @@
+"""A sweep: a grid of tubes, the fixed parameters, the material and what to solve for.
+
+:class:`SweepConfig` validates itself; a mistake raises :class:`ConfigError`, which names
+the offending key (sweep_file.py adds the file and line). Read from a TOML file
+(sweep_file.py, docs/sweeps.md) with the tables::
+
+    [solve]     for = "growth" | "stretch" | "voltage"       (required)
+                side = "compression" | "extension"           (stretch only)
+                rtol = 1e-12                                  (1e-14 .. 1e-4)
+    [modes]     m = [0, 12], n = [1, 30], extend = true, top = 5
+    [material]  name = "neo-hookean" | "gent" | "mooney-rivlin", and its parameters
+    [fixed]     outer_radius, length, growth, stretch, voltage   (numbers)
+    [grid]      any of the same names = [v1, v2, ...] or {start, stop, num}
+    [run]       chunk = grid points per task (default from the grid size)
+
+A parameter is either fixed or swept, never both, and never the one solved for; unset
+ones take the :class:`~electrogrowth.model.params.TubeParameters` defaults, except the outer
+radius, which must be given.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import inspect
+import json
+import math
+
+import numpy as np
+
+from ..errors import ElectrogrowthError, ParameterError
+from ..model.materials import BUILTIN, material_by_name
+from ..model.params import CONTROLS, TubeParameters
+from .unit import ScanSpec
+
+#: The TubeParameters fields a sweep can fix or vary.
+SWEEPABLE = ("outer_radius", "length", "growth", "stretch", "voltage")
+SIDES = ("compression", "extension")
+RTOL_RANGE = (1e-14, 1e-4)
+
+
+class ConfigError(ParameterError):
+    """A bad sweep file. ``key`` is the dotted path of the offending entry."""
+
+    def __init__(self, key: tuple[str, ...], reason: str, *, source: str = "",
+                 line: int | None = None):
+        self.key, self.reason, self.source, self.line = tuple(key), reason, source, line
+        where = ":".join(str(p) for p in (source, line) if p not in ("", None))
+        name = ".".join(self.key)
+        super().__init__(f"{where + ': ' if where else ''}{name + ': ' if name else ''}"
+                         f"{reason}")
+
+
+@dataclasses.dataclass(frozen=True)
+class SweepConfig:
+    """A validated sweep: the grid, the fixed parameters, the material and the scan options.
+
+    ``grid`` keeps the file's order (it is the order of the dataset's dimensions); its
+    values are sorted and distinct. ``fixed`` holds every other tube parameter except the
+    one solved for, defaults filled in.
+    """
+
+    solve_for: str
+    grid: tuple[tuple[str, tuple[float, ...]], ...]
+    fixed: tuple[tuple[str, float], ...]
+    material: tuple[str, tuple[tuple[str, float], ...]] = ("neo-hookean", ())
+    side: str | None = None
+    rtol: float = 1e-12
+    m_range: tuple[int, int] = (0, 12)
+    n_range: tuple[int, int] = (1, 30)
+    extend: bool = True
+    top: int = 5
+    chunk: int = 1
+
+    def __post_init__(self):
+        _validate(self)
+
+    @property
+    def dims(self) -> tuple[str, ...]:
+        return tuple(name for name, _ in self.grid)
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        return tuple(len(values) for _, values in self.grid)
+
+    @property
+    def size(self) -> int:
+        return math.prod(self.shape)
+
+    @property
+    def spec(self) -> ScanSpec:
+        """The options of every point's mode scan."""
+        return ScanSpec(self.solve_for, self.side, self.m_range, self.n_range, self.top,
+                        self.rtol, self.extend)
+
+    def build_material(self):
+        name, params = self.material
+        return material_by_name(name, **dict(params))
+
+    def points(self, index_slices, material=None) -> list[TubeParameters]:
+        """The tubes of a block of the grid (tuple of slices), in C order."""
+        material = material or self.build_material()
+        axes = [values[s] for (_, values), s in zip(self.grid, index_slices)]
+        fixed = dict(self.fixed)
+        out = []
+        for combo in np.ndindex(*(len(a) for a in axes)):
+            swept = {name: axes[d][i] for d, (name, i) in enumerate(zip(self.dims, combo))}
+            out.append(TubeParameters(**fixed, **swept, material=material))
+        return out
+
+    def to_dict(self) -> dict:
+        """A JSON-ready dict (stored in the dataset attributes; see :meth:`from_dict`)."""
+        return {"solve": {"for": self.solve_for, "side": self.side, "rtol": self.rtol},
+                "modes": {"m": list(self.m_range), "n": list(self.n_range),
+                          "extend": self.extend, "top": self.top},
+                "material": {"name": self.material[0], **dict(self.material[1])},
+                "fixed": dict(self.fixed),
+                "grid": {name: list(values) for name, values in self.grid},
+                "run": {"chunk": self.chunk}}
+
+    def to_json(self) -> str:
+        return json.dumps(self.to_dict())
+
+    @classmethod
+    def from_dict(cls, d: dict) -> SweepConfig:
+        mat = dict(d["material"])
+        return cls(solve_for=d["solve"]["for"], side=d["solve"]["side"],
+                   rtol=d["solve"]["rtol"],
+                   grid=tuple((k, tuple(v)) for k, v in d["grid"].items()),
+                   fixed=tuple(d["fixed"].items()),
+                   material=(mat.pop("name"), tuple(mat.items())),
+                   m_range=tuple(d["modes"]["m"]), n_range=tuple(d["modes"]["n"]),
+                   extend=d["modes"]["extend"], top=d["modes"]["top"],
+                   chunk=d["run"]["chunk"])
+
+
+def differences(a: SweepConfig, b: SweepConfig) -> list[str]:
+    """Dotted keys at which two configurations differ (empty when they are the same)."""
+    da, db = a.to_dict(), b.to_dict()
+    out = []
+    for table in da:
+        keys = list(dict.fromkeys([*da[table], *db[table]]))
+        out += [f"{table}.{k}" for k in keys if da[table].get(k) != db[table].get(k)]
+    if not out and a.dims != b.dims:
+        out.append("grid (the order of the swept parameters)")
+    return out
+
+
+def default_chunk(size: int) -> int:
+    """Grid points per task: one for small sweeps, up to 32 for large ones, which still
+    leaves at least 64 tasks to spread over the workers. A task costs a few milliseconds
+    to schedule and to write (about 15 Zarr chunk files), and a point takes 0.05 s to
+    seconds."""
+    return max(1, min(32, size // 64))
+
+
+# -- semantic checks (also run when a config is rebuilt from a store's attributes) -----------
+
+def _validate(c: SweepConfig) -> None:
+    if c.solve_for not in CONTROLS:
+        raise ConfigError(("solve", "for"), f"{c.solve_for!r} is unknown; choose growth,"
+                                            " stretch or voltage")
+    if c.side is not None:
+        if c.solve_for != "stretch":
+            raise ConfigError(("solve", "side"), "side applies only to for = \"stretch\"")
+        if c.side not in SIDES:
+            raise ConfigError(("solve", "side"), f"{c.side!r} is unknown; choose"
+                                                 " compression or extension")
+    if not RTOL_RANGE[0] <= c.rtol <= RTOL_RANGE[1]:
+        raise ConfigError(("solve", "rtol"), f"rtol = {c.rtol!r} is out of range; valid"
+                                             " range: 1e-14 to 1e-4")
+    for name, rng, lowest in (("m", c.m_range, 0), ("n", c.n_range, 1)):
+        lo, hi = rng
+        if not lowest <= lo <= hi:
+            raise ConfigError(("modes", name), f"range {list(rng)} is invalid; need"
+                                               f" {lowest} <= {name}_min <= {name}_max")
+    if c.top < 1:
+        raise ConfigError(("modes", "top"), f"top = {c.top} is invalid; need top >= 1")
+    if c.chunk < 1:
+        raise ConfigError(("run", "chunk"), f"chunk = {c.chunk} is invalid; need >= 1")
+    if not c.grid:
+        raise ConfigError(("grid",), "nothing to sweep; give at least one of"
+                                     f" {', '.join(SWEEPABLE)} in [grid]")
+    for table, names in (("grid", c.dims), ("fixed", [name for name, _ in c.fixed])):
+        for name in names:
+            if name not in SWEEPABLE:
+                raise ConfigError((table, name), f"unknown parameter; use any of"
+                                                 f" {', '.join(SWEEPABLE)}")
+            if name == c.solve_for:
+                raise ConfigError((table, name), f"{name} is what is solved for; it cannot"
+                                                 " be given")
+            if table == "fixed" and name in c.dims:
+                raise ConfigError((table, name), f"{name} is also swept in [grid]; keep one")
+    for name, values in c.grid:
+        if not values or list(values) != sorted(set(values)):
+            raise ConfigError(("grid", name), "need distinct values in increasing order")
+    material = _material(c.material)
+    # TubeParameters checks each field on its own and its defaults are valid, so every
+    # value is checked alone: the error then names the entry that is wrong.
+    for name, value in c.fixed:
+        _tube(name, value, ("fixed", name), material)
+    for name, values in c.grid:
+        for v in values:
+            _tube(name, v, ("grid", name), material)
+
+
+def _tube(name, value, where, material):
+    try:
+        TubeParameters(**{name: value}, material=material)
+    except ParameterError as exc:
+        raise ConfigError(where, str(exc)) from None
+    except TypeError:
+        raise ConfigError(where, f"unknown parameter; use any of {', '.join(SWEEPABLE)}"
+                          ) from None
+
+
+def _material(material):
+    name, params = material
+    if name not in BUILTIN:
+        raise ConfigError(("material", "name"), f"unknown material {name!r}; choose one of"
+                                                f" {', '.join(BUILTIN)}")
+    accepted = list(inspect.signature(BUILTIN[name]).parameters)
+    for key, _ in params:
+        if key not in accepted:
+            takes = f"takes {', '.join(accepted)}" if accepted else "takes no parameters"
+            raise ConfigError(("material", key), f"unknown key; material {name!r} {takes}")
+    try:
+        return material_by_name(name, **dict(params))
+    except ElectrogrowthError as exc:
+        key = ("material", params[0][0]) if params else ("material", "name")
+        raise ConfigError(key, str(exc)) from None

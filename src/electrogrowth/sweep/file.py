@@ -1,0 +1,228 @@
+"""Reading a sweep file (TOML, stdlib ``tomllib``) into a :class:`SweepConfig`.
+
+Everything is checked before any work starts. A mistake raises
+:class:`sweep_config.ConfigError` naming the file, the line and the key, e.g.
+``sweep.toml:18: grid.outer_radius: outer radius Rbar_o = 0.5 is out of range; ...``.
+tomllib keeps no positions, so the line is found by scanning the text for the key
+(:func:`line_of`). The tables and keys are listed in sweep_config.py and docs/sweeps.md.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import tomllib
+from pathlib import Path
+
+import numpy as np
+
+from ..model.params import TubeParameters
+from .config import SWEEPABLE, ConfigError, SweepConfig, default_chunk
+
+#: table -> allowed keys (None: free keys, checked by the table's own rules)
+TABLES = {"solve": ("for", "side", "rtol"), "modes": ("m", "n", "extend", "top"),
+          "material": None, "fixed": SWEEPABLE, "grid": SWEEPABLE, "run": ("chunk",)}
+
+
+def load_config(path: str | Path) -> SweepConfig:
+    """Read and validate a sweep file; raise :class:`ConfigError` naming file and line."""
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise ConfigError((), f"cannot read the sweep file: {exc.strerror}",
+                          source=str(path)) from None
+    except UnicodeDecodeError:
+        raise ConfigError((), "the sweep file is not UTF-8 text", source=str(path)) from None
+    return parse_config(text, source=str(path))
+
+
+def parse_config(text: str, *, source: str = "<sweep>") -> SweepConfig:
+    """Validate the TOML ``text`` of a sweep file (see the module docstring)."""
+    try:
+        raw = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        msg = str(exc)
+        hit = re.search(r"\(at line (\d+), column \d+\)", msg)
+        line = int(hit.group(1)) if hit else text.count("\n") + 1
+        reason = re.sub(r"\s*\(at (line \d+, column \d+|end of document)\)", "", msg)
+        raise ConfigError((), f"invalid TOML: {reason}", source=source, line=line) from None
+    try:
+        return _from_raw(raw)
+    except ConfigError as exc:
+        raise ConfigError(exc.key, exc.reason, source=source,
+                          line=line_of(text, exc.key)) from None
+
+
+def _from_raw(raw: dict) -> SweepConfig:
+    for table, value in raw.items():
+        if table not in TABLES:
+            raise ConfigError((table,), f"unknown key; the sweep file has the tables"
+                                        f" {', '.join(f'[{t}]' for t in TABLES)}")
+        if not isinstance(value, dict):
+            raise ConfigError((table,), f"expected a table [{table}], got {_typename(value)}")
+        allowed = TABLES[table]
+        for key in value:
+            if allowed is not None and key not in allowed:
+                raise ConfigError((table, key), f"unknown key; [{table}] takes"
+                                                f" {', '.join(allowed)}")
+    solve, modes, run = (raw.get(t, {}) for t in ("solve", "modes", "run"))
+    if "for" not in solve:
+        raise ConfigError(("solve",), "missing key 'for' (growth, stretch or voltage)")
+    solve_for = _string(solve, ("solve",), "for")
+    opt = lambda table, where, key, read, default: (  # noqa: E731
+        read(table, where, key) if key in table else default)
+    mat = dict(raw.get("material", {}))
+    name = opt(mat, ("material",), "name", _string, "neo-hookean")
+    mat.pop("name", None)
+    material = tuple((key, _number(mat, ("material",), key)) for key in mat)
+    fixed = {key: _number(raw.get("fixed", {}), ("fixed",), key)
+             for key in raw.get("fixed", {})}
+    grid = tuple((key, _grid_values(key, value)) for key, value in raw.get("grid", {}).items())
+    for key in fixed:
+        if key == solve_for:
+            raise ConfigError(("fixed", key), f"{key} is what is solved for; remove it")
+        if key in dict(grid):
+            raise ConfigError(("fixed", key), f"{key} is also swept in [grid]; keep one")
+    if solve_for in dict(grid):
+        raise ConfigError(("grid", solve_for), f"{solve_for} is what is solved for; it"
+                                               " cannot be swept")
+    if "outer_radius" not in fixed and "outer_radius" not in dict(grid):
+        raise ConfigError(("fixed",), "missing outer_radius (Rbar_o > 1): give it in"
+                                      " [fixed] or sweep it in [grid]")
+    full = {f: fixed.get(f, _default(f)) for f in SWEEPABLE
+            if f != solve_for and f not in dict(grid)}
+    chunk = opt(run, ("run",), "chunk", _integer, None)
+    return SweepConfig(
+        solve_for=solve_for, grid=grid, fixed=tuple(full.items()),
+        material=(name, material), side=opt(solve, ("solve",), "side", _string, None),
+        rtol=opt(solve, ("solve",), "rtol", _number, 1e-12),
+        m_range=_int_pair(modes, "m") if "m" in modes else (0, 12),
+        n_range=_int_pair(modes, "n") if "n" in modes else (1, 30),
+        extend=opt(modes, ("modes",), "extend", _bool, True),
+        top=opt(modes, ("modes",), "top", _integer, 5),
+        chunk=chunk if chunk is not None else default_chunk(math.prod(len(v) for _, v in grid)))
+
+
+def _default(field: str) -> float:
+    return TubeParameters.__dataclass_fields__[field].default
+
+
+def _grid_values(key: str, value) -> tuple[float, ...]:
+    where = ("grid", key)
+    if isinstance(value, dict):
+        for k in value:
+            if k not in ("start", "stop", "num"):
+                raise ConfigError(where + (k,), "unknown key; a range takes start, stop, num")
+        for k in ("start", "stop", "num"):
+            if k not in value:
+                raise ConfigError(where, f"a range needs start, stop and num; {k} is missing")
+        start, stop = _number(value, where, "start"), _number(value, where, "stop")
+        num = _integer(value, where, "num")
+        if num < 1:
+            raise ConfigError(where + ("num",), f"num = {num} gives an empty grid; need"
+                                                " num >= 1")
+        values = [float(v) for v in np.linspace(start, stop, num)]
+    elif isinstance(value, list):
+        if not value:
+            raise ConfigError(where, "empty grid; give at least one value")
+        values = []
+        for i, v in enumerate(value):
+            if isinstance(v, bool) or not isinstance(v, (int, float)):
+                raise ConfigError(where, f"value {i + 1} is {_typename(v)} {v!r}, not a"
+                                         " number")
+            if not math.isfinite(v):
+                raise ConfigError(where, f"value {i + 1} = {v!r} is not a finite number")
+            values.append(float(v))
+    else:
+        raise ConfigError(where, f"expected a list of numbers or a range {{start, stop,"
+                                 f" num}}, got {_typename(value)} {value!r}")
+    ordered = sorted(values)
+    for a, b in zip(ordered, ordered[1:]):
+        if a == b:
+            raise ConfigError(where, f"the value {a!r} appears twice")
+    return tuple(ordered)
+
+
+# -- types -----------------------------------------------------------------------------------
+
+def _typename(v) -> str:
+    return {bool: "a boolean", int: "an integer", float: "a number", str: "a string",
+            list: "a list", dict: "a table"}.get(type(v), type(v).__name__)
+
+
+def _string(table, where, key):
+    v = table[key]
+    if not isinstance(v, str):
+        raise ConfigError(where + (key,), f"expected a string, got {_typename(v)} {v!r}")
+    return v
+
+
+def _number(table, where, key):
+    v = table[key]
+    if isinstance(v, bool) or not isinstance(v, (int, float)):
+        raise ConfigError(where + (key,), f"expected a number, got {_typename(v)} {v!r}")
+    if not math.isfinite(v):
+        raise ConfigError(where + (key,), f"{v!r} is not a finite number")
+    return float(v)
+
+
+def _integer(table, where, key):
+    v = table[key]
+    if isinstance(v, bool) or not isinstance(v, int):
+        raise ConfigError(where + (key,), f"expected an integer, got {_typename(v)} {v!r}")
+    return v
+
+
+def _bool(table, where, key):
+    v = table[key]
+    if not isinstance(v, bool):
+        raise ConfigError(where + (key,), f"expected true or false, got {_typename(v)} {v!r}")
+    return v
+
+
+def _int_pair(table, key):
+    v = table[key]
+    if (not isinstance(v, list) or len(v) != 2
+            or any(isinstance(x, bool) or not isinstance(x, int) for x in v)):
+        raise ConfigError(("modes", key), f"expected an inclusive range [{key}_min, {key}_max]"
+                                          f" of two integers, got {v!r}")
+    return (v[0], v[1])
+
+
+# -- line numbers ----------------------------------------------------------------------------
+
+_HEADER = re.compile(r"^\s*\[\s*([^\[\]]+?)\s*\]")
+_KEY = re.compile(r"""^\s*((?:[A-Za-z0-9_-]+|"[^"]*"|'[^']*')"""
+                  r"""(?:\s*\.\s*(?:[A-Za-z0-9_-]+|"[^"]*"|'[^']*'))*)\s*=""")
+
+
+def _split_key(text: str) -> tuple[str, ...]:
+    return tuple(p.strip().strip("\"'") for p in text.split("."))
+
+
+def line_of(text: str, key: tuple[str, ...]) -> int | None:
+    """The line of ``key`` (a dotted path) in TOML ``text``, or of its nearest ancestor.
+
+    tomllib keeps no positions, so this scans the text: it follows the ``[table]`` headers
+    and finds ``name =`` lines; a key inside an inline table or array is reported at the
+    line of the entry that holds it. None when not even the table appears.
+    """
+    if not key:
+        return None
+    table: tuple[str, ...] = ()
+    best, depth = None, 0
+    for number, line in enumerate(text.splitlines(), 1):
+        head = _HEADER.match(line)
+        if head:
+            table = _split_key(head.group(1))
+            if key[:len(table)] == table and len(table) > depth:
+                best, depth = number, len(table)
+            continue
+        found = _KEY.match(line)
+        if found:
+            path = table + _split_key(found.group(1))
+            n = min(len(path), len(key))
+            if path[:n] == key[:n] and n > depth and path[:len(table)] == key[:len(table)]:
+                best, depth = number, n
+    return best
