@@ -18,13 +18,13 @@ import numpy as np
 
 from electrogrowth import TubeParameters
 from electrogrowth.bifurcation.critical import critical_value
-from electrogrowth.bifurcation.scan import scan_modes
+from electrogrowth.bifurcation.scan import ScanOptions, scan_modes
 
 sys.path.insert(0, os.path.dirname(__file__))
 import baseline  # noqa: E402
 
 POINT = TubeParameters(outer_radius=1.4, length=1.0, stretch=1.0, voltage=0.4)
-FULL = dict(m_range=(0, 30), n_range=(1, 40), extend=False)
+FULL = dict(options=ScanOptions((0, 30), (1, 40), extend=False))
 SAMPLE = [(0, 1), (4, 1), (3, 7)]  # baseline subsample of the scan (g_cr 1.27 .. 2.25)
 
 
@@ -108,14 +108,14 @@ def scaling() -> None:
     """Scan cost against the number of modes, and memory over many scans."""
     print("\nscan cost vs number of modes (same point):")
     for mm, nn in ((7, 10), (15, 20), (30, 40)):
-        t, _ = timed(scan_modes, POINT, "growth", repeat=2, m_range=(0, mm), n_range=(1, nn),
-                     extend=False)
+        t, _ = timed(scan_modes, POINT, "growth", repeat=2,
+                     options=ScanOptions((0, mm), (1, nn), extend=False))
         k = (mm + 1) * nn
         print(f"  {k:>5} modes: {t:.3f} s, {1e3 * t / k:.3f} ms per mode")
     rss = []
     for i, lz in enumerate(np.linspace(0.95, 1.3, 30)):
-        scan_modes(dataclasses.replace(POINT, stretch=float(lz)), "growth", m_range=(0, 8),
-                   n_range=(1, 10), extend=False)
+        scan_modes(dataclasses.replace(POINT, stretch=float(lz)), "growth", 
+                   options=ScanOptions((0, 8), (1, 10), extend=False))
         if i % 10 == 9:
             rss.append(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024)
     print("max RSS after 10, 20, 30 scans along a curve: "

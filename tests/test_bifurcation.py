@@ -7,7 +7,8 @@ import pytest
 from scipy.optimize import brentq
 
 from electrogrowth import NoBifurcationFound, ParameterError, TubeParameters
-from electrogrowth.bifurcation.critical import critical_value, impedance_targets, stable_sign
+from electrogrowth.bifurcation.critical import critical_value, stable_sign
+from electrogrowth.incremental.targets import impedance_targets
 from electrogrowth.basestate.tube import solve_base_state
 
 

@@ -14,9 +14,9 @@ from electrogrowth.cli.curve import configure_curve, run_curve
 from electrogrowth.bifurcation.curves import Switch, critical_curve
 from electrogrowth.errors import ParameterError
 from electrogrowth.model.params import TubeParameters
-from electrogrowth.bifurcation.scan import scan_modes
+from electrogrowth.bifurcation.scan import ScanOptions, scan_modes
 
-SMALL = {"m_range": (0, 2), "n_range": (1, 2)}  # the optimum on an edge extends the range
+SMALL = {"options": ScanOptions((0, 2), (1, 2))}  # the optimum on an edge extends the range
 
 
 @pytest.fixture(scope="module")

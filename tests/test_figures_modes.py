@@ -11,7 +11,7 @@ import pytest
 from electrogrowth.figures import critical as fm
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.model.params import TubeParameters
-from electrogrowth.bifurcation.scan import scan_modes
+from electrogrowth.bifurcation.scan import ScanOptions, scan_modes
 
 RO14 = TubeParameters(outer_radius=1.4, length=1.0)
 
@@ -78,7 +78,7 @@ def test_figure9_ends_at_the_ungrown_critical_stretches(figures):
     res = figures[9]
     h = res.headline
     p = TubeParameters(outer_radius=1.4, voltage=0.4)
-    lo = scan_modes(p, "stretch", side="compression", m_range=(0, 2), n_range=(1, 2))
+    lo = scan_modes(p, "stretch", side="compression", options=ScanOptions((0, 2), (1, 2)))
     assert h["lambda_compression_V0.4"] == pytest.approx(lo.critical.value, abs=1e-10)
     c = res.curves[0]
     assert c.x[0] == pytest.approx(lo.critical.value, rel=2e-6)

@@ -211,6 +211,6 @@ def test_cli_help_names_every_option():
     configure_pattern(parser)
     text = parser.format_help()
     for option in ("--solve-for", "--side", "--mode", "--amplitude", "--out", "--vtk",
-                   "--json", "--shape-method", "--outer-radius", "--material"):
+                   "--json", "--method", "--outer-radius", "--material"):
         assert option in text
     assert "two_Riccati" in text

@@ -5,7 +5,7 @@ import pytest
 from electrogrowth import ParameterError, TubeParameters
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.errors import NoBifurcationFound
-from electrogrowth.bifurcation.scan import mode_grid, scan_modes
+from electrogrowth.bifurcation.scan import ScanOptions, mode_grid, scan_modes
 
 P = TubeParameters(1.4, 1.0, stretch=1.0, voltage=0.4)
 
@@ -26,8 +26,8 @@ def _brute(params, solve_for, modes, side=None):
                                              ("stretch", "compression")])
 def test_scan_equals_brute_force(solve_for, side):
     params = P if solve_for != "voltage" else TubeParameters(1.4, 1.0)
-    res = scan_modes(params, solve_for, side=side, m_range=(0, 3), n_range=(1, 3), top=3,
-                     extend=False)
+    res = scan_modes(params, solve_for, side=side,
+                     options=ScanOptions((0, 3), (1, 3), top=3, extend=False))
     brute = _brute(params, solve_for, mode_grid((0, 3), (1, 3)), side)
     value, m, n = brute[0]
     assert (res.critical.m, res.critical.n) == (m, n)
@@ -38,7 +38,7 @@ def test_scan_equals_brute_force(solve_for, side):
 
 
 def test_range_is_widened_while_the_optimum_sits_on_its_edge():
-    res = scan_modes(P, "growth", m_range=(0, 0), n_range=(1, 1))
+    res = scan_modes(P, "growth", options=ScanOptions((0, 0), (1, 1)))
     assert res.m_range == (0, 1) and res.n_range == (1, 2)
     assert (res.critical.m, res.critical.n) == (0, 1)
     assert not res.surface_instability
@@ -46,7 +46,7 @@ def test_range_is_widened_while_the_optimum_sits_on_its_edge():
 
 def test_extension_finds_bifurcation_before_the_threshold():
     """Vbar = 0.4: modes wrinkle just before lambda_z reaches the threshold 2.5117."""
-    res = scan_modes(P, "stretch", side="extension", m_range=(0, 3), n_range=(1, 2))
+    res = scan_modes(P, "stretch", side="extension", options=ScanOptions((0, 3), (1, 2)))
     assert res.critical.kind == "bifurcation"
     assert 2.49 < res.critical.value < 2.5117
     direct = critical_value(P, res.critical.m, res.critical.n, "stretch", side="extension")
@@ -55,16 +55,21 @@ def test_extension_finds_bifurcation_before_the_threshold():
 
 @pytest.mark.parametrize("kw, needle", [
     (dict(m_range=(-1, 3)), "m range"), (dict(n_range=(0, 3)), "n range"),
-    (dict(n_range=(4, 2)), "n range"), (dict(side="up"), "side")])
+    (dict(n_range=(4, 2)), "n range"), (dict(top=0), "top = 0 is invalid")])
 def test_bad_ranges(kw, needle):
     with pytest.raises(ParameterError, match=needle):
-        scan_modes(P, "growth", **kw)
+        scan_modes(P, "growth", options=ScanOptions(**kw))
+
+
+def test_bad_side():
+    with pytest.raises(ParameterError, match="side"):
+        scan_modes(P, "growth", side="up")
 
 
 def test_surface_instability_is_extrapolated_not_scanned_forever():
     """Thick, long, compressed tube under voltage: the critical voltage keeps falling with n."""
     p = TubeParameters(2.5, 3.0, stretch=0.8)
-    res = scan_modes(p, "voltage", m_range=(0, 2), n_range=(1, 6))
+    res = scan_modes(p, "voltage", options=ScanOptions((0, 2), (1, 6)))
     c = res.critical
     assert res.surface_instability and res.n_range[1] == c.n >= 24
     assert res.short_wave_limit < c.value  # the limit lies below every finite-n value

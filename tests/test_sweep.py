@@ -19,6 +19,7 @@ import electrogrowth  # noqa: E402
 from electrogrowth import TubeParameters  # noqa: E402
 from electrogrowth.cli import app as cli  # noqa: E402
 from electrogrowth.cli import sweep as cli_sweep  # noqa: E402
+from electrogrowth.bifurcation.scan import ScanOptions  # noqa: E402
 from electrogrowth.sweep.unit import ScanSpec, compute_point, compute_sweep  # noqa: E402
 from electrogrowth.sweep.file import parse_config  # noqa: E402
 from electrogrowth.sweep.store import block_shape, grid_blocks, open_results  # noqa: E402
@@ -112,7 +113,7 @@ def test_failing_point_is_recorded_and_the_rest_computed(tmp_path):
 
 
 def test_unit_turns_every_exception_into_a_record(monkeypatch):
-    spec = ScanSpec("growth", m_range=(0, 1), n_range=(1, 1))
+    spec = ScanSpec("growth", options=ScanOptions((0, 1), (1, 1)))
     rec = compute_point(TubeParameters(1.4, voltage=5.0), spec)
     assert rec.status == "failed" and rec.message.startswith("BaseStateError: Vbar = 5")
     import electrogrowth.sweep.unit as sweep

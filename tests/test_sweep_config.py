@@ -58,7 +58,8 @@ def test_good_file_is_normalised():
     assert c.grid[1] == ("outer_radius", (1.4, 1.6))  # sorted
     assert dict(c.fixed) == {"length": 1.0, "growth": 1.0}  # solved-for voltage left out
     assert c.material == ("gent", (("jm", 97.2),)) and c.chunk == 1
-    assert c.spec.m_range == (0, 3) and c.spec.rtol == 1e-10 and not c.spec.extend
+    assert c.spec.options.m_range == (0, 3) and c.spec.rtol == 1e-10
+    assert not c.spec.options.extend
     assert SweepConfig.from_dict(c.to_dict()) == c
     other = parse_config(GOOD.replace("num = 3", "num = 4").replace("97.2", "50"))
     assert differences(c, other) == ["material.jm", "grid.stretch"]
@@ -72,7 +73,7 @@ def test_good_file_is_normalised():
     (edit(2, "for = "), 2, "invalid TOML"),
     (edit(2, 'for = "heat"'), 2, "'heat' is unknown"),
     (edit(2, 'for = "growth"\nside = "extension"'), 3, "side applies only"),
-    (edit(6, "m = [3, 0]"), 6, "modes.m: range [3, 0] is invalid"),
+    (edit(6, "m = [3, 0]"), 6, "modes.m: m range [3, 0] is invalid"),
     (edit(7, "n = [1.5, 3]"), 7, "modes.n: expected an inclusive range"),
     (edit(11, 'name = "rubber"'), 11, "unknown material 'rubber'"),
     (edit(12, "alpha = 0.5"), 12, "material.alpha: unknown key; material 'gent' takes jm"),

@@ -19,16 +19,12 @@ import math
 
 import numpy as np
 
-from ..errors import ConvergenceError, ParameterError
-from ..incremental.impedance import STATUS_TEXT, target_batch, target_serial
-from .march import Targets, brent, first_bifurcations
-from ..model.params import TubeParameters
-from ..incremental.radial_table import build_table, stack_tables
 from ..basestate.tube import solve_base_state
-
-METHODS = ("impedance", "collocation")
-PARALLEL_FROM = 16  # batches smaller than this run on one thread (thread launch costs more)
-SIDES = ("compression", "extension")
+from ..errors import ConvergenceError
+from ..incremental.accuracy import STABLE_SIGN, Accuracy
+from ..incremental.targets import check_mode, targets_for
+from ..model.params import TubeParameters, check_side
+from .march import brent, first_bifurcations
 
 
 @dataclasses.dataclass(frozen=True)
@@ -56,61 +52,6 @@ class CriticalPoint:
                 "method": self.method, "side": self.side, "material": p.material.name,
                 "outer_radius": p.outer_radius, "length": p.length, "growth": p.growth,
                 "stretch": p.stretch, "voltage": p.voltage}
-
-
-def wavenumber(params: TubeParameters, n: int) -> float:
-    """Axial wavenumber k = n pi / (lambda_z L) in the current configuration."""
-    return n * math.pi / (params.stretch * params.length)
-
-
-def impedance_targets(state, modes, *, rtol: float = 1e-12,
-                      max_steps: int = 20000) -> np.ndarray:
-    """Kernel target f for many modes (rows (m, n)) on one base state."""
-    modes = np.atleast_2d(np.asarray(modes, dtype=float))
-    # the table need only be a little more accurate than the integration
-    table = build_table(state, tol=min(1e-9, max(1e-15, 1e-4 * rtol)))
-    coef, degree, fmap, geom = stack_tables([table])
-    nb_ = modes.shape[0]
-    k = modes[:, 1] * math.pi / (state.params.stretch * state.params.length)
-    f = np.empty(nb_)
-    status = np.empty(nb_, dtype=np.int64)
-    steps = np.empty(nb_, dtype=np.int64)
-    kernel = target_batch if nb_ >= PARALLEL_FROM else target_serial
-    kernel(np.ascontiguousarray(modes[:, 0]), k, np.zeros(nb_, dtype=np.int64), coef,
-           degree, fmap, geom, rtol, max_steps, f, status, steps)
-    bad = status != 0
-    if bad.any():
-        i = int(np.argmax(bad))
-        raise ConvergenceError(
-            f"impedance integration failed for mode (m, n) = ({modes[i, 0]:g}, "
-            f"{modes[i, 1]:g}): {STATUS_TEXT[int(status[i])]}")
-    return f
-
-
-def targets_for(method: str, rtol: float) -> Targets:
-    """targets(state, modes) of the impedance kernel or of the collocation method."""
-    if method == "impedance":
-        return lambda state, modes: impedance_targets(state, modes, rtol=rtol)
-    if method == "collocation":
-        from ..incremental.collocation import collocation_target
-        nodes = 40 if rtol >= 1e-11 else 56
-        return lambda state, modes: np.array(
-            [collocation_target(state, int(m), int(n), nodes=nodes) for m, n in modes])
-    raise ParameterError(f"method = {method!r} is unknown; choose one of {METHODS}")
-
-
-def check_mode(m, n) -> None:
-    """Raise ParameterError unless m >= 0 and n >= 1 are integers."""
-    if m < 0 or n < 1 or int(m) != m or int(n) != n:
-        raise ParameterError(
-            f"mode (m, n) = ({m}, {n}) is invalid; need integers m >= 0, n >= 1")
-
-
-def check_side(solve_for: str, side: str | None) -> str | None:
-    """Validate ``side``; default compression for the stretch, None otherwise."""
-    if side is not None and side not in SIDES:
-        raise ParameterError(f"side = {side!r} is unknown; choose compression or extension")
-    return side or ("compression" if solve_for == "stretch" else None)
 
 
 def critical_value(params: TubeParameters, m: int, n: int, solve_for: str, *,
@@ -148,28 +89,34 @@ def critical_value(params: TubeParameters, m: int, n: int, solve_for: str, *,
     check_mode(m, n)
     side = check_side(solve_for, side)
     mode = np.array([[m, n]], dtype=float)
-    fine, coarse = targets_for(method, rtol), targets_for(method, rtol * 100)
-    at = lambda x: dataclasses.replace(params, **{solve_for: float(x)})  # noqa: E731
+    acc = Accuracy(rtol)
+    fine, coarse = targets_for(method, acc.fine), targets_for(method, acc.coarse)
     sref = stable_sign(m, n, params, method)
-    signed = lambda t: lambda x: sref * float(t(solve_base_state(at(x)), mode)[0])  # noqa
+
+    def signed(targets):  # the target of this mode as a function of the control, stable > 0
+        return lambda x: sref * float(targets(solve_base_state(params.at(solve_for, x)),
+                                              mode)[0])
+
     g = signed(fine)
     if bracket is not None and g(bracket[0]) * g(bracket[1]) < 0:
         value = brent(g, *bracket)
     else:
-        loose = targets_for(method, max(rtol, 1e-8))  # signs only, along the march
+        loose = targets_for(method, acc.march_signs)
         res = first_bifurcations(params, solve_for, side, mode, loose, brent_targets=fine)
         if not res.found:
             return CriticalPoint(solve_for, res.threshold, int(m), int(n), "threshold", 0.0,
-                                 method, side, at(res.threshold))
+                                 method, side, params.at(solve_for, res.threshold))
         value = res.found[0].value
     return CriticalPoint(solve_for, value, int(m), int(n), "bifurcation",
-                         _second_resolution(signed(coarse), value), method, side, at(value))
+                         _second_resolution(signed(coarse), value), method, side,
+                         params.at(solve_for, value))
 
 
 def stable_sign(m: int, n: int, params: TubeParameters, method: str = "impedance") -> float:
     """Sign of the target on the unloaded tube (g = 1, lambda_z = 1, Vbar = 0)."""
     ref = dataclasses.replace(params, growth=1.0, stretch=1.0, voltage=0.0)
-    f = float(targets_for(method, 1e-10)(solve_base_state(ref), np.array([[m, n]], float))[0])
+    targets = targets_for(method, STABLE_SIGN)
+    f = float(targets(solve_base_state(ref), np.array([[m, n]], float))[0])
     if f == 0.0 or not math.isfinite(f):
         raise ConvergenceError(f"target undefined on the unloaded tube for mode ({m}, {n})")
     return math.copysign(1.0, f)

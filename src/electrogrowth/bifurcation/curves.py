@@ -33,10 +33,10 @@ from typing import Callable, Iterable, NamedTuple
 
 import numpy as np
 
-from .critical import check_side, critical_value
 from ..errors import ElectrogrowthError, ParameterError
-from ..model.params import CONTROLS, TubeParameters
-from .scan import scan_modes
+from ..model.params import CONTROLS, TubeParameters, check_side
+from .critical import critical_value
+from .scan import ScanOptions, scan_modes
 
 #: The parameters a curve can run along (fields of TubeParameters).
 ALONG = ("stretch", "voltage", "outer_radius", "length", "growth")
@@ -82,17 +82,16 @@ class CurvePoint:
 
 
 def curve_point(params: TubeParameters, solve_for: str, along: str, x: float, *,
-                side: str | None = None, m_range=(0, 12), n_range=(1, 30)) -> CurvePoint:
+                side: str | None = None, options: ScanOptions = ScanOptions()) -> CurvePoint:
     """Scan the modes at ``along`` = x; a failure becomes kind "failed" (never raises)."""
     try:
-        res = scan_modes(dataclasses.replace(params, **{along: float(x)}), solve_for,
-                         side=side, m_range=m_range, n_range=n_range)
+        res = scan_modes(params.at(along, x), solve_for, side=side, options=options)
     except Exception as exc:  # noqa: BLE001 -- failures are data in a sweep
         return CurvePoint(float(x), math.nan, THRESHOLD, "failed", _message(exc))
     c = res.critical
     mode = (c.m, c.n) if c.kind == "bifurcation" else THRESHOLD
     edge = c.kind == "bifurcation" and (c.m == res.m_range[1] or c.n == res.n_range[1])
-    limit = getattr(res, "short_wave_limit", None)
+    limit = res.short_wave_limit
     return CurvePoint(float(x), c.value, mode, c.kind, "",
                       tuple((r.m, r.n, r.value) for r in res.runners_up),
                       bool(res.surface_instability or edge),
@@ -228,7 +227,7 @@ def check_curve(solve_for: str, along: str) -> None:
 
 def critical_curve(params: TubeParameters, solve_for: str, along: str,
                    values: Iterable[float], *, side: str | None = None,
-                   m_range: tuple[int, int] = (0, 12), n_range: tuple[int, int] = (1, 30),
+                   options: ScanOptions = ScanOptions(),
                    progress: Callable[[int], object] | None = None,
                    mapper: Callable = map) -> Curve:
     """Critical ``solve_for`` as ``along`` runs over ``values``, switches located.
@@ -243,7 +242,7 @@ def critical_curve(params: TubeParameters, solve_for: str, along: str,
         The parameter of the abscissa; not ``solve_for``.
     values : sequence of float
         Strictly monotone grid of ``along``.
-    m_range, n_range : (int, int)
+    options : ScanOptions
         Mode ranges of each scan (extended automatically when the optimum is on an edge).
     progress : callable, optional
         Called with 1 after each grid point (``tqdm(...).update`` fits).
@@ -267,7 +266,7 @@ def critical_curve(params: TubeParameters, solve_for: str, along: str,
     ones in (0, 1), the switch between Rbar_o = 1.2 and 1.3 located exactly:
 
     >>> c = critical_curve(TubeParameters(), "stretch", "outer_radius", [1.2, 1.3],
-    ...                    side="compression", m_range=(0, 2), n_range=(1, 2))
+    ...                    side="compression", options=ScanOptions((0, 2), (1, 2)))
     >>> [(s.mode_before, s.mode_after, round(s.x, 6)) for s in c.switches]
     [((1, 1), (0, 1), 1.256361)]
     """
@@ -282,9 +281,9 @@ def critical_curve(params: TubeParameters, solve_for: str, along: str,
     if xs.size > 1 and not ((steps > 0).all() or (steps < 0).all()):
         raise ParameterError(f"values of {along} must be strictly monotone, got {xs.tolist()}")
     for x in xs:  # the ranges are checked before any work
-        dataclasses.replace(params, **{along: float(x)})
+        params.at(along, x)
     unit = functools.partial(curve_point, params, solve_for, along, side=side,
-                             m_range=m_range, n_range=n_range)
+                             options=options)
     points = []
     for pt in mapper(unit, xs):
         points.append(pt)
@@ -335,7 +334,7 @@ class _Locator:
         kind "threshold", if the base state is lost first: then the mode comes after all)."""
         key = (mode, float(x))
         if key not in self.known:
-            at = dataclasses.replace(self.params, **{self.along: float(x)})
+            at = self.params.at(self.along, x)
             c = critical_value(at, *mode, self.solve_for, side=self.side)
             self.known[key] = (c.value, c.kind)
         return self.known[key]

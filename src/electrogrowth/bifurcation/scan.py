@@ -18,16 +18,58 @@ import functools
 
 import numpy as np
 
-from .critical import (CriticalPoint, check_side, critical_value, impedance_targets)
 from ..errors import ParameterError
+from ..incremental.accuracy import SCAN_SIGNS, SCAN_STABLE_SIGNS, Accuracy
+from ..incremental.targets import impedance_targets
+from ..model.params import TubeParameters, check_side
+from .critical import CriticalPoint, critical_value
 from .march import ModeValue, first_bifurcations, unloaded_signs
-from ..model.params import TubeParameters
-
-LOOSE = 1e-5  # kernel tolerance for signs along the march (no sign error seen at 1e-4)
-MEDIUM = 1e-9  # for the runners-up; the critical mode is re-solved at the requested rtol
 M_CAP, N_CAP = 64, 320
 DOUBLINGS = 2  # widen a range at most this often; an optimum still on its edge is a
                # short-wavelength (surface) instability, extrapolated instead of scanned
+
+
+def _check_range(name, rng, lowest):
+    lo, hi = rng
+    if int(lo) != lo or int(hi) != hi or lo < lowest or hi < lo:
+        raise ParameterError(f"{name} range {list(rng)} is invalid; need integers "
+                             f"{lowest} <= {name}_min <= {name}_max")
+
+
+@dataclasses.dataclass(frozen=True)
+class ScanOptions:
+    """Which modes a scan examines and how much it reports: the defaults, written once.
+
+    Parameters
+    ----------
+    m_range, n_range : (int, int)
+        Inclusive starting ranges of the circumferential wavenumber m >= 0 and the axial
+        half-wavenumber n >= 1.
+    top : int
+        Modes reported: the critical one and ``top - 1`` runners-up (top >= 1).
+    extend : bool
+        Probe short waves beyond the ranges, widen a range while the optimum sits on its
+        upper edge (at most DOUBLINGS times, up to M_CAP, N_CAP), and extrapolate a
+        short-wave (surface) instability found there.
+    """
+
+    m_range: tuple[int, int] = (0, 12)
+    n_range: tuple[int, int] = (1, 30)
+    top: int = 5
+    extend: bool = True
+
+    def __post_init__(self):
+        for name, lowest in (("m", 0), ("n", 1)):
+            rng = getattr(self, f"{name}_range")
+            _check_range(name, rng, lowest)
+            object.__setattr__(self, f"{name}_range", (int(rng[0]), int(rng[1])))
+        if isinstance(self.top, bool) or int(self.top) != self.top or self.top < 1:
+            raise ParameterError(f"top = {self.top!r} is invalid; need an integer >= 1")
+        object.__setattr__(self, "top", int(self.top))
+
+    def with_maxima(self, m_max: int, n_max: int) -> ScanOptions:
+        """These options with the ranges 0..m_max and 1..n_max (the CLI's --m-max, --n-max)."""
+        return dataclasses.replace(self, m_range=(0, m_max), n_range=(1, n_max))
 
 
 @dataclasses.dataclass(frozen=True)
@@ -60,8 +102,7 @@ def mode_grid(m_range, n_range) -> np.ndarray:
 
 
 def scan_modes(params: TubeParameters, solve_for: str, *, side: str | None = None,
-               m_range: tuple[int, int] = (0, 12), n_range: tuple[int, int] = (1, 30),
-               top: int = 5, rtol: float = 1e-12, extend: bool = True) -> ScanResult:
+               options: ScanOptions = ScanOptions(), rtol: float = 1e-12) -> ScanResult:
     """Critical value of ``solve_for`` minimised (first reached) over all modes.
 
     Parameters
@@ -72,19 +113,18 @@ def scan_modes(params: TubeParameters, solve_for: str, *, side: str | None = Non
         As in :func:`bifurcation.critical_value`.
     side : {"compression", "extension"}, optional
         For the stretch only (default compression).
-    m_range, n_range : (int, int)
-        Inclusive ranges of the circumferential and axial wavenumbers; extended
-        automatically while the optimum sits on an upper edge (``extend``).
-    top : int
-        Number of modes reported (the critical one and top - 1 runners-up).
+    options : ScanOptions
+        The mode ranges (extended automatically while the optimum sits on an upper edge),
+        the number of modes reported, and whether to extend.
+    rtol : float
+        Accuracy of the critical value (see incremental/accuracy.py).
 
     Returns
     -------
     ScanResult
     """
     side = check_side(solve_for, side)
-    _check_range("m", m_range, 0)
-    _check_range("n", n_range, 1)
+    m_range, n_range, top, extend = options.m_range, options.n_range, options.top, options.extend
     grown = {"m": 0, "n": 0}
     probes = extend
     while True:
@@ -144,27 +184,19 @@ def _short_wave_limit(params, solve_for, side, m, n, along, rtol):
     return second, abs(second - first)
 
 
-def _check_range(name, rng, lowest):
-    lo, hi = rng
-    if int(lo) != lo or int(hi) != hi or lo < lowest or hi < lo:
-        raise ParameterError(f"{name} range {rng} is invalid; need integers "
-                             f"{lowest} <= {name}_min <= {name}_max")
-
-
 def _scan_once(params, solve_for, side, m_range, n_range, top, rtol, probes) -> ScanResult:
     modes = scan_grid(m_range, n_range, probes)
-    loose = lambda state, md: impedance_targets(state, md, rtol=LOOSE)  # noqa: E731
-    fine = lambda state, md: impedance_targets(state, md, rtol=max(rtol, MEDIUM))  # noqa
+    loose = functools.partial(impedance_targets, rtol=SCAN_SIGNS)
+    fine = functools.partial(impedance_targets, rtol=Accuracy(rtol).runners_up)
     res = first_bifurcations(params, solve_for, side, modes, loose, top=top,
                              brent_targets=fine,
                              stable_signs=_stable_signs(params.material, params.outer_radius,
                                                         params.length, m_range, n_range,
                                                         probes))
-    at = lambda x: dataclasses.replace(params, **{solve_for: float(x)})  # noqa: E731
     found = res.found
     if not found:  # the march stops at the threshold, so found modes come before it
         crit = CriticalPoint(solve_for, res.threshold, -1, -1, "threshold", 0.0, "impedance",
-                             side, at(res.threshold))
+                             side, params.at(solve_for, res.threshold))
         return ScanResult(crit, (), m_range, n_range)
     best = found[0]
     w = 1e-7 * max(1.0, abs(best.value))
@@ -178,4 +210,5 @@ def _stable_signs(material, outer_radius, length, m_range, n_range, probes) -> n
     """Signs on the unloaded tube, shared by every scan of a curve or sweep."""
     modes = scan_grid(m_range, n_range, probes)
     ref = TubeParameters(outer_radius, length, material=material)
-    return unloaded_signs(ref, modes, lambda s, md: impedance_targets(s, md, rtol=MEDIUM))
+    return unloaded_signs(ref, modes, functools.partial(impedance_targets,
+                                                        rtol=SCAN_STABLE_SIGNS))

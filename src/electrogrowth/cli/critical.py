@@ -5,11 +5,13 @@ from __future__ import annotations
 import argparse
 import json
 
-from ..bifurcation.critical import METHODS, critical_value
-from .options import (add_control_options, add_mode_range_options, add_tube_options,
-                          tube_from_args)
-from ..errors import ConvergenceError, ParameterError
+from ..bifurcation.critical import critical_value
 from ..bifurcation.scan import scan_modes
+from ..errors import ConvergenceError, ParameterError
+from ..incremental.accuracy import check_rtol
+from .options import (add_control_options, add_method_option, add_mode_range_options,
+                      add_tube_options, check_side_option, scan_options_from_args,
+                      tube_from_args)
 
 CERTIFY_RTOL = 1e-8  # the two methods must agree this well for a certified value
 
@@ -24,13 +26,10 @@ def configure_critical(parser: argparse.ArgumentParser) -> None:
                             " half-wavenumber n >= 1; without it all modes 0 <= m <= M_MAX,"
                             " 1 <= n <= N_MAX are scanned and the first to bifurcate is"
                             " reported")
-    add_mode_range_options(modes)
-    modes.add_argument("--top", type=int, default=5,
-                       help="number of modes to report in a scan (default 5)")
+    add_mode_range_options(modes, top=True)
     num = parser.add_argument_group("numerics")
-    num.add_argument("--method", choices=METHODS, default="impedance",
-                     help="impedance = compiled surface-impedance Riccati integration"
-                          " (default); collocation = independent Chebyshev collocation")
+    add_method_option(num, "impedance = compiled surface-impedance Riccati integration"
+                           " (default); collocation = independent Chebyshev collocation")
     num.add_argument("--certify", action="store_true",
                      help="also solve with the other method and require agreement to"
                           f" {CERTIFY_RTOL:g} (relative)")
@@ -43,10 +42,8 @@ def configure_critical(parser: argparse.ArgumentParser) -> None:
 
 def run_critical(args) -> int:
     params = tube_from_args(args)
-    if args.side is not None and args.solve_for != "stretch":
-        raise ParameterError(f"--side {args.side} applies only to --solve-for stretch")
-    if not 1e-14 <= args.rtol <= 1e-4:
-        raise ParameterError(f"--rtol = {args.rtol!r} is out of range; valid range: 1e-14 to 1e-4")
+    check_side_option(args)
+    check_rtol(args.rtol, "--rtol")
     if args.mode is not None:
         crit = critical_value(params, *args.mode, args.solve_for, side=args.side,
                               method=args.method, rtol=args.rtol)
@@ -56,8 +53,7 @@ def run_critical(args) -> int:
             raise ParameterError("a mode scan uses --method impedance; give --mode M N for"
                                  " collocation (or use --certify)")
         result = scan_modes(params, args.solve_for, side=args.side,
-                            m_range=(0, args.m_max), n_range=(1, args.n_max), top=args.top,
-                            rtol=args.rtol)
+                            options=scan_options_from_args(args), rtol=args.rtol)
         crit, record = result.critical, result.as_dict()
         runners = record["runners_up"]
     if crit.kind == "threshold" and args.mode is None:

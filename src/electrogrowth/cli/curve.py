@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from .options import (_material, _number, add_control_options, add_mode_range_options,
-                          add_tube_options)
+                      add_tube_options, check_side_option, scan_options_from_args)
 from ..bifurcation.curves import ALONG, check_curve, critical_curve
 from ..errors import ParameterError
 from ..model.params import TubeParameters
@@ -66,11 +66,8 @@ def run_curve(args) -> int:
     check_curve(args.solve_for, args.along)
     if args.points < 2:
         raise ParameterError(f"--points = {args.points} is too small; need >= 2")
-    if args.m_max < 0 or args.n_max < 1:
-        raise ParameterError(f"--m-max = {args.m_max}, --n-max = {args.n_max} invalid;"
-                             " need M >= 0 and N >= 1")
-    if args.side is not None and args.solve_for != "stretch":
-        raise ParameterError(f"--side {args.side} applies to --solve-for stretch only")
+    options = scan_options_from_args(args)
+    check_side_option(args)
     if args.start == args.stop:
         raise ParameterError(f"--from = --to = {args.start:g}; need two different values")
     params = curve_params(args)
@@ -82,7 +79,7 @@ def run_curve(args) -> int:
                    desc=f"{args.solve_for} along {args.along}")
     try:
         curve = critical_curve(params, args.solve_for, args.along, values, side=args.side,
-                               m_range=(0, args.m_max), n_range=(1, args.n_max),
+                               options=options,
                                progress=bar.update if bar is not None else None)
     finally:
         if bar is not None:

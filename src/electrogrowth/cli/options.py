@@ -5,9 +5,11 @@ from __future__ import annotations
 import argparse
 import math
 
+from ..bifurcation.scan import ScanOptions
 from ..errors import ParameterError
+from ..incremental.targets import METHODS
 from ..model.materials import BUILTIN, material_by_name
-from ..model.params import TubeParameters
+from ..model.params import CONTROLS, SIDES, TubeParameters
 
 
 class UsageError(Exception):
@@ -88,23 +90,45 @@ def _material(args):
 
 def add_control_options(parser: argparse.ArgumentParser) -> None:
     """--solve-for and --side: the control parameter whose critical value is sought."""
-    parser.add_argument("--solve-for", required=True, choices=("growth", "stretch", "voltage"),
+    parser.add_argument("--solve-for", required=True, choices=CONTROLS,
                         help="the control parameter to find: growth = g_cr, the smallest"
                              " g > 1 at which the tube wrinkles; stretch = lambda_z,cr on"
                              " --side; voltage = Vbar_cr, the smallest Vbar (or the threshold"
                              " where the axisymmetric state is lost, if that comes first)."
                              " The value given for it below is ignored.")
-    parser.add_argument("--side", choices=("compression", "extension"), default=None,
+    parser.add_argument("--side", choices=SIDES, default=None,
                         help="for --solve-for stretch: axial compression (lambda_z < g,"
                              " default) or extension (lambda_z > g)")
 
 
-def add_mode_range_options(group) -> None:
-    """--m-max and --n-max: the rectangle of modes a scan starts from."""
-    group.add_argument("--m-max", type=int, default=12, metavar="M_MAX",
+def check_side_option(args) -> None:
+    """--side belongs to --solve-for stretch only."""
+    if args.side is not None and args.solve_for != "stretch":
+        raise ParameterError(f"--side {args.side} applies only to --solve-for stretch")
+
+
+def add_mode_range_options(group, *, top: bool = False) -> None:
+    """--m-max and --n-max (and --top): the ScanOptions of a scan, defaults from it."""
+    default = ScanOptions()
+    group.add_argument("--m-max", type=int, default=default.m_range[1], metavar="M_MAX",
                        help="largest circumferential wavenumber m of the scan, from 0"
-                            " (default 12; widened automatically when the critical mode sits"
-                            " on the edge, and probed beyond for short waves)")
-    group.add_argument("--n-max", type=int, default=30, metavar="N_MAX",
-                       help="largest axial half-wavenumber n of the scan, from 1 (default 30;"
-                            " widened likewise)")
+                            f" (default {default.m_range[1]}; widened automatically when the"
+                            " critical mode sits on the edge, and probed beyond for short"
+                            " waves)")
+    group.add_argument("--n-max", type=int, default=default.n_range[1], metavar="N_MAX",
+                       help="largest axial half-wavenumber n of the scan, from 1 (default"
+                            f" {default.n_range[1]}; widened likewise)")
+    if top:
+        group.add_argument("--top", type=int, default=default.top,
+                           help=f"number of modes to report in a scan (default {default.top})")
+
+
+def scan_options_from_args(args) -> ScanOptions:
+    """The ScanOptions of --m-max, --n-max (and --top, where the command has it)."""
+    top = getattr(args, "top", ScanOptions().top)
+    return ScanOptions(m_range=(0, args.m_max), n_range=(1, args.n_max), top=top)
+
+
+def add_method_option(group, help_text: str) -> None:
+    """--method: how the incremental problem is solved (incremental.targets.Method)."""
+    group.add_argument("--method", choices=METHODS, default=METHODS[0], help=help_text)

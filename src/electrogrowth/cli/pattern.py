@@ -18,10 +18,11 @@ from pathlib import Path
 import numpy as np
 
 from ..bifurcation.critical import critical_value
-from .options import (_number, add_control_options, add_mode_range_options,
-                          add_tube_options, tube_from_args)
+from .options import (_number, add_control_options, add_method_option, add_mode_range_options,
+                      add_tube_options, check_side_option, scan_options_from_args,
+                      tube_from_args)
 from ..errors import MissingDependencyError, ParameterError
-from ..shapes.mode_shape import ROUTES, mode_shape, plot_mode_shape
+from ..shapes.mode_shape import mode_shape, plot_mode_shape
 from ..shapes.wall import export_vtk, render_pattern
 from ..bifurcation.scan import scan_modes
 
@@ -40,8 +41,7 @@ def configure_pattern(parser: argparse.ArgumentParser) -> None:
                             " 0 <= m <= M_MAX, 1 <= n <= N_MAX is used")
     add_mode_range_options(modes)
     shape = parser.add_argument_group("mode shape and output")
-    shape.add_argument("--shape-method", choices=ROUTES, default="impedance",
-                       help="impedance = Riccati equation for the surface impedance, then"
+    add_method_option(shape, "impedance = Riccati equation for the surface impedance, then"
                             " dU/dr = (G1 + G2 z) U / r inwards from the outer face (paper"
                             " eq. two_Riccati; default, falls back to collocation if the"
                             " impedance has a pole in the wall); collocation = null vector of"
@@ -68,8 +68,7 @@ def configure_pattern(parser: argparse.ArgumentParser) -> None:
 
 def run_pattern(args) -> int:
     params = tube_from_args(args)
-    if args.side is not None and args.solve_for != "stretch":
-        raise ParameterError(f"--side {args.side} applies only to --solve-for stretch")
+    check_side_option(args)
     if not (math.isfinite(args.amplitude) and args.amplitude >= 0):
         raise ParameterError(f"--amplitude = {args.amplitude:g} is out of range; need A >= 0")
     if args.points < 2:
@@ -82,12 +81,9 @@ def run_pattern(args) -> int:
     if args.mode is not None:
         crit = critical_value(params, *args.mode, args.solve_for, side=args.side)
     else:
-        if args.m_max < 0 or args.n_max < 1:
-            raise ParameterError(f"--m-max {args.m_max} / --n-max {args.n_max} out of range;"
-                                 " need M_MAX >= 0, N_MAX >= 1")
         crit = scan_modes(params, args.solve_for, side=args.side,
-                          m_range=(0, args.m_max), n_range=(1, args.n_max)).critical
-    shape = mode_shape(crit, method=args.shape_method, points=args.points)
+                          options=scan_options_from_args(args)).critical
+    shape = mode_shape(crit, method=args.method, points=args.points)
     files = []
     if args.out is not None:
         files += write_outputs(shape, args.out, amplitude=args.amplitude)

@@ -25,7 +25,7 @@ from ..bifurcation.curves import Curve, critical_curve
 from .base_state import COLORS, FigureResult, _figure
 from ..model.materials import Material, neo_hookean
 from ..model.params import TubeParameters
-from ..bifurcation.scan import scan_modes
+from ..bifurcation.scan import ScanOptions, scan_modes
 from ..basestate.tube import voltage_threshold
 
 #: kind column of the CSVs.
@@ -99,14 +99,13 @@ def _table(curves: list[Curve]) -> tuple[tuple[str, ...], np.ndarray]:
     return cols, np.concatenate(rows)
 
 
-def _modes(quick: bool) -> dict:
-    m_range, n_range = QUICK_MODES if quick else FULL_MODES
-    return {"m_range": m_range, "n_range": n_range}
+def _modes(quick: bool) -> ScanOptions:
+    return ScanOptions(*(QUICK_MODES if quick else FULL_MODES))
 
 
 def _curve(params, solve_for, along, values, quick, side=None, progress=None) -> Curve:
     return critical_curve(params, solve_for, along, values, side=side, progress=progress,
-                          **_modes(quick))
+                          options=_modes(quick))
 
 
 def _finite(c: Curve) -> np.ndarray:
@@ -227,7 +226,7 @@ def figure8(*, outer_radius: float = 1.4, lengths=(1.0, 1.5), stretch_max: float
     curves, headline = [], {}
     for color, L in zip(COLORS, lengths):
         p = TubeParameters(outer_radius=outer_radius, length=L, material=material)
-        start = scan_modes(p, "stretch", side="compression", **_modes(quick)).critical.value
+        start = scan_modes(p, "stretch", side="compression", options=_modes(quick)).critical.value
         t = np.linspace(0.0, 1.0, points) ** 2  # Vbar_cr ~ sqrt(lambda_z - start) there
         grid = ([start * (1 + NUDGE), 1.0, 1.3] if quick else
                 np.union1d(start * (1 + NUDGE) + (stretch_max - start) * t, [1.0]))
@@ -340,8 +339,8 @@ def figure9(*, outer_radius: float = 1.4, length: float = 1.0, voltages=(0.4, 0.
     for color, V, prefix in zip(COLORS, voltages, "NMKJ"):
         p = TubeParameters(outer_radius=outer_radius, length=length, voltage=V,
                            material=material)
-        lo = scan_modes(p, "stretch", side="compression", **_modes(quick)).critical
-        hi = scan_modes(p, "stretch", side="extension", **_modes(quick)).critical
+        lo = scan_modes(p, "stretch", side="compression", options=_modes(quick)).critical
+        hi = scan_modes(p, "stretch", side="extension", options=_modes(quick)).critical
         grid = np.linspace(lo.value * (1 + NUDGE), hi.value * (1 - NUDGE), points)
         c = _curve(p, "growth", "stretch", grid, quick, progress=progress)
         curves.append(c)
@@ -386,7 +385,7 @@ def figure10(*, outer_radius: float = 1.4, length: float = 1.0, stretches=(1.0, 
     for color, lz, prefix in zip(COLORS, stretches, "PQRS"):
         p = TubeParameters(outer_radius=outer_radius, length=length, stretch=lz,
                            material=material)
-        vcr = scan_modes(p, "voltage", **_modes(quick)).critical
+        vcr = scan_modes(p, "voltage", options=_modes(quick)).critical
         t = np.linspace(0.0, 1.0, points)  # denser towards Vbar_cr, where g_cr falls fast
         grid = vcr.value * (1 - NUDGE) * (1 - (1 - t) ** 2)
         c = _curve(p, "growth", "voltage", grid, quick, progress=progress)

@@ -41,6 +41,7 @@ import numpy.typing as npt
 import scipy.linalg
 import scipy.optimize
 
+from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
 from ..model.materials import MODULI_INDEX
 from ..model.params import CONTROLS, TubeParameters
@@ -340,12 +341,10 @@ def critical_collocation(params: TubeParameters, m: int, n: float, solve_for: st
     if solve_for not in CONTROLS:
         raise ParameterError(f"solve_for = {solve_for!r} is invalid; choose one of "
                              f"{', '.join(CONTROLS)}")
-    if base_state is None:
-        from ..basestate.tube import solve_base_state as base_state
-    field = CONTROLS[solve_for]
+    base_state = base_state or solve_base_state
 
     def target(value: float) -> float:
-        state = base_state(dataclasses.replace(params, **{field: float(value)}))
+        state = base_state(params.at(solve_for, value))
         return collocation_target(state, m, n, nodes=nodes)
 
     a, b = map(float, bracket)

@@ -57,11 +57,32 @@ class TubeParameters:
         for f in ("outer_radius", "length", "growth", "stretch", "voltage"):
             object.__setattr__(self, f, float(getattr(self, f)))
 
+    def at(self, name: str, value: float) -> "TubeParameters":
+        """This tube with the field ``name`` set to ``value`` (a control, or any field)."""
+        return dataclasses.replace(self, **{name: float(value)})
+
     @property
     def physical_voltage(self) -> float:
         """V in units sqrt(mu/eps) R_i: V = Vbar (Rbar_o - 1)."""
         return self.voltage * (self.outer_radius - 1.0)
 
 
-#: The control parameters a critical value can be solved for, and their field names.
-CONTROLS = {"growth": "growth", "stretch": "stretch", "voltage": "voltage"}
+#: The control parameters a critical value can be solved for (fields of TubeParameters).
+CONTROLS = ("growth", "stretch", "voltage")
+#: The sides of a critical stretch: below or above lambda_z = g.
+SIDES = ("compression", "extension")
+
+
+def check_control(solve_for: str) -> str:
+    """Return ``solve_for`` if it is a control, else raise ParameterError naming the choices."""
+    if solve_for not in CONTROLS:
+        raise ParameterError(f"solve_for = {solve_for!r} is unknown; choose growth, stretch or"
+                             " voltage")
+    return solve_for
+
+
+def check_side(solve_for: str, side: str | None) -> str | None:
+    """Validate ``side``; default compression for the stretch, None otherwise."""
+    if side is not None and side not in SIDES:
+        raise ParameterError(f"side = {side!r} is unknown; choose compression or extension")
+    return side or ("compression" if solve_for == "stretch" else None)

@@ -38,18 +38,18 @@ from numpy.polynomial import chebyshev as cheb
 from scipy.integrate import solve_ivp
 from scipy.interpolate import CubicSpline
 
-from ..bifurcation.critical import CriticalPoint, check_mode, wavenumber
-from ..incremental.collocation import mode_shape_collocation
+from ..basestate.tube import BaseState, solve_base_state
+from ..bifurcation.critical import CriticalPoint
 from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
+from ..incremental.collocation import mode_shape_collocation
 from ..incremental.impedance import impedance_scale
 from ..incremental.impedance_reference import impedance_rhs
+from ..incremental.stroh import stroh_matrix
+from ..incremental.targets import Method, check_method, check_mode, wavenumber
 from ..model.materials import MODULI_INDEX
 from ..model.params import TubeParameters
-from ..incremental.stroh import stroh_matrix
-from ..basestate.tube import BaseState, solve_base_state
 
 FloatArray = npt.NDArray[np.float64]
-ROUTES = ("impedance", "collocation")
 #: Components of the Stroh vector eta, in order (stroh.py, SIGN_PHI = -1).
 ETA_NAMES = ("U_r", "U_th", "U_z", "r_Delta_r", "r_Sigma_rr", "r_Sigma_rth", "r_Sigma_rz",
              "minus_Phi")
@@ -162,23 +162,22 @@ def mode_shape(critical: CriticalPoint | tuple[TubeParameters, int, int], *,
     ('impedance', 1.0, True)
     """
     params, m, n = _unpack(critical)
-    if method not in ROUTES:
-        raise ParameterError(f"method = {method!r} is unknown; choose one of {ROUTES}")
+    method = check_method(method)
     if isinstance(points, bool) or not isinstance(points, (int, np.integer)) or points < 2:
         raise ParameterError(f"points = {points!r} is invalid; need an integer >= 2")
     state = solve_base_state(params)
     R = np.linspace(1.0, params.outer_radius, int(points))
     k = wavenumber(params, n)
     note = ""
-    if method == "impedance":
+    if method is Method.IMPEDANCE:
         try:
             eta = impedance_shape(state, m, k, R, rtol=rtol)
         except _PoleError as exc:
-            method, note = "collocation", f"{exc}; shape from collocation instead"
-    if method == "collocation":
+            method, note = Method.COLLOCATION, f"{exc}; shape from collocation instead"
+    if method is Method.COLLOCATION:
         eta = collocation_shape(state, m, n, R, nodes=nodes)
     eta = normalise(eta)
-    return ModeShape(R, state.radius(R), eta, m, n, k, params, method,
+    return ModeShape(R, state.radius(R), eta, m, n, k, params, method.value,
                      boundary_residual(eta), note)
 
 

@@ -29,13 +29,13 @@ import numpy as np
 
 from ..errors import ElectrogrowthError, ParameterError
 from ..model.materials import BUILTIN, material_by_name
-from ..model.params import CONTROLS, TubeParameters
+from ..incremental.accuracy import RTOL_RANGE
+from ..model.params import CONTROLS, SIDES, TubeParameters
+from ..bifurcation.scan import ScanOptions
 from .unit import ScanSpec
 
 #: The TubeParameters fields a sweep can fix or vary.
 SWEEPABLE = ("outer_radius", "length", "growth", "stretch", "voltage")
-SIDES = ("compression", "extension")
-RTOL_RANGE = (1e-14, 1e-4)
 
 
 class ConfigError(ParameterError):
@@ -65,10 +65,7 @@ class SweepConfig:
     material: tuple[str, tuple[tuple[str, float], ...]] = ("neo-hookean", ())
     side: str | None = None
     rtol: float = 1e-12
-    m_range: tuple[int, int] = (0, 12)
-    n_range: tuple[int, int] = (1, 30)
-    extend: bool = True
-    top: int = 5
+    scan: ScanOptions = ScanOptions()
     chunk: int = 1
 
     def __post_init__(self):
@@ -89,8 +86,7 @@ class SweepConfig:
     @property
     def spec(self) -> ScanSpec:
         """The options of every point's mode scan."""
-        return ScanSpec(self.solve_for, self.side, self.m_range, self.n_range, self.top,
-                        self.rtol, self.extend)
+        return ScanSpec(self.solve_for, self.side, self.scan, self.rtol)
 
     def build_material(self):
         name, params = self.material
@@ -110,8 +106,8 @@ class SweepConfig:
     def to_dict(self) -> dict:
         """A JSON-ready dict (stored in the dataset attributes; see :meth:`from_dict`)."""
         return {"solve": {"for": self.solve_for, "side": self.side, "rtol": self.rtol},
-                "modes": {"m": list(self.m_range), "n": list(self.n_range),
-                          "extend": self.extend, "top": self.top},
+                "modes": {"m": list(self.scan.m_range), "n": list(self.scan.n_range),
+                          "extend": self.scan.extend, "top": self.scan.top},
                 "material": {"name": self.material[0], **dict(self.material[1])},
                 "fixed": dict(self.fixed),
                 "grid": {name: list(values) for name, values in self.grid},
@@ -128,8 +124,8 @@ class SweepConfig:
                    grid=tuple((k, tuple(v)) for k, v in d["grid"].items()),
                    fixed=tuple(d["fixed"].items()),
                    material=(mat.pop("name"), tuple(mat.items())),
-                   m_range=tuple(d["modes"]["m"]), n_range=tuple(d["modes"]["n"]),
-                   extend=d["modes"]["extend"], top=d["modes"]["top"],
+                   scan=ScanOptions(tuple(d["modes"]["m"]), tuple(d["modes"]["n"]),
+                                    d["modes"]["top"], d["modes"]["extend"]),
                    chunk=d["run"]["chunk"])
 
 
@@ -168,13 +164,6 @@ def _validate(c: SweepConfig) -> None:
     if not RTOL_RANGE[0] <= c.rtol <= RTOL_RANGE[1]:
         raise ConfigError(("solve", "rtol"), f"rtol = {c.rtol!r} is out of range; valid"
                                              " range: 1e-14 to 1e-4")
-    for name, rng, lowest in (("m", c.m_range, 0), ("n", c.n_range, 1)):
-        lo, hi = rng
-        if not lowest <= lo <= hi:
-            raise ConfigError(("modes", name), f"range {list(rng)} is invalid; need"
-                                               f" {lowest} <= {name}_min <= {name}_max")
-    if c.top < 1:
-        raise ConfigError(("modes", "top"), f"top = {c.top} is invalid; need top >= 1")
     if c.chunk < 1:
         raise ConfigError(("run", "chunk"), f"chunk = {c.chunk} is invalid; need >= 1")
     if not c.grid:

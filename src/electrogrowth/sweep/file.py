@@ -16,6 +16,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ..bifurcation.scan import ScanOptions
+from ..errors import ParameterError
 from ..model.params import TubeParameters
 from .config import SWEEPABLE, ConfigError, SweepConfig, default_chunk
 
@@ -97,11 +99,27 @@ def _from_raw(raw: dict) -> SweepConfig:
         solve_for=solve_for, grid=grid, fixed=tuple(full.items()),
         material=(name, material), side=opt(solve, ("solve",), "side", _string, None),
         rtol=opt(solve, ("solve",), "rtol", _number, 1e-12),
-        m_range=_int_pair(modes, "m") if "m" in modes else (0, 12),
-        n_range=_int_pair(modes, "n") if "n" in modes else (1, 30),
-        extend=opt(modes, ("modes",), "extend", _bool, True),
-        top=opt(modes, ("modes",), "top", _integer, 5),
+        scan=_scan_options(modes),
         chunk=chunk if chunk is not None else default_chunk(math.prod(len(v) for _, v in grid)))
+
+
+def _scan_options(modes: dict) -> ScanOptions:
+    """The [modes] table as ScanOptions, its defaults where a key is absent; an invalid
+    entry is a ConfigError naming it."""
+    given = {}
+    if "m" in modes:
+        given["m_range"] = _int_pair(modes, "m")
+    if "n" in modes:
+        given["n_range"] = _int_pair(modes, "n")
+    for key, read in (("extend", _bool), ("top", _integer)):
+        if key in modes:
+            given[key] = read(modes, ("modes",), key)
+    for field, value in given.items():  # one at a time: the error names the entry
+        try:
+            ScanOptions(**{field: value})
+        except ParameterError as exc:
+            raise ConfigError(("modes", field.removesuffix("_range")), str(exc)) from None
+    return ScanOptions(**given)
 
 
 def _default(field: str) -> float:

@@ -93,7 +93,7 @@ class SweepStore:
         self.group = zarr.open_group(str(path), mode="r+")
         self.block = block_shape(config.shape, config.chunk)
         self.blocks = grid_blocks(config.shape, self.block)
-        self.ranks = config.top - 1
+        self.ranks = config.scan.top - 1
 
     @contextlib.contextmanager
     def locked(self):
@@ -219,7 +219,7 @@ def _create(out: Path, config: SweepConfig, source_text: str) -> None:
     tmp = out.with_name(f".{out.name}.tmp-{uuid.uuid4().hex[:8]}")
     dims, shape = config.dims, config.shape
     block = block_shape(shape, config.chunk)
-    ranks = config.top - 1
+    ranks = config.scan.top - 1
     scalars = " ".join(name for name, _ in config.fixed)
     what = LABELS[config.solve_for][0]
     arrays = [(name, dims, block, spec) for name, spec in POINT_VARIABLES.items()]
@@ -253,8 +253,8 @@ def _coordinates(config: SweepConfig, source_text: str) -> xr.Dataset:
     coords = {name: (name, np.array(values), _coord_attrs(name))
               for name, values in config.grid}
     coords.update({name: ((), value, _coord_attrs(name)) for name, value in config.fixed})
-    if config.top > 1:
-        coords["rank"] = ("rank", np.arange(1, config.top), {
+    if config.scan.top > 1:
+        coords["rank"] = ("rank", np.arange(1, config.scan.top), {
             "description": "1 = the mode that bifurcates next after the critical one"})
     what = LABELS[config.solve_for][0]
     material = config.build_material().name

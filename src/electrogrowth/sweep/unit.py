@@ -36,7 +36,7 @@ from pathlib import Path
 
 from ..errors import ElectrogrowthError, NoBifurcationFound
 from ..model.params import TubeParameters
-from ..bifurcation.scan import scan_modes
+from ..bifurcation.scan import ScanOptions, scan_modes
 
 
 class SweepError(ElectrogrowthError, RuntimeError):
@@ -45,15 +45,12 @@ class SweepError(ElectrogrowthError, RuntimeError):
 
 @dataclasses.dataclass(frozen=True)
 class ScanSpec:
-    """The options of :func:`scan.scan_modes` used at every point of a sweep."""
+    """What :func:`~electrogrowth.bifurcation.scan.scan_modes` solves at every point."""
 
     solve_for: str
     side: str | None = None
-    m_range: tuple[int, int] = (0, 12)
-    n_range: tuple[int, int] = (1, 30)
-    top: int = 5
+    options: ScanOptions = ScanOptions()
     rtol: float = 1e-12
-    extend: bool = True
 
 
 @dataclasses.dataclass(frozen=True)
@@ -92,9 +89,8 @@ def compute_point(params: TubeParameters, spec: ScanSpec) -> PointResult:
     start = time.perf_counter()
     took = lambda: time.perf_counter() - start  # noqa: E731
     try:
-        res = scan_modes(params, spec.solve_for, side=spec.side, m_range=spec.m_range,
-                         n_range=spec.n_range, top=spec.top, rtol=spec.rtol,
-                         extend=spec.extend)
+        res = scan_modes(params, spec.solve_for, side=spec.side, options=spec.options,
+                         rtol=spec.rtol)
     except NoBifurcationFound as exc:
         return PointResult("ok", kind="none", message=str(exc), seconds=took())
     except ElectrogrowthError as exc:

@@ -1,0 +1,74 @@
+"""The accuracy policy: how the one tolerance a user gives becomes every tolerance inside.
+
+A user asks for one relative tolerance ``rtol`` (default 1e-12). Each stage needs its own
+accuracy, derived here and nowhere else:
+
+=====================  =================================  ===========================================
+name                   value                              why
+=====================  =================================  ===========================================
+``fine``               rtol                               the kernel's local tolerance at the root
+``coarse``             100 rtol                           a second resolution: the error estimate
+``march_signs``        max(rtol, 1e-8)                    one mode's march only needs signs
+``table``              min(1e-9, max(1e-15, 1e-4 rtol))   Chebyshev tables a little finer than the
+                                                          integration, never below round-off
+``collocation_nodes``  40 if rtol >= 1e-11 else 56        the spectral method's resolution
+``STABLE_SIGN``        1e-10                              sign of one mode on the unloaded tube
+``SCAN_SIGNS``         1e-5                               signs of every mode along a scan's march
+                                                          (no sign error seen at 1e-4)
+``SCAN_STABLE_SIGNS``  1e-9                               signs of every mode on the unloaded tube
+``runners_up``         max(rtol, 1e-9)                    the runners-up of a scan; the critical
+                                                          mode is re-solved at ``fine``
+=====================  =================================  ===========================================
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+from ..errors import ParameterError
+
+STABLE_SIGN = 1e-10
+SCAN_SIGNS = 1e-5
+SCAN_STABLE_SIGNS = 1e-9
+
+
+@dataclasses.dataclass(frozen=True)
+class Accuracy:
+    """Every tolerance of a computation, derived from the user's ``rtol`` (table above)."""
+
+    rtol: float = 1e-12
+
+    @property
+    def fine(self) -> float:
+        return self.rtol
+
+    @property
+    def coarse(self) -> float:
+        return 100.0 * self.rtol
+
+    @property
+    def march_signs(self) -> float:
+        return max(self.rtol, 1e-8)
+
+    @property
+    def table(self) -> float:
+        return min(1e-9, max(1e-15, 1e-4 * self.rtol))
+
+    @property
+    def collocation_nodes(self) -> int:
+        return 40 if self.rtol >= 1e-11 else 56
+
+    @property
+    def runners_up(self) -> float:
+        return max(self.rtol, SCAN_STABLE_SIGNS)
+
+
+RTOL_RANGE = (1e-14, 1e-4)
+
+
+def check_rtol(rtol: float, name: str = "rtol") -> float:
+    """Return ``rtol`` if it lies in RTOL_RANGE, else raise ParameterError naming it."""
+    if not RTOL_RANGE[0] <= rtol <= RTOL_RANGE[1]:
+        raise ParameterError(f"{name} = {rtol!r} is out of range; valid range: "
+                             f"{RTOL_RANGE[0]:g} to {RTOL_RANGE[1]:g}")
+    return rtol
