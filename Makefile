@@ -6,13 +6,13 @@ VENV ?= .venv
 BIN := $(VENV)/bin
 OUT ?= out
 
-.PHONY: install test test-slow demo bench figures clean distclean
+.PHONY: install test test-slow lint format demo bench figures clean distclean
 
 # Re-install only when pyproject.toml changes (the stamp is older than it).
 $(VENV)/.installed: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install -q --upgrade pip
-	$(BIN)/python -m pip install -q -e '.[test,vtk,sweep]'
+	$(BIN)/python -m pip install -q -e '.[test,lint,vtk,sweep]'
 	touch $@
 
 # The heavier optional extras (sweep = xarray/zarr/dask, vtk = meshio), on demand.
@@ -22,10 +22,21 @@ $(VENV)/.installed-%: $(VENV)/.installed
 
 install: $(VENV)/.installed
 
-test: $(VENV)/.installed
+# The lint and format checks first (seconds), then the tests and every docstring example.
+test: lint
 	$(BIN)/python -m pytest -q
 
 # Exit status 5 (no test selected) is not a failure while no test is marked slow.
+# ruff: the lint rules and the formatting of pyproject.toml [tool.ruff]; changes nothing.
+lint: $(VENV)/.installed
+	$(BIN)/ruff check src tests benchmarks tools
+	$(BIN)/ruff format --check src tests benchmarks tools
+
+# Apply ruff's safe fixes and its formatting.
+format: $(VENV)/.installed
+	$(BIN)/ruff check --fix src tests benchmarks tools
+	$(BIN)/ruff format src tests benchmarks tools
+
 test-slow: $(VENV)/.installed
 	$(BIN)/python -m pytest -q -m slow || [ $$? -eq 5 ]
 

@@ -10,7 +10,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from electrogrowth.cli.app import FIGURES, main
+from electrogrowth.cli.app import main
+from electrogrowth.figures import FIGURES
 from electrogrowth.model.materials import gent
 from electrogrowth.model.params import TubeParameters
 from electrogrowth.basestate.tube import neo_hookean_asymptote, solve_base_state

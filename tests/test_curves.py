@@ -15,6 +15,7 @@ from electrogrowth.bifurcation.curves import Switch, critical_curve
 from electrogrowth.errors import ParameterError
 from electrogrowth.model.params import TubeParameters
 from electrogrowth.bifurcation.scan import ScanOptions, scan_modes
+from electrogrowth.figures.plots import plot_curve
 
 SMALL = {"options": ScanOptions((0, 2), (1, 2))}  # the optimum on an edge extends the range
 
@@ -74,7 +75,7 @@ def test_branches_csv_and_plot(thin_to_thick, tmp_path):
     assert rows[0] == ["outer_radius", "stretch_cr", "m", "n", "kind", "surface",
                        "short_wave_limit", "status"]
     assert len(rows) == 1 + len(curve.x) and float(rows[1][1]) == curve.value[0]
-    ax = curve.plot()
+    ax = plot_curve(curve)
     labels = {t.get_text() for t in ax.texts}
     assert labels == {"1, 1", "1, 0"}  # "n, m" as in the paper
     assert "lambda" in ax.get_ylabel() and "R" in ax.get_xlabel()

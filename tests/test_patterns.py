@@ -12,8 +12,9 @@ from electrogrowth.errors import MissingDependencyError
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.cli.pattern import configure_pattern, run_pattern
 from electrogrowth.shapes.mode_shape import mode_shape
-from electrogrowth.shapes.wall import (deformed_surface, export_vtk, render_pattern, wall_mesh,
-                                    wall_surface)
+from electrogrowth.figures.plots import render_pattern
+from electrogrowth.shapes.wall import (deformed_surface, export_vtk, wall_mesh,
+                                       wall_surface)
 
 _SHAPES = {}
 

@@ -5,7 +5,8 @@ import pytest
 
 from electrogrowth.cli import app as cli
 from electrogrowth.cli import sweep as cli_sweep
-from electrogrowth.sweep.config import ConfigError, SweepConfig, differences
+from electrogrowth.errors import ConfigError
+from electrogrowth.sweep.config import SweepConfig, differences
 from electrogrowth.sweep.file import line_of, parse_config
 
 GOOD = """\

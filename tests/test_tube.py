@@ -285,7 +285,7 @@ def test_richardson_asymptote_matches_the_mooney_rivlin_closed_form(alpha):
     thr, kind, _ = voltage_threshold(p)
     want = neo_hookean_asymptote(p) * math.sqrt(alpha + (1 - alpha) * (1.3 / 1.2) ** 2)
     assert kind == "asymptote" and thr == pytest.approx(want, rel=1e-13)
-    assert tube._info(p).error < 1e-13
+    assert tube.threshold_info(p).error < 1e-13
 
 
 @pytest.mark.parametrize("Ro, g, lz, V", [(2.0, 1.0, 1.0, 1.02), (2.0, 1.1, 1.2, 1.3),
@@ -336,9 +336,9 @@ def test_non_ideal_asymptote_and_unbounded_cases():
 
 def test_gauss_quadrature_converges_geometrically():
     lam = np.array([1.3])
-    exact = tube._Tube(gent(97.2), 2.0, 1.1, 0.9, 96).hoop(lam, 0.4)[0][0]
+    exact = tube.Tube(gent(97.2), 2.0, 1.1, 0.9, 96).hoop(lam, 0.4)[0][0]
     ns = np.arange(3, 13)
-    err = np.array([abs(tube._Tube(gent(97.2), 2.0, 1.1, 0.9, int(n)).hoop(lam, 0.4)[0][0]
+    err = np.array([abs(tube.Tube(gent(97.2), 2.0, 1.1, 0.9, int(n)).hoop(lam, 0.4)[0][0]
                         - exact) for n in ns])
     rate = np.polyfit(ns[:7], np.log(err[:7]), 1)[0]  # ln error ~ -2 n ln(rho)
     assert rate < -1.5
@@ -367,13 +367,13 @@ def test_moduli_are_the_materials_at_the_local_state():
 def test_closed_form_route_matches_the_generic_route(twin, rng):
     """16 random (Rbar_o, g, lambda_z, Vbar / Vbar_inf): every output of the base state agrees
     to 1e-12 (measured: 1e-15 - 1e-13)."""
-    assert tube._kind(twin) == "ideal"  # not recognised: Gauss quadrature, scan, Chebyshev
+    assert tube.energy_kind(twin) == "ideal"  # not recognised: Gauss quadrature, scan, Chebyshev
     for Ro, g, lz, frac in zip(rng.uniform(1.05, 4.0, 16), rng.uniform(0.7, 2.0, 16),
                                rng.uniform(0.6, 1.6, 16), rng.uniform(0.02, 0.97, 16)):
         p = params(Ro, g, lz, frac * neo_hookean_asymptote(params(Ro, g, lz, 0.0)))
         q = dataclasses.replace(p, material=twin)
         fast, slow = solve_base_state(p), solve_base_state(q)
-        assert tube._info(p).nodes == 0 and tube._info(q).nodes > 0  # two routes indeed
+        assert tube.threshold_info(p).nodes == 0 and tube.threshold_info(q).nodes > 0  # two routes indeed
         for name in ("lambda_i", "lambda_o", "r_i", "r_o", "charge", "voltage_threshold"):
             assert getattr(fast, name) == pytest.approx(getattr(slow, name), rel=1e-12), name
         assert fast.threshold_kind == slow.threshold_kind == "asymptote"
@@ -456,7 +456,7 @@ def test_mechanical_state_is_the_homogeneous_one_for_every_energy(material):
     """lambda_i0 = sqrt(g^3 / lambda_z): l1 = l2 throughout, so tau_1 = tau_2 (docs Sec. 3), and
     M < 0 below, > 0 above (Baker-Ericksen). The root found here by brentq on the quadrature."""
     g, lz = 1.15, 0.85
-    wall = tube._Tube(material, 2.0, g, lz, 64)
+    wall = tube.Tube(material, 2.0, g, lz, 64)
 
     def m(lam):
         return float(wall.hoop(np.array([lam]), 0.0)[0][0])

@@ -1,4 +1,4 @@
-"""``python -m electrogrowth``: the command line of :mod:`electrogrowth.cli.app`."""
+"""``python -m electrogrowth``: the command line of :mod:`electrogrowth.cli`."""
 
 from .cli import main
 

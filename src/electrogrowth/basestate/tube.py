@@ -8,7 +8,7 @@ and deforms (det F_e = 1) into r_i <= r <= r_o at total axial stretch lambda_z (
 with elastic stretches l2 = r / (g R), l3 = lambda_z / g, l1 = 1 / (l2 l3). Maxwell's equation
 gives D_r = c / r, the voltage is V = Vbar (Rbar_o - 1) = int_{r_i}^{r_o} E_r dr, and radial
 equilibrium with both faces traction-free (eq. 25) fixes c for each lambda_i = r_i: the curve
-Vbar(lambda_i) and its threshold live in ``_voltage``. Here: the public entry points, and the
+Vbar(lambda_i) and its threshold live in ``voltage.py``. Here: the public entry points, and the
 through-wall profile of the solved state, sigma_rr(R) = int_{r_i}^{r} (tau_2 - tau_1) dr / r.
 
 Two routes. The ideal neo-Hookean dielectric (the paper's material) is solved in closed form:
@@ -27,7 +27,7 @@ import math
 import numpy as np
 from numpy.polynomial import chebyshev as cheb
 
-from .voltage import (_ORDERS, _Tube, _cell_root, _info, _kind, nh_asymptote, nh_lambda_i,
+from .voltage import (GAUSS_ORDERS, Tube, cell_root, threshold_info, energy_kind, nh_asymptote, nh_lambda_i,
                        nh_traction, nh_voltage)
 from ..errors import BaseStateError, ConvergenceError, ParameterError
 from ..model.materials import neo_hookean_moduli
@@ -58,7 +58,7 @@ def voltage_threshold(params: TubeParameters) -> tuple[float, str, float]:
     >>> round(voltage_threshold(TubeParameters(outer_radius=2.0, growth=1.1))[0], 6)
     1.233797
     """
-    info = _info(params)
+    info = threshold_info(params)
     return float(info.value), info.kind, float(info.lambda_i)
 
 
@@ -72,7 +72,7 @@ def voltage_curve(params: TubeParameters, lambda_i) -> np.ndarray:
     if not np.all(np.isfinite(lam) & (lam > 0)):
         raise ParameterError(f"lambda_i = {lam[~(np.isfinite(lam) & (lam > 0))].flat[0]!r}"
                              " is invalid; need 0 < lambda_i < inf")
-    info = _info(params)
+    info = threshold_info(params)
     low = lam < info.lambda_i0 * (1.0 - 1e-12)
     if low.any():
         raise BaseStateError(f"lambda_i = {lam[low].flat[0]:.12g} is below the Vbar = 0 value"
@@ -80,7 +80,7 @@ def voltage_curve(params: TubeParameters, lambda_i) -> np.ndarray:
     if info.nodes == 0:  # neo-Hookean closed form (NH-6)
         return np.maximum(nh_voltage(params.outer_radius, params.growth, params.stretch, lam),
                           0.0)
-    tube = _Tube(params.material, params.outer_radius, params.growth, params.stretch, info.nodes)
+    tube = Tube(params.material, params.outer_radius, params.growth, params.stretch, info.nodes)
     v = tube.voltage(lam.ravel())
     if not np.all(np.isfinite(v)):
         raise BaseStateError(f"energy of {params.material.name} undefined at lambda_i ="
@@ -113,7 +113,7 @@ def solve_base_state(params: TubeParameters, *, rtol: float = 1e-12) -> "BaseSta
     >>> round(state.lambda_i, 6), state.threshold_kind
     (1.151387, 'asymptote')
     """
-    info = _info(params, rtol)
+    info = threshold_info(params, rtol)
     target = params.voltage
     if not target < info.value:
         raise BaseStateError(
@@ -125,9 +125,9 @@ def solve_base_state(params: TubeParameters, *, rtol: float = 1e-12) -> "BaseSta
         if not (ratio := target / info.value) < 1.0:
             raise BaseStateError(f"Vbar = {target:.12g} is within rounding of the threshold"
                                  f" {info.value:.12g}; no base state resolved")
-        tube = _Tube(params.material, Ro, g, lz)
+        tube = Tube(params.material, Ro, g, lz)
         return BaseState._neo_hookean(params, tube, nh_lambda_i(Ro, g, lz, ratio), info)
-    tube = _Tube(params.material, Ro, g, lz, info.nodes)
+    tube = Tube(params.material, Ro, g, lz, info.nodes)
     if target == 0:
         return BaseState._build(params, tube, info.lambda_i0, info, rtol)
     grid, v = info.grid, info.values
@@ -141,9 +141,9 @@ def solve_base_state(params: TubeParameters, *, rtol: float = 1e-12) -> "BaseSta
         raise BaseStateError(f"Vbar = {target:.12g} is within rounding of the threshold"
                              f" {info.value:.12g}; no base state resolved")
     a, b = grid[k[0] - 1], grid[k[0]]
-    for n in _ORDERS[_ORDERS.index(tube.nodes):]:
+    for n in GAUSS_ORDERS[GAUSS_ORDERS.index(tube.nodes):]:
         tube = dataclasses.replace(tube, nodes=n)
-        lam = _cell_root(lambda x: np.sign(v := tube.voltage(x)) * v**2 - target**2, a, b)
+        lam = cell_root(lambda x: np.sign(v := tube.voltage(x)) * v**2 - target**2, a, b)
         state = BaseState._build(params, tube, lam, info, rtol)
         if state.quadrature_error <= max(rtol, 1e-14):
             return state
@@ -171,7 +171,7 @@ class BaseState:
     threshold_kind: str
     axial_force: float
     quadrature_error: float = 0.0
-    _tube: _Tube = dataclasses.field(default=None, repr=False, compare=False)
+    _tube: Tube = dataclasses.field(default=None, repr=False, compare=False)
     # sigma_rr(R) on the generic route; None: the neo-Hookean closed form (NH-1)
     _sigma: cheb.Chebyshev | None = dataclasses.field(default=None, repr=False, compare=False)
 
@@ -189,7 +189,7 @@ class BaseState:
         def integrands(x):
             r, stretches, drdR = tube.kinematics(lam, 1.0 + 0.5 * (Ro - 1.0) * (x + 1.0))
             tau = mat.stress(*stretches, c / r)
-            e = mat.electric_field(*stretches, c / r) if _kind(mat) == "general" else c / r
+            e = mat.electric_field(*stretches, c / r) if energy_kind(mat) == "general" else c / r
             return np.stack([(tau[1] - tau[0]) * drdR / r, (tau[1] + tau[0]) * drdR / r,
                              (2 * tau[2] - tau[0] - tau[1]) * r * drdR, e * drdR], axis=-1)
 
@@ -297,6 +297,26 @@ class BaseState:
         if self._sigma is None:
             return neo_hookean_moduli(*stretches, d)
         return self.params.material.moduli(*stretches, d)
+
+    def as_dict(self) -> dict:
+        """The JSON record of the state (inf -> null): geometry, charge, threshold, axial
+        force and the extremes of the three principal Cauchy stresses over 401 points of
+        the wall."""
+        p = self.params
+        prof = self.profiles(401)
+        record = {
+            "material": p.material.name, "outer_radius": p.outer_radius, "growth": p.growth,
+            "stretch": p.stretch, "voltage": p.voltage, "length": p.length,
+            "lambda_i": self.lambda_i, "lambda_o": self.lambda_o, "r_i": self.r_i,
+            "r_o": self.r_o, "charge": self.charge,
+            "voltage_threshold": (float(self.voltage_threshold)
+                                  if math.isfinite(self.voltage_threshold) else None),
+            "threshold_kind": self.threshold_kind, "axial_force": self.axial_force,
+        }
+        for key in ("sigma_rr", "sigma_tt", "sigma_zz"):
+            record[f"{key}_min"] = float(prof[key].min())
+            record[f"{key}_max"] = float(prof[key].max())
+        return record
 
     def profiles(self, n: int = 101) -> dict[str, np.ndarray]:
         """Through-wall profiles at n equally spaced R in [1, Rbar_o]: keys R, r, lambda

@@ -33,7 +33,7 @@ from scipy.optimize import brentq
 from ..errors import BaseStateError, ConvergenceError
 from ..model.materials import I1, I5, INVARIANTS, Material
 
-_ORDERS = (16, 24, 32, 48, 64, 96, 128, 192, 256, 384)  # Gauss-Legendre node counts tried
+GAUSS_ORDERS = (16, 24, 32, 48, 64, 96, 128, 192, 256, 384)  # Gauss-Legendre node counts tried
 _SCAN_RATIO, _SCAN_SPAN = 1.08, 1e3  # threshold scan: lambda_i0 1.08^k up to 1e3 lambda_i0
 _QUIET = dict(invalid="ignore", divide="ignore", over="ignore")
 _RTOL_MIN = 4.0 * np.finfo(float).eps  # brentq's smallest rtol
@@ -45,7 +45,7 @@ def _gauss(n: int):
 
 
 @functools.lru_cache(maxsize=64)
-def _kind(material: Material) -> str:
+def energy_kind(material: Material) -> str:
     """'neo-hookean', 'ideal' (W(I1, I2) + I5/2) or 'general', decided once per energy."""
     if sp.expand(material.energy - (I1 - 3) / 2 - I5 / 2) == 0:
         return "neo-hookean"
@@ -61,7 +61,7 @@ def _energy(material: Material):
 
 
 @dataclasses.dataclass(frozen=True)
-class _Tube:
+class Tube:
     """Geometry and quadrature of one (material, Rbar_o, g, lambda_z); vectorised in lambda_i."""
 
     material: Material
@@ -127,7 +127,7 @@ class _Tube:
             m0, scale = self.hoop(lam, 0.0)
             m0 = np.where(abs(m0) <= 1e-13 * scale, 0.0, m0)
             q = 2.0 * m0 * lam**2 * (lam**2 + delta) / delta
-            if _kind(self.material) != "general":
+            if energy_kind(self.material) != "general":
                 c[ok] = np.sign(q) * np.sqrt(abs(q))
                 v[ok] = c[ok] * 0.5 * np.log1p(delta / lam**2)
             else:
@@ -186,7 +186,7 @@ def _mechanical(material, outer_radius, growth, stretch, rtol) -> tuple[float, i
     the homogeneous state: there l1 = l2 at every R, so tau_1 = tau_2 at D = 0 for any isotropic
     energy and (*) holds pointwise; under Baker-Ericksen ((tau_2 - tau_1)(l2 - l1) > 0) M has
     the sign of lambda_i - lambda_i0, so no other state has Vbar = 0 (docs Sec. 3)."""
-    tube = _Tube(material, outer_radius, growth, stretch, _ORDERS[0])
+    tube = Tube(material, outer_radius, growth, stretch, GAUSS_ORDERS[0])
     lam0 = math.sqrt(growth**3 / stretch)
     if not tube.in_domain(np.array([lam0]))[0]:
         raise BaseStateError(f"no traction-free state at Vbar = 0 for g = {growth:g},"
@@ -195,20 +195,20 @@ def _mechanical(material, outer_radius, growth, stretch, rtol) -> tuple[float, i
     return lam0, _nodes(tube, lam0 * np.array([1.0, 1.5, 3.0]), rtol)
 
 
-def _nodes(tube: _Tube, lam: np.ndarray, rtol: float) -> int:
+def _nodes(tube: Tube, lam: np.ndarray, rtol: float) -> int:
     """Fewest nodes whose M at lam agrees with the next rule to 1e-2 rtol of the stress scale
     (four successive rules per stress call)."""
     lam = lam[tube.in_domain(lam)]
-    for start in range(0, len(_ORDERS) - 1, 3):
-        orders = _ORDERS[start:start + 4]
+    for start in range(0, len(GAUSS_ORDERS) - 1, 3):
+        orders = GAUSS_ORDERS[start:start + 4]
         hoops = tube.hoops(lam, 0.0, orders)
         for n, (a, s), (b, _) in zip(orders, hoops, hoops[1:]):
             if np.all(abs(a - b) <= 0.01 * rtol * s):
                 return n
-    raise ConvergenceError(f"quadrature not converged to rtol = {rtol} with {_ORDERS[-1]} nodes")
+    raise ConvergenceError(f"quadrature not converged to rtol = {rtol} with {GAUSS_ORDERS[-1]} nodes")
 
 
-def _cell_root(f, a: float, b: float) -> float:
+def cell_root(f, a: float, b: float) -> float:
     """Root of an analytic vectorised f changing sign on [a, b]: root of its degree-12 Chebyshev
     interpolant, polished by one Newton step with the interpolant's slope (relative accuracy
     ~1e-15); brentq (xtol 1e-15 a, rtol 1e-14) when the interpolant is not resolved."""
@@ -229,12 +229,12 @@ def _threshold(material, outer_radius, growth, stretch, rtol) -> _Threshold:
     """Scan Vbar(lambda_i) geometrically from lambda_i0 for the first local maximum; without one,
     Vbar -> inf at a locking stretch ("none"), or the asymptote (neo-Hookean closed form, else
     Richardson extrapolation in x = lambda_i^-2, whose order is measured)."""
-    if _kind(material) == "neo-hookean":  # (NH-5, NH-6): nothing to scan
+    if energy_kind(material) == "neo-hookean":  # (NH-5, NH-6): nothing to scan
         lam0 = math.sqrt(growth**3 / stretch)
         return _Threshold(lam0, nh_asymptote(outer_radius, growth, stretch), "asymptote",
                           math.inf, 0.0, 0, np.array([lam0]), np.array([0.0]))
     lam0, nodes = _mechanical(material, outer_radius, growth, stretch, rtol)
-    tube = _Tube(material, outer_radius, growth, stretch, nodes)
+    tube = Tube(material, outer_radius, growth, stretch, nodes)
     lam = lam0 * _SCAN_RATIO ** np.arange(0, math.ceil(math.log(_SCAN_SPAN, _SCAN_RATIO)) + 1)
     v = np.concatenate([[0.0], tube.voltage(lam[1:])])
     bad = np.flatnonzero(~np.isfinite(v))
@@ -266,7 +266,7 @@ def _threshold(material, outer_radius, growth, stretch, rtol) -> _Threshold:
     return _Threshold(value=float(t[-1]), kind="asymptote", lambda_i=math.inf, **out)
 
 
-def _limit_point(tube: _Tube, lam0: float, lam: np.ndarray, v: np.ndarray) -> _Threshold:
+def _limit_point(tube: Tube, lam0: float, lam: np.ndarray, v: np.ndarray) -> _Threshold:
     """Maximise Vbar on [lam[-3], lam[-1]]: root of the derivative of a degree-24 Chebyshev
     interpolant of Vbar^2 (analytic there), then Vbar evaluated exactly at that root."""
     def vsq(x):
@@ -283,7 +283,7 @@ def _limit_point(tube: _Tube, lam0: float, lam: np.ndarray, v: np.ndarray) -> _T
                       tube.nodes, np.append(lam[keep], top), np.append(v[keep], value))
 
 
-def _info(params, rtol: float = 1e-12) -> _Threshold:
+def threshold_info(params, rtol: float = 1e-12) -> _Threshold:
     return _threshold(params.material, params.outer_radius, params.growth, params.stretch, rtol)
 
 

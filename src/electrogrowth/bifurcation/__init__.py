@@ -1,1 +1,14 @@
-"""TODO"""
+"""Where the tube first wrinkles: the march of a control parameter from the stable unloaded
+tube to the first sign change of the targets (:mod:`.march`), one mode's critical value
+(:mod:`.critical`), the scan over all modes (:mod:`.scan`), critical curves with located mode
+switches (:mod:`.curves`) and the exact short-wave limit (:mod:`.surface`).
+
+May import ``incremental``, ``basestate``, ``model``, ``outcomes`` and ``errors``.
+"""
+
+from .critical import CriticalPoint, critical_value, stable_sign
+from .curves import Curve, critical_curve
+from .scan import ScanOptions, ScanResult, scan_modes
+
+__all__ = ["CriticalPoint", "critical_value", "stable_sign", "Curve", "critical_curve",
+           "ScanOptions", "ScanResult", "scan_modes"]

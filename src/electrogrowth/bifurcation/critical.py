@@ -24,6 +24,7 @@ from ..errors import ConvergenceError
 from ..incremental.accuracy import STABLE_SIGN, Accuracy
 from ..incremental.targets import check_mode, targets_for
 from ..model.params import TubeParameters, check_side
+from ..outcomes import Kind
 from .march import brent, first_bifurcations
 
 
@@ -104,10 +105,10 @@ def critical_value(params: TubeParameters, m: int, n: int, solve_for: str, *,
         loose = targets_for(method, acc.march_signs)
         res = first_bifurcations(params, solve_for, side, mode, loose, brent_targets=fine)
         if not res.found:
-            return CriticalPoint(solve_for, res.threshold, int(m), int(n), "threshold", 0.0,
+            return CriticalPoint(solve_for, res.threshold, int(m), int(n), Kind.THRESHOLD, 0.0,
                                  method, side, params.at(solve_for, res.threshold))
         value = res.found[0].value
-    return CriticalPoint(solve_for, value, int(m), int(n), "bifurcation",
+    return CriticalPoint(solve_for, value, int(m), int(n), Kind.BIFURCATION,
                          _second_resolution(signed(coarse), value), method, side,
                          params.at(solve_for, value))
 

@@ -35,17 +35,12 @@ import numpy as np
 
 from ..errors import ElectrogrowthError, ParameterError
 from ..model.params import CONTROLS, TubeParameters, check_side
+from ..outcomes import NO_MODE, Kind, Status
 from .critical import critical_value
 from .scan import ScanOptions, scan_modes
 
 #: The parameters a curve can run along (fields of TubeParameters).
 ALONG = ("stretch", "voltage", "outer_radius", "length", "growth")
-#: Symbols of the parameters, for labels and summaries.
-SYMBOLS = {"stretch": r"\lambda_z", "voltage": r"\bar V", "outer_radius": r"\bar R_o",
-           "length": "L", "growth": "g"}
-CRITICAL = {"stretch": r"\lambda_{z,\rm cr}", "voltage": r"\bar V_{\rm cr}",
-            "growth": r"g_{\rm cr}"}
-THRESHOLD = (-1, -1)  # the "mode" of a point where the base state is lost first
 MAX_SPLITS = 6  # depth of the re-location when a third mode intervenes
 
 
@@ -87,10 +82,10 @@ def curve_point(params: TubeParameters, solve_for: str, along: str, x: float, *,
     try:
         res = scan_modes(params.at(along, x), solve_for, side=side, options=options)
     except Exception as exc:  # noqa: BLE001 -- failures are data in a sweep
-        return CurvePoint(float(x), math.nan, THRESHOLD, "failed", _message(exc))
+        return CurvePoint(float(x), math.nan, NO_MODE, Status.FAILED, _message(exc))
     c = res.critical
-    mode = (c.m, c.n) if c.kind == "bifurcation" else THRESHOLD
-    edge = c.kind == "bifurcation" and (c.m == res.m_range[1] or c.n == res.n_range[1])
+    mode = (c.m, c.n) if c.kind == Kind.BIFURCATION else NO_MODE
+    edge = c.kind == Kind.BIFURCATION and (c.m == res.m_range[1] or c.n == res.n_range[1])
     limit = res.short_wave_limit
     return CurvePoint(float(x), c.value, mode, c.kind, "",
                       tuple((r.m, r.n, r.value) for r in res.runners_up),
@@ -137,7 +132,7 @@ class Curve:
         out, start = [], None
         for i in range(len(self.x) + 1):
             end = i == len(self.x)
-            ok = not end and self.kind[i] != "failed"
+            ok = not end and self.kind[i] != Status.FAILED
             if start is not None and (not ok or (self.m[i], self.n[i])
                                       != (self.m[start], self.n[start])):
                 out.append(((int(self.m[start]), int(self.n[start])), np.arange(start, i)))
@@ -178,39 +173,6 @@ class Curve:
                               "mode_after": list(s.mode_after), "value_after": s.value_after}
                              for s in self.switches]}
 
-    def plot(self, ax=None, *, color: str = "k", label: str | None = None,
-             annotate: bool = True):
-        """Draw the curve on ``ax`` (a new figure when None) and return ``ax``.
-
-        Each branch is labelled "n, m" (the paper's order; "m+" when the scan hit its cap,
-        a surface instability) at its middle; switches are dots, the threshold a dashed
-        line.
-        """
-        if ax is None:
-            from matplotlib.figure import Figure
-            ax = Figure(figsize=(4.0, 3.0), layout="constrained").subplots()
-        first, k = True, 0
-        for (m, n), rows in self.branches():
-            x, v = self.x[rows], self.value[rows]
-            if (m, n) == THRESHOLD:
-                ax.plot(x, v, "--", color=color, lw=0.9)
-                continue
-            ax.plot(x, v, "-", color=color, label=label if first else None)
-            first = False
-            if annotate:
-                i = len(rows) // 2
-                xm, vm = (x[i], v[i]) if len(rows) > 2 else (x.mean(), v.mean())
-                cap = "+" if self.surface[rows].any() else ""
-                ax.annotate(f"{n}, {m}{cap}", (xm, vm), xytext=(0, 4 if k % 2 else -10),
-                            textcoords="offset points", ha="center", fontsize=7, color=color)
-                k += 1
-        if self.switches:
-            ax.plot([s.x for s in self.switches] * 2,
-                    [s.value for s in self.switches] + [s.value_after for s in self.switches],
-                    "o", color=color, ms=2.5)
-        ax.set_xlabel(f"${SYMBOLS[self.along]}$")
-        ax.set_ylabel(f"${CRITICAL[self.solve_for]}$")
-        return ax
 
 
 def check_curve(solve_for: str, along: str) -> None:
@@ -293,7 +255,7 @@ def critical_curve(params: TubeParameters, solve_for: str, along: str,
     rows, switches = [], []
     for i, pt in enumerate(points):
         prev = points[i - 1] if i else None
-        if prev is not None and "failed" not in (prev.kind, pt.kind) and prev.mode != pt.mode:
+        if prev is not None and Status.FAILED not in (prev.kind, pt.kind) and prev.mode != pt.mode:
             try:
                 new_rows, new_switches = loc.between(prev, pt, MAX_SPLITS)
             except Exception as exc:  # noqa: BLE001 -- keep the grid points
@@ -324,10 +286,10 @@ class _Locator:
         self.known: dict[tuple[tuple[int, int], float], tuple[float, str]] = {}
 
     def _remember(self, pt: CurvePoint):
-        if pt.kind == "bifurcation":
-            self.known[pt.mode, pt.x] = (pt.value, "bifurcation")
+        if pt.kind == Kind.BIFURCATION:
+            self.known[pt.mode, pt.x] = (pt.value, Kind.BIFURCATION)
         for m, n, value in pt.runners_up:
-            self.known[(m, n), pt.x] = (value, "bifurcation")
+            self.known[(m, n), pt.x] = (value, Kind.BIFURCATION)
 
     def mode_value(self, mode, x) -> tuple[float, str]:
         """First critical value of ``mode`` at x, by the single-mode march (the threshold,
@@ -344,7 +306,7 @@ class _Locator:
         self._remember(a)
         self._remember(b)
         try:
-            if THRESHOLD in (a.mode, b.mode):
+            if NO_MODE in (a.mode, b.mode):
                 found = self._threshold_switch(a, b)
             else:
                 found = self._crossing(a, b)
@@ -358,16 +320,16 @@ class _Locator:
         if depth > 0:
             check = self.unit(x)
             first = min(v_before, v_after, key=lambda v: self.sense * v)
-            if check.kind != "failed" and check.mode not in (a.mode, b.mode) \
+            if check.kind != Status.FAILED and check.mode not in (a.mode, b.mode) \
                     and self.sense * (check.value - first) < -1e-9 * max(1.0, abs(first)):
                 return self._split(a, check, b, depth)
-        rows = [(x, v_before, a.mode, "switch", "", a.surface, math.nan),
-                (x, v_after, b.mode, "switch", "", b.surface, math.nan)]
+        rows = [(x, v_before, a.mode, Kind.SWITCH, "", a.surface, math.nan),
+                (x, v_after, b.mode, Kind.SWITCH, "", b.surface, math.nan)]
         return rows, [Switch(x, v_before, a.mode, b.mode, v_after)]
 
     def _split(self, a, mid, b, depth):
         """Locate the switches on both sides of a scanned point ``mid`` (kept as a row)."""
-        if depth <= 0 or mid.kind == "failed":
+        if depth <= 0 or mid.kind == Status.FAILED:
             return [], []
         rows, switches = [], []
         if mid.mode != a.mode:
@@ -403,18 +365,18 @@ class _Locator:
         lo, hi = a, b
         while abs(hi.x - lo.x) > 1e-7 * max(1.0, abs(lo.x)):
             mid = self.unit(0.5 * (lo.x + hi.x))
-            if mid.kind == "failed" or mid.mode not in (a.mode, b.mode):
+            if mid.kind == Status.FAILED or mid.mode not in (a.mode, b.mode):
                 return mid
             lo, hi = (mid, hi) if mid.mode == a.mode else (lo, mid)
         return 0.5 * (lo.x + hi.x), lo.value, hi.value
 
     def _threshold_switch(self, a, b):
         """Bisection on 'the non-threshold mode bifurcates before the threshold'."""
-        mode = b.mode if a.mode == THRESHOLD else a.mode
-        good, bad = (b.x, a.x) if a.mode == THRESHOLD else (a.x, b.x)
+        mode = b.mode if a.mode == NO_MODE else a.mode
+        good, bad = (b.x, a.x) if a.mode == NO_MODE else (a.x, b.x)
         while abs(bad - good) > 1e-12 * max(1.0, abs(good)):
             mid = 0.5 * (good + bad)
-            if self.mode_value(mode, mid)[1] == "bifurcation":
+            if self.mode_value(mode, mid)[1] == Kind.BIFURCATION:
                 good = mid
             else:
                 bad = mid

@@ -22,6 +22,7 @@ from ..errors import ParameterError
 from ..incremental.accuracy import SCAN_SIGNS, SCAN_STABLE_SIGNS, Accuracy
 from ..incremental.targets import impedance_targets
 from ..model.params import TubeParameters, check_side
+from ..outcomes import NO_MODE, Kind
 from .critical import CriticalPoint, critical_value
 from .march import ModeValue, first_bifurcations, unloaded_signs
 M_CAP, N_CAP = 64, 320
@@ -130,7 +131,7 @@ def scan_modes(params: TubeParameters, solve_for: str, *, side: str | None = Non
     while True:
         result = _scan_once(params, solve_for, side, m_range, n_range, top, rtol, probes)
         c = result.critical
-        if probes and c.kind == "bifurcation" and (c.m > m_range[1] or c.n > n_range[1]):
+        if probes and c.kind == Kind.BIFURCATION and (c.m > m_range[1] or c.n > n_range[1]):
             # a probe beyond the range wins: the optimum is a short wave, widen to it once
             grown = {"m": int(c.m > m_range[1]), "n": int(c.n > n_range[1])}
             m_range = (m_range[0], max(m_range[1], c.m))
@@ -138,8 +139,8 @@ def scan_modes(params: TubeParameters, solve_for: str, *, side: str | None = Non
             probes = False
             continue
         probes = False
-        edge = {"m": c.kind == "bifurcation" and c.m == m_range[1],
-                "n": c.kind == "bifurcation" and c.n == n_range[1]}
+        edge = {"m": c.kind == Kind.BIFURCATION and c.m == m_range[1],
+                "n": c.kind == Kind.BIFURCATION and c.n == n_range[1]}
         grow = {"m": edge["m"] and m_range[1] < M_CAP and grown["m"] < DOUBLINGS,
                 "n": edge["n"] and n_range[1] < N_CAP and grown["n"] < DOUBLINGS}
         if not extend or not any(grow.values()):
@@ -195,7 +196,7 @@ def _scan_once(params, solve_for, side, m_range, n_range, top, rtol, probes) -> 
                                                         probes))
     found = res.found
     if not found:  # the march stops at the threshold, so found modes come before it
-        crit = CriticalPoint(solve_for, res.threshold, -1, -1, "threshold", 0.0, "impedance",
+        crit = CriticalPoint(solve_for, res.threshold, *NO_MODE, Kind.THRESHOLD, 0.0, "impedance",
                              side, params.at(solve_for, res.threshold))
         return ScanResult(crit, (), m_range, n_range)
     best = found[0]

@@ -9,6 +9,7 @@ from ..bifurcation.critical import critical_value
 from ..bifurcation.scan import scan_modes
 from ..errors import ConvergenceError, ParameterError
 from ..incremental.accuracy import check_rtol
+from ..outcomes import Kind
 from .options import (add_control_options, add_method_option, add_mode_range_options,
                       add_tube_options, check_side_option, scan_options_from_args,
                       tube_from_args)
@@ -56,9 +57,9 @@ def run_critical(args) -> int:
                             options=scan_options_from_args(args), rtol=args.rtol)
         crit, record = result.critical, result.as_dict()
         runners = record["runners_up"]
-    if crit.kind == "threshold" and args.mode is None:
+    if crit.kind == Kind.THRESHOLD and args.mode is None:
         record["m"] = record["n"] = None
-    if args.certify and crit.kind == "bifurcation":
+    if args.certify and crit.kind == Kind.BIFURCATION:
         record.update(_certify(params, crit, args))
     if args.json:
         print(json.dumps(record))
@@ -83,7 +84,7 @@ def _certify(params, crit, args) -> dict:
 
 def _print_text(rec: dict, runners: list) -> None:
     name = {"growth": "g_cr", "stretch": "lambda_z,cr", "voltage": "Vbar_cr"}[rec["solve_for"]]
-    if rec["kind"] == "threshold":
+    if rec["kind"] == Kind.THRESHOLD:
         head = (f"{name} = {rec['value']:.12g}: the axisymmetric state is lost (voltage"
                 " threshold) before any wrinkling mode")
     else:

@@ -17,6 +17,8 @@ import numpy as np
 from .options import (_material, _number, add_control_options, add_mode_range_options,
                       add_tube_options, check_side_option, scan_options_from_args)
 from ..bifurcation.curves import ALONG, check_curve, critical_curve
+from ..figures.plots import plot_curve
+from ..outcomes import Status
 from ..errors import ParameterError
 from ..model.params import TubeParameters
 
@@ -87,7 +89,7 @@ def run_curve(args) -> int:
     stem = f"curve_{args.solve_for}_vs_{args.along}"
     csv = curve.to_csv(args.out / f"{stem}.csv")
     png = args.out / f"{stem}.png"
-    ax = curve.plot()
+    ax = plot_curve(curve)
     ax.set_title(_fixed_text(curve), fontsize=8)
     ax.figure.savefig(png, dpi=200)
     if args.json:
@@ -126,7 +128,7 @@ def summary(curve) -> list[str]:
                  else f"= {s.value:.12g}")
         lines.append(f"  switch at {curve.along} = {s.x:.12g}, {curve.solve_for}_cr {value}:"
                      f" {_mode(s.mode_before)} -> {_mode(s.mode_after)}")
-    failed = [i for i, k in enumerate(curve.kind) if k == "failed"]
+    failed = [i for i, k in enumerate(curve.kind) if k == Status.FAILED]
     for i in failed:
         lines.append(f"  failed at {curve.along} = {curve.x[i]:.10g}: {curve.status[i]}")
     return lines

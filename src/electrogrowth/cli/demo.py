@@ -14,10 +14,10 @@ from pathlib import Path
 import numpy as np
 
 from ..bifurcation.curves import critical_curve
-from ..figures.base_state import COLORS, _figure
+from ..figures.plots import plot_curve, render_pattern
+from ..figures.style import COLORS, new_figure
 from ..shapes.mode_shape import mode_shape
 from ..model.params import TubeParameters
-from ..shapes.wall import render_pattern
 from ..bifurcation.scan import scan_modes
 from ..basestate.tube import solve_base_state
 
@@ -32,13 +32,11 @@ def configure_demo(parser: argparse.ArgumentParser) -> None:
 
 
 def run_demo(args) -> int:
-    from .app import state_record  # cli imports this module
-
     out = args.out
     out.mkdir(parents=True, exist_ok=True)
     p = HEADLINE
     state = solve_base_state(p)
-    rec = state_record(state)
+    rec = state.as_dict()
     (out / "state.json").write_text(json.dumps(rec, indent=1))
     _stress_profile(state, out)
     scan = scan_modes(p, "growth")
@@ -69,7 +67,7 @@ def _stress_profile(state, out: Path) -> None:
     cols = ("r", "sigma_rr", "sigma_tt", "sigma_zz", "p", "D_r", "E_r")
     np.savetxt(out / "stress_profile.csv", np.column_stack([prof[c] for c in cols]),
                delimiter=",", header=",".join(cols), comments="", fmt="%.15g")
-    fig, axes = _figure(4.0, 3.0, 1, 1)
+    fig, axes = new_figure(4.0, 3.0, 1, 1)
     ax = axes[0, 0]
     for key, label, color in zip(("sigma_rr", "sigma_tt", "sigma_zz"),
                                  (r"$\sigma_{rr}$", r"$\sigma_{\theta\theta}$",
@@ -90,6 +88,6 @@ def _extras(params, crit, out: Path, quick: bool) -> list[Path]:
     xs = np.linspace(0.95, 1.25, 4 if quick else 13)
     curve = critical_curve(params, "growth", "stretch", xs)
     curve.to_csv(out / "gcr_curve.csv")
-    curve.plot().figure.savefig(out / "gcr_curve.png", dpi=200)
+    plot_curve(curve).figure.savefig(out / "gcr_curve.png", dpi=200)
     render_pattern(mode_shape(crit), path=out / "pattern.png")
     return [out / "gcr_curve.csv", out / "gcr_curve.png", out / "pattern.png"]

@@ -6,14 +6,10 @@ import argparse
 import math
 
 from ..bifurcation.scan import ScanOptions
-from ..errors import ParameterError
+from ..errors import ParameterError, UsageError
 from ..incremental.targets import METHODS
 from ..model.materials import BUILTIN, material_by_name
 from ..model.params import CONTROLS, SIDES, TubeParameters
-
-
-class UsageError(Exception):
-    """A bad command line (raised by the parser instead of printing usage and exiting)."""
 
 
 class _Parser(argparse.ArgumentParser):

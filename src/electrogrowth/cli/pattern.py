@@ -1,10 +1,10 @@
 """``electrogrowth pattern``: the wrinkling mode at onset, through the wall and in 3D.
 
 Finds the critical point (one mode with ``--mode M N``, else the first mode to bifurcate
-over a scan), computes its mode shape (modes.py) and writes, on request, a 3D picture of
+over a scan), computes its mode shape (shapes/mode_shape.py) and writes, on request, a 3D picture of
 the wrinkled tube, a plot and a CSV of the mode shape (``--out DIR``) and a VTK mesh of
 the wall (``--vtk FILE``). To register: ``COMMANDS["pattern"] = (HELP, configure_pattern,
-run_pattern)`` in cli.py.
+run_pattern)`` in cli/app.py.
 """
 
 from __future__ import annotations
@@ -22,8 +22,9 @@ from .options import (_number, add_control_options, add_method_option, add_mode_
                       add_tube_options, check_side_option, scan_options_from_args,
                       tube_from_args)
 from ..errors import MissingDependencyError, ParameterError
-from ..shapes.mode_shape import mode_shape, plot_mode_shape
-from ..shapes.wall import export_vtk, render_pattern
+from ..figures.plots import plot_mode_shape, render_pattern
+from ..shapes.mode_shape import mode_shape
+from ..shapes.wall import export_vtk
 from ..bifurcation.scan import scan_modes
 
 HELP = "mode shape of the wrinkles at onset: 3D picture, plot and CSV, VTK mesh of the wall"

@@ -8,6 +8,11 @@ import inspect
 import time
 from pathlib import Path
 
+from ..errors import ParameterError
+from ..figures import FIGURES
+from ..figures.plots import render_pattern
+from ..shapes.mode_shape import mode_shape
+
 #: The paper's captions (quoted; Figure 7's caption in the paper repeats Figure 5's topic,
 #: while the text describes critical stretches: we show what the text describes).
 CAPTIONS = {
@@ -46,12 +51,9 @@ def configure_reproduce(parser: argparse.ArgumentParser) -> None:
 
 
 def run_reproduce(args) -> int:
-    from .app import FIGURES  # cli imports this module
-
     numbers = args.figures or sorted(FIGURES)
     unknown = sorted(set(numbers) - set(FIGURES))
     if unknown:
-        from ..errors import ParameterError
         raise ParameterError(f"figure {unknown[0]} is not reproduced; choose from"
                              f" {sorted(FIGURES)}")
     out = args.out
@@ -76,9 +78,6 @@ def run_reproduce(args) -> int:
 
 
 def _pattern(number: int, point, out: Path) -> tuple[str, Path]:
-    from ..shapes.mode_shape import mode_shape
-    from ..shapes.wall import render_pattern
-
     path = out / f"fig{number}-{point.name}.png"
     render_pattern(mode_shape((point.params, point.m, point.n)), path=path)
     return point, path

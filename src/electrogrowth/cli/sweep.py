@@ -8,9 +8,10 @@ import argparse
 import sys
 from pathlib import Path
 
-from .options import UsageError
-from ..errors import ElectrogrowthError
+from ..errors import ElectrogrowthError, UsageError
+from ..figures.phase_diagram import phase_diagram
 from ..sweep.file import load_config
+from ..sweep.run import compute_sweep
 
 EXTRA = "pip install 'electrogrowth[sweep]'"
 
@@ -59,7 +60,6 @@ def run_sweep(args) -> int:
     out = args.out if args.out is not None else Path(args.file.stem + ".zarr")
     if args.check:
         return _print_plan(config, out)
-    from ..sweep.unit import compute_sweep
     try:
         summary = compute_sweep(config, out, workers=args.workers, scheduler=args.scheduler,
                                 progress=not args.quiet,
@@ -73,7 +73,7 @@ def run_sweep(args) -> int:
 
 
 def _print_plan(config, out: Path) -> int:
-    from ..sweep.store import block_shape, check_same_sweep, grid_blocks
+    from ..sweep.store import block_shape, check_same_sweep, grid_blocks  # the sweep extra
     state = "new store"
     if out.exists():
         check_same_sweep(out, config)
@@ -105,8 +105,7 @@ def configure_plot(parser: argparse.ArgumentParser) -> None:
 
 def run_plot(args) -> int:
     _need_sweep_extra()
-    from ..figures.phase_diagram import phase_diagram
-    from ..sweep.store import open_results
+    from ..sweep.store import open_results  # the sweep extra (xarray, zarr)
     ds = open_results(args.store)
     dims = [d for d in ds["critical_value"].dims]
     x = args.x or dims[0]

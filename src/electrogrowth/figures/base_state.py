@@ -1,60 +1,18 @@
 """Figures 4 and 5 of the paper (Sec. 4.1): the base state of the grown, charged tube.
 
-Each figure is a pure function returning a :class:`FigureResult` (data table, matplotlib
-figure, headline numbers); ``FigureResult.save`` writes ``fig<N>.png`` and ``fig<N>.csv``.
-Figures are drawn with the object-oriented API on an Agg canvas: no pyplot, no global state.
+Each figure is a pure function returning a :class:`~.style.FigureResult` (data table,
+matplotlib figure, headline numbers); ``FigureResult.save`` writes ``fig<N>.png`` and
+``fig<N>.csv``.
 """
 
 from __future__ import annotations
 
-import dataclasses
-from pathlib import Path
-
 import numpy as np
-from matplotlib.figure import Figure
 
 from ..model.materials import Material, neo_hookean
 from ..model.params import TubeParameters
 from ..basestate.tube import solve_base_state, voltage_curve, voltage_threshold
-
-#: Line colours (colour-blind safe, Okabe-Ito) and the paper-like style of every figure.
-COLORS = ("#000000", "#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00")
-STYLE = {"font.size": 9, "axes.linewidth": 0.8, "lines.linewidth": 1.3,
-         "xtick.direction": "in", "ytick.direction": "in", "legend.frameon": False}
-
-
-@dataclasses.dataclass(frozen=True)
-class FigureResult:
-    """A reproduced figure: ``table`` rows under ``columns`` (the CSV), the figure, and the
-    ``headline`` numbers a test checks."""
-
-    number: int
-    columns: tuple[str, ...]
-    table: np.ndarray
-    figure: Figure
-    headline: dict[str, float]
-
-    def save(self, directory: str | Path, *, dpi: int = 200) -> list[Path]:
-        """Write fig<N>.png and fig<N>.csv into ``directory`` (created); return the paths."""
-        out = Path(directory)
-        out.mkdir(parents=True, exist_ok=True)
-        png, csv = out / f"fig{self.number}.png", out / f"fig{self.number}.csv"
-        self.figure.savefig(png, dpi=dpi)
-        np.savetxt(csv, self.table, delimiter=",", header=",".join(self.columns), comments="",
-                   fmt="%.15g")
-        return [png, csv]
-
-
-def _figure(width: float, height: float, rows: int, cols: int):
-    import matplotlib as mpl
-
-    with mpl.rc_context(STYLE):
-        fig = Figure(figsize=(width, height), layout="constrained")
-        axes = fig.subplots(rows, cols, squeeze=False)
-    for ax in axes.flat:
-        ax.tick_params(direction="in", top=True, right=True, labelsize=8)
-    return fig, axes
-
+from .style import COLORS, FigureResult, new_figure
 
 def figure4(*, outer_radius: float = 2.0, growths=(1.0, 1.1, 1.2), stretches=(0.9, 1.0, 1.2),
             material: Material | None = None, points: int | None = None,
@@ -74,7 +32,7 @@ def figure4(*, outer_radius: float = 2.0, growths=(1.0, 1.1, 1.2), stretches=(0.
     """
     material = material or neo_hookean()
     points = points or (40 if quick else 200)
-    fig, axes = _figure(7.0, 2.6, 1, len(stretches))
+    fig, axes = new_figure(7.0, 2.6, 1, len(stretches))
     rows, headline = [], {}
     for ax, lz in zip(axes[0], stretches):
         for color, g in zip(COLORS, growths):
@@ -125,7 +83,7 @@ def figure5(*, outer_radius: float = 2.0, growths=(1.0, 1.1), voltages=(0.0, 0.4
     """
     material = material or neo_hookean()
     points = points or (21 if quick else 101)
-    fig, axes = _figure(7.0, 2.3 * len(growths) + 0.3, len(growths), 3)
+    fig, axes = new_figure(7.0, 2.3 * len(growths) + 0.3, len(growths), 3)
     dashes = ("-", "--", "-.", ":")
     names = (r"$\sigma_{rr}$", r"$\sigma_{\theta\theta}$", r"$\sigma_{zz}$")
     rows, headline = [], {}

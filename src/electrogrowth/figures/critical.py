@@ -1,7 +1,7 @@
 """Figures 6-10 of the paper (Sec. 4.3-4.4): critical stretch, voltage and growth factor.
 
 Each figure is a pure function ``figure<N>(*, quick=False, ...)`` returning a
-:class:`ModeFigure` (a :class:`figures_base.FigureResult` that also keeps the computed
+:class:`ModeFigure` (a :class:`~.style.FigureResult` that also keeps the computed
 :class:`curves.Curve` objects and, for Figs. 9 and 10, the representative points of the
 paper's panels B). Every curve comes from :func:`curves.critical_curve`: a mode scan per
 grid point, the switches of the critical mode located exactly. Branches are labelled
@@ -22,14 +22,16 @@ import numpy as np
 
 from ..bifurcation.critical import critical_value
 from ..bifurcation.curves import Curve, critical_curve
-from .base_state import COLORS, FigureResult, _figure
+from ..outcomes import Kind, Status
+from .plots import plot_curve
+from .style import COLORS, FigureResult, new_figure
 from ..model.materials import Material, neo_hookean
 from ..model.params import TubeParameters
 from ..bifurcation.scan import ScanOptions, scan_modes
 from ..basestate.tube import voltage_threshold
 
 #: kind column of the CSVs.
-KIND_CODES = {"bifurcation": 0, "switch": 1, "threshold": 2, "failed": 3}
+KIND_CODES = {Kind.BIFURCATION: 0, Kind.SWITCH: 1, Kind.THRESHOLD: 2, Status.FAILED: 3}
 #: Mode ranges of every scan (extended automatically when the optimum is on an edge). The
 #: full figures scan m up to 64: near the voltage threshold the critical value first rises
 #: with m and then falls for m > 12 (a short-wavelength instability of the inner face), which
@@ -141,14 +143,14 @@ def figure6(*, radii=None, length: float = 1.0, material: Material | None = None
     a = _curve(base, "stretch", "outer_radius", radii, quick, side="compression",
                progress=progress)
     b = _curve(base, "voltage", "outer_radius", radii, quick, progress=progress)
-    fig, axes = _figure(7.0, 2.8, 1, 2)
-    a.plot(axes[0, 0])
-    b.plot(axes[0, 1])
+    fig, axes = new_figure(7.0, 2.8, 1, 2)
+    plot_curve(a, axes[0, 0])
+    plot_curve(b, axes[0, 1])
     _title(axes[0, 0], rf"(A) $g = 1$, $\bar V = 0$, $L = {length:g}$")
     _title(axes[0, 1], rf"(B) $g = 1$, $\lambda_z = 1$, $L = {length:g}$")
     headline = {}
     for name, c in (("lambda_cr", a), ("V_cr", b)):
-        grid = c.kind != "switch"
+        grid = c.kind != Kind.SWITCH
         for x, v, m, n in zip(c.x[grid], c.value[grid], c.m[grid], c.n[grid]):
             headline[f"{name}_Ro{x:g}"] = float(v)
             headline[f"m_{name}_Ro{x:g}"], headline[f"n_{name}_Ro{x:g}"] = float(m), float(n)
@@ -179,7 +181,7 @@ def figure7(*, radii=None, voltages=(0.4, 0.6), length: float = 1.0,
     radii = np.asarray(radii if radii is not None else
                        ((1.3, 1.4) if quick else np.round(np.arange(1.2, 2.0001, 0.05), 10)),
                        float)
-    fig, axes = _figure(7.0, 4.6, 2, len(voltages))
+    fig, axes = new_figure(7.0, 4.6, 2, len(voltages))
     curves, headline = [], {}
     for col, V in enumerate(voltages):
         for row, side in enumerate(("extension", "compression")):
@@ -188,9 +190,9 @@ def figure7(*, radii=None, voltages=(0.4, 0.6), length: float = 1.0,
                                material=material)
             c = _curve(p, "stretch", "outer_radius", radii, quick, side=side,
                        progress=progress)
-            c.plot(ax, color=COLORS[row])
+            plot_curve(c, ax, color=COLORS[row])
             curves.append(c)
-            grid = c.kind != "switch"
+            grid = c.kind != Kind.SWITCH
             for x, v, m, n in zip(c.x[grid], c.value[grid], c.m[grid], c.n[grid]):
                 headline[f"{side}_V{V:g}_Ro{x:g}"] = float(v)
                 headline[f"m_{side}_V{V:g}_Ro{x:g}"] = float(m)
@@ -221,7 +223,7 @@ def figure8(*, outer_radius: float = 1.4, lengths=(1.0, 1.5), stretch_max: float
     """
     material = material or neo_hookean()
     points = points or 36
-    fig, axes = _figure(4.2, 3.0, 1, 1)
+    fig, axes = new_figure(4.2, 3.0, 1, 1)
     ax = axes[0, 0]
     curves, headline = [], {}
     for color, L in zip(COLORS, lengths):
@@ -231,7 +233,7 @@ def figure8(*, outer_radius: float = 1.4, lengths=(1.0, 1.5), stretch_max: float
         grid = ([start * (1 + NUDGE), 1.0, 1.3] if quick else
                 np.union1d(start * (1 + NUDGE) + (stretch_max - start) * t, [1.0]))
         c = _curve(p, "voltage", "stretch", grid, quick, progress=progress)
-        c.plot(ax, color=color, label=rf"$L = {L:g}$")
+        plot_curve(c, ax, color=color, label=rf"$L = {L:g}$")
         curves.append(c)
         x_max, v_max = _maximum(c)
         headline[f"V_max_L{L:g}"], headline[f"lambda_at_max_L{L:g}"] = v_max, x_max
@@ -253,7 +255,7 @@ def _maximum(c: Curve) -> tuple[float, float]:
     branch refined by maximising that mode's critical value between its neighbours."""
     ok = _finite(c)
     i = int(np.argmax(np.where(ok, c.value, -np.inf)))
-    inside = 0 < i < len(c.x) - 1 and c.kind[i] == "bifurcation" and all(
+    inside = 0 < i < len(c.x) - 1 and c.kind[i] == Kind.BIFURCATION and all(
         (c.m[j], c.n[j]) == (c.m[i], c.n[i]) for j in (i - 1, i + 1))
     if not inside:
         return float(c.x[i]), float(c.value[i])
@@ -333,7 +335,7 @@ def figure9(*, outer_radius: float = 1.4, length: float = 1.0, voltages=(0.4, 0.
     """
     material = material or neo_hookean()
     points = points or (3 if quick else 30)
-    fig, axes = _figure(4.6, 3.2, 1, 1)
+    fig, axes = new_figure(4.6, 3.2, 1, 1)
     ax = axes[0, 0]
     curves, pts, headline = [], [], {}
     for color, V, prefix in zip(COLORS, voltages, "NMKJ"):
@@ -344,7 +346,7 @@ def figure9(*, outer_radius: float = 1.4, length: float = 1.0, voltages=(0.4, 0.
         grid = np.linspace(lo.value * (1 + NUDGE), hi.value * (1 - NUDGE), points)
         c = _curve(p, "growth", "stretch", grid, quick, progress=progress)
         curves.append(c)
-        c.plot(ax, color=color, label=rf"$\bar V = {V:g}$")
+        plot_curve(c, ax, color=color, label=rf"$\bar V = {V:g}$")
         chosen = representative_points(c, prefix)
         pts += chosen
         _mark(ax, chosen, color, "stretch")
@@ -379,7 +381,7 @@ def figure10(*, outer_radius: float = 1.4, length: float = 1.0, stretches=(1.0, 
     """
     material = material or neo_hookean()
     points = points or (3 if quick else 30)
-    fig, axes = _figure(4.6, 3.2, 1, 1)
+    fig, axes = new_figure(4.6, 3.2, 1, 1)
     ax = axes[0, 0]
     curves, pts, headline = [], [], {}
     for color, lz, prefix in zip(COLORS, stretches, "PQRS"):
@@ -390,7 +392,7 @@ def figure10(*, outer_radius: float = 1.4, length: float = 1.0, stretches=(1.0, 
         grid = vcr.value * (1 - NUDGE) * (1 - (1 - t) ** 2)
         c = _curve(p, "growth", "voltage", grid, quick, progress=progress)
         curves.append(c)
-        c.plot(ax, color=color, label=rf"$\lambda_z = {lz:g}$")
+        plot_curve(c, ax, color=color, label=rf"$\lambda_z = {lz:g}$")
         chosen = representative_points(c, prefix)
         pts += chosen
         _mark(ax, chosen, color, "voltage")
@@ -404,6 +406,3 @@ def figure10(*, outer_radius: float = 1.4, length: float = 1.0, stretches=(1.0, 
     cols, table = _table(curves)
     return ModeFigure(10, cols, table, fig, headline, tuple(curves), tuple(pts))
 
-
-#: Paper figure number -> function, for cli.FIGURES.
-FIGURES = {6: figure6, 7: figure7, 8: figure8, 9: figure9, 10: figure10}

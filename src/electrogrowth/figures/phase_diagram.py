@@ -21,6 +21,7 @@ from matplotlib.patches import Patch
 from scipy import ndimage
 
 from ..errors import ParameterError
+from ..outcomes import Kind, Status
 
 THRESHOLD, NONE, FAILED, PENDING = "threshold", "no instability", "failed", "pending"
 MAX_LABELS = 40
@@ -68,9 +69,9 @@ def outcomes(plane) -> np.ndarray:
     m, n = np.asarray(plane["m"].values), np.asarray(plane["n"].values)
     out = np.empty(status.shape, dtype=object)
     for idx in np.ndindex(status.shape):
-        if status[idx] == "ok":
-            out[idx] = ((int(m[idx]), int(n[idx])) if kind[idx] == "bifurcation"
-                        else THRESHOLD if kind[idx] == "threshold" else NONE)
+        if status[idx] == Status.OK:
+            out[idx] = ((int(m[idx]), int(n[idx])) if kind[idx] == Kind.BIFURCATION
+                        else THRESHOLD if kind[idx] == Kind.THRESHOLD else NONE)
         else:
             out[idx] = PENDING if status[idx] == "pending" else FAILED
     return out

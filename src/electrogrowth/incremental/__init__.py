@@ -1,1 +1,16 @@
-"""TODO"""
+"""The linearised (incremental) problem on a base state: is mode (m, n) at bifurcation?
+
+The Stroh matrix (:mod:`.stroh`), the Chebyshev tables of the base state that feed the
+compiled kernels (:mod:`.radial_table`), the compiled Riccati impedance kernel
+(:mod:`.impedance`, tableau in :mod:`.dop853`) and its slow SciPy twin
+(:mod:`.impedance_reference`), the independent Chebyshev collocation (:mod:`.collocation`),
+the short-wave half-space problem at a face (:mod:`.halfspace`), the accuracy policy
+(:mod:`.accuracy`) and the one entry point ``targets_for(method, rtol)`` (:mod:`.targets`).
+
+May import ``basestate``, ``model`` and ``errors``.
+"""
+
+from .accuracy import Accuracy
+from .targets import METHODS, Method, impedance_targets, targets_for, wavenumber
+
+__all__ = ["Accuracy", "METHODS", "Method", "impedance_targets", "targets_for", "wavenumber"]

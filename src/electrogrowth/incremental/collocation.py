@@ -42,11 +42,11 @@ import scipy.linalg
 import scipy.optimize
 
 from ..basestate.tube import solve_base_state
+from .._types import FloatArray
 from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
 from ..model.materials import MODULI_INDEX
 from ..model.params import CONTROLS, TubeParameters
 
-FloatArray = npt.NDArray[np.float64]
 #: A linear map from the 5 nodes - 2 unknowns (U_r, U_th, U_z, P, Phi) to nodal values.
 Operator = npt.NDArray[np.complex128]
 

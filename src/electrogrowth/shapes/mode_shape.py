@@ -33,13 +33,13 @@ import dataclasses
 import math
 
 import numpy as np
-import numpy.typing as npt
 from numpy.polynomial import chebyshev as cheb
 from scipy.integrate import solve_ivp
 from scipy.interpolate import CubicSpline
 
 from ..basestate.tube import BaseState, solve_base_state
 from ..bifurcation.critical import CriticalPoint
+from .._types import FloatArray
 from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
 from ..incremental.collocation import mode_shape_collocation
 from ..incremental.impedance import impedance_scale
@@ -48,8 +48,8 @@ from ..incremental.stroh import stroh_matrix
 from ..incremental.targets import Method, check_method, check_mode, wavenumber
 from ..model.materials import MODULI_INDEX
 from ..model.params import TubeParameters
+from ..outcomes import Kind
 
-FloatArray = npt.NDArray[np.float64]
 #: Components of the Stroh vector eta, in order (stroh.py, SIGN_PHI = -1).
 ETA_NAMES = ("U_r", "U_th", "U_z", "r_Delta_r", "r_Sigma_rr", "r_Sigma_rth", "r_Sigma_rz",
              "minus_Phi")
@@ -183,7 +183,7 @@ def mode_shape(critical: CriticalPoint | tuple[TubeParameters, int, int], *,
 
 def _unpack(critical) -> tuple[TubeParameters, int, int]:
     if isinstance(critical, CriticalPoint):
-        if critical.kind != "bifurcation":
+        if critical.kind != Kind.BIFURCATION:
             raise NoBifurcationFound(
                 f"the critical point is a {critical.kind} ({critical.solve_for} ="
                 f" {critical.value:.12g}): the axisymmetric state is lost before any"
@@ -335,49 +335,3 @@ def boundary_residual(eta: FloatArray) -> float:
     S = np.abs(eta[4:])
     top = S.max()
     return float(max(S[:, 0].max(), S[:, -1].max()) / top) if top > 0 else 0.0
-
-
-# -- plot ------------------------------------------------------------------------------------
-
-def describe(shape: ModeShape) -> str:
-    """One line: mode and tube, for titles and captions."""
-    p = shape.params
-    return (rf"$(m, n) = ({shape.m}, {shape.n})$, $\bar R_o = {p.outer_radius:g}$,"
-            rf" $L = {p.length:g}$, $g = {p.growth:.6g}$, $\lambda_z = {p.stretch:.6g}$,"
-            rf" $\bar V = {p.voltage:.6g}$, {p.material.name}")
-
-
-def plot_mode_shape(shape: ModeShape):
-    """U_r, U_th, U_z (left) and Phi (right) against the current radius r.
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-        Off-screen (Agg) figure; save it with ``fig.savefig(path)``.
-    """
-    import matplotlib as mpl
-    from matplotlib.figure import Figure
-
-    from ..figures.base_state import COLORS, STYLE
-
-    with mpl.rc_context(STYLE):
-        fig = Figure(figsize=(7.0, 2.9), layout="constrained")
-        left, right = fig.subplots(1, 2)
-        for color, name, label in zip(COLORS[1:], ("U_r", "U_th", "U_z"),
-                                      (r"$U_r$", r"$U_\theta$", r"$U_z$")):
-            left.plot(shape.r, getattr(shape, name), color=color, label=label)
-        right.plot(shape.r, shape.Phi, color=COLORS[0], label=r"$\Phi$")
-        if not shape.Phi.any():
-            right.text(0.5, 0.6, r"$\Phi \equiv 0$: no voltage, the potential decouples",
-                       transform=right.transAxes, ha="center", fontsize=8)
-        left.set_ylabel("displacement amplitude (max $|U| = 1$)")
-        right.set_ylabel(r"potential amplitude $\Phi$")
-        for ax in (left, right):
-            ax.axhline(0.0, color="0.6", lw=0.5)
-            ax.set_xlim(shape.r[0], shape.r[-1])
-            ax.set_xlabel(r"current radius $r / R_i$")
-            ax.tick_params(direction="in", top=True, right=True, labelsize=8)
-            ax.legend(loc="best", fontsize=8)
-        route = shape.route + (" (fallback)" if shape.note else "")
-        fig.suptitle(f"mode shape, {describe(shape)}; {route}", fontsize=8)
-    return fig

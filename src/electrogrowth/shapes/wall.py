@@ -1,6 +1,6 @@
-"""The wrinkled tube in 3D: surfaces, a rendered picture and a VTK mesh of the wall.
+"""The wrinkled tube in 3D: displacement on the wall, its surfaces and a VTK mesh of the wall.
 
-A mode shape (modes.py) gives the incremental fields of paper eq. incremental-solutions,
+A mode shape (shapes/mode_shape.py) gives the incremental fields of paper eq. incremental-solutions,
 
     u_r = U_r(r) cos(m th) cos(kz),  u_th = U_th(r) sin(m th) cos(kz),
     u_z = U_z(r) cos(m th) sin(kz),  phidot = Phi(r) cos(m th) cos(kz),
@@ -18,12 +18,11 @@ import math
 from pathlib import Path
 
 import numpy as np
-import numpy.typing as npt
 
+from .._types import FloatArray
 from ..errors import MissingDependencyError, ParameterError
-from .mode_shape import ModeShape, describe
+from .mode_shape import ModeShape
 
-FloatArray = npt.NDArray[np.float64]
 FACES = ("outer", "inner")
 
 
@@ -126,101 +125,6 @@ def wall_surface(shape: ModeShape, *, amplitude: float = 0.1, n_theta: int | Non
     ur, ut, uz, _ = displacement(shape, eta[:, None, :], th, z[None, :])
     x, y, zz = cartesian(r[None, :], th, z[None, :], a * ur, a * ut, a * uz)
     return Surface(x, y, zz, a * ur, th[:, 0].copy(), np.arange(z.size, dtype=float))
-
-
-def render_pattern(shape: ModeShape, *, amplitude: float = 0.1, path: str | Path | None = None,
-                   n_theta: int | None = None, n_z: int | None = None, dpi: int = 200):
-    """A 3D picture of the wrinkled tube, coloured by the radial displacement u_r.
-
-    The closed wall (outer face, top rim, inner face seen through the opening) is drawn as
-    one shaded matplotlib mplot3d surface with equal axes, like the paper's Figs. 9B, 10B.
-
-    Parameters
-    ----------
-    shape : ModeShape
-    amplitude : float
-        Largest displacement (units R_i; default 0.1).
-    path : str or Path, optional
-        Write a PNG there (parent directories created).
-    n_theta, n_z : int, optional
-        Grid resolution (see :func:`deformed_surface`).
-    dpi : int
-        Resolution of the PNG.
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-    """
-    import matplotlib as mpl
-    from matplotlib.colors import Normalize
-    from matplotlib.figure import Figure
-
-    from ..figures.base_state import STYLE
-
-    surf = wall_surface(shape, amplitude=amplitude, n_theta=n_theta, n_z=n_z)
-    peak = float(np.abs(surf.u_r).max()) or 1.0
-    norm, cmap = Normalize(-peak, peak), mpl.colormaps["RdBu_r"]
-    elev, azim = 28.0, -60.0
-    half = 1.02 * float(max(np.abs(surf.x).max(), np.abs(surf.y).max()))
-    height = float(np.ptp(surf.z))
-    side, top = 4.7, 0.55  # inches: the square 3D axes, room for the title
-    with mpl.rc_context(STYLE):
-        fig = Figure(figsize=(side / 0.84, side))
-        ax = fig.add_axes((0.0, 0.0, 0.84, 1.0), projection="3d")
-        rgb = cmap(norm(surf.u_r))
-        rgb[..., :3] *= _lighting(surf, elev, azim)[..., None]
-        ax.plot_surface(surf.x, surf.y, surf.z, facecolors=rgb, rstride=1, cstride=1,
-                        linewidth=0, antialiased=False, shade=False)
-        ax.set(xlim=(-half, half), ylim=(-half, half),
-               zlim=(float(surf.z.min()), float(surf.z.max())))
-        ax.view_init(elev=elev, azim=azim)
-        ax.set_axis_off()
-        ax.set_box_aspect((2 * half, 2 * half, height))
-        _fit(fig, ax, surf, side, top)
-        H = fig.get_size_inches()[1]
-        cax = fig.add_axes((0.86, 0.5 * (1 - top / H) - 0.3, 0.025, 0.6))
-        bar = fig.colorbar(mpl.cm.ScalarMappable(norm=norm, cmap=cmap), cax=cax)
-        bar.set_label(r"radial displacement $u_r / R_i$", fontsize=8)
-        bar.ax.tick_params(labelsize=7)
-        fig.suptitle(describe(shape) + f"\nwrinkle amplitude {amplitude:g} $R_i$",
-                     fontsize=8, y=1.0 - 0.08 / H, va="top")
-    if path is not None:
-        Path(path).parent.mkdir(parents=True, exist_ok=True)
-        fig.savefig(path, dpi=dpi)
-    return fig
-
-
-def _fit(fig, ax, surf: Surface, side: float, top: float) -> None:
-    """Zoom the (always square) 3D axes of ``side`` inches until the projected surface
-    fills 95 % of its width or height, and crop the figure to the picture plus ``top``
-    inches for the title: the axes may then reach beyond the figure's edges."""
-    from mpl_toolkits.mplot3d import proj3d
-
-    x, y, _ = proj3d.proj_transform(surf.x.ravel(), surf.y.ravel(), surf.z.ravel(),
-                                    ax.get_proj())
-    xy = ax.transAxes.inverted().transform(ax.transData.transform(np.column_stack([x, y])))
-    lo, hi = xy.min(axis=0), xy.max(axis=0)  # axes fractions; zoom scales about 0.5
-    zoom = 0.95 / float(max(hi - lo))
-    ax.set_box_aspect(None if ax.get_box_aspect() is None else ax.get_box_aspect(),
-                      zoom=zoom)
-    centre = 0.5 + zoom * (0.5 * (lo + hi) - 0.5)
-    picture = side * zoom * (hi[1] - lo[1]) / 0.95  # inches, with a 2.5 % margin each side
-    width, height = side / 0.84, picture + top
-    fig.set_size_inches(width, height)
-    left = side * (0.5 - centre[0])
-    bottom = 0.5 * picture - side * centre[1]
-    ax.set_position((left / width, bottom / height, side / width, side / height))
-
-
-def _lighting(surf: Surface, elev: float, azim: float) -> FloatArray:
-    """Soft Lambert shading: ambient + diffuse from a light above and to the left of the
-    viewer, with the outward normals of the closed wall (d/dth x d/ds)."""
-    P = np.stack([surf.x, surf.y, surf.z], axis=-1)
-    n = np.cross(np.gradient(P, axis=0), np.gradient(P, axis=1))
-    n /= np.maximum(np.linalg.norm(n, axis=-1, keepdims=True), 1e-300)
-    e, a = np.radians(elev + 25.0), np.radians(azim - 35.0)
-    light = np.array([np.cos(e) * np.cos(a), np.cos(e) * np.sin(a), np.sin(e)])
-    return 0.42 + 0.58 * np.clip(n @ light, 0.0, 1.0)
 
 
 def wall_mesh(shape: ModeShape, *, amplitude: float = 0.1, n_r: int = 17,

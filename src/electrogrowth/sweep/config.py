@@ -1,8 +1,8 @@
 """A sweep: a grid of tubes, the fixed parameters, the material and what to solve for.
 
 :class:`SweepConfig` validates itself; a mistake raises :class:`ConfigError`, which names
-the offending key (sweep_file.py adds the file and line). Read from a TOML file
-(sweep_file.py, docs/sweeps.md) with the tables::
+the offending key (sweep/file.py adds the file and line). Read from a TOML file
+(sweep/file.py, docs/sweeps.md) with the tables::
 
     [solve]     for = "growth" | "stretch" | "voltage"       (required)
                 side = "compression" | "extension"           (stretch only)
@@ -27,7 +27,7 @@ import math
 
 import numpy as np
 
-from ..errors import ElectrogrowthError, ParameterError
+from ..errors import ConfigError, ElectrogrowthError, ParameterError
 from ..model.materials import BUILTIN, material_by_name
 from ..incremental.accuracy import RTOL_RANGE
 from ..model.params import CONTROLS, SIDES, TubeParameters
@@ -36,18 +36,6 @@ from .unit import ScanSpec
 
 #: The TubeParameters fields a sweep can fix or vary.
 SWEEPABLE = ("outer_radius", "length", "growth", "stretch", "voltage")
-
-
-class ConfigError(ParameterError):
-    """A bad sweep file. ``key`` is the dotted path of the offending entry."""
-
-    def __init__(self, key: tuple[str, ...], reason: str, *, source: str = "",
-                 line: int | None = None):
-        self.key, self.reason, self.source, self.line = tuple(key), reason, source, line
-        where = ":".join(str(p) for p in (source, line) if p not in ("", None))
-        name = ".".join(self.key)
-        super().__init__(f"{where + ': ' if where else ''}{name + ': ' if name else ''}"
-                         f"{reason}")
 
 
 @dataclasses.dataclass(frozen=True)

@@ -4,7 +4,7 @@ Everything is checked before any work starts. A mistake raises
 :class:`sweep_config.ConfigError` naming the file, the line and the key, e.g.
 ``sweep.toml:18: grid.outer_radius: outer radius Rbar_o = 0.5 is out of range; ...``.
 tomllib keeps no positions, so the line is found by scanning the text for the key
-(:func:`line_of`). The tables and keys are listed in sweep_config.py and docs/sweeps.md.
+(:func:`line_of`). The tables and keys are listed in sweep/config.py and docs/sweeps.md.
 """
 
 from __future__ import annotations
@@ -17,9 +17,9 @@ from pathlib import Path
 import numpy as np
 
 from ..bifurcation.scan import ScanOptions
-from ..errors import ParameterError
+from ..errors import ConfigError, ParameterError
 from ..model.params import TubeParameters
-from .config import SWEEPABLE, ConfigError, SweepConfig, default_chunk
+from .config import SWEEPABLE, SweepConfig, default_chunk
 
 #: table -> allowed keys (None: free keys, checked by the table's own rules)
 TABLES = {"solve": ("for", "side", "rtol"), "modes": ("m", "n", "extend", "top"),

@@ -33,8 +33,10 @@ import numpy as np
 import xarray as xr
 import zarr
 
-from .. import __version__
-from .unit import ChunkResult, SweepError
+from importlib.metadata import version
+from ..errors import SweepError
+from ..outcomes import Kind, Status
+from .unit import ChunkResult
 from .config import SweepConfig, differences
 
 #: Coordinate attributes of the tube parameters.
@@ -135,7 +137,10 @@ class SweepStore:
         pts = result.points
         for name, (dtype, _, _) in POINT_VARIABLES.items():
             field = "value" if name == "critical_value" else name
-            values = np.array([getattr(p, field) for p in pts], dtype=dtype)
+            column = [getattr(p, field) for p in pts]
+            if dtype is object:  # enums stored as their plain values
+                column = [str(v) for v in column]
+            values = np.array(column, dtype=dtype)
             self.group[name][where] = values.reshape(shape)
         if self.ranks:
             for name, (dtype, fill, _) in RUNNER_VARIABLES.items():
@@ -152,9 +157,10 @@ class SweepStore:
         pending."""
         status = np.asarray(self.group["status"][...], dtype=object)
         kind = np.asarray(self.group["kind"][...], dtype=object)
-        outcome = np.where(status == "ok", kind, status)
+        outcome = np.where(status == Status.OK, kind, status)
         return {k: int((outcome == k).sum()) for k in
-                ("bifurcation", "threshold", "none", "failed", "error", "pending")}
+                (Kind.BIFURCATION, Kind.THRESHOLD, Kind.NONE, Status.FAILED, Status.ERROR,
+                 "pending")}
 
 
 def open_store(out: str | Path, config: SweepConfig, *, source_text: str = "") -> SweepStore:
@@ -260,7 +266,7 @@ def _coordinates(config: SweepConfig, source_text: str) -> xr.Dataset:
     material = config.build_material().name
     attrs = {"title": f"electrogrowth sweep: critical {what} ({material})",
              "solve_for": config.solve_for, "side": config.side or "",
-             "material": material, "electrogrowth_version": __version__,
+             "material": material, "electrogrowth_version": version("electrogrowth"),
              "sweep_config": config.to_json(), "sweep_file": source_text}
     return xr.Dataset(coords=coords, attrs=attrs)
 

@@ -9,16 +9,8 @@ Three layers, each thin over the one below:
 * :func:`compute_chunk` runs the points of one task, a block of the grid (a point takes
   from ~0.05 s to seconds, so the few milliseconds a task costs to schedule and to write
   are negligible).
-* :func:`compute_sweep` hands the tasks to a pool and writes every result to the Zarr
-  store (sweep_store.py) as it arrives; a killed sweep resumes where it stopped.
-
-Where the tasks run: one worker is in-process; several are a local process pool
-(``concurrent.futures.ProcessPoolExecutor``, spawn start method); an address is an
-existing ``dask.distributed`` cluster. The local pool is the standard library and starts
-in the time the workers take to import the package (the compiled kernel comes from
-numba's cache), with no scheduler, nanny or dashboard, and without importing dask at all;
-dask is used only for a real cluster. Both run the same :func:`compute_chunk`, and only
-this process writes the store, so workers need no shared file system.
+* :func:`~.run.compute_sweep` (run.py) hands the tasks to a pool and writes every result to
+  the Zarr store (store.py) as it arrives; a killed sweep resumes where it stopped.
 
 The parallelism is over grid points: every task runs the batch kernel on one thread
 (measured on 2 busy cores: 0.06 s a point on one thread, ~1 s on two).
@@ -28,19 +20,12 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import os
-import sys
 import time
-import uuid
-from pathlib import Path
 
-from ..errors import ElectrogrowthError, NoBifurcationFound
+from ..errors import NoBifurcationFound
+from ..outcomes import NO_MODE, Kind, Status, remedy, status_of
 from ..model.params import TubeParameters
 from ..bifurcation.scan import ScanOptions, scan_modes
-
-
-class SweepError(ElectrogrowthError, RuntimeError):
-    """The sweep as a whole cannot go on (store in use or of another sweep, lost cluster)."""
 
 
 @dataclasses.dataclass(frozen=True)
@@ -57,23 +42,25 @@ class ScanSpec:
 class PointResult:
     """The outcome at one grid point.
 
-    ``status`` is "ok" (``kind`` then says what was found: "bifurcation" in mode (m, n),
-    "threshold" where the axisymmetric state is lost first, or "none": no instability in
-    the range), "failed" (an electrogrowth error: no base state, no convergence; see
-    ``message``) or "error" (an unexpected exception, a bug: please report it).
-    ``runners_up`` holds (m, n, value) of the next modes to bifurcate.
+    ``status`` is OK (``kind`` then says what was found: BIFURCATION in mode (m, n),
+    THRESHOLD where the axisymmetric state is lost first, or NONE: no instability in
+    the range), FAILED (an electrogrowth error: no base state, no convergence; see
+    ``message`` and ``remedy``) or ERROR (an unexpected exception, a bug: please report it).
+    ``runners_up`` holds (m, n, value) of the next modes to bifurcate; (m, n) is NO_MODE
+    where no mode is critical.
     """
 
-    status: str
+    status: Status
     value: float = math.nan
-    m: int = -1
-    n: int = -1
-    kind: str = ""
+    m: int = NO_MODE[0]
+    n: int = NO_MODE[1]
+    kind: Kind | str = ""
     error_estimate: float = math.nan
     surface_instability: bool = False
     runners_up: tuple[tuple[int, int, float], ...] = ()
     message: str = ""
     seconds: float = math.nan
+    remedy: str = ""
 
 
 def compute_point(params: TubeParameters, spec: ScanSpec) -> PointResult:
@@ -92,15 +79,15 @@ def compute_point(params: TubeParameters, spec: ScanSpec) -> PointResult:
         res = scan_modes(params, spec.solve_for, side=spec.side, options=spec.options,
                          rtol=spec.rtol)
     except NoBifurcationFound as exc:
-        return PointResult("ok", kind="none", message=str(exc), seconds=took())
-    except ElectrogrowthError as exc:
-        return PointResult("failed", message=f"{type(exc).__name__}: {exc}", seconds=took())
-    except Exception as exc:  # noqa: BLE001 - failures are data; this one is a bug
-        return PointResult("error", message=f"internal error: {type(exc).__name__}: {exc}",
-                           seconds=took())
+        return PointResult(Status.OK, kind=Kind.NONE, message=str(exc), seconds=took())
+    except Exception as exc:  # noqa: BLE001 - failures are data
+        status = status_of(exc)
+        prefix = "" if status is Status.FAILED else "internal error: "
+        return PointResult(status, message=f"{prefix}{type(exc).__name__}: {exc}",
+                           seconds=took(), remedy=remedy(exc))
     c = res.critical
     return PointResult(
-        "ok", value=float(c.value), m=int(c.m), n=int(c.n), kind=c.kind,
+        Status.OK, value=float(c.value), m=int(c.m), n=int(c.n), kind=c.kind,
         error_estimate=float(c.error_estimate), surface_instability=res.surface_instability,
         runners_up=tuple((int(r.m), int(r.n), float(r.value)) for r in res.runners_up),
         seconds=took())
@@ -142,179 +129,3 @@ def compute_chunk(task: ChunkTask, threads: int | None = 1) -> ChunkResult:
         return compute_chunk(task, None)
     finally:
         numba.set_num_threads(before)
-
-
-# -- the driver ------------------------------------------------------------------------------
-
-@dataclasses.dataclass(frozen=True)
-class SweepSummary:
-    """What :func:`compute_sweep` did: chunk counts of this run, point counts of the store."""
-
-    out: Path
-    run: int
-    chunks: int
-    chunks_before: int
-    chunks_computed: int
-    counts: dict
-    seconds: float
-
-    def text(self) -> str:
-        c = self.counts
-        pts = sum(c.values())
-        done = ", ".join(f"{v} {k}" for k, v in c.items() if v and k != "pending")
-        line = (f"{self.out}: {pts} points ({done or 'none computed'}); computed"
-                f" {self.chunks_computed} of {self.chunks} chunks in {self.seconds:.1f} s")
-        if self.chunks_before:
-            line += f" ({self.chunks_before} done before)"
-        if c.get("error"):
-            line += (f"; {c['error']} points hit an internal error (a bug, see their"
-                     " message: please report it)")
-        return line
-
-
-def compute_sweep(config, out: str | Path, *, workers: int | None = None,
-                  scheduler: str | None = None, progress: bool = True,
-                  source_text: str = "") -> SweepSummary:
-    """Run the sweep ``config`` (a :class:`sweep_config.SweepConfig`) into the store ``out``.
-
-    Parameters
-    ----------
-    config : SweepConfig
-        The validated sweep.
-    out : path
-        The Zarr store. Created if missing; if it holds the same sweep only the chunks
-        without a completion mark are computed (resume); another sweep there is refused.
-    workers : int, optional
-        Local worker processes (default: the usable cores); 1 runs in this process.
-    scheduler : str, optional
-        Address of a dask.distributed scheduler (``tcp://host:8786``); ``workers`` is then
-        ignored.
-    progress : bool
-        A tqdm progress bar (points done, rate, ETA) on stderr.
-    source_text : str
-        The sweep file as written, kept in the store's attributes.
-
-    Raises
-    ------
-    SweepError
-        Another sweep in ``out``, the store in use, or the workers lost.
-    """
-    from . import store as sweep_store  # xarray and zarr: the sweep extra, imported only here
-
-    start = time.perf_counter()
-    store = sweep_store.open_store(out, config, source_text=source_text)
-    with store.locked():
-        pending = store.pending_chunks()
-        chunks = len(store.blocks)
-        run = store.next_run()
-        if workers is None:
-            workers = _usable_cores()
-        material = config.build_material()
-        tasks = [ChunkTask(i, tuple((s.start, s.stop) for s in store.blocks[i]),
-                           tuple(config.points(store.blocks[i], material)), config.spec)
-                 for i in pending]
-        bar = _progress_bar(config.size, config.size - sum(len(t.params) for t in tasks),
-                            progress)
-        results = _results(tasks, workers, scheduler)
-        try:
-            for result in results:
-                store.write_chunk(result, run)
-                bar.update(len(result.points))
-                if any(p.status != "ok" for p in result.points):
-                    bar.set_postfix_str(f"last failure: {_first_failure(result)}"[:60],
-                                        refresh=False)
-        finally:
-            results.close()  # stops the workers now if we are interrupted
-            bar.close()
-        counts = store.counts()
-    return SweepSummary(Path(out), run, chunks, chunks - len(tasks), len(tasks), counts,
-                        time.perf_counter() - start)
-
-
-def _first_failure(result: ChunkResult) -> str:
-    return next(p.message for p in result.points if p.status != "ok")
-
-
-def _usable_cores() -> int:
-    try:
-        return len(os.sched_getaffinity(0))
-    except (AttributeError, OSError):
-        return os.cpu_count() or 1
-
-
-def _progress_bar(total: int, initial: int, enabled: bool):
-    from tqdm import tqdm
-    return tqdm(total=total, initial=initial, unit="pt", desc="sweep", file=sys.stderr,
-                disable=not enabled, dynamic_ncols=True, smoothing=0.1,
-                mininterval=0.2 if sys.stderr.isatty() else 5.0)
-
-
-def _results(tasks: list[ChunkTask], workers: int, scheduler: str | None):
-    """Yield a ChunkResult per task, in completion order."""
-    if not tasks:
-        return
-    if scheduler is not None:
-        yield from _on_dask(tasks, scheduler)
-    elif workers <= 1:
-        for task in tasks:
-            yield compute_chunk(task)
-    else:
-        yield from _on_process_pool(tasks, workers)
-
-
-def _on_process_pool(tasks, workers):
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor, as_completed
-    from concurrent.futures.process import BrokenProcessPool
-
-    workers = min(workers, len(tasks))
-    pool = ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn"))
-    try:
-        futures = [pool.submit(compute_chunk, task) for task in tasks]
-        for future in as_completed(futures):
-            yield future.result()
-    except BrokenProcessPool:
-        _stop(pool)
-        raise SweepError("a worker process died (out of memory?); the finished chunks are"
-                         " saved: run the same command again to resume") from None
-    except BaseException:  # interrupted (or the consumer stopped): don't wait for workers
-        _stop(pool)
-        raise
-    pool.shutdown()
-
-
-def _stop(pool) -> None:
-    """Cancel the queued tasks and end the running ones now."""
-    if hasattr(pool, "terminate_workers"):  # Python >= 3.14
-        pool.terminate_workers()
-        return
-    for process in list((getattr(pool, "_processes", None) or {}).values()):
-        process.terminate()
-    pool.shutdown(wait=False, cancel_futures=True)
-
-
-def _on_dask(tasks, address):
-    try:
-        from distributed import Client, as_completed
-    except ImportError:
-        raise SweepError("--scheduler needs dask.distributed: pip install"
-                         " 'electrogrowth[sweep]'") from None
-    try:
-        client = Client(address, timeout="20s")
-    except (OSError, TimeoutError) as exc:
-        raise SweepError(f"cannot reach the dask scheduler at {address}: {exc}") from None
-    token = uuid.uuid4().hex[:8]
-    try:
-        futures = client.map(compute_chunk, tasks, pure=False,
-                             key=[f"electrogrowth-chunk-{t.index}-{token}" for t in tasks])
-        for future in as_completed(futures):
-            try:
-                result = future.result()
-            except Exception as exc:  # noqa: BLE001 - e.g. KilledWorker
-                raise SweepError(f"the cluster lost chunk {future.key}: {type(exc).__name__}:"
-                                 f" {exc}; the finished chunks are saved: run the same"
-                                 " command again to resume") from None
-            future.release()
-            yield result
-    finally:
-        client.close()

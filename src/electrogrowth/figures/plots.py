@@ -1,0 +1,187 @@
+"""Plots of computed results: a critical curve, a mode shape, the 3D wrinkled tube.
+
+The compute stages (bifurcation/, shapes/) return data; everything that draws lives in
+figures/. Each function returns an off-screen matplotlib figure (or axes).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import matplotlib as mpl
+import numpy as np
+from matplotlib.colors import Normalize
+from matplotlib.figure import Figure
+from mpl_toolkits.mplot3d import proj3d
+
+from ..bifurcation.curves import Curve
+from ..outcomes import NO_MODE
+from .._types import FloatArray
+from ..shapes.mode_shape import ModeShape
+from ..shapes.wall import Surface, wall_surface
+from .style import COLORS, STYLE
+
+SYMBOLS = {"stretch": r"\lambda_z", "voltage": r"\bar V", "outer_radius": r"\bar R_o",
+           "length": "L", "growth": "g"}
+CRITICAL = {"stretch": r"\lambda_{z,\rm cr}", "voltage": r"\bar V_{\rm cr}",
+            "growth": r"g_{\rm cr}"}
+
+
+def plot_curve(curve: Curve, ax=None, *, color: str = "k", label: str | None = None,
+               annotate: bool = True):
+    """Draw the curve on ``ax`` (a new figure when None) and return ``ax``.
+
+    Each branch is labelled "n, m" (the paper's order; "m+" when the scan hit its cap,
+    a surface instability) at its middle; switches are dots, the threshold a dashed
+    line.
+    """
+    if ax is None:
+        ax = Figure(figsize=(4.0, 3.0), layout="constrained").subplots()
+    first, k = True, 0
+    for (m, n), rows in curve.branches():
+        x, v = curve.x[rows], curve.value[rows]
+        if (m, n) == NO_MODE:
+            ax.plot(x, v, "--", color=color, lw=0.9)
+            continue
+        ax.plot(x, v, "-", color=color, label=label if first else None)
+        first = False
+        if annotate:
+            i = len(rows) // 2
+            xm, vm = (x[i], v[i]) if len(rows) > 2 else (x.mean(), v.mean())
+            cap = "+" if curve.surface[rows].any() else ""
+            ax.annotate(f"{n}, {m}{cap}", (xm, vm), xytext=(0, 4 if k % 2 else -10),
+                        textcoords="offset points", ha="center", fontsize=7, color=color)
+            k += 1
+    if curve.switches:
+        ax.plot([s.x for s in curve.switches] * 2,
+                [s.value for s in curve.switches] + [s.value_after for s in curve.switches],
+                "o", color=color, ms=2.5)
+    ax.set_xlabel(f"${SYMBOLS[curve.along]}$")
+    ax.set_ylabel(f"${CRITICAL[curve.solve_for]}$")
+    return ax
+
+
+def describe(shape: ModeShape) -> str:
+    """One line: mode and tube, for titles and captions."""
+    p = shape.params
+    return (rf"$(m, n) = ({shape.m}, {shape.n})$, $\bar R_o = {p.outer_radius:g}$,"
+            rf" $L = {p.length:g}$, $g = {p.growth:.6g}$, $\lambda_z = {p.stretch:.6g}$,"
+            rf" $\bar V = {p.voltage:.6g}$, {p.material.name}")
+
+
+def plot_mode_shape(shape: ModeShape):
+    """U_r, U_th, U_z (left) and Phi (right) against the current radius r.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Off-screen (Agg) figure; save it with ``fig.savefig(path)``.
+    """
+    with mpl.rc_context(STYLE):
+        fig = Figure(figsize=(7.0, 2.9), layout="constrained")
+        left, right = fig.subplots(1, 2)
+        for color, name, label in zip(COLORS[1:], ("U_r", "U_th", "U_z"),
+                                      (r"$U_r$", r"$U_\theta$", r"$U_z$")):
+            left.plot(shape.r, getattr(shape, name), color=color, label=label)
+        right.plot(shape.r, shape.Phi, color=COLORS[0], label=r"$\Phi$")
+        if not shape.Phi.any():
+            right.text(0.5, 0.6, r"$\Phi \equiv 0$: no voltage, the potential decouples",
+                       transform=right.transAxes, ha="center", fontsize=8)
+        left.set_ylabel("displacement amplitude (max $|U| = 1$)")
+        right.set_ylabel(r"potential amplitude $\Phi$")
+        for ax in (left, right):
+            ax.axhline(0.0, color="0.6", lw=0.5)
+            ax.set_xlim(shape.r[0], shape.r[-1])
+            ax.set_xlabel(r"current radius $r / R_i$")
+            ax.tick_params(direction="in", top=True, right=True, labelsize=8)
+            ax.legend(loc="best", fontsize=8)
+        route = shape.route + (" (fallback)" if shape.note else "")
+        fig.suptitle(f"mode shape, {describe(shape)}; {route}", fontsize=8)
+    return fig
+
+
+def render_pattern(shape: ModeShape, *, amplitude: float = 0.1, path: str | Path | None = None,
+                   n_theta: int | None = None, n_z: int | None = None, dpi: int = 200):
+    """A 3D picture of the wrinkled tube, coloured by the radial displacement u_r.
+
+    The closed wall (outer face, top rim, inner face seen through the opening) is drawn as
+    one shaded matplotlib mplot3d surface with equal axes, like the paper's Figs. 9B, 10B.
+
+    Parameters
+    ----------
+    shape : ModeShape
+    amplitude : float
+        Largest displacement (units R_i; default 0.1).
+    path : str or Path, optional
+        Write a PNG there (parent directories created).
+    n_theta, n_z : int, optional
+        Grid resolution (see :func:`deformed_surface`).
+    dpi : int
+        Resolution of the PNG.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    surf = wall_surface(shape, amplitude=amplitude, n_theta=n_theta, n_z=n_z)
+    peak = float(np.abs(surf.u_r).max()) or 1.0
+    norm, cmap = Normalize(-peak, peak), mpl.colormaps["RdBu_r"]
+    elev, azim = 28.0, -60.0
+    half = 1.02 * float(max(np.abs(surf.x).max(), np.abs(surf.y).max()))
+    height = float(np.ptp(surf.z))
+    side, top = 4.7, 0.55  # inches: the square 3D axes, room for the title
+    with mpl.rc_context(STYLE):
+        fig = Figure(figsize=(side / 0.84, side))
+        ax = fig.add_axes((0.0, 0.0, 0.84, 1.0), projection="3d")
+        rgb = cmap(norm(surf.u_r))
+        rgb[..., :3] *= _lighting(surf, elev, azim)[..., None]
+        ax.plot_surface(surf.x, surf.y, surf.z, facecolors=rgb, rstride=1, cstride=1,
+                        linewidth=0, antialiased=False, shade=False)
+        ax.set(xlim=(-half, half), ylim=(-half, half),
+               zlim=(float(surf.z.min()), float(surf.z.max())))
+        ax.view_init(elev=elev, azim=azim)
+        ax.set_axis_off()
+        ax.set_box_aspect((2 * half, 2 * half, height))
+        _fit(fig, ax, surf, side, top)
+        H = fig.get_size_inches()[1]
+        cax = fig.add_axes((0.86, 0.5 * (1 - top / H) - 0.3, 0.025, 0.6))
+        bar = fig.colorbar(mpl.cm.ScalarMappable(norm=norm, cmap=cmap), cax=cax)
+        bar.set_label(r"radial displacement $u_r / R_i$", fontsize=8)
+        bar.ax.tick_params(labelsize=7)
+        fig.suptitle(describe(shape) + f"\nwrinkle amplitude {amplitude:g} $R_i$",
+                     fontsize=8, y=1.0 - 0.08 / H, va="top")
+    if path is not None:
+        Path(path).parent.mkdir(parents=True, exist_ok=True)
+        fig.savefig(path, dpi=dpi)
+    return fig
+
+
+def _fit(fig, ax, surf: Surface, side: float, top: float) -> None:
+    """Zoom the (always square) 3D axes of ``side`` inches until the projected surface
+    fills 95 % of its width or height, and crop the figure to the picture plus ``top``
+    inches for the title: the axes may then reach beyond the figure's edges."""
+    x, y, _ = proj3d.proj_transform(surf.x.ravel(), surf.y.ravel(), surf.z.ravel(),
+                                    ax.get_proj())
+    xy = ax.transAxes.inverted().transform(ax.transData.transform(np.column_stack([x, y])))
+    lo, hi = xy.min(axis=0), xy.max(axis=0)  # axes fractions; zoom scales about 0.5
+    zoom = 0.95 / float(max(hi - lo))
+    ax.set_box_aspect(None if ax.get_box_aspect() is None else ax.get_box_aspect(),
+                      zoom=zoom)
+    centre = 0.5 + zoom * (0.5 * (lo + hi) - 0.5)
+    picture = side * zoom * (hi[1] - lo[1]) / 0.95  # inches, with a 2.5 % margin each side
+    width, height = side / 0.84, picture + top
+    fig.set_size_inches(width, height)
+    left = side * (0.5 - centre[0])
+    bottom = 0.5 * picture - side * centre[1]
+    ax.set_position((left / width, bottom / height, side / width, side / height))
+
+
+def _lighting(surf: Surface, elev: float, azim: float) -> FloatArray:
+    """Soft Lambert shading: ambient + diffuse from a light above and to the left of the
+    viewer, with the outward normals of the closed wall (d/dth x d/ds)."""
+    P = np.stack([surf.x, surf.y, surf.z], axis=-1)
+    n = np.cross(np.gradient(P, axis=0), np.gradient(P, axis=1))
+    n /= np.maximum(np.linalg.norm(n, axis=-1, keepdims=True), 1e-300)
+    e, a = np.radians(elev + 25.0), np.radians(azim - 35.0)
+    light = np.array([np.cos(e) * np.cos(a), np.cos(e) * np.sin(a), np.sin(e)])
+    return 0.42 + 0.58 * np.clip(n @ light, 0.0, 1.0)

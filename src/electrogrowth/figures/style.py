@@ -1,0 +1,52 @@
+"""The common look of every figure: colours, rc style, the figure factory and the result
+record of a reproduced paper figure.
+
+Figures are drawn with the object-oriented API on an Agg canvas: no pyplot, no global state.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from pathlib import Path
+
+import matplotlib as mpl
+import numpy as np
+from matplotlib.figure import Figure
+
+#: Line colours (colour-blind safe, Okabe-Ito) and the paper-like style of every figure.
+COLORS = ("#000000", "#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00")
+STYLE = {"font.size": 9, "axes.linewidth": 0.8, "lines.linewidth": 1.3,
+         "xtick.direction": "in", "ytick.direction": "in", "legend.frameon": False}
+
+
+@dataclasses.dataclass(frozen=True)
+class FigureResult:
+    """A reproduced figure: ``table`` rows under ``columns`` (the CSV), the figure, and the
+    ``headline`` numbers a test checks."""
+
+    number: int
+    columns: tuple[str, ...]
+    table: np.ndarray
+    figure: Figure
+    headline: dict[str, float]
+
+    def save(self, directory: str | Path, *, dpi: int = 200) -> list[Path]:
+        """Write fig<N>.png and fig<N>.csv into ``directory`` (created); return the paths."""
+        out = Path(directory)
+        out.mkdir(parents=True, exist_ok=True)
+        png, csv = out / f"fig{self.number}.png", out / f"fig{self.number}.csv"
+        self.figure.savefig(png, dpi=dpi)
+        np.savetxt(csv, self.table, delimiter=",", header=",".join(self.columns), comments="",
+                   fmt="%.15g")
+        return [png, csv]
+
+
+def new_figure(width: float, height: float, rows: int, cols: int):
+    """An off-screen figure of ``width`` x ``height`` inches with a rows x cols grid of axes
+    in the common style (ticks inside, on all four sides)."""
+    with mpl.rc_context(STYLE):
+        fig = Figure(figsize=(width, height), layout="constrained")
+        axes = fig.subplots(rows, cols, squeeze=False)
+    for ax in axes.flat:
+        ax.tick_params(direction="in", top=True, right=True, labelsize=8)
+    return fig, axes
