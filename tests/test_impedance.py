@@ -1,17 +1,25 @@
-"""The compiled impedance kernel against its slow SciPy twin, and its pole handling."""
+"""The compiled impedance kernel: against its slow SciPy twin, its pole handling, its DOP853
+tableau (SciPy's) and its fitted order of convergence."""
 
 import math
 
 import numpy as np
 import pytest
 
-from electrogrowth.bifurcation.critical import impedance_targets, wavenumber
-from electrogrowth.incremental.impedance import (integrate_one, physical_impedance, impedance_scale,
-                                     target_batch)
-from electrogrowth.incremental.impedance_reference import impedance_reference, target_reference
-from electrogrowth.model.params import TubeParameters
-from electrogrowth.incremental.radial_table import build_table, stack_tables
 from electrogrowth.basestate.tube import solve_base_state
+from electrogrowth.incremental import dop853
+from electrogrowth.incremental.impedance import (
+    impedance_scale,
+    integrate_fixed,
+    integrate_one,
+    physical_impedance,
+    target_batch,
+    target_serial,
+)
+from electrogrowth.incremental.impedance_reference import impedance_reference, target_reference
+from electrogrowth.incremental.radial_table import build_table, stack_tables
+from electrogrowth.incremental.targets import impedance_targets, wavenumber
+from electrogrowth.model.params import TubeParameters
 
 CASES = [  # (Rbar_o, L, g, lambda_z, Vbar, m, n)
     (1.4, 1.0, 1.0, 1.0, 0.0, 0, 1),
@@ -28,9 +36,8 @@ def _state(ro, L, g, lz, V, material=None):
 
 
 def _kernel(state, m, n, rtol=1e-12):
-    table = stack_tables([build_table(state)])
     k = wavenumber(state.params, n)
-    return integrate_one(float(m), k, *(a[0] for a in table), rtol, 20000)
+    return integrate_one(float(m), k, build_table(state), rtol, 20000)
 
 
 @pytest.mark.parametrize("case", CASES)
@@ -56,30 +63,74 @@ def test_kernel_impedance_is_the_papers_impedance(gent_mat):
 
 def test_table_reproduces_base_state():
     state = _state(2.0, 1.0, 1.3, 1.1, 0.5)
-    coef, degree, fmap, geom = stack_tables([build_table(state)])
+    table = build_table(state)
     R = np.linspace(1.0, 2.0, 13)
     x = (2 * R - 3.0) / 1.0
     from numpy.polynomial import chebyshev as C
+
     want = np.concatenate([state.moduli(R), state.pressure(R)[:, None]], axis=1)
-    got = np.stack([C.chebval(x, coef[0, fmap[0, f], :degree[0, fmap[0, f]]])
-                    for f in range(24)], axis=1)
+    got = np.stack([C.chebval(x, table.coef[table.fmap[f]]) for f in range(24)], axis=1)
     assert np.abs(got - want).max() <= 1e-13 * np.abs(want).max()
+    r = np.sqrt(table.inner_radius_sq + table.area_ratio * (R**2 - 1))
+    np.testing.assert_allclose(r, state.radius(R), rtol=1e-14)
 
 
 def test_batch_equals_one_by_one():
     states = [_state(1.4, 1.0, 1.0, 1.0, 0.4), _state(1.8, 1.0, 1.2, 0.9, 0.2)]
-    coef, degree, fmap, geom = stack_tables([build_table(s) for s in states])
+    tables = stack_tables([build_table(s) for s in states])
+    assert tables.coef.shape[0] == 2 and tables.n_funcs.dtype == np.int64
     modes = [(0, 1, 0), (3, 7, 1), (5, 2, 0), (1, 15, 1)]
     m = np.array([a for a, _, _ in modes], float)
     idx = np.array([t for _, _, t in modes])
     k = np.array([wavenumber(states[t].params, n) for _, n, t in modes])
-    f = np.empty(4)
-    status = np.empty(4, np.int64)
-    steps = np.empty(4, np.int64)
-    target_batch(m, k, idx, coef, degree, fmap, geom, 1e-12, 20000, f, status, steps)
+    f, status, steps = target_batch(m, k, idx, tables, 1e-12, 20000)
     one = [impedance_targets(states[t], [(mm, n)])[0] for mm, n, t in modes]
-    assert (status == 0).all()
+    assert (status == 0).all() and (steps > 0).all()
     np.testing.assert_array_equal(f, one)
+    serial = target_serial(m, k, idx, tables, 1e-12, 20000)
+    for a, b in zip(serial, (f, status, steps)):
+        np.testing.assert_array_equal(a, b)
+
+
+def test_dop853_tableau_is_scipys():
+    """Our DOP853 coefficients are SciPy's, bit for bit (the package never imports these)."""
+    from scipy.integrate._ivp import dop853_coefficients as ref
+
+    ns = ref.N_STAGES
+    assert dop853.N_STAGES == ns
+    for ours, theirs in [
+        (dop853.A, ref.A[:ns, :ns]),
+        (dop853.B, ref.B),
+        (dop853.C, ref.C[:ns]),
+        (dop853.E3, ref.E3),
+        (dop853.E5, ref.E5),
+    ]:
+        assert ours.shape == theirs.shape
+        assert ours.tobytes() == theirs.tobytes()
+
+
+def test_riccati_integration_is_of_order_8():
+    """Fixed steps h = (Rbar_o - 1) / N: the error of z~(Rbar_o) falls like h^p, p = 8.
+
+    Mode (0, 1) stays in chart J = {} and is smooth on the scale of the wall, so the window
+    N = 10..24 has errors from 2e-10 down to 2e-13, all far above round-off (~1e-15). The
+    next term of the error, O(h^9), lowers the slope fitted there to about 7.7 (the local
+    slopes climb from 7.6 to 7.8 towards 8), hence the band 7.4 <= p <= 8.5. A wrong
+    tableau falls far outside: the embedded 5th- and 3rd-order weights as B fit p = 5.0 and
+    3.0, and one entry of A off by 1e-4 relative fits p = 1.0. The converged impedance is
+    also the SciPy twin's.
+    """
+    state = _state(1.4, 1.0, 1.2, 1.0, 0.4)
+    table = build_table(state)
+    m, k = 0.0, wavenumber(state.params, 1)
+    exact = integrate_fixed(m, k, table, 512)
+    N = np.array([10, 12, 14, 16, 20, 24])
+    err = [np.linalg.norm(integrate_fixed(m, k, table, int(n)) - exact) for n in N]
+    p = -np.polyfit(np.log(N), np.log(err), 1)[0]
+    assert 7.4 <= p <= 8.5, p
+    z = physical_impedance(exact, 0, impedance_scale(m, k, state.r_o))
+    z_ref = impedance_reference(state, m, k, rtol=1e-12, atol=1e-14)
+    np.testing.assert_allclose(z, z_ref, rtol=1e-9, atol=1e-10 * np.abs(z_ref).max())
 
 
 def test_target_converges_with_tolerance():
@@ -114,12 +165,14 @@ def test_pole_of_impedance_is_not_a_root():
 
 def _pole_location():
     """Where det M1(r_o) = 0, i.e. 1/det z changes sign, by bisection on the kernel."""
+
     def inv_det(g):
         state = _state(1.4, 1.0, g, 1.0, 0.0)
         f, zc, chart, status, _ = _kernel(state, 0, 3)
         k = wavenumber(state.params, 3)
         z = physical_impedance(zc, chart, impedance_scale(0, k, state.r_o))
         return 1.0 / np.linalg.det(z)
+
     a, b = 2.25, 2.30
     for _ in range(30):
         c = 0.5 * (a + b)

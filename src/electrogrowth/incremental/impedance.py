@@ -20,44 +20,84 @@ it is continuous, bounded by 1, independent of the chart and zero exactly at bif
 S is scaled by s = max(1, |(m, k r_o)|) so that z~ is O(1) for every mode.
 
 Integration is in the reference radius R in [1, Rbar_o] (dr/dR = a R / r, a = g^3 /
-lambda_z) with Dormand-Prince 8(5,3) and per-member error control; the moduli come from a
-Chebyshev table (radial_table.py), so the kernel knows no material.
+lambda_z) with Dormand-Prince 8(5,3) (the tableau of dop853.py) and per-member error
+control; the moduli come from a Chebyshev table (radial_table.py), which crosses into the
+compiled code as one record (a RadialTable, or a TableStack for a batch), so the kernel
+knows no material.
 """
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numba as nb
 import numpy as np
-from scipy.integrate._ivp import dop853_coefficients as _dop
 
+from . import dop853
+from .radial_table import RadialTable
 from .stroh import stroh_matrix
 
-_NS = _dop.N_STAGES
-_A = np.ascontiguousarray(_dop.A[:_NS, :_NS])
-_B = np.ascontiguousarray(_dop.B)
-_C = np.ascontiguousarray(_dop.C[:_NS])
-_E3 = np.ascontiguousarray(_dop.E3)
-_E5 = np.ascontiguousarray(_dop.E5)
+_NS = dop853.N_STAGES
+_A = np.ascontiguousarray(dop853.A)
+_B = np.ascontiguousarray(dop853.B)
+_C = np.ascontiguousarray(dop853.C)
+_E3 = np.ascontiguousarray(dop853.E3)
+_E5 = np.ascontiguousarray(dop853.E5)
+_EXPONENT = -1.0 / dop853.ORDER  # step-size exponent of the error estimate
 
 SWITCH = 4.0  # leave a chart once an entry of z~ exceeds this (some chart has all <= ~1.5)
 
 #: status codes written by the kernel
 OK, MAX_STEPS, STEP_UNDERFLOW, NO_CHART = 0, 1, 2, 3
-STATUS_TEXT = {OK: "ok", MAX_STEPS: "too many steps", STEP_UNDERFLOW: "step size underflow",
-               NO_CHART: "no bounded impedance chart"}
+STATUS_TEXT = {
+    OK: "ok",
+    MAX_STEPS: "too many steps",
+    STEP_UNDERFLOW: "step size underflow",
+    NO_CHART: "no bounded impedance chart",
+}
+
+
+class _Work(NamedTuple):
+    """Scratch arrays of one integration, allocated once: a step allocates nothing."""
+
+    vals: np.ndarray  # (2 F,) the two Clenshaw recurrences of the F table functions
+    mod: np.ndarray  # (23,) the moduli at the current radius
+    G: np.ndarray  # (8, 8) the Stroh matrix
+    Gt: np.ndarray  # (8, 8) its blocks in the current chart, scaled
+    P: np.ndarray  # (4, 8) z~ [G~1 G~2]
+    perm: np.ndarray  # (8,) the current chart ...
+    mult: np.ndarray  # (8, 8) ... and its signs times the scaling of S
 
 
 @nb.njit(cache=True)
-def _base_at(R, coef, degree, fmap, geom, vals, mod):
+def _new_work(table):
+    return _Work(
+        np.empty(2 * table.coef.shape[0]),
+        np.empty(23),
+        np.empty((8, 8)),
+        np.empty((8, 8)),
+        np.empty((4, 8)),
+        np.empty(8, np.int64),
+        np.empty((8, 8)),
+    )
+
+
+@nb.njit(cache=True)
+def _radius(table, R):
+    """Current radius r(R) = sqrt(r_i^2 + a (R^2 - 1))."""
+    return np.sqrt(table.inner_radius_sq + table.area_ratio * (R * R - 1.0))
+
+
+@nb.njit(cache=True)
+def _base_at(R, table, vals, mod):
     """Fill mod[23] at R; return (p, r, w = (dr/dR)/r).
 
     One Clenshaw recurrence for all distinct functions at once (the coefficient rows are
     zero-padded), so the inner loop runs across functions and vectorises.
     """
-    ro = geom[0]
+    coef, fmap, ro = table.coef, table.fmap, table.outer_radius
     x2 = 2.0 * (2.0 * R - 1.0 - ro) / (ro - 1.0)
-    nf = int(geom[3])
-    width = coef.shape[1]
+    nf, width = coef.shape
     b1 = vals  # reuse scratch: vals[:nf] = b1, vals[nf:2nf] = b2
     for f in range(2 * nf):
         b1[f] = 0.0
@@ -70,8 +110,8 @@ def _base_at(R, coef, degree, fmap, geom, vals, mod):
         b1[f] = 0.5 * x2 * b1[f] - b1[nf + f] + coef[f, 0]
     for f in range(23):
         mod[f] = vals[fmap[f]]
-    r = np.sqrt(geom[1] + geom[2] * (R * R - 1.0))
-    return vals[fmap[23]], r, geom[2] * R / (r * r)
+    r = _radius(table, R)
+    return vals[fmap[23]], r, table.area_ratio * R / (r * r)
 
 
 @nb.njit(cache=True)
@@ -102,10 +142,11 @@ def _chart_setup(J, s, perm, mult):
 
 
 @nb.njit(cache=True)
-def _rhs(R, z, m, k, coef, degree, fmap, geom, vals, mod, G, perm, mult, Gt, P, out):
+def _rhs(R, z, m, k, table, work, out):
     """dz~/dR = w (G3 - z G1 - (z G1)^T - z G2 z), using G4 = -G1^T (G Hamiltonian)."""
-    p, r, w = _base_at(R, coef, degree, fmap, geom, vals, mod)
-    stroh_matrix(mod, p, m, k * r, G)
+    p, r, w = _base_at(R, table, work.vals, work.mod)
+    G, Gt, P, perm, mult = work.G, work.Gt, work.P, work.perm, work.mult
+    stroh_matrix(work.mod, p, m, k * r, G)
     for a in range(8):  # the blocks G~1, G~2 (rows 0-3) and G~3 (rows 4-7, cols 0-3)
         for b in range(8 if a < 4 else 4):
             Gt[a, b] = G[perm[a], perm[b]] * mult[a, b]
@@ -125,6 +166,54 @@ def _rhs(R, z, m, k, coef, degree, fmap, geom, vals, mod, G, perm, mult, Gt, P, 
                 acc -= P[i, 4 + q] * z[q, j]
             out[i, j] = w * acc
             out[j, i] = w * acc
+
+
+@nb.njit(cache=True)
+def _step(R, h, z, m, k, table, work, K, ztmp, znew):
+    """One DOP853 step of size h from (R, z), given K[0] = dz~/dR there.
+
+    Writes the 8th-order solution at R + h into ``znew`` and the stages into K[1..12],
+    K[12] = dz~/dR at (R + h, znew) being the last one of the error estimate.
+    """
+    for st in range(1, _NS):
+        for i in range(4):
+            for j in range(4):
+                acc = 0.0
+                for q in range(st):
+                    acc += _A[st, q] * K[q, i, j]
+                ztmp[i, j] = z[i, j] + h * acc
+        _rhs(R + _C[st] * h, ztmp, m, k, table, work, K[st])
+    for i in range(4):
+        for j in range(4):
+            acc = 0.0
+            for q in range(_NS):
+                acc += _B[q] * K[q, i, j]
+            znew[i, j] = z[i, j] + h * acc
+    _rhs(R + h, znew, m, k, table, work, K[_NS])
+
+
+@nb.njit(cache=True)
+def _error(h, z, znew, K, rtol):
+    """DOP853's error norm of a step (<= 1: accept), entry ij in units of
+    rtol (1 + max(|z_ij|, |znew_ij|))."""
+    e5 = 0.0
+    e3 = 0.0
+    for i in range(4):
+        for j in range(4):
+            a5 = 0.0
+            a3 = 0.0
+            for q in range(_NS + 1):
+                a5 += _E5[q] * K[q, i, j]
+                a3 += _E3[q] * K[q, i, j]
+            sc = rtol * (1.0 + max(abs(z[i, j]), abs(znew[i, j])))
+            e5 += (a5 / sc) ** 2
+            e3 += (a3 / sc) ** 2
+    err = 0.0
+    if e5 > 0.0 or e3 > 0.0:
+        err = h * e5 / np.sqrt((e5 + 0.01 * e3) * 16.0)
+    if not (np.isfinite(err) and np.all(np.isfinite(znew))):
+        err = 1e6  # overflow or NaN in a stage: retry with a smaller step
+    return err
 
 
 @nb.njit(cache=True)
@@ -210,26 +299,26 @@ def impedance_scale(m: float, k: float, r_o: float) -> float:
 
 
 @nb.njit(cache=True)
-def integrate_one(m, k, coef, degree, fmap, geom, rtol, max_steps, switch=SWITCH):
-    """Integrate one mode through the wall. Returns (f, z~, J, status, steps)."""
-    ro = geom[0]
-    s = impedance_scale(m, k, np.sqrt(geom[1] + geom[2] * (ro * ro - 1.0)))
+def integrate_one(m, k, table, rtol, max_steps):
+    """Integrate mode (m, k) through the wall of ``table`` (a RadialTable).
+
+    Adaptive steps with the local error of every entry of z~ below rtol (1 + |z~|), and a
+    change of chart whenever an entry of z~ exceeds SWITCH. Returns (f, z~, J, status,
+    steps): the target, the impedance in chart J at Rbar_o, the chart, a status code
+    (OK, MAX_STEPS, STEP_UNDERFLOW, NO_CHART; f is NaN unless OK) and the steps tried.
+    """
+    ro = table.outer_radius
+    s = impedance_scale(m, k, _radius(table, ro))
     z = np.zeros((4, 4))
     J, orient = 0, 1.0
-    mod = np.empty(23)
-    vals = np.empty(2 * coef.shape[0])
-    G = np.empty((8, 8))
-    Gt = np.empty((8, 8))
-    P = np.empty((4, 8))
-    perm = np.empty(8, np.int64)
-    mult = np.empty((8, 8))
-    _chart_setup(J, s, perm, mult)
+    work = _new_work(table)
+    _chart_setup(J, s, work.perm, work.mult)
     K = np.empty((_NS + 1, 4, 4))
     ztmp = np.empty((4, 4))
     znew = np.empty((4, 4))
     R = 1.0
     h = (ro - 1.0) / (4.0 + s)
-    _rhs(R, z, m, k, coef, degree, fmap, geom, vals, mod, G, perm, mult, Gt, P, K[0])
+    _rhs(R, z, m, k, table, work, K[0])
     steps = 0
     while R < ro:
         if steps >= max_steps:
@@ -239,47 +328,16 @@ def integrate_one(m, k, coef, degree, fmap, geom, rtol, max_steps, switch=SWITCH
         last = R + h >= ro
         if last:
             h = ro - R
-        for st in range(1, _NS):
-            for i in range(4):
-                for j in range(4):
-                    acc = 0.0
-                    for q in range(st):
-                        acc += _A[st, q] * K[q, i, j]
-                    ztmp[i, j] = z[i, j] + h * acc
-            _rhs(R + _C[st] * h, ztmp, m, k, coef, degree, fmap, geom, vals, mod, G, perm,
-                 mult, Gt, P, K[st])
-        for i in range(4):
-            for j in range(4):
-                acc = 0.0
-                for q in range(_NS):
-                    acc += _B[q] * K[q, i, j]
-                znew[i, j] = z[i, j] + h * acc
-        _rhs(R + h, znew, m, k, coef, degree, fmap, geom, vals, mod, G, perm, mult, Gt, P, K[_NS])
-        e5 = 0.0
-        e3 = 0.0
-        for i in range(4):
-            for j in range(4):
-                a5 = 0.0
-                a3 = 0.0
-                for q in range(_NS + 1):
-                    a5 += _E5[q] * K[q, i, j]
-                    a3 += _E3[q] * K[q, i, j]
-                sc = rtol * (1.0 + max(abs(z[i, j]), abs(znew[i, j])))
-                e5 += (a5 / sc) ** 2
-                e3 += (a3 / sc) ** 2
-        err = 0.0
-        if e5 > 0.0 or e3 > 0.0:
-            err = h * e5 / np.sqrt((e5 + 0.01 * e3) * 16.0)
-        if not (np.isfinite(err) and np.all(np.isfinite(znew))):
-            err = 1e6  # overflow or NaN in a stage: retry with a smaller step
+        _step(R, h, z, m, k, table, work, K, ztmp, znew)
+        err = _error(h, z, znew, K, rtol)
         steps += 1
         if err <= 1.0:
             R = ro if last else R + h
             for i in range(4):
                 for j in range(4):
                     z[i, j] = 0.5 * (znew[i, j] + znew[j, i])
-            h *= min(10.0, 0.9 * err ** (-1.0 / 8.0)) if err > 0.0 else 10.0
-            if np.max(np.abs(z)) > switch:
+            h *= min(10.0, 0.9 * err**_EXPONENT) if err > 0.0 else 10.0
+            if np.max(np.abs(z)) > SWITCH:
                 zn, Jn, sgn = _switch_chart(z, J)
                 if Jn < 0:
                     return np.nan, z, J, NO_CHART, steps
@@ -287,43 +345,82 @@ def integrate_one(m, k, coef, degree, fmap, geom, rtol, max_steps, switch=SWITCH
                     z[:, :] = zn
                     J = Jn
                     orient *= sgn
-                    _chart_setup(J, s, perm, mult)
-            _rhs(R, z, m, k, coef, degree, fmap, geom, vals, mod, G, perm, mult, Gt, P, K[0])
+                    _chart_setup(J, s, work.perm, work.mult)
+            _rhs(R, z, m, k, table, work, K[0])
         else:
-            h *= max(0.2, 0.9 * err ** (-1.0 / 8.0))
+            h *= max(0.2, 0.9 * err**_EXPONENT)
     return _target(z, J, orient), z, J, OK, steps
 
 
 @nb.njit(cache=True)
-def _target_member(b, m, k, table_index, coef, degree, fmap, geom, rtol, max_steps,
-                   out_f, out_status, out_steps):
-    t = table_index[b]
-    f, _, _, status, steps = integrate_one(m[b], k[b], coef[t], degree[t], fmap[t], geom[t],
-                                           rtol, max_steps)
-    out_f[b] = f
-    out_status[b] = status
-    out_steps[b] = steps
+def integrate_fixed(m, k, table, n_steps):
+    """z~(Rbar_o) of mode (m, k) after ``n_steps`` equal steps in chart J = {}.
 
-
-@nb.njit(parallel=True, cache=True)
-def target_batch(m, k, table_index, coef, degree, fmap, geom, rtol, max_steps,
-                 out_f, out_status, out_steps):
-    """Bifurcation target f for a batch of (mode, base state) pairs, in parallel.
-
-    ``table_index[b]`` selects the stacked base-state table of member b.
+    The steps of :func:`integrate_one` without error control or change of chart (so only
+    for modes whose impedance stays bounded there): the global error is O(h^8), h =
+    (Rbar_o - 1) / n_steps, which the tests fit.
     """
-    for b in nb.prange(m.shape[0]):
-        _target_member(b, m, k, table_index, coef, degree, fmap, geom, rtol, max_steps,
-                       out_f, out_status, out_steps)
+    ro = table.outer_radius
+    s = impedance_scale(m, k, _radius(table, ro))
+    z = np.zeros((4, 4))
+    work = _new_work(table)
+    _chart_setup(0, s, work.perm, work.mult)
+    K = np.empty((_NS + 1, 4, 4))
+    ztmp = np.empty((4, 4))
+    znew = np.empty((4, 4))
+    h = (ro - 1.0) / n_steps
+    for n in range(n_steps):
+        R = 1.0 + n * h
+        _rhs(R, z, m, k, table, work, K[0])
+        _step(R, h, z, m, k, table, work, K, ztmp, znew)
+        for i in range(4):
+            for j in range(4):
+                z[i, j] = 0.5 * (znew[i, j] + znew[j, i])
+    return z
 
 
 @nb.njit(cache=True)
-def target_serial(m, k, table_index, coef, degree, fmap, geom, rtol, max_steps,
-                  out_f, out_status, out_steps):
+def _member_table(tables, t):
+    """Table t of a TableStack, as the RadialTable it was stacked from."""
+    return RadialTable(
+        tables.coef[t, : tables.n_funcs[t]],
+        tables.fmap[t],
+        tables.outer_radius[t],
+        tables.inner_radius_sq[t],
+        tables.area_ratio[t],
+    )
+
+
+@nb.njit(cache=True)
+def _target_member(b, m, k, table_index, tables, rtol, max_steps, f, status, steps):
+    """Member b of a batch: target, status and steps into f[b], status[b], steps[b]."""
+    table = _member_table(tables, table_index[b])
+    f[b], _, _, status[b], steps[b] = integrate_one(m[b], k[b], table, rtol, max_steps)
+
+
+@nb.njit(parallel=True, cache=True)
+def target_batch(m, k, table_index, tables, rtol, max_steps):
+    """Bifurcation target f for a batch of (mode, base state) pairs, in parallel.
+
+    Member b is mode (m[b], k[b]) on table ``table_index[b]`` of the TableStack
+    ``tables``. Returns (f, status, steps), each of the batch's length (see
+    :func:`integrate_one`).
+    """
+    n = m.shape[0]
+    f, status, steps = np.empty(n), np.empty(n, np.int64), np.empty(n, np.int64)
+    for b in nb.prange(n):
+        _target_member(b, m, k, table_index, tables, rtol, max_steps, f, status, steps)
+    return f, status, steps
+
+
+@nb.njit(cache=True)
+def target_serial(m, k, table_index, tables, rtol, max_steps):
     """:func:`target_batch` on one thread: small batches do not pay the thread launch."""
-    for b in range(m.shape[0]):
-        _target_member(b, m, k, table_index, coef, degree, fmap, geom, rtol, max_steps,
-                       out_f, out_status, out_steps)
+    n = m.shape[0]
+    f, status, steps = np.empty(n), np.empty(n, np.int64), np.empty(n, np.int64)
+    for b in range(n):
+        _target_member(b, m, k, table_index, tables, rtol, max_steps, f, status, steps)
+    return f, status, steps
 
 
 def physical_impedance(z_chart: np.ndarray, chart: int, scale: float) -> np.ndarray:

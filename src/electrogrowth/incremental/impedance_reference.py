@@ -32,23 +32,32 @@ def impedance_rhs(state, m: float, k: float):
         z = y.reshape(4, 4)
         r = float(state.radius(R))
         mod = state.moduli(np.array(R))
-        _stroh(np.ascontiguousarray(mod, dtype=float), float(state.pressure(np.array(R))),
-               float(m), k * r, G)
+        _stroh(
+            np.ascontiguousarray(mod, dtype=float),
+            float(state.pressure(np.array(R))),
+            float(m),
+            k * r,
+            G,
+        )
         G1, G2, G3, G4 = G[:4, :4], G[:4, 4:], G[4:, :4], G[4:, 4:]
         return (a * R / r**2 * (G3 + G4 @ z - z @ G1 - z @ G2 @ z)).ravel()
 
     return rhs
 
 
-def impedance_reference(state, m: float, k: float, *, rtol: float = 1e-11,
-                        atol: float = 1e-13) -> np.ndarray:
+def impedance_reference(
+    state, m: float, k: float, *, rtol: float = 1e-11, atol: float = 1e-13
+) -> np.ndarray:
     """Conditional impedance z(r_o) of mode (m, k): the paper's method, unscaled."""
     ro = state.params.outer_radius
-    sol = solve_ivp(impedance_rhs(state, m, k), (1.0, ro), np.zeros(16), method="DOP853",
-                    rtol=rtol, atol=atol)
+    sol = solve_ivp(
+        impedance_rhs(state, m, k), (1.0, ro), np.zeros(16), method="DOP853", rtol=rtol, atol=atol
+    )
     if not sol.success or not np.all(np.isfinite(sol.y[:, -1])):
-        raise ConvergenceError(f"reference Riccati integration failed for mode m={m}, "
-                               f"k={k}: {sol.message} (a pole of the impedance?)")
+        raise ConvergenceError(
+            f"reference Riccati integration failed for mode m={m}, "
+            f"k={k}: {sol.message} (a pole of the impedance?)"
+        )
     return sol.y[:, -1].reshape(4, 4)
 
 

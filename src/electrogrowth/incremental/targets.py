@@ -67,22 +67,19 @@ def impedance_targets(state, modes, *, rtol: float = 1e-12,
                       max_steps: int = 20000) -> np.ndarray:
     """Kernel target f for many modes (rows (m, n)) on one base state."""
     modes = np.atleast_2d(np.asarray(modes, dtype=float))
-    table = build_table(state, tol=Accuracy(rtol).table)
-    coef, degree, fmap, geom = stack_tables([table])
-    nb_ = modes.shape[0]
+    tables = stack_tables([build_table(state, tol=Accuracy(rtol).table)])
+    count = modes.shape[0]
     k = modes[:, 1] * math.pi / (state.params.stretch * state.params.length)
-    f = np.empty(nb_)
-    status = np.empty(nb_, dtype=np.int64)
-    steps = np.empty(nb_, dtype=np.int64)
-    kernel = target_batch if nb_ >= PARALLEL_FROM else target_serial
-    kernel(np.ascontiguousarray(modes[:, 0]), k, np.zeros(nb_, dtype=np.int64), coef,
-           degree, fmap, geom, rtol, max_steps, f, status, steps)
+    m = np.ascontiguousarray(modes[:, 0])
+    kernel = target_batch if count >= PARALLEL_FROM else target_serial
+    f, status, _ = kernel(m, k, np.zeros(count, dtype=np.int64), tables, rtol, max_steps)
     bad = status != 0
     if bad.any():
         i = int(np.argmax(bad))
         raise ConvergenceError(
             f"impedance integration failed for mode (m, n) = ({modes[i, 0]:g}, "
-            f"{modes[i, 1]:g}): {STATUS_TEXT[int(status[i])]}")
+            f"{modes[i, 1]:g}): {STATUS_TEXT[int(status[i])]}"
+        )
     return f
 
 
