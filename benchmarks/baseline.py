@@ -18,8 +18,8 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
-from electrogrowth.incremental.stroh import stroh_matrix_py
 from electrogrowth.basestate.tube import solve_base_state
+from electrogrowth.incremental.stroh import stroh_matrix_py
 
 
 def det_impedance(params, m: int, n: int, rtol: float) -> float:

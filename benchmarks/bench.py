@@ -114,7 +114,7 @@ def scaling() -> None:
         print(f"  {k:>5} modes: {t:.3f} s, {1e3 * t / k:.3f} ms per mode")
     rss = []
     for i, lz in enumerate(np.linspace(0.95, 1.3, 30)):
-        scan_modes(dataclasses.replace(POINT, stretch=float(lz)), "growth", 
+        scan_modes(dataclasses.replace(POINT, stretch=float(lz)), "growth",
                    options=ScanOptions((0, 8), (1, 10), extend=False))
         if i % 10 == 9:
             rss.append(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024)

@@ -7,9 +7,9 @@ import pytest
 from scipy.optimize import brentq
 
 from electrogrowth import NoBifurcationFound, ParameterError, TubeParameters
+from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.bifurcation.critical import critical_value, stable_sign
 from electrogrowth.incremental.targets import impedance_targets
-from electrogrowth.basestate.tube import solve_base_state
 
 
 def _f(params, m, n):

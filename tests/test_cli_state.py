@@ -10,11 +10,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from electrogrowth.basestate.tube import neo_hookean_asymptote, solve_base_state
 from electrogrowth.cli.app import main
 from electrogrowth.figures import FIGURES
 from electrogrowth.model.materials import gent
 from electrogrowth.model.params import TubeParameters
-from electrogrowth.basestate.tube import neo_hookean_asymptote, solve_base_state
 
 BASE = ["state", "--outer-radius", "2.0", "--growth", "1.1", "--stretch", "1.0"]
 

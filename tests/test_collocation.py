@@ -16,10 +16,20 @@ import pytest
 import scipy.optimize
 from scipy.special import ivp, kvp
 
-from electrogrowth.incremental import collocation as col
 from electrogrowth.errors import NoBifurcationFound, ParameterError
-from electrogrowth.model.materials import (I1, I2, I4, I5, I6, MODULI_INDEX, Material, gent,
-                                     mooney_rivlin, neo_hookean)
+from electrogrowth.incremental import collocation as col
+from electrogrowth.model.materials import (
+    I1,
+    I2,
+    I4,
+    I5,
+    I6,
+    MODULI_INDEX,
+    Material,
+    gent,
+    mooney_rivlin,
+    neo_hookean,
+)
 from electrogrowth.model.params import TubeParameters
 
 HALF_SPACE = 0.443745615894947  # lambda_z with lambda_z^{3/2} = root of x^3 + x^2 + 3x - 1
@@ -339,7 +349,7 @@ def test_growth_is_a_rescaling_of_the_critical_value():
     assert g_cr == pytest.approx(1 / lz_cr, abs=1e-11)
 
 
-# -- the base-state contract of electrogrowth.basestate.tube ------------------------------------------
+# -- the base-state contract of electrogrowth.basestate.tube ----------------------------------
 
 @pytest.mark.slow
 def test_agrees_with_the_tube_base_state():

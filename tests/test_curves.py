@@ -10,12 +10,12 @@ import numpy as np
 import pytest
 
 from electrogrowth.bifurcation.critical import critical_value
-from electrogrowth.cli.curve import configure_curve, run_curve
 from electrogrowth.bifurcation.curves import Switch, critical_curve
-from electrogrowth.errors import ParameterError
-from electrogrowth.model.params import TubeParameters
 from electrogrowth.bifurcation.scan import ScanOptions, scan_modes
+from electrogrowth.cli.curve import configure_curve, run_curve
+from electrogrowth.errors import ParameterError
 from electrogrowth.figures.plots import plot_curve
+from electrogrowth.model.params import TubeParameters
 
 SMALL = {"options": ScanOptions((0, 2), (1, 2))}  # the optimum on an edge extends the range
 

@@ -8,11 +8,11 @@ import dataclasses
 import numpy as np
 import pytest
 
+from electrogrowth.bifurcation.critical import critical_value
+from electrogrowth.bifurcation.scan import ScanOptions, scan_modes
 from electrogrowth.figures import FIGURES
 from electrogrowth.figures import critical as fm
-from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.model.params import TubeParameters
-from electrogrowth.bifurcation.scan import ScanOptions, scan_modes
 
 MODE_FIGURES = (6, 7, 8, 9, 10)
 

@@ -8,11 +8,11 @@ import pytest
 
 from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.incremental import dop853
+from electrogrowth.incremental.charts import physical_impedance
 from electrogrowth.incremental.impedance import (
     impedance_scale,
     integrate_fixed,
     integrate_one,
-    physical_impedance,
     target_batch,
     target_serial,
 )

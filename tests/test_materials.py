@@ -22,11 +22,24 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from electrogrowth.model import materials as materials
 from electrogrowth.errors import MaterialError, ParameterError
-from electrogrowth.model.materials import (I1, I2, I4, I5, I6, INVARIANTS, MODULI_INDEX,
-                                     MODULI_NAMES, Material, gent, material_by_name,
-                                     mooney_rivlin, neo_hookean, neo_hookean_moduli)
+from electrogrowth.model import materials as materials
+from electrogrowth.model.materials import (
+    I1,
+    I2,
+    I4,
+    I5,
+    I6,
+    INVARIANTS,
+    MODULI_INDEX,
+    MODULI_NAMES,
+    Material,
+    gent,
+    material_by_name,
+    mooney_rivlin,
+    neo_hookean,
+    neo_hookean_moduli,
+)
 
 R = sp.Rational
 
@@ -71,7 +84,7 @@ POINT_IDS = [f"pt{k}" for k in range(len(POINTS))]
 
 
 # ------------------------------------------------------------------ reference route
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _omega_mp(material: Material):
     return sp.lambdify(INVARIANTS, material.energy, "mpmath")
 
@@ -90,7 +103,7 @@ def _omega(f, x):
     return f(i1, (i1 * i1 - tr_c2) / 2, i4, i5, i6)
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _fd_derivatives(material: Material, point: tuple) -> tuple[np.ndarray, np.ndarray]:
     """Gradient (12,) and Hessian (12, 12) of Omega(F, D~) at the principal point."""
     l1, l2, l3, d = point
@@ -422,7 +435,7 @@ def test_materials_doctests():
 
 
 @pytest.mark.parametrize("combo", list(itertools.combinations(range(5), 2)),
-                         ids=lambda c: "I%d-I%d" % tuple((1, 2, 4, 5, 6)[k] for k in c))
+                         ids=lambda c: "I{}-I{}".format(*((1, 2, 4, 5, 6)[k] for k in c)))
 def test_cross_derivatives_enter_moduli(combo):
     """A single cross term c I_k I_l changes the moduli by a finite-difference-exact amount:
     guards the Omega_kl (k != l) part of the chain rule, term by term."""
@@ -435,7 +448,7 @@ def test_cross_derivatives_enter_moduli(combo):
     _assert_close(mat.moduli(*point), want)
 
 
-# ------------------------------------------------------------------ defects found while writing these tests, now fixed
+# -- defects found while writing these tests, now fixed --------------------------------------
 def test_energy_in_user_made_invariant_symbols():
     u1, u5 = sp.symbols("I1 I5")
     mat = Material("user", (u1 - 3) / 2 + u5 / 2)

@@ -8,13 +8,12 @@ import numpy as np
 import pytest
 
 from electrogrowth import ParameterError, TubeParameters
-from electrogrowth.errors import MissingDependencyError
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.cli.pattern import configure_pattern, run_pattern
-from electrogrowth.shapes.mode_shape import mode_shape
+from electrogrowth.errors import MissingDependencyError
 from electrogrowth.figures.plots import render_pattern
-from electrogrowth.shapes.wall import (deformed_surface, export_vtk, wall_mesh,
-                                       wall_surface)
+from electrogrowth.shapes.mode_shape import mode_shape
+from electrogrowth.shapes.wall import deformed_surface, export_vtk, wall_mesh, wall_surface
 
 _SHAPES = {}
 

@@ -4,8 +4,8 @@ import pytest
 
 from electrogrowth import ParameterError, TubeParameters
 from electrogrowth.bifurcation.critical import critical_value
-from electrogrowth.errors import NoBifurcationFound
 from electrogrowth.bifurcation.scan import ScanOptions, mode_grid, scan_modes
+from electrogrowth.errors import NoBifurcationFound
 
 P = TubeParameters(1.4, 1.0, stretch=1.0, voltage=0.4)
 

@@ -10,10 +10,22 @@ import pytest
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from electrogrowth.model.materials import (MODULI_INDEX, MODULI_NAMES, gent, mooney_rivlin,
-                                     neo_hookean, neo_hookean_moduli)
-from electrogrowth.incremental.stroh import (SIGN_DELTA, SIGN_PHI, neo_hookean_stroh_matrix,
-                                 stroh_blocks, stroh_matrix, stroh_matrix_py)
+from electrogrowth.incremental.stroh import (
+    SIGN_DELTA,
+    SIGN_PHI,
+    neo_hookean_stroh_matrix,
+    stroh_blocks,
+    stroh_matrix,
+    stroh_matrix_py,
+)
+from electrogrowth.model.materials import (
+    MODULI_INDEX,
+    MODULI_NAMES,
+    gent,
+    mooney_rivlin,
+    neo_hookean,
+    neo_hookean_moduli,
+)
 
 MATERIALS = {"neo-hookean": neo_hookean(), "gent5": gent(jm=5.0),
              "mooney-rivlin0.3": mooney_rivlin(0.3)}
@@ -102,7 +114,7 @@ def test_matches_sympy_derivation(derivation):
     rng = np.random.default_rng(3)
     cases = [(rng.uniform(0.2, 3.0, 23), rng.normal(), float(rng.integers(0, 9)),
               rng.uniform(0, 5)) for _ in range(10)]
-    for name, material in MATERIALS.items():
+    for material in MATERIALS.values():
         cases += [(mod, p, 5.0, 1.3) for *_, p, mod, _ in material_states(material, 3, 4)]
     for mod, p, m, kr in cases:
         ref = np.array(f(*mod, p, m, kr), dtype=float)

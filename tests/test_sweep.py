@@ -17,13 +17,13 @@ pytest.importorskip("zarr")
 
 import electrogrowth  # noqa: E402
 from electrogrowth import TubeParameters  # noqa: E402
+from electrogrowth.bifurcation.scan import ScanOptions  # noqa: E402
 from electrogrowth.cli import app as cli  # noqa: E402
 from electrogrowth.cli import sweep as cli_sweep  # noqa: E402
-from electrogrowth.bifurcation.scan import ScanOptions  # noqa: E402
-from electrogrowth.sweep.run import compute_sweep  # noqa: E402
-from electrogrowth.sweep.unit import ScanSpec, compute_point  # noqa: E402
 from electrogrowth.sweep.file import parse_config  # noqa: E402
+from electrogrowth.sweep.run import compute_sweep  # noqa: E402
 from electrogrowth.sweep.store import block_shape, grid_blocks, open_results  # noqa: E402
+from electrogrowth.sweep.unit import ScanSpec, compute_point  # noqa: E402
 
 TINY = """\
 [solve]

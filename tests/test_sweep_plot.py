@@ -10,11 +10,18 @@ pytest.importorskip("zarr")
 
 from electrogrowth.cli import app as cli  # noqa: E402
 from electrogrowth.cli import sweep as cli_sweep  # noqa: E402
-from electrogrowth.figures.phase_diagram import (THRESHOLD, boundaries, cell_edges,  # noqa: E402
-                                         outcomes, phase_diagram, regions, select_plane)
-from electrogrowth.sweep.unit import ChunkResult, PointResult  # noqa: E402
+from electrogrowth.figures.phase_diagram import (  # noqa: E402
+    THRESHOLD,
+    boundaries,
+    cell_edges,
+    outcomes,
+    phase_diagram,
+    regions,
+    select_plane,
+)
 from electrogrowth.sweep.file import parse_config  # noqa: E402
 from electrogrowth.sweep.store import open_results, open_store  # noqa: E402
+from electrogrowth.sweep.unit import ChunkResult, PointResult  # noqa: E402
 
 TOML = """\
 [solve]

@@ -1,4 +1,4 @@
-"""The axisymmetric base state (electrogrowth.basestate.tube) against closed forms, limits and twins.
+"""The axisymmetric base state (basestate/tube.py) against closed forms, limits and twins.
 
 The neo-Hookean closed forms below are written here, independently of the package, from
 docs/derivation-base-state.md; the "slow twins" integrate with scipy.integrate.quad in the
@@ -17,13 +17,17 @@ import sympy as sp
 from scipy.integrate import quad
 from scipy.optimize import brentq, minimize_scalar
 
-from electrogrowth.basestate import voltage as _voltage
 from electrogrowth.basestate import tube as tube
+from electrogrowth.basestate import voltage as _voltage
+from electrogrowth.basestate.tube import (
+    neo_hookean_asymptote,
+    solve_base_state,
+    voltage_curve,
+    voltage_threshold,
+)
 from electrogrowth.errors import BaseStateError
 from electrogrowth.model.materials import I1, I4, I5, I6, Material, gent, mooney_rivlin
 from electrogrowth.model.params import TubeParameters
-from electrogrowth.basestate.tube import (neo_hookean_asymptote, solve_base_state, voltage_curve,
-                                voltage_threshold)
 
 CASES = [  # (Rbar_o, g, lambda_z, Vbar)
     (2.0, 1.0, 1.0, 0.5), (2.0, 1.1, 0.9, 0.9), (2.0, 1.2, 1.2, 1.0), (1.3, 0.9, 1.1, 0.4),
@@ -373,7 +377,8 @@ def test_closed_form_route_matches_the_generic_route(twin, rng):
         p = params(Ro, g, lz, frac * neo_hookean_asymptote(params(Ro, g, lz, 0.0)))
         q = dataclasses.replace(p, material=twin)
         fast, slow = solve_base_state(p), solve_base_state(q)
-        assert tube.threshold_info(p).nodes == 0 and tube.threshold_info(q).nodes > 0  # two routes indeed
+        # two routes indeed
+        assert tube.threshold_info(p).nodes == 0 and tube.threshold_info(q).nodes > 0
         for name in ("lambda_i", "lambda_o", "r_i", "r_o", "charge", "voltage_threshold"):
             assert getattr(fast, name) == pytest.approx(getattr(slow, name), rel=1e-12), name
         assert fast.threshold_kind == slow.threshold_kind == "asymptote"

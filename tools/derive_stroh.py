@@ -3,7 +3,8 @@
 Run ``PYTHONPATH=src .venv/bin/python tools/derive_stroh.py`` to print the entries of G for
 generic moduli (the 23 symbols of ``materials.MODULI_NAMES``, plus p, m, k, r) and for the
 ideal neo-Hookean dielectric. The package does not import this file; the tests load it to
-compare ``electrogrowth.incremental.stroh`` with the derivation. The maths is in docs/derivation-stroh.md.
+compare ``electrogrowth.incremental.stroh`` with the derivation. The maths is in
+docs/derivation-stroh.md.
 
 Route (nothing is transcribed from the paper's Appendix B):
 

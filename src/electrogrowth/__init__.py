@@ -19,13 +19,32 @@ from .basestate.tube import BaseState, solve_base_state, voltage_curve, voltage_
 from .bifurcation.critical import CriticalPoint, critical_value
 from .bifurcation.curves import Curve, critical_curve
 from .bifurcation.scan import ScanOptions, ScanResult, scan_modes
-from .errors import (BaseStateError, ConfigError, ConvergenceError, ElectrogrowthError,
-                     MaterialError, MissingDependencyError, NoBifurcationFound, ParameterError,
-                     SweepError, UsageError)
+from .errors import (
+                     BaseStateError,
+                     ConfigError,
+                     ConvergenceError,
+                     ElectrogrowthError,
+                     MaterialError,
+                     MissingDependencyError,
+                     NoBifurcationFound,
+                     ParameterError,
+                     SweepError,
+                     UsageError,
+)
 from .incremental.accuracy import Accuracy
 from .incremental.targets import Method
-from .model.materials import (I1, I2, I4, I5, I6, Material, gent, material_by_name, mooney_rivlin,
-                              neo_hookean)
+from .model.materials import (
+                     I1,
+                     I2,
+                     I4,
+                     I5,
+                     I6,
+                     Material,
+                     gent,
+                     material_by_name,
+                     mooney_rivlin,
+                     neo_hookean,
+)
 from .model.params import TubeParameters
 from .outcomes import Kind, Status
 from .shapes.mode_shape import ModeShape, mode_shape

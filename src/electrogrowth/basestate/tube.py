@@ -27,11 +27,21 @@ import math
 import numpy as np
 from numpy.polynomial import chebyshev as cheb
 
-from .voltage import (GAUSS_ORDERS, Tube, cell_root, threshold_info, energy_kind, nh_asymptote, nh_lambda_i,
-                       nh_traction, nh_voltage)
 from ..errors import BaseStateError, ConvergenceError, ParameterError
 from ..model.materials import neo_hookean_moduli
 from ..model.params import TubeParameters
+from .voltage import (
+    GAUSS_ORDERS,
+    Tube,
+    cell_root,
+    energy_kind,
+    nh_asymptote,
+    nh_lambda_i,
+    nh_traction,
+    nh_voltage,
+    threshold_info,
+)
+
 
 def neo_hookean_asymptote(params: TubeParameters) -> float:
     """Neo-Hookean lim_{lambda_i -> inf} Vbar (material ignored), derived in the docs:
@@ -88,7 +98,7 @@ def voltage_curve(params: TubeParameters, lambda_i) -> np.ndarray:
     return np.maximum(v, 0.0).reshape(lam.shape)
 
 
-def solve_base_state(params: TubeParameters, *, rtol: float = 1e-12) -> "BaseState":
+def solve_base_state(params: TubeParameters, *, rtol: float = 1e-12) -> BaseState:
     """Solve the base state (paper Sec. 3.1) at the requested Vbar = ``params.voltage``.
 
     lambda_i solves Vbar(lambda_i) = Vbar on the monotone branch from lambda_i0 (Vbar = 0) to
@@ -143,7 +153,7 @@ def solve_base_state(params: TubeParameters, *, rtol: float = 1e-12) -> "BaseSta
     a, b = grid[k[0] - 1], grid[k[0]]
     for n in GAUSS_ORDERS[GAUSS_ORDERS.index(tube.nodes):]:
         tube = dataclasses.replace(tube, nodes=n)
-        lam = cell_root(lambda x: np.sign(v := tube.voltage(x)) * v**2 - target**2, a, b)
+        lam = cell_root(lambda x, t=tube: np.sign(v := t.voltage(x)) * v**2 - target**2, a, b)
         state = BaseState._build(params, tube, lam, info, rtol)
         if state.quadrature_error <= max(rtol, 1e-14):
             return state
@@ -176,7 +186,7 @@ class BaseState:
     _sigma: cheb.Chebyshev | None = dataclasses.field(default=None, repr=False, compare=False)
 
     @classmethod
-    def _build(cls, params, tube, lam, info, rtol) -> "BaseState":
+    def _build(cls, params, tube, lam, info, rtol) -> BaseState:
         """Chebyshev interpolants (degree doubled until the tail < rtol) of the integrands of
         sigma_rr = int_1^R (tau_2 - tau_1) dr/r, of N = pi int (2 tau_3 - tau_1 - tau_2) r dr
         (sigma_rr vanishes on both faces, so int sigma_rr r dr = -int (tau_2 - tau_1) r dr / 2)
@@ -210,7 +220,7 @@ class BaseState:
                    float(math.pi * force), float(error), tube, sigma)
 
     @classmethod
-    def _neo_hookean(cls, params, tube, lam, info) -> "BaseState":
+    def _neo_hookean(cls, params, tube, lam, info) -> BaseState:
         """Closed forms at lambda_i = lam: c from (V), N from (NH-4), and as quadrature_error
         the traction residual M - c^2 Delta / (2 r_i^2 r_o^2) of (*), M = (g / lz) m by (NH-6),
         over max(1, (g / lz) ln Rbar_o)."""

@@ -39,7 +39,7 @@ _QUIET = dict(invalid="ignore", divide="ignore", over="ignore")
 _RTOL_MIN = 4.0 * np.finfo(float).eps  # brentq's smallest rtol
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _gauss(n: int):
     return np.polynomial.legendre.leggauss(n)
 
@@ -86,7 +86,8 @@ class Tube:
         rule (x, w) on [-1, 1], default Gauss-Legendre with self.nodes points."""
         x, w = _gauss(self.nodes) if rule is None else rule
         h = 0.5 * (self.outer_radius - 1.0)
-        r, stretches, drdR = self.kinematics(np.asarray(lam_i, float)[..., None], 1.0 + h * (x + 1))
+        lam = np.asarray(lam_i, float)[..., None]
+        r, stretches, drdR = self.kinematics(lam, 1.0 + h * (x + 1))
         return r, stretches, np.sqrt(np.asarray(q, float))[..., None] / r, h * w * drdR
 
     def hoop(self, lam_i, q):
@@ -205,7 +206,8 @@ def _nodes(tube: Tube, lam: np.ndarray, rtol: float) -> int:
         for n, (a, s), (b, _) in zip(orders, hoops, hoops[1:]):
             if np.all(abs(a - b) <= 0.01 * rtol * s):
                 return n
-    raise ConvergenceError(f"quadrature not converged to rtol = {rtol} with {GAUSS_ORDERS[-1]} nodes")
+    raise ConvergenceError(f"quadrature not converged to rtol = {rtol} with"
+                           f" {GAUSS_ORDERS[-1]} nodes")
 
 
 def cell_root(f, a: float, b: float) -> float:

@@ -21,14 +21,14 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
+from ..basestate.tube import solve_base_state, voltage_threshold
 from ..errors import BaseStateError, ConvergenceError, NoBifurcationFound, ParameterError
 from ..model.params import TubeParameters
-from ..basestate.tube import solve_base_state, voltage_threshold
 
 FIRST_STEP, MIN_STEP, MAX_STEP, MAX_LAMBDA_JUMP = 0.004, 1e-4, 0.05, 0.05
 MAX_WAIT = 0.25
@@ -162,7 +162,9 @@ def first_bifurcations(params: TubeParameters, solve_for: str, side: str | None,
                              f"{solve_for} = {x0:g}; start from a stable state")
     fine = brent_targets or targets
     signed = lambda x, idx: sref[idx] * targets(solve_base_state(at(x)), modes[idx])  # noqa
-    signed_fine = lambda x, i: float(sref[i] * fine(solve_base_state(at(x)), modes[[i]])[0])
+    def signed_fine(x, i):
+        return float(sref[i] * fine(solve_base_state(at(x)), modes[[i]])[0])
+
     hist = _History(x0, g0, sense, scale)
     found, threshold = [], None
     x_prev, lam_prev, lam0, d = x0, state.lambda_i, state.lambda_i, FIRST_STEP
@@ -221,10 +223,10 @@ def _advance(hist, idx, x, g, signed, signed_fine, modes) -> list:
     dips = np.nonzero(~hit & (mid < 0.25 * np.minimum(old, g)))[0]
     for j in dips[np.argsort(mid[dips])][:8]:
         i = idx[j]
-        bracket = _dip(lambda y: signed_fine(y, i), hist.x[1, i], x)
+        bracket = _dip(lambda y, i=i: signed_fine(y, i), hist.x[1, i], x)
         if bracket is not None:
             found.append(ModeValue(int(modes[i, 0]), int(modes[i, 1]),
-                                   brent(lambda y: signed_fine(y, i), *bracket)))
+                                   brent(lambda y, i=i: signed_fine(y, i), *bracket)))
             hit[j] = True
     hist.alive[idx[hit]] = False
     hist.record(idx[~hit], x, g[~hit])
@@ -260,7 +262,7 @@ def _refine(signed, signed_fine, modes, cand, xa, x, x0) -> list:
         a, b = (a, c) if neg.any() else (c, b)
     out = []
     for i, l, h in zip(cand, lo, hi):
-        f = lambda y: signed_fine(y, i)  # noqa: E731
+        f = lambda y, i=i: signed_fine(y, i)  # noqa: E731
         if f(h) > 0:  # fine and loose disagree at h: fall back to the whole step
             if f(x) > 0:
                 out.append(None)

@@ -14,13 +14,20 @@ from pathlib import Path
 
 import numpy as np
 
-from .options import (_material, _number, add_control_options, add_mode_range_options,
-                      add_tube_options, check_side_option, scan_options_from_args)
 from ..bifurcation.curves import ALONG, check_curve, critical_curve
-from ..figures.plots import plot_curve
-from ..outcomes import Status
 from ..errors import ParameterError
+from ..figures.plots import plot_curve
 from ..model.params import TubeParameters
+from ..outcomes import Status
+from .options import (
+    _material,
+    _number,
+    add_control_options,
+    add_mode_range_options,
+    add_tube_options,
+    check_side_option,
+    scan_options_from_args,
+)
 
 #: How each parameter is described in the options' help (the paper's terms).
 MEANING = {

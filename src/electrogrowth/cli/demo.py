@@ -13,13 +13,13 @@ from pathlib import Path
 
 import numpy as np
 
+from ..basestate.tube import solve_base_state
 from ..bifurcation.curves import critical_curve
+from ..bifurcation.scan import scan_modes
 from ..figures.plots import plot_curve, render_pattern
 from ..figures.style import COLORS, new_figure
-from ..shapes.mode_shape import mode_shape
 from ..model.params import TubeParameters
-from ..bifurcation.scan import scan_modes
-from ..basestate.tube import solve_base_state
+from ..shapes.mode_shape import mode_shape
 
 HEADLINE = TubeParameters(outer_radius=1.4, length=1.0, growth=1.0, stretch=1.0, voltage=0.4)
 

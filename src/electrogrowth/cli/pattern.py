@@ -1,8 +1,8 @@
 """``electrogrowth pattern``: the wrinkling mode at onset, through the wall and in 3D.
 
 Finds the critical point (one mode with ``--mode M N``, else the first mode to bifurcate
-over a scan), computes its mode shape (shapes/mode_shape.py) and writes, on request, a 3D picture of
-the wrinkled tube, a plot and a CSV of the mode shape (``--out DIR``) and a VTK mesh of
+over a scan), computes its mode shape (shapes/mode_shape.py) and writes, on request, a 3D
+picture of the wrinkled tube, a plot and a CSV of the mode shape (``--out DIR``) and a VTK mesh of
 the wall (``--vtk FILE``). To register: ``COMMANDS["pattern"] = (HELP, configure_pattern,
 run_pattern)`` in cli/app.py.
 """
@@ -18,14 +18,21 @@ from pathlib import Path
 import numpy as np
 
 from ..bifurcation.critical import critical_value
-from .options import (_number, add_control_options, add_method_option, add_mode_range_options,
-                      add_tube_options, check_side_option, scan_options_from_args,
-                      tube_from_args)
+from ..bifurcation.scan import scan_modes
 from ..errors import MissingDependencyError, ParameterError
 from ..figures.plots import plot_mode_shape, render_pattern
 from ..shapes.mode_shape import mode_shape
 from ..shapes.wall import export_vtk
-from ..bifurcation.scan import scan_modes
+from .options import (
+    _number,
+    add_control_options,
+    add_method_option,
+    add_mode_range_options,
+    add_tube_options,
+    check_side_option,
+    scan_options_from_args,
+    tube_from_args,
+)
 
 HELP = "mode shape of the wrinkles at onset: 3D picture, plot and CSV, VTK mesh of the wall"
 

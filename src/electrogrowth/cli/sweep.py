@@ -81,8 +81,9 @@ def _print_plan(config, out: Path) -> int:
     blocks = grid_blocks(config.shape, block_shape(config.shape, config.chunk))
     grid = " x ".join(f"{name} ({len(v)}: {v[0]:g} .. {v[-1]:g})" for name, v in config.grid)
     print(f"{config.size} points: {grid}; critical {config.solve_for}"
-          f"{' (' + config.side + ')' if config.side else ''}, modes m {list(config.scan.m_range)},"
-          f" n {list(config.scan.n_range)}, rtol {config.rtol:g}; {len(blocks)} chunks of up to"
+          f"{' (' + config.side + ')' if config.side else ''},"
+          f" modes m {list(config.scan.m_range)}, n {list(config.scan.n_range)},"
+          f" rtol {config.rtol:g}; {len(blocks)} chunks of up to"
           f" {config.chunk} points; {out}: {state}")
     return 0
 

@@ -9,7 +9,7 @@ line of its docstring is its help text). To add a figure, write the function in 
 this package and add it here.
 """
 
-from typing import Callable
+from collections.abc import Callable
 
 from .base_state import figure4, figure5
 from .critical import figure6, figure7, figure8, figure9, figure10

@@ -9,10 +9,11 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..basestate.tube import solve_base_state, voltage_curve, voltage_threshold
 from ..model.materials import Material, neo_hookean
 from ..model.params import TubeParameters
-from ..basestate.tube import solve_base_state, voltage_curve, voltage_threshold
 from .style import COLORS, FigureResult, new_figure
+
 
 def figure4(*, outer_radius: float = 2.0, growths=(1.0, 1.1, 1.2), stretches=(0.9, 1.0, 1.2),
             material: Material | None = None, points: int | None = None,

@@ -20,15 +20,15 @@ from pathlib import Path
 
 import numpy as np
 
+from ..basestate.tube import voltage_threshold
 from ..bifurcation.critical import critical_value
 from ..bifurcation.curves import Curve, critical_curve
+from ..bifurcation.scan import ScanOptions, scan_modes
+from ..model.materials import Material, neo_hookean
+from ..model.params import TubeParameters
 from ..outcomes import Kind, Status
 from .plots import plot_curve
 from .style import COLORS, FigureResult, new_figure
-from ..model.materials import Material, neo_hookean
-from ..model.params import TubeParameters
-from ..bifurcation.scan import ScanOptions, scan_modes
-from ..basestate.tube import voltage_threshold
 
 #: kind column of the CSVs.
 KIND_CODES = {Kind.BIFURCATION: 0, Kind.SWITCH: 1, Kind.THRESHOLD: 2, Status.FAILED: 3}

@@ -2,10 +2,11 @@
 
 The Stroh matrix (:mod:`.stroh`), the Chebyshev tables of the base state that feed the
 compiled kernels (:mod:`.radial_table`), the compiled Riccati impedance kernel
-(:mod:`.impedance`, tableau in :mod:`.dop853`) and its slow SciPy twin
-(:mod:`.impedance_reference`), the independent Chebyshev collocation (:mod:`.collocation`),
-the short-wave half-space problem at a face (:mod:`.halfspace`), the accuracy policy
-(:mod:`.accuracy`) and the one entry point ``targets_for(method, rtol)`` (:mod:`.targets`).
+(:mod:`.impedance`, its charts in :mod:`.charts`, tableau in :mod:`.dop853`) and its slow
+SciPy twin (:mod:`.impedance_reference`), the independent Chebyshev collocation
+(:mod:`.collocation`), the short-wave half-space problem at a face (:mod:`.halfspace`),
+the accuracy policy (:mod:`.accuracy`) and the one entry point ``targets_for(method,
+rtol)`` (:mod:`.targets`).
 
 May import ``basestate``, ``model`` and ``errors``.
 """

@@ -3,9 +3,9 @@
 A user asks for one relative tolerance ``rtol`` (default 1e-12). Each stage needs its own
 accuracy, derived here and nowhere else:
 
-=====================  =================================  ===========================================
+=====================  =================================  =========================================
 name                   value                              why
-=====================  =================================  ===========================================
+=====================  =================================  =========================================
 ``fine``               rtol                               the kernel's local tolerance at the root
 ``coarse``             100 rtol                           a second resolution: the error estimate
 ``march_signs``        max(rtol, 1e-8)                    one mode's march only needs signs
@@ -18,7 +18,7 @@ name                   value                              why
 ``SCAN_STABLE_SIGNS``  1e-9                               signs of every mode on the unloaded tube
 ``runners_up``         max(rtol, 1e-9)                    the runners-up of a scan; the critical
                                                           mode is re-solved at ``fine``
-=====================  =================================  ===========================================
+=====================  =================================  =========================================
 """
 
 from __future__ import annotations

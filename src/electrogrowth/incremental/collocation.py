@@ -34,15 +34,15 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 import numpy.typing as npt
 import scipy.linalg
 import scipy.optimize
 
-from ..basestate.tube import solve_base_state
 from .._types import FloatArray
+from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
 from ..model.materials import MODULI_INDEX
 from ..model.params import CONTROLS, TubeParameters

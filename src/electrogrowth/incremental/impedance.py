@@ -33,19 +33,18 @@ from typing import NamedTuple
 import numba as nb
 import numpy as np
 
-from . import dop853
+from .charts import SWITCH, chart_setup, chart_target, switch_chart
+from .dop853 import E3, E5, N_STAGES, ORDER, A, B, C
 from .radial_table import RadialTable
 from .stroh import stroh_matrix
 
-_NS = dop853.N_STAGES
-_A = np.ascontiguousarray(dop853.A)
-_B = np.ascontiguousarray(dop853.B)
-_C = np.ascontiguousarray(dop853.C)
-_E3 = np.ascontiguousarray(dop853.E3)
-_E5 = np.ascontiguousarray(dop853.E5)
-_EXPONENT = -1.0 / dop853.ORDER  # step-size exponent of the error estimate
-
-SWITCH = 4.0  # leave a chart once an entry of z~ exceeds this (some chart has all <= ~1.5)
+_NS = N_STAGES
+_A = np.ascontiguousarray(A)
+_B = np.ascontiguousarray(B)
+_C = np.ascontiguousarray(C)
+_E3 = np.ascontiguousarray(E3)
+_E5 = np.ascontiguousarray(E5)
+_EXPONENT = -1.0 / ORDER  # step-size exponent of the error estimate
 
 #: status codes written by the kernel
 OK, MAX_STEPS, STEP_UNDERFLOW, NO_CHART = 0, 1, 2, 3
@@ -112,33 +111,6 @@ def _base_at(R, table, vals, mod):
         mod[f] = vals[fmap[f]]
     r = _radius(table, R)
     return vals[fmap[23]], r, table.area_ratio * R / (r * r)
-
-
-@nb.njit(cache=True)
-def _chart_perm(J, perm, sign):
-    """eta~_a = sign[a] * eta^_{perm[a]} for chart J (bit j set: swap pair j)."""
-    for j in range(4):
-        if (J >> j) & 1:
-            perm[j], sign[j] = 4 + j, 1.0
-            perm[4 + j], sign[4 + j] = j, -1.0
-        else:
-            perm[j], sign[j] = j, 1.0
-            perm[4 + j], sign[4 + j] = 4 + j, 1.0
-
-
-@nb.njit(cache=True)
-def _chart_setup(J, s, perm, mult):
-    """G~[a, b] = G[perm[a], perm[b]] * mult[a, b]: chart J and the scaling S -> S / s."""
-    sign = np.empty(8)
-    _chart_perm(J, perm, sign)
-    for a in range(8):
-        for b in range(8):
-            v = sign[a] * sign[b]
-            if perm[a] < 4 and perm[b] >= 4:
-                v *= s
-            elif perm[a] >= 4 and perm[b] < 4:
-                v /= s
-            mult[a, b] = v
 
 
 @nb.njit(cache=True)
@@ -217,82 +189,6 @@ def _error(h, z, znew, K, rtol):
 
 
 @nb.njit(cache=True)
-def _det4(a):
-    m = a.copy()
-    det = 1.0
-    n = a.shape[0]
-    for c in range(n):
-        piv = c
-        for i in range(c + 1, n):
-            if abs(m[i, c]) > abs(m[piv, c]):
-                piv = i
-        if m[piv, c] == 0.0:
-            return 0.0
-        if piv != c:
-            for j in range(n):
-                m[c, j], m[piv, j] = m[piv, j], m[c, j]
-            det = -det
-        det *= m[c, c]
-        for i in range(c + 1, n):
-            f = m[i, c] / m[c, c]
-            for j in range(c, n):
-                m[i, j] -= f * m[c, j]
-    return det
-
-
-@nb.njit(cache=True)
-def _switch_chart(z, J):
-    """Best chart for the subspace z~ (chart J); returns (z_new, J_new, sign of det W1)."""
-    X = np.zeros((8, 4))  # basis in hat coordinates: X = P_J^T [I; z]
-    perm = np.empty(8, np.int64)
-    sign = np.empty(8)
-    _chart_perm(J, perm, sign)
-    for a in range(8):
-        for c in range(4):
-            val = (1.0 if a == c else 0.0) if a < 4 else z[a - 4, c]
-            X[perm[a], c] += sign[a] * val
-    best, bestJ, bestsgn = np.inf, -1, 1.0
-    zbest = np.zeros((4, 4))
-    for Jn in range(16):
-        _chart_perm(Jn, perm, sign)
-        W1 = np.empty((4, 4))
-        W2 = np.empty((4, 4))
-        for a in range(4):
-            for c in range(4):
-                W1[a, c] = sign[a] * X[perm[a], c]
-                W2[a, c] = sign[4 + a] * X[perm[4 + a], c]
-        d = _det4(W1)
-        if not np.isfinite(d) or abs(d) < 1e-12:  # W1 (entries O(1)) not invertible
-            continue
-        zn = np.linalg.solve(W1.T, W2.T).T  # W2 W1^-1
-        size = np.max(np.abs(zn))
-        if size < best:
-            best, bestJ, bestsgn = size, Jn, np.sign(d)
-            zbest[:, :] = zn
-    return zbest, bestJ, bestsgn
-
-
-@nb.njit(cache=True)
-def _target(z, J, orient):
-    """f = orient * det(z[J', J']) / sqrt(det(I + z^T z))."""
-    idx = np.empty(4, np.int64)
-    n = 0
-    for j in range(4):
-        if not (J >> j) & 1:
-            idx[n] = j
-            n += 1
-    num = 1.0
-    if n > 0:
-        sub = np.empty((n, n))
-        for a in range(n):
-            for b in range(n):
-                sub[a, b] = z[idx[a], idx[b]]
-        num = _det4(sub)
-    M = np.eye(4) + z.T @ z
-    return orient * num / np.sqrt(_det4(M))
-
-
-@nb.njit(cache=True)
 def impedance_scale(m: float, k: float, r_o: float) -> float:
     """The scale s of S used by the kernel: max(1, |(m, k r_o)|)."""
     return max(1.0, np.sqrt(m * m + (k * r_o) ** 2))
@@ -312,7 +208,7 @@ def integrate_one(m, k, table, rtol, max_steps):
     z = np.zeros((4, 4))
     J, orient = 0, 1.0
     work = _new_work(table)
-    _chart_setup(J, s, work.perm, work.mult)
+    chart_setup(J, s, work.perm, work.mult)
     K = np.empty((_NS + 1, 4, 4))
     ztmp = np.empty((4, 4))
     znew = np.empty((4, 4))
@@ -338,18 +234,18 @@ def integrate_one(m, k, table, rtol, max_steps):
                     z[i, j] = 0.5 * (znew[i, j] + znew[j, i])
             h *= min(10.0, 0.9 * err**_EXPONENT) if err > 0.0 else 10.0
             if np.max(np.abs(z)) > SWITCH:
-                zn, Jn, sgn = _switch_chart(z, J)
+                zn, Jn, sgn = switch_chart(z, J)
                 if Jn < 0:
                     return np.nan, z, J, NO_CHART, steps
                 if Jn != J:
                     z[:, :] = zn
                     J = Jn
                     orient *= sgn
-                    _chart_setup(J, s, work.perm, work.mult)
+                    chart_setup(J, s, work.perm, work.mult)
             _rhs(R, z, m, k, table, work, K[0])
         else:
             h *= max(0.2, 0.9 * err**_EXPONENT)
-    return _target(z, J, orient), z, J, OK, steps
+    return chart_target(z, J, orient), z, J, OK, steps
 
 
 @nb.njit(cache=True)
@@ -364,7 +260,7 @@ def integrate_fixed(m, k, table, n_steps):
     s = impedance_scale(m, k, _radius(table, ro))
     z = np.zeros((4, 4))
     work = _new_work(table)
-    _chart_setup(0, s, work.perm, work.mult)
+    chart_setup(0, s, work.perm, work.mult)
     K = np.empty((_NS + 1, 4, 4))
     ztmp = np.empty((4, 4))
     znew = np.empty((4, 4))
@@ -421,19 +317,3 @@ def target_serial(m, k, table_index, tables, rtol, max_steps):
     for b in range(n):
         _target_member(b, m, k, table_index, tables, rtol, max_steps, f, status, steps)
     return f, status, steps
-
-
-def physical_impedance(z_chart: np.ndarray, chart: int, scale: float) -> np.ndarray:
-    """The paper's impedance z (S = z U) from the kernel's chart representation.
-
-    Infinite where the subspace is not a graph over U (a pole of z), which is exactly why
-    the kernel does not use it.
-    """
-    perm = np.empty(8, np.int64)
-    sign = np.empty(8)
-    _chart_perm(chart, perm, sign)
-    X = np.zeros((8, 4))
-    Y = np.vstack([np.eye(4), z_chart])
-    for a in range(8):
-        X[perm[a]] += sign[a] * Y[a]
-    return scale * X[4:] @ np.linalg.inv(X[:4])

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import enum
 import math
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 

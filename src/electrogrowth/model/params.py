@@ -57,7 +57,7 @@ class TubeParameters:
         for f in ("outer_radius", "length", "growth", "stretch", "voltage"):
             object.__setattr__(self, f, float(getattr(self, f)))
 
-    def at(self, name: str, value: float) -> "TubeParameters":
+    def at(self, name: str, value: float) -> TubeParameters:
         """This tube with the field ``name`` set to ``value`` (a control, or any field)."""
         return dataclasses.replace(self, **{name: float(value)})
 

@@ -37,9 +37,9 @@ from numpy.polynomial import chebyshev as cheb
 from scipy.integrate import solve_ivp
 from scipy.interpolate import CubicSpline
 
+from .._types import FloatArray
 from ..basestate.tube import BaseState, solve_base_state
 from ..bifurcation.critical import CriticalPoint
-from .._types import FloatArray
 from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
 from ..incremental.collocation import mode_shape_collocation
 from ..incremental.impedance import impedance_scale

@@ -1,6 +1,7 @@
 """The wrinkled tube in 3D: displacement on the wall, its surfaces and a VTK mesh of the wall.
 
-A mode shape (shapes/mode_shape.py) gives the incremental fields of paper eq. incremental-solutions,
+A mode shape (mode_shape.py) gives the incremental fields of paper eq.
+incremental-solutions,
 
     u_r = U_r(r) cos(m th) cos(kz),  u_th = U_th(r) sin(m th) cos(kz),
     u_z = U_z(r) cos(m th) sin(kz),  phidot = Phi(r) cos(m th) cos(kz),

@@ -27,11 +27,11 @@ import math
 
 import numpy as np
 
-from ..errors import ConfigError, ElectrogrowthError, ParameterError
-from ..model.materials import BUILTIN, material_by_name
-from ..incremental.accuracy import RTOL_RANGE
-from ..model.params import CONTROLS, SIDES, TubeParameters
 from ..bifurcation.scan import ScanOptions
+from ..errors import ConfigError, ElectrogrowthError, ParameterError
+from ..incremental.accuracy import RTOL_RANGE
+from ..model.materials import BUILTIN, material_by_name
+from ..model.params import CONTROLS, SIDES, TubeParameters
 from .unit import ScanSpec
 
 #: The TubeParameters fields a sweep can fix or vary.

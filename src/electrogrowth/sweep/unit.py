@@ -22,10 +22,10 @@ import dataclasses
 import math
 import time
 
-from ..errors import NoBifurcationFound
-from ..outcomes import NO_MODE, Kind, Status, remedy, status_of
-from ..model.params import TubeParameters
 from ..bifurcation.scan import ScanOptions, scan_modes
+from ..errors import NoBifurcationFound
+from ..model.params import TubeParameters
+from ..outcomes import NO_MODE, Kind, Status, remedy, status_of
 
 
 @dataclasses.dataclass(frozen=True)

@@ -1,0 +1,138 @@
+"""The 16 coordinate charts of the Lagrangian Grassmannian in which the kernel carries the
+impedance subspace (impedance.py), and the pole-free target read off any of them.
+
+Chart J exchanges (U_j, S_j) -> (S_j, -U_j) for j in J, a symplectic swap that keeps the
+Riccati form and the symmetry of z~; J = {} is the paper's impedance. The kernel leaves a
+chart once an entry of z~ exceeds SWITCH (some chart always has every entry <= ~1.5) and
+moves to the chart of the best-conditioned pivot. The target
+
+    f = sign(det U~) det(z~[J', J']) / sqrt(det(I + z~^T z~)),   J' = complement of J,
+
+is the same in every chart: det(M2) / sqrt(det(M^T M)) of the propagated basis M.
+"""
+
+from __future__ import annotations
+
+import numba as nb
+import numpy as np
+
+SWITCH = 4.0  # leave a chart once an entry of z~ exceeds this (some chart has all <= ~1.5)
+
+
+@nb.njit(cache=True)
+def chart_perm(J, perm, sign):
+    """eta~_a = sign[a] * eta^_{perm[a]} for chart J (bit j set: swap pair j)."""
+    for j in range(4):
+        if (J >> j) & 1:
+            perm[j], sign[j] = 4 + j, 1.0
+            perm[4 + j], sign[4 + j] = j, -1.0
+        else:
+            perm[j], sign[j] = j, 1.0
+            perm[4 + j], sign[4 + j] = 4 + j, 1.0
+
+
+@nb.njit(cache=True)
+def chart_setup(J, s, perm, mult):
+    """G~[a, b] = G[perm[a], perm[b]] * mult[a, b]: chart J and the scaling S -> S / s."""
+    sign = np.empty(8)
+    chart_perm(J, perm, sign)
+    for a in range(8):
+        for b in range(8):
+            v = sign[a] * sign[b]
+            if perm[a] < 4 and perm[b] >= 4:
+                v *= s
+            elif perm[a] >= 4 and perm[b] < 4:
+                v /= s
+            mult[a, b] = v
+
+
+@nb.njit(cache=True)
+def det4(a):
+    m = a.copy()
+    det = 1.0
+    n = a.shape[0]
+    for c in range(n):
+        piv = c
+        for i in range(c + 1, n):
+            if abs(m[i, c]) > abs(m[piv, c]):
+                piv = i
+        if m[piv, c] == 0.0:
+            return 0.0
+        if piv != c:
+            for j in range(n):
+                m[c, j], m[piv, j] = m[piv, j], m[c, j]
+            det = -det
+        det *= m[c, c]
+        for i in range(c + 1, n):
+            f = m[i, c] / m[c, c]
+            for j in range(c, n):
+                m[i, j] -= f * m[c, j]
+    return det
+
+
+@nb.njit(cache=True)
+def switch_chart(z, J):
+    """Best chart for the subspace z~ (chart J); returns (z_new, J_new, sign of det W1)."""
+    X = np.zeros((8, 4))  # basis in hat coordinates: X = P_J^T [I; z]
+    perm = np.empty(8, np.int64)
+    sign = np.empty(8)
+    chart_perm(J, perm, sign)
+    for a in range(8):
+        for c in range(4):
+            val = (1.0 if a == c else 0.0) if a < 4 else z[a - 4, c]
+            X[perm[a], c] += sign[a] * val
+    best, bestJ, bestsgn = np.inf, -1, 1.0
+    zbest = np.zeros((4, 4))
+    for Jn in range(16):
+        chart_perm(Jn, perm, sign)
+        W1 = np.empty((4, 4))
+        W2 = np.empty((4, 4))
+        for a in range(4):
+            for c in range(4):
+                W1[a, c] = sign[a] * X[perm[a], c]
+                W2[a, c] = sign[4 + a] * X[perm[4 + a], c]
+        d = det4(W1)
+        if not np.isfinite(d) or abs(d) < 1e-12:  # W1 (entries O(1)) not invertible
+            continue
+        zn = np.linalg.solve(W1.T, W2.T).T  # W2 W1^-1
+        size = np.max(np.abs(zn))
+        if size < best:
+            best, bestJ, bestsgn = size, Jn, np.sign(d)
+            zbest[:, :] = zn
+    return zbest, bestJ, bestsgn
+
+
+@nb.njit(cache=True)
+def chart_target(z, J, orient):
+    """f = orient * det(z[J', J']) / sqrt(det(I + z^T z))."""
+    idx = np.empty(4, np.int64)
+    n = 0
+    for j in range(4):
+        if not (J >> j) & 1:
+            idx[n] = j
+            n += 1
+    num = 1.0
+    if n > 0:
+        sub = np.empty((n, n))
+        for a in range(n):
+            for b in range(n):
+                sub[a, b] = z[idx[a], idx[b]]
+        num = det4(sub)
+    M = np.eye(4) + z.T @ z
+    return orient * num / np.sqrt(det4(M))
+
+
+def physical_impedance(z_chart: np.ndarray, chart: int, scale: float) -> np.ndarray:
+    """The paper's impedance z (S = z U) from the kernel's chart representation.
+
+    Infinite where the subspace is not a graph over U (a pole of z), which is exactly why
+    the kernel does not use it.
+    """
+    perm = np.empty(8, np.int64)
+    sign = np.empty(8)
+    chart_perm(chart, perm, sign)
+    X = np.zeros((8, 4))
+    Y = np.vstack([np.eye(4), z_chart])
+    for a in range(8):
+        X[perm[a]] += sign[a] * Y[a]
+    return scale * X[4:] @ np.linalg.inv(X[:4])
