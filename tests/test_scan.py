@@ -1,10 +1,13 @@
 """Mode scans: the batched march finds the same first mode as one-by-one solves."""
 
+import math
+
 import pytest
 
 from electrogrowth import ParameterError, TubeParameters
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.bifurcation.scan import ScanOptions, mode_grid, scan_modes
+from electrogrowth.bifurcation.surface import short_wave_limit
 from electrogrowth.errors import NoBifurcationFound
 
 P = TubeParameters(1.4, 1.0, stretch=1.0, voltage=0.4)
@@ -45,12 +48,22 @@ def test_range_is_widened_while_the_optimum_sits_on_its_edge():
 
 
 def test_extension_finds_bifurcation_before_the_threshold():
-    """Vbar = 0.4: modes wrinkle just before lambda_z reaches the threshold 2.5117."""
-    res = scan_modes(P, "stretch", side="extension", options=ScanOptions((0, 3), (1, 2)))
+    """Vbar = 0.4: finite modes wrinkle just before lambda_z reaches the threshold 2.5117;
+    the outer face's short-wave limit (half-space) comes before them all."""
+    finite = ScanOptions((0, 3), (1, 2), surface=False)
+    res = scan_modes(P, "stretch", side="extension", options=finite)
     assert res.critical.kind == "bifurcation"
     assert 2.49 < res.critical.value < 2.5117
     direct = critical_value(P, res.critical.m, res.critical.n, "stretch", side="extension")
     assert res.critical.value == pytest.approx(direct.value, rel=1e-12)
+    full = scan_modes(P, "stretch", side="extension", options=ScanOptions((0, 3), (1, 2)))
+    limit = short_wave_limit(P, "stretch", side="extension")
+    assert full.critical.kind == "surface" and full.critical.value == limit.value
+    assert (full.critical.face, full.critical.psi) == ("outer", 0.0)
+    assert full.critical.value < res.critical.value  # before every finite mode
+    first = full.runners_up[0]  # the best finite mode follows
+    assert (first.m, first.n, first.value) == (res.critical.m, res.critical.n,
+                                               res.critical.value)
 
 
 @pytest.mark.parametrize("kw, needle", [
@@ -66,21 +79,36 @@ def test_bad_side():
         scan_modes(P, "growth", side="up")
 
 
-def test_surface_instability_is_extrapolated_not_scanned_forever():
-    """Thick, long, compressed tube under voltage: the critical voltage keeps falling with n."""
+def test_surface_instability_is_computed_exactly_not_scanned_forever():
+    """Thick, long, compressed tube under voltage: the critical voltage keeps falling with n
+    up to the cap; the infimum is the inner face's half-space limit (wrinkles along z),
+    which the finite modes approach like 1/n."""
     p = TubeParameters(2.5, 3.0, stretch=0.8)
     res = scan_modes(p, "voltage", options=ScanOptions((0, 2), (1, 6)))
-    c = res.critical
-    assert res.surface_instability and res.n_range[1] == c.n >= 24
-    assert res.short_wave_limit < c.value  # the limit lies below every finite-n value
-    v2 = critical_value(p, c.m, 2 * c.n, "voltage").value
-    assert res.short_wave_limit < v2 < c.value
-    assert abs(res.short_wave_limit - v2) < 1.5 * abs(v2 - c.value)  # O(1/n) approach
-    assert res.short_wave_error < abs(v2 - c.value)
+    c, best = res.critical, res.runners_up[0]
+    assert res.surface_instability and c.kind == "surface" and c.m == c.n == -1
+    assert (c.face, c.psi) == ("inner", math.pi / 2)
+    assert res.n_range[1] == best.n >= 24  # the widened range, its optimum on the edge
+    assert res.short_wave_limit == c.value < best.value  # below every finite-n value
+    v2 = critical_value(p, best.m, 2 * best.n, "voltage").value
+    assert c.value < v2 < best.value
+    assert 0.4 < (v2 - c.value) / (best.value - c.value) < 0.6  # O(1/n): halves
+    assert res.short_wave_error < 1e-10
 
 
 def test_short_wave_beyond_the_range_is_found_by_probes():
-    """Vbar = 0.4, extension: critical stretch rises from m = 0 to 12, then falls with m."""
+    """Vbar = 0.4, extension: critical stretch rises from m = 0 to 12, then falls with m
+    towards the outer face's short-wave limit, which comes first."""
     res = scan_modes(P, "stretch", side="extension")
-    assert res.critical.m > 12 and res.surface_instability
-    assert res.short_wave_limit < res.critical.value < 2.4968  # below the (0, 1) value
+    best = res.runners_up[0]
+    assert best.m > 12 and res.surface_instability and res.critical.kind == "surface"
+    assert res.short_wave_limit == res.critical.value < best.value < 2.4968
+
+
+def test_no_short_wave_check_where_a_finite_mode_comes_first():
+    """The headline tube: growth is a rescaling, mode (0, 1) first; no limit computed."""
+    res = scan_modes(TubeParameters(1.4, 1.0, voltage=0.4), "growth")
+    assert res.critical.kind == "bifurcation" and (res.critical.m, res.critical.n) == (0, 1)
+    assert res.short_wave_limit is None and not res.surface_instability
+    limit = short_wave_limit(TubeParameters(1.4, 1.0, voltage=0.4), "growth")
+    assert limit.value > res.critical.value

@@ -32,8 +32,11 @@ from .march import brent, first_bifurcations
 class CriticalPoint:
     """Result of :func:`critical_value`.
 
-    ``kind`` is "bifurcation" (wrinkling in mode (m, n)) or "threshold" (the
-    axisymmetric base state is lost first, at ``value``).
+    ``kind`` is BIFURCATION (wrinkling in mode (m, n)), THRESHOLD (the axisymmetric base
+    state is lost first, at ``value``) or, from a scan, SURFACE: the short-wave limit
+    m, k -> infinity at ``face`` ("inner" or "outer") with the wave direction ``psi``
+    (radians; tan psi = k r / m: 0 wrinkles along theta, pi/2 along z). (m, n) is
+    NO_MODE unless the kind is BIFURCATION; ``as_dict`` gives null there.
     """
 
     solve_for: str
@@ -45,10 +48,15 @@ class CriticalPoint:
     method: str
     side: str | None
     params: TubeParameters
+    face: str | None = None
+    psi: float | None = None
 
     def as_dict(self) -> dict:
         p = self.params
-        return {"solve_for": self.solve_for, "value": self.value, "m": self.m, "n": self.n,
+        mode = self.kind == Kind.BIFURCATION
+        return {"solve_for": self.solve_for, "value": self.value,
+                "m": self.m if mode else None, "n": self.n if mode else None,
+                "face": self.face, "psi": self.psi,
                 "kind": self.kind, "error_estimate": self.error_estimate,
                 "method": self.method, "side": self.side, "material": p.material.name,
                 "outer_radius": p.outer_radius, "length": p.length, "growth": p.growth,

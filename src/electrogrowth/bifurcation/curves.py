@@ -28,8 +28,9 @@ import csv
 import dataclasses
 import functools
 import math
+from collections.abc import Callable, Iterable
 from pathlib import Path
-from typing import Callable, Iterable, NamedTuple
+from typing import NamedTuple
 
 import numpy as np
 
@@ -38,6 +39,7 @@ from ..model.params import CONTROLS, TubeParameters, check_side
 from ..outcomes import NO_MODE, Kind, Status
 from .critical import critical_value
 from .scan import ScanOptions, scan_modes
+from .surface import short_wave_limit
 
 #: The parameters a curve can run along (fields of TubeParameters).
 ALONG = ("stretch", "voltage", "outer_radius", "length", "growth")
@@ -60,11 +62,10 @@ class Switch(NamedTuple):
 
 @dataclasses.dataclass(frozen=True)
 class CurvePoint:
-    """One grid point: critical value and mode, kind "bifurcation", "threshold" or "failed"
-    (then ``status`` is the error message and value NaN), the runners-up (m, n, value), and
-    whether the critical mode sits on the upper edge of the scanned m or n range (a
-    short-wavelength, "surface", instability), with the scan's extrapolated limit of the
-    critical value as m or n -> inf when it gave one (else NaN)."""
+    """One grid point: critical value and mode, kind "bifurcation", "threshold", "surface"
+    or "failed" (then ``status`` is the error message and value NaN), the runners-up
+    (m, n, value), whether the critical point is the short-wave limit (``surface``), and
+    that limit where the scan computed it (else NaN)."""
 
     x: float
     value: float
@@ -85,11 +86,10 @@ def curve_point(params: TubeParameters, solve_for: str, along: str, x: float, *,
         return CurvePoint(float(x), math.nan, NO_MODE, Status.FAILED, _message(exc))
     c = res.critical
     mode = (c.m, c.n) if c.kind == Kind.BIFURCATION else NO_MODE
-    edge = c.kind == Kind.BIFURCATION and (c.m == res.m_range[1] or c.n == res.n_range[1])
     limit = res.short_wave_limit
     return CurvePoint(float(x), c.value, mode, c.kind, "",
                       tuple((r.m, r.n, r.value) for r in res.runners_up),
-                      bool(res.surface_instability or edge),
+                      bool(res.surface_instability),
                       math.nan if limit is None else float(limit))
 
 
@@ -106,10 +106,10 @@ class Curve:
     Rows are the grid points and, at every switch, two rows at the same x: the end of the
     branch before and the start of the branch after (kind "switch"). ``kind`` is
     "bifurcation" (mode m, n), "threshold" (m = n = -1: the axisymmetric state is lost
-    first), "switch" or "failed" (value NaN, ``status`` says why). ``surface`` marks rows
-    whose scan ended at the mode cap (m or n keeps lowering the critical value: a
-    short-wavelength instability; the value is that of the capped mode, an upper bound in
-    the order of the march).
+    first), "surface" (m = n = -1: the exact short-wave limit m, n -> infinity at a face
+    comes first), "switch" or "failed" (value NaN, ``status`` says why). ``surface`` marks
+    the rows of the short-wave limit; ``short_wave_limit`` holds the limit where the scan
+    computed it (NaN elsewhere).
     """
 
     along: str
@@ -301,12 +301,30 @@ class _Locator:
             self.known[key] = (c.value, c.kind)
         return self.known[key]
 
+    def value_of(self, pt: CurvePoint, x) -> float:
+        """The critical value at x of what is critical at ``pt``: its mode, or the
+        short-wave limit."""
+        if pt.kind != Kind.SURFACE:
+            return self.mode_value(pt.mode, x)[0]
+        key = ("surface", float(x))
+        if key not in self.known:
+            limit = short_wave_limit(self.params.at(self.along, x), self.solve_for,
+                                     side=self.side)
+            self.known[key] = (limit.value, limit.kind)
+        return self.known[key][0]
+
     def between(self, a: CurvePoint, b: CurvePoint, depth: int):
         """Rows and switches strictly between grid points a and b, in grid order."""
         self._remember(a)
         self._remember(b)
         try:
-            if NO_MODE in (a.mode, b.mode):
+            kinds = (a.kind, b.kind)
+            if Kind.SURFACE in kinds and Kind.THRESHOLD in kinds:  # bisect with scans
+                raise ElectrogrowthError("a switch between the short-wave limit and the"
+                                         " threshold")
+            if Kind.SURFACE in kinds:
+                found = self._crossing(a, b)
+            elif NO_MODE in (a.mode, b.mode):
                 found = self._threshold_switch(a, b)
             else:
                 found = self._crossing(a, b)
@@ -347,16 +365,16 @@ class _Locator:
         from scipy.optimize import brentq
 
         def d(x):
-            return self.sense * (self.mode_value(a.mode, x)[0] - self.mode_value(b.mode, x)[0])
+            return self.sense * (self.value_of(a, x) - self.value_of(b, x))
 
         if not d(a.x) < 0 < d(b.x):
             return None
         tol = 1e-13 * max(1.0, abs(a.x))
         x = brentq(d, a.x, b.x, xtol=tol, rtol=1e-14, maxiter=100)
-        va, vb = self.mode_value(a.mode, x)[0], self.mode_value(b.mode, x)[0]
+        va, vb = self.value_of(a, x), self.value_of(b, x)
         if abs(va - vb) > 1e-9 * max(1.0, abs(va)):  # a jump: one-sided values
             step = math.copysign(4 * tol, b.x - a.x)
-            va, vb = self.mode_value(a.mode, x - step)[0], self.mode_value(b.mode, x + step)[0]
+            va, vb = self.value_of(a, x - step), self.value_of(b, x + step)
         return x, va, vb
 
     def _scan_bisection(self, a, b):

@@ -7,8 +7,13 @@ signs right; the modes that change sign in a step are narrowed together by bisec
 finished by Brent's method at full accuracy. Marching on yields the runner-up modes.
 
 When the best mode sits on the edge of the range the range is doubled in that direction
-(up to a cap); if the critical value still falls with n (or m) at the cap, the result is
-flagged as a short-wavelength (surface) instability.
+(up to a cap). The infimum over all modes may be the short-wave limit m, k -> infinity, a
+surface instability of a face: it is computed exactly from the half-space problem
+(surface.py) when the best finite mode sits on the edge at the cap, when no finite mode
+bifurcates before the threshold (or at all), or when a face is already past its
+half-space instability at the best finite value. If it comes first, it is the result
+(kind SURFACE, with the face and the wave direction) and the best finite mode is the
+first runner-up.
 """
 
 from __future__ import annotations
@@ -18,16 +23,25 @@ import functools
 
 import numpy as np
 
-from ..errors import ParameterError
+from ..errors import NoBifurcationFound, ParameterError
 from ..incremental.accuracy import SCAN_SIGNS, SCAN_STABLE_SIGNS, Accuracy
 from ..incremental.targets import impedance_targets
 from ..model.params import TubeParameters, check_side
 from ..outcomes import NO_MODE, Kind
 from .critical import CriticalPoint, critical_value
 from .march import ModeValue, first_bifurcations, unloaded_signs
+from .surface import past_surface, short_wave_limit
+
 M_CAP, N_CAP = 64, 320
 DOUBLINGS = 2  # widen a range at most this often; an optimum still on its edge is a
                # short-wavelength (surface) instability, extrapolated instead of scanned
+
+
+def _surface_point(limit, side) -> CriticalPoint:
+    """The short-wave limit as the critical point of a scan."""
+    return CriticalPoint(limit.solve_for, limit.value, *NO_MODE, Kind.SURFACE,
+                         limit.error_estimate, "halfspace", side, limit.params,
+                         face=limit.face, psi=limit.psi)
 
 
 def _check_range(name, rng, lowest):
@@ -49,15 +63,18 @@ class ScanOptions:
     top : int
         Modes reported: the critical one and ``top - 1`` runners-up (top >= 1).
     extend : bool
-        Probe short waves beyond the ranges, widen a range while the optimum sits on its
-        upper edge (at most DOUBLINGS times, up to M_CAP, N_CAP), and extrapolate a
-        short-wave (surface) instability found there.
+        Probe short waves beyond the ranges and widen a range while the optimum sits on
+        its upper edge (at most DOUBLINGS times, up to M_CAP, N_CAP).
+    surface : bool
+        Compare with the exact short-wave limit (m, k -> infinity) at both faces, which is
+        the result when it comes first (see the module docstring).
     """
 
     m_range: tuple[int, int] = (0, 12)
     n_range: tuple[int, int] = (1, 30)
     top: int = 5
     extend: bool = True
+    surface: bool = True
 
     def __post_init__(self):
         for name, lowest in (("m", 0), ("n", 1)):
@@ -81,8 +98,8 @@ class ScanResult:
     runners_up: tuple[ModeValue, ...]
     m_range: tuple[int, int]
     n_range: tuple[int, int]
-    surface_instability: bool = False
-    short_wave_limit: float | None = None  # Richardson limit n (or m) -> inf, if surface
+    surface_instability: bool = False  # the critical point is the short-wave limit
+    short_wave_limit: float | None = None  # the exact limit m, k -> inf, where computed
     short_wave_error: float | None = None
 
     def as_dict(self) -> dict:
@@ -125,6 +142,25 @@ def scan_modes(params: TubeParameters, solve_for: str, *, side: str | None = Non
     ScanResult
     """
     side = check_side(solve_for, side)
+    try:
+        result, at_cap = _widened_scan(params, solve_for, side, options, rtol)
+    except NoBifurcationFound:
+        if not options.surface:
+            raise
+        limit = short_wave_limit(params, solve_for, side=side, rtol=rtol)
+        if limit.kind != Kind.SURFACE:
+            raise
+        crit = _surface_point(limit, side)
+        return ScanResult(crit, (), options.m_range, options.n_range, True, limit.value,
+                          limit.error_estimate)
+    if not options.surface:
+        return result
+    return _with_short_waves(params, solve_for, side, result, options.top, rtol, at_cap)
+
+
+def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
+    """The scan of the finite modes, its ranges widened towards short waves; and whether
+    its optimum still sits on the edge of a range at the cap."""
     m_range, n_range, top, extend = options.m_range, options.n_range, options.top, options.extend
     grown = {"m": 0, "n": 0}
     probes = extend
@@ -149,12 +185,8 @@ def scan_modes(params: TubeParameters, solve_for: str, *, side: str | None = Non
             m_range, grown["m"] = (m_range[0], min(2 * m_range[1] + 1, M_CAP)), grown["m"] + 1
         if grow["n"]:
             n_range, grown["n"] = (n_range[0], min(2 * n_range[1], N_CAP)), grown["n"] + 1
-    if not (extend and any(edge.values())) or (c.m == 0 and not edge["n"]):
-        return result
-    along = "n" if edge["n"] else "m"
-    limit, err = _short_wave_limit(params, solve_for, side, c.m, c.n, along, rtol)
-    return dataclasses.replace(result, surface_instability=True, short_wave_limit=limit,
-                               short_wave_error=err)
+    at_cap = extend and any(edge.values()) and not (c.m == 0 and not edge["n"])
+    return result, at_cap
 
 
 def scan_grid(m_range, n_range, probes: bool) -> np.ndarray:
@@ -175,14 +207,24 @@ def scan_grid(m_range, n_range, probes: bool) -> np.ndarray:
     return np.vstack([grid, np.array(extra, float).reshape(-1, 2)])
 
 
-def _short_wave_limit(params, solve_for, side, m, n, along, rtol):
-    """Critical value as n (or m) -> inf: the O(1/n) approach extrapolated from n, 2n, 4n."""
-    v = []
-    for j in (1, 2, 4):
-        mm, nn = (m, j * n) if along == "n" else (j * m, n)
-        v.append(critical_value(params, mm, nn, solve_for, side=side, rtol=rtol).value)
-    first, second = 2 * v[1] - v[0], 2 * v[2] - v[1]
-    return second, abs(second - first)
+def _with_short_waves(params, solve_for, side, result: ScanResult, top: int, rtol: float,
+                      at_cap: bool) -> ScanResult:
+    """``result``, or the exact short-wave limit if it comes first (module docstring)."""
+    c = result.critical
+    if c.kind == Kind.BIFURCATION and not at_cap and not past_surface(c.params):
+        return result
+    limit = short_wave_limit(params, solve_for, side=side, rtol=rtol)
+    if limit.kind != Kind.SURFACE:
+        return result
+    result = dataclasses.replace(result, short_wave_limit=limit.value,
+                                 short_wave_error=limit.error_estimate)
+    sense = -1.0 if side == "compression" else 1.0  # the direction of the march
+    if c.kind == Kind.BIFURCATION and (limit.value - c.value) * sense >= 0:
+        return result
+    crit = _surface_point(limit, side)
+    finite = (ModeValue(c.m, c.n, c.value),) if c.kind == Kind.BIFURCATION else ()
+    return dataclasses.replace(result, critical=crit, surface_instability=True,
+                               runners_up=(finite + result.runners_up)[:top - 1])
 
 
 def _scan_once(params, solve_for, side, m_range, n_range, top, rtol, probes) -> ScanResult:

@@ -11,24 +11,22 @@ figures are registered in ``electrogrowth.figures.FIGURES``.
 from __future__ import annotations
 
 import argparse
-import json
-import math
+import os
 import sys
-from pathlib import Path
-from typing import Callable
-
+from collections.abc import Callable
 from importlib.metadata import version
-from .options import _Parser
+
+from ..errors import ElectrogrowthError
 from .critical import configure_critical, run_critical
 from .curve import configure_curve, run_curve
 from .demo import configure_demo, run_demo
+from .figure import configure_figure, run_figure
+from .options import _Parser
 from .pattern import HELP as PATTERN_HELP
 from .pattern import configure_pattern, run_pattern
 from .reproduce import configure_reproduce, run_reproduce
-from .sweep import configure_plot, configure_sweep, run_plot, run_sweep
-from ..errors import ElectrogrowthError
-from .figure import configure_figure, run_figure
 from .state import configure_state, run_state
+from .sweep import configure_plot, configure_sweep, run_plot, run_sweep
 
 PROG = "electrogrowth"
 
@@ -79,6 +77,9 @@ def main(argv: list[str] | None = None) -> int:
         remedy = f" ({exc.remedy})" if exc.remedy else ""
         print(f"{PROG}: error: {text}{remedy}", file=sys.stderr)
         return 2
+    except BrokenPipeError:  # the reader went away (e.g. `| head`): end quietly
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # no flush error
+        return 0
     except Exception as exc:  # a bug: still one line, never a traceback
         print(f"{PROG}: internal error: {type(exc).__name__}: {' '.join(str(exc).split())}",
               file=sys.stderr)

@@ -4,15 +4,22 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 
 from ..bifurcation.critical import critical_value
 from ..bifurcation.scan import scan_modes
 from ..errors import ConvergenceError, ParameterError
 from ..incremental.accuracy import check_rtol
 from ..outcomes import Kind
-from .options import (add_control_options, add_method_option, add_mode_range_options,
-                      add_tube_options, check_side_option, scan_options_from_args,
-                      tube_from_args)
+from .options import (
+    add_control_options,
+    add_method_option,
+    add_mode_range_options,
+    add_tube_options,
+    check_side_option,
+    scan_options_from_args,
+    tube_from_args,
+)
 
 CERTIFY_RTOL = 1e-8  # the two methods must agree this well for a certified value
 
@@ -57,8 +64,6 @@ def run_critical(args) -> int:
                             options=scan_options_from_args(args), rtol=args.rtol)
         crit, record = result.critical, result.as_dict()
         runners = record["runners_up"]
-    if crit.kind == Kind.THRESHOLD and args.mode is None:
-        record["m"] = record["n"] = None
     if args.certify and crit.kind == Kind.BIFURCATION:
         record.update(_certify(params, crit, args))
     if args.json:
@@ -87,6 +92,12 @@ def _print_text(rec: dict, runners: list) -> None:
     if rec["kind"] == Kind.THRESHOLD:
         head = (f"{name} = {rec['value']:.12g}: the axisymmetric state is lost (voltage"
                 " threshold) before any wrinkling mode")
+    elif rec["kind"] == Kind.SURFACE:
+        along = ("theta" if rec["psi"] == 0 else "z" if abs(rec["psi"] - math.pi / 2) < 1e-12
+                 else f"the direction psi = {rec['psi']:.6g} rad from theta to z")
+        head = (f"{name} = {rec['value']:.12g}  (error estimate {rec['error_estimate']:.1e},"
+                f" half-space)   short-wave (surface) instability, m, n -> infinity, at the"
+                f" {rec['face']} face, wrinkles along {along}")
     else:
         head = (f"{name} = {rec['value']:.12g}  (error estimate {rec['error_estimate']:.1e},"
                 f" {rec['method']})   mode (m, n) = ({rec['m']}, {rec['n']})")
@@ -96,9 +107,9 @@ def _print_text(rec: dict, runners: list) -> None:
     if rec.get("certified"):
         lines.append(f"  certified by {rec['certified_by']}: {rec['certified_value']:.12g}"
                      f" (relative difference {rec['certification_difference']:.1e})")
-    if rec.get("surface_instability"):
-        lines.append("  the critical value still falls at the edge of the mode range: a"
-                     " short-wavelength (surface) instability")
+    if rec.get("short_wave_limit") is not None and rec["kind"] != Kind.SURFACE:
+        lines.append(f"  short-wave (surface) limit m, n -> infinity: {name} ="
+                     f" {rec['short_wave_limit']:.12g} (after this mode)")
     for r in runners:
         lines.append(f"  next: (m, n) = ({r['m']}, {r['n']})   {name} = {r['value']:.10g}")
     print("\n".join(lines))

@@ -31,7 +31,8 @@ from .plots import plot_curve
 from .style import COLORS, FigureResult, new_figure
 
 #: kind column of the CSVs.
-KIND_CODES = {Kind.BIFURCATION: 0, Kind.SWITCH: 1, Kind.THRESHOLD: 2, Status.FAILED: 3}
+KIND_CODES = {Kind.BIFURCATION: 0, Kind.SWITCH: 1, Kind.THRESHOLD: 2, Status.FAILED: 3,
+              Kind.SURFACE: 4}
 #: Mode ranges of every scan (extended automatically when the optimum is on an edge). The
 #: full figures scan m up to 64: near the voltage threshold the critical value first rises
 #: with m and then falls for m > 12 (a short-wavelength instability of the inner face), which

@@ -24,13 +24,14 @@ from ..errors import ParameterError
 from ..outcomes import Kind, Status
 
 THRESHOLD, NONE, FAILED, PENDING = "threshold", "no instability", "failed", "pending"
+SURFACE = "surface (m, n -> inf)"
 MAX_LABELS = 40
 
 
 @dataclasses.dataclass(frozen=True)
 class Region:
     """A connected set of grid cells with the same outcome; ``label`` is (m, n) or one of
-    "threshold", "no instability", "failed", "pending"."""
+    "threshold", "surface (m, n -> inf)", "no instability", "failed", "pending"."""
 
     label: tuple[int, int] | str
     cells: int
@@ -71,7 +72,8 @@ def outcomes(plane) -> np.ndarray:
     for idx in np.ndindex(status.shape):
         if status[idx] == Status.OK:
             out[idx] = ((int(m[idx]), int(n[idx])) if kind[idx] == Kind.BIFURCATION
-                        else THRESHOLD if kind[idx] == Kind.THRESHOLD else NONE)
+                        else {Kind.THRESHOLD: THRESHOLD, Kind.SURFACE: SURFACE}.get(
+                            kind[idx], NONE))
         else:
             out[idx] = PENDING if status[idx] == "pending" else FAILED
     return out

@@ -14,9 +14,9 @@ from matplotlib.colors import Normalize
 from matplotlib.figure import Figure
 from mpl_toolkits.mplot3d import proj3d
 
+from .._types import FloatArray
 from ..bifurcation.curves import Curve
 from ..outcomes import NO_MODE
-from .._types import FloatArray
 from ..shapes.mode_shape import ModeShape
 from ..shapes.wall import Surface, wall_surface
 from .style import COLORS, STYLE
@@ -31,16 +31,15 @@ def plot_curve(curve: Curve, ax=None, *, color: str = "k", label: str | None = N
                annotate: bool = True):
     """Draw the curve on ``ax`` (a new figure when None) and return ``ax``.
 
-    Each branch is labelled "n, m" (the paper's order; "m+" when the scan hit its cap,
-    a surface instability) at its middle; switches are dots, the threshold a dashed
-    line.
+    Each branch is labelled "n, m" (the paper's order; "inf" for the short-wave limit, a
+    surface instability) at its middle; switches are dots, the threshold a dashed line.
     """
     if ax is None:
         ax = Figure(figsize=(4.0, 3.0), layout="constrained").subplots()
     first, k = True, 0
     for (m, n), rows in curve.branches():
         x, v = curve.x[rows], curve.value[rows]
-        if (m, n) == NO_MODE:
+        if (m, n) == NO_MODE and not curve.surface[rows].all():  # the threshold
             ax.plot(x, v, "--", color=color, lw=0.9)
             continue
         ax.plot(x, v, "-", color=color, label=label if first else None)
@@ -48,8 +47,8 @@ def plot_curve(curve: Curve, ax=None, *, color: str = "k", label: str | None = N
         if annotate:
             i = len(rows) // 2
             xm, vm = (x[i], v[i]) if len(rows) > 2 else (x.mean(), v.mean())
-            cap = "+" if curve.surface[rows].any() else ""
-            ax.annotate(f"{n}, {m}{cap}", (xm, vm), xytext=(0, 4 if k % 2 else -10),
+            text = r"$\infty$" if curve.surface[rows].all() else f"{n}, {m}"
+            ax.annotate(text, (xm, vm), xytext=(0, 4 if k % 2 else -10),
                         textcoords="offset points", ha="center", fontsize=7, color=color)
             k += 1
     if curve.switches:

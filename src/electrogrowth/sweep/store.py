@@ -27,17 +27,17 @@ import math
 import os
 import uuid
 import warnings
+from importlib.metadata import version
 from pathlib import Path
 
 import numpy as np
 import xarray as xr
 import zarr
 
-from importlib.metadata import version
 from ..errors import SweepError
 from ..outcomes import Kind, Status
-from .unit import ChunkResult
 from .config import SweepConfig, differences
+from .unit import ChunkResult
 
 #: Coordinate attributes of the tube parameters.
 LABELS = {"outer_radius": ("outer radius", "R̄ₒ = Rₒ/Rᵢ"), "length": ("length", "L/Rᵢ"),
@@ -52,10 +52,11 @@ POINT_VARIABLES = {
     "n": ("i4", -1, "axial half-wavenumber of the critical mode, k = n pi / (lambda_z L)"
                     " (-1: none)"),
     "kind": (object, "", "bifurcation | threshold (the axisymmetric state is lost first) |"
-                         " none (no instability in the range)"),
+                         " surface (the short-wave limit m, n -> inf at a face comes first)"
+                         " | none (no instability in the range)"),
     "error_estimate": ("f8", math.nan, "|value - value at 100 times looser accuracy|"),
-    "surface_instability": ("?", False, "the critical mode sits on the edge of the widened"
-                                        " mode range: a short-wavelength instability"),
+    "surface_instability": ("?", False, "the critical point is the short-wave (surface)"
+                                        " limit m, n -> infinity at a face"),
     "status": (object, "pending", "ok | failed (see message) | error (a bug) | pending"),
     "message": (object, "", "why the point failed, or why no instability was found"),
     "seconds": ("f8", math.nan, "wall time of the point's mode scan"),
@@ -153,14 +154,14 @@ class SweepStore:
         self.group[MARK[0]][where] = np.full(shape, run, dtype=MARK[1])
 
     def counts(self) -> dict:
-        """Number of points by outcome: bifurcation, threshold, none, failed, error,
-        pending."""
+        """Number of points by outcome: bifurcation, surface, threshold, none, failed,
+        error, pending."""
         status = np.asarray(self.group["status"][...], dtype=object)
         kind = np.asarray(self.group["kind"][...], dtype=object)
         outcome = np.where(status == Status.OK, kind, status)
         return {k: int((outcome == k).sum()) for k in
-                (Kind.BIFURCATION, Kind.THRESHOLD, Kind.NONE, Status.FAILED, Status.ERROR,
-                 "pending")}
+                (Kind.BIFURCATION, Kind.SURFACE, Kind.THRESHOLD, Kind.NONE, Status.FAILED,
+                 Status.ERROR, "pending")}
 
 
 def open_store(out: str | Path, config: SweepConfig, *, source_text: str = "") -> SweepStore:

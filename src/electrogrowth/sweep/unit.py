@@ -70,8 +70,8 @@ def compute_point(params: TubeParameters, spec: ScanSpec) -> PointResult:
     --------
     >>> from electrogrowth import TubeParameters
     >>> r = compute_point(TubeParameters(1.4, voltage=50.0), ScanSpec("growth"))
-    >>> r.status, r.message.split(":")[0]
-    ('failed', 'BaseStateError')
+    >>> r.status.value, r.message.split(":")[0], r.remedy.split(" (")[0]
+    ('failed', 'BaseStateError', 'lower the voltage below the threshold')
     """
     start = time.perf_counter()
     took = lambda: time.perf_counter() - start  # noqa: E731

@@ -1,0 +1,580 @@
+"""The short-wave (surface) limit of wrinkling, from the half-space problem at the faces.
+
+A mode (m, n) with m, k -> infinity along a ray tan psi = k r / m sees, at a face, a
+half-space with the frozen local moduli and field (incremental/halfspace.py). Its
+critical value tends to that of the half-space like 1/m (the curvature of the wall and
+the gradients of the base state enter at the next order). The short-wave critical value
+of a control parameter x (growth g > 1, stretch lambda_z on one side, voltage Vbar > 0)
+is the first x, marching from the stable start, at which for SOME face and SOME
+direction psi in [0, pi/2] the half-space target f vanishes:
+
+    h(x) = min_{face} min_{psi} s_face f(state(x), face, psi),
+
+with s_face = sign of f on the unloaded tube (g = 1, lambda_z = 1, Vbar = 0), which is
+stable; h > 0 until the first surface instability. min over psi: f on a grid of psi
+(endpoints psi = 0 and pi/2 included) and a bounded 1-D minimisation around the lowest
+grid minima, compared with the exact endpoint values. h is continuous (a minimum of
+continuous functions), so once the march brackets its first sign change Brent's method
+converges to rounding level; f near an interior minimiser is quadratic in psi, so the
+psi-accuracy ~1e-10 costs nothing in the value.
+
+The march (steps of 0.4 % of the scale doubling up to 5 %, limited by 0.7 of the linear
+extrapolation of h to zero; the psi minimum refined only where the grid minimum is below
+MARCH_REFINE; a bounded minimisation where h dips between samples) reports kind
+"threshold" if the base state is lost first (the voltage threshold falls to the applied
+voltage, or a locking stretch: a state the base-state solver cannot resolve counts as
+lost), and kind "ellipticity" if the half-space stops being strongly elliptic first (then
+there is no decaying split to impose the face conditions on; the value is where that
+happens). The error estimate is the distance to the root found at a second, coarser
+resolution (psi grid 13 instead of 25, psi tolerance 1e-7, base state at 100 rtol).
+Derivation and measured numbers: docs/derivation-surface.md.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import math
+from collections.abc import Callable
+
+import numpy as np
+from scipy.optimize import brentq, minimize_scalar
+
+from ..basestate.tube import solve_base_state, voltage_threshold
+from ..errors import BaseStateError, ConvergenceError, ParameterError
+from ..incremental.halfspace import FACES, FaceProblem
+from ..model.params import CONTROLS, TubeParameters
+
+SIDES = ("compression", "extension")
+FIRST_STEP, MIN_STEP, MAX_STEP = 0.004, 1e-6, 0.05
+MAX_LAMBDA_JUMP = 0.05  # shrink a step that changes lambda_i by more than this
+LAMBDA_CAP = 50.0  # stop approaching a voltage threshold once lambda_i grew this much
+HALF_PI = 0.5 * math.pi
+KINDS = ("surface", "threshold", "ellipticity", "none")
+ENDPOINT_SLACK = 1e-14  # f (|f| <= 1) equal to rounding: keep the exact endpoint psi
+MARCH_REFINE = 0.05  # march: refine the psi minimum only where the grid minimum is below
+FACE_TIE = 1e-13  # faces whose targets agree this closely (homogeneous tube): the first
+
+
+@dataclasses.dataclass(frozen=True)
+class SurfaceLimit:
+    """Result of :func:`short_wave_limit` and :func:`ray_limit`.
+
+    kind : "surface" (the half-space at ``face`` bifurcates in direction ``psi`` at
+        ``value``), "threshold" (the axisymmetric base state is lost first, at ``value``),
+        "ellipticity" (strong ellipticity is lost first at ``face``, direction ``psi``,
+        at ``value``: the half-space problem is not defined beyond) or "none" (nothing
+        up to the end of the march; value NaN, params as given).
+    psi : wave direction in the face in radians, tan psi = k r / m (0: wrinkles along
+        theta, pi/2: along z); ``ratio`` = k r / m = tan psi, None at psi = pi/2.
+    error_estimate : |value - value at a second, coarser resolution| (0 if not a root, NaN
+        if the base state is lost within the search for the coarser root).
+    params : the parameters at ``value``.
+    """
+
+    solve_for: str
+    value: float
+    face: str | None
+    psi: float | None
+    ratio: float | None
+    kind: str
+    error_estimate: float
+    params: TubeParameters
+    side: str | None = None
+
+    def as_dict(self) -> dict:
+        p = self.params
+        return {
+            "solve_for": self.solve_for,
+            "value": self.value,
+            "kind": self.kind,
+            "face": self.face,
+            "psi": self.psi,
+            "ratio": self.ratio,
+            "error_estimate": self.error_estimate,
+            "side": self.side,
+            "material": p.material.name,
+            "outer_radius": p.outer_radius,
+            "length": p.length,
+            "growth": p.growth,
+            "stretch": p.stretch,
+            "voltage": p.voltage,
+        }
+
+
+@dataclasses.dataclass(frozen=True)
+class _Resolution:
+    grid: int  # psi grid points on [0, pi/2]
+    psi_tol: float  # absolute tolerance of the psi minimisation
+    rtol: float  # base state and Brent
+
+
+@dataclasses.dataclass(frozen=True)
+class _Sample:
+    value: float  # h: min over faces (and psi) of the signed target; NaN: not elliptic
+    face: str | None
+    psi: float | None
+
+
+# -- input checks ---------------------------------------------------------------------------
+
+
+def _check(params, solve_for, side, faces, rtol) -> tuple[str | None, tuple[str, ...]]:
+    if not isinstance(params, TubeParameters):
+        raise ParameterError(f"params = {params!r} is not a TubeParameters")
+    if solve_for not in CONTROLS:
+        raise ParameterError(
+            f"solve_for = {solve_for!r} is unknown; choose one of {', '.join(CONTROLS)}"
+        )
+    if side is not None and side not in SIDES:
+        raise ParameterError(f"side = {side!r} is unknown; choose compression or extension")
+    # as critical_value: the side matters for the stretch only (ignored otherwise)
+    side = (side or "compression") if solve_for == "stretch" else None
+    if isinstance(faces, str):
+        faces = (faces,)
+    faces = tuple(faces)
+    if not faces or any(f not in FACES for f in faces) or len(set(faces)) != len(faces):
+        raise ParameterError(
+            f"faces = {faces!r} is invalid; choose a non-empty subset of ('inner', 'outer')"
+        )
+    if isinstance(rtol, bool) or not isinstance(rtol, (int, float)) or not 0 < rtol <= 1e-3:
+        raise ParameterError(f"rtol = {rtol!r} is out of range; valid range: 0 < rtol <= 1e-3")
+    return side, faces
+
+
+def _control_path(params: TubeParameters, solve_for: str, side: str | None):
+    """(start, end, scale) of the march, as for the finite modes (bifurcation.march)."""
+    if solve_for == "growth":
+        return 1.0, 6.0, 1.0
+    if solve_for == "stretch":
+        g = params.growth  # lambda_z = g: no elastic axial strain
+        return (g, 8.0 * g, g) if side == "extension" else (g, 0.05 * g, g)
+    thr = voltage_threshold(params)[0]
+    if not math.isfinite(thr):  # stiffening energies may have no threshold at all
+        return 0.0, 1e3, 1.0
+    return 0.0, thr * (1 - 1e-12), thr
+
+
+# -- the signed target h(x) -----------------------------------------------------------------
+
+
+def stable_signs(params: TubeParameters, faces=FACES) -> dict[str, float]:
+    """Sign of the half-space target at each face on the unloaded tube (g = 1,
+    lambda_z = 1, Vbar = 0), which is stable (the same for every psi; checked on a grid)."""
+    ref = dataclasses.replace(params, growth=1.0, stretch=1.0, voltage=0.0)
+    state = solve_base_state(ref)
+    out = {}
+    for face in faces:
+        f = FaceProblem.from_state(state, face).target(np.linspace(0.0, HALF_PI, 7))
+        if not (np.all(np.isfinite(f)) and (np.all(f > 0) or np.all(f < 0))):
+            raise ConvergenceError(
+                f"half-space target undefined or of mixed sign on the "
+                f"unloaded tube at the {face} face: {f}"
+            )
+        out[face] = math.copysign(1.0, f[0])
+    return out
+
+
+@functools.lru_cache(maxsize=64)
+def _unloaded_signs(material, outer_radius: float) -> dict[str, float]:
+    """stable_signs of both faces, shared by every state of one tube (the unloaded state
+    depends on the material and Rbar_o only)."""
+    return stable_signs(TubeParameters(outer_radius, material=material))
+
+
+def past_surface(params: TubeParameters, faces=FACES) -> bool:
+    """Whether a face of this loaded tube is beyond its short-wave instability in some wave
+    direction (the signed half-space target is <= 0 there): then the exact limit, reached
+    earlier along any path from the unloaded tube, is worth locating."""
+    signs = _unloaded_signs(params.material, params.outer_radius)
+    state = solve_base_state(params)
+    for face in faces:
+        problem = FaceProblem.from_state(state, face)
+        v, _ = worst_direction(problem, signs[face], psi_tol=None)
+        if v < MARCH_REFINE:
+            v, _ = worst_direction(problem, signs[face])
+        if not v > 0:
+            return True
+    return False
+
+
+def worst_direction(
+    problem: FaceProblem, sign: float = 1.0, *, grid: int = 25, psi_tol: float | None = 1e-10
+) -> tuple[float, float]:
+    """(min over psi in [0, pi/2] of sign * f, its psi) at one face.
+
+    A grid of ``grid`` directions (both endpoints included), then a bounded minimisation
+    between the neighbours of each of the (up to three) lowest grid minima; an endpoint
+    minimum is kept exactly when no interior point is lower (psi_tol None: the grid
+    minimum alone). Returns (NaN, psi) if the half-space is not strongly elliptic in some
+    grid direction psi.
+    """
+    psi = np.linspace(0.0, HALF_PI, grid)
+    F = sign * problem.target(psi)
+    if np.isnan(F).any():
+        return math.nan, float(psi[np.argmax(np.isnan(F))])
+    lower = np.r_[True, F[1:] <= F[:-1]]  # F[i] <= left neighbour
+    upper = np.r_[F[:-1] <= F[1:], True]  # F[i] <= right neighbour
+    minima = np.nonzero(lower & upper)[0]
+    minima = minima[np.argsort(F[minima])][:3]
+    best_v, best_p = float(F[minima[0]]), float(psi[minima[0]])
+
+    if psi_tol is None:  # the grid alone
+        i = int(np.argmin(F))
+        return float(F[i]), float(psi[i])
+
+    def one(x):
+        v = sign * problem.target_scalar(x)
+        return v if math.isfinite(v) else math.inf
+
+    for i in minima:
+        a, b = psi[max(i - 1, 0)], psi[min(i + 1, grid - 1)]
+        res = minimize_scalar(
+            one, bounds=(a, b), method="bounded", options={"xatol": psi_tol, "maxiter": 200}
+        )
+        x, v = float(res.x), float(res.fun)
+        for end, fe in ((0.0, F[0]), (HALF_PI, F[-1])):
+            # a minimum at an endpoint: f is flat to rounding within psi_tol of it
+            if abs(x - end) <= 1e3 * psi_tol and fe <= v + ENDPOINT_SLACK:
+                x, v = end, float(fe)
+        if v < best_v:
+            best_v, best_p = v, x
+    if not math.isfinite(best_v):
+        return math.nan, best_p
+    return best_v, best_p
+
+
+def _sampler(faces, signs, res: _Resolution, direction=None, refine_below=math.inf):
+    """h(state) -> _Sample: min over faces of the signed target, in the worst direction
+    (direction None) or in the direction direction(state, face) of a ray. With
+    refine_below, a face whose grid minimum is above it is not refined (the march)."""
+
+    def h(state) -> _Sample:
+        best = _Sample(math.inf, None, None)
+        for face in faces:
+            problem = FaceProblem.from_state(state, face)
+            if direction is None:
+                v, psi = worst_direction(problem, signs[face], grid=res.grid, psi_tol=None)
+                if not v > refine_below:  # close to zero (or NaN): refine
+                    v, psi = worst_direction(
+                        problem, signs[face], grid=res.grid, psi_tol=res.psi_tol
+                    )
+            else:
+                psi = direction(state, face)
+                v = float(signs[face] * problem.target(psi))
+            if math.isnan(v):
+                return _Sample(math.nan, face, psi)
+            if v < best.value - FACE_TIE:
+                best = _Sample(v, face, psi)
+            elif v < best.value:  # a tie: keep the earlier face, with the lower value
+                best = _Sample(v, best.face, best.psi)
+        return best
+
+    return h
+
+
+# -- the march ------------------------------------------------------------------------------
+
+
+def _brent(f, a, b, rtol) -> float:
+    try:
+        return brentq(
+            f, a, b, xtol=max(1e-15, 1e-3 * rtol) * max(1.0, abs(a)), rtol=1e-15, maxiter=300
+        )
+    except (RuntimeError, ValueError) as exc:
+        raise ConvergenceError(f"Brent's method failed on [{a}, {b}]: {exc}") from None
+
+
+def _locate(params, solve_for, side, h: Callable, rtol: float, h_march=None):
+    """March to the first zero of h; returns (kind, value, bracket or None).
+
+    h_march (default h) is used for the steps: it may be cheaper where h is far from 0
+    but must agree with h wherever either is <= MARCH_REFINE."""
+    fine_h, h = h, (h_march or h)
+    at = lambda x: dataclasses.replace(params, **{solve_for: float(x)})  # noqa: E731
+    state_at = lambda x: solve_base_state(at(x), rtol=rtol)  # noqa: E731
+    x0, end, scale = _control_path(params, solve_for, side)
+    sense = 1.0 if end > x0 else -1.0
+    try:
+        state = state_at(x0)
+    except BaseStateError as exc:
+        raise ParameterError(
+            f"no base state at the start of the march, {solve_for} = {x0:g}: {exc}"
+        ) from None
+    s0 = h(state)
+    if math.isnan(s0.value):
+        raise ParameterError(
+            f"the half-space at the {s0.face} face is not strongly "
+            f"elliptic at {solve_for} = {x0:g}; start from a stable state"
+        )
+    if s0.value <= 0:
+        raise ParameterError(
+            f"the {s0.face} face is already unstable (psi = {s0.psi:.6g})"
+            f" at {solve_for} = {x0:g}; start from a stable state"
+        )
+    value_of = lambda x: h(state_at(x)).value  # noqa: E731
+    xs, hs = [x0], [s0.value]
+    lam0 = lam_prev = state.lambda_i
+    threshold = None
+    d = FIRST_STEP
+    while True:
+        x_prev = xs[-1]
+        if (end - x_prev) * sense <= 0:
+            break
+        x = min(x_prev + sense * d * scale, end, key=lambda v: sense * v)
+        try:
+            state = state_at(x)
+        except BaseStateError:
+            threshold = _threshold_between(at, params, x_prev, x, rtol)
+            end = threshold - sense * 1e-12 * scale
+            d /= 4
+            if abs(end - x_prev) <= 1e-12 * scale:
+                break
+            continue
+        except ConvergenceError as exc:  # the base-state solver failed here: step shorter
+            if d <= 1e-5:
+                raise ConvergenceError(
+                    f"base state not resolved at {solve_for} = {x:.12g}"
+                    f" while marching from {x0:g} (no surface instability"
+                    f" before it): {exc}"
+                ) from None
+            d /= 4
+            continue
+        if abs(state.lambda_i / lam_prev - 1) > MAX_LAMBDA_JUMP and d > 1e-12:
+            d /= 2
+            continue
+        s = h(state)
+        if math.isnan(s.value):  # ellipticity lost in (x_prev, x]
+            lo, hi = x_prev, x
+            for _ in range(60):
+                mid = 0.5 * (lo + hi)
+                if abs(hi - lo) <= 1e-13 * scale:
+                    break
+                if math.isnan(value_of(mid)):
+                    hi = mid
+                else:
+                    lo = mid
+            if fine_h(state_at(lo)).value <= 0:  # a surface instability just before
+                return "surface", None, _bracket(xs, lo, lambda y: fine_h(state_at(y)).value)
+            return "ellipticity", 0.5 * (lo + hi), None
+        if s.value <= 0:
+            return "surface", None, _bracket(xs, x, lambda y: fine_h(state_at(y)).value)
+        if len(hs) >= 2 and hs[-1] < 0.25 * min(hs[-2], s.value):  # a dip between samples?
+            lo, hi = sorted((xs[-2], x))
+            dip = minimize_scalar(
+                value_of,
+                bounds=(lo, hi),
+                method="bounded",
+                options={"xatol": 1e-12 * max(1.0, abs(lo))},
+            )
+            if dip.fun <= 0:
+                return (
+                    "surface",
+                    None,
+                    _bracket(xs[:-1], float(dip.x), lambda y: fine_h(state_at(y)).value),
+                )
+        xs.append(x)
+        hs.append(s.value)
+        lam_prev = state.lambda_i
+        if state.lambda_i > LAMBDA_CAP * lam0:  # the wall is a film: at the threshold
+            if solve_for != "voltage" and threshold is None:
+                threshold = _threshold_between(at, params, x, end, rtol, exists=False)
+            break
+        slope = (hs[-1] - hs[-2]) / (xs[-1] - xs[-2]) * sense
+        limit = 0.7 * hs[-1] / -slope / scale if slope < 0 else math.inf
+        d = float(np.clip(limit, MIN_STEP, min(2 * d, MAX_STEP)))
+    if threshold is None and solve_for == "voltage":
+        thr = voltage_threshold(params)[0]
+        threshold = thr if math.isfinite(thr) else None
+    if threshold is not None:
+        return "threshold", threshold, None
+    return "none", math.nan, None
+
+
+def _bracket(xs, x_bad, value_of) -> tuple[float, float]:
+    """(x_ok, x_bad) with the fine h > 0 at x_ok: the newest sample where it is (the
+    march start always is)."""
+    for x in reversed(xs):
+        if value_of(x) > 0:
+            return x, x_bad
+        x_bad = x
+    raise ConvergenceError("the half-space target is not positive at the start")
+
+
+def _threshold_between(at, params, x_ok, x_bad, rtol, exists: bool = True) -> float | None:
+    """Control value between x_ok and x_bad where the base state ceases to exist: where the
+    voltage threshold falls to the applied voltage if that brackets it, else (e.g. a
+    locking stretch of a stiffening energy) by bisection on the existence of the state
+    (a state the base-state solver cannot resolve counts as lost). With exists=False
+    (x_bad not known to be lost) only the voltage threshold is tried, None if it does not
+    fall to the applied voltage before x_bad."""
+    lo, hi = min(x_ok, x_bad), max(x_ok, x_bad)
+    if params.voltage > 0:
+        try:
+            return brentq(
+                lambda x: voltage_threshold(at(x))[0] - params.voltage,
+                lo,
+                hi,
+                xtol=1e-14,
+                rtol=1e-15,
+            )
+        except (ValueError, BaseStateError, ConvergenceError):
+            pass
+    if not exists:
+        return None
+    good, bad = x_ok, x_bad
+    while abs(bad - good) > 1e-13 * max(1.0, abs(good)):
+        mid = 0.5 * (good + bad)
+        try:
+            solve_base_state(at(mid), rtol=rtol)
+            good = mid
+        except (BaseStateError, ConvergenceError):
+            bad = mid
+    return bad
+
+
+def _second_resolution(value_coarse, value: float) -> float:
+    """|root of the coarser h near value - value| (NaN if the base state is lost before
+    the coarse target changes sign: a surface instability at the threshold itself)."""
+    w = 1e-8 * max(1.0, abs(value))
+    for _ in range(14):
+        lo, hi = value - w, value + w
+        try:
+            flo, fhi = value_coarse(lo), value_coarse(hi)
+        except (BaseStateError, ConvergenceError):
+            return math.nan
+        if flo * fhi < 0:
+            return abs(
+                brentq(value_coarse, lo, hi, xtol=1e-15 * max(1.0, abs(value)), rtol=1e-15) - value
+            )
+        w *= 4
+    raise ConvergenceError(f"no root of the coarse half-space target near {value}")
+
+
+def _solve(params, solve_for, side, faces, rtol, direction) -> SurfaceLimit:
+    side, faces = _check(params, solve_for, side, faces, rtol)
+    signs = stable_signs(params, faces)
+    fine = _Resolution(25, 1e-10, rtol)
+    coarse = _Resolution(13, 1e-7, min(1e-3, 100 * rtol))
+    h = _sampler(faces, signs, fine, direction)
+    hm = _sampler(faces, signs, fine, direction, refine_below=MARCH_REFINE)
+    hc = _sampler(faces, signs, coarse, direction)
+    at = lambda x: dataclasses.replace(params, **{solve_for: float(x)})  # noqa: E731
+    kind, value, bracket = _locate(params, solve_for, side, h, rtol, hm)
+    if kind in ("threshold", "none"):
+        return SurfaceLimit(
+            solve_for,
+            value,
+            None,
+            None,
+            None,
+            kind,
+            0.0,
+            at(value) if kind == "threshold" else params,
+            side,
+        )
+    if kind == "ellipticity":
+        s = h(solve_base_state(at(value), rtol=rtol))
+        return SurfaceLimit(
+            solve_for, value, s.face, s.psi, _ratio(s.psi), kind, 0.0, at(value), side
+        )
+    value_of = lambda x: h(solve_base_state(at(x), rtol=rtol)).value  # noqa: E731
+    value = _brent(value_of, *bracket, rtol)
+    coarse_of = lambda x: hc(solve_base_state(at(x), rtol=coarse.rtol)).value  # noqa: E731
+    err = _second_resolution(coarse_of, value)
+    s = h(solve_base_state(at(value), rtol=rtol))
+    return SurfaceLimit(
+        solve_for, value, s.face, s.psi, _ratio(s.psi), "surface", err, at(value), side
+    )
+
+
+def _ratio(psi):
+    if psi is None or abs(psi - HALF_PI) <= 1e-12:
+        return None
+    return math.tan(psi)
+
+
+# -- public entry points --------------------------------------------------------------------
+
+
+def short_wave_limit(
+    params: TubeParameters,
+    solve_for: str,
+    *,
+    side: str | None = None,
+    faces=FACES,
+    psi: float | None = None,
+    rtol: float = 1e-12,
+) -> SurfaceLimit:
+    """Critical value of ``solve_for`` for wrinkles of vanishing wavelength (m, k -> inf).
+
+    Parameters
+    ----------
+    params : TubeParameters
+        The tube; the field named by ``solve_for`` is the unknown.
+    solve_for : {"growth", "stretch", "voltage"}
+        Growth: smallest g > 1 (march 1 -> 6). Stretch: the lambda_z nearest to
+        lambda_z = g on ``side`` ("compression", default, march to 0.05 g; or "extension",
+        to 8 g). Voltage: smallest Vbar > 0 (march to the threshold).
+    faces : iterable of {"inner", "outer"}
+        The faces whose half-spaces are examined (default both).
+    psi : float, optional
+        Examine only this wave direction (radians in [0, pi/2]) instead of the worst one:
+        the directional critical value, whose infimum over psi is the default result.
+    rtol : float
+        Accuracy of the base state and of Brent's method (0 < rtol <= 1e-3).
+
+    Returns
+    -------
+    SurfaceLimit
+        With the face and the worst wave direction psi (the infimum over psi of the
+        directional critical values), or kind "threshold" / "ellipticity" / "none".
+
+    Raises
+    ------
+    ParameterError
+        Bad input, or the start of the march is not stable.
+    ConvergenceError
+        A root could not be converged.
+    """
+    if psi is None:
+        return _solve(params, solve_for, side, faces, rtol, None)
+    if isinstance(psi, bool) or not isinstance(psi, (int, float)) or not 0 <= psi <= HALF_PI:
+        raise ParameterError(f"psi = {psi!r} is out of range; valid range: 0 <= psi <= pi/2")
+    fixed = float(psi)
+    return _solve(params, solve_for, side, faces, rtol, lambda state, face: fixed)
+
+
+def ray_limit(
+    params: TubeParameters,
+    m: float,
+    n: float,
+    solve_for: str,
+    *,
+    side: str | None = None,
+    faces=FACES,
+    rtol: float = 1e-12,
+) -> SurfaceLimit:
+    """Limit j -> infinity of the critical value of the modes (j m, j n).
+
+    Along the ray the direction at a face of radius r is tan psi = k r / m with
+    k = n pi / (lambda_z L); it follows the state (lambda_z and r change with the
+    control). The limit is the first control value at which the half-space at one of
+    ``faces`` bifurcates in that direction. m = 0 gives psi = pi/2, n = 0 gives psi = 0.
+    """
+    for name, v in (("m", m), ("n", n)):
+        if (
+            isinstance(v, bool)
+            or not isinstance(v, (int, float))
+            or not (math.isfinite(v) and v >= 0)
+        ):
+            raise ParameterError(f"ray {name} = {v!r} is invalid; need 0 <= {name} < inf")
+    if m == 0 and n == 0:
+        raise ParameterError("ray (m, n) = (0, 0) is invalid; need m > 0 or n > 0")
+
+    def direction(state, face):
+        p = state.params
+        r = state.r_i if face == "inner" else state.r_o
+        return math.atan2(n * math.pi * r / (p.stretch * p.length), m)
+
+    return _solve(params, solve_for, side, faces, rtol, direction)
