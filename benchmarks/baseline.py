@@ -32,19 +32,22 @@ def det_impedance(params, m: int, n: int, rtol: float) -> float:
     def rhs(R, y):
         z = y.reshape(4, 4)
         r = math.sqrt(state.r_i**2 + a * (R * R - 1.0))
-        stroh_matrix_py(state.moduli(np.array(R)), float(state.pressure(np.array(R))),
-                        float(m), k * r, G)
+        stroh_matrix_py(
+            state.moduli(np.array(R)), float(state.pressure(np.array(R))), float(m), k * r, G
+        )
         G1, G2, G3, G4 = G[:4, :4], G[:4, 4:], G[4:, :4], G[4:, 4:]
         return (a * R / r**2 * (G3 + G4 @ z - z @ G1 - z @ G2 @ z)).ravel()
 
-    sol = solve_ivp(rhs, (1.0, params.outer_radius), np.zeros(16), method="DOP853",
-                    rtol=rtol, atol=rtol * 1e-2)
+    sol = solve_ivp(
+        rhs, (1.0, params.outer_radius), np.zeros(16), method="DOP853", rtol=rtol, atol=rtol * 1e-2
+    )
     s = max(1.0, math.hypot(m, k * state.r_o))
     return float(np.linalg.det(sol.y[:, -1].reshape(4, 4) / s))
 
 
-def critical_growth(params, m: int, n: int, *, rtol: float = 1e-10, step: float = 0.01,
-                    g_max: float = 6.0) -> float:
+def critical_growth(
+    params, m: int, n: int, *, rtol: float = 1e-10, step: float = 0.01, g_max: float = 6.0
+) -> float:
     """Smallest g > 1 with det z(r_o) = 0 for mode (m, n): 1 % march, then brentq."""
     f = lambda g: det_impedance(dataclasses.replace(params, growth=g), m, n, rtol)  # noqa
     g, fg = 1.0, f(1.0)

@@ -12,8 +12,15 @@ from electrogrowth.cli.app import main
 def test_demo_writes_results_and_the_critical_growth(tmp_path, capsys):
     assert main(["demo", "--out", str(tmp_path), "--quick"]) == 0
     out = capsys.readouterr().out
-    for name in ("state.json", "stress_profile.csv", "stress_profile.png", "critical.json",
-                 "gcr_curve.csv", "gcr_curve.png", "pattern.png"):
+    for name in (
+        "state.json",
+        "stress_profile.csv",
+        "stress_profile.png",
+        "critical.json",
+        "gcr_curve.csv",
+        "gcr_curve.png",
+        "pattern.png",
+    ):
         assert (tmp_path / name).stat().st_size > 100, name
     crit = json.loads((tmp_path / "critical.json").read_text())
     want = critical_value(TubeParameters(1.4, 1.0, voltage=0.4), crit["m"], crit["n"], "growth")

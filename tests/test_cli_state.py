@@ -29,12 +29,14 @@ def test_state_json_matches_the_api(capsys):
     status, out, err = run(capsys, *BASE, "--voltage", "0.3", "--json")
     assert status == 0 and err == ""
     rec = json.loads(out)
-    state = solve_base_state(TubeParameters(outer_radius=2.0, growth=1.1, stretch=1.0,
-                                            voltage=0.3))
+    state = solve_base_state(
+        TubeParameters(outer_radius=2.0, growth=1.1, stretch=1.0, voltage=0.3)
+    )
     for key in ("lambda_i", "lambda_o", "r_i", "r_o", "charge", "axial_force"):
         assert rec[key] == getattr(state, key)
     assert rec["voltage_threshold"] == pytest.approx(
-        1.1**2 * math.sqrt(3 * math.log(2) / 2), rel=1e-15)
+        1.1**2 * math.sqrt(3 * math.log(2) / 2), rel=1e-15
+    )
     assert rec["threshold_kind"] == "asymptote"
     prof = state.profiles(401)
     for key in ("sigma_rr", "sigma_tt", "sigma_zz"):
@@ -53,11 +55,13 @@ def test_state_text_reports_every_quantity(capsys):
 
 
 def test_gent_material_and_its_parameter(capsys):
-    status, out, _ = run(capsys, *BASE, "--voltage", "1.0", "--material", "gent", "--jm",
-                         "50", "--json")
+    status, out, _ = run(
+        capsys, *BASE, "--voltage", "1.0", "--material", "gent", "--jm", "50", "--json"
+    )
     rec = json.loads(out)
-    state = solve_base_state(TubeParameters(outer_radius=2.0, growth=1.1, voltage=1.0,
-                                            material=gent(50)))
+    state = solve_base_state(
+        TubeParameters(outer_radius=2.0, growth=1.1, voltage=1.0, material=gent(50))
+    )
     assert status == 0 and rec["lambda_i"] == state.lambda_i
     assert rec["threshold_kind"] == "none" and rec["voltage_threshold"] is None
     assert rec["material"] == "gent(jm=50)"
@@ -72,25 +76,28 @@ def test_help_explains_the_options_in_the_papers_terms(capsys):
     assert status == 0 and "--out" in out and "4:" in out and "5:" in out
 
 
-@pytest.mark.parametrize("argv, named", [
-    (["--outer-radius", "1.0"], "Rbar_o = 1.0"),
-    (["--outer-radius", "0.5"], "Rbar_o = 0.5"),
-    (["--outer-radius", "2", "--growth", "0"], "g = 0.0"),
-    (["--outer-radius", "2", "--growth", "-1.5"], "g = -1.5"),
-    (["--outer-radius", "2", "--stretch", "-2"], "lambda_z = -2.0"),
-    (["--outer-radius", "2", "--voltage", "-0.1"], "Vbar = -0.1"),
-    (["--outer-radius", "2", "--length", "0"], "L = 0.0"),
-    (["--outer-radius", "nan"], "'nan'"),
-    (["--outer-radius", "2", "--growth", "inf"], "'inf'"),
-    (["--outer-radius", "2", "--voltage", "one"], "'one'"),
-    (["--outer-radius", "2", "--material", "rubber"], "'rubber'"),
-    (["--outer-radius", "2", "--material", "gent", "--jm", "-3"], "jm = -3.0"),
-    (["--outer-radius", "2", "--jm", "10"], "--jm = 10"),
-    (["--outer-radius", "2", "--material", "mooney-rivlin", "--alpha", "1.5"], "alpha = 1.5"),
-    (["--outer-radius", "2", "--voltage", "1.5"], "Vbar = 1.5"),
-    (["--outer-radius", "2", "--frobnicate"], "--frobnicate"),
-    ([], "--outer-radius"),
-])
+@pytest.mark.parametrize(
+    "argv, named",
+    [
+        (["--outer-radius", "1.0"], "Rbar_o = 1.0"),
+        (["--outer-radius", "0.5"], "Rbar_o = 0.5"),
+        (["--outer-radius", "2", "--growth", "0"], "g = 0.0"),
+        (["--outer-radius", "2", "--growth", "-1.5"], "g = -1.5"),
+        (["--outer-radius", "2", "--stretch", "-2"], "lambda_z = -2.0"),
+        (["--outer-radius", "2", "--voltage", "-0.1"], "Vbar = -0.1"),
+        (["--outer-radius", "2", "--length", "0"], "L = 0.0"),
+        (["--outer-radius", "nan"], "'nan'"),
+        (["--outer-radius", "2", "--growth", "inf"], "'inf'"),
+        (["--outer-radius", "2", "--voltage", "one"], "'one'"),
+        (["--outer-radius", "2", "--material", "rubber"], "'rubber'"),
+        (["--outer-radius", "2", "--material", "gent", "--jm", "-3"], "jm = -3.0"),
+        (["--outer-radius", "2", "--jm", "10"], "--jm = 10"),
+        (["--outer-radius", "2", "--material", "mooney-rivlin", "--alpha", "1.5"], "alpha = 1.5"),
+        (["--outer-radius", "2", "--voltage", "1.5"], "Vbar = 1.5"),
+        (["--outer-radius", "2", "--frobnicate"], "--frobnicate"),
+        ([], "--outer-radius"),
+    ],
+)
 def test_bad_input_is_one_line_and_exit_status_2(capsys, argv, named):
     status, out, err = run(capsys, "state", *argv)
     assert status == 2 and out == ""
@@ -143,8 +150,9 @@ def test_figure5_data_headline():
     t = res.table  # g, lambda_z, Vbar, R, r, sigma_rr, sigma_tt, sigma_zz
     faces = np.isin(t[:, 3], (1.0, 2.0))
     assert np.abs(t[faces, 5]).max() < 1e-12  # traction-free faces
-    state = solve_base_state(TubeParameters(outer_radius=2.0, growth=1.1, stretch=0.9,
-                                            voltage=0.8))
+    state = solve_base_state(
+        TubeParameters(outer_radius=2.0, growth=1.1, stretch=0.9, voltage=0.8)
+    )
     got = res.headline["sigma_tt_inner_g1.1_lz0.9_V0.8"]
     assert got == pytest.approx(state.stresses(1.0)[1], rel=1e-13)
     assert got > 0.05  # tensile hoop stress on the inner face
@@ -152,10 +160,20 @@ def test_figure5_data_headline():
 
 def test_python_dash_m_runs_the_cli():
     env = dict(os.environ, PYTHONPATH=str(Path(__file__).parents[1] / "src"))
-    done = subprocess.run([sys.executable, "-m", "electrogrowth", *BASE, "--voltage", "0.2",
-                           "--json"], capture_output=True, text=True, env=env, timeout=300)
+    done = subprocess.run(
+        [sys.executable, "-m", "electrogrowth", *BASE, "--voltage", "0.2", "--json"],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=300,
+    )
     assert done.returncode == 0, done.stderr
     assert json.loads(done.stdout)["lambda_i"] > 1.1
-    bad = subprocess.run([sys.executable, "-m", "electrogrowth", "state", "--outer-radius",
-                          "0.9"], capture_output=True, text=True, env=env, timeout=300)
+    bad = subprocess.run(
+        [sys.executable, "-m", "electrogrowth", "state", "--outer-radius", "0.9"],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=300,
+    )
     assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and "0.9" in bad.stderr

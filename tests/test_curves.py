@@ -25,8 +25,15 @@ def thin_to_thick():
     """lambda_z,cr (compression, Vbar = 0, L = 1) across Rbar_o = 1.2 .. 1.3: the critical
     mode switches from (m, n) = (1, 1) to (0, 1) near Rbar_o = 1.256."""
     calls = []
-    curve = critical_curve(TubeParameters(length=1.0), "stretch", "outer_radius", [1.2, 1.3],
-                           side="compression", progress=calls.append, **SMALL)
+    curve = critical_curve(
+        TubeParameters(length=1.0),
+        "stretch",
+        "outer_radius",
+        [1.2, 1.3],
+        side="compression",
+        progress=calls.append,
+        **SMALL,
+    )
     return curve, calls
 
 
@@ -72,8 +79,16 @@ def test_branches_csv_and_plot(thin_to_thick, tmp_path):
     path = curve.to_csv(tmp_path / "c.csv")
     with path.open() as fh:
         rows = list(csv.reader(fh))
-    assert rows[0] == ["outer_radius", "stretch_cr", "m", "n", "kind", "surface",
-                       "short_wave_limit", "status"]
+    assert rows[0] == [
+        "outer_radius",
+        "stretch_cr",
+        "m",
+        "n",
+        "kind",
+        "surface",
+        "short_wave_limit",
+        "status",
+    ]
     assert len(rows) == 1 + len(curve.x) and float(rows[1][1]) == curve.value[0]
     ax = plot_curve(curve)
     labels = {t.get_text() for t in ax.texts}
@@ -92,24 +107,30 @@ def test_failures_are_data():
     assert curve.branches() == [] and curve.switches == ()
 
 
-@pytest.mark.parametrize("solve_for, along, extra, named", [
-    ("growth", "growth", {}, "along = 'growth'"),
-    ("stretch", "stretch", {}, "along = 'stretch'"),
-    ("growth", "radius", {}, "along = 'radius'"),
-    ("pressure", "stretch", {}, "solve_for = 'pressure'"),
-    ("voltage", "stretch", {"side": "extension"}, "side"),
-    ("stretch", "voltage", {"side": "sideways"}, "sideways"),
-])
+@pytest.mark.parametrize(
+    "solve_for, along, extra, named",
+    [
+        ("growth", "growth", {}, "along = 'growth'"),
+        ("stretch", "stretch", {}, "along = 'stretch'"),
+        ("growth", "radius", {}, "along = 'radius'"),
+        ("pressure", "stretch", {}, "solve_for = 'pressure'"),
+        ("voltage", "stretch", {"side": "extension"}, "side"),
+        ("stretch", "voltage", {"side": "sideways"}, "sideways"),
+    ],
+)
 def test_bad_combinations_raise(solve_for, along, extra, named):
     with pytest.raises(ParameterError, match=named):
         critical_curve(TubeParameters(), solve_for, along, [1.0, 1.1], **extra)
 
 
-@pytest.mark.parametrize("values, named", [
-    ([1.2, 1.1, 1.3], "monotone"),
-    ([], "non-empty"),
-    ([0.5, 1.5], "Rbar_o = 0.5"),
-])
+@pytest.mark.parametrize(
+    "values, named",
+    [
+        ([1.2, 1.1, 1.3], "monotone"),
+        ([], "non-empty"),
+        ([0.5, 1.5], "Rbar_o = 0.5"),
+    ],
+)
 def test_bad_grids_raise(values, named):
     with pytest.raises(ParameterError, match=named):
         critical_curve(TubeParameters(), "voltage", "outer_radius", values)
@@ -122,9 +143,27 @@ def _args(*argv):
 
 
 def test_cli_writes_csv_png_and_json(tmp_path, capsys):
-    args = _args("--solve-for", "stretch", "--side", "compression", "--along", "outer_radius",
-                 "--from", "1.2", "--to", "1.3", "--points", "2", "--m-max", "2", "--n-max",
-                 "2", "--out", str(tmp_path), "--json")
+    args = _args(
+        "--solve-for",
+        "stretch",
+        "--side",
+        "compression",
+        "--along",
+        "outer_radius",
+        "--from",
+        "1.2",
+        "--to",
+        "1.3",
+        "--points",
+        "2",
+        "--m-max",
+        "2",
+        "--n-max",
+        "2",
+        "--out",
+        str(tmp_path),
+        "--json",
+    )
     assert run_curve(args) == 0
     out, err = capsys.readouterr()
     rec = json.loads(out)
@@ -135,8 +174,22 @@ def test_cli_writes_csv_png_and_json(tmp_path, capsys):
 
 
 def test_cli_text_summary(tmp_path, capsys):
-    args = _args("--solve-for", "growth", "--along", "stretch", "--from", "1.6", "--to",
-                 "1.65", "--points", "2", "--voltage", "0.6", "--out", str(tmp_path))
+    args = _args(
+        "--solve-for",
+        "growth",
+        "--along",
+        "stretch",
+        "--from",
+        "1.6",
+        "--to",
+        "1.65",
+        "--points",
+        "2",
+        "--voltage",
+        "0.6",
+        "--out",
+        str(tmp_path),
+    )
     assert run_curve(args) == 0
     out = capsys.readouterr().out
     assert "critical growth along stretch" in out and "Vbar = 0.6" in out
@@ -151,13 +204,16 @@ def test_cli_help_speaks_the_papers_terms():
         assert word in text
 
 
-@pytest.mark.parametrize("argv, named", [
-    (["--solve-for", "growth", "--along", "growth"], "along = 'growth'"),
-    (["--solve-for", "voltage", "--along", "stretch", "--side", "extension"], "--side"),
-    (["--solve-for", "voltage", "--along", "stretch", "--points", "1"], "--points = 1"),
-    (["--solve-for", "voltage", "--along", "stretch", "--to", "1"], "--from = --to"),
-    (["--solve-for", "voltage", "--along", "length", "--from", "-1"], "L = -1"),
-])
+@pytest.mark.parametrize(
+    "argv, named",
+    [
+        (["--solve-for", "growth", "--along", "growth"], "along = 'growth'"),
+        (["--solve-for", "voltage", "--along", "stretch", "--side", "extension"], "--side"),
+        (["--solve-for", "voltage", "--along", "stretch", "--points", "1"], "--points = 1"),
+        (["--solve-for", "voltage", "--along", "stretch", "--to", "1"], "--from = --to"),
+        (["--solve-for", "voltage", "--along", "length", "--from", "-1"], "L = -1"),
+    ],
+)
 def test_cli_bad_input_is_a_parameter_error(argv, named, tmp_path):
     argv = list(argv)
     for flag, value in (("--from", "1"), ("--to", "2")):

@@ -44,10 +44,10 @@ def test_figure6_matches_single_mode_solves(figures):
     h = figures[6].headline
     assert (h["m_lambda_cr_Ro1.4"], h["n_lambda_cr_Ro1.4"]) == (0, 1)
     assert h["lambda_cr_Ro1.4"] == pytest.approx(
-        critical_value(RO14, 0, 1, "stretch", side="compression").value, abs=1e-10)
+        critical_value(RO14, 0, 1, "stretch", side="compression").value, abs=1e-10
+    )
     assert (h["m_V_cr_Ro1.2"], h["n_V_cr_Ro1.2"]) == (2, 1)  # a thin tube: 3D pattern
-    assert h["V_cr_Ro1.4"] == pytest.approx(critical_value(RO14, 0, 1, "voltage").value,
-                                            abs=1e-10)
+    assert h["V_cr_Ro1.4"] == pytest.approx(critical_value(RO14, 0, 1, "voltage").value, abs=1e-10)
     # thicker tubes are more stable: stronger compression and higher voltage to buckle
     a, b = figures[6].curves
     assert np.all(np.diff(a.value) < 1e-9) and np.all(np.diff(b.value) > -1e-9)
@@ -57,14 +57,17 @@ def test_figure7_brackets_the_stable_stretches(figures):
     h = figures[7].headline
     p = TubeParameters(outer_radius=1.4, voltage=0.4)
     assert h["compression_V0.4_Ro1.4"] == pytest.approx(
-        critical_value(p, 0, 1, "stretch", side="compression").value, abs=1e-10)
+        critical_value(p, 0, 1, "stretch", side="compression").value, abs=1e-10
+    )
     # in extension at Vbar = 0.4 the outer face's short-wave limit comes first (issue 10)
     limit = short_wave_limit(p, "stretch", side="extension")
-    assert h["extension_V0.4_Ro1.4"] == limit.value < critical_value(
-        p, 0, 1, "stretch", side="extension").value
+    assert (
+        h["extension_V0.4_Ro1.4"]
+        == limit.value
+        < critical_value(p, 0, 1, "stretch", side="extension").value
+    )
     assert h["m_extension_V0.4_Ro1.4"] == h["n_extension_V0.4_Ro1.4"] == -1  # m, n -> inf
-    assert h["compression_V0.4_Ro1.4"] < 1 < h["extension_V0.6_Ro1.4"] \
-        < h["extension_V0.4_Ro1.4"]
+    assert h["compression_V0.4_Ro1.4"] < 1 < h["extension_V0.6_Ro1.4"] < h["extension_V0.4_Ro1.4"]
     finite = {h[k] for k in h if k.startswith("n_") and h[k] >= 0}
     assert finite == {1}  # the axial mode of every finite critical mode is n = 1
 
@@ -72,8 +75,7 @@ def test_figure7_brackets_the_stable_stretches(figures):
 def test_figure8_starts_at_zero_voltage_and_has_a_maximum(figures):
     res = figures[8]
     h = res.headline
-    assert h["lambda_start_L1"] == pytest.approx(figures[6].headline["lambda_cr_Ro1.4"],
-                                                 abs=1e-10)
+    assert h["lambda_start_L1"] == pytest.approx(figures[6].headline["lambda_cr_Ro1.4"], abs=1e-10)
     for c in res.curves:
         ok = np.isfinite(c.value)
         assert c.value[0] < 0.02  # Vbar_cr -> 0 at the Vbar = 0 critical stretch
@@ -132,6 +134,7 @@ def test_figure7_headline_by_collocation(figures):
     h = figures[7].headline
     p = TubeParameters(outer_radius=1.4, voltage=0.4)
     v = h["compression_V0.4_Ro1.4"]
-    col = critical_value(p, 0, 1, "stretch", side="compression", method="collocation",
-                         bracket=(v - 1e-4, v + 1e-4))
+    col = critical_value(
+        p, 0, 1, "stretch", side="compression", method="collocation", bracket=(v - 1e-4, v + 1e-4)
+    )
     assert col.value == pytest.approx(v, abs=1e-9)

@@ -47,12 +47,21 @@ R = sp.Rational
 #: non-zero, so each term of the chain rule is exercised.
 NON_IDEAL_POLY = Material(
     "non-ideal-poly",
-    R(2, 5) * (I1 - 3) + R(1, 10) * (I2 - 3) + R(1, 20) * (I1 - 3) ** 2 + I5 / 2
-    + R(1, 10) * I4 + R(1, 20) * I6 + R(1, 50) * I1 * I5 + R(3, 100) * I2 * I6
-    + R(1, 100) * I5**2 + R(1, 50) * I4 * I5 - R(1, 40) * I4 * I6)
+    R(2, 5) * (I1 - 3)
+    + R(1, 10) * (I2 - 3)
+    + R(1, 20) * (I1 - 3) ** 2
+    + I5 / 2
+    + R(1, 10) * I4
+    + R(1, 20) * I6
+    + R(1, 50) * I1 * I5
+    + R(3, 100) * I2 * I6
+    + R(1, 100) * I5**2
+    + R(1, 50) * I4 * I5
+    - R(1, 40) * I4 * I6,
+)
 NON_IDEAL_EXP = Material(
-    "non-ideal-exp",
-    (I1 - 3) / 2 + I5 / 2 * sp.exp((I1 - 3) / 10) + R(1, 5) * I4 - R(1, 10) * I6)
+    "non-ideal-exp", (I1 - 3) / 2 + I5 / 2 * sp.exp((I1 - 3) / 10) + R(1, 5) * I4 - R(1, 10) * I6
+)
 
 MATERIALS = {
     "neo-hookean": neo_hookean(),
@@ -64,8 +73,14 @@ MATERIALS = {
     "non-ideal-poly": NON_IDEAL_POLY,
     "non-ideal-exp": NON_IDEAL_EXP,
 }
-IDEAL = ["neo-hookean", "gent(2)", "gent(10)", "gent(97.2)", "mooney-rivlin(0.3)",
-         "mooney-rivlin(0.7)"]
+IDEAL = [
+    "neo-hookean",
+    "gent(2)",
+    "gent(10)",
+    "gent(97.2)",
+    "mooney-rivlin(0.3)",
+    "mooney-rivlin(0.7)",
+]
 
 
 def _random_points(n: int, seed: int) -> list[tuple[float, float, float, float]]:
@@ -127,10 +142,15 @@ def _fd_derivatives(material: Material, point: tuple) -> tuple[np.ndarray, np.nd
             hess[k][k] = (at((k, 1)) - 2 * f0 + at((k, -1))) / h**2
             for m in range(k + 1, 12):
                 hess[k][m] = hess[m][k] = (
-                    at((k, 1), (m, 1)) - at((k, 1), (m, -1))
-                    - at((k, -1), (m, 1)) + at((k, -1), (m, -1))) / (4 * h**2)
-        return (np.array([float(v) for v in grad]),
-                np.array([[float(v) for v in row] for row in hess]))
+                    at((k, 1), (m, 1))
+                    - at((k, 1), (m, -1))
+                    - at((k, -1), (m, 1))
+                    + at((k, -1), (m, -1))
+                ) / (4 * h**2)
+        return (
+            np.array([float(v) for v in grad]),
+            np.array([[float(v) for v in row] for row in hess]),
+        )
 
 
 def _reference(material: Material, point: tuple) -> dict[str, np.ndarray]:
@@ -177,8 +197,10 @@ def _assert_close(actual, desired, rtol=1e-10):
 
 
 all_cases = pytest.mark.parametrize(
-    ("key", "point"), [(k, p) for k in MATERIALS for p in POINTS],
-    ids=[f"{k}-{i}" for k in MATERIALS for i in POINT_IDS])
+    ("key", "point"),
+    [(k, p) for k in MATERIALS for p in POINTS],
+    ids=[f"{k}-{i}" for k in MATERIALS for i in POINT_IDS],
+)
 
 
 # ------------------------------------------------------------------ moduli vs reference
@@ -258,12 +280,20 @@ def _paper_eq9(mat: Material, point: tuple) -> tuple[np.ndarray, float]:
     l1, l2, l3, d = point
     b = np.array([l1, l2, l3]) ** 2
     dt2 = (d / l1) ** 2
-    values = dict(zip(INVARIANTS, (b.sum(), b[0] * b[1] + b[1] * b[2] + b[2] * b[0],
-                                   dt2, dt2 * b[0], dt2 * b[0] ** 2)))
+    values = dict(
+        zip(
+            INVARIANTS,
+            (b.sum(), b[0] * b[1] + b[1] * b[2] + b[2] * b[0], dt2, dt2 * b[0], dt2 * b[0] ** 2),
+        )
+    )
     w = {k: float(sp.diff(mat.energy, k).subs(values)) for k in INVARIANTS}
     DD = np.array([d * d, 0.0, 0.0])  # diagonal of D (x) D
-    tau = (2 * w[I1] * b + 2 * w[I2] * (values[I1] * b - b**2) + 2 * w[I5] * DD
-           + 2 * w[I6] * 2 * b * DD)
+    tau = (
+        2 * w[I1] * b
+        + 2 * w[I2] * (values[I1] * b - b**2)
+        + 2 * w[I5] * DD
+        + 2 * w[I6] * 2 * b * DD
+    )
     E1 = 2 * d * (w[I4] / b[0] + w[I5] + w[I6] * b[0])
     return tau, E1
 
@@ -282,13 +312,16 @@ def test_ideal_dielectric_field_equals_displacement(key, rng):
     assert mat.is_ideal_dielectric()
     l2, l3 = rng.uniform(0.75, 1.4, size=(2, 50))
     d = rng.uniform(-2, 2, size=50)
-    np.testing.assert_allclose(mat.electric_field(1 / (l2 * l3), l2, l3, d), d,
-                               rtol=1e-14, atol=1e-14)
+    np.testing.assert_allclose(
+        mat.electric_field(1 / (l2 * l3), l2, l3, d), d, rtol=1e-14, atol=1e-14
+    )
 
 
-@pytest.mark.parametrize("mat", [NON_IDEAL_POLY, NON_IDEAL_EXP,
-                                 Material("soft-eps", (I1 - 3) / 2 + I5 / 4)],
-                         ids=lambda m: m.name)
+@pytest.mark.parametrize(
+    "mat",
+    [NON_IDEAL_POLY, NON_IDEAL_EXP, Material("soft-eps", (I1 - 3) / 2 + I5 / 4)],
+    ids=lambda m: m.name,
+)
 def test_non_ideal_dielectric_is_detected(mat):
     assert not mat.is_ideal_dielectric()
     assert abs(float(mat.electric_field(1.0, 1.0, 1.0, 1.0)) - 1.0) > 1e-3
@@ -298,8 +331,23 @@ def test_neo_hookean_reference_state(neo):
     """Undeformed, no field: tau = 1 (pressure-like), A_piqj = delta_ij delta_pq, K = I."""
     np.testing.assert_allclose(neo.stress(1.0, 1.0, 1.0, 0.0), [1.0, 1.0, 1.0], atol=1e-15)
     m = dict(zip(MODULI_NAMES, neo.moduli(1.0, 1.0, 1.0, 0.0)))
-    expected = {n: 1.0 for n in ("A1111", "A2222", "A3333", "A1212", "A2121", "A1313",
-                                 "A3131", "A2323", "A3232", "K11", "K22", "K33")}
+    expected = {
+        n: 1.0
+        for n in (
+            "A1111",
+            "A2222",
+            "A3333",
+            "A1212",
+            "A2121",
+            "A1313",
+            "A3131",
+            "A2323",
+            "A3232",
+            "K11",
+            "K22",
+            "K33",
+        )
+    }
     assert m == pytest.approx({n: expected.get(n, 0.0) for n in MODULI_NAMES}, abs=1e-15)
 
 
@@ -361,8 +409,9 @@ def test_mooney_rivlin_alpha_one_is_neo_hookean(neo, rng):
     args = (1 / (l2 * l3), l2, l3, rng.uniform(-1.5, 1.5, size=40))
     np.testing.assert_allclose(mr.moduli(*args), neo.moduli(*args), rtol=1e-14, atol=1e-14)
     np.testing.assert_allclose(mr.stress(*args), neo.stress(*args), rtol=1e-14, atol=1e-14)
-    np.testing.assert_allclose(mr.electric_field(*args), neo.electric_field(*args),
-                               rtol=1e-14, atol=1e-14)
+    np.testing.assert_allclose(
+        mr.electric_field(*args), neo.electric_field(*args), rtol=1e-14, atol=1e-14
+    )
 
 
 @pytest.mark.parametrize("alpha", [0.2, 0.5, 0.9])
@@ -405,20 +454,35 @@ def test_material_by_name_builds_the_builtins():
     assert set(materials.BUILTIN) == {"neo-hookean", "gent", "mooney-rivlin"}
 
 
-@pytest.mark.parametrize(("make", "error", "named"), [
-    (lambda: gent(jm=-1), ParameterError, "-1"),
-    (lambda: gent(jm=0.0), ParameterError, "0.0"),
-    (lambda: gent(jm=float("inf")), ParameterError, "inf"),
-    (lambda: gent(jm=float("nan")), ParameterError, "nan"),
-    (lambda: mooney_rivlin(alpha=0), ParameterError, "0"),
-    (lambda: mooney_rivlin(alpha=1.5), ParameterError, "1.5"),
-    (lambda: mooney_rivlin(alpha=float("nan")), ParameterError, "nan"),
-    (lambda: material_by_name("foo"), MaterialError, "'foo'"),
-    (lambda: material_by_name("gent", jm=-3.5), ParameterError, "-3.5"),
-    (lambda: Material("bad", (I1 - 3) / 2 + sp.Symbol("mu") * I5), MaterialError, "mu"),
-    (lambda: Material("bad", sp.Symbol("I3") - 1), MaterialError, "I3"),
-], ids=["gent-negative", "gent-zero", "gent-inf", "gent-nan", "mr-zero", "mr-above-one",
-        "mr-nan", "unknown-name", "by-name-bad-param", "foreign-symbol", "I3"])
+@pytest.mark.parametrize(
+    ("make", "error", "named"),
+    [
+        (lambda: gent(jm=-1), ParameterError, "-1"),
+        (lambda: gent(jm=0.0), ParameterError, "0.0"),
+        (lambda: gent(jm=float("inf")), ParameterError, "inf"),
+        (lambda: gent(jm=float("nan")), ParameterError, "nan"),
+        (lambda: mooney_rivlin(alpha=0), ParameterError, "0"),
+        (lambda: mooney_rivlin(alpha=1.5), ParameterError, "1.5"),
+        (lambda: mooney_rivlin(alpha=float("nan")), ParameterError, "nan"),
+        (lambda: material_by_name("foo"), MaterialError, "'foo'"),
+        (lambda: material_by_name("gent", jm=-3.5), ParameterError, "-3.5"),
+        (lambda: Material("bad", (I1 - 3) / 2 + sp.Symbol("mu") * I5), MaterialError, "mu"),
+        (lambda: Material("bad", sp.Symbol("I3") - 1), MaterialError, "I3"),
+    ],
+    ids=[
+        "gent-negative",
+        "gent-zero",
+        "gent-inf",
+        "gent-nan",
+        "mr-zero",
+        "mr-above-one",
+        "mr-nan",
+        "unknown-name",
+        "by-name-bad-param",
+        "foreign-symbol",
+        "I3",
+    ],
+)
 def test_bad_input_raises_named_one_line_error(make, error, named):
     with pytest.raises(error) as info:
         make()
@@ -434,8 +498,11 @@ def test_materials_doctests():
     assert result.failed == 0
 
 
-@pytest.mark.parametrize("combo", list(itertools.combinations(range(5), 2)),
-                         ids=lambda c: "I{}-I{}".format(*((1, 2, 4, 5, 6)[k] for k in c)))
+@pytest.mark.parametrize(
+    "combo",
+    list(itertools.combinations(range(5), 2)),
+    ids=lambda c: "I{}-I{}".format(*((1, 2, 4, 5, 6)[k] for k in c)),
+)
 def test_cross_derivatives_enter_moduli(combo):
     """A single cross term c I_k I_l changes the moduli by a finite-difference-exact amount:
     guards the Omega_kl (k != l) part of the chain rule, term by term."""
@@ -465,8 +532,11 @@ def test_gent_beyond_locking_limit_is_flagged():
     assert not np.all(np.isfinite(tau))
 
 
-@pytest.mark.parametrize("make", [lambda: gent(jm="10"), lambda: mooney_rivlin(alpha="0.5")],
-                         ids=["gent", "mooney-rivlin"])
+@pytest.mark.parametrize(
+    "make",
+    [lambda: gent(jm="10"), lambda: mooney_rivlin(alpha="0.5")],
+    ids=["gent", "mooney-rivlin"],
+)
 def test_non_numeric_parameter_raises_parameter_error(make):
     with pytest.raises(ParameterError):
         make()

@@ -27,10 +27,13 @@ from electrogrowth.model.materials import (
     neo_hookean_moduli,
 )
 
-MATERIALS = {"neo-hookean": neo_hookean(), "gent5": gent(jm=5.0),
-             "mooney-rivlin0.3": mooney_rivlin(0.3)}
+MATERIALS = {
+    "neo-hookean": neo_hookean(),
+    "gent5": gent(jm=5.0),
+    "mooney-rivlin0.3": mooney_rivlin(0.3),
+}
 MODES = [(0, 0.0), (1, 0.7), (4, 2.5), (12, 0.3), (2.0, 6.0)]
-ELECTRIC = [3, 7]             # eta indices of r Delta_r and -Phi
+ELECTRIC = [3, 7]  # eta indices of r Delta_r and -Phi
 MECHANICAL = [0, 1, 2, 4, 5, 6]
 # Paper Appendix B uses eta_7 = +Phi: G_paper = T G T with T = diag(1, ..., 1, -1).
 T_PAPER = np.diag([1.0] * 7 + [-1.0])
@@ -67,6 +70,7 @@ def derivation():
 
 # --- structure --------------------------------------------------------------------------
 
+
 @pytest.mark.parametrize("name", MATERIALS)
 @pytest.mark.parametrize("m, kr", MODES)
 def test_hamiltonian_structure(name, m, kr):
@@ -85,8 +89,9 @@ def test_hamiltonian_for_generic_moduli():
     """The structure needs only the major symmetries, not eq. 20-1: random moduli."""
     rng = np.random.default_rng(1)
     for _ in range(20):
-        G1, G2, G3, G4 = stroh_blocks(rng.uniform(0.2, 3.0, 23), rng.normal(),
-                                      rng.integers(0, 9), rng.uniform(0, 5))
+        G1, G2, G3, G4 = stroh_blocks(
+            rng.uniform(0.2, 3.0, 23), rng.normal(), rng.integers(0, 9), rng.uniform(0, 5)
+        )
         np.testing.assert_allclose(G2, G2.T, atol=1e-12)
         np.testing.assert_allclose(G3, G3.T, atol=1e-12 * np.abs(G3).max())
         np.testing.assert_allclose(G4, -G1.T, atol=1e-14)
@@ -99,8 +104,15 @@ def test_blocks_and_python_twin_agree_with_kernel():
     ref = np.empty((8, 8))
     stroh_matrix_py(mod, 0.4, 3.0, 1.1, ref)
     np.testing.assert_array_equal(G, ref)
-    np.testing.assert_array_equal(np.block([list(stroh_blocks(mod, 0.4, 3.0, 1.1)[:2]),
-                                            list(stroh_blocks(mod, 0.4, 3.0, 1.1)[2:])]), G)
+    np.testing.assert_array_equal(
+        np.block(
+            [
+                list(stroh_blocks(mod, 0.4, 3.0, 1.1)[:2]),
+                list(stroh_blocks(mod, 0.4, 3.0, 1.1)[2:]),
+            ]
+        ),
+        G,
+    )
     # works on a strided row of a 2-D moduli array (as a batched kernel would pass it)
     batch = np.stack([mod, 2 * mod], axis=1)
     np.testing.assert_array_equal(G_of(batch[:, 0], 0.4, 3.0, 1.1), G)
@@ -108,18 +120,22 @@ def test_blocks_and_python_twin_agree_with_kernel():
 
 # --- against the derivation -------------------------------------------------------------
 
+
 def test_matches_sympy_derivation(derivation):
     f, signs = derivation
     assert signs == (SIGN_DELTA, SIGN_PHI)
     rng = np.random.default_rng(3)
-    cases = [(rng.uniform(0.2, 3.0, 23), rng.normal(), float(rng.integers(0, 9)),
-              rng.uniform(0, 5)) for _ in range(10)]
+    cases = [
+        (rng.uniform(0.2, 3.0, 23), rng.normal(), float(rng.integers(0, 9)), rng.uniform(0, 5))
+        for _ in range(10)
+    ]
     for material in MATERIALS.values():
         cases += [(mod, p, 5.0, 1.3) for *_, p, mod, _ in material_states(material, 3, 4)]
     for mod, p, m, kr in cases:
         ref = np.array(f(*mod, p, m, kr), dtype=float)
-        np.testing.assert_allclose(G_of(mod, p, m, kr), ref, rtol=1e-12,
-                                   atol=1e-12 * np.abs(ref).max())
+        np.testing.assert_allclose(
+            G_of(mod, p, m, kr), ref, rtol=1e-12, atol=1e-12 * np.abs(ref).max()
+        )
 
 
 @pytest.mark.parametrize("m, kr", MODES)
@@ -127,8 +143,12 @@ def test_neo_hookean_closed_form(m, kr):
     for l1, l2, l3, d, p, mod, _ in material_states(neo_hookean(), 5, seed=5):
         np.testing.assert_allclose(mod, neo_hookean_moduli(l1, l2, l3, d), atol=1e-13)
         G = G_of(mod, p, m, kr)
-        np.testing.assert_allclose(neo_hookean_stroh_matrix(l1, l2, l3, d, p, m, kr), G,
-                                   rtol=1e-13, atol=1e-13 * np.abs(G).max())
+        np.testing.assert_allclose(
+            neo_hookean_stroh_matrix(l1, l2, l3, d, p, m, kr),
+            G,
+            rtol=1e-13,
+            atol=1e-13 * np.abs(G).max(),
+        )
 
 
 def incremental_equation_residuals(fill_g):
@@ -171,16 +191,28 @@ def incremental_equation_residuals(fill_g):
     sig = [eta[4] / r * cc, eta[5] / r * sc, eta[6] / r * cs]
     grad = lambda f: [d_r(f), sp.diff(f, th) / r, sp.diff(f, z)]  # noqa: E731
     gu = [grad(c) for c in u]
-    L = sp.Matrix([[gu[0][0], gu[0][1] - u[1] / r, gu[0][2]],      # paper eq. 52
-                   [gu[1][0], gu[1][1] + u[0] / r, gu[1][2]],
-                   [gu[2][0], gu[2][1], gu[2][2]]])
+    L = sp.Matrix(
+        [
+            [gu[0][0], gu[0][1] - u[1] / r, gu[0][2]],  # paper eq. 52
+            [gu[1][0], gu[1][1] + u[0] / r, gu[1][2]],
+            [gu[2][0], gu[2][1], gu[2][2]],
+        ]
+    )
     E = [-g for g in grad(phi)]
-    EL = [sum(Gam(q + 1, j + 1, a + 1) * L[j, q] for q in range(3) for j in range(3))
-          for a in range(3)]
+    EL = [
+        sum(Gam(q + 1, j + 1, a + 1) * L[j, q] for q in range(3) for j in range(3))
+        for a in range(3)
+    ]
     D = [SIGN_DELTA * eta[3] / r * cc, (E[1] - EL[1]) / M("K22"), (E[2] - EL[2]) / M("K33")]
-    S_nop = sp.Matrix(3, 3, lambda a, i: sum(
-        A(a + 1, i + 1, q + 1, j + 1) * L[j, q] for q in range(3) for j in range(3))
-        + sum(Gam(a + 1, i + 1, q + 1) * D[q] for q in range(3)) + p * L[a, i])
+    S_nop = sp.Matrix(
+        3,
+        3,
+        lambda a, i: (
+            sum(A(a + 1, i + 1, q + 1, j + 1) * L[j, q] for q in range(3) for j in range(3))
+            + sum(Gam(a + 1, i + 1, q + 1) * D[q] for q in range(3))
+            + p * L[a, i]
+        ),
+    )
     pdot = S_nop[0, 0] - sig[0]
     S = S_nop - pdot * sp.eye(3)
 
@@ -194,10 +226,11 @@ def incremental_equation_residuals(fill_g):
         "Sigma_rz": S[0, 2] - sig[2],
         "E_r": EL[0] + M("K11") * D[0] - E[0],
         "div D": d_r(D[0]) + (sp.diff(D[1], th) + D[0]) / r + sp.diff(D[2], z),
-        "div S r": div_S(0), "div S th": div_S(1), "div S z": div_S(2),
+        "div S r": div_S(0),
+        "div S th": div_S(1),
+        "div S z": div_S(2),
     }
-    coeffs = {name: [sp.diff(res, eta[i]) for i in range(8)]
-              for name, res in residuals.items()}
+    coeffs = {name: [sp.diff(res, eta[i]) for i in range(8)] for name, res in residuals.items()}
     return coeffs, list(mod) + [p, m, k, r, th, z]
 
 
@@ -217,10 +250,10 @@ def test_incremental_equations_detect_a_wrong_matrix(mutation):
 
     def wrong(mod, p, m, kr, out):
         stroh_matrix_py(mod, p, m, kr, out)
-        if mutation == "paper-sign":          # eta_7 = +Phi as in the paper, eta kept
+        if mutation == "paper-sign":  # eta_7 = +Phi as in the paper, eta kept
             out[:, 7] *= -1
             out[7, :] *= -1
-        elif mutation == "paper-n-typo":      # n for m in G4(2, 1)
+        elif mutation == "paper-n-typo":  # n for m in G4(2, 1)
             out[5, 4] = n
         else:
             out[5, 2] -= m * kr * mod[MODULI_INDEX["A2332"]]
@@ -234,6 +267,7 @@ def test_incremental_equations_detect_a_wrong_matrix(mutation):
 
 # --- limits and the paper ---------------------------------------------------------------
 
+
 def elastic_tube_stroh(mod, sigma_rr, p, m, kr):
     """6x6 Stroh matrix of a purely elastic tube, eta = [U, r Sigma_r] (sigma_rr form).
 
@@ -242,20 +276,28 @@ def elastic_tube_stroh(mod, sigma_rr, p, m, kr):
     implementation uses raw moduli, so it checks that step too.
     """
     a = lambda n: mod[MODULI_INDEX[n]]  # noqa: E731
-    g12, g13, g21, g31, g32, g23 = (a("A1212"), a("A1313"), a("A2121"), a("A3131"),
-                                    a("A3232"), a("A2323"))
+    g12, g13, g21, g31, g32, g23 = (
+        a("A1212"),
+        a("A1313"),
+        a("A2121"),
+        a("A3131"),
+        a("A3232"),
+        a("A2323"),
+    )
     b12 = (a("A1111") + a("A2222") - 2 * a("A1122") - 2 * a("A1221")) / 2
     b13 = (a("A1111") + a("A3333") - 2 * a("A1133") - 2 * a("A1331")) / 2
     s = sigma_rr
-    k11 = (2 * (g12 - s + b12) + m**2 * (g21 - (g12 - s) ** 2 / g12)
-           + kr**2 * (g31 - (g13 - s) ** 2 / g13))
+    k11 = (
+        2 * (g12 - s + b12)
+        + m**2 * (g21 - (g12 - s) ** 2 / g12)
+        + kr**2 * (g31 - (g13 - s) ** 2 / g13)
+    )
     k12 = m * (g12 + g21 + 2 * b12 - s**2 / g12)
     k13 = kr * (a("A1111") + a("A2233") - a("A1122") - a("A1133") + p)
     k22 = 2 * m**2 * (g12 - s + b12) + g21 - (g12 - s) ** 2 / g12 + kr**2 * g32
     k23 = m * kr * (a("A1111") + a("A2233") + a("A2332") - a("A1122") - a("A1133") + 2 * p)
     k33 = 2 * kr**2 * (g13 - s + b13) + m**2 * g23
-    G1 = np.array([[-1, -m, -kr], [m * (1 - s / g12), 1 - s / g12, 0],
-                   [kr * (1 - s / g13), 0, 0]])
+    G1 = np.array([[-1, -m, -kr], [m * (1 - s / g12), 1 - s / g12, 0], [kr * (1 - s / g13), 0, 0]])
     G2 = np.diag([0, 1 / g12, 1 / g13])
     G3 = np.array([[k11, k12, k13], [k12, k22, k23], [k13, k23, k33]])
     return np.block([[G1, G2], [G3, -G1.T]])
@@ -269,18 +311,20 @@ def test_no_voltage_decouples_to_elastic_tube(name, m, kr):
     for _ in range(3):
         l2, l3, p = rng.uniform(0.75, 1.35), rng.uniform(0.8, 1.3), rng.uniform(-0.5, 2)
         l1 = 1 / (l2 * l3)
-        mod = material.moduli(l1, l2, l3, 0.0)          # Vbar = 0: d = 0, Gamma = 0
+        mod = material.moduli(l1, l2, l3, 0.0)  # Vbar = 0: d = 0, Gamma = 0
         G = G_of(mod, p, m, kr)
         assert not G[np.ix_(ELECTRIC, MECHANICAL)].any()
         assert not G[np.ix_(MECHANICAL, ELECTRIC)].any()
         sigma_rr = material.stress(l1, l2, l3, 0.0)[0] - p
         ref = elastic_tube_stroh(mod, sigma_rr, p, m, kr)
-        np.testing.assert_allclose(G[np.ix_(MECHANICAL, MECHANICAL)], ref, rtol=1e-12,
-                                   atol=1e-12 * np.abs(ref).max())
+        np.testing.assert_allclose(
+            G[np.ix_(MECHANICAL, MECHANICAL)], ref, rtol=1e-12, atol=1e-12 * np.abs(ref).max()
+        )
         # what is left is Laplace's equation for phidot in the dielectric
         K = mod[[MODULI_INDEX["K11"], MODULI_INDEX["K22"], MODULI_INDEX["K33"]]]
-        np.testing.assert_allclose(G[np.ix_(ELECTRIC, ELECTRIC)],
-                                   [[0, m**2 / K[1] + kr**2 / K[2]], [K[0], 0]], rtol=1e-14)
+        np.testing.assert_allclose(
+            G[np.ix_(ELECTRIC, ELECTRIC)], [[0, m**2 / K[1] + kr**2 / K[2]], [K[0], 0]], rtol=1e-14
+        )
 
 
 def paper_appendix_b(mod, sigma_rr, p, m, kr, n):
@@ -294,26 +338,47 @@ def paper_appendix_b(mod, sigma_rr, p, m, kr, n):
     g23, g32, s = a("A2323"), a("A3232"), sigma_rr
     xi1 = -(r2 * m**2 / g12 + r3 * kr**2 / g13) * s
     xi2 = -(m**2 / a("K22") + r2**2 * m**2 / g12 + kr**2 / a("K33") + r3**2 * kr**2 / g13)
-    b12 = (a("A1111") + a("A2222") - 2 * a("A1122") - 2 * a("A1221")
-           + 2 * a("G122") ** 2 / a("K22")) / 2
-    b13 = (a("A1111") + a("A3333") - 2 * a("A1133") - 2 * a("A1331")
-           + 2 * a("G133") ** 2 / a("K33")) / 2
-    k11 = (2 * (g12 - s + b12) + m**2 * (g21 - (g12 - s) ** 2 / g12)
-           + kr**2 * (g31 - (g13 - s) ** 2 / g13))
+    b12 = (
+        a("A1111") + a("A2222") - 2 * a("A1122") - 2 * a("A1221") + 2 * a("G122") ** 2 / a("K22")
+    ) / 2
+    b13 = (
+        a("A1111") + a("A3333") - 2 * a("A1133") - 2 * a("A1331") + 2 * a("G133") ** 2 / a("K33")
+    ) / 2
+    k11 = (
+        2 * (g12 - s + b12)
+        + m**2 * (g21 - (g12 - s) ** 2 / g12)
+        + kr**2 * (g31 - (g13 - s) ** 2 / g13)
+    )
     k12 = m * (g12 + g21 + 2 * b12 - s**2 / g12)
     k13 = kr * (a("A1111") + a("A2233") - a("A1122") - a("A1133") + p)
     k22 = 2 * m**2 * (g12 - s + b12) + g21 - (g12 - s) ** 2 / g12 + kr**2 * g32
     k23 = m * kr * (a("A1111") + a("A2233") + a("A2332") - a("A1122") - a("A1133") + 2 * p)
     k33 = 2 * kr**2 * (g13 - s + b13) + m**2 * g23
     d21, d31 = a("G111") - a("G221"), a("G111") - a("G331")
-    G1 = [[-1, -m, -kr, 0], [m * (1 - s / g12), 1 - s / g12, 0, 0],
-          [kr * (1 - s / g13), 0, 0, 0], [xi1, -m * s / g12 * r2, 0, 0]]
-    G2 = [[0, 0, 0, 0], [0, 1 / g12, 0, -m / g12 * r2], [0, 0, 1 / g13, -kr / g13 * r3],
-          [0, m / g12 * r2, kr / g13 * r3, xi2]]
-    G3 = [[k11, k12, k13, -d21], [k12, k22, k23, -m * d21], [k13, k23, k33, -kr * d31],
-          [d21, m * d21, kr * d31, -a("K11")]]
-    G4 = [[1, -m * (g12 - s) / g12, -kr * (g13 - s) / g13, xi1],
-          [n, -(g12 - s) / g12, 0, -n * s / g12 * r2], [kr, 0, 0, 0], [0, 0, 0, 0]]
+    G1 = [
+        [-1, -m, -kr, 0],
+        [m * (1 - s / g12), 1 - s / g12, 0, 0],
+        [kr * (1 - s / g13), 0, 0, 0],
+        [xi1, -m * s / g12 * r2, 0, 0],
+    ]
+    G2 = [
+        [0, 0, 0, 0],
+        [0, 1 / g12, 0, -m / g12 * r2],
+        [0, 0, 1 / g13, -kr / g13 * r3],
+        [0, m / g12 * r2, kr / g13 * r3, xi2],
+    ]
+    G3 = [
+        [k11, k12, k13, -d21],
+        [k12, k22, k23, -m * d21],
+        [k13, k23, k33, -kr * d31],
+        [d21, m * d21, kr * d31, -a("K11")],
+    ]
+    G4 = [
+        [1, -m * (g12 - s) / g12, -kr * (g13 - s) / g13, xi1],
+        [n, -(g12 - s) / g12, 0, -n * s / g12 * r2],
+        [kr, 0, 0, 0],
+        [0, 0, 0, 0],
+    ]
     return np.block([[np.array(G1), np.array(G2)], [np.array(G3), np.array(G4)]])
 
 
@@ -330,11 +395,17 @@ def test_paper_appendix_b(name):
             ours = T_PAPER @ G_of(mod, p, m, kr) @ T_PAPER
             scale = np.abs(ours).max()
             printed = paper_appendix_b(mod, sigma_rr, p, m, kr, n=m + 2)
-            wrong = {tuple(ij) for ij in np.argwhere(~np.isclose(printed, ours, rtol=1e-11,
-                                                                  atol=1e-11 * scale))}
+            wrong = {
+                tuple(ij)
+                for ij in np.argwhere(~np.isclose(printed, ours, rtol=1e-11, atol=1e-11 * scale))
+            }
             assert wrong == PAPER_TYPOS
-            np.testing.assert_allclose(paper_appendix_b(mod, sigma_rr, p, m, kr, n=m), ours,
-                                       rtol=1e-11, atol=1e-11 * scale)
+            np.testing.assert_allclose(
+                paper_appendix_b(mod, sigma_rr, p, m, kr, n=m),
+                ours,
+                rtol=1e-11,
+                atol=1e-11 * scale,
+            )
             # the paper's sign of Phi is exactly what breaks the Hamiltonian structure
             P1, P4 = printed[:4, :4], paper_appendix_b(mod, sigma_rr, p, m, kr, m)[4:, 4:]
             assert not np.allclose(P4, -P1.T)
@@ -342,8 +413,10 @@ def test_paper_appendix_b(name):
 
 # --- the impedance ----------------------------------------------------------------------
 
+
 def integrate_impedance(G_at, r0=1.0, r1=1.25):
     """z(r1) from dz/dr = (-z G1 - z G2 z + G3 + G4 z)/r, z(r0) = 0 (paper eq. Riccati)."""
+
     def rhs(r, y):
         z = y.reshape(4, 4)
         G = G_at(r)
@@ -357,7 +430,7 @@ def integrate_impedance(G_at, r0=1.0, r1=1.25):
 
 @pytest.mark.parametrize("name", MATERIALS)
 def test_impedance_stays_symmetric(name):
-    (*_, p, mod, _), = material_states(MATERIALS[name], 1, seed=9)
+    ((*_, p, mod, _),) = material_states(MATERIALS[name], 1, seed=9)
     m, k = 3.0, 2.0
     z = integrate_impedance(lambda r: G_of(mod, p, m, k * r))
     assert np.abs(z).max() > 1.0

@@ -45,8 +45,19 @@ outer_radius = [1.4, 1.5, 1.6]
 [run]
 chunk = 1
 """
-COMPARED = ("critical_value", "m", "n", "kind", "error_estimate", "status", "message",
-            "surface_instability", "runner_up_value", "runner_up_m", "runner_up_n")
+COMPARED = (
+    "critical_value",
+    "m",
+    "n",
+    "kind",
+    "error_estimate",
+    "status",
+    "message",
+    "surface_instability",
+    "runner_up_value",
+    "runner_up_m",
+    "runner_up_n",
+)
 SRC = Path(electrogrowth.__file__).resolve().parents[1]
 LAUNCHER = """\
 from electrogrowth.cli import app as cli
@@ -60,10 +71,12 @@ if __name__ == "__main__":
 @pytest.fixture
 def commands(monkeypatch):
     """cli.main with the two sweep commands registered (as the lead will in cli.py)."""
-    monkeypatch.setitem(cli.COMMANDS, "sweep", ("sweep", cli_sweep.configure_sweep,
-                                                cli_sweep.run_sweep))
-    monkeypatch.setitem(cli.COMMANDS, "plot", ("plot", cli_sweep.configure_plot,
-                                               cli_sweep.run_plot))
+    monkeypatch.setitem(
+        cli.COMMANDS, "sweep", ("sweep", cli_sweep.configure_sweep, cli_sweep.run_sweep)
+    )
+    monkeypatch.setitem(
+        cli.COMMANDS, "plot", ("plot", cli_sweep.configure_plot, cli_sweep.run_plot)
+    )
     return cli.main
 
 
@@ -81,8 +94,7 @@ def assert_same_results(ds, ref):
     for name in COMPARED:
         a, b = ds[name].values, ref[name].values
         if a.dtype.kind == "f":
-            np.testing.assert_allclose(a, b, rtol=1e-12, atol=0, equal_nan=True,
-                                       err_msg=name)
+            np.testing.assert_allclose(a, b, rtol=1e-12, atol=0, equal_nan=True, err_msg=name)
         else:
             assert (a == b).all(), name
 
@@ -102,8 +114,7 @@ def test_reference_sweep_is_labelled_and_matches_single_scans(reference):
 def test_failing_point_is_recorded_and_the_rest_computed(tmp_path):
     text = TINY.replace("stretch = [1.0, 1.2, 1.4]", "stretch = [0.6, 1.0]")
     text = text.replace("outer_radius = [1.4, 1.5, 1.6]", "outer_radius = [1.4]")
-    summary = compute_sweep(parse_config(text), tmp_path / "f.zarr", workers=1,
-                            progress=False)
+    summary = compute_sweep(parse_config(text), tmp_path / "f.zarr", workers=1, progress=False)
     ds = open_results(tmp_path / "f.zarr")
     bad, good = ds.sel(stretch=0.6, outer_radius=1.4), ds.sel(stretch=1.0, outer_radius=1.4)
     assert str(bad["status"].values) == "failed" and int(bad["m"]) == -1
@@ -121,6 +132,7 @@ def test_unit_turns_every_exception_into_a_record(monkeypatch):
 
     def boom(*args, **kwargs):
         raise ZeroDivisionError("a bug")
+
     monkeypatch.setattr(sweep, "scan_modes", boom)
     rec = compute_point(TubeParameters(1.4), spec)
     assert rec.status == "error" and rec.message == "internal error: ZeroDivisionError: a bug"
@@ -129,10 +141,12 @@ def test_unit_turns_every_exception_into_a_record(monkeypatch):
 def test_dask_cluster_gives_the_serial_results(reference, tmp_path):
     distributed = pytest.importorskip("distributed")
     config, _, ref = reference
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                                  host="127.0.0.1", dashboard_address=None) as cluster:
-        summary = compute_sweep(config, tmp_path / "d.zarr",
-                                scheduler=cluster.scheduler_address, progress=False)
+    with distributed.LocalCluster(
+        n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1", dashboard_address=None
+    ) as cluster:
+        summary = compute_sweep(
+            config, tmp_path / "d.zarr", scheduler=cluster.scheduler_address, progress=False
+        )
     assert summary.chunks_computed == 9
     assert_same_results(open_results(tmp_path / "d.zarr"), ref)
 
@@ -142,11 +156,18 @@ def test_killed_sweep_resumes_without_recomputing(reference, tmp_path, commands)
     (tmp_path / "s.toml").write_text(TINY)
     (tmp_path / "launch.py").write_text(LAUNCHER)
     out = tmp_path / "s.zarr"
-    env = {**os.environ, "PYTHONPATH": os.pathsep.join(filter(None, [
-        str(SRC), os.environ.get("PYTHONPATH")]))}
-    proc = subprocess.Popen([sys.executable, "launch.py", "sweep", "s.toml", "--workers", "2",
-                             "--quiet"], cwd=tmp_path, env=env, start_new_session=True,
-                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    env = {
+        **os.environ,
+        "PYTHONPATH": os.pathsep.join(filter(None, [str(SRC), os.environ.get("PYTHONPATH")])),
+    }
+    proc = subprocess.Popen(
+        [sys.executable, "launch.py", "sweep", "s.toml", "--workers", "2", "--quiet"],
+        cwd=tmp_path,
+        env=env,
+        start_new_session=True,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+    )
     marks = out / "run" / "c"
     deadline = time.monotonic() + 60
     while not (marks.exists() and any(p.is_file() for p in marks.rglob("*"))):
@@ -160,8 +181,12 @@ def test_killed_sweep_resumes_without_recomputing(reference, tmp_path, commands)
     done = int((before > 0).sum())
     assert 1 <= done < 9, "the kill came too late to test a resume"
 
-    assert commands(["sweep", str(tmp_path / "s.toml"), "--out", str(out), "--workers", "1",
-                     "--quiet"]) == 0
+    assert (
+        commands(
+            ["sweep", str(tmp_path / "s.toml"), "--out", str(out), "--workers", "1", "--quiet"]
+        )
+        == 0
+    )
     after = open_results(out)
     run = after["run"].values
     assert (run[before > 0] == 1).all()  # finished before the kill: not recomputed
@@ -173,8 +198,9 @@ def test_resume_with_another_config_is_refused(reference, tmp_path, commands, ca
     _, out, _ = reference
     stamp = sorted((p, p.stat().st_mtime_ns) for p in out.rglob("*"))
     other = tmp_path / "other.toml"
-    other.write_text(TINY.replace("rtol = 1e-10", "rtol = 1e-11")
-                     .replace("[1.0, 1.2, 1.4]", "[1.0, 1.3]"))
+    other.write_text(
+        TINY.replace("rtol = 1e-10", "rtol = 1e-11").replace("[1.0, 1.2, 1.4]", "[1.0, 1.3]")
+    )
     assert commands(["sweep", str(other), "--out", str(out), "--quiet"]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "holds a different sweep" in err
@@ -193,10 +219,16 @@ def test_rerun_of_a_finished_sweep_computes_nothing(reference, commands, capsys,
     assert "computed 0 of 9 chunks" in printed and "(9 done before)" in printed
 
 
-@pytest.mark.parametrize("shape, points, block, count", [
-    ((3, 2), 1, (1, 1), 6), ((3, 2), 4, (2, 2), 2), ((5,), 2, (2,), 3),
-    ((4, 3, 2), 7, (1, 3, 2), 4), ((2, 2), 100, (2, 2), 1),
-])
+@pytest.mark.parametrize(
+    "shape, points, block, count",
+    [
+        ((3, 2), 1, (1, 1), 6),
+        ((3, 2), 4, (2, 2), 2),
+        ((5,), 2, (2,), 3),
+        ((4, 3, 2), 7, (1, 3, 2), 4),
+        ((2, 2), 100, (2, 2), 1),
+    ],
+)
 def test_blocks_tile_the_grid(shape, points, block, count):
     assert block_shape(shape, points) == block
     blocks = grid_blocks(shape, block)

@@ -42,14 +42,16 @@ def edit(line: int, new: str) -> str:
 @pytest.fixture
 def sweep(monkeypatch, tmp_path, capsys):
     """Run `electrogrowth sweep FILE --out STORE` on a text; return (status, stderr, store)."""
-    monkeypatch.setitem(cli.COMMANDS, "sweep", ("sweep", cli_sweep.configure_sweep,
-                                                cli_sweep.run_sweep))
+    monkeypatch.setitem(
+        cli.COMMANDS, "sweep", ("sweep", cli_sweep.configure_sweep, cli_sweep.run_sweep)
+    )
 
     def run(text):
         path, out = tmp_path / "bad.toml", tmp_path / "bad.zarr"
         path.write_text(text)
         status = cli.main(["sweep", str(path), "--out", str(out), "--quiet"])
         return status, capsys.readouterr().err, out
+
     return run
 
 
@@ -66,33 +68,36 @@ def test_good_file_is_normalised():
     assert differences(c, other) == ["material.jm", "grid.stretch"]
 
 
-@pytest.mark.parametrize("text, line, needle", [
-    (edit(8, "extnd = false"), 8, "modes.extnd: unknown key; [modes] takes m, n, extend"),
-    (GOOD + "\n[output]\npath = 'x'\n", 21, "output: unknown key"),
-    (edit(3, 'rtol = "1e-10"'), 3, "solve.rtol: expected a number, got a string"),
-    (edit(3, "rtol = 1.0"), 3, "rtol = 1.0 is out of range"),
-    (edit(2, "for = "), 2, "invalid TOML"),
-    (edit(2, 'for = "heat"'), 2, "'heat' is unknown"),
-    (edit(2, 'for = "growth"\nside = "extension"'), 3, "side applies only"),
-    (edit(6, "m = [3, 0]"), 6, "modes.m: m range [3, 0] is invalid"),
-    (edit(7, "n = [1.5, 3]"), 7, "modes.n: expected an inclusive range"),
-    (edit(11, 'name = "rubber"'), 11, "unknown material 'rubber'"),
-    (edit(12, "alpha = 0.5"), 12, "material.alpha: unknown key; material 'gent' takes jm"),
-    (edit(12, "jm = -1"), 12, "Gent parameter jm = -1.0 is invalid"),
-    (edit(15, "length = 0"), 15, "fixed.length: length L = 0.0 is out of range"),
-    (edit(15, "voltage = 0.1"), 15, "fixed.voltage: voltage is what is solved for"),
-    (edit(15, "stretch = 1.0"), 15, "fixed.stretch: stretch is also swept"),
-    (edit(18, "stretch = []"), 18, "grid.stretch: empty grid"),
-    (edit(18, "stretch = {start = 1.0, stop = 1.4, num = 0}"), 18, "num = 0 gives an empty"),
-    (edit(18, "stretch = {start = 1.0, stop = 1.4}"), 18, "num is missing"),
-    (edit(18, "stretch = [1.0, 1.0]"), 18, "the value 1.0 appears twice"),
-    (edit(18, 'stretch = [1.0, "1.2"]'), 18, "value 2 is a string"),
-    (edit(19, "outer_radius = [0.5, 1.6]"), 19, "outer radius Rbar_o = 0.5 is out of range"),
-    (edit(19, "voltage = [0.1, 0.2]"), 19, "grid.voltage: voltage is what is solved for"),
-    (edit(19, "radius = [1.4]"), 19, "grid.radius: unknown key; [grid] takes outer_radius"),
-    (edit(19, "# no outer radius"), 14, "missing outer_radius"),
-    (edit(17, "[grids]"), 17, "grids: unknown key"),
-])
+@pytest.mark.parametrize(
+    "text, line, needle",
+    [
+        (edit(8, "extnd = false"), 8, "modes.extnd: unknown key; [modes] takes m, n, extend"),
+        (GOOD + "\n[output]\npath = 'x'\n", 21, "output: unknown key"),
+        (edit(3, 'rtol = "1e-10"'), 3, "solve.rtol: expected a number, got a string"),
+        (edit(3, "rtol = 1.0"), 3, "rtol = 1.0 is out of range"),
+        (edit(2, "for = "), 2, "invalid TOML"),
+        (edit(2, 'for = "heat"'), 2, "'heat' is unknown"),
+        (edit(2, 'for = "growth"\nside = "extension"'), 3, "side applies only"),
+        (edit(6, "m = [3, 0]"), 6, "modes.m: m range [3, 0] is invalid"),
+        (edit(7, "n = [1.5, 3]"), 7, "modes.n: expected an inclusive range"),
+        (edit(11, 'name = "rubber"'), 11, "unknown material 'rubber'"),
+        (edit(12, "alpha = 0.5"), 12, "material.alpha: unknown key; material 'gent' takes jm"),
+        (edit(12, "jm = -1"), 12, "Gent parameter jm = -1.0 is invalid"),
+        (edit(15, "length = 0"), 15, "fixed.length: length L = 0.0 is out of range"),
+        (edit(15, "voltage = 0.1"), 15, "fixed.voltage: voltage is what is solved for"),
+        (edit(15, "stretch = 1.0"), 15, "fixed.stretch: stretch is also swept"),
+        (edit(18, "stretch = []"), 18, "grid.stretch: empty grid"),
+        (edit(18, "stretch = {start = 1.0, stop = 1.4, num = 0}"), 18, "num = 0 gives an empty"),
+        (edit(18, "stretch = {start = 1.0, stop = 1.4}"), 18, "num is missing"),
+        (edit(18, "stretch = [1.0, 1.0]"), 18, "the value 1.0 appears twice"),
+        (edit(18, 'stretch = [1.0, "1.2"]'), 18, "value 2 is a string"),
+        (edit(19, "outer_radius = [0.5, 1.6]"), 19, "outer radius Rbar_o = 0.5 is out of range"),
+        (edit(19, "voltage = [0.1, 0.2]"), 19, "grid.voltage: voltage is what is solved for"),
+        (edit(19, "radius = [1.4]"), 19, "grid.radius: unknown key; [grid] takes outer_radius"),
+        (edit(19, "# no outer radius"), 14, "missing outer_radius"),
+        (edit(17, "[grids]"), 17, "grids: unknown key"),
+    ],
+)
 def test_bad_file_names_line_and_reason_and_writes_nothing(sweep, text, line, needle):
     status, err, out = sweep(text)
     assert status == 2 and err.count("\n") == 1 and "Traceback" not in err
@@ -113,11 +118,20 @@ def test_unreadable_file_is_one_line(sweep, tmp_path, capsys):
     assert status == 2 and "missing.toml: cannot read the sweep file" in err
 
 
-@pytest.mark.parametrize("key, line", [
-    (("fixed", "length"), 1), (("grid", "stretch", "num"), 4), (("modes",), 6),
-    (("modes", "top"), 6), (("modes", "m"), 7), (("absent",), None),
-])
+@pytest.mark.parametrize(
+    "key, line",
+    [
+        (("fixed", "length"), 1),
+        (("grid", "stretch", "num"), 4),
+        (("modes",), 6),
+        (("modes", "top"), 6),
+        (("modes", "m"), 7),
+        (("absent",), None),
+    ],
+)
 def test_line_of_follows_tables_and_inline_tables(key, line):
-    text = ('fixed.length = 0\n# comment\n[grid]\nstretch = {start = 1, stop = 2, num = 0}\n'
-            '\n[ modes ]\n"m" = [0, 1]\n')
+    text = (
+        "fixed.length = 0\n# comment\n[grid]\nstretch = {start = 1, stop = 2, num = 0}\n"
+        '\n[ modes ]\n"m" = [0, 1]\n'
+    )
     assert line_of(text, key) == line

@@ -45,8 +45,16 @@ def fake(stretch, voltage, length):
     if (stretch, voltage) == (1.3, 0.2):
         return PointResult("failed", message="ConvergenceError: no", seconds=0.0)
     m = 0 if stretch < 1.15 else 2
-    return PointResult("ok", value=1.2 + voltage + length / 10, m=m, n=1, kind="bifurcation",
-                       error_estimate=1e-11, runners_up=((1, 1, 1.9),), seconds=0.0)
+    return PointResult(
+        "ok",
+        value=1.2 + voltage + length / 10,
+        m=m,
+        n=1,
+        kind="bifurcation",
+        error_estimate=1e-11,
+        runners_up=((1, 1, 1.9),),
+        seconds=0.0,
+    )
 
 
 @pytest.fixture(scope="module")
@@ -57,11 +65,14 @@ def store(tmp_path_factory):
     st = open_store(out, config)
     axes = dict(config.grid)
     for index, block in enumerate(st.blocks):
-        pts = [fake(axes["stretch"][i], axes["voltage"][j], axes["length"][k])
-               for i, j, k in np.ndindex(*(s.stop - s.start for s in block))
-               for i, j, k in [(i + block[0].start, j + block[1].start, k + block[2].start)]]
-        st.write_chunk(ChunkResult(index, tuple((s.start, s.stop) for s in block),
-                                   tuple(pts)), run=1)
+        pts = [
+            fake(axes["stretch"][i], axes["voltage"][j], axes["length"][k])
+            for i, j, k in np.ndindex(*(s.stop - s.start for s in block))
+            for i, j, k in [(i + block[0].start, j + block[1].start, k + block[2].start)]
+        ]
+        st.write_chunk(
+            ChunkResult(index, tuple((s.start, s.stop) for s in block), tuple(pts)), run=1
+        )
     return out
 
 
@@ -71,8 +82,9 @@ def test_regions_and_threshold_boundary(store):
     assert plane["critical_value"].dims == ("voltage", "stretch")
     assert float(plane["length"]) == 2.0  # nearest grid value
     labels = outcomes(plane)
-    found = {r.label: r.cells for r in regions(labels, plane["stretch"].values,
-                                               plane["voltage"].values)}
+    found = {
+        r.label: r.cells for r in regions(labels, plane["stretch"].values, plane["voltage"].values)
+    }
     assert found == {(0, 1): 4, (2, 1): 3, THRESHOLD: 4, "failed": 1}
     segs, thr = boundaries(labels, cell_edges(plane["stretch"]), cell_edges(plane["voltage"]))
     assert len(thr) == 4 and len(segs) == 4
@@ -90,10 +102,26 @@ def test_phase_diagram_figure_is_labelled(store):
 
 
 def test_plot_command_writes_png_and_svg(store, tmp_path, monkeypatch, capsys):
-    monkeypatch.setitem(cli.COMMANDS, "plot", ("plot", cli_sweep.configure_plot,
-                                               cli_sweep.run_plot))
-    assert cli.main(["plot", str(store), "--x", "stretch", "--y", "voltage", "--at",
-                     "length=2", "--out", str(tmp_path)]) == 0
+    monkeypatch.setitem(
+        cli.COMMANDS, "plot", ("plot", cli_sweep.configure_plot, cli_sweep.run_plot)
+    )
+    assert (
+        cli.main(
+            [
+                "plot",
+                str(store),
+                "--x",
+                "stretch",
+                "--y",
+                "voltage",
+                "--at",
+                "length=2",
+                "--out",
+                str(tmp_path),
+            ]
+        )
+        == 0
+    )
     printed = capsys.readouterr().out.split()
     png, svg = tmp_path / "fake_stretch_voltage.png", tmp_path / "fake_stretch_voltage.svg"
     assert printed == [str(png), str(svg)]
@@ -101,15 +129,19 @@ def test_plot_command_writes_png_and_svg(store, tmp_path, monkeypatch, capsys):
     assert svg.read_text()[:200].lstrip().startswith("<?xml") and "<svg" in svg.read_text()
 
 
-@pytest.mark.parametrize("extra, needle", [
-    (["--x", "radius"], "--x 'radius' is not a swept parameter"),
-    (["--x", "stretch", "--y", "stretch"], "both 'stretch'"),
-    (["--at", "voltage=0.2"], "--at voltage: not a further swept parameter"),
-    (["--at", "length"], "expected PARAM=VALUE"),
-])
+@pytest.mark.parametrize(
+    "extra, needle",
+    [
+        (["--x", "radius"], "--x 'radius' is not a swept parameter"),
+        (["--x", "stretch", "--y", "stretch"], "both 'stretch'"),
+        (["--at", "voltage=0.2"], "--at voltage: not a further swept parameter"),
+        (["--at", "length"], "expected PARAM=VALUE"),
+    ],
+)
 def test_plot_command_rejects_bad_axes(store, tmp_path, monkeypatch, capsys, extra, needle):
-    monkeypatch.setitem(cli.COMMANDS, "plot", ("plot", cli_sweep.configure_plot,
-                                               cli_sweep.run_plot))
+    monkeypatch.setitem(
+        cli.COMMANDS, "plot", ("plot", cli_sweep.configure_plot, cli_sweep.run_plot)
+    )
     assert cli.main(["plot", str(store), "--out", str(tmp_path)] + extra) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and needle in err
@@ -117,8 +149,9 @@ def test_plot_command_rejects_bad_axes(store, tmp_path, monkeypatch, capsys, ext
 
 
 def test_plot_of_a_non_store_is_one_line(tmp_path, monkeypatch, capsys):
-    monkeypatch.setitem(cli.COMMANDS, "plot", ("plot", cli_sweep.configure_plot,
-                                               cli_sweep.run_plot))
+    monkeypatch.setitem(
+        cli.COMMANDS, "plot", ("plot", cli_sweep.configure_plot, cli_sweep.run_plot)
+    )
     (tmp_path / "x.zarr").mkdir()
     assert cli.main(["plot", str(tmp_path / "x.zarr")]) == 2
     assert "is not an electrogrowth sweep store" in capsys.readouterr().err

@@ -30,15 +30,23 @@ from electrogrowth.model.materials import I1, I4, I5, I6, Material, gent, mooney
 from electrogrowth.model.params import TubeParameters
 
 CASES = [  # (Rbar_o, g, lambda_z, Vbar)
-    (2.0, 1.0, 1.0, 0.5), (2.0, 1.1, 0.9, 0.9), (2.0, 1.2, 1.2, 1.0), (1.3, 0.9, 1.1, 0.4),
-    (4.0, 1.05, 0.8, 1.4), (2.0, 1.0, 1.2, 0.84),
+    (2.0, 1.0, 1.0, 0.5),
+    (2.0, 1.1, 0.9, 0.9),
+    (2.0, 1.2, 1.2, 1.0),
+    (1.3, 0.9, 1.1, 0.4),
+    (4.0, 1.05, 0.8, 1.4),
+    (2.0, 1.0, 1.2, 0.84),
 ]
 KNOWLES = Material("knowles-1/2", (sp.sqrt(1 + 2 * (I1 - 3)) - 1) / 2 + I5 / 2)  # softening
-NON_IDEAL = [Material("nh+I6/10", (I1 - 3) / 2 + I5 / 2 + I6 / 10),
-             Material("nh+I4/5", (I1 - 3) / 2 + I5 / 2 + I4 / 5)]
+NON_IDEAL = [
+    Material("nh+I6/10", (I1 - 3) / 2 + I5 / 2 + I6 / 10),
+    Material("nh+I4/5", (I1 - 3) / 2 + I5 / 2 + I4 / 5),
+]
 # the ideal neo-Hookean energy in disguise: equal on I1 >= 3, but takes the generic route
-NH_TWINS = [Material("nh-trig", (I1 - 3) / 2 * (sp.cos(I1)**2 + sp.sin(I1)**2) + I5 / 2),
-            Material("nh-rational", (I1**2 - 9) / (2 * (I1 + 3)) + I5 / 2)]
+NH_TWINS = [
+    Material("nh-trig", (I1 - 3) / 2 * (sp.cos(I1) ** 2 + sp.sin(I1) ** 2) + I5 / 2),
+    Material("nh-rational", (I1**2 - 9) / (2 * (I1 + 3)) + I5 / 2),
+]
 
 
 def params(Ro, g, lz, V, material=None):
@@ -47,6 +55,7 @@ def params(Ro, g, lz, V, material=None):
 
 
 # -- independent neo-Hookean closed forms (docs/derivation-base-state.md, eqs. NH-1 .. NH-5) --
+
 
 def nh_geometry(p, lam_i):
     b = p.growth**3 / p.stretch
@@ -68,8 +77,14 @@ def nh_stresses(p, lam_i, c, R):
     b, r_o, lam_o = nh_geometry(p, lam_i)
     r = np.sqrt(lam_i**2 + b * (R**2 - 1))
     lam = r / R
-    srr = g / lz * (np.log(lam_i / lam) + np.log(lam_i / lam_o) * r_o**2 * (lam_i**2 - r**2)
-                    / (r**2 * (r_o**2 - lam_i**2)))
+    srr = (
+        g
+        / lz
+        * (
+            np.log(lam_i / lam)
+            + np.log(lam_i / lam_o) * r_o**2 * (lam_i**2 - r**2) / (r**2 * (r_o**2 - lam_i**2))
+        )
+    )
     l2, l3 = lam / g, lz / g
     l1sq = 1 / (l2 * l3) ** 2
     return srr, srr + l2**2 - l1sq - c**2 / r**2, srr + l3**2 - l1sq - c**2 / r**2
@@ -79,21 +94,28 @@ def nh_axial_force(p, lam_i, c):
     g, lz, Ro = p.growth, p.stretch, p.outer_radius
     b, r_o, _ = nh_geometry(p, lam_i)
     A, delta, log_r = lam_i**2 - b, r_o**2 - lam_i**2, math.log(r_o / lam_i)
-    return math.pi * (lz**2 * delta / g**2 - c**2 * log_r
-                      - g**4 / lz**2 * ((Ro**2 - 1) / 2 - A / b * log_r)
-                      - b / g**2 * (A * math.log(Ro) + delta / 2))
+    return math.pi * (
+        lz**2 * delta / g**2
+        - c**2 * log_r
+        - g**4 / lz**2 * ((Ro**2 - 1) / 2 - A / b * log_r)
+        - b / g**2 * (A * math.log(Ro) + delta / 2)
+    )
 
 
 def mechanical_lambda_i(p):
     """Vbar = 0 neo-Hookean state: the radicand of nh_voltage vanishes."""
+
     def radicand(lam_i):
         _, _, lam_o = nh_geometry(p, lam_i)
-        return (2 * p.growth * p.stretch * math.log(lam_i / lam_o)
-                - p.growth**4 * (lam_i**-2 - lam_o**-2))
+        return 2 * p.growth * p.stretch * math.log(lam_i / lam_o) - p.growth**4 * (
+            lam_i**-2 - lam_o**-2
+        )
+
     return brentq(radicand, 0.2, 5.0, xtol=1e-15, rtol=1e-15)
 
 
 # -- slow twins in the current radius r --------------------------------------------------------
+
 
 def twin_integrals(state):
     """(int (tau_2 - tau_1) dr / r, int E_r dr, int (|tau_1| + |tau_2|) dr / r) by quad in r."""
@@ -118,11 +140,14 @@ def twin_integrals(state):
         return float(mat.electric_field(*local(r)[0], local(r)[1]))
 
     # the hoop integral vanishes: an absolute tolerance, the others relative
-    return tuple(quad(f, state.r_i, state.r_o, epsabs=tol, epsrel=1e-13, limit=200)[0]
-                 for f, tol in ((hoop, 1e-13), (field, 0), (size, 0)))
+    return tuple(
+        quad(f, state.r_i, state.r_o, epsabs=tol, epsrel=1e-13, limit=200)[0]
+        for f, tol in ((hoop, 1e-13), (field, 0), (size, 0))
+    )
 
 
 # -- closed forms vs the generic quadrature route ------------------------------------------------
+
 
 @pytest.mark.parametrize("Ro, g, lz, V", CASES)
 def test_neo_hookean_state_matches_closed_forms(Ro, g, lz, V):
@@ -158,31 +183,42 @@ def test_neo_hookean_asymptote_is_the_limit_of_the_closed_form(Ro, g, lz):
     assert abs(v2 - neo_hookean_asymptote(p)) > 2e-12
     assert (16 * v2 - v1) / 15 == pytest.approx(neo_hookean_asymptote(p), rel=2e-13)
     assert neo_hookean_asymptote(params(Ro, 1.0, 1.0, 0.0)) == pytest.approx(
-        math.sqrt((Ro**2 - 1) * math.log(Ro) / 2) / (Ro - 1), rel=1e-15)
+        math.sqrt((Ro**2 - 1) * math.log(Ro) / 2) / (Ro - 1), rel=1e-15
+    )
 
 
 # -- equilibrium, boundary conditions, limits ---------------------------------------------------
 
-@pytest.mark.parametrize("material", [None, gent(97.2), KNOWLES, NON_IDEAL[0]],
-                         ids=["neo-hookean", "gent", "knowles", "non-ideal"])
+
+@pytest.mark.parametrize(
+    "material",
+    [None, gent(97.2), KNOWLES, NON_IDEAL[0]],
+    ids=["neo-hookean", "gent", "knowles", "non-ideal"],
+)
 def test_equilibrium_and_traction_free_faces(material):
     s = solve_base_state(params(2.0, 1.1, 0.95, 0.6, material))
     R = np.linspace(1.05, 1.95, 19)
     h = 1e-4  # 4th-order central difference of sigma_rr(R), then d/dr = (d/dR) / (dr/dR)
-    dsdR = (-s.sigma_rr(R + 2 * h) + 8 * s.sigma_rr(R + h) - 8 * s.sigma_rr(R - h)
-            + s.sigma_rr(R - 2 * h)) / (12 * h)
+    dsdR = (
+        -s.sigma_rr(R + 2 * h)
+        + 8 * s.sigma_rr(R + h)
+        - 8 * s.sigma_rr(R - h)
+        + s.sigma_rr(R - 2 * h)
+    ) / (12 * h)
     r = s.radius(R)
     drdR = s.params.growth**3 * R / (s.params.stretch * r)
     srr, stt, _ = s.stresses(R)
-    np.testing.assert_allclose(dsdR / drdR, (stt - srr) / r, rtol=0,
-                               atol=1e-9 * np.abs(stt).max())
+    np.testing.assert_allclose(dsdR / drdR, (stt - srr) / r, rtol=0, atol=1e-9 * np.abs(stt).max())
     assert s.sigma_rr(1.0) == 0.0
     assert abs(s.sigma_rr(2.0)) <= 1e-13 * np.abs(stt).max()
     prof = s.profiles(11)
-    np.testing.assert_allclose(prof["p"], s.params.material.stress(
-        *s.elastic_stretches(prof["R"]), prof["D_r"])[0] - prof["sigma_rr"], rtol=1e-14)
-    assert set(prof) == {"R", "r", "lambda", "sigma_rr", "sigma_tt", "sigma_zz", "p", "D_r",
-                         "E_r"}
+    np.testing.assert_allclose(
+        prof["p"],
+        s.params.material.stress(*s.elastic_stretches(prof["R"]), prof["D_r"])[0]
+        - prof["sigma_rr"],
+        rtol=1e-14,
+    )
+    assert set(prof) == {"R", "r", "lambda", "sigma_rr", "sigma_tt", "sigma_zz", "p", "D_r", "E_r"}
     assert all(np.all(np.isfinite(v)) for v in prof.values())
 
 
@@ -192,8 +228,10 @@ def test_zero_voltage_is_the_mechanical_state():
     assert s.lambda_i == pytest.approx(mechanical_lambda_i(p), rel=1e-13)
     assert s.charge == 0.0 and np.all(s.electric_field(np.linspace(1, 2, 5)) == 0)
     # lambda_i - lambda_i0 = O(Vbar^2) as Vbar -> 0
-    d1, d2 = (solve_base_state(dataclasses.replace(p, voltage=v)).lambda_i - s.lambda_i
-              for v in (1e-3, 2e-3))
+    d1, d2 = (
+        solve_base_state(dataclasses.replace(p, voltage=v)).lambda_i - s.lambda_i
+        for v in (1e-3, 2e-3)
+    )
     assert d2 / d1 == pytest.approx(4.0, rel=1e-3)
 
 
@@ -205,8 +243,9 @@ def test_growth_matched_by_axial_stretch_is_stress_free():
     assert abs(s.axial_force) < 1e-12
 
 
-@pytest.mark.parametrize("material", [None, gent(97.2), KNOWLES],
-                         ids=["neo-hookean", "gent", "knowles"])
+@pytest.mark.parametrize(
+    "material", [None, gent(97.2), KNOWLES], ids=["neo-hookean", "gent", "knowles"]
+)
 @pytest.mark.parametrize("g, lz, V", [(1.1, 1.0, 0.5), (1.25, 0.9, 0.7), (0.9, 1.2, 0.3)])
 def test_growth_is_a_rescaling_of_the_ungrown_tube(material, g, lz, V):
     """(g, lambda_z, Vbar) == (1, lambda_z/g, Vbar/g) in a tube g times larger."""
@@ -225,6 +264,7 @@ def test_growth_is_a_rescaling_of_the_ungrown_tube(material, g, lz, V):
 
 
 # -- the threshold -------------------------------------------------------------------------------
+
 
 @pytest.mark.parametrize("g, lz", [(1.0, 1.0), (1.2, 0.9), (1.1, 1.2)])
 def test_asymptote_is_approached_from_below_and_never_exceeded(g, lz):
@@ -247,8 +287,12 @@ def test_softening_energy_has_a_limit_point_below_the_neo_hookean_asymptote():
     thr, kind, lam = voltage_threshold(p)
     assert kind == "limit point" and thr < neo_hookean_asymptote(p)
     lam0 = solve_base_state(p).lambda_i  # Vbar = 0
-    res = minimize_scalar(lambda x: -voltage_curve(p, x), bounds=(lam0 * 1.01, 10.0),
-                          method="bounded", options={"xatol": 1e-11})
+    res = minimize_scalar(
+        lambda x: -voltage_curve(p, x),
+        bounds=(lam0 * 1.01, 10.0),
+        method="bounded",
+        options={"xatol": 1e-11},
+    )
     assert thr == pytest.approx(-res.fun, rel=1e-14)
     assert lam == pytest.approx(res.x, rel=1e-8)
     branch = voltage_curve(p, np.linspace(lam0, lam, 200))
@@ -275,8 +319,10 @@ def test_gent_voltage_rises_without_bound_to_the_locking_stretch(jm):
 
 def test_gent_tends_to_neo_hookean_as_jm_grows():
     nh = solve_base_state(params(2.0, 1.1, 1.0, 1.1))
-    gaps = [nh.lambda_i - solve_base_state(params(2.0, 1.1, 1.0, 1.1, gent(jm))).lambda_i
-            for jm in (1e3, 1e4, 1e5)]
+    gaps = [
+        nh.lambda_i - solve_base_state(params(2.0, 1.1, 1.0, 1.1, gent(jm))).lambda_i
+        for jm in (1e3, 1e4, 1e5)
+    ]
     assert gaps[0] > 0  # stiffening: less inflation at the same voltage
     assert gaps[0] / gaps[1] == pytest.approx(10, rel=0.05)  # O(1/jm)
     assert gaps[1] / gaps[2] == pytest.approx(10, rel=0.01)
@@ -292,8 +338,9 @@ def test_richardson_asymptote_matches_the_mooney_rivlin_closed_form(alpha):
     assert tube.threshold_info(p).error < 1e-13
 
 
-@pytest.mark.parametrize("Ro, g, lz, V", [(2.0, 1.0, 1.0, 1.02), (2.0, 1.1, 1.2, 1.3),
-                                          (2.0, 1.0, 1.0, 1e6)])
+@pytest.mark.parametrize(
+    "Ro, g, lz, V", [(2.0, 1.0, 1.0, 1.02), (2.0, 1.1, 1.2, 1.3), (2.0, 1.0, 1.0, 1e6)]
+)
 def test_voltage_at_or_above_threshold_is_an_error(Ro, g, lz, V):
     p = params(Ro, g, lz, V)
     with pytest.raises(BaseStateError) as err:
@@ -313,6 +360,7 @@ def test_voltage_curve_rejects_lambda_below_the_mechanical_state():
 
 
 # -- non-ideal energies: V = int E_r dr --------------------------------------------------------
+
 
 @pytest.mark.parametrize("material", NON_IDEAL, ids=lambda m: m.name)
 @pytest.mark.parametrize("V", [0.3, 0.9])
@@ -338,12 +386,17 @@ def test_non_ideal_asymptote_and_unbounded_cases():
 
 # -- quadrature ---------------------------------------------------------------------------------
 
+
 def test_gauss_quadrature_converges_geometrically():
     lam = np.array([1.3])
     exact = tube.Tube(gent(97.2), 2.0, 1.1, 0.9, 96).hoop(lam, 0.4)[0][0]
     ns = np.arange(3, 13)
-    err = np.array([abs(tube.Tube(gent(97.2), 2.0, 1.1, 0.9, int(n)).hoop(lam, 0.4)[0][0]
-                        - exact) for n in ns])
+    err = np.array(
+        [
+            abs(tube.Tube(gent(97.2), 2.0, 1.1, 0.9, int(n)).hoop(lam, 0.4)[0][0] - exact)
+            for n in ns
+        ]
+    )
     rate = np.polyfit(ns[:7], np.log(err[:7]), 1)[0]  # ln error ~ -2 n ln(rho)
     assert rate < -1.5
     assert err[-1] < 1e-13 * abs(exact) + 1e-15
@@ -367,13 +420,18 @@ def test_moduli_are_the_materials_at_the_local_state():
 
 # -- the neo-Hookean fast path against the generic route ---------------------------------------
 
+
 @pytest.mark.parametrize("twin", NH_TWINS, ids=lambda m: m.name)
 def test_closed_form_route_matches_the_generic_route(twin, rng):
     """16 random (Rbar_o, g, lambda_z, Vbar / Vbar_inf): every output of the base state agrees
     to 1e-12 (measured: 1e-15 - 1e-13)."""
     assert tube.energy_kind(twin) == "ideal"  # not recognised: Gauss quadrature, scan, Chebyshev
-    for Ro, g, lz, frac in zip(rng.uniform(1.05, 4.0, 16), rng.uniform(0.7, 2.0, 16),
-                               rng.uniform(0.6, 1.6, 16), rng.uniform(0.02, 0.97, 16)):
+    for Ro, g, lz, frac in zip(
+        rng.uniform(1.05, 4.0, 16),
+        rng.uniform(0.7, 2.0, 16),
+        rng.uniform(0.6, 1.6, 16),
+        rng.uniform(0.02, 0.97, 16),
+    ):
         p = params(Ro, g, lz, frac * neo_hookean_asymptote(params(Ro, g, lz, 0.0)))
         q = dataclasses.replace(p, material=twin)
         fast, slow = solve_base_state(p), solve_base_state(q)
@@ -391,8 +449,9 @@ def test_closed_form_route_matches_the_generic_route(twin, rng):
             np.testing.assert_allclose(got, w, rtol=0, atol=1e-12 * scale)
         for f in ("pressure", "moduli", "electric_field", "displacement", "radius"):
             w = getattr(slow, f)(R)
-            np.testing.assert_allclose(getattr(fast, f)(R), w, rtol=0,
-                                       atol=1e-12 * np.abs(w).max(), err_msg=f)
+            np.testing.assert_allclose(
+                getattr(fast, f)(R), w, rtol=0, atol=1e-12 * np.abs(w).max(), err_msg=f
+            )
         lam = math.sqrt(g**3 / lz) * np.geomspace(1.001, 300.0, 13)
         np.testing.assert_allclose(voltage_curve(p, lam), voltage_curve(q, lam), rtol=1e-12)
         assert voltage_threshold(p) == (fast.voltage_threshold, "asymptote", math.inf)
@@ -402,8 +461,9 @@ def test_closed_form_voltage_rises_strictly_to_the_asymptote():
     """(NH-6) over Rbar_o = 1.005 .. 32: Vbar^2 / Vbar_inf^2 falls strictly in
     y = (lambda_i0 / lambda_i)^2 from 1 (y = 0) to 0 (y = 1), and m = lambda_z M / g falls
     strictly in y on (0, 100]: one lambda_i0, and one lambda_i per Vbar (proof in the docs)."""
-    square, traction = (np.vectorize(f, otypes=[float])
-                        for f in (_voltage.nh_square, _voltage.nh_traction))
+    square, traction = (
+        np.vectorize(f, otypes=[float]) for f in (_voltage.nh_square, _voltage.nh_traction)
+    )
     y = np.geomspace(1e-4, 1.0, 1500)
     for k in np.geomspace(1e-2, 1e3, 30):  # k = Rbar_o^2 - 1
         f = square(y, k)
@@ -424,8 +484,9 @@ def test_closed_form_root_is_backward_stable(frac):
     assert s.charge * log_ratio == pytest.approx(V * 0.4, rel=1e-14)
 
 
-@pytest.mark.parametrize("Ro, g, lz", [(2.0, 1.0, 1.0), (1.4, 1.3, 0.9), (4.0, 1.05, 0.8),
-                                       (1.1, 1.0, 1.0)])
+@pytest.mark.parametrize(
+    "Ro, g, lz", [(2.0, 1.0, 1.0), (1.4, 1.3, 0.9), (4.0, 1.05, 0.8), (1.1, 1.0, 1.0)]
+)
 def test_one_ulp_below_the_asymptote(Ro, g, lz):
     """A state far out on the branch, or a named error if Vbar / Vbar_inf rounds to 1."""
     p = params(Ro, g, lz, 0.0)
@@ -443,8 +504,10 @@ def test_one_ulp_below_the_asymptote(Ro, g, lz):
 
 def test_neo_hookean_takes_the_closed_form_route(monkeypatch):
     """No generic stress, field or moduli evaluation for the paper's material."""
+
     def generic(*args, **kwargs):
         raise AssertionError("generic route taken")
+
     for name in ("stress", "electric_field", "moduli"):
         monkeypatch.setattr(Material, name, generic)
     p = params(1.4, 1.2345, 0.9876, 0.4)  # a new (g, lambda_z): nothing cached
@@ -455,8 +518,9 @@ def test_neo_hookean_takes_the_closed_form_route(monkeypatch):
     assert voltage_curve(p, [2.0, 3.0]).shape == (2,) and voltage_threshold(p)[1] == "asymptote"
 
 
-@pytest.mark.parametrize("material", [gent(20.0), KNOWLES, mooney_rivlin(0.3), *NON_IDEAL],
-                         ids=lambda m: m.name)
+@pytest.mark.parametrize(
+    "material", [gent(20.0), KNOWLES, mooney_rivlin(0.3), *NON_IDEAL], ids=lambda m: m.name
+)
 def test_mechanical_state_is_the_homogeneous_one_for_every_energy(material):
     """lambda_i0 = sqrt(g^3 / lambda_z): l1 = l2 throughout, so tau_1 = tau_2 (docs Sec. 3), and
     M < 0 below, > 0 above (Baker-Ericksen). The root found here by brentq on the quadrature."""
@@ -465,9 +529,11 @@ def test_mechanical_state_is_the_homogeneous_one_for_every_energy(material):
 
     def m(lam):
         return float(wall.hoop(np.array([lam]), 0.0)[0][0])
+
     lam0 = math.sqrt(g**3 / lz)
     assert brentq(m, 0.6 * lam0, 1.7 * lam0, xtol=1e-15, rtol=1e-15) == pytest.approx(
-        lam0, rel=1e-13)
+        lam0, rel=1e-13
+    )
     lam = lam0 * np.concatenate([np.geomspace(0.6, 0.999, 10), np.geomspace(1.001, 1.7, 10)])
     assert np.array_equal(np.sign([m(x) for x in lam]), np.sign(lam - lam0))
     s = solve_base_state(params(2.0, g, lz, 0.0, material))

@@ -66,8 +66,7 @@ def modulus_K(pp: int, q: int) -> sp.Expr:
 
 def incremental_fields():
     """Amplitude functions and the full fields u, phidot, pdot, D (trig factors included)."""
-    amp = {n: sp.Function(n)(r) for n in
-           ("Ur", "Ut", "Uz", "Phi", "Dr", "Dt", "Dz", "P")}
+    amp = {n: sp.Function(n)(r) for n in ("Ur", "Ut", "Uz", "Phi", "Dr", "Dt", "Dz", "P")}
     cc = sp.cos(m * theta) * sp.cos(k * z)
     sc = sp.sin(m * theta) * sp.cos(k * z)
     cs = sp.cos(m * theta) * sp.sin(k * z)
@@ -79,11 +78,13 @@ def incremental_fields():
 def displacement_gradient(u):
     """L_jq = du_j/dx_q in the cylindrical basis (paper eq. 52); row j, column q."""
     ur, ut, uz = u
-    return sp.Matrix([
-        [sp.diff(ur, r), (sp.diff(ur, theta) - ut) / r, sp.diff(ur, z)],
-        [sp.diff(ut, r), (sp.diff(ut, theta) + ur) / r, sp.diff(ut, z)],
-        [sp.diff(uz, r), sp.diff(uz, theta) / r, sp.diff(uz, z)],
-    ])
+    return sp.Matrix(
+        [
+            [sp.diff(ur, r), (sp.diff(ur, theta) - ut) / r, sp.diff(ur, z)],
+            [sp.diff(ut, r), (sp.diff(ut, theta) + ur) / r, sp.diff(ut, z)],
+            [sp.diff(uz, r), sp.diff(uz, theta) / r, sp.diff(uz, z)],
+        ]
+    )
 
 
 def constitutive(L, D, pdot):
@@ -92,13 +93,14 @@ def constitutive(L, D, pdot):
     E = sp.zeros(3, 1)
     for a in range(3):
         for i in range(3):
-            s = sum(modulus_A(a + 1, i + 1, q + 1, j + 1) * L[j, q]
-                    for q in range(3) for j in range(3))
+            s = sum(
+                modulus_A(a + 1, i + 1, q + 1, j + 1) * L[j, q] for q in range(3) for j in range(3)
+            )
             s += sum(modulus_G(a + 1, i + 1, q + 1) * D[q] for q in range(3))
             S[a, i] = s + p * L[a, i] - (pdot if a == i else 0)
-        E[a] = (sum(modulus_G(q + 1, j + 1, a + 1) * L[j, q]
-                    for q in range(3) for j in range(3))
-                + sum(modulus_K(a + 1, q + 1) * D[q] for q in range(3)))
+        E[a] = sum(
+            modulus_G(q + 1, j + 1, a + 1) * L[j, q] for q in range(3) for j in range(3)
+        ) + sum(modulus_K(a + 1, q + 1) * D[q] for q in range(3))
     return S, E
 
 
@@ -140,15 +142,15 @@ def derive(s1: int = S1, s2: int = S2):
     div_S = divergence_first_index(S_face)
 
     eqs = [
-        strip(L.trace(), cc),                                  # incompressibility
-        strip(S[0, 0] - sig["Srr"] * cc, cc),                  # traction amplitudes
+        strip(L.trace(), cc),  # incompressibility
+        strip(S[0, 0] - sig["Srr"] * cc, cc),  # traction amplitudes
         strip(S[0, 1] - sig["Srt"] * sc, sc),
         strip(S[0, 2] - sig["Srz"] * cs, cs),
-        strip(E_const[0] + grad_phi[0], cc),                   # E = -grad phidot
+        strip(E_const[0] + grad_phi[0], cc),  # E = -grad phidot
         strip(E_const[1] + grad_phi[1], sc),
         strip(E_const[2] + grad_phi[2], cs),
-        strip(div_D, cc),                                      # Maxwell
-        strip(div_S[0], cc),                                   # equilibrium
+        strip(div_D, cc),  # Maxwell
+        strip(div_S[0], cc),  # equilibrium
         strip(div_S[1], sc),
         strip(div_S[2], cs),
     ]
@@ -158,14 +160,29 @@ def derive(s1: int = S1, s2: int = S2):
     deta = sp.symbols(" ".join("d" + n for n in names), real=True)
     Dt, Dz, P = sp.symbols("Dt Dz P", real=True)
     # amplitude function -> expression in eta (S1, S2 signs), derivatives likewise.
-    value = {amp["Ur"]: eta[0], amp["Ut"]: eta[1], amp["Uz"]: eta[2],
-             amp["Dr"]: s1 * eta[3] / r, sig["Srr"]: eta[4] / r, sig["Srt"]: eta[5] / r,
-             sig["Srz"]: eta[6] / r, amp["Phi"]: s2 * eta[7],
-             amp["Dt"]: Dt, amp["Dz"]: Dz, amp["P"]: P}
-    slope = {amp["Ur"]: deta[0], amp["Ut"]: deta[1], amp["Uz"]: deta[2],
-             amp["Dr"]: s1 * (deta[3] - eta[3] / r) / r,
-             sig["Srr"]: (deta[4] - eta[4] / r) / r, sig["Srt"]: (deta[5] - eta[5] / r) / r,
-             sig["Srz"]: (deta[6] - eta[6] / r) / r, amp["Phi"]: s2 * deta[7]}
+    value = {
+        amp["Ur"]: eta[0],
+        amp["Ut"]: eta[1],
+        amp["Uz"]: eta[2],
+        amp["Dr"]: s1 * eta[3] / r,
+        sig["Srr"]: eta[4] / r,
+        sig["Srt"]: eta[5] / r,
+        sig["Srz"]: eta[6] / r,
+        amp["Phi"]: s2 * eta[7],
+        amp["Dt"]: Dt,
+        amp["Dz"]: Dz,
+        amp["P"]: P,
+    }
+    slope = {
+        amp["Ur"]: deta[0],
+        amp["Ut"]: deta[1],
+        amp["Uz"]: deta[2],
+        amp["Dr"]: s1 * (deta[3] - eta[3] / r) / r,
+        sig["Srr"]: (deta[4] - eta[4] / r) / r,
+        sig["Srt"]: (deta[5] - eta[5] / r) / r,
+        sig["Srz"]: (deta[6] - eta[6] / r) / r,
+        amp["Phi"]: s2 * deta[7],
+    }
     subs = {sp.Derivative(f, r): v for f, v in slope.items()}
     eqs = [e.subs(subs).subs(value) for e in eqs]
     for e in eqs:
@@ -174,8 +191,9 @@ def derive(s1: int = S1, s2: int = S2):
     sol = sp.solve(eqs, list(deta) + [Dt, Dz, P], dict=True)[0]
     kr = sp.Symbol("kr", real=True)
     rows = [sp.expand(r * sol[d]) for d in deta]
-    G = sp.Matrix(8, 8, lambda i, j: sp.factor(sp.cancel(
-        sp.diff(rows[i], eta[j]).subs(k, kr / r))))
+    G = sp.Matrix(
+        8, 8, lambda i, j: sp.factor(sp.cancel(sp.diff(rows[i], eta[j]).subs(k, kr / r)))
+    )
     if G.free_symbols & {r, k}:
         raise AssertionError("G depends on r or k other than through kr")
     return G, eta
@@ -185,9 +203,23 @@ def neo_hookean_substitution(l1, l2, l3, d):
     """Moduli of the ideal neo-Hookean dielectric (materials.neo_hookean_moduli), symbolic."""
     b1, b2, b3 = l1**2, l2**2, l3**2
     val = dict.fromkeys(MODULI_NAMES, 0)
-    val.update(A1111=b1 + d**2, A1212=b1 + d**2, A1313=b1 + d**2, A2121=b2, A2222=b2,
-               A2323=b2, A3131=b3, A3232=b3, A3333=b3, G111=2 * d, G122=d, G133=d,
-               K11=1, K22=1, K33=1)
+    val.update(
+        A1111=b1 + d**2,
+        A1212=b1 + d**2,
+        A1313=b1 + d**2,
+        A2121=b2,
+        A2222=b2,
+        A2323=b2,
+        A3131=b3,
+        A3232=b3,
+        A3333=b3,
+        G111=2 * d,
+        G122=d,
+        G133=d,
+        K11=1,
+        K22=1,
+        K33=1,
+    )
     return {MOD[n]: v for n, v in val.items()}
 
 
@@ -201,8 +233,10 @@ def main() -> None:
     G, eta = derive()
     print(f"eta = {list(eta)}  (S1 = {S1:+d}, S2 = {S2:+d})")
     for s1, s2 in ((1, 1), (-1, -1), (1, -1), (-1, 1)):
-        print(f"s1 = {s1:+d}, s2 = {s2:+d}: Hamiltonian (G2 = G2^T, G3 = G3^T, "
-              f"G4 = -G1^T) = {is_hamiltonian(derive(s1, s2)[0])}")
+        print(
+            f"s1 = {s1:+d}, s2 = {s2:+d}: Hamiltonian (G2 = G2^T, G3 = G3^T, "
+            f"G4 = -G1^T) = {is_hamiltonian(derive(s1, s2)[0])}"
+        )
     print("\nGeneric moduli, non-zero entries G[i, j] (0-based):")
     for i in range(8):
         for j in range(8):

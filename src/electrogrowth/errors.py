@@ -25,8 +25,10 @@ class MaterialError(ElectrogrowthError, ValueError):
 class BaseStateError(ElectrogrowthError, RuntimeError):
     """No axisymmetric base state exists (e.g. the voltage is above the threshold)."""
 
-    remedy = ("lower the voltage below the threshold (`electrogrowth state` prints it) or"
-              " move the growth or stretch back towards 1")
+    remedy = (
+        "lower the voltage below the threshold (`electrogrowth state` prints it) or"
+        " move the growth or stretch back towards 1"
+    )
 
 
 class ConvergenceError(ElectrogrowthError, RuntimeError):
@@ -50,13 +52,13 @@ class MissingDependencyError(ElectrogrowthError, ImportError):
 class ConfigError(ParameterError):
     """A bad sweep (or tube) file. ``key`` is the dotted path of the offending entry."""
 
-    def __init__(self, key: tuple[str, ...], reason: str, *, source: str = "",
-                 line: int | None = None):
+    def __init__(
+        self, key: tuple[str, ...], reason: str, *, source: str = "", line: int | None = None
+    ):
         self.key, self.reason, self.source, self.line = tuple(key), reason, source, line
         where = ":".join(str(p) for p in (source, line) if p not in ("", None))
         name = ".".join(self.key)
-        super().__init__(f"{where + ': ' if where else ''}{name + ': ' if name else ''}"
-                         f"{reason}")
+        super().__init__(f"{where + ': ' if where else ''}{name + ': ' if name else ''}{reason}")
 
 
 class SweepError(ElectrogrowthError, RuntimeError):

@@ -80,21 +80,26 @@ def voltage_curve(params: TubeParameters, lambda_i) -> np.ndarray:
     """
     lam = np.asarray(lambda_i, float)
     if not np.all(np.isfinite(lam) & (lam > 0)):
-        raise ParameterError(f"lambda_i = {lam[~(np.isfinite(lam) & (lam > 0))].flat[0]!r}"
-                             " is invalid; need 0 < lambda_i < inf")
+        raise ParameterError(
+            f"lambda_i = {lam[~(np.isfinite(lam) & (lam > 0))].flat[0]!r}"
+            " is invalid; need 0 < lambda_i < inf"
+        )
     info = threshold_info(params)
     low = lam < info.lambda_i0 * (1.0 - 1e-12)
     if low.any():
-        raise BaseStateError(f"lambda_i = {lam[low].flat[0]:.12g} is below the Vbar = 0 value"
-                             f" {info.lambda_i0:.12g}; no real voltage there")
+        raise BaseStateError(
+            f"lambda_i = {lam[low].flat[0]:.12g} is below the Vbar = 0 value"
+            f" {info.lambda_i0:.12g}; no real voltage there"
+        )
     if info.nodes == 0:  # neo-Hookean closed form (NH-6)
-        return np.maximum(nh_voltage(params.outer_radius, params.growth, params.stretch, lam),
-                          0.0)
+        return np.maximum(nh_voltage(params.outer_radius, params.growth, params.stretch, lam), 0.0)
     tube = Tube(params.material, params.outer_radius, params.growth, params.stretch, info.nodes)
     v = tube.voltage(lam.ravel())
     if not np.all(np.isfinite(v)):
-        raise BaseStateError(f"energy of {params.material.name} undefined at lambda_i ="
-                             f" {lam.ravel()[~np.isfinite(v)][0]:.12g} (beyond locking)")
+        raise BaseStateError(
+            f"energy of {params.material.name} undefined at lambda_i ="
+            f" {lam.ravel()[~np.isfinite(v)][0]:.12g} (beyond locking)"
+        )
     return np.maximum(v, 0.0).reshape(lam.shape)
 
 
@@ -129,12 +134,15 @@ def solve_base_state(params: TubeParameters, *, rtol: float = 1e-12) -> BaseStat
         raise BaseStateError(
             f"Vbar = {target:.12g} is at or above the threshold Vbar = {info.value:.12g}"
             f" ({info.kind}) for g = {params.growth:g}, lambda_z = {params.stretch:g},"
-            f" Rbar_o = {params.outer_radius:g}, {params.material.name}; no axisymmetric state")
+            f" Rbar_o = {params.outer_radius:g}, {params.material.name}; no axisymmetric state"
+        )
     Ro, g, lz = params.outer_radius, params.growth, params.stretch
     if info.nodes == 0:  # neo-Hookean closed form
         if not (ratio := target / info.value) < 1.0:
-            raise BaseStateError(f"Vbar = {target:.12g} is within rounding of the threshold"
-                                 f" {info.value:.12g}; no base state resolved")
+            raise BaseStateError(
+                f"Vbar = {target:.12g} is within rounding of the threshold"
+                f" {info.value:.12g}; no base state resolved"
+            )
         tube = Tube(params.material, Ro, g, lz)
         return BaseState._neo_hookean(params, tube, nh_lambda_i(Ro, g, lz, ratio), info)
     tube = Tube(params.material, Ro, g, lz, info.nodes)
@@ -143,15 +151,20 @@ def solve_base_state(params: TubeParameters, *, rtol: float = 1e-12) -> BaseStat
     grid, v = info.grid, info.values
     if target > v[-1]:  # beyond the scan: towards an asymptote or a locking stretch
         far = info.lambda_i
-        tail = (grid[-1] * 4.0 ** np.arange(1, 21) if math.isinf(far)
-                else far - (far - grid[-1]) * 4.0 ** -np.arange(1, 21))
+        tail = (
+            grid[-1] * 4.0 ** np.arange(1, 21)
+            if math.isinf(far)
+            else far - (far - grid[-1]) * 4.0 ** -np.arange(1, 21)
+        )
         grid, v = np.append(grid[-1], tail), np.append(v[-1], tube.voltage(tail))
     k = np.flatnonzero(v >= target)
     if not k.size:
-        raise BaseStateError(f"Vbar = {target:.12g} is within rounding of the threshold"
-                             f" {info.value:.12g}; no base state resolved")
+        raise BaseStateError(
+            f"Vbar = {target:.12g} is within rounding of the threshold"
+            f" {info.value:.12g}; no base state resolved"
+        )
     a, b = grid[k[0] - 1], grid[k[0]]
-    for n in GAUSS_ORDERS[GAUSS_ORDERS.index(tube.nodes):]:
+    for n in GAUSS_ORDERS[GAUSS_ORDERS.index(tube.nodes) :]:
         tube = dataclasses.replace(tube, nodes=n)
         lam = cell_root(lambda x, t=tube: np.sign(v := t.voltage(x)) * v**2 - target**2, a, b)
         state = BaseState._build(params, tube, lam, info, rtol)
@@ -200,8 +213,15 @@ class BaseState:
             r, stretches, drdR = tube.kinematics(lam, 1.0 + 0.5 * (Ro - 1.0) * (x + 1.0))
             tau = mat.stress(*stretches, c / r)
             e = mat.electric_field(*stretches, c / r) if energy_kind(mat) == "general" else c / r
-            return np.stack([(tau[1] - tau[0]) * drdR / r, (tau[1] + tau[0]) * drdR / r,
-                             (2 * tau[2] - tau[0] - tau[1]) * r * drdR, e * drdR], axis=-1)
+            return np.stack(
+                [
+                    (tau[1] - tau[0]) * drdR / r,
+                    (tau[1] + tau[0]) * drdR / r,
+                    (2 * tau[2] - tau[0] - tau[1]) * r * drdR,
+                    e * drdR,
+                ],
+                axis=-1,
+            )
 
         for deg in (32, 64, 128, 256, 512):
             coef = cheb.chebinterpolate(integrands, deg)
@@ -214,10 +234,24 @@ class BaseState:
         weights[::2] = (Ro - 1.0) / (1.0 - np.arange(0, coef.shape[0], 2) ** 2)
         scale, force, volt = weights @ coef[:, 1:]
         r_o = math.sqrt(lam**2 + tube.b * (Ro**2 - 1.0))
-        error = max(abs(sigma(Ro)) / max(1.0, abs(scale)),
-                    abs(volt / (Ro - 1.0) - params.voltage) / max(1.0, params.voltage))
-        return cls(params, float(lam), r_o / Ro, float(lam), r_o, c, info.value, info.kind,
-                   float(math.pi * force), float(error), tube, sigma)
+        error = max(
+            abs(sigma(Ro)) / max(1.0, abs(scale)),
+            abs(volt / (Ro - 1.0) - params.voltage) / max(1.0, params.voltage),
+        )
+        return cls(
+            params,
+            float(lam),
+            r_o / Ro,
+            float(lam),
+            r_o,
+            c,
+            info.value,
+            info.kind,
+            float(math.pi * force),
+            float(error),
+            tube,
+            sigma,
+        )
 
     @classmethod
     def _neo_hookean(cls, params, tube, lam, info) -> BaseState:
@@ -229,15 +263,31 @@ class BaseState:
         delta = b * (Ro**2 - 1.0)  # r_o^2 - r_i^2
         s = 0.5 * math.log1p(delta / x)  # ln(r_o / r_i)
         c = params.voltage * (Ro - 1.0) / s
-        residual = (g / lz * nh_traction(b / x, Ro**2 - 1.0)
-                    - 0.5 * c * c * delta / (x * (x + delta)))
+        residual = g / lz * nh_traction(b / x, Ro**2 - 1.0) - 0.5 * c * c * delta / (
+            x * (x + delta)
+        )
         a = x - b  # A = r^2 - b R^2
-        force = math.pi * (lz**2 * delta / g**2 - c * c * s
-                           - g**4 / lz**2 * (0.5 * (Ro**2 - 1.0) - a / b * s)
-                           - b / g**2 * (a * math.log(Ro) + 0.5 * delta))
+        force = math.pi * (
+            lz**2 * delta / g**2
+            - c * c * s
+            - g**4 / lz**2 * (0.5 * (Ro**2 - 1.0) - a / b * s)
+            - b / g**2 * (a * math.log(Ro) + 0.5 * delta)
+        )
         r_o = math.sqrt(x + delta)
-        return cls(params, lam, r_o / Ro, lam, r_o, c, info.value, info.kind, force,
-                   abs(residual) / max(1.0, g / lz * math.log(Ro)), tube, None)
+        return cls(
+            params,
+            lam,
+            r_o / Ro,
+            lam,
+            r_o,
+            c,
+            info.value,
+            info.kind,
+            force,
+            abs(residual) / max(1.0, g / lz * math.log(Ro)),
+            tube,
+            None,
+        )
 
     def _local(self, R):
         R = np.asarray(R, float)
@@ -262,8 +312,12 @@ class BaseState:
         p = self.params
         a, ro2, k = self.r_i**2 - self._tube.b, self.r_o**2, p.outer_radius**2 - 1.0
         R2m1 = R**2 - 1.0
-        return 0.5 * p.growth / p.stretch * (np.log1p(R2m1 * a / r**2)
-                                             - math.log1p(k * a / ro2) * ro2 / r**2 * R2m1 / k)
+        return (
+            0.5
+            * p.growth
+            / p.stretch
+            * (np.log1p(R2m1 * a / r**2) - math.log1p(k * a / ro2) * ro2 / r**2 * R2m1 / k)
+        )
 
     def radius(self, R) -> np.ndarray:
         """r(R) = sqrt(r_i^2 + g^3 (R^2 - 1) / lambda_z)."""
@@ -315,13 +369,22 @@ class BaseState:
         p = self.params
         prof = self.profiles(401)
         record = {
-            "material": p.material.name, "outer_radius": p.outer_radius, "growth": p.growth,
-            "stretch": p.stretch, "voltage": p.voltage, "length": p.length,
-            "lambda_i": self.lambda_i, "lambda_o": self.lambda_o, "r_i": self.r_i,
-            "r_o": self.r_o, "charge": self.charge,
-            "voltage_threshold": (float(self.voltage_threshold)
-                                  if math.isfinite(self.voltage_threshold) else None),
-            "threshold_kind": self.threshold_kind, "axial_force": self.axial_force,
+            "material": p.material.name,
+            "outer_radius": p.outer_radius,
+            "growth": p.growth,
+            "stretch": p.stretch,
+            "voltage": p.voltage,
+            "length": p.length,
+            "lambda_i": self.lambda_i,
+            "lambda_o": self.lambda_o,
+            "r_i": self.r_i,
+            "r_o": self.r_o,
+            "charge": self.charge,
+            "voltage_threshold": (
+                float(self.voltage_threshold) if math.isfinite(self.voltage_threshold) else None
+            ),
+            "threshold_kind": self.threshold_kind,
+            "axial_force": self.axial_force,
         }
         for key in ("sigma_rr", "sigma_tt", "sigma_zz"):
             record[f"{key}_min"] = float(prof[key].min())
@@ -334,6 +397,14 @@ class BaseState:
         R = np.linspace(1.0, self.params.outer_radius, n)
         r = self.radius(R)
         srr, stt, szz = self.stresses(R)
-        return {"R": R, "r": r, "lambda": r / R, "sigma_rr": srr, "sigma_tt": stt,
-                "sigma_zz": szz, "p": self.pressure(R), "D_r": self.displacement(R),
-                "E_r": self.electric_field(R)}
+        return {
+            "R": R,
+            "r": r,
+            "lambda": r / R,
+            "sigma_rr": srr,
+            "sigma_tt": stt,
+            "sigma_zz": szz,
+            "p": self.pressure(R),
+            "D_r": self.displacement(R),
+            "E_r": self.electric_field(R),
+        }

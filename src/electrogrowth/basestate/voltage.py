@@ -108,11 +108,18 @@ class Tube:
         stretch, e.g. Gent's)."""
         if (energy := _energy(self.material)) is None:
             return np.ones(np.shape(lam_i), bool)
-        R = np.concatenate([[1.0], 0.5 * (self.outer_radius - 1.0) * (_gauss(self.nodes)[0] + 1)
-                            + 1.0, [self.outer_radius]])  # faces and nodes
+        R = np.concatenate(
+            [
+                [1.0],
+                0.5 * (self.outer_radius - 1.0) * (_gauss(self.nodes)[0] + 1) + 1.0,
+                [self.outer_radius],
+            ]
+        )  # faces and nodes
         _, (l1, l2, l3), _ = self.kinematics(np.asarray(lam_i, float)[..., None], R)
         with np.errstate(**_QUIET):
-            w = energy(l1**2 + l2**2 + l3**2, (l1 * l2)**2 + (l2 * l3)**2 + (l3 * l1)**2, 0, 0, 0)
+            w = energy(
+                l1**2 + l2**2 + l3**2, (l1 * l2) ** 2 + (l2 * l3) ** 2 + (l3 * l1) ** 2, 0, 0, 0
+            )
         return np.all(np.isfinite(np.broadcast_to(w, l1.shape)), axis=-1)
 
     def charge_and_voltage(self, lam_i, *, rtol: float = 1e-13):
@@ -190,9 +197,11 @@ def _mechanical(material, outer_radius, growth, stretch, rtol) -> tuple[float, i
     tube = Tube(material, outer_radius, growth, stretch, GAUSS_ORDERS[0])
     lam0 = math.sqrt(growth**3 / stretch)
     if not tube.in_domain(np.array([lam0]))[0]:
-        raise BaseStateError(f"no traction-free state at Vbar = 0 for g = {growth:g},"
-                             f" lambda_z = {stretch:g}, Rbar_o = {outer_radius:g}: the energy"
-                             f" of {material.name} is undefined in the homogeneous state")
+        raise BaseStateError(
+            f"no traction-free state at Vbar = 0 for g = {growth:g},"
+            f" lambda_z = {stretch:g}, Rbar_o = {outer_radius:g}: the energy"
+            f" of {material.name} is undefined in the homogeneous state"
+        )
     return lam0, _nodes(tube, lam0 * np.array([1.0, 1.5, 3.0]), rtol)
 
 
@@ -201,13 +210,14 @@ def _nodes(tube: Tube, lam: np.ndarray, rtol: float) -> int:
     (four successive rules per stress call)."""
     lam = lam[tube.in_domain(lam)]
     for start in range(0, len(GAUSS_ORDERS) - 1, 3):
-        orders = GAUSS_ORDERS[start:start + 4]
+        orders = GAUSS_ORDERS[start : start + 4]
         hoops = tube.hoops(lam, 0.0, orders)
         for n, (a, s), (b, _) in zip(orders, hoops, hoops[1:]):
             if np.all(abs(a - b) <= 0.01 * rtol * s):
                 return n
-    raise ConvergenceError(f"quadrature not converged to rtol = {rtol} with"
-                           f" {GAUSS_ORDERS[-1]} nodes")
+    raise ConvergenceError(
+        f"quadrature not converged to rtol = {rtol} with {GAUSS_ORDERS[-1]} nodes"
+    )
 
 
 def cell_root(f, a: float, b: float) -> float:
@@ -233,8 +243,16 @@ def _threshold(material, outer_radius, growth, stretch, rtol) -> _Threshold:
     Richardson extrapolation in x = lambda_i^-2, whose order is measured)."""
     if energy_kind(material) == "neo-hookean":  # (NH-5, NH-6): nothing to scan
         lam0 = math.sqrt(growth**3 / stretch)
-        return _Threshold(lam0, nh_asymptote(outer_radius, growth, stretch), "asymptote",
-                          math.inf, 0.0, 0, np.array([lam0]), np.array([0.0]))
+        return _Threshold(
+            lam0,
+            nh_asymptote(outer_radius, growth, stretch),
+            "asymptote",
+            math.inf,
+            0.0,
+            0,
+            np.array([lam0]),
+            np.array([0.0]),
+        )
     lam0, nodes = _mechanical(material, outer_radius, growth, stretch, rtol)
     tube = Tube(material, outer_radius, growth, stretch, nodes)
     lam = lam0 * _SCAN_RATIO ** np.arange(0, math.ceil(math.log(_SCAN_SPAN, _SCAN_RATIO)) + 1)
@@ -271,8 +289,10 @@ def _threshold(material, outer_radius, growth, stretch, rtol) -> _Threshold:
 def _limit_point(tube: Tube, lam0: float, lam: np.ndarray, v: np.ndarray) -> _Threshold:
     """Maximise Vbar on [lam[-3], lam[-1]]: root of the derivative of a degree-24 Chebyshev
     interpolant of Vbar^2 (analytic there), then Vbar evaluated exactly at that root."""
+
     def vsq(x):
         return np.sign(y := tube.voltage(x)) * y**2
+
     a, b = lam[-3], lam[-1]
     poly = cheb.Chebyshev.interpolate(vsq, 24, domain=[a, b])
     crit = [x.real for x in poly.deriv().roots() if abs(x.imag) < 1e-9 and a <= x.real <= b]
@@ -281,8 +301,16 @@ def _limit_point(tube: Tube, lam0: float, lam: np.ndarray, v: np.ndarray) -> _Th
     top = max(crit, key=poly)
     value = math.sqrt(float(vsq(top)[0]))
     keep = lam < top
-    return _Threshold(lam0, value, "limit point", float(top), abs(poly(top) - value**2) / value,
-                      tube.nodes, np.append(lam[keep], top), np.append(v[keep], value))
+    return _Threshold(
+        lam0,
+        value,
+        "limit point",
+        float(top),
+        abs(poly(top) - value**2) / value,
+        tube.nodes,
+        np.append(lam[keep], top),
+        np.append(v[keep], value),
+    )
 
 
 def threshold_info(params, rtol: float = 1e-12) -> _Threshold:
@@ -290,6 +318,7 @@ def threshold_info(params, rtol: float = 1e-12) -> _Threshold:
 
 
 # -- the ideal neo-Hookean tube in closed form (docs eqs. NH-3, NH-5, NH-6) --------------------
+
 
 def nh_asymptote(outer_radius: float, growth: float, stretch: float) -> float:
     """Vbar_inf = g^2 / (lambda_z (Rbar_o - 1)) sqrt((Rbar_o^2 - 1) ln(Rbar_o) / 2)   (NH-5)."""
@@ -330,6 +359,7 @@ def nh_lambda_i(outer_radius: float, growth: float, stretch: float, ratio: float
     if ratio == 0.0:
         return lam0
     k, target = outer_radius**2 - 1.0, ratio * ratio
-    y = brentq(lambda y: nh_square(y, k) - target, 0.0, 1.0, xtol=1e-300, rtol=_RTOL_MIN,
-               maxiter=500)
+    y = brentq(
+        lambda y: nh_square(y, k) - target, 0.0, 1.0, xtol=1e-300, rtol=_RTOL_MIN, maxiter=500
+    )
     return lam0 / math.sqrt(y)

@@ -10,5 +10,13 @@ from .critical import CriticalPoint, critical_value, stable_sign
 from .curves import Curve, critical_curve
 from .scan import ScanOptions, ScanResult, scan_modes
 
-__all__ = ["CriticalPoint", "critical_value", "stable_sign", "Curve", "critical_curve",
-           "ScanOptions", "ScanResult", "scan_modes"]
+__all__ = [
+    "CriticalPoint",
+    "critical_value",
+    "stable_sign",
+    "Curve",
+    "critical_curve",
+    "ScanOptions",
+    "ScanResult",
+    "scan_modes",
+]

@@ -77,8 +77,15 @@ class CurvePoint:
     short_wave_limit: float = math.nan
 
 
-def curve_point(params: TubeParameters, solve_for: str, along: str, x: float, *,
-                side: str | None = None, options: ScanOptions = ScanOptions()) -> CurvePoint:
+def curve_point(
+    params: TubeParameters,
+    solve_for: str,
+    along: str,
+    x: float,
+    *,
+    side: str | None = None,
+    options: ScanOptions = ScanOptions(),
+) -> CurvePoint:
     """Scan the modes at ``along`` = x; a failure becomes kind "failed" (never raises)."""
     try:
         res = scan_modes(params.at(along, x), solve_for, side=side, options=options)
@@ -87,10 +94,16 @@ def curve_point(params: TubeParameters, solve_for: str, along: str, x: float, *,
     c = res.critical
     mode = (c.m, c.n) if c.kind == Kind.BIFURCATION else NO_MODE
     limit = res.short_wave_limit
-    return CurvePoint(float(x), c.value, mode, c.kind, "",
-                      tuple((r.m, r.n, r.value) for r in res.runners_up),
-                      bool(res.surface_instability),
-                      math.nan if limit is None else float(limit))
+    return CurvePoint(
+        float(x),
+        c.value,
+        mode,
+        c.kind,
+        "",
+        tuple((r.m, r.n, r.value) for r in res.runners_up),
+        bool(res.surface_instability),
+        math.nan if limit is None else float(limit),
+    )
 
 
 def _message(exc: Exception) -> str:
@@ -133,8 +146,9 @@ class Curve:
         for i in range(len(self.x) + 1):
             end = i == len(self.x)
             ok = not end and self.kind[i] != Status.FAILED
-            if start is not None and (not ok or (self.m[i], self.n[i])
-                                      != (self.m[start], self.n[start])):
+            if start is not None and (
+                not ok or (self.m[i], self.n[i]) != (self.m[start], self.n[start])
+            ):
                 out.append(((int(self.m[start]), int(self.n[start])), np.arange(start, i)))
                 start = None
             if ok and start is None:
@@ -148,50 +162,100 @@ class Curve:
         path.parent.mkdir(parents=True, exist_ok=True)
         with path.open("w", newline="") as fh:
             w = csv.writer(fh)
-            w.writerow([self.along, f"{self.solve_for}_cr", "m", "n", "kind", "surface",
-                        "short_wave_limit", "status"])
-            for row in zip(self.x, self.value, self.m, self.n, self.kind, self.surface,
-                           self.short_wave_limit, self.status):
+            w.writerow(
+                [
+                    self.along,
+                    f"{self.solve_for}_cr",
+                    "m",
+                    "n",
+                    "kind",
+                    "surface",
+                    "short_wave_limit",
+                    "status",
+                ]
+            )
+            for row in zip(
+                self.x,
+                self.value,
+                self.m,
+                self.n,
+                self.kind,
+                self.surface,
+                self.short_wave_limit,
+                self.status,
+            ):
                 x, v, m, n, kind, surf, limit, status = row
-                w.writerow([repr(float(x)), repr(float(v)), int(m), int(n), kind, int(surf),
-                            repr(float(limit)), status])
+                w.writerow(
+                    [
+                        repr(float(x)),
+                        repr(float(v)),
+                        int(m),
+                        int(n),
+                        kind,
+                        int(surf),
+                        repr(float(limit)),
+                        status,
+                    ]
+                )
         return path
 
     def as_dict(self) -> dict:
         """JSON-ready record (NaN -> None)."""
         num = lambda a: [None if not math.isfinite(v) else float(v) for v in a]  # noqa: E731
         p = self.params
-        return {"along": self.along, "solve_for": self.solve_for, "side": self.side,
-                "material": p.material.name,
-                "fixed": {f: getattr(p, f) for f in ALONG if f not in (self.along,
-                                                                      self.solve_for)},
-                "x": num(self.x), "value": num(self.value), "m": self.m.tolist(),
-                "n": self.n.tolist(), "kind": self.kind.tolist(), "status": list(self.status),
-                "surface": self.surface.tolist(),
-                "short_wave_limit": num(self.short_wave_limit),
-                "switches": [{"x": s.x, "value": s.value, "mode_before": list(s.mode_before),
-                              "mode_after": list(s.mode_after), "value_after": s.value_after}
-                             for s in self.switches]}
-
+        return {
+            "along": self.along,
+            "solve_for": self.solve_for,
+            "side": self.side,
+            "material": p.material.name,
+            "fixed": {f: getattr(p, f) for f in ALONG if f not in (self.along, self.solve_for)},
+            "x": num(self.x),
+            "value": num(self.value),
+            "m": self.m.tolist(),
+            "n": self.n.tolist(),
+            "kind": self.kind.tolist(),
+            "status": list(self.status),
+            "surface": self.surface.tolist(),
+            "short_wave_limit": num(self.short_wave_limit),
+            "switches": [
+                {
+                    "x": s.x,
+                    "value": s.value,
+                    "mode_before": list(s.mode_before),
+                    "mode_after": list(s.mode_after),
+                    "value_after": s.value_after,
+                }
+                for s in self.switches
+            ],
+        }
 
 
 def check_curve(solve_for: str, along: str) -> None:
     """Raise ParameterError unless ``solve_for`` is a control and ``along`` another field."""
     if solve_for not in CONTROLS:
-        raise ParameterError(f"solve_for = {solve_for!r} is unknown; choose one of "
-                             f"{', '.join(CONTROLS)}")
+        raise ParameterError(
+            f"solve_for = {solve_for!r} is unknown; choose one of {', '.join(CONTROLS)}"
+        )
     if along not in ALONG:
         raise ParameterError(f"along = {along!r} is unknown; choose one of {', '.join(ALONG)}")
     if along == solve_for:
-        raise ParameterError(f"along = {along!r} is the unknown itself; choose another of "
-                             f"{', '.join(a for a in ALONG if a != solve_for)}")
+        raise ParameterError(
+            f"along = {along!r} is the unknown itself; choose another of "
+            f"{', '.join(a for a in ALONG if a != solve_for)}"
+        )
 
 
-def critical_curve(params: TubeParameters, solve_for: str, along: str,
-                   values: Iterable[float], *, side: str | None = None,
-                   options: ScanOptions = ScanOptions(),
-                   progress: Callable[[int], object] | None = None,
-                   mapper: Callable = map) -> Curve:
+def critical_curve(
+    params: TubeParameters,
+    solve_for: str,
+    along: str,
+    values: Iterable[float],
+    *,
+    side: str | None = None,
+    options: ScanOptions = ScanOptions(),
+    progress: Callable[[int], object] | None = None,
+    mapper: Callable = map,
+) -> Curve:
     """Critical ``solve_for`` as ``along`` runs over ``values``, switches located.
 
     Parameters
@@ -244,8 +308,7 @@ def critical_curve(params: TubeParameters, solve_for: str, along: str,
         raise ParameterError(f"values of {along} must be strictly monotone, got {xs.tolist()}")
     for x in xs:  # the ranges are checked before any work
         params.at(along, x)
-    unit = functools.partial(curve_point, params, solve_for, along, side=side,
-                             options=options)
+    unit = functools.partial(curve_point, params, solve_for, along, side=side, options=options)
     points = []
     for pt in mapper(unit, xs):
         points.append(pt)
@@ -260,16 +323,29 @@ def critical_curve(params: TubeParameters, solve_for: str, along: str,
                 new_rows, new_switches = loc.between(prev, pt, MAX_SPLITS)
             except Exception as exc:  # noqa: BLE001 -- keep the grid points
                 new_rows, new_switches = [], []
-                pt = dataclasses.replace(pt, status=f"switch from {prev.mode} not located: "
-                                                    f"{_message(exc)}")
+                pt = dataclasses.replace(
+                    pt, status=f"switch from {prev.mode} not located: {_message(exc)}"
+                )
             rows += new_rows
             switches += new_switches
         rows.append(_row(pt))
     x, v, modes, kinds, status, surface, limit = zip(*rows)
     modes = np.array(modes, dtype=int).reshape(-1, 2)
-    return Curve(along, solve_for, side, np.array(x), np.array(v), modes[:, 0], modes[:, 1],
-                 np.array(kinds), tuple(status), tuple(switches), params,
-                 np.array(surface, dtype=bool), np.array(limit, dtype=float))
+    return Curve(
+        along,
+        solve_for,
+        side,
+        np.array(x),
+        np.array(v),
+        modes[:, 0],
+        modes[:, 1],
+        np.array(kinds),
+        tuple(status),
+        tuple(switches),
+        params,
+        np.array(surface, dtype=bool),
+        np.array(limit, dtype=float),
+    )
 
 
 def _row(pt: CurvePoint):
@@ -308,8 +384,7 @@ class _Locator:
             return self.mode_value(pt.mode, x)[0]
         key = ("surface", float(x))
         if key not in self.known:
-            limit = short_wave_limit(self.params.at(self.along, x), self.solve_for,
-                                     side=self.side)
+            limit = short_wave_limit(self.params.at(self.along, x), self.solve_for, side=self.side)
             self.known[key] = (limit.value, limit.kind)
         return self.known[key][0]
 
@@ -320,8 +395,7 @@ class _Locator:
         try:
             kinds = (a.kind, b.kind)
             if Kind.SURFACE in kinds and Kind.THRESHOLD in kinds:  # bisect with scans
-                raise ElectrogrowthError("a switch between the short-wave limit and the"
-                                         " threshold")
+                raise ElectrogrowthError("a switch between the short-wave limit and the threshold")
             if Kind.SURFACE in kinds:
                 found = self._crossing(a, b)
             elif NO_MODE in (a.mode, b.mode):
@@ -338,11 +412,16 @@ class _Locator:
         if depth > 0:
             check = self.unit(x)
             first = min(v_before, v_after, key=lambda v: self.sense * v)
-            if check.kind != Status.FAILED and check.mode not in (a.mode, b.mode) \
-                    and self.sense * (check.value - first) < -1e-9 * max(1.0, abs(first)):
+            if (
+                check.kind != Status.FAILED
+                and check.mode not in (a.mode, b.mode)
+                and self.sense * (check.value - first) < -1e-9 * max(1.0, abs(first))
+            ):
                 return self._split(a, check, b, depth)
-        rows = [(x, v_before, a.mode, Kind.SWITCH, "", a.surface, math.nan),
-                (x, v_after, b.mode, Kind.SWITCH, "", b.surface, math.nan)]
+        rows = [
+            (x, v_before, a.mode, Kind.SWITCH, "", a.surface, math.nan),
+            (x, v_after, b.mode, Kind.SWITCH, "", b.surface, math.nan),
+        ]
         return rows, [Switch(x, v_before, a.mode, b.mode, v_after)]
 
     def _split(self, a, mid, b, depth):

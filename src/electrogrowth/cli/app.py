@@ -32,29 +32,50 @@ PROG = "electrogrowth"
 
 #: Subcommand name -> (one-line help, configure(parser), run(args) -> exit status).
 COMMANDS: dict[str, tuple[str, Callable, Callable]] = {
-    "state": ("solve the axisymmetric base state of a grown, stretched, charged tube",
-              configure_state, run_state),
+    "state": (
+        "solve the axisymmetric base state of a grown, stretched, charged tube",
+        configure_state,
+        run_state,
+    ),
     "figure": ("reproduce a figure of the paper (PNG + CSV)", configure_figure, run_figure),
-    "critical": ("critical growth factor, axial stretch or voltage for the onset of"
-                 " wrinkling, for one mode or scanned over modes", configure_critical,
-                 run_critical),
-    "demo": ("the paper's headline tube (Rbar_o = 1.4, L = 1, lambda_z = 1, Vbar = 0.4):"
-             " base state, critical growth and mode, curve and 3D pattern",
-             configure_demo, run_demo),
+    "critical": (
+        "critical growth factor, axial stretch or voltage for the onset of"
+        " wrinkling, for one mode or scanned over modes",
+        configure_critical,
+        run_critical,
+    ),
+    "demo": (
+        "the paper's headline tube (Rbar_o = 1.4, L = 1, lambda_z = 1, Vbar = 0.4):"
+        " base state, critical growth and mode, curve and 3D pattern",
+        configure_demo,
+        run_demo,
+    ),
     "pattern": (PATTERN_HELP, configure_pattern, run_pattern),
-    "curve": ("critical value along a parameter, with the mode switches located",
-              configure_curve, run_curve),
-    "reproduce": ("the paper's Figures 4-10, the 3D patterns of Figs 9B/10B and an index page",
-                  configure_reproduce, run_reproduce),
-    "sweep": ("critical points over a grid of tubes, in parallel, into a resumable Zarr store",
-              configure_sweep, run_sweep),
+    "curve": (
+        "critical value along a parameter, with the mode switches located",
+        configure_curve,
+        run_curve,
+    ),
+    "reproduce": (
+        "the paper's Figures 4-10, the 3D patterns of Figs 9B/10B and an index page",
+        configure_reproduce,
+        run_reproduce,
+    ),
+    "sweep": (
+        "critical points over a grid of tubes, in parallel, into a resumable Zarr store",
+        configure_sweep,
+        run_sweep,
+    ),
     "plot": ("phase diagram (PNG + SVG) of a sweep store", configure_plot, run_plot),
 }
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = _Parser(prog=PROG, description="Growth, voltage and wrinkling of soft"
-                     " electro-elastic tubes (units mu = eps = R_i = 1).")
+    parser = _Parser(
+        prog=PROG,
+        description="Growth, voltage and wrinkling of soft"
+        " electro-elastic tubes (units mu = eps = R_i = 1).",
+    )
     parser.add_argument("--version", action="version", version=f"%(prog)s {version(PROG)}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for name, (help_text, configure, run) in COMMANDS.items():
@@ -81,6 +102,8 @@ def main(argv: list[str] | None = None) -> int:
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # no flush error
         return 0
     except Exception as exc:  # a bug: still one line, never a traceback
-        print(f"{PROG}: internal error: {type(exc).__name__}: {' '.join(str(exc).split())}",
-              file=sys.stderr)
+        print(
+            f"{PROG}: internal error: {type(exc).__name__}: {' '.join(str(exc).split())}",
+            file=sys.stderr,
+        )
         return 1

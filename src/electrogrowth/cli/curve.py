@@ -42,32 +42,66 @@ MEANING = {
 def configure_curve(parser: argparse.ArgumentParser) -> None:
     what = parser.add_argument_group("what to compute")
     add_control_options(what)
-    what.add_argument("--along", choices=ALONG, required=True,
-                      help="the abscissa: " + "; ".join(f"{k} = {v}"
-                                                        for k, v in MEANING.items()))
-    what.add_argument("--from", dest="start", type=_number, required=True, metavar="X0",
-                      help="first value of the --along parameter")
-    what.add_argument("--to", dest="stop", type=_number, required=True, metavar="X1",
-                      help="last value of the --along parameter")
-    what.add_argument("--points", type=int, default=30, metavar="N",
-                      help="grid points from X0 to X1 (>= 2, default 30); switches of the"
-                           " critical mode (m, n) between them are located exactly")
+    what.add_argument(
+        "--along",
+        choices=ALONG,
+        required=True,
+        help="the abscissa: " + "; ".join(f"{k} = {v}" for k, v in MEANING.items()),
+    )
+    what.add_argument(
+        "--from",
+        dest="start",
+        type=_number,
+        required=True,
+        metavar="X0",
+        help="first value of the --along parameter",
+    )
+    what.add_argument(
+        "--to",
+        dest="stop",
+        type=_number,
+        required=True,
+        metavar="X1",
+        help="last value of the --along parameter",
+    )
+    what.add_argument(
+        "--points",
+        type=int,
+        default=30,
+        metavar="N",
+        help="grid points from X0 to X1 (>= 2, default 30); switches of the"
+        " critical mode (m, n) between them are located exactly",
+    )
     add_tube_options(parser, outer_radius=1.4)  # the --along and --solve-for values are ignored
     modes = parser.add_argument_group("modes u ~ cos(m theta) cos(n pi z / l)")
     add_mode_range_options(modes)
-    parser.add_argument("--out", type=Path, default=Path("out"), metavar="DIR",
-                        help="directory for the CSV and PNG (default ./out)")
-    parser.add_argument("--json", action="store_true",
-                        help="print one JSON object instead of text (no progress bar)")
+    parser.add_argument(
+        "--out",
+        type=Path,
+        default=Path("out"),
+        metavar="DIR",
+        help="directory for the CSV and PNG (default ./out)",
+    )
+    parser.add_argument(
+        "--json",
+        action="store_true",
+        help="print one JSON object instead of text (no progress bar)",
+    )
 
 
 def curve_params(args) -> TubeParameters:
     """The fixed parameters; the --along and --solve-for fields are placeholders."""
-    fixed = {"outer_radius": args.outer_radius, "length": args.length,
-             "growth": args.growth, "stretch": args.stretch, "voltage": args.voltage}
+    fixed = {
+        "outer_radius": args.outer_radius,
+        "length": args.length,
+        "growth": args.growth,
+        "stretch": args.stretch,
+        "voltage": args.voltage,
+    }
     fixed[args.along] = args.start
     fixed[args.solve_for] = {"growth": 1.0, "stretch": fixed["growth"], "voltage": 0.0}[
-        args.solve_for]
+        args.solve_for
+    ]
     return TubeParameters(**fixed, material=_material(args))
 
 
@@ -84,12 +118,23 @@ def run_curve(args) -> int:
     bar = None
     if not args.json and sys.stderr.isatty():
         from tqdm import tqdm
-        bar = tqdm(total=args.points, unit="point", file=sys.stderr,
-                   desc=f"{args.solve_for} along {args.along}")
+
+        bar = tqdm(
+            total=args.points,
+            unit="point",
+            file=sys.stderr,
+            desc=f"{args.solve_for} along {args.along}",
+        )
     try:
-        curve = critical_curve(params, args.solve_for, args.along, values, side=args.side,
-                               options=options,
-                               progress=bar.update if bar is not None else None)
+        curve = critical_curve(
+            params,
+            args.solve_for,
+            args.along,
+            values,
+            side=args.side,
+            options=options,
+            progress=bar.update if bar is not None else None,
+        )
     finally:
         if bar is not None:
             bar.close()
@@ -108,8 +153,13 @@ def run_curve(args) -> int:
 
 def _fixed_text(curve) -> str:
     d = curve.as_dict()["fixed"]
-    names = {"outer_radius": "Rbar_o", "length": "L", "growth": "g", "stretch": "lambda_z",
-             "voltage": "Vbar"}
+    names = {
+        "outer_radius": "Rbar_o",
+        "length": "L",
+        "growth": "g",
+        "stretch": "lambda_z",
+        "voltage": "Vbar",
+    }
     return ", ".join(f"{names[k]} = {v:g}" for k, v in d.items())
 
 
@@ -117,24 +167,32 @@ def summary(curve) -> list[str]:
     """Text lines: the fixed parameters, the range of the critical value, each branch
     (mode and extent) and each switch."""
     side = f" ({curve.side})" if curve.side else ""
-    lines = [f"critical {curve.solve_for}{side} along {curve.along}: "
-             f"{curve.params.material.name}, {_fixed_text(curve)}"]
+    lines = [
+        f"critical {curve.solve_for}{side} along {curve.along}: "
+        f"{curve.params.material.name}, {_fixed_text(curve)}"
+    ]
     ok = np.isfinite(curve.value)
     if ok.any():
-        lines.append(f"  {curve.solve_for}_cr from {curve.value[ok].min():.10g} to "
-                     f"{curve.value[ok].max():.10g}")
+        lines.append(
+            f"  {curve.solve_for}_cr from {curve.value[ok].min():.10g} to "
+            f"{curve.value[ok].max():.10g}"
+        )
     for (m, n), rows in curve.branches():
         what = "threshold (axisymmetric state lost)" if m < 0 else f"mode (m, n) = ({m}, {n})"
         if curve.surface[rows].any():
             what += " at the mode cap: short-wavelength (surface) instability"
-        lines.append(f"  {curve.along} {curve.x[rows[0]]:.10g} .. {curve.x[rows[-1]]:.10g}:"
-                     f" {what}")
+        lines.append(
+            f"  {curve.along} {curve.x[rows[0]]:.10g} .. {curve.x[rows[-1]]:.10g}: {what}"
+        )
     for s in curve.switches:
         jump = abs(s.value_after - s.value) > 1e-9 * max(1.0, abs(s.value))
-        value = (f"jumps from {s.value:.12g} to {s.value_after:.12g}" if jump
-                 else f"= {s.value:.12g}")
-        lines.append(f"  switch at {curve.along} = {s.x:.12g}, {curve.solve_for}_cr {value}:"
-                     f" {_mode(s.mode_before)} -> {_mode(s.mode_after)}")
+        value = (
+            f"jumps from {s.value:.12g} to {s.value_after:.12g}" if jump else f"= {s.value:.12g}"
+        )
+        lines.append(
+            f"  switch at {curve.along} = {s.x:.12g}, {curve.solve_for}_cr {value}:"
+            f" {_mode(s.mode_before)} -> {_mode(s.mode_after)}"
+        )
     failed = [i for i, k in enumerate(curve.kind) if k == Status.FAILED]
     for i in failed:
         lines.append(f"  failed at {curve.along} = {curve.x[i]:.10g}: {curve.status[i]}")
@@ -143,4 +201,3 @@ def summary(curve) -> list[str]:
 
 def _mode(mode) -> str:
     return "threshold" if mode[0] < 0 else f"({mode[0]}, {mode[1]})"
-

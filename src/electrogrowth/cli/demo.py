@@ -25,10 +25,14 @@ HEADLINE = TubeParameters(outer_radius=1.4, length=1.0, growth=1.0, stretch=1.0,
 
 
 def configure_demo(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--out", type=Path, default=Path("out"), metavar="DIR",
-                        help="directory for the PNG, CSV and JSON results (default ./out)")
-    parser.add_argument("--quick", action="store_true",
-                        help="fewer curve points (for tests)")
+    parser.add_argument(
+        "--out",
+        type=Path,
+        default=Path("out"),
+        metavar="DIR",
+        help="directory for the PNG, CSV and JSON results (default ./out)",
+    )
+    parser.add_argument("--quick", action="store_true", help="fewer curve points (for tests)")
 
 
 def run_demo(args) -> int:
@@ -51,11 +55,14 @@ def run_demo(args) -> int:
         f" axial force {state.axial_force:.6f}",
         f"  wrinkles at g_cr = {crit.value:.10f} in mode (m, n) = ({crit.m}, {crit.n})"
         f"  (error estimate {crit.error_estimate:.0e})",
-        "  next modes: " + ", ".join(f"({r.m}, {r.n}) at {r.value:.6f}"
-                                    for r in scan.runners_up),
+        "  next modes: " + ", ".join(f"({r.m}, {r.n}) at {r.value:.6f}" for r in scan.runners_up),
     ]
-    written = [out / "state.json", out / "stress_profile.csv", out / "stress_profile.png",
-               out / "critical.json"]
+    written = [
+        out / "state.json",
+        out / "stress_profile.csv",
+        out / "stress_profile.png",
+        out / "critical.json",
+    ]
     written += _extras(p, crit, out, args.quick)
     lines.append("  wrote " + ", ".join(str(w) for w in written))
     print("\n".join(lines))
@@ -65,20 +72,30 @@ def run_demo(args) -> int:
 def _stress_profile(state, out: Path) -> None:
     prof = state.profiles(201)
     cols = ("r", "sigma_rr", "sigma_tt", "sigma_zz", "p", "D_r", "E_r")
-    np.savetxt(out / "stress_profile.csv", np.column_stack([prof[c] for c in cols]),
-               delimiter=",", header=",".join(cols), comments="", fmt="%.15g")
+    np.savetxt(
+        out / "stress_profile.csv",
+        np.column_stack([prof[c] for c in cols]),
+        delimiter=",",
+        header=",".join(cols),
+        comments="",
+        fmt="%.15g",
+    )
     fig, axes = new_figure(4.0, 3.0, 1, 1)
     ax = axes[0, 0]
-    for key, label, color in zip(("sigma_rr", "sigma_tt", "sigma_zz"),
-                                 (r"$\sigma_{rr}$", r"$\sigma_{\theta\theta}$",
-                                  r"$\sigma_{zz}$"), COLORS):
+    for key, label, color in zip(
+        ("sigma_rr", "sigma_tt", "sigma_zz"),
+        (r"$\sigma_{rr}$", r"$\sigma_{\theta\theta}$", r"$\sigma_{zz}$"),
+        COLORS,
+    ):
         ax.plot(prof["r"], prof[key], color=color, label=label)
     ax.axhline(0.0, color="0.6", lw=0.6)
     ax.set_xlabel("r / R_i")
     ax.set_ylabel(r"Cauchy stress / $\mu$")
-    ax.set_title(rf"$\bar R_o$ = {state.params.outer_radius:g}, $\bar V$ ="
-                 rf" {state.params.voltage:g}, $\lambda_z$ = {state.params.stretch:g}",
-                 fontsize=9)
+    ax.set_title(
+        rf"$\bar R_o$ = {state.params.outer_radius:g}, $\bar V$ ="
+        rf" {state.params.voltage:g}, $\lambda_z$ = {state.params.stretch:g}",
+        fontsize=9,
+    )
     ax.legend()
     fig.savefig(out / "stress_profile.png", dpi=200)
 

@@ -17,45 +17,53 @@ from ..shapes.mode_shape import mode_shape
 #: while the text describes critical stretches: we show what the text describes).
 CAPTIONS = {
     4: "The effect of the growth factor g and axial stretch lambda_z on the nonlinear"
-       " response of inner circumferential stretch lambda_i versus the applied voltage Vbar,"
-       " in the case Rbar_o = 2.0.",
+    " response of inner circumferential stretch lambda_i versus the applied voltage Vbar,"
+    " in the case Rbar_o = 2.0.",
     5: "The distribution of residual stress of a tube that subjects to the external electric"
-       " field Vbar and axial stretch lambda_z after growth, where Rbar_o = 2.0.",
+    " field Vbar and axial stretch lambda_z after growth, where Rbar_o = 2.0.",
     6: "Tube of length L = 1.0. (A) Critical axial stretch lambda_z,cr and modes of"
-       " instability m_cr, n_cr, when there is no growth (g = 1.0) and no voltage applied"
-       " (Vbar = 0.0). (B) Critical voltage Vbar_cr and modes of instability when there is no"
-       " growth (g = 1.0) and no axial stretch (lambda_z = 1.0).",
+    " instability m_cr, n_cr, when there is no growth (g = 1.0) and no voltage applied"
+    " (Vbar = 0.0). (B) Critical voltage Vbar_cr and modes of instability when there is no"
+    " growth (g = 1.0) and no axial stretch (lambda_z = 1.0).",
     7: "[Paper: 'Distribution of residual stress after growth subject to an external"
-       " electric field Vbar = 0.4, 0.6 and axial stretch lambda_z. The integer values given"
-       " in the neighbourhood of each point are the couple n_cr, m_cr.'] Shown, as the text"
-       " describes: critical axial stretch in compression and extension against Rbar_o.",
-    8: "The effect of axial stretch on the critical voltage with Rbar_o = 1.4 and"
-       " L = 1.0, 1.5.",
+    " electric field Vbar = 0.4, 0.6 and axial stretch lambda_z. The integer values given"
+    " in the neighbourhood of each point are the couple n_cr, m_cr.'] Shown, as the text"
+    " describes: critical axial stretch in compression and extension against Rbar_o.",
+    8: "The effect of axial stretch on the critical voltage with Rbar_o = 1.4 and L = 1.0, 1.5.",
     9: "(A) The influence of the external axial strain on the critical growth factor and the"
-       " corresponding wave numbers with applied voltage Vbar = 0.4, 0.6, where Rbar_o = 1.4,"
-       " R_i = 1.0, L = 1.0; (B) some typical patterns of (A).",
+    " corresponding wave numbers with applied voltage Vbar = 0.4, 0.6, where Rbar_o = 1.4,"
+    " R_i = 1.0, L = 1.0; (B) some typical patterns of (A).",
     10: "(A) The influence of the applied voltage on the critical growth factor and the"
-        " corresponding wave numbers with axial stretches lambda_z = 1.0, 1.1, where"
-        " Rbar_o = 1.4, R_i = 1.0, L = 1.0; (B) some typical patterns of (A).",
+    " corresponding wave numbers with axial stretches lambda_z = 1.0, 1.1, where"
+    " Rbar_o = 1.4, R_i = 1.0, L = 1.0; (B) some typical patterns of (A).",
 }
 
 
 def configure_reproduce(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--out", type=Path, default=Path("out/figures"), metavar="DIR",
-                        help="directory for fig<N>.png/.csv, the patterns and index.md"
-                             " (default ./out/figures)")
-    parser.add_argument("--quick", action="store_true",
-                        help="low resolution (previews and tests)")
-    parser.add_argument("--figures", type=int, nargs="+", metavar="N",
-                        help="only these figure numbers (default: all, 4-10)")
+    parser.add_argument(
+        "--out",
+        type=Path,
+        default=Path("out/figures"),
+        metavar="DIR",
+        help="directory for fig<N>.png/.csv, the patterns and index.md (default ./out/figures)",
+    )
+    parser.add_argument("--quick", action="store_true", help="low resolution (previews and tests)")
+    parser.add_argument(
+        "--figures",
+        type=int,
+        nargs="+",
+        metavar="N",
+        help="only these figure numbers (default: all, 4-10)",
+    )
 
 
 def run_reproduce(args) -> int:
     numbers = args.figures or sorted(FIGURES)
     unknown = sorted(set(numbers) - set(FIGURES))
     if unknown:
-        raise ParameterError(f"figure {unknown[0]} is not reproduced; choose from"
-                             f" {sorted(FIGURES)}")
+        raise ParameterError(
+            f"figure {unknown[0]} is not reproduced; choose from {sorted(FIGURES)}"
+        )
     out = args.out
     out.mkdir(parents=True, exist_ok=True)
     sections = []
@@ -69,10 +77,12 @@ def run_reproduce(args) -> int:
         sections.append(_section(number, fn, result, patterns, seconds, args.quick))
         print(f"figure {number}: {out / f'fig{number}.png'} ({seconds:.1f} s)")
     index = out / "index.md"
-    index.write_text("# The paper's figures, reproduced by electrogrowth\n\n"
-                     "Each figure: the paper's caption, our plot and data, and the"
-                     " parameters of this run. Differences from the paper are discussed"
-                     " in docs/paper-comparison.md.\n\n" + "\n".join(sections))
+    index.write_text(
+        "# The paper's figures, reproduced by electrogrowth\n\n"
+        "Each figure: the paper's caption, our plot and data, and the"
+        " parameters of this run. Differences from the paper are discussed"
+        " in docs/paper-comparison.md.\n\n" + "\n".join(sections)
+    )
     print(index)
     return 0
 
@@ -84,19 +94,36 @@ def _pattern(number: int, point, out: Path) -> tuple[str, Path]:
 
 
 def _section(number, fn, result, patterns, seconds, quick) -> str:
-    defaults = {k: v.default for k, v in inspect.signature(fn).parameters.items()
-                if v.default is not inspect.Parameter.empty and k != "quick"}
-    lines = [f"## Figure {number}", "", f"*Paper:* {CAPTIONS.get(number, '')}", "",
-             f"![Figure {number}](fig{number}.png)", "",
-             f"Data: [fig{number}.csv](fig{number}.csv). Parameters: "
-             + ", ".join(f"{k} = {v!r}" for k, v in defaults.items() if v is not None)
-             + f"{' (quick run)' if quick else ''}; computed in {seconds:.1f} s.", ""]
+    defaults = {
+        k: v.default
+        for k, v in inspect.signature(fn).parameters.items()
+        if v.default is not inspect.Parameter.empty and k != "quick"
+    }
+    lines = [
+        f"## Figure {number}",
+        "",
+        f"*Paper:* {CAPTIONS.get(number, '')}",
+        "",
+        f"![Figure {number}](fig{number}.png)",
+        "",
+        f"Data: [fig{number}.csv](fig{number}.csv). Parameters: "
+        + ", ".join(f"{k} = {v!r}" for k, v in defaults.items() if v is not None)
+        + f"{' (quick run)' if quick else ''}; computed in {seconds:.1f} s.",
+        "",
+    ]
     if result.headline:
-        lines += ["Headline numbers: " + ", ".join(f"{k} = {v:.10g}" for k, v in
-                                                   result.headline.items()), ""]
+        lines += [
+            "Headline numbers: "
+            + ", ".join(f"{k} = {v:.10g}" for k, v in result.headline.items()),
+            "",
+        ]
     for point, path in patterns:
         p = point.params
-        lines += [f"**{point.name}**: (m, n) = ({point.m}, {point.n}), g = {p.growth:.6g},"
-                  f" lambda_z = {p.stretch:.6g}, Vbar = {p.voltage:.6g}", "",
-                  f"![{point.name}]({path.name})", ""]
+        lines += [
+            f"**{point.name}**: (m, n) = ({point.m}, {point.n}), g = {p.growth:.6g},"
+            f" lambda_z = {p.stretch:.6g}, Vbar = {p.voltage:.6g}",
+            "",
+            f"![{point.name}]({path.name})",
+            "",
+        ]
     return "\n".join(lines)

@@ -11,8 +11,9 @@ from .options import add_tube_options, tube_from_args
 
 def configure_state(parser: argparse.ArgumentParser) -> None:
     add_tube_options(parser)
-    parser.add_argument("--json", action="store_true",
-                        help="print one JSON object instead of text")
+    parser.add_argument(
+        "--json", action="store_true", help="print one JSON object instead of text"
+    )
 
 
 def run_state(args) -> int:
@@ -33,9 +34,13 @@ def run_state(args) -> int:
         f" ({rec['threshold_kind']})",
         f"  axial force N / (mu R_i^2)   {rec['axial_force']:.12g}",
     ]
-    for key, name in (("sigma_rr", "sigma_rr"), ("sigma_tt", "sigma_theta"),
-                      ("sigma_zz", "sigma_zz")):
-        lines.append(f"  {name + ' / mu (min, max)':<29}{rec[key + '_min']:.6g},"
-                     f" {rec[key + '_max']:.6g}")
+    for key, name in (
+        ("sigma_rr", "sigma_rr"),
+        ("sigma_tt", "sigma_theta"),
+        ("sigma_zz", "sigma_zz"),
+    ):
+        lines.append(
+            f"  {name + ' / mu (min, max)':<29}{rec[key + '_min']:.6g}, {rec[key + '_max']:.6g}"
+        )
     print("\n".join(lines))
     return 0

@@ -29,26 +29,43 @@ def _need_sweep_extra() -> None:
 
 # -- sweep -----------------------------------------------------------------------------------
 
+
 def configure_sweep(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("file", type=Path, metavar="SWEEP.toml",
-                        help="the sweep: material, fixed parameters, grids, what to solve for,"
-                             " mode ranges and rtol (see docs/sweeps.md and"
-                             " examples/sweep.toml); checked in full before any work")
-    parser.add_argument("--out", type=Path, metavar="STORE.zarr",
-                        help="the Zarr store of the results (default: the file's name with"
-                             " .zarr, in the current directory). If it holds the same sweep,"
-                             " only the unfinished chunks are computed (resume)")
+    parser.add_argument(
+        "file",
+        type=Path,
+        metavar="SWEEP.toml",
+        help="the sweep: material, fixed parameters, grids, what to solve for,"
+        " mode ranges and rtol (see docs/sweeps.md and"
+        " examples/sweep.toml); checked in full before any work",
+    )
+    parser.add_argument(
+        "--out",
+        type=Path,
+        metavar="STORE.zarr",
+        help="the Zarr store of the results (default: the file's name with"
+        " .zarr, in the current directory). If it holds the same sweep,"
+        " only the unfinished chunks are computed (resume)",
+    )
     where = parser.add_mutually_exclusive_group()
-    where.add_argument("--workers", type=int, metavar="N",
-                       help="local worker processes (default: the usable cores; 1 computes"
-                            " in this process)")
-    where.add_argument("--scheduler", metavar="ADDRESS",
-                       help="run on an existing dask.distributed cluster, e.g."
-                            " tcp://host:8786 (started with `dask scheduler` and `dask worker"
-                            " tcp://host:8786 --nthreads 1`); results are written here")
-    parser.add_argument("--check", action="store_true",
-                        help="only validate the file (and an existing store) and print the"
-                             " plan; compute nothing")
+    where.add_argument(
+        "--workers",
+        type=int,
+        metavar="N",
+        help="local worker processes (default: the usable cores; 1 computes in this process)",
+    )
+    where.add_argument(
+        "--scheduler",
+        metavar="ADDRESS",
+        help="run on an existing dask.distributed cluster, e.g."
+        " tcp://host:8786 (started with `dask scheduler` and `dask worker"
+        " tcp://host:8786 --nthreads 1`); results are written here",
+    )
+    parser.add_argument(
+        "--check",
+        action="store_true",
+        help="only validate the file (and an existing store) and print the plan; compute nothing",
+    )
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
 
 
@@ -61,12 +78,20 @@ def run_sweep(args) -> int:
     if args.check:
         return _print_plan(config, out)
     try:
-        summary = compute_sweep(config, out, workers=args.workers, scheduler=args.scheduler,
-                                progress=not args.quiet,
-                                source_text=args.file.read_text(encoding="utf-8"))
+        summary = compute_sweep(
+            config,
+            out,
+            workers=args.workers,
+            scheduler=args.scheduler,
+            progress=not args.quiet,
+            source_text=args.file.read_text(encoding="utf-8"),
+        )
     except KeyboardInterrupt:
-        print(f"electrogrowth: interrupted; the finished chunks are saved in {out}: run the"
-              " same command again to resume", file=sys.stderr)
+        print(
+            f"electrogrowth: interrupted; the finished chunks are saved in {out}: run the"
+            " same command again to resume",
+            file=sys.stderr,
+        )
         return 130
     print(summary.text())
     return 0
@@ -74,39 +99,60 @@ def run_sweep(args) -> int:
 
 def _print_plan(config, out: Path) -> int:
     from ..sweep.store import block_shape, check_same_sweep, grid_blocks  # the sweep extra
+
     state = "new store"
     if out.exists():
         check_same_sweep(out, config)
         state = "existing store of the same sweep: resumes"
     blocks = grid_blocks(config.shape, block_shape(config.shape, config.chunk))
     grid = " x ".join(f"{name} ({len(v)}: {v[0]:g} .. {v[-1]:g})" for name, v in config.grid)
-    print(f"{config.size} points: {grid}; critical {config.solve_for}"
-          f"{' (' + config.side + ')' if config.side else ''},"
-          f" modes m {list(config.scan.m_range)}, n {list(config.scan.n_range)},"
-          f" rtol {config.rtol:g}; {len(blocks)} chunks of up to"
-          f" {config.chunk} points; {out}: {state}")
+    print(
+        f"{config.size} points: {grid}; critical {config.solve_for}"
+        f"{' (' + config.side + ')' if config.side else ''},"
+        f" modes m {list(config.scan.m_range)}, n {list(config.scan.n_range)},"
+        f" rtol {config.rtol:g}; {len(blocks)} chunks of up to"
+        f" {config.chunk} points; {out}: {state}"
+    )
     return 0
 
 
 # -- plot ------------------------------------------------------------------------------------
 
+
 def configure_plot(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("store", type=Path, metavar="RESULTS.zarr",
-                        help="a store written by `electrogrowth sweep` (may be unfinished)")
-    parser.add_argument("--x", metavar="PARAM",
-                        help="swept parameter on the horizontal axis (default the first)")
-    parser.add_argument("--y", metavar="PARAM",
-                        help="swept parameter on the vertical axis (default the second)")
-    parser.add_argument("--at", action="append", default=[], metavar="PARAM=VALUE",
-                        help="value of a further swept parameter (the nearest grid value;"
-                             " default its first value); repeatable")
-    parser.add_argument("--out", type=Path, default=Path("out"), metavar="DIR",
-                        help="directory for <store>_<x>_<y>.png and .svg (default ./out)")
+    parser.add_argument(
+        "store",
+        type=Path,
+        metavar="RESULTS.zarr",
+        help="a store written by `electrogrowth sweep` (may be unfinished)",
+    )
+    parser.add_argument(
+        "--x", metavar="PARAM", help="swept parameter on the horizontal axis (default the first)"
+    )
+    parser.add_argument(
+        "--y", metavar="PARAM", help="swept parameter on the vertical axis (default the second)"
+    )
+    parser.add_argument(
+        "--at",
+        action="append",
+        default=[],
+        metavar="PARAM=VALUE",
+        help="value of a further swept parameter (the nearest grid value;"
+        " default its first value); repeatable",
+    )
+    parser.add_argument(
+        "--out",
+        type=Path,
+        default=Path("out"),
+        metavar="DIR",
+        help="directory for <store>_<x>_<y>.png and .svg (default ./out)",
+    )
 
 
 def run_plot(args) -> int:
     _need_sweep_extra()
     from ..sweep.store import open_results  # the sweep extra (xarray, zarr)
+
     ds = open_results(args.store)
     dims = [d for d in ds["critical_value"].dims]
     x = args.x or dims[0]

@@ -16,4 +16,11 @@ from .critical import figure6, figure7, figure8, figure9, figure10
 from .style import FigureResult
 
 FIGURES: dict[int, Callable[..., FigureResult]] = {
-    4: figure4, 5: figure5, 6: figure6, 7: figure7, 8: figure8, 9: figure9, 10: figure10}
+    4: figure4,
+    5: figure5,
+    6: figure6,
+    7: figure7,
+    8: figure8,
+    9: figure9,
+    10: figure10,
+}

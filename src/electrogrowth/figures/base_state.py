@@ -15,9 +15,16 @@ from ..model.params import TubeParameters
 from .style import COLORS, FigureResult, new_figure
 
 
-def figure4(*, outer_radius: float = 2.0, growths=(1.0, 1.1, 1.2), stretches=(0.9, 1.0, 1.2),
-            material: Material | None = None, points: int | None = None,
-            max_lambda_i: float = 5.0, quick: bool = False) -> FigureResult:
+def figure4(
+    *,
+    outer_radius: float = 2.0,
+    growths=(1.0, 1.1, 1.2),
+    stretches=(0.9, 1.0, 1.2),
+    material: Material | None = None,
+    points: int | None = None,
+    max_lambda_i: float = 5.0,
+    quick: bool = False,
+) -> FigureResult:
     """lambda_i against Vbar for several g and lambda_z (paper Fig. 4).
 
     One panel per lambda_z; one curve per growth factor g (g = 1, no growth, dotted). Each
@@ -37,15 +44,17 @@ def figure4(*, outer_radius: float = 2.0, growths=(1.0, 1.1, 1.2), stretches=(0.
     rows, headline = [], {}
     for ax, lz in zip(axes[0], stretches):
         for color, g in zip(COLORS, growths):
-            p = TubeParameters(outer_radius=outer_radius, growth=g, stretch=lz,
-                               material=material)
+            p = TubeParameters(outer_radius=outer_radius, growth=g, stretch=lz, material=material)
             thr, kind, lam_thr = voltage_threshold(p)
             lam0 = solve_base_state(p).lambda_i
             top = min(max_lambda_i, lam_thr * (1 - 1e-9))  # a limit point or locking
             lam = lam0 + (top - lam0) * np.linspace(0.0, 1.0, points) ** 2
             v = voltage_curve(p, lam)
-            rows.append(np.column_stack([np.full_like(v, g), np.full_like(v, lz), v, lam,
-                                         np.full_like(v, thr)]))
+            rows.append(
+                np.column_stack(
+                    [np.full_like(v, g), np.full_like(v, lz), v, lam, np.full_like(v, thr)]
+                )
+            )
             headline[f"threshold_g{g:g}_lz{lz:g}"] = thr
             style = ":" if g == 1.0 else "-"
             ax.plot(v, lam, style, color=color, label=f"$g = {g:g}$")
@@ -63,13 +72,25 @@ def figure4(*, outer_radius: float = 2.0, growths=(1.0, 1.1, 1.2), stretches=(0.
     axes[0, 0].plot([], [], "k--", lw=0.7, label="threshold")
     axes[0, 0].legend(loc="upper left", fontsize=8)
     fig.suptitle(rf"$\bar R_o = {outer_radius:g}$, {material.name}", fontsize=9)
-    return FigureResult(4, ("g", "lambda_z", "Vbar", "lambda_i", "Vbar_threshold"),
-                        np.concatenate(rows), fig, headline)
+    return FigureResult(
+        4,
+        ("g", "lambda_z", "Vbar", "lambda_i", "Vbar_threshold"),
+        np.concatenate(rows),
+        fig,
+        headline,
+    )
 
 
-def figure5(*, outer_radius: float = 2.0, growths=(1.0, 1.1), voltages=(0.0, 0.4, 0.8),
-            stretches=(0.9, 1.2), material: Material | None = None,
-            points: int | None = None, quick: bool = False) -> FigureResult:
+def figure5(
+    *,
+    outer_radius: float = 2.0,
+    growths=(1.0, 1.1),
+    voltages=(0.0, 0.4, 0.8),
+    stretches=(0.9, 1.2),
+    material: Material | None = None,
+    points: int | None = None,
+    quick: bool = False,
+) -> FigureResult:
     """sigma_rr, sigma_tt, sigma_zz through the wall for several g, Vbar, lambda_z (Fig. 5).
 
     Rows: growth factors g; columns: the three principal Cauchy stresses against the reference
@@ -91,15 +112,31 @@ def figure5(*, outer_radius: float = 2.0, growths=(1.0, 1.1), voltages=(0.0, 0.4
     for row, g in zip(axes, growths):
         for dash, lz in zip(dashes, stretches):
             for color, V in zip(COLORS, voltages):
-                p = TubeParameters(outer_radius=outer_radius, growth=g, stretch=lz, voltage=V,
-                                   material=material)
+                p = TubeParameters(
+                    outer_radius=outer_radius, growth=g, stretch=lz, voltage=V, material=material
+                )
                 prof = solve_base_state(p).profiles(points)
                 comps = (prof["sigma_rr"], prof["sigma_tt"], prof["sigma_zz"])
                 for ax, s in zip(row, comps):
-                    ax.plot(prof["R"], s, dash, color=color,
-                            label=rf"$\bar V = {V:g}$, $\lambda_z = {lz:g}$")
-                rows.append(np.column_stack([np.full(points, g), np.full(points, lz),
-                                             np.full(points, V), prof["R"], prof["r"], *comps]))
+                    ax.plot(
+                        prof["R"],
+                        s,
+                        dash,
+                        color=color,
+                        label=rf"$\bar V = {V:g}$, $\lambda_z = {lz:g}$",
+                    )
+                rows.append(
+                    np.column_stack(
+                        [
+                            np.full(points, g),
+                            np.full(points, lz),
+                            np.full(points, V),
+                            prof["R"],
+                            prof["r"],
+                            *comps,
+                        ]
+                    )
+                )
                 headline[f"sigma_tt_inner_g{g:g}_lz{lz:g}_V{V:g}"] = float(prof["sigma_tt"][0])
         for ax, name in zip(row, names):
             ax.set_title(rf"{name}, $g = {g:g}$", fontsize=9)
@@ -108,8 +145,17 @@ def figure5(*, outer_radius: float = 2.0, growths=(1.0, 1.1), voltages=(0.0, 0.4
         row[0].set_ylabel(r"stress / $\mu$")
     for ax in axes[-1]:
         ax.set_xlabel(r"$R / R_i$")
-    fig.legend(*axes[0, 0].get_legend_handles_labels(), loc="outside lower center",
-               ncol=len(stretches), fontsize=8)  # one column per lambda_z
+    fig.legend(
+        *axes[0, 0].get_legend_handles_labels(),
+        loc="outside lower center",
+        ncol=len(stretches),
+        fontsize=8,
+    )  # one column per lambda_z
     fig.suptitle(rf"$\bar R_o = {outer_radius:g}$, {material.name}", fontsize=9)
-    return FigureResult(5, ("g", "lambda_z", "Vbar", "R", "r", "sigma_rr", "sigma_tt",
-                            "sigma_zz"), np.concatenate(rows), fig, headline)
+    return FigureResult(
+        5,
+        ("g", "lambda_z", "Vbar", "R", "r", "sigma_rr", "sigma_tt", "sigma_zz"),
+        np.concatenate(rows),
+        fig,
+        headline,
+    )

@@ -31,8 +31,13 @@ from .plots import plot_curve
 from .style import COLORS, FigureResult, new_figure
 
 #: kind column of the CSVs.
-KIND_CODES = {Kind.BIFURCATION: 0, Kind.SWITCH: 1, Kind.THRESHOLD: 2, Status.FAILED: 3,
-              Kind.SURFACE: 4}
+KIND_CODES = {
+    Kind.BIFURCATION: 0,
+    Kind.SWITCH: 1,
+    Kind.THRESHOLD: 2,
+    Status.FAILED: 3,
+    Kind.SURFACE: 4,
+}
 #: Mode ranges of every scan (extended automatically when the optimum is on an edge). The
 #: full figures scan m up to 64: near the voltage threshold the critical value first rises
 #: with m and then falls for m > 12 (a short-wavelength instability of the inner face), which
@@ -54,8 +59,7 @@ class PatternPoint:
 
     def as_dict(self) -> dict:
         p = self.params
-        return {"name": self.name, "m": self.m, "n": self.n,
-                **{f: getattr(p, f) for f in COLUMNS}}
+        return {"name": self.name, "m": self.m, "n": self.n, **{f: getattr(p, f) for f in COLUMNS}}
 
 
 @dataclasses.dataclass(frozen=True)
@@ -74,8 +78,10 @@ class ModeFigure(FigureResult):
                 fh.write("name,m,n," + ",".join(COLUMNS) + "\n")
                 for p in self.points:
                     d = p.as_dict()
-                    fh.write(",".join([p.name, str(p.m), str(p.n)]
-                                      + [repr(d[f]) for f in COLUMNS]) + "\n")
+                    fh.write(
+                        ",".join([p.name, str(p.m), str(p.n)] + [repr(d[f]) for f in COLUMNS])
+                        + "\n"
+                    )
             paths.append(path)
         return paths
 
@@ -93,12 +99,31 @@ def _table(curves: list[Curve]) -> tuple[tuple[str, ...], np.ndarray]:
         block[:, COLUMNS.index(c.solve_for)] = c.value
         codes = np.array([KIND_CODES[k] for k in c.kind], dtype=float)
         side = {None: 0.0, "compression": -1.0, "extension": 1.0}[c.side]
-        rows.append(np.column_stack([block, c.m, c.n, codes, c.surface.astype(float),
-                                     c.short_wave_limit, np.full(len(c.x), side),
-                                     np.full(len(c.x), COLUMNS.index(c.along)),
-                                     np.full(len(c.x), COLUMNS.index(c.solve_for))]))
-    cols = COLUMNS + ("m", "n", "kind", "surface", "short_wave_limit", "side", "along_column",
-                      "critical_column")
+        rows.append(
+            np.column_stack(
+                [
+                    block,
+                    c.m,
+                    c.n,
+                    codes,
+                    c.surface.astype(float),
+                    c.short_wave_limit,
+                    np.full(len(c.x), side),
+                    np.full(len(c.x), COLUMNS.index(c.along)),
+                    np.full(len(c.x), COLUMNS.index(c.solve_for)),
+                ]
+            )
+        )
+    cols = COLUMNS + (
+        "m",
+        "n",
+        "kind",
+        "surface",
+        "short_wave_limit",
+        "side",
+        "along_column",
+        "critical_column",
+    )
     return cols, np.concatenate(rows)
 
 
@@ -107,8 +132,9 @@ def _modes(quick: bool) -> ScanOptions:
 
 
 def _curve(params, solve_for, along, values, quick, side=None, progress=None) -> Curve:
-    return critical_curve(params, solve_for, along, values, side=side, progress=progress,
-                          options=_modes(quick))
+    return critical_curve(
+        params, solve_for, along, values, side=side, progress=progress, options=_modes(quick)
+    )
 
 
 def _finite(c: Curve) -> np.ndarray:
@@ -121,8 +147,15 @@ def _title(ax, text: str):
 
 # -- Figure 6 -------------------------------------------------------------------------------
 
-def figure6(*, radii=None, length: float = 1.0, material: Material | None = None,
-            quick: bool = False, progress=None) -> ModeFigure:
+
+def figure6(
+    *,
+    radii=None,
+    length: float = 1.0,
+    material: Material | None = None,
+    quick: bool = False,
+    progress=None,
+) -> ModeFigure:
     """Critical stretch (Vbar = 0) and critical voltage (lambda_z = 1) against Rbar_o, g = 1.
 
     (A) lambda_z,cr in compression at Vbar = 0; (B) Vbar_cr at lambda_z = 1 (paper Fig. 6).
@@ -137,12 +170,16 @@ def figure6(*, radii=None, length: float = 1.0, material: Material | None = None
         ``m_...``/``n_...`` at every grid Rbar_o.
     """
     material = material or neo_hookean()
-    radii = np.asarray(radii if radii is not None else
-                       ((1.2, 1.3, 1.4) if quick else np.round(np.arange(1.1, 1.8001, 0.05),
-                                                                 10)), float)
+    radii = np.asarray(
+        radii
+        if radii is not None
+        else ((1.2, 1.3, 1.4) if quick else np.round(np.arange(1.1, 1.8001, 0.05), 10)),
+        float,
+    )
     base = TubeParameters(outer_radius=radii[0], length=length, material=material)
-    a = _curve(base, "stretch", "outer_radius", radii, quick, side="compression",
-               progress=progress)
+    a = _curve(
+        base, "stretch", "outer_radius", radii, quick, side="compression", progress=progress
+    )
     b = _curve(base, "voltage", "outer_radius", radii, quick, progress=progress)
     fig, axes = new_figure(7.0, 2.8, 1, 2)
     plot_curve(a, axes[0, 0])
@@ -161,9 +198,16 @@ def figure6(*, radii=None, length: float = 1.0, material: Material | None = None
 
 # -- Figure 7 -------------------------------------------------------------------------------
 
-def figure7(*, radii=None, voltages=(0.4, 0.6), length: float = 1.0,
-            material: Material | None = None, quick: bool = False,
-            progress=None) -> ModeFigure:
+
+def figure7(
+    *,
+    radii=None,
+    voltages=(0.4, 0.6),
+    length: float = 1.0,
+    material: Material | None = None,
+    quick: bool = False,
+    progress=None,
+) -> ModeFigure:
     """Critical stretch in compression and extension against Rbar_o for Vbar = 0.4, 0.6.
 
     No growth (g = 1), L = 1 (paper Fig. 7). One column per voltage, extension above,
@@ -179,18 +223,19 @@ def figure7(*, radii=None, voltages=(0.4, 0.6), length: float = 1.0,
         their m, n at every grid Rbar_o.
     """
     material = material or neo_hookean()
-    radii = np.asarray(radii if radii is not None else
-                       ((1.3, 1.4) if quick else np.round(np.arange(1.2, 2.0001, 0.05), 10)),
-                       float)
+    radii = np.asarray(
+        radii
+        if radii is not None
+        else ((1.3, 1.4) if quick else np.round(np.arange(1.2, 2.0001, 0.05), 10)),
+        float,
+    )
     fig, axes = new_figure(7.0, 4.6, 2, len(voltages))
     curves, headline = [], {}
     for col, V in enumerate(voltages):
         for row, side in enumerate(("extension", "compression")):
             ax = axes[row, col]
-            p = TubeParameters(outer_radius=radii[0], length=length, voltage=V,
-                               material=material)
-            c = _curve(p, "stretch", "outer_radius", radii, quick, side=side,
-                       progress=progress)
+            p = TubeParameters(outer_radius=radii[0], length=length, voltage=V, material=material)
+            c = _curve(p, "stretch", "outer_radius", radii, quick, side=side, progress=progress)
             plot_curve(c, ax, color=COLORS[row])
             curves.append(c)
             grid = c.kind != Kind.SWITCH
@@ -205,9 +250,17 @@ def figure7(*, radii=None, voltages=(0.4, 0.6), length: float = 1.0,
 
 # -- Figure 8 -------------------------------------------------------------------------------
 
-def figure8(*, outer_radius: float = 1.4, lengths=(1.0, 1.5), stretch_max: float = 2.6,
-            points: int | None = None, material: Material | None = None,
-            quick: bool = False, progress=None) -> ModeFigure:
+
+def figure8(
+    *,
+    outer_radius: float = 1.4,
+    lengths=(1.0, 1.5),
+    stretch_max: float = 2.6,
+    points: int | None = None,
+    material: Material | None = None,
+    quick: bool = False,
+    progress=None,
+) -> ModeFigure:
     """Critical voltage against the axial stretch for Rbar_o = 1.4, L = 1.0 and 1.5, g = 1.
 
     The lambda_z grid of each L runs from the critical compressive stretch at Vbar = 0
@@ -231,8 +284,11 @@ def figure8(*, outer_radius: float = 1.4, lengths=(1.0, 1.5), stretch_max: float
         p = TubeParameters(outer_radius=outer_radius, length=L, material=material)
         start = scan_modes(p, "stretch", side="compression", options=_modes(quick)).critical.value
         t = np.linspace(0.0, 1.0, points) ** 2  # Vbar_cr ~ sqrt(lambda_z - start) there
-        grid = ([start * (1 + NUDGE), 1.0, 1.3] if quick else
-                np.union1d(start * (1 + NUDGE) + (stretch_max - start) * t, [1.0]))
+        grid = (
+            [start * (1 + NUDGE), 1.0, 1.3]
+            if quick
+            else np.union1d(start * (1 + NUDGE) + (stretch_max - start) * t, [1.0])
+        )
         c = _curve(p, "voltage", "stretch", grid, quick, progress=progress)
         plot_curve(c, ax, color=color, label=rf"$L = {L:g}$")
         curves.append(c)
@@ -241,8 +297,12 @@ def figure8(*, outer_radius: float = 1.4, lengths=(1.0, 1.5), stretch_max: float
         headline[f"lambda_start_L{L:g}"] = float(start)
         ax.plot([x_max], [v_max], "s", color=color, ms=3)
     lz = np.linspace(min(c.x[0] for c in curves), max(c.x[-1] for c in curves), 100)
-    thr = [voltage_threshold(TubeParameters(outer_radius=outer_radius, stretch=x,
-                                            material=material))[0] for x in lz]
+    thr = [
+        voltage_threshold(TubeParameters(outer_radius=outer_radius, stretch=x, material=material))[
+            0
+        ]
+        for x in lz
+    ]
     ax.plot(lz, thr, ":", color="0.5", lw=0.9, label="threshold")
     ax.set_ylim(0.0, 1.15 * max(headline[f"V_max_L{L:g}"] for L in lengths))
     _title(ax, rf"$\bar R_o = {outer_radius:g}$, $g = 1$")
@@ -256,26 +316,34 @@ def _maximum(c: Curve) -> tuple[float, float]:
     branch refined by maximising that mode's critical value between its neighbours."""
     ok = _finite(c)
     i = int(np.argmax(np.where(ok, c.value, -np.inf)))
-    inside = 0 < i < len(c.x) - 1 and c.kind[i] == Kind.BIFURCATION and all(
-        (c.m[j], c.n[j]) == (c.m[i], c.n[i]) for j in (i - 1, i + 1))
+    inside = (
+        0 < i < len(c.x) - 1
+        and c.kind[i] == Kind.BIFURCATION
+        and all((c.m[j], c.n[j]) == (c.m[i], c.n[i]) for j in (i - 1, i + 1))
+    )
     if not inside:
         return float(c.x[i]), float(c.value[i])
     from scipy.optimize import minimize_scalar
 
     mode = int(c.m[i]), int(c.n[i])
     at = lambda x: dataclasses.replace(c.params, **{c.along: float(x)})  # noqa: E731
-    res = minimize_scalar(lambda x: -critical_value(at(x), *mode, c.solve_for,
-                                                    side=c.side).value,
-                          bounds=(c.x[i - 1], c.x[i + 1]), method="bounded",
-                          options={"xatol": 1e-9})
-    return (float(res.x), float(-res.fun)) if -res.fun >= c.value[i] else (
-        float(c.x[i]), float(c.value[i]))
+    res = minimize_scalar(
+        lambda x: -critical_value(at(x), *mode, c.solve_for, side=c.side).value,
+        bounds=(c.x[i - 1], c.x[i + 1]),
+        method="bounded",
+        options={"xatol": 1e-9},
+    )
+    return (
+        (float(res.x), float(-res.fun))
+        if -res.fun >= c.value[i]
+        else (float(c.x[i]), float(c.value[i]))
+    )
 
 
 # -- Figures 9 and 10 -----------------------------------------------------------------------
 
-def representative_points(curve: Curve, prefix: str, count: int = 4
-                          ) -> tuple[PatternPoint, ...]:
+
+def representative_points(curve: Curve, prefix: str, count: int = 4) -> tuple[PatternPoint, ...]:
     """``count`` points of a growth curve as the paper picks them: the two ends of the
     curve, and between them the middles of the longest branches whose modes differ from
     each other and from the ends' (the middle of the range if the curve has too few)."""
@@ -302,8 +370,10 @@ def representative_points(curve: Curve, prefix: str, count: int = 4
     chosen = sorted([first, *inner, last], key=lambda i: curve.x[i])
     out = []
     for k, i in enumerate(chosen, 1):
-        params = dataclasses.replace(curve.params, **{curve.along: float(curve.x[i]),
-                                                      curve.solve_for: float(curve.value[i])})
+        params = dataclasses.replace(
+            curve.params,
+            **{curve.along: float(curve.x[i]), curve.solve_for: float(curve.value[i])},
+        )
         out.append(PatternPoint(f"{prefix}{k}", params, int(curve.m[i]), int(curve.n[i])))
     return tuple(out)
 
@@ -312,13 +382,26 @@ def _mark(ax, pts, color, along):
     for p in pts:
         x, y = getattr(p.params, along), p.params.growth
         ax.plot([x], [y], "o", mfc="white", mec=color, ms=4, zorder=3)
-        ax.annotate(f"${p.name[0]}_{p.name[1:]}$", (x, y), xytext=(3, -9),
-                    textcoords="offset points", fontsize=7, color=color)
+        ax.annotate(
+            f"${p.name[0]}_{p.name[1:]}$",
+            (x, y),
+            xytext=(3, -9),
+            textcoords="offset points",
+            fontsize=7,
+            color=color,
+        )
 
 
-def figure9(*, outer_radius: float = 1.4, length: float = 1.0, voltages=(0.4, 0.6),
-            points: int | None = None, material: Material | None = None,
-            quick: bool = False, progress=None) -> ModeFigure:
+def figure9(
+    *,
+    outer_radius: float = 1.4,
+    length: float = 1.0,
+    voltages=(0.4, 0.6),
+    points: int | None = None,
+    material: Material | None = None,
+    quick: bool = False,
+    progress=None,
+) -> ModeFigure:
     """Critical growth factor against the axial stretch for Vbar = 0.4, 0.6 (paper Fig. 9).
 
     Rbar_o = 1.4, L = 1. For each voltage the lambda_z grid runs between the critical
@@ -340,8 +423,7 @@ def figure9(*, outer_radius: float = 1.4, length: float = 1.0, voltages=(0.4, 0.
     ax = axes[0, 0]
     curves, pts, headline = [], [], {}
     for color, V, prefix in zip(COLORS, voltages, "NMKJ"):
-        p = TubeParameters(outer_radius=outer_radius, length=length, voltage=V,
-                           material=material)
+        p = TubeParameters(outer_radius=outer_radius, length=length, voltage=V, material=material)
         lo = scan_modes(p, "stretch", side="compression", options=_modes(quick)).critical
         hi = scan_modes(p, "stretch", side="extension", options=_modes(quick)).critical
         grid = np.linspace(lo.value * (1 + NUDGE), hi.value * (1 - NUDGE), points)
@@ -352,20 +434,31 @@ def figure9(*, outer_radius: float = 1.4, length: float = 1.0, voltages=(0.4, 0.
         pts += chosen
         _mark(ax, chosen, color, "stretch")
         ok = _finite(c)
-        headline.update({f"lambda_compression_V{V:g}": lo.value,
-                         f"lambda_extension_V{V:g}": hi.value,
-                         f"g_start_V{V:g}": float(c.value[ok][0]),
-                         f"g_end_V{V:g}": float(c.value[ok][-1]),
-                         f"g_max_V{V:g}": float(c.value[ok].max())})
+        headline.update(
+            {
+                f"lambda_compression_V{V:g}": lo.value,
+                f"lambda_extension_V{V:g}": hi.value,
+                f"g_start_V{V:g}": float(c.value[ok][0]),
+                f"g_end_V{V:g}": float(c.value[ok][-1]),
+                f"g_max_V{V:g}": float(c.value[ok].max()),
+            }
+        )
     _title(ax, rf"$\bar R_o = {outer_radius:g}$, $L = {length:g}$")
     ax.legend(fontsize=7, loc="upper left")
     cols, table = _table(curves)
     return ModeFigure(9, cols, table, fig, headline, tuple(curves), tuple(pts))
 
 
-def figure10(*, outer_radius: float = 1.4, length: float = 1.0, stretches=(1.0, 1.1),
-             points: int | None = None, material: Material | None = None,
-             quick: bool = False, progress=None) -> ModeFigure:
+def figure10(
+    *,
+    outer_radius: float = 1.4,
+    length: float = 1.0,
+    stretches=(1.0, 1.1),
+    points: int | None = None,
+    material: Material | None = None,
+    quick: bool = False,
+    progress=None,
+) -> ModeFigure:
     """Critical growth factor against the voltage for lambda_z = 1.0, 1.1 (paper Fig. 10).
 
     Rbar_o = 1.4, L = 1. For each lambda_z the Vbar grid runs from 0 to the critical voltage
@@ -386,8 +479,7 @@ def figure10(*, outer_radius: float = 1.4, length: float = 1.0, stretches=(1.0, 
     ax = axes[0, 0]
     curves, pts, headline = [], [], {}
     for color, lz, prefix in zip(COLORS, stretches, "PQRS"):
-        p = TubeParameters(outer_radius=outer_radius, length=length, stretch=lz,
-                           material=material)
+        p = TubeParameters(outer_radius=outer_radius, length=length, stretch=lz, material=material)
         vcr = scan_modes(p, "voltage", options=_modes(quick)).critical
         t = np.linspace(0.0, 1.0, points)  # denser towards Vbar_cr, where g_cr falls fast
         grid = vcr.value * (1 - NUDGE) * (1 - (1 - t) ** 2)
@@ -399,11 +491,16 @@ def figure10(*, outer_radius: float = 1.4, length: float = 1.0, stretches=(1.0, 
         _mark(ax, chosen, color, "voltage")
         ok = _finite(c)
         i = int(np.argmax(np.where(ok, c.value, -np.inf)))
-        headline.update({f"V_cr_lz{lz:g}": vcr.value, f"g_start_lz{lz:g}": float(
-            c.value[ok][0]), f"g_end_lz{lz:g}": float(c.value[ok][-1]),
-            f"g_max_lz{lz:g}": float(c.value[i]), f"V_at_g_max_lz{lz:g}": float(c.x[i])})
+        headline.update(
+            {
+                f"V_cr_lz{lz:g}": vcr.value,
+                f"g_start_lz{lz:g}": float(c.value[ok][0]),
+                f"g_end_lz{lz:g}": float(c.value[ok][-1]),
+                f"g_max_lz{lz:g}": float(c.value[i]),
+                f"V_at_g_max_lz{lz:g}": float(c.x[i]),
+            }
+        )
     _title(ax, rf"$\bar R_o = {outer_radius:g}$, $L = {length:g}$")
     ax.legend(fontsize=7, loc="lower left")
     cols, table = _table(curves)
     return ModeFigure(10, cols, table, fig, headline, tuple(curves), tuple(pts))
-

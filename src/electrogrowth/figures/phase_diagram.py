@@ -44,20 +44,24 @@ def select_plane(ds, x: str, y: str, at: dict | None = None):
     value (default their first)."""
     dims = [d for d in ds["critical_value"].dims]
     if len(dims) < 2:
-        raise ParameterError(f"a phase diagram needs two swept parameters; the store sweeps"
-                             f" only {dims[0]}")
+        raise ParameterError(
+            f"a phase diagram needs two swept parameters; the store sweeps only {dims[0]}"
+        )
     for name, role in ((x, "--x"), (y, "--y")):
         if name not in dims:
-            raise ParameterError(f"{role} {name!r} is not a swept parameter; the store sweeps"
-                                 f" {', '.join(dims)}")
+            raise ParameterError(
+                f"{role} {name!r} is not a swept parameter; the store sweeps {', '.join(dims)}"
+            )
     if x == y:
         raise ParameterError(f"--x and --y are both {x!r}; choose two swept parameters")
     at = dict(at or {})
     rest = [d for d in dims if d not in (x, y)]
     for name in at:
         if name not in rest:
-            raise ParameterError(f"--at {name}: not a further swept parameter (the others"
-                                 f" are {', '.join(rest) or 'none'})")
+            raise ParameterError(
+                f"--at {name}: not a further swept parameter (the others"
+                f" are {', '.join(rest) or 'none'})"
+            )
     plane = ds.sel({d: at[d] for d in rest if d in at}, method="nearest")
     plane = plane.isel({d: 0 for d in rest if d not in at})
     return plane.transpose(y, x, ...)
@@ -71,9 +75,11 @@ def outcomes(plane) -> np.ndarray:
     out = np.empty(status.shape, dtype=object)
     for idx in np.ndindex(status.shape):
         if status[idx] == Status.OK:
-            out[idx] = ((int(m[idx]), int(n[idx])) if kind[idx] == Kind.BIFURCATION
-                        else {Kind.THRESHOLD: THRESHOLD, Kind.SURFACE: SURFACE}.get(
-                            kind[idx], NONE))
+            out[idx] = (
+                (int(m[idx]), int(n[idx]))
+                if kind[idx] == Kind.BIFURCATION
+                else {Kind.THRESHOLD: THRESHOLD, Kind.SURFACE: SURFACE}.get(kind[idx], NONE)
+            )
         else:
             out[idx] = PENDING if status[idx] == "pending" else FAILED
     return out
@@ -103,8 +109,11 @@ def boundaries(labels: np.ndarray, xe: np.ndarray, ye: np.ndarray):
                 jb, ib = j + dj, i + di
                 if jb >= ny or ib >= nx or labels[j, i] == labels[jb, ib]:
                     continue
-                seg = ([(xe[ib], ye[j]), (xe[ib], ye[j + 1])] if di else
-                       [(xe[i], ye[jb]), (xe[i + 1], ye[jb])])
+                seg = (
+                    [(xe[ib], ye[j]), (xe[ib], ye[j + 1])]
+                    if di
+                    else [(xe[i], ye[jb]), (xe[i + 1], ye[jb])]
+                )
                 if (labels[j, i] == THRESHOLD) != (labels[jb, ib] == THRESHOLD):
                     thr.append(seg)
                 else:
@@ -127,8 +136,13 @@ def _label_text(label) -> str:
 
 
 #: Axis symbols in matplotlib's mathtext (the dataset's "symbol" attributes are plain text).
-SYMBOLS = {"stretch": r"$\lambda_z$", "voltage": r"$\bar V$", "outer_radius": r"$\bar R_o$",
-           "length": r"$L$", "growth": r"$g$"}
+SYMBOLS = {
+    "stretch": r"$\lambda_z$",
+    "voltage": r"$\bar V$",
+    "outer_radius": r"$\bar R_o$",
+    "length": r"$L$",
+    "growth": r"$g$",
+}
 
 
 def _axis_label(coord, name=None) -> str:
@@ -163,30 +177,61 @@ def phase_diagram(ds, x: str, y: str, *, at: dict | None = None) -> Figure:
     ax = fig.add_subplot()
     cmap = colormaps["viridis"].with_extremes(bad="0.85")  # no value: light grey
     mesh = ax.pcolormesh(xe, ye, value, cmap=cmap, shading="flat")
-    fig.colorbar(mesh, ax=ax, label=_axis_label(plane["critical_value"],
-                                                ds.attrs.get("solve_for")))
+    fig.colorbar(
+        mesh, ax=ax, label=_axis_label(plane["critical_value"], ds.attrs.get("solve_for"))
+    )
     segs, thr = boundaries(labels, xe, ye)
     ax.add_collection(LineCollection(segs, colors="k", linewidths=0.9))
-    ax.add_collection(LineCollection(thr, colors="tab:red", linewidths=2.6,
-                                     linestyles="--"))
+    ax.add_collection(LineCollection(thr, colors="tab:red", linewidths=2.6, linestyles="--"))
     for r in regions(labels, xs, ys)[:MAX_LABELS]:
-        ax.annotate(_label_text(r.label), (r.x, r.y), ha="center", va="center", fontsize=8,
-                    bbox={"boxstyle": "round,pad=0.2", "fc": "white", "ec": "none",
-                          "alpha": 0.75})
-    ax.set(xlim=(xe[0], xe[-1]), ylim=(ye[0], ye[-1]), xlabel=_axis_label(plane[x]),
-           ylabel=_axis_label(plane[y]))
-    fixed = [f"{plane[c].attrs.get('symbol', c)} = {float(plane[c]):g}"
-             for c in plane.coords if plane[c].ndim == 0 and c != "rank"]
-    ax.set_title(ds.attrs.get("title", "electrogrowth sweep") +
-                 (f"\n{', '.join(fixed)}" if fixed else ""), fontsize=10)
-    keys = [(len(segs) > 0, Line2D([], [], color="k", lw=0.9,
-                                   label="critical mode changes")),
-            (len(thr) > 0, Line2D([], [], color="tab:red", lw=2.6, ls="--",
-                                  label="axisymmetric state lost (threshold)")),
-            (bool(np.ma.getmaskarray(value).any()),
-             Patch(color="0.85", label="failed / no instability / pending"))]
+        ax.annotate(
+            _label_text(r.label),
+            (r.x, r.y),
+            ha="center",
+            va="center",
+            fontsize=8,
+            bbox={"boxstyle": "round,pad=0.2", "fc": "white", "ec": "none", "alpha": 0.75},
+        )
+    ax.set(
+        xlim=(xe[0], xe[-1]),
+        ylim=(ye[0], ye[-1]),
+        xlabel=_axis_label(plane[x]),
+        ylabel=_axis_label(plane[y]),
+    )
+    fixed = [
+        f"{plane[c].attrs.get('symbol', c)} = {float(plane[c]):g}"
+        for c in plane.coords
+        if plane[c].ndim == 0 and c != "rank"
+    ]
+    ax.set_title(
+        ds.attrs.get("title", "electrogrowth sweep") + (f"\n{', '.join(fixed)}" if fixed else ""),
+        fontsize=10,
+    )
+    keys = [
+        (len(segs) > 0, Line2D([], [], color="k", lw=0.9, label="critical mode changes")),
+        (
+            len(thr) > 0,
+            Line2D(
+                [],
+                [],
+                color="tab:red",
+                lw=2.6,
+                ls="--",
+                label="axisymmetric state lost (threshold)",
+            ),
+        ),
+        (
+            bool(np.ma.getmaskarray(value).any()),
+            Patch(color="0.85", label="failed / no instability / pending"),
+        ),
+    ]
     handles = [h for present, h in keys if present]
     if handles:
-        fig.legend(handles=handles, loc="outside lower center", ncols=len(handles),
-                   fontsize=8, frameon=False)
+        fig.legend(
+            handles=handles,
+            loc="outside lower center",
+            ncols=len(handles),
+            fontsize=8,
+            frameon=False,
+        )
     return fig

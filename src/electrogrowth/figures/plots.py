@@ -21,14 +21,23 @@ from ..shapes.mode_shape import ModeShape
 from ..shapes.wall import Surface, wall_surface
 from .style import COLORS, STYLE
 
-SYMBOLS = {"stretch": r"\lambda_z", "voltage": r"\bar V", "outer_radius": r"\bar R_o",
-           "length": "L", "growth": "g"}
-CRITICAL = {"stretch": r"\lambda_{z,\rm cr}", "voltage": r"\bar V_{\rm cr}",
-            "growth": r"g_{\rm cr}"}
+SYMBOLS = {
+    "stretch": r"\lambda_z",
+    "voltage": r"\bar V",
+    "outer_radius": r"\bar R_o",
+    "length": "L",
+    "growth": "g",
+}
+CRITICAL = {
+    "stretch": r"\lambda_{z,\rm cr}",
+    "voltage": r"\bar V_{\rm cr}",
+    "growth": r"g_{\rm cr}",
+}
 
 
-def plot_curve(curve: Curve, ax=None, *, color: str = "k", label: str | None = None,
-               annotate: bool = True):
+def plot_curve(
+    curve: Curve, ax=None, *, color: str = "k", label: str | None = None, annotate: bool = True
+):
     """Draw the curve on ``ax`` (a new figure when None) and return ``ax``.
 
     Each branch is labelled "n, m" (the paper's order; "inf" for the short-wave limit, a
@@ -48,13 +57,24 @@ def plot_curve(curve: Curve, ax=None, *, color: str = "k", label: str | None = N
             i = len(rows) // 2
             xm, vm = (x[i], v[i]) if len(rows) > 2 else (x.mean(), v.mean())
             text = r"$\infty$" if curve.surface[rows].all() else f"{n}, {m}"
-            ax.annotate(text, (xm, vm), xytext=(0, 4 if k % 2 else -10),
-                        textcoords="offset points", ha="center", fontsize=7, color=color)
+            ax.annotate(
+                text,
+                (xm, vm),
+                xytext=(0, 4 if k % 2 else -10),
+                textcoords="offset points",
+                ha="center",
+                fontsize=7,
+                color=color,
+            )
             k += 1
     if curve.switches:
-        ax.plot([s.x for s in curve.switches] * 2,
-                [s.value for s in curve.switches] + [s.value_after for s in curve.switches],
-                "o", color=color, ms=2.5)
+        ax.plot(
+            [s.x for s in curve.switches] * 2,
+            [s.value for s in curve.switches] + [s.value_after for s in curve.switches],
+            "o",
+            color=color,
+            ms=2.5,
+        )
     ax.set_xlabel(f"${SYMBOLS[curve.along]}$")
     ax.set_ylabel(f"${CRITICAL[curve.solve_for]}$")
     return ax
@@ -63,9 +83,11 @@ def plot_curve(curve: Curve, ax=None, *, color: str = "k", label: str | None = N
 def describe(shape: ModeShape) -> str:
     """One line: mode and tube, for titles and captions."""
     p = shape.params
-    return (rf"$(m, n) = ({shape.m}, {shape.n})$, $\bar R_o = {p.outer_radius:g}$,"
-            rf" $L = {p.length:g}$, $g = {p.growth:.6g}$, $\lambda_z = {p.stretch:.6g}$,"
-            rf" $\bar V = {p.voltage:.6g}$, {p.material.name}")
+    return (
+        rf"$(m, n) = ({shape.m}, {shape.n})$, $\bar R_o = {p.outer_radius:g}$,"
+        rf" $L = {p.length:g}$, $g = {p.growth:.6g}$, $\lambda_z = {p.stretch:.6g}$,"
+        rf" $\bar V = {p.voltage:.6g}$, {p.material.name}"
+    )
 
 
 def plot_mode_shape(shape: ModeShape):
@@ -79,13 +101,20 @@ def plot_mode_shape(shape: ModeShape):
     with mpl.rc_context(STYLE):
         fig = Figure(figsize=(7.0, 2.9), layout="constrained")
         left, right = fig.subplots(1, 2)
-        for color, name, label in zip(COLORS[1:], ("U_r", "U_th", "U_z"),
-                                      (r"$U_r$", r"$U_\theta$", r"$U_z$")):
+        for color, name, label in zip(
+            COLORS[1:], ("U_r", "U_th", "U_z"), (r"$U_r$", r"$U_\theta$", r"$U_z$")
+        ):
             left.plot(shape.r, getattr(shape, name), color=color, label=label)
         right.plot(shape.r, shape.Phi, color=COLORS[0], label=r"$\Phi$")
         if not shape.Phi.any():
-            right.text(0.5, 0.6, r"$\Phi \equiv 0$: no voltage, the potential decouples",
-                       transform=right.transAxes, ha="center", fontsize=8)
+            right.text(
+                0.5,
+                0.6,
+                r"$\Phi \equiv 0$: no voltage, the potential decouples",
+                transform=right.transAxes,
+                ha="center",
+                fontsize=8,
+            )
         left.set_ylabel("displacement amplitude (max $|U| = 1$)")
         right.set_ylabel(r"potential amplitude $\Phi$")
         for ax in (left, right):
@@ -99,8 +128,15 @@ def plot_mode_shape(shape: ModeShape):
     return fig
 
 
-def render_pattern(shape: ModeShape, *, amplitude: float = 0.1, path: str | Path | None = None,
-                   n_theta: int | None = None, n_z: int | None = None, dpi: int = 200):
+def render_pattern(
+    shape: ModeShape,
+    *,
+    amplitude: float = 0.1,
+    path: str | Path | None = None,
+    n_theta: int | None = None,
+    n_z: int | None = None,
+    dpi: int = 200,
+):
     """A 3D picture of the wrinkled tube, coloured by the radial displacement u_r.
 
     The closed wall (outer face, top rim, inner face seen through the opening) is drawn as
@@ -134,10 +170,20 @@ def render_pattern(shape: ModeShape, *, amplitude: float = 0.1, path: str | Path
         ax = fig.add_axes((0.0, 0.0, 0.84, 1.0), projection="3d")
         rgb = cmap(norm(surf.u_r))
         rgb[..., :3] *= _lighting(surf, elev, azim)[..., None]
-        ax.plot_surface(surf.x, surf.y, surf.z, facecolors=rgb, rstride=1, cstride=1,
-                        linewidth=0, antialiased=False, shade=False)
-        ax.set(xlim=(-half, half), ylim=(-half, half),
-               zlim=(float(surf.z.min()), float(surf.z.max())))
+        ax.plot_surface(
+            surf.x,
+            surf.y,
+            surf.z,
+            facecolors=rgb,
+            rstride=1,
+            cstride=1,
+            linewidth=0,
+            antialiased=False,
+            shade=False,
+        )
+        ax.set(
+            xlim=(-half, half), ylim=(-half, half), zlim=(float(surf.z.min()), float(surf.z.max()))
+        )
         ax.view_init(elev=elev, azim=azim)
         ax.set_axis_off()
         ax.set_box_aspect((2 * half, 2 * half, height))
@@ -147,8 +193,12 @@ def render_pattern(shape: ModeShape, *, amplitude: float = 0.1, path: str | Path
         bar = fig.colorbar(mpl.cm.ScalarMappable(norm=norm, cmap=cmap), cax=cax)
         bar.set_label(r"radial displacement $u_r / R_i$", fontsize=8)
         bar.ax.tick_params(labelsize=7)
-        fig.suptitle(describe(shape) + f"\nwrinkle amplitude {amplitude:g} $R_i$",
-                     fontsize=8, y=1.0 - 0.08 / H, va="top")
+        fig.suptitle(
+            describe(shape) + f"\nwrinkle amplitude {amplitude:g} $R_i$",
+            fontsize=8,
+            y=1.0 - 0.08 / H,
+            va="top",
+        )
     if path is not None:
         Path(path).parent.mkdir(parents=True, exist_ok=True)
         fig.savefig(path, dpi=dpi)
@@ -159,13 +209,11 @@ def _fit(fig, ax, surf: Surface, side: float, top: float) -> None:
     """Zoom the (always square) 3D axes of ``side`` inches until the projected surface
     fills 95 % of its width or height, and crop the figure to the picture plus ``top``
     inches for the title: the axes may then reach beyond the figure's edges."""
-    x, y, _ = proj3d.proj_transform(surf.x.ravel(), surf.y.ravel(), surf.z.ravel(),
-                                    ax.get_proj())
+    x, y, _ = proj3d.proj_transform(surf.x.ravel(), surf.y.ravel(), surf.z.ravel(), ax.get_proj())
     xy = ax.transAxes.inverted().transform(ax.transData.transform(np.column_stack([x, y])))
     lo, hi = xy.min(axis=0), xy.max(axis=0)  # axes fractions; zoom scales about 0.5
     zoom = 0.95 / float(max(hi - lo))
-    ax.set_box_aspect(None if ax.get_box_aspect() is None else ax.get_box_aspect(),
-                      zoom=zoom)
+    ax.set_box_aspect(None if ax.get_box_aspect() is None else ax.get_box_aspect(), zoom=zoom)
     centre = 0.5 + zoom * (0.5 * (lo + hi) - 0.5)
     picture = side * zoom * (hi[1] - lo[1]) / 0.95  # inches, with a 2.5 % margin each side
     width, height = side / 0.84, picture + top

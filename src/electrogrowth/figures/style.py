@@ -15,8 +15,14 @@ from matplotlib.figure import Figure
 
 #: Line colours (colour-blind safe, Okabe-Ito) and the paper-like style of every figure.
 COLORS = ("#000000", "#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00")
-STYLE = {"font.size": 9, "axes.linewidth": 0.8, "lines.linewidth": 1.3,
-         "xtick.direction": "in", "ytick.direction": "in", "legend.frameon": False}
+STYLE = {
+    "font.size": 9,
+    "axes.linewidth": 0.8,
+    "lines.linewidth": 1.3,
+    "xtick.direction": "in",
+    "ytick.direction": "in",
+    "legend.frameon": False,
+}
 
 
 @dataclasses.dataclass(frozen=True)
@@ -36,8 +42,9 @@ class FigureResult:
         out.mkdir(parents=True, exist_ok=True)
         png, csv = out / f"fig{self.number}.png", out / f"fig{self.number}.csv"
         self.figure.savefig(png, dpi=dpi)
-        np.savetxt(csv, self.table, delimiter=",", header=",".join(self.columns), comments="",
-                   fmt="%.15g")
+        np.savetxt(
+            csv, self.table, delimiter=",", header=",".join(self.columns), comments="", fmt="%.15g"
+        )
         return [png, csv]
 
 

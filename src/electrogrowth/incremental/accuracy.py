@@ -69,6 +69,8 @@ RTOL_RANGE = (1e-14, 1e-4)
 def check_rtol(rtol: float, name: str = "rtol") -> float:
     """Return ``rtol`` if it lies in RTOL_RANGE, else raise ParameterError naming it."""
     if not RTOL_RANGE[0] <= rtol <= RTOL_RANGE[1]:
-        raise ParameterError(f"{name} = {rtol!r} is out of range; valid range: "
-                             f"{RTOL_RANGE[0]:g} to {RTOL_RANGE[1]:g}")
+        raise ParameterError(
+            f"{name} = {rtol!r} is out of range; valid range: "
+            f"{RTOL_RANGE[0]:g} to {RTOL_RANGE[1]:g}"
+        )
     return rtol

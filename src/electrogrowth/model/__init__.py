@@ -8,5 +8,13 @@ nothing of the package but ``errors``.
 from .materials import Material, gent, material_by_name, mooney_rivlin, neo_hookean
 from .params import CONTROLS, SIDES, TubeParameters
 
-__all__ = ["Material", "gent", "material_by_name", "mooney_rivlin", "neo_hookean",
-           "CONTROLS", "SIDES", "TubeParameters"]
+__all__ = [
+    "Material",
+    "gent",
+    "material_by_name",
+    "mooney_rivlin",
+    "neo_hookean",
+    "CONTROLS",
+    "SIDES",
+    "TubeParameters",
+]

@@ -38,11 +38,29 @@ _ORDER = (1, 2, 4, 5, 6)
 #: 3 = z; ``G`` stands for Gamma_0). ``Apiqj`` multiplies L_jq = du_j/dx_q in the updated
 #: incremental nominal stress S_pi; ``Gpiq`` multiplies D_q; ``Kpq`` gives E_p.
 MODULI_NAMES = (
-    "A1111", "A2222", "A3333", "A1122", "A1133", "A2233",
-    "A1212", "A2121", "A1313", "A3131", "A2323", "A3232",
-    "A1221", "A1331", "A2332",
-    "G111", "G221", "G331", "G122", "G133",
-    "K11", "K22", "K33",
+    "A1111",
+    "A2222",
+    "A3333",
+    "A1122",
+    "A1133",
+    "A2233",
+    "A1212",
+    "A2121",
+    "A1313",
+    "A3131",
+    "A2323",
+    "A3232",
+    "A1221",
+    "A1331",
+    "A2332",
+    "G111",
+    "G221",
+    "G331",
+    "G122",
+    "G133",
+    "K11",
+    "K22",
+    "K33",
 )
 MODULI_INDEX = {name: i for i, name in enumerate(MODULI_NAMES)}
 
@@ -63,8 +81,13 @@ def _universal_forms():
     F = sp.Matrix(3, 3, sp.symbols("F0:9", real=True))
     Dt = sp.Matrix(sp.symbols("Dt0:3", real=True))
     C = F.T * F
-    inv = [C.trace(), (C.trace() ** 2 - (C * C).trace()) / 2,
-           (Dt.T * Dt)[0], (Dt.T * C * Dt)[0], (Dt.T * C * C * Dt)[0]]
+    inv = [
+        C.trace(),
+        (C.trace() ** 2 - (C * C).trace()) / 2,
+        (Dt.T * Dt)[0],
+        (Dt.T * C * Dt)[0],
+        (Dt.T * C * C * Dt)[0],
+    ]
     X = list(F) + list(Dt)
     l1, l2, l3, d = sp.symbols("l1 l2 l3 d", positive=True)
     point = {s: 0 for s in X}
@@ -75,8 +98,9 @@ def _universal_forms():
     W = sp.Matrix(5, 5, lambda a, b: sp.Symbol(f"W{min(a, b)}{max(a, b)}", real=True))
     dO = sum((w[k] * grad[k] for k in range(5)), sp.zeros(12, 1))
     d2O = sum((w[k] * hess[k] for k in range(5)), sp.zeros(12, 12))
-    d2O += sum((W[a, b] * grad[a] * grad[b].T for a in range(5) for b in range(5)),
-               sp.zeros(12, 12))
+    d2O += sum(
+        (W[a, b] * grad[a] * grad[b].T for a in range(5) for b in range(5)), sp.zeros(12, 12)
+    )
     Fd = sp.diag(l1, l2, l3)
     fi = lambda i, a: 9 + a if i is None else 3 * i + a  # noqa: E731  F_{i alpha} -> X
     # tau_ij = F_ia dOmega/dF_ja ; E_i = F^-1_ai dOmega/dD~_a (diagonal F)
@@ -95,16 +119,18 @@ def _universal_forms():
             p, q = idx
             comps.append(d2O[9 + p, 9 + q] / (Fd[p, p] * Fd[q, q]))
     args = (l1, l2, l3, d, w, list(W))
-    return (sp.lambdify(args, tau, "numpy"), sp.lambdify(args, E1, "numpy"),
-            sp.lambdify(args, [sp.expand(c) for c in comps], "numpy", cse=True))
+    return (
+        sp.lambdify(args, tau, "numpy"),
+        sp.lambdify(args, E1, "numpy"),
+        sp.lambdify(args, [sp.expand(c) for c in comps], "numpy", cse=True),
+    )
 
 
 @functools.lru_cache(maxsize=64)
 def _energy_derivatives(energy: sp.Expr) -> Callable:
     """Lambdify (dOmega/dI_k, d2Omega/dI_k dI_l) of one energy, once per energy."""
     first = [sp.diff(energy, INVARIANTS[k]) for k in range(5)]
-    second = [[sp.diff(energy, INVARIANTS[a], INVARIANTS[b]) for b in range(5)]
-              for a in range(5)]
+    second = [[sp.diff(energy, INVARIANTS[a], INVARIANTS[b]) for b in range(5)] for a in range(5)]
     return sp.lambdify(INVARIANTS, (first, second), "numpy")
 
 
@@ -124,8 +150,13 @@ def _energy_value(energy: sp.Expr) -> Callable:
 
 def _invariants(l1, l2, l3, d):
     dt2 = (d / l1) ** 2
-    return (l1**2 + l2**2 + l3**2, (l1 * l2) ** 2 + (l2 * l3) ** 2 + (l3 * l1) ** 2,
-            dt2, dt2 * l1**2, dt2 * l1**4)
+    return (
+        l1**2 + l2**2 + l3**2,
+        (l1 * l2) ** 2 + (l2 * l3) ** 2 + (l3 * l1) ** 2,
+        dt2,
+        dt2 * l1**2,
+        dt2 * l1**4,
+    )
 
 
 @dataclasses.dataclass(frozen=True)
@@ -163,7 +194,8 @@ class Material:
         if extra:
             raise MaterialError(
                 f"energy of {self.name!r} has unknown symbols {sorted(map(str, extra))};"
-                " use only I1, I2, I4, I5, I6 with parameters substituted")
+                " use only I1, I2, I4, I5, I6 with parameters substituted"
+            )
         object.__setattr__(self, "energy", expr)
 
     def _derivs(self, l1, l2, l3, d, *, hessian: bool = True):
@@ -175,10 +207,13 @@ class Material:
             bad = np.argmax(~np.isfinite(np.broadcast_to(omega, l1.shape)).ravel())
             raise ParameterError(
                 f"deformation outside the domain of {self.name!r} (I1 = "
-                f"{np.ravel(inv[0])[bad]:.6g}): the energy is not finite there")
+                f"{np.ravel(inv[0])[bad]:.6g}): the energy is not finite there"
+            )
         if not hessian:
-            w = [np.broadcast_to(np.asarray(x, float), l1.shape)
-                 for x in _energy_gradient(self.energy)(*inv)]
+            w = [
+                np.broadcast_to(np.asarray(x, float), l1.shape)
+                for x in _energy_gradient(self.energy)(*inv)
+            ]
             return (l1, l2, l3, d, w, _NO_HESSIAN)
         w, W = _energy_derivatives(self.energy)(*inv)
         w = [np.broadcast_to(np.asarray(x, float), l1.shape) for x in w]
@@ -204,8 +239,9 @@ class Material:
         _, _, m_f = _universal_forms()
         args = self._derivs(l1, l2, l3, d)
         shape = args[0].shape
-        return np.stack([np.broadcast_to(np.asarray(c, float), shape)
-                         for c in m_f(*args)], axis=-1)
+        return np.stack(
+            [np.broadcast_to(np.asarray(c, float), shape) for c in m_f(*args)], axis=-1
+        )
 
     def is_ideal_dielectric(self) -> bool:
         """True when Omega = W(I1, I2) + I5 / 2 (E = D / eps, paper Sec. 3.1)."""
@@ -239,8 +275,9 @@ def mooney_rivlin(alpha: float = 0.5) -> Material:
     if isinstance(alpha, bool) or not isinstance(alpha, (int, float)) or not (0 < alpha <= 1):
         raise ParameterError(f"Mooney-Rivlin alpha = {alpha!r} is invalid; need 0 < alpha <= 1")
     a = sp.Float(alpha)
-    return Material(f"mooney-rivlin(alpha={alpha:g})",
-                    (a * (I1 - 3) + (1 - a) * (I2 - 3)) / 2 + I5 / 2)
+    return Material(
+        f"mooney-rivlin(alpha={alpha:g})", (a * (I1 - 3) + (1 - a) * (I2 - 3)) / 2 + I5 / 2
+    )
 
 
 BUILTIN = {"neo-hookean": neo_hookean, "gent": gent, "mooney-rivlin": mooney_rivlin}
@@ -252,7 +289,8 @@ def material_by_name(name: str, **params) -> Material:
         make = BUILTIN[name]
     except KeyError:
         raise MaterialError(
-            f"unknown material {name!r}; choose one of {', '.join(BUILTIN)}") from None
+            f"unknown material {name!r}; choose one of {', '.join(BUILTIN)}"
+        ) from None
     return make(**params)
 
 
@@ -265,10 +303,22 @@ def neo_hookean_moduli(l1, l2, l3, d):
     l1, l2, l3, d = np.broadcast_arrays(*(np.asarray(x, float) for x in (l1, l2, l3, d)))
     out = np.zeros(l1.shape + (len(MODULI_NAMES),))
     b1, b2, b3, d2 = l1**2, l2**2, l3**2, d**2
-    for name, val in (("A1111", b1 + d2), ("A1212", b1 + d2), ("A1313", b1 + d2),
-                      ("A2121", b2), ("A2222", b2), ("A2323", b2),
-                      ("A3131", b3), ("A3232", b3), ("A3333", b3),
-                      ("G111", 2 * d), ("G122", d), ("G133", d),
-                      ("K11", 1.0), ("K22", 1.0), ("K33", 1.0)):
+    for name, val in (
+        ("A1111", b1 + d2),
+        ("A1212", b1 + d2),
+        ("A1313", b1 + d2),
+        ("A2121", b2),
+        ("A2222", b2),
+        ("A2323", b2),
+        ("A3131", b3),
+        ("A3232", b3),
+        ("A3333", b3),
+        ("G111", 2 * d),
+        ("G122", d),
+        ("G133", d),
+        ("K11", 1.0),
+        ("K22", 1.0),
+        ("K33", 1.0),
+    ):
         out[..., MODULI_INDEX[name]] = val
     return out

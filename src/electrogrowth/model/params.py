@@ -76,8 +76,9 @@ SIDES = ("compression", "extension")
 def check_control(solve_for: str) -> str:
     """Return ``solve_for`` if it is a control, else raise ParameterError naming the choices."""
     if solve_for not in CONTROLS:
-        raise ParameterError(f"solve_for = {solve_for!r} is unknown; choose growth, stretch or"
-                             " voltage")
+        raise ParameterError(
+            f"solve_for = {solve_for!r} is unknown; choose growth, stretch or voltage"
+        )
     return solve_for
 
 

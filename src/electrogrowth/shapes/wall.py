@@ -32,8 +32,12 @@ def displacement(shape: ModeShape, eta: FloatArray, theta, z) -> tuple[FloatArra
     (8, ...) at the same points as theta and z (broadcast); amplitude 1."""
     m, k = shape.m, shape.k
     cc = np.cos(m * theta) * np.cos(k * z)
-    return (eta[0] * cc, eta[1] * np.sin(m * theta) * np.cos(k * z),
-            eta[2] * np.cos(m * theta) * np.sin(k * z), -eta[7] * cc)
+    return (
+        eta[0] * cc,
+        eta[1] * np.sin(m * theta) * np.cos(k * z),
+        eta[2] * np.cos(m * theta) * np.sin(k * z),
+        -eta[7] * cc,
+    )
 
 
 def cartesian(r, theta, z, u_r, u_th, u_z) -> tuple[FloatArray, FloatArray, FloatArray]:
@@ -66,15 +70,26 @@ def _resolution(shape: ModeShape, n_theta: int | None, n_z: int | None) -> tuple
 
 
 def _check_amplitude(amplitude) -> float:
-    if isinstance(amplitude, bool) or not isinstance(amplitude, (int, float)) or not (
-            math.isfinite(amplitude) and amplitude >= 0):
-        raise ParameterError(f"amplitude = {amplitude!r} is invalid; need a finite number"
-                             " >= 0 (the largest displacement, units R_i)")
+    if (
+        isinstance(amplitude, bool)
+        or not isinstance(amplitude, (int, float))
+        or not (math.isfinite(amplitude) and amplitude >= 0)
+    ):
+        raise ParameterError(
+            f"amplitude = {amplitude!r} is invalid; need a finite number"
+            " >= 0 (the largest displacement, units R_i)"
+        )
     return float(amplitude)
 
 
-def deformed_surface(shape: ModeShape, *, amplitude: float = 0.1, n_theta: int | None = None,
-                     n_z: int | None = None, face: str = "outer") -> Surface:
+def deformed_surface(
+    shape: ModeShape,
+    *,
+    amplitude: float = 0.1,
+    n_theta: int | None = None,
+    n_z: int | None = None,
+    face: str = "outer",
+) -> Surface:
     """The outer (r = r_o) or inner (r = r_i) face of the wrinkled tube.
 
     x = r e_r + z e_z + amplitude u on -pi <= th <= pi, 0 <= z <= l = lambda_z L
@@ -99,15 +114,22 @@ def deformed_surface(shape: ModeShape, *, amplitude: float = 0.1, n_theta: int |
     a = _check_amplitude(amplitude)
     n_theta, n_z = _resolution(shape, n_theta, n_z)
     j = -1 if face == "outer" else 0
-    th, z = np.meshgrid(np.linspace(-np.pi, np.pi, n_theta),
-                        np.linspace(0.0, shape.length, n_z), indexing="ij")
+    th, z = np.meshgrid(
+        np.linspace(-np.pi, np.pi, n_theta), np.linspace(0.0, shape.length, n_z), indexing="ij"
+    )
     ur, ut, uz, _ = displacement(shape, shape.eta[:, j], th, z)
     x, y, zz = cartesian(shape.r[j], th, z, a * ur, a * ut, a * uz)
     return Surface(x, y, zz, a * ur, th[:, 0].copy(), z[0].copy())
 
 
-def wall_surface(shape: ModeShape, *, amplitude: float = 0.1, n_theta: int | None = None,
-                 n_z: int | None = None, n_r: int = 17) -> Surface:
+def wall_surface(
+    shape: ModeShape,
+    *,
+    amplitude: float = 0.1,
+    n_theta: int | None = None,
+    n_z: int | None = None,
+    n_r: int = 17,
+) -> Surface:
     """The whole boundary of the wall as one closed surface (for rendering): each column
     of the grid walks round the (r, z) section, outer face up, top annulus in, inner face
     down, bottom annulus out. ``z_ref`` then holds the arc parameter of that walk."""
@@ -115,8 +137,7 @@ def wall_surface(shape: ModeShape, *, amplitude: float = 0.1, n_theta: int | Non
     n_theta, n_z = _resolution(shape, n_theta, n_z)
     Ro, l = shape.params.outer_radius, shape.length
     up, across = np.linspace(0.0, l, n_z), np.linspace(Ro, 1.0, n_r)[1:-1]
-    R = np.concatenate([np.full(n_z, Ro), across, np.full(n_z, 1.0), across[::-1],
-                        [Ro]])
+    R = np.concatenate([np.full(n_z, Ro), across, np.full(n_z, 1.0), across[::-1], [Ro]])
     z = np.concatenate([up, np.full(across.size, l), up[::-1], np.zeros(across.size), [0.0]])
     eta = shape.at(R)
     eta[:, R == Ro], eta[:, R == 1.0] = shape.eta[:, -1:], shape.eta[:, :1]
@@ -128,8 +149,14 @@ def wall_surface(shape: ModeShape, *, amplitude: float = 0.1, n_theta: int | Non
     return Surface(x, y, zz, a * ur, th[:, 0].copy(), np.arange(z.size, dtype=float))
 
 
-def wall_mesh(shape: ModeShape, *, amplitude: float = 0.1, n_r: int = 17,
-              n_theta: int | None = None, n_z: int | None = None) -> dict:
+def wall_mesh(
+    shape: ModeShape,
+    *,
+    amplitude: float = 0.1,
+    n_r: int = 17,
+    n_theta: int | None = None,
+    n_z: int | None = None,
+) -> dict:
     """A structured hexahedral mesh of the whole wall in the current base configuration.
 
     Points (r_j, th_i, z_k), j < n_r (R equally spaced in [1, Rbar_o]), i < n_theta
@@ -146,8 +173,9 @@ def wall_mesh(shape: ModeShape, *, amplitude: float = 0.1, n_r: int = 17,
         r_reference (N,). Default n_theta = max(96, 16 m), n_z = max(41, 16 n + 1).
     """
     a = _check_amplitude(amplitude)
-    n_theta, n_z = _resolution(shape, n_theta or max(96, 16 * shape.m),
-                               n_z or max(41, 16 * shape.n + 1))
+    n_theta, n_z = _resolution(
+        shape, n_theta or max(96, 16 * shape.m), n_z or max(41, 16 * shape.n + 1)
+    )
     if isinstance(n_r, bool) or not isinstance(n_r, (int, np.integer)) or n_r < 2:
         raise ParameterError(f"n_r = {n_r!r} is invalid; need an integer >= 2")
     R = np.linspace(1.0, shape.params.outer_radius, n_r)
@@ -160,19 +188,36 @@ def wall_mesh(shape: ModeShape, *, amplitude: float = 0.1, n_r: int = 17,
     c, s = np.cos(TH), np.sin(TH)
     points = np.stack([r[J] * c, r[J] * s, Z], axis=-1).reshape(-1, 3)
     disp = a * np.stack([ur * c - ut * s, ur * s + ut * c, uz], axis=-1).reshape(-1, 3)
-    k, i, j = np.meshgrid(np.arange(n_z - 1), np.arange(n_theta), np.arange(n_r - 1),
-                          indexing="ij")
-    node = lambda kk, ii, jj: (kk * n_theta + ii % n_theta) * n_r + jj  # noqa: E731
-    quad = lambda kk: [node(kk, i, j), node(kk, i, j + 1), node(kk, i + 1, j + 1),  # noqa
-                       node(kk, i + 1, j)]
+    k, i, j = np.meshgrid(
+        np.arange(n_z - 1), np.arange(n_theta), np.arange(n_r - 1), indexing="ij"
+    )
+
+    def node(kk, ii, jj):
+        return (kk * n_theta + ii % n_theta) * n_r + jj
+
+    def quad(kk):  # the four corners of the cells of one layer
+        return [node(kk, i, j), node(kk, i, j + 1), node(kk, i + 1, j + 1), node(kk, i + 1, j)]
+
     cells = np.stack(quad(k) + quad(k + 1), axis=-1).reshape(-1, 8)
-    return {"points": points, "cells": cells, "displacement": disp,
-            "radial_displacement": a * ur.ravel(), "potential": a * phi.ravel(),
-            "r_reference": R[J].ravel()}
+    return {
+        "points": points,
+        "cells": cells,
+        "displacement": disp,
+        "radial_displacement": a * ur.ravel(),
+        "potential": a * phi.ravel(),
+        "r_reference": R[J].ravel(),
+    }
 
 
-def export_vtk(shape: ModeShape, path: str | Path, *, amplitude: float = 0.1, n_r: int = 17,
-               n_theta: int | None = None, n_z: int | None = None) -> Path:
+def export_vtk(
+    shape: ModeShape,
+    path: str | Path,
+    *,
+    amplitude: float = 0.1,
+    n_r: int = 17,
+    n_theta: int | None = None,
+    n_z: int | None = None,
+) -> Path:
     """Write :func:`wall_mesh` as a VTK file (``.vtu`` XML or ``.vtk`` legacy) with meshio.
 
     Open it in ParaView and apply "Warp By Vector" (vector: displacement) to see the
@@ -190,12 +235,17 @@ def export_vtk(shape: ModeShape, path: str | Path, *, amplitude: float = 0.1, n_
     try:
         import meshio
     except ImportError:
-        raise MissingDependencyError("writing VTK needs the optional package meshio; install"
-                                     " it with pip install 'electrogrowth[vtk]'") from None
+        raise MissingDependencyError(
+            "writing VTK needs the optional package meshio; install"
+            " it with pip install 'electrogrowth[vtk]'"
+        ) from None
     mesh = wall_mesh(shape, amplitude=amplitude, n_r=n_r, n_theta=n_theta, n_z=n_z)
-    data = {key: mesh[key] for key in ("displacement", "radial_displacement", "potential",
-                                       "r_reference")}
+    data = {
+        key: mesh[key]
+        for key in ("displacement", "radial_displacement", "potential", "r_reference")
+    }
     path.parent.mkdir(parents=True, exist_ok=True)
-    meshio.write(path, meshio.Mesh(mesh["points"], [("hexahedron", mesh["cells"])],
-                                   point_data=data))
+    meshio.write(
+        path, meshio.Mesh(mesh["points"], [("hexahedron", mesh["cells"])], point_data=data)
+    )
     return path

@@ -12,5 +12,11 @@ from .file import load_config
 from .run import compute_sweep
 from .unit import PointResult, ScanSpec, compute_point
 
-__all__ = ["SweepConfig", "load_config", "compute_sweep", "PointResult", "ScanSpec",
-           "compute_point"]
+__all__ = [
+    "SweepConfig",
+    "load_config",
+    "compute_sweep",
+    "PointResult",
+    "ScanSpec",
+    "compute_point",
+]

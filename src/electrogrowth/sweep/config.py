@@ -93,13 +93,19 @@ class SweepConfig:
 
     def to_dict(self) -> dict:
         """A JSON-ready dict (stored in the dataset attributes; see :meth:`from_dict`)."""
-        return {"solve": {"for": self.solve_for, "side": self.side, "rtol": self.rtol},
-                "modes": {"m": list(self.scan.m_range), "n": list(self.scan.n_range),
-                          "extend": self.scan.extend, "top": self.scan.top},
-                "material": {"name": self.material[0], **dict(self.material[1])},
-                "fixed": dict(self.fixed),
-                "grid": {name: list(values) for name, values in self.grid},
-                "run": {"chunk": self.chunk}}
+        return {
+            "solve": {"for": self.solve_for, "side": self.side, "rtol": self.rtol},
+            "modes": {
+                "m": list(self.scan.m_range),
+                "n": list(self.scan.n_range),
+                "extend": self.scan.extend,
+                "top": self.scan.top,
+            },
+            "material": {"name": self.material[0], **dict(self.material[1])},
+            "fixed": dict(self.fixed),
+            "grid": {name: list(values) for name, values in self.grid},
+            "run": {"chunk": self.chunk},
+        }
 
     def to_json(self) -> str:
         return json.dumps(self.to_dict())
@@ -107,14 +113,21 @@ class SweepConfig:
     @classmethod
     def from_dict(cls, d: dict) -> SweepConfig:
         mat = dict(d["material"])
-        return cls(solve_for=d["solve"]["for"], side=d["solve"]["side"],
-                   rtol=d["solve"]["rtol"],
-                   grid=tuple((k, tuple(v)) for k, v in d["grid"].items()),
-                   fixed=tuple(d["fixed"].items()),
-                   material=(mat.pop("name"), tuple(mat.items())),
-                   scan=ScanOptions(tuple(d["modes"]["m"]), tuple(d["modes"]["n"]),
-                                    d["modes"]["top"], d["modes"]["extend"]),
-                   chunk=d["run"]["chunk"])
+        return cls(
+            solve_for=d["solve"]["for"],
+            side=d["solve"]["side"],
+            rtol=d["solve"]["rtol"],
+            grid=tuple((k, tuple(v)) for k, v in d["grid"].items()),
+            fixed=tuple(d["fixed"].items()),
+            material=(mat.pop("name"), tuple(mat.items())),
+            scan=ScanOptions(
+                tuple(d["modes"]["m"]),
+                tuple(d["modes"]["n"]),
+                d["modes"]["top"],
+                d["modes"]["extend"],
+            ),
+            chunk=d["run"]["chunk"],
+        )
 
 
 def differences(a: SweepConfig, b: SweepConfig) -> list[str]:
@@ -139,32 +152,39 @@ def default_chunk(size: int) -> int:
 
 # -- semantic checks (also run when a config is rebuilt from a store's attributes) -----------
 
+
 def _validate(c: SweepConfig) -> None:
     if c.solve_for not in CONTROLS:
-        raise ConfigError(("solve", "for"), f"{c.solve_for!r} is unknown; choose growth,"
-                                            " stretch or voltage")
+        raise ConfigError(
+            ("solve", "for"), f"{c.solve_for!r} is unknown; choose growth, stretch or voltage"
+        )
     if c.side is not None:
         if c.solve_for != "stretch":
-            raise ConfigError(("solve", "side"), "side applies only to for = \"stretch\"")
+            raise ConfigError(("solve", "side"), 'side applies only to for = "stretch"')
         if c.side not in SIDES:
-            raise ConfigError(("solve", "side"), f"{c.side!r} is unknown; choose"
-                                                 " compression or extension")
+            raise ConfigError(
+                ("solve", "side"), f"{c.side!r} is unknown; choose compression or extension"
+            )
     if not RTOL_RANGE[0] <= c.rtol <= RTOL_RANGE[1]:
-        raise ConfigError(("solve", "rtol"), f"rtol = {c.rtol!r} is out of range; valid"
-                                             " range: 1e-14 to 1e-4")
+        raise ConfigError(
+            ("solve", "rtol"), f"rtol = {c.rtol!r} is out of range; valid range: 1e-14 to 1e-4"
+        )
     if c.chunk < 1:
         raise ConfigError(("run", "chunk"), f"chunk = {c.chunk} is invalid; need >= 1")
     if not c.grid:
-        raise ConfigError(("grid",), "nothing to sweep; give at least one of"
-                                     f" {', '.join(SWEEPABLE)} in [grid]")
+        raise ConfigError(
+            ("grid",), f"nothing to sweep; give at least one of {', '.join(SWEEPABLE)} in [grid]"
+        )
     for table, names in (("grid", c.dims), ("fixed", [name for name, _ in c.fixed])):
         for name in names:
             if name not in SWEEPABLE:
-                raise ConfigError((table, name), f"unknown parameter; use any of"
-                                                 f" {', '.join(SWEEPABLE)}")
+                raise ConfigError(
+                    (table, name), f"unknown parameter; use any of {', '.join(SWEEPABLE)}"
+                )
             if name == c.solve_for:
-                raise ConfigError((table, name), f"{name} is what is solved for; it cannot"
-                                                 " be given")
+                raise ConfigError(
+                    (table, name), f"{name} is what is solved for; it cannot be given"
+                )
             if table == "fixed" and name in c.dims:
                 raise ConfigError((table, name), f"{name} is also swept in [grid]; keep one")
     for name, values in c.grid:
@@ -186,15 +206,15 @@ def _tube(name, value, where, material):
     except ParameterError as exc:
         raise ConfigError(where, str(exc)) from None
     except TypeError:
-        raise ConfigError(where, f"unknown parameter; use any of {', '.join(SWEEPABLE)}"
-                          ) from None
+        raise ConfigError(where, f"unknown parameter; use any of {', '.join(SWEEPABLE)}") from None
 
 
 def _material(material):
     name, params = material
     if name not in BUILTIN:
-        raise ConfigError(("material", "name"), f"unknown material {name!r}; choose one of"
-                                                f" {', '.join(BUILTIN)}")
+        raise ConfigError(
+            ("material", "name"), f"unknown material {name!r}; choose one of {', '.join(BUILTIN)}"
+        )
     accepted = list(inspect.signature(BUILTIN[name]).parameters)
     for key, _ in params:
         if key not in accepted:

@@ -22,8 +22,14 @@ from ..model.params import TubeParameters
 from .config import SWEEPABLE, SweepConfig, default_chunk
 
 #: table -> allowed keys (None: free keys, checked by the table's own rules)
-TABLES = {"solve": ("for", "side", "rtol"), "modes": ("m", "n", "extend", "top"),
-          "material": None, "fixed": SWEEPABLE, "grid": SWEEPABLE, "run": ("chunk",)}
+TABLES = {
+    "solve": ("for", "side", "rtol"),
+    "modes": ("m", "n", "extend", "top"),
+    "material": None,
+    "fixed": SWEEPABLE,
+    "grid": SWEEPABLE,
+    "run": ("chunk",),
+}
 
 
 def load_config(path: str | Path) -> SweepConfig:
@@ -32,8 +38,9 @@ def load_config(path: str | Path) -> SweepConfig:
     try:
         text = path.read_text(encoding="utf-8")
     except OSError as exc:
-        raise ConfigError((), f"cannot read the sweep file: {exc.strerror}",
-                          source=str(path)) from None
+        raise ConfigError(
+            (), f"cannot read the sweep file: {exc.strerror}", source=str(path)
+        ) from None
     except UnicodeDecodeError:
         raise ConfigError((), "the sweep file is not UTF-8 text", source=str(path)) from None
     return parse_config(text, source=str(path))
@@ -52,34 +59,39 @@ def parse_config(text: str, *, source: str = "<sweep>") -> SweepConfig:
     try:
         return _from_raw(raw)
     except ConfigError as exc:
-        raise ConfigError(exc.key, exc.reason, source=source,
-                          line=line_of(text, exc.key)) from None
+        raise ConfigError(
+            exc.key, exc.reason, source=source, line=line_of(text, exc.key)
+        ) from None
 
 
 def _from_raw(raw: dict) -> SweepConfig:
     for table, value in raw.items():
         if table not in TABLES:
-            raise ConfigError((table,), f"unknown key; the sweep file has the tables"
-                                        f" {', '.join(f'[{t}]' for t in TABLES)}")
+            raise ConfigError(
+                (table,),
+                f"unknown key; the sweep file has the tables"
+                f" {', '.join(f'[{t}]' for t in TABLES)}",
+            )
         if not isinstance(value, dict):
             raise ConfigError((table,), f"expected a table [{table}], got {_typename(value)}")
         allowed = TABLES[table]
         for key in value:
             if allowed is not None and key not in allowed:
-                raise ConfigError((table, key), f"unknown key; [{table}] takes"
-                                                f" {', '.join(allowed)}")
+                raise ConfigError(
+                    (table, key), f"unknown key; [{table}] takes {', '.join(allowed)}"
+                )
     solve, modes, run = (raw.get(t, {}) for t in ("solve", "modes", "run"))
     if "for" not in solve:
         raise ConfigError(("solve",), "missing key 'for' (growth, stretch or voltage)")
     solve_for = _string(solve, ("solve",), "for")
     opt = lambda table, where, key, read, default: (  # noqa: E731
-        read(table, where, key) if key in table else default)
+        read(table, where, key) if key in table else default
+    )
     mat = dict(raw.get("material", {}))
     name = opt(mat, ("material",), "name", _string, "neo-hookean")
     mat.pop("name", None)
     material = tuple((key, _number(mat, ("material",), key)) for key in mat)
-    fixed = {key: _number(raw.get("fixed", {}), ("fixed",), key)
-             for key in raw.get("fixed", {})}
+    fixed = {key: _number(raw.get("fixed", {}), ("fixed",), key) for key in raw.get("fixed", {})}
     grid = tuple((key, _grid_values(key, value)) for key, value in raw.get("grid", {}).items())
     for key in fixed:
         if key == solve_for:
@@ -87,20 +99,28 @@ def _from_raw(raw: dict) -> SweepConfig:
         if key in dict(grid):
             raise ConfigError(("fixed", key), f"{key} is also swept in [grid]; keep one")
     if solve_for in dict(grid):
-        raise ConfigError(("grid", solve_for), f"{solve_for} is what is solved for; it"
-                                               " cannot be swept")
+        raise ConfigError(
+            ("grid", solve_for), f"{solve_for} is what is solved for; it cannot be swept"
+        )
     if "outer_radius" not in fixed and "outer_radius" not in dict(grid):
-        raise ConfigError(("fixed",), "missing outer_radius (Rbar_o > 1): give it in"
-                                      " [fixed] or sweep it in [grid]")
-    full = {f: fixed.get(f, _default(f)) for f in SWEEPABLE
-            if f != solve_for and f not in dict(grid)}
+        raise ConfigError(
+            ("fixed",),
+            "missing outer_radius (Rbar_o > 1): give it in [fixed] or sweep it in [grid]",
+        )
+    full = {
+        f: fixed.get(f, _default(f)) for f in SWEEPABLE if f != solve_for and f not in dict(grid)
+    }
     chunk = opt(run, ("run",), "chunk", _integer, None)
     return SweepConfig(
-        solve_for=solve_for, grid=grid, fixed=tuple(full.items()),
-        material=(name, material), side=opt(solve, ("solve",), "side", _string, None),
+        solve_for=solve_for,
+        grid=grid,
+        fixed=tuple(full.items()),
+        material=(name, material),
+        side=opt(solve, ("solve",), "side", _string, None),
         rtol=opt(solve, ("solve",), "rtol", _number, 1e-12),
         scan=_scan_options(modes),
-        chunk=chunk if chunk is not None else default_chunk(math.prod(len(v) for _, v in grid)))
+        chunk=chunk if chunk is not None else default_chunk(math.prod(len(v) for _, v in grid)),
+    )
 
 
 def _scan_options(modes: dict) -> ScanOptions:
@@ -138,8 +158,7 @@ def _grid_values(key: str, value) -> tuple[float, ...]:
         start, stop = _number(value, where, "start"), _number(value, where, "stop")
         num = _integer(value, where, "num")
         if num < 1:
-            raise ConfigError(where + ("num",), f"num = {num} gives an empty grid; need"
-                                                " num >= 1")
+            raise ConfigError(where + ("num",), f"num = {num} gives an empty grid; need num >= 1")
         values = [float(v) for v in np.linspace(start, stop, num)]
     elif isinstance(value, list):
         if not value:
@@ -147,14 +166,16 @@ def _grid_values(key: str, value) -> tuple[float, ...]:
         values = []
         for i, v in enumerate(value):
             if isinstance(v, bool) or not isinstance(v, (int, float)):
-                raise ConfigError(where, f"value {i + 1} is {_typename(v)} {v!r}, not a"
-                                         " number")
+                raise ConfigError(where, f"value {i + 1} is {_typename(v)} {v!r}, not a number")
             if not math.isfinite(v):
                 raise ConfigError(where, f"value {i + 1} = {v!r} is not a finite number")
             values.append(float(v))
     else:
-        raise ConfigError(where, f"expected a list of numbers or a range {{start, stop,"
-                                 f" num}}, got {_typename(value)} {value!r}")
+        raise ConfigError(
+            where,
+            f"expected a list of numbers or a range {{start, stop,"
+            f" num}}, got {_typename(value)} {value!r}",
+        )
     ordered = sorted(values)
     for a, b in zip(ordered, ordered[1:]):
         if a == b:
@@ -164,9 +185,16 @@ def _grid_values(key: str, value) -> tuple[float, ...]:
 
 # -- types -----------------------------------------------------------------------------------
 
+
 def _typename(v) -> str:
-    return {bool: "a boolean", int: "an integer", float: "a number", str: "a string",
-            list: "a list", dict: "a table"}.get(type(v), type(v).__name__)
+    return {
+        bool: "a boolean",
+        int: "an integer",
+        float: "a number",
+        str: "a string",
+        list: "a list",
+        dict: "a table",
+    }.get(type(v), type(v).__name__)
 
 
 def _string(table, where, key):
@@ -201,18 +229,25 @@ def _bool(table, where, key):
 
 def _int_pair(table, key):
     v = table[key]
-    if (not isinstance(v, list) or len(v) != 2
-            or any(isinstance(x, bool) or not isinstance(x, int) for x in v)):
-        raise ConfigError(("modes", key), f"expected an inclusive range [{key}_min, {key}_max]"
-                                          f" of two integers, got {v!r}")
+    if (
+        not isinstance(v, list)
+        or len(v) != 2
+        or any(isinstance(x, bool) or not isinstance(x, int) for x in v)
+    ):
+        raise ConfigError(
+            ("modes", key),
+            f"expected an inclusive range [{key}_min, {key}_max] of two integers, got {v!r}",
+        )
     return (v[0], v[1])
 
 
 # -- line numbers ----------------------------------------------------------------------------
 
 _HEADER = re.compile(r"^\s*\[\s*([^\[\]]+?)\s*\]")
-_KEY = re.compile(r"""^\s*((?:[A-Za-z0-9_-]+|"[^"]*"|'[^']*')"""
-                  r"""(?:\s*\.\s*(?:[A-Za-z0-9_-]+|"[^"]*"|'[^']*'))*)\s*=""")
+_KEY = re.compile(
+    r"""^\s*((?:[A-Za-z0-9_-]+|"[^"]*"|'[^']*')"""
+    r"""(?:\s*\.\s*(?:[A-Za-z0-9_-]+|"[^"]*"|'[^']*'))*)\s*="""
+)
 
 
 def _split_key(text: str) -> tuple[str, ...]:
@@ -234,13 +269,13 @@ def line_of(text: str, key: tuple[str, ...]) -> int | None:
         head = _HEADER.match(line)
         if head:
             table = _split_key(head.group(1))
-            if key[:len(table)] == table and len(table) > depth:
+            if key[: len(table)] == table and len(table) > depth:
                 best, depth = number, len(table)
             continue
         found = _KEY.match(line)
         if found:
             path = table + _split_key(found.group(1))
             n = min(len(path), len(key))
-            if path[:n] == key[:n] and n > depth and path[:len(table)] == key[:len(table)]:
+            if path[:n] == key[:n] and n > depth and path[: len(table)] == key[: len(table)]:
                 best, depth = number, n
     return best

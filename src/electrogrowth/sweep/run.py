@@ -39,19 +39,29 @@ class SweepSummary:
         c = self.counts
         pts = sum(c.values())
         done = ", ".join(f"{v} {k}" for k, v in c.items() if v and k != "pending")
-        line = (f"{self.out}: {pts} points ({done or 'none computed'}); computed"
-                f" {self.chunks_computed} of {self.chunks} chunks in {self.seconds:.1f} s")
+        line = (
+            f"{self.out}: {pts} points ({done or 'none computed'}); computed"
+            f" {self.chunks_computed} of {self.chunks} chunks in {self.seconds:.1f} s"
+        )
         if self.chunks_before:
             line += f" ({self.chunks_before} done before)"
         if c.get("error"):
-            line += (f"; {c['error']} points hit an internal error (a bug, see their"
-                     " message: please report it)")
+            line += (
+                f"; {c['error']} points hit an internal error (a bug, see their"
+                " message: please report it)"
+            )
         return line
 
 
-def compute_sweep(config, out: str | Path, *, workers: int | None = None,
-                  scheduler: str | None = None, progress: bool = True,
-                  source_text: str = "") -> SweepSummary:
+def compute_sweep(
+    config,
+    out: str | Path,
+    *,
+    workers: int | None = None,
+    scheduler: str | None = None,
+    progress: bool = True,
+    source_text: str = "",
+) -> SweepSummary:
     """Run the sweep ``config`` (a :class:`sweep_config.SweepConfig`) into the store ``out``.
 
     Parameters
@@ -87,25 +97,38 @@ def compute_sweep(config, out: str | Path, *, workers: int | None = None,
         if workers is None:
             workers = _usable_cores()
         material = config.build_material()
-        tasks = [ChunkTask(i, tuple((s.start, s.stop) for s in store.blocks[i]),
-                           tuple(config.points(store.blocks[i], material)), config.spec)
-                 for i in pending]
-        bar = _progress_bar(config.size, config.size - sum(len(t.params) for t in tasks),
-                            progress)
+        tasks = [
+            ChunkTask(
+                i,
+                tuple((s.start, s.stop) for s in store.blocks[i]),
+                tuple(config.points(store.blocks[i], material)),
+                config.spec,
+            )
+            for i in pending
+        ]
+        bar = _progress_bar(config.size, config.size - sum(len(t.params) for t in tasks), progress)
         results = _results(tasks, workers, scheduler)
         try:
             for result in results:
                 store.write_chunk(result, run)
                 bar.update(len(result.points))
                 if any(p.status != Status.OK for p in result.points):
-                    bar.set_postfix_str(f"last failure: {_first_failure(result)}"[:60],
-                                        refresh=False)
+                    bar.set_postfix_str(
+                        f"last failure: {_first_failure(result)}"[:60], refresh=False
+                    )
         finally:
             results.close()  # stops the workers now if we are interrupted
             bar.close()
         counts = store.counts()
-    return SweepSummary(Path(out), run, chunks, chunks - len(tasks), len(tasks), counts,
-                        time.perf_counter() - start)
+    return SweepSummary(
+        Path(out),
+        run,
+        chunks,
+        chunks - len(tasks),
+        len(tasks),
+        counts,
+        time.perf_counter() - start,
+    )
 
 
 def _first_failure(result: ChunkResult) -> str:
@@ -121,9 +144,18 @@ def _usable_cores() -> int:
 
 def _progress_bar(total: int, initial: int, enabled: bool):
     from tqdm import tqdm
-    return tqdm(total=total, initial=initial, unit="pt", desc="sweep", file=sys.stderr,
-                disable=not enabled, dynamic_ncols=True, smoothing=0.1,
-                mininterval=0.2 if sys.stderr.isatty() else 5.0)
+
+    return tqdm(
+        total=total,
+        initial=initial,
+        unit="pt",
+        desc="sweep",
+        file=sys.stderr,
+        disable=not enabled,
+        dynamic_ncols=True,
+        smoothing=0.1,
+        mininterval=0.2 if sys.stderr.isatty() else 5.0,
+    )
 
 
 def _results(tasks: list[ChunkTask], workers: int, scheduler: str | None):
@@ -152,8 +184,10 @@ def _on_process_pool(tasks, workers):
             yield future.result()
     except BrokenProcessPool:
         _stop(pool)
-        raise SweepError("a worker process died (out of memory?); the finished chunks are"
-                         " saved: run the same command again to resume") from None
+        raise SweepError(
+            "a worker process died (out of memory?); the finished chunks are"
+            " saved: run the same command again to resume"
+        ) from None
     except BaseException:  # interrupted (or the consumer stopped): don't wait for workers
         _stop(pool)
         raise
@@ -174,23 +208,30 @@ def _on_dask(tasks, address):
     try:
         from distributed import Client, as_completed
     except ImportError:
-        raise SweepError("--scheduler needs dask.distributed: pip install"
-                         " 'electrogrowth[sweep]'") from None
+        raise SweepError(
+            "--scheduler needs dask.distributed: pip install 'electrogrowth[sweep]'"
+        ) from None
     try:
         client = Client(address, timeout="20s")
     except (OSError, TimeoutError) as exc:
         raise SweepError(f"cannot reach the dask scheduler at {address}: {exc}") from None
     token = uuid.uuid4().hex[:8]
     try:
-        futures = client.map(compute_chunk, tasks, pure=False,
-                             key=[f"electrogrowth-chunk-{t.index}-{token}" for t in tasks])
+        futures = client.map(
+            compute_chunk,
+            tasks,
+            pure=False,
+            key=[f"electrogrowth-chunk-{t.index}-{token}" for t in tasks],
+        )
         for future in as_completed(futures):
             try:
                 result = future.result()
             except Exception as exc:  # noqa: BLE001 - e.g. KilledWorker
-                raise SweepError(f"the cluster lost chunk {future.key}: {type(exc).__name__}:"
-                                 f" {exc}; the finished chunks are saved: run the same"
-                                 " command again to resume") from None
+                raise SweepError(
+                    f"the cluster lost chunk {future.key}: {type(exc).__name__}:"
+                    f" {exc}; the finished chunks are saved: run the same"
+                    " command again to resume"
+                ) from None
             future.release()
             yield result
     finally:

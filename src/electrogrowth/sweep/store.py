@@ -40,23 +40,41 @@ from .config import SweepConfig, differences
 from .unit import ChunkResult
 
 #: Coordinate attributes of the tube parameters.
-LABELS = {"outer_radius": ("outer radius", "R̄ₒ = Rₒ/Rᵢ"), "length": ("length", "L/Rᵢ"),
-          "growth": ("growth factor", "g"), "stretch": ("axial stretch", "λ_z"),
-          "voltage": ("voltage", "V̄")}
+LABELS = {
+    "outer_radius": ("outer radius", "R̄ₒ = Rₒ/Rᵢ"),
+    "length": ("length", "L/Rᵢ"),
+    "growth": ("growth factor", "g"),
+    "stretch": ("axial stretch", "λ_z"),
+    "voltage": ("voltage", "V̄"),
+}
 
 #: name -> (dtype, value before the point is computed, description)
 POINT_VARIABLES = {
-    "critical_value": ("f8", math.nan, "critical value of the solved-for parameter: at the"
-                                       " bifurcation, or where the axisymmetric state is lost"),
+    "critical_value": (
+        "f8",
+        math.nan,
+        "critical value of the solved-for parameter: at the"
+        " bifurcation, or where the axisymmetric state is lost",
+    ),
     "m": ("i4", -1, "circumferential wavenumber of the critical mode (-1: none)"),
-    "n": ("i4", -1, "axial half-wavenumber of the critical mode, k = n pi / (lambda_z L)"
-                    " (-1: none)"),
-    "kind": (object, "", "bifurcation | threshold (the axisymmetric state is lost first) |"
-                         " surface (the short-wave limit m, n -> inf at a face comes first)"
-                         " | none (no instability in the range)"),
+    "n": (
+        "i4",
+        -1,
+        "axial half-wavenumber of the critical mode, k = n pi / (lambda_z L) (-1: none)",
+    ),
+    "kind": (
+        object,
+        "",
+        "bifurcation | threshold (the axisymmetric state is lost first) |"
+        " surface (the short-wave limit m, n -> inf at a face comes first)"
+        " | none (no instability in the range)",
+    ),
     "error_estimate": ("f8", math.nan, "|value - value at 100 times looser accuracy|"),
-    "surface_instability": ("?", False, "the critical point is the short-wave (surface)"
-                                        " limit m, n -> infinity at a face"),
+    "surface_instability": (
+        "?",
+        False,
+        "the critical point is the short-wave (surface) limit m, n -> infinity at a face",
+    ),
     "status": (object, "pending", "ok | failed (see message) | error (a bug) | pending"),
     "message": (object, "", "why the point failed, or why no instability was found"),
     "seconds": ("f8", math.nan, "wall time of the point's mode scan"),
@@ -66,8 +84,12 @@ RUNNER_VARIABLES = {
     "runner_up_m": ("i4", -1, "m of the next modes"),
     "runner_up_n": ("i4", -1, "n of the next modes"),
 }
-MARK = ("run", "i2", 0, "completion mark: number of the run that computed the point"
-                        " (0: not yet computed)")
+MARK = (
+    "run",
+    "i2",
+    0,
+    "completion mark: number of the run that computed the point (0: not yet computed)",
+)
 
 
 def block_shape(shape: tuple[int, ...], points: int) -> tuple[int, ...]:
@@ -84,8 +106,10 @@ def block_shape(shape: tuple[int, ...], points: int) -> tuple[int, ...]:
 def grid_blocks(shape: tuple[int, ...], block: tuple[int, ...]) -> list[tuple[slice, ...]]:
     """The blocks tiling the grid, in C order of the block grid (the chunk numbers)."""
     counts = [math.ceil(s / b) for s, b in zip(shape, block)]
-    return [tuple(slice(i * b, min((i + 1) * b, s)) for i, b, s in zip(idx, block, shape))
-            for idx in np.ndindex(*counts)]
+    return [
+        tuple(slice(i * b, min((i + 1) * b, s)) for i, b, s in zip(idx, block, shape))
+        for idx in np.ndindex(*counts)
+    ]
 
 
 class SweepStore:
@@ -111,8 +135,9 @@ class SweepStore:
             try:
                 fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
             except BlockingIOError:
-                raise SweepError(f"{self.path} is being written by another running sweep;"
-                                 " wait for it to finish") from None
+                raise SweepError(
+                    f"{self.path} is being written by another running sweep; wait for it to finish"
+                ) from None
             yield
         finally:
             os.close(fd)
@@ -132,8 +157,9 @@ class SweepStore:
         """Write a task's results, then its completion mark."""
         where = self.blocks[result.index]
         if tuple((s.start, s.stop) for s in where) != tuple(result.block):
-            raise SweepError(f"chunk {result.index} came back for block {result.block},"
-                             f" not {where}")
+            raise SweepError(
+                f"chunk {result.index} came back for block {result.block}, not {where}"
+            )
         shape = tuple(s.stop - s.start for s in where)
         pts = result.points
         for name, (dtype, _, _) in POINT_VARIABLES.items():
@@ -148,7 +174,7 @@ class SweepStore:
                 col = {"runner_up_m": 0, "runner_up_n": 1, "runner_up_value": 2}[name]
                 values = np.full((len(pts), self.ranks), fill, dtype=dtype)
                 for i, p in enumerate(pts):
-                    for r, mode in enumerate(p.runners_up[:self.ranks]):
+                    for r, mode in enumerate(p.runners_up[: self.ranks]):
                         values[i, r] = mode[col]
                 self.group[name][where] = values.reshape(shape + (self.ranks,))
         self.group[MARK[0]][where] = np.full(shape, run, dtype=MARK[1])
@@ -159,9 +185,18 @@ class SweepStore:
         status = np.asarray(self.group["status"][...], dtype=object)
         kind = np.asarray(self.group["kind"][...], dtype=object)
         outcome = np.where(status == Status.OK, kind, status)
-        return {k: int((outcome == k).sum()) for k in
-                (Kind.BIFURCATION, Kind.SURFACE, Kind.THRESHOLD, Kind.NONE, Status.FAILED,
-                 Status.ERROR, "pending")}
+        return {
+            k: int((outcome == k).sum())
+            for k in (
+                Kind.BIFURCATION,
+                Kind.SURFACE,
+                Kind.THRESHOLD,
+                Kind.NONE,
+                Status.FAILED,
+                Status.ERROR,
+                "pending",
+            )
+        }
 
 
 def open_store(out: str | Path, config: SweepConfig, *, source_text: str = "") -> SweepStore:
@@ -191,8 +226,10 @@ def read_config(path: str | Path) -> SweepConfig:
     except (zarr.errors.BaseZarrError, ValueError, OSError):
         text = None
     if text is None:
-        raise SweepError(f"{path} is not an electrogrowth sweep store"
-                         f"{' (it exists: choose another --out)' if path.exists() else ''}")
+        raise SweepError(
+            f"{path} is not an electrogrowth sweep store"
+            f"{' (it exists: choose another --out)' if path.exists() else ''}"
+        )
     try:
         return SweepConfig.from_dict(json.loads(text))
     except (KeyError, TypeError, ValueError) as exc:
@@ -204,9 +241,11 @@ def check_same_sweep(out: Path, config: SweepConfig) -> None:
     stored = read_config(out)
     if stored.to_json() != config.to_json():
         diff = ", ".join(differences(stored, config))
-        raise SweepError(f"{out} holds a different sweep (it differs in {diff}); resuming it"
-                         " with this file would mix two sweeps: use another --out, or delete"
-                         f" {out} to start over")
+        raise SweepError(
+            f"{out} holds a different sweep (it differs in {diff}); resuming it"
+            " with this file would mix two sweeps: use another --out, or delete"
+            f" {out} to start over"
+        )
 
 
 def open_results(path: str | Path) -> xr.Dataset:
@@ -231,44 +270,61 @@ def _create(out: Path, config: SweepConfig, source_text: str) -> None:
     what = LABELS[config.solve_for][0]
     arrays = [(name, dims, block, spec) for name, spec in POINT_VARIABLES.items()]
     if ranks:
-        arrays += [(name, dims + ("rank",), block + (ranks,), spec)
-                   for name, spec in RUNNER_VARIABLES.items()]
+        arrays += [
+            (name, dims + ("rank",), block + (ranks,), spec)
+            for name, spec in RUNNER_VARIABLES.items()
+        ]
     arrays.append((MARK[0], dims, block, MARK[1:]))
     try:
-        _coordinates(config, source_text).to_zarr(str(tmp), mode="w-", zarr_format=3,
-                                                  consolidated=False)
+        _coordinates(config, source_text).to_zarr(
+            str(tmp), mode="w-", zarr_format=3, consolidated=False
+        )
         group = zarr.open_group(str(tmp), mode="r+")
         for name, adims, chunks, (dtype, fill, text) in arrays:
             attrs = {"description": text, **({"coordinates": scalars} if scalars else {})}
             if name == "critical_value":
                 attrs.update(long_name=f"critical {what}", symbol=LABELS[config.solve_for][1])
-            group.create_array(name, shape=tuple(shape) + chunks[len(dims):],
-                               chunks=chunks, dtype=str if dtype is object else dtype,
-                               fill_value=fill, dimension_names=adims, attributes=attrs)
+            group.create_array(
+                name,
+                shape=tuple(shape) + chunks[len(dims) :],
+                chunks=chunks,
+                dtype=str if dtype is object else dtype,
+                fill_value=fill,
+                dimension_names=adims,
+                attributes=attrs,
+            )
         with warnings.catch_warnings():  # "consolidated metadata is not in the v3 spec"
             warnings.simplefilter("ignore", category=UserWarning)
             zarr.consolidate_metadata(str(tmp))
         os.rename(tmp, out)
     except BaseException:
         import shutil
+
         shutil.rmtree(tmp, ignore_errors=True)
         raise
 
 
 def _coordinates(config: SweepConfig, source_text: str) -> xr.Dataset:
     """The grid values, the fixed parameters (scalar coordinates) and the attributes."""
-    coords = {name: (name, np.array(values), _coord_attrs(name))
-              for name, values in config.grid}
+    coords = {name: (name, np.array(values), _coord_attrs(name)) for name, values in config.grid}
     coords.update({name: ((), value, _coord_attrs(name)) for name, value in config.fixed})
     if config.scan.top > 1:
-        coords["rank"] = ("rank", np.arange(1, config.scan.top), {
-            "description": "1 = the mode that bifurcates next after the critical one"})
+        coords["rank"] = (
+            "rank",
+            np.arange(1, config.scan.top),
+            {"description": "1 = the mode that bifurcates next after the critical one"},
+        )
     what = LABELS[config.solve_for][0]
     material = config.build_material().name
-    attrs = {"title": f"electrogrowth sweep: critical {what} ({material})",
-             "solve_for": config.solve_for, "side": config.side or "",
-             "material": material, "electrogrowth_version": version("electrogrowth"),
-             "sweep_config": config.to_json(), "sweep_file": source_text}
+    attrs = {
+        "title": f"electrogrowth sweep: critical {what} ({material})",
+        "solve_for": config.solve_for,
+        "side": config.side or "",
+        "material": material,
+        "electrogrowth_version": version("electrogrowth"),
+        "sweep_config": config.to_json(),
+        "sweep_file": source_text,
+    }
     return xr.Dataset(coords=coords, attrs=attrs)
 
 

@@ -76,21 +76,32 @@ def compute_point(params: TubeParameters, spec: ScanSpec) -> PointResult:
     start = time.perf_counter()
     took = lambda: time.perf_counter() - start  # noqa: E731
     try:
-        res = scan_modes(params, spec.solve_for, side=spec.side, options=spec.options,
-                         rtol=spec.rtol)
+        res = scan_modes(
+            params, spec.solve_for, side=spec.side, options=spec.options, rtol=spec.rtol
+        )
     except NoBifurcationFound as exc:
         return PointResult(Status.OK, kind=Kind.NONE, message=str(exc), seconds=took())
     except Exception as exc:  # noqa: BLE001 - failures are data
         status = status_of(exc)
         prefix = "" if status is Status.FAILED else "internal error: "
-        return PointResult(status, message=f"{prefix}{type(exc).__name__}: {exc}",
-                           seconds=took(), remedy=remedy(exc))
+        return PointResult(
+            status,
+            message=f"{prefix}{type(exc).__name__}: {exc}",
+            seconds=took(),
+            remedy=remedy(exc),
+        )
     c = res.critical
     return PointResult(
-        Status.OK, value=float(c.value), m=int(c.m), n=int(c.n), kind=c.kind,
-        error_estimate=float(c.error_estimate), surface_instability=res.surface_instability,
+        Status.OK,
+        value=float(c.value),
+        m=int(c.m),
+        n=int(c.n),
+        kind=c.kind,
+        error_estimate=float(c.error_estimate),
+        surface_instability=res.surface_instability,
         runners_up=tuple((int(r.m), int(r.n), float(r.value)) for r in res.runners_up),
-        seconds=took())
+        seconds=took(),
+    )
 
 
 @dataclasses.dataclass(frozen=True)
@@ -120,9 +131,11 @@ def compute_chunk(task: ChunkTask, threads: int | None = 1) -> ChunkResult:
     each: threads of the batch kernel inside each worker would only contend for the cores.
     """
     if threads is None:
-        return ChunkResult(task.index, task.block,
-                           tuple(compute_point(p, task.spec) for p in task.params))
+        return ChunkResult(
+            task.index, task.block, tuple(compute_point(p, task.spec) for p in task.params)
+        )
     import numba
+
     before = numba.get_num_threads()
     numba.set_num_threads(max(1, min(threads, numba.config.NUMBA_NUM_THREADS)))
     try:
