@@ -77,6 +77,7 @@ POINT_VARIABLES = {
     ),
     "status": (object, "pending", "ok | failed (see message) | error (a bug) | pending"),
     "message": (object, "", "why the point failed, or why no instability was found"),
+    "remedy": (object, "", "what to try where the point failed"),
     "seconds": ("f8", math.nan, "wall time of the point's mode scan"),
 }
 RUNNER_VARIABLES = {
