@@ -18,6 +18,7 @@ class Kind(enum.StrEnum):
     BIFURCATION = "bifurcation"  # wrinkling in a mode (m, n)
     THRESHOLD = "threshold"  # the axisymmetric base state is lost first
     SURFACE = "surface"  # a short-wave (surface) instability: the limit m, k -> infinity
+    ELLIPTICITY = "ellipticity"  # strong ellipticity is lost first (no half-space problem)
     NONE = "none"  # no instability in the searched range
     SWITCH = "switch"  # a row of a curve: the located change of the critical mode
 

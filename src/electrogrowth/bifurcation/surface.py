@@ -43,14 +43,14 @@ from scipy.optimize import brentq, minimize_scalar
 from ..basestate.tube import solve_base_state, voltage_threshold
 from ..errors import BaseStateError, ConvergenceError, ParameterError
 from ..incremental.halfspace import FACES, FaceProblem
-from ..model.params import CONTROLS, TubeParameters
+from ..model.params import SIDES, TubeParameters, check_control
+from ..outcomes import Kind
+from .march import control_path
 
-SIDES = ("compression", "extension")
 FIRST_STEP, MIN_STEP, MAX_STEP = 0.004, 1e-6, 0.05
 MAX_LAMBDA_JUMP = 0.05  # shrink a step that changes lambda_i by more than this
 LAMBDA_CAP = 50.0  # stop approaching a voltage threshold once lambda_i grew this much
 HALF_PI = 0.5 * math.pi
-KINDS = ("surface", "threshold", "ellipticity", "none")
 ENDPOINT_SLACK = 1e-14  # f (|f| <= 1) equal to rounding: keep the exact endpoint psi
 MARCH_REFINE = 0.05  # march: refine the psi minimum only where the grid minimum is below
 FACE_TIE = 1e-13  # faces whose targets agree this closely (homogeneous tube): the first
@@ -122,10 +122,7 @@ class _Sample:
 def _check(params, solve_for, side, faces, rtol) -> tuple[str | None, tuple[str, ...]]:
     if not isinstance(params, TubeParameters):
         raise ParameterError(f"params = {params!r} is not a TubeParameters")
-    if solve_for not in CONTROLS:
-        raise ParameterError(
-            f"solve_for = {solve_for!r} is unknown; choose one of {', '.join(CONTROLS)}"
-        )
+    check_control(solve_for)
     if side is not None and side not in SIDES:
         raise ParameterError(f"side = {side!r} is unknown; choose compression or extension")
     # as critical_value: the side matters for the stretch only (ignored otherwise)
@@ -140,19 +137,6 @@ def _check(params, solve_for, side, faces, rtol) -> tuple[str | None, tuple[str,
     if isinstance(rtol, bool) or not isinstance(rtol, (int, float)) or not 0 < rtol <= 1e-3:
         raise ParameterError(f"rtol = {rtol!r} is out of range; valid range: 0 < rtol <= 1e-3")
     return side, faces
-
-
-def _control_path(params: TubeParameters, solve_for: str, side: str | None):
-    """(start, end, scale) of the march, as for the finite modes (bifurcation.march)."""
-    if solve_for == "growth":
-        return 1.0, 6.0, 1.0
-    if solve_for == "stretch":
-        g = params.growth  # lambda_z = g: no elastic axial strain
-        return (g, 8.0 * g, g) if side == "extension" else (g, 0.05 * g, g)
-    thr = voltage_threshold(params)[0]
-    if not math.isfinite(thr):  # stiffening energies may have no threshold at all
-        return 0.0, 1e3, 1.0
-    return 0.0, thr * (1 - 1e-12), thr
 
 
 # -- the signed target h(x) -----------------------------------------------------------------
@@ -293,7 +277,7 @@ def _locate(params, solve_for, side, h: Callable, rtol: float, h_march=None):
     fine_h, h = h, (h_march or h)
     at = lambda x: dataclasses.replace(params, **{solve_for: float(x)})  # noqa: E731
     state_at = lambda x: solve_base_state(at(x), rtol=rtol)  # noqa: E731
-    x0, end, scale = _control_path(params, solve_for, side)
+    x0, end, scale = control_path(params, solve_for, side)
     sense = 1.0 if end > x0 else -1.0
     try:
         state = state_at(x0)
@@ -355,10 +339,10 @@ def _locate(params, solve_for, side, h: Callable, rtol: float, h_march=None):
                 else:
                     lo = mid
             if fine_h(state_at(lo)).value <= 0:  # a surface instability just before
-                return "surface", None, _bracket(xs, lo, lambda y: fine_h(state_at(y)).value)
-            return "ellipticity", 0.5 * (lo + hi), None
+                return Kind.SURFACE, None, _bracket(xs, lo, lambda y: fine_h(state_at(y)).value)
+            return Kind.ELLIPTICITY, 0.5 * (lo + hi), None
         if s.value <= 0:
-            return "surface", None, _bracket(xs, x, lambda y: fine_h(state_at(y)).value)
+            return Kind.SURFACE, None, _bracket(xs, x, lambda y: fine_h(state_at(y)).value)
         if len(hs) >= 2 and hs[-1] < 0.25 * min(hs[-2], s.value):  # a dip between samples?
             lo, hi = sorted((xs[-2], x))
             dip = minimize_scalar(
@@ -369,7 +353,7 @@ def _locate(params, solve_for, side, h: Callable, rtol: float, h_march=None):
             )
             if dip.fun <= 0:
                 return (
-                    "surface",
+                    Kind.SURFACE,
                     None,
                     _bracket(xs[:-1], float(dip.x), lambda y: fine_h(state_at(y)).value),
                 )
@@ -387,8 +371,8 @@ def _locate(params, solve_for, side, h: Callable, rtol: float, h_march=None):
         thr = voltage_threshold(params)[0]
         threshold = thr if math.isfinite(thr) else None
     if threshold is not None:
-        return "threshold", threshold, None
-    return "none", math.nan, None
+        return Kind.THRESHOLD, threshold, None
+    return Kind.NONE, math.nan, None
 
 
 def _bracket(xs, x_bad, value_of) -> tuple[float, float]:
@@ -461,7 +445,7 @@ def _solve(params, solve_for, side, faces, rtol, direction) -> SurfaceLimit:
     hc = _sampler(faces, signs, coarse, direction)
     at = lambda x: dataclasses.replace(params, **{solve_for: float(x)})  # noqa: E731
     kind, value, bracket = _locate(params, solve_for, side, h, rtol, hm)
-    if kind in ("threshold", "none"):
+    if kind in (Kind.THRESHOLD, Kind.NONE):
         return SurfaceLimit(
             solve_for,
             value,
@@ -470,10 +454,10 @@ def _solve(params, solve_for, side, faces, rtol, direction) -> SurfaceLimit:
             None,
             kind,
             0.0,
-            at(value) if kind == "threshold" else params,
+            at(value) if kind == Kind.THRESHOLD else params,
             side,
         )
-    if kind == "ellipticity":
+    if kind == Kind.ELLIPTICITY:
         s = h(solve_base_state(at(value), rtol=rtol))
         return SurfaceLimit(
             solve_for, value, s.face, s.psi, _ratio(s.psi), kind, 0.0, at(value), side
@@ -484,7 +468,7 @@ def _solve(params, solve_for, side, faces, rtol, direction) -> SurfaceLimit:
     err = _second_resolution(coarse_of, value)
     s = h(solve_base_state(at(value), rtol=rtol))
     return SurfaceLimit(
-        solve_for, value, s.face, s.psi, _ratio(s.psi), "surface", err, at(value), side
+        solve_for, value, s.face, s.psi, _ratio(s.psi), Kind.SURFACE, err, at(value), side
     )
 
 
