@@ -389,11 +389,11 @@ def test_non_ideal_asymptote_and_unbounded_cases():
 
 def test_gauss_quadrature_converges_geometrically():
     lam = np.array([1.3])
-    exact = tube.Tube(gent(97.2), 2.0, 1.1, 0.9, 96).hoop(lam, 0.4)[0][0]
+    exact = tube.UniformWall(gent(97.2), 2.0, 1.1, 0.9, 96).hoop(lam, 0.4)[0][0]
     ns = np.arange(3, 13)
     err = np.array(
         [
-            abs(tube.Tube(gent(97.2), 2.0, 1.1, 0.9, int(n)).hoop(lam, 0.4)[0][0] - exact)
+            abs(tube.UniformWall(gent(97.2), 2.0, 1.1, 0.9, int(n)).hoop(lam, 0.4)[0][0] - exact)
             for n in ns
         ]
     )
@@ -525,7 +525,7 @@ def test_mechanical_state_is_the_homogeneous_one_for_every_energy(material):
     """lambda_i0 = sqrt(g^3 / lambda_z): l1 = l2 throughout, so tau_1 = tau_2 (docs Sec. 3), and
     M < 0 below, > 0 above (Baker-Ericksen). The root found here by brentq on the quadrature."""
     g, lz = 1.15, 0.85
-    wall = tube.Tube(material, 2.0, g, lz, 64)
+    wall = tube.UniformWall(material, 2.0, g, lz, 64)
 
     def m(lam):
         return float(wall.hoop(np.array([lam]), 0.0)[0][0])

@@ -15,6 +15,12 @@ command line in :mod:`electrogrowth.cli`; docs/architecture.md maps every module
 
 __version__ = "0.1.0"
 
+from .basestate.layered import (
+    LayeredState,
+    layered_threshold,
+    pressure_response,
+    voltage_response,
+)
 from .basestate.tube import BaseState, solve_base_state, voltage_curve, voltage_threshold
 from .bifurcation.critical import CriticalPoint, critical_value
 from .bifurcation.curves import Curve, critical_curve
@@ -33,6 +39,7 @@ from .errors import (
 )
 from .incremental.accuracy import Accuracy
 from .incremental.targets import Method
+from .model.layers import Layer, LinearGrowth, Tube
 from .model.materials import (
     I1,
     I2,
@@ -46,6 +53,7 @@ from .model.materials import (
     neo_hookean,
 )
 from .model.params import TubeParameters
+from .model.tube_file import load_tube
 from .outcomes import Kind, Status
 from .shapes.mode_shape import ModeShape, mode_shape
 from .sweep.file import load_config
@@ -54,6 +62,14 @@ from .sweep.run import compute_sweep
 __all__ = [
     # model
     "TubeParameters",
+    "Layer",
+    "LinearGrowth",
+    "Tube",
+    "load_tube",
+    "LayeredState",
+    "layered_threshold",
+    "pressure_response",
+    "voltage_response",
     "Material",
     "gent",
     "material_by_name",

@@ -28,11 +28,13 @@ import numpy as np
 from numpy.polynomial import chebyshev as cheb
 
 from ..errors import BaseStateError, ConvergenceError, ParameterError
+from ..model.layers import Tube as LayeredTube
 from ..model.materials import neo_hookean_moduli
 from ..model.params import TubeParameters
+from .layered import solve_layered_state
 from .voltage import (
     GAUSS_ORDERS,
-    Tube,
+    UniformWall,
     cell_root,
     energy_kind,
     nh_asymptote,
@@ -93,7 +95,9 @@ def voltage_curve(params: TubeParameters, lambda_i) -> np.ndarray:
         )
     if info.nodes == 0:  # neo-Hookean closed form (NH-6)
         return np.maximum(nh_voltage(params.outer_radius, params.growth, params.stretch, lam), 0.0)
-    tube = Tube(params.material, params.outer_radius, params.growth, params.stretch, info.nodes)
+    tube = UniformWall(
+        params.material, params.outer_radius, params.growth, params.stretch, info.nodes
+    )
     v = tube.voltage(lam.ravel())
     if not np.all(np.isfinite(v)):
         raise BaseStateError(
@@ -128,6 +132,8 @@ def solve_base_state(params: TubeParameters, *, rtol: float = 1e-12) -> BaseStat
     >>> round(state.lambda_i, 6), state.threshold_kind
     (1.151387, 'asymptote')
     """
+    if isinstance(params, LayeredTube):  # a layered tube (model.layers): basestate/layered.py
+        return solve_layered_state(params, rtol=rtol)
     info = threshold_info(params, rtol)
     target = params.voltage
     if not target < info.value:
@@ -143,9 +149,9 @@ def solve_base_state(params: TubeParameters, *, rtol: float = 1e-12) -> BaseStat
                 f"Vbar = {target:.12g} is within rounding of the threshold"
                 f" {info.value:.12g}; no base state resolved"
             )
-        tube = Tube(params.material, Ro, g, lz)
+        tube = UniformWall(params.material, Ro, g, lz)
         return BaseState._neo_hookean(params, tube, nh_lambda_i(Ro, g, lz, ratio), info)
-    tube = Tube(params.material, Ro, g, lz, info.nodes)
+    tube = UniformWall(params.material, Ro, g, lz, info.nodes)
     if target == 0:
         return BaseState._build(params, tube, info.lambda_i0, info, rtol)
     grid, v = info.grid, info.values
@@ -194,7 +200,7 @@ class BaseState:
     threshold_kind: str
     axial_force: float
     quadrature_error: float = 0.0
-    _tube: Tube = dataclasses.field(default=None, repr=False, compare=False)
+    _tube: UniformWall = dataclasses.field(default=None, repr=False, compare=False)
     # sigma_rr(R) on the generic route; None: the neo-Hookean closed form (NH-1)
     _sigma: cheb.Chebyshev | None = dataclasses.field(default=None, repr=False, compare=False)
 

@@ -61,7 +61,7 @@ def _energy(material: Material):
 
 
 @dataclasses.dataclass(frozen=True)
-class Tube:
+class UniformWall:
     """Geometry and quadrature of one (material, Rbar_o, g, lambda_z); vectorised in lambda_i."""
 
     material: Material
@@ -194,7 +194,7 @@ def _mechanical(material, outer_radius, growth, stretch, rtol) -> tuple[float, i
     the homogeneous state: there l1 = l2 at every R, so tau_1 = tau_2 at D = 0 for any isotropic
     energy and (*) holds pointwise; under Baker-Ericksen ((tau_2 - tau_1)(l2 - l1) > 0) M has
     the sign of lambda_i - lambda_i0, so no other state has Vbar = 0 (docs Sec. 3)."""
-    tube = Tube(material, outer_radius, growth, stretch, GAUSS_ORDERS[0])
+    tube = UniformWall(material, outer_radius, growth, stretch, GAUSS_ORDERS[0])
     lam0 = math.sqrt(growth**3 / stretch)
     if not tube.in_domain(np.array([lam0]))[0]:
         raise BaseStateError(
@@ -205,7 +205,7 @@ def _mechanical(material, outer_radius, growth, stretch, rtol) -> tuple[float, i
     return lam0, _nodes(tube, lam0 * np.array([1.0, 1.5, 3.0]), rtol)
 
 
-def _nodes(tube: Tube, lam: np.ndarray, rtol: float) -> int:
+def _nodes(tube: UniformWall, lam: np.ndarray, rtol: float) -> int:
     """Fewest nodes whose M at lam agrees with the next rule to 1e-2 rtol of the stress scale
     (four successive rules per stress call)."""
     lam = lam[tube.in_domain(lam)]
@@ -254,7 +254,7 @@ def _threshold(material, outer_radius, growth, stretch, rtol) -> _Threshold:
             np.array([0.0]),
         )
     lam0, nodes = _mechanical(material, outer_radius, growth, stretch, rtol)
-    tube = Tube(material, outer_radius, growth, stretch, nodes)
+    tube = UniformWall(material, outer_radius, growth, stretch, nodes)
     lam = lam0 * _SCAN_RATIO ** np.arange(0, math.ceil(math.log(_SCAN_SPAN, _SCAN_RATIO)) + 1)
     v = np.concatenate([[0.0], tube.voltage(lam[1:])])
     bad = np.flatnonzero(~np.isfinite(v))
@@ -286,7 +286,7 @@ def _threshold(material, outer_radius, growth, stretch, rtol) -> _Threshold:
     return _Threshold(value=float(t[-1]), kind="asymptote", lambda_i=math.inf, **out)
 
 
-def _limit_point(tube: Tube, lam0: float, lam: np.ndarray, v: np.ndarray) -> _Threshold:
+def _limit_point(tube: UniformWall, lam0: float, lam: np.ndarray, v: np.ndarray) -> _Threshold:
     """Maximise Vbar on [lam[-3], lam[-1]]: root of the derivative of a degree-24 Chebyshev
     interpolant of Vbar^2 (analytic there), then Vbar evaluated exactly at that root."""
 

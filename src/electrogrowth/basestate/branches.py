@@ -1,0 +1,427 @@
+"""The loading branches of a layered tube from its unloaded state, and where each is lost
+(docs/derivation-layered.md; one state of the wall, (*) and the integrals: :mod:`.plies`).
+
+For each inner radius r_i (and lambda_z) one of (*) or the voltage fixes the charge c, the other
+gives the load: on the *voltage branch* (P_i - P_o fixed) the voltage V(r_i), on the *pressure
+branch* (V fixed) the pressure P_i(r_i). Under force control lambda_z(r_i) is solved at each r_i
+from the axial balance. A state is reached from the unloaded one (V = 0, P_i = P_o) along the
+pressure branch, then the voltage branch; each is followed in r_i from its start, and its
+threshold is where it is lost: a limit point (first maximum of the load), an asymptote
+(Richardson extrapolation of the load as lambda_i -> inf), locking (the energy ends) or none.
+A load beyond the branch's threshold raises BaseStateError.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import math
+
+import numpy as np
+from numpy.polynomial import chebyshev as cheb
+from scipy.optimize import brentq
+
+from ..errors import BaseStateError, ConvergenceError
+from ..model.layers import Tube
+from .plies import Ply, Wall, choose_nodes, illinois, numeric_energy, start_guess
+
+_RATIO, _SPAN = 1.08, 1e3  # branch scans: r_start 1.08^k up to 1e3 r_start
+_EPS = np.finfo(float).eps
+
+
+# -- the two branches -------------------------------------------------------------------------
+
+
+@dataclasses.dataclass(frozen=True)
+class Branch:
+    """States parametrised by r_i: on the voltage branch (P_i - P_o = dp fixed) (*) fixes c and
+    the load is Vbar; on the pressure branch (Vbar = vbar fixed) the voltage fixes c and the load
+    is P_i = P_o + T. The outer pressure is the tube's throughout."""
+
+    wall: Wall
+    load: str  # "voltage" or "pressure"
+    dp: float = 0.0
+    vbar: float = 0.0
+
+    def point(self, r_i, lz) -> dict:
+        wall, tube = self.wall, self.wall.tube
+        r_i, lz = np.broadcast_arrays(np.asarray(r_i, float), np.asarray(lz, float))
+        thick = tube.outer_radius - 1.0
+        if wall.ideal:
+            M, scale, _, Nm = wall.integrals(r_i, lz, 0.0)
+            Q, Lam = wall.electric(r_i, lz)
+            if self.load == "voltage":
+                q = (M - self.dp) / Q  # signed c^2: analytic through the branch's start
+                c = np.sign(q) * np.sqrt(abs(q))
+                dp = np.full_like(M, self.dp)
+            else:
+                c = np.full_like(M, self.vbar * thick) / Lam
+                q, dp = c * c, M - c * c * Q
+            V, N = c * Lam, Nm - math.pi * q * Lam
+        else:
+            c = self._charge(r_i, lz)
+            T, scale, V, N = wall.integrals(r_i, lz, c)
+            dp = T if self.load == "pressure" else np.where(np.isfinite(T), self.dp, np.nan)
+        P_o = tube.outer_pressure
+        P_i = P_o + dp
+        r_o2 = r_i * r_i + 2.0 * wall.faces_G[-1] / lz
+        ends = math.pi * (P_i * r_i * r_i - P_o * r_o2)  # pressure load on closed ends
+        N = N + ends
+        applied = N - ends if tube.closed_ends else N
+        residual = applied - tube.axial_force if tube.control == "force" else applied * 0.0
+        return dict(
+            r_i=r_i,
+            stretch=lz,
+            charge=c,
+            voltage=V / thick,
+            dp=dp,
+            P_i=P_i,
+            axial_force=N,
+            end_force=applied,
+            residual=residual,
+            r_o=np.sqrt(r_o2),
+        )
+
+    def _charge(self, r_i, lz):
+        """c for a general energy: (*) = dp in q = c^2 (0 where the unloaded T < dp), or
+        V(c) = Vbar (R_N - 1) on the pressure branch."""
+        wall, thick = self.wall, self.wall.tube.outer_radius - 1.0
+        M, scale, _, _ = wall.integrals(r_i, lz, 0.0)
+        Q, Lam = wall.electric(r_i, lz)
+        if self.load == "voltage":
+            f0 = M - self.dp
+            up = f0 > 0
+            q = np.zeros_like(M)
+            if up.any():
+                ri, l, f0u = r_i[up], lz[up], f0[up]
+
+                def f(q):
+                    T, s, _, _ = wall.integrals(ri, l, np.sqrt(q))
+                    return T - self.dp, s
+
+                hi = 2.0 * f0u / Q[up]
+                fhi = f(hi)[0]
+                for _ in range(100):
+                    more = fhi > 0
+                    if not more.any():
+                        break
+                    hi = np.where(more, 2.0 * hi, hi)
+                    fhi = f(hi)[0]
+                q[up] = illinois(f, np.zeros_like(hi), hi, f0u, fhi)
+            return np.where(np.isfinite(M), np.sqrt(q), np.nan)
+        target = self.vbar * thick
+        if target == 0:
+            return np.where(np.isfinite(M), 0.0, np.nan)
+
+        def g(c):
+            return wall.integrals(r_i, lz, c)[2] - target, target
+
+        hi = 1.5 * target / Lam
+        ghi = g(hi)[0]
+        for _ in range(100):
+            more = ghi < 0
+            if not more.any():
+                break
+            hi = np.where(more, 2.0 * hi, hi)
+            ghi = g(hi)[0]
+        return illinois(g, np.zeros_like(hi), hi, np.full_like(hi, -target), ghi)
+
+    def value(self, pt) -> np.ndarray:
+        """The load in analytic form: sign(Vbar) Vbar^2 (Vbar ~ sqrt near the start) or P_i."""
+        return np.sign(pt["voltage"]) * pt["voltage"] ** 2 if self.load == "voltage" else pt["P_i"]
+
+    def at(self, r_i, lz_guess) -> dict:
+        """Points at the r_i (1-d, in order); under force control lambda_z is solved at each
+        from the guess (a number: continuation from it; or an array, one guess per r_i)."""
+        r_i = np.atleast_1d(np.asarray(r_i, float))
+        tube = self.wall.tube
+        if tube.control == "stretch":
+            return self.point(r_i, np.full_like(r_i, tube.stretch))
+        guesses = np.broadcast_to(np.asarray(lz_guess, float), r_i.shape)
+        lz, follow = np.full_like(r_i, np.nan), np.ndim(lz_guess) == 0
+        for j, x in enumerate(r_i):
+            start = (
+                (lz[j - 1] if j and np.isfinite(lz[j - 1]) else guesses[j])
+                if follow
+                else guesses[j]
+            )
+            lz[j] = self._stretch(x, start)
+            if not np.isfinite(lz[j]):
+                break
+        return self.point(r_i, np.where(np.isfinite(lz), lz, 1.0)) | _nan_where(~np.isfinite(lz))
+
+    def _stretch(self, x: float, guess: float) -> float:
+        """lambda_z balancing the axial force at r_i = x: bracketed from the guess outward in
+        both directions (steps growing 1.5-fold), then brentq; NaN if no bracket."""
+
+        def h(lz):
+            return float(self.point(np.array([x]), np.array([lz]))["residual"][0])
+
+        h0 = h(guess)
+        if h0 == 0 or not np.isfinite(h0):
+            return guess if h0 == 0 else math.nan
+        ends = {1: (guess, h0), -1: (guess, h0)}
+        step = 0.02
+        for _ in range(40):
+            for sense in (1, -1):
+                if ends[sense] is None:
+                    continue
+                last, hl = ends[sense]
+                nxt = last * math.exp(sense * step)
+                if not 1e-3 * guess < nxt < 1e3 * guess:
+                    ends[sense] = None
+                    continue
+                hn = h(nxt)
+                if not np.isfinite(hn):
+                    ends[sense] = None
+                elif np.sign(hn) != np.sign(hl):
+                    a, b = sorted((last, nxt))
+                    return brentq(h, a, b, xtol=1e-16 * a, rtol=4 * _EPS, maxiter=200)
+                else:
+                    ends[sense] = (nxt, hn)
+            if ends[1] is None and ends[-1] is None:
+                break
+            step *= 1.5
+        return math.nan
+
+
+def _nan_where(mask) -> dict:
+    return {} if not mask.any() else {"_nan": mask}
+
+
+def clean(pt: dict) -> dict:
+    """Apply a point's NaN mask (points where no lambda_z balances the axial force)."""
+    mask = pt.pop("_nan", None)
+    if mask is not None:
+        for key, v in pt.items():
+            pt[key] = np.where(mask, np.nan, v)
+    return pt
+
+
+# -- following a branch, its threshold ----------------------------------------------------------
+
+
+@dataclasses.dataclass(frozen=True)
+class Threshold:
+    """Where the axisymmetric branch from the unloaded state is lost.
+
+    control: "voltage" (value in Vbar) or "pressure" (value = P_i); kind: "limit point" (first
+    maximum of the load along the branch, a snap-through), "asymptote" (the load tends to
+    ``value`` as lambda_i -> inf), "locking" (the energy ends at lambda_i, the load unbounded
+    before it, value = inf) or "none" (the load rises without bound, value = inf); lambda_i and
+    stretch (lambda_z) at the threshold (inf / the last scanned lambda_z for an asymptote).
+    """
+
+    control: str
+    value: float
+    kind: str
+    lambda_i: float
+    stretch: float
+    error: float = 0.0
+    # the scanned branch from its start (r_i, lambda_z, analytic load): brackets for solves
+    grid: tuple = dataclasses.field(default=(), repr=False, compare=False)
+
+
+def _walk(branch: Branch, x0: float, lz0: float, *, sign: int = 1, target=None):
+    """Follow the branch from r_i = x0 on x0 1.08^(sign k) up to a factor 1e3; returns arrays
+    (r_i, lambda_z, analytic load) from x0 and why it stopped: "target" (sign (load - target)
+    >= 0), "peak" (the load turned back), "lock" (an energy ended: last entry NaN) or "end"."""
+    first = clean(branch.at([x0], lz0))
+    xs, lzs, loads = [x0], [lz0], [float(branch.value(first)[0])]
+    kmax = math.ceil(math.log(_SPAN, _RATIO))
+    for k in range(1, kmax + 1, 8):
+        x = x0 * _RATIO ** (sign * np.arange(k, min(k + 8, kmax + 1)))
+        pt = clean(branch.at(x, lzs[-1]))
+        for xj, lj, vj in zip(x, pt["stretch"], branch.value(pt)):
+            xs.append(float(xj)), lzs.append(float(lj)), loads.append(float(vj))
+            if not np.isfinite(vj):
+                if all(numeric_energy(p.layer.material) is None for p in branch.wall.plies):
+                    raise ConvergenceError(
+                        f"no lambda_z balances the axial force at lambda_i = {xj:.12g}"
+                    )
+                return np.array(xs), np.array(lzs), np.array(loads), "lock"
+            if target is not None and sign * (vj - target) >= 0:
+                return np.array(xs), np.array(lzs), np.array(loads), "target"
+            if sign * (vj - loads[-2]) < 0:
+                return np.array(xs), np.array(lzs), np.array(loads), "peak"
+    return np.array(xs), np.array(lzs), np.array(loads), "end"
+
+
+def _guess(xs, lzs):
+    """lambda_z guesses at new r_i by interpolation of a scanned branch (log-linear)."""
+    good = np.isfinite(lzs)
+    order = np.argsort(xs[good])
+    return lambda x: np.interp(np.log(x), np.log(xs[good][order]), lzs[good][order])
+
+
+def threshold(
+    branch: Branch, x0: float, lz0: float, control: str, *, sign: int = 1, target=None
+) -> Threshold:
+    """Scan the branch from its start (r_i rising for sign = 1, falling for -1); classify and
+    locate where it is lost. With a target (analytic load) the scan stops once it is crossed:
+    kind "" (not lost before it), value nan, the grid brackets the target."""
+    xs, lzs, loads, stop = _walk(branch, x0, lz0, sign=sign, target=target)
+    guess = _guess(xs, lzs)
+    out = lambda v: math.sqrt(v) if control == "voltage" else v  # noqa: E731
+    if stop == "target":
+        return Threshold(control, math.nan, "", math.nan, math.nan, 0.0, (xs, lzs, loads))
+    if stop == "peak":
+        j = len(xs) - 2  # the extreme load scanned
+        a, b = sorted((xs[max(j - 1, 0)], xs[j + 1]))
+
+        def f(x):
+            return sign * branch.value(clean(branch.at(x, guess(x))))
+
+        poly = cheb.Chebyshev.interpolate(f, 24, domain=[a, b])
+        crit = [x.real for x in poly.deriv().roots() if abs(x.imag) < 1e-9 and a <= x.real <= b]
+        if not crit:
+            raise ConvergenceError(
+                f"limit point of the {control} not located in [{a:.6g}, {b:.6g}]"
+            )
+        top = max(crit, key=poly)
+        pt = clean(branch.at([top], guess(top)))
+        value = float(branch.value(pt)[0])
+        keep = sign * (top - xs) > 0
+        grid = (
+            np.append(xs[keep], top),
+            np.append(lzs[keep], pt["stretch"][0]),
+            np.append(loads[keep], value),
+        )
+        return Threshold(
+            control,
+            out(value),
+            "limit point",
+            float(top),
+            float(pt["stretch"][0]),
+            abs(sign * float(poly(top)) - value),
+            grid,
+        )
+    if stop == "lock":
+        a, b = xs[-2], xs[-1]
+        while abs(b - a) > 1e-14 * abs(b):  # bisect the edge of the energy's domain
+            m = 0.5 * (a + b)
+            if np.isfinite(branch.value(clean(branch.at([m], guess(m))))[0]):
+                a = m
+            else:
+                b = m
+        grid = (xs[:-1], lzs[:-1], loads[:-1])
+        return Threshold(control, sign * math.inf, "locking", float(a), float(guess(a)), 0.0, grid)
+    grid = (xs, lzs, loads)
+    if sign < 0:
+        return Threshold(control, -math.inf, "none", 0.0, float(lzs[-1]), 0.0, grid)
+    # Richardson: load = L_inf + a x^p + ..., x = lambda_i^-2, the order p measured
+    far = x0 * 100.0 * 2.0 ** np.arange(5)
+    pt = clean(branch.at(far, guess(far[0])))
+    t = np.array([out(v) if np.isfinite(v) else np.nan for v in branch.value(pt)])
+    d = np.diff(t)
+    if not (np.all(np.isfinite(t)) and np.all(d > 0) and d[-2] > d[-1]):
+        return Threshold(control, math.inf, "none", math.inf, float(lzs[-1]), 0.0, grid)
+    p = math.log(d[-2] / d[-1], 4.0)
+    p = round(p) if abs(p - round(p)) < 0.05 else p
+    for j in range(3):
+        prev, t = t[-1], t[1:] + (t[1:] - t[:-1]) / (4.0 ** (p + j) - 1.0)
+    return Threshold(
+        control,
+        float(t[-1]),
+        "asymptote",
+        math.inf,
+        float(pt["stretch"][-1]),
+        abs(float(t[-1]) - prev),
+        grid,
+    )
+
+
+def solve_on(branch: Branch, grid, target: float, thr: Threshold | None, what: str):
+    """r_i, lambda_z on the scanned branch where the analytic load reaches target (brentq in
+    the bracketing cell; beyond the scan, a geometric tail towards the asymptote or lock)."""
+    xs, lzs, loads = grid
+    sign = 1 if target >= loads[0] else -1
+    k = np.flatnonzero(sign * (loads - target) >= 0)
+    if not k.size and thr is not None:
+        far = thr.lambda_i
+        tail = (
+            xs[-1] * 4.0 ** (sign * np.arange(1, 21))
+            if not 0 < far < math.inf
+            else far - (far - xs[-1]) * 4.0 ** -np.arange(1, 21)
+        )
+        pt = clean(branch.at(tail, lzs[-1]))
+        xs, lzs = np.append(xs[-1], tail), np.append(lzs[-1], pt["stretch"])
+        loads = np.append(loads[-1], branch.value(pt))
+        k = np.flatnonzero(sign * (loads - target) >= 0)
+    if not k.size:
+        if thr is not None and thr.kind == "locking":
+            raise BaseStateError(
+                f"{what} lies too close to the locking stretch lambda_i = {thr.lambda_i:.12g} of"
+                " this tube to be resolved (the load is unbounded only at the lock itself)"
+            )
+        raise BaseStateError(f"{what} is within rounding of the threshold of its branch")
+    a, b = xs[k[0] - 1], xs[k[0]]
+    guess = _guess(xs[k[0] - 1 : k[0] + 1], lzs[k[0] - 1 : k[0] + 1])
+
+    def f(x):
+        return float(branch.value(clean(branch.at([x], guess(x))))[0]) - target
+
+    lo, hi = sorted((a, b))
+    x = brentq(f, lo, hi, xtol=1e-16 * lo, rtol=4 * _EPS, maxiter=300)
+    return x, float(clean(branch.at([x], guess(x)))["stretch"][0])
+
+
+# -- preparation: the unloaded start, the pressure stage, the voltage branch -------------------
+
+
+def _start(wall: Wall) -> tuple[float, float]:
+    """The unloaded state (V = 0, P_i = P_o): the root of T(r_i) = 0, bracketed outward from
+    the guess, under force control with lambda_z balancing the axial force at each r_i."""
+    branch = Branch(wall, "pressure", vbar=0.0)
+    xg, lg = start_guess(wall)
+    P_o = wall.tube.outer_pressure
+
+    def f(x):
+        pt = clean(branch.at([x], lg))
+        return float(pt["P_i"][0] - P_o), float(pt["stretch"][0])
+
+    f0, _ = f(xg)
+    if f0 == 0:
+        return xg, f(xg)[1]
+    step, last, f_last = 1.1, xg, f0
+    for _ in range(200):
+        nxt = last / step if f_last > 0 else last * step
+        fn, _ = f(nxt)
+        if not np.isfinite(fn):
+            break
+        if np.sign(fn) != np.sign(f_last):
+            a, b = sorted((last, nxt))
+            x = brentq(lambda x: f(x)[0], a, b, xtol=1e-16 * a, rtol=4 * _EPS, maxiter=300)
+            return x, f(x)[1]
+        last, f_last = nxt, fn
+    raise BaseStateError("no unloaded state (V = 0, P_i = P_o) found for this tube")
+
+
+@dataclasses.dataclass(frozen=True)
+class _Prepared:
+    wall: Wall
+    start: tuple[float, float]  # unloaded (V = 0, P_i = P_o)
+    loaded: tuple[float, float]  # the tube's pressures at V = 0
+    voltage: Threshold  # the voltage branch from `loaded`
+
+
+@functools.lru_cache(maxsize=256)
+def prepare(tube: Tube, rtol: float, nodes: int | None = None) -> _Prepared:
+    """Everything but the voltage (tube.voltage is 0 here): cached per tube and rtol."""
+    plies = Ply.stack(tube)
+    wall = Wall.build(tube, nodes or choose_nodes(tube, rtol, plies), plies)
+    x0, lz0 = _start(wall)
+    dp = tube.inner_pressure - tube.outer_pressure
+    loaded = (x0, lz0)
+    if dp != 0:
+        branch = Branch(wall, "pressure", vbar=0.0)
+        target, sign = tube.inner_pressure, (1 if dp > 0 else -1)
+        thr = threshold(branch, x0, lz0, "pressure", sign=sign, target=target)
+        if thr.kind and not sign * (thr.value - target) > 0:
+            raise BaseStateError(
+                f"inner pressure P_i = {target:.12g} is at or beyond the pressure threshold"
+                f" P_i = {thr.value:.12g} ({thr.kind}) of this tube; no axisymmetric state"
+            )
+        loaded = solve_on(branch, thr.grid, target, thr if thr.kind else None, "P_i")
+    branch = Branch(wall, "voltage", dp=dp)
+    return _Prepared(wall, (x0, lz0), loaded, threshold(branch, *loaded, "voltage"))

@@ -1,0 +1,431 @@
+"""Axisymmetric base state of a layered tube: anisotropic and graded growth, follower pressures,
+prescribed axial stretch or axial force (issue 11; derivations in docs/derivation-layered.md).
+
+The entry points (:func:`solve_layered_state`, :func:`layered_threshold`, the response curves
+:func:`voltage_response`, :func:`pressure_response`) and the solved state :class:`LayeredState`.
+One state of the wall (kinematics, the equilibrium (*) T = P_i - P_o, the Gauss-Legendre
+integrals) is in :mod:`.plies`; the loading branches from the unloaded state and their
+thresholds are in :mod:`.branches`. A load beyond its branch's threshold raises BaseStateError.
+The solved state is re-integrated with Chebyshev interpolants per layer (the profile
+
+    sigma_rr(R) = -P_i + int_{r_i}^{r(R)} (tau_2 - tau_1) dr / r,  sigma_ii = tau_i - p,
+    p = tau_1 - sigma_rr,
+
+and the residuals in ``quadrature_error``), with more nodes when that disagrees.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+from numpy.polynomial import chebyshev as cheb
+
+from ..errors import BaseStateError, ConvergenceError, ParameterError
+from ..model.layers import Layer, Tube
+from .branches import Branch, Threshold, clean, prepare, solve_on, threshold
+from .plies import ORDERS, Wall, chebyshev
+
+__all__ = [
+    "LayeredState",
+    "Threshold",
+    "layered_threshold",
+    "pressure_response",
+    "solve_layered_state",
+    "voltage_response",
+]
+
+
+# -- entry points -------------------------------------------------------------------------------
+
+
+def solve_layered_state(tube: Tube, *, rtol: float = 1e-12) -> LayeredState:
+    """The axisymmetric base state of a layered tube at its loads.
+
+    Reached from the unloaded state (V = 0, P_i = P_o) by raising the inner pressure to P_i at
+    V = 0 (pressure branch), then the voltage to Vbar (voltage branch), each followed in r_i.
+    Solves (*) = P_i - P_o and int E_r dr = Vbar (R_N - 1) for (r_i, c), and under force control
+    the axial balance for lambda_z.
+
+    Raises
+    ------
+    BaseStateError
+        If P_i or Vbar lies beyond the threshold of its branch.
+
+    >>> from electrogrowth.model.layers import Layer, Tube
+    >>> state = solve_layered_state(Tube((Layer(2.0),), voltage=0.5))
+    >>> round(state.lambda_i, 6), state.threshold_kind
+    (1.151387, 'asymptote')
+    """
+    key = dataclasses.replace(tube, voltage=0.0)
+    nodes = None
+    for _ in range(len(ORDERS)):
+        prep = prepare(key, rtol, nodes)
+        thr = prep.voltage
+        if not tube.voltage < thr.value:
+            raise BaseStateError(
+                f"Vbar = {tube.voltage:.12g} is at or above the voltage threshold"
+                f" Vbar = {thr.value:.12g} ({thr.kind}) of this tube; no axisymmetric state"
+            )
+        branch = Branch(prep.wall, "voltage", dp=tube.inner_pressure - tube.outer_pressure)
+        if tube.voltage == 0:
+            x, lz = prep.loaded
+        else:
+            x, lz = solve_on(branch, thr.grid, tube.voltage**2, thr, f"Vbar = {tube.voltage}")
+        # c from the voltage, c = V / Lambda for ideal dielectrics (from (*) it would carry
+        # the cancellation of T - (P_i - P_o) near the start, amplified by the square root)
+        pt = Branch(prep.wall, "pressure", vbar=tube.voltage).point([x], [lz])
+        state = LayeredState._build(tube, prep, x, lz, float(pt["charge"][0]), rtol)
+        if state.quadrature_error <= max(rtol, 1e-14):
+            return state
+        nodes = ORDERS[min(ORDERS.index(prep.wall.nodes) + 2, len(ORDERS) - 1)]
+        if prep.wall.nodes == ORDERS[-1]:
+            break
+    raise ConvergenceError(f"layered base state not resolved to rtol = {rtol}")
+
+
+def layered_threshold(tube: Tube, control: str = "voltage", *, rtol: float = 1e-12) -> Threshold:
+    """The threshold of the branch of ``control`` ("voltage": Vbar at the tube's pressures;
+    "pressure": the inner pressure P_i at the tube's voltage and outer pressure), followed from
+    its start (the unloaded state, or P_i = P_o at the tube's voltage), see :class:`Threshold`.
+    """
+    if control == "voltage":
+        return prepare(dataclasses.replace(tube, voltage=0.0), rtol).voltage
+    if control != "pressure":
+        raise ParameterError(f"control = {control!r} is unknown; choose voltage or pressure")
+    branch, start = _pressure_branch(tube, rtol)
+    return threshold(branch, *start, "pressure")
+
+
+def _pressure_branch(tube: Tube, rtol: float):
+    start = solve_layered_state(
+        dataclasses.replace(tube, inner_pressure=tube.outer_pressure), rtol=rtol
+    )
+    wall = prepare(
+        dataclasses.replace(tube, voltage=0.0, inner_pressure=tube.outer_pressure),
+        rtol,
+        start._wall.nodes,
+    ).wall
+    return Branch(wall, "pressure", vbar=tube.voltage), (start.r_i, start.stretch)
+
+
+def _response(branch, start, thr, lambda_i, points, span):
+    if lambda_i is None:
+        end = thr.lambda_i if math.isfinite(thr.lambda_i) else start[0] * span
+        if thr.kind == "locking":
+            end = start[0] + 0.999 * (end - start[0])
+        lambda_i = start[0] * (end / start[0]) ** np.linspace(0.0, 1.0, points)
+    r_i = np.sort(np.atleast_1d(np.asarray(lambda_i, float)))
+    pt = clean(branch.at(r_i, start[1]))
+    return {
+        "lambda_i": pt["r_i"],
+        "lambda_o": pt["r_o"] / branch.wall.tube.outer_radius,
+        "r_i": pt["r_i"],
+        "r_o": pt["r_o"],
+        "voltage": pt["voltage"],
+        "inner_pressure": pt["P_i"],
+        "stretch": pt["stretch"],
+        "charge": pt["charge"],
+        "axial_force": pt["axial_force"],
+    }
+
+
+def voltage_response(
+    tube: Tube, lambda_i=None, *, points: int = 41, span: float = 3.0, rtol: float = 1e-12
+) -> dict[str, np.ndarray]:
+    """The voltage branch at the tube's pressures (tube.voltage ignored), at the inner stretches
+    ``lambda_i`` (sorted), or at ``points`` from its start to the threshold's lambda_i (a limit
+    point, just before a locking stretch) or to ``span`` times the start (asymptote).
+
+    Returns arrays: lambda_i (= r_i), lambda_o, r_i, r_o, voltage (Vbar; negative below the
+    start for ideal dielectrics), inner_pressure, stretch, charge, axial_force.
+    """
+    prep = prepare(dataclasses.replace(tube, voltage=0.0), rtol)
+    branch = Branch(prep.wall, "voltage", dp=tube.inner_pressure - tube.outer_pressure)
+    return _response(branch, prep.loaded, prep.voltage, lambda_i, points, span)
+
+
+def pressure_response(
+    tube: Tube, lambda_i=None, *, points: int = 41, span: float = 3.0, rtol: float = 1e-12
+) -> dict[str, np.ndarray]:
+    """The pressure branch at the tube's voltage and outer pressure (tube.inner_pressure
+    ignored): P_i(lambda_i) from the state with P_i = P_o, as :func:`voltage_response`."""
+    branch, start = _pressure_branch(tube, rtol)
+    thr = threshold(branch, *start, "pressure") if lambda_i is None else None
+    return _response(branch, start, thr, lambda_i, points, span)
+
+
+# -- the solved state -------------------------------------------------------------------------
+
+
+@dataclasses.dataclass(frozen=True)
+class LayeredState:
+    """The solved base state of a layered tube; methods take the reference radius R in
+    [1, R_N] (vectorised; at an interface, ``side`` "outer" or "inner" picks the layer).
+
+    Attributes: lambda_i = r_i, lambda_o = r_o / R_N, r_i, r_o, radii (r at every face and
+    interface, R = 1, R_1, ..., R_N), charge c (D_r = c / r), stretch lambda_z (solved under force
+    control), axial_force N = 2 pi int sigma_zz r dr (the wall's resultant), end_force (N less
+    the pressure load on closed ends: what the ends carry besides it), the voltage threshold of
+    the voltage branch, its kind and lambda_i (inf for an asymptote), and quadrature_error, the
+    residuals (outer traction over the stress scale, voltage, axial force) of an independent
+    Chebyshev quadrature per layer.
+    """
+
+    tube: Tube
+    lambda_i: float
+    lambda_o: float
+    r_i: float
+    r_o: float
+    radii: tuple[float, ...]
+    charge: float
+    stretch: float
+    axial_force: float
+    end_force: float
+    voltage_threshold: float
+    threshold_kind: str
+    threshold_lambda_i: float = math.inf
+    quadrature_error: float = 0.0
+    _wall: Wall = dataclasses.field(default=None, repr=False, compare=False)
+    # per layer: (antiderivative of d sigma_rr / dR from R_{k-1}, sigma_rr(R_{k-1}))
+    _sigma: tuple = dataclasses.field(default=(), repr=False, compare=False)
+
+    @classmethod
+    def _build(cls, tube, prep, x, lz, c, rtol) -> LayeredState:
+        """Chebyshev interpolants per layer (degree doubled until the tail < 1e-2 rtol) of the
+        integrands of sigma_rr, its scale, V and Nint: a quadrature independent of the Gauss one
+        that fixed (r_i, c, lambda_z)."""
+        wall = prep.wall
+        sigma, s_a, totals = [], -tube.inner_pressure, np.zeros(3)
+        for ply in wall.plies:
+
+            def f(R, ply=ply):
+                g = ply.layer.growth_at(R)
+                r, r2, ls, d = ply.kinematics(R, g, ply.G(R), x, lz, c)
+                tau = ply.stress(*ls, d)
+                jr = np.prod(g, 0) * R / lz
+                return np.stack(
+                    [
+                        (tau[1] - tau[0]) * jr / r2,
+                        (abs(tau[1]) + abs(tau[0])) * jr / r2,
+                        ply.field(*ls, d) * jr / r,
+                        math.pi * (2.0 * tau[2] - tau[0] - tau[1]) * jr,
+                    ],
+                    axis=-1,
+                )
+
+            coef = chebyshev(f, ply.a, ply.b, 0.01 * rtol, "base-state profile")
+            antider = cheb.Chebyshev(coef[:, 0], domain=[ply.a, ply.b]).integ(lbnd=ply.a)
+            weights = np.zeros(coef.shape[0])  # int_a^b T_k = (b - a) / (1 - k^2), k even
+            weights[::2] = (ply.b - ply.a) / (1.0 - np.arange(0, coef.shape[0], 2) ** 2)
+            totals += weights @ coef[:, 1:]
+            sigma.append((antider, s_a))
+            s_a = s_a + float(antider(ply.b))
+        scale, volt, nint = totals
+        r2 = wall.radii2(x, lz)
+        r = np.sqrt(r2)
+        P_i, P_o = tube.inner_pressure, tube.outer_pressure
+        ends = math.pi * (P_i * r2[0] - P_o * r2[-1])
+        N = float(nint + ends)
+        applied = N - ends if tube.closed_ends else N
+        thick = tube.outer_radius - 1.0
+        errors = [
+            abs(s_a + P_o) / max(1.0, abs(scale)),
+            abs(volt / thick - tube.voltage) / max(1.0, tube.voltage),
+        ]
+        if tube.control == "force":
+            errors.append(abs(applied - tube.axial_force) / max(1.0, abs(nint), abs(ends)))
+        thr = prep.voltage
+        return cls(
+            tube,
+            float(x),
+            float(r[-1]) / tube.outer_radius,
+            float(x),
+            float(r[-1]),
+            tuple(float(v) for v in r),
+            float(c),
+            float(lz),
+            N,
+            float(applied),
+            thr.value,
+            thr.kind,
+            thr.lambda_i,
+            float(max(errors)),
+            wall,
+            tuple(sigma),
+        )
+
+    @property
+    def interface_radii(self) -> tuple[float, ...]:
+        """r at the interfaces between layers (inner to outer; empty for one layer)."""
+        return self.radii[1:-1]
+
+    @property
+    def hoop_stretches(self) -> tuple[float, ...]:
+        """r / R at every face and interface."""
+        return tuple(r / R for r, R in zip(self.radii, self.tube.radii))
+
+    # -- fields through the wall ---------------------------------------------------------------
+
+    def _fields(self, R, side: str = "outer", moduli: bool = False) -> dict:
+        R = np.asarray(R, float)
+        radii = self.tube.radii
+        if np.any((R < 1.0 - 1e-12) | (R > radii[-1] * (1.0 + 1e-12))):
+            raise ParameterError(f"R outside the wall [1, {radii[-1]:g}]")
+        if side not in ("outer", "inner"):
+            raise ParameterError(f"side = {side!r} is unknown; choose outer or inner")
+        which = np.searchsorted(
+            np.array(radii[1:-1]), R, side="right" if side == "outer" else "left"
+        )
+        out: dict = {}
+        for k, ply in enumerate(self._wall.plies):
+            mask = which == k
+            if not mask.any():
+                continue
+            Rk = np.clip(R[mask], ply.a, ply.b)
+            g = ply.layer.growth_at(Rk)
+            r, _, ls, d = ply.kinematics(Rk, g, ply.G(Rk), self.r_i, self.stretch, self.charge)
+            antider, s_a = self._sigma[k]
+            vals = {
+                "r": r,
+                "l1": ls[0],
+                "l2": ls[1],
+                "l3": ls[2],
+                "d": d,
+                "E": ply.field(*ls, d),
+                "sigma_rr": s_a + antider(Rk),
+            }
+            vals.update(zip(("tau1", "tau2", "tau3"), ply.stress(*ls, d)))
+            vals["g_r"], vals["g_theta"], vals["g_z"] = g
+            if moduli:
+                vals["moduli"] = ply.moduli(*ls, d)
+            for key, v in vals.items():
+                if key not in out:
+                    out[key] = np.zeros(R.shape + np.shape(v)[1:])
+                out[key][mask] = v
+        return out
+
+    def radius(self, R, *, side: str = "outer") -> np.ndarray:
+        """r(R) = sqrt(r_i^2 + 2 G(R) / lambda_z)."""
+        return self._fields(R, side)["r"]
+
+    def elastic_stretches(self, R, *, side: str = "outer"):
+        """(l1, l2, l3) = (1 / (l2 l3), r / (g_theta R), lambda_z / g_z)."""
+        f = self._fields(R, side)
+        return f["l1"], f["l2"], f["l3"]
+
+    def displacement(self, R, *, side: str = "outer") -> np.ndarray:
+        """Radial current electric displacement D_r = c / r (continuous across interfaces)."""
+        return self._fields(R, side)["d"]
+
+    def electric_field(self, R, *, side: str = "outer") -> np.ndarray:
+        """Radial current field E_r (d / eps_k for an ideal dielectric: jumps at interfaces)."""
+        return self._fields(R, side)["E"]
+
+    def sigma_rr(self, R, *, side: str = "outer") -> np.ndarray:
+        """sigma_rr(R) = -P_i + int_{r_i}^{r(R)} (tau_2 - tau_1) dr / r (continuous)."""
+        return self._fields(R, side)["sigma_rr"]
+
+    def stresses(self, R, *, side: str = "outer"):
+        """(sigma_rr, sigma_tt, sigma_zz), sigma_ii = tau_i - p with p = tau_1 - sigma_rr."""
+        f = self._fields(R, side)
+        p = f["tau1"] - f["sigma_rr"]
+        return f["sigma_rr"], f["tau2"] - p, f["tau3"] - p
+
+    def pressure(self, R, *, side: str = "outer") -> np.ndarray:
+        """Lagrange multiplier p = tau_1 - sigma_rr (jumps at interfaces with tau_1)."""
+        f = self._fields(R, side)
+        return f["tau1"] - f["sigma_rr"]
+
+    def moduli(self, R, *, side: str = "outer") -> np.ndarray:
+        """Updated moduli (materials.MODULI_NAMES order) with the layer's scaling (A mu_k,
+        Gamma sqrt(mu_k / eps_k), K / eps_k), shape R.shape + (23,)."""
+        return self._fields(R, side, moduli=True)["moduli"]
+
+    def profiles(self, n: int = 101) -> dict[str, np.ndarray]:
+        """Through-wall profiles at about n points, spread over the layers by thickness, each
+        layer's grid with both its faces (an interface appears twice: inner, then outer side).
+        Keys: layer, R, r, lambda, sigma_rr, sigma_tt, sigma_zz, p, D_r, E_r."""
+        parts = []
+        radii = self.tube.radii
+        for k, (a, b) in enumerate(zip(radii, radii[1:])):
+            m = max(2, round(n * (b - a) / (radii[-1] - 1.0)))
+            R = np.linspace(a, b, m)
+            side = np.where(np.arange(m) == m - 1, "inner", "outer")
+            for s in ("outer", "inner"):
+                sel = side == s
+                if sel.any():
+                    parts.append((k, R[sel], self._fields(R[sel], s)))
+        cat = lambda key: np.concatenate([f[key] for _, _, f in parts])  # noqa: E731
+        R = np.concatenate([R for _, R, _ in parts])
+        order = np.lexsort((np.concatenate([np.full(len(R_), k) for k, R_, _ in parts]), R))
+        p = cat("tau1") - cat("sigma_rr")
+        out = {
+            "layer": np.concatenate([np.full(len(R_), k) for k, R_, _ in parts]),
+            "R": R,
+            "r": cat("r"),
+            "lambda": cat("r") / R,
+            "sigma_rr": cat("sigma_rr"),
+            "sigma_tt": cat("tau2") - p,
+            "sigma_zz": cat("tau3") - p,
+            "p": p,
+            "D_r": cat("d"),
+            "E_r": cat("E"),
+        }
+        return {key: v[order] for key, v in out.items()}
+
+    def as_dict(self) -> dict:
+        """The JSON record (inf -> null): the tube, every face and interface, charge, threshold,
+        stretch, axial and end force, extremes of the principal Cauchy stresses (401 points)."""
+        t = self.tube
+        prof = self.profiles(401)
+        record = {
+            "material": " / ".join(layer.material.name for layer in t.layers),
+            "layers": [_layer_record(layer) for layer in t.layers],
+            "outer_radius": t.outer_radius,
+            "length": t.length,
+            "control": t.control,
+            "voltage": t.voltage,
+            "inner_pressure": t.inner_pressure,
+            "outer_pressure": t.outer_pressure,
+            "closed_ends": t.closed_ends,
+            "lambda_i": self.lambda_i,
+            "lambda_o": self.lambda_o,
+            "r_i": self.r_i,
+            "r_o": self.r_o,
+            "interface_radii": list(self.interface_radii),
+            "radii": list(self.radii),
+            "charge": self.charge,
+            "stretch": self.stretch,
+            "current_length": self.stretch * t.length,
+            "voltage_threshold": _finite(self.voltage_threshold),
+            "threshold_kind": self.threshold_kind,
+            "threshold_lambda_i": _finite(self.threshold_lambda_i),
+            "axial_force": self.axial_force,
+            "end_force": self.end_force,
+            "quadrature_error": self.quadrature_error,
+        }
+        for key in ("sigma_rr", "sigma_tt", "sigma_zz"):
+            record[f"{key}_min"] = float(prof[key].min())
+            record[f"{key}_max"] = float(prof[key].max())
+        return record
+
+
+def _finite(v: float) -> float | None:
+    return float(v) if math.isfinite(v) else None
+
+
+def _layer_record(layer: Layer) -> dict:
+    g = layer.growth
+    if layer.graded:
+        g = {"inner": list(g.inner), "outer": list(g.outer)} if hasattr(g, "inner") else repr(g)
+    else:
+        g = list(g)
+    return {
+        "outer_radius": layer.outer_radius,
+        "material": layer.material.name,
+        "shear_modulus": layer.shear_modulus,
+        "permittivity": layer.permittivity,
+        "growth": g,
+    }

@@ -1,0 +1,303 @@
+"""One state of a layered tube's wall at (r_i, lambda_z, c): each layer's kinematics, stresses,
+field and moduli, and their integrals through the wall (docs/derivation-layered.md).
+
+Kinematics (F = F_e F_g, F_g = diag(g_r, g_theta, g_z), det F_e = 1):
+
+    r dr / (R dR) = J / lambda_z,  J = g_r g_theta g_z,  r(R)^2 = r_i^2 + 2 G(R) / lambda_z,
+    G(R) = int_1^R J R' dR',  l2 = r / (g_theta R),  l3 = lambda_z / g_z,  l1 = 1 / (l2 l3).
+
+Layer k with shear modulus mu_k and permittivity eps_k has the energy
+mu_k Omega(F_e, D~ / s_k), s_k = sqrt(mu_k eps_k), so tau = mu_k tau^(d / s_k) and
+E_r = sqrt(mu_k / eps_k) E^(d / s_k) (= d / eps_k for an ideal dielectric). Maxwell: D_r = c / r
+through every layer, V = int E_r dr. Equilibrium: d sigma_rr / dr = (tau_2 - tau_1) / r,
+sigma_rr continuous, sigma_rr(r_i) = -P_i, sigma_rr(r_o) = -P_o, i.e.
+
+    T := int_{r_i}^{r_o} (tau_2 - tau_1) dr / r = P_i - P_o,                            (*)
+
+and N = 2 pi int sigma_zz r dr = pi int (2 tau_3 - tau_1 - tau_2) r dr + pi (P_i r_i^2 - P_o r_o^2)
+
+Integrals are Gauss-Legendre in R per layer (node count chosen by comparing successive rules
+at representative states); for ideal dielectrics Q = int dr / (eps r^3) and
+Lambda = int dr / (eps r) are in closed form, for general energies c solves (*) or the voltage
+by Illinois iteration.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import math
+
+import numpy as np
+import sympy as sp
+from numpy.polynomial import chebyshev as cheb
+
+from ..errors import ConvergenceError
+from ..model.layers import Layer, Tube
+from ..model.materials import INVARIANTS, MODULI_NAMES, Material, neo_hookean_moduli
+from .voltage import energy_kind
+
+ORDERS = (8, 12, 16, 24, 32, 48, 64, 96, 128, 192, 256)  # Gauss-Legendre nodes per layer
+_QUIET = dict(invalid="ignore", divide="ignore", over="ignore")
+_EPS = np.finfo(float).eps
+_SCALE = {"A": 0, "G": 1, "K": 2}  # moduli family -> power of 1 / s_k applied with mu_k
+
+
+@functools.cache
+def _gauss(n: int):
+    return np.polynomial.legendre.leggauss(n)
+
+
+@functools.lru_cache(maxsize=64)
+def numeric_energy(material: Material):
+    """Numeric Omega(I1, ..., I6), or None for a polynomial energy (finite everywhere)."""
+    if material.energy.is_polynomial(*INVARIANTS):
+        return None
+    return sp.lambdify(INVARIANTS, material.energy, "numpy")
+
+
+def chebyshev(f, a: float, b: float, tol: float, what: str) -> np.ndarray:
+    """Chebyshev coefficients of the vectorised f (values on the last axis) on [a, b], degree
+    doubled until the last three are below tol of the largest (or of 1), or have stopped
+    falling (the noise floor of f, e.g. next to a locking stretch) below 1e-8 of it."""
+    last = None
+    for deg in (16, 32, 64, 128, 256, 512):
+        coef = cheb.chebinterpolate(lambda x: f(a + 0.5 * (b - a) * (x + 1.0)), deg)
+        size = np.maximum(abs(coef).max(0), 1.0)
+        tail = abs(coef[-3:]).max(0) / size
+        if np.all(tail <= tol) or (
+            last is not None and np.all(tail <= 1e-8) and np.all(tail > 0.1 * last)
+        ):
+            return coef
+        last = tail
+    raise ConvergenceError(f"{what} on [{a:g}, {b:g}] not resolved by Chebyshev degree 512")
+
+
+# -- one layer -------------------------------------------------------------------------------
+
+
+@dataclasses.dataclass(frozen=True)
+class Ply:
+    """One layer's numerics: its R range [a, b], G(a) and, when graded, int_a^R J R' dR'."""
+
+    layer: Layer
+    a: float
+    b: float
+    G0: float
+    graded_integral: cheb.Chebyshev | None = None
+
+    @classmethod
+    def stack(cls, tube: Tube) -> tuple[Ply, ...]:
+        plies, G0 = [], 0.0
+        for a, layer in zip(tube.radii, tube.layers):
+            b, integral = layer.outer_radius, None
+            if layer.graded:
+                coef = chebyshev(
+                    lambda R, lay=layer: np.prod(lay.growth_at(R), axis=0) * R,
+                    a,
+                    b,
+                    1e-14,
+                    "graded growth",
+                )
+                integral = cheb.Chebyshev(coef, domain=[a, b]).integ(lbnd=a)
+                dG = float(integral(b))
+            else:
+                dG = math.prod(layer.growth) * (b * b - a * a) / 2.0
+            plies.append(cls(layer, a, b, G0, integral))
+            G0 += dG
+        return tuple(plies)
+
+    @property
+    def kind(self) -> str:
+        return energy_kind(self.layer.material)
+
+    @property
+    def G1(self) -> float:
+        return float(self.G(self.b))
+
+    def G(self, R):
+        """G(R) = int_1^R J R' dR' (closed form for constant growth)."""
+        if self.graded_integral is None:
+            return self.G0 + math.prod(self.layer.growth) * (R * R - self.a * self.a) / 2.0
+        return self.G0 + self.graded_integral(R)
+
+    def kinematics(self, R, g, G, r_i, lz, c):
+        """r, r^2, elastic stretches, D_r at R (last axis) for r_i, lz, c (shape S + (1,))."""
+        r2 = r_i * r_i + 2.0 * G / lz
+        r = np.sqrt(r2)
+        l2 = r / (g[1] * R)
+        l3 = np.broadcast_to(lz / g[2], l2.shape)
+        return r, r2, (1.0 / (l2 * l3), l2, l3), c / r
+
+    def finite(self, l1, l2, l3, d):
+        """Where the energy is finite (False beyond a locking stretch)."""
+        if (energy := numeric_energy(self.layer.material)) is None:
+            return np.ones(l1.shape, bool)
+        dt2 = (d / (l1 * math.sqrt(self.layer.shear_modulus * self.layer.permittivity))) ** 2
+        with np.errstate(**_QUIET):
+            w = energy(
+                l1**2 + l2**2 + l3**2,
+                (l1 * l2) ** 2 + (l2 * l3) ** 2 + (l3 * l1) ** 2,
+                dt2,
+                dt2 * l1**2,
+                dt2 * l1**4,
+            )
+        return np.isfinite(np.broadcast_to(w, l1.shape))
+
+    def stress(self, l1, l2, l3, d):
+        """tau_i = mu_k tau^_i(l, d / s_k), shape (3,) + l1.shape (Maxwell part included)."""
+        mu, eps = self.layer.shear_modulus, self.layer.permittivity
+        if self.kind == "neo-hookean":
+            return np.array([mu * l1 * l1 + d * d / eps, mu * l2 * l2, mu * l3 * l3])
+        return mu * self.layer.material.stress(l1, l2, l3, d / math.sqrt(mu * eps))
+
+    def field(self, l1, l2, l3, d):
+        """E_r = sqrt(mu_k / eps_k) E^(l, d / s_k); d / eps_k for an ideal dielectric."""
+        mu, eps = self.layer.shear_modulus, self.layer.permittivity
+        if self.kind != "general":
+            return np.broadcast_to(d / eps, l1.shape)
+        s = math.sqrt(mu * eps)
+        return mu / s * self.layer.material.electric_field(l1, l2, l3, d / s)
+
+    def moduli(self, l1, l2, l3, d):
+        """Updated moduli of the layer: A mu_k, Gamma sqrt(mu_k / eps_k), K / eps_k."""
+        mu, eps = self.layer.shear_modulus, self.layer.permittivity
+        s = math.sqrt(mu * eps)
+        if self.kind == "neo-hookean":
+            m = neo_hookean_moduli(l1, l2, l3, d / s)
+        else:
+            m = self.layer.material.moduli(l1, l2, l3, d / s)
+        return m * np.array([mu / s ** _SCALE[name[0]] for name in MODULI_NAMES])
+
+
+# -- the wall: Gauss-Legendre integrals at (r_i, lambda_z, c) ----------------------------------
+
+
+@dataclasses.dataclass(frozen=True)
+class Wall:
+    tube: Tube
+    plies: tuple[Ply, ...]
+    nodes: int
+    grids: tuple  # per ply (R, w, g, J, G): Gauss nodes plus both faces (weight 0)
+
+    @classmethod
+    def build(cls, tube: Tube, nodes: int, plies=None) -> Wall:
+        plies = plies or Ply.stack(tube)
+        x, w = _gauss(nodes)
+        grids = []
+        for ply in plies:
+            h = 0.5 * (ply.b - ply.a)
+            R = np.concatenate([[ply.a], ply.a + h * (x + 1.0), [ply.b]])
+            g = ply.layer.growth_at(R)
+            grids.append((R, np.concatenate([[0.0], h * w, [0.0]]), g, np.prod(g, 0), ply.G(R)))
+        return cls(tube, plies, nodes, tuple(grids))
+
+    @functools.cached_property
+    def ideal(self) -> bool:
+        return all(p.kind != "general" for p in self.plies)
+
+    @functools.cached_property
+    def faces_G(self) -> np.ndarray:
+        return np.array([p.G0 for p in self.plies] + [self.plies[-1].G1])
+
+    def radii2(self, r_i, lz):
+        """r^2 at every face and interface, shape S + (N + 1,)."""
+        return np.asarray(r_i)[..., None] ** 2 + 2.0 * self.faces_G / np.asarray(lz)[..., None]
+
+    def electric(self, r_i, lz):
+        """Q = int dr / (eps r^3) and Lambda = int dr / (eps r) in closed form, per layer from
+        r^2 at its faces and r_b^2 - r_a^2 = 2 (G_b - G_a) / lambda_z (no subtraction)."""
+        r2 = self.radii2(r_i, lz)
+        dr2 = 2.0 * np.diff(self.faces_G) / np.asarray(lz)[..., None]
+        inv_eps = np.array([1.0 / p.layer.permittivity for p in self.plies])
+        Q = (inv_eps * dr2 / (2.0 * r2[..., :-1] * r2[..., 1:])).sum(-1)
+        Lam = (inv_eps * 0.5 * np.log1p(dr2 / r2[..., :-1])).sum(-1)
+        return Q, Lam
+
+    def integrals(self, r_i, lz, c):
+        """(T, scale, V, Nint): T = int (tau_2 - tau_1) dr / r, scale = int (|tau_1| + |tau_2|)
+        dr / r, V = int E_r dr, Nint = pi int (2 tau_3 - tau_1 - tau_2) r dr; NaN where an
+        energy is not finite (faces included)."""
+        r_i, lz, c = (np.asarray(v, float)[..., None] for v in np.broadcast_arrays(r_i, lz, c))
+        out = np.zeros((4,) + r_i.shape[:-1])
+        bad = np.zeros(r_i.shape[:-1], bool)
+        for ply, (R, w, g, J, G) in zip(self.plies, self.grids):
+            r, r2, (l1, l2, l3), d = ply.kinematics(R, g, G, r_i, lz, c)
+            ok = ply.finite(l1, l2, l3, d).all(-1)
+            if not ok.all():
+                bad |= ~ok
+                keep = ok[..., None]
+                l1, l2, l3 = (np.where(keep, v, 1.0) for v in (l1, l2, l3))
+                d = np.where(keep, d, 0.0)
+            tau = ply.stress(l1, l2, l3, d)
+            jr = w * J * R / lz  # r dr = J R dR / lambda_z
+            out[0] += ((tau[1] - tau[0]) * jr / r2).sum(-1)
+            out[1] += ((abs(tau[1]) + abs(tau[0])) * jr / r2).sum(-1)
+            if np.any(c):
+                out[2] += (ply.field(l1, l2, l3, d) * jr / r).sum(-1)
+            out[3] += math.pi * ((2.0 * tau[2] - tau[0] - tau[1]) * jr).sum(-1)
+        out[:, bad] = np.nan
+        return out
+
+
+def illinois(f, a, b, fa, fb):
+    """Vectorised Illinois (modified regula falsi) for f(x) = 0 with fa, fb of opposite signs;
+    f returns (value, noise scale). Stops at |f| <= 1e-15 scale or a bracket of 1e-15 |x|."""
+    side = np.zeros(np.shape(a), int)
+    result = np.full(np.shape(a), np.nan)
+    done = np.zeros(np.shape(a), bool)
+    for _ in range(300):
+        with np.errstate(**_QUIET):
+            x = np.where(fb == fa, b, (a * fb - b * fa) / (fb - fa))
+        fx, size = f(x)
+        now = ~done & (
+            (abs(fx) <= 1e-15 * size) | (abs(b - a) <= 1e-15 * abs(x)) | ~np.isfinite(fx)
+        )
+        result, done = np.where(now, x, result), done | now
+        if done.all():
+            return result
+        same = np.sign(fx) == np.sign(fb)  # x replaces b
+        fa = np.where(same & (side == 1), fa / 2, fa)
+        fb = np.where(~same & (side == -1), fb / 2, fb)
+        a, fa = np.where(same, a, x), np.where(same, fa, fx)
+        b, fb = np.where(same, x, b), np.where(same, fx, fb)
+        side = np.where(same, 1, -1)
+    raise ConvergenceError("charge c not converged (Illinois, 300 iterations)")
+
+
+# -- the node count: successive Gauss-Legendre rules at representative states -----------------
+
+
+def choose_nodes(tube: Tube, rtol: float, plies) -> int:
+    """Fewest Gauss nodes per layer whose T (and V) agree with the next rule to 1e-3 rtol (or
+    64 eps, rounding) of the stress scale (of max(1, |V|)) at representative states: r_i = 0.6,
+    0.8, 1, 1.5, 3 times the guess (the integrands are the least smooth at the smallest r_i),
+    c = 0 and r_i / 2."""
+    x0, lz0 = start_guess(Wall.build(tube, 16, plies))
+    r = x0 * np.tile([0.6, 0.8, 1.0, 1.5, 3.0], 2)
+    c = np.where(np.arange(10) < 5, 0.0, 0.5 * r)
+    prev = None
+    for n in ORDERS:
+        cur = Wall.build(tube, n, plies).integrals(r, lz0, c)
+        if prev is not None:
+            ok = np.isfinite(cur[0]) & np.isfinite(prev[1][0])
+            err = np.maximum(
+                abs(cur[0] - prev[1][0]) / np.maximum(cur[1], 1.0),
+                abs(cur[2] - prev[1][2]) / np.maximum(abs(cur[2]), 1.0),
+            )
+            if np.all(err[ok] <= max(1e-3 * rtol, 64 * _EPS)):  # not below rounding
+                return prev[0]
+        prev = (n, cur)
+    raise ConvergenceError(f"quadrature not converged to rtol = {rtol} with {ORDERS[-1]} nodes")
+
+
+def start_guess(wall: Wall) -> tuple[float, float]:
+    """The homogeneous-growth guess: r_i^2 = 2 G(R_N) / (lambda_z (R_N^2 - 1)), lambda_z the
+    area-weighted mean g_z (under force control) or the prescribed stretch."""
+    tube = wall.tube
+    if tube.control == "stretch":
+        lz = tube.stretch
+    else:
+        num = sum((w * g[2] * R).sum() for R, w, g, _, _ in wall.grids)
+        lz = num / (0.5 * (tube.outer_radius**2 - 1.0))
+    return math.sqrt(2.0 * wall.faces_G[-1] / (lz * (tube.outer_radius**2 - 1.0))), lz

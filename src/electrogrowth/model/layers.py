@@ -1,0 +1,254 @@
+"""A tube as a stack of perfectly bonded layers, and its loads (issue 11).
+
+Units mu = eps = R_i = 1: every layer's shear modulus and permittivity are relative to these
+reference values, its outer radius is in units of the inner radius of the whole tube. Layers are
+listed from the inner face (R = 1) outward; layer k occupies R_{k-1} <= R <= R_k, R_0 = 1.
+Each layer grows by F_g = diag(g_r, g_theta, g_z): a scalar (isotropic, g I), three constants,
+or a function of R returning the triple (graded growth, e.g. :class:`LinearGrowth`).
+
+The loads: a radial voltage Vbar = V / (R_N - 1) between electrodes on the inner and outer
+faces; follower pressures P_i on the inner face (P_i > 0 pushes it outward) and P_o on the
+outer face (P_o > 0 pushes it inward); and either the total axial stretch lambda_z (growth
+included) or the axial force at the ends, besides the pressure on closed ends, in which case
+lambda_z is solved for. Derivations: docs/derivation-layered.md.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Callable
+
+import numpy as np
+
+from ..errors import ParameterError
+from .materials import Material, neo_hookean
+from .params import TubeParameters
+
+Growth = float | tuple[float, float, float] | Callable
+
+
+def _number(name: str, value, valid: str, ok) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise ParameterError(f"{name} = {value!r} is not a number; valid range: {valid}")
+    if not math.isfinite(value) or not ok(value):
+        raise ParameterError(f"{name} = {value!r} is out of range; valid range: {valid}")
+    return float(value)
+
+
+def _triple(name: str, value) -> tuple[float, float, float]:
+    """A growth scalar or triple as three floats > 0 (ParameterError naming ``name``)."""
+    if isinstance(value, (list, tuple, np.ndarray)):
+        if len(value) != 3:
+            raise ParameterError(
+                f"{name} = {value!r} has {len(value)} entries; give g or [g_r, g_theta, g_z]"
+            )
+        return tuple(
+            _number(
+                f"{name}[{i}]",
+                float(v) if isinstance(v, np.floating) else v,
+                "> 0",
+                lambda v: v > 0,
+            )
+            for i, v in enumerate(value)
+        )
+    g = _number(name, value, "> 0 (or three entries > 0)", lambda v: v > 0)
+    return (g, g, g)
+
+
+@dataclasses.dataclass(frozen=True)
+class LinearGrowth:
+    """Growth varying linearly in R from ``inner`` at ``inner_radius`` to ``outer`` at
+    ``outer_radius`` (each a scalar or a triple (g_r, g_theta, g_z), entries > 0); a picklable
+    callable R -> (g_r, g_theta, g_z) for :class:`Layer`.
+
+    >>> LinearGrowth(1.0, 2.0, 1.0, (1.2, 1.0, 1.0))(1.5)
+    (1.1, 1.0, 1.0)
+    """
+
+    inner_radius: float
+    outer_radius: float
+    inner: tuple[float, float, float] | float
+    outer: tuple[float, float, float] | float
+
+    def __post_init__(self):
+        a = _number("inner_radius", self.inner_radius, ">= 1", lambda v: v >= 1)
+        _number("outer_radius", self.outer_radius, f"> inner_radius = {a:g}", lambda v: v > a)
+        object.__setattr__(self, "inner", _triple("growth.inner", self.inner))
+        object.__setattr__(self, "outer", _triple("growth.outer", self.outer))
+
+    def __call__(self, R):
+        t = (np.asarray(R, float) - self.inner_radius) / (self.outer_radius - self.inner_radius)
+        out = tuple(gi + (go - gi) * t for gi, go in zip(self.inner, self.outer))
+        return tuple(float(x) for x in out) if np.ndim(t) == 0 else out
+
+
+@dataclasses.dataclass(frozen=True)
+class Layer:
+    """One layer of the wall.
+
+    Parameters
+    ----------
+    outer_radius : float
+        R_k / R_i > 1, the undeformed outer radius of the layer (its inner radius is the outer
+        radius of the layer inside it, or 1).
+    material : Material
+        The energy Omega(I1, I2, I4, I5, I6) in units of this layer's own shear modulus and
+        permittivity (default the ideal neo-Hookean dielectric).
+    shear_modulus, permittivity : float
+        mu_k / mu > 0 and eps_k / eps > 0 (default 1). The layer's energy is
+        mu_k Omega(F, D / sqrt(mu_k eps_k)), i.e. mu_k W + I5 / (2 eps_k) for an ideal dielectric.
+    growth : float, (g_r, g_theta, g_z) or callable
+        F_g = diag(g_r, g_theta, g_z), entries > 0: a scalar g (isotropic), three constants,
+        or a function R -> (g_r, g_theta, g_z), vectorised over an array R (graded growth).
+        A scalar is stored as the triple (g, g, g).
+    """
+
+    outer_radius: float
+    material: Material = dataclasses.field(default_factory=neo_hookean)
+    shear_modulus: float = 1.0
+    permittivity: float = 1.0
+    growth: Growth = 1.0
+
+    def __post_init__(self):
+        fix = lambda f, v: object.__setattr__(self, f, v)  # noqa: E731
+        fix("outer_radius", _number("outer_radius", self.outer_radius, "> 1", lambda v: v > 1))
+        if not isinstance(self.material, Material):
+            raise ParameterError(f"material = {self.material!r} is not a Material")
+        for f in ("shear_modulus", "permittivity"):
+            fix(f, _number(f, getattr(self, f), "0 < value < inf", lambda v: v > 0))
+        if not callable(self.growth):
+            fix("growth", _triple("growth", self.growth))
+
+    @property
+    def graded(self) -> bool:
+        """True when the growth is a function of R."""
+        return callable(self.growth)
+
+    def growth_at(self, R) -> np.ndarray:
+        """(g_r, g_theta, g_z) at R, shape (3,) + R.shape; ParameterError if an entry is not
+        finite and > 0 (a graded growth called once with the array, else point by point)."""
+        R = np.asarray(R, float)
+        if not self.graded:
+            return np.broadcast_to(
+                np.array(self.growth)[(...,) + (None,) * R.ndim], (3,) + R.shape
+            )
+        try:
+            g = np.asarray(self.growth(R), float)
+            g = np.broadcast_to(
+                g.reshape((3,) + (1,) * R.ndim) if g.shape == (3,) else g, (3,) + R.shape
+            )
+        except (TypeError, ValueError):
+            g = np.array([np.asarray(self.growth(x), float) for x in R.ravel()])
+            g = g.T.reshape((3,) + R.shape) if g.shape[-1:] == (3,) else None
+        if g is None or not np.all(np.isfinite(g) & (g > 0)):
+            raise ParameterError(
+                f"growth function of the layer with outer_radius = {self.outer_radius:g}"
+                " must return three finite entries > 0 (g_r, g_theta, g_z) at every R"
+            )
+        return g
+
+
+@dataclasses.dataclass(frozen=True)
+class Tube:
+    """A layered tube and its loads (units mu = eps = R_i = 1).
+
+    Parameters
+    ----------
+    layers : sequence of Layer
+        From the inner face outward, outer radii strictly increasing (the first starts at 1).
+    length : float
+        L / R_i > 0, the undeformed length (no effect on the base state).
+    stretch : float or None
+        Total axial stretch lambda_z = l / L > 0, growth included (default 1 when
+        ``axial_force`` is None). Give this or ``axial_force``, not both.
+    axial_force : float or None
+        The axial force applied at the ends, in units mu R_i^2, besides the pressure load on
+        closed ends: 0 for free ends. Then lambda_z is solved for; the wall's resultant is
+        N = axial_force + pi (P_i r_i^2 - P_o r_o^2) with closed ends, N = axial_force without.
+    voltage : float
+        Vbar = V / (R_N - R_i) sqrt(eps / mu) >= 0, R_N the outermost radius.
+    inner_pressure, outer_pressure : float
+        Follower pressures P_i, P_o in units mu (sigma_rr = -P_i on the inner face, -P_o on the
+        outer face; P_i > 0 inflates).
+    closed_ends : bool
+        The ends are capped, so the pressures load them: under force control they add to the
+        wall's axial force; at a prescribed stretch they change only the reported end force.
+
+    >>> tube = Tube((Layer(1.1, shear_modulus=10.0, growth=1.2), Layer(2.0)), voltage=0.3)
+    >>> tube.radii, tube.control
+    ((1.0, 1.1, 2.0), 'stretch')
+    """
+
+    layers: tuple[Layer, ...]
+    length: float = 1.0
+    stretch: float | None = None
+    axial_force: float | None = None
+    voltage: float = 0.0
+    inner_pressure: float = 0.0
+    outer_pressure: float = 0.0
+    closed_ends: bool = False
+
+    def __post_init__(self):
+        fix = lambda f, v: object.__setattr__(self, f, v)  # noqa: E731
+        layers = self.layers
+        if isinstance(layers, Layer):
+            layers = (layers,)
+        if not isinstance(layers, (list, tuple)) or not layers:
+            raise ParameterError(f"layers = {layers!r} is invalid; give at least one Layer")
+        inner = 1.0
+        for k, layer in enumerate(layers):
+            if not isinstance(layer, Layer):
+                raise ParameterError(f"layers[{k}] = {layer!r} is not a Layer")
+            if not layer.outer_radius > inner:
+                raise ParameterError(
+                    f"layers[{k}].outer_radius = {layer.outer_radius:g} is out of range;"
+                    f" valid range: > {inner:g}, the layer's inner radius (layers are listed"
+                    " from R = 1 outward, radii increasing)"
+                )
+            if layer.graded:
+                layer.growth_at(np.linspace(inner, layer.outer_radius, 17))
+            inner = layer.outer_radius
+        fix("layers", tuple(layers))
+        fix("length", _number("length", self.length, "0 < L < inf", lambda v: v > 0))
+        if self.axial_force is None:
+            stretch = 1.0 if self.stretch is None else self.stretch
+            fix("stretch", _number("stretch", stretch, "0 < lambda_z < inf", lambda v: v > 0))
+        elif self.stretch is not None:
+            raise ParameterError(
+                f"stretch = {self.stretch!r} and axial_force = {self.axial_force!r} are both"
+                " given; prescribe one of them"
+            )
+        else:
+            fix("axial_force", _number("axial_force", self.axial_force, "finite", lambda v: True))
+        if not isinstance(self.closed_ends, bool):
+            raise ParameterError(f"closed_ends = {self.closed_ends!r} is not true or false")
+        fix("voltage", _number("voltage", self.voltage, "0 <= Vbar < threshold", lambda v: v >= 0))
+        for f in ("inner_pressure", "outer_pressure"):
+            fix(f, _number(f, getattr(self, f), "finite (units mu)", lambda v: True))
+
+    @classmethod
+    def from_parameters(cls, params: TubeParameters) -> Tube:
+        """The one-layer tube of ``params`` (isotropic growth g, no pressure)."""
+        layer = Layer(params.outer_radius, params.material, growth=params.growth)
+        return cls((layer,), length=params.length, stretch=params.stretch, voltage=params.voltage)
+
+    @property
+    def radii(self) -> tuple[float, ...]:
+        """(1, R_1, ..., R_N): the undeformed faces and interfaces."""
+        return (1.0,) + tuple(layer.outer_radius for layer in self.layers)
+
+    @property
+    def outer_radius(self) -> float:
+        """R_N / R_i, the undeformed outer radius of the whole wall."""
+        return self.layers[-1].outer_radius
+
+    @property
+    def control(self) -> str:
+        """'stretch' (lambda_z prescribed) or 'force' (axial force prescribed)."""
+        return "stretch" if self.axial_force is None else "force"
+
+    @property
+    def physical_voltage(self) -> float:
+        """V in units sqrt(mu / eps) R_i: V = Vbar (R_N - 1)."""
+        return self.voltage * (self.outer_radius - 1.0)

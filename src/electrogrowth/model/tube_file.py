@@ -1,0 +1,248 @@
+"""Reading a tube file (TOML, stdlib ``tomllib``) into a layered :class:`~.layers.Tube`.
+
+The format (docs/derivation-layered.md, "The tube file"; example: examples/bilayer.toml)::
+
+    length = 3.0            # L / R_i
+    stretch = 1.0           # lambda_z; or axial_force = 0.0 instead (closed_ends = true/false)
+    voltage = 0.3           # Vbar = V / (R_o - R_i), R_o the outermost radius
+    inner_pressure = 0.0    # follower pressure on the inner face, units of mu (outer_pressure too)
+    [[layers]]              # from the inner face outward
+    outer_radius = 1.1
+    material = "gent"       # a built-in name (with its parameters, e.g. jm = 20), or
+                            # energy = "(I1 - 3)/2 + I5/2"
+    shear_modulus = 10.0    # mu_k / mu (default 1)
+    permittivity = 1.0      # eps_k / eps (default 1)
+    growth = 1.2            # g, or [g_r, g_theta, g_z], or {inner = ..., outer = ...} (linear)
+
+Every mistake is one :class:`~electrogrowth.errors.ConfigError` naming the file, the line and
+the key, e.g. ``tube.toml:9: layers.2.outer_radius: ... valid range: > 1.1 ...``. tomllib keeps
+no positions, so the line is found by scanning the text (:func:`line_of`).
+"""
+
+from __future__ import annotations
+
+import inspect
+import math
+import re
+import tomllib
+from pathlib import Path
+
+from ..errors import ConfigError, MaterialError, ParameterError
+from .layers import Layer, LinearGrowth, Tube
+from .materials import BUILTIN, Material, material_by_name
+
+TOP = (
+    "length",
+    "stretch",
+    "axial_force",
+    "voltage",
+    "inner_pressure",
+    "outer_pressure",
+    "closed_ends",
+    "layers",
+)
+LAYER = ("outer_radius", "material", "energy", "shear_modulus", "permittivity", "growth")
+
+
+def load_tube(path: str | Path) -> Tube:
+    """Read and validate a tube file; raise :class:`ConfigError` naming file, line and key."""
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise ConfigError(
+            (), f"cannot read the tube file: {exc.strerror}", source=str(path)
+        ) from None
+    except UnicodeDecodeError:
+        raise ConfigError((), "the tube file is not UTF-8 text", source=str(path)) from None
+    return parse_tube(text, source=str(path))
+
+
+def parse_tube(text: str, *, source: str = "<tube>") -> Tube:
+    """Validate the TOML ``text`` of a tube file (see the module docstring)."""
+    try:
+        raw = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        msg = str(exc)
+        hit = re.search(r"\(at line (\d+), column \d+\)", msg)
+        line = int(hit.group(1)) if hit else text.count("\n") + 1
+        reason = re.sub(r"\s*\(at (line \d+, column \d+|end of document)\)", "", msg)
+        raise ConfigError((), f"invalid TOML: {reason}", source=source, line=line) from None
+    try:
+        return tube_from_dict(raw)
+    except ConfigError as exc:
+        raise ConfigError(
+            exc.key, exc.reason, source=source, line=line_of(text, exc.key)
+        ) from None
+
+
+def tube_from_dict(raw: dict) -> Tube:
+    """The Tube of a parsed tube file; ConfigError with the key path (layers counted from 1)."""
+    for key in raw:
+        if key not in TOP:
+            raise ConfigError((key,), f"unknown key; a tube file takes {', '.join(TOP)}")
+    if "layers" not in raw:
+        raise ConfigError((), "missing [[layers]]: give at least one layer with outer_radius")
+    if not isinstance(raw["layers"], list) or not raw["layers"]:
+        raise ConfigError(("layers",), "expected one or more [[layers]] tables")
+    layers, inner = [], 1.0
+    for k, table in enumerate(raw["layers"], 1):
+        layer = _layer(table, ("layers", str(k)), inner)
+        layers.append(layer)
+        inner = max(inner, layer.outer_radius)
+    options = {}
+    for key in TOP[:-1]:
+        if key in raw:
+            value = raw[key]
+            if key == "closed_ends":
+                if not isinstance(value, bool):
+                    raise ConfigError((key,), f"expected true or false, got {_typename(value)}")
+            else:
+                value = _number(raw, (), key)
+            options[key] = value
+    return _checked(lambda: Tube(tuple(layers), **options), ())
+
+
+def _layer(table, where: tuple[str, ...], inner: float) -> Layer:
+    if not isinstance(table, dict):
+        raise ConfigError(where, f"expected a [[layers]] table, got {_typename(table)}")
+    name = table.get("material", "neo-hookean")
+    if not isinstance(name, str):
+        raise ConfigError(where + ("material",), f"expected a string, got {_typename(name)}")
+    if name not in BUILTIN:
+        raise ConfigError(
+            where + ("material",), f"unknown material {name!r}; choose {', '.join(BUILTIN)}"
+        )
+    params = tuple(inspect.signature(BUILTIN[name]).parameters)
+    for key in table:
+        if key not in LAYER + params:
+            extra = f" (and {', '.join(params)} for {name})" if params else ""
+            raise ConfigError(
+                where + (key,), f"unknown key; a layer takes {', '.join(LAYER)}{extra}"
+            )
+    if "outer_radius" not in table:
+        raise ConfigError(where, "missing outer_radius (R_k / R_i > 1)")
+    b = _number(table, where, "outer_radius")
+    if "energy" in table:
+        if "material" in table or any(p in table for p in params):
+            raise ConfigError(where + ("energy",), "give either material or energy, not both")
+        expr = table["energy"]
+        if not isinstance(expr, str):
+            raise ConfigError(where + ("energy",), f"expected a string, got {_typename(expr)}")
+        try:
+            material = Material(expr, expr)
+        except MaterialError as exc:
+            raise ConfigError(where + ("energy",), str(exc)) from None
+    else:
+        args = {p: _number(table, where, p) for p in params if p in table}
+        at = where + ((next(iter(args)),) if len(args) == 1 else ("material",))
+        material = _checked(lambda: material_by_name(name, **args), at)
+    fields = {"outer_radius": b, "material": material}
+    for key in ("shear_modulus", "permittivity"):
+        if key in table:
+            fields[key] = _number(table, where, key)
+    if "growth" in table:
+        fields["growth"] = _growth(table["growth"], where + ("growth",), inner, b)
+    return _checked(lambda: Layer(**fields), where)
+
+
+def _growth(value, where, inner: float, outer: float):
+    """g, [g_r, g_theta, g_z] or {inner = ..., outer = ...} (linear from R_{k-1} to R_k)."""
+    if isinstance(value, dict):
+        for key in value:
+            if key not in ("inner", "outer"):
+                raise ConfigError(where + (key,), "unknown key; graded growth takes inner, outer")
+        if set(value) != {"inner", "outer"}:
+            raise ConfigError(
+                where, "graded growth needs inner and outer (g or [g_r, g_theta, g_z])"
+            )
+        ends = [_growth(value[k], where + (k,), inner, outer) for k in ("inner", "outer")]
+        if not outer > inner:
+            raise ConfigError(where, f"the layer must end beyond R = {inner:g} for graded growth")
+        return _checked(lambda: LinearGrowth(inner, outer, *ends), where)
+    if isinstance(value, list):
+        if len(value) != 3:
+            raise ConfigError(
+                where, f"expected g or [g_r, g_theta, g_z], got {len(value)} entries"
+            )
+        return tuple(_num(v, where) for v in value)
+    return _num(value, where)
+
+
+def _checked(make, where):
+    """make(), a ParameterError turned into a ConfigError at the key it names."""
+    try:
+        return make()
+    except ParameterError as exc:
+        msg = str(exc)
+        hit = re.match(r"(?:layers\[(\d+)\]\.)?([a-z_]+)(?:\[\d+\])?\s*=", msg)
+        key = where
+        if hit and hit.group(1) is not None:
+            key = ("layers", str(int(hit.group(1)) + 1), hit.group(2))
+        elif hit and hit.group(2) in LAYER + TOP:
+            key = where + (hit.group(2),)
+        raise ConfigError(key, msg) from None
+
+
+# -- types -------------------------------------------------------------------------------------
+
+
+def _typename(v) -> str:
+    return {
+        bool: "a boolean",
+        int: "an integer",
+        float: "a number",
+        str: "a string",
+        list: "a list",
+        dict: "a table",
+    }.get(type(v), type(v).__name__)
+
+
+def _number(table, where, key) -> float:
+    return _num(table[key], where + (key,))
+
+
+def _num(v, path) -> float:
+    if isinstance(v, bool) or not isinstance(v, (int, float)):
+        raise ConfigError(path, f"expected a number, got {_typename(v)} {v!r}")
+    if not math.isfinite(v):
+        raise ConfigError(path, f"{v!r} is not a finite number")
+    return float(v)
+
+
+# -- line numbers -------------------------------------------------------------------------------
+
+_HEADER = re.compile(r"^\s*\[\[?\s*([A-Za-z0-9_.-]+)\s*\]\]?")
+_KEY = re.compile(r"^\s*([A-Za-z0-9_-]+)\s*=")
+
+
+def line_of(text: str, key: tuple[str, ...]) -> int | None:
+    """The line of ``key`` in the tube file ``text``: a top-level key, ``("layers", k, name)``
+    (the k-th ``[[layers]]`` table, from 1) or its table; None when absent."""
+    if not key:
+        return None
+    lines = text.splitlines()
+    if key[0] != "layers" or len(key) == 1:
+        for n, line in enumerate(lines, 1):
+            if _HEADER.match(line):
+                if key[0] == "layers" and _HEADER.match(line).group(1) == "layers":
+                    return n
+                break
+            if (hit := _KEY.match(line)) and hit.group(1) == key[0]:
+                return n
+        return None
+    count, start = 0, None
+    for n, line in enumerate(lines, 1):
+        head = _HEADER.match(line)
+        if head:
+            if start is not None:
+                break
+            if head.group(1) == "layers":
+                count += 1
+                if count == int(key[1]):
+                    start = n
+            continue
+        if start is not None and len(key) > 2 and (hit := _KEY.match(line)):
+            if hit.group(1) == key[2]:
+                return n
+    return start
