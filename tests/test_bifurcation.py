@@ -32,8 +32,9 @@ def test_surface_instability_limit():
     x = brentq(lambda x: x**3 + x**2 + 3 * x - 1, 0, 1)
     lam = x ** (2 / 3)
     assert abs(lam - 0.443746) < 1e-6
-    gaps = [critical_value(TubeParameters(3.0, 1.0), 0, n, "stretch").value - lam
-            for n in (20, 40)]
+    gaps = [
+        critical_value(TubeParameters(3.0, 1.0), 0, n, "stretch").value - lam for n in (20, 40)
+    ]
     assert 0 < gaps[1] < 2e-4
     assert 1.8 < gaps[0] / gaps[1] < 2.2  # O(1/n) approach from the stable side
 

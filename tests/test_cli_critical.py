@@ -37,8 +37,10 @@ def test_scan_reports_critical_mode_and_runners_up(capsys):
 
 
 def test_certify_agrees_with_collocation(capsys):
-    rec = _json(capsys, BASE + ["--solve-for", "stretch", "--voltage", "0.2", "--mode", "2", "1",
-                                "--certify"])
+    rec = _json(
+        capsys,
+        BASE + ["--solve-for", "stretch", "--voltage", "0.2", "--mode", "2", "1", "--certify"],
+    )
     assert rec["certified"] and rec["certification_difference"] < 1e-9
 
 
@@ -48,17 +50,20 @@ def test_text_output_names_mode(capsys):
     assert "g_cr = 1.2661115622" in out and "(m, n) = (0, 1)" in out
 
 
-@pytest.mark.parametrize("extra, needle", [
-    (["--solve-for", "growth", "--mode", "-1", "1"], "mode"),
-    (["--solve-for", "growth", "--mode", "0", "0"], "mode"),
-    (["--solve-for", "heat"], "solve-for"),
-    (["--solve-for", "growth", "--side", "extension"], "--side"),
-    (["--solve-for", "growth", "--voltage", "nan"], "nan"),
-    (["--solve-for", "growth", "--voltage", "-0.1"], "Vbar"),
-    (["--solve-for", "growth", "--rtol", "1"], "rtol"),
-    (["--solve-for", "stretch", "--mode", "0", "1", "--voltage", "5"], "threshold"),
-    (["--solve-for", "growth", "--method", "collocation"], "collocation"),
-])
+@pytest.mark.parametrize(
+    "extra, needle",
+    [
+        (["--solve-for", "growth", "--mode", "-1", "1"], "mode"),
+        (["--solve-for", "growth", "--mode", "0", "0"], "mode"),
+        (["--solve-for", "heat"], "solve-for"),
+        (["--solve-for", "growth", "--side", "extension"], "--side"),
+        (["--solve-for", "growth", "--voltage", "nan"], "nan"),
+        (["--solve-for", "growth", "--voltage", "-0.1"], "Vbar"),
+        (["--solve-for", "growth", "--rtol", "1"], "rtol"),
+        (["--solve-for", "stretch", "--mode", "0", "1", "--voltage", "5"], "threshold"),
+        (["--solve-for", "growth", "--method", "collocation"], "collocation"),
+    ],
+)
 def test_bad_input_is_one_line_exit_2(capsys, extra, needle):
     assert main(BASE + extra) == 2
     err = capsys.readouterr().err

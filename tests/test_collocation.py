@@ -81,8 +81,13 @@ def fixture_state(params: TubeParameters) -> FixtureState:
         return FixtureState(params, ri, ro, V / math.log(ro / ri))
 
     hom = math.sqrt(g**3 / lz)  # V = 0: homogeneous, lambda^2 lambda_z = g^3
-    ri = scipy.optimize.brentq(lambda x: float(state(x).sigma_rr(state(x).r_o)),
-                               0.3 * hom, 4 * hom, xtol=1e-15, rtol=1e-15)
+    ri = scipy.optimize.brentq(
+        lambda x: float(state(x).sigma_rr(state(x).r_o)),
+        0.3 * hom,
+        4 * hom,
+        xtol=1e-15,
+        rtol=1e-15,
+    )
     return state(ri)
 
 
@@ -91,11 +96,13 @@ def tube(**kw) -> TubeParameters:
 
 
 def critical(params, m, n, solve_for, bracket, nodes=24):
-    return col.critical_collocation(params, m, n, solve_for, bracket, nodes=nodes,
-                                    xtol=1e-15, base_state=fixture_state)
+    return col.critical_collocation(
+        params, m, n, solve_for, bracket, nodes=nodes, xtol=1e-15, base_state=fixture_state
+    )
 
 
 # -- exact solution: homogeneously compressed neo-Hookean tube, V = 0, g = 1 ---------------
+
 
 def bessel_determinant(lz, m, n, Ro, L):
     """det of the traction matrix of the exact incremental solution.
@@ -122,10 +129,13 @@ def bessel_determinant(lz, m, n, Ro, L):
                 elif fam == 2:
                     U, dU, P = (m / r * Z[0], -Z[1], 0.0), (m * dZr, -Z[2], 0.0), 0.0
                 else:
-                    U = (k * Z[1], -m * k / r * Z[0], -s**2 * Z[0])
-                    dU, P = (k * Z[2], -m * k * dZr, -s**2 * Z[1]), 0.0
-                rows += [2 * lam2 * dU[0] - P, lam2 * (dU[1] - (m * U[0] + U[1]) / r),
-                         lam2 * (dU[2] - k * U[0])]
+                    U = (k * Z[1], -m * k / r * Z[0], -(s**2) * Z[0])
+                    dU, P = (k * Z[2], -m * k * dZr, -(s**2) * Z[1]), 0.0
+                rows += [
+                    2 * lam2 * dU[0] - P,
+                    lam2 * (dU[1] - (m * U[0] + U[1]) / r),
+                    lam2 * (dU[2] - k * U[0]),
+                ]
             cols.append(rows)
     A = np.array(cols).T
     if m == 0:  # torsion (psi, S_rth) decouples
@@ -135,6 +145,7 @@ def bessel_determinant(lz, m, n, Ro, L):
 
 # -- building blocks ------------------------------------------------------------------------
 
+
 def test_chebyshev_blocks_are_exact_on_polynomials():
     x, D = col.chebyshev_lobatto(13)
     assert np.allclose(D @ x**12, 12 * x**11, atol=1e-11)
@@ -142,8 +153,9 @@ def test_chebyshev_blocks_are_exact_on_polynomials():
     assert np.allclose(P @ x[1:-1] ** 10, x**10, atol=1e-13)
 
 
-@pytest.mark.parametrize("material", [neo_hookean(), mooney_rivlin(0.6), gent(5.0)],
-                         ids=lambda mat: mat.name)
+@pytest.mark.parametrize(
+    "material", [neo_hookean(), mooney_rivlin(0.6), gent(5.0)], ids=lambda mat: mat.name
+)
 def test_full_moduli_obey_the_stress_relation(material):
     """A_piqj - A_ipqj = tau_pq delta_ij - tau_iq delta_pj (docs/conventions.md)."""
     l2, l3, d = 1.3, 0.8, 0.6
@@ -173,8 +185,9 @@ def test_fluxes_match_the_paper_component_formulas(rng):
     """The generic contraction against paper eqs. incremental-constitutive1-2 written out,
     for a non-ideal Mooney-Rivlin-type energy under voltage (all 23 moduli non-zero), with
     random real amplitudes."""
-    energy = (0.4 * (I1 - 3) + 0.1 * (I2 - 3) + 0.3 * I4 + 0.25 * I5 + 0.1 * I6
-              + 0.05 * (I1 - 3) * I5)
+    energy = (
+        0.4 * (I1 - 3) + 0.1 * (I2 - 3) + 0.3 * I4 + 0.25 * I5 + 0.1 * I6 + 0.05 * (I1 - 3) * I5
+    )
     params = tube(growth=1.1, stretch=0.9, voltage=0.5, material=Material("nonideal", energy))
     state, m, n, nn = fixture_state(params), 3, 2, 12
     grid = col._grid(state, n, nn)
@@ -189,16 +202,16 @@ def test_fluxes_match_the_paper_component_formulas(rng):
     assert all(np.all(abs(x) > 1e-3) for x in M.values())
     p = state.pressure(R)
     # real cos/sin amplitudes; the complex ones carry cc -> 1, sc, cs -> -i, ss -> -1
-    L11, L22, L33 = D @ Ur, (Ur + m * Ut) / r, k * Uz                   # cc
+    L11, L22, L33 = D @ Ur, (Ur + m * Ut) / r, k * Uz  # cc
     L12, L21, L32, L23 = -(m * Ur + Ut) / r, D @ Ut, -m * Uz / r, -k * Ut  # sc, sc, ss, ss
-    L13, L31 = -k * Ur, D @ Uz                                          # cs
-    E1, E2, E3 = -(D @ Phi), m * Phi / r, k * Phi                       # cc, sc, cs
+    L13, L31 = -k * Ur, D @ Uz  # cs
+    E1, E2, E3 = -(D @ Phi), m * Phi / r, k * Phi  # cc, sc, cs
     D1 = (E1 - M["G111"] * L11 - M["G221"] * L22 - M["G331"] * L33) / M["K11"]
     D2 = (E2 - M["G122"] * (L12 + L21)) / M["K22"]
     D3 = (E3 - M["G133"] * (L13 + L31)) / M["K33"]
-    Srr = ((M["A1111"] + p) * L11 + M["A1122"] * L22 + M["A1133"] * L33 + M["G111"] * D1 - P)
-    Stt = (M["A1122"] * L11 + (M["A2222"] + p) * L22 + M["A2233"] * L33 + M["G221"] * D1 - P)
-    Szz = (M["A1133"] * L11 + M["A2233"] * L22 + (M["A3333"] + p) * L33 + M["G331"] * D1 - P)
+    Srr = (M["A1111"] + p) * L11 + M["A1122"] * L22 + M["A1133"] * L33 + M["G111"] * D1 - P
+    Stt = M["A1122"] * L11 + (M["A2222"] + p) * L22 + M["A2233"] * L33 + M["G221"] * D1 - P
+    Szz = M["A1133"] * L11 + M["A2233"] * L22 + (M["A3333"] + p) * L33 + M["G331"] * D1 - P
     Srt = M["A1212"] * L21 + (M["A1221"] + p) * L12 + M["G122"] * D2
     Str = M["A2121"] * L12 + (M["A1221"] + p) * L21 + M["G122"] * D2
     Srz = M["A1313"] * L31 + (M["A1331"] + p) * L13 + M["G133"] * D3
@@ -206,9 +219,17 @@ def test_fluxes_match_the_paper_component_formulas(rng):
     Stz = M["A2323"] * L32 + (M["A2332"] + p) * L23
     Szt = M["A3232"] * L23 + (M["A2332"] + p) * L32
     cc, sc, ss = 1, -1j, -1
-    expect = {(0, 0): Srr * cc, (1, 1): Stt * cc, (2, 2): Szz * cc, (0, 1): Srt * sc,
-              (1, 0): Str * sc, (0, 2): Srz * sc, (2, 0): Szr * sc, (1, 2): Stz * ss,
-              (2, 1): Szt * ss}
+    expect = {
+        (0, 0): Srr * cc,
+        (1, 1): Stt * cc,
+        (2, 2): Szz * cc,
+        (0, 1): Srt * sc,
+        (1, 0): Str * sc,
+        (0, 2): Srz * sc,
+        (2, 0): Szr * sc,
+        (1, 2): Stz * ss,
+        (2, 1): Szt * ss,
+    }
     for (a, b), want in expect.items():
         assert np.allclose(S[a, b], want, rtol=1e-12, atol=1e-12 * abs(Srr).max()), (a, b)
     for got, want in zip(Dq, (D1 * cc, D2 * sc, D3 * sc)):
@@ -223,7 +244,7 @@ def test_maxwell_rows_annihilate_the_exact_potential(bessel):
     grid = col._grid(state, n, nn)
     v = np.zeros(5 * nn - 2)
     v[col._layout(nn)["Phi"]] = bessel(m, grid.kh * grid.rh, 0)
-    rows = col.collocation_matrix(state, m, n, nodes=nn)[3 * nn + 1:4 * nn - 1]  # Maxwell
+    rows = col.collocation_matrix(state, m, n, nodes=nn)[3 * nn + 1 : 4 * nn - 1]  # Maxwell
     assert abs(rows @ v).max() < 1e-10 * abs(v).max() * abs(rows).max()
 
 
@@ -237,11 +258,16 @@ def test_module_is_independent_of_the_stroh_engine():
 
 # -- stability of the unloaded tube, no spurious pressure mode -------------------------------
 
+
 @pytest.mark.parametrize("Ro, L", [(1.4, 1.0), (2.0, 5.0), (1.1, 10.0)])
 def test_unloaded_tube_is_stable_for_every_mode(Ro, L):
     state = fixture_state(tube(outer_radius=Ro, length=L))
-    f = [col.collocation_target(state, m, n, nodes=nodes)
-         for m in (0, 1, 2, 4, 7) for n in (1, 2, 4, 8, 16) for nodes in (8, 21)]
+    f = [
+        col.collocation_target(state, m, n, nodes=nodes)
+        for m in (0, 1, 2, 4, 7)
+        for n in (1, 2, 4, 8, 16)
+        for nodes in (8, 21)
+    ]
     assert min(f) > 0
 
 
@@ -249,24 +275,28 @@ def test_no_spurious_pressure_mode():
     """sigma_min of the unloaded matrix stays O(1) as nodes grow (P_N - P_{N-2}). With P on
     every node and tr L = 0 imposed at the faces it fell like nodes^-2 (8e-4 -> 2e-5)."""
     state = fixture_state(tube(outer_radius=2.0, voltage=0.5))
-    smin = [np.linalg.svd(col.collocation_matrix(state, 2, 1, nodes=N), compute_uv=False)[-1]
-            for N in (10, 20, 40, 60)]
+    smin = [
+        np.linalg.svd(col.collocation_matrix(state, 2, 1, nodes=N), compute_uv=False)[-1]
+        for N in (10, 20, 40, 60)
+    ]
     assert min(smin) > 0.02
     assert smin[0] / smin[-1] < 3
 
 
 # -- exactness: the Bessel solution of the homogeneous tube ---------------------------------
 
-@pytest.mark.parametrize("m, n, guess", [(0, 1, 0.686344), (1, 1, 0.793122),
-                                         (2, 1, 0.802480), (3, 2, 0.617205)])
+
+@pytest.mark.parametrize(
+    "m, n, guess", [(0, 1, 0.686344), (1, 1, 0.793122), (2, 1, 0.802480), (3, 2, 0.617205)]
+)
 def test_matches_exact_bessel_solution(m, n, guess):
     bracket = (guess - 0.005, guess + 0.005)
-    exact = scipy.optimize.brentq(bessel_determinant, *bracket, args=(m, n, 1.5, 3.0),
-                                  xtol=1e-15)
+    exact = scipy.optimize.brentq(bessel_determinant, *bracket, args=(m, n, 1.5, 3.0), xtol=1e-15)
     assert critical(tube(), m, n, "stretch", bracket) == pytest.approx(exact, abs=1e-10)
 
 
 # -- spectral convergence -------------------------------------------------------------------
+
 
 def test_spectral_convergence_with_voltage_and_growth():
     """Critical growth of mode (2, 1) at Vbar = 0.6 (inhomogeneous state): successive
@@ -282,6 +312,7 @@ def test_spectral_convergence_with_voltage_and_growth():
 
 # -- known limits ---------------------------------------------------------------------------
 
+
 def test_biot_half_space_cubic():
     roots = np.roots([1, 1, 3, -1])
     x = roots[abs(roots.imag) < 1e-12].real[0]
@@ -289,17 +320,20 @@ def test_biot_half_space_cubic():
     assert x ** (2 / 3) == pytest.approx(HALF_SPACE, abs=1e-14)
 
 
-@pytest.mark.parametrize("n1, nodes, err1, tol", [
-    (5, 40, 1.29e-3, 1e-4),
-    pytest.param(10, 60, 6.85e-4, 3e-5, marks=pytest.mark.slow)])
+@pytest.mark.parametrize(
+    "n1, nodes, err1, tol",
+    [(5, 40, 1.29e-3, 1e-4), pytest.param(10, 60, 6.85e-4, 3e-5, marks=pytest.mark.slow)],
+)
 def test_thick_tube_short_wave_limit_is_the_surface_instability(n1, nodes, err1, tol):
     """Rbar_o = 2, V = 0, g = 1: the state is homogeneous uniaxial compression, lambda_r =
     lambda_th = lambda_z^{-1/2}, so lambda_z / lambda_r = lambda_z^{3/2} must reach 0.295598.
     The first mode (largest lambda_z) sits on the convex outer face and approaches from above
     like 1/n (n1 and 2 n1); its inner-face twin lies below 0.443746."""
     params = tube(outer_radius=2.0, length=1.0)
-    lz = {n: critical(params, 0, n, "stretch", (HALF_SPACE + 1e-6, 0.447), nodes=nodes)
-          for n in (n1, 2 * n1)}
+    lz = {
+        n: critical(params, 0, n, "stretch", (HALF_SPACE + 1e-6, 0.447), nodes=nodes)
+        for n in (n1, 2 * n1)
+    }
     err = [lz[n] - HALF_SPACE for n in lz]
     assert err[0] == pytest.approx(err1, rel=0.01)
     assert 1.8 < err[0] / err[1] < 2.2
@@ -317,20 +351,28 @@ def test_euler_buckling_of_a_slender_tube():
     Ro, errors = 1.5, []
     for L in (20.0, 40.0, 80.0):
         guess = math.pi**2 * (Ro**2 + 1) / (4 * L**2)
-        lz = critical(tube(outer_radius=Ro, length=L), 1, 1, "stretch",
-                      (1 - 2 * guess, 1 - 0.5 * guess), nodes=16)
+        lz = critical(
+            tube(outer_radius=Ro, length=L),
+            1,
+            1,
+            "stretch",
+            (1 - 2 * guess, 1 - 0.5 * guess),
+            nodes=16,
+        )
         euler = math.pi**2 * (Ro**2 + 1) / (4 * (lz * L) ** 2)
         errors.append(abs((1 - lz) / euler - 1))
     assert errors[-1] < 5e-3
     assert all(3.5 < a / b < 4.5 for a, b in zip(errors, errors[1:]))
-    mode = col.mode_shape_collocation(fixture_state(tube(outer_radius=Ro, length=80.0,
-                                                         stretch=lz)), 1, 1, nodes=16)
+    mode = col.mode_shape_collocation(
+        fixture_state(tube(outer_radius=Ro, length=80.0, stretch=lz)), 1, 1, nodes=16
+    )
     # rigid-section bending u = w(z) e_x: U_th = -U_r, uniform through the wall
     assert np.allclose(mode["U_th"], -mode["U_r"], atol=0.01)
     assert np.allclose(abs(mode["U_r"]), 1, atol=0.01)
 
 
 # -- isotropic growth is a rescaling --------------------------------------------------------
+
 
 def test_growth_is_a_rescaling_of_the_target():
     """(g, lambda_z, Vbar) and (1, lambda_z / g, Vbar / g): same tube scaled by g; the
@@ -351,6 +393,7 @@ def test_growth_is_a_rescaling_of_the_critical_value():
 
 # -- the base-state contract of electrogrowth.basestate.tube ----------------------------------
 
+
 @pytest.mark.slow
 def test_agrees_with_the_tube_base_state():
     params = tube(outer_radius=1.6, length=4.0, growth=1.1, voltage=0.5)
@@ -369,6 +412,7 @@ def test_certifies_the_impedance_engine(m, n, bracket):
 
 
 # -- failures -------------------------------------------------------------------------------
+
 
 def test_failures_are_named():
     with pytest.raises(NoBifurcationFound, match="widen or move the bracket"):

@@ -21,11 +21,9 @@ from electrogrowth.shapes.mode_shape import (
 CASES = {
     "elastic_m0_n1": (TubeParameters(1.4, 1.0), 0, 1, "stretch"),
     "voltage_m0_n1": (TubeParameters(1.4, 1.0, voltage=0.6), 0, 1, "growth"),
-    "grown_voltage_m2_n1": (TubeParameters(1.4, 1.0, growth=1.1, voltage=0.3), 2, 1,
-                            "stretch"),
+    "grown_voltage_m2_n1": (TubeParameters(1.4, 1.0, growth=1.1, voltage=0.3), 2, 1, "stretch"),
     "grown_m5_n1": (TubeParameters(1.4, 1.0, stretch=1.1), 5, 1, "growth"),
-    "grown_voltage_m5_n7": (TubeParameters(1.4, 1.0, stretch=1.1, voltage=0.4), 5, 7,
-                            "growth"),
+    "grown_voltage_m5_n7": (TubeParameters(1.4, 1.0, stretch=1.1, voltage=0.4), 5, 7, "growth"),
 }
 _CRITICAL = {}
 
@@ -46,9 +44,13 @@ def stroh_residual(shape: ModeShape) -> np.ndarray:
     h = R[1] - R[0]
     d = (-eta[:, 4:] + 8 * eta[:, 3:-1] - 8 * eta[:, 1:-3] + eta[:, :-4]) / (12 * h)
     b = shape.params.growth**3 / shape.params.stretch  # r dr/dR = b R
-    rhs = np.stack([b * x / float(state.radius(x)) ** 2
-                    * stroh_at(state, x, shape.m, shape.k) @ eta[:, j]
-                    for j, x in enumerate(R[2:-2], start=2)], axis=1)
+    rhs = np.stack(
+        [
+            b * x / float(state.radius(x)) ** 2 * stroh_at(state, x, shape.m, shape.k) @ eta[:, j]
+            for j, x in enumerate(R[2:-2], start=2)
+        ],
+        axis=1,
+    )
     return np.abs(d - rhs).max(axis=1) / np.abs(rhs).max(axis=1)
 
 
@@ -79,8 +81,10 @@ def test_normalisation_and_boundary_conditions(name, method):
 @pytest.mark.parametrize("method", ["impedance", "collocation"])
 def test_shape_solves_the_stroh_system_to_fourth_order(method):
     """The residual of d eta/dr = G eta / r falls like h^4 (the finite differences)."""
-    res = [stroh_residual(mode_shape(critical("grown_voltage_m5_n7"), method=method,
-                                     points=p)).max() for p in (201, 401)]
+    res = [
+        stroh_residual(mode_shape(critical("grown_voltage_m5_n7"), method=method, points=p)).max()
+        for p in (201, 401)
+    ]
     assert res[1] < 5e-6
     assert 3.6 < np.log2(res[0] / res[1]) < 4.6
 
@@ -136,8 +140,15 @@ def test_long_waves_are_benign_both_ways():
     shape = mode_shape(critical("grown_voltage_m2_n1"))
     state = solve_base_state(shape.params)
     z = impedance_profile(state, shape.m, shape.k)
-    U_o = transport(state, shape.m, shape.k, z, shape.eta[:4, 0],
-                    (1.0, shape.params.outer_radius), [shape.params.outer_radius])[:, -1]
+    U_o = transport(
+        state,
+        shape.m,
+        shape.k,
+        z,
+        shape.eta[:4, 0],
+        (1.0, shape.params.outer_radius),
+        [shape.params.outer_radius],
+    )[:, -1]
     assert np.abs(U_o - shape.eta[:4, -1]).max() < 1e-8
 
 
@@ -152,8 +163,9 @@ def test_inner_face_mode_and_fallback_at_a_pole():
     assert imp.route == "impedance"
     assert imp.R[np.argmax(np.abs(imp.U_r))] < 1.1 and abs(imp.U_r[-1]) < 1e-5  # inner face
     assert np.abs(imp.eta[:3] - col.eta[:3]).max() < 1e-5  # rests on a tail ~1e-7
-    near = mode_shape((dataclasses.replace(params, stretch=crit.value - 5e-5), 0, 15),
-                      points=41, nodes=60)
+    near = mode_shape(
+        (dataclasses.replace(params, stretch=crit.value - 5e-5), 0, 15), points=41, nodes=60
+    )
     assert near.route == "collocation" and "pole" in near.note
     assert np.abs(near.eta[:3] - col.eta[:3]).max() < 1e-3
 
@@ -190,6 +202,9 @@ def test_plot_mode_shape():
     fig = plot_mode_shape(shape)
     left, right = fig.axes
     assert [line.get_label() for line in left.get_lines()[:3]] == [
-        r"$U_r$", r"$U_\theta$", r"$U_z$"]
+        r"$U_r$",
+        r"$U_\theta$",
+        r"$U_z$",
+    ]
     assert "(5, 7)" in fig._suptitle.get_text()
     assert np.allclose(right.get_lines()[0].get_ydata(), shape.Phi)

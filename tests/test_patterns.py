@@ -63,8 +63,11 @@ def test_m_lobes_around_and_n_half_waves_along(m, n):
     c, s_ = np.cos(shape.k * z), np.sin(shape.k * z)
     u = (U[0] * np.cos(m * th) * c, U[1] * np.sin(m * th) * c, U[2] * np.cos(m * th) * s_)
     rr = shape.r[-1] + 0.05 * u[0]
-    expect = (rr * np.cos(th) - 0.05 * u[1] * np.sin(th),
-              rr * np.sin(th) + 0.05 * u[1] * np.cos(th), z + 0.05 * u[2])
+    expect = (
+        rr * np.cos(th) - 0.05 * u[1] * np.sin(th),
+        rr * np.sin(th) + 0.05 * u[1] * np.cos(th),
+        z + 0.05 * u[2],
+    )
     assert np.allclose((s.x[i, j], s.y[i, j], s.z[i, j]), expect, rtol=0, atol=1e-14)
 
 
@@ -105,8 +108,10 @@ def test_vtk_round_trip(tmp_path):
         assert data[key].shape == (mesh.points.shape[0],)
     # every hexahedron has positive volume (VTK node order)
     p = mesh.points[cells]
-    assert np.all(np.einsum("ij,ij->i", np.cross(p[:, 1] - p[:, 0], p[:, 3] - p[:, 0]),
-                            p[:, 4] - p[:, 0]) > 0)
+    assert np.all(
+        np.einsum("ij,ij->i", np.cross(p[:, 1] - p[:, 0], p[:, 3] - p[:, 0]), p[:, 4] - p[:, 0])
+        > 0
+    )
     # the displacement at some points is the analytic field
     for idx in (0, 777, 1234, mesh.points.shape[0] - 1):
         x, y, z = mesh.points[idx]
@@ -119,11 +124,13 @@ def test_vtk_round_trip(tmp_path):
         ur = Ur * np.cos(m * th) * np.cos(k * z)
         ut = Ut * np.sin(m * th) * np.cos(k * z)
         uz = Uz * np.cos(m * th) * np.sin(k * z)
-        expect = a * np.array([ur * np.cos(th) - ut * np.sin(th),
-                               ur * np.sin(th) + ut * np.cos(th), uz])
+        expect = a * np.array(
+            [ur * np.cos(th) - ut * np.sin(th), ur * np.sin(th) + ut * np.cos(th), uz]
+        )
         assert np.allclose(data["displacement"][idx], expect, rtol=0, atol=1e-12)
         assert data["potential"][idx] == pytest.approx(
-            a * Phi * np.cos(m * th) * np.cos(k * z), abs=1e-12)
+            a * Phi * np.cos(m * th) * np.cos(k * z), abs=1e-12
+        )
 
 
 def test_wall_mesh_defaults_and_bad_inputs(tmp_path, monkeypatch):
@@ -145,6 +152,7 @@ def test_wall_mesh_defaults_and_bad_inputs(tmp_path, monkeypatch):
 
 # -- the command line ------------------------------------------------------------------------
 
+
 def run(argv) -> int:
     parser = argparse.ArgumentParser()
     configure_pattern(parser)
@@ -154,10 +162,30 @@ def run(argv) -> int:
 def test_cli_one_mode_writes_everything(tmp_path, capsys):
     pytest.importorskip("meshio")
     out = tmp_path / "out"
-    status = run(["--solve-for", "stretch", "--outer-radius", "1.4", "--growth", "1.1",
-                  "--voltage", "0.3", "--mode", "2", "1", "--amplitude", "0.08",
-                  "--points", "41", "--out", str(out), "--vtk", str(tmp_path / "w.vtu"),
-                  "--json"])
+    status = run(
+        [
+            "--solve-for",
+            "stretch",
+            "--outer-radius",
+            "1.4",
+            "--growth",
+            "1.1",
+            "--voltage",
+            "0.3",
+            "--mode",
+            "2",
+            "1",
+            "--amplitude",
+            "0.08",
+            "--points",
+            "41",
+            "--out",
+            str(out),
+            "--vtk",
+            str(tmp_path / "w.vtu"),
+            "--json",
+        ]
+    )
     assert status == 0
     rec = json.loads(capsys.readouterr().out)
     assert (rec["m"], rec["n"], rec["route"]) == (2, 1, "impedance")
@@ -171,21 +199,40 @@ def test_cli_one_mode_writes_everything(tmp_path, capsys):
 
 
 def test_cli_scan_text(capsys):
-    status = run(["--solve-for", "growth", "--outer-radius", "1.4", "--stretch", "1.1",
-                  "--voltage", "0.4", "--m-max", "2", "--n-max", "2", "--points", "21"])
+    status = run(
+        [
+            "--solve-for",
+            "growth",
+            "--outer-radius",
+            "1.4",
+            "--stretch",
+            "1.1",
+            "--voltage",
+            "0.4",
+            "--m-max",
+            "2",
+            "--n-max",
+            "2",
+            "--points",
+            "21",
+        ]
+    )
     assert status == 0
     text = capsys.readouterr().out
     assert text.startswith("g_cr = 1.3999") and "mode (m, n) = (0, 1)" in text
     assert "mode shape by impedance" in text
 
 
-@pytest.mark.parametrize("extra, message", [
-    (["--amplitude", "-1"], "amplitude"),
-    (["--vtk", "wall.txt"], ".vtu"),
-    (["--side", "extension"], "--side"),
-    (["--points", "1"], "points"),
-    (["--mode", "-1", "1"], "mode"),
-])
+@pytest.mark.parametrize(
+    "extra, message",
+    [
+        (["--amplitude", "-1"], "amplitude"),
+        (["--vtk", "wall.txt"], ".vtu"),
+        (["--side", "extension"], "--side"),
+        (["--points", "1"], "points"),
+        (["--mode", "-1", "1"], "mode"),
+    ],
+)
 def test_cli_bad_input_is_a_parameter_error(extra, message):
     base = ["--solve-for", "growth", "--outer-radius", "1.4", "--mode", "0", "1"]
     if "--mode" in extra:
@@ -198,11 +245,25 @@ def test_cli_without_meshio_fails_before_computing(monkeypatch, tmp_path):
     import importlib.util
 
     real = importlib.util.find_spec
-    monkeypatch.setattr(importlib.util, "find_spec",
-                        lambda name, *a: None if name == "meshio" else real(name, *a))
+    monkeypatch.setattr(
+        importlib.util, "find_spec", lambda name, *a: None if name == "meshio" else real(name, *a)
+    )
     with pytest.raises(MissingDependencyError, match="meshio"):
-        run(["--solve-for", "growth", "--outer-radius", "1.4", "--mode", "0", "1",
-             "--vtk", str(tmp_path / "w.vtu"), "--out", str(tmp_path / "out")])
+        run(
+            [
+                "--solve-for",
+                "growth",
+                "--outer-radius",
+                "1.4",
+                "--mode",
+                "0",
+                "1",
+                "--vtk",
+                str(tmp_path / "w.vtu"),
+                "--out",
+                str(tmp_path / "out"),
+            ]
+        )
     assert not (tmp_path / "out").exists()
 
 
@@ -210,7 +271,17 @@ def test_cli_help_names_every_option():
     parser = argparse.ArgumentParser()
     configure_pattern(parser)
     text = parser.format_help()
-    for option in ("--solve-for", "--side", "--mode", "--amplitude", "--out", "--vtk",
-                   "--json", "--method", "--outer-radius", "--material"):
+    for option in (
+        "--solve-for",
+        "--side",
+        "--mode",
+        "--amplitude",
+        "--out",
+        "--vtk",
+        "--json",
+        "--method",
+        "--outer-radius",
+        "--material",
+    ):
         assert option in text
     assert "two_Riccati" in text

@@ -25,12 +25,14 @@ def _brute(params, solve_for, modes, side=None):
     return sorted(out, reverse=(side == "compression"))
 
 
-@pytest.mark.parametrize("solve_for, side", [("growth", None), ("voltage", None),
-                                             ("stretch", "compression")])
+@pytest.mark.parametrize(
+    "solve_for, side", [("growth", None), ("voltage", None), ("stretch", "compression")]
+)
 def test_scan_equals_brute_force(solve_for, side):
     params = P if solve_for != "voltage" else TubeParameters(1.4, 1.0)
-    res = scan_modes(params, solve_for, side=side,
-                     options=ScanOptions((0, 3), (1, 3), top=3, extend=False))
+    res = scan_modes(
+        params, solve_for, side=side, options=ScanOptions((0, 3), (1, 3), top=3, extend=False)
+    )
     brute = _brute(params, solve_for, mode_grid((0, 3), (1, 3)), side)
     value, m, n = brute[0]
     assert (res.critical.m, res.critical.n) == (m, n)
@@ -49,26 +51,54 @@ def test_range_is_widened_while_the_optimum_sits_on_its_edge():
 
 def test_extension_finds_bifurcation_before_the_threshold():
     """Vbar = 0.4: finite modes wrinkle just before lambda_z reaches the threshold 2.5117;
-    the outer face's short-wave limit (half-space) comes before them all."""
+    the outer face's short-wave limit (half-space) comes before them all.
+
+    The prismatic family (n = 0, scanned by default) now comes first among the finite
+    modes: its probe (15, 0) beats the wrinkles, the m range is widened twice and
+    (31, 0) wins at lambda_z = 2.476792462071, below the best wrinkle (0, 1) at
+    2.496809788768 (the wrinkle-only scan). Checked by the prismatic single-mode solver
+    by both methods: impedance 2.47679246207104, collocation (full march)
+    2.47679246207128.
+    """
+    wrinkles = ScanOptions((0, 3), (1, 2), surface=False, prismatic=False, torsional=False)
+    only = scan_modes(P, "stretch", side="extension", options=wrinkles).critical
+    assert (only.m, only.n, only.family) == (0, 1, "wrinkle")
+    assert 2.49 < only.value < 2.5117
     finite = ScanOptions((0, 3), (1, 2), surface=False)
     res = scan_modes(P, "stretch", side="extension", options=finite)
     assert res.critical.kind == "bifurcation"
-    assert 2.49 < res.critical.value < 2.5117
+    assert (res.critical.m, res.critical.n, res.critical.family) == (31, 0, "prismatic")
+    assert 2.4559 < res.critical.value < only.value
     direct = critical_value(P, res.critical.m, res.critical.n, "stretch", side="extension")
     assert res.critical.value == pytest.approx(direct.value, rel=1e-12)
+    v, w = direct.value, 1e-6
+    col = critical_value(
+        P, 31, 0, "stretch", side="extension", method="collocation", bracket=(v - w, v + w)
+    )
+    assert col.value == pytest.approx(v, abs=1e-10)
     full = scan_modes(P, "stretch", side="extension", options=ScanOptions((0, 3), (1, 2)))
     limit = short_wave_limit(P, "stretch", side="extension")
     assert full.critical.kind == "surface" and full.critical.value == limit.value
     assert (full.critical.face, full.critical.psi) == ("outer", 0.0)
     assert full.critical.value < res.critical.value  # before every finite mode
     first = full.runners_up[0]  # the best finite mode follows
-    assert (first.m, first.n, first.value) == (res.critical.m, res.critical.n,
-                                               res.critical.value)
+    assert (first.m, first.n, first.value, first.family) == (
+        res.critical.m,
+        res.critical.n,
+        res.critical.value,
+        res.critical.family,
+    )
 
 
-@pytest.mark.parametrize("kw, needle", [
-    (dict(m_range=(-1, 3)), "m range"), (dict(n_range=(0, 3)), "n range"),
-    (dict(n_range=(4, 2)), "n range"), (dict(top=0), "top = 0 is invalid")])
+@pytest.mark.parametrize(
+    "kw, needle",
+    [
+        (dict(m_range=(-1, 3)), "m range"),
+        (dict(n_range=(0, 3)), "n range"),
+        (dict(n_range=(4, 2)), "n range"),
+        (dict(top=0), "top = 0 is invalid"),
+    ],
+)
 def test_bad_ranges(kw, needle):
     with pytest.raises(ParameterError, match=needle):
         scan_modes(P, "growth", options=ScanOptions(**kw))

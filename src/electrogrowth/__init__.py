@@ -38,7 +38,7 @@ from .errors import (
     UsageError,
 )
 from .incremental.accuracy import Accuracy
-from .incremental.targets import Method
+from .incremental.targets import Family, Method
 from .model.layers import Layer, LinearGrowth, Tube
 from .model.materials import (
     I1,
@@ -94,6 +94,7 @@ __all__ = [
     "Curve",
     "critical_curve",
     "Method",
+    "Family",
     "Accuracy",
     "Kind",
     "Status",

@@ -1,7 +1,10 @@
 """Critical growth factor, axial stretch or voltage of one wrinkling mode (m, n).
 
 The tube wrinkles in mode (m, n), k = n pi / (lambda_z L), when the incremental problem
-has a non-trivial solution: det z(r_o) = 0 (paper eq. dispersion-eq). We use the pole-free
+has a non-trivial solution: det z(r_o) = 0 (paper eq. dispersion-eq). A mode belongs to a
+family (incremental.targets.Family): the paper's ansatz ("wrinkle", m >= 0, n >= 1, the
+torsion excluded at m = 0), "prismatic" (n = 0, m >= 2) or "torsional" (m = 0, n >= 1);
+each has its own block of the incremental problem. We use the pole-free
 target f of the impedance kernel (impedance.py) or of the collocation method
 (collocation.py); both change sign exactly at bifurcation. Which sign is stable is read
 off the unloaded tube (g = 1, lambda_z = 1, Vbar = 0), stress free and stable in every
@@ -17,12 +20,16 @@ from __future__ import annotations
 import dataclasses
 import math
 
-import numpy as np
-
 from ..basestate.tube import solve_base_state
-from ..errors import ConvergenceError
+from ..errors import ConvergenceError, NoBifurcationFound
 from ..incremental.accuracy import STABLE_SIGN, Accuracy
-from ..incremental.targets import check_mode, targets_for
+from ..incremental.targets import (
+    Family,
+    check_mode,
+    natural_family,
+    targets_for,
+    with_family,
+)
 from ..model.params import TubeParameters, check_side
 from ..outcomes import Kind
 from .march import brent, first_bifurcations
@@ -32,7 +39,8 @@ from .march import brent, first_bifurcations
 class CriticalPoint:
     """Result of :func:`critical_value`.
 
-    ``kind`` is BIFURCATION (wrinkling in mode (m, n)), THRESHOLD (the axisymmetric base
+    ``kind`` is BIFURCATION (wrinkling in mode (m, n) of ``family``, see
+    incremental.targets.Family), THRESHOLD (the axisymmetric base
     state is lost first, at ``value``) or, from a scan, SURFACE: the short-wave limit
     m, k -> infinity at ``face`` ("inner" or "outer") with the wave direction ``psi``
     (radians; tan psi = k r / m: 0 wrinkles along theta, pi/2 along z). (m, n) is
@@ -50,23 +58,48 @@ class CriticalPoint:
     params: TubeParameters
     face: str | None = None
     psi: float | None = None
+    family: str | None = None
+
+    def __post_init__(self):
+        if self.family is None and self.kind == Kind.BIFURCATION:
+            object.__setattr__(self, "family", natural_family(self.m, self.n))
 
     def as_dict(self) -> dict:
         p = self.params
         mode = self.kind == Kind.BIFURCATION
-        return {"solve_for": self.solve_for, "value": self.value,
-                "m": self.m if mode else None, "n": self.n if mode else None,
-                "face": self.face, "psi": self.psi,
-                "kind": self.kind, "error_estimate": self.error_estimate,
-                "method": self.method, "side": self.side, "material": p.material.name,
-                "outer_radius": p.outer_radius, "length": p.length, "growth": p.growth,
-                "stretch": p.stretch, "voltage": p.voltage}
+        return {
+            "solve_for": self.solve_for,
+            "value": self.value,
+            "m": self.m if mode else None,
+            "n": self.n if mode else None,
+            "family": str(self.family) if mode and self.family else None,
+            "face": self.face,
+            "psi": self.psi,
+            "kind": self.kind,
+            "error_estimate": self.error_estimate,
+            "method": self.method,
+            "side": self.side,
+            "material": p.material.name,
+            "outer_radius": p.outer_radius,
+            "length": p.length,
+            "growth": p.growth,
+            "stretch": p.stretch,
+            "voltage": p.voltage,
+        }
 
 
-def critical_value(params: TubeParameters, m: int, n: int, solve_for: str, *,
-                   side: str | None = None, method: str = "impedance",
-                   rtol: float = 1e-12, bracket: tuple[float, float] | None = None
-                   ) -> CriticalPoint:
+def critical_value(
+    params: TubeParameters,
+    m: int,
+    n: int,
+    solve_for: str,
+    *,
+    family: str | None = None,
+    side: str | None = None,
+    method: str = "impedance",
+    rtol: float = 1e-12,
+    bracket: tuple[float, float] | None = None,
+) -> CriticalPoint:
     """Critical value of ``solve_for`` for mode (m, n), the other parameters fixed.
 
     Parameters
@@ -74,10 +107,15 @@ def critical_value(params: TubeParameters, m: int, n: int, solve_for: str, *,
     params : TubeParameters
         The tube; the field named by ``solve_for`` is ignored (it is the unknown).
     m, n : int
-        Circumferential wavenumber m >= 0 and axial half-wavenumber n >= 1.
+        Circumferential wavenumber m >= 0 and axial half-wavenumber n >= 0 (k = n pi /
+        (lambda_z L); n = 0: a prismatic mode, m >= 2).
     solve_for : {"growth", "stretch", "voltage"}
         Growth: smallest g > 1. Stretch: the lambda_z nearest to lambda_z = g on ``side``
         ("compression", default, or "extension"). Voltage: smallest Vbar > 0.
+    family : {"wrinkle", "prismatic", "torsional"}, optional
+        The mode family (incremental.targets.Family); default the natural one of (m, n):
+        prismatic for n = 0, else wrinkle (the paper's ansatz; axisymmetric at m = 0).
+        Torsional (m = 0, n >= 1: u_th = U(r) cos kz) must be named.
     method : {"impedance", "collocation"}
         The compiled Riccati kernel or the independent spectral collocation.
     rtol : float
@@ -95,39 +133,71 @@ def critical_value(params: TubeParameters, m: int, n: int, solve_for: str, *,
     ------
     ParameterError, NoBifurcationFound, ConvergenceError
     """
-    check_mode(m, n)
+    fam = check_mode(m, n, family)
     side = check_side(solve_for, side)
-    mode = np.array([[m, n]], dtype=float)
+    mode = with_family(m, n, fam)
     acc = Accuracy(rtol)
     fine, coarse = targets_for(method, acc.fine), targets_for(method, acc.coarse)
-    sref = stable_sign(m, n, params, method)
+    sref = stable_sign(m, n, params, method, family=fam)
 
     def signed(targets):  # the target of this mode as a function of the control, stable > 0
-        return lambda x: sref * float(targets(solve_base_state(params.at(solve_for, x)),
-                                              mode)[0])
+        return lambda x: sref * float(targets(solve_base_state(params.at(solve_for, x)), mode)[0])
 
     g = signed(fine)
     if bracket is not None and g(bracket[0]) * g(bracket[1]) < 0:
         value = brent(g, *bracket)
     else:
         loose = targets_for(method, acc.march_signs)
-        res = first_bifurcations(params, solve_for, side, mode, loose, brent_targets=fine)
+        try:
+            res = first_bifurcations(params, solve_for, side, mode, loose, brent_targets=fine)
+        except NoBifurcationFound as exc:
+            if fam is not Family.TORSIONAL:
+                raise
+            raise NoBifurcationFound(
+                f"{exc}: torsional modes never bifurcate while the shear moduli gamma_12 and"
+                " A3232 are positive (docs/derivation-families.md)"
+            ) from None
         if not res.found:
-            return CriticalPoint(solve_for, res.threshold, int(m), int(n), Kind.THRESHOLD, 0.0,
-                                 method, side, params.at(solve_for, res.threshold))
+            return CriticalPoint(
+                solve_for,
+                res.threshold,
+                int(m),
+                int(n),
+                Kind.THRESHOLD,
+                0.0,
+                method,
+                side,
+                params.at(solve_for, res.threshold),
+                family=fam,
+            )
         value = res.found[0].value
-    return CriticalPoint(solve_for, value, int(m), int(n), Kind.BIFURCATION,
-                         _second_resolution(signed(coarse), value), method, side,
-                         params.at(solve_for, value))
+    return CriticalPoint(
+        solve_for,
+        value,
+        int(m),
+        int(n),
+        Kind.BIFURCATION,
+        _second_resolution(signed(coarse), value),
+        method,
+        side,
+        params.at(solve_for, value),
+        family=fam,
+    )
 
 
-def stable_sign(m: int, n: int, params: TubeParameters, method: str = "impedance") -> float:
-    """Sign of the target on the unloaded tube (g = 1, lambda_z = 1, Vbar = 0)."""
+def stable_sign(
+    m: int, n: int, params: TubeParameters, method: str = "impedance", *, family: str | None = None
+) -> float:
+    """Sign of the target of mode (m, n) of ``family`` (default: the natural one) on the
+    unloaded tube (g = 1, lambda_z = 1, Vbar = 0)."""
+    fam = check_mode(m, n, family)
     ref = dataclasses.replace(params, growth=1.0, stretch=1.0, voltage=0.0)
     targets = targets_for(method, STABLE_SIGN)
-    f = float(targets(solve_base_state(ref), np.array([[m, n]], float))[0])
+    f = float(targets(solve_base_state(ref), with_family(m, n, fam))[0])
     if f == 0.0 or not math.isfinite(f):
-        raise ConvergenceError(f"target undefined on the unloaded tube for mode ({m}, {n})")
+        raise ConvergenceError(
+            f"target undefined on the unloaded tube for mode ({m}, {n}) ({fam})"
+        )
     return math.copysign(1.0, f)
 
 

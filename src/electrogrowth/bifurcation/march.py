@@ -28,23 +28,35 @@ from scipy.optimize import brentq, minimize_scalar
 
 from ..basestate.tube import solve_base_state, voltage_threshold
 from ..errors import BaseStateError, ConvergenceError, NoBifurcationFound, ParameterError
+from ..incremental.targets import natural_family, row_family
 from ..model.params import TubeParameters
 
 FIRST_STEP, MIN_STEP, MAX_STEP, MAX_LAMBDA_JUMP = 0.004, 1e-4, 0.05, 0.05
 MAX_WAIT = 0.25
 LAMBDA_CAP = 50.0  # stop approaching a threshold once lambda_i has grown this much
 
-#: targets(state, modes (k, 2) array) -> (k,) array of target values
+#: targets(state, modes (k, 2) or (k, 3) array) -> (k,) array of target values
 Targets = Callable[[object, np.ndarray], np.ndarray]
 
 
 @dataclasses.dataclass(frozen=True)
 class ModeValue:
-    """Critical value of one mode."""
+    """Critical value of one mode (m, n) of ``family`` (incremental.targets.Family; the
+    natural family of (m, n) when not given: prismatic for n = 0, else wrinkle)."""
 
     m: int
     n: int
     value: float
+    family: str | None = None
+
+    def __post_init__(self):
+        fam = natural_family(self.m, self.n) if self.family is None else self.family
+        object.__setattr__(self, "family", str(fam))
+
+
+def _mode_value(modes, i, value) -> ModeValue:
+    """The ModeValue of row i of ``modes`` (m, n[, family code])."""
+    return ModeValue(int(modes[i, 0]), int(modes[i, 1]), value, str(row_family(modes[i])))
 
 
 @dataclasses.dataclass
@@ -66,7 +78,8 @@ def control_path(params: TubeParameters, solve_for: str, side: str | None):
             return 0.0, 1e3, 1.0
         return 0.0, thr * (1 - 1e-12), thr
     raise ParameterError(
-        f"solve_for = {solve_for!r} is unknown; choose growth, stretch or voltage")
+        f"solve_for = {solve_for!r} is unknown; choose growth, stretch or voltage"
+    )
 
 
 def unloaded_signs(params: TubeParameters, modes: np.ndarray, targets: Targets) -> np.ndarray:
@@ -113,14 +126,12 @@ class _History:
             t = (-s_ - np.sqrt(np.maximum(disc, 0))) / (2 * c_)
             t2 = (-s_ + np.sqrt(np.maximum(disc, 0))) / (2 * c_)
             t = np.where((t > 0) & (disc >= 0), t, np.where((t2 > 0) & (disc >= 0), t2, np.inf))
-        return np.fmin(np.where(np.isnan(line), np.inf, line),
-                       np.where(np.isnan(t), np.inf, t))
+        return np.fmin(np.where(np.isnan(line), np.inf, line), np.where(np.isnan(t), np.inf, t))
 
     def needs(self, x):
         """Alive modes to evaluate at x: due, or predicted to have crossed by x."""
         reach = self.sense * (x - self.xa)
-        return self.alive & ((self.sense * (x - self.due) >= 0) |
-                             (reach >= self.root_distance()))
+        return self.alive & ((self.sense * (x - self.due) >= 0) | (reach >= self.root_distance()))
 
     def record(self, idx, x, g):
         self.x[:, idx] = np.vstack([np.full(idx.size, x), self.x[0, idx], self.x[1, idx]])
@@ -134,10 +145,17 @@ class _History:
         return 0.7 * dist.min() / self.scale if dist.size else np.inf
 
 
-def first_bifurcations(params: TubeParameters, solve_for: str, side: str | None,
-                       modes: np.ndarray, targets: Targets, *, top: int = 1,
-                       brent_targets: Targets | None = None,
-                       stable_signs: np.ndarray | None = None) -> MarchResult:
+def first_bifurcations(
+    params: TubeParameters,
+    solve_for: str,
+    side: str | None,
+    modes: np.ndarray,
+    targets: Targets,
+    *,
+    top: int = 1,
+    brent_targets: Targets | None = None,
+    stable_signs: np.ndarray | None = None,
+) -> MarchResult:
     """Critical values of the first ``top`` modes of ``modes`` reached by the march.
 
     ``targets`` is used for signs along the march (it may be loose); ``brent_targets``
@@ -157,11 +175,16 @@ def first_bifurcations(params: TubeParameters, solve_for: str, side: str | None,
     if doubt.size and brent_targets is not None:  # a loose sign may be wrong: ask again
         g0[doubt] = sref[doubt] * brent_targets(state, modes[doubt])
     if (g0 <= 0).any():
-        m, n = modes[int(np.argmax(g0 <= 0))].astype(int)
-        raise ParameterError(f"the tube is already unstable in mode ({m}, {n}) at "
-                             f"{solve_for} = {x0:g}; start from a stable state")
+        i = int(np.argmax(g0 <= 0))
+        m, n = modes[i, :2].astype(int)
+        raise ParameterError(
+            f"the tube is already unstable in mode ({m}, {n})"
+            f" ({row_family(modes[i])}) at {solve_for} = {x0:g}; start from"
+            " a stable state"
+        )
     fine = brent_targets or targets
     signed = lambda x, idx: sref[idx] * targets(solve_base_state(at(x)), modes[idx])  # noqa
+
     def signed_fine(x, i):
         return float(sref[i] * fine(solve_base_state(at(x)), modes[[i]])[0])
 
@@ -186,13 +209,15 @@ def first_bifurcations(params: TubeParameters, solve_for: str, side: str | None,
         if done:  # a last look at every mode not seen at x_prev: nothing left behind
             idx = np.nonzero(hist.alive & (hist.xa != x_prev))[0]
             if idx.size:
-                found += _advance(hist, idx, x_prev, signed(x_prev, idx), signed,
-                                  signed_fine, modes)
+                found += _advance(
+                    hist, idx, x_prev, signed(x_prev, idx), signed, signed_fine, modes
+                )
             break
         idx = np.nonzero(hist.needs(x))[0]
         if idx.size:
-            found += _advance(hist, idx, x, sref[idx] * targets(state, modes[idx]), signed,
-                              signed_fine, modes)
+            found += _advance(
+                hist, idx, x, sref[idx] * targets(state, modes[idx]), signed, signed_fine, modes
+            )
         d = float(np.clip(hist.step_limit(), MIN_STEP, min(2 * d, MAX_STEP)))
         x_prev, lam_prev = x, state.lambda_i
     found.sort(key=lambda mv: sense * mv.value)
@@ -200,8 +225,9 @@ def first_bifurcations(params: TubeParameters, solve_for: str, side: str | None,
         if solve_for == "voltage" and math.isfinite(voltage_threshold(params)[0]):
             threshold = voltage_threshold(params)[0]
         else:
-            raise NoBifurcationFound(f"no mode bifurcates for {solve_for} between {x0:g} "
-                                     f"and {end:g}")
+            raise NoBifurcationFound(
+                f"no mode bifurcates for {solve_for} between {x0:g} and {end:g}"
+            )
     return MarchResult(found[:top], threshold)
 
 
@@ -225,8 +251,7 @@ def _advance(hist, idx, x, g, signed, signed_fine, modes) -> list:
         i = idx[j]
         bracket = _dip(lambda y, i=i: signed_fine(y, i), hist.x[1, i], x)
         if bracket is not None:
-            found.append(ModeValue(int(modes[i, 0]), int(modes[i, 1]),
-                                   brent(lambda y, i=i: signed_fine(y, i), *bracket)))
+            found.append(_mode_value(modes, i, brent(lambda y, i=i: signed_fine(y, i), *bracket)))
             hit[j] = True
     hist.alive[idx[hit]] = False
     hist.record(idx[~hit], x, g[~hit])
@@ -236,8 +261,9 @@ def _advance(hist, idx, x, g, signed, signed_fine, modes) -> list:
 def _dip(f, a, b):
     """Does f (positive at a and b) dip below zero between? Bracket from the a side."""
     lo, hi = min(a, b), max(a, b)
-    res = minimize_scalar(f, bounds=(lo, hi), method="bounded",
-                          options={"xatol": 1e-12 * max(1.0, abs(lo))})
+    res = minimize_scalar(
+        f, bounds=(lo, hi), method="bounded", options={"xatol": 1e-12 * max(1.0, abs(lo))}
+    )
     if res.fun <= 0:
         return (a, res.x)  # a is where the march came from: the first root lies here
     return None
@@ -270,7 +296,7 @@ def _refine(signed, signed_fine, modes, cand, xa, x, x0) -> list:
             h = x
         if f(l) <= 0:
             l = xa if f(xa) > 0 else x0  # the mode is stable at the start of the march
-        out.append(ModeValue(int(modes[i, 0]), int(modes[i, 1]), brent(f, *sorted((l, h)))))
+        out.append(_mode_value(modes, i, brent(f, *sorted((l, h)))))
     return out
 
 
@@ -285,5 +311,6 @@ def brent(f, a, b) -> float:
 def _threshold_between(at, params, x_ok, x_bad) -> float:
     """Parameter value where the voltage threshold falls to the applied voltage."""
     lo, hi = min(x_ok, x_bad), max(x_ok, x_bad)
-    return brentq(lambda x: voltage_threshold(at(x))[0] - params.voltage, lo, hi,
-                  xtol=1e-14, rtol=1e-15)
+    return brentq(
+        lambda x: voltage_threshold(at(x))[0] - params.voltage, lo, hi, xtol=1e-14, rtol=1e-15
+    )

@@ -1,5 +1,11 @@
 """Which mode comes first: the critical value over m in [m_lo, m_hi], n in [n_lo, n_hi].
 
+The modes of every family (incremental.targets.Family) are in one batch: the paper's
+wrinkles (m, n), n >= 1 (axisymmetric at m = 0, the torsion excluded); the prismatic
+modes (m, 0), m >= 2, plane-strain wrinkles (ScanOptions.prismatic); the torsional modes
+(0, n), u_th = U(r) cos kz (ScanOptions.torsional). A row of the batch is (m, n, family
+code); the kernel keeps each family's own block of the Stroh system.
+
 The scan is organised around the batch kernel. The base state does not depend on the
 mode, so the march (march.py) evaluates every mode at once on one base state per step
 (impedance.target_batch, parallel over modes), at a loose tolerance that only has to get
@@ -25,7 +31,7 @@ import numpy as np
 
 from ..errors import NoBifurcationFound, ParameterError
 from ..incremental.accuracy import SCAN_SIGNS, SCAN_STABLE_SIGNS, Accuracy
-from ..incremental.targets import impedance_targets
+from ..incremental.targets import Family, impedance_targets
 from ..model.params import TubeParameters, check_side
 from ..outcomes import NO_MODE, Kind
 from .critical import CriticalPoint, critical_value
@@ -33,22 +39,34 @@ from .march import ModeValue, first_bifurcations, unloaded_signs
 from .surface import past_surface, short_wave_limit
 
 M_CAP, N_CAP = 64, 320
-DOUBLINGS = 2  # widen a range at most this often; an optimum still on its edge is a
-               # short-wavelength (surface) instability, extrapolated instead of scanned
+# widen a range at most this often; an optimum still on its edge is a short-wavelength
+# (surface) instability, extrapolated instead of scanned
+DOUBLINGS = 2
 
 
 def _surface_point(limit, side) -> CriticalPoint:
     """The short-wave limit as the critical point of a scan."""
-    return CriticalPoint(limit.solve_for, limit.value, *NO_MODE, Kind.SURFACE,
-                         limit.error_estimate, "halfspace", side, limit.params,
-                         face=limit.face, psi=limit.psi)
+    return CriticalPoint(
+        limit.solve_for,
+        limit.value,
+        *NO_MODE,
+        Kind.SURFACE,
+        limit.error_estimate,
+        "halfspace",
+        side,
+        limit.params,
+        face=limit.face,
+        psi=limit.psi,
+    )
 
 
 def _check_range(name, rng, lowest):
     lo, hi = rng
     if int(lo) != lo or int(hi) != hi or lo < lowest or hi < lo:
-        raise ParameterError(f"{name} range {list(rng)} is invalid; need integers "
-                             f"{lowest} <= {name}_min <= {name}_max")
+        raise ParameterError(
+            f"{name} range {list(rng)} is invalid; need integers "
+            f"{lowest} <= {name}_min <= {name}_max"
+        )
 
 
 @dataclasses.dataclass(frozen=True)
@@ -68,6 +86,12 @@ class ScanOptions:
     surface : bool
         Compare with the exact short-wave limit (m, k -> infinity) at both faces, which is
         the result when it comes first (see the module docstring).
+    prismatic : bool
+        Also scan the prismatic modes (m, 0), k = 0, for max(2, m_min) <= m <= m_max:
+        plane-strain wrinkles, admissible with sliding ends (the long-tube limit of n = 1).
+    torsional : bool
+        Also scan the torsional modes (0, n), u_th = U(r) cos kz, for n in n_range (when
+        m_min = 0).
     """
 
     m_range: tuple[int, int] = (0, 12)
@@ -75,6 +99,8 @@ class ScanOptions:
     top: int = 5
     extend: bool = True
     surface: bool = True
+    prismatic: bool = True
+    torsional: bool = True
 
     def __post_init__(self):
         for name, lowest in (("m", 0), ("n", 1)):
@@ -84,6 +110,11 @@ class ScanOptions:
         if isinstance(self.top, bool) or int(self.top) != self.top or self.top < 1:
             raise ParameterError(f"top = {self.top!r} is invalid; need an integer >= 1")
         object.__setattr__(self, "top", int(self.top))
+        for name in ("extend", "surface", "prismatic", "torsional"):
+            if not isinstance(getattr(self, name), bool):
+                raise ParameterError(
+                    f"{name} = {getattr(self, name)!r} is invalid; need True or False"
+                )
 
     def with_maxima(self, m_max: int, n_max: int) -> ScanOptions:
         """These options with the ranges 0..m_max and 1..n_max (the CLI's --m-max, --n-max)."""
@@ -113,14 +144,32 @@ class ScanResult:
 
 
 def mode_grid(m_range, n_range) -> np.ndarray:
-    """All (m, n) pairs, rows, as floats."""
-    m, n = np.meshgrid(np.arange(m_range[0], m_range[1] + 1),
-                       np.arange(n_range[0], n_range[1] + 1), indexing="ij")
+    """All (m, n) pairs, rows, as floats (the paper's ansatz: the wrinkle family)."""
+    m, n = np.meshgrid(
+        np.arange(m_range[0], m_range[1] + 1), np.arange(n_range[0], n_range[1] + 1), indexing="ij"
+    )
     return np.stack([m.ravel(), n.ravel()], axis=1).astype(float)
 
 
-def scan_modes(params: TubeParameters, solve_for: str, *, side: str | None = None,
-               options: ScanOptions = ScanOptions(), rtol: float = 1e-12) -> ScanResult:
+def family_rows(m_values, n_values, prismatic: bool, torsional: bool) -> np.ndarray:
+    """Rows (m, n, family code) of the prismatic modes (m, 0), m >= 2 of ``m_values``, and
+    the torsional modes (0, n), n of ``n_values`` (when 0 is among ``m_values``)."""
+    rows = []
+    if prismatic:
+        rows += [(m, 0, Family.PRISMATIC.code) for m in m_values if m >= 2]
+    if torsional and 0 in m_values:
+        rows += [(0, n, Family.TORSIONAL.code) for n in n_values]
+    return np.array(rows, float).reshape(-1, 3)
+
+
+def scan_modes(
+    params: TubeParameters,
+    solve_for: str,
+    *,
+    side: str | None = None,
+    options: ScanOptions = ScanOptions(),
+    rtol: float = 1e-12,
+) -> ScanResult:
     """Critical value of ``solve_for`` minimised (first reached) over all modes.
 
     Parameters
@@ -151,8 +200,9 @@ def scan_modes(params: TubeParameters, solve_for: str, *, side: str | None = Non
         if limit.kind != Kind.SURFACE:
             raise
         crit = _surface_point(limit, side)
-        return ScanResult(crit, (), options.m_range, options.n_range, True, limit.value,
-                          limit.error_estimate)
+        return ScanResult(
+            crit, (), options.m_range, options.n_range, True, limit.value, limit.error_estimate
+        )
     if not options.surface:
         return result
     return _with_short_waves(params, solve_for, side, result, options.top, rtol, at_cap)
@@ -165,7 +215,17 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
     grown = {"m": 0, "n": 0}
     probes = extend
     while True:
-        result = _scan_once(params, solve_for, side, m_range, n_range, top, rtol, probes)
+        result = _scan_once(
+            params,
+            solve_for,
+            side,
+            m_range,
+            n_range,
+            top,
+            rtol,
+            probes,
+            (options.prismatic, options.torsional),
+        )
         c = result.critical
         if probes and c.kind == Kind.BIFURCATION and (c.m > m_range[1] or c.n > n_range[1]):
             # a probe beyond the range wins: the optimum is a short wave, widen to it once
@@ -175,10 +235,14 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
             probes = False
             continue
         probes = False
-        edge = {"m": c.kind == Kind.BIFURCATION and c.m == m_range[1],
-                "n": c.kind == Kind.BIFURCATION and c.n == n_range[1]}
-        grow = {"m": edge["m"] and m_range[1] < M_CAP and grown["m"] < DOUBLINGS,
-                "n": edge["n"] and n_range[1] < N_CAP and grown["n"] < DOUBLINGS}
+        edge = {
+            "m": c.kind == Kind.BIFURCATION and c.m == m_range[1],
+            "n": c.kind == Kind.BIFURCATION and c.n == n_range[1],
+        }
+        grow = {
+            "m": edge["m"] and m_range[1] < M_CAP and grown["m"] < DOUBLINGS,
+            "n": edge["n"] and n_range[1] < N_CAP and grown["n"] < DOUBLINGS,
+        }
         if not extend or not any(grow.values()):
             break
         if grow["m"]:
@@ -189,26 +253,40 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
     return result, at_cap
 
 
-def scan_grid(m_range, n_range, probes: bool) -> np.ndarray:
-    """The (m, n) rectangle, plus a few short waves beyond it when ``probes``.
+def scan_grid(
+    m_range, n_range, probes: bool, families: tuple[bool, bool] = (False, False)
+) -> np.ndarray:
+    """Rows (m, n, family code): the (m, n) rectangle of wrinkles, the prismatic and
+    torsional rows of the ranges (``families`` = (prismatic, torsional), see
+    :func:`family_rows`), plus a few short waves beyond them when ``probes``.
 
     The critical value need not be monotone in m or n: at Rbar_o = 1.4, Vbar = 0.4 in
     extension it rises from m = 0 to m = 12 and then falls towards an inner-face short
-    wave as m grows. Probes at 2 and 4 times the range catch such optima.
+    wave as m grows. Probes at 2 and 4 times the range catch such optima (for the
+    prismatic and torsional families too).
     """
-    grid = mode_grid(m_range, n_range)
-    if not probes:
-        return grid
     (m0, m1), (n0, n1) = m_range, n_range
-    ms = sorted({min(2 * m1 + 1, M_CAP), min(4 * m1 + 3, M_CAP)} - set(range(m0, m1 + 1)))
-    ns = sorted({min(2 * n1, N_CAP), min(4 * n1, N_CAP)} - set(range(n0, n1 + 1)))
-    extra = [(m, n) for m in ms for n in (n0, n0 + 1)]
-    extra += [(m, n) for n in ns for m in (m0, m0 + 1)]
-    return np.vstack([grid, np.array(extra, float).reshape(-1, 2)])
+    wrinkle = mode_grid(m_range, n_range)
+    grid = [
+        np.column_stack([wrinkle, np.full(len(wrinkle), Family.WRINKLE.code)]),
+        family_rows(range(m0, m1 + 1), range(n0, n1 + 1), *families),
+    ]
+    if probes:
+        ms = sorted({min(2 * m1 + 1, M_CAP), min(4 * m1 + 3, M_CAP)} - set(range(m0, m1 + 1)))
+        ns = sorted({min(2 * n1, N_CAP), min(4 * n1, N_CAP)} - set(range(n0, n1 + 1)))
+        extra = [(m, n, Family.WRINKLE.code) for m in ms for n in (n0, n0 + 1)]
+        extra += [(m, n, Family.WRINKLE.code) for n in ns for m in (m0, m0 + 1)]
+        grid += [
+            np.array(extra, float).reshape(-1, 3),
+            family_rows(ms, ns, *families),
+            family_rows([0] if m0 == 0 else [], ns, False, families[1]),
+        ]
+    return np.vstack(grid)
 
 
-def _with_short_waves(params, solve_for, side, result: ScanResult, top: int, rtol: float,
-                      at_cap: bool) -> ScanResult:
+def _with_short_waves(
+    params, solve_for, side, result: ScanResult, top: int, rtol: float, at_cap: bool
+) -> ScanResult:
     """``result``, or the exact short-wave limit if it comes first (module docstring)."""
     c = result.critical
     if c.kind == Kind.BIFURCATION and not at_cap and not past_surface(c.params):
@@ -216,42 +294,73 @@ def _with_short_waves(params, solve_for, side, result: ScanResult, top: int, rto
     limit = short_wave_limit(params, solve_for, side=side, rtol=rtol)
     if limit.kind != Kind.SURFACE:
         return result
-    result = dataclasses.replace(result, short_wave_limit=limit.value,
-                                 short_wave_error=limit.error_estimate)
+    result = dataclasses.replace(
+        result, short_wave_limit=limit.value, short_wave_error=limit.error_estimate
+    )
     sense = -1.0 if side == "compression" else 1.0  # the direction of the march
     if c.kind == Kind.BIFURCATION and (limit.value - c.value) * sense >= 0:
         return result
     crit = _surface_point(limit, side)
-    finite = (ModeValue(c.m, c.n, c.value),) if c.kind == Kind.BIFURCATION else ()
-    return dataclasses.replace(result, critical=crit, surface_instability=True,
-                               runners_up=(finite + result.runners_up)[:top - 1])
+    finite = (ModeValue(c.m, c.n, c.value, c.family),) if c.kind == Kind.BIFURCATION else ()
+    return dataclasses.replace(
+        result,
+        critical=crit,
+        surface_instability=True,
+        runners_up=(finite + result.runners_up)[: top - 1],
+    )
 
 
-def _scan_once(params, solve_for, side, m_range, n_range, top, rtol, probes) -> ScanResult:
-    modes = scan_grid(m_range, n_range, probes)
+def _scan_once(
+    params, solve_for, side, m_range, n_range, top, rtol, probes, families
+) -> ScanResult:
+    modes = scan_grid(m_range, n_range, probes, families)
     loose = functools.partial(impedance_targets, rtol=SCAN_SIGNS)
     fine = functools.partial(impedance_targets, rtol=Accuracy(rtol).runners_up)
-    res = first_bifurcations(params, solve_for, side, modes, loose, top=top,
-                             brent_targets=fine,
-                             stable_signs=_stable_signs(params.material, params.outer_radius,
-                                                        params.length, m_range, n_range,
-                                                        probes))
+    res = first_bifurcations(
+        params,
+        solve_for,
+        side,
+        modes,
+        loose,
+        top=top,
+        brent_targets=fine,
+        stable_signs=_stable_signs(
+            params.material, params.outer_radius, params.length, m_range, n_range, probes, families
+        ),
+    )
     found = res.found
     if not found:  # the march stops at the threshold, so found modes come before it
-        crit = CriticalPoint(solve_for, res.threshold, *NO_MODE, Kind.THRESHOLD, 0.0, "impedance",
-                             side, params.at(solve_for, res.threshold))
+        crit = CriticalPoint(
+            solve_for,
+            res.threshold,
+            *NO_MODE,
+            Kind.THRESHOLD,
+            0.0,
+            "impedance",
+            side,
+            params.at(solve_for, res.threshold),
+        )
         return ScanResult(crit, (), m_range, n_range)
     best = found[0]
     w = 1e-7 * max(1.0, abs(best.value))
-    crit = critical_value(params, best.m, best.n, solve_for, side=side, rtol=rtol,
-                          bracket=(best.value - w, best.value + w))
+    crit = critical_value(
+        params,
+        best.m,
+        best.n,
+        solve_for,
+        family=best.family,
+        side=side,
+        rtol=rtol,
+        bracket=(best.value - w, best.value + w),
+    )
     return ScanResult(crit, tuple(found[1:top]), m_range, n_range)
 
 
 @functools.lru_cache(maxsize=64)
-def _stable_signs(material, outer_radius, length, m_range, n_range, probes) -> np.ndarray:
+def _stable_signs(
+    material, outer_radius, length, m_range, n_range, probes, families
+) -> np.ndarray:
     """Signs on the unloaded tube, shared by every scan of a curve or sweep."""
-    modes = scan_grid(m_range, n_range, probes)
+    modes = scan_grid(m_range, n_range, probes, families)
     ref = TubeParameters(outer_radius, length, material=material)
-    return unloaded_signs(ref, modes, functools.partial(impedance_targets,
-                                                        rtol=SCAN_STABLE_SIGNS))
+    return unloaded_signs(ref, modes, functools.partial(impedance_targets, rtol=SCAN_STABLE_SIGNS))

@@ -7,7 +7,7 @@ import math
 
 from ..bifurcation.scan import ScanOptions
 from ..errors import ParameterError, UsageError
-from ..incremental.targets import METHODS
+from ..incremental.targets import FAMILIES, METHODS, Family, check_mode
 from ..model.materials import BUILTIN, material_by_name
 from ..model.params import CONTROLS, SIDES, TubeParameters
 
@@ -30,44 +30,89 @@ def _number(text: str) -> float:
 
 # -- the tube --------------------------------------------------------------------------------
 
-def add_tube_options(parser: argparse.ArgumentParser, *,
-                     outer_radius: float | None = None) -> None:
+
+def add_tube_options(
+    parser: argparse.ArgumentParser,
+    *,
+    outer_radius: float | None = None,
+    require_outer_radius: bool = True,
+) -> None:
     """The tube, its loading and its material, shared by every subcommand.
 
-    ``outer_radius``: a default for --outer-radius (None: the option is required).
+    ``outer_radius``: a default for --outer-radius; without one the option is required
+    unless ``require_outer_radius`` is False (a tube file may give the radii instead).
     """
     tube = parser.add_argument_group("tube and loading (units mu = eps = R_i = 1)")
-    tube.add_argument("--outer-radius", type=_number, required=outer_radius is None,
-                      default=outer_radius, metavar="RBAR_O",
-                      help="Rbar_o = R_o / R_i > 1, undeformed outer over inner radius"
-                           + ("" if outer_radius is None else f" (default {outer_radius:g})"))
-    tube.add_argument("--growth", type=_number, default=1.0, metavar="G",
-                      help="isotropic growth factor g > 0, F_g = g I (default 1: no growth)")
-    tube.add_argument("--stretch", type=_number, default=1.0, metavar="LAMBDA_Z",
-                      help="total axial stretch lambda_z = l / L > 0, growth included"
-                           " (default 1)")
-    tube.add_argument("--voltage", type=_number, default=0.0, metavar="VBAR",
-                      help="Vbar = V / (R_o - R_i) sqrt(eps / mu) >= 0, the radial voltage;"
-                           " must stay below the threshold (default 0)")
-    tube.add_argument("--length", type=_number, default=1.0, metavar="L",
-                      help="L / R_i > 0, undeformed length; does not change the base state"
-                           " (default 1)")
+    tube.add_argument(
+        "--outer-radius",
+        type=_number,
+        required=outer_radius is None and require_outer_radius,
+        default=outer_radius,
+        metavar="RBAR_O",
+        help="Rbar_o = R_o / R_i > 1, undeformed outer over inner radius"
+        + ("" if outer_radius is None else f" (default {outer_radius:g})"),
+    )
+    tube.add_argument(
+        "--growth",
+        type=_number,
+        default=1.0,
+        metavar="G",
+        help="isotropic growth factor g > 0, F_g = g I (default 1: no growth)",
+    )
+    tube.add_argument(
+        "--stretch",
+        type=_number,
+        default=1.0,
+        metavar="LAMBDA_Z",
+        help="total axial stretch lambda_z = l / L > 0, growth included (default 1)",
+    )
+    tube.add_argument(
+        "--voltage",
+        type=_number,
+        default=0.0,
+        metavar="VBAR",
+        help="Vbar = V / (R_o - R_i) sqrt(eps / mu) >= 0, the radial voltage;"
+        " must stay below the threshold (default 0)",
+    )
+    tube.add_argument(
+        "--length",
+        type=_number,
+        default=1.0,
+        metavar="L",
+        help="L / R_i > 0, undeformed length; does not change the base state (default 1)",
+    )
     mat = parser.add_argument_group("material (ideal dielectric, Omega = W + I5 / 2)")
-    mat.add_argument("--material", choices=sorted(BUILTIN), default="neo-hookean",
-                     help="elastic energy W (default neo-hookean)")
-    mat.add_argument("--jm", type=_number, metavar="JM",
-                     help="Gent stiffening parameter J_m > 0 (only with --material gent;"
-                          " default 97.2)")
-    mat.add_argument("--alpha", type=_number, metavar="ALPHA",
-                     help="Mooney-Rivlin weight 0 < alpha <= 1 of I1 (only with"
-                          " --material mooney-rivlin; default 0.5)")
+    mat.add_argument(
+        "--material",
+        choices=sorted(BUILTIN),
+        default="neo-hookean",
+        help="elastic energy W (default neo-hookean)",
+    )
+    mat.add_argument(
+        "--jm",
+        type=_number,
+        metavar="JM",
+        help="Gent stiffening parameter J_m > 0 (only with --material gent; default 97.2)",
+    )
+    mat.add_argument(
+        "--alpha",
+        type=_number,
+        metavar="ALPHA",
+        help="Mooney-Rivlin weight 0 < alpha <= 1 of I1 (only with"
+        " --material mooney-rivlin; default 0.5)",
+    )
 
 
 def tube_from_args(args) -> TubeParameters:
     """TubeParameters from the options of :func:`add_tube_options`."""
-    return TubeParameters(outer_radius=args.outer_radius, length=args.length,
-                          growth=args.growth, stretch=args.stretch, voltage=args.voltage,
-                          material=_material(args))
+    return TubeParameters(
+        outer_radius=args.outer_radius,
+        length=args.length,
+        growth=args.growth,
+        stretch=args.stretch,
+        voltage=args.voltage,
+        material=_material(args),
+    )
 
 
 def _material(args):
@@ -76,25 +121,35 @@ def _material(args):
         value = getattr(args, name)
         if value is not None:
             if args.material != owner:
-                raise ParameterError(f"{flag} = {value:g} applies only to --material {owner},"
-                                     f" not {args.material}")
+                raise ParameterError(
+                    f"{flag} = {value:g} applies only to --material {owner}, not {args.material}"
+                )
             options[name] = value
     return material_by_name(args.material, **options)
 
 
 # -- what to solve for, and over which modes ------------------------------------------------
 
+
 def add_control_options(parser: argparse.ArgumentParser) -> None:
     """--solve-for and --side: the control parameter whose critical value is sought."""
-    parser.add_argument("--solve-for", required=True, choices=CONTROLS,
-                        help="the control parameter to find: growth = g_cr, the smallest"
-                             " g > 1 at which the tube wrinkles; stretch = lambda_z,cr on"
-                             " --side; voltage = Vbar_cr, the smallest Vbar (or the threshold"
-                             " where the axisymmetric state is lost, if that comes first)."
-                             " The value given for it below is ignored.")
-    parser.add_argument("--side", choices=SIDES, default=None,
-                        help="for --solve-for stretch: axial compression (lambda_z < g,"
-                             " default) or extension (lambda_z > g)")
+    parser.add_argument(
+        "--solve-for",
+        required=True,
+        choices=CONTROLS,
+        help="the control parameter to find: growth = g_cr, the smallest"
+        " g > 1 at which the tube wrinkles; stretch = lambda_z,cr on"
+        " --side; voltage = Vbar_cr, the smallest Vbar (or the threshold"
+        " where the axisymmetric state is lost, if that comes first)."
+        " The value given for it below is ignored.",
+    )
+    parser.add_argument(
+        "--side",
+        choices=SIDES,
+        default=None,
+        help="for --solve-for stretch: axial compression (lambda_z < g,"
+        " default) or extension (lambda_z > g)",
+    )
 
 
 def check_side_option(args) -> None:
@@ -103,20 +158,90 @@ def check_side_option(args) -> None:
         raise ParameterError(f"--side {args.side} applies only to --solve-for stretch")
 
 
+#: The mode families and what a scan covers, in the paper's terms (--help of every command
+#: that finds a critical mode).
+MODE_COVERAGE = (
+    "Mode families: 'wrinkle' = the paper's ansatz u_r = U_r(r) cos(m theta) cos(k z),"
+    " u_theta ~ sin(m theta) cos(k z), u_z ~ cos(m theta) sin(k z), k = n pi / (lambda_z L),"
+    " m >= 0, n >= 1 (m = 0: axisymmetric); 'prismatic' = n = 0 (k = 0), m >= 2:"
+    " plane-strain wrinkles with u_z = 0, admissible with sliding ends (the long-tube limit"
+    " of n = 1); 'torsional' = m = 0: u_theta = U(r) cos(k z) alone, n >= 1. A scan examines"
+    " by default all three: wrinkles 0 <= m <= M_MAX, 1 <= n <= N_MAX, prismatic"
+    " 2 <= m <= M_MAX and torsional 1 <= n <= N_MAX (ranges widened and probed beyond for"
+    " short waves); the short-wave (surface) limit m, n -> infinity is not scanned but"
+    " computed exactly from the half-space problem at each face, and reported when it comes"
+    " first."
+)
+
+
 def add_mode_range_options(group, *, top: bool = False) -> None:
     """--m-max and --n-max (and --top): the ScanOptions of a scan, defaults from it."""
     default = ScanOptions()
-    group.add_argument("--m-max", type=int, default=default.m_range[1], metavar="M_MAX",
-                       help="largest circumferential wavenumber m of the scan, from 0"
-                            f" (default {default.m_range[1]}; widened automatically when the"
-                            " critical mode sits on the edge, and probed beyond for short"
-                            " waves)")
-    group.add_argument("--n-max", type=int, default=default.n_range[1], metavar="N_MAX",
-                       help="largest axial half-wavenumber n of the scan, from 1 (default"
-                            f" {default.n_range[1]}; widened likewise)")
+    group.add_argument(
+        "--m-max",
+        type=int,
+        default=default.m_range[1],
+        metavar="M_MAX",
+        help="largest circumferential wavenumber m of the scan, from 0"
+        f" (default {default.m_range[1]}; widened automatically when the"
+        " critical mode sits on the edge, and probed beyond for short"
+        " waves). The scan covers the wrinkles (m, n), n >= 1, the"
+        " prismatic modes (m, 0), m >= 2, and the torsional modes (0, n);"
+        " the short-wave limit m, n -> infinity comes exactly from the"
+        " half-space problem",
+    )
+    group.add_argument(
+        "--n-max",
+        type=int,
+        default=default.n_range[1],
+        metavar="N_MAX",
+        help="largest axial half-wavenumber n of the scan, from 1 (default"
+        f" {default.n_range[1]}; widened likewise); the prismatic modes"
+        " n = 0 are scanned too",
+    )
     if top:
-        group.add_argument("--top", type=int, default=default.top,
-                           help=f"number of modes to report in a scan (default {default.top})")
+        group.add_argument(
+            "--top",
+            type=int,
+            default=default.top,
+            help=f"number of modes to report in a scan (default {default.top})",
+        )
+
+
+def add_mode_option(group) -> None:
+    """--mode M N and --family: one mode instead of a scan."""
+    group.add_argument(
+        "--mode",
+        nargs=2,
+        type=int,
+        metavar=("M", "N"),
+        help="one mode instead of a scan: circumferential wavenumber m >= 0"
+        " (lobes around) and axial half-wavenumber n >= 0 (half-waves"
+        " along the tube); n = 0 is a prismatic mode (m >= 2; (0, 0) is"
+        " the breathing mode, the base state's own limit point, and"
+        " (1, 0) a rigid translation); (0, n) is axisymmetric unless"
+        " --family torsional",
+    )
+    group.add_argument(
+        "--family",
+        choices=FAMILIES,
+        default=None,
+        help="the family of --mode (default: prismatic for n = 0, else"
+        " wrinkle): wrinkle = the paper's ansatz, prismatic = n = 0"
+        " plane strain, torsional = m = 0, u_theta = U(r) cos(k z)",
+    )
+
+
+def mode_from_args(args) -> tuple[int, int, Family] | None:
+    """(m, n, family) of --mode and --family, checked; None for a scan."""
+    if args.mode is None:
+        if args.family is not None:
+            raise ParameterError(
+                f"--family {args.family} needs --mode M N (a scan covers every family)"
+            )
+        return None
+    m, n = args.mode
+    return m, n, check_mode(m, n, args.family)
 
 
 def scan_options_from_args(args) -> ScanOptions:

@@ -21,15 +21,19 @@ from ..bifurcation.critical import critical_value
 from ..bifurcation.scan import scan_modes
 from ..errors import MissingDependencyError, ParameterError
 from ..figures.plots import plot_mode_shape, render_pattern
+from ..incremental.targets import Family
 from ..shapes.mode_shape import mode_shape
 from ..shapes.wall import export_vtk
 from .options import (
+    MODE_COVERAGE,
     _number,
     add_control_options,
     add_method_option,
+    add_mode_option,
     add_mode_range_options,
     add_tube_options,
     check_side_option,
+    mode_from_args,
     scan_options_from_args,
     tube_from_args,
 )
@@ -40,38 +44,60 @@ HELP = "mode shape of the wrinkles at onset: 3D picture, plot and CSV, VTK mesh 
 def configure_pattern(parser: argparse.ArgumentParser) -> None:
     add_control_options(parser)
     add_tube_options(parser)
-    modes = parser.add_argument_group("wrinkling mode u_r = U_r(r) cos(m theta) cos(k z),"
-                                      " k = n pi / (lambda_z L)")
-    modes.add_argument("--mode", nargs=2, type=int, metavar=("M", "N"),
-                       help="the mode: circumferential wavenumber m >= 0 (number of lobes"
-                            " around) and axial half-wavenumber n >= 1 (half-waves along"
-                            " the tube); without it the first mode to bifurcate among"
-                            " 0 <= m <= M_MAX, 1 <= n <= N_MAX is used")
+    modes = parser.add_argument_group(
+        "wrinkling mode u_r = U_r(r) cos(m theta) cos(k z), k = n pi / (lambda_z L)",
+        MODE_COVERAGE + " Without --mode the scan's critical mode"
+        " is drawn (a surface instability has no finite mode"
+        " shape).",
+    )
+    add_mode_option(modes)
     add_mode_range_options(modes)
     shape = parser.add_argument_group("mode shape and output")
-    add_method_option(shape, "impedance = Riccati equation for the surface impedance, then"
-                            " dU/dr = (G1 + G2 z) U / r inwards from the outer face (paper"
-                            " eq. two_Riccati; default, falls back to collocation if the"
-                            " impedance has a pole in the wall); collocation = null vector of"
-                            " the Chebyshev collocation matrix")
-    shape.add_argument("--points", type=int, default=101,
-                       help="radii through the wall at which the mode shape is sampled"
-                            " (default 101)")
-    shape.add_argument("--amplitude", type=_number, default=0.1, metavar="A",
-                       help="largest incremental displacement drawn, in units of R_i (the"
-                            " mode has max |U| = 1; default 0.1)")
-    shape.add_argument("--out", type=Path, metavar="DIR",
-                       help="write pattern-m<M>-n<N>.png (3D wrinkled tube, coloured by u_r),"
-                            " mode-shape-m<M>-n<N>.png (U_r, U_theta, U_z, Phi against r) and"
-                            " mode-shape-m<M>-n<N>.csv into DIR")
-    shape.add_argument("--vtk", type=Path, metavar="FILE",
-                       help="write the wall as a hexahedral VTK mesh (.vtu or .vtk) with"
-                            " point data displacement, radial_displacement, potential and"
-                            " r_reference (open in ParaView, Warp By Vector); needs meshio"
-                            " (pip install 'electrogrowth[vtk]')")
-    parser.add_argument("--json", action="store_true",
-                        help="print one JSON object (critical point, mode, route, files)"
-                             " instead of text")
+    add_method_option(
+        shape,
+        "impedance = Riccati equation for the surface impedance, then"
+        " dU/dr = (G1 + G2 z) U / r inwards from the outer face (paper"
+        " eq. two_Riccati; default, falls back to collocation if the"
+        " impedance has a pole in the wall); collocation = null vector of"
+        " the Chebyshev collocation matrix",
+    )
+    shape.add_argument(
+        "--points",
+        type=int,
+        default=101,
+        help="radii through the wall at which the mode shape is sampled (default 101)",
+    )
+    shape.add_argument(
+        "--amplitude",
+        type=_number,
+        default=0.1,
+        metavar="A",
+        help="largest incremental displacement drawn, in units of R_i (the"
+        " mode has max |U| = 1; default 0.1)",
+    )
+    shape.add_argument(
+        "--out",
+        type=Path,
+        metavar="DIR",
+        help="write pattern-m<M>-n<N>.png (3D wrinkled tube, coloured by u_r),"
+        " mode-shape-m<M>-n<N>.png (U_r, U_theta, U_z, Phi against r) and"
+        " mode-shape-m<M>-n<N>.csv into DIR (a torsional mode: the names"
+        " end in -torsional and no 3D picture is drawn)",
+    )
+    shape.add_argument(
+        "--vtk",
+        type=Path,
+        metavar="FILE",
+        help="write the wall as a hexahedral VTK mesh (.vtu or .vtk) with"
+        " point data displacement, radial_displacement, potential and"
+        " r_reference (open in ParaView, Warp By Vector); needs meshio"
+        " (pip install 'electrogrowth[vtk]')",
+    )
+    parser.add_argument(
+        "--json",
+        action="store_true",
+        help="print one JSON object (critical point, mode, route, files) instead of text",
+    )
 
 
 def run_pattern(args) -> int:
@@ -84,13 +110,22 @@ def run_pattern(args) -> int:
     if args.vtk is not None and args.vtk.suffix not in (".vtu", ".vtk"):
         raise ParameterError(f"--vtk {args.vtk} must end in .vtu (XML) or .vtk (legacy)")
     if args.vtk is not None and importlib.util.find_spec("meshio") is None:
-        raise MissingDependencyError("--vtk needs the optional package meshio; install it"
-                                     " with pip install 'electrogrowth[vtk]'")
-    if args.mode is not None:
-        crit = critical_value(params, *args.mode, args.solve_for, side=args.side)
+        raise MissingDependencyError(
+            "--vtk needs the optional package meshio; install it"
+            " with pip install 'electrogrowth[vtk]'"
+        )
+    mode = mode_from_args(args)
+    if mode is not None and mode[2] == Family.TORSIONAL:
+        _check_torsional_outputs(args)
+    if mode is not None:
+        m, n, family = mode
+        crit = critical_value(params, m, n, args.solve_for, family=family, side=args.side)
     else:
-        crit = scan_modes(params, args.solve_for, side=args.side,
-                          options=scan_options_from_args(args)).critical
+        crit = scan_modes(
+            params, args.solve_for, side=args.side, options=scan_options_from_args(args)
+        ).critical
+        if crit.family == Family.TORSIONAL:
+            _check_torsional_outputs(args)
     shape = mode_shape(crit, method=args.method, points=args.points)
     files = []
     if args.out is not None:
@@ -98,11 +133,18 @@ def run_pattern(args) -> int:
     if args.vtk is not None:
         files.append(export_vtk(shape, args.vtk, amplitude=args.amplitude))
     record = crit.as_dict()
-    record.update(k=shape.k, route=shape.route, note=shape.note,
-                  boundary_residual=shape.boundary_residual, amplitude=args.amplitude,
-                  max_abs={name: float(np.abs(getattr(shape, name)).max())
-                           for name in ("U_r", "U_th", "U_z", "Phi")},
-                  files=[str(f) for f in files])
+    record.update(
+        k=shape.k,
+        route=shape.route,
+        note=shape.note,
+        boundary_residual=shape.boundary_residual,
+        amplitude=args.amplitude,
+        max_abs={
+            name: float(np.abs(getattr(shape, name)).max())
+            for name in ("U_r", "U_th", "U_z", "Phi")
+        },
+        files=[str(f) for f in files],
+    )
     if args.json:
         print(json.dumps(record))
         return 0
@@ -110,30 +152,48 @@ def run_pattern(args) -> int:
     return 0
 
 
+def _check_torsional_outputs(args) -> None:
+    """--vtk draws the paper's ansatz, in which a torsional mode vanishes: refuse it."""
+    if args.vtk is not None:
+        raise ParameterError(
+            "--vtk is not available for a torsional mode: the wall mesh"
+            " draws the paper's ansatz (u_theta ~ sin(m theta), zero at"
+            " m = 0); use --out for its mode shape plot and CSV"
+        )
+
+
 def write_outputs(shape, directory: Path, *, amplitude: float) -> list[Path]:
-    """The 3D picture, the mode-shape plot and its CSV in ``directory`` (created)."""
+    """The 3D picture, the mode-shape plot and its CSV in ``directory`` (created).
+
+    A torsional mode has no 3D picture (shapes/wall.py draws the paper's ansatz, in which
+    u_theta ~ sin(m theta) vanishes at m = 0), and its names end in -torsional.
+    """
     directory.mkdir(parents=True, exist_ok=True)
-    stem = f"m{shape.m}-n{shape.n}"
+    torsional = shape.family == Family.TORSIONAL
+    stem = f"m{shape.m}-n{shape.n}" + ("-torsional" if torsional else "")
     pattern = directory / f"pattern-{stem}.png"
     plot, csv = directory / f"mode-shape-{stem}.png", directory / f"mode-shape-{stem}.csv"
-    render_pattern(shape, amplitude=amplitude, path=pattern)
+    if not torsional:
+        render_pattern(shape, amplitude=amplitude, path=pattern)
     plot_mode_shape(shape).savefig(plot, dpi=200)
     columns, table = shape.table()
     np.savetxt(csv, table, delimiter=",", header=",".join(columns), comments="", fmt="%.15g")
-    return [pattern, plot, csv]
+    return ([] if torsional else [pattern]) + [plot, csv]
 
 
 def _print_text(rec: dict) -> None:
     name = {"growth": "g_cr", "stretch": "lambda_z,cr", "voltage": "Vbar_cr"}[rec["solve_for"]]
     big = rec["max_abs"]
-    lines = [f"{name} = {rec['value']:.12g}   mode (m, n) = ({rec['m']}, {rec['n']}),"
-             f" k = {rec['k']:.6g}",
-             f"  tube: Rbar_o = {rec['outer_radius']:g}, L = {rec['length']:g},"
-             f" g = {rec['growth']:.12g}, lambda_z = {rec['stretch']:.12g},"
-             f" Vbar = {rec['voltage']:.12g}, {rec['material']}",
-             f"  mode shape by {rec['route']} (boundary residual"
-             f" {rec['boundary_residual']:.1e}): max |U_r|, |U_theta|, |U_z| = {big['U_r']:.4g},"
-             f" {big['U_th']:.4g}, {big['U_z']:.4g}; max |Phi| = {big['Phi']:.4g}"]
+    lines = [
+        f"{name} = {rec['value']:.12g}   mode (m, n) = ({rec['m']}, {rec['n']}),"
+        f" {rec['family']}, k = {rec['k']:.6g}",
+        f"  tube: Rbar_o = {rec['outer_radius']:g}, L = {rec['length']:g},"
+        f" g = {rec['growth']:.12g}, lambda_z = {rec['stretch']:.12g},"
+        f" Vbar = {rec['voltage']:.12g}, {rec['material']}",
+        f"  mode shape by {rec['route']} (boundary residual"
+        f" {rec['boundary_residual']:.1e}): max |U_r|, |U_theta|, |U_z| = {big['U_r']:.4g},"
+        f" {big['U_th']:.4g}, {big['U_z']:.4g}; max |Phi| = {big['Phi']:.4g}",
+    ]
     if rec["note"]:
         lines.append(f"  note: {rec['note']}")
     lines += [f"  wrote {f}" for f in rec["files"]]

@@ -39,11 +39,8 @@ def _number(text: str) -> float:
 
 
 def configure_state(parser: argparse.ArgumentParser) -> None:
-    add_tube_options(parser)
+    add_tube_options(parser, require_outer_radius=False)  # or the radii of a --tube file
     defaults = {dest: parser.get_default(dest) for dest in _SHARED}
-    for action in parser._actions:  # --outer-radius is required only without --tube
-        if action.dest == "outer_radius":
-            action.required = False
     parser.set_defaults(**{dest: None for dest in _SHARED}, shared_defaults=defaults)
     tube = parser.add_argument_group(
         "layered tube and loads (docs/derivation-layered.md; a one-layer tube without --tube)"

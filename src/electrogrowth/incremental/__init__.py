@@ -12,6 +12,14 @@ May import ``basestate``, ``model`` and ``errors``.
 """
 
 from .accuracy import Accuracy
-from .targets import METHODS, Method, impedance_targets, targets_for, wavenumber
+from .targets import METHODS, Family, Method, impedance_targets, targets_for, wavenumber
 
-__all__ = ["Accuracy", "METHODS", "Method", "impedance_targets", "targets_for", "wavenumber"]
+__all__ = [
+    "Accuracy",
+    "METHODS",
+    "Family",
+    "Method",
+    "impedance_targets",
+    "targets_for",
+    "wavenumber",
+]

@@ -9,6 +9,13 @@ moves to the chart of the best-conditioned pivot. The target
     f = sign(det U~) det(z~[J', J']) / sqrt(det(I + z~^T z~)),   J' = complement of J,
 
 is the same in every chart: det(M2) / sqrt(det(M^T M)) of the propagated basis M.
+
+A mode family that keeps only some of the four pairs (U_j, S_j) (``keep``, bit j set: pair j
+kept; incremental/targets.py) zeroes the rows and columns of the other pairs in every
+chart (:func:`chart_setup`). Those pairs are decoupled from the kept ones exactly where the
+family is used (torsion at m = 0, anti-plane shear at k = 0), so the kept block is the
+family's own Stroh system; each left-out pair is carried as the constant z~_jj = 1
+(-1 in a chart that swaps it), which multiplies the target by exactly 1/sqrt(2).
 """
 
 from __future__ import annotations
@@ -32,13 +39,15 @@ def chart_perm(J, perm, sign):
 
 
 @nb.njit(cache=True)
-def chart_setup(J, s, perm, mult):
-    """G~[a, b] = G[perm[a], perm[b]] * mult[a, b]: chart J and the scaling S -> S / s."""
+def chart_setup(J, s, keep, perm, mult):
+    """G~[a, b] = G[perm[a], perm[b]] * mult[a, b]: chart J, the scaling S -> S / s and
+    the pairs kept (bit j of ``keep`` set: pair (U_j, S_j) kept, else its rows and columns
+    are zero)."""
     sign = np.empty(8)
     chart_perm(J, perm, sign)
     for a in range(8):
         for b in range(8):
-            v = sign[a] * sign[b]
+            v = sign[a] * sign[b] * ((keep >> (perm[a] % 4)) & 1) * ((keep >> (perm[b] % 4)) & 1)
             if perm[a] < 4 and perm[b] >= 4:
                 v *= s
             elif perm[a] >= 4 and perm[b] < 4:
@@ -47,7 +56,9 @@ def chart_setup(J, s, perm, mult):
 
 
 @nb.njit(cache=True)
-def det4(a):
+def determinant(a):
+    """Determinant of a small square matrix by Gaussian elimination with partial pivoting
+    (``a`` is not modified)."""
     m = a.copy()
     det = 1.0
     n = a.shape[0]
@@ -91,7 +102,7 @@ def switch_chart(z, J):
             for c in range(4):
                 W1[a, c] = sign[a] * X[perm[a], c]
                 W2[a, c] = sign[4 + a] * X[perm[4 + a], c]
-        d = det4(W1)
+        d = determinant(W1)
         if not np.isfinite(d) or abs(d) < 1e-12:  # W1 (entries O(1)) not invertible
             continue
         zn = np.linalg.solve(W1.T, W2.T).T  # W2 W1^-1
@@ -117,9 +128,9 @@ def chart_target(z, J, orient):
         for a in range(n):
             for b in range(n):
                 sub[a, b] = z[idx[a], idx[b]]
-        num = det4(sub)
+        num = determinant(sub)
     M = np.eye(4) + z.T @ z
-    return orient * num / np.sqrt(det4(M))
+    return orient * num / np.sqrt(determinant(M))
 
 
 def physical_impedance(z_chart: np.ndarray, chart: int, scale: float) -> np.ndarray:

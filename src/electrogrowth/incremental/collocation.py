@@ -28,6 +28,14 @@ are built at the nodes as linear maps of the unknowns and the differentiation ma
 applied to them ("differentiate the flux"). The pressure lives on the interior nodes
 (P_N - P_{N-2}), which keeps the discrete system free of a spurious pressure mode.
 Details, validation and convergence: docs/collocation.md.
+
+Mode families (docs/derivation-families.md). ``pairs`` (bit j set: kept) selects the
+unknowns and equations of a block that decouples exactly: bit 0 U_r and P with the r
+equilibrium and tr L = 0, bit 1 U_th with the theta equilibrium, bit 2 U_z with the z
+equilibrium, bit 3 Phi with div D = 0 (the same bits as the Stroh pairs of the impedance
+kernel). ALL_PAIRS (default) is the paper's ansatz; at m = 0 the theta block (torsion,
+u_th = U_th(r) cos kz) decouples, at k = 0 (n = 0, prismatic) the z block (anti-plane
+shear u_z = U_z(r) cos m th); nothing divides by k, so k = 0 needs no special case.
 """
 
 from __future__ import annotations
@@ -51,6 +59,16 @@ from ..model.params import CONTROLS, TubeParameters
 Operator = npt.NDArray[np.complex128]
 
 _FIELDS = ("U_r", "U_th", "U_z", "P", "Phi")
+
+#: every block kept: the paper's ansatz (bit 0 U_r and P, 1 U_th, 2 U_z, 3 Phi)
+ALL_PAIRS = 0b1111
+#: the unknowns and the equations (row blocks) of each bit of ``pairs``
+_BIT_FIELDS = (("U_r", "P"), ("U_th",), ("U_z",), ("Phi",))
+_BIT_ROWS = (("r", "incompressible"), ("theta",), ("z",), ("maxwell",))
+#: the blocks that decouple: all; m = 0 without / with only the torsion (theta) block;
+#: k = 0 without / with only the anti-plane (z) block
+BLOCKS = (ALL_PAIRS, 0b1101, 0b0010, 0b1011, 0b0100)
+_SINGLE = (0b0010, 0b0100)  # one displacement field, one second-order equation
 
 
 def chebyshev_lobatto(nodes: int) -> tuple[FloatArray, FloatArray]:
@@ -126,10 +144,10 @@ def full_moduli(moduli: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]
 class _Grid:
     """Nodes of one discretisation: r = h (c + x), everything in units of h."""
 
-    r: FloatArray        # physical current radius at the nodes (outer face first)
-    rh: FloatArray       # r / h
-    Dx: FloatArray       # d/d(r/h) = d/dx
-    kh: float            # k h
+    r: FloatArray  # physical current radius at the nodes (outer face first)
+    rh: FloatArray  # r / h
+    Dx: FloatArray  # d/d(r/h) = d/dx
+    kh: float  # k h
     h: float
 
 
@@ -161,6 +179,57 @@ def _layout(nn: int) -> dict[str, slice]:
     return out
 
 
+def _row_layout(nn: int) -> dict[str, slice]:
+    """Row ranges of the equations, in the order of :func:`collocation_matrix`."""
+    return {
+        "r": slice(0, nn),
+        "theta": slice(nn, 2 * nn),
+        "z": slice(2 * nn, 3 * nn),
+        "maxwell": slice(3 * nn, 4 * nn),
+        "incompressible": slice(4 * nn, 5 * nn - 2),
+    }
+
+
+def check_pairs(pairs) -> int:
+    """``pairs`` as an int, one of BLOCKS, else ParameterError."""
+    if isinstance(pairs, bool) or pairs not in BLOCKS:
+        raise ParameterError(
+            f"pairs = {pairs!r} is invalid; choose a block that decouples:"
+            f" one of {BLOCKS} (bits: U_r + P, U_th, U_z, Phi)"
+        )
+    return int(pairs)
+
+
+def stable_det_sign(pairs: int, nodes: int) -> float:
+    """Sign of det M of the block ``pairs`` on the unloaded tube (stable in every mode).
+
+    -1 for the whole matrix. A block that decouples has a sign alternating with ``nodes``:
+    the lone theta or z block (a scalar second-order problem, nodes x nodes) has
+    -(-1)^nodes, its complement (-1)^nodes, so their product is the whole matrix's -1
+    (moving a block of nodes rows past blocks of nodes rows is an even permutation).
+    Measured for nodes = 6..40, every mode and tube tried (tests/test_families.py).
+    """
+    if pairs == ALL_PAIRS:
+        return -1.0
+    alt = -1.0 if nodes % 2 else 1.0
+    return -alt if pairs in _SINGLE else alt
+
+
+def block_indices(nn: int, pairs: int) -> tuple[np.ndarray, np.ndarray]:
+    """(rows, columns) of the collocation matrix kept by ``pairs``, in their order."""
+    cols, rows = _layout(nn), _row_layout(nn)
+    c = [
+        np.arange(5 * nn - 2)[cols[f]]
+        for j in range(4)
+        if (pairs >> j) & 1
+        for f in _BIT_FIELDS[j]
+    ]
+    r = [
+        np.arange(5 * nn - 2)[rows[e]] for j in range(4) if (pairs >> j) & 1 for e in _BIT_ROWS[j]
+    ]
+    return np.sort(np.concatenate(r)), np.sort(np.concatenate(c))
+
+
 def _operators(grid: _Grid, m: float) -> tuple[Operator, Operator, Operator]:
     """Nodal maps of L_jq = du_j/dx_q (paper eq. 52), E_p = -(grad phidot)_p and pdot.
 
@@ -179,15 +248,15 @@ def _operators(grid: _Grid, m: float) -> tuple[Operator, Operator, Operator]:
 
     Ur, Ut, Uz = "U_r", "U_th", "U_z"
     L = np.empty((3, 3, nn, 5 * nn - 2), complex)
-    L[0, 0] = op(**{Ur: D})                                        # dU_r/dr
-    L[0, 1] = op(**{Ur: 1j * m * inv_r, Ut: 1j * inv_r})           # (d_th u_r - u_th)/r
-    L[0, 2] = op(**{Ur: ik * eye})                                 # d_z u_r
-    L[1, 0] = op(**{Ut: -1j * D})                                  # d_r u_th
-    L[1, 1] = op(**{Ur: inv_r, Ut: m * inv_r})                     # (d_th u_th + u_r)/r
-    L[1, 2] = op(**{Ut: grid.kh * eye})                            # d_z u_th
-    L[2, 0] = op(**{Uz: -1j * D})                                  # d_r u_z
-    L[2, 1] = op(**{Uz: m * inv_r})                                # d_th u_z / r
-    L[2, 2] = op(**{Uz: grid.kh * eye})                            # d_z u_z
+    L[0, 0] = op(**{Ur: D})  # dU_r/dr
+    L[0, 1] = op(**{Ur: 1j * m * inv_r, Ut: 1j * inv_r})  # (d_th u_r - u_th)/r
+    L[0, 2] = op(**{Ur: ik * eye})  # d_z u_r
+    L[1, 0] = op(**{Ut: -1j * D})  # d_r u_th
+    L[1, 1] = op(**{Ur: inv_r, Ut: m * inv_r})  # (d_th u_th + u_r)/r
+    L[1, 2] = op(**{Ut: grid.kh * eye})  # d_z u_th
+    L[2, 0] = op(**{Uz: -1j * D})  # d_r u_z
+    L[2, 1] = op(**{Uz: m * inv_r})  # d_th u_z / r
+    L[2, 2] = op(**{Uz: grid.kh * eye})  # d_z u_z
     E = np.stack([op(Phi=-D), op(Phi=-1j * m * inv_r), op(Phi=-ik * eye)])
     pdot = op(P=interior_interpolation(nn))
     return L, E, pdot
@@ -219,7 +288,9 @@ def _fluxes(state, grid: _Grid, m: float) -> tuple[Operator, Operator, Operator]
     return L, S, Dq
 
 
-def collocation_matrix(state, m: int, n: float, *, nodes: int = 40) -> FloatArray:
+def collocation_matrix(
+    state, m: int, n: float, *, nodes: int = 40, pairs: int = ALL_PAIRS
+) -> FloatArray:
     """The real square matrix of the collocated incremental boundary-value problem.
 
     Unknowns: U_r, U_th, U_z, Phi at the ``nodes`` Chebyshev-Lobatto points of the
@@ -244,10 +315,14 @@ def collocation_matrix(state, m: int, n: float, *, nodes: int = 40) -> FloatArra
         Axial half-wavenumber, k = n pi / (lambda_z L).
     nodes : int, keyword-only
         Chebyshev-Lobatto points per field (default 40, at least 6).
+    pairs : int, keyword-only
+        The blocks kept (module docstring): ALL_PAIRS (default) the whole matrix; a
+        family's block (rows and columns of the kept unknowns and equations, in order)
+        where it decouples (the theta block at m = 0, the z block at n = 0).
 
     Returns
     -------
-    ndarray, shape (5 nodes - 2, 5 nodes - 2)
+    ndarray, shape (5 nodes - 2, 5 nodes - 2) for ALL_PAIRS
         Singular exactly when (m, n) is a bifurcation of the discrete problem.
 
     Examples
@@ -259,11 +334,21 @@ def collocation_matrix(state, m: int, n: float, *, nodes: int = 40) -> FloatArra
     >>> collocation_target(state, 2, 1, nodes=20) > 0  # the unloaded tube is stable
     True
     """
-    return _complex_matrix(state, m, n, nodes).real.copy()
+    pairs = check_pairs(pairs)
+    M = _complex_matrix(state, m, n, nodes).real
+    if pairs == ALL_PAIRS:
+        return M.copy()
+    rows, cols = block_indices(int(nodes), pairs)
+    return M[np.ix_(rows, cols)]
 
 
 def _complex_matrix(state, m: float, n: float, nodes: int) -> Operator:
     """The matrix before dropping its imaginary part, which vanishes identically."""
+    return _assemble(state, m, n, nodes)[0]
+
+
+def _assemble(state, m: float, n: float, nodes: int):
+    """(complex matrix, S, D, grid): the matrix and the nodal maps of S_pi and D_q."""
     grid = _grid(state, n, nodes)
     L, S, Dq = _fluxes(state, grid, m)
     D, ir, ik, im = grid.Dx, 1.0 / grid.rh[:, None], 1j * grid.kh, 1j * m
@@ -279,31 +364,96 @@ def _complex_matrix(state, m: float, n: float, nodes: int) -> Operator:
     maxwell[ends] = 0.0
     maxwell[[0, nn - 1], [phi.start, phi.stop - 1]] = 1.0
     # theta and z rows carry sin factors: times i they are the real cos/sin equations
-    return np.vstack([eq_r, 1j * eq_t, 1j * eq_z, maxwell, incompressible[1:-1]])
+    M = np.vstack([eq_r, 1j * eq_t, 1j * eq_z, maxwell, incompressible[1:-1]])
+    return M, S, Dq, grid
 
 
-def collocation_target(state, m: int, n: float, *, nodes: int = 40) -> float:
-    """f = -sign(det M) sigma_min(M) / sigma_max(M), the bifurcation criterion.
+def collocation_impedance(
+    state, m: int, n: float, *, nodes: int = 40, pairs: int = ALL_PAIRS
+) -> FloatArray:
+    """The conditional impedance z(r_o) of the kept ``pairs``, by collocation.
+
+    z is defined as in the Riccati method (S = z U at r_o for the solutions with
+    S(r_i) = 0; Stroh variables U = [U_r, U_th, U_z, r Delta_r],
+    S = [r Sigma_rr, r Sigma_rth, r Sigma_rz, -Phi], docs/derivation-stroh.md, units
+    R_i = 1), but computed without the Stroh matrix: for each kept pair j the collocated
+    problem of :func:`collocation_matrix` with its outer-face condition S_j(r_o) = 0
+    replaced by U_j(r_o) = 1 (the other kept U_i(r_o) = 0) is solved, and S(r_o) is read
+    off the incremental law. A (kept x kept) array, rows and columns in pair order;
+    singular where the mode is at bifurcation, infinite at a pole of z.
+    """
+    pairs = check_pairs(pairs)
+    nn = int(nodes)
+    M, S, Dq, grid = _assemble(state, m, n, nn)
+    cols, r_o, h = _layout(nn), grid.r[0], grid.h  # node 0 is the outer face
+    # outer-face maps of the Stroh U and S (physical units) on the scaled unknowns
+    U_out = np.zeros((4, 5 * nn - 2))
+    for j, f in enumerate(("U_r", "U_th", "U_z")):
+        U_out[j, cols[f].start] = h
+    U_out[3] = r_o * Dq[0][0].real
+    S_out = np.stack(
+        [
+            r_o * S[0, 0][0].real,
+            r_o * (1j * S[0, 1][0]).real,
+            r_o * (1j * S[0, 2][0]).real,
+            np.zeros(5 * nn - 2),
+        ]
+    )
+    S_out[3, cols["Phi"].start] = -h
+    face_rows = [0, nn, 2 * nn, 3 * nn]  # S_rr, S_rth, S_rz, Phi = 0 at r_o
+    A = M.real.copy()
+    A[face_rows] = U_out
+    rows, keep_cols = block_indices(nn, pairs)
+    kept = [j for j in range(4) if (pairs >> j) & 1]
+    rhs = np.zeros((5 * nn - 2, len(kept)))
+    for c, j in enumerate(kept):
+        rhs[face_rows[j], c] = 1.0
+    v = np.zeros((5 * nn - 2, len(kept)))
+    v[keep_cols] = np.linalg.solve(A[np.ix_(rows, keep_cols)], rhs[rows])
+    return (S_out @ v)[kept]
+
+
+def collocation_target(
+    state, m: int, n: float, *, nodes: int = 40, pairs: int = ALL_PAIRS
+) -> float:
+    """f = s0 sign(det M) sigma_min(M) / sigma_max(M), the bifurcation criterion.
 
     Continuous in the parameters (det M, continuous, changes sign only through
     sigma_min = 0), free of poles, |f| <= 1, and zero exactly where M is singular, i.e. at
-    a bifurcation (m, n). The minus sign makes f > 0 on the stable side: with the row and
-    column order of :func:`collocation_matrix`, det M < 0 for the unloaded tube (g = 1,
-    lambda_z = 1, Vbar = 0) at every ``nodes`` and mode, and so on every state reached from
-    it without crossing a bifurcation (tested). Roots of even multiplicity are not seen.
+    a bifurcation (m, n). s0 = sign of det M on the unloaded tube (g = 1, lambda_z = 1,
+    Vbar = 0), which is stable in every mode, makes f > 0 on the stable side: with the row
+    and column order of :func:`collocation_matrix`, det M < 0 there (s0 = -1) at every
+    ``nodes`` and mode, and so on every state reached from it without crossing a
+    bifurcation (tested); a family block (``pairs``) has the sign of
+    :func:`stable_det_sign`. Roots of even multiplicity are not seen.
+
+    Where blocks decouple (m = 0 or n = 0), det M is exactly the product of the blocks'
+    determinants, but sigma_min / sigma_max of M is not the product of the blocks' ratios:
+    sigma(M) is the union of the blocks' singular values, so near a root of one block f is
+    that block's f times a non-zero factor, and the whole matrix has the roots of every
+    block (docs/derivation-families.md).
 
     Parameters are those of :func:`collocation_matrix`.
     """
-    M = collocation_matrix(state, m, n, nodes=nodes)
+    pairs = check_pairs(pairs)
+    M = collocation_matrix(state, m, n, nodes=nodes, pairs=pairs)
     sign, _ = np.linalg.slogdet(M)
     s = scipy.linalg.svdvals(M, check_finite=False)
-    return float(-sign * s[-1] / s[0])
+    return float(stable_det_sign(pairs, nodes) * sign * s[-1] / s[0])
 
 
-def critical_collocation(params: TubeParameters, m: int, n: float, solve_for: str,
-                         bracket: tuple[float, float], *, nodes: int = 40,
-                         xtol: float = 1e-13,
-                         base_state: Callable | None = None) -> float:
+def critical_collocation(
+    params: TubeParameters,
+    m: int,
+    n: float,
+    solve_for: str,
+    bracket: tuple[float, float],
+    *,
+    nodes: int = 40,
+    xtol: float = 1e-13,
+    base_state: Callable | None = None,
+    pairs: int = ALL_PAIRS,
+) -> float:
     """Critical value of one control parameter for mode (m, n): root of the target.
 
     Parameters
@@ -320,6 +470,8 @@ def critical_collocation(params: TubeParameters, m: int, n: float, solve_for: st
         Collocation points per field (default 40); absolute tolerance of ``brentq``.
     base_state : callable, keyword-only
         ``params -> BaseState``; default ``electrogrowth.basestate.tube.solve_base_state``.
+    pairs : int, keyword-only
+        The block of a mode family (see :func:`collocation_matrix`; default all).
 
     Raises
     ------
@@ -339,13 +491,14 @@ def critical_collocation(params: TubeParameters, m: int, n: float, solve_for: st
     0.8024795852
     """
     if solve_for not in CONTROLS:
-        raise ParameterError(f"solve_for = {solve_for!r} is invalid; choose one of "
-                             f"{', '.join(CONTROLS)}")
+        raise ParameterError(
+            f"solve_for = {solve_for!r} is invalid; choose one of {', '.join(CONTROLS)}"
+        )
     base_state = base_state or solve_base_state
 
     def target(value: float) -> float:
         state = base_state(params.at(solve_for, value))
-        return collocation_target(state, m, n, nodes=nodes)
+        return collocation_target(state, m, n, nodes=nodes, pairs=pairs)
 
     a, b = map(float, bracket)
     fa, fb = target(a), target(b)
@@ -356,28 +509,33 @@ def critical_collocation(params: TubeParameters, m: int, n: float, solve_for: st
     if np.sign(fa) == np.sign(fb):
         raise NoBifurcationFound(
             f"no sign change of the collocation target for {solve_for} in [{a}, {b}] "
-            f"(mode m={m}, n={n}); widen or move the bracket")
+            f"(mode m={m}, n={n}); widen or move the bracket"
+        )
     root, info = scipy.optimize.brentq(target, a, b, xtol=xtol, full_output=True)
     if not info.converged:
-        raise ConvergenceError(f"brentq did not converge for {solve_for} in [{a}, {b}]: "
-                               f"{info.flag}")
+        raise ConvergenceError(
+            f"brentq did not converge for {solve_for} in [{a}, {b}]: {info.flag}"
+        )
     return float(root)
 
 
-def mode_shape_collocation(state, m: int, n: float, *,
-                           nodes: int = 40) -> dict[str, FloatArray]:
+def mode_shape_collocation(
+    state, m: int, n: float, *, nodes: int = 40, pairs: int = ALL_PAIRS
+) -> dict[str, FloatArray]:
     """Null vector of the collocation matrix at a (near-)critical state.
 
     Returns arrays over the current radius ``r`` (inner face first) of the amplitudes
     ``U_r, U_th, U_z, Phi`` and ``P`` of paper eq. incremental-solutions, normalised so
     that max |U| = 1 over the three displacement components, with the largest
     displacement entry positive. It is the right singular vector of the smallest
-    singular value, so it is meaningful only where the target is (close to) zero.
+    singular value, so it is meaningful only where the target is (close to) zero. With
+    ``pairs`` (a family's block) the left-out unknowns are exactly zero.
     """
-    M = collocation_matrix(state, m, n, nodes=nodes)
-    v = np.linalg.svd(M)[2][-1]
+    M = collocation_matrix(state, m, n, nodes=nodes, pairs=pairs)
     grid = _grid(state, n, nodes)
     nn = grid.rh.size
+    v = np.zeros(5 * nn - 2)
+    v[block_indices(nn, check_pairs(pairs))[1]] = np.linalg.svd(M)[2][-1]
     cols = _layout(nn)
     parts = {f: v[cols[f]] for f in _FIELDS}
     parts["P"] = interior_interpolation(nn) @ parts["P"]

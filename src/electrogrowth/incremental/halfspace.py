@@ -82,6 +82,7 @@ import scipy.linalg
 
 from ..errors import ParameterError
 from ..model.materials import MODULI_INDEX
+from .charts import determinant
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -258,31 +259,6 @@ def boundary_matrix(N, face: str) -> tuple[FloatArray, float]:
 
 
 @numba.njit(cache=True)
-def _det(A) -> float:
-    """Determinant by Gaussian elimination with partial pivoting (A is not modified)."""
-    n = A.shape[0]
-    m = A.copy()
-    det = 1.0
-    for c in range(n):
-        piv = c
-        for i in range(c + 1, n):
-            if abs(m[i, c]) > abs(m[piv, c]):
-                piv = i
-        if m[piv, c] == 0.0:
-            return 0.0
-        if piv != c:
-            for j in range(n):
-                m[c, j], m[piv, j] = m[piv, j], m[c, j]
-            det = -det
-        det *= m[c, c]
-        for i in range(c + 1, n):
-            f = m[i, c] / m[c, c]
-            for j in range(c, n):
-                m[i, j] -= f * m[c, j]
-    return det
-
-
-@numba.njit(cache=True)
 def _inverse(A, out) -> bool:
     """out = A^-1 by Gauss-Jordan with partial pivoting; False if A is singular."""
     n = A.shape[0]
@@ -350,7 +326,7 @@ def _targets_kernel(E, w, inner, f, margin):
                 break
             mu = 1.0
             if it < 4:
-                dz = abs(_det(Z))
+                dz = abs(determinant(Z))
                 if dz > 0.0 and np.isfinite(dz):
                     mu = dz ** (-0.125)
             step, size = 0.0, 0.0
@@ -383,11 +359,11 @@ def _targets_kernel(E, w, inner, f, margin):
                 for c in range(8):
                     acc += M[c, a] * M[c, b]
                 gram[a, b] = acc
-        g = _det(gram)
+        g = determinant(gram)
         if not (g > 1e-200 and _inverse(gram, gi)):
             continue
-        dx = _det(M[:4].copy())
-        dy = _det(M[4:].copy())
+        dx = determinant(M[:4].copy())
+        dy = determinant(M[4:].copy())
         f[i] = (1.0 if dx >= 0.0 else -1.0) * dy / np.sqrt(g)
         for a in range(8):
             for b in range(4):

@@ -24,6 +24,13 @@ lambda_z) with Dormand-Prince 8(5,3) (the tableau of dop853.py) and per-member e
 control; the moduli come from a Chebyshev table (radial_table.py), which crosses into the
 compiled code as one record (a RadialTable, or a TableStack for a batch), so the kernel
 knows no material.
+
+Every member of a batch also says which of the four pairs (U_j, S_j) its mode family keeps
+(``keep``, a bitmask, ALL_PAIRS = 0b1111 for the paper's ansatz; see charts.py and
+incremental/targets.py): the torsional pair at m = 0, the anti-plane pair at k = 0 decouple,
+and a family's target is that of its own block, f_J of the kept pairs alone (the factor
+1/sqrt(2) of each left-out pair is divided out). With all pairs kept at m = 0 (or k = 0) the
+target is exactly the product of the two blocks' targets (docs/derivation-families.md).
 """
 
 from __future__ import annotations
@@ -45,6 +52,9 @@ _C = np.ascontiguousarray(C)
 _E3 = np.ascontiguousarray(E3)
 _E5 = np.ascontiguousarray(E5)
 _EXPONENT = -1.0 / ORDER  # step-size exponent of the error estimate
+
+#: every pair (U_j, S_j) kept: the paper's ansatz
+ALL_PAIRS = 0b1111
 
 #: status codes written by the kernel
 OK, MAX_STEPS, STEP_UNDERFLOW, NO_CHART = 0, 1, 2, 3
@@ -195,20 +205,36 @@ def impedance_scale(m: float, k: float, r_o: float) -> float:
 
 
 @nb.njit(cache=True)
-def integrate_one(m, k, table, rtol, max_steps):
+def _start(keep):
+    """z~(r_i): 0 on the kept pairs (S = 0 on the inner face), 1 on the left-out ones
+    (constant: their rows and columns of G are zero); and the factor sqrt(2)^(left out)
+    that undoes their 1/sqrt(2) in the target."""
+    z = np.zeros((4, 4))
+    factor = 1.0
+    for j in range(4):
+        if not (keep >> j) & 1:
+            z[j, j] = 1.0
+            factor *= np.sqrt(2.0)
+    return z, factor
+
+
+@nb.njit(cache=True)
+def integrate_one(m, k, keep, table, rtol, max_steps):
     """Integrate mode (m, k) through the wall of ``table`` (a RadialTable).
 
-    Adaptive steps with the local error of every entry of z~ below rtol (1 + |z~|), and a
-    change of chart whenever an entry of z~ exceeds SWITCH. Returns (f, z~, J, status,
-    steps): the target, the impedance in chart J at Rbar_o, the chart, a status code
-    (OK, MAX_STEPS, STEP_UNDERFLOW, NO_CHART; f is NaN unless OK) and the steps tried.
+    ``keep`` (bit j set: pair (U_j, S_j) kept; ALL_PAIRS for the paper's ansatz) selects
+    the block of a mode family. Adaptive steps with the local error of every entry of z~
+    below rtol (1 + |z~|), and a change of chart whenever an entry of z~ exceeds SWITCH.
+    Returns (f, z~, J, status, steps): the target of the kept block, the impedance in
+    chart J at Rbar_o, the chart, a status code (OK, MAX_STEPS, STEP_UNDERFLOW, NO_CHART;
+    f is NaN unless OK) and the steps tried.
     """
     ro = table.outer_radius
     s = impedance_scale(m, k, _radius(table, ro))
-    z = np.zeros((4, 4))
+    z, factor = _start(keep)
     J, orient = 0, 1.0
     work = _new_work(table)
-    chart_setup(J, s, work.perm, work.mult)
+    chart_setup(J, s, keep, work.perm, work.mult)
     K = np.empty((_NS + 1, 4, 4))
     ztmp = np.empty((4, 4))
     znew = np.empty((4, 4))
@@ -241,16 +267,17 @@ def integrate_one(m, k, table, rtol, max_steps):
                     z[:, :] = zn
                     J = Jn
                     orient *= sgn
-                    chart_setup(J, s, work.perm, work.mult)
+                    chart_setup(J, s, keep, work.perm, work.mult)
             _rhs(R, z, m, k, table, work, K[0])
         else:
             h *= max(0.2, 0.9 * err**_EXPONENT)
-    return chart_target(z, J, orient), z, J, OK, steps
+    return factor * chart_target(z, J, orient), z, J, OK, steps
 
 
 @nb.njit(cache=True)
-def integrate_fixed(m, k, table, n_steps):
-    """z~(Rbar_o) of mode (m, k) after ``n_steps`` equal steps in chart J = {}.
+def integrate_fixed(m, k, keep, table, n_steps):
+    """z~(Rbar_o) of mode (m, k), pairs ``keep``, after ``n_steps`` equal steps in chart
+    J = {}.
 
     The steps of :func:`integrate_one` without error control or change of chart (so only
     for modes whose impedance stays bounded there): the global error is O(h^8), h =
@@ -258,9 +285,9 @@ def integrate_fixed(m, k, table, n_steps):
     """
     ro = table.outer_radius
     s = impedance_scale(m, k, _radius(table, ro))
-    z = np.zeros((4, 4))
+    z = _start(keep)[0]
     work = _new_work(table)
-    chart_setup(0, s, work.perm, work.mult)
+    chart_setup(0, s, keep, work.perm, work.mult)
     K = np.empty((_NS + 1, 4, 4))
     ztmp = np.empty((4, 4))
     znew = np.empty((4, 4))
@@ -288,32 +315,32 @@ def _member_table(tables, t):
 
 
 @nb.njit(cache=True)
-def _target_member(b, m, k, table_index, tables, rtol, max_steps, f, status, steps):
+def _target_member(b, m, k, keep, table_index, tables, rtol, max_steps, f, status, steps):
     """Member b of a batch: target, status and steps into f[b], status[b], steps[b]."""
     table = _member_table(tables, table_index[b])
-    f[b], _, _, status[b], steps[b] = integrate_one(m[b], k[b], table, rtol, max_steps)
+    f[b], _, _, status[b], steps[b] = integrate_one(m[b], k[b], keep[b], table, rtol, max_steps)
 
 
 @nb.njit(parallel=True, cache=True)
-def target_batch(m, k, table_index, tables, rtol, max_steps):
+def target_batch(m, k, keep, table_index, tables, rtol, max_steps):
     """Bifurcation target f for a batch of (mode, base state) pairs, in parallel.
 
-    Member b is mode (m[b], k[b]) on table ``table_index[b]`` of the TableStack
-    ``tables``. Returns (f, status, steps), each of the batch's length (see
-    :func:`integrate_one`).
+    Member b is mode (m[b], k[b]) of the family block ``keep[b]`` (int64 bitmasks, see
+    :func:`integrate_one`) on table ``table_index[b]`` of the TableStack ``tables``.
+    Returns (f, status, steps), each of the batch's length.
     """
     n = m.shape[0]
     f, status, steps = np.empty(n), np.empty(n, np.int64), np.empty(n, np.int64)
     for b in nb.prange(n):
-        _target_member(b, m, k, table_index, tables, rtol, max_steps, f, status, steps)
+        _target_member(b, m, k, keep, table_index, tables, rtol, max_steps, f, status, steps)
     return f, status, steps
 
 
 @nb.njit(cache=True)
-def target_serial(m, k, table_index, tables, rtol, max_steps):
+def target_serial(m, k, keep, table_index, tables, rtol, max_steps):
     """:func:`target_batch` on one thread: small batches do not pay the thread launch."""
     n = m.shape[0]
     f, status, steps = np.empty(n), np.empty(n, np.int64), np.empty(n, np.int64)
     for b in range(n):
-        _target_member(b, m, k, table_index, tables, rtol, max_steps, f, status, steps)
+        _target_member(b, m, k, keep, table_index, tables, rtol, max_steps, f, status, steps)
     return f, status, steps

@@ -8,6 +8,11 @@ with the moduli taken straight from the base state (no Chebyshev table) and the 
 matrix from the pure-Python version of ``stroh_matrix``. It uses the impedance chart only,
 so it stops with an error when z has a pole inside the wall; the compiled kernel
 (impedance.py) must agree with it wherever it runs.
+
+A mode family that keeps only some pairs (U_j, S_j) (``pairs``, bit j set: pair j kept;
+incremental/targets.py) is integrated here on its own block: the rows and columns of G of
+the kept pairs, z of size (kept x kept). No zero padding, no constant entries: the
+independent check of the kernel's masking.
 """
 
 from __future__ import annotations
@@ -16,20 +21,29 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from ..errors import ConvergenceError
-from .impedance import impedance_scale
+from .impedance import ALL_PAIRS, impedance_scale
 from .stroh import stroh_matrix
 
 _stroh = stroh_matrix.py_func
 
 
-def impedance_rhs(state, m: float, k: float):
-    """Right-hand side of the Riccati equation in R for ``solve_ivp`` (z flattened)."""
+def kept_pairs(pairs: int) -> list[int]:
+    """Indices j of the pairs (U_j, S_j) kept by the bitmask ``pairs``."""
+    return [j for j in range(4) if (pairs >> j) & 1]
+
+
+def impedance_rhs(state, m: float, k: float, pairs: int = ALL_PAIRS):
+    """Right-hand side of the Riccati equation in R for ``solve_ivp`` (z flattened), on the
+    block of the kept ``pairs``."""
     g, lz = state.params.growth, state.params.stretch
     a = g**3 / lz
     G = np.empty((8, 8))
+    keep = kept_pairs(pairs)
+    d = len(keep)
+    rows = np.array(keep + [4 + j for j in keep])
 
     def rhs(R, y):
-        z = y.reshape(4, 4)
+        z = y.reshape(d, d)
         r = float(state.radius(R))
         mod = state.moduli(np.array(R))
         _stroh(
@@ -39,31 +53,39 @@ def impedance_rhs(state, m: float, k: float):
             k * r,
             G,
         )
-        G1, G2, G3, G4 = G[:4, :4], G[:4, 4:], G[4:, :4], G[4:, 4:]
+        Gk = G[np.ix_(rows, rows)]
+        G1, G2, G3, G4 = Gk[:d, :d], Gk[:d, d:], Gk[d:, :d], Gk[d:, d:]
         return (a * R / r**2 * (G3 + G4 @ z - z @ G1 - z @ G2 @ z)).ravel()
 
     return rhs
 
 
 def impedance_reference(
-    state, m: float, k: float, *, rtol: float = 1e-11, atol: float = 1e-13
+    state, m: float, k: float, *, pairs: int = ALL_PAIRS, rtol: float = 1e-11, atol: float = 1e-13
 ) -> np.ndarray:
-    """Conditional impedance z(r_o) of mode (m, k): the paper's method, unscaled."""
+    """Conditional impedance z(r_o) of mode (m, k): the paper's method, unscaled; the block
+    of the kept ``pairs`` (4x4 for the paper's ansatz)."""
     ro = state.params.outer_radius
+    d = len(kept_pairs(pairs))
     sol = solve_ivp(
-        impedance_rhs(state, m, k), (1.0, ro), np.zeros(16), method="DOP853", rtol=rtol, atol=atol
+        impedance_rhs(state, m, k, pairs),
+        (1.0, ro),
+        np.zeros(d * d),
+        method="DOP853",
+        rtol=rtol,
+        atol=atol,
     )
     if not sol.success or not np.all(np.isfinite(sol.y[:, -1])):
         raise ConvergenceError(
             f"reference Riccati integration failed for mode m={m}, "
             f"k={k}: {sol.message} (a pole of the impedance?)"
         )
-    return sol.y[:, -1].reshape(4, 4)
+    return sol.y[:, -1].reshape(d, d)
 
 
-def target_reference(state, m: float, k: float, **kwargs) -> float:
+def target_reference(state, m: float, k: float, *, pairs: int = ALL_PAIRS, **kwargs) -> float:
     """Pole-free target det z / sqrt(det(I + z^T z)) with S scaled like the kernel."""
-    z = impedance_reference(state, m, k, **kwargs)
+    z = impedance_reference(state, m, k, pairs=pairs, **kwargs)
     s = impedance_scale(float(m), float(k), float(state.r_o))
     z = z / s
-    return float(np.linalg.det(z) / np.sqrt(np.linalg.det(np.eye(4) + z.T @ z)))
+    return float(np.linalg.det(z) / np.sqrt(np.linalg.det(np.eye(len(z)) + z.T @ z)))

@@ -27,6 +27,12 @@ moduli and p (no use of sigma_rr): with e_1a = Gamma_1aa / K_aa (a = 2, 3),
     gamma_1a = A_1a1a - e_1a Gamma_1aa     (shear modulus at fixed E_a; paper gamma_1a)
     c_1a     = A_1aa1 + p - e_1a Gamma_1aa  (= gamma_1a - sigma_rr for real materials)
     s_1a     = gamma_1a - c_1a = A_1a1a - A_1aa1 - p  (= sigma_rr by paper eq. 20-1)
+
+Decoupled pairs (docs/derivation-families.md): every entry coupling the pair
+(U_th, r Sigma_rth) to the others carries a factor m, every entry coupling (U_z, r Sigma_rz)
+a factor k r. So at m = 0 the torsion pair decouples from the axisymmetric 6x6 system, and
+at k = 0 (n = 0, prismatic) the anti-plane pair from the in-plane 6x6 system; the mode
+families of incremental/targets.py are these blocks.
 """
 
 from __future__ import annotations
@@ -106,9 +112,9 @@ def stroh_matrix(mod, p, m, kr, out):
     gam13 = mod[A1313] - e13 * mod[G133]
     c12 = mod[A1221] + p - e12 * mod[G122]
     c13 = mod[A1331] + p - e13 * mod[G133]
-    t12 = c12 / gam12                       # 1 - sigma_rr / gamma_12
+    t12 = c12 / gam12  # 1 - sigma_rr / gamma_12
     t13 = c13 / gam13
-    q12 = e12 * (gam12 - c12) / gam12       # e_12 sigma_rr / gamma_12
+    q12 = e12 * (gam12 - c12) / gam12  # e_12 sigma_rr / gamma_12
     q13 = e13 * (gam13 - c13) / gam13
     # Effective hoop and axial shear stiffnesses left after eliminating U_th', U_z', D.
     h12 = mod[A2121] - e12 * mod[G122] - c12 * c12 / gam12
@@ -142,8 +148,9 @@ def stroh_matrix(mod, p, m, kr, out):
     out[3, 1] = -m * q12
     out[3, 5] = m * e12 / gam12
     out[3, 6] = kr * e13 / gam13
-    out[3, 7] = (m2 * (1.0 / mod[K22] + e12 * e12 / gam12)
-                 + k2 * (1.0 / mod[K33] + e13 * e13 / gam13))
+    out[3, 7] = m2 * (1.0 / mod[K22] + e12 * e12 / gam12) + k2 * (
+        1.0 / mod[K33] + e13 * e13 / gam13
+    )
     # 4: radial equilibrium, (r Sigma_rr)' = S_thth - m S_thr - k r S_zr (amplitudes;
     #    S_thz, S_zth carry sin(m th) sin(kz), the other S_ij the factor of L_ji)
     out[4, 0] = b12 + m2 * h12 + k2 * h13
@@ -179,8 +186,9 @@ def stroh_matrix(mod, p, m, kr, out):
 stroh_matrix_py = stroh_matrix.py_func
 
 
-def stroh_blocks(mod: Moduli, p: float, m: float, kr: float
-                 ) -> tuple[StrohMatrix, StrohMatrix, StrohMatrix, StrohMatrix]:
+def stroh_blocks(
+    mod: Moduli, p: float, m: float, kr: float
+) -> tuple[StrohMatrix, StrohMatrix, StrohMatrix, StrohMatrix]:
     """The 4x4 blocks (G1, G2, G3, G4) of :func:`stroh_matrix`, as new arrays.
 
     Examples
@@ -192,13 +200,13 @@ def stroh_blocks(mod: Moduli, p: float, m: float, kr: float
     True
     """
     G = np.empty((8, 8))
-    stroh_matrix(np.ascontiguousarray(mod, dtype=np.float64), float(p), float(m),
-                 float(kr), G)
+    stroh_matrix(np.ascontiguousarray(mod, dtype=np.float64), float(p), float(m), float(kr), G)
     return G[:4, :4].copy(), G[:4, 4:].copy(), G[4:, :4].copy(), G[4:, 4:].copy()
 
 
-def neo_hookean_stroh_matrix(l1: float, l2: float, l3: float, d: float, p: float,
-                             m: float, kr: float) -> StrohMatrix:
+def neo_hookean_stroh_matrix(
+    l1: float, l2: float, l3: float, d: float, p: float, m: float, kr: float
+) -> StrohMatrix:
     """Closed-form G for the ideal neo-Hookean dielectric (paper Sec. 4.2, App. B).
 
     Moduli of ``materials.neo_hookean_moduli``: A_1a1a = A1111 = l1^2 + d^2,
@@ -207,25 +215,51 @@ def neo_hookean_stroh_matrix(l1: float, l2: float, l3: float, d: float, p: float
     test :func:`stroh_matrix`; ``d`` is the current radial displacement D_r.
     """
     b1, b2, b3 = l1 * l1, l2 * l2, l3 * l3
-    s = b1 + d * d - p                       # sigma_rr
-    t = 1.0 - s / b1                         # c / gamma = (p - d^2) / l1^2
+    s = b1 + d * d - p  # sigma_rr
+    t = 1.0 - s / b1  # c / gamma = (p - d^2) / l1^2
     w = m * m + kr * kr
-    h2 = b2 - d * d - (b1 - s) ** 2 / b1     # h_12
-    h3 = b3 - d * d - (b1 - s) ** 2 / b1     # h_13
+    h2 = b2 - d * d - (b1 - s) ** 2 / b1  # h_12
+    h3 = b3 - d * d - (b1 - s) ** 2 / b1  # h_13
     b12 = b1 + d * d + b2 + 2.0 * p
     b13 = b1 + d * d + b3 + 2.0 * p
     a = b1 + d * d + p
     ds = d * s / b1
-    return np.array([
-        [-1.0, -m, -kr, 0.0, 0.0, 0.0, 0.0, 0.0],
-        [m * t, t, 0.0, 0.0, 0.0, 1.0 / b1, 0.0, m * d / b1],
-        [kr * t, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0 / b1, kr * d / b1],
-        [-w * ds, -m * ds, 0.0, 0.0, 0.0, m * d / b1, kr * d / b1, w * (b1 + d * d) / b1],
-        [b12 + m * m * h2 + kr * kr * h3, m * (b12 + h2), kr * a, -2.0 * d,
-         1.0, -m * t, -kr * t, w * ds],
-        [m * (b12 + h2), h2 + m * m * b12 + kr * kr * b3, m * kr * (a + p), -2.0 * d * m,
-         m, -t, 0.0, m * ds],
-        [kr * a, m * kr * (a + p), kr * kr * b13 + m * m * b2, -2.0 * d * kr,
-         kr, 0.0, 0.0, 0.0],
-        [-2.0 * d, -2.0 * d * m, -2.0 * d * kr, 1.0, 0.0, 0.0, 0.0, 0.0],
-    ])
+    return np.array(
+        [
+            [-1.0, -m, -kr, 0.0, 0.0, 0.0, 0.0, 0.0],
+            [m * t, t, 0.0, 0.0, 0.0, 1.0 / b1, 0.0, m * d / b1],
+            [kr * t, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0 / b1, kr * d / b1],
+            [-w * ds, -m * ds, 0.0, 0.0, 0.0, m * d / b1, kr * d / b1, w * (b1 + d * d) / b1],
+            [
+                b12 + m * m * h2 + kr * kr * h3,
+                m * (b12 + h2),
+                kr * a,
+                -2.0 * d,
+                1.0,
+                -m * t,
+                -kr * t,
+                w * ds,
+            ],
+            [
+                m * (b12 + h2),
+                h2 + m * m * b12 + kr * kr * b3,
+                m * kr * (a + p),
+                -2.0 * d * m,
+                m,
+                -t,
+                0.0,
+                m * ds,
+            ],
+            [
+                kr * a,
+                m * kr * (a + p),
+                kr * kr * b13 + m * m * b2,
+                -2.0 * d * kr,
+                kr,
+                0.0,
+                0.0,
+                0.0,
+            ],
+            [-2.0 * d, -2.0 * d * m, -2.0 * d * kr, 1.0, 0.0, 0.0, 0.0, 0.0],
+        ]
+    )

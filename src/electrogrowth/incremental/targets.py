@@ -9,6 +9,21 @@ there, without poles:
 * ``Method.COLLOCATION``: Chebyshev collocation of the full incremental equations
   (collocation.py), one mode at a time.
 
+Every mode belongs to one :class:`Family` (docs/derivation-families.md):
+
+* ``wrinkle``: the paper's ansatz (eq. incremental-solutions), m >= 0, n >= 1; at m = 0
+  the axisymmetric modes (u_r, u_z, phi), the torsional factor excluded;
+* ``prismatic``: n = 0 (k = 0), m >= 2, plane-strain wrinkles u_r = U_r cos m th,
+  u_th = U_th sin m th, phi = Phi cos m th, u_z = 0 (admissible with sliding ends); the
+  in-plane part of the k = 0 system (the anti-plane part never bifurcates while the
+  anti-plane shear moduli gamma_13, A2323 are positive);
+* ``torsional``: m = 0, n >= 1, u_th = U_th(r) cos kz alone.
+
+A family keeps a subset of the four pairs (U_j, S_j) of the Stroh vector (``PAIRS`` bits:
+0 U_r, 1 U_th, 2 U_z, 3 r Delta_r / Phi), which decouple from the others for its modes.
+``modes`` arrays have rows (m, n) (the natural family: prismatic for n = 0, else wrinkle)
+or (m, n, code) with code = ``Family.code``.
+
 :func:`targets_for` turns a method and an :class:`~.accuracy.Accuracy` into a function
 ``targets(state, modes) -> f``, which the march (bifurcation/march.py) evaluates.
 """
@@ -24,13 +39,17 @@ import numpy as np
 from ..errors import ConvergenceError, ParameterError
 from .accuracy import Accuracy
 from .collocation import collocation_target
-from .impedance import STATUS_TEXT, target_batch, target_serial
+from .impedance import ALL_PAIRS, STATUS_TEXT, target_batch, target_serial
 from .radial_table import build_table, stack_tables
 
 PARALLEL_FROM = 16  # batches smaller than this run on one thread (thread launch costs more)
 
-#: targets(state, modes (k, 2) array) -> (k,) array of target values
+#: targets(state, modes (k, 2) or (k, 3) array) -> (k,) array of target values
 Targets = Callable[[object, np.ndarray], np.ndarray]
+
+#: Bits of the Stroh pairs (U_j, S_j): U_r / r Sigma_rr, U_th / r Sigma_rth,
+#: U_z / r Sigma_rz, r Delta_r / -Phi (collocation: U_r and P, U_th, U_z, Phi).
+U_R, U_TH, U_Z, PHI = 1, 2, 4, 8
 
 
 class Method(enum.StrEnum):
@@ -43,6 +62,32 @@ class Method(enum.StrEnum):
 METHODS = tuple(m.value for m in Method)
 
 
+class Family(enum.StrEnum):
+    """A family of incremental modes (module docstring): the one name behind ``family``."""
+
+    WRINKLE = "wrinkle"  # the paper's ansatz, m >= 0, n >= 1 (m = 0: axisymmetric)
+    PRISMATIC = "prismatic"  # n = 0, m >= 2: plane strain, the in-plane part at k = 0
+    TORSIONAL = "torsional"  # m = 0, n >= 1: u_th = U_th(r) cos kz
+
+    @property
+    def code(self) -> int:
+        """The number standing for the family in a ``modes`` array (third column)."""
+        return _CODES[self]
+
+    def pairs(self, m: int) -> int:
+        """The Stroh pairs kept for mode number m (bitmask, see ``U_R`` ...)."""
+        if self is Family.PRISMATIC:
+            return ALL_PAIRS & ~U_Z
+        if self is Family.TORSIONAL:
+            return U_TH
+        return ALL_PAIRS if m != 0 else ALL_PAIRS & ~U_TH
+
+
+FAMILIES = tuple(f.value for f in Family)
+_CODES = {f: i for i, f in enumerate(Family)}
+_BY_CODE = tuple(Family)
+
+
 def check_method(method: str) -> Method:
     """The Method named ``method``, or ParameterError listing the valid names."""
     try:
@@ -51,36 +96,130 @@ def check_method(method: str) -> Method:
         raise ParameterError(f"method = {method!r} is unknown; choose one of {METHODS}") from None
 
 
+def check_family(family: str) -> Family:
+    """The Family named ``family``, or ParameterError listing the valid names."""
+    try:
+        return Family(family)
+    except ValueError:
+        raise ParameterError(f"family = {family!r} is unknown; choose one of {FAMILIES}") from None
+
+
+def natural_family(m: int, n: int) -> Family:
+    """The family of (m, n) when none is named: prismatic for n = 0, else wrinkle."""
+    return Family.PRISMATIC if n == 0 else Family.WRINKLE
+
+
 def wavenumber(params, n: float) -> float:
     """Axial wavenumber k = n pi / (lambda_z L) in the current configuration."""
     return n * math.pi / (params.stretch * params.length)
 
 
-def check_mode(m, n) -> None:
-    """Raise ParameterError unless m >= 0 and n >= 1 are integers."""
-    if m < 0 or n < 1 or int(m) != m or int(n) != n:
+def check_mode(m, n, family: str | None = None) -> Family:
+    """The family of mode (m, n) (``family``, or the natural one), or ParameterError.
+
+    Valid: wrinkle m >= 0, n >= 1; prismatic n = 0, m >= 2 ((0, 0) is the breathing mode,
+    the base state's own limit point; (1, 0) a rigid translation); torsional m = 0, n >= 1.
+
+    >>> check_mode(3, 0)
+    <Family.PRISMATIC: 'prismatic'>
+    """
+    whole = all(
+        not isinstance(x, bool)
+        and isinstance(x, (int, float, np.integer, np.floating))
+        and math.isfinite(x)
+        and int(x) == x
+        for x in (m, n)
+    )
+    if not whole or m < 0 or n < 0:
         raise ParameterError(
-            f"mode (m, n) = ({m}, {n}) is invalid; need integers m >= 0, n >= 1")
+            f"mode (m, n) = ({m}, {n}) is invalid; need integers m >= 0,"
+            " n >= 0 (n = 0: prismatic, m >= 2)"
+        )
+    fam = natural_family(m, n) if family is None else check_family(family)
+    where = f"mode (m, n) = ({m:g}, {n:g})"
+    if fam is Family.WRINKLE and n < 1:
+        raise ParameterError(
+            f"{where} is not a wrinkle (n >= 1); n = 0 is the prismatic family (m >= 2)"
+        )
+    if fam is Family.PRISMATIC:
+        if n != 0:
+            raise ParameterError(f"{where} is not prismatic; prismatic modes have n = 0, m >= 2")
+        if m < 2:
+            why = (
+                "the breathing mode, the base state's own limit point"
+                if m == 0
+                else "a rigid translation of the cross-section"
+            )
+            raise ParameterError(
+                f"{where} is invalid: it is {why}; prismatic modes (n = 0) need m >= 2"
+            )
+    if fam is Family.TORSIONAL and (m != 0 or n < 1):
+        raise ParameterError(
+            f"{where} is invalid for the torsional family; torsional modes have m = 0, n >= 1"
+        )
+    return fam
 
 
-def impedance_targets(state, modes, *, rtol: float = 1e-12,
-                      max_steps: int = 20000) -> np.ndarray:
-    """Kernel target f for many modes (rows (m, n)) on one base state."""
+def mode_families(modes: np.ndarray) -> np.ndarray:
+    """Family codes of the rows of ``modes``: the third column, or the natural family."""
+    if modes.shape[1] > 2:
+        return modes[:, 2].astype(np.int64)
+    return np.where(modes[:, 1] == 0, Family.PRISMATIC.code, Family.WRINKLE.code)
+
+
+def row_family(row) -> Family:
+    """The Family of one row (m, n) or (m, n, code) of a ``modes`` array."""
+    if len(row) > 2:
+        return _BY_CODE[int(row[2])]
+    return natural_family(row[0], row[1])
+
+
+def mode_pairs(modes: np.ndarray) -> np.ndarray:
+    """The Stroh pairs kept by each row of ``modes`` (int64 bitmasks)."""
+    code = mode_families(modes)
+    wrinkle = np.where(modes[:, 0] == 0, ALL_PAIRS & ~U_TH, ALL_PAIRS)
+    return np.select(
+        [code == Family.PRISMATIC.code, code == Family.TORSIONAL.code],
+        [ALL_PAIRS & ~U_Z, U_TH],
+        wrinkle,
+    ).astype(np.int64)
+
+
+def with_family(m: int, n: int, family: str) -> np.ndarray:
+    """The one-row ``modes`` array of mode (m, n) of ``family``."""
+    return np.array([[m, n, Family(family).code]], dtype=float)
+
+
+def impedance_targets(state, modes, *, rtol: float = 1e-12, max_steps: int = 20000) -> np.ndarray:
+    """Kernel target f for many modes (rows (m, n) or (m, n, code)) on one base state."""
     modes = np.atleast_2d(np.asarray(modes, dtype=float))
     tables = stack_tables([build_table(state, tol=Accuracy(rtol).table)])
     count = modes.shape[0]
     k = modes[:, 1] * math.pi / (state.params.stretch * state.params.length)
     m = np.ascontiguousarray(modes[:, 0])
     kernel = target_batch if count >= PARALLEL_FROM else target_serial
-    f, status, _ = kernel(m, k, np.zeros(count, dtype=np.int64), tables, rtol, max_steps)
+    f, status, _ = kernel(
+        m, k, mode_pairs(modes), np.zeros(count, dtype=np.int64), tables, rtol, max_steps
+    )
     bad = status != 0
     if bad.any():
         i = int(np.argmax(bad))
         raise ConvergenceError(
             f"impedance integration failed for mode (m, n) = ({modes[i, 0]:g}, "
-            f"{modes[i, 1]:g}): {STATUS_TEXT[int(status[i])]}"
+            f"{modes[i, 1]:g}) ({row_family(modes[i])}): {STATUS_TEXT[int(status[i])]}"
         )
     return f
+
+
+def collocation_targets(state, modes, *, nodes: int = 40) -> np.ndarray:
+    """Collocation target f for the rows of ``modes``, one mode (and family) at a time."""
+    modes = np.atleast_2d(np.asarray(modes, dtype=float))
+    return np.array(
+        [
+            collocation_target(state, int(row[0]), int(row[1]), nodes=nodes, pairs=int(keep))
+            for row, keep in zip(modes, mode_pairs(modes))
+        ]
+    )
 
 
 def targets_for(method: str, rtol: float) -> Targets:
@@ -89,5 +228,4 @@ def targets_for(method: str, rtol: float) -> Targets:
     if method is Method.IMPEDANCE:
         return lambda state, modes: impedance_targets(state, modes, rtol=rtol)
     nodes = Accuracy(rtol).collocation_nodes
-    return lambda state, modes: np.array(
-        [collocation_target(state, int(m), int(n), nodes=nodes) for m, n in modes])
+    return lambda state, modes: collocation_targets(state, modes, nodes=nodes)

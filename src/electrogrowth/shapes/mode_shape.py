@@ -20,6 +20,14 @@ S(r_i) = S(r_o) = 0. Two independent routes compute it:
 * "collocation": the null vector of the Chebyshev collocation matrix (collocation.py),
   interpolated by its polynomial; S follows from the constitutive law.
 
+Mode families (incremental.targets.Family; docs/derivation-families.md): a prismatic mode
+(n = 0, k = 0: a plane-strain wrinkle, the wall a 2D cross-section, U_z = r Sigma_rz = 0)
+and a torsional mode (m = 0: u_th = U_th(r) cos kz alone, every other component 0) are
+computed by both routes on their own block of the Stroh system (the kept pairs; the
+left-out components are exactly zero); so are the axisymmetric modes (m = 0 wrinkles,
+U_th = r Sigma_rth = 0). Note that shapes/wall.py draws the paper's ansatz, in which
+u_th carries sin(m th): a torsional mode there needs its own factor cos(kz).
+
 Both are sampled at ``points`` reference radii R equally spaced in [1, Rbar_o] and
 normalised alike: max |U_r|, |U_th|, |U_z| over the samples is 1, and the largest-|.|
 sample of U_r is positive (where the wall moves most, it moves outwards at th = 0, z = 0;
@@ -42,17 +50,25 @@ from ..basestate.tube import BaseState, solve_base_state
 from ..bifurcation.critical import CriticalPoint
 from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
 from ..incremental.collocation import mode_shape_collocation
-from ..incremental.impedance import impedance_scale
-from ..incremental.impedance_reference import impedance_rhs
+from ..incremental.impedance import ALL_PAIRS, impedance_scale
+from ..incremental.impedance_reference import impedance_rhs, kept_pairs
 from ..incremental.stroh import stroh_matrix
-from ..incremental.targets import Method, check_method, check_mode, wavenumber
+from ..incremental.targets import Family, Method, check_method, check_mode, wavenumber
 from ..model.materials import MODULI_INDEX
 from ..model.params import TubeParameters
 from ..outcomes import Kind
 
 #: Components of the Stroh vector eta, in order (stroh.py, SIGN_PHI = -1).
-ETA_NAMES = ("U_r", "U_th", "U_z", "r_Delta_r", "r_Sigma_rr", "r_Sigma_rth", "r_Sigma_rz",
-             "minus_Phi")
+ETA_NAMES = (
+    "U_r",
+    "U_th",
+    "U_z",
+    "r_Delta_r",
+    "r_Sigma_rr",
+    "r_Sigma_rth",
+    "r_Sigma_rz",
+    "minus_Phi",
+)
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -68,11 +84,12 @@ class ModeShape:
     eta : (8, points) array
         The whole Stroh vector [U_r, U_th, U_z, r Delta_r, r Sigma_rr, r Sigma_rth,
         r Sigma_rz, -Phi] (``ETA_NAMES``), same normalisation.
-    m, n, k : mode numbers and axial wavenumber k = n pi / (lambda_z L).
+    m, n, k : mode numbers and axial wavenumber k = n pi / (lambda_z L) (0 for n = 0).
     params : TubeParameters at the critical point.
     route : "impedance" or "collocation", the route actually used.
     boundary_residual : max |S| on the faces over max |S| in the wall (0 at bifurcation).
     note : why the route differs from the one requested ("" otherwise).
+    family : the mode family ("wrinkle", "prismatic", "torsional").
     """
 
     R: FloatArray
@@ -85,6 +102,7 @@ class ModeShape:
     route: str
     boundary_residual: float
     note: str = ""
+    family: str = Family.WRINKLE
 
     @property
     def U_r(self) -> FloatArray:
@@ -114,23 +132,41 @@ class ModeShape:
 
     def table(self) -> tuple[tuple[str, ...], FloatArray]:
         """(column names, rows) for a CSV: R, r, U_r, U_th, U_z, Phi, then the rest of eta."""
-        cols = ("R", "r", "U_r", "U_th", "U_z", "Phi", "r_Delta_r", "r_Sigma_rr",
-                "r_Sigma_rth", "r_Sigma_rz")
-        data = np.column_stack([self.R, self.r, self.U_r, self.U_th, self.U_z, self.Phi,
-                                *self.eta[3:7]])
+        cols = (
+            "R",
+            "r",
+            "U_r",
+            "U_th",
+            "U_z",
+            "Phi",
+            "r_Delta_r",
+            "r_Sigma_rr",
+            "r_Sigma_rth",
+            "r_Sigma_rz",
+        )
+        data = np.column_stack(
+            [self.R, self.r, self.U_r, self.U_th, self.U_z, self.Phi, *self.eta[3:7]]
+        )
         return cols, data + 0.0  # no negative zeros
 
 
-def mode_shape(critical: CriticalPoint | tuple[TubeParameters, int, int], *,
-               method: str = "impedance", points: int = 101, rtol: float = 1e-12,
-               nodes: int = 40) -> ModeShape:
+def mode_shape(
+    critical: CriticalPoint | tuple,
+    *,
+    method: str = "impedance",
+    points: int = 101,
+    rtol: float = 1e-12,
+    nodes: int = 40,
+) -> ModeShape:
     """The mode shape at a critical point (paper eqs. two_Riccati, incremental-solutions).
 
     Parameters
     ----------
-    critical : CriticalPoint or (TubeParameters, m, n)
-        A bifurcation from ``bifurcation.critical_value`` / ``scan.scan_modes``, or the
-        parameters at (the caller's) critical point with the mode numbers.
+    critical : CriticalPoint or (TubeParameters, m, n[, family])
+        A bifurcation from ``bifurcation.critical_value`` / ``scan.scan_modes`` (of any
+        family: wrinkle, prismatic or torsional), or the parameters at (the caller's)
+        critical point with the mode numbers (and the family; default the natural one of
+        (m, n)).
     method : {"impedance", "collocation"}
         Riccati route of the paper (falls back to collocation when the impedance has a
         pole in the wall; see ``ModeShape.route``) or Chebyshev collocation.
@@ -149,7 +185,7 @@ def mode_shape(critical: CriticalPoint | tuple[TubeParameters, int, int], *,
     Raises
     ------
     ParameterError
-        Bad method, points or mode numbers.
+        Bad method, points, mode numbers or family.
     NoBifurcationFound
         ``critical`` is a voltage threshold, not a bifurcation (it has no mode).
 
@@ -161,7 +197,8 @@ def mode_shape(critical: CriticalPoint | tuple[TubeParameters, int, int], *,
     >>> shape.route, float(abs(shape.eta[:3]).max()), bool(shape.U_r.max() > 0)
     ('impedance', 1.0, True)
     """
-    params, m, n = _unpack(critical)
+    params, m, n, family = _unpack(critical)
+    pairs = family.pairs(m)
     method = check_method(method)
     if isinstance(points, bool) or not isinstance(points, (int, np.integer)) or points < 2:
         raise ParameterError(f"points = {points!r} is invalid; need an integer >= 2")
@@ -171,36 +208,57 @@ def mode_shape(critical: CriticalPoint | tuple[TubeParameters, int, int], *,
     note = ""
     if method is Method.IMPEDANCE:
         try:
-            eta = impedance_shape(state, m, k, R, rtol=rtol)
+            eta = impedance_shape(state, m, k, R, rtol=rtol, pairs=pairs)
         except _PoleError as exc:
             method, note = Method.COLLOCATION, f"{exc}; shape from collocation instead"
     if method is Method.COLLOCATION:
-        eta = collocation_shape(state, m, n, R, nodes=nodes)
+        eta = collocation_shape(state, m, n, R, nodes=nodes, pairs=pairs)
     eta = normalise(eta)
-    return ModeShape(R, state.radius(R), eta, m, n, k, params, method.value,
-                     boundary_residual(eta), note)
+    return ModeShape(
+        R,
+        state.radius(R),
+        eta,
+        m,
+        n,
+        k,
+        params,
+        method.value,
+        boundary_residual(eta),
+        note,
+        family,
+    )
 
 
-def _unpack(critical) -> tuple[TubeParameters, int, int]:
+def _unpack(critical) -> tuple[TubeParameters, int, int, Family]:
     if isinstance(critical, CriticalPoint):
         if critical.kind != Kind.BIFURCATION:
+            why = (
+                "the axisymmetric state is lost before any wrinkling"
+                if critical.kind == Kind.THRESHOLD
+                else "it has no finite mode (m, n)"
+            )
             raise NoBifurcationFound(
                 f"the critical point is a {critical.kind} ({critical.solve_for} ="
-                f" {critical.value:.12g}): the axisymmetric state is lost before any"
-                " wrinkling, so there is no mode shape")
-        return critical.params, critical.m, critical.n
+                f" {critical.value:.12g}): {why}, so there is no mode shape"
+            )
+        fam = check_mode(critical.m, critical.n, critical.family)
+        return critical.params, critical.m, critical.n, fam
     try:
-        params, m, n = critical
+        params, m, n, *family = critical
+        if len(family) > 1:
+            raise ValueError
     except (TypeError, ValueError):
-        raise ParameterError(f"critical = {critical!r} is neither a CriticalPoint nor"
-                             " (params, m, n)") from None
+        raise ParameterError(
+            f"critical = {critical!r} is neither a CriticalPoint nor (params, m, n[, family])"
+        ) from None
     if not isinstance(params, TubeParameters):
         raise ParameterError(f"params = {params!r} is not a TubeParameters")
-    check_mode(m, n)
-    return params, int(m), int(n)
+    fam = check_mode(m, n, family[0] if family else None)
+    return params, int(m), int(n), fam
 
 
 # -- impedance route -------------------------------------------------------------------------
+
 
 class _PoleError(ConvergenceError):
     """The Riccati integration for z stopped (a pole of the impedance inside the wall)."""
@@ -215,61 +273,96 @@ def stroh_at(state: BaseState, R: float, m: float, k: float) -> FloatArray:
     return G
 
 
-def impedance_shape(state: BaseState, m: int, k: float, R: FloatArray, *,
-                    rtol: float = 1e-12) -> FloatArray:
+def impedance_shape(
+    state: BaseState,
+    m: int,
+    k: float,
+    R: FloatArray,
+    *,
+    rtol: float = 1e-12,
+    pairs: int = ALL_PAIRS,
+) -> FloatArray:
     """Un-normalised eta at R by the paper's two-step impedance method (eq. two_Riccati).
 
     1. dz/dR = (dr/dR)(1/r)(G3 + G4 z - z G1 - z G2 z), z(1) = 0, to R = Rbar_o (dense).
     2. U(r_o): right singular vector of the smallest singular value of z(r_o).
     3. dU/dR = (dr/dR)(1/r)(G1 + G2 z) U from Rbar_o down to 1; S = z U.
 
+    On the block of the kept ``pairs`` (a mode family); the other components are 0.
     Raises _PoleError when step 1 fails or z blows up (a pole of the impedance).
     """
     Ro = state.params.outer_radius
-    z = impedance_profile(state, m, k, rtol=rtol)
+    z = impedance_profile(state, m, k, rtol=rtol, pairs=pairs)
     U_o = np.linalg.svd(z(Ro))[2][-1]
-    U = transport(state, m, k, z, U_o, (Ro, 1.0), R[::-1], rtol=rtol)[:, ::-1]
+    U = transport(state, m, k, z, U_o, (Ro, 1.0), R[::-1], rtol=rtol, pairs=pairs)[:, ::-1]
     S = np.stack([z(x) @ U[:, j] for j, x in enumerate(R)], axis=1)
-    return np.vstack([U, S])
+    keep = kept_pairs(pairs)
+    eta = np.zeros((8, R.size))
+    eta[keep], eta[[4 + j for j in keep]] = U, S
+    return eta
 
 
-def impedance_profile(state: BaseState, m: int, k: float, *, rtol: float = 1e-12):
+def impedance_profile(
+    state: BaseState, m: int, k: float, *, rtol: float = 1e-12, pairs: int = ALL_PAIRS
+):
     """z(R) for R in [1, Rbar_o]: the Riccati equation (paper eq. Riccati) integrated by
-    SciPy DOP853 from z(1) = 0, as a callable R -> symmetric 4x4 (dense output)."""
+    SciPy DOP853 from z(1) = 0, as a callable R -> symmetric d x d (dense output), d the
+    number of kept ``pairs`` (4 for the paper's ansatz)."""
     Ro = state.params.outer_radius
     scale = impedance_scale(float(m), float(k), float(state.r_o))
+    d = len(kept_pairs(pairs))
     with np.errstate(all="ignore"):
-        ric = solve_ivp(impedance_rhs(state, m, k), (1.0, Ro), np.zeros(16), method="DOP853",
-                        rtol=rtol, atol=1e-3 * rtol, dense_output=True)
+        ric = solve_ivp(
+            impedance_rhs(state, m, k, pairs),
+            (1.0, Ro),
+            np.zeros(d * d),
+            method="DOP853",
+            rtol=rtol,
+            atol=1e-3 * rtol,
+            dense_output=True,
+        )
     big = np.abs(ric.y).max() if ric.y.size else np.inf
     if ric.status != 0 or not np.isfinite(big) or big > 1e8 * scale**2:
         r_stop = float(state.radius(min(max(ric.t[-1], 1.0), Ro)))
-        raise _PoleError(f"the impedance z has a pole near r = {r_stop:.6g}"
-                         f" (Riccati integration stopped: {ric.message})")
+        raise _PoleError(
+            f"the impedance z has a pole near r = {r_stop:.6g}"
+            f" (Riccati integration stopped: {ric.message})"
+        )
 
     def z(x: float) -> FloatArray:
-        zx = ric.sol(x).reshape(4, 4)
+        zx = ric.sol(x).reshape(d, d)
         return 0.5 * (zx + zx.T)  # symmetric exactly (docs/derivation-stroh.md, sec. 4)
 
     return z
 
 
-def transport(state: BaseState, m: int, k: float, z, U0: FloatArray,
-              span: tuple[float, float], R_eval: FloatArray, *,
-              rtol: float = 1e-12) -> FloatArray:
+def transport(
+    state: BaseState,
+    m: int,
+    k: float,
+    z,
+    U0: FloatArray,
+    span: tuple[float, float],
+    R_eval: FloatArray,
+    *,
+    rtol: float = 1e-12,
+    pairs: int = ALL_PAIRS,
+) -> FloatArray:
     """Solve dU/dR = (dr/dR)(1/r)(G1 + G2 z) U (paper eq. two_Riccati, second part) from
-    U(span[0]) = U0 to span[1]; U at ``R_eval`` (in the order of integration), (4, len).
+    U(span[0]) = U0 to span[1]; U at ``R_eval`` (in the order of integration), (d, len),
+    on the block of the kept ``pairs`` (d of them; 4 for the paper's ansatz).
 
     Stable inwards (span = (Rbar_o, 1)); outwards errors grow like exp(2 k (r_o - r_i)).
     """
     b = state.params.growth**3 / state.params.stretch  # r dr/dR = b R
+    keep = np.array(kept_pairs(pairs))
 
     def rhs(x, U):
         G = stroh_at(state, x, m, k)
-        return b * x / float(state.radius(x)) ** 2 * ((G[:4, :4] + G[:4, 4:] @ z(x)) @ U)
+        G1, G2 = G[np.ix_(keep, keep)], G[np.ix_(keep, 4 + keep)]
+        return b * x / float(state.radius(x)) ** 2 * ((G1 + G2 @ z(x)) @ U)
 
-    sol = solve_ivp(rhs, span, U0, method="DOP853", t_eval=R_eval, rtol=rtol,
-                    atol=1e-3 * rtol)
+    sol = solve_ivp(rhs, span, U0, method="DOP853", t_eval=R_eval, rtol=rtol, atol=1e-3 * rtol)
     if sol.status != 0:
         raise _PoleError(f"the integration of U failed: {sol.message}")
     return sol.y
@@ -277,8 +370,10 @@ def transport(state: BaseState, m: int, k: float, z, U0: FloatArray,
 
 # -- collocation route -----------------------------------------------------------------------
 
-def collocation_shape(state: BaseState, m: int, n: int, R: FloatArray, *,
-                      nodes: int = 40) -> FloatArray:
+
+def collocation_shape(
+    state: BaseState, m: int, n: int, R: FloatArray, *, nodes: int = 40, pairs: int = ALL_PAIRS
+) -> FloatArray:
     """Un-normalised eta at R from the collocation null vector.
 
     U_r, U_th, U_z, Phi and P are the nodal values of polynomials in r (degree nodes - 1;
@@ -288,12 +383,16 @@ def collocation_shape(state: BaseState, m: int, n: int, R: FloatArray, *,
 
         r Sigma_rr = r [(A1111 + p) U_r' + A1122 (U_r + m U_th)/r + A1133 k U_z
                         + Gamma111 Delta_r - P].
+
+    ``pairs``: the block of a mode family (collocation.py); the other fields are 0.
     """
-    shape = mode_shape_collocation(state, m, n, nodes=nodes)
+    shape = mode_shape_collocation(state, m, n, nodes=nodes, pairs=pairs)
     r_nodes = shape["r"]
     domain = [state.r_i, state.r_o]
-    poly = {f: cheb.Chebyshev.fit(r_nodes, shape[f], len(r_nodes) - 1, domain=domain)
-            for f in ("U_r", "U_th", "U_z", "Phi", "P")}
+    poly = {
+        f: cheb.Chebyshev.fit(r_nodes, shape[f], len(r_nodes) - 1, domain=domain)
+        for f in ("U_r", "U_th", "U_z", "Phi", "P")
+    }
     r = state.radius(R)
     val = {f: p(r) for f, p in poly.items()}
     der = {f: poly[f].deriv()(r) for f in ("U_r", "U_th", "U_z", "Phi")}
@@ -311,12 +410,18 @@ def collocation_shape(state: BaseState, m: int, n: int, R: FloatArray, *,
         e[5] = (r[j] * der["U_th"][j] - G[1, :4] @ e[:4] - G[1, 7] * e[7]) / G[1, 5]
         e[6] = (r[j] * der["U_z"][j] - G[2, :4] @ e[:4] - G[2, 7] * e[7]) / G[2, 6]
     a = {name: mod[..., MODULI_INDEX[name]] for name in ("A1111", "A1122", "A1133", "G111")}
-    eta[4] = r * ((a["A1111"] + p) * der["U_r"] + a["A1122"] * (eta[0] + m * eta[1]) / r
-                  + a["A1133"] * k * eta[2] + a["G111"] * eta[3] / r - val["P"])
+    eta[4] = r * (
+        (a["A1111"] + p) * der["U_r"]
+        + a["A1122"] * (eta[0] + m * eta[1]) / r
+        + a["A1133"] * k * eta[2]
+        + a["G111"] * eta[3] / r
+        - val["P"]
+    )
     return eta
 
 
 # -- normalisation ---------------------------------------------------------------------------
+
 
 def normalise(eta: FloatArray) -> FloatArray:
     """eta / c with c such that max |U_r, U_th, U_z| = 1 over the samples and the
