@@ -14,7 +14,7 @@ import pytest
 from scipy.optimize import brentq
 
 from electrogrowth.basestate.tube import solve_base_state
-from electrogrowth.bifurcation import surface
+from electrogrowth.bifurcation import directions, surface
 from electrogrowth.bifurcation.surface import SurfaceLimit, ray_limit, short_wave_limit
 from electrogrowth.errors import ParameterError
 from electrogrowth.incremental.halfspace import (
@@ -174,7 +174,7 @@ def test_ellipticity_loss_is_detected():
     # the march reports it (kind "ellipticity") instead of a value
     def fake(state):
         g = state.params.growth
-        return surface._Sample(math.nan if g > 1.7 else 2.0 - g, "inner", 0.5)
+        return directions.Sample(math.nan if g > 1.7 else 2.0 - g, "inner", 0.5)
 
     kind, value, bracket = surface._locate(TubeParameters(), "growth", None, fake, 1e-12)
     assert kind == "ellipticity" and abs(value - 1.7) < 1e-11 and bracket is None
@@ -291,8 +291,8 @@ def test_growth_is_a_rescaling():
     # with voltage: the growth-critical state is critical for the rescaled tube
     c = short_wave_limit(TubeParameters(stretch=1.1, voltage=0.2), "growth")
     st = solve_base_state(TubeParameters(stretch=1.1 / c.value, voltage=0.2 / c.value))
-    signs = surface.stable_signs(TubeParameters())
-    h = surface._sampler(FACES, signs, surface._Resolution(25, 1e-10, 1e-12))(st)
+    signs = directions.stable_signs(TubeParameters())
+    h = directions.sampler(FACES, signs, directions.Resolution(25, 1e-10, 1e-12))(st)
     assert abs(h.value) < 1e-12 and h.face == c.face
 
 
@@ -386,7 +386,7 @@ def test_threshold_none_and_errors():
     # vanishes): kind threshold, where the voltage threshold falls to Vbar = 0.4, i.e.
     # Vbar_inf = sqrt((Rbar_o^2 - 1) ln Rbar_o / 2) / (lambda_z (Rbar_o - 1)) = 0.4
     def stable(state):
-        return surface._Sample(1.0, "inner", 0.0)
+        return directions.Sample(1.0, "inner", 0.0)
 
     params = TubeParameters(outer_radius=1.4, voltage=0.4)
     kind, value, _ = surface._locate(params, "stretch", "extension", stable, 1e-12)

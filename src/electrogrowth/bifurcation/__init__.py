@@ -1,7 +1,8 @@
 """Where the tube first wrinkles: the march of a control parameter from the stable unloaded
 tube to the first sign change of the targets (:mod:`.march`), one mode's critical value
 (:mod:`.critical`), the scan over all modes (:mod:`.scan`), critical curves with located mode
-switches (:mod:`.curves`) and the exact short-wave limit (:mod:`.surface`).
+switches (:mod:`.curves`) and the exact short-wave limit (:mod:`.surface`, its worst wave
+direction at a state in :mod:`.directions`).
 
 May import ``incremental``, ``basestate``, ``model``, ``outcomes`` and ``errors``.
 """

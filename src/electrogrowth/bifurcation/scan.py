@@ -35,8 +35,9 @@ from ..incremental.targets import Family, impedance_targets
 from ..model.params import TubeParameters, check_side
 from ..outcomes import NO_MODE, Kind
 from .critical import CriticalPoint, critical_value
+from .directions import past_surface
 from .march import ModeValue, first_bifurcations, unloaded_signs
-from .surface import past_surface, short_wave_limit
+from .surface import short_wave_limit
 
 M_CAP, N_CAP = 64, 320
 # widen a range at most this often; an optimum still on its edge is a short-wavelength

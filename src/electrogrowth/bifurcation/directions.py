@@ -1,0 +1,158 @@
+"""The worst wave direction at the faces of one state: the signed half-space target
+h = min over faces and directions psi in [0, pi/2] of s_face f(state, face, psi), with
+s_face its sign on the unloaded (stable) tube.
+
+f (incremental/halfspace.py) is evaluated on a grid of psi (endpoints included), then
+minimised by a bounded 1-D search between the neighbours of the lowest grid minima; an
+endpoint minimum is kept exactly when f is flat to rounding there. ``past_surface`` asks
+whether a loaded state is already beyond its short-wave instability (a few ms), which is
+how a scan decides whether the exact limit (surface.py) is worth locating.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import math
+
+import numpy as np
+from scipy.optimize import minimize_scalar
+
+from ..basestate.tube import solve_base_state
+from ..errors import ConvergenceError
+from ..incremental.halfspace import FACES, FaceProblem
+from ..model.params import TubeParameters
+
+HALF_PI = 0.5 * math.pi
+ENDPOINT_SLACK = 1e-14  # f (|f| <= 1) equal to rounding: keep the exact endpoint psi
+MARCH_REFINE = 0.05  # march: refine the psi minimum only where the grid minimum is below
+FACE_TIE = 1e-13  # faces whose targets agree this closely (homogeneous tube): the first
+
+
+@dataclasses.dataclass(frozen=True)
+class Resolution:
+    grid: int  # psi grid points on [0, pi/2]
+    psi_tol: float  # absolute tolerance of the psi minimisation
+    rtol: float  # base state and Brent
+
+
+@dataclasses.dataclass(frozen=True)
+class Sample:
+    value: float  # h: min over faces (and psi) of the signed target; NaN: not elliptic
+    face: str | None
+    psi: float | None
+
+
+def stable_signs(params: TubeParameters, faces=FACES) -> dict[str, float]:
+    """Sign of the half-space target at each face on the unloaded tube (g = 1,
+    lambda_z = 1, Vbar = 0), which is stable (the same for every psi; checked on a grid)."""
+    ref = dataclasses.replace(params, growth=1.0, stretch=1.0, voltage=0.0)
+    state = solve_base_state(ref)
+    out = {}
+    for face in faces:
+        f = FaceProblem.from_state(state, face).target(np.linspace(0.0, HALF_PI, 7))
+        if not (np.all(np.isfinite(f)) and (np.all(f > 0) or np.all(f < 0))):
+            raise ConvergenceError(
+                f"half-space target undefined or of mixed sign on the "
+                f"unloaded tube at the {face} face: {f}"
+            )
+        out[face] = math.copysign(1.0, f[0])
+    return out
+
+
+@functools.lru_cache(maxsize=64)
+def _unloaded_signs(material, outer_radius: float) -> dict[str, float]:
+    """stable_signs of both faces, shared by every state of one tube (the unloaded state
+    depends on the material and Rbar_o only)."""
+    return stable_signs(TubeParameters(outer_radius, material=material))
+
+
+def past_surface(params: TubeParameters, faces=FACES) -> bool:
+    """Whether a face of this loaded tube is beyond its short-wave instability in some wave
+    direction (the signed half-space target is <= 0 there): then the exact limit, reached
+    earlier along any path from the unloaded tube, is worth locating."""
+    signs = _unloaded_signs(params.material, params.outer_radius)
+    state = solve_base_state(params)
+    for face in faces:
+        problem = FaceProblem.from_state(state, face)
+        v, _ = worst_direction(problem, signs[face], psi_tol=None)
+        if v < MARCH_REFINE:
+            v, _ = worst_direction(problem, signs[face])
+        if not v > 0:
+            return True
+    return False
+
+
+def worst_direction(
+    problem: FaceProblem, sign: float = 1.0, *, grid: int = 25, psi_tol: float | None = 1e-10
+) -> tuple[float, float]:
+    """(min over psi in [0, pi/2] of sign * f, its psi) at one face.
+
+    A grid of ``grid`` directions (both endpoints included), then a bounded minimisation
+    between the neighbours of each of the (up to three) lowest grid minima; an endpoint
+    minimum is kept exactly when no interior point is lower (psi_tol None: the grid
+    minimum alone). Returns (NaN, psi) if the half-space is not strongly elliptic in some
+    grid direction psi.
+    """
+    psi = np.linspace(0.0, HALF_PI, grid)
+    F = sign * problem.target(psi)
+    if np.isnan(F).any():
+        return math.nan, float(psi[np.argmax(np.isnan(F))])
+    lower = np.r_[True, F[1:] <= F[:-1]]  # F[i] <= left neighbour
+    upper = np.r_[F[:-1] <= F[1:], True]  # F[i] <= right neighbour
+    minima = np.nonzero(lower & upper)[0]
+    minima = minima[np.argsort(F[minima])][:3]
+    best_v, best_p = float(F[minima[0]]), float(psi[minima[0]])
+
+    if psi_tol is None:  # the grid alone
+        i = int(np.argmin(F))
+        return float(F[i]), float(psi[i])
+
+    def one(x):
+        v = sign * problem.target_scalar(x)
+        return v if math.isfinite(v) else math.inf
+
+    for i in minima:
+        a, b = psi[max(i - 1, 0)], psi[min(i + 1, grid - 1)]
+        res = minimize_scalar(
+            one, bounds=(a, b), method="bounded", options={"xatol": psi_tol, "maxiter": 200}
+        )
+        x, v = float(res.x), float(res.fun)
+        for end, fe in ((0.0, F[0]), (HALF_PI, F[-1])):
+            # a minimum at an endpoint: f is flat to rounding within psi_tol of it
+            if abs(x - end) <= 1e3 * psi_tol and fe <= v + ENDPOINT_SLACK:
+                x, v = end, float(fe)
+        if v < best_v:
+            best_v, best_p = v, x
+    if not math.isfinite(best_v):
+        return math.nan, best_p
+    return best_v, best_p
+
+
+def sampler(faces, signs, res: Resolution, direction=None, refine_below=math.inf):
+    """h(state) -> Sample: min over faces of the signed target, in the worst direction
+    (direction None) or in the direction direction(state, face) of a ray. With
+    refine_below, a face whose grid minimum is above it is not refined (the march)."""
+
+    def h(state) -> Sample:
+        best = Sample(math.inf, None, None)
+        for face in faces:
+            problem = FaceProblem.from_state(state, face)
+            if direction is None:
+                v, psi = worst_direction(problem, signs[face], grid=res.grid, psi_tol=None)
+                if not v > refine_below:  # close to zero (or NaN): refine
+                    v, psi = worst_direction(
+                        problem, signs[face], grid=res.grid, psi_tol=res.psi_tol
+                    )
+            else:
+                psi = direction(state, face)
+                v = float(signs[face] * problem.target(psi))
+            if math.isnan(v):
+                return Sample(math.nan, face, psi)
+            if v < best.value - FACE_TIE:
+                best = Sample(v, face, psi)
+            elif v < best.value:  # a tie: keep the earlier face, with the lower value
+                best = Sample(v, best.face, best.psi)
+        return best
+
+    return h
