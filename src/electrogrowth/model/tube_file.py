@@ -24,12 +24,12 @@ from __future__ import annotations
 import inspect
 import math
 import re
-import tomllib
 from pathlib import Path
 
 from ..errors import ConfigError, MaterialError, ParameterError
 from .layers import Layer, LinearGrowth, Tube
 from .materials import BUILTIN, Material, material_by_name
+from .toml_input import parse, read_text
 
 TOP = (
     "length",
@@ -46,34 +46,12 @@ LAYER = ("outer_radius", "material", "energy", "shear_modulus", "permittivity", 
 
 def load_tube(path: str | Path) -> Tube:
     """Read and validate a tube file; raise :class:`ConfigError` naming file, line and key."""
-    path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise ConfigError(
-            (), f"cannot read the tube file: {exc.strerror}", source=str(path)
-        ) from None
-    except UnicodeDecodeError:
-        raise ConfigError((), "the tube file is not UTF-8 text", source=str(path)) from None
-    return parse_tube(text, source=str(path))
+    return parse_tube(read_text(path, "tube file"), source=str(path))
 
 
 def parse_tube(text: str, *, source: str = "<tube>") -> Tube:
     """Validate the TOML ``text`` of a tube file (see the module docstring)."""
-    try:
-        raw = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        msg = str(exc)
-        hit = re.search(r"\(at line (\d+), column \d+\)", msg)
-        line = int(hit.group(1)) if hit else text.count("\n") + 1
-        reason = re.sub(r"\s*\(at (line \d+, column \d+|end of document)\)", "", msg)
-        raise ConfigError((), f"invalid TOML: {reason}", source=source, line=line) from None
-    try:
-        return tube_from_dict(raw)
-    except ConfigError as exc:
-        raise ConfigError(
-            exc.key, exc.reason, source=source, line=line_of(text, exc.key)
-        ) from None
+    return parse(text, source, tube_from_dict, line_of)
 
 
 def tube_from_dict(raw: dict) -> Tube:

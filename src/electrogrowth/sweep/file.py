@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import math
 import re
-import tomllib
 from pathlib import Path
 
 import numpy as np
@@ -19,6 +18,7 @@ import numpy as np
 from ..bifurcation.scan import ScanOptions
 from ..errors import ConfigError, ParameterError
 from ..model.params import TubeParameters
+from ..model.toml_input import parse, read_text
 from .config import SWEEPABLE, SweepConfig, default_chunk
 
 #: table -> allowed keys (None: free keys, checked by the table's own rules)
@@ -34,34 +34,12 @@ TABLES = {
 
 def load_config(path: str | Path) -> SweepConfig:
     """Read and validate a sweep file; raise :class:`ConfigError` naming file and line."""
-    path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise ConfigError(
-            (), f"cannot read the sweep file: {exc.strerror}", source=str(path)
-        ) from None
-    except UnicodeDecodeError:
-        raise ConfigError((), "the sweep file is not UTF-8 text", source=str(path)) from None
-    return parse_config(text, source=str(path))
+    return parse_config(read_text(path, "sweep file"), source=str(path))
 
 
 def parse_config(text: str, *, source: str = "<sweep>") -> SweepConfig:
     """Validate the TOML ``text`` of a sweep file (see the module docstring)."""
-    try:
-        raw = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        msg = str(exc)
-        hit = re.search(r"\(at line (\d+), column \d+\)", msg)
-        line = int(hit.group(1)) if hit else text.count("\n") + 1
-        reason = re.sub(r"\s*\(at (line \d+, column \d+|end of document)\)", "", msg)
-        raise ConfigError((), f"invalid TOML: {reason}", source=source, line=line) from None
-    try:
-        return _from_raw(raw)
-    except ConfigError as exc:
-        raise ConfigError(
-            exc.key, exc.reason, source=source, line=line_of(text, exc.key)
-        ) from None
+    return parse(text, source, _from_raw, line_of)
 
 
 def _from_raw(raw: dict) -> SweepConfig:
