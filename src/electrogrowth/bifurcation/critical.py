@@ -65,7 +65,6 @@ class CriticalPoint:
             object.__setattr__(self, "family", natural_family(self.m, self.n))
 
     def as_dict(self) -> dict:
-        p = self.params
         mode = self.kind == Kind.BIFURCATION
         return {
             "solve_for": self.solve_for,
@@ -79,12 +78,7 @@ class CriticalPoint:
             "error_estimate": self.error_estimate,
             "method": self.method,
             "side": self.side,
-            "material": p.material.name,
-            "outer_radius": p.outer_radius,
-            "length": p.length,
-            "growth": p.growth,
-            "stretch": p.stretch,
-            "voltage": p.voltage,
+            **self.params.as_dict(),
         }
 
 

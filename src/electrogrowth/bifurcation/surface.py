@@ -85,7 +85,6 @@ class SurfaceLimit:
     side: str | None = None
 
     def as_dict(self) -> dict:
-        p = self.params
         return {
             "solve_for": self.solve_for,
             "value": self.value,
@@ -95,12 +94,7 @@ class SurfaceLimit:
             "ratio": self.ratio,
             "error_estimate": self.error_estimate,
             "side": self.side,
-            "material": p.material.name,
-            "outer_radius": p.outer_radius,
-            "length": p.length,
-            "growth": p.growth,
-            "stretch": p.stretch,
-            "voltage": p.voltage,
+            **self.params.as_dict(),
         }
 
 

@@ -21,11 +21,11 @@ from ..model.params import TubeParameters
 from ..outcomes import Status
 from .options import (
     _material,
-    _number,
     add_control_options,
     add_mode_range_options,
     add_tube_options,
     check_side_option,
+    finite_number,
     scan_options_from_args,
 )
 
@@ -51,7 +51,7 @@ def configure_curve(parser: argparse.ArgumentParser) -> None:
     what.add_argument(
         "--from",
         dest="start",
-        type=_number,
+        type=finite_number,
         required=True,
         metavar="X0",
         help="first value of the --along parameter",
@@ -59,7 +59,7 @@ def configure_curve(parser: argparse.ArgumentParser) -> None:
     what.add_argument(
         "--to",
         dest="stop",
-        type=_number,
+        type=finite_number,
         required=True,
         metavar="X1",
         help="last value of the --along parameter",

@@ -17,7 +17,7 @@ class _Parser(argparse.ArgumentParser):
         raise UsageError(message)
 
 
-def _number(text: str) -> float:
+def finite_number(text: str) -> float:
     """A finite real number (ranges are checked by TubeParameters, which names the value)."""
     try:
         value = float(text)
@@ -45,7 +45,7 @@ def add_tube_options(
     tube = parser.add_argument_group("tube and loading (units mu = eps = R_i = 1)")
     tube.add_argument(
         "--outer-radius",
-        type=_number,
+        type=finite_number,
         required=outer_radius is None and require_outer_radius,
         default=outer_radius,
         metavar="RBAR_O",
@@ -54,21 +54,21 @@ def add_tube_options(
     )
     tube.add_argument(
         "--growth",
-        type=_number,
+        type=finite_number,
         default=1.0,
         metavar="G",
         help="isotropic growth factor g > 0, F_g = g I (default 1: no growth)",
     )
     tube.add_argument(
         "--stretch",
-        type=_number,
+        type=finite_number,
         default=1.0,
         metavar="LAMBDA_Z",
         help="total axial stretch lambda_z = l / L > 0, growth included (default 1)",
     )
     tube.add_argument(
         "--voltage",
-        type=_number,
+        type=finite_number,
         default=0.0,
         metavar="VBAR",
         help="Vbar = V / (R_o - R_i) sqrt(eps / mu) >= 0, the radial voltage;"
@@ -76,7 +76,7 @@ def add_tube_options(
     )
     tube.add_argument(
         "--length",
-        type=_number,
+        type=finite_number,
         default=1.0,
         metavar="L",
         help="L / R_i > 0, undeformed length; does not change the base state (default 1)",
@@ -90,13 +90,13 @@ def add_tube_options(
     )
     mat.add_argument(
         "--jm",
-        type=_number,
+        type=finite_number,
         metavar="JM",
         help="Gent stiffening parameter J_m > 0 (only with --material gent; default 97.2)",
     )
     mat.add_argument(
         "--alpha",
-        type=_number,
+        type=finite_number,
         metavar="ALPHA",
         help="Mooney-Rivlin weight 0 < alpha <= 1 of I1 (only with"
         " --material mooney-rivlin; default 0.5)",

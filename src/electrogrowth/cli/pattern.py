@@ -26,13 +26,13 @@ from ..shapes.mode_shape import mode_shape
 from ..shapes.wall import export_vtk
 from .options import (
     MODE_COVERAGE,
-    _number,
     add_control_options,
     add_method_option,
     add_mode_option,
     add_mode_range_options,
     add_tube_options,
     check_side_option,
+    finite_number,
     mode_from_args,
     scan_options_from_args,
     tube_from_args,
@@ -69,7 +69,7 @@ def configure_pattern(parser: argparse.ArgumentParser) -> None:
     )
     shape.add_argument(
         "--amplitude",
-        type=_number,
+        type=finite_number,
         default=0.1,
         metavar="A",
         help="largest incremental displacement drawn, in units of R_i (the"

@@ -12,7 +12,6 @@ from __future__ import annotations
 import argparse
 import dataclasses
 import json
-import math
 import re
 
 from ..basestate.tube import solve_base_state
@@ -20,22 +19,12 @@ from ..errors import BaseStateError, ParameterError, UsageError
 from ..model.layers import Tube
 from ..model.materials import material_by_name
 from ..model.tube_file import line_of, load_tube
-from .options import add_tube_options, tube_from_args
+from .options import add_tube_options, finite_number, tube_from_args
 
 #: shared options whose defaults are applied here, so that a given one can override a file
 _SHARED = ("outer_radius", "growth", "stretch", "voltage", "length", "material")
 #: the loads only a layered tube has (option dest = Tube field)
 _LOADS = ("inner_pressure", "outer_pressure", "axial_force")
-
-
-def _number(text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
-    if not math.isfinite(value):
-        raise argparse.ArgumentTypeError(f"{text!r} is not a finite number")
-    return value
 
 
 def configure_state(parser: argparse.ArgumentParser) -> None:
@@ -53,19 +42,19 @@ def configure_state(parser: argparse.ArgumentParser) -> None:
     )
     tube.add_argument(
         "--inner-pressure",
-        type=_number,
+        type=finite_number,
         metavar="P_I",
         help="follower pressure P_i on the inner face, units mu (> 0 inflates; default 0)",
     )
     tube.add_argument(
         "--outer-pressure",
-        type=_number,
+        type=finite_number,
         metavar="P_O",
         help="follower pressure P_o on the outer face, units mu (> 0 squeezes; default 0)",
     )
     tube.add_argument(
         "--axial-force",
-        type=_number,
+        type=finite_number,
         metavar="F",
         help="axial force on the ends (units mu R_i^2; free ends: 0) instead of --stretch:"
         " lambda_z is then solved for",

@@ -61,6 +61,17 @@ class TubeParameters:
         """This tube with the field ``name`` set to ``value`` (a control, or any field)."""
         return dataclasses.replace(self, **{name: float(value)})
 
+    def as_dict(self) -> dict:
+        """The tube as a JSON record: the material's name and the five fields."""
+        return {
+            "material": self.material.name,
+            "outer_radius": self.outer_radius,
+            "length": self.length,
+            "growth": self.growth,
+            "stretch": self.stretch,
+            "voltage": self.voltage,
+        }
+
     @property
     def physical_voltage(self) -> float:
         """V in units sqrt(mu/eps) R_i: V = Vbar (Rbar_o - 1)."""

@@ -3,6 +3,7 @@ error as one ConfigError naming the file, the line and the key."""
 
 from __future__ import annotations
 
+import math
 import re
 import tomllib
 from collections.abc import Callable
@@ -40,3 +41,32 @@ def parse(text: str, source: str, build: Callable, line_of: Callable):
         raise ConfigError(
             exc.key, exc.reason, source=source, line=line_of(text, exc.key)
         ) from None
+
+
+# -- typed values ------------------------------------------------------------------------------
+
+
+def typename(v) -> str:
+    """How a TOML value's type reads in an error message ("an integer", "a table", ...)."""
+    return {
+        bool: "a boolean",
+        int: "an integer",
+        float: "a number",
+        str: "a string",
+        list: "a list",
+        dict: "a table",
+    }.get(type(v), type(v).__name__)
+
+
+def finite(v, path: tuple) -> float:
+    """``v`` as a finite float, or ConfigError at the key ``path``."""
+    if isinstance(v, bool) or not isinstance(v, (int, float)):
+        raise ConfigError(path, f"expected a number, got {typename(v)} {v!r}")
+    if not math.isfinite(v):
+        raise ConfigError(path, f"{v!r} is not a finite number")
+    return float(v)
+
+
+def number(table: dict, where: tuple, key: str) -> float:
+    """``table[key]`` as a finite float, or ConfigError at ``where + (key,)``."""
+    return finite(table[key], where + (key,))

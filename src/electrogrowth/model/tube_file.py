@@ -22,14 +22,13 @@ no positions, so the line is found by scanning the text (:func:`line_of`).
 from __future__ import annotations
 
 import inspect
-import math
 import re
 from pathlib import Path
 
 from ..errors import ConfigError, MaterialError, ParameterError
 from .layers import Layer, LinearGrowth, Tube
 from .materials import BUILTIN, Material, material_by_name
-from .toml_input import parse, read_text
+from .toml_input import finite, number, parse, read_text, typename
 
 TOP = (
     "length",
@@ -74,19 +73,19 @@ def tube_from_dict(raw: dict) -> Tube:
             value = raw[key]
             if key == "closed_ends":
                 if not isinstance(value, bool):
-                    raise ConfigError((key,), f"expected true or false, got {_typename(value)}")
+                    raise ConfigError((key,), f"expected true or false, got {typename(value)}")
             else:
-                value = _number(raw, (), key)
+                value = number(raw, (), key)
             options[key] = value
     return _checked(lambda: Tube(tuple(layers), **options), ())
 
 
 def _layer(table, where: tuple[str, ...], inner: float) -> Layer:
     if not isinstance(table, dict):
-        raise ConfigError(where, f"expected a [[layers]] table, got {_typename(table)}")
+        raise ConfigError(where, f"expected a [[layers]] table, got {typename(table)}")
     name = table.get("material", "neo-hookean")
     if not isinstance(name, str):
-        raise ConfigError(where + ("material",), f"expected a string, got {_typename(name)}")
+        raise ConfigError(where + ("material",), f"expected a string, got {typename(name)}")
     if name not in BUILTIN:
         raise ConfigError(
             where + ("material",), f"unknown material {name!r}; choose {', '.join(BUILTIN)}"
@@ -100,25 +99,25 @@ def _layer(table, where: tuple[str, ...], inner: float) -> Layer:
             )
     if "outer_radius" not in table:
         raise ConfigError(where, "missing outer_radius (R_k / R_i > 1)")
-    b = _number(table, where, "outer_radius")
+    b = number(table, where, "outer_radius")
     if "energy" in table:
         if "material" in table or any(p in table for p in params):
             raise ConfigError(where + ("energy",), "give either material or energy, not both")
         expr = table["energy"]
         if not isinstance(expr, str):
-            raise ConfigError(where + ("energy",), f"expected a string, got {_typename(expr)}")
+            raise ConfigError(where + ("energy",), f"expected a string, got {typename(expr)}")
         try:
             material = Material(expr, expr)
         except MaterialError as exc:
             raise ConfigError(where + ("energy",), str(exc)) from None
     else:
-        args = {p: _number(table, where, p) for p in params if p in table}
+        args = {p: number(table, where, p) for p in params if p in table}
         at = where + ((next(iter(args)),) if len(args) == 1 else ("material",))
         material = _checked(lambda: material_by_name(name, **args), at)
     fields = {"outer_radius": b, "material": material}
     for key in ("shear_modulus", "permittivity"):
         if key in table:
-            fields[key] = _number(table, where, key)
+            fields[key] = number(table, where, key)
     if "growth" in table:
         fields["growth"] = _growth(table["growth"], where + ("growth",), inner, b)
     return _checked(lambda: Layer(**fields), where)
@@ -143,8 +142,8 @@ def _growth(value, where, inner: float, outer: float):
             raise ConfigError(
                 where, f"expected g or [g_r, g_theta, g_z], got {len(value)} entries"
             )
-        return tuple(_num(v, where) for v in value)
-    return _num(value, where)
+        return tuple(finite(v, where) for v in value)
+    return finite(value, where)
 
 
 def _checked(make, where):
@@ -160,32 +159,6 @@ def _checked(make, where):
         elif hit and hit.group(2) in LAYER + TOP:
             key = where + (hit.group(2),)
         raise ConfigError(key, msg) from None
-
-
-# -- types -------------------------------------------------------------------------------------
-
-
-def _typename(v) -> str:
-    return {
-        bool: "a boolean",
-        int: "an integer",
-        float: "a number",
-        str: "a string",
-        list: "a list",
-        dict: "a table",
-    }.get(type(v), type(v).__name__)
-
-
-def _number(table, where, key) -> float:
-    return _num(table[key], where + (key,))
-
-
-def _num(v, path) -> float:
-    if isinstance(v, bool) or not isinstance(v, (int, float)):
-        raise ConfigError(path, f"expected a number, got {_typename(v)} {v!r}")
-    if not math.isfinite(v):
-        raise ConfigError(path, f"{v!r} is not a finite number")
-    return float(v)
 
 
 # -- line numbers -------------------------------------------------------------------------------

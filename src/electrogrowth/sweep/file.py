@@ -18,7 +18,7 @@ import numpy as np
 from ..bifurcation.scan import ScanOptions
 from ..errors import ConfigError, ParameterError
 from ..model.params import TubeParameters
-from ..model.toml_input import parse, read_text
+from ..model.toml_input import number, parse, read_text, typename
 from .config import SWEEPABLE, SweepConfig, default_chunk
 
 #: table -> allowed keys (None: free keys, checked by the table's own rules)
@@ -51,7 +51,7 @@ def _from_raw(raw: dict) -> SweepConfig:
                 f" {', '.join(f'[{t}]' for t in TABLES)}",
             )
         if not isinstance(value, dict):
-            raise ConfigError((table,), f"expected a table [{table}], got {_typename(value)}")
+            raise ConfigError((table,), f"expected a table [{table}], got {typename(value)}")
         allowed = TABLES[table]
         for key in value:
             if allowed is not None and key not in allowed:
@@ -68,8 +68,8 @@ def _from_raw(raw: dict) -> SweepConfig:
     mat = dict(raw.get("material", {}))
     name = opt(mat, ("material",), "name", _string, "neo-hookean")
     mat.pop("name", None)
-    material = tuple((key, _number(mat, ("material",), key)) for key in mat)
-    fixed = {key: _number(raw.get("fixed", {}), ("fixed",), key) for key in raw.get("fixed", {})}
+    material = tuple((key, number(mat, ("material",), key)) for key in mat)
+    fixed = {key: number(raw.get("fixed", {}), ("fixed",), key) for key in raw.get("fixed", {})}
     grid = tuple((key, _grid_values(key, value)) for key, value in raw.get("grid", {}).items())
     for key in fixed:
         if key == solve_for:
@@ -95,7 +95,7 @@ def _from_raw(raw: dict) -> SweepConfig:
         fixed=tuple(full.items()),
         material=(name, material),
         side=opt(solve, ("solve",), "side", _string, None),
-        rtol=opt(solve, ("solve",), "rtol", _number, 1e-12),
+        rtol=opt(solve, ("solve",), "rtol", number, 1e-12),
         scan=_scan_options(modes),
         chunk=chunk if chunk is not None else default_chunk(math.prod(len(v) for _, v in grid)),
     )
@@ -133,7 +133,7 @@ def _grid_values(key: str, value) -> tuple[float, ...]:
         for k in ("start", "stop", "num"):
             if k not in value:
                 raise ConfigError(where, f"a range needs start, stop and num; {k} is missing")
-        start, stop = _number(value, where, "start"), _number(value, where, "stop")
+        start, stop = number(value, where, "start"), number(value, where, "stop")
         num = _integer(value, where, "num")
         if num < 1:
             raise ConfigError(where + ("num",), f"num = {num} gives an empty grid; need num >= 1")
@@ -144,7 +144,7 @@ def _grid_values(key: str, value) -> tuple[float, ...]:
         values = []
         for i, v in enumerate(value):
             if isinstance(v, bool) or not isinstance(v, (int, float)):
-                raise ConfigError(where, f"value {i + 1} is {_typename(v)} {v!r}, not a number")
+                raise ConfigError(where, f"value {i + 1} is {typename(v)} {v!r}, not a number")
             if not math.isfinite(v):
                 raise ConfigError(where, f"value {i + 1} = {v!r} is not a finite number")
             values.append(float(v))
@@ -152,7 +152,7 @@ def _grid_values(key: str, value) -> tuple[float, ...]:
         raise ConfigError(
             where,
             f"expected a list of numbers or a range {{start, stop,"
-            f" num}}, got {_typename(value)} {value!r}",
+            f" num}}, got {typename(value)} {value!r}",
         )
     ordered = sorted(values)
     for a, b in zip(ordered, ordered[1:]):
@@ -164,44 +164,24 @@ def _grid_values(key: str, value) -> tuple[float, ...]:
 # -- types -----------------------------------------------------------------------------------
 
 
-def _typename(v) -> str:
-    return {
-        bool: "a boolean",
-        int: "an integer",
-        float: "a number",
-        str: "a string",
-        list: "a list",
-        dict: "a table",
-    }.get(type(v), type(v).__name__)
-
-
 def _string(table, where, key):
     v = table[key]
     if not isinstance(v, str):
-        raise ConfigError(where + (key,), f"expected a string, got {_typename(v)} {v!r}")
+        raise ConfigError(where + (key,), f"expected a string, got {typename(v)} {v!r}")
     return v
-
-
-def _number(table, where, key):
-    v = table[key]
-    if isinstance(v, bool) or not isinstance(v, (int, float)):
-        raise ConfigError(where + (key,), f"expected a number, got {_typename(v)} {v!r}")
-    if not math.isfinite(v):
-        raise ConfigError(where + (key,), f"{v!r} is not a finite number")
-    return float(v)
 
 
 def _integer(table, where, key):
     v = table[key]
     if isinstance(v, bool) or not isinstance(v, int):
-        raise ConfigError(where + (key,), f"expected an integer, got {_typename(v)} {v!r}")
+        raise ConfigError(where + (key,), f"expected an integer, got {typename(v)} {v!r}")
     return v
 
 
 def _bool(table, where, key):
     v = table[key]
     if not isinstance(v, bool):
-        raise ConfigError(where + (key,), f"expected true or false, got {_typename(v)} {v!r}")
+        raise ConfigError(where + (key,), f"expected true or false, got {typename(v)} {v!r}")
     return v
 
 
@@ -243,17 +223,17 @@ def line_of(text: str, key: tuple[str, ...]) -> int | None:
         return None
     table: tuple[str, ...] = ()
     best, depth = None, 0
-    for number, line in enumerate(text.splitlines(), 1):
+    for lineno, line in enumerate(text.splitlines(), 1):
         head = _HEADER.match(line)
         if head:
             table = _split_key(head.group(1))
             if key[: len(table)] == table and len(table) > depth:
-                best, depth = number, len(table)
+                best, depth = lineno, len(table)
             continue
         found = _KEY.match(line)
         if found:
             path = table + _split_key(found.group(1))
             n = min(len(path), len(key))
             if path[:n] == key[:n] and n > depth and path[: len(table)] == key[: len(table)]:
-                best, depth = number, n
+                best, depth = lineno, n
     return best
