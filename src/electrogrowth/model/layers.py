@@ -22,6 +22,7 @@ from collections.abc import Callable
 import numpy as np
 
 from ..errors import ParameterError
+from .controls import Control, parse_control
 from .materials import Material, neo_hookean
 from .params import TubeParameters
 
@@ -232,6 +233,96 @@ class Tube:
         """The one-layer tube of ``params`` (isotropic growth g, no pressure)."""
         layer = Layer(params.outer_radius, params.material, growth=params.growth)
         return cls((layer,), length=params.length, stretch=params.stretch, voltage=params.voltage)
+
+    def check_control(self, solve_for) -> Control:
+        """The Control named by ``solve_for`` (model/controls.py), checked against this tube:
+        the layer exists (and is named when there are several), its growth is not graded,
+        and the stretch or the force is the prescribed one."""
+        c = parse_control(solve_for)
+        n = len(self.layers)
+        if c.kind == "growth":
+            if c.layer is None and n > 1:
+                raise ParameterError(
+                    f"solve_for = growth needs a layer for a tube of {n} layers; name one of"
+                    f" 1..{n} (--layer K, or growth[K])"
+                )
+            layer = 1 if c.layer is None else c.layer
+            if not 1 <= layer <= n:
+                raise ParameterError(
+                    f"layer = {layer} does not exist; this tube has layers 1..{n} (1 innermost)"
+                )
+            if self.layers[layer - 1].graded:
+                raise ParameterError(
+                    f"layer {layer} has graded growth, which is not a single control"
+                    " parameter; give it constant growth to solve for it"
+                )
+            return Control("growth", layer if n > 1 or c.layer else None, c.components)
+        wanted = {"stretch": "stretch", "force": "force"}.get(c.kind)
+        if wanted and self.control != wanted:
+            have = "an axial force" if self.control == "force" else "the axial stretch"
+            raise ParameterError(
+                f"solve_for = {c.kind} is not a control of this tube, which prescribes {have};"
+                f" {'remove axial_force' if wanted == 'stretch' else 'give axial_force'}"
+                f" to solve for the {'stretch' if wanted == 'stretch' else 'axial force'}"
+            )
+        return c
+
+    def at(self, solve_for, value: float) -> Tube:
+        """This tube with the control ``solve_for`` (model/controls.py) set to ``value``."""
+        c = self.check_control(solve_for)
+        value = float(value)
+        if c.kind == "growth":
+            k = (c.layer or 1) - 1
+            old = self.layers[k].growth
+            g = tuple(
+                value if c.components is None or comp in c.components else old[i]
+                for i, comp in enumerate(("r", "theta", "z"))
+            )
+            layers = list(self.layers)
+            layers[k] = dataclasses.replace(layers[k], growth=g)
+            return dataclasses.replace(self, layers=tuple(layers))
+        field = {"pressure": "inner_pressure", "force": "axial_force"}.get(c.kind, c.kind)
+        return dataclasses.replace(self, **{field: value})
+
+    def value_of(self, solve_for) -> float:
+        """The current value of the control ``solve_for`` (for growth: its first varied
+        component)."""
+        c = self.check_control(solve_for)
+        if c.kind == "growth":
+            comp = ("r", "theta", "z").index(c.components[0]) if c.components else 0
+            return float(self.layers[(c.layer or 1) - 1].growth[comp])
+        field = {"pressure": "inner_pressure", "force": "axial_force"}.get(c.kind, c.kind)
+        return float(getattr(self, field))
+
+    def reference(self) -> Tube:
+        """The unloaded, ungrown tube (stress free, stable in every mode): growth 1 in every
+        layer, no voltage or pressure, lambda_z = 1."""
+        layers = tuple(dataclasses.replace(layer, growth=1.0) for layer in self.layers)
+        return Tube(layers, length=self.length)
+
+    def as_dict(self) -> dict:
+        """The tube as a JSON record: layers (radius, material, modulus, permittivity,
+        growth) and loads."""
+        return {
+            "layers": [
+                {
+                    "outer_radius": layer.outer_radius,
+                    "material": layer.material.name,
+                    "shear_modulus": layer.shear_modulus,
+                    "permittivity": layer.permittivity,
+                    "growth": repr(layer.growth) if layer.graded else list(layer.growth),
+                }
+                for layer in self.layers
+            ],
+            "outer_radius": self.outer_radius,
+            "length": self.length,
+            "stretch": self.stretch,
+            "axial_force": self.axial_force,
+            "voltage": self.voltage,
+            "inner_pressure": self.inner_pressure,
+            "outer_pressure": self.outer_pressure,
+            "closed_ends": self.closed_ends,
+        }
 
     @property
     def radii(self) -> tuple[float, ...]:
