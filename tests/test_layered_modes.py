@@ -18,7 +18,6 @@ from electrogrowth.incremental.targets import U_Z, impedance_targets
 from electrogrowth.model.layers import Layer, Tube
 from electrogrowth.model.materials import mooney_rivlin
 
-
 LOADS = ("length", "stretch", "voltage", "inner_pressure", "outer_pressure")
 
 
