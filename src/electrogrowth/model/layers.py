@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import re
 from collections.abc import Callable
 
 import numpy as np
@@ -27,6 +28,12 @@ from .materials import Material, neo_hookean
 from .params import TubeParameters
 
 Growth = float | tuple[float, float, float] | Callable
+
+#: the keys of a tube that a curve or sweep may vary besides its controls (:meth:`Tube.at`)
+KEYS_TEXT = (
+    "length, outer_pressure, layers[K].outer_radius, layers[K].thickness,"
+    " layers[K].shear_modulus, layers[K].permittivity"
+)
 
 
 def _number(name: str, value, valid: str, ok) -> float:
@@ -267,10 +274,16 @@ class Tube:
             )
         return c
 
-    def at(self, solve_for, value: float) -> Tube:
-        """This tube with the control ``solve_for`` (model/controls.py) set to ``value``."""
-        c = self.check_control(solve_for)
+    def at(self, name, value: float) -> Tube:
+        """This tube with ``name`` set to ``value``: a control (model/controls.py: growth[K],
+        growth[K].theta, stretch, voltage, pressure, force) or one of the KEYS a curve or
+        sweep may vary (``length``, ``outer_pressure``, ``layers[K].outer_radius``,
+        ``layers[K].thickness`` (the other layers' thicknesses kept), ``layers[K].shear_modulus``,
+        ``layers[K].permittivity``; K = 1 innermost)."""
         value = float(value)
+        if isinstance(name, str) and (name in ("length", "outer_pressure") or "layers[" in name):
+            return self._with_key(name, value)
+        c = self.check_control(name)
         if c.kind == "growth":
             k = (c.layer or 1) - 1
             old = self.layers[k].growth
@@ -283,6 +296,33 @@ class Tube:
             return dataclasses.replace(self, layers=tuple(layers))
         field = {"pressure": "inner_pressure", "force": "axial_force"}.get(c.kind, c.kind)
         return dataclasses.replace(self, **{field: value})
+
+    def _with_key(self, name: str, value: float) -> Tube:
+        match = re.fullmatch(r"layers\[(\d+)\]\.(\w+)", name)
+        if match is None:
+            if name not in ("length", "outer_pressure"):
+                raise ParameterError(f"{name!r} is not a key of a tube; valid: {KEYS_TEXT}")
+            return dataclasses.replace(self, **{name: value})
+        k, field = int(match[1]), match[2]
+        if not 1 <= k <= len(self.layers):
+            raise ParameterError(
+                f"{name}: layer {k} does not exist; this tube has layers 1..{len(self.layers)}"
+            )
+        if field not in ("outer_radius", "thickness", "shear_modulus", "permittivity"):
+            raise ParameterError(f"{name!r} is not a key of a tube; valid: {KEYS_TEXT}")
+        layers = list(self.layers)
+        if field == "thickness":  # every layer outside moves out with it
+            inner = self.radii[k - 1]
+            shift = inner + value - layers[k - 1].outer_radius
+            for j in range(k - 1, len(layers)):
+                if layers[j].graded:
+                    raise ParameterError(f"{name}: layer {j + 1} has graded growth")
+                layers[j] = dataclasses.replace(
+                    layers[j], outer_radius=layers[j].outer_radius + shift
+                )
+        else:
+            layers[k - 1] = dataclasses.replace(layers[k - 1], **{field: value})
+        return dataclasses.replace(self, layers=tuple(layers))
 
     def value_of(self, solve_for) -> float:
         """The current value of the control ``solve_for`` (for growth: its first varied
