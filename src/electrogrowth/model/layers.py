@@ -264,13 +264,17 @@ class Tube:
                     " parameter; give it constant growth to solve for it"
                 )
             return Control("growth", layer if n > 1 or c.layer else None, c.components)
-        wanted = {"stretch": "stretch", "force": "force"}.get(c.kind)
-        if wanted and self.control != wanted:
+        if c.kind in ("stretch", "force") and self.control != c.kind:
+            remedy = {
+                "force": "prescribe an axial force (axial_force in the tube file,"
+                " --axial-force F) to solve for it",
+                "stretch": "prescribe the stretch instead (stretch in the tube file,"
+                " --stretch) to solve for it",
+            }[c.kind]
             have = "an axial force" if self.control == "force" else "the axial stretch"
             raise ParameterError(
-                f"solve_for = {c.kind} is not a control of this tube, which prescribes {have};"
-                f" {'remove axial_force' if wanted == 'stretch' else 'give axial_force'}"
-                f" to solve for the {'stretch' if wanted == 'stretch' else 'axial force'}"
+                f"solve_for = {c.kind} is not a control of this tube, which prescribes"
+                f" {have}; {remedy}"
             )
         return c
 
