@@ -228,3 +228,46 @@ def test_pressurised_face_limit_is_approached_by_finite_modes():
     assert all(-1e-3 < d[j] < 0 for j in d)  # from below, shrinking
     assert 1.6 < d[16] / d[32] < 2.2 and 1.7 < d[32] / d[64] < 2.2
     assert abs(2 * x[64] - x[32] - lim.value) < 3e-5  # Richardson in 1/j
+
+
+def biot_stretch() -> float:
+    from scipy.optimize import brentq
+
+    beta = brentq(lambda b: b**3 + b**2 + 3 * b - 1, 0.0, 1.0, xtol=1e-17, rtol=1e-15)
+    return beta ** (2.0 / 3.0)
+
+
+def test_interface_with_a_vanishing_neighbour_is_a_free_face():
+    """Uniform axial compression (g = 1, no field) strains every layer alike. The interface
+    between a layer and one of vanishing modulus ratio r is the free face of the stiffer
+    layer: its limit tends to Biot's stretch linearly in r, whichever side is soft (mirror
+    symmetry), and a stiffer neighbour (r = 3) stabilises it (interfacial wrinkling needs
+    more compression than surface wrinkling)."""
+    biot = biot_stretch()
+    x = {}
+    for below, above in ((1e-4, 1.0), (1e-3, 1.0), (1.0, 1e-3), (1.0, 3.0)):
+        tube = Tube((Layer(1.2, shear_modulus=below), Layer(1.4, shear_modulus=above)))
+        lim = short_wave_limit(tube, "stretch", faces=("interface-1",))
+        assert lim.kind == "surface" and lim.face == "interface-1" and lim.psi == HALF_PI
+        x[below, above] = lim.value
+    assert 0 < biot - x[1e-4, 1.0] < 1e-4
+    assert abs((biot - x[1e-3, 1.0]) / (biot - x[1e-4, 1.0]) - 10.0) < 0.1
+    assert abs(x[1e-3, 1.0] - x[1.0, 1e-3]) < 1e-12
+    assert x[1.0, 3.0] < biot - 0.1
+
+
+def test_interface_is_critical_in_a_growing_embedded_layer():
+    """A layer (thickness 0.1, modulus 1) growing between two soft ones (modulus 0.2): the
+    faces stay stable and interface-1 wrinkles first, along z. The fixed-direction limit and
+    the interface alone give the same value."""
+    tube = Tube((Layer(1.3, shear_modulus=0.2), Layer(1.4), Layer(2.0, shear_modulus=0.2)))
+    lim = short_wave_limit(tube, "growth[2]")
+    assert lim.kind == "surface" and lim.face == "interface-1" and lim.psi == HALF_PI
+    assert abs(lim.value - INTERFACE_LIMIT) < 1e-9 and lim.error_estimate < 1e-12
+    assert lim.params.layers[1].growth == (lim.value,) * 3
+    ray = ray_limit(tube, 0, 1, "growth[2]", faces=("interface-1",))
+    assert abs(ray.value - lim.value) < 1e-12
+
+
+#: short_wave_limit of the embedded-layer tube above (measured, docs)
+INTERFACE_LIMIT = 2.1782747522850343
