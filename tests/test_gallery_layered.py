@@ -2,13 +2,18 @@
 number checked by an independent route (the other method, the single-layer solver, an exact
 identity, the base-state branch)."""
 
+import dataclasses
 import math
 
 import numpy as np
 import pytest
 
 from electrogrowth import TubeParameters, critical_value
-from electrogrowth.basestate.layered import pressure_response
+from electrogrowth.basestate.layered import (
+    layered_threshold,
+    pressure_response,
+    solve_layered_state,
+)
 from electrogrowth.figures import GALLERY
 from electrogrowth.figures.gallery import (
     bilayer,
@@ -80,13 +85,24 @@ def test_pressurised_dielectric_headlines():
         Tube((Layer(1.4),), inner_pressure=0.1), *o.mode, "voltage", method="collocation"
     )
     assert other.value == pytest.approx(result.headline["voltage_P0.1"], rel=1e-8)
-    # the limit point is the maximum of the inflation branch at zero axial force
-    limit = result.headline["limit_open"]
-    tube = Tube((Layer(1.4),), axial_force=0.0)
-    lam = next(o for o in result.table if o[0] == "limit point, open ends")[9]
-    lam = float(lam.split("= ")[1])
+    # the closed-end limit point is the maximum of its inflation branch at zero axial force
+    limit = result.headline["limit_closed"]
+    tube = Tube((Layer(1.4),), axial_force=0.0, closed_ends=True)
+    row = next(r for r in result.table if r[0] == "limit point, closed ends")
+    lam = float(row[9].split("= ")[1])
     near = pressure_response(tube, [lam * (1 - 1e-3), lam * (1 + 1e-3)])["inner_pressure"]
     assert np.all(near < limit)
-    # the long axisymmetric mode tends to it from above
-    bulge = result.headline["bulge_L20_open"]
-    assert limit < bulge < limit * 1.05
+    # the long axisymmetric mode of the open-ended tube, by collocation
+    long = Tube((Layer(1.4),), axial_force=0.0, length=20.0)
+    other = critical_value(long, 0, 1, "pressure", method="collocation")
+    assert other.value == pytest.approx(result.headline["bulge_L20_open"], rel=1e-8)
+    # ... tends (like 1 / L^2) to the limit point of the closed-ended tube carrying the same
+    # total axial load N + pi r_i^2 P (the long-wave bulging condition, docs/gallery.md)
+    p20 = other.value
+    open_state = solve_layered_state(dataclasses.replace(long, inner_pressure=p20))
+    force = -math.pi * open_state.r_i**2 * p20
+    closed = layered_threshold(
+        Tube((Layer(1.4),), axial_force=force, closed_ends=True), "pressure"
+    )
+    assert closed.kind == "limit point"
+    assert closed.value < p20 < closed.value + 1e-3

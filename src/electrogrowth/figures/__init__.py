@@ -15,7 +15,8 @@ from collections.abc import Callable
 
 from .base_state import figure4, figure5
 from .critical import figure6, figure7, figure8, figure9, figure10
-from .gallery import GalleryFigure, mucosal_folding, one_layer_growth, pressurised_dielectric
+from .gallery import mucosal_folding, one_layer_growth, pressurised_dielectric
+from .gallery_base import GalleryFigure
 from .style import FigureResult
 
 FIGURES: dict[int, Callable[..., FigureResult]] = {

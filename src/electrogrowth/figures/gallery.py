@@ -1,192 +1,26 @@
 """The gallery: worked examples of layered, growing, pressurised tubes (docs/gallery.md).
 
-Each example is a pure function ``name(*, quick=False)`` returning a :class:`GalleryFigure`
-(a :class:`~.style.FigureResult` named instead of numbered): the onsets it computed, one row
-per tube, a figure, headline numbers, and the critical points whose 3D patterns
-``electrogrowth reproduce --gallery`` renders. Every onset is one :func:`scan_modes` of the
-tube (mode ranges widened automatically, the exact short-wave limit compared); a tube that
+Each example is a pure function ``name(*, quick=False, mapper=map)`` returning a
+:class:`~.gallery_base.GalleryFigure` (a :class:`~.style.FigureResult` named instead of
+numbered): the onsets it computed, one row per tube, a figure, headline numbers, and the
+critical points whose 3D patterns ``electrogrowth reproduce --gallery`` renders. Every onset
+is one :func:`scan_modes` of the tube (mode ranges widened automatically, the exact
+short-wave limit compared) or, where a mode is named, one :func:`critical_value`; a tube that
 never wrinkles in the searched range is a row with a NaN value and its reason, not an error.
-``quick`` computes one or two tubes per example, for tests.
-
-The CSV (``<name>.csv``) has the columns :data:`COLUMNS`: the case, the parameter varied and
-its value x, the control solved for, the critical value, the mode (m, n), its family, the
-kind (bifurcation, threshold, surface, none) and, for none, the reason.
+The tubes of an example are solved by ``mapper`` (a process pool's ``map`` runs them in
+parallel). ``quick`` computes one or two tubes per example, for tests.
 """
 
 from __future__ import annotations
 
-import csv
 import dataclasses
-import functools
 import math
 from collections.abc import Callable
-from pathlib import Path
-
-import numpy as np
 
 from ..basestate.layered import layered_threshold, pressure_response
-from ..bifurcation.critical import CriticalPoint, critical_value
-from ..bifurcation.scan import ScanOptions, scan_modes
-from ..errors import BaseStateError, ConvergenceError, NoBifurcationFound
 from ..model.layers import Layer, Tube
-from .style import COLORS, FigureResult, new_figure
-
-COLUMNS = ("case", "parameter", "x", "control", "value", "m", "n", "family", "kind", "note")
-#: Mode ranges of every scan: widened while the optimum is on an upper edge.
-FULL = ScanOptions(m_range=(0, 16), n_range=(1, 16), top=3)
-QUICK = ScanOptions(m_range=(0, 12), n_range=(1, 4), top=1, extend=False)
-
-
-@dataclasses.dataclass(frozen=True)
-class Onset:
-    """The onset of one tube: ``critical`` is None when no mode bifurcates (``note`` says
-    why: the scan's message)."""
-
-    case: str
-    parameter: str
-    x: float
-    control: str
-    critical: CriticalPoint | None
-    note: str = ""
-
-    @property
-    def value(self) -> float:
-        return math.nan if self.critical is None else self.critical.value
-
-    @property
-    def mode(self) -> tuple[int, int]:
-        c = self.critical
-        return (-1, -1) if c is None or c.kind != "bifurcation" else (c.m, c.n)
-
-    def row(self) -> tuple:
-        c = self.critical
-        m, n = self.mode
-        family = "" if c is None or c.family is None else str(c.family)
-        kind = "none" if c is None else str(c.kind)
-        return (
-            self.case,
-            self.parameter,
-            self.x,
-            self.control,
-            self.value,
-            m,
-            n,
-            family,
-            kind,
-            self.note,
-        )
-
-
-@dataclasses.dataclass(frozen=True)
-class GalleryFigure(FigureResult):
-    """A gallery example: its ``name`` (file stem), ``title``, the onsets, and the named
-    critical points to draw in 3D."""
-
-    name: str = ""
-    title: str = ""
-    onsets: tuple[Onset, ...] = ()
-    points: tuple[tuple[str, CriticalPoint], ...] = ()
-
-    def save(self, directory: str | Path, *, dpi: int = 200) -> list[Path]:
-        """Write <name>.png and <name>.csv into ``directory`` (created); return the paths."""
-        out = Path(directory)
-        out.mkdir(parents=True, exist_ok=True)
-        png, path = out / f"{self.name}.png", out / f"{self.name}.csv"
-        self.figure.savefig(png, dpi=dpi)
-        with path.open("w", newline="") as fh:
-            writer = csv.writer(fh)
-            writer.writerow(self.columns)
-            for row in self.table:
-                writer.writerow([repr(v) if isinstance(v, float) else v for v in row])
-        return [png, path]
-
-
-@dataclasses.dataclass(frozen=True)
-class Job:
-    """One tube to solve: the critical ``control`` over all modes, or of one ``mode`` (m, n)
-    when given; ``case``, ``parameter`` and ``x`` label its row."""
-
-    tube: Tube
-    control: str
-    case: str
-    parameter: str
-    x: float
-    mode: tuple[int, int] | None = None
-
-
-def solve(key: tuple, options: ScanOptions) -> tuple[CriticalPoint | None, str]:
-    """The unit of work: the critical point of ``key = (tube, control, mode)`` (a scan over all
-    modes when ``mode`` is None), or None and the reason when no mode bifurcates."""
-    tube, control, mode = key
-    try:
-        if mode is None:
-            return scan_modes(tube, control, options=options).critical, ""
-        return critical_value(tube, *mode, control), ""
-    except (NoBifurcationFound, ConvergenceError, BaseStateError) as exc:
-        return None, str(exc)
-
-
-def run_jobs(jobs, options: ScanOptions, mapper: Callable = map) -> list[Onset]:
-    """The :class:`Onset` of every job, one solve per distinct (tube, control, mode), run by
-    ``mapper`` (builtin ``map``, or a process pool's)."""
-    keys = list(dict.fromkeys((j.tube, j.control, j.mode) for j in jobs))
-    done = dict(zip(keys, mapper(functools.partial(solve, options=options), keys), strict=True))
-    return [
-        Onset(j.case, j.parameter, float(j.x), j.control, *done[j.tube, j.control, j.mode])
-        for j in jobs
-    ]
-
-
-def run_groups(groups: dict, options: ScanOptions, mapper: Callable = map) -> dict:
-    """:func:`run_jobs` over every group of jobs at once; the onsets by group."""
-    onsets = iter(run_jobs([j for jobs in groups.values() for j in jobs], options, mapper))
-    return {name: [next(onsets) for _ in jobs] for name, jobs in groups.items()}
-
-
-def _result(name, title, onsets, fig, headline, points=(), extra_rows=()) -> GalleryFigure:
-    rows = [o.row() for o in onsets] + list(extra_rows)
-    table = np.empty((len(rows), len(COLUMNS)), dtype=object)
-    for i, row in enumerate(rows):
-        table[i] = row
-    return GalleryFigure(
-        0,
-        COLUMNS,
-        table,
-        fig,
-        headline,
-        name=name,
-        title=title,
-        onsets=tuple(onsets),
-        points=tuple(points),
-    )
-
-
-def _draw(ax, onsets, *, color, label, marker="o", annotate=True):
-    """Critical value against x, each point labelled with its mode "m, n" (the short-wave
-    limit inf, none: a cross on the axis)."""
-    ok = [o for o in onsets if o.critical is not None]
-    ax.plot(
-        [o.x for o in ok], [o.value for o in ok], "-" + marker, color=color, label=label, ms=3.5
-    )
-    for o in ok:
-        m, n = o.mode
-        text = f"{m}, {n}" if m >= 0 else ("inf" if o.critical.kind == "surface" else "thr")
-        if annotate:
-            ax.annotate(
-                text,
-                (o.x, o.value),
-                xytext=(0, 5),
-                textcoords="offset points",
-                ha="center",
-                fontsize=6.5,
-                color=color,
-            )
-    for o in onsets:
-        if o.critical is None:
-            ax.plot(
-                [o.x], [0.0], "x", color=color, transform=ax.get_xaxis_transform(), clip_on=False
-            )
-
+from .gallery_base import FULL, QUICK, GalleryFigure, Job, draw_onsets, result, run_groups
+from .style import COLORS, new_figure
 
 # -- 1. mucosal folding ----------------------------------------------------------------------
 
@@ -207,14 +41,19 @@ def mucosal_folding(*, quick: bool = False, mapper: Callable = map) -> GalleryFi
     hoop, free = "growth[1].theta", {"axial_force": 0.0}
     thick = (0.1,) if quick else (0.05, 0.1, 0.2, 0.3)
     moduli = (10.0,) if quick else (0.1, 1.0, 10.0, 100.0)
-    volts = () if quick else (0.0, 0.2, 0.4)
+    volts = () if quick else (0.0, 0.4)
     kinds = (
         (("hoop", hoop),)
         if quick
         else (("hoop", hoop), ("cross-section", "growth[1].r+theta"), ("isotropic", "growth[1]"))
     )
     ends = (("fixed stretch", {}), ("free ends", free))
-    groups = {
+    groups = {  # the slowest first
+        "kinds": [
+            Job(bilayer(**loads), control, f"{what}, {label}", "h", 0.1)
+            for what, control in kinds
+            for label, loads in ([ends[0]] if quick else ends)
+        ],
         "h": [Job(bilayer(h), hoop, "hoop: thickness", "h", h) for h in thick],
         "mu": [Job(bilayer(mu=mu), hoop, "hoop: modulus", "mu1/mu2", mu) for mu in moduli],
         **{
@@ -224,11 +63,6 @@ def mucosal_folding(*, quick: bool = False, mapper: Callable = map) -> GalleryFi
             ]
             for label, loads in ends
         },
-        "kinds": [
-            Job(bilayer(**loads), control, f"{what}, {label}", "h", 0.1)
-            for what, control in kinds
-            for label, loads in ([ends[0]] if quick else ends)
-        ],
     }
     res = run_groups(groups, opts, mapper)
     by_h, by_mu = res["h"], res["mu"]
@@ -238,19 +72,19 @@ def mucosal_folding(*, quick: bool = False, mapper: Callable = map) -> GalleryFi
 
     fig, axes = new_figure(7.0, 5.2, 2, 2)
     (a, b), (c, d) = axes
-    _draw(a, by_h, color=COLORS[0], label="hoop growth")
+    draw_onsets(a, by_h, color=COLORS[0], label="hoop growth")
     a.set(
         xlabel=r"inner thickness $h$ ($R_o = 2$, $\mu_1/\mu_2 = 10$)",
         ylabel=r"critical $g_\theta$ of layer 1",
     )
-    _draw(b, by_mu, color=COLORS[1], label="hoop growth")
+    draw_onsets(b, by_mu, color=COLORS[1], label="hoop growth")
     b.set(
         xscale="log",
         xlabel=r"modulus ratio $\mu_1/\mu_2$ ($h = 0.1$)",
         ylabel=r"critical $g_\theta$",
     )
     for (label, rows), color in zip(by_v.items(), COLORS[2:4], strict=True):
-        _draw(c, rows, color=color, label=label)
+        draw_onsets(c, rows, color=color, label=label)
     c.set(
         xlabel=r"voltage $\bar V$ ($h = 0.1$, $\mu_1/\mu_2 = 10$)", ylabel=r"critical $g_\theta$"
     )
@@ -275,7 +109,7 @@ def mucosal_folding(*, quick: bool = False, mapper: Callable = map) -> GalleryFi
         for n, o in points
         if o.critical is not None and o.critical.kind == "bifurcation"
     ]
-    return _result("mucosal_folding", "Mucosal folding", onsets, fig, headline, points)
+    return result("mucosal_folding", "Mucosal folding", onsets, fig, headline, points)
 
 
 def _bars(ax, by_kind: dict) -> None:
@@ -327,7 +161,7 @@ def one_layer_growth(*, quick: bool = False, mapper: Callable = map) -> GalleryF
     for ax, comp in zip(axes[0], ("theta", "z"), strict=True):
         for label, color in (("fixed stretch", COLORS[0]), ("free ends", COLORS[2])):
             if (comp, label) in rows:
-                _draw(ax, rows[comp, label], color=color, label=label)
+                draw_onsets(ax, rows[comp, label], color=color, label=label)
         ax.set(
             xlabel=r"outer radius $R_o$",
             ylabel=rf"critical $g_{{\{comp}}}$" if comp == "theta" else r"critical $g_z$",
@@ -342,7 +176,7 @@ def one_layer_growth(*, quick: bool = False, mapper: Callable = map) -> GalleryF
         for (c, lab), o in at2.items()
         if o.critical is not None and o.critical.kind == "bifurcation"
     ]
-    return _result(
+    return result(
         "one_layer_growth",
         "Hoop versus axial growth of one thick layer",
         onsets,
@@ -363,10 +197,11 @@ def pressurised_dielectric(*, quick: bool = False, mapper: Callable = map) -> Ga
     opts = QUICK if quick else FULL
     pressures = (0.1,) if quick else (0.0, 0.05, 0.1, 0.15, 0.2, 0.25)
     lengths = (20.0,) if quick else (2.0, 5.0, 10.0, 20.0, 40.0)
-    ends = {"open ends": False} if quick else {"open ends": False, "closed ends": True}
+    ends = {"open ends": False, "closed ends": True}
     free = {
         label: Tube((Layer(1.4),), axial_force=0.0, closed_ends=c) for label, c in ends.items()
     }
+    long_waves = ["open ends"] if quick else list(ends)
     groups = {
         "P": [
             Job(Tube((Layer(1.4),), inner_pressure=p), "voltage", "voltage vs pressure", "P_i", p)
@@ -385,10 +220,11 @@ def pressurised_dielectric(*, quick: bool = False, mapper: Callable = map) -> Ga
                 for length in lengths
             ]
             for label, tube in free.items()
+            if label in long_waves
         },
     }
     res = run_groups(groups, opts, mapper)
-    by_p, bulges = res["P"], {label: res[label] for label in free}
+    by_p, bulges = res["P"], {label: res[label] for label in long_waves}
     limits = {label: layered_threshold(tube, "pressure") for label, tube in free.items()}
     extra = [
         (
@@ -406,29 +242,46 @@ def pressurised_dielectric(*, quick: bool = False, mapper: Callable = map) -> Ga
         for label, thr in limits.items()
     ]
 
-    fig, axes = new_figure(7.0, 2.8, 1, 2)
-    a, b = axes[0]
-    _draw(a, by_p, color=COLORS[1], label=r"$\lambda_z = 1$")
+    fig, axes = new_figure(7.5, 2.7, 1, 3)
+    a, b, c = axes[0]
+    draw_onsets(a, by_p, color=COLORS[1], label=r"$\lambda_z = 1$")
+    a.margins(y=0.12)
     a.set(xlabel=r"inner pressure $P_i/\mu$", ylabel=r"critical voltage $\bar V$")
-    a.set_title("(a) wrinkling under voltage and pressure", loc="left", fontsize=8)
-    for (label, thr), color in zip(limits.items(), COLORS[2:], strict=False):
+    a.set_title("(a) voltage at onset; labels m, n", loc="left", fontsize=7)
+    colors = dict(zip(ends, COLORS[2:], strict=False))
+    for label, thr in limits.items():
         resp = pressure_response(free[label], points=9 if quick else 41)
-        b.plot(resp["lambda_i"], resp["inner_pressure"], "-", color=color, label=label)
-        b.plot([thr.lambda_i], [thr.value], "o", color=color, ms=4)
-        for o in bulges[label]:
-            if o.critical is not None:
-                b.axhline(o.value, color=color, lw=0.5, ls=":")
+        b.plot(resp["lambda_i"], resp["inner_pressure"], "-", color=colors[label], label=label)
+        if thr.kind == "limit point":
+            b.plot([thr.lambda_i], [thr.value], "o", color=colors[label], ms=4)
+            c.axhline(
+                thr.value, color=colors[label], lw=0.8, ls="--", label=f"limit point, {label}"
+            )
+        else:
+            b.axhline(thr.value, color=colors[label], lw=0.6, ls="--")
     b.set(xlabel=r"inner stretch $\lambda_i$", ylabel=r"inner pressure $P_i/\mu$")
-    b.set_title(
-        "(b) inflation at zero axial force; dots: limit points,\n"
-        "dotted: (0, 1) mode for L = " + ", ".join(f"{x:g}" for x in lengths),
-        loc="left",
-        fontsize=7,
-    )
-    b.legend(fontsize=7)
+    b.set_title("(b) inflation at zero axial force", loc="left", fontsize=7)
+    b.legend(fontsize=6.5)
+    for label, rows in bulges.items():
+        ok = [o for o in rows if o.critical is not None]
+        c.plot(
+            [1 / o.x**2 for o in ok],
+            [o.value for o in ok],
+            "o-",
+            color=colors[label],
+            ms=3.5,
+            label=f"(0, 1) mode, {label}",
+        )
+    c.set(xlabel=r"$1/L^2$", ylabel=r"critical $P_i/\mu$", xlim=(0, None))
+    c.set_title("(c) the axisymmetric mode of long tubes", loc="left", fontsize=7)
+    c.legend(fontsize=6.5)
     onsets = by_p + [o for v in bulges.values() for o in v]
     headline = {"voltage_P0.1": by_p[pressures.index(0.1)].value}
-    headline |= {f"limit_{k.split()[0]}": thr.value for k, thr in limits.items()}
+    headline |= {
+        f"limit_{k.split()[0]}": thr.value
+        for k, thr in limits.items()
+        if thr.kind == "limit point"
+    }
     headline |= {f"bulge_L{lengths[-1]:g}_{k.split()[0]}": v[-1].value for k, v in bulges.items()}
     points = [
         (f"voltage-P{o.x:g}", o.critical)
@@ -440,7 +293,7 @@ def pressurised_dielectric(*, quick: bool = False, mapper: Callable = map) -> Ga
         for k, v in bulges.items()
         if v[-1].critical is not None
     ]
-    return _result(
+    return result(
         "pressurised_dielectric",
         "A pressurised dielectric tube",
         onsets,
