@@ -12,7 +12,7 @@ OUT ?= out
 $(VENV)/.installed: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install -q --upgrade pip
-	$(BIN)/python -m pip install -q -e '.[test,lint,vtk,sweep]'
+	$(BIN)/python -m pip install -q -e '.[test,lint,vtk,sweep,units]'
 	touch $@
 
 # The heavier optional extras (sweep = xarray/zarr/dask, vtk = meshio), on demand.

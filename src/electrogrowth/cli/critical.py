@@ -23,6 +23,7 @@ from .options import (
     scan_options_from_args,
     tube_from_args,
 )
+from .report import edge_warning, physical_line, physical_record, supported, voltage_text, warn
 
 CERTIFY_RTOL = 1e-8  # the two methods must agree this well for a certified value
 
@@ -91,12 +92,15 @@ def run_critical(args) -> int:
         )
         crit, record = result.critical, result.as_dict()
         runners = record["runners_up"]
+        warn(edge_warning(result))
     if args.certify and crit.kind == Kind.BIFURCATION:
         record.update(_certify(params, crit, args))
+    if getattr(args, "scales", None) is not None:
+        record["physical"] = physical_record(record, args.scales)
     if args.json:
         print(json.dumps(record))
         return 0
-    _print_text(record, runners)
+    _print_text(record, runners, getattr(args, "scales", None))
     return 0
 
 
@@ -128,8 +132,9 @@ def _certify(params, crit, args) -> dict:
     }
 
 
-def _print_text(rec: dict, runners: list) -> None:
+def _print_text(rec: dict, runners: list, scales=None) -> None:
     name = {"growth": "g_cr", "stretch": "lambda_z,cr", "voltage": "Vbar_cr"}[rec["solve_for"]]
+    value = supported(rec["value"], rec["error_estimate"])  # the digits the estimate supports
     if rec["kind"] == Kind.THRESHOLD:
         head = (
             f"{name} = {rec['value']:.12g}: the axisymmetric state is lost (voltage"
@@ -144,22 +149,24 @@ def _print_text(rec: dict, runners: list) -> None:
             else f"the direction psi = {rec['psi']:.6g} rad from theta to z"
         )
         head = (
-            f"{name} = {rec['value']:.12g}  (error estimate {rec['error_estimate']:.1e},"
+            f"{name} = {value}  (error estimate {rec['error_estimate']:.1e},"
             f" half-space)   short-wave (surface) instability, m, n -> infinity, at the"
             f" {rec['face']} face, wrinkles along {along}"
         )
     else:
         head = (
-            f"{name} = {rec['value']:.12g}  (error estimate {rec['error_estimate']:.1e},"
+            f"{name} = {value}  (error estimate {rec['error_estimate']:.1e},"
             f" {rec['method']})   mode (m, n) = ({rec['m']}, {rec['n']})"
             f"{_family_note(rec.get('family'))}"
         )
     lines = [
         head,
         f"  tube: Rbar_o = {rec['outer_radius']:g}, L = {rec['length']:g},"
-        f" g = {rec['growth']:.12g}, lambda_z = {rec['stretch']:.12g},"
-        f" Vbar = {rec['voltage']:.12g}, {rec['material']}",
+        f" g = {_given(rec, 'growth')}, lambda_z = {_given(rec, 'stretch')},"
+        f" {voltage_text(rec['voltage'], rec['outer_radius'], scales, _error(rec, 'voltage'))},"
+        f" {rec['material']}",
     ]
+    lines += physical_line(rec.get("physical", {}))
     if rec.get("certified"):
         lines.append(
             f"  certified by {rec['certified_by']}: {rec['certified_value']:.12g}"
@@ -176,6 +183,15 @@ def _print_text(rec: dict, runners: list) -> None:
             f"   {name} = {r['value']:.10g}"
         )
     print("\n".join(lines))
+
+
+def _error(rec: dict, key: str) -> float | None:
+    """The error estimate of ``key`` if it is the value solved for (else an input: None)."""
+    return rec["error_estimate"] if rec["solve_for"] == key else None
+
+
+def _given(rec: dict, key: str) -> str:
+    return supported(rec[key], _error(rec, key))
 
 
 def _family_note(family: str | None) -> str:
