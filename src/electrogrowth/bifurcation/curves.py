@@ -35,8 +35,10 @@ from typing import NamedTuple
 import numpy as np
 
 from ..errors import ElectrogrowthError, ParameterError
+from ..labelled import curve_dataset
 from ..model.params import CONTROLS, TubeParameters, check_side
 from ..outcomes import NO_MODE, Kind, Status
+from ..summary import curve_html
 from .critical import critical_value
 from .scan import ScanOptions, scan_modes
 from .surface import short_wave_limit
@@ -154,6 +156,14 @@ class Curve:
             if ok and start is None:
                 start = i
         return out
+
+    def to_xarray(self):
+        """The curve as an ``xarray.Dataset``: rows on dimension point (x is the coordinate
+        named after ``along``), the located switches on dimension switch (labelled.py)."""
+        return curve_dataset(self)
+
+    def _repr_html_(self) -> str:
+        return curve_html(self)
 
     def to_csv(self, path: str | Path) -> Path:
         """Columns <along>, <solve_for>_cr, m, n, kind, surface (0/1), short_wave_limit,

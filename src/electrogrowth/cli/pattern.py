@@ -37,6 +37,7 @@ from .options import (
     scan_options_from_args,
     tube_from_args,
 )
+from .report import edge_warning, physical_line, physical_record, supported, warn
 
 HELP = "mode shape of the wrinkles at onset: 3D picture, plot and CSV, VTK mesh of the wall"
 
@@ -121,9 +122,11 @@ def run_pattern(args) -> int:
         m, n, family = mode
         crit = critical_value(params, m, n, args.solve_for, family=family, side=args.side)
     else:
-        crit = scan_modes(
+        scan = scan_modes(
             params, args.solve_for, side=args.side, options=scan_options_from_args(args)
-        ).critical
+        )
+        crit = scan.critical
+        warn(edge_warning(scan))
         if crit.family == Family.TORSIONAL:
             _check_torsional_outputs(args)
     shape = mode_shape(crit, method=args.method, points=args.points)
@@ -145,6 +148,8 @@ def run_pattern(args) -> int:
         },
         files=[str(f) for f in files],
     )
+    if getattr(args, "scales", None) is not None:
+        record["physical"] = physical_record(record, args.scales)
     if args.json:
         print(json.dumps(record))
         return 0
@@ -185,7 +190,8 @@ def _print_text(rec: dict) -> None:
     name = {"growth": "g_cr", "stretch": "lambda_z,cr", "voltage": "Vbar_cr"}[rec["solve_for"]]
     big = rec["max_abs"]
     lines = [
-        f"{name} = {rec['value']:.12g}   mode (m, n) = ({rec['m']}, {rec['n']}),"
+        f"{name} = {supported(rec['value'], rec['error_estimate'])}   mode (m, n) ="
+        f" ({rec['m']}, {rec['n']}),"
         f" {rec['family']}, k = {rec['k']:.6g}",
         f"  tube: Rbar_o = {rec['outer_radius']:g}, L = {rec['length']:g},"
         f" g = {rec['growth']:.12g}, lambda_z = {rec['stretch']:.12g},"
@@ -194,6 +200,7 @@ def _print_text(rec: dict) -> None:
         f" {rec['boundary_residual']:.1e}): max |U_r|, |U_theta|, |U_z| = {big['U_r']:.4g},"
         f" {big['U_th']:.4g}, {big['U_z']:.4g}; max |Phi| = {big['Phi']:.4g}",
     ]
+    lines += physical_line(rec.get("physical", {}))
     if rec["note"]:
         lines.append(f"  note: {rec['note']}")
     lines += [f"  wrote {f}" for f in rec["files"]]

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 import sys
+import textwrap
 
 from ..errors import ParameterError
 
@@ -106,7 +107,8 @@ def physical_line(physical: dict) -> list[str]:
     if not physical:
         return []
     parts = [f"{key} = {value:.6g} {unit}" for key, (value, unit) in physical.items()]
-    return ["  in physical units: " + ", ".join(parts)]
+    text = "in physical units: " + ", ".join(parts)
+    return textwrap.wrap(text, 95, initial_indent="  ", subsequent_indent="    ")
 
 
 def edge_warning(result) -> str:
