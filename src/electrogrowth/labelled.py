@@ -69,7 +69,7 @@ def _attrs(name: str, **extra) -> dict:
 
 def clean(attrs: dict) -> dict:
     """Attributes netCDF can store: None dropped, infinities as strings, bools as ints,
-    lists of numbers kept."""
+    lists of numbers kept, lists of strings joined by "; "."""
     out = {}
     for key, value in attrs.items():
         if value is None:
@@ -79,7 +79,8 @@ def clean(attrs: dict) -> dict:
         elif isinstance(value, float) and not math.isfinite(value):
             value = str(value)
         elif isinstance(value, (tuple, list)):
-            value = list(value)
+            strings = any(isinstance(v, str) for v in value)
+            value = "; ".join(map(str, value)) if strings else list(value)
         elif not isinstance(value, (int, float, str, np.integer, np.floating)):
             value = str(value)
         out[key] = value

@@ -93,7 +93,7 @@ def _reference_values(energy: sp.Expr, label: str) -> tuple[float, float]:
             2 * (sp.diff(energy, I4) + sp.diff(energy, I5) + sp.diff(energy, I6)).subs(at)
         )
     except (TypeError, ValueError):
-        value = math.nan
+        value = mu = inv_eps = math.nan
     if not all(math.isfinite(x) for x in (value, mu, inv_eps)):
         raise MaterialError(
             f"energy {label!r} or its derivatives are not finite real numbers at the"
