@@ -108,6 +108,13 @@ def curve_point(
     )
 
 
+def _progress_bar(total: int, desc: str):
+    """A tqdm.auto bar (a notebook widget or text on stderr)."""
+    from tqdm.auto import tqdm
+
+    return tqdm(total=total, desc=desc, unit="pt")
+
+
 def _message(exc: Exception) -> str:
     """One line; an unexpected (non-electrogrowth) error is named by its type."""
     text = " ".join(str(exc).split())
@@ -263,7 +270,7 @@ def critical_curve(
     *,
     side: str | None = None,
     options: ScanOptions = ScanOptions(),
-    progress: Callable[[int], object] | None = None,
+    progress: bool | Callable[[int], object] | None = None,
     mapper: Callable = map,
 ) -> Curve:
     """Critical ``solve_for`` as ``along`` runs over ``values``, switches located.
@@ -280,8 +287,10 @@ def critical_curve(
         Strictly monotone grid of ``along``.
     options : ScanOptions
         Mode ranges of each scan (extended automatically when the optimum is on an edge).
-    progress : callable, optional
-        Called with 1 after each grid point (``tqdm(...).update`` fits).
+    progress : bool or callable, optional
+        True: a progress bar (tqdm.auto: a widget in a notebook, text on a terminal);
+        None or False: none (default); a callable: called with 1 after each grid point
+        (``tqdm(...).update`` fits).
     mapper : callable
         ``map``-like function running :func:`curve_point` over the grid (e.g. a process
         pool's ``map``); the builtin by default.
@@ -320,10 +329,15 @@ def critical_curve(
         params.at(along, x)
     unit = functools.partial(curve_point, params, solve_for, along, side=side, options=options)
     points = []
+    bar = _progress_bar(xs.size, f"{solve_for} along {along}") if progress is True else None
     for pt in mapper(unit, xs):
         points.append(pt)
-        if progress is not None:
+        if bar is not None:
+            bar.update(1)
+        elif callable(progress):
             progress(1)
+    if bar is not None:
+        bar.close()
     loc = _Locator(params, solve_for, along, side, unit)
     rows, switches = [], []
     for i, pt in enumerate(points):
