@@ -14,8 +14,11 @@ from __future__ import annotations
 
 import argparse
 import math
+import re
 
 from ..errors import ParameterError
+
+_QUANTITY = re.compile(r"\s*[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?\s*[A-Za-z\u00b5\u03bc]")
 
 
 class QuantityText(str):
@@ -27,7 +30,7 @@ def number_or_quantity(text: str) -> float | QuantityText:
     try:
         value = float(text)
     except ValueError:
-        if not text.strip() or not any(c.isalpha() for c in text):
+        if not _QUANTITY.match(text):  # a quantity starts with its number: 3kV, 2.8 mm
             raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
         return QuantityText(text)
     if not math.isfinite(value):
