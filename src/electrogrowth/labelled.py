@@ -63,7 +63,7 @@ def xarray():
 
 
 def _attrs(name: str, **extra) -> dict:
-    units, long_name = VARIABLES.get(name) or PARAMETERS.get(name) or ("1", name)
+    units, long_name = VARIABLES.get(name) or PARAMETERS.get(name) or ("1", str(name))
     return {"units": units, "long_name": long_name, **extra}
 
 
@@ -88,13 +88,20 @@ def clean(attrs: dict) -> dict:
 
 
 def _tube_attrs(params) -> dict:
-    return {
-        "material": params.material.name,
-        **{
-            f: getattr(params, f)
-            for f in ("outer_radius", "length", "growth", "stretch", "voltage")
-        },
-    }
+    """The tube's fields: TubeParameters, or a layered Tube (its layers' outer radii and
+    materials, and its loads)."""
+    if hasattr(params, "layers"):
+        return {
+            "layer_outer_radii": [float(layer.outer_radius) for layer in params.layers],
+            "materials": [layer.material.name for layer in params.layers],
+            **{
+                f: getattr(params, f, None)
+                for f in ("length", "stretch", "axial_force", "voltage")
+                + ("inner_pressure", "outer_pressure")
+            },
+        }
+    fields = ("outer_radius", "length", "growth", "stretch", "voltage")
+    return {"material": params.material.name, **{f: getattr(params, f) for f in fields}}
 
 
 def base_state_dataset(state, points: int = 101):
@@ -201,7 +208,7 @@ def scan_dataset(result):
 
 
 def _critical_attrs(solve_for: str) -> dict:
-    units, long_name = PARAMETERS[solve_for]
+    units, long_name = PARAMETERS.get(solve_for, ("1", solve_for))
     return {"units": units, "long_name": f"critical {long_name}"}
 
 

@@ -37,6 +37,11 @@ def table(title: str, rows: list[tuple[str, object]]) -> str:
 
 
 def _tube(params) -> str:
+    if hasattr(params, "layers"):  # a layered Tube
+        layers = ", ".join(
+            f"{layer.material.name} to R = {layer.outer_radius:g}" for layer in params.layers
+        )
+        return f"{len(params.layers)} layers ({layers}), V̄ = {params.voltage:.6g}"
     return (
         f"Rbar_o = {params.outer_radius:g}, L = {params.length:g}, g = {params.growth:.6g},"
         f" λ_z = {params.stretch:.6g}, V̄ = {params.voltage:.6g}, {params.material.name}"

@@ -258,6 +258,11 @@ class LayeredState:
         )
 
     @property
+    def current_length(self) -> float:
+        """l / R_i = lambda_z L, the deformed length (sets k = n pi / l)."""
+        return self.stretch * self.tube.length
+
+    @property
     def interface_radii(self) -> tuple[float, ...]:
         """r at the interfaces between layers (inner to outer; empty for one layer)."""
         return self.radii[1:-1]
@@ -310,6 +315,24 @@ class LayeredState:
     def radius(self, R, *, side: str = "outer") -> np.ndarray:
         """r(R) = sqrt(r_i^2 + 2 G(R) / lambda_z)."""
         return self._fields(R, side)["r"]
+
+    def reference_radius(self, r, *, layer: int) -> np.ndarray:
+        """R(r) in layer ``layer`` (0-based), the inverse of :meth:`radius` there: closed form
+        R^2 = R_{k-1}^2 + lambda_z (r^2 - r_{k-1}^2) / J for constant growth, bisection to
+        rounding for graded growth (r(R) increases)."""
+        r = np.asarray(r, float)
+        a, b = self.tube.radii[layer], self.tube.radii[layer + 1]
+        ply = self.tube.layers[layer]
+        if not ply.graded:
+            J = float(np.prod(ply.growth))
+            R2 = a * a + self.stretch * (r * r - self.radii[layer] ** 2) / J
+            return np.clip(np.sqrt(np.maximum(R2, 0.0)), a, b)
+        lo, hi = np.full(r.shape, a), np.full(r.shape, b)
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            below = self.radius(mid) < r  # r is continuous across interfaces
+            lo, hi = np.where(below, mid, lo), np.where(below, hi, mid)
+        return 0.5 * (lo + hi)
 
     def elastic_stretches(self, R, *, side: str = "outer"):
         """(l1, l2, l3) = (1 / (l2 l3), r / (g_theta R), lambda_z / g_z)."""

@@ -10,6 +10,7 @@ from ..bifurcation.critical import critical_value
 from ..bifurcation.scan import scan_modes
 from ..errors import ConvergenceError, ParameterError
 from ..incremental.accuracy import check_rtol
+from ..model.controls import parse_control
 from ..outcomes import Kind
 from .options import (
     MODE_COVERAGE,
@@ -17,20 +18,19 @@ from .options import (
     add_method_option,
     add_mode_option,
     add_mode_range_options,
-    add_tube_options,
     check_side_option,
     mode_from_args,
     scan_options_from_args,
-    tube_from_args,
 )
 from .report import edge_warning, physical_line, physical_record, supported, voltage_text, warn
+from .tube_input import add_any_tube_options, control_of
 
 CERTIFY_RTOL = 1e-8  # the two methods must agree this well for a certified value
 
 
 def configure_critical(parser: argparse.ArgumentParser) -> None:
     add_control_options(parser)
-    add_tube_options(parser)
+    add_any_tube_options(parser)
     modes = parser.add_argument_group(
         "wrinkling modes u ~ cos(m theta) cos(k z), k = n pi / (lambda_z L)", MODE_COVERAGE
     )
@@ -60,7 +60,7 @@ def configure_critical(parser: argparse.ArgumentParser) -> None:
 
 
 def run_critical(args) -> int:
-    params = tube_from_args(args)
+    params, solve_for = control_of(args)
     check_side_option(args)
     check_rtol(args.rtol, "--rtol")
     mode = mode_from_args(args)
@@ -70,7 +70,7 @@ def run_critical(args) -> int:
             params,
             m,
             n,
-            args.solve_for,
+            solve_for,
             family=family,
             side=args.side,
             method=args.method,
@@ -85,7 +85,7 @@ def run_critical(args) -> int:
             )
         result = scan_modes(
             params,
-            args.solve_for,
+            solve_for,
             side=args.side,
             options=scan_options_from_args(args),
             rtol=args.rtol,
@@ -132,8 +132,48 @@ def _certify(params, crit, args) -> dict:
     }
 
 
+def value_name(solve_for: str) -> str:
+    """How a critical value is named in text: g_cr, lambda_z,cr, Vbar_cr, P_i,cr, F_cr;
+    g_theta[2],cr for a component of layer 2's growth."""
+    c = parse_control(solve_for)
+    if c.kind != "growth":
+        return {"stretch": "lambda_z,cr", "voltage": "Vbar_cr", "pressure": "P_i,cr"}.get(
+            c.kind, "F_cr"
+        )
+    if c.components is None and c.layer is None:
+        return "g_cr"
+    comp = "" if c.components is None else "_" + "".join(c.components)
+    return f"g{comp}{'' if c.layer is None else f'[{c.layer}]'},cr"
+
+
+def tube_line(rec: dict, scales=None) -> str:
+    """The tube of a JSON record in one line (one layer, or the layers and loads); the value
+    solved for with the digits its error estimate supports, the voltage next to Vbar."""
+    if "layers" not in rec:
+        volts = voltage_text(rec["voltage"], rec["outer_radius"], scales, _error(rec, "voltage"))
+        return (
+            f"  tube: Rbar_o = {rec['outer_radius']:g}, L = {rec['length']:g},"
+            f" g = {_given(rec, 'growth')}, lambda_z = {_given(rec, 'stretch')},"
+            f" {volts}, {rec['material']}"
+        )
+    layers = "; ".join(
+        f"R <= {ly['outer_radius']:g} {ly['material']} mu {ly['shear_modulus']:g} g {ly['growth']}"
+        for ly in rec["layers"]
+    )
+    axial = (
+        f"lambda_z = {rec['stretch']:.12g}"
+        if rec["stretch"] is not None
+        else f"axial force {rec['axial_force']:.12g}"
+    )
+    return (
+        f"  tube: {len(rec['layers'])} layer(s) [{layers}], L = {rec['length']:g}, {axial},"
+        f" Vbar = {rec['voltage']:.12g}, P_i = {rec['inner_pressure']:.12g},"
+        f" P_o = {rec['outer_pressure']:.12g}"
+    )
+
+
 def _print_text(rec: dict, runners: list, scales=None) -> None:
-    name = {"growth": "g_cr", "stretch": "lambda_z,cr", "voltage": "Vbar_cr"}[rec["solve_for"]]
+    name = value_name(rec["solve_for"])
     value = supported(rec["value"], rec["error_estimate"])  # the digits the estimate supports
     if rec["kind"] == Kind.THRESHOLD:
         head = (
@@ -148,10 +188,11 @@ def _print_text(rec: dict, runners: list, scales=None) -> None:
             if abs(rec["psi"] - math.pi / 2) < 1e-12
             else f"the direction psi = {rec['psi']:.6g} rad from theta to z"
         )
+        where = rec["face"] if rec["face"].startswith("interface") else f"{rec['face']} face"
         head = (
             f"{name} = {value}  (error estimate {rec['error_estimate']:.1e},"
             f" half-space)   short-wave (surface) instability, m, n -> infinity, at the"
-            f" {rec['face']} face, wrinkles along {along}"
+            f" {where}, wrinkles along {along}"
         )
     else:
         head = (
@@ -159,13 +200,7 @@ def _print_text(rec: dict, runners: list, scales=None) -> None:
             f" {rec['method']})   mode (m, n) = ({rec['m']}, {rec['n']})"
             f"{_family_note(rec.get('family'))}"
         )
-    lines = [
-        head,
-        f"  tube: Rbar_o = {rec['outer_radius']:g}, L = {rec['length']:g},"
-        f" g = {_given(rec, 'growth')}, lambda_z = {_given(rec, 'stretch')},"
-        f" {voltage_text(rec['voltage'], rec['outer_radius'], scales, _error(rec, 'voltage'))},"
-        f" {rec['material']}",
-    ]
+    lines = [head, tube_line(rec, scales)]
     lines += physical_line(rec.get("physical", {}))
     if rec.get("certified"):
         lines.append(
