@@ -50,6 +50,9 @@ autodoc_default_options = {"members": True, "undoc-members": False, "show-inheri
 napoleon_numpy_docstring = True
 napoleon_google_docstring = False
 
+# Option names (--inner-radius) must stay two hyphens, not an en dash.
+smartquotes = False
+
 html_theme = "furo"
 html_title = f"electrogrowth {release}"
 html_static_path = []
