@@ -228,3 +228,87 @@ def test_pressurised_face_limit_is_approached_by_finite_modes():
     assert all(-1e-3 < d[j] < 0 for j in d)  # from below, shrinking
     assert 1.6 < d[16] / d[32] < 2.2 and 1.7 < d[32] / d[64] < 2.2
     assert abs(2 * x[64] - x[32] - lim.value) < 3e-5  # Richardson in 1/j
+
+
+def biot_stretch() -> float:
+    from scipy.optimize import brentq
+
+    beta = brentq(lambda b: b**3 + b**2 + 3 * b - 1, 0.0, 1.0, xtol=1e-17, rtol=1e-15)
+    return beta ** (2.0 / 3.0)
+
+
+def test_interface_with_a_vanishing_neighbour_is_a_free_face():
+    """Uniform axial compression (g = 1, no field) strains every layer alike. The interface
+    between a layer and one of vanishing modulus ratio r is the free face of the stiffer
+    layer: its limit tends to Biot's stretch linearly in r, whichever side is soft (mirror
+    symmetry), and a stiffer neighbour (r = 3) stabilises it (interfacial wrinkling needs
+    more compression than surface wrinkling)."""
+    biot = biot_stretch()
+    x = {}
+    for below, above in ((1e-4, 1.0), (1e-3, 1.0), (1.0, 1e-3), (1.0, 3.0)):
+        tube = Tube((Layer(1.2, shear_modulus=below), Layer(1.4, shear_modulus=above)))
+        lim = short_wave_limit(tube, "stretch", faces=("interface-1",))
+        assert lim.kind == "surface" and lim.face == "interface-1" and lim.psi == HALF_PI
+        x[below, above] = lim.value
+    assert 0 < biot - x[1e-4, 1.0] < 1e-4
+    assert abs((biot - x[1e-3, 1.0]) / (biot - x[1e-4, 1.0]) - 10.0) < 0.1
+    assert abs(x[1e-3, 1.0] - x[1.0, 1e-3]) < 1e-12
+    assert x[1.0, 3.0] < biot - 0.1
+
+
+def test_interface_is_critical_in_a_growing_embedded_layer():
+    """A layer (thickness 0.1, modulus 1) growing between two soft ones (modulus 0.2): the
+    faces stay stable and interface-1 wrinkles first, along z. The fixed-direction limit and
+    the interface alone give the same value."""
+    tube = Tube((Layer(1.3, shear_modulus=0.2), Layer(1.4), Layer(2.0, shear_modulus=0.2)))
+    lim = short_wave_limit(tube, "growth[2]")
+    assert lim.kind == "surface" and lim.face == "interface-1" and lim.psi == HALF_PI
+    assert abs(lim.value - INTERFACE_LIMIT) < 1e-9 and lim.error_estimate < 1e-12
+    assert lim.params.layers[1].growth == (lim.value,) * 3
+    ray = ray_limit(tube, 0, 1, "growth[2]", faces=("interface-1",))
+    assert abs(ray.value - lim.value) < 1e-12
+
+
+#: short_wave_limit of the embedded-layer tube above (measured, docs)
+INTERFACE_LIMIT = 2.1782747522850343
+
+
+@pytest.mark.slow
+def test_finite_modes_approach_the_interface_limit():
+    """The embedded-layer tube: modes (0, j) by collocation (one Chebyshev domain per layer)
+    close on the interface limit like 1/j once k h >> 1 (docs: j = 32, 64 give +1.661e-3,
+    +7.93e-4)."""
+    from scipy.optimize import brentq
+
+    from electrogrowth.incremental.targets import collocation_targets
+
+    tube = Tube((Layer(1.3, shear_modulus=0.2), Layer(1.4), Layer(2.0, shear_modulus=0.2)))
+
+    def root(j, nodes, lo, hi):
+        def f(x):
+            state = solve_base_state(tube.at("growth[2]", x))
+            return float(collocation_targets(state, np.array([[0.0, j]]), nodes=nodes)[0])
+
+        return brentq(f, lo, hi, xtol=1e-12)
+
+    d32 = root(32, 80, 2.176, 2.188) - INTERFACE_LIMIT
+    d64 = root(64, 100, 2.176, 2.188) - INTERFACE_LIMIT
+    assert 0 < d64 < d32 < 3e-3
+    assert 1.7 < d32 / d64 < 2.4
+    assert abs(2 * d64 - d32) < 2e-4
+
+
+@pytest.mark.slow
+def test_scan_of_a_layered_tube_ends_in_the_exact_limit():
+    """scan_modes on a layered Tube: the optimum runs to short waves, the exact limit (at the
+    inner face of two identical layers) is computed through past_surface / short_wave_limit
+    and equals the one-layer value (measured: 0.781917528431796 vs 0.7819175284317958;
+    ~8 min on a loaded machine)."""
+    from electrogrowth.bifurcation.scan import ScanOptions, scan_modes
+
+    tube = Tube((Layer(1.8), Layer(2.5)), length=3.0, stretch=0.8)
+    res = scan_modes(tube, "voltage", options=ScanOptions((0, 2), (1, 6)))
+    c = res.critical
+    assert res.surface_instability and c.kind == "surface" and c.face == "inner"
+    one = short_wave_limit(TubeParameters(2.5, 3.0, stretch=0.8), "voltage")
+    assert abs(c.value - one.value) < 1e-10

@@ -11,7 +11,10 @@ direction psi in [0, pi/2] the half-space target f vanishes:
     h(x) = min_{face} min_{psi} s_face f(state(x), face, psi),
 
 with s_face = sign of f on the unloaded tube (g = 1, lambda_z = 1, Vbar = 0), which is
-stable; h > 0 until the first surface instability. min over psi: f on a grid of psi
+stable; h > 0 until the first surface instability. For a layered Tube the minimum runs over
+every face (with its follower pressure) and every interface ("interface-K", between layers
+K and K + 1; halfspace.surfaces), and the control is any of the tube's (params.at);
+docs/derivation-layered-modes.md. min over psi: f on a grid of psi
 (endpoints psi = 0 and pi/2 included) and a bounded 1-D minimisation around the lowest
 grid minima, compared with the exact endpoint values. h is continuous (a minimum of
 continuous functions), so once the march brackets its first sign change Brent's method

@@ -35,6 +35,14 @@ CRITICAL = {
 }
 
 
+def _tex(name: str) -> str:
+    """A control or tube key of a layered tube as math text (growth[1].theta -> g_theta[1])."""
+    symbols = {"pressure": "P_i", "force": "F", "growth": "g", "outer_pressure": "P_o"}
+    head, _, rest = name.partition("[")
+    text = symbols.get(head, head.replace("_", r"\_"))
+    return text + (r"\," + "[" + rest.replace("_", r"\_") if rest else "")
+
+
 def plot_curve(
     curve: Curve, ax=None, *, color: str = "k", label: str | None = None, annotate: bool = True
 ):
@@ -75,8 +83,9 @@ def plot_curve(
             color=color,
             ms=2.5,
         )
-    ax.set_xlabel(f"${SYMBOLS[curve.along]}$")
-    ax.set_ylabel(f"${CRITICAL[curve.solve_for]}$")
+    ax.set_xlabel(f"${SYMBOLS.get(curve.along, _tex(curve.along))}$")
+    crit = CRITICAL.get(curve.solve_for, _tex(curve.solve_for) + r"_{\rm cr}")
+    ax.set_ylabel(f"${crit}$")
     return ax
 
 
