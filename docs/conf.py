@@ -23,7 +23,6 @@ extensions = [
     "sphinx-mathjax-offline",  # MathJax from the package, not from a CDN: the site works offline
     "sphinx.ext.viewcode",
     "myst_parser",
-    "sphinxarg.ext",
     "sphinx_gallery.gen_gallery",
 ]
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
@@ -42,6 +41,12 @@ def _plain_bars(app, what, name, obj, options, lines):
 
 def setup(app):
     app.connect("autodoc-process-docstring", _plain_bars)
+
+
+# The CLI reference (cli.md) is written from the parser before the sources are read.
+from cli_parser import write_reference  # noqa: E402
+
+write_reference(HERE / "cli.md")
 
 
 autodoc_member_order = "bysource"
