@@ -6,13 +6,13 @@ VENV ?= .venv
 BIN := $(VENV)/bin
 OUT ?= out
 
-.PHONY: install test test-slow lint format demo bench figures clean distclean
+.PHONY: install test test-slow lint format demo bench figures docs clean distclean
 
 # Re-install only when pyproject.toml changes (the stamp is older than it).
 $(VENV)/.installed: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install -q --upgrade pip
-	$(BIN)/python -m pip install -q -e '.[test,lint,vtk,sweep]'
+	$(BIN)/python -m pip install -q -e '.[test,lint,vtk,sweep,units]'
 	touch $@
 
 # The heavier optional extras (sweep = xarray/zarr/dask, vtk = meshio), on demand.
@@ -29,13 +29,13 @@ test: lint
 # Exit status 5 (no test selected) is not a failure while no test is marked slow.
 # ruff: the lint rules and the formatting of pyproject.toml [tool.ruff]; changes nothing.
 lint: $(VENV)/.installed
-	$(BIN)/ruff check src tests benchmarks tools
-	$(BIN)/ruff format --check src tests benchmarks tools
+	$(BIN)/ruff check src tests benchmarks tools examples docs/conf.py docs/_ext
+	$(BIN)/ruff format --check src tests benchmarks tools examples docs/conf.py docs/_ext
 
 # Apply ruff's safe fixes and its formatting.
 format: $(VENV)/.installed
-	$(BIN)/ruff check --fix src tests benchmarks tools
-	$(BIN)/ruff format src tests benchmarks tools
+	$(BIN)/ruff check --fix src tests benchmarks tools examples docs/conf.py docs/_ext
+	$(BIN)/ruff format src tests benchmarks tools examples docs/conf.py docs/_ext
 
 test-slow: $(VENV)/.installed
 	$(BIN)/python -m pytest -q -m slow || [ $$? -eq 5 ]
@@ -49,8 +49,14 @@ bench: $(VENV)/.installed
 figures: $(VENV)/.installed
 	$(BIN)/electrogrowth reproduce --out $(OUT)/figures
 
+# The documentation site in docs/_build/html (Sphinx, the gallery runs every example; the
+# docs extra). -W: a warning fails the build.
+docs: $(VENV)/.installed-docs
+	$(BIN)/python -m sphinx -W --keep-going -q -b html docs docs/_build/html
+	@echo "open docs/_build/html/index.html"
+
 clean:
-	rm -rf $(OUT) build .pytest_cache src/*.egg-info
+	rm -rf $(OUT) build .pytest_cache src/*.egg-info docs/_build docs/gallery
 	find . -path ./$(VENV) -prune -o -name __pycache__ -type d -prune -exec rm -rf {} +
 
 # clean, and also remove the virtualenv.

@@ -13,51 +13,76 @@ Plots live in :mod:`electrogrowth.figures`, sweeps in :mod:`electrogrowth.sweep`
 command line in :mod:`electrogrowth.cli`; docs/architecture.md maps every module.
 """
 
+import importlib
+
 __version__ = "0.1.0"
 
-from .basestate.layered import (
-    LayeredState,
-    layered_threshold,
-    pressure_response,
-    voltage_response,
-)
-from .basestate.tube import BaseState, solve_base_state, voltage_curve, voltage_threshold
-from .bifurcation.critical import CriticalPoint, critical_value
-from .bifurcation.curves import Curve, critical_curve
-from .bifurcation.scan import ScanOptions, ScanResult, scan_modes
-from .errors import (
-    BaseStateError,
-    ConfigError,
-    ConvergenceError,
-    ElectrogrowthError,
-    MaterialError,
-    MissingDependencyError,
-    NoBifurcationFound,
-    ParameterError,
-    SweepError,
-    UsageError,
-)
-from .incremental.accuracy import Accuracy
-from .incremental.targets import Family, Method
-from .model.layers import Layer, LinearGrowth, Tube
-from .model.materials import (
-    I1,
-    I2,
-    I4,
-    I5,
-    I6,
-    Material,
-    gent,
-    material_by_name,
-    mooney_rivlin,
-    neo_hookean,
-)
-from .model.params import TubeParameters
-from .model.tube_file import load_tube
-from .outcomes import Kind, Status
-from .shapes.mode_shape import ModeShape, mode_shape
-from .sweep.file import load_config
-from .sweep.run import compute_sweep
+# Where each public name lives. The names are imported on first use (PEP 562), so that
+# `import electrogrowth` (and with it `electrogrowth --help` and `--version`) does not pay
+# for numba, sympy and scipy until a computation needs them.
+_EXPORTS = {
+    ".basestate.layered": (
+        "LayeredState",
+        "layered_threshold",
+        "pressure_response",
+        "voltage_response",
+    ),
+    ".basestate.tube": ("BaseState", "solve_base_state", "voltage_curve", "voltage_threshold"),
+    ".bifurcation.critical": ("CriticalPoint", "critical_value"),
+    ".bifurcation.curves": ("Curve", "critical_curve"),
+    ".bifurcation.scan": ("ScanOptions", "ScanResult", "scan_modes"),
+    ".errors": (
+        "BaseStateError",
+        "ConfigError",
+        "ConvergenceError",
+        "ElectrogrowthError",
+        "MaterialError",
+        "MissingDependencyError",
+        "NoBifurcationFound",
+        "ParameterError",
+        "SweepError",
+        "UsageError",
+    ),
+    ".incremental.accuracy": ("Accuracy",),
+    ".incremental.targets": ("Family", "Method"),
+    ".model.layers": ("Layer", "LinearGrowth", "Tube"),
+    ".model.materials": (
+        "I1",
+        "I2",
+        "I4",
+        "I5",
+        "I6",
+        "Material",
+        "gent",
+        "material_by_name",
+        "mooney_rivlin",
+        "neo_hookean",
+    ),
+    ".model.params": ("TubeParameters",),
+    ".model.tube_file": ("load_tube",),
+    ".model.units": ("Scales", "tube_from_quantities"),
+    ".outcomes": ("Kind", "Status"),
+    ".shapes.mode_shape": ("ModeShape", "mode_shape"),
+    ".sweep.file": ("load_config",),
+    ".sweep.run": ("compute_sweep",),
+}
+_MODULE_OF = {name: module for module, names in _EXPORTS.items() for name in names}
+
+
+def __getattr__(name: str):
+    """Import a public name from its module on first use (then it is a plain attribute)."""
+    try:
+        module = _MODULE_OF[name]
+    except KeyError:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}") from None
+    value = getattr(importlib.import_module(module, __name__), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))
+
 
 __all__ = [
     # model
@@ -66,6 +91,8 @@ __all__ = [
     "LinearGrowth",
     "Tube",
     "load_tube",
+    "Scales",
+    "tube_from_quantities",
     "LayeredState",
     "layered_threshold",
     "pressure_response",

@@ -23,6 +23,7 @@ import numpy as np
 from numpy.polynomial import chebyshev as cheb
 
 from ..errors import BaseStateError, ConvergenceError, ParameterError
+from ..labelled import layered_state_dataset
 from ..model.layers import Layer, Tube
 from .branches import Branch, Threshold, clean, prepare, solve_on, threshold
 from .plies import ORDERS, Wall, chebyshev
@@ -382,6 +383,11 @@ class LayeredState:
         """Updated moduli (materials.MODULI_NAMES order) with the layer's scaling (A mu_k,
         Gamma sqrt(mu_k / eps_k), K / eps_k), shape R.shape + (23,)."""
         return self._fields(R, side, moduli=True)["moduli"]
+
+    def to_xarray(self, points: int = 101):
+        """The through-wall profiles (:meth:`profiles`) as an ``xarray.Dataset`` on dimension
+        point (R and layer are coordinates), units and descriptions in attributes."""
+        return layered_state_dataset(self, points)
 
     def profiles(self, n: int = 101) -> dict[str, np.ndarray]:
         """Through-wall profiles at about n points, spread over the layers by thickness, each

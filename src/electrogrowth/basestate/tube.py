@@ -28,9 +28,11 @@ import numpy as np
 from numpy.polynomial import chebyshev as cheb
 
 from ..errors import BaseStateError, ConvergenceError, ParameterError
+from ..labelled import base_state_dataset
 from ..model.layers import Tube as LayeredTube
 from ..model.materials import neo_hookean_moduli
 from ..model.params import TubeParameters
+from ..summary import base_state_html
 from .layered import solve_layered_state
 from .voltage import (
     GAUSS_ORDERS,
@@ -401,6 +403,14 @@ class BaseState:
             record[f"{key}_min"] = float(prof[key].min())
             record[f"{key}_max"] = float(prof[key].max())
         return record
+
+    def to_xarray(self, points: int = 101):
+        """The through-wall profiles (:meth:`profiles`) as an ``xarray.Dataset`` on dimension
+        R, with units and descriptions in attributes (labelled.py; needs xarray)."""
+        return base_state_dataset(self, points)
+
+    def _repr_html_(self) -> str:
+        return base_state_html(self)
 
     def profiles(self, n: int = 101) -> dict[str, np.ndarray]:
         """Through-wall profiles at n equally spaced R in [1, Rbar_o]: keys R, r, lambda

@@ -33,6 +33,7 @@ from ..incremental.targets import (
 from ..model.layers import Tube
 from ..model.params import TubeParameters, check_control, check_side
 from ..outcomes import Kind
+from ..summary import critical_html
 from .march import brent, first_bifurcations
 
 
@@ -81,6 +82,9 @@ class CriticalPoint:
             "side": self.side,
             **self.params.as_dict(),
         }
+
+    def _repr_html_(self) -> str:
+        return critical_html(self)
 
 
 def critical_value(

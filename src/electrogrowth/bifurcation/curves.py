@@ -35,9 +35,11 @@ from typing import NamedTuple
 import numpy as np
 
 from ..errors import ElectrogrowthError, ParameterError
+from ..labelled import curve_dataset
 from ..model.layers import Tube
 from ..model.params import CONTROLS, TubeParameters, check_side
 from ..outcomes import NO_MODE, Kind, Status
+from ..summary import curve_html
 from .critical import critical_value
 from .scan import ScanOptions, scan_modes
 from .surface import short_wave_limit
@@ -107,6 +109,13 @@ def curve_point(
     )
 
 
+def _progress_bar(total: int, desc: str):
+    """A tqdm.auto bar (a notebook widget or text on stderr)."""
+    from tqdm.auto import tqdm
+
+    return tqdm(total=total, desc=desc, unit="pt")
+
+
 def _message(exc: Exception) -> str:
     """One line; an unexpected (non-electrogrowth) error is named by its type."""
     text = " ".join(str(exc).split())
@@ -155,6 +164,14 @@ class Curve:
             if ok and start is None:
                 start = i
         return out
+
+    def to_xarray(self):
+        """The curve as an ``xarray.Dataset``: rows on dimension point (x is the coordinate
+        named after ``along``), the located switches on dimension switch (labelled.py)."""
+        return curve_dataset(self)
+
+    def _repr_html_(self) -> str:
+        return curve_html(self)
 
     def to_csv(self, path: str | Path) -> Path:
         """Columns <along>, <solve_for>_cr, m, n, kind, surface (0/1), short_wave_limit,
@@ -267,7 +284,7 @@ def critical_curve(
     *,
     side: str | None = None,
     options: ScanOptions = ScanOptions(),
-    progress: Callable[[int], object] | None = None,
+    progress: bool | Callable[[int], object] | None = None,
     mapper: Callable = map,
 ) -> Curve:
     """Critical ``solve_for`` as ``along`` runs over ``values``, switches located.
@@ -284,8 +301,10 @@ def critical_curve(
         Strictly monotone grid of ``along``.
     options : ScanOptions
         Mode ranges of each scan (extended automatically when the optimum is on an edge).
-    progress : callable, optional
-        Called with 1 after each grid point (``tqdm(...).update`` fits).
+    progress : bool or callable, optional
+        True: a progress bar (tqdm.auto: a widget in a notebook, text on a terminal);
+        None or False: none (default); a callable: called with 1 after each grid point
+        (``tqdm(...).update`` fits).
     mapper : callable
         ``map``-like function running :func:`curve_point` over the grid (e.g. a process
         pool's ``map``); the builtin by default.
@@ -328,10 +347,15 @@ def critical_curve(
         params.at(along, x)
     unit = functools.partial(curve_point, params, solve_for, along, side=side, options=options)
     points = []
+    bar = _progress_bar(xs.size, f"{solve_for} along {along}") if progress is True else None
     for pt in mapper(unit, xs):
         points.append(pt)
-        if progress is not None:
+        if bar is not None:
+            bar.update(1)
+        elif callable(progress):
             progress(1)
+    if bar is not None:
+        bar.close()
     loc = _Locator(params, solve_for, along, side, unit)
     rows, switches = [], []
     for i, pt in enumerate(points):

@@ -32,8 +32,10 @@ import numpy as np
 from ..errors import NoBifurcationFound, ParameterError
 from ..incremental.accuracy import SCAN_SIGNS, SCAN_STABLE_SIGNS, Accuracy
 from ..incremental.targets import Family, impedance_targets
+from ..labelled import scan_dataset
 from ..model.params import TubeParameters, check_side
 from ..outcomes import NO_MODE, Kind
+from ..summary import scan_html
 from .critical import CriticalPoint, control_name, critical_value
 from .directions import past_surface
 from .march import ModeValue, first_bifurcations, unloaded_signs
@@ -142,6 +144,14 @@ class ScanResult:
         out["short_wave_limit"] = self.short_wave_limit
         out["short_wave_error"] = self.short_wave_error
         return out
+
+    def to_xarray(self):
+        """The critical point and the runners-up as an ``xarray.Dataset`` on dimension rank
+        (0 = critical), units and descriptions in attributes (labelled.py; needs xarray)."""
+        return scan_dataset(self)
+
+    def _repr_html_(self) -> str:
+        return scan_html(self)
 
 
 def mode_grid(m_range, n_range) -> np.ndarray:

@@ -11,66 +11,92 @@ figures are registered in ``electrogrowth.figures.FIGURES``.
 from __future__ import annotations
 
 import argparse
+import importlib
 import os
 import sys
 from collections.abc import Callable
 from importlib.metadata import version
 
-from ..errors import ElectrogrowthError
-from .critical import configure_critical, run_critical
-from .curve import configure_curve, run_curve
-from .demo import configure_demo, run_demo
-from .figure import configure_figure, run_figure
-from .options import _Parser
-from .pattern import HELP as PATTERN_HELP
-from .pattern import configure_pattern, run_pattern
-from .reproduce import configure_reproduce, run_reproduce
-from .state import configure_state, run_state
-from .sweep import configure_plot, configure_sweep, run_plot, run_sweep
+from ..errors import ElectrogrowthError, UsageError
+from .units import resolve_units
+
+
+def _lazy(module: str, name: str) -> Callable:
+    """``name`` of the command module ``cli/<module>.py``, imported when first called: the
+    commands import the numeric stack (numba, sympy, scipy), which `--help` and `--version`
+    of the dispatcher do not need."""
+
+    def call(*args):
+        return getattr(importlib.import_module(f".{module}", __package__), name)(*args)
+
+    call.__name__ = call.__qualname__ = name
+    return call
+
 
 PROG = "electrogrowth"
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message):
+        raise UsageError(message)
+
 
 #: Subcommand name -> (one-line help, configure(parser), run(args) -> exit status).
 COMMANDS: dict[str, tuple[str, Callable, Callable]] = {
     "state": (
         "solve the axisymmetric base state of a grown, stretched, charged tube",
-        configure_state,
-        run_state,
+        _lazy("state", "configure_state"),
+        _lazy("state", "run_state"),
     ),
-    "figure": ("reproduce a figure of the paper (PNG + CSV)", configure_figure, run_figure),
+    "figure": (
+        "reproduce a figure of the paper (PNG + CSV)",
+        _lazy("figure", "configure_figure"),
+        _lazy("figure", "run_figure"),
+    ),
     "critical": (
         "critical growth factor, axial stretch or voltage for the onset of"
         " wrinkling, for one mode or scanned over modes",
-        configure_critical,
-        run_critical,
+        _lazy("critical", "configure_critical"),
+        _lazy("critical", "run_critical"),
     ),
     "demo": (
         "the paper's headline tube (Rbar_o = 1.4, L = 1, lambda_z = 1, Vbar = 0.4):"
         " base state, critical growth and mode, curve and 3D pattern",
-        configure_demo,
-        run_demo,
+        _lazy("demo", "configure_demo"),
+        _lazy("demo", "run_demo"),
     ),
-    "pattern": (PATTERN_HELP, configure_pattern, run_pattern),
+    "pattern": (
+        "mode shape of the wrinkles at onset: 3D picture, plot and CSV, VTK mesh of the wall",
+        _lazy("pattern", "configure_pattern"),
+        _lazy("pattern", "run_pattern"),
+    ),
     "curve": (
         "critical value along a parameter, with the mode switches located",
-        configure_curve,
-        run_curve,
+        _lazy("curve", "configure_curve"),
+        _lazy("curve", "run_curve"),
     ),
     "reproduce": (
         "the paper's Figures 4-10, the 3D patterns of Figs 9B/10B and an index page",
-        configure_reproduce,
-        run_reproduce,
+        _lazy("reproduce", "configure_reproduce"),
+        _lazy("reproduce", "run_reproduce"),
     ),
     "sweep": (
         "critical points over a grid of tubes, in parallel, into a resumable Zarr store",
-        configure_sweep,
-        run_sweep,
+        _lazy("sweep", "configure_sweep"),
+        _lazy("sweep", "run_sweep"),
     ),
-    "plot": ("phase diagram (PNG + SVG) of a sweep store", configure_plot, run_plot),
+    "plot": (
+        "phase diagram (PNG + SVG) of a sweep store",
+        _lazy("sweep", "configure_plot"),
+        _lazy("sweep", "run_plot"),
+    ),
 }
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser(command: str | None = None) -> argparse.ArgumentParser:
+    """The parser of every command (``command`` None), or with only ``command``'s options
+    configured (the others keep their one-line help): `electrogrowth --help` then imports no
+    command module. ``command = ""`` configures none."""
     parser = _Parser(
         prog=PROG,
         description="Growth, voltage and wrinkling of soft"
@@ -80,18 +106,26 @@ def build_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for name, (help_text, configure, run) in COMMANDS.items():
         cmd = sub.add_parser(name, help=help_text, description=help_text)
-        configure(cmd)
+        if command is None or name == command:
+            configure(cmd)
         cmd.set_defaults(run=run)
     return parser
+
+
+def _command_of(argv: list[str] | None) -> str:
+    """The subcommand named on the command line ("" for none: `--help`, `--version`)."""
+    words = sys.argv[1:] if argv is None else argv
+    return next((w for w in words if w in COMMANDS), "")
 
 
 def main(argv: list[str] | None = None) -> int:
     """Run the command line; return the exit status (0 ok, 2 bad input, 1 internal error)."""
     try:
         try:
-            args = build_parser().parse_args(argv)
+            args = build_parser(_command_of(argv)).parse_args(argv)
         except SystemExit as done:  # --help, --version
             return done.code if isinstance(done.code, int) else 0
+        resolve_units(args)
         return args.run(args)
     except ElectrogrowthError as exc:  # bad input, or a failure with a remedy
         text = " ".join(str(exc).split())

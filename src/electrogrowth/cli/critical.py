@@ -22,6 +22,7 @@ from .options import (
     mode_from_args,
     scan_options_from_args,
 )
+from .report import edge_warning, physical_line, physical_record, supported, voltage_text, warn
 from .tube_input import add_any_tube_options, control_of
 
 CERTIFY_RTOL = 1e-8  # the two methods must agree this well for a certified value
@@ -91,12 +92,15 @@ def run_critical(args) -> int:
         )
         crit, record = result.critical, result.as_dict()
         runners = record["runners_up"]
+        warn(edge_warning(result))
     if args.certify and crit.kind == Kind.BIFURCATION:
         record.update(_certify(params, crit, args))
+    if getattr(args, "scales", None) is not None:
+        record["physical"] = physical_record(record, args.scales)
     if args.json:
         print(json.dumps(record))
         return 0
-    _print_text(record, runners)
+    _print_text(record, runners, getattr(args, "scales", None))
     return 0
 
 
@@ -142,13 +146,15 @@ def value_name(solve_for: str) -> str:
     return f"g{comp}{'' if c.layer is None else f'[{c.layer}]'},cr"
 
 
-def tube_line(rec: dict) -> str:
-    """The tube of a JSON record in one line (one layer, or the layers and loads)."""
+def tube_line(rec: dict, scales=None) -> str:
+    """The tube of a JSON record in one line (one layer, or the layers and loads); the value
+    solved for with the digits its error estimate supports, the voltage next to Vbar."""
     if "layers" not in rec:
+        volts = voltage_text(rec["voltage"], rec["outer_radius"], scales, _error(rec, "voltage"))
         return (
             f"  tube: Rbar_o = {rec['outer_radius']:g}, L = {rec['length']:g},"
-            f" g = {rec['growth']:.12g}, lambda_z = {rec['stretch']:.12g},"
-            f" Vbar = {rec['voltage']:.12g}, {rec['material']}"
+            f" g = {_given(rec, 'growth')}, lambda_z = {_given(rec, 'stretch')},"
+            f" {volts}, {rec['material']}"
         )
     layers = "; ".join(
         f"R <= {ly['outer_radius']:g} {ly['material']} mu {ly['shear_modulus']:g} g {ly['growth']}"
@@ -166,8 +172,9 @@ def tube_line(rec: dict) -> str:
     )
 
 
-def _print_text(rec: dict, runners: list) -> None:
+def _print_text(rec: dict, runners: list, scales=None) -> None:
     name = value_name(rec["solve_for"])
+    value = supported(rec["value"], rec["error_estimate"])  # the digits the estimate supports
     if rec["kind"] == Kind.THRESHOLD:
         head = (
             f"{name} = {rec['value']:.12g}: the axisymmetric state is lost (voltage"
@@ -183,17 +190,18 @@ def _print_text(rec: dict, runners: list) -> None:
         )
         where = rec["face"] if rec["face"].startswith("interface") else f"{rec['face']} face"
         head = (
-            f"{name} = {rec['value']:.12g}  (error estimate {rec['error_estimate']:.1e},"
+            f"{name} = {value}  (error estimate {rec['error_estimate']:.1e},"
             f" half-space)   short-wave (surface) instability, m, n -> infinity, at the"
             f" {where}, wrinkles along {along}"
         )
     else:
         head = (
-            f"{name} = {rec['value']:.12g}  (error estimate {rec['error_estimate']:.1e},"
+            f"{name} = {value}  (error estimate {rec['error_estimate']:.1e},"
             f" {rec['method']})   mode (m, n) = ({rec['m']}, {rec['n']})"
             f"{_family_note(rec.get('family'))}"
         )
-    lines = [head, tube_line(rec)]
+    lines = [head, tube_line(rec, scales)]
+    lines += physical_line(rec.get("physical", {}))
     if rec.get("certified"):
         lines.append(
             f"  certified by {rec['certified_by']}: {rec['certified_value']:.12g}"
@@ -210,6 +218,15 @@ def _print_text(rec: dict, runners: list) -> None:
             f"   {name} = {r['value']:.10g}"
         )
     print("\n".join(lines))
+
+
+def _error(rec: dict, key: str) -> float | None:
+    """The error estimate of ``key`` if it is the value solved for (else an input: None)."""
+    return rec["error_estimate"] if rec["solve_for"] == key else None
+
+
+def _given(rec: dict, key: str) -> str:
+    return supported(rec[key], _error(rec, key))
 
 
 def _family_note(family: str | None) -> str:

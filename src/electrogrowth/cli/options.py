@@ -6,16 +6,13 @@ import argparse
 import math
 
 from ..bifurcation.scan import ScanOptions
-from ..errors import ParameterError, UsageError
+from ..errors import ParameterError
 from ..incremental.targets import FAMILIES, METHODS, Family, check_mode
 from ..model.controls import TUBE_CONTROLS
 from ..model.materials import BUILTIN, material_by_name
 from ..model.params import SIDES, TubeParameters
-
-
-class _Parser(argparse.ArgumentParser):
-    def error(self, message):
-        raise UsageError(message)
+from .energy import energy_from_args
+from .units import add_unit_options, number_or_quantity
 
 
 def finite_number(text: str) -> float:
@@ -46,11 +43,12 @@ def add_tube_options(
     tube = parser.add_argument_group("tube and loading (units mu = eps = R_i = 1)")
     tube.add_argument(
         "--outer-radius",
-        type=finite_number,
+        type=number_or_quantity,
         required=outer_radius is None and require_outer_radius,
         default=outer_radius,
         metavar="RBAR_O",
-        help="Rbar_o = R_o / R_i > 1, undeformed outer over inner radius"
+        help="Rbar_o = R_o / R_i > 1, undeformed outer over inner radius, or R_o as a length"
+        " (2.8mm, with --inner-radius)"
         + ("" if outer_radius is None else f" (default {outer_radius:g})"),
     )
     tube.add_argument(
@@ -69,25 +67,38 @@ def add_tube_options(
     )
     tube.add_argument(
         "--voltage",
-        type=finite_number,
+        type=number_or_quantity,
         default=0.0,
         metavar="VBAR",
-        help="Vbar = V / (R_o - R_i) sqrt(eps / mu) >= 0, the radial voltage;"
-        " must stay below the threshold (default 0)",
+        help="Vbar = V / (R_o - R_i) sqrt(eps / mu) >= 0, the radial voltage, or V with its"
+        " unit (3kV, with the physical units below); must stay below the threshold"
+        " (default 0)",
     )
     tube.add_argument(
         "--length",
-        type=finite_number,
+        type=number_or_quantity,
         default=1.0,
         metavar="L",
-        help="L / R_i > 0, undeformed length; does not change the base state (default 1)",
+        help="L / R_i > 0, undeformed length, or a length (10mm, with --inner-radius); does"
+        " not change the base state (default 1)",
     )
-    mat = parser.add_argument_group("material (ideal dielectric, Omega = W + I5 / 2)")
-    mat.add_argument(
+    mat = parser.add_argument_group(
+        "material (ideal dielectric, Omega = W + I5 / 2, or any energy with --energy)"
+    )
+    choice = mat.add_mutually_exclusive_group()
+    choice.add_argument(
         "--material",
         choices=sorted(BUILTIN),
         default="neo-hookean",
         help="elastic energy W (default neo-hookean)",
+    )
+    choice.add_argument(
+        "--energy",
+        metavar="OMEGA",
+        help="the energy Omega(I1, I2, I4, I5, I6) per unit virtual volume, units mu = eps = 1,"
+        ' instead of --material, e.g. "(I1 - 3)/2 + 0.1*(I2 - 3) + I5/2": I1 = tr C, I2,'
+        " I4 = D~.D~, I5 = D~.C D~, I6 = D~.C^2 D~ (paper eq. 8); numbers, + - * / ** ( ),"
+        " log, exp, sqrt; stresses, field and moduli follow from it",
     )
     mat.add_argument(
         "--jm",
@@ -102,6 +113,7 @@ def add_tube_options(
         help="Mooney-Rivlin weight 0 < alpha <= 1 of I1 (only with"
         " --material mooney-rivlin; default 0.5)",
     )
+    add_unit_options(parser)
 
 
 def tube_from_args(args) -> TubeParameters:
@@ -117,6 +129,8 @@ def tube_from_args(args) -> TubeParameters:
 
 
 def _material(args):
+    if getattr(args, "energy", None) is not None:
+        return energy_from_args(args)
     options = {}
     for flag, name, owner in (("--jm", "jm", "gent"), ("--alpha", "alpha", "mooney-rivlin")):
         value = getattr(args, name)

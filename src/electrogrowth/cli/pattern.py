@@ -36,6 +36,7 @@ from .options import (
     mode_from_args,
     scan_options_from_args,
 )
+from .report import edge_warning, physical_line, physical_record, supported, warn
 from .tube_input import add_any_tube_options, control_of
 
 HELP = "mode shape of the wrinkles at onset: 3D picture, plot and CSV, VTK mesh of the wall"
@@ -121,9 +122,9 @@ def run_pattern(args) -> int:
         m, n, family = mode
         crit = critical_value(params, m, n, solve_for, family=family, side=args.side)
     else:
-        crit = scan_modes(
-            params, solve_for, side=args.side, options=scan_options_from_args(args)
-        ).critical
+        scan = scan_modes(params, solve_for, side=args.side, options=scan_options_from_args(args))
+        crit = scan.critical
+        warn(edge_warning(scan))
         if crit.family == Family.TORSIONAL:
             _check_torsional_outputs(args)
     shape = mode_shape(crit, method=args.method, points=args.points)
@@ -145,6 +146,8 @@ def run_pattern(args) -> int:
         },
         files=[str(f) for f in files],
     )
+    if getattr(args, "scales", None) is not None:
+        record["physical"] = physical_record(record, args.scales)
     if args.json:
         print(json.dumps(record))
         return 0
@@ -185,13 +188,15 @@ def _print_text(rec: dict) -> None:
     name = value_name(rec["solve_for"])
     big = rec["max_abs"]
     lines = [
-        f"{name} = {rec['value']:.12g}   mode (m, n) = ({rec['m']}, {rec['n']}),"
+        f"{name} = {supported(rec['value'], rec['error_estimate'])}   mode (m, n) ="
+        f" ({rec['m']}, {rec['n']}),"
         f" {rec['family']}, k = {rec['k']:.6g}",
         tube_line(rec),
         f"  mode shape by {rec['route']} (boundary residual"
         f" {rec['boundary_residual']:.1e}): max |U_r|, |U_theta|, |U_z| = {big['U_r']:.4g},"
         f" {big['U_th']:.4g}, {big['U_z']:.4g}; max |Phi| = {big['Phi']:.4g}",
     ]
+    lines += physical_line(rec.get("physical", {}))
     if rec["note"]:
         lines.append(f"  note: {rec['note']}")
     lines += [f"  wrote {f}" for f in rec["files"]]

@@ -14,6 +14,7 @@ from ..basestate.tube import solve_base_state
 from ..errors import BaseStateError
 from ..model.layers import Tube
 from ..model.tube_file import line_of
+from .report import physical_line, physical_record, voltage_text
 from .tube_input import add_any_tube_options, tube_of
 
 
@@ -27,9 +28,10 @@ def configure_state(parser: argparse.ArgumentParser) -> None:
 def run_state(args) -> int:
     tube = tube_of(args)
     if not isinstance(tube, Tube):
-        return _print_one_layer(tube, solve_base_state(tube).as_dict(), args.json)
+        rec = _with_physical(solve_base_state(tube).as_dict(), args)
+        return _print_one_layer(tube, rec, args.json)
     try:
-        rec = solve_base_state(tube).as_dict()
+        rec = _with_physical(solve_base_state(tube).as_dict(), args)
     except BaseStateError as exc:
         raise _located(exc, args) from None
     if args.json:
@@ -37,6 +39,13 @@ def run_state(args) -> int:
         return 0
     _print_layered(tube, rec)
     return 0
+
+
+def _with_physical(rec: dict, args) -> dict:
+    """The record with its values in physical units (key "physical") when they are given."""
+    if getattr(args, "scales", None) is not None:
+        rec["physical"] = physical_record(rec, args.scales)
+    return rec
 
 
 def _located(exc: BaseStateError, args) -> BaseStateError:
@@ -57,7 +66,7 @@ def _print_one_layer(params, rec: dict, as_json: bool) -> int:
     thr = rec["voltage_threshold"]
     lines = [
         f"base state: {rec['material']}, Rbar_o = {params.outer_radius:g}, g = {params.growth:g},"
-        f" lambda_z = {params.stretch:g}, Vbar = {params.voltage:g}",
+        f" lambda_z = {params.stretch:g}, {voltage_text(params.voltage, params.outer_radius)}",
         f"  lambda_i = r_i / R_i         {rec['lambda_i']:.12g}",
         f"  lambda_o = r_o / R_o         {rec['lambda_o']:.12g}",
         f"  r_i, r_o                     {rec['r_i']:.12g}, {rec['r_o']:.12g}",
@@ -67,6 +76,7 @@ def _print_one_layer(params, rec: dict, as_json: bool) -> int:
         f"  axial force N / (mu R_i^2)   {rec['axial_force']:.12g}",
     ]
     _stress_lines(lines, rec)
+    lines += physical_line(rec.get("physical", {}))
     print("\n".join(lines))
     return 0
 

@@ -18,6 +18,7 @@ from ..model.layers import Tube
 from ..model.materials import material_by_name
 from ..model.params import TubeParameters
 from ..model.tube_file import load_tube
+from .energy import energy_from_args
 from .options import add_tube_options, finite_number, tube_from_args
 
 #: shared options whose defaults are applied here, so that a given one can override a file
@@ -100,6 +101,8 @@ def tube_of(args, *, layered: bool = False) -> TubeParameters | Tube:
     else:
         tube = load_tube(args.tube)
         layer_opts = {k: given[k] for k in ("outer_radius", "growth", "material") if k in given}
+        if args.energy is not None:
+            layer_opts["energy"] = args.energy
         layer_opts.update(
             {k: getattr(args, k) for k in ("jm", "alpha") if getattr(args, k) is not None}
         )
@@ -130,7 +133,9 @@ def _override_layer(tube: Tube, args, opts: dict) -> Tube:
             " edit its [[layers]] instead"
         )
     fields = {k: opts[k] for k in ("outer_radius", "growth") if k in opts}
-    if {"material", "jm", "alpha"} & set(opts):
+    if "energy" in opts:
+        fields["material"] = energy_from_args(args)
+    elif {"material", "jm", "alpha"} & set(opts):
         name = opts.get("material", "neo-hookean")
         params = {}
         for flag, key, owner in (("--jm", "jm", "gent"), ("--alpha", "alpha", "mooney-rivlin")):

@@ -8,7 +8,8 @@ the offending key (sweep/file.py adds the file and line). Read from a TOML file
                 side = "compression" | "extension"           (stretch only)
                 rtol = 1e-12                                  (1e-14 .. 1e-4)
     [modes]     m = [0, 12], n = [1, 30], extend = true, top = 5
-    [material]  name = "neo-hookean" | "gent" | "mooney-rivlin", and its parameters
+    [material]  name = "neo-hookean" | "gent" | "mooney-rivlin", and its parameters;
+                or energy = "(I1 - 3)/2 + I5/2" (an energy as text, model/energy_text.py)
     [fixed]     outer_radius, length, growth, stretch, voltage   (numbers)
     [grid]      any of the same names = [v1, v2, ...] or {start, stop, num}
     [run]       chunk = grid points per task (default from the grid size)
@@ -36,6 +37,7 @@ import numpy as np
 from ..bifurcation.scan import ScanOptions
 from ..errors import ConfigError, ElectrogrowthError, ParameterError
 from ..incremental.accuracy import RTOL_RANGE
+from ..model.energy_text import energy_material
 from ..model.layers import Tube
 from ..model.materials import BUILTIN, material_by_name
 from ..model.params import CONTROLS, SIDES, TubeParameters
@@ -64,6 +66,7 @@ class SweepConfig:
     scan: ScanOptions = ScanOptions()
     chunk: int = 1
     tube: str | None = None  # the TOML text of a layered tube file, if the sweep has one
+    energy: str = ""  # an energy as text (model/energy_text.py) in place of ``material``
 
     def __post_init__(self):
         if self.tube is not None:
@@ -89,6 +92,8 @@ class SweepConfig:
         return ScanSpec(self.solve_for, self.side, self.scan, self.rtol)
 
     def build_material(self):
+        if self.energy:
+            return energy_material(self.energy)
         name, params = self.material
         return material_by_name(name, **dict(params))
 
@@ -120,7 +125,11 @@ class SweepConfig:
                 "extend": self.scan.extend,
                 "top": self.scan.top,
             },
-            "material": {"name": self.material[0], **dict(self.material[1])},
+            "material": (
+                {"energy": self.energy}
+                if self.energy
+                else {"name": self.material[0], **dict(self.material[1])}
+            ),
             "fixed": dict(self.fixed),
             "grid": {name: list(values) for name, values in self.grid},
             "run": {"chunk": self.chunk},
@@ -133,13 +142,15 @@ class SweepConfig:
     @classmethod
     def from_dict(cls, d: dict) -> SweepConfig:
         mat = dict(d["material"])
+        energy = mat.pop("energy", "")
         return cls(
             solve_for=d["solve"]["for"],
             side=d["solve"]["side"],
             rtol=d["solve"]["rtol"],
             grid=tuple((k, tuple(v)) for k, v in d["grid"].items()),
             fixed=tuple(d["fixed"].items()),
-            material=(mat.pop("name"), tuple(mat.items())),
+            material=(mat.pop("name", "neo-hookean"), tuple(mat.items())),
+            energy=energy,
             scan=ScanOptions(
                 tuple(d["modes"]["m"]),
                 tuple(d["modes"]["n"]),
@@ -211,7 +222,7 @@ def _validate(c: SweepConfig) -> None:
     for name, values in c.grid:
         if not values or list(values) != sorted(set(values)):
             raise ConfigError(("grid", name), "need distinct values in increasing order")
-    material = _material(c.material)
+    material = _energy(c.energy) if c.energy else _material(c.material)
     # TubeParameters checks each field on its own and its defaults are valid, so every
     # value is checked alone: the error then names the entry that is wrong.
     for name, value in c.fixed:
@@ -277,6 +288,13 @@ def _tube(name, value, where, material):
         raise ConfigError(where, str(exc)) from None
     except TypeError:
         raise ConfigError(where, f"unknown parameter; use any of {', '.join(SWEEPABLE)}") from None
+
+
+def _energy(text: str):
+    try:
+        return energy_material(text)
+    except ElectrogrowthError as exc:
+        raise ConfigError(("material", "energy"), str(exc)) from None
 
 
 def _material(material):

@@ -78,6 +78,12 @@ def _from_raw(raw: dict, base: Path = Path()) -> SweepConfig:
         read(table, where, key) if key in table else default
     )
     mat = dict(raw.get("material", {}))
+    energy = opt(mat, ("material",), "energy", _string, "")
+    mat.pop("energy", None)
+    if energy and mat:
+        raise ConfigError(
+            ("material", "energy"), "give either energy or a name and its parameters, not both"
+        )
     name = opt(mat, ("material",), "name", _string, "neo-hookean")
     mat.pop("name", None)
     material = tuple((key, number(mat, ("material",), key)) for key in mat)
@@ -106,6 +112,7 @@ def _from_raw(raw: dict, base: Path = Path()) -> SweepConfig:
         grid=grid,
         fixed=tuple(full.items()),
         material=(name, material),
+        energy=energy,
         side=opt(solve, ("solve",), "side", _string, None),
         rtol=opt(solve, ("solve",), "rtol", number, 1e-12),
         scan=_scan_options(modes),

@@ -143,7 +143,7 @@ def _usable_cores() -> int:
 
 
 def _progress_bar(total: int, initial: int, enabled: bool):
-    from tqdm import tqdm
+    from tqdm.auto import tqdm  # a widget in a notebook, text on a terminal
 
     return tqdm(
         total=total,

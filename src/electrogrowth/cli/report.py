@@ -1,0 +1,138 @@
+"""How the commands print results a person can trust at a glance.
+
+* :func:`supported` prints a value with as many digits as its error estimate supports: the
+  last digit shown is the decade of the estimate (1.266 for 1.26611 +- 3.8e-3), never more
+  than 12 significant digits, never fewer than 3;
+* :func:`voltage_text` puts the voltage next to Vbar: V = Vbar (Rbar_o - 1) in units
+  R_i sqrt(mu / eps), or in kV when the physical units are known (cli/units.py);
+* :func:`physical_record` and :func:`physical_line` report a result in physical units;
+* :func:`edge_warning` says when the critical mode of a scan sits on the edge of the
+  scanned range (a larger range might hold a lower mode).
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+import textwrap
+
+from ..errors import ParameterError
+
+MAX_DIGITS, MIN_DIGITS = 12, 3
+
+
+def digits(value: float, error: float | None) -> int:
+    """Significant digits of ``value`` that an absolute ``error`` estimate supports.
+
+    >>> digits(1.26611156226, 3.8e-3), digits(1.26611156226, 2e-14), digits(0.5, 0.0)
+    (4, 12, 12)
+    """
+    if error is None or not math.isfinite(error) or error <= 0 or value == 0:
+        return MAX_DIGITS
+    if not math.isfinite(value):
+        return MIN_DIGITS
+    n = math.floor(math.log10(abs(value))) - math.floor(math.log10(error)) + 1
+    return max(MIN_DIGITS, min(MAX_DIGITS, n))
+
+
+def supported(value: float, error: float | None) -> str:
+    """``value`` with the digits its error estimate supports.
+
+    >>> supported(1.26611156226, 3.8e-3), supported(1.26611156226, 1e-11)
+    ('1.266', '1.26611156226')
+    """
+    return f"{value:.{digits(value, error)}g}"
+
+
+def voltage_text(vbar: float, outer_radius: float, scales=None, error: float | None = None) -> str:
+    """ "Vbar = 0.4 (V = 0.16 R_i sqrt(mu/eps))", or with the physical scales "(V = 3.2 kV)".
+
+    >>> voltage_text(0.4, 1.4)
+    'Vbar = 0.4 (V = Vbar (Rbar_o - 1) = 0.16 R_i sqrt(mu/eps))'
+    """
+    head = f"Vbar = {supported(vbar, error)}"
+    if scales is not None and scales.has(
+        "inner_radius", "outer_radius", "shear_modulus", "permittivity"
+    ):
+        return f"{head} (V = {scales.voltage(vbar):.{digits(vbar, error)}g~P})"
+    if vbar == 0:
+        return head
+    rel = None if error is None else error * (outer_radius - 1.0)
+    return (
+        f"{head} (V = Vbar (Rbar_o - 1) = {supported(vbar * (outer_radius - 1.0), rel)}"
+        " R_i sqrt(mu/eps))"
+    )
+
+
+#: record key -> (kind, unit) of the values a result may carry in physical units
+_PHYSICAL = {
+    "voltage": ("voltage", "kV"),
+    "voltage_threshold": ("voltage", "kV"),
+    "outer_radius": ("length", "mm"),
+    "length": ("length", "mm"),
+    "r_i": ("length", "mm"),
+    "r_o": ("length", "mm"),
+    "inner_pressure": ("stress", "kPa"),
+    "outer_pressure": ("stress", "kPa"),
+    **{f"sigma_{c}_{e}": ("stress", "kPa") for c in ("rr", "tt", "zz") for e in ("min", "max")},
+}
+
+
+def physical_record(record: dict, scales) -> dict:
+    """The values of a JSON record that have a physical unit: key -> [value, unit]. A
+    voltage needs the four scales, a length R_i, a stress mu; others are left out."""
+    if scales is None:
+        return {}
+    out = {}
+    for key, (kind, unit) in _PHYSICAL.items():
+        value = record.get(key)
+        if not isinstance(value, (int, float)) or isinstance(value, bool):
+            continue
+        try:
+            q = (
+                scales.voltage(value, unit)
+                if kind == "voltage"
+                else scales.length(value, unit)
+                if kind == "length"
+                else scales.stress(value, unit)
+            )
+        except ParameterError:  # that scale is not given
+            continue
+        out[key] = [float(q.magnitude), unit]
+    return out
+
+
+def physical_line(physical: dict) -> list[str]:
+    """One text line of a :func:`physical_record` (none when it is empty)."""
+    if not physical:
+        return []
+    parts = [f"{key} = {value:.6g} {unit}" for key, (value, unit) in physical.items()]
+    text = "in physical units: " + ", ".join(parts)
+    return textwrap.wrap(text, 95, initial_indent="  ", subsequent_indent="    ")
+
+
+def edge_warning(result) -> str:
+    """A one-line warning when the critical mode of a scan (a ScanResult) sits on the upper
+    edge of the final m or n range, else "" (the scan widens a range twice and then relies on
+    the exact short-wave limit; a mode on the edge may still hide a lower one beyond)."""
+    c = result.critical
+    if c.kind != "bifurcation":
+        return ""
+    edges = []
+    if c.m == result.m_range[1]:
+        edges.append(f"m = {c.m} is the largest m scanned")
+    if c.n == result.n_range[1]:
+        edges.append(f"n = {c.n} is the largest n scanned")
+    if not edges:
+        return ""
+    return (
+        f"the critical mode (m, n) = ({c.m}, {c.n}) sits on the edge of the scanned range"
+        f" ({' and '.join(edges)}); raise --m-max / --n-max to make sure no mode beyond it"
+        " comes first"
+    )
+
+
+def warn(message: str) -> None:
+    """Print ``message`` as one warning line on stderr (nothing when it is empty)."""
+    if message:
+        print(f"electrogrowth: warning: {message}", file=sys.stderr)

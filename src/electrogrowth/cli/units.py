@@ -1,0 +1,142 @@
+"""Physical units on the command line: ``--inner-radius 2mm --shear-modulus 100kPa
+--permittivity 4.7 --voltage 3kV``.
+
+Without any of them nothing changes: every number is non-dimensional (mu = eps = R_i = 1).
+With them, the options that take a length or a voltage accept a quantity as well as a number
+(a number keeps its non-dimensional meaning): ``--outer-radius 2.8mm`` or ``1.4``,
+``--length 10mm`` or ``5``, ``--voltage 3kV`` or ``0.0765``. After parsing,
+:func:`resolve_units` turns the quantities into Rbar_o, L and Vbar (model/units.py) and
+leaves ``args.scales`` (a :class:`Scales`, or None) for the output in physical units.
+pint (the ``units`` extra) is imported only when a quantity is given.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import re
+
+from ..errors import ParameterError
+
+_QUANTITY = re.compile(r"\s*[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?\s*[A-Za-z\u00b5\u03bc]")
+
+
+class QuantityText(str):
+    """An option value with a unit ("2mm"), converted by :func:`resolve_units`."""
+
+
+def number_or_quantity(text: str) -> float | QuantityText:
+    """A finite number (non-dimensional, as before), or a quantity with its unit."""
+    try:
+        value = float(text)
+    except ValueError:
+        if not _QUANTITY.match(text):  # a quantity starts with its number: 3kV, 2.8 mm
+            raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
+        return QuantityText(text)
+    if not math.isfinite(value):
+        raise argparse.ArgumentTypeError(f"{text!r} is not a finite number")
+    return value
+
+
+#: The unit options (dest, flag).
+UNIT_OPTIONS = (
+    ("inner_radius", "--inner-radius"),
+    ("shear_modulus", "--shear-modulus"),
+    ("permittivity", "--permittivity"),
+)
+#: Options that may carry a unit: dest -> (flag, kind, SI unit).
+DIMENSIONAL = {
+    "outer_radius": ("--outer-radius", "length", "m"),
+    "length": ("--length", "length", "m"),
+    "voltage": ("--voltage", "voltage", "V"),
+}
+
+
+def add_unit_options(parser: argparse.ArgumentParser) -> None:
+    """The three scales of a tube in physical units (all optional)."""
+    group = parser.add_argument_group(
+        "physical units (optional; needs pip install 'electrogrowth[units]')",
+        "Give the tube in physical units: --inner-radius sets the unit of length R_i, then"
+        " --outer-radius and --length accept lengths (2.8mm) as well as Rbar_o and L;"
+        " --shear-modulus and --permittivity with both radii let --voltage take a voltage"
+        " (3kV), converted to Vbar = V / (R_o - R_i) sqrt(eps / mu). Results are then also"
+        " printed in these units (voltages in kV, stresses in kPa, lengths in mm).",
+    )
+    group.add_argument(
+        "--inner-radius",
+        metavar="LENGTH",
+        help="R_i, the undeformed inner radius with its unit (e.g. 2mm): the unit of length",
+    )
+    group.add_argument(
+        "--shear-modulus",
+        metavar="PRESSURE",
+        help="mu, the initial shear modulus with its unit (e.g. 100kPa): the unit of stress",
+    )
+    group.add_argument(
+        "--permittivity",
+        metavar="EPS",
+        help="eps, the permittivity: a number is the relative permittivity eps_r"
+        " (eps = eps_r eps_0, e.g. 4.7), or give it with its unit (e.g. 4.16e-11F/m)",
+    )
+
+
+def resolve_units(args: argparse.Namespace) -> None:
+    """Convert the quantities of ``args`` to Rbar_o, L, Vbar in place; set ``args.scales``.
+
+    Raises ParameterError (one line, naming the option) for a quantity of the wrong kind,
+    a length without --inner-radius, a voltage without the four scales.
+    """
+    if not hasattr(args, "inner_radius"):
+        return
+    given = {dest: getattr(args, dest) for dest, _ in UNIT_OPTIONS}
+    quantities = {
+        dest: getattr(args, dest)
+        for dest in DIMENSIONAL
+        if isinstance(getattr(args, dest, None), QuantityText)
+    }
+    if all(v is None for v in given.values()) and not quantities:
+        args.scales = None
+        return
+    from ..model.units import Scales, absolute_permittivity, magnitude
+
+    r_i = math.nan
+    if given["inner_radius"] is not None:
+        r_i = magnitude(given["inner_radius"], "--inner-radius", "length", "m")
+    for dest in ("outer_radius", "length"):
+        if dest in quantities:
+            flag, kind, unit = DIMENSIONAL[dest]
+            value = magnitude(quantities[dest], flag, kind, unit)
+            if math.isnan(r_i):
+                raise ParameterError(
+                    f"{flag} {quantities[dest]} is a length; give --inner-radius too (the unit"
+                    " of length), or a non-dimensional value"
+                )
+            setattr(args, dest, value / r_i)
+    rbar_o = getattr(args, "outer_radius", None)
+    r_o = r_i * rbar_o if isinstance(rbar_o, float) else math.nan
+    mu = math.nan
+    if given["shear_modulus"] is not None:
+        mu = magnitude(given["shear_modulus"], "--shear-modulus", "pressure", "Pa")
+    eps = (
+        math.nan if given["permittivity"] is None else absolute_permittivity(given["permittivity"])
+    )
+    scales = Scales(r_i, r_o, mu, eps)
+    if "voltage" in quantities:
+        missing = [
+            flag
+            for flag, ok in (
+                ("--inner-radius", not math.isnan(r_i)),
+                ("--outer-radius", not math.isnan(r_o)),
+                ("--shear-modulus", not math.isnan(mu)),
+                ("--permittivity", not math.isnan(eps)),
+            )
+            if not ok
+        ]
+        if missing:
+            raise ParameterError(
+                f"--voltage {quantities['voltage']} is a voltage; Vbar = V / (R_o - R_i)"
+                f" sqrt(eps / mu) needs {', '.join(missing)} as well"
+            )
+        volts = magnitude(quantities["voltage"], "--voltage", "voltage", "V", zero=True)
+        args.voltage = scales.to_vbar(volts)
+    args.scales = scales

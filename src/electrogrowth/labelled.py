@@ -1,0 +1,267 @@
+"""Results as labelled arrays: ``xarray.Dataset`` with units and descriptions in attributes.
+
+The ``to_xarray()`` methods of :class:`~electrogrowth.BaseState`,
+:class:`~electrogrowth.LayeredState`, :class:`~electrogrowth.ScanResult` and
+:class:`~electrogrowth.Curve` call the functions here. Every variable carries ``units`` (in
+the package's units mu = eps = R_i = 1: "R_i", "mu", ...; "1" for a pure number) and
+``long_name``; the dataset's attributes hold the tube, the material and what was solved
+for, and contain no None (so it saves to netCDF as well as to Zarr). xarray (the ``sweep``
+extra) is imported inside each function. Shared by every stage: imports no stage, reads
+the results by their attributes.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .errors import MissingDependencyError
+
+#: variable -> (units, long name); units in the package's scales mu = eps = R_i = 1
+VARIABLES = {
+    "R": ("R_i", "reference (undeformed) radius R"),
+    "r": ("R_i", "current radius r(R)"),
+    "lambda": ("1", "hoop stretch r / R"),
+    "sigma_rr": ("mu", "radial Cauchy stress sigma_rr"),
+    "sigma_tt": ("mu", "hoop Cauchy stress sigma_theta theta"),
+    "sigma_zz": ("mu", "axial Cauchy stress sigma_zz"),
+    "p": ("mu", "Lagrange multiplier p (hydrostatic pressure)"),
+    "D_r": ("sqrt(mu eps)", "radial electric displacement D_r = c / r"),
+    "E_r": ("sqrt(mu / eps)", "radial electric field E_r"),
+    "layer": ("1", "layer index, from the inside (0 = innermost)"),
+    "m": ("1", "circumferential wavenumber m (-1: no finite mode)"),
+    "n": ("1", "axial half-wavenumber n, k = n pi / (lambda_z L) (-1: no finite mode)"),
+    "family": ("1", "mode family: wrinkle, prismatic (n = 0) or torsional (m = 0)"),
+    "kind": ("1", "bifurcation, threshold, surface, switch or failed"),
+    "surface": ("1", "1 where the critical point is the exact short-wave limit"),
+    "status": ("1", "why a point failed (empty where it did not)"),
+}
+#: the unit and name of each control / tube parameter
+PARAMETERS = {
+    "growth": ("1", "isotropic growth factor g"),
+    "stretch": ("1", "axial stretch lambda_z = l / L"),
+    "voltage": (
+        "1",
+        "Vbar = V / (R_o - R_i) sqrt(eps / mu); V = Vbar (Rbar_o - 1) R_i sqrt(mu / eps)",
+    ),
+    "outer_radius": ("R_i", "undeformed outer radius Rbar_o = R_o / R_i"),
+    "length": ("R_i", "undeformed length L / R_i"),
+}
+
+
+def xarray():
+    """The xarray module, or MissingDependencyError naming the extra."""
+    try:
+        import xarray
+    except ImportError:
+        raise MissingDependencyError(
+            "to_xarray needs the optional package xarray; install it with"
+            " pip install 'electrogrowth[sweep]'"
+        ) from None
+    return xarray
+
+
+def _attrs(name: str, **extra) -> dict:
+    units, long_name = VARIABLES.get(name) or PARAMETERS.get(name) or ("1", str(name))
+    return {"units": units, "long_name": long_name, **extra}
+
+
+def clean(attrs: dict) -> dict:
+    """Attributes netCDF can store: None dropped, infinities as strings, bools as ints,
+    lists of numbers kept, lists of strings joined by "; "."""
+    out = {}
+    for key, value in attrs.items():
+        if value is None:
+            continue
+        if isinstance(value, bool) or isinstance(value, np.bool_):
+            value = int(value)
+        elif isinstance(value, float) and not math.isfinite(value):
+            value = str(value)
+        elif isinstance(value, (tuple, list)):
+            strings = any(isinstance(v, str) for v in value)
+            value = "; ".join(map(str, value)) if strings else list(value)
+        elif not isinstance(value, (int, float, str, np.integer, np.floating)):
+            value = str(value)
+        out[key] = value
+    return out
+
+
+def _tube_attrs(params) -> dict:
+    """The tube's fields: TubeParameters, or a layered Tube (its layers' outer radii and
+    materials, and its loads)."""
+    if hasattr(params, "layers"):
+        return {
+            "layer_outer_radii": [float(layer.outer_radius) for layer in params.layers],
+            "materials": [layer.material.name for layer in params.layers],
+            **{
+                f: getattr(params, f, None)
+                for f in ("length", "stretch", "axial_force", "voltage")
+                + ("inner_pressure", "outer_pressure")
+            },
+        }
+    fields = ("outer_radius", "length", "growth", "stretch", "voltage")
+    return {"material": params.material.name, **{f: getattr(params, f) for f in fields}}
+
+
+def base_state_dataset(state, points: int = 101):
+    """Profiles of a one-layer BaseState on ``points`` radii R (dimension R)."""
+    xr = xarray()
+    prof = state.profiles(points)
+    R = prof.pop("R")
+    ds = xr.Dataset(
+        {k: ("R", v, _attrs(k)) for k, v in prof.items()},
+        coords={"R": ("R", R, _attrs("R"))},
+    )
+    ds.attrs = clean(
+        {
+            "title": "axisymmetric base state of a grown, stretched, charged tube",
+            "units": "mu = eps = R_i = 1",
+            **_tube_attrs(state.params),
+            "lambda_i": state.lambda_i,
+            "lambda_o": state.lambda_o,
+            "r_i": state.r_i,
+            "r_o": state.r_o,
+            "charge": state.charge,
+            "voltage_threshold": state.voltage_threshold,
+            "threshold_kind": state.threshold_kind,
+            "axial_force": state.axial_force,
+            "quadrature_error": state.quadrature_error,
+        }
+    )
+    return ds
+
+
+def layered_state_dataset(state, points: int = 101):
+    """Profiles of a LayeredState (dimension point; an interface appears twice, once per
+    side; R and layer are coordinates)."""
+    xr = xarray()
+    prof = state.profiles(points)
+    coords = {k: ("point", prof.pop(k), _attrs(k)) for k in ("R", "layer")}
+    ds = xr.Dataset({k: ("point", v, _attrs(k)) for k, v in prof.items()}, coords=coords)
+    tube = state.tube
+    ds.attrs = clean(
+        {
+            "title": "axisymmetric base state of a layered tube",
+            "units": "mu = eps = R_i = 1 (mu, eps of the reference the layers are relative to)",
+            "layers": len(tube.layers),
+            "layer_outer_radii": [float(x) for x in tube.radii[1:]],
+            "materials": [layer.material.name for layer in tube.layers],
+            "voltage": tube.voltage,
+            "inner_pressure": tube.inner_pressure,
+            "outer_pressure": tube.outer_pressure,
+            "lambda_i": state.lambda_i,
+            "lambda_o": state.lambda_o,
+            "stretch": state.stretch,
+            "interface_radii": [float(x) for x in state.radii],
+            "charge": state.charge,
+            "axial_force": state.axial_force,
+            "end_force": state.end_force,
+            "voltage_threshold": state.voltage_threshold,
+            "threshold_kind": state.threshold_kind,
+        }
+    )
+    return ds
+
+
+def scan_dataset(result):
+    """A ScanResult: the critical point and the runners-up along dimension rank (0 = the
+    critical point)."""
+    xr = xarray()
+    c = result.critical
+    rows = [(c.m, c.n, str(c.family or ""), c.value)] + [
+        (r.m, r.n, str(r.family or ""), r.value) for r in result.runners_up
+    ]
+    m, n, family, value = (list(col) for col in zip(*rows))
+    name = f"{c.solve_for}_cr"
+    ds = xr.Dataset(
+        {
+            name: ("rank", np.array(value, float), _critical_attrs(c.solve_for)),
+            "m": ("rank", np.array(m, int), _attrs("m")),
+            "n": ("rank", np.array(n, int), _attrs("n")),
+            "family": ("rank", np.array(family, str), _attrs("family")),
+        },
+        coords={
+            "rank": ("rank", np.arange(len(rows)), {"long_name": "0 = critical, then runners-up"})
+        },
+    )
+    ds.attrs = clean(
+        {
+            "title": f"critical {c.solve_for} over the modes (m, n)",
+            "units": "mu = eps = R_i = 1",
+            "solve_for": c.solve_for,
+            "side": c.side,
+            "kind": str(c.kind),
+            "error_estimate": c.error_estimate,
+            "method": c.method,
+            "face": c.face,
+            "psi": c.psi,
+            "m_range": list(result.m_range),
+            "n_range": list(result.n_range),
+            "surface_instability": result.surface_instability,
+            "short_wave_limit": result.short_wave_limit,
+            "short_wave_error": result.short_wave_error,
+            **{f"tube_{k}": v for k, v in _tube_attrs(c.params).items()},
+        }
+    )
+    return ds
+
+
+def _critical_attrs(solve_for: str) -> dict:
+    units, long_name = PARAMETERS.get(solve_for, ("1", solve_for))
+    return {"units": units, "long_name": f"critical {long_name}"}
+
+
+def curve_dataset(curve):
+    """A Curve along dimension point (a switch appears twice, at the same x: the end of one
+    branch and the start of the next; x is the coordinate named after ``along``), and its
+    located switches along dimension switch."""
+    xr = xarray()
+    name = f"{curve.solve_for}_cr"
+    ds = xr.Dataset(
+        {
+            name: ("point", np.asarray(curve.value, float), _critical_attrs(curve.solve_for)),
+            "m": ("point", np.asarray(curve.m, int), _attrs("m")),
+            "n": ("point", np.asarray(curve.n, int), _attrs("n")),
+            "kind": ("point", np.asarray(curve.kind, str), _attrs("kind")),
+            "surface": ("point", np.asarray(curve.surface, int), _attrs("surface")),
+            "short_wave_limit": (
+                "point",
+                np.asarray(curve.short_wave_limit, float),
+                {**_critical_attrs(curve.solve_for), "long_name": "exact short-wave limit"},
+            ),
+            "status": ("point", np.asarray(curve.status, str), _attrs("status")),
+            "switch_x": (
+                "switch",
+                np.array([s.x for s in curve.switches], float),
+                {**_attrs(curve.along), "long_name": f"{curve.along} at a mode switch"},
+            ),
+            "switch_value": (
+                "switch",
+                np.array([s.value for s in curve.switches], float),
+                {**_critical_attrs(curve.solve_for), "long_name": "critical value at the switch"},
+            ),
+            "switch_mode_before": (
+                ("switch", "mode"),
+                np.array([s.mode_before for s in curve.switches], int).reshape(-1, 2),
+                {"units": "1", "long_name": "(m, n) before the switch, (-1, -1): threshold"},
+            ),
+            "switch_mode_after": (
+                ("switch", "mode"),
+                np.array([s.mode_after for s in curve.switches], int).reshape(-1, 2),
+                {"units": "1", "long_name": "(m, n) after the switch, (-1, -1): threshold"},
+            ),
+        },
+        coords={curve.along: ("point", np.asarray(curve.x, float), _attrs(curve.along))},
+    )
+    ds.attrs = clean(
+        {
+            "title": f"critical {curve.solve_for} along {curve.along}, mode switches located",
+            "units": "mu = eps = R_i = 1",
+            "solve_for": curve.solve_for,
+            "along": curve.along,
+            "side": curve.side,
+            **{f"tube_{k}": v for k, v in _tube_attrs(curve.params).items()},
+        }
+    )
+    return ds

@@ -1,0 +1,120 @@
+"""Physical units at the edge (model/units.py, cli/units.py): hand conversions, the CLI
+design (a number keeps its non-dimensional meaning), one-line errors with exit status 2."""
+
+import json
+import math
+
+import pytest
+
+from electrogrowth import ParameterError, TubeParameters, solve_base_state, tube_from_quantities
+from electrogrowth.cli.app import main
+from electrogrowth.model.units import EPSILON_0, Scales
+
+pytest.importorskip("pint")
+
+# R_i = 2 mm, R_o = 2.8 mm, mu = 100 kPa, eps = 4.7 eps_0: by hand,
+# sqrt(mu / eps) = sqrt(1e5 / (4.7 * 8.8541878128e-12)) = 4.90203e7 V/m, and the voltage
+# scale (R_o - R_i) sqrt(mu / eps) = 0.8e-3 m * 4.90203e7 V/m = 39216.3 V.
+EPS = 4.7 * 8.8541878128e-12
+SCALE = 0.8e-3 * math.sqrt(1e5 / EPS)
+PHYSICAL = ["--inner-radius", "2mm", "--shear-modulus", "100kPa", "--permittivity", "4.7"]
+
+
+def test_hand_conversion():
+    assert SCALE == pytest.approx(39216.3, rel=1e-6)
+    tube, scales = tube_from_quantities(
+        "2 mm", "0.28 cm", shear_modulus="0.1 MPa", permittivity=4.7, length="1 cm", voltage="3 kV"
+    )
+    assert tube.outer_radius == pytest.approx(1.4, rel=1e-15)
+    assert tube.length == pytest.approx(5.0, rel=1e-15)
+    assert tube.voltage == pytest.approx(3000.0 / SCALE, rel=1e-12)
+    assert scales.permittivity == pytest.approx(EPS, rel=1e-15)
+    assert scales.voltage(tube.voltage).to("V").magnitude == pytest.approx(3000.0, rel=1e-12)
+    assert scales.stress(0.25).to("Pa").magnitude == pytest.approx(25e3)
+    assert scales.length(1.4).to("mm").magnitude == pytest.approx(2.8)
+
+
+def test_permittivity_as_quantity_equals_relative():
+    a = tube_from_quantities("2 mm", "2.8 mm", shear_modulus="100 kPa", permittivity=4.7)[1]
+    b = tube_from_quantities(
+        "2 mm", "2.8 mm", shear_modulus="100 kPa", permittivity=f"{4.7 * EPSILON_0} F/m"
+    )[1]
+    assert a.voltage_scale == pytest.approx(b.voltage_scale, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "match"),
+    [
+        ({"inner_radius": "2 kg"}, "not a length"),
+        ({"inner_radius": "2"}, "has no unit"),
+        ({"inner_radius": "-2 mm"}, "out of range"),
+        ({"outer_radius": "1 mm"}, "need R_o > R_i"),
+        ({"permittivity": -1.0}, "eps_r"),
+        ({"voltage": "3 kV", "shear_modulus": None}, "needs the shear modulus"),
+    ],
+)
+def test_bad_quantities_name_the_value(kwargs, match):
+    args = {"inner_radius": "2 mm", "outer_radius": "2.8 mm", "shear_modulus": "100 kPa"}
+    args.update(permittivity=4.7)
+    args.update(kwargs)
+    with pytest.raises(ParameterError, match=match):
+        tube_from_quantities(args.pop("inner_radius"), args.pop("outer_radius"), **args)
+
+
+def test_scales_pickle_without_pint_objects():
+    import pickle
+
+    s = Scales(2e-3, 2.8e-3, 1e5, EPS)
+    assert pickle.loads(pickle.dumps(s)) == s
+
+
+def _state(capsys, argv):
+    assert main(["state", *argv, "--json"]) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+def test_cli_quantities_equal_the_nondimensional_input(capsys):
+    vbar = 3000.0 / SCALE
+    phys = _state(
+        capsys, [*PHYSICAL, "--outer-radius", "2.8mm", "--voltage", "3kV", "--growth", "1.1"]
+    )
+    plain = _state(capsys, ["--outer-radius", "1.4", "--voltage", repr(vbar), "--growth", "1.1"])
+    assert phys["voltage"] == pytest.approx(vbar, rel=1e-12)
+    assert phys["lambda_i"] == pytest.approx(plain["lambda_i"], rel=1e-12)
+    assert "physical" not in plain
+    # results back in physical units: the voltage in kV, radii in mm, stresses in kPa
+    assert phys["physical"]["voltage"] == [pytest.approx(3.0, rel=1e-12), "kV"]
+    assert phys["physical"]["r_i"][0] == pytest.approx(2.0 * phys["r_i"], rel=1e-12)
+    assert phys["physical"]["sigma_zz_min"] == [
+        pytest.approx(100.0 * phys["sigma_zz_min"], rel=1e-12),
+        "kPa",
+    ]
+    state = solve_base_state(TubeParameters(1.4, growth=1.1, voltage=vbar))
+    thr = state.voltage_threshold * SCALE / 1e3
+    assert phys["physical"]["voltage_threshold"][0] == pytest.approx(thr, rel=1e-9)
+
+
+def test_cli_mixed_number_and_quantity(capsys):
+    """A number keeps its non-dimensional meaning next to the unit options."""
+    rec = _state(capsys, [*PHYSICAL, "--outer-radius", "1.4", "--voltage", "0.2"])
+    assert rec["outer_radius"] == 1.4 and rec["voltage"] == 0.2
+    assert rec["physical"]["voltage"][0] == pytest.approx(0.2 * SCALE / 1e3, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("argv", "match"),
+    [
+        (["--outer-radius", "2.8mm"], "--outer-radius 2.8mm is a length; give --inner-radius"),
+        (
+            ["--outer-radius", "1.4", "--voltage", "3kV", "--inner-radius", "2mm"],
+            "needs --shear-modulus, --permittivity",
+        ),
+        (["--outer-radius", "1.4", "--inner-radius", "2kg"], "'2kg' is not a length"),
+        (["--outer-radius", "1.4", *PHYSICAL, "--voltage", "3mm"], "is not a voltage"),
+        (["--outer-radius", "1.4", "--inner-radius", "2mm", "--permittivity", "0"], "eps_r"),
+    ],
+)
+def test_cli_bad_units_one_line_exit_2(capsys, argv, match):
+    assert main(["state", *argv]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and match in err
