@@ -199,16 +199,26 @@ def test_layer_energy_scaling_is_mu_W_plus_I5_over_2eps():
     loads = dict(stretch=1.05, voltage=0.3, inner_pressure=0.1)
     scaled = Tube((Layer(1.2), Layer(1.6, shear_modulus=mu, permittivity=eps)), **loads)
     explicit = Tube(
-        (Layer(1.2), Layer(1.6, Material("explicit", mu * (I1 - 3) / 2 + I5 / (2 * eps)))),
+        (
+            Layer(1.2),
+            Layer(
+                1.6, Material("explicit", mu * (I1 - 3) / 2 + I5 / (2 * eps), check_units=False)
+            ),
+        ),
         **loads,
     )
     _same(solve_layered_state(scaled), solve_layered_state(explicit))
-    nonideal = Material("nh+I6", (I1 - 3) / 2 + I5 / 2 + I6 / 10)
+    nonideal = Material("nh+I6", (I1 - 3) / 2 + I5 / 2 + I6 / 10, check_units=False)
     scaled = Tube((Layer(1.2), Layer(1.6, nonideal, mu, eps)), **loads)
     explicit = Tube(
         (
             Layer(1.2),
-            Layer(1.6, Material("e6", mu * (I1 - 3) / 2 + I5 / (2 * eps) + I6 / (10 * eps))),
+            Layer(
+                1.6,
+                Material(
+                    "e6", mu * (I1 - 3) / 2 + I5 / (2 * eps) + I6 / (10 * eps), check_units=False
+                ),
+            ),
         ),
         **loads,
     )
