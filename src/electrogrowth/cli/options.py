@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import argparse
 import math
+import re
 
-from ..bifurcation.scan import ScanOptions
+from ..bifurcation.scan import M_CAP, N_CAP, ScanOptions
 from ..errors import ParameterError, UsageError
 from ..incremental.targets import FAMILIES, METHODS, Family, check_mode
 from ..model.materials import BUILTIN, material_by_name
@@ -13,8 +14,17 @@ from ..model.params import CONTROLS, SIDES, TubeParameters
 
 
 class _Parser(argparse.ArgumentParser):
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        # A value such as -inf, -1e5 or -nan is a (bad) number, not an unknown option: let
+        # the option's type name it instead of "expected one argument".
+        self._negative_number_matcher = _NEGATIVE_NUMBER
+
     def error(self, message):
         raise UsageError(message)
+
+
+_NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$", re.I)
 
 
 def finite_number(text: str) -> float:
@@ -26,6 +36,33 @@ def finite_number(text: str) -> float:
     if not math.isfinite(value):
         raise argparse.ArgumentTypeError(f"{text!r} is not a finite number")
     return value
+
+
+def bounded_int(lowest: int, highest: int, why: str = ""):
+    """An argument type: a whole number in [lowest, highest], else a one-line error naming
+    the value, the range and ``why`` the range ends there (never an overflow or a hang)."""
+
+    def parse(text: str) -> int:
+        try:
+            value = int(text) if len(text) <= 20 else None
+        except ValueError:
+            value = None
+        if value is None or not lowest <= value <= highest:
+            shown = text if len(text) <= 20 else text[:17] + "..."
+            reason = f" ({why})" if why else ""
+            raise argparse.ArgumentTypeError(
+                f"{shown!r} is not a whole number from {lowest} to {highest}{reason}"
+            )
+        return value
+
+    parse.__name__ = "whole number"  # argparse names the type in its messages
+    return parse
+
+
+#: The largest m and n a scan may start from, and of one --mode: beyond them the waves are
+#: short enough for the exact short-wave (half-space) limit, which every scan computes.
+MODE_LIMITS = (M_CAP, N_CAP)
+SHORT_WAVES = "larger wavenumbers are covered by the exact short-wave limit"
 
 
 # -- the tube --------------------------------------------------------------------------------
@@ -179,7 +216,7 @@ def add_mode_range_options(group, *, top: bool = False) -> None:
     default = ScanOptions()
     group.add_argument(
         "--m-max",
-        type=int,
+        type=bounded_int(0, M_CAP, SHORT_WAVES),
         default=default.m_range[1],
         metavar="M_MAX",
         help="largest circumferential wavenumber m of the scan, from 0"
@@ -192,7 +229,7 @@ def add_mode_range_options(group, *, top: bool = False) -> None:
     )
     group.add_argument(
         "--n-max",
-        type=int,
+        type=bounded_int(1, N_CAP, SHORT_WAVES),
         default=default.n_range[1],
         metavar="N_MAX",
         help="largest axial half-wavenumber n of the scan, from 1 (default"
@@ -202,7 +239,7 @@ def add_mode_range_options(group, *, top: bool = False) -> None:
     if top:
         group.add_argument(
             "--top",
-            type=int,
+            type=bounded_int(1, 1000),
             default=default.top,
             help=f"number of modes to report in a scan (default {default.top})",
         )
@@ -213,7 +250,7 @@ def add_mode_option(group) -> None:
     group.add_argument(
         "--mode",
         nargs=2,
-        type=int,
+        type=bounded_int(0, MODE_LIMITS[1], SHORT_WAVES),
         metavar=("M", "N"),
         help="one mode instead of a scan: circumferential wavenumber m >= 0"
         " (lobes around) and axial half-wavenumber n >= 0 (half-waves"
