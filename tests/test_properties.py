@@ -109,7 +109,8 @@ def check_base_state_and_rescaling(params, m, n):
         _named(exc)
         return
     assert math.isfinite(state.lambda_i) and state.lambda_i > 0
-    assert abs(_quad_voltage(state) - params.voltage) <= 1e-8 * max(1.0, params.voltage)
+    v = _quad_voltage(state)  # Vbar^2 ~ M is the well-conditioned quantity near Vbar = 0
+    assert abs(math.copysign(v * v, v) - params.voltage**2) <= 1e-8 * max(1.0, params.voltage**2)
     g = params.growth
     ungrown = TubeParameters(
         params.outer_radius,
