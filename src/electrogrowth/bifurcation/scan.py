@@ -345,7 +345,7 @@ def _scan_once(
         )
         return ScanResult(crit, (), m_range, n_range)
     best = found[0]
-    w = 1e-7 * max(1.0, abs(best.value))
+    w = 1e-7 * abs(best.value)  # relative: a small value's bracket must stay on its side of 0
     crit = critical_value(
         params,
         best.m,
