@@ -174,7 +174,12 @@ def check_critical_value(case):
     assert math.isfinite(value), point
     if point.kind != "bifurcation":
         return
-    other = critical_value(params, m, n, control, side=side, method="collocation")
+    # certified as `critical --certify` does: collocation's own root near the value (its
+    # own march can step over a narrow unstable window, docs/reliability.md)
+    w = max(1e-6 * abs(value), 10 * point.error_estimate)
+    other = critical_value(
+        params, m, n, control, side=side, method="collocation", bracket=(value - w, value + w)
+    )
     assert other.value == pytest.approx(value, rel=1e-8), (point, other)
     # an independent fine march: collocation targets from the start up to the value keep
     # the start's (stable) sign; just past the value the sign has changed
