@@ -14,6 +14,8 @@ from ..bifurcation.scan import scan_grid, scan_modes
 from ..errors import ConvergenceError, ParameterError
 from ..incremental.accuracy import check_rtol
 from ..incremental.targets import collocation_targets
+from ..model.controls import parse_control
+from ..model.params import CONTROLS, TubeParameters
 from ..outcomes import Kind
 from .options import (
     MODE_COVERAGE,
@@ -21,19 +23,18 @@ from .options import (
     add_method_option,
     add_mode_option,
     add_mode_range_options,
-    add_tube_options,
     check_side_option,
     mode_from_args,
     scan_options_from_args,
-    tube_from_args,
 )
+from .tube_input import add_any_tube_options, control_of
 
 CERTIFY_RTOL = 1e-8  # the two methods must agree this well for a certified value
 
 
 def configure_critical(parser: argparse.ArgumentParser) -> None:
     add_control_options(parser)
-    add_tube_options(parser)
+    add_any_tube_options(parser)
     modes = parser.add_argument_group(
         "wrinkling modes u ~ cos(m theta) cos(k z), k = n pi / (lambda_z L)", MODE_COVERAGE
     )
@@ -63,7 +64,7 @@ def configure_critical(parser: argparse.ArgumentParser) -> None:
 
 
 def run_critical(args) -> int:
-    params = tube_from_args(args)
+    params, solve_for = control_of(args)
     check_side_option(args)
     check_rtol(args.rtol, "--rtol")
     mode = mode_from_args(args)
@@ -73,7 +74,7 @@ def run_critical(args) -> int:
             params,
             m,
             n,
-            args.solve_for,
+            solve_for,
             family=family,
             side=args.side,
             method=args.method,
@@ -88,7 +89,7 @@ def run_critical(args) -> int:
             )
         result = scan_modes(
             params,
-            args.solve_for,
+            solve_for,
             side=args.side,
             options=scan_options_from_args(args),
             rtol=args.rtol,
@@ -138,7 +139,10 @@ def _certify(params, crit, args) -> dict:
 
 def _certify_choice(params, crit, result, *, options) -> dict:
     """Every mode of the scanned ranges is still stable just before the critical value by
-    the other method (collocation, positive on the stable side): no mode comes first."""
+    the other method (collocation, positive on the stable side): no mode comes first.
+    One-layer tubes and the controls growth, stretch and voltage (others: {})."""
+    if not isinstance(params, TubeParameters) or crit.solve_for not in CONTROLS:
+        return {}
     sense = -1.0 if crit.side == "compression" else 1.0
     w = max(1e-6 * abs(crit.value), 10 * crit.error_estimate)
     before = params.at(crit.solve_for, crit.value - sense * w)
@@ -151,14 +155,52 @@ def _certify_choice(params, crit, result, *, options) -> dict:
         m, n = (int(x) for x in modes[first, :2])
         raise ConvergenceError(
             f"not certified: by collocation mode ({m}, {n}) is already unstable at"
-            f" {crit.solve_for} = {getattr(before, crit.solve_for):.12g}, before"
+            f" {crit.solve_for} = {crit.value - sense * w:.12g}, before"
             f" the scan's critical mode ({crit.m}, {crit.n}) at {crit.value:.12g}"
         )
     return {"certified_modes": int(len(modes))}
 
 
+def value_name(solve_for: str) -> str:
+    """How a critical value is named in text: g_cr, lambda_z,cr, Vbar_cr, P_i,cr, F_cr;
+    g_theta[2],cr for a component of layer 2's growth."""
+    c = parse_control(solve_for)
+    if c.kind != "growth":
+        return {"stretch": "lambda_z,cr", "voltage": "Vbar_cr", "pressure": "P_i,cr"}.get(
+            c.kind, "F_cr"
+        )
+    if c.components is None and c.layer is None:
+        return "g_cr"
+    comp = "" if c.components is None else "_" + "".join(c.components)
+    return f"g{comp}{'' if c.layer is None else f'[{c.layer}]'},cr"
+
+
+def tube_line(rec: dict) -> str:
+    """The tube of a JSON record in one line (one layer, or the layers and loads)."""
+    if "layers" not in rec:
+        return (
+            f"  tube: Rbar_o = {rec['outer_radius']:g}, L = {rec['length']:g},"
+            f" g = {rec['growth']:.12g}, lambda_z = {rec['stretch']:.12g},"
+            f" Vbar = {rec['voltage']:.12g}, {rec['material']}"
+        )
+    layers = "; ".join(
+        f"R <= {ly['outer_radius']:g} {ly['material']} mu {ly['shear_modulus']:g} g {ly['growth']}"
+        for ly in rec["layers"]
+    )
+    axial = (
+        f"lambda_z = {rec['stretch']:.12g}"
+        if rec["stretch"] is not None
+        else f"axial force {rec['axial_force']:.12g}"
+    )
+    return (
+        f"  tube: {len(rec['layers'])} layer(s) [{layers}], L = {rec['length']:g}, {axial},"
+        f" Vbar = {rec['voltage']:.12g}, P_i = {rec['inner_pressure']:.12g},"
+        f" P_o = {rec['outer_pressure']:.12g}"
+    )
+
+
 def _print_text(rec: dict, runners: list) -> None:
-    name = {"growth": "g_cr", "stretch": "lambda_z,cr", "voltage": "Vbar_cr"}[rec["solve_for"]]
+    name = value_name(rec["solve_for"])
     if rec["kind"] == Kind.THRESHOLD:
         head = (
             f"{name} = {rec['value']:.12g}: the axisymmetric state is lost (voltage"
@@ -172,10 +214,11 @@ def _print_text(rec: dict, runners: list) -> None:
             if abs(rec["psi"] - math.pi / 2) < 1e-12
             else f"the direction psi = {rec['psi']:.6g} rad from theta to z"
         )
+        where = rec["face"] if rec["face"].startswith("interface") else f"{rec['face']} face"
         head = (
             f"{name} = {rec['value']:.12g}  (error estimate {rec['error_estimate']:.1e},"
             f" half-space)   short-wave (surface) instability, m, n -> infinity, at the"
-            f" {rec['face']} face, wrinkles along {along}"
+            f" {where}, wrinkles along {along}"
         )
     else:
         head = (
@@ -183,12 +226,7 @@ def _print_text(rec: dict, runners: list) -> None:
             f" {rec['method']})   mode (m, n) = ({rec['m']}, {rec['n']})"
             f"{_family_note(rec.get('family'))}"
         )
-    lines = [
-        head,
-        f"  tube: Rbar_o = {rec['outer_radius']:g}, L = {rec['length']:g},"
-        f" g = {rec['growth']:.12g}, lambda_z = {rec['stretch']:.12g},"
-        f" Vbar = {rec['voltage']:.12g}, {rec['material']}",
-    ]
+    lines = [head, tube_line(rec)]
     if rec.get("certified"):
         lines.append(
             f"  certified by {rec['certified_by']}: {rec['certified_value']:.12g}"
