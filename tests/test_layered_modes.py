@@ -184,3 +184,38 @@ def test_kernel_target_is_identical_for_identical_layers():
 def test_controls_a_tube_cannot_vary_are_refused(solve_for, message):
     with pytest.raises(ParameterError, match=message):
         critical_value(bilayer(), 2, 1, solve_for)
+
+
+@pytest.mark.parametrize(("m", "n"), [(2, 1), (5, 3), (0, 2), (7, 0)])
+def test_kernel_target_equals_orthonormalised_shooting(m, n):
+    """The kernel's pole-free target through layers and pressure equals the slow twin that
+    shoots the linear Stroh system with QR re-orthonormalisation (no impedance, no charts):
+    the same number, not only its sign."""
+    from electrogrowth.incremental.impedance_reference import shooting_target
+    from electrogrowth.incremental.targets import mode_pairs
+
+    state = solve_base_state(bilayer())
+    k = n * math.pi / state.current_length
+    keep = int(mode_pairs(np.array([[m, n]], float))[0])
+    f = integrate_one(float(m), k, keep, build_table(state), 1e-13, 20000)[0]
+    assert f == pytest.approx(shooting_target(state, m, k, pairs=keep), rel=1e-9)
+
+
+@pytest.mark.slow
+def test_two_interface_modes_cross_close_together():
+    """A stiff grown layer between two soft ones: its two interfaces lose stability near
+    g = 2.33 and 2.37 (half-space limit), and the mode (0, 16) crosses twice in between, so
+    its target is negative only in a narrow window; kernel and shooting agree on the values
+    (and the sign) on both sides of each crossing."""
+    from electrogrowth.incremental.impedance_reference import shooting_target
+
+    tube = Tube((Layer(1.5, shear_modulus=0.2), Layer(2.0), Layer(2.5, shear_modulus=0.2)))
+    signs = []
+    for g in (2.325, 2.35, 2.375):
+        state = solve_base_state(tube.at("growth[2]", g))
+        k = 16 * math.pi / state.current_length
+        keep = ALL_PAIRS & ~2  # axisymmetric: no torsion
+        f = integrate_one(0.0, k, keep, build_table(state), 1e-13, 20000)[0]
+        assert f == pytest.approx(shooting_target(state, 0, k, pairs=keep), rel=1e-9)
+        signs.append(np.sign(f))
+    assert signs == [1.0, -1.0, 1.0]

@@ -271,3 +271,44 @@ def test_interface_is_critical_in_a_growing_embedded_layer():
 
 #: short_wave_limit of the embedded-layer tube above (measured, docs)
 INTERFACE_LIMIT = 2.1782747522850343
+
+
+@pytest.mark.slow
+def test_finite_modes_approach_the_interface_limit():
+    """The embedded-layer tube: modes (0, j) by collocation (one Chebyshev domain per layer)
+    close on the interface limit like 1/j once k h >> 1 (docs: j = 32, 64 give +1.661e-3,
+    +7.93e-4)."""
+    from scipy.optimize import brentq
+
+    from electrogrowth.incremental.targets import collocation_targets
+
+    tube = Tube((Layer(1.3, shear_modulus=0.2), Layer(1.4), Layer(2.0, shear_modulus=0.2)))
+
+    def root(j, nodes, lo, hi):
+        def f(x):
+            state = solve_base_state(tube.at("growth[2]", x))
+            return float(collocation_targets(state, np.array([[0.0, j]]), nodes=nodes)[0])
+
+        return brentq(f, lo, hi, xtol=1e-12)
+
+    d32 = root(32, 80, 2.176, 2.188) - INTERFACE_LIMIT
+    d64 = root(64, 100, 2.176, 2.188) - INTERFACE_LIMIT
+    assert 0 < d64 < d32 < 3e-3
+    assert 1.7 < d32 / d64 < 2.4
+    assert abs(2 * d64 - d32) < 2e-4
+
+
+@pytest.mark.slow
+def test_scan_of_a_layered_tube_ends_in_the_exact_limit():
+    """scan_modes on a layered Tube: the optimum runs to short waves, the exact limit (at the
+    inner face of two identical layers) is computed through past_surface / short_wave_limit
+    and equals the one-layer value (measured: 0.781917528431796 vs 0.7819175284317958;
+    ~8 min on a loaded machine)."""
+    from electrogrowth.bifurcation.scan import ScanOptions, scan_modes
+
+    tube = Tube((Layer(1.8), Layer(2.5)), length=3.0, stretch=0.8)
+    res = scan_modes(tube, "voltage", options=ScanOptions((0, 2), (1, 6)))
+    c = res.critical
+    assert res.surface_instability and c.kind == "surface" and c.face == "inner"
+    one = short_wave_limit(TubeParameters(2.5, 3.0, stretch=0.8), "voltage")
+    assert abs(c.value - one.value) < 1e-10
