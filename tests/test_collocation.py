@@ -50,7 +50,7 @@ class FixtureState:
     charge: float
 
     @property
-    def current_length(self):  # l = lambda_z L, as BaseState has it (collocation reads it)
+    def current_length(self) -> float:
         return self.params.stretch * self.params.length
 
     def radius(self, R):

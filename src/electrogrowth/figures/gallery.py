@@ -264,6 +264,7 @@ def pressurised_dielectric(*, quick: bool = False, mapper: Callable = map) -> Ga
     b.legend(fontsize=6.5)
     for label, rows in bulges.items():
         ok = [o for o in rows if o.critical is not None]
+        none = [o for o in rows if o.critical is None]
         c.plot(
             [1 / o.x**2 for o in ok],
             [o.value for o in ok],
@@ -272,8 +273,16 @@ def pressurised_dielectric(*, quick: bool = False, mapper: Callable = map) -> Ga
             ms=3.5,
             label=f"(0, 1) mode, {label}",
         )
+        c.plot(
+            [1 / o.x**2 for o in none],
+            [0.03] * len(none),
+            "x",
+            color=colors[label],
+            transform=c.get_xaxis_transform(),
+            label=f"(0, 1) mode, {label}: none" if none else None,
+        )
     c.set(xlabel=r"$1/L^2$", ylabel=r"critical $P_i/\mu$", xlim=(0, None))
-    c.set_title("(c) the axisymmetric mode of long tubes", loc="left", fontsize=7)
+    c.set_title("(c) (0, 1) mode of long tubes", loc="left", fontsize=7)
     c.legend(fontsize=6.5)
     onsets = by_p + [o for v in bulges.values() for o in v]
     headline = {"voltage_P0.1": by_p[pressures.index(0.1)].value}

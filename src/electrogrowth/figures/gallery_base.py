@@ -180,11 +180,10 @@ def draw_onsets(ax, onsets, *, color, label, marker="o", annotate=True):
     none = [o for o in onsets if o.critical is None]
     ax.plot(
         [o.x for o in none],
-        [0.0] * len(none),
+        [0.03] * len(none),
         "x",
         color=color,
         transform=ax.get_xaxis_transform(),
-        clip_on=False,
         label=f"{label}: no onset" if none else None,
     )
     if none and not ok and not ax.texts:
