@@ -230,7 +230,7 @@ def test_cli_scan_text(capsys):
         (["--vtk", "wall.txt"], ".vtu"),
         (["--side", "extension"], "--side"),
         (["--points", "1"], "points"),
-        (["--mode", "-1", "1"], "mode"),
+        (["--mode", "1", "0"], "mode"),  # -1 is refused by the option's type, before
     ],
 )
 def test_cli_bad_input_is_a_parameter_error(extra, message):

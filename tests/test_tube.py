@@ -39,8 +39,8 @@ CASES = [  # (Rbar_o, g, lambda_z, Vbar)
 ]
 KNOWLES = Material("knowles-1/2", (sp.sqrt(1 + 2 * (I1 - 3)) - 1) / 2 + I5 / 2)  # softening
 NON_IDEAL = [
-    Material("nh+I6/10", (I1 - 3) / 2 + I5 / 2 + I6 / 10),
-    Material("nh+I4/5", (I1 - 3) / 2 + I5 / 2 + I4 / 5),
+    Material("nh+I6/10", (I1 - 3) / 2 + I5 / 2 + I6 / 10, check_units=False),
+    Material("nh+I4/5", (I1 - 3) / 2 + I5 / 2 + I4 / 5, check_units=False),
 ]
 # the ideal neo-Hookean energy in disguise: equal on I1 >= 3, but takes the generic route
 NH_TWINS = [

@@ -37,6 +37,7 @@ GAUSS_ORDERS = (16, 24, 32, 48, 64, 96, 128, 192, 256, 384)  # Gauss-Legendre no
 _SCAN_RATIO, _SCAN_SPAN = 1.08, 1e3  # threshold scan: lambda_i0 1.08^k up to 1e3 lambda_i0
 _QUIET = dict(invalid="ignore", divide="ignore", over="ignore")
 _RTOL_MIN = 4.0 * np.finfo(float).eps  # brentq's smallest rtol
+_PROBE_MARGIN = 1.1  # node-count probes stay 10 % inside the energy's domain (_nodes)
 
 
 @functools.cache
@@ -207,8 +208,12 @@ def _mechanical(material, outer_radius, growth, stretch, rtol) -> tuple[float, i
 
 def _nodes(tube: UniformWall, lam: np.ndarray, rtol: float) -> int:
     """Fewest nodes whose M at lam agrees with the next rule to 1e-2 rtol of the stress scale
-    (four successive rules per stress call)."""
-    lam = lam[tube.in_domain(lam)]
+    (four successive rules per stress call). Probes within _PROBE_MARGIN of the energy's edge
+    are left out: near a locking stretch (Gent) the stress has a pole just outside the inner
+    face, which no Gauss rule in R resolves, and evaluating it there loses digits to
+    cancellation in 1 - (I1 - 3) / Jm. The rule is only a start: the solved state raises the
+    count until its own independent quadrature meets rtol (solve_base_state)."""
+    lam = lam[tube.in_domain(lam * _PROBE_MARGIN)]
     for start in range(0, len(GAUSS_ORDERS) - 1, 3):
         orders = GAUSS_ORDERS[start : start + 4]
         hoops = tube.hoops(lam, 0.0, orders)

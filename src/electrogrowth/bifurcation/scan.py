@@ -63,12 +63,14 @@ def _surface_point(limit, side) -> CriticalPoint:
     )
 
 
-def _check_range(name, rng, lowest):
+def _check_range(name, rng, lowest, highest):
     lo, hi = rng
-    if int(lo) != lo or int(hi) != hi or lo < lowest or hi < lo:
+    whole = all(isinstance(x, (int, float, np.number)) and np.isfinite(x) for x in rng)
+    if not whole or int(lo) != lo or int(hi) != hi or lo < lowest or hi < lo or hi > highest:
         raise ParameterError(
             f"{name} range {list(rng)} is invalid; need integers "
-            f"{lowest} <= {name}_min <= {name}_max"
+            f"{lowest} <= {name}_min <= {name}_max <= {highest} (shorter waves are the"
+            " exact short-wave limit, which every scan computes)"
         )
 
 
@@ -106,9 +108,9 @@ class ScanOptions:
     torsional: bool = True
 
     def __post_init__(self):
-        for name, lowest in (("m", 0), ("n", 1)):
+        for name, lowest, highest in (("m", 0, M_CAP), ("n", 1, N_CAP)):
             rng = getattr(self, f"{name}_range")
-            _check_range(name, rng, lowest)
+            _check_range(name, rng, lowest, highest)
             object.__setattr__(self, f"{name}_range", (int(rng[0]), int(rng[1])))
         if isinstance(self.top, bool) or int(self.top) != self.top or self.top < 1:
             raise ParameterError(f"top = {self.top!r} is invalid; need an integer >= 1")
@@ -354,7 +356,7 @@ def _scan_once(
         )
         return ScanResult(crit, (), m_range, n_range)
     best = found[0]
-    w = 1e-7 * max(1.0, abs(best.value))
+    w = 1e-7 * abs(best.value)  # relative: a small value's bracket must stay on its side of 0
     crit = critical_value(
         params,
         best.m,

@@ -13,6 +13,7 @@ from __future__ import annotations
 import argparse
 import importlib
 import os
+import re
 import sys
 from collections.abc import Callable
 from importlib.metadata import version
@@ -37,8 +38,17 @@ PROG = "electrogrowth"
 
 
 class _Parser(argparse.ArgumentParser):
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        # A value such as -inf, -1e5 or -nan is a (bad) number, not an unknown option: let
+        # the option's type name it instead of "expected one argument".
+        self._negative_number_matcher = _NEGATIVE_NUMBER
+
     def error(self, message):
         raise UsageError(message)
+
+
+_NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$", re.I)
 
 
 #: Subcommand name -> (one-line help, configure(parser), run(args) -> exit status).

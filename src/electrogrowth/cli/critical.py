@@ -6,11 +6,16 @@ import argparse
 import json
 import math
 
+import numpy as np
+
+from ..basestate.tube import solve_base_state
 from ..bifurcation.critical import critical_value
-from ..bifurcation.scan import scan_modes
+from ..bifurcation.scan import scan_grid, scan_modes
 from ..errors import ConvergenceError, ParameterError
 from ..incremental.accuracy import check_rtol
+from ..incremental.targets import collocation_targets
 from ..model.controls import parse_control
+from ..model.params import CONTROLS, TubeParameters
 from ..outcomes import Kind
 from .options import (
     MODE_COVERAGE,
@@ -95,6 +100,10 @@ def run_critical(args) -> int:
         warn(edge_warning(result))
     if args.certify and crit.kind == Kind.BIFURCATION:
         record.update(_certify(params, crit, args))
+        if mode is None:  # a scan: certify the choice of the mode as well
+            record.update(
+                _certify_choice(params, crit, result, options=scan_options_from_args(args))
+            )
     if getattr(args, "scales", None) is not None:
         record["physical"] = physical_record(record, args.scales)
     if args.json:
@@ -130,6 +139,30 @@ def _certify(params, crit, args) -> dict:
         "certified_value": check.value,
         "certification_difference": diff,
     }
+
+
+def _certify_choice(params, crit, result, *, options) -> dict:
+    """Every mode of the scanned ranges is still stable just before the critical value by
+    the other method (collocation, positive on the stable side): no mode comes first.
+    One-layer tubes and the controls growth, stretch and voltage (others: {})."""
+    if not isinstance(params, TubeParameters) or crit.solve_for not in CONTROLS:
+        return {}
+    sense = -1.0 if crit.side == "compression" else 1.0
+    w = max(1e-6 * abs(crit.value), 10 * crit.error_estimate)
+    before = params.at(crit.solve_for, crit.value - sense * w)
+    modes = scan_grid(
+        result.m_range, result.n_range, False, (options.prismatic, options.torsional)
+    )
+    f = collocation_targets(solve_base_state(before), modes)
+    first = int(np.argmin(f))
+    if not f[first] > 0:
+        m, n = (int(x) for x in modes[first, :2])
+        raise ConvergenceError(
+            f"not certified: by collocation mode ({m}, {n}) is already unstable at"
+            f" {crit.solve_for} = {crit.value - sense * w:.12g}, before"
+            f" the scan's critical mode ({crit.m}, {crit.n}) at {crit.value:.12g}"
+        )
+    return {"certified_modes": int(len(modes))}
 
 
 def value_name(solve_for: str) -> str:
@@ -206,6 +239,11 @@ def _print_text(rec: dict, runners: list, scales=None) -> None:
         lines.append(
             f"  certified by {rec['certified_by']}: {rec['certified_value']:.12g}"
             f" (relative difference {rec['certification_difference']:.1e})"
+            + (
+                f"; all {rec['certified_modes']} scanned modes stable before it"
+                if "certified_modes" in rec
+                else ""
+            )
         )
     if rec.get("short_wave_limit") is not None and rec["kind"] != Kind.SURFACE:
         lines.append(

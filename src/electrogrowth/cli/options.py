@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import math
 
-from ..bifurcation.scan import ScanOptions
+from ..bifurcation.scan import M_CAP, N_CAP, ScanOptions
 from ..errors import ParameterError
 from ..incremental.targets import FAMILIES, METHODS, Family, check_mode
 from ..model.controls import TUBE_CONTROLS
@@ -24,6 +24,33 @@ def finite_number(text: str) -> float:
     if not math.isfinite(value):
         raise argparse.ArgumentTypeError(f"{text!r} is not a finite number")
     return value
+
+
+def bounded_int(lowest: int, highest: int, why: str = ""):
+    """An argument type: a whole number in [lowest, highest], else a one-line error naming
+    the value, the range and ``why`` the range ends there (never an overflow or a hang)."""
+
+    def parse(text: str) -> int:
+        try:
+            value = int(text) if len(text) <= 20 else None
+        except ValueError:
+            value = None
+        if value is None or not lowest <= value <= highest:
+            shown = text if len(text) <= 20 else text[:17] + "..."
+            reason = f" ({why})" if why else ""
+            raise argparse.ArgumentTypeError(
+                f"{shown!r} is not a whole number from {lowest} to {highest}{reason}"
+            )
+        return value
+
+    parse.__name__ = "whole number"  # argparse names the type in its messages
+    return parse
+
+
+#: The largest m and n a scan may start from, and of one --mode: beyond them the waves are
+#: short enough for the exact short-wave (half-space) limit, which every scan computes.
+MODE_LIMITS = (M_CAP, N_CAP)
+SHORT_WAVES = "larger wavenumbers are covered by the exact short-wave limit"
 
 
 # -- the tube --------------------------------------------------------------------------------
@@ -216,7 +243,7 @@ def add_mode_range_options(group, *, top: bool = False) -> None:
     default = ScanOptions()
     group.add_argument(
         "--m-max",
-        type=int,
+        type=bounded_int(0, M_CAP, SHORT_WAVES),
         default=default.m_range[1],
         metavar="M_MAX",
         help="largest circumferential wavenumber m of the scan, from 0"
@@ -229,7 +256,7 @@ def add_mode_range_options(group, *, top: bool = False) -> None:
     )
     group.add_argument(
         "--n-max",
-        type=int,
+        type=bounded_int(1, N_CAP, SHORT_WAVES),
         default=default.n_range[1],
         metavar="N_MAX",
         help="largest axial half-wavenumber n of the scan, from 1 (default"
@@ -239,7 +266,7 @@ def add_mode_range_options(group, *, top: bool = False) -> None:
     if top:
         group.add_argument(
             "--top",
-            type=int,
+            type=bounded_int(1, 1000),
             default=default.top,
             help=f"number of modes to report in a scan (default {default.top})",
         )
@@ -250,7 +277,7 @@ def add_mode_option(group) -> None:
     group.add_argument(
         "--mode",
         nargs=2,
-        type=int,
+        type=bounded_int(0, MODE_LIMITS[1], SHORT_WAVES),
         metavar=("M", "N"),
         help="one mode instead of a scan: circumferential wavenumber m >= 0"
         " (lobes around) and axial half-wavenumber n >= 0 (half-waves"

@@ -5,6 +5,7 @@ when one of them runs, so the other commands work without them."""
 from __future__ import annotations
 
 import argparse
+import signal
 import sys
 from pathlib import Path
 
@@ -87,14 +88,30 @@ def run_sweep(args) -> int:
             progress=not args.quiet,
             source_text=args.file.read_text(encoding="utf-8"),
         )
-    except KeyboardInterrupt:
+    except KeyboardInterrupt as stop:
         print(
-            f"electrogrowth: interrupted; the finished chunks are saved in {out}: run the"
-            " same command again to resume",
+            f"electrogrowth: {stop or 'interrupted'}; the finished chunks are saved in {out}:"
+            " run the same command again to resume",
             file=sys.stderr,
         )
-        return 130
+        return 128 + getattr(stop, "signum", signal.SIGINT)
     print(summary.text())
+    failed = summary.counts.get("failed", 0) + summary.counts.get("error", 0)
+    if failed and failed == sum(v for k, v in summary.counts.items() if k != "pending"):
+        from ..sweep.store import open_results  # the sweep extra
+
+        ds = open_results(out)
+        first = next(
+            str(m)
+            for s, m in zip(ds["status"].values.flat, ds["message"].values.flat)
+            if s != "ok"
+        )
+        print(
+            f"electrogrowth: error: every computed point of the sweep failed ({failed});"
+            f" the first: {' '.join(first.split())}",
+            file=sys.stderr,
+        )
+        return 2
     return 0
 
 

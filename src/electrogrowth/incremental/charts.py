@@ -82,6 +82,46 @@ def determinant(a):
 
 
 @nb.njit(cache=True)
+def right_divide(b, a, out):
+    """out = b a^-1 (4x4) by Gaussian elimination with partial pivoting on a^T; False, and
+    ``out`` undefined, at a zero or non-finite pivot or a non-finite result. Unlike
+    np.linalg.solve it never raises, which inside the parallel kernel would not be caught
+    (the caller turns False into the NO_CHART status)."""
+    n = a.shape[0]
+    m = a.T.copy()  # solve a^T x = b^T: x = out^T
+    x = b.T.copy()
+    for c in range(n):
+        piv = c
+        for i in range(c + 1, n):
+            if abs(m[i, c]) > abs(m[piv, c]):
+                piv = i
+        if not np.isfinite(m[piv, c]) or m[piv, c] == 0.0:
+            return False
+        if piv != c:
+            for j in range(n):
+                m[c, j], m[piv, j] = m[piv, j], m[c, j]
+                x[c, j], x[piv, j] = x[piv, j], x[c, j]
+        for i in range(c + 1, n):
+            f = m[i, c] / m[c, c]
+            for j in range(c, n):
+                m[i, j] -= f * m[c, j]
+            for j in range(n):
+                x[i, j] -= f * x[c, j]
+    for c in range(n - 1, -1, -1):
+        for j in range(n):
+            acc = x[c, j]
+            for i in range(c + 1, n):
+                acc -= m[c, i] * x[i, j]
+            x[c, j] = acc / m[c, c]
+    for i in range(n):
+        for j in range(n):
+            if not np.isfinite(x[j, i]):
+                return False
+            out[i, j] = x[j, i]
+    return True
+
+
+@nb.njit(cache=True)
 def switch_chart(z, J):
     """Best chart for the subspace z~ (chart J); returns (z_new, J_new, sign of det W1)."""
     X = np.zeros((8, 4))  # basis in hat coordinates: X = P_J^T [I; z]
@@ -105,7 +145,9 @@ def switch_chart(z, J):
         d = determinant(W1)
         if not np.isfinite(d) or abs(d) < 1e-12:  # W1 (entries O(1)) not invertible
             continue
-        zn = np.linalg.solve(W1.T, W2.T).T  # W2 W1^-1
+        zn = np.empty((4, 4))
+        if not right_divide(W2, W1, zn):  # W2 W1^-1 not representable: not this chart
+            continue
         size = np.max(np.abs(zn))
         if size < best:
             best, bestJ, bestsgn = size, Jn, np.sign(d)

@@ -203,11 +203,43 @@ def impedance_targets(state, modes, *, rtol: float = 1e-12, max_steps: int = 200
     )
     bad = status != 0
     if bad.any():
-        i = int(np.argmax(bad))
-        raise ConvergenceError(
-            f"impedance integration failed for mode (m, n) = ({modes[i, 0]:g}, "
-            f"{modes[i, 1]:g}) ({row_family(modes[i])}): {STATUS_TEXT[int(status[i])]}"
+        f[bad] = _retry(state, modes[bad], status[bad], rtol, max_steps)
+    return f
+
+
+RETRY_TIGHTER = (1e-2, 1e-4)  # a failed mode is integrated again at rtol times these
+
+
+def _retry(state, modes, status, rtol, max_steps) -> np.ndarray:
+    """Targets of the modes whose integration failed (a step size underflow where the
+    error estimate of a loose rtol misjudges a steep stretch of z~, or a chart lost):
+    again at tighter tolerances (never looser), then by collocation, whose target has
+    the same sign and the same zeros. ConvergenceError only if all of these fail."""
+    f = np.full(modes.shape[0], np.nan)
+    for factor in RETRY_TIGHTER:
+        todo = np.isnan(f)
+        tight = max(rtol * factor, 1e-14)
+        tables = stack_tables([build_table(state, tol=Accuracy(tight).table)])
+        k = modes[todo, 1] * math.pi / state.current_length
+        m = np.ascontiguousarray(modes[todo, 0])
+        pairs = mode_pairs(modes[todo])
+        got, code, _ = target_serial(
+            m, k, pairs, np.zeros(m.size, dtype=np.int64), tables, tight, max_steps
         )
+        f[todo] = np.where(code == 0, got, np.nan)
+        if not np.isnan(f).any():
+            return f
+    for i in np.flatnonzero(np.isnan(f)):
+        try:
+            f[i] = collocation_targets(state, modes[i : i + 1])[0]
+        except (ArithmeticError, ValueError, np.linalg.LinAlgError):
+            pass
+        if not np.isfinite(f[i]):
+            raise ConvergenceError(
+                f"impedance integration failed for mode (m, n) = ({modes[i, 0]:g}, "
+                f"{modes[i, 1]:g}) ({row_family(modes[i])}): {STATUS_TEXT[int(status[i])]},"
+                " also at tighter tolerances and by collocation"
+            )
     return f
 
 

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import dataclasses
 import functools
+import math
 from collections.abc import Callable
 
 import numpy as np
@@ -148,6 +149,22 @@ def _energy_value(energy: sp.Expr) -> Callable:
     return sp.lambdify(INVARIANTS, energy, "numpy")
 
 
+def reference_moduli(energy: sp.Expr) -> tuple[float, float]:
+    """(mu, eps) of an energy in the reference state I1 = I2 = 3, I4 = I5 = I6 = 0: the
+    small-strain shear modulus mu = 2 (Omega_1 + Omega_2) and the small-field permittivity
+    eps = 1 / (2 (Omega_4 + Omega_5 + Omega_6)) (all three electric invariants equal D.D
+    there). NaN where a derivative is not finite."""
+    at = {I1: 3, I2: 3, I4: 0, I5: 0, I6: 0}
+    try:
+        w = [complex(sp.diff(energy, s).subs(at).evalf()) for s in INVARIANTS]
+    except (TypeError, ValueError, ZeroDivisionError):
+        return math.nan, math.nan
+    if any(abs(x.imag) > 0 or not np.isfinite(x.real) for x in w):
+        return math.nan, math.nan
+    mu, e = 2.0 * (w[0].real + w[1].real), 2.0 * (w[2].real + w[3].real + w[4].real)
+    return mu, (1.0 / e if e != 0 else math.inf)
+
+
 def _invariants(l1, l2, l3, d):
     dt2 = (d / l1) ** 2
     return (
@@ -170,6 +187,18 @@ class Material:
     energy : sympy.Expr
         Omega in the symbols ``I1, I2, I4, I5, I6`` of this module, in units mu = eps = 1
         (the initial shear modulus and permittivity), zero-stress in the virtual state.
+    check_units : bool, keyword-only
+        Refuse (MaterialError) an energy whose reference state (I1 = I2 = 3, D = 0) has a
+        shear modulus mu = 2 (Omega_1 + Omega_2) or a permittivity
+        eps = 1 / (2 (Omega_4 + Omega_5 + Omega_6)) other than 1 (default True): every
+        result is in units of mu and eps, so such an energy would silently give numbers in
+        the wrong units. :meth:`normalized` rescales one to these units instead; False
+        keeps a deliberately scaled energy (e.g. a layer written with its own moduli).
+
+    Raises
+    ------
+    MaterialError
+        An expression in other symbols, or (check_units) moduli other than 1, naming which.
 
     Examples
     --------
@@ -181,6 +210,7 @@ class Material:
 
     name: str
     energy: sp.Expr
+    check_units: bool = dataclasses.field(default=True, kw_only=True, compare=False, repr=False)
 
     def __post_init__(self):
         # Match invariants by name, so sp.Symbol("I1") or a string energy work too.
@@ -197,6 +227,43 @@ class Material:
                 " use only I1, I2, I4, I5, I6 with parameters substituted"
             )
         object.__setattr__(self, "energy", expr)
+        if self.check_units:
+            mu, eps = reference_moduli(expr)
+            for what, value, why in (
+                ("shear modulus mu = 2 (dOmega/dI1 + dOmega/dI2)", mu, "stresses"),
+                ("permittivity eps = 1 / (2 (dOmega/dI4 + dOmega/dI5 + dOmega/dI6))", eps, "D"),
+            ):
+                if not abs(value - 1.0) <= 1e-12:
+                    raise MaterialError(
+                        f"energy of {self.name!r} has {what} = {value:.12g} in the reference"
+                        f" state, not 1: every result is in units mu = eps = 1, so {why}"
+                        " would be in the wrong units; rescale it, or build it with"
+                        " Material.normalized(name, energy)"
+                    )
+
+    @classmethod
+    def normalized(cls, name: str, energy) -> Material:
+        """The energy in units mu = eps = 1: Omega'(I1, I2, I4, I5, I6) =
+        Omega(I1, I2, s I4, s I5, s I6) / mu with s = mu eps, mu and eps of the reference
+        state (see ``check_units``); stresses are then in units of mu and D of sqrt(mu eps).
+
+        >>> mat = Material.normalized("stiff", (I1 - 3) + I5 / 4)
+        >>> mat.energy
+        I1/2 + I5/2 - 3/2
+        """
+        raw = cls(name, energy, check_units=False).energy
+        mu, eps = reference_moduli(raw)
+        for what, value in (("shear modulus", mu), ("permittivity", eps)):
+            if not (math.isfinite(value) and value > 0):
+                raise MaterialError(
+                    f"energy of {name!r} has {what} {value:.6g} in the reference state;"
+                    " need a finite positive value to rescale to it"
+                )
+        at = {I1: 3, I2: 3, I4: 0, I5: 0, I6: 0}  # the same values, kept exact for sympy
+        mu = sp.nsimplify(2 * (sp.diff(raw, I1) + sp.diff(raw, I2)).subs(at))
+        s = mu / sp.nsimplify(2 * sum(sp.diff(raw, x) for x in (I4, I5, I6)).subs(at))
+        scaled = raw.subs({I4: s * I4, I5: s * I5, I6: s * I6}, simultaneous=True) / mu
+        return cls(name, sp.expand(scaled) if raw.is_polynomial(*INVARIANTS) else scaled)
 
     def _derivs(self, l1, l2, l3, d, *, hessian: bool = True):
         l1, l2, l3, d = np.broadcast_arrays(*(np.asarray(x, float) for x in (l1, l2, l3, d)))

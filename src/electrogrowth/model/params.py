@@ -19,6 +19,16 @@ def _check(name: str, value: float, valid: str, ok) -> None:
         raise ParameterError(f"{name} = {value!r} is out of range; valid range: {valid}")
 
 
+#: The box in which every solver is supported (Rbar_o max, L min and max, g min and max,
+#: lambda_z / g min and max); it holds every march (stretch 0.05 g to 8 g, growth 1 to 6).
+SUPPORTED = (100.0, 1e-2, 1e3, 1e-2, 1e2, 0.02, 50.0)
+SUPPORTED_WHY = (
+    "outside it the elastic stretches exceed 50, or the waves a scan resolves are over 1e3"
+    " times shorter than the tube's radius or length, beyond the kernel's step budget"
+    " (a search would run for hours or lose all digits)"
+)
+
+
 @dataclasses.dataclass(frozen=True)
 class TubeParameters:
     """One tube and its loading.
@@ -47,11 +57,25 @@ class TubeParameters:
     material: Material = dataclasses.field(default_factory=neo_hookean)
 
     def __post_init__(self):
-        _check("outer radius Rbar_o", self.outer_radius, "1 < Rbar_o < inf", lambda v: v > 1)
-        _check("length L", self.length, "0 < L < inf", lambda v: v > 0)
-        _check("growth factor g", self.growth, "0 < g < inf", lambda v: v > 0)
+        (ro_max, l_lo, l_hi, g_lo, g_hi, e_lo, e_hi) = SUPPORTED
+        _check(
+            "outer radius Rbar_o", self.outer_radius, f"1 < Rbar_o <= {ro_max:g}", lambda v: 1 < v
+        )
+        _check("length L", self.length, f"{l_lo:g} <= L <= {l_hi:g}", lambda v: v > 0)
+        _check("growth factor g", self.growth, f"{g_lo:g} <= g <= {g_hi:g}", lambda v: v > 0)
         _check("axial stretch lambda_z", self.stretch, "0 < lambda_z < inf", lambda v: v > 0)
         _check("voltage Vbar", self.voltage, "0 <= Vbar < threshold", lambda v: v >= 0)
+        for name, value, lo, hi in (
+            ("outer radius Rbar_o", self.outer_radius, 1.0, ro_max),
+            ("length L", self.length, l_lo, l_hi),
+            ("growth factor g", self.growth, g_lo, g_hi),
+            ("elastic axial stretch lambda_z / g", self.stretch / self.growth, e_lo, e_hi),
+        ):
+            if not value <= hi or not lo <= value:
+                raise ParameterError(
+                    f"{name} = {value:.6g} is outside the supported range {lo:g} to {hi:g}:"
+                    f" {SUPPORTED_WHY}"
+                )
         if not isinstance(self.material, Material):
             raise ParameterError(f"material = {self.material!r} is not a Material")
         for f in ("outer_radius", "length", "growth", "stretch", "voltage"):

@@ -11,9 +11,12 @@ only this process writes the store (store.py), so workers need no shared file sy
 
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import os
+import signal
 import sys
+import threading
 import time
 import uuid
 from pathlib import Path
@@ -90,7 +93,7 @@ def compute_sweep(
 
     start = time.perf_counter()
     store = open_store(out, config, source_text=source_text)
-    with store.locked():
+    with store.locked(), _terminate_as_interrupt():
         pending = store.pending_chunks()
         chunks = len(store.blocks)
         run = store.next_run()
@@ -110,7 +113,14 @@ def compute_sweep(
         results = _results(tasks, workers, scheduler)
         try:
             for result in results:
-                store.write_chunk(result, run)
+                try:
+                    store.write_chunk(result, run)
+                except OSError as exc:  # full disk, read-only store, lost mount
+                    raise SweepError(
+                        f"cannot write the results to {out}:"
+                        f" {exc.strerror or exc}; the chunks finished before are saved:"
+                        " free space or fix the permissions and run the same command again"
+                    ) from None
                 bar.update(len(result.points))
                 if any(p.status != Status.OK for p in result.points):
                     bar.set_postfix_str(
@@ -129,6 +139,54 @@ def compute_sweep(
         counts,
         time.perf_counter() - start,
     )
+
+
+class Terminated(KeyboardInterrupt):
+    """SIGTERM (a batch scheduler's time limit) received: handled like Ctrl-C, so the
+    workers are stopped and the finished chunks stay saved."""
+
+    def __init__(self, signum: int):
+        super().__init__(f"terminated by signal {signum}")
+        self.signum = signum
+
+
+@contextlib.contextmanager
+def _terminate_as_interrupt():
+    """While a sweep runs in the main thread, SIGTERM raises Terminated (the default action
+    would end this process at once and leave the workers running)."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def interrupt(signum, frame):
+        raise Terminated(signum)
+
+    previous = signal.signal(signal.SIGTERM, interrupt)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
+def _exit_with_parent(parent: int) -> None:
+    """Worker initializer: end this worker when the driver ends, even by SIGKILL (no
+    orphan keeps computing, nor keeps the resource tracker alive): the kernel's
+    parent-death signal on Linux, and a watcher thread everywhere."""
+    with contextlib.suppress(OSError, AttributeError, TypeError):
+        import ctypes
+
+        pr_set_pdeathsig = 1
+        libc = ctypes.CDLL(None, use_errno=True)
+        libc.prctl(pr_set_pdeathsig, signal.SIGKILL, 0, 0, 0)
+    if os.getppid() != parent:  # the driver died before the signal was set
+        os._exit(1)
+
+    def watch():
+        while os.getppid() == parent:
+            time.sleep(0.5)
+        os._exit(1)
+
+    threading.Thread(target=watch, name="exit-with-parent", daemon=True).start()
 
 
 def _first_failure(result: ChunkResult) -> str:
@@ -177,7 +235,12 @@ def _on_process_pool(tasks, workers):
     from concurrent.futures.process import BrokenProcessPool
 
     workers = min(workers, len(tasks))
-    pool = ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn"))
+    pool = ProcessPoolExecutor(
+        workers,
+        mp_context=multiprocessing.get_context("spawn"),
+        initializer=_exit_with_parent,
+        initargs=(os.getpid(),),
+    )
     try:
         futures = [pool.submit(compute_chunk, task) for task in tasks]
         for future in as_completed(futures):
