@@ -1,17 +1,15 @@
-"""``--energy "(I1 - 3)/2 + 0.1*(I2 - 3) + I5/2"``: a user's energy on the command line.
+"""``--energy "0.4*(I1 - 3) + 0.1*(I2 - 3) + I5/2"``: a user's energy on the command line.
 
 The text is read by model/energy_text.py (numbers, I1, I2, I4, I5, I6 and a few functions
 only; one error line naming the problem, exit status 2). An energy whose initial shear
-modulus or permittivity is not 1 is accepted with a one-line warning on stderr: the results
-are then in the units of its coefficients.
+modulus or permittivity is not 1 is refused the same way (model/materials.py): every result
+would be in the wrong units.
 """
 
 from __future__ import annotations
 
-import sys
-
 from ..errors import ParameterError
-from ..model.energy_text import energy_material, units_note
+from ..model.energy_text import energy_material
 from ..model.materials import Material
 
 
@@ -24,8 +22,4 @@ def energy_from_args(args) -> Material:
                 f"{flag} = {value:g} is a parameter of a built-in --material, not of --energy;"
                 " write it into the expression"
             )
-    material = energy_material(args.energy)
-    note = units_note(material)
-    if note:
-        print(f"electrogrowth: warning: {note}", file=sys.stderr)
-    return material
+    return energy_material(args.energy)

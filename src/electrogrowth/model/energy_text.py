@@ -8,8 +8,8 @@ MaterialError line naming the problem.
 
 The package's units are mu = eps = 1: an energy whose initial shear modulus
 2 (dOmega/dI1 + dOmega/dI2) or inverse permittivity 2 (dOmega/dI4 + dOmega/dI5 + dOmega/dI6)
-at the undeformed state is not 1 is allowed (it is then measured in the units of its own
-coefficients), and :func:`units_note` says so in one line for the command line to print.
+at the undeformed state is not 1 is refused by :class:`~.materials.Material`, naming which
+(``Material.normalized`` rescales one; a layer's own modulus goes in its shear_modulus).
 """
 
 from __future__ import annotations
@@ -27,7 +27,6 @@ FUNCTIONS = ("log", "exp", "sqrt", "tanh", "atan", "cosh", "sinh", "pi", "E")
 _TOKEN = re.compile(
     r"\s*(?:(\d+\.?\d*(?:[eE][-+]?\d+)?|\.\d+(?:[eE][-+]?\d+)?)|([A-Za-z_]\w*)|(\*\*|[-+*/^(),]))"
 )
-_UNIT_TOL = 1e-9
 
 
 def energy_material(text: str, *, name: str | None = None) -> Material:
@@ -49,15 +48,16 @@ def energy_material(text: str, *, name: str | None = None) -> Material:
     if not label:
         raise MaterialError("energy is empty; write Omega in I1, I2, I4, I5, I6")
     _check_tokens(label)
+    text = label.replace("^", "**")
     try:
-        material = Material(name or label, label.replace("^", "**"))
+        parsed = Material(name or label, text, check_units=False)
     except MaterialError as exc:
         reason = "it does not parse" if "parse" in str(exc) or "Syntax" in str(exc) else exc
         raise MaterialError(
             _one_line(f"energy {label!r} is not a valid expression: {reason}")
         ) from None
-    _reference_values(material.energy, label)
-    return material
+    _reference_values(parsed.energy, label)
+    return Material(name or label, text)  # refuses moduli other than 1, naming which
 
 
 def _check_tokens(text: str) -> None:
@@ -100,27 +100,6 @@ def _reference_values(energy: sp.Expr, label: str) -> tuple[float, float]:
             " undeformed state I1 = I2 = 3, I4 = I5 = I6 = 0"
         )
     return mu, inv_eps
-
-
-def units_note(material: Material) -> str:
-    """One line when the energy's initial shear modulus or permittivity is not 1 (then the
-    results are in the units of its own coefficients, not of mu and eps), else "".
-
-    >>> units_note(energy_material("(I1 - 3)/2 + 0.1*(I2 - 3) + I5/2"))  # doctest: +ELLIPSIS
-    'the energy has initial shear modulus 2 (dOmega/dI1 + dOmega/dI2) = 1.2 ...'
-    """
-    mu, inv_eps = _reference_values(material.energy, material.name)
-    notes = []
-    if abs(mu - 1.0) > _UNIT_TOL:
-        notes.append(f"initial shear modulus 2 (dOmega/dI1 + dOmega/dI2) = {mu:.6g}")
-    if abs(inv_eps - 1.0) > _UNIT_TOL:
-        notes.append(f"1 / permittivity 2 (dOmega/dI4 + dOmega/dI5 + dOmega/dI6) = {inv_eps:.6g}")
-    if not notes:
-        return ""
-    return (
-        f"the energy has {' and '.join(notes)} at the undeformed state, not 1: stresses"
-        " and Vbar are in the units of its coefficients, not of its initial mu and eps"
-    )
 
 
 def _one_line(text: str) -> str:
