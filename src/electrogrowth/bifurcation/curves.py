@@ -24,11 +24,12 @@ already unstable at the start of the march) is kept as kind "failed" with its me
 By continuation (``follow``, the default with the builtin ``map``), the grid points between
 full scans are not scanned: the last scan's critical mode and runners-up are followed
 (:class:`_Follower`: each mode's value predicted from its previous points, then one
-bracketed solve), and the result is accepted only if every mode of the scan's grid is
-still on its stable side just before the new critical value (two batches of loose
-targets: at the start of the march and there), no face is past its short-wave limit, and
-the critical mode is not on the edge of the ranges; otherwise, at the ends and every
-CHECK_EVERY points the point is a full scan. Switches are located and checked by scans as
+bracketed solve of the one predicted first; or the exact short-wave limit, if it came
+first), and the result is accepted only if every mode of the scan's grid is still on its
+stable side (its sign on the unloaded tube, loose targets, as in the scan's march) just
+before it, no face is past its short-wave limit (for a mode), and the mode is not on the
+edge of the ranges; otherwise, at the ends and every CHECK_EVERY points the point is a
+full scan. Switches are located and checked by scans as
 before, so the curve equals the curve of full scans.
 """
 
@@ -397,8 +398,8 @@ class _Follower:
             self.scan = None
             return self.unit(x)
         pt = _scan_point(x, res)
-        ok = pt.kind == Kind.BIFURCATION and not pt.surface and math.isnan(pt.short_wave_limit)
-        self.scan = pt if ok else None
+        mode = pt.kind == Kind.BIFURCATION and not pt.surface and math.isnan(pt.short_wave_limit)
+        self.scan = pt if mode or pt.kind == Kind.SURFACE else None
         self.ranges = (res.m_range, res.n_range)
         self.since = 0
         return pt
@@ -423,8 +424,14 @@ class _Follower:
         return guess - w, guess + w
 
     def _follow(self, x: float) -> CurvePoint | None:
-        """The followed mode predicted first, solved, or None if the check fails."""
+        """The followed mode predicted first, solved, or None if the check fails (the
+        short-wave limit, if it came first at the last scan)."""
         at = self.params.at(self.along, x)
+        if self.scan.kind == Kind.SURFACE:
+            limit = short_wave_limit(at, self.solve_for, side=self.side)
+            if limit.kind != Kind.SURFACE or not self._all_stable(at, None, limit.value):
+                return None
+            return CurvePoint(x, limit.value, NO_MODE, Kind.SURFACE, "", (), True, limit.value)
         modes = [self.scan.mode] + [(m, n) for m, n, _ in self.scan.runners_up]
         guesses = [(mode, self._predict(mode, x)) for mode in modes]
         guesses = [(mode, b) for mode, b in guesses if b is not None]
@@ -442,16 +449,18 @@ class _Follower:
         return CurvePoint(x, c.value, best, Kind.BIFURCATION)
 
     def _all_stable(self, at: TubeParameters, best, value: float) -> bool:
-        """Every mode of the scan's grid but ``best`` is still on its stable side (the
-        sign on the unloaded tube, as in a scan's march; loose targets) just before
-        ``value``."""
+        """Every mode of the scan's grid but ``best`` (None: all) is still on its stable
+        side (the sign on the unloaded tube, as in a scan's march; loose targets) just
+        before ``value``."""
         o = self.options
         grid = scan_grid(*self.ranges, o.extend, (o.prismatic, o.torsional))
         key = (at.material, at.outer_radius, at.length, self.ranges)
         if self.signs is None or self.signs[0] != key:
             ref = functools.partial(impedance_targets, rtol=SCAN_STABLE_SIGNS)
             self.signs = key, unloaded_signs(at, grid, ref)
-        other = ~((grid[:, 0] == best[0]) & (grid[:, 1] == best[1]))
+        other = np.ones(len(grid), bool)
+        if best is not None:
+            other = ~((grid[:, 0] == best[0]) & (grid[:, 1] == best[1]))
         before = value - self.sense * 1e-9 * max(1.0, abs(value))
         state = solve_base_state(at.at(self.solve_for, before))
         signs = self.signs[1][other] * impedance_targets(state, grid[other], rtol=SCAN_SIGNS)
