@@ -73,10 +73,13 @@ def test_table_reproduces_base_state():
     from numpy.polynomial import chebyshev as C
 
     want = np.concatenate([state.moduli(R), state.pressure(R)[:, None]], axis=1)
-    got = np.stack([C.chebval(x, table.coef[table.fmap[f]]) for f in range(24)], axis=1)
-    assert np.abs(got - want).max() <= 1e-13 * np.abs(want).max()
-    r = np.sqrt(table.inner_radius_sq + table.area_ratio * (R**2 - 1))
-    np.testing.assert_allclose(r, state.radius(R), rtol=1e-14)
+    got = np.stack([C.chebval(x, table.coef[0, table.fmap[0, f]]) for f in range(26)], axis=1)
+    assert np.abs(got[:, :24] - want).max() <= 1e-13 * np.abs(want).max()
+    r = state.radius(R)  # r^2 = r_i^2 + (g^3 / lambda_z)(R^2 - 1), w = (dr/dR) / r
+    # chopped at 8 tol times each function's largest value (tol = 1e-15)
+    np.testing.assert_allclose(got[:, 24], r, rtol=0, atol=16e-15 * r.max())
+    w = 1.3**3 / 1.1 * R / r**2
+    np.testing.assert_allclose(got[:, 25], w, rtol=0, atol=16e-15 * w.max())
 
 
 def test_batch_equals_one_by_one():

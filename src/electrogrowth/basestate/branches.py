@@ -402,12 +402,30 @@ class _Prepared:
     wall: Wall
     start: tuple[float, float]  # unloaded (V = 0, P_i = P_o)
     loaded: tuple[float, float]  # the tube's pressures at V = 0
-    voltage: Threshold  # the voltage branch from `loaded`
+
+    @property
+    def branch(self) -> Branch:
+        """The voltage branch at the tube's pressures."""
+        tube = self.wall.tube
+        return Branch(self.wall, "voltage", dp=tube.inner_pressure - tube.outer_pressure)
+
+    @functools.cached_property
+    def voltage(self) -> Threshold:
+        """The threshold of the voltage branch from ``loaded`` (walked once, when asked)."""
+        return threshold(self.branch, *self.loaded, "voltage")
+
+    def voltage_to(self, vbar: float) -> Threshold:
+        """The voltage branch walked only as far as Vbar (kind "": reached first, the grid
+        brackets it), or the threshold met before it; the whole walk when it is known."""
+        if "voltage" in self.__dict__:
+            return self.voltage
+        return threshold(self.branch, *self.loaded, "voltage", target=vbar * vbar)
 
 
 @functools.lru_cache(maxsize=256)
 def prepare(tube: Tube, rtol: float, nodes: int | None = None) -> _Prepared:
-    """Everything but the voltage (tube.voltage is 0 here): cached per tube and rtol."""
+    """Everything but the voltage (tube.voltage is 0 here): cached per tube and rtol. The
+    voltage branch's threshold is walked when first asked for (``_Prepared.voltage``)."""
     plies = Ply.stack(tube)
     wall = Wall.build(tube, nodes or choose_nodes(tube, rtol, plies), plies)
     x0, lz0 = _start(wall)
@@ -423,5 +441,4 @@ def prepare(tube: Tube, rtol: float, nodes: int | None = None) -> _Prepared:
                 f" P_i = {thr.value:.12g} ({thr.kind}) of this tube; no axisymmetric state"
             )
         loaded = solve_on(branch, thr.grid, target, thr if thr.kind else None, "P_i")
-    branch = Branch(wall, "voltage", dp=dp)
-    return _Prepared(wall, (x0, lz0), loaded, threshold(branch, *loaded, "voltage"))
+    return _Prepared(wall, (x0, lz0), loaded)

@@ -62,17 +62,22 @@ def solve_layered_state(tube: Tube, *, rtol: float = 1e-12) -> LayeredState:
     nodes = None
     for _ in range(len(ORDERS)):
         prep = prepare(key, rtol, nodes)
-        thr = prep.voltage
-        if not tube.voltage < thr.value:
-            raise BaseStateError(
-                f"Vbar = {tube.voltage:.12g} is at or above the voltage threshold"
-                f" Vbar = {thr.value:.12g} ({thr.kind}) of this tube; no axisymmetric state"
-            )
-        branch = Branch(prep.wall, "voltage", dp=tube.inner_pressure - tube.outer_pressure)
         if tube.voltage == 0:
             x, lz = prep.loaded
-        else:
-            x, lz = solve_on(branch, thr.grid, tube.voltage**2, thr, f"Vbar = {tube.voltage}")
+        else:  # the branch is walked only up to Vbar unless its threshold is known already
+            thr = prep.voltage_to(tube.voltage)
+            if thr.kind and not tube.voltage < thr.value:
+                raise BaseStateError(
+                    f"Vbar = {tube.voltage:.12g} is at or above the voltage threshold"
+                    f" Vbar = {thr.value:.12g} ({thr.kind}) of this tube; no axisymmetric state"
+                )
+            x, lz = solve_on(
+                prep.branch,
+                thr.grid,
+                tube.voltage**2,
+                thr if thr.kind else None,
+                f"Vbar = {tube.voltage}",
+            )
         # c from the voltage, c = V / Lambda for ideal dielectrics (from (*) it would carry
         # the cancellation of T - (P_i - P_o) near the start, amplified by the square root)
         pt = Branch(prep.wall, "pressure", vbar=tube.voltage).point([x], [lz])
@@ -183,13 +188,28 @@ class LayeredState:
     stretch: float
     axial_force: float
     end_force: float
-    voltage_threshold: float
-    threshold_kind: str
-    threshold_lambda_i: float = math.inf
     quadrature_error: float = 0.0
     _wall: Wall = dataclasses.field(default=None, repr=False, compare=False)
     # per layer: (antiderivative of d sigma_rr / dR from R_{k-1}, sigma_rr(R_{k-1}))
     _sigma: tuple = dataclasses.field(default=(), repr=False, compare=False)
+    # the tube without its voltage, prepared: the voltage branch's threshold, walked on demand
+    _prep: object = dataclasses.field(default=None, repr=False, compare=False)
+
+    @property
+    def voltage_threshold(self) -> float:
+        """Vbar where the voltage branch at the tube's pressures is lost (walked when first
+        asked for: a solve itself walks the branch only up to the tube's Vbar)."""
+        return self._prep.voltage.value
+
+    @property
+    def threshold_kind(self) -> str:
+        """limit point, asymptote, locking or none (basestate/branches.py Threshold)."""
+        return self._prep.voltage.kind
+
+    @property
+    def threshold_lambda_i(self) -> float:
+        """lambda_i at the voltage threshold (inf for an asymptote)."""
+        return self._prep.voltage.lambda_i
 
     @classmethod
     def _build(cls, tube, prep, x, lz, c, rtol) -> LayeredState:
@@ -236,7 +256,6 @@ class LayeredState:
         ]
         if tube.control == "force":
             errors.append(abs(applied - tube.axial_force) / max(1.0, abs(nint), abs(ends)))
-        thr = prep.voltage
         return cls(
             tube,
             float(x),
@@ -248,13 +267,16 @@ class LayeredState:
             float(lz),
             N,
             float(applied),
-            thr.value,
-            thr.kind,
-            thr.lambda_i,
             float(max(errors)),
             wall,
             tuple(sigma),
+            prep,
         )
+
+    @property
+    def current_length(self) -> float:
+        """l / R_i = lambda_z L, the deformed length (sets k = n pi / l)."""
+        return self.stretch * self.tube.length
 
     @property
     def interface_radii(self) -> tuple[float, ...]:
@@ -309,6 +331,24 @@ class LayeredState:
     def radius(self, R, *, side: str = "outer") -> np.ndarray:
         """r(R) = sqrt(r_i^2 + 2 G(R) / lambda_z)."""
         return self._fields(R, side)["r"]
+
+    def reference_radius(self, r, *, layer: int) -> np.ndarray:
+        """R(r) in layer ``layer`` (0-based), the inverse of :meth:`radius` there: closed form
+        R^2 = R_{k-1}^2 + lambda_z (r^2 - r_{k-1}^2) / J for constant growth, bisection to
+        rounding for graded growth (r(R) increases)."""
+        r = np.asarray(r, float)
+        a, b = self.tube.radii[layer], self.tube.radii[layer + 1]
+        ply = self.tube.layers[layer]
+        if not ply.graded:
+            J = float(np.prod(ply.growth))
+            R2 = a * a + self.stretch * (r * r - self.radii[layer] ** 2) / J
+            return np.clip(np.sqrt(np.maximum(R2, 0.0)), a, b)
+        lo, hi = np.full(r.shape, a), np.full(r.shape, b)
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            below = self.radius(mid) < r  # r is continuous across interfaces
+            lo, hi = np.where(below, mid, lo), np.where(below, hi, mid)
+        return 0.5 * (lo + hi)
 
     def elastic_stretches(self, R, *, side: str = "outer"):
         """(l1, l2, l3) = (1 / (l2 l3), r / (g_theta R), lambda_z / g_z)."""

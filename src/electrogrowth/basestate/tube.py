@@ -325,6 +325,11 @@ class BaseState:
             * (np.log1p(R2m1 * a / r**2) - math.log1p(k * a / ro2) * ro2 / r**2 * R2m1 / k)
         )
 
+    @property
+    def current_length(self) -> float:
+        """l / R_i = lambda_z L, the deformed length (sets k = n pi / l)."""
+        return self.params.stretch * self.params.length
+
     def radius(self, R) -> np.ndarray:
         """r(R) = sqrt(r_i^2 + g^3 (R^2 - 1) / lambda_z)."""
         return self._local(R)[1]

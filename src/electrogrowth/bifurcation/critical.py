@@ -30,7 +30,8 @@ from ..incremental.targets import (
     targets_for,
     with_family,
 )
-from ..model.params import TubeParameters, check_side
+from ..model.layers import Tube
+from ..model.params import TubeParameters, check_control, check_side
 from ..outcomes import Kind
 from .march import brent, first_bifurcations
 
@@ -98,14 +99,18 @@ def critical_value(
 
     Parameters
     ----------
-    params : TubeParameters
-        The tube; the field named by ``solve_for`` is ignored (it is the unknown).
+    params : TubeParameters or Tube
+        The tube (one homogeneous layer, or a layered Tube with its loads); the value of
+        the control ``solve_for`` is ignored (it is the unknown).
     m, n : int
         Circumferential wavenumber m >= 0 and axial half-wavenumber n >= 0 (k = n pi /
         (lambda_z L); n = 0: a prismatic mode, m >= 2).
-    solve_for : {"growth", "stretch", "voltage"}
+    solve_for : str
         Growth: smallest g > 1. Stretch: the lambda_z nearest to lambda_z = g on ``side``
-        ("compression", default, or "extension"). Voltage: smallest Vbar > 0.
+        ("compression", default, or "extension"). Voltage: smallest Vbar > 0. For a layered
+        Tube also ``"growth[K]"``, ``"growth[K].theta"`` (one layer, some components),
+        ``"pressure"`` (P_i from P_o, up or, ``side="compression"``, down) and ``"force"``
+        (the axial force from 0, down by default); see model/controls.py.
     family : {"wrinkle", "prismatic", "torsional"}, optional
         The mode family (incremental.targets.Family); default the natural one of (m, n):
         prismatic for n = 0, else wrinkle (the paper's ansatz; axisymmetric at m = 0).
@@ -128,6 +133,7 @@ def critical_value(
     ParameterError, NoBifurcationFound, ConvergenceError
     """
     fam = check_mode(m, n, family)
+    solve_for = control_name(params, solve_for)
     side = check_side(solve_for, side)
     mode = with_family(m, n, fam)
     acc = Accuracy(rtol)
@@ -179,15 +185,22 @@ def critical_value(
     )
 
 
+def control_name(params: TubeParameters | Tube, solve_for) -> str:
+    """The canonical name of the control ``solve_for`` of ``params`` (a TubeParameters:
+    growth, stretch or voltage; a layered Tube: model/controls.py, checked against it)."""
+    if isinstance(params, Tube):
+        return str(params.check_control(solve_for))
+    return check_control(solve_for)
+
+
 def stable_sign(
     m: int, n: int, params: TubeParameters, method: str = "impedance", *, family: str | None = None
 ) -> float:
     """Sign of the target of mode (m, n) of ``family`` (default: the natural one) on the
     unloaded tube (g = 1, lambda_z = 1, Vbar = 0)."""
     fam = check_mode(m, n, family)
-    ref = dataclasses.replace(params, growth=1.0, stretch=1.0, voltage=0.0)
     targets = targets_for(method, STABLE_SIGN)
-    f = float(targets(solve_base_state(ref), with_family(m, n, fam))[0])
+    f = float(targets(solve_base_state(params.reference()), with_family(m, n, fam))[0])
     if f == 0.0 or not math.isfinite(f):
         raise ConvergenceError(
             f"target undefined on the unloaded tube for mode ({m}, {n}) ({fam})"

@@ -49,6 +49,7 @@ from ..basestate.tube import solve_base_state
 from ..errors import ElectrogrowthError, ParameterError
 from ..incremental.accuracy import SCAN_SIGNS, SCAN_STABLE_SIGNS
 from ..incremental.targets import impedance_targets
+from ..model.layers import Tube
 from ..model.params import CONTROLS, TubeParameters, check_side
 from ..outcomes import NO_MODE, Kind, Status
 from .critical import critical_value
@@ -208,12 +209,20 @@ class Curve:
         """JSON-ready record (NaN -> None)."""
         num = lambda a: [None if not math.isfinite(v) else float(v) for v in a]  # noqa: E731
         p = self.params
+        if isinstance(p, Tube):
+            fixed = {"tube": p.as_dict()}
+        else:
+            fixed = {
+                "material": p.material.name,
+                "fixed": {
+                    f: getattr(p, f) for f in ALONG if f not in (self.along, self.solve_for)
+                },
+            }
         return {
             "along": self.along,
             "solve_for": self.solve_for,
             "side": self.side,
-            "material": p.material.name,
-            "fixed": {f: getattr(p, f) for f in ALONG if f not in (self.along, self.solve_for)},
+            **fixed,
             "x": num(self.x),
             "value": num(self.value),
             "m": self.m.tolist(),
@@ -235,8 +244,13 @@ class Curve:
         }
 
 
-def check_curve(solve_for: str, along: str) -> None:
-    """Raise ParameterError unless ``solve_for`` is a control and ``along`` another field."""
+def check_curve(solve_for: str, along: str, params=None) -> None:
+    """Raise ParameterError unless ``solve_for`` is a control and ``along`` another field
+    (of a layered Tube ``params``: a control or a key of :meth:`Tube.at`)."""
+    if isinstance(params, Tube):
+        if str(params.check_control(solve_for)) == along:  # along: checked by Tube.at
+            raise ParameterError(f"along = {along!r} is the unknown itself; choose another")
+        return
     if solve_for not in CONTROLS:
         raise ParameterError(
             f"solve_for = {solve_for!r} is unknown; choose one of {', '.join(CONTROLS)}"
@@ -282,7 +296,7 @@ def critical_curve(
         ``map``-like function running :func:`curve_point` over the grid (e.g. a process
         pool's ``map``); the builtin by default.
     follow : bool
-        With the builtin ``map``: follow the critical mode and its runners-up from point
+        With the builtin ``map`` and a one-layer tube (TubeParameters): follow the critical mode and its runners-up from point
         to point, with full scans only where the check fails, at the ends and every
         CHECK_EVERY points (module docstring); False: a full scan at every point.
 
@@ -306,10 +320,14 @@ def critical_curve(
     >>> [(s.mode_before, s.mode_after, round(s.x, 6)) for s in c.switches]
     [((1, 1), (0, 1), 1.256361)]
     """
-    check_curve(solve_for, along)
+    check_curve(solve_for, along, params)
+    if isinstance(params, Tube):
+        solve_for = str(params.check_control(solve_for))
     side = check_side(solve_for, side)
-    if side is not None and solve_for != "stretch":
-        raise ParameterError(f"side = {side!r} applies to the stretch only, not {solve_for}")
+    if side is not None and solve_for not in ("stretch", "pressure", "force"):
+        raise ParameterError(
+            f"side = {side!r} applies to the stretch, pressure or force only, not {solve_for}"
+        )
     xs = np.asarray(list(values), dtype=float)
     if xs.ndim != 1 or xs.size == 0:
         raise ParameterError("values must be a non-empty sequence of numbers")
@@ -319,7 +337,7 @@ def critical_curve(
     for x in xs:  # the ranges are checked before any work
         params.at(along, x)
     unit = functools.partial(curve_point, params, solve_for, along, side=side, options=options)
-    if follow and mapper is map:
+    if follow and mapper is map and isinstance(params, TubeParameters):
         follower = _Follower(params, solve_for, along, side, options, unit)
         computed = (follower.point(x, i in (0, xs.size - 1)) for i, x in enumerate(xs))
     else:

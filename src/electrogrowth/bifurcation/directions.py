@@ -1,6 +1,7 @@
-"""The worst wave direction at the faces of one state: the signed half-space target
-h = min over faces and directions psi in [0, pi/2] of s_face f(state, face, psi), with
-s_face its sign on the unloaded (stable) tube.
+"""The worst wave direction at the surfaces of one state: the signed half-space target
+h = min over surfaces and directions psi in [0, pi/2] of s_face f(state, face, psi), with
+s_face its sign on the unloaded (stable) tube. The surfaces are the faces "inner" and
+"outer" and, for a layered tube, the interfaces "interface-1", ... (halfspace.surfaces).
 
 f (incremental/halfspace.py) is evaluated on a grid of psi (endpoints included), then
 minimised by a bounded 1-D search between the neighbours of the lowest grid minima; an
@@ -20,8 +21,7 @@ from scipy.optimize import minimize_scalar
 
 from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError
-from ..incremental.halfspace import FACES, FaceProblem
-from ..model.params import TubeParameters
+from ..incremental.halfspace import FaceProblem, InterfaceProblem, surface_problem, surfaces
 
 HALF_PI = 0.5 * math.pi
 ENDPOINT_SLACK = 1e-14  # f (|f| <= 1) equal to rounding: keep the exact endpoint psi
@@ -43,14 +43,14 @@ class Sample:
     psi: float | None
 
 
-def stable_signs(params: TubeParameters, faces=FACES) -> dict[str, float]:
-    """Sign of the half-space target at each face on the unloaded tube (g = 1,
-    lambda_z = 1, Vbar = 0), which is stable (the same for every psi; checked on a grid)."""
-    ref = dataclasses.replace(params, growth=1.0, stretch=1.0, voltage=0.0)
-    state = solve_base_state(ref)
+def stable_signs(params, faces=None) -> dict[str, float]:
+    """Sign of the half-space target at each surface (default: every face and interface,
+    halfspace.surfaces) on the unloaded tube ``params.reference()`` (g = 1, lambda_z = 1,
+    no voltage or pressure), which is stable (the same for every psi; checked on a grid)."""
+    state = solve_base_state(params.reference())
     out = {}
-    for face in faces:
-        f = FaceProblem.from_state(state, face).target(np.linspace(0.0, HALF_PI, 7))
+    for face in surfaces(state) if faces is None else faces:
+        f = surface_problem(state, face).target(np.linspace(0.0, HALF_PI, 7))
         if not (np.all(np.isfinite(f)) and (np.all(f > 0) or np.all(f < 0))):
             raise ConvergenceError(
                 f"half-space target undefined or of mixed sign on the "
@@ -61,20 +61,26 @@ def stable_signs(params: TubeParameters, faces=FACES) -> dict[str, float]:
 
 
 @functools.lru_cache(maxsize=64)
-def _unloaded_signs(material, outer_radius: float) -> dict[str, float]:
-    """stable_signs of both faces, shared by every state of one tube (the unloaded state
-    depends on the material and Rbar_o only)."""
-    return stable_signs(TubeParameters(outer_radius, material=material))
+def _unloaded_signs(reference) -> dict[str, float]:
+    """stable_signs of every surface, shared by every state of one tube (keyed by its
+    unloaded reference, a hashable TubeParameters or Tube)."""
+    return stable_signs(reference)
 
 
-def past_surface(params: TubeParameters, faces=FACES) -> bool:
-    """Whether a face of this loaded tube is beyond its short-wave instability in some wave
-    direction (the signed half-space target is <= 0 there): then the exact limit, reached
-    earlier along any path from the unloaded tube, is worth locating."""
-    signs = _unloaded_signs(params.material, params.outer_radius)
+def reference_signs(params) -> dict[str, float]:
+    """stable_signs of every surface of ``params``, cached by ``params.reference()``."""
+    return _unloaded_signs(params.reference())
+
+
+def past_surface(params, faces=None) -> bool:
+    """Whether a surface (face or interface) of this loaded tube is beyond its short-wave
+    instability in some wave direction (the signed half-space target is <= 0 there): then
+    the exact limit, reached earlier along any path from the unloaded tube, is worth
+    locating."""
+    signs = reference_signs(params)
     state = solve_base_state(params)
-    for face in faces:
-        problem = FaceProblem.from_state(state, face)
+    for face in surfaces(state) if faces is None else faces:
+        problem = surface_problem(state, face)
         v, _ = worst_direction(problem, signs[face], psi_tol=None)
         if v < MARCH_REFINE:
             v, _ = worst_direction(problem, signs[face])
@@ -84,9 +90,13 @@ def past_surface(params: TubeParameters, faces=FACES) -> bool:
 
 
 def worst_direction(
-    problem: FaceProblem, sign: float = 1.0, *, grid: int = 25, psi_tol: float | None = 1e-10
+    problem: FaceProblem | InterfaceProblem,
+    sign: float = 1.0,
+    *,
+    grid: int = 25,
+    psi_tol: float | None = 1e-10,
 ) -> tuple[float, float]:
-    """(min over psi in [0, pi/2] of sign * f, its psi) at one face.
+    """(min over psi in [0, pi/2] of sign * f, its psi) at one face or interface.
 
     A grid of ``grid`` directions (both endpoints included), then a bounded minimisation
     between the neighbours of each of the (up to three) lowest grid minima; an endpoint
@@ -130,14 +140,15 @@ def worst_direction(
 
 
 def sampler(faces, signs, res: Resolution, direction=None, refine_below=math.inf):
-    """h(state) -> Sample: min over faces of the signed target, in the worst direction
-    (direction None) or in the direction direction(state, face) of a ray. With
-    refine_below, a face whose grid minimum is above it is not refined (the march)."""
+    """h(state) -> Sample: min over surfaces (faces and interfaces) of the signed target,
+    in the worst direction (direction None) or in the direction direction(state, face) of
+    a ray. With refine_below, a face whose grid minimum is above it is not refined (the
+    march)."""
 
     def h(state) -> Sample:
         best = Sample(math.inf, None, None)
         for face in faces:
-            problem = FaceProblem.from_state(state, face)
+            problem = surface_problem(state, face)
             if direction is None:
                 v, psi = worst_direction(problem, signs[face], grid=res.grid, psi_tol=None)
                 if not v > refine_below:  # close to zero (or NaN): refine

@@ -26,9 +26,11 @@ from collections.abc import Callable
 import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
+from ..basestate.layered import layered_threshold, solve_layered_state
 from ..basestate.tube import solve_base_state, voltage_threshold
 from ..errors import BaseStateError, ConvergenceError, NoBifurcationFound, ParameterError
 from ..incremental.targets import natural_family, row_family
+from ..model.layers import Tube
 from ..model.params import TubeParameters
 
 FIRST_STEP, MIN_STEP, MAX_STEP, MAX_LAMBDA_JUMP = 0.004, 1e-4, 0.05, 0.05
@@ -65,8 +67,10 @@ class MarchResult:
     threshold: float | None  # where the axisymmetric state is lost, if reached first
 
 
-def control_path(params: TubeParameters, solve_for: str, side: str | None):
+def control_path(params: TubeParameters | Tube, solve_for: str, side: str | None):
     """(start, end, scale) of the march for ``solve_for``."""
+    if isinstance(params, Tube):
+        return _tube_path(params, solve_for, side)
     if solve_for == "growth":
         return 1.0, 6.0, 1.0
     if solve_for == "stretch":
@@ -82,10 +86,49 @@ def control_path(params: TubeParameters, solve_for: str, side: str | None):
     )
 
 
-def unloaded_signs(params: TubeParameters, modes: np.ndarray, targets: Targets) -> np.ndarray:
-    """Signs of the targets on the unloaded tube (g = 1, lambda_z = 1, Vbar = 0)."""
-    ref = dataclasses.replace(params, growth=1.0, stretch=1.0, voltage=0.0)
-    return np.sign(targets(solve_base_state(ref), modes))
+def _tube_path(tube: Tube, solve_for: str, side: str | None):
+    """(start, end, scale) for a layered tube: growth from 1 (ungrown); the stretch from the
+    free length of the tube at its growth (no loads) down (compression) or up; Vbar from 0
+    and the inner pressure from P_o (no pressure difference) up to their thresholds (or
+    the pressure down, compression: a collapse under external pressure); the axial force
+    from 0 down (compression) or up. The pressure and force scales are the unloaded
+    tube's: sum mu_k ln(R_k / R_{k-1}) and pi sum mu_k (R_k^2 - R_{k-1}^2)."""
+    kind = tube.check_control(solve_for).kind
+    up = side == "extension"
+    pairs = list(zip(tube.layers, tube.radii, tube.radii[1:]))
+    if kind == "growth":
+        return 1.0, 6.0, 1.0
+    if kind == "stretch":
+        free = dataclasses.replace(
+            tube,
+            stretch=None,
+            axial_force=0.0,
+            voltage=0.0,
+            inner_pressure=0.0,
+            outer_pressure=0.0,
+            closed_ends=False,
+        )
+        lz = solve_layered_state(free).stretch
+        return (lz, 8.0 * lz, lz) if up else (lz, 0.05 * lz, lz)
+    if kind == "voltage":
+        thr = layered_threshold(tube, "voltage").value
+        return (0.0, 1e3, 1.0) if not math.isfinite(thr) else (0.0, thr * (1 - 1e-12), thr)
+    if kind == "pressure":
+        scale = sum(ply.shear_modulus * math.log(b / a) for ply, a, b in pairs)
+        start = tube.outer_pressure
+        if not up:
+            return start, start - 20.0 * scale, scale
+        thr = layered_threshold(tube, "pressure").value
+        end = thr * (1 - 1e-12) if math.isfinite(thr) else start + 50.0 * scale
+        return start, end, scale
+    scale = math.pi * sum(ply.shear_modulus * (b * b - a * a) for ply, a, b in pairs)
+    return (0.0, 20.0 * scale, scale) if up else (0.0, -20.0 * scale, scale)
+
+
+def unloaded_signs(params, modes: np.ndarray, targets: Targets) -> np.ndarray:
+    """Signs of the targets on the unloaded tube (``params.reference()``: g = 1,
+    lambda_z = 1, no voltage or pressure)."""
+    return np.sign(targets(solve_base_state(params.reference()), modes))
 
 
 class _History:
@@ -163,7 +206,7 @@ def first_bifurcations(
     on the unloaded tube, are computed unless given (they depend only on the material,
     Rbar_o, L and the modes, so a curve or sweep can reuse them).
     """
-    at = lambda x: dataclasses.replace(params, **{solve_for: float(x)})  # noqa: E731
+    at = lambda x: params.at(solve_for, x)  # noqa: E731
     if stable_signs is None:
         stable_signs = unloaded_signs(params, modes, targets)
     sref = stable_signs
@@ -228,8 +271,9 @@ def first_bifurcations(
         x_prev, lam_prev = x, state.lambda_i
     found.sort(key=lambda mv: sense * mv.value)
     if not found and threshold is None:
-        if solve_for == "voltage" and math.isfinite(voltage_threshold(params)[0]):
-            threshold = voltage_threshold(params)[0]
+        thr = _voltage_threshold(params) if solve_for == "voltage" else math.inf
+        if math.isfinite(thr):
+            threshold = thr
         else:
             raise NoBifurcationFound(
                 f"no mode bifurcates for {solve_for} between {x0:g} and {end:g}"
@@ -343,9 +387,31 @@ def brent(f, a, b) -> float:
         raise ConvergenceError(f"Brent's method failed on [{a}, {b}]: {exc}") from None
 
 
+def _voltage_threshold(params) -> float:
+    if isinstance(params, Tube):
+        return layered_threshold(params, "voltage").value
+    return voltage_threshold(params)[0]
+
+
 def _threshold_between(at, params, x_ok, x_bad) -> float:
-    """Parameter value where the voltage threshold falls to the applied voltage."""
+    """Parameter value where the base state is lost between x_ok and x_bad: where the
+    voltage threshold falls to the applied voltage (one layer), or, for a layered tube
+    (whose loads may be several), the edge of the states that solve, bisected."""
     lo, hi = min(x_ok, x_bad), max(x_ok, x_bad)
-    return brentq(
-        lambda x: voltage_threshold(at(x))[0] - params.voltage, lo, hi, xtol=1e-14, rtol=1e-15
-    )
+    if not isinstance(params, Tube):
+        return brentq(
+            lambda x: voltage_threshold(at(x))[0] - params.voltage,
+            lo,
+            hi,
+            xtol=1e-14,
+            rtol=1e-15,
+        )
+    ok, bad = x_ok, x_bad
+    while abs(bad - ok) > 1e-13 * max(1.0, abs(ok)):
+        mid = 0.5 * (ok + bad)
+        try:
+            solve_base_state(at(mid))
+            ok = mid
+        except BaseStateError:
+            bad = mid
+    return ok

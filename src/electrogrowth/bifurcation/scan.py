@@ -34,7 +34,7 @@ from ..incremental.accuracy import SCAN_SIGNS, SCAN_STABLE_SIGNS, Accuracy
 from ..incremental.targets import Family, impedance_targets
 from ..model.params import TubeParameters, check_side
 from ..outcomes import NO_MODE, Kind
-from .critical import CriticalPoint, critical_value
+from .critical import CriticalPoint, control_name, critical_value
 from .directions import past_surface
 from .march import ModeValue, first_bifurcations, unloaded_signs
 from .surface import short_wave_limit
@@ -175,12 +175,14 @@ def scan_modes(
 
     Parameters
     ----------
-    params : TubeParameters
-        The tube; the field named by ``solve_for`` is the unknown.
-    solve_for : {"growth", "stretch", "voltage"}
-        As in :func:`bifurcation.critical_value`.
+    params : TubeParameters or Tube
+        The tube; the control named by ``solve_for`` is the unknown.
+    solve_for : str
+        As in :func:`bifurcation.critical_value` (growth, stretch, voltage; for a layered
+        Tube also growth[K].component, pressure, force).
     side : {"compression", "extension"}, optional
-        For the stretch only (default compression).
+        For the stretch, the pressure and the force (defaults: compression, extension
+        (inflation), compression).
     options : ScanOptions
         The mode ranges (extended automatically while the optimum sits on an upper edge),
         the number of modes reported, and whether to extend.
@@ -191,6 +193,7 @@ def scan_modes(
     -------
     ScanResult
     """
+    solve_for = control_name(params, solve_for)
     side = check_side(solve_for, side)
     try:
         result, at_cap, limit = _widened_scan(params, solve_for, side, options, rtol)
@@ -344,9 +347,7 @@ def _scan_once(
         loose,
         top=top,
         brent_targets=fine,
-        stable_signs=_stable_signs(
-            params.material, params.outer_radius, params.length, m_range, n_range, probes, families
-        ),
+        stable_signs=_stable_signs(params.reference(), m_range, n_range, probes, families),
     )
     found = res.found
     if not found:  # the march stops at the threshold, so found modes come before it
@@ -377,10 +378,9 @@ def _scan_once(
 
 
 @functools.lru_cache(maxsize=64)
-def _stable_signs(
-    material, outer_radius, length, m_range, n_range, probes, families
-) -> np.ndarray:
-    """Signs on the unloaded tube, shared by every scan of a curve or sweep."""
+def _stable_signs(reference, m_range, n_range, probes, families) -> np.ndarray:
+    """Signs on the unloaded tube ``reference`` (TubeParameters or Tube ``.reference()``),
+    shared by every scan of a curve or sweep."""
     modes = scan_grid(m_range, n_range, probes, families)
-    ref = TubeParameters(outer_radius, length, material=material)
-    return unloaded_signs(ref, modes, functools.partial(impedance_targets, rtol=SCAN_STABLE_SIGNS))
+    targets = functools.partial(impedance_targets, rtol=SCAN_STABLE_SIGNS)
+    return unloaded_signs(reference, modes, targets)

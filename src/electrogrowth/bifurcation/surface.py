@@ -11,7 +11,10 @@ direction psi in [0, pi/2] the half-space target f vanishes:
     h(x) = min_{face} min_{psi} s_face f(state(x), face, psi),
 
 with s_face = sign of f on the unloaded tube (g = 1, lambda_z = 1, Vbar = 0), which is
-stable; h > 0 until the first surface instability. min over psi: f on a grid of psi
+stable; h > 0 until the first surface instability. For a layered Tube the minimum runs over
+every face (with its follower pressure) and every interface ("interface-K", between layers
+K and K + 1; halfspace.surfaces), and the control is any of the tube's (params.at);
+docs/derivation-layered-modes.md. min over psi: f on a grid of psi
 (endpoints psi = 0 and pi/2 included) and a bounded 1-D minimisation around the lowest
 grid minima, compared with the exact endpoint values. h is continuous (a minimum of
 continuous functions), so once the march brackets its first sign change Brent's method
@@ -39,17 +42,19 @@ from collections.abc import Callable
 import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
+from ..basestate.layered import layered_threshold
 from ..basestate.tube import solve_base_state, voltage_threshold
 from ..errors import BaseStateError, ConvergenceError, ParameterError
-from ..incremental.halfspace import FACES
-from ..model.params import SIDES, TubeParameters, check_control
+from ..incremental.halfspace import surface_radius, surfaces
+from ..model.layers import Tube
+from ..model.params import SIDES, TubeParameters, check_control, check_side
 from ..outcomes import Kind
 from .directions import (
     HALF_PI,
     MARCH_REFINE,
     Resolution,
+    reference_signs,
     sampler,
-    stable_signs,
 )
 from .march import control_path
 
@@ -71,7 +76,9 @@ class SurfaceLimit:
         theta, pi/2: along z); ``ratio`` = k r / m = tan psi, None at psi = pi/2.
     error_estimate : |value - value at a second, coarser resolution| (0 if not a root, NaN
         if the base state is lost within the search for the coarser root).
-    params : the parameters at ``value``.
+    params : the parameters (TubeParameters or layered Tube) at ``value``.
+    face : the surface: "inner", "outer" or, in a layered tube, "interface-K" (between
+        layers K and K + 1).
     """
 
     solve_for: str
@@ -81,7 +88,7 @@ class SurfaceLimit:
     ratio: float | None
     kind: str
     error_estimate: float
-    params: TubeParameters
+    params: TubeParameters | Tube
     side: str | None = None
 
     def as_dict(self) -> dict:
@@ -101,24 +108,35 @@ class SurfaceLimit:
 # -- input checks ---------------------------------------------------------------------------
 
 
-def _check(params, solve_for, side, faces, rtol) -> tuple[str | None, tuple[str, ...]]:
-    if not isinstance(params, TubeParameters):
-        raise ParameterError(f"params = {params!r} is not a TubeParameters")
-    check_control(solve_for)
-    if side is not None and side not in SIDES:
-        raise ParameterError(f"side = {side!r} is unknown; choose compression or extension")
-    # as critical_value: the side matters for the stretch only (ignored otherwise)
-    side = (side or "compression") if solve_for == "stretch" else None
-    if isinstance(faces, str):
-        faces = (faces,)
-    faces = tuple(faces)
-    if not faces or any(f not in FACES for f in faces) or len(set(faces)) != len(faces):
+def _check(params, solve_for, side, faces, rtol) -> tuple[str, str | None, tuple[str, ...]]:
+    """(canonical control, side, surfaces) after checking the input."""
+    if isinstance(params, Tube):
+        solve_for = str(params.check_control(solve_for))
+        side = check_side(solve_for.split("[")[0], side)
+    elif isinstance(params, TubeParameters):
+        check_control(solve_for)
+        if side is not None and side not in SIDES:
+            raise ParameterError(f"side = {side!r} is unknown; choose compression or extension")
+        # as critical_value: the side matters for the stretch only (ignored otherwise)
+        side = (side or "compression") if solve_for == "stretch" else None
+    else:
+        raise ParameterError(f"params = {params!r} is not a TubeParameters or a Tube")
+    valid = surfaces(params)
+    faces = valid if faces is None else (faces,) if isinstance(faces, str) else tuple(faces)
+    if not faces or any(f not in valid for f in faces) or len(set(faces)) != len(faces):
         raise ParameterError(
-            f"faces = {faces!r} is invalid; choose a non-empty subset of ('inner', 'outer')"
+            f"faces = {faces!r} is invalid; choose a non-empty subset of {valid!r}"
         )
     if isinstance(rtol, bool) or not isinstance(rtol, (int, float)) or not 0 < rtol <= 1e-3:
         raise ParameterError(f"rtol = {rtol!r} is out of range; valid range: 0 < rtol <= 1e-3")
-    return side, faces
+    return solve_for, side, faces
+
+
+def _voltage_threshold(params) -> float:
+    """The voltage threshold of the tube's voltage branch (inf if there is none)."""
+    if isinstance(params, Tube):
+        return layered_threshold(params, "voltage").value
+    return voltage_threshold(params)[0]
 
 
 # -- the march ------------------------------------------------------------------------------
@@ -139,7 +157,7 @@ def _locate(params, solve_for, side, h: Callable, rtol: float, h_march=None):
     h_march (default h) is used for the steps: it may be cheaper where h is far from 0
     but must agree with h wherever either is <= MARCH_REFINE."""
     fine_h, h = h, (h_march or h)
-    at = lambda x: dataclasses.replace(params, **{solve_for: float(x)})  # noqa: E731
+    at = lambda x: params.at(solve_for, float(x))  # noqa: E731
     state_at = lambda x: solve_base_state(at(x), rtol=rtol)  # noqa: E731
     x0, end, scale = control_path(params, solve_for, side)
     sense = 1.0 if end > x0 else -1.0
@@ -232,7 +250,7 @@ def _locate(params, solve_for, side, h: Callable, rtol: float, h_march=None):
         limit = 0.7 * hs[-1] / -slope / scale if slope < 0 else math.inf
         d = float(np.clip(limit, MIN_STEP, min(2 * d, MAX_STEP)))
     if threshold is None and solve_for == "voltage":
-        thr = voltage_threshold(params)[0]
+        thr = _voltage_threshold(params)
         threshold = thr if math.isfinite(thr) else None
     if threshold is not None:
         return Kind.THRESHOLD, threshold, None
@@ -260,7 +278,7 @@ def _threshold_between(at, params, x_ok, x_bad, rtol, exists: bool = True) -> fl
     if params.voltage > 0:
         try:
             return brentq(
-                lambda x: voltage_threshold(at(x))[0] - params.voltage,
+                lambda x: _voltage_threshold(at(x)) - params.voltage,
                 lo,
                 hi,
                 xtol=1e-14,
@@ -300,14 +318,14 @@ def _second_resolution(value_coarse, value: float) -> float:
 
 
 def _solve(params, solve_for, side, faces, rtol, direction) -> SurfaceLimit:
-    side, faces = _check(params, solve_for, side, faces, rtol)
-    signs = stable_signs(params, faces)
+    solve_for, side, faces = _check(params, solve_for, side, faces, rtol)
+    signs = reference_signs(params)
     fine = Resolution(25, 1e-10, rtol)
     coarse = Resolution(13, 1e-7, min(1e-3, 100 * rtol))
     h = sampler(faces, signs, fine, direction)
     hm = sampler(faces, signs, fine, direction, refine_below=MARCH_REFINE)
     hc = sampler(faces, signs, coarse, direction)
-    at = lambda x: dataclasses.replace(params, **{solve_for: float(x)})  # noqa: E731
+    at = lambda x: params.at(solve_for, float(x))  # noqa: E731
     kind, value, bracket = _locate(params, solve_for, side, h, rtol, hm)
     if kind in (Kind.THRESHOLD, Kind.NONE):
         return SurfaceLimit(
@@ -346,11 +364,11 @@ def _ratio(psi):
 
 
 def short_wave_limit(
-    params: TubeParameters,
+    params: TubeParameters | Tube,
     solve_for: str,
     *,
     side: str | None = None,
-    faces=FACES,
+    faces=None,
     psi: float | None = None,
     rtol: float = 1e-12,
 ) -> SurfaceLimit:
@@ -358,14 +376,18 @@ def short_wave_limit(
 
     Parameters
     ----------
-    params : TubeParameters
-        The tube; the field named by ``solve_for`` is the unknown.
-    solve_for : {"growth", "stretch", "voltage"}
+    params : TubeParameters or Tube
+        The tube (one homogeneous layer, or a layered, pressurised Tube); the control named
+        by ``solve_for`` is the unknown (``params.at(solve_for, x)``).
+    solve_for : str
         Growth: smallest g > 1 (march 1 -> 6). Stretch: the lambda_z nearest to
         lambda_z = g on ``side`` ("compression", default, march to 0.05 g; or "extension",
-        to 8 g). Voltage: smallest Vbar > 0 (march to the threshold).
-    faces : iterable of {"inner", "outer"}
-        The faces whose half-spaces are examined (default both).
+        to 8 g). Voltage: smallest Vbar > 0 (march to the threshold). For a Tube any of
+        its controls (model/controls.py: "growth[K]", "growth[K].theta", "pressure",
+        "force", ...), on the path of bifurcation.march.control_path.
+    faces : iterable of surface names, optional
+        The surfaces whose half-spaces are examined: "inner", "outer" and, for a layered
+        Tube, "interface-1", ... (default all of them, halfspace.surfaces).
     psi : float, optional
         Examine only this wave direction (radians in [0, pi/2]) instead of the worst one:
         the directional critical value, whose infimum over psi is the default result.
@@ -394,13 +416,13 @@ def short_wave_limit(
 
 
 def ray_limit(
-    params: TubeParameters,
+    params: TubeParameters | Tube,
     m: float,
     n: float,
     solve_for: str,
     *,
     side: str | None = None,
-    faces=FACES,
+    faces=None,
     rtol: float = 1e-12,
 ) -> SurfaceLimit:
     """Limit j -> infinity of the critical value of the modes (j m, j n).
@@ -421,8 +443,9 @@ def ray_limit(
         raise ParameterError("ray (m, n) = (0, 0) is invalid; need m > 0 or n > 0")
 
     def direction(state, face):
-        p = state.params
-        r = state.r_i if face == "inner" else state.r_o
-        return math.atan2(n * math.pi * r / (p.stretch * p.length), m)
+        length = getattr(state, "current_length", None)  # a layered state
+        if length is None:
+            length = state.params.stretch * state.params.length
+        return math.atan2(n * math.pi * surface_radius(state, face) / length, m)
 
     return _solve(params, solve_for, side, faces, rtol, direction)

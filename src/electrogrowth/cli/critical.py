@@ -10,6 +10,7 @@ from ..bifurcation.critical import critical_value
 from ..bifurcation.scan import scan_modes
 from ..errors import ConvergenceError, ParameterError
 from ..incremental.accuracy import check_rtol
+from ..model.controls import parse_control
 from ..outcomes import Kind
 from .options import (
     MODE_COVERAGE,
@@ -17,19 +18,18 @@ from .options import (
     add_method_option,
     add_mode_option,
     add_mode_range_options,
-    add_tube_options,
     check_side_option,
     mode_from_args,
     scan_options_from_args,
-    tube_from_args,
 )
+from .tube_input import add_any_tube_options, control_of
 
 CERTIFY_RTOL = 1e-8  # the two methods must agree this well for a certified value
 
 
 def configure_critical(parser: argparse.ArgumentParser) -> None:
     add_control_options(parser)
-    add_tube_options(parser)
+    add_any_tube_options(parser)
     modes = parser.add_argument_group(
         "wrinkling modes u ~ cos(m theta) cos(k z), k = n pi / (lambda_z L)", MODE_COVERAGE
     )
@@ -59,7 +59,7 @@ def configure_critical(parser: argparse.ArgumentParser) -> None:
 
 
 def run_critical(args) -> int:
-    params = tube_from_args(args)
+    params, solve_for = control_of(args)
     check_side_option(args)
     check_rtol(args.rtol, "--rtol")
     mode = mode_from_args(args)
@@ -69,7 +69,7 @@ def run_critical(args) -> int:
             params,
             m,
             n,
-            args.solve_for,
+            solve_for,
             family=family,
             side=args.side,
             method=args.method,
@@ -84,7 +84,7 @@ def run_critical(args) -> int:
             )
         result = scan_modes(
             params,
-            args.solve_for,
+            solve_for,
             side=args.side,
             options=scan_options_from_args(args),
             rtol=args.rtol,
@@ -128,8 +128,46 @@ def _certify(params, crit, args) -> dict:
     }
 
 
+def value_name(solve_for: str) -> str:
+    """How a critical value is named in text: g_cr, lambda_z,cr, Vbar_cr, P_i,cr, F_cr;
+    g_theta[2],cr for a component of layer 2's growth."""
+    c = parse_control(solve_for)
+    if c.kind != "growth":
+        return {"stretch": "lambda_z,cr", "voltage": "Vbar_cr", "pressure": "P_i,cr"}.get(
+            c.kind, "F_cr"
+        )
+    if c.components is None and c.layer is None:
+        return "g_cr"
+    comp = "" if c.components is None else "_" + "".join(c.components)
+    return f"g{comp}{'' if c.layer is None else f'[{c.layer}]'},cr"
+
+
+def tube_line(rec: dict) -> str:
+    """The tube of a JSON record in one line (one layer, or the layers and loads)."""
+    if "layers" not in rec:
+        return (
+            f"  tube: Rbar_o = {rec['outer_radius']:g}, L = {rec['length']:g},"
+            f" g = {rec['growth']:.12g}, lambda_z = {rec['stretch']:.12g},"
+            f" Vbar = {rec['voltage']:.12g}, {rec['material']}"
+        )
+    layers = "; ".join(
+        f"R <= {ly['outer_radius']:g} {ly['material']} mu {ly['shear_modulus']:g} g {ly['growth']}"
+        for ly in rec["layers"]
+    )
+    axial = (
+        f"lambda_z = {rec['stretch']:.12g}"
+        if rec["stretch"] is not None
+        else f"axial force {rec['axial_force']:.12g}"
+    )
+    return (
+        f"  tube: {len(rec['layers'])} layer(s) [{layers}], L = {rec['length']:g}, {axial},"
+        f" Vbar = {rec['voltage']:.12g}, P_i = {rec['inner_pressure']:.12g},"
+        f" P_o = {rec['outer_pressure']:.12g}"
+    )
+
+
 def _print_text(rec: dict, runners: list) -> None:
-    name = {"growth": "g_cr", "stretch": "lambda_z,cr", "voltage": "Vbar_cr"}[rec["solve_for"]]
+    name = value_name(rec["solve_for"])
     if rec["kind"] == Kind.THRESHOLD:
         head = (
             f"{name} = {rec['value']:.12g}: the axisymmetric state is lost (voltage"
@@ -143,10 +181,11 @@ def _print_text(rec: dict, runners: list) -> None:
             if abs(rec["psi"] - math.pi / 2) < 1e-12
             else f"the direction psi = {rec['psi']:.6g} rad from theta to z"
         )
+        where = rec["face"] if rec["face"].startswith("interface") else f"{rec['face']} face"
         head = (
             f"{name} = {rec['value']:.12g}  (error estimate {rec['error_estimate']:.1e},"
             f" half-space)   short-wave (surface) instability, m, n -> infinity, at the"
-            f" {rec['face']} face, wrinkles along {along}"
+            f" {where}, wrinkles along {along}"
         )
     else:
         head = (
@@ -154,12 +193,7 @@ def _print_text(rec: dict, runners: list) -> None:
             f" {rec['method']})   mode (m, n) = ({rec['m']}, {rec['n']})"
             f"{_family_note(rec.get('family'))}"
         )
-    lines = [
-        head,
-        f"  tube: Rbar_o = {rec['outer_radius']:g}, L = {rec['length']:g},"
-        f" g = {rec['growth']:.12g}, lambda_z = {rec['stretch']:.12g},"
-        f" Vbar = {rec['voltage']:.12g}, {rec['material']}",
-    ]
+    lines = [head, tube_line(rec)]
     if rec.get("certified"):
         lines.append(
             f"  certified by {rec['certified_by']}: {rec['certified_value']:.12g}"

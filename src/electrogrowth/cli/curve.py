@@ -17,17 +17,19 @@ import numpy as np
 from ..bifurcation.curves import ALONG, check_curve, critical_curve
 from ..errors import ParameterError
 from ..figures.plots import plot_curve
+from ..model.layers import KEYS_TEXT, Tube
 from ..model.params import TubeParameters
 from ..outcomes import Status
+from .critical import tube_line
 from .options import (
     _material,
     add_control_options,
     add_mode_range_options,
-    add_tube_options,
     check_side_option,
     finite_number,
     scan_options_from_args,
 )
+from .tube_input import add_any_tube_options, control_of
 
 #: How each parameter is described in the options' help (the paper's terms).
 MEANING = {
@@ -44,9 +46,12 @@ def configure_curve(parser: argparse.ArgumentParser) -> None:
     add_control_options(what)
     what.add_argument(
         "--along",
-        choices=ALONG,
         required=True,
-        help="the abscissa: " + "; ".join(f"{k} = {v}" for k, v in MEANING.items()),
+        metavar="NAME",
+        help="the abscissa: "
+        + "; ".join(f"{k} = {v}" for k, v in MEANING.items())
+        + ". For a layered --tube: any control (growth[K], growth[K].theta, stretch, voltage,"
+        f" pressure, force) or key of the tube ({KEYS_TEXT})",
     )
     what.add_argument(
         "--from",
@@ -72,7 +77,7 @@ def configure_curve(parser: argparse.ArgumentParser) -> None:
         help="grid points from X0 to X1 (>= 2, default 30); switches of the"
         " critical mode (m, n) between them are located exactly",
     )
-    add_tube_options(parser, outer_radius=1.4)  # the --along and --solve-for values are ignored
+    add_any_tube_options(parser, outer_radius=1.4)  # --along and --solve-for values ignored
     modes = parser.add_argument_group("modes u ~ cos(m theta) cos(n pi z / l)")
     add_mode_range_options(modes)
     parser.add_argument(
@@ -106,14 +111,24 @@ def curve_params(args) -> TubeParameters:
 
 
 def run_curve(args) -> int:
-    check_curve(args.solve_for, args.along)
+    params, solve_for = control_of(args)
+    if isinstance(params, Tube):
+        check_curve(solve_for, args.along, params)
+        params = params.at(args.along, args.start)
+    else:
+        if args.along not in ALONG:
+            raise ParameterError(
+                f"--along {args.along} is unknown; choose one of {', '.join(ALONG)}"
+                " (a layered --tube has more)"
+            )
+        check_curve(solve_for, args.along)
+        params = curve_params(args)
     if args.points < 2:
         raise ParameterError(f"--points = {args.points} is too small; need >= 2")
     options = scan_options_from_args(args)
     check_side_option(args)
     if args.start == args.stop:
         raise ParameterError(f"--from = --to = {args.start:g}; need two different values")
-    params = curve_params(args)
     values = np.linspace(args.start, args.stop, args.points)
     bar = None
     if not args.json and sys.stderr.isatty():
@@ -123,12 +138,12 @@ def run_curve(args) -> int:
             total=args.points,
             unit="point",
             file=sys.stderr,
-            desc=f"{args.solve_for} along {args.along}",
+            desc=f"{solve_for} along {args.along}",
         )
     try:
         curve = critical_curve(
             params,
-            args.solve_for,
+            solve_for,
             args.along,
             values,
             side=args.side,
@@ -138,7 +153,7 @@ def run_curve(args) -> int:
     finally:
         if bar is not None:
             bar.close()
-    stem = f"curve_{args.solve_for}_vs_{args.along}"
+    stem = f"curve_{solve_for}_vs_{args.along}".replace("[", "").replace("]", "")
     csv = curve.to_csv(args.out / f"{stem}.csv")
     png = args.out / f"{stem}.png"
     ax = plot_curve(curve)
@@ -152,6 +167,8 @@ def run_curve(args) -> int:
 
 
 def _fixed_text(curve) -> str:
+    if isinstance(curve.params, Tube):
+        return tube_line(curve.params.as_dict()).removeprefix("  tube: ")
     d = curve.as_dict()["fixed"]
     names = {
         "outer_radius": "Rbar_o",
@@ -169,7 +186,8 @@ def summary(curve) -> list[str]:
     side = f" ({curve.side})" if curve.side else ""
     lines = [
         f"critical {curve.solve_for}{side} along {curve.along}: "
-        f"{curve.params.material.name}, {_fixed_text(curve)}"
+        + ("" if isinstance(curve.params, Tube) else f"{curve.params.material.name}, ")
+        + _fixed_text(curve)
     ]
     ok = np.isfinite(curve.value)
     if ok.any():

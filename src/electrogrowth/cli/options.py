@@ -8,8 +8,9 @@ import math
 from ..bifurcation.scan import ScanOptions
 from ..errors import ParameterError, UsageError
 from ..incremental.targets import FAMILIES, METHODS, Family, check_mode
+from ..model.controls import TUBE_CONTROLS
 from ..model.materials import BUILTIN, material_by_name
-from ..model.params import CONTROLS, SIDES, TubeParameters
+from ..model.params import SIDES, TubeParameters
 
 
 class _Parser(argparse.ArgumentParser):
@@ -132,30 +133,52 @@ def _material(args):
 
 
 def add_control_options(parser: argparse.ArgumentParser) -> None:
-    """--solve-for and --side: the control parameter whose critical value is sought."""
+    """--solve-for, --layer, --component and --side: the control parameter whose critical
+    value is sought (model/controls.py)."""
     parser.add_argument(
         "--solve-for",
         required=True,
-        choices=CONTROLS,
+        choices=TUBE_CONTROLS,
         help="the control parameter to find: growth = g_cr, the smallest"
-        " g > 1 at which the tube wrinkles; stretch = lambda_z,cr on"
-        " --side; voltage = Vbar_cr, the smallest Vbar (or the threshold"
-        " where the axisymmetric state is lost, if that comes first)."
-        " The value given for it below is ignored.",
+        " g > 1 at which the tube wrinkles (of one layer of a --tube: --layer, --component);"
+        " stretch = lambda_z,cr on --side; voltage = Vbar_cr, the smallest Vbar (or the"
+        " threshold where the axisymmetric state is lost, if that comes first); pressure ="
+        " the inner follower pressure P_i,cr (from P_o: inflation, or --side compression:"
+        " collapse); force = the axial end force F_cr of a tube with --axial-force (from 0:"
+        " compression, or --side extension). The value given for it below is ignored.",
+    )
+    parser.add_argument(
+        "--layer",
+        type=int,
+        metavar="K",
+        help="with --solve-for growth: the layer K of the --tube file that grows (1 ="
+        " innermost; required for several layers)",
+    )
+    parser.add_argument(
+        "--component",
+        metavar="C",
+        help="with --solve-for growth: the component(s) of the layer's growth tensor"
+        " diag(g_r, g_theta, g_z) that are varied, r, theta or z, or several joined by +"
+        " (r+theta: growth in the cross-section); the others keep their values"
+        " (default: all three, isotropic growth)",
     )
     parser.add_argument(
         "--side",
         choices=SIDES,
         default=None,
-        help="for --solve-for stretch: axial compression (lambda_z < g,"
-        " default) or extension (lambda_z > g)",
+        help="the direction of the control: for --solve-for stretch axial compression"
+        " (lambda_z below its free value, default) or extension; for pressure inflation"
+        " (extension, default) or collapse (compression); for force compression (default)"
+        " or tension (extension)",
     )
 
 
 def check_side_option(args) -> None:
-    """--side belongs to --solve-for stretch only."""
-    if args.side is not None and args.solve_for != "stretch":
-        raise ParameterError(f"--side {args.side} applies only to --solve-for stretch")
+    """--side belongs to --solve-for stretch, pressure and force only."""
+    if args.side is not None and args.solve_for not in ("stretch", "pressure", "force"):
+        raise ParameterError(
+            f"--side {args.side} applies only to --solve-for stretch, pressure or force"
+        )
 
 
 #: The mode families and what a scan covers, in the paper's terms (--help of every command

@@ -24,26 +24,26 @@ from ..figures.plots import plot_mode_shape, render_pattern
 from ..incremental.targets import Family
 from ..shapes.mode_shape import mode_shape
 from ..shapes.wall import export_vtk
+from .critical import tube_line, value_name
 from .options import (
     MODE_COVERAGE,
     add_control_options,
     add_method_option,
     add_mode_option,
     add_mode_range_options,
-    add_tube_options,
     check_side_option,
     finite_number,
     mode_from_args,
     scan_options_from_args,
-    tube_from_args,
 )
+from .tube_input import add_any_tube_options, control_of
 
 HELP = "mode shape of the wrinkles at onset: 3D picture, plot and CSV, VTK mesh of the wall"
 
 
 def configure_pattern(parser: argparse.ArgumentParser) -> None:
     add_control_options(parser)
-    add_tube_options(parser)
+    add_any_tube_options(parser)
     modes = parser.add_argument_group(
         "wrinkling mode u_r = U_r(r) cos(m theta) cos(k z), k = n pi / (lambda_z L)",
         MODE_COVERAGE + " Without --mode the scan's critical mode"
@@ -101,7 +101,7 @@ def configure_pattern(parser: argparse.ArgumentParser) -> None:
 
 
 def run_pattern(args) -> int:
-    params = tube_from_args(args)
+    params, solve_for = control_of(args)
     check_side_option(args)
     if not (math.isfinite(args.amplitude) and args.amplitude >= 0):
         raise ParameterError(f"--amplitude = {args.amplitude:g} is out of range; need A >= 0")
@@ -119,10 +119,10 @@ def run_pattern(args) -> int:
         _check_torsional_outputs(args)
     if mode is not None:
         m, n, family = mode
-        crit = critical_value(params, m, n, args.solve_for, family=family, side=args.side)
+        crit = critical_value(params, m, n, solve_for, family=family, side=args.side)
     else:
         crit = scan_modes(
-            params, args.solve_for, side=args.side, options=scan_options_from_args(args)
+            params, solve_for, side=args.side, options=scan_options_from_args(args)
         ).critical
         if crit.family == Family.TORSIONAL:
             _check_torsional_outputs(args)
@@ -182,14 +182,12 @@ def write_outputs(shape, directory: Path, *, amplitude: float) -> list[Path]:
 
 
 def _print_text(rec: dict) -> None:
-    name = {"growth": "g_cr", "stretch": "lambda_z,cr", "voltage": "Vbar_cr"}[rec["solve_for"]]
+    name = value_name(rec["solve_for"])
     big = rec["max_abs"]
     lines = [
         f"{name} = {rec['value']:.12g}   mode (m, n) = ({rec['m']}, {rec['n']}),"
         f" {rec['family']}, k = {rec['k']:.6g}",
-        f"  tube: Rbar_o = {rec['outer_radius']:g}, L = {rec['length']:g},"
-        f" g = {rec['growth']:.12g}, lambda_z = {rec['stretch']:.12g},"
-        f" Vbar = {rec['voltage']:.12g}, {rec['material']}",
+        tube_line(rec),
         f"  mode shape by {rec['route']} (boundary residual"
         f" {rec['boundary_residual']:.1e}): max |U_r|, |U_theta|, |U_z| = {big['U_r']:.4g},"
         f" {big['U_th']:.4g}, {big['U_z']:.4g}; max |Phi| = {big['Phi']:.4g}",

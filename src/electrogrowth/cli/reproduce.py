@@ -1,15 +1,18 @@
 """``electrogrowth reproduce``: the paper's Figures 4-10, the 3D patterns of Figs 9B/10B
-and an index page (index.md) with the paper's captions and the run's parameters."""
+and an index page (index.md) with the paper's captions and the run's parameters; with
+``--gallery``, the worked examples of layered tubes (figures/gallery.py), their 3D patterns at
+onset and an index page (gallery.md)."""
 
 from __future__ import annotations
 
 import argparse
 import inspect
 import time
+from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
-from ..errors import ParameterError
-from ..figures import FIGURES
+from ..errors import ParameterError, UsageError
+from ..figures import FIGURES, GALLERY
 from ..figures.plots import render_pattern
 from ..shapes.mode_shape import mode_shape
 
@@ -55,9 +58,29 @@ def configure_reproduce(parser: argparse.ArgumentParser) -> None:
         metavar="N",
         help="only these figure numbers (default: all, 4-10)",
     )
+    parser.add_argument(
+        "--gallery",
+        action="store_true",
+        help="the gallery of layered tubes instead of the paper's figures (gallery.md)",
+    )
+    parser.add_argument(
+        "--examples",
+        nargs="+",
+        metavar="NAME",
+        help=f"with --gallery, only these examples (default: all: {', '.join(GALLERY)})",
+    )
+    parser.add_argument(
+        "--workers",
+        type=int,
+        default=1,
+        metavar="N",
+        help="with --gallery, solve the tubes of an example on N processes (default 1)",
+    )
 
 
 def run_reproduce(args) -> int:
+    if args.gallery or args.examples:
+        return run_gallery(args)
     numbers = args.figures or sorted(FIGURES)
     unknown = sorted(set(numbers) - set(FIGURES))
     if unknown:
@@ -124,6 +147,83 @@ def _section(number, fn, result, patterns, seconds, quick) -> str:
             f" lambda_z = {p.stretch:.6g}, Vbar = {p.voltage:.6g}",
             "",
             f"![{point.name}]({path.name})",
+            "",
+        ]
+    return "\n".join(lines)
+
+
+def run_gallery(args) -> int:
+    """Every example of GALLERY (or those of --examples): <name>.png/.csv, the 3D pattern of
+    each of its critical points (<name>-<point>.png) and gallery.md."""
+    names = args.examples or list(GALLERY)
+    unknown = [n for n in names if n not in GALLERY]
+    if unknown:
+        raise ParameterError(
+            f"gallery example {unknown[0]!r} is unknown; choose from {', '.join(GALLERY)}"
+        )
+    if args.workers < 1:
+        raise UsageError(f"--workers {args.workers}: need at least 1")
+    out = args.out
+    out.mkdir(parents=True, exist_ok=True)
+    sections = []
+    pool = ProcessPoolExecutor(args.workers) if args.workers > 1 else None
+    for name in names:
+        fn = GALLERY[name]
+        t = time.perf_counter()
+        result = fn(quick=args.quick, mapper=pool.map if pool else map)
+        result.save(out)
+        patterns = []
+        for label, point in result.points:
+            path = out / f"{name}-{label}.png"
+            render_pattern(mode_shape(point), path=path)
+            patterns.append((label, point, path))
+        seconds = time.perf_counter() - t
+        sections.append(_gallery_section(fn, result, patterns, seconds, args.quick))
+        print(f"{name}: {out / f'{name}.png'} ({seconds:.1f} s)", flush=True)
+    if pool:
+        pool.shutdown()
+    index = out / "gallery.md"
+    index.write_text(
+        "# Gallery: layered, growing, pressurised tubes, computed by electrogrowth\n\n"
+        "Each example: what it computes, its plot, its data and the 3D patterns at onset."
+        " The discussion is in docs/gallery.md.\n\n" + "\n".join(sections)
+    )
+    print(index)
+    return 0
+
+
+def _gallery_section(fn, result, patterns, seconds, quick) -> str:
+    doc = " ".join((fn.__doc__ or "").split())
+    lines = [
+        f"## {result.title}",
+        "",
+        doc,
+        "",
+        f"![{result.title}]({result.name}.png)",
+        "",
+        f"Data: [{result.name}.csv]({result.name}.csv){' (quick run)' if quick else ''};"
+        f" computed in {seconds:.1f} s.",
+        "",
+        "| case | x | value | (m, n) | kind |",
+        "|---|---|---|---|---|",
+    ]
+    for row in result.table:
+        case, parameter, x, _, value, m, n, _, kind, note = row
+        mode = f"({m}, {n})" if m >= 0 else "-"
+        lines.append(f"| {case} | {parameter} = {x:g} | {value:.10g} | {mode} | {kind} {note} |")
+    lines.append("")
+    if result.headline:
+        lines += [
+            "Headline numbers: "
+            + ", ".join(f"{k} = {v:.10g}" for k, v in result.headline.items()),
+            "",
+        ]
+    for label, point, path in patterns:
+        lines += [
+            f"**{label}**: {point.solve_for} = {point.value:.8g}, (m, n) = ({point.m},"
+            f" {point.n}), {point.family}",
+            "",
+            f"![{label}]({path.name})",
             "",
         ]
     return "\n".join(lines)

@@ -35,7 +35,8 @@ def configure_sweep(parser: argparse.ArgumentParser) -> None:
         "file",
         type=Path,
         metavar="SWEEP.toml",
-        help="the sweep: material, fixed parameters, grids, what to solve for,"
+        help="the sweep: material (or a layered [tube] file, whose controls and keys such as"
+        " layers[1].thickness it may fix and vary), fixed parameters, grids, what to solve for,"
         " mode ranges and rtol (see docs/sweeps.md and"
         " examples/sweep.toml); checked in full before any work",
     )

@@ -35,6 +35,14 @@ CRITICAL = {
 }
 
 
+def _tex(name: str) -> str:
+    """A control or tube key of a layered tube as math text (growth[1].theta -> g_theta[1])."""
+    symbols = {"pressure": "P_i", "force": "F", "growth": "g", "outer_pressure": "P_o"}
+    head, _, rest = name.partition("[")
+    text = symbols.get(head, head.replace("_", r"\_"))
+    return text + (r"\," + "[" + rest.replace("_", r"\_") if rest else "")
+
+
 def plot_curve(
     curve: Curve, ax=None, *, color: str = "k", label: str | None = None, annotate: bool = True
 ):
@@ -75,14 +83,22 @@ def plot_curve(
             color=color,
             ms=2.5,
         )
-    ax.set_xlabel(f"${SYMBOLS[curve.along]}$")
-    ax.set_ylabel(f"${CRITICAL[curve.solve_for]}$")
+    ax.set_xlabel(f"${SYMBOLS.get(curve.along, _tex(curve.along))}$")
+    crit = CRITICAL.get(curve.solve_for, _tex(curve.solve_for) + r"_{\rm cr}")
+    ax.set_ylabel(f"${crit}$")
     return ax
 
 
 def describe(shape: ModeShape) -> str:
     """One line: mode and tube, for titles and captions."""
     p = shape.params
+    if hasattr(p, "layers"):  # a layered Tube
+        return (
+            rf"$(m, n) = ({shape.m}, {shape.n})$, {len(p.layers)} layers to"
+            rf" $\bar R = {p.outer_radius:g}$, $L = {p.length:g}$,"
+            rf" $l = {shape.length:.6g}$, $\bar V = {p.voltage:.6g}$,"
+            rf" $P_i = {p.inner_pressure:.6g}$, $P_o = {p.outer_pressure:.6g}$"
+        )
     return (
         rf"$(m, n) = ({shape.m}, {shape.n})$, $\bar R_o = {p.outer_radius:g}$,"
         rf" $L = {p.length:g}$, $g = {p.growth:.6g}$, $\lambda_z = {p.stretch:.6g}$,"
@@ -117,7 +133,10 @@ def plot_mode_shape(shape: ModeShape):
             )
         left.set_ylabel("displacement amplitude (max $|U| = 1$)")
         right.set_ylabel(r"potential amplitude $\Phi$")
+        interfaces = getattr(shape.params, "radii", (1.0, 1.0))[1:-1]  # a layered Tube's
         for ax in (left, right):
+            for R_k in interfaces:  # where the layers meet: U continuous, U' jumps
+                ax.axvline(np.interp(R_k, shape.R, shape.r), color="0.6", lw=0.6, ls="--")
             ax.axhline(0.0, color="0.6", lw=0.5)
             ax.set_xlim(shape.r[0], shape.r[-1])
             ax.set_xlabel(r"current radius $r / R_i$")

@@ -154,11 +154,10 @@ class _Grid:
 def _grid(state, n: float, nodes: int) -> _Grid:
     if not (isinstance(nodes, (int, np.integer)) and nodes >= 6):
         raise ParameterError(f"nodes = {nodes!r} is invalid; need an integer >= 6")
-    prm = state.params
     x, Dx = chebyshev_lobatto(int(nodes))
     h = 0.5 * (state.r_o - state.r_i)
     r = 0.5 * (state.r_o + state.r_i) + h * x
-    k = n * math.pi / (prm.stretch * prm.length)
+    k = n * math.pi / state.current_length
     return _Grid(r=r, rh=r / h, Dx=Dx, kh=k * h, h=h)
 
 
@@ -272,10 +271,14 @@ def _contract(T: FloatArray, X: Operator, out_rank: int) -> Operator:
 
 
 def _fluxes(state, grid: _Grid, m: float) -> tuple[Operator, Operator, Operator]:
-    """Nodal maps of L, the incremental stress S_pi and displacement D_q."""
+    """Nodal maps of L, the incremental stress S_pi and displacement D_q (one layer)."""
     R = _reference_radius(state, grid.r)
-    A, G, K = full_moduli(state.moduli(R))
-    p = np.asarray(state.pressure(R), float)
+    return _fluxes_at(state.moduli(R), np.asarray(state.pressure(R), float), grid, m)
+
+
+def _fluxes_at(moduli, p, grid: _Grid, m: float) -> tuple[Operator, Operator, Operator]:
+    """The maps of :func:`_fluxes` from the moduli and p at the nodes."""
+    A, G, K = full_moduli(moduli)
     L, E, pdot = _operators(grid, m)
     Lt = L.transpose(1, 0, 2, 3)  # Lt[q, j] = L_jq
     # E_p = Gamma_qjp L_jq + K_pq D_q  =>  D = K^{-1} (E - Gamma_qjp L_jq)
@@ -286,6 +289,44 @@ def _fluxes(state, grid: _Grid, m: float) -> tuple[Operator, Operator, Operator]
     for a in range(3):
         S[a, a] -= pdot
     return L, S, Dq
+
+
+def _layer_grid(state, k: int, n: float, nodes: int) -> _Grid:
+    """The grid of layer k of a LayeredState: Lobatto points on [r_{k-1}, r_k] (outer
+    face first), lengths in units of the half-thickness h of the whole wall."""
+    x, Dx = chebyshev_lobatto(int(nodes))
+    h = 0.5 * (state.r_o - state.r_i)
+    a, b = state.radii[k], state.radii[k + 1]
+    hk = 0.5 * (b - a)
+    r = 0.5 * (a + b) + hk * x
+    k_ax = n * math.pi / state.current_length
+    return _Grid(r=r, rh=r / h, Dx=Dx * (h / hk), kh=k_ax * h, h=h)
+
+
+def _layer_fields(state, k: int, r: FloatArray) -> tuple[FloatArray, FloatArray]:
+    """(moduli, p) of layer k at current radii r (its end nodes on the layer's side)."""
+    a, b = state.tube.radii[k], state.tube.radii[k + 1]
+    R = np.clip(state.reference_radius(r, layer=k), a, b)
+    outer_end = R >= b
+    mod, p = np.empty(R.shape + (len(MODULI_INDEX),)), np.empty(R.shape)
+    for side, sel in (("outer", ~outer_end), ("inner", outer_end)):
+        if sel.any():
+            mod[sel] = state.moduli(R[sel], side=side)
+            p[sel] = state.pressure(R[sel], side=side)
+    return mod, p
+
+
+def _segments(state, m: float, n: float, nodes: int) -> list:
+    """[(grid, L, S, D)] of every layer, inner layer first (one for a BaseState)."""
+    if not hasattr(state, "tube"):
+        grid = _grid(state, n, nodes)
+        return [(grid, *_fluxes(state, grid, m))]
+    _grid(state, n, nodes)  # validates ``nodes``
+    out = []
+    for k in range(len(state.tube.layers)):
+        grid = _layer_grid(state, k, n, nodes)
+        out.append((grid, *_fluxes_at(*_layer_fields(state, k, grid.r), grid, m)))
+    return out
 
 
 def collocation_matrix(
@@ -338,7 +379,7 @@ def collocation_matrix(
     M = _complex_matrix(state, m, n, nodes).real
     if pairs == ALL_PAIRS:
         return M.copy()
-    rows, cols = block_indices(int(nodes), pairs)
+    rows, cols = _block_indices(int(nodes), pairs, _layers(state))
     return M[np.ix_(rows, cols)]
 
 
@@ -347,25 +388,82 @@ def _complex_matrix(state, m: float, n: float, nodes: int) -> Operator:
     return _assemble(state, m, n, nodes)[0]
 
 
+def _face_pressures(state) -> tuple[float, float]:
+    tube = getattr(state, "tube", None)
+    return (0.0, 0.0) if tube is None else (tube.inner_pressure, tube.outer_pressure)
+
+
 def _assemble(state, m: float, n: float, nodes: int):
-    """(complex matrix, S, D, grid): the matrix and the nodal maps of S_pi and D_q."""
-    grid = _grid(state, n, nodes)
-    L, S, Dq = _fluxes(state, grid, m)
-    D, ir, ik, im = grid.Dx, 1.0 / grid.rh[:, None], 1j * grid.kh, 1j * m
-    eq_r = D @ S[0, 0] + im * ir * S[1, 0] + ir * (S[0, 0] - S[1, 1]) + ik * S[2, 0]
-    eq_t = D @ S[0, 1] + im * ir * S[1, 1] + ir * (S[1, 0] + S[0, 1]) + ik * S[2, 1]
-    eq_z = D @ S[0, 2] + im * ir * S[1, 2] + ir * S[0, 2] + ik * S[2, 2]
-    maxwell = D @ Dq[0] + ir * (im * Dq[1] + Dq[0]) + ik * Dq[2]
-    incompressible = L[0, 0] + L[1, 1] + L[2, 2]
-    nn = grid.rh.size
-    ends = [0, nn - 1]
-    phi = _layout(nn)["Phi"]
-    eq_r[ends], eq_t[ends], eq_z[ends] = S[0, 0][ends], S[0, 1][ends], S[0, 2][ends]
-    maxwell[ends] = 0.0
-    maxwell[[0, nn - 1], [phi.start, phi.stop - 1]] = 1.0
-    # theta and z rows carry sin factors: times i they are the real cos/sin equations
-    M = np.vstack([eq_r, 1j * eq_t, 1j * eq_z, maxwell, incompressible[1:-1]])
+    """(complex matrix, S, D, grid) with the maps S, D and the grid of the outermost layer.
+
+    Layer blocks of unknowns and equations, inner layer first. The end rows of each
+    layer's r, theta, z and Maxwell equations carry its face or interface conditions
+    (docs/derivation-layered-modes.md): on a face the follower-pressure traction
+    S_ri = P L_ri (P = 0: traction free) and Phi = 0; at an interface the outer end of
+    the inner layer carries the continuity of U_r, U_th, U_z, Phi, the inner end of the
+    outer layer that of S_rr, S_rth, S_rz and D_r.
+    """
+    segs = _segments(state, m, n, nodes)
+    nn, width = int(nodes), 5 * int(nodes) - 2
+    total = width * len(segs)
+    cols = _layout(nn)
+    M = np.zeros((total, total), complex)
+    rows_of = []  # per layer: global row indices of the r, theta, z, Maxwell end rows
+    for k, (grid, L, S, Dq) in enumerate(segs):
+        D, ir, ik, im = grid.Dx, 1.0 / grid.rh[:, None], 1j * grid.kh, 1j * m
+        eq_r = D @ S[0, 0] + im * ir * S[1, 0] + ir * (S[0, 0] - S[1, 1]) + ik * S[2, 0]
+        eq_t = D @ S[0, 1] + im * ir * S[1, 1] + ir * (S[1, 0] + S[0, 1]) + ik * S[2, 1]
+        eq_z = D @ S[0, 2] + im * ir * S[1, 2] + ir * S[0, 2] + ik * S[2, 2]
+        maxwell = D @ Dq[0] + ir * (im * Dq[1] + Dq[0]) + ik * Dq[2]
+        incompressible = L[0, 0] + L[1, 1] + L[2, 2]
+        # theta and z rows carry sin factors: times i they are the real cos/sin equations
+        block = np.vstack([eq_r, 1j * eq_t, 1j * eq_z, maxwell, incompressible[1:-1]])
+        M[k * width : (k + 1) * width, k * width : (k + 1) * width] = block
+        rows_of.append(k * width + np.arange(4)[:, None] * nn + np.array([0, nn - 1]))
+
+    def traction(k, node, P):  # rows S_ri - P L_ri (times 1, i, i), global columns
+        _, L, S, _ = segs[k]
+        out = np.zeros((3, total), complex)
+        for i, c in enumerate((1.0, 1j, 1j)):
+            out[i, k * width : (k + 1) * width] = c * (S[0, i][node] - P * L[0, i][node])
+        return out
+
+    def unknown(k, field, node):  # the row picking one nodal unknown
+        out = np.zeros(total)
+        out[k * width + cols[field].start + node] = 1.0
+        return out
+
+    def radial_d(k, node):
+        out = np.zeros(total, complex)
+        out[k * width : (k + 1) * width] = segs[k][3][0][node]
+        return out
+
+    P_i, P_o = _face_pressures(state)
+    last, fields = len(segs) - 1, ("U_r", "U_th", "U_z", "Phi")
+    inner, outer = rows_of[0][:, 1], rows_of[last][:, 0]
+    M[inner[:3]], M[inner[3]] = traction(0, nn - 1, P_i), unknown(0, "Phi", nn - 1)
+    M[outer[:3]], M[outer[3]] = traction(last, 0, P_o), unknown(last, "Phi", 0)
+    for k in range(last):  # interface k | k + 1: node 0 of k is node nn - 1 of k + 1
+        below, above = rows_of[k][:, 0], rows_of[k + 1][:, 1]
+        for row, f in zip(below, fields):
+            M[row] = unknown(k, f, 0) - unknown(k + 1, f, nn - 1)
+        M[above[:3]] = traction(k, 0, 0.0) - traction(k + 1, nn - 1, 0.0)
+        M[above[3]] = radial_d(k, 0) - radial_d(k + 1, nn - 1)
+    grid, _, S, Dq = segs[last]
     return M, S, Dq, grid
+
+
+def _block_indices(nn: int, pairs: int, layers: int) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`block_indices` of every layer block, with the layers' offsets."""
+    rows, cols = block_indices(nn, pairs)
+    width = 5 * nn - 2
+    offsets = width * np.arange(layers)[:, None]
+    return (rows + offsets).ravel(), (cols + offsets).ravel()
+
+
+def _layers(state) -> int:
+    tube = getattr(state, "tube", None)
+    return 1 if tube is None else len(tube.layers)
 
 
 def collocation_impedance(
@@ -383,32 +481,29 @@ def collocation_impedance(
     singular where the mode is at bifurcation, infinite at a pole of z.
     """
     pairs = check_pairs(pairs)
-    nn = int(nodes)
+    nn, width, layers = int(nodes), 5 * int(nodes) - 2, _layers(state)
     M, S, Dq, grid = _assemble(state, m, n, nn)
     cols, r_o, h = _layout(nn), grid.r[0], grid.h  # node 0 is the outer face
+    off = width * (layers - 1)  # the outermost layer's block
     # outer-face maps of the Stroh U and S (physical units) on the scaled unknowns
-    U_out = np.zeros((4, 5 * nn - 2))
+    U_out = np.zeros((4, width * layers))
     for j, f in enumerate(("U_r", "U_th", "U_z")):
-        U_out[j, cols[f].start] = h
-    U_out[3] = r_o * Dq[0][0].real
-    S_out = np.stack(
-        [
-            r_o * S[0, 0][0].real,
-            r_o * (1j * S[0, 1][0]).real,
-            r_o * (1j * S[0, 2][0]).real,
-            np.zeros(5 * nn - 2),
-        ]
-    )
-    S_out[3, cols["Phi"].start] = -h
-    face_rows = [0, nn, 2 * nn, 3 * nn]  # S_rr, S_rth, S_rz, Phi = 0 at r_o
+        U_out[j, off + cols[f].start] = h
+    U_out[3, off:] = r_o * Dq[0][0].real
+    S_out = np.zeros((4, width * layers))
+    S_out[0, off:] = r_o * S[0, 0][0].real
+    S_out[1, off:] = r_o * (1j * S[0, 1][0]).real
+    S_out[2, off:] = r_o * (1j * S[0, 2][0]).real
+    S_out[3, off + cols["Phi"].start] = -h
+    face_rows = [off, off + nn, off + 2 * nn, off + 3 * nn]  # S_rr, S_rth, S_rz, Phi at r_o
     A = M.real.copy()
     A[face_rows] = U_out
-    rows, keep_cols = block_indices(nn, pairs)
+    rows, keep_cols = _block_indices(nn, pairs, layers)
     kept = [j for j in range(4) if (pairs >> j) & 1]
-    rhs = np.zeros((5 * nn - 2, len(kept)))
+    rhs = np.zeros((width * layers, len(kept)))
     for c, j in enumerate(kept):
         rhs[face_rows[j], c] = 1.0
-    v = np.zeros((5 * nn - 2, len(kept)))
+    v = np.zeros((width * layers, len(kept)))
     v[keep_cols] = np.linalg.solve(A[np.ix_(rows, keep_cols)], rhs[rows])
     return (S_out @ v)[kept]
 
@@ -425,7 +520,9 @@ def collocation_target(
     and column order of :func:`collocation_matrix`, det M < 0 there (s0 = -1) at every
     ``nodes`` and mode, and so on every state reached from it without crossing a
     bifurcation (tested); a family block (``pairs``) has the sign of
-    :func:`stable_det_sign`. Roots of even multiplicity are not seen.
+    :func:`stable_det_sign`. For a layered tube s0 = 1: the sign on the stable side is read
+    off its unloaded tube by the march (as it is for every method). Roots of even
+    multiplicity are not seen.
 
     Where blocks decouple (m = 0 or n = 0), det M is exactly the product of the blocks'
     determinants, but sigma_min / sigma_max of M is not the product of the blocks' ratios:
@@ -439,7 +536,8 @@ def collocation_target(
     M = collocation_matrix(state, m, n, nodes=nodes, pairs=pairs)
     sign, _ = np.linalg.slogdet(M)
     s = scipy.linalg.svdvals(M, check_finite=False)
-    return float(stable_det_sign(pairs, nodes) * sign * s[-1] / s[0])
+    s0 = stable_det_sign(pairs, nodes) if _layers(state) == 1 else 1.0
+    return float(s0 * sign * s[-1] / s[0])
 
 
 def critical_collocation(
@@ -532,18 +630,28 @@ def mode_shape_collocation(
     ``pairs`` (a family's block) the left-out unknowns are exactly zero.
     """
     M = collocation_matrix(state, m, n, nodes=nodes, pairs=pairs)
-    grid = _grid(state, n, nodes)
-    nn = grid.rh.size
-    v = np.zeros(5 * nn - 2)
-    v[block_indices(nn, check_pairs(pairs))[1]] = np.linalg.svd(M)[2][-1]
+    nn, layers = int(nodes), _layers(state)
+    width = 5 * nn - 2
+    v = np.zeros(width * layers)
+    v[_block_indices(nn, check_pairs(pairs), layers)[1]] = np.linalg.svd(M)[2][-1]
+    grids = (
+        [_grid(state, n, nn)]
+        if layers == 1
+        else [_layer_grid(state, k, n, nn) for k in range(layers)]
+    )
     cols = _layout(nn)
-    parts = {f: v[cols[f]] for f in _FIELDS}
-    parts["P"] = interior_interpolation(nn) @ parts["P"]
-    for f in ("U_r", "U_th", "U_z", "Phi"):
-        parts[f] = parts[f] * grid.h  # back from units of h
-    parts = {f: a[::-1] for f, a in parts.items()}
+    pieces = []
+    for k, grid in enumerate(grids):  # inner layer first
+        parts = {f: v[k * width + cols[f].start : k * width + cols[f].stop] for f in _FIELDS}
+        parts["P"] = interior_interpolation(nn) @ parts["P"]
+        for f in ("U_r", "U_th", "U_z", "Phi"):
+            parts[f] = parts[f] * grid.h  # back from units of h
+        parts = {f: a[::-1] for f, a in parts.items()}
+        parts["r"] = grid.r[::-1].copy()
+        pieces.append(parts)
+    parts = {f: np.concatenate([p[f] for p in pieces]) for f in _FIELDS + ("r",)}
     disp = np.concatenate([parts["U_r"], parts["U_th"], parts["U_z"]])
     scale = disp[np.argmax(np.abs(disp))]
     out = {f: parts[f] / scale for f in _FIELDS}
-    out["r"] = grid.r[::-1].copy()
+    out["r"] = parts["r"]
     return out

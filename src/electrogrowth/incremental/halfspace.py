@@ -291,11 +291,107 @@ def _inverse(A, out) -> bool:
 
 
 @numba.njit(cache=True)
-def _targets_kernel(E, w, inner, f, margin):
-    """f[i] = sign(det X) det Y / sqrt(det M^T M), M = P[:, 4:], P the projector on the
-    decaying subspace of N_i = sum_k w[i, k] E[k], from sign(N_i) by Newton's iteration
-    Z <- (Z + Z^-1) / 2 (determinant scaling for the first 4 steps). Once a step falls
-    below 1e-8 |Z| convergence is quadratic and two more reach rounding level.
+def _decaying_basis(E, w, inner, Z, N, Zi, M) -> bool:
+    """M (8, 4) = P[:, 4:], P the projector on the decaying subspace of N = sum_k w[k] E[k]
+    (left in N), from sign(N) by Newton's iteration Z <- (Z + Z^-1) / 2 (determinant
+    scaling for the first 4 steps). Once a step falls below 1e-8 |Z| convergence is
+    quadratic and two more reach rounding level. False if the iteration fails."""
+    for a in range(8):
+        for b in range(8):
+            acc = 0.0
+            for k in range(6):
+                acc += w[k] * E[k, a, b]
+            Z[a, b] = acc
+            N[a, b] = acc
+    ok = False
+    extra = -1
+    for it in range(80):
+        if not _inverse(Z, Zi):
+            break
+        mu = 1.0
+        if it < 4:
+            dz = abs(determinant(Z))
+            if dz > 0.0 and np.isfinite(dz):
+                mu = dz ** (-0.125)
+        step, size = 0.0, 0.0
+        for a in range(8):
+            for b in range(8):
+                new = 0.5 * (mu * Z[a, b] + Zi[a, b] / mu)
+                step = max(step, abs(new - Z[a, b]))
+                size = max(size, abs(new))
+                Z[a, b] = new
+        if not np.isfinite(step):
+            break
+        if extra > 0:
+            extra -= 1
+        elif extra < 0 and it >= 4 and step <= 1e-8 * size:
+            extra = 2
+        if extra == 0:
+            ok = True
+            break
+    if not ok:
+        return False
+    sgn = -0.5 if inner else 0.5
+    for a in range(8):
+        for b in range(4):
+            M[a, b] = sgn * Z[a, 4 + b] + (0.5 if a == 4 + b else 0.0)
+    return True
+
+
+@numba.njit(cache=True)
+def _gram(M, gram, gi) -> float:
+    """gram = M^T M, gi its inverse; returns det(gram), 0 if it is not invertible."""
+    for a in range(4):
+        for b in range(4):
+            acc = 0.0
+            for c in range(8):
+                acc += M[c, a] * M[c, b]
+            gram[a, b] = acc
+    g = determinant(gram)
+    if not (g > 1e-200 and _inverse(gram, gi)):
+        return 0.0
+    return g
+
+
+@numba.njit(cache=True)
+def _restricted_margin(N, M, gi) -> float:
+    """min |Re nu| / max |nu| over the eigenvalues nu of the restriction
+    R = (M^T M)^-1 M^T N M of N to the subspace spanned by M (the other four are -nu)."""
+    NM = np.empty((8, 4))
+    MNM = np.empty((4, 4))
+    R = np.empty((4, 4), np.complex128)
+    for a in range(8):
+        for b in range(4):
+            acc = 0.0
+            for c in range(8):
+                acc += N[a, c] * M[c, b]
+            NM[a, b] = acc
+    for a in range(4):
+        for b in range(4):
+            acc = 0.0
+            for c in range(8):
+                acc += M[c, a] * NM[c, b]
+            MNM[a, b] = acc
+    for a in range(4):
+        for b in range(4):
+            acc = 0.0
+            for c in range(4):
+                acc += gi[a, c] * MNM[c, b]
+            R[a, b] = acc
+    ev = np.linalg.eigvals(R)
+    lo, hi = np.inf, 0.0
+    for e in ev:
+        lo = min(lo, abs(e.real))
+        hi = max(hi, abs(e))
+    return lo / hi if hi > 0.0 else 0.0
+
+
+@numba.njit(cache=True)
+def _targets_kernel(E, w, inner, pressure, f, margin):
+    """f[i] = sign(det X) det(Y - Z X) / sqrt(det M^T M), M = [X; Y] = P[:, 4:], P the
+    projector on the decaying subspace of N_i = sum_k w[i, k] E[k] (:func:`_decaying_basis`),
+    Z = -pressure [[0, c, s, 0], [c, 0, 0, 0], [s, 0, 0, 0], 0] the scaled follower-pressure
+    impedance (c = w[i, 1], s = w[i, 2]; Z = 0 without pressure: det Y).
 
     margin[i] = min |Re nu| / max |nu| over the eigenvalues nu of the restriction
     R = (M^T M)^-1 M^T N M of N to the computed subspace (the other four are -nu): where
@@ -308,87 +404,79 @@ def _targets_kernel(E, w, inner, f, margin):
     M = np.empty((8, 4))
     gram = np.empty((4, 4))
     gi = np.empty((4, 4))
-    NM = np.empty((8, 4))
-    MNM = np.empty((4, 4))
-    R = np.empty((4, 4), np.complex128)
+    B = np.empty((4, 4))
     for i in range(w.shape[0]):
-        for a in range(8):
-            for b in range(8):
-                acc = 0.0
-                for k in range(6):
-                    acc += w[i, k] * E[k, a, b]
-                Z[a, b] = acc
-                N[a, b] = acc
-        ok = False
-        extra = -1
-        for it in range(80):
-            if not _inverse(Z, Zi):
-                break
-            mu = 1.0
-            if it < 4:
-                dz = abs(determinant(Z))
-                if dz > 0.0 and np.isfinite(dz):
-                    mu = dz ** (-0.125)
-            step, size = 0.0, 0.0
-            for a in range(8):
-                for b in range(8):
-                    new = 0.5 * (mu * Z[a, b] + Zi[a, b] / mu)
-                    step = max(step, abs(new - Z[a, b]))
-                    size = max(size, abs(new))
-                    Z[a, b] = new
-            if not np.isfinite(step):
-                break
-            if extra > 0:
-                extra -= 1
-            elif extra < 0 and it >= 4 and step <= 1e-8 * size:
-                extra = 2
-            if extra == 0:
-                ok = True
-                break
         f[i] = np.nan
         margin[i] = 0.0
-        if not ok:
+        if not _decaying_basis(E, w[i], inner, Z, N, Zi, M):
             continue
-        sgn = -0.5 if inner else 0.5
-        for a in range(8):
-            for b in range(4):
-                M[a, b] = sgn * Z[a, 4 + b] + (0.5 if a == 4 + b else 0.0)
-        for a in range(4):
-            for b in range(4):
-                acc = 0.0
-                for c in range(8):
-                    acc += M[c, a] * M[c, b]
-                gram[a, b] = acc
-        g = determinant(gram)
-        if not (g > 1e-200 and _inverse(gram, gi)):
+        g = _gram(M, gram, gi)
+        if g == 0.0:
             continue
         dx = determinant(M[:4].copy())
-        dy = determinant(M[4:].copy())
+        for a in range(4):
+            for b in range(4):
+                B[a, b] = M[4 + a, b]
+        if pressure != 0.0:  # B = Y - Z X, Z = -P [[0, c, s, 0], [c, 0, 0, 0], [s, 0, 0, 0], 0]
+            c, s = w[i, 1], w[i, 2]
+            for b in range(4):
+                B[0, b] += pressure * (c * M[1, b] + s * M[2, b])
+                B[1, b] += pressure * c * M[0, b]
+                B[2, b] += pressure * s * M[0, b]
+        dy = determinant(B)
         f[i] = (1.0 if dx >= 0.0 else -1.0) * dy / np.sqrt(g)
+        margin[i] = _restricted_margin(N, M, gi)
+
+
+@numba.njit(cache=True)
+def _interface_kernel(Eb, Ea, w, f, margin):
+    """f[i] = sign(det X_b det X_a) det [M_b M_a] / sqrt(det(M_b^T M_b) det(M_a^T M_a))
+    = det(z_b - z_a) / sqrt(det(I + z_b^T z_b) det(I + z_a^T z_a)): M_b the solutions of the
+    layer below decaying as r decreases (its half-space at an outer face), M_a those of the
+    layer above decaying as r increases (at an inner face). margin[i] the smaller of the two
+    restricted margins."""
+    Z = np.empty((8, 8))
+    Nb = np.empty((8, 8))
+    Na = np.empty((8, 8))
+    Zi = np.empty((8, 8))
+    Mb = np.empty((8, 4))
+    Ma = np.empty((8, 4))
+    gram = np.empty((4, 4))
+    gib = np.empty((4, 4))
+    gia = np.empty((4, 4))
+    W = np.empty((8, 8))
+    for i in range(w.shape[0]):
+        f[i] = np.nan
+        margin[i] = 0.0
+        if not _decaying_basis(Eb, w[i], False, Z, Nb, Zi, Mb):
+            continue
+        if not _decaying_basis(Ea, w[i], True, Z, Na, Zi, Ma):
+            continue
+        gb = _gram(Mb, gram, gib)
+        ga = _gram(Ma, gram, gia)
+        if gb == 0.0 or ga == 0.0:
+            continue
         for a in range(8):
             for b in range(4):
-                acc = 0.0
-                for c in range(8):
-                    acc += N[a, c] * M[c, b]
-                NM[a, b] = acc
-        for a in range(4):
-            for b in range(4):
-                acc = 0.0
-                for c in range(8):
-                    acc += M[c, a] * NM[c, b]
-                MNM[a, b] = acc
-        for a in range(4):
-            for b in range(4):
-                acc = 0.0
-                for c in range(4):
-                    acc += gi[a, c] * MNM[c, b]
-                R[a, b] = acc
-        ev = np.linalg.eigvals(R)
-        lo, hi = np.inf, 0.0
-        for e in ev:
-            lo = min(lo, abs(e.real))
-            hi = max(hi, abs(e))
-        margin[i] = lo / hi if hi > 0.0 else 0.0
+                W[a, b] = Mb[a, b]
+                W[a, 4 + b] = Ma[a, b]
+        sx = determinant(Mb[:4].copy()) * determinant(Ma[:4].copy())
+        f[i] = (1.0 if sx >= 0.0 else -1.0) * determinant(W) / np.sqrt(gb * ga)
+        margin[i] = min(_restricted_margin(Nb, Mb, gib), _restricted_margin(Na, Ma, gia))
+
+
+def _direction_weights(psi: float) -> FloatArray:
+    c, s = math.cos(psi), math.sin(psi)
+    return np.array([[1.0, c, s, c * c, s * s, c * s]])
+
+
+def _masked(problem, psi) -> FloatArray:
+    """problem.target over an array of psi: NaN where the margin is below ELLIPTICITY_TOL."""
+    psi = np.asarray(psi, float)
+    if psi.ndim == 0:
+        return np.float64(problem.target_scalar(float(psi)))
+    f, margin = problem.target_and_margin(psi.reshape(-1))
+    return np.where(margin > ELLIPTICITY_TOL, f, np.nan).reshape(psi.shape)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -396,25 +484,37 @@ class FaceProblem:
     """The half-space at one face: N(psi) = sum_k w_k(psi) E_k and its target.
 
     Build with :meth:`from_state` (a solved base state) or :meth:`from_moduli`; then
-    :meth:`target` and :meth:`margin` are vectorised over psi.
+    :meth:`target` and :meth:`margin` are vectorised over psi. ``pressure`` is the follower
+    pressure P on the face (sigma_rr = -P there; P_i at the inner face, P_o at the outer):
+    the face condition is S~ = Z U~, Z = -P [[0, c, s, 0], [c, 0, 0, 0], [s, 0, 0, 0], 0]
+    (docs/derivation-layered-modes.md), and the target sign(det X) det(Y - Z X) /
+    sqrt(det M^T M).
     """
 
     face: str
     expansion: FloatArray  # (6, 8, 8), see limit_expansion
     radius: float = math.nan  # current radius of the face (for k r / m), if known
+    pressure: float = 0.0  # follower pressure on the face
+
+    @property
+    def name(self) -> str:
+        return self.face
 
     @classmethod
-    def from_moduli(cls, mod, p, face: str, radius: float = math.nan) -> FaceProblem:
+    def from_moduli(
+        cls, mod, p, face: str, radius: float = math.nan, pressure: float = 0.0
+    ) -> FaceProblem:
         return cls(
             check_face(face),
             limit_expansion(np.asarray(mod, float).reshape(23), float(p)),
             float(radius),
+            float(pressure),
         )
 
     @classmethod
     def from_state(cls, state, face: str) -> FaceProblem:
         mod, p, r = face_data(state, face)
-        return cls.from_moduli(mod, p, face, r)
+        return cls.from_moduli(mod, p, face, r, face_pressure(state, face))
 
     def matrix(self, psi) -> FloatArray:
         """N(psi), shape psi.shape + (8, 8)."""
@@ -428,26 +528,22 @@ class FaceProblem:
         return out.reshape(psi.shape)
 
     def target(self, psi) -> FloatArray:
-        """f = sign(det X) det Y / sqrt(det(M^T M)) for a basis M = [X; Y] of the decaying
-        subspace (module docstring), NaN where the decaying split fails.
+        """f = sign(det X) det(Y - Z X) / sqrt(det(M^T M)) for a basis M = [X; Y] of the
+        decaying subspace (module docstring; Z = 0 without pressure), NaN where the
+        decaying split fails.
 
         The basis is M = P [0; I], P = (I -+ sign N) / 2 the spectral projector on the
         decaying subspace (sign N by Newton's iteration, vectorised over psi): its columns
         span the subspace because no growing solution has U = 0 on the face (strong
         ellipticity, the argument that excludes poles)."""
-        psi = np.asarray(psi, float)
-        flat = psi.reshape(-1)
-        if psi.ndim == 0:
-            return np.float64(self.target_scalar(float(psi)))
-        f, margin = self.target_and_margin(flat)
-        return np.where(margin > ELLIPTICITY_TOL, f, np.nan).reshape(psi.shape)
+        return _masked(self, psi)
 
     def target_scalar(self, psi: float) -> float:
         """:meth:`target` for one direction, as a float (less overhead)."""
-        c, s = math.cos(psi), math.sin(psi)
-        w = np.array([[1.0, c, s, c * c, s * s, c * s]])
         f, margin = np.empty(1), np.empty(1)
-        _targets_kernel(self.expansion, w, self.face == "inner", f, margin)
+        _targets_kernel(
+            self.expansion, _direction_weights(psi), self.face == "inner", self.pressure, f, margin
+        )
         return float(f[0]) if margin[0] > ELLIPTICITY_TOL else math.nan
 
     def target_and_margin(self, psi) -> tuple[FloatArray, FloatArray]:
@@ -456,8 +552,120 @@ class FaceProblem:
         flat = np.ascontiguousarray(np.asarray(psi, float).reshape(-1))
         f = np.empty(flat.size)
         margin = np.empty(flat.size)
-        _targets_kernel(self.expansion, _weights(flat), self.face == "inner", f, margin)
+        _targets_kernel(
+            self.expansion, _weights(flat), self.face == "inner", self.pressure, f, margin
+        )
         return f, margin
+
+
+@dataclasses.dataclass(frozen=True)
+class InterfaceProblem:
+    """The short-wave problem at a bonded interface: two half-spaces, the layer below
+    (moduli and p on its side, solutions decaying as r decreases, like an outer face) and
+    the layer above (decaying as r increases, like an inner face), with eta~ continuous.
+
+    With z_b = Y_b X_b^-1, z_a = Y_a X_a^-1 the interface bifurcates iff det(z_b - z_a) = 0;
+    the target
+
+        f = det(z_b - z_a) / sqrt(det(I + z_b^T z_b) det(I + z_a^T z_a))
+          = sign(det X_b det X_a) det [M_b M_a] / sqrt(det(M_b^T M_b) det(M_a^T M_a))
+
+    depends on the subspaces only, |f| <= 1 (Hadamard), and has no poles (X_b, X_a are
+    invertible under strong ellipticity). On the unloaded tube z_b > 0 and z_a < 0, so
+    f > 0. docs/derivation-layered-modes.md.
+    """
+
+    name: str
+    below: FloatArray  # (6, 8, 8) expansion of the layer inside the interface
+    above: FloatArray  # (6, 8, 8) expansion of the layer outside it
+    radius: float = math.nan
+
+    @classmethod
+    def from_moduli(
+        cls, mod_below, p_below, mod_above, p_above, name: str = "interface", radius=math.nan
+    ) -> InterfaceProblem:
+        return cls(
+            name,
+            limit_expansion(np.asarray(mod_below, float).reshape(23), float(p_below)),
+            limit_expansion(np.asarray(mod_above, float).reshape(23), float(p_above)),
+            float(radius),
+        )
+
+    @classmethod
+    def from_state(cls, state, name: str) -> InterfaceProblem:
+        k = _interface_index(state, name)
+        R = state.tube.radii[k]
+        return cls.from_moduli(
+            np.asarray(state.moduli(R, side="inner"), float),
+            float(state.pressure(R, side="inner")),
+            np.asarray(state.moduli(R, side="outer"), float),
+            float(state.pressure(R, side="outer")),
+            name,
+            float(state.radii[k]),
+        )
+
+    def margin(self, psi) -> FloatArray:
+        """The smaller ellipticity margin of the two layers' N(psi)."""
+        psi = np.asarray(psi, float)
+        out = []
+        for E in (self.below, self.above):
+            N = np.einsum("...k,kij->...ij", _weights(psi.reshape(-1)), E)
+            ev = np.linalg.eigvals(N)
+            out.append(np.min(np.abs(ev.real), -1) / np.maximum(np.max(np.abs(ev), -1), 1e-300))
+        return np.minimum(*out).reshape(psi.shape)
+
+    def target(self, psi) -> FloatArray:
+        """f(psi) (class docstring), NaN where either decaying split fails."""
+        return _masked(self, psi)
+
+    def target_scalar(self, psi: float) -> float:
+        f, margin = np.empty(1), np.empty(1)
+        _interface_kernel(self.below, self.above, _direction_weights(psi), f, margin)
+        return float(f[0]) if margin[0] > ELLIPTICITY_TOL else math.nan
+
+    def target_and_margin(self, psi) -> tuple[FloatArray, FloatArray]:
+        flat = np.ascontiguousarray(np.asarray(psi, float).reshape(-1))
+        f = np.empty(flat.size)
+        margin = np.empty(flat.size)
+        _interface_kernel(self.below, self.above, _weights(flat), f, margin)
+        return f, margin
+
+
+def surfaces(state_or_tube) -> tuple[str, ...]:
+    """The surfaces where short waves can live: ("inner", "outer") for a homogeneous tube,
+    and "interface-1", ..., "interface-(N-1)" (between layers k and k + 1) for a tube of N
+    layers (a base state, a Tube or a TubeParameters)."""
+    tube = getattr(state_or_tube, "tube", state_or_tube)
+    layers = getattr(tube, "layers", ())
+    return FACES + tuple(f"interface-{k}" for k in range(1, len(layers)))
+
+
+def _interface_index(state, name: str) -> int:
+    tube = getattr(state, "tube", None)
+    n = len(getattr(tube, "layers", ()))
+    prefix = "interface-"
+    if isinstance(name, str) and name.startswith(prefix) and name[len(prefix) :].isdigit():
+        k = int(name[len(prefix) :])
+        if 1 <= k < n:
+            return k
+    raise ParameterError(
+        f"surface = {name!r} is unknown; choose one of {', '.join(surfaces(state))}"
+    )
+
+
+def surface_radius(state, name: str) -> float:
+    """Current radius of the surface ``name`` of a solved base state."""
+    if name in FACES:
+        return state.r_i if name == "inner" else state.r_o
+    return float(state.radii[_interface_index(state, name)])
+
+
+def surface_problem(state, name: str) -> FaceProblem | InterfaceProblem:
+    """The short-wave problem at the surface ``name`` (:func:`surfaces`) of a solved base
+    state: a FaceProblem (with the face's follower pressure) or an InterfaceProblem."""
+    if name in FACES:
+        return FaceProblem.from_state(state, name)
+    return InterfaceProblem.from_state(state, name)
 
 
 def target_from_moduli(mod, p, psi, face: str) -> FloatArray:
@@ -479,15 +687,34 @@ def schur_target(mod, p, psi: float, face: str) -> float:
 
 
 def face_radius(state, face: str) -> float:
-    """Reference radius R of the face: 1 (inner) or Rbar_o (outer)."""
-    return 1.0 if check_face(face) == "inner" else state.params.outer_radius
+    """Reference radius R of the face: 1 (inner) or the outer radius (Rbar_o, R_N)."""
+    if check_face(face) == "inner":
+        return 1.0
+    tube = getattr(state, "tube", None)
+    return tube.outer_radius if tube is not None else state.params.outer_radius
 
 
 def face_data(state, face: str) -> tuple[FloatArray, float, float]:
-    """(moduli (23,), p, current radius r) of a solved base state at ``face``."""
+    """(moduli (23,), p, current radius r) of a solved base state at ``face`` (for a layered
+    state, of the layer at that face)."""
     R = face_radius(state, face)
     r = state.r_i if face == "inner" else state.r_o
+    if getattr(state, "tube", None) is not None:
+        side = "outer" if face == "inner" else "inner"  # the layer on the wall's side
+        return (
+            np.asarray(state.moduli(R, side=side), float).reshape(23),
+            float(state.pressure(R, side=side)),
+            r,
+        )
     return (np.asarray(state.moduli(R), float).reshape(23), float(state.pressure(R)), r)
+
+
+def face_pressure(state, face: str) -> float:
+    """The follower pressure on ``face`` (P_i inner, P_o outer; 0 without a Tube)."""
+    tube = getattr(state, "tube", None)
+    if tube is None:
+        return 0.0
+    return float(tube.inner_pressure if check_face(face) == "inner" else tube.outer_pressure)
 
 
 def surface_target(state, face: str, psi) -> FloatArray:

@@ -40,7 +40,7 @@ from typing import NamedTuple
 import numba as nb
 import numpy as np
 
-from .charts import SWITCH, chart_setup, chart_target, switch_chart
+from .charts import SWITCH, chart_perm, chart_setup, chart_target, determinant, switch_chart
 from .dop853 import E3, E5, N_STAGES, ORDER, A, B, C
 from .radial_table import RadialTable
 from .stroh import stroh_matrix
@@ -81,7 +81,7 @@ class _Work(NamedTuple):
 @nb.njit(cache=True)
 def _new_work(table):
     return _Work(
-        np.empty(2 * table.coef.shape[0]),
+        np.empty(2 * table.coef.shape[1]),
         np.empty(23),
         np.empty((8, 8)),
         np.empty((8, 8)),
@@ -92,21 +92,17 @@ def _new_work(table):
 
 
 @nb.njit(cache=True)
-def _radius(table, R):
-    """Current radius r(R) = sqrt(r_i^2 + a (R^2 - 1))."""
-    return np.sqrt(table.inner_radius_sq + table.area_ratio * (R * R - 1.0))
+def _base_at(R, table, seg, vals, mod):
+    """Fill mod[23] at R in segment ``seg``; return (p, r, w = (dr/dR)/r).
 
-
-@nb.njit(cache=True)
-def _base_at(R, table, vals, mod):
-    """Fill mod[23] at R; return (p, r, w = (dr/dR)/r).
-
-    One Clenshaw recurrence for all distinct functions at once (the coefficient rows are
-    zero-padded), so the inner loop runs across functions and vectorises.
+    One Clenshaw recurrence for all distinct functions of the segment at once (the
+    coefficient rows are zero-padded), so the inner loop runs across functions and
+    vectorises.
     """
-    coef, fmap, ro = table.coef, table.fmap, table.outer_radius
-    x2 = 2.0 * (2.0 * R - 1.0 - ro) / (ro - 1.0)
-    nf, width = coef.shape
+    coef, fmap = table.coef[seg], table.fmap[seg]
+    a, b = table.bounds[seg], table.bounds[seg + 1]
+    x2 = 2.0 * (2.0 * R - a - b) / (b - a)
+    nf, width = table.n_funcs[seg], coef.shape[1]
     b1 = vals  # reuse scratch: vals[:nf] = b1, vals[nf:2nf] = b2
     for f in range(2 * nf):
         b1[f] = 0.0
@@ -119,14 +115,13 @@ def _base_at(R, table, vals, mod):
         b1[f] = 0.5 * x2 * b1[f] - b1[nf + f] + coef[f, 0]
     for f in range(23):
         mod[f] = vals[fmap[f]]
-    r = _radius(table, R)
-    return vals[fmap[23]], r, table.area_ratio * R / (r * r)
+    return vals[fmap[23]], vals[fmap[24]], vals[fmap[25]]
 
 
 @nb.njit(cache=True)
-def _rhs(R, z, m, k, table, work, out):
+def _rhs(R, z, m, k, table, seg, work, out):
     """dz~/dR = w (G3 - z G1 - (z G1)^T - z G2 z), using G4 = -G1^T (G Hamiltonian)."""
-    p, r, w = _base_at(R, table, work.vals, work.mod)
+    p, r, w = _base_at(R, table, seg, work.vals, work.mod)
     G, Gt, P, perm, mult = work.G, work.Gt, work.P, work.perm, work.mult
     stroh_matrix(work.mod, p, m, k * r, G)
     for a in range(8):  # the blocks G~1, G~2 (rows 0-3) and G~3 (rows 4-7, cols 0-3)
@@ -151,7 +146,7 @@ def _rhs(R, z, m, k, table, work, out):
 
 
 @nb.njit(cache=True)
-def _step(R, h, z, m, k, table, work, K, ztmp, znew):
+def _step(R, h, z, m, k, table, seg, work, K, ztmp, znew):
     """One DOP853 step of size h from (R, z), given K[0] = dz~/dR there.
 
     Writes the 8th-order solution at R + h into ``znew`` and the stages into K[1..12],
@@ -164,14 +159,14 @@ def _step(R, h, z, m, k, table, work, K, ztmp, znew):
                 for q in range(st):
                     acc += _A[st, q] * K[q, i, j]
                 ztmp[i, j] = z[i, j] + h * acc
-        _rhs(R + _C[st] * h, ztmp, m, k, table, work, K[st])
+        _rhs(R + _C[st] * h, ztmp, m, k, table, seg, work, K[st])
     for i in range(4):
         for j in range(4):
             acc = 0.0
             for q in range(_NS):
                 acc += _B[q] * K[q, i, j]
             znew[i, j] = z[i, j] + h * acc
-    _rhs(R + h, znew, m, k, table, work, K[_NS])
+    _rhs(R + h, znew, m, k, table, seg, work, K[_NS])
 
 
 @nb.njit(cache=True)
@@ -206,7 +201,7 @@ def impedance_scale(m: float, k: float, r_o: float) -> float:
 
 @nb.njit(cache=True)
 def _start(keep):
-    """z~(r_i): 0 on the kept pairs (S = 0 on the inner face), 1 on the left-out ones
+    """z~(r_i) of a traction-free face: 0 on the kept pairs (S = 0), 1 on the left-out ones
     (constant: their rows and columns of G are zero); and the factor sqrt(2)^(left out)
     that undoes their 1/sqrt(2) in the target."""
     z = np.zeros((4, 4))
@@ -219,98 +214,174 @@ def _start(keep):
 
 
 @nb.njit(cache=True)
+def face_impedance(P, m, kr, keep, s):
+    """The scaled impedance z_P / s of a follower pressure P on a face (S = z_P U there).
+
+    The incremental traction of a pressure P that follows the face is S^T n = P L^T n
+    (tr L = 0; docs/derivation-layered-modes.md), i.e. Sigma_ri = P du_r/dx_i on r = const:
+
+        z_P = -P [[1, m, kr, 0], [m, 1, 0, 0], [kr, 0, 0, 0], [0, 0, 0, 0]],
+
+    symmetric, so the impedance stays in the Lagrangian Grassmannian. Rows and columns of
+    left-out pairs are zero.
+    """
+    zp = np.zeros((4, 4))
+    if P == 0.0:
+        return zp
+    zp[0, 0] = -P
+    zp[0, 1] = zp[1, 0] = -P * m
+    zp[0, 2] = zp[2, 0] = -P * kr
+    zp[1, 1] = -P
+    for i in range(4):
+        for j in range(4):
+            if not ((keep >> i) & 1 and (keep >> j) & 1):
+                zp[i, j] = 0.0
+            else:
+                zp[i, j] /= s
+    return zp
+
+
+@nb.njit(cache=True)
+def pressure_target(z, J, orient, zp):
+    """The target with the outer-face condition S = z_P U: det(M2 - z_P M1) / sqrt(det(M^T M))
+    for the basis M = [M1; M2] = P_J^T [I; z~] of the subspace (zp scaled like z~).
+
+    Equal to :func:`~.charts.chart_target` at zp = 0; bounded (by a power of the norm of
+    [[I, 0], [-z_P, I]]) and without poles like it.
+    """
+    perm = np.empty(8, np.int64)
+    sign = np.empty(8)
+    chart_perm(J, perm, sign)
+    X = np.zeros((8, 4))
+    for a in range(8):
+        for c in range(4):
+            val = (1.0 if a == c else 0.0) if a < 4 else z[a - 4, c]
+            X[perm[a], c] += sign[a] * val
+    B = X[4:] - zp @ X[:4]
+    return orient * determinant(B) / np.sqrt(determinant(np.eye(4) + z.T @ z))
+
+
+@nb.njit(cache=True)
+def _radii(table, work):
+    """(r_i, r_o): the current radii of the faces."""
+    L = table.coef.shape[0]
+    r_i = _base_at(table.bounds[0], table, 0, work.vals, work.mod)[1]
+    r_o = _base_at(table.bounds[L], table, L - 1, work.vals, work.mod)[1]
+    return r_i, r_o
+
+
+@nb.njit(cache=True)
 def integrate_one(m, k, keep, table, rtol, max_steps):
     """Integrate mode (m, k) through the wall of ``table`` (a RadialTable).
 
     ``keep`` (bit j set: pair (U_j, S_j) kept; ALL_PAIRS for the paper's ansatz) selects
-    the block of a mode family. Adaptive steps with the local error of every entry of z~
-    below rtol (1 + |z~|), and a change of chart whenever an entry of z~ exceeds SWITCH.
+    the block of a mode family. The impedance starts from the inner face condition (S = 0,
+    or the follower pressure's z_P), is carried unchanged across every interface (u, the
+    traction, Phi and r Delta_r are continuous, so eta is) and ends with the outer face
+    condition. Adaptive steps with the local error of every entry of z~ below
+    rtol (1 + |z~|), and a change of chart whenever an entry of z~ exceeds SWITCH.
     Returns (f, z~, J, status, steps): the target of the kept block, the impedance in
-    chart J at Rbar_o, the chart, a status code (OK, MAX_STEPS, STEP_UNDERFLOW, NO_CHART;
+    chart J at R_N, the chart, a status code (OK, MAX_STEPS, STEP_UNDERFLOW, NO_CHART;
     f is NaN unless OK) and the steps tried.
     """
-    ro = table.outer_radius
-    s = impedance_scale(m, k, _radius(table, ro))
-    z, factor = _start(keep)
-    J, orient = 0, 1.0
+    L = table.coef.shape[0]
+    R0, RN = table.bounds[0], table.bounds[L]
     work = _new_work(table)
+    r_i, r_o = _radii(table, work)
+    s = impedance_scale(m, k, r_o)
+    z, factor = _start(keep)
+    z += face_impedance(table.face_pressure[0], m, k * r_i, keep, s)
+    J, orient = 0, 1.0
+    if np.max(np.abs(z)) > SWITCH:
+        zn, J, orient = switch_chart(z, 0)
+        if J < 0:
+            return np.nan, z, 0, NO_CHART, 0
+        z[:, :] = zn
     chart_setup(J, s, keep, work.perm, work.mult)
     K = np.empty((_NS + 1, 4, 4))
     ztmp = np.empty((4, 4))
     znew = np.empty((4, 4))
-    R = 1.0
-    h = (ro - 1.0) / (4.0 + s)
-    _rhs(R, z, m, k, table, work, K[0])
+    h = (RN - R0) / (4.0 + s)
     steps = 0
-    while R < ro:
-        if steps >= max_steps:
-            return np.nan, z, J, MAX_STEPS, steps
-        if h < 1e-14 * (ro - 1.0):
-            return np.nan, z, J, STEP_UNDERFLOW, steps
-        last = R + h >= ro
-        if last:
-            h = ro - R
-        _step(R, h, z, m, k, table, work, K, ztmp, znew)
-        err = _error(h, z, znew, K, rtol)
-        steps += 1
-        if err <= 1.0:
-            R = ro if last else R + h
-            for i in range(4):
-                for j in range(4):
-                    z[i, j] = 0.5 * (znew[i, j] + znew[j, i])
-            h *= min(10.0, 0.9 * err**_EXPONENT) if err > 0.0 else 10.0
-            if np.max(np.abs(z)) > SWITCH:
-                zn, Jn, sgn = switch_chart(z, J)
-                if Jn < 0:
-                    return np.nan, z, J, NO_CHART, steps
-                if Jn != J:
-                    z[:, :] = zn
-                    J = Jn
-                    orient *= sgn
-                    chart_setup(J, s, keep, work.perm, work.mult)
-            _rhs(R, z, m, k, table, work, K[0])
-        else:
-            h *= max(0.2, 0.9 * err**_EXPONENT)
-    return factor * chart_target(z, J, orient), z, J, OK, steps
+    for seg in range(L):
+        R, end = table.bounds[seg], table.bounds[seg + 1]
+        _rhs(R, z, m, k, table, seg, work, K[0])
+        while R < end:
+            if steps >= max_steps:
+                return np.nan, z, J, MAX_STEPS, steps
+            if h < 1e-14 * (RN - R0):
+                return np.nan, z, J, STEP_UNDERFLOW, steps
+            last = R + h >= end
+            if last:
+                h = end - R
+            _step(R, h, z, m, k, table, seg, work, K, ztmp, znew)
+            err = _error(h, z, znew, K, rtol)
+            steps += 1
+            if err <= 1.0:
+                R = end if last else R + h
+                for i in range(4):
+                    for j in range(4):
+                        z[i, j] = 0.5 * (znew[i, j] + znew[j, i])
+                h *= min(10.0, 0.9 * err**_EXPONENT) if err > 0.0 else 10.0
+                if np.max(np.abs(z)) > SWITCH:
+                    zn, Jn, sgn = switch_chart(z, J)
+                    if Jn < 0:
+                        return np.nan, z, J, NO_CHART, steps
+                    if Jn != J:
+                        z[:, :] = zn
+                        J = Jn
+                        orient *= sgn
+                        chart_setup(J, s, keep, work.perm, work.mult)
+                _rhs(R, z, m, k, table, seg, work, K[0])
+            else:
+                h *= max(0.2, 0.9 * err**_EXPONENT)
+    P_o = table.face_pressure[1]
+    if P_o == 0.0:
+        return factor * chart_target(z, J, orient), z, J, OK, steps
+    zp = face_impedance(P_o, m, k * r_o, keep, s)
+    return factor * pressure_target(z, J, orient, zp), z, J, OK, steps
 
 
 @nb.njit(cache=True)
 def integrate_fixed(m, k, keep, table, n_steps):
-    """z~(Rbar_o) of mode (m, k), pairs ``keep``, after ``n_steps`` equal steps in chart
-    J = {}.
+    """z~(R_N) of mode (m, k), pairs ``keep``, after ``n_steps`` equal steps per segment
+    in chart J = {} from a traction-free inner face.
 
     The steps of :func:`integrate_one` without error control or change of chart (so only
     for modes whose impedance stays bounded there): the global error is O(h^8), h =
-    (Rbar_o - 1) / n_steps, which the tests fit.
+    (R_k - R_{k-1}) / n_steps, which the tests fit.
     """
-    ro = table.outer_radius
-    s = impedance_scale(m, k, _radius(table, ro))
-    z = _start(keep)[0]
+    L = table.coef.shape[0]
     work = _new_work(table)
+    s = impedance_scale(m, k, _radii(table, work)[1])
+    z = _start(keep)[0]
     chart_setup(0, s, keep, work.perm, work.mult)
     K = np.empty((_NS + 1, 4, 4))
     ztmp = np.empty((4, 4))
     znew = np.empty((4, 4))
-    h = (ro - 1.0) / n_steps
-    for n in range(n_steps):
-        R = 1.0 + n * h
-        _rhs(R, z, m, k, table, work, K[0])
-        _step(R, h, z, m, k, table, work, K, ztmp, znew)
-        for i in range(4):
-            for j in range(4):
-                z[i, j] = 0.5 * (znew[i, j] + znew[j, i])
+    for seg in range(L):
+        a, b = table.bounds[seg], table.bounds[seg + 1]
+        h = (b - a) / n_steps
+        for n in range(n_steps):
+            R = a + n * h
+            _rhs(R, z, m, k, table, seg, work, K[0])
+            _step(R, h, z, m, k, table, seg, work, K, ztmp, znew)
+            for i in range(4):
+                for j in range(4):
+                    z[i, j] = 0.5 * (znew[i, j] + znew[j, i])
     return z
 
 
 @nb.njit(cache=True)
 def _member_table(tables, t):
     """Table t of a TableStack, as the RadialTable it was stacked from."""
+    nl = tables.n_segments[t]
     return RadialTable(
-        tables.coef[t, : tables.n_funcs[t]],
-        tables.fmap[t],
-        tables.outer_radius[t],
-        tables.inner_radius_sq[t],
-        tables.area_ratio[t],
+        tables.coef[t, :nl],
+        tables.n_funcs[t, :nl],
+        tables.fmap[t, :nl],
+        tables.bounds[t, : nl + 1],
+        tables.face_pressure[t],
     )
 
 

@@ -89,3 +89,79 @@ def target_reference(state, m: float, k: float, *, pairs: int = ALL_PAIRS, **kwa
     s = impedance_scale(float(m), float(k), float(state.r_o))
     z = z / s
     return float(np.linalg.det(z) / np.sqrt(np.linalg.det(np.eye(len(z)) + z.T @ z)))
+
+
+# -- orthonormalised shooting: the target without an impedance, through layers -------------
+
+
+def _segments(state):
+    """[(a, b, fields(R) -> (moduli, p, r, w))] per layer (one for a BaseState); w = dr/dR / r
+    and the fields of the layer itself at its ends."""
+    tube = getattr(state, "tube", None)
+    if tube is None:
+        prm = state.params
+        area = prm.growth**3 / prm.stretch
+
+        def one(R):
+            R = np.array([R])
+            r = float(state.radius(R)[0])
+            return state.moduli(R)[0], float(state.pressure(R)[0]), r, area * R[0] / r**2
+
+        return [(1.0, prm.outer_radius, one)]
+    out = []
+    for k, (a, b) in enumerate(zip(tube.radii, tube.radii[1:])):
+        layer = tube.layers[k]
+
+        def fields(R, a=a, b=b, layer=layer):
+            side = "inner" if R >= b else "outer"  # the ends belong to this layer
+            Rv = np.array([R])
+            r = float(state.radius(Rv, side=side)[0])
+            J = float(np.prod(layer.growth_at(Rv)))
+            mod = state.moduli(Rv, side=side)[0]
+            return mod, float(state.pressure(Rv, side=side)[0]), r, J * R / (state.stretch * r * r)
+
+        out.append((a, b, fields))
+    return out
+
+
+def shooting_target(state, m: float, k: float, *, pairs: int = ALL_PAIRS, pieces: int = 40):
+    """The kernel's target det(M2 - z_P M1) / sqrt(det(M^T M)) of the propagated basis M,
+    computed without any impedance: the linear Stroh system d eta/dR = w G eta (S scaled by
+    the kernel's s) for the kept pairs, from [I; z_P(P_i)] on the inner face through every
+    layer (eta continuous at interfaces), re-orthonormalised by QR on ``pieces`` sub-intervals
+    of each layer with the signs of det R kept; z_P(P_o) applied on the outer face. A slow,
+    independent twin of impedance.integrate_one for layered and pressurised tubes."""
+    from .impedance import face_impedance  # the face condition, written once (compiled)
+
+    keep = kept_pairs(pairs)
+    rows = np.array(keep + [4 + j for j in keep])
+    d = len(keep)
+    P_i, P_o = (
+        (0.0, 0.0)
+        if getattr(state, "tube", None) is None
+        else (state.tube.inner_pressure, state.tube.outer_pressure)
+    )
+    s = impedance_scale(float(m), float(k), float(state.r_o))
+    zi = face_impedance(P_i, float(m), k * state.r_i, pairs, s)[np.ix_(keep, keep)]
+    zo = face_impedance(P_o, float(m), k * state.r_o, pairs, s)[np.ix_(keep, keep)]
+    M = np.vstack([np.eye(d), zi])
+    sign, G = 1.0, np.empty((8, 8))
+    scale = np.r_[np.ones(d), np.full(d, s)]  # eta = diag(scale) eta~
+
+    for a, b, fields in _segments(state):
+
+        def rhs(R, y, fields=fields):
+            mod, p, r, w = fields(R)
+            _stroh(np.ascontiguousarray(mod, dtype=float), p, float(m), k * r, G)
+            Gt = G[np.ix_(rows, rows)] * scale[None, :] / scale[:, None]
+            return (w * (Gt @ y.reshape(2 * d, d))).ravel()
+
+        edges = np.linspace(a, b, pieces + 1)
+        for x0, x1 in zip(edges, edges[1:]):
+            sol = solve_ivp(rhs, (x0, x1), M.ravel(), method="DOP853", rtol=1e-12, atol=1e-14)
+            if not sol.success:
+                raise ConvergenceError(f"shooting failed for mode m={m}, k={k}: {sol.message}")
+            Q, Rq = np.linalg.qr(sol.y[:, -1].reshape(2 * d, d))
+            sign *= np.sign(np.prod(np.diag(Rq)))
+            M = Q
+    return float(sign * np.linalg.det(M[d:] - zo @ M[:d]))

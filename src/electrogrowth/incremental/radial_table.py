@@ -1,19 +1,24 @@
 """Chebyshev tables of the base state through the wall, the input of the compiled kernels.
 
 The Stroh matrix at a radius needs the 23 updated moduli and the Lagrange multiplier p
-there. They depend on the mode only through (m, k r), so one table per base state serves
-every mode. Each of the 24 functions of the reference radius R in [1, Rbar_o] is analytic,
-so a Chebyshev interpolant converges geometrically: we interpolate on Chebyshev points,
-chop the coefficients below ``tol`` relative to the largest function value, and store
-identical functions (the neo-Hookean moduli repeat a lot) once. This keeps any material,
-however its moduli were obtained, out of the compiled code: the kernel only runs Clenshaw
-sums, and with the map R -> r of the wall,
+there, and the integration in the reference radius R needs the current radius r(R) and
+w(R) = (dr/dR) / r. They depend on the mode only through (m, k r), so one table per base
+state serves every mode. The wall is a stack of **segments**, one per layer (one for the
+homogeneous tube of the paper), R in [R_{k-1}, R_k]: the moduli, p and dr/dR jump at an
+interface (each layer has its own energy, modulus and growth), but inside a layer each of
+the 26 functions is analytic, so a Chebyshev interpolant per segment converges
+geometrically. We interpolate on Chebyshev points, chop the coefficients below ``tol``
+relative to the largest function value, and store identical functions (the neo-Hookean
+moduli repeat a lot) once per segment. This keeps any material, any growth (anisotropic,
+graded) and any layering out of the compiled code: the kernel only runs Clenshaw sums. With
+r dr = (J / lambda_z) R dR (J = det F_g; docs/derivation-layered.md (K)),
 
-    r(R)^2 = r_i^2 + a (R^2 - 1),   a = g^3 / lambda_z   (incompressibility),
+    w(R) = J(R) R / (lambda_z r(R)^2).
 
-it needs nothing else. A table is one record (:class:`RadialTable`), and the tables of a
-batch of base states are one padded record (:class:`TableStack`); both are named tuples of
-arrays and numbers, which the compiled kernel takes as they are.
+A table is one record (:class:`RadialTable`, with the follower pressures on the two faces,
+which enter the face conditions), and the tables of a batch of base states are one padded
+record (:class:`TableStack`); both are named tuples of arrays, which the compiled kernel
+takes as they are.
 """
 
 from __future__ import annotations
@@ -25,48 +30,52 @@ import numpy as np
 from ..errors import ConvergenceError
 from ..model.materials import MODULI_NAMES
 
-N_FUNCS = len(MODULI_NAMES) + 1  # 23 moduli, then p
+N_MODULI = len(MODULI_NAMES)
+#: rows of ``fmap`` after the 23 moduli: p, r and w = (dr/dR) / r
+P_FUNC, R_FUNC, W_FUNC = N_MODULI, N_MODULI + 1, N_MODULI + 2
+N_FUNCS = N_MODULI + 3
 
 
 class RadialTable(NamedTuple):
-    """Chebyshev coefficients of the moduli and p of one base state over R in [1, Rbar_o].
+    """Chebyshev coefficients of the moduli, p, r and w of one base state, per segment.
 
     Attributes
     ----------
-    coef : (F, C) array
-        Coefficients of the F distinct functions (Chebyshev T_0..T_{C-1} in x, where
-        x = (2 R - 1 - Rbar_o) / (Rbar_o - 1)), zero past each function's last significant
-        one.
-    fmap : (24,) int array
-        Function f of MODULI_NAMES + ("p",) is row fmap[f] of ``coef``.
-    outer_radius : float
-        Rbar_o, the outer radius of the reference configuration (inner radius 1).
-    inner_radius_sq : float
-        r_i^2, the squared current inner radius.
-    area_ratio : float
-        a = g^3 / lambda_z, so that r(R)^2 = r_i^2 + a (R^2 - 1).
-    """
-
-    coef: np.ndarray
-    fmap: np.ndarray
-    outer_radius: float
-    inner_radius_sq: float
-    area_ratio: float
-
-
-class TableStack(NamedTuple):
-    """The tables of T base states padded to one shape: the batch kernel's input.
-
-    The fields of :class:`RadialTable` with a leading axis T, and ``n_funcs`` (T,) int:
-    table t is ``coef[t, :n_funcs[t]]`` (rows and columns past it are zero).
+    coef : (L, F, C) array
+        Segment s (layer s + 1) has the coefficients of its distinct functions in rows
+        0 .. n_funcs[s] - 1 (Chebyshev T_0..T_{C-1} in x = (2 R - a - b) / (b - a) on
+        [a, b] = [bounds[s], bounds[s + 1]]), zero past each function's last significant
+        one and in the padding rows.
+    n_funcs : (L,) int array
+        Distinct functions of each segment.
+    fmap : (L, 26) int array
+        Function f of MODULI_NAMES + (p, r, w) is row fmap[s, f] of ``coef[s]``.
+    bounds : (L + 1,) array
+        The reference radii of the faces and interfaces, 1 = R_0 < R_1 < ... < R_L.
+    face_pressure : (2,) array
+        Follower pressures (P_i, P_o) on the inner and outer face (units mu).
     """
 
     coef: np.ndarray
     n_funcs: np.ndarray
     fmap: np.ndarray
-    outer_radius: np.ndarray
-    inner_radius_sq: np.ndarray
-    area_ratio: np.ndarray
+    bounds: np.ndarray
+    face_pressure: np.ndarray
+
+
+class TableStack(NamedTuple):
+    """The tables of T base states padded to one shape: the batch kernel's input.
+
+    The fields of :class:`RadialTable` with a leading axis T, and ``n_segments`` (T,) int:
+    table t has segments 0 .. n_segments[t] - 1 (the rest is zero padding).
+    """
+
+    coef: np.ndarray
+    n_funcs: np.ndarray
+    fmap: np.ndarray
+    bounds: np.ndarray
+    face_pressure: np.ndarray
+    n_segments: np.ndarray
 
 
 def _cheb_coefficients(values: np.ndarray) -> np.ndarray:
@@ -80,25 +89,49 @@ def _cheb_coefficients(values: np.ndarray) -> np.ndarray:
     return c
 
 
-def build_table(state, *, tol: float = 1e-15, max_nodes: int = 129) -> RadialTable:
-    """Tabulate ``state.moduli`` and ``state.pressure`` (a tube.BaseState).
+def _segments(state):
+    """[(a, b, values)] per segment: values(R) is the (n, 26) array of the 23 moduli, p,
+    r and w at the reference radii R (strictly inside [a, b])."""
+    if hasattr(state, "tube"):  # a LayeredState
+        tube = state.tube
+        radii = tube.radii
 
-    The number of nodes doubles from 17 until the trailing coefficients of every function
-    fall below ``tol`` times its scale.
+        def values(R, layer):
+            r = state.radius(R)
+            J = np.prod(layer.growth_at(R), axis=0)
+            w = J * R / (state.stretch * r * r)
+            return np.column_stack([state.moduli(R), state.pressure(R), r, w])
 
-    Raises
-    ------
-    ConvergenceError
-        If ``max_nodes`` Chebyshev points do not resolve the base state.
-    """
-    ro = state.params.outer_radius
+        return [
+            (a, b, lambda R, layer=layer: values(R, layer))
+            for a, b, layer in zip(radii, radii[1:], tube.layers)
+        ]
+    prm = state.params
+    area = prm.growth**3 / prm.stretch  # r^2 = r_i^2 + area (R^2 - 1)
+
+    def single(R):
+        r = state.radius(R)
+        return np.column_stack([state.moduli(R), state.pressure(R), r, area * R / (r * r)])
+
+    return [(1.0, prm.outer_radius, single)]
+
+
+def face_pressures(state) -> tuple[float, float]:
+    """(P_i, P_o), the follower pressures on the faces of a base state (0 without)."""
+    tube = getattr(state, "tube", None)
+    if tube is None:
+        return 0.0, 0.0
+    return float(tube.inner_pressure), float(tube.outer_pressure)
+
+
+def _segment_table(a, b, values, tol, max_nodes):
+    """(chopped distinct coefficient rows, fmap) of one segment."""
     n = 17
     while True:
         k = np.arange(n)
         x = np.cos(np.pi * (k + 0.5) / n)
-        R = 0.5 * (1 + ro) + 0.5 * (ro - 1) * x
-        vals = np.concatenate([state.moduli(R), state.pressure(R)[:, None]], axis=1)
-        coef = _cheb_coefficients(vals).T  # (24, n)
+        vals = values(0.5 * (a + b) + 0.5 * (b - a) * x)
+        coef = _cheb_coefficients(vals).T  # (26, n)
         scale = np.maximum(np.abs(vals).max(axis=0), 1e-300)
         small = np.abs(coef) <= tol * scale[:, None] * 8
         tail_ok = small[:, -3:].all()
@@ -107,16 +140,16 @@ def build_table(state, *, tol: float = 1e-15, max_nodes: int = 129) -> RadialTab
         n = 2 * n - 1
     if not tail_ok:
         raise ConvergenceError(
-            f"base state not resolved by {max_nodes} Chebyshev points (Rbar_o = {ro});"
-            " the wall is too thick or strained for the table"
+            f"base state not resolved by {max_nodes} Chebyshev points on R in"
+            f" [{a:g}, {b:g}]; the wall is too thick or strained for the table"
         )
     # significant coefficients: n minus the trailing run of small ones (at least 1)
     degree = np.maximum(n - np.argmax(~small[:, ::-1], axis=1) * (~small).any(axis=1), 1)
     degree[~(~small).any(axis=1)] = 1
-    return _dedupe(coef, degree, state)
+    return _dedupe(coef, degree)
 
 
-def _dedupe(coef, degree, state) -> RadialTable:
+def _dedupe(coef, degree):
     """One row per distinct chopped function, zero past its ``degree`` coefficients."""
     seen: dict[bytes, int] = {}
     fmap = np.empty(N_FUNCS, dtype=np.int64)
@@ -124,25 +157,59 @@ def _dedupe(coef, degree, state) -> RadialTable:
         fmap[f] = seen.setdefault(coef[f, : degree[f]].tobytes(), len(seen))
     first = np.unique(fmap, return_index=True)[1]  # first function of each distinct row
     degs = degree[first]
-    table = coef[first, : degs.max()] * (np.arange(degs.max()) < degs[:, None])
-    g, lz = state.params.growth, state.params.stretch
+    return coef[first, : degs.max()] * (np.arange(degs.max()) < degs[:, None]), fmap
+
+
+def build_table(state, *, tol: float = 1e-15, max_nodes: int = 129) -> RadialTable:
+    """Tabulate a base state (a tube.BaseState or a layered.LayeredState), segment by
+    segment.
+
+    The number of nodes of a segment doubles from 17 until the trailing coefficients of
+    every function fall below ``tol`` times its scale.
+
+    Raises
+    ------
+    ConvergenceError
+        If ``max_nodes`` Chebyshev points do not resolve a segment.
+    """
+    segments = _segments(state)
+    parts = [_segment_table(a, b, f, tol, max_nodes) for a, b, f in segments]
+    F = max(c.shape[0] for c, _ in parts)
+    C = max(c.shape[1] for c, _ in parts)
+    coef = np.zeros((len(parts), F, C))
+    for s, (c, _) in enumerate(parts):
+        coef[s, : c.shape[0], : c.shape[1]] = c
+    bounds = [segments[0][0]] + [b for _, b, _ in segments]
     return RadialTable(
-        table, fmap, float(state.params.outer_radius), float(state.r_i**2), float(g**3 / lz)
+        coef,
+        np.array([c.shape[0] for c, _ in parts], dtype=np.int64),
+        np.stack([fm for _, fm in parts]),
+        np.array(bounds, dtype=float),
+        np.array(face_pressures(state), dtype=float),
     )
 
 
 def stack_tables(tables: list[RadialTable]) -> TableStack:
     """Pad a list of tables into the one record the batch kernel takes."""
-    F = max(t.coef.shape[0] for t in tables)
-    C = max(t.coef.shape[1] for t in tables)
-    coef = np.zeros((len(tables), F, C))
+    L = max(t.coef.shape[0] for t in tables)
+    F = max(t.coef.shape[1] for t in tables)
+    C = max(t.coef.shape[2] for t in tables)
+    T = len(tables)
+    coef = np.zeros((T, L, F, C))
+    n_funcs = np.zeros((T, L), dtype=np.int64)
+    fmap = np.zeros((T, L, N_FUNCS), dtype=np.int64)
+    bounds = np.zeros((T, L + 1))
     for i, t in enumerate(tables):
-        coef[i, : t.coef.shape[0], : t.coef.shape[1]] = t.coef
+        nl, nf, nc = t.coef.shape
+        coef[i, :nl, :nf, :nc] = t.coef
+        n_funcs[i, :nl] = t.n_funcs
+        fmap[i, :nl] = t.fmap
+        bounds[i, : nl + 1] = t.bounds
     return TableStack(
         coef=coef,
-        n_funcs=np.array([t.coef.shape[0] for t in tables], dtype=np.int64),
-        fmap=np.stack([t.fmap for t in tables]),
-        outer_radius=np.array([t.outer_radius for t in tables], dtype=float),
-        inner_radius_sq=np.array([t.inner_radius_sq for t in tables], dtype=float),
-        area_ratio=np.array([t.area_ratio for t in tables], dtype=float),
+        n_funcs=n_funcs,
+        fmap=fmap,
+        bounds=bounds,
+        face_pressure=np.stack([t.face_pressure for t in tables]),
+        n_segments=np.array([t.coef.shape[0] for t in tables], dtype=np.int64),
     )

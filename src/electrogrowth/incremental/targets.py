@@ -195,7 +195,7 @@ def impedance_targets(state, modes, *, rtol: float = 1e-12, max_steps: int = 200
     modes = np.atleast_2d(np.asarray(modes, dtype=float))
     tables = stack_tables([build_table(state, tol=Accuracy(rtol).table)])
     count = modes.shape[0]
-    k = modes[:, 1] * math.pi / (state.params.stretch * state.params.length)
+    k = modes[:, 1] * math.pi / state.current_length
     m = np.ascontiguousarray(modes[:, 0])
     kernel = target_batch if count >= PARALLEL_FROM else target_serial
     f, status, _ = kernel(

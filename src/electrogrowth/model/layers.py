@@ -17,15 +17,23 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import re
 from collections.abc import Callable
 
 import numpy as np
 
 from ..errors import ParameterError
+from .controls import Control, parse_control
 from .materials import Material, neo_hookean
 from .params import TubeParameters
 
 Growth = float | tuple[float, float, float] | Callable
+
+#: the keys of a tube that a curve or sweep may vary besides its controls (:meth:`Tube.at`)
+KEYS_TEXT = (
+    "length, outer_pressure, layers[K].outer_radius, layers[K].thickness,"
+    " layers[K].shear_modulus, layers[K].permittivity"
+)
 
 
 def _number(name: str, value, valid: str, ok) -> float:
@@ -232,6 +240,133 @@ class Tube:
         """The one-layer tube of ``params`` (isotropic growth g, no pressure)."""
         layer = Layer(params.outer_radius, params.material, growth=params.growth)
         return cls((layer,), length=params.length, stretch=params.stretch, voltage=params.voltage)
+
+    def check_control(self, solve_for) -> Control:
+        """The Control named by ``solve_for`` (model/controls.py), checked against this tube:
+        the layer exists (and is named when there are several), its growth is not graded,
+        and the stretch or the force is the prescribed one."""
+        c = parse_control(solve_for)
+        n = len(self.layers)
+        if c.kind == "growth":
+            if c.layer is None and n > 1:
+                raise ParameterError(
+                    f"solve_for = growth needs a layer for a tube of {n} layers; name one of"
+                    f" 1..{n} (--layer K, or growth[K])"
+                )
+            layer = 1 if c.layer is None else c.layer
+            if not 1 <= layer <= n:
+                raise ParameterError(
+                    f"layer = {layer} does not exist; this tube has layers 1..{n} (1 innermost)"
+                )
+            if self.layers[layer - 1].graded:
+                raise ParameterError(
+                    f"layer {layer} has graded growth, which is not a single control"
+                    " parameter; give it constant growth to solve for it"
+                )
+            return Control("growth", layer if n > 1 or c.layer else None, c.components)
+        if c.kind in ("stretch", "force") and self.control != c.kind:
+            remedy = {
+                "force": "prescribe an axial force (axial_force in the tube file,"
+                " --axial-force F) to solve for it",
+                "stretch": "prescribe the stretch instead (stretch in the tube file,"
+                " --stretch) to solve for it",
+            }[c.kind]
+            have = "an axial force" if self.control == "force" else "the axial stretch"
+            raise ParameterError(
+                f"solve_for = {c.kind} is not a control of this tube, which prescribes"
+                f" {have}; {remedy}"
+            )
+        return c
+
+    def at(self, name, value: float) -> Tube:
+        """This tube with ``name`` set to ``value``: a control (model/controls.py: growth[K],
+        growth[K].theta, stretch, voltage, pressure, force) or one of the KEYS a curve or
+        sweep may vary (``length``, ``outer_pressure``, ``layers[K].outer_radius``,
+        ``layers[K].thickness`` (the other layers' thicknesses kept), ``layers[K].shear_modulus``,
+        ``layers[K].permittivity``; K = 1 innermost)."""
+        value = float(value)
+        if isinstance(name, str) and (name in ("length", "outer_pressure") or "layers[" in name):
+            return self._with_key(name, value)
+        c = self.check_control(name)
+        if c.kind == "growth":
+            k = (c.layer or 1) - 1
+            old = self.layers[k].growth
+            g = tuple(
+                value if c.components is None or comp in c.components else old[i]
+                for i, comp in enumerate(("r", "theta", "z"))
+            )
+            layers = list(self.layers)
+            layers[k] = dataclasses.replace(layers[k], growth=g)
+            return dataclasses.replace(self, layers=tuple(layers))
+        field = {"pressure": "inner_pressure", "force": "axial_force"}.get(c.kind, c.kind)
+        return dataclasses.replace(self, **{field: value})
+
+    def _with_key(self, name: str, value: float) -> Tube:
+        match = re.fullmatch(r"layers\[(\d+)\]\.(\w+)", name)
+        if match is None:
+            if name not in ("length", "outer_pressure"):
+                raise ParameterError(f"{name!r} is not a key of a tube; valid: {KEYS_TEXT}")
+            return dataclasses.replace(self, **{name: value})
+        k, field = int(match[1]), match[2]
+        if not 1 <= k <= len(self.layers):
+            raise ParameterError(
+                f"{name}: layer {k} does not exist; this tube has layers 1..{len(self.layers)}"
+            )
+        if field not in ("outer_radius", "thickness", "shear_modulus", "permittivity"):
+            raise ParameterError(f"{name!r} is not a key of a tube; valid: {KEYS_TEXT}")
+        layers = list(self.layers)
+        if field == "thickness":  # every layer outside moves out with it
+            inner = self.radii[k - 1]
+            shift = inner + value - layers[k - 1].outer_radius
+            for j in range(k - 1, len(layers)):
+                if layers[j].graded:
+                    raise ParameterError(f"{name}: layer {j + 1} has graded growth")
+                layers[j] = dataclasses.replace(
+                    layers[j], outer_radius=layers[j].outer_radius + shift
+                )
+        else:
+            layers[k - 1] = dataclasses.replace(layers[k - 1], **{field: value})
+        return dataclasses.replace(self, layers=tuple(layers))
+
+    def value_of(self, solve_for) -> float:
+        """The current value of the control ``solve_for`` (for growth: its first varied
+        component)."""
+        c = self.check_control(solve_for)
+        if c.kind == "growth":
+            comp = ("r", "theta", "z").index(c.components[0]) if c.components else 0
+            return float(self.layers[(c.layer or 1) - 1].growth[comp])
+        field = {"pressure": "inner_pressure", "force": "axial_force"}.get(c.kind, c.kind)
+        return float(getattr(self, field))
+
+    def reference(self) -> Tube:
+        """The unloaded, ungrown tube (stress free, stable in every mode): growth 1 in every
+        layer, no voltage or pressure, lambda_z = 1."""
+        layers = tuple(dataclasses.replace(layer, growth=1.0) for layer in self.layers)
+        return Tube(layers, length=self.length)
+
+    def as_dict(self) -> dict:
+        """The tube as a JSON record: layers (radius, material, modulus, permittivity,
+        growth) and loads."""
+        return {
+            "layers": [
+                {
+                    "outer_radius": layer.outer_radius,
+                    "material": layer.material.name,
+                    "shear_modulus": layer.shear_modulus,
+                    "permittivity": layer.permittivity,
+                    "growth": repr(layer.growth) if layer.graded else list(layer.growth),
+                }
+                for layer in self.layers
+            ],
+            "outer_radius": self.outer_radius,
+            "length": self.length,
+            "stretch": self.stretch,
+            "axial_force": self.axial_force,
+            "voltage": self.voltage,
+            "inner_pressure": self.inner_pressure,
+            "outer_pressure": self.outer_pressure,
+            "closed_ends": self.closed_ends,
+        }
 
     @property
     def radii(self) -> tuple[float, ...]:

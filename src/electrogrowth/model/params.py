@@ -61,6 +61,11 @@ class TubeParameters:
         """This tube with the field ``name`` set to ``value`` (a control, or any field)."""
         return dataclasses.replace(self, **{name: float(value)})
 
+    def reference(self) -> TubeParameters:
+        """The unloaded tube (g = 1, lambda_z = 1, Vbar = 0): stress free, stable in every
+        mode, where the stable sign of every target is read off."""
+        return dataclasses.replace(self, growth=1.0, stretch=1.0, voltage=0.0)
+
     def as_dict(self) -> dict:
         """The tube as a JSON record: the material's name and the five fields."""
         return {
@@ -93,8 +98,14 @@ def check_control(solve_for: str) -> str:
     return solve_for
 
 
+#: The side a march takes by default: a stretch or an axial force compresses, a pressure
+#: inflates (extension: the control increases; compression: it decreases).
+DEFAULT_SIDE = {"stretch": "compression", "force": "compression", "pressure": "extension"}
+
+
 def check_side(solve_for: str, side: str | None) -> str | None:
-    """Validate ``side``; default compression for the stretch, None otherwise."""
+    """Validate ``side``; the default of DEFAULT_SIDE for the stretch, the axial force and
+    the pressure, None otherwise (growth and voltage only increase)."""
     if side is not None and side not in SIDES:
         raise ParameterError(f"side = {side!r} is unknown; choose compression or extension")
-    return side or ("compression" if solve_for == "stretch" else None)
+    return side or DEFAULT_SIDE.get(str(solve_for))

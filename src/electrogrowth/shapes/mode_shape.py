@@ -50,10 +50,11 @@ from ..basestate.tube import BaseState, solve_base_state
 from ..bifurcation.critical import CriticalPoint
 from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
 from ..incremental.collocation import mode_shape_collocation
-from ..incremental.impedance import ALL_PAIRS, impedance_scale
+from ..incremental.impedance import ALL_PAIRS, face_impedance, impedance_scale
 from ..incremental.impedance_reference import impedance_rhs, kept_pairs
 from ..incremental.stroh import stroh_matrix
 from ..incremental.targets import Family, Method, check_method, check_mode, wavenumber
+from ..model.layers import Tube
 from ..model.materials import MODULI_INDEX
 from ..model.params import TubeParameters
 from ..outcomes import Kind
@@ -103,6 +104,7 @@ class ModeShape:
     boundary_residual: float
     note: str = ""
     family: str = Family.WRINKLE
+    current_length: float | None = None  # l = lambda_z L (set for a layered Tube)
 
     @property
     def U_r(self) -> FloatArray:
@@ -123,6 +125,8 @@ class ModeShape:
     @property
     def length(self) -> float:
         """Current length l = lambda_z L of the tube."""
+        if self.current_length is not None:
+            return self.current_length
         return self.params.stretch * self.params.length
 
     def at(self, R) -> FloatArray:
@@ -204,7 +208,24 @@ def mode_shape(
         raise ParameterError(f"points = {points!r} is invalid; need an integer >= 2")
     state = solve_base_state(params)
     R = np.linspace(1.0, params.outer_radius, int(points))
-    k = wavenumber(params, n)
+    k = n * math.pi / state.current_length
+    if isinstance(params, Tube):
+        eta = normalise(layered_collocation_shape(state, m, n, R, nodes=nodes, pairs=pairs))
+        note = "" if method is Method.COLLOCATION else "layered tube: shape from collocation"
+        return ModeShape(
+            R,
+            state.radius(R),
+            eta,
+            m,
+            n,
+            k,
+            params,
+            Method.COLLOCATION.value,
+            boundary_residual(eta, _face_impedances(state, m, k)),
+            note,
+            family,
+            state.current_length,
+        )
     note = ""
     if method is Method.IMPEDANCE:
         try:
@@ -251,8 +272,8 @@ def _unpack(critical) -> tuple[TubeParameters, int, int, Family]:
         raise ParameterError(
             f"critical = {critical!r} is neither a CriticalPoint nor (params, m, n[, family])"
         ) from None
-    if not isinstance(params, TubeParameters):
-        raise ParameterError(f"params = {params!r} is not a TubeParameters")
+    if not isinstance(params, (TubeParameters, Tube)):
+        raise ParameterError(f"params = {params!r} is not a TubeParameters or a Tube")
     fam = check_mode(m, n, family[0] if family else None)
     return params, int(m), int(n), fam
 
@@ -435,8 +456,85 @@ def normalise(eta: FloatArray) -> FloatArray:
     return eta * (sign / abs(big))
 
 
-def boundary_residual(eta: FloatArray) -> float:
-    """max(|S(r_i)|, |S(r_o)|) / max |S| over the wall: 0 for an exact mode."""
+def boundary_residual(eta: FloatArray, faces=(None, None)) -> float:
+    """max(|S - z_P U| at r_i and r_o) / max |S| over the wall: 0 for an exact mode.
+
+    ``faces``: the follower-pressure impedances z_P (4x4, S = z_P U on the face) of the
+    inner and outer face, None for a traction-free face.
+    """
     S = np.abs(eta[4:])
     top = S.max()
-    return float(max(S[:, 0].max(), S[:, -1].max()) / top) if top > 0 else 0.0
+    if not top > 0:
+        return 0.0
+    ends = []
+    for col, zp in zip((0, -1), faces):
+        res = eta[4:, col] - (0.0 if zp is None else zp @ eta[:4, col])
+        ends.append(np.abs(res).max())
+    return float(max(ends) / top)
+
+
+def _face_impedances(state, m: float, k: float):
+    """z_P of the faces of a layered state (incremental/impedance.py ``face_impedance``)."""
+    tube = state.tube
+    return tuple(
+        face_impedance(P, float(m), k * r, ALL_PAIRS, 1.0)
+        for P, r in ((tube.inner_pressure, state.r_i), (tube.outer_pressure, state.r_o))
+    )
+
+
+# -- layered tubes ---------------------------------------------------------------------------
+
+
+def layered_collocation_shape(
+    state, m: int, n: int, R: FloatArray, *, nodes: int = 40, pairs: int = ALL_PAIRS
+) -> FloatArray:
+    """Un-normalised eta at R of a layered state (basestate.layered.LayeredState), from the
+    multi-domain collocation null vector: :func:`collocation_shape` layer by layer (each
+    layer's nodal values are its own polynomial; a sample on an interface is taken from the
+    layer inside it, eta being continuous there)."""
+    shape = mode_shape_collocation(state, m, n, nodes=nodes, pairs=pairs)
+    radii = state.tube.radii
+    layer_of = np.clip(np.searchsorted(np.array(radii[1:-1]), R, side="left"), 0, len(radii) - 2)
+    k = n * math.pi / state.current_length
+    eta = np.empty((8, R.size))
+    for j in range(len(radii) - 1):
+        sel = layer_of == j
+        if not sel.any():
+            continue
+        part = {f: v[j * nodes : (j + 1) * nodes] for f, v in shape.items()}
+        side = "inner" if j < len(radii) - 2 else "outer"  # R on the outer end is this layer's
+        eta[:, sel] = _eta_from_nodes(state, part, m, k, R[sel], side)
+    return eta
+
+
+def _eta_from_nodes(state, part: dict, m: float, k: float, R: FloatArray, side: str):
+    """eta at R (one layer) from its nodal U_r, U_th, U_z, Phi, P (see collocation_shape)."""
+    r_nodes = part["r"]
+    domain = [r_nodes.min(), r_nodes.max()]
+    poly = {
+        f: cheb.Chebyshev.fit(r_nodes, part[f], len(r_nodes) - 1, domain=domain)
+        for f in ("U_r", "U_th", "U_z", "Phi", "P")
+    }
+    r = state.radius(R, side=side)
+    mod = state.moduli(R, side=side)
+    p = state.pressure(R, side=side)
+    val = {f: q(r) for f, q in poly.items()}
+    der = {f: poly[f].deriv()(r) for f in ("U_r", "U_th", "U_z", "Phi")}
+    eta = np.empty((8, R.size))
+    eta[0], eta[1], eta[2], eta[7] = val["U_r"], val["U_th"], val["U_z"], -val["Phi"]
+    G = np.empty((8, 8))
+    for j in range(R.size):
+        stroh_matrix(np.ascontiguousarray(mod[j]), float(p[j]), float(m), k * r[j], G)
+        e = eta[:, j]
+        e[3] = (-r[j] * der["Phi"][j] - G[7, :3] @ e[:3]) / G[7, 3]
+        e[5] = (r[j] * der["U_th"][j] - G[1, :4] @ e[:4] - G[1, 7] * e[7]) / G[1, 5]
+        e[6] = (r[j] * der["U_z"][j] - G[2, :4] @ e[:4] - G[2, 7] * e[7]) / G[2, 6]
+    a = {name: mod[..., MODULI_INDEX[name]] for name in ("A1111", "A1122", "A1133", "G111")}
+    eta[4] = r * (
+        (a["A1111"] + p) * der["U_r"]
+        + a["A1122"] * (eta[0] + m * eta[1]) / r
+        + a["A1133"] * k * eta[2]
+        + a["G111"] * eta[3] / r
+        - val["P"]
+    )
+    return eta

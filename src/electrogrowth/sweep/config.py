@@ -12,10 +12,16 @@ the offending key (sweep/file.py adds the file and line). Read from a TOML file
     [fixed]     outer_radius, length, growth, stretch, voltage   (numbers)
     [grid]      any of the same names = [v1, v2, ...] or {start, stop, num}
     [run]       chunk = grid points per task (default from the grid size)
+    [tube]      file = "bilayer.toml"   a layered tube (model/tube_file.py) instead of
+                [material] and the one-layer parameters; then [solve] for is any control
+                of it (growth[K].theta, pressure, force, ...; or for = "growth" with
+                layer = K, component = "theta") and [fixed] / [grid] take its controls
+                and keys (model/layers.py Tube.at: "layers[1].thickness",
+                "layers[1].shear_modulus", "growth[1].theta", voltage, pressure, ...).
 
 A parameter is either fixed or swept, never both, and never the one solved for; unset
 ones take the :class:`~electrogrowth.model.params.TubeParameters` defaults, except the outer
-radius, which must be given.
+radius, which must be given (with a tube file: the file's values).
 """
 
 from __future__ import annotations
@@ -30,8 +36,10 @@ import numpy as np
 from ..bifurcation.scan import ScanOptions
 from ..errors import ConfigError, ElectrogrowthError, ParameterError
 from ..incremental.accuracy import RTOL_RANGE
+from ..model.layers import Tube
 from ..model.materials import BUILTIN, material_by_name
 from ..model.params import CONTROLS, SIDES, TubeParameters
+from ..model.tube_file import parse_tube
 from .unit import ScanSpec
 
 #: The TubeParameters fields a sweep can fix or vary.
@@ -55,9 +63,13 @@ class SweepConfig:
     rtol: float = 1e-12
     scan: ScanOptions = ScanOptions()
     chunk: int = 1
+    tube: str | None = None  # the TOML text of a layered tube file, if the sweep has one
 
     def __post_init__(self):
-        _validate(self)
+        if self.tube is not None:
+            _validate_tube(self)
+        else:
+            _validate(self)
 
     @property
     def dims(self) -> tuple[str, ...]:
@@ -80,15 +92,22 @@ class SweepConfig:
         name, params = self.material
         return material_by_name(name, **dict(params))
 
-    def points(self, index_slices, material=None) -> list[TubeParameters]:
+    def points(self, index_slices, material=None) -> list[TubeParameters | Tube]:
         """The tubes of a block of the grid (tuple of slices), in C order."""
-        material = material or self.build_material()
         axes = [values[s] for (_, values), s in zip(self.grid, index_slices)]
         fixed = dict(self.fixed)
+        base = None if self.tube is None else _fixed_tube(self)
+        material = material or (self.build_material() if base is None else None)
         out = []
         for combo in np.ndindex(*(len(a) for a in axes)):
             swept = {name: axes[d][i] for d, (name, i) in enumerate(zip(self.dims, combo))}
-            out.append(TubeParameters(**fixed, **swept, material=material))
+            if base is None:
+                out.append(TubeParameters(**fixed, **swept, material=material))
+                continue
+            tube = base
+            for name, value in swept.items():
+                tube = tube.at(name, value)
+            out.append(tube)
         return out
 
     def to_dict(self) -> dict:
@@ -105,6 +124,7 @@ class SweepConfig:
             "fixed": dict(self.fixed),
             "grid": {name: list(values) for name, values in self.grid},
             "run": {"chunk": self.chunk},
+            **({} if self.tube is None else {"tube": {"text": self.tube}}),
         }
 
     def to_json(self) -> str:
@@ -127,6 +147,7 @@ class SweepConfig:
                 d["modes"]["extend"],
             ),
             chunk=d["run"]["chunk"],
+            tube=d["tube"]["text"] if "tube" in d else None,
         )
 
 
@@ -198,6 +219,55 @@ def _validate(c: SweepConfig) -> None:
     for name, values in c.grid:
         for v in values:
             _tube(name, v, ("grid", name), material)
+
+
+def _fixed_tube(c: SweepConfig) -> Tube:
+    """The sweep's tube file with its [fixed] values applied."""
+    tube = parse_tube(c.tube, source="[tube] file")
+    for name, value in c.fixed:
+        tube = tube.at(name, value)
+    return tube
+
+
+def _validate_tube(c: SweepConfig) -> None:
+    """The checks of :func:`_validate` for a sweep of a layered tube: the control is one of
+    the tube's, every fixed and swept name is a control or key of it and every value valid."""
+    try:
+        tube = parse_tube(c.tube, source="[tube] file")
+    except ConfigError as exc:
+        raise ConfigError(("tube", "file"), str(exc)) from None
+    try:
+        solve_for = str(tube.check_control(c.solve_for))
+    except ParameterError as exc:
+        raise ConfigError(("solve", "for"), str(exc)) from None
+    if solve_for != c.solve_for:
+        raise ConfigError(("solve", "for"), f"write it as {solve_for!r}")
+    if c.side is not None and c.side not in SIDES:
+        raise ConfigError(
+            ("solve", "side"), f"{c.side!r} is unknown; choose compression or extension"
+        )
+    if not RTOL_RANGE[0] <= c.rtol <= RTOL_RANGE[1]:
+        raise ConfigError(
+            ("solve", "rtol"), f"rtol = {c.rtol!r} is out of range; valid range: 1e-14 to 1e-4"
+        )
+    if c.chunk < 1:
+        raise ConfigError(("run", "chunk"), f"chunk = {c.chunk} is invalid; need >= 1")
+    if not c.grid:
+        raise ConfigError(("grid",), "nothing to sweep; give a control or key of the tube")
+    for table, items in (("fixed", [(k, (v,)) for k, v in c.fixed]), ("grid", c.grid)):
+        for name, values in items:
+            if name == solve_for:
+                raise ConfigError((table, name), f"{name} is what is solved for")
+            if table == "fixed" and name in c.dims:
+                raise ConfigError((table, name), f"{name} is also swept in [grid]; keep one")
+            for v in values:
+                try:
+                    tube.at(name, v)
+                except ParameterError as exc:
+                    raise ConfigError((table, name), str(exc)) from None
+    for name, values in c.grid:
+        if not values or list(values) != sorted(set(values)):
+            raise ConfigError(("grid", name), "need distinct values in increasing order")
 
 
 def _tube(name, value, where, material):

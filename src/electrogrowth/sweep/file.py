@@ -9,6 +9,7 @@ tomllib keeps no positions, so the line is found by scanning the text for the ke
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from pathlib import Path
@@ -17,18 +18,21 @@ import numpy as np
 
 from ..bifurcation.scan import ScanOptions
 from ..errors import ConfigError, ParameterError
+from ..model.controls import parse_control
 from ..model.params import TubeParameters
 from ..model.toml_input import number, parse, read_text, typename
+from ..model.tube_file import parse_tube
 from .config import SWEEPABLE, SweepConfig, default_chunk
 
 #: table -> allowed keys (None: free keys, checked by the table's own rules)
 TABLES = {
-    "solve": ("for", "side", "rtol"),
+    "solve": ("for", "side", "rtol", "layer", "component"),
     "modes": ("m", "n", "extend", "top"),
     "material": None,
     "fixed": SWEEPABLE,
     "grid": SWEEPABLE,
     "run": ("chunk",),
+    "tube": ("file",),
 }
 
 
@@ -38,11 +42,13 @@ def load_config(path: str | Path) -> SweepConfig:
 
 
 def parse_config(text: str, *, source: str = "<sweep>") -> SweepConfig:
-    """Validate the TOML ``text`` of a sweep file (see the module docstring)."""
-    return parse(text, source, _from_raw, line_of)
+    """Validate the TOML ``text`` of a sweep file (see the module docstring); a [tube] file
+    is read relative to the sweep file's directory."""
+    base = Path(source).parent if not source.startswith("<") else Path.cwd()
+    return parse(text, source, functools.partial(_from_raw, base=base), line_of)
 
 
-def _from_raw(raw: dict) -> SweepConfig:
+def _from_raw(raw: dict, base: Path = Path()) -> SweepConfig:
     for table, value in raw.items():
         if table not in TABLES:
             raise ConfigError(
@@ -52,7 +58,8 @@ def _from_raw(raw: dict) -> SweepConfig:
             )
         if not isinstance(value, dict):
             raise ConfigError((table,), f"expected a table [{table}], got {typename(value)}")
-        allowed = TABLES[table]
+        # a tube file's controls and keys are checked against the tube (config.py)
+        allowed = None if table in ("fixed", "grid") and "tube" in raw else TABLES[table]
         for key in value:
             if allowed is not None and key not in allowed:
                 raise ConfigError(
@@ -62,6 +69,11 @@ def _from_raw(raw: dict) -> SweepConfig:
     if "for" not in solve:
         raise ConfigError(("solve",), "missing key 'for' (growth, stretch or voltage)")
     solve_for = _string(solve, ("solve",), "for")
+    if "tube" in raw:
+        return _tube_sweep(raw, base, solve_for)
+    for key in ("layer", "component"):
+        if key in solve:
+            raise ConfigError(("solve", key), "applies only to a sweep with a [tube] file")
     opt = lambda table, where, key, read, default: (  # noqa: E731
         read(table, where, key) if key in table else default
     )
@@ -98,6 +110,40 @@ def _from_raw(raw: dict) -> SweepConfig:
         rtol=opt(solve, ("solve",), "rtol", number, 1e-12),
         scan=_scan_options(modes),
         chunk=chunk if chunk is not None else default_chunk(math.prod(len(v) for _, v in grid)),
+    )
+
+
+def _tube_sweep(raw: dict, base: Path, solve_for: str) -> SweepConfig:
+    """A sweep of a layered tube file: [fixed] and [grid] name its controls and keys."""
+    if "material" in raw:
+        raise ConfigError(("material",), "the materials come from the [tube] file; remove it")
+    path = base / _string(raw["tube"], ("tube",), "file") if "file" in raw["tube"] else None
+    if path is None:
+        raise ConfigError(("tube",), "missing key 'file' (the tube file, relative to this file)")
+    try:
+        text = read_text(path, "tube file")
+        tube = parse_tube(text, source=str(path))
+    except ConfigError as exc:
+        raise ConfigError(("tube", "file"), str(exc)) from None
+    solve, modes, run = (raw.get(t, {}) for t in ("solve", "modes", "run"))
+    layer = _integer(solve, ("solve",), "layer") if "layer" in solve else None
+    comp = _string(solve, ("solve",), "component") if "component" in solve else None
+    try:
+        solve_for = str(tube.check_control(parse_control(solve_for, layer, comp)))
+    except ParameterError as exc:
+        raise ConfigError(("solve", "for"), str(exc)) from None
+    fixed = {key: number(raw.get("fixed", {}), ("fixed",), key) for key in raw.get("fixed", {})}
+    grid = tuple((key, _grid_values(key, value)) for key, value in raw.get("grid", {}).items())
+    chunk = _integer(run, ("run",), "chunk") if "chunk" in run else None
+    return SweepConfig(
+        solve_for=solve_for,
+        grid=grid,
+        fixed=tuple(fixed.items()),
+        side=_string(solve, ("solve",), "side") if "side" in solve else None,
+        rtol=number(solve, ("solve",), "rtol") if "rtol" in solve else 1e-12,
+        scan=_scan_options(modes),
+        chunk=chunk if chunk is not None else default_chunk(math.prod(len(v) for _, v in grid)),
+        tube=text,
     )
 
 

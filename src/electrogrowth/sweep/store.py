@@ -46,7 +46,14 @@ LABELS = {
     "growth": ("growth factor", "g"),
     "stretch": ("axial stretch", "λ_z"),
     "voltage": ("voltage", "V̄"),
+    "pressure": ("inner pressure", "P_i"),
+    "force": ("axial force", "F"),
 }
+
+
+def label(name: str) -> tuple[str, str]:
+    """(description, symbol) of a parameter; a layered tube's control or key as itself."""
+    return LABELS.get(name, (name, name))
 
 #: name -> (dtype, value before the point is computed, description)
 POINT_VARIABLES = {
@@ -268,7 +275,7 @@ def _create(out: Path, config: SweepConfig, source_text: str) -> None:
     block = block_shape(shape, config.chunk)
     ranks = config.scan.top - 1
     scalars = " ".join(name for name, _ in config.fixed)
-    what = LABELS[config.solve_for][0]
+    what = label(config.solve_for)[0]
     arrays = [(name, dims, block, spec) for name, spec in POINT_VARIABLES.items()]
     if ranks:
         arrays += [
@@ -284,7 +291,7 @@ def _create(out: Path, config: SweepConfig, source_text: str) -> None:
         for name, adims, chunks, (dtype, fill, text) in arrays:
             attrs = {"description": text, **({"coordinates": scalars} if scalars else {})}
             if name == "critical_value":
-                attrs.update(long_name=f"critical {what}", symbol=LABELS[config.solve_for][1])
+                attrs.update(long_name=f"critical {what}", symbol=label(config.solve_for)[1])
             group.create_array(
                 name,
                 shape=tuple(shape) + chunks[len(dims) :],
@@ -315,7 +322,7 @@ def _coordinates(config: SweepConfig, source_text: str) -> xr.Dataset:
             np.arange(1, config.scan.top),
             {"description": "1 = the mode that bifurcates next after the critical one"},
         )
-    what = LABELS[config.solve_for][0]
+    what = label(config.solve_for)[0]
     material = config.build_material().name
     attrs = {
         "title": f"electrogrowth sweep: critical {what} ({material})",
@@ -330,5 +337,5 @@ def _coordinates(config: SweepConfig, source_text: str) -> xr.Dataset:
 
 
 def _coord_attrs(name: str) -> dict:
-    long_name, symbol = LABELS[name]
+    long_name, symbol = label(name)
     return {"long_name": long_name, "symbol": symbol, "units": "1 (mu = eps = R_i = 1)"}

@@ -1,0 +1,167 @@
+"""The tube of a command: one homogeneous layer from the shared options (the paper's tube),
+or a layered tube from ``--tube FILE`` (model/tube_file.py) and the loads a layered tube has
+(pressures, an axial force; basestate/layered.py).
+
+Next to ``--tube``, an option given on the command line overrides the file's value of the
+same name; the single-layer options (--outer-radius, --growth, --material and its
+parameters) apply then only to a one-layer file. Shared by ``state``, ``critical``,
+``curve`` and ``pattern``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+
+from ..errors import ParameterError, UsageError
+from ..model.layers import Tube
+from ..model.materials import material_by_name
+from ..model.params import TubeParameters
+from ..model.tube_file import load_tube
+from .options import add_tube_options, finite_number, tube_from_args
+
+#: shared options whose defaults are applied here, so that a given one can override a file
+_SHARED = ("outer_radius", "growth", "stretch", "voltage", "length", "material")
+#: the loads only a layered tube has (option dest = Tube field)
+_LOADS = ("inner_pressure", "outer_pressure", "axial_force")
+
+
+def add_any_tube_options(parser: argparse.ArgumentParser, *, outer_radius=None) -> None:
+    """The one-layer options (:func:`options.add_tube_options`) and the layered ones:
+    ``--tube FILE``, ``--inner-pressure``, ``--outer-pressure``, ``--axial-force``,
+    ``--closed-ends``. ``outer_radius``: a default Rbar_o for the one-layer tube."""
+    add_tube_options(parser, require_outer_radius=False)
+    defaults = {dest: parser.get_default(dest) for dest in _SHARED}
+    if outer_radius is not None:
+        defaults["outer_radius"] = outer_radius
+    parser.set_defaults(**{dest: None for dest in _SHARED}, shared_defaults=defaults)
+    tube = parser.add_argument_group(
+        "layered tube and loads (docs/derivation-layered.md; a one-layer tube without --tube)"
+    )
+    tube.add_argument(
+        "--tube",
+        metavar="FILE",
+        help="a tube file (TOML: layers, growth, loads; see examples/bilayer.toml) in place of"
+        " --outer-radius, --growth and --material; other options override its values",
+    )
+    tube.add_argument(
+        "--inner-pressure",
+        type=finite_number,
+        metavar="P_I",
+        help="follower pressure P_i on the inner face, units mu (> 0 inflates; default 0)",
+    )
+    tube.add_argument(
+        "--outer-pressure",
+        type=finite_number,
+        metavar="P_O",
+        help="follower pressure P_o on the outer face, units mu (> 0 squeezes; default 0)",
+    )
+    tube.add_argument(
+        "--axial-force",
+        type=finite_number,
+        metavar="F",
+        help="axial force on the ends (units mu R_i^2; free ends: 0) instead of --stretch:"
+        " lambda_z is then solved for",
+    )
+    tube.add_argument(
+        "--closed-ends",
+        action="store_true",
+        default=None,
+        help="capped ends: the pressures load them as well (with --axial-force)",
+    )
+
+
+def _given(args) -> dict:
+    return {dest: getattr(args, dest) for dest in _SHARED if getattr(args, dest) is not None}
+
+
+def _layered_options(args) -> bool:
+    return any(getattr(args, d) is not None for d in _LOADS) or args.closed_ends is not None
+
+
+def tube_of(args, *, layered: bool = False) -> TubeParameters | Tube:
+    """TubeParameters (one layer, no pressure or force: the paper's solver) or a layered
+    Tube (a file, a load only a Tube has, or ``layered``: the control needs one)."""
+    given = _given(args)
+    if "stretch" in given and args.axial_force is not None:
+        raise ParameterError(
+            f"--stretch {given['stretch']:g} and --axial-force {args.axial_force:g} are both"
+            " given; prescribe one of them"
+        )
+    if args.tube is None:
+        if given.get("outer_radius", args.shared_defaults["outer_radius"]) is None:
+            raise UsageError("the following arguments are required: --outer-radius (or --tube)")
+        for dest, value in args.shared_defaults.items():
+            setattr(args, dest, given.get(dest, value))
+        params = tube_from_args(args)
+        if not (layered or _layered_options(args)):
+            return params
+        tube = Tube.from_parameters(params)
+    else:
+        tube = load_tube(args.tube)
+        layer_opts = {k: given[k] for k in ("outer_radius", "growth", "material") if k in given}
+        layer_opts.update(
+            {k: getattr(args, k) for k in ("jm", "alpha") if getattr(args, k) is not None}
+        )
+        if layer_opts:
+            tube = _override_layer(tube, args, layer_opts)
+        for dest in ("voltage", "length"):
+            if dest in given:
+                tube = dataclasses.replace(tube, **{dest: given[dest]})
+        if "stretch" in given:
+            tube = dataclasses.replace(tube, stretch=given["stretch"], axial_force=None)
+    for dest in _LOADS:
+        value = getattr(args, dest)
+        if value is not None:
+            extra = {"stretch": None} if dest == "axial_force" else {}
+            tube = dataclasses.replace(tube, **{dest: value}, **extra)
+    if args.closed_ends:
+        tube = dataclasses.replace(tube, closed_ends=True)
+    return tube
+
+
+def _override_layer(tube: Tube, args, opts: dict) -> Tube:
+    """The one layer of a one-layer file with --outer-radius, --growth, --material (+ --jm,
+    --alpha) applied."""
+    flags = ", ".join("--" + k.replace("_", "-") for k in opts)
+    if len(tube.layers) != 1:
+        raise ParameterError(
+            f"{flags} applies to a one-layer tube; {args.tube} has {len(tube.layers)} layers:"
+            " edit its [[layers]] instead"
+        )
+    fields = {k: opts[k] for k in ("outer_radius", "growth") if k in opts}
+    if {"material", "jm", "alpha"} & set(opts):
+        name = opts.get("material", "neo-hookean")
+        params = {}
+        for flag, key, owner in (("--jm", "jm", "gent"), ("--alpha", "alpha", "mooney-rivlin")):
+            if key in opts:
+                if name != owner:
+                    raise ParameterError(
+                        f"{flag} = {opts[key]:g} applies only to --material {owner}, not {name}"
+                    )
+                params[key] = opts[key]
+        fields["material"] = material_by_name(name, **params)
+    return dataclasses.replace(tube, layers=(dataclasses.replace(tube.layers[0], **fields),))
+
+
+def control_of(args) -> tuple[TubeParameters | Tube, str]:
+    """(the tube, the canonical control name) of a command with --solve-for, --layer,
+    --component: a layered Tube when the control or a load needs one."""
+    needs_tube = (
+        args.solve_for in ("pressure", "force")
+        or args.layer is not None
+        or args.component is not None
+    )
+    params = tube_of(args, layered=needs_tube)
+    if not isinstance(params, Tube):
+        return params, args.solve_for
+    name = args.solve_for
+    if args.layer is not None or args.component is not None:
+        if name != "growth":
+            raise ParameterError(
+                f"--layer / --component apply to --solve-for growth, not {args.solve_for}"
+            )
+        name = str(params.check_control(f"growth[{args.layer or 1}]"))
+        if args.component is not None:
+            name += "." + args.component
+    return params, str(params.check_control(name))
