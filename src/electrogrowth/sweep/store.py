@@ -55,6 +55,7 @@ def label(name: str) -> tuple[str, str]:
     """(description, symbol) of a parameter; a layered tube's control or key as itself."""
     return LABELS.get(name, (name, name))
 
+
 #: name -> (dtype, value before the point is computed, description)
 POINT_VARIABLES = {
     "critical_value": (
