@@ -296,9 +296,10 @@ def critical_curve(
         ``map``-like function running :func:`curve_point` over the grid (e.g. a process
         pool's ``map``); the builtin by default.
     follow : bool
-        With the builtin ``map`` and a one-layer tube (TubeParameters): follow the critical mode and its runners-up from point
-        to point, with full scans only where the check fails, at the ends and every
-        CHECK_EVERY points (module docstring); False: a full scan at every point.
+        With the builtin ``map`` and a one-layer tube (TubeParameters): follow the
+        critical mode and its runners-up from point to point, with full scans only where
+        the check fails, at the ends and every CHECK_EVERY points (module docstring);
+        False: a full scan at every point.
 
     Returns
     -------
