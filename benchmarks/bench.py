@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import os
 import platform
 import re
@@ -126,12 +127,14 @@ class KernelCounter:
 
 
 def median_time(fn, repeat):
-    times, out = [], None
+    """Median wall time, median CPU time of this process (all threads), last result."""
+    times, cpu, out = [], [], None
     for _ in range(repeat):
-        t = time.perf_counter()
+        t, c = time.perf_counter(), time.process_time()
         out = fn()
         times.append(time.perf_counter() - t)
-    return statistics.median(times), out
+        cpu.append(time.process_time() - c)
+    return statistics.median(times), out, statistics.median(cpu)
 
 
 def converged(params, solve_for, side, res):
@@ -168,7 +171,7 @@ def collocation_cost(params, res, rows, nodes):
 def bench_case(name, params, solve_for, side, options, repeat, peer_accuracy):
     scan = lambda: scan_modes(params, solve_for, side=side, options=options)  # noqa: E731
     scan()  # warm: the stable-sign caches of this tube, as along a curve
-    t_eg, res = median_time(scan, repeat)
+    t_eg, res, cpu_eg = median_time(scan, repeat)
     with KernelCounter() as count:
         t_counted = time.perf_counter()
         scan()
@@ -225,6 +228,7 @@ def bench_case(name, params, solve_for, side, options, repeat, peer_accuracy):
         "modes_in_grid": int(len(grid)),
         "kernel_evaluations": {"loose": count.loose, "fine": count.fine},
         "seconds": t_eg,
+        "cpu_seconds": cpu_eg,
         "kernel_seconds": count.seconds,
         "peer_seconds": t_peer,
         "peer_seconds_per_evaluation": {"24 nodes": t24, "40 nodes": t40},
@@ -245,14 +249,11 @@ def bench_case(name, params, solve_for, side, options, repeat, peer_accuracy):
 
 
 def warm_mode(repeat=30):
+    """(median wall, min wall, median CPU) of one critical value in a warm process."""
     p = P(1.4, 1.0, voltage=0.4)
     critical_value(p, 0, 1, "growth")
-    times = []
-    for _ in range(repeat):
-        t = time.perf_counter()
-        critical_value(p, 0, 1, "growth")
-        times.append(time.perf_counter() - t)
-    return statistics.median(times), min(times)
+    wall, _, cpu = median_time(lambda: critical_value(p, 0, 1, "growth"), repeat)
+    return wall, wall, cpu
 
 
 FRESH = (
@@ -282,17 +283,21 @@ def reproduce(quick: bool):
     child's peak memory."""
     exe = Path(sys.executable).with_name("electrogrowth")
     with tempfile.TemporaryDirectory() as tmp:
-        before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+        usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+        before = usage.ru_maxrss
+        cpu = usage.ru_utime + usage.ru_stime
         t = time.perf_counter()
         cmd = [str(exe), "reproduce", "--out", tmp] + (["--quick"] if quick else [])
         out = subprocess.run(cmd, capture_output=True, text=True, check=True).stdout
         seconds = time.perf_counter() - t
-        peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+        usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+        peak = usage.ru_maxrss
+        cpu = usage.ru_utime + usage.ru_stime - cpu
     figures = {
         int(m.group(1)): float(m.group(2))
         for m in re.finditer(r"figure (\d+): .* \(([\d.]+) s\)", out)
     }
-    return seconds, figures, max(peak, before) / 1024
+    return seconds, figures, max(peak, before) / 1024, cpu
 
 
 def sweep_throughput(quick: bool):
@@ -305,7 +310,7 @@ def tables(results) -> str:
     lines = [
         f"Measured {results['date']} on {results['machine']}; {results['note']}",
         "",
-        "| point | result | modes | electrogrowth | peer (collocation) | ratio | baseline"
+        "| point | result | modes | electrogrowth (CPU) | peer (collocation) | ratio | baseline"
         " (SciPy) | ratio | error | peer error | baseline error |",
         "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
     ]
@@ -318,7 +323,8 @@ def tables(results) -> str:
         )
         lines.append(
             f"| {r['name']} | {what} {r['value']:.6g} | {r['modes_in_grid']} |"
-            f" {r['seconds']:.3f} s | {r['peer_seconds']:.0f} s |"
+            f" {r['seconds']:.3f} s ({r.get('cpu_seconds', math.nan):.3f} s) |"
+            f" {r['peer_seconds']:.0f} s |"
             f" {r['peer_seconds'] / r['seconds']:.0f}x | {r['baseline_seconds']:.0f} s |"
             f" {r['baseline_seconds'] / r['seconds']:.0f}x | {fmt(r['error'])} |"
             f" {fmt(r['peer_error'])} | {fmt(r['baseline_error'])} |"
@@ -329,7 +335,8 @@ def tables(results) -> str:
     lines += [
         "| case | time |",
         "|---|---:|",
-        f"| one critical mode, warm process (median of 30) | {1e3 * o['warm_mode'][0]:.2f} ms |",
+        f"| one critical mode, warm process (median of 30) | {1e3 * o['warm_mode'][0]:.2f} ms"
+        f" (CPU {1e3 * o['warm_mode'][2]:.2f} ms) |",
         f"| fresh process: import + first critical value | {o['fresh'][0]:.2f} s"
         f" (whole process {o['fresh'][1]:.2f} s) |",
     ]
@@ -403,8 +410,13 @@ def main(argv=None) -> None:
     if not args.quick:
         other["sweep"] = sweep_throughput(False)
         save()
-        seconds, figures, rss = reproduce(False)
-        other["reproduce"] = {"seconds": seconds, "figures": figures, "max_rss_mb": rss}
+        seconds, figures, rss, cpu = reproduce(False)
+        other["reproduce"] = {
+            "seconds": seconds,
+            "cpu_seconds": cpu,
+            "figures": figures,
+            "max_rss_mb": rss,
+        }
         print(f"reproduce {seconds:.1f} s {figures} {rss:.0f} MB", flush=True)
     save()
     text = tables(results)

@@ -35,7 +35,7 @@ def test_bench_case_at_tiny_size():
         "machine": "here",
         "note": "quick",
         "scans": [r],
-        "other": {"warm_mode": (0.01, 0.01), "fresh": (1.0, 2.0), "max_rss_mb": 100.0},
+        "other": {"warm_mode": (0.01, 0.01, 0.01), "fresh": (1.0, 2.0), "max_rss_mb": 100.0},
     }
     text = bench.tables(results)
     assert "| tiny | bifurcation (0, 1)" in text and "warm process" in text
