@@ -49,6 +49,10 @@ class FixtureState:
     r_o: float
     charge: float
 
+    @property
+    def current_length(self) -> float:
+        return self.params.stretch * self.params.length
+
     def radius(self, R):
         p = self.params
         return np.sqrt(self.r_i**2 + p.growth**3 * (np.asarray(R, float) ** 2 - 1) / p.stretch)
