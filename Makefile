@@ -13,6 +13,9 @@ $(VENV)/.installed: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install -q --upgrade pip
 	$(BIN)/python -m pip install -q -e '.[test,lint,vtk,sweep,units]'
+	@# compile the numba kernels now (cache=True keeps them), not at a user's first call
+	$(BIN)/electrogrowth critical --solve-for growth --outer-radius 1.4 --length 1 \
+		--voltage 0.4 > /dev/null
 	touch $@
 
 # The heavier optional extras (sweep = xarray/zarr/dask, vtk = meshio), on demand.
@@ -43,8 +46,10 @@ test-slow: $(VENV)/.installed
 demo: $(VENV)/.installed
 	$(BIN)/electrogrowth demo --out $(OUT)
 
+# The suite (benchmarks/bench.py): tables into BENCHMARKS.md, benchmarks/results.json.
+# About an hour on the 2-core machine; make bench BENCH_ARGS=--quick checks that it runs.
 bench: $(VENV)/.installed
-	$(BIN)/python benchmarks/bench.py
+	$(BIN)/python benchmarks/bench.py $(BENCH_ARGS)
 
 figures: $(VENV)/.installed
 	$(BIN)/electrogrowth reproduce --out $(OUT)/figures

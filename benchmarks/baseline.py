@@ -4,9 +4,9 @@ The paper's method, written plainly: for each trial value of the control paramet
 the base state, integrate the Riccati equation of the conditional impedance with
 ``scipy.integrate.solve_ivp`` (DOP853) from the inner face (z = 0) to the outer face,
 and take det z(r_o) as the dispersion function; march the parameter in 1 % steps until
-det z changes sign, then ``scipy.optimize.brentq``. One mode at a time, no compiled code.
-The Stroh matrix and base state are the package's (they are not what is being timed);
-what is timed is the per-mode SciPy integration inside a root finder.
+det z changes sign, then ``scipy.optimize.brentq``. One mode at a time, no compiled code,
+no pruning of modes. The Stroh matrix and base state are the package's (they are not what
+is being timed); what is timed is the per-mode SciPy integration inside a root finder.
 """
 
 from __future__ import annotations
@@ -18,7 +18,8 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
-from electrogrowth.basestate.tube import solve_base_state
+from electrogrowth.basestate.tube import solve_base_state, voltage_threshold
+from electrogrowth.errors import BaseStateError
 from electrogrowth.incremental.stroh import stroh_matrix_py
 
 
@@ -45,16 +46,35 @@ def det_impedance(params, m: int, n: int, rtol: float) -> float:
     return float(np.linalg.det(sol.y[:, -1].reshape(4, 4) / s))
 
 
-def critical_growth(
-    params, m: int, n: int, *, rtol: float = 1e-10, step: float = 0.01, g_max: float = 6.0
+def critical_value(
+    params, m: int, n: int, solve_for: str, side: str | None = None, *, rtol: float = 1e-10
 ) -> float:
+    """First root of det z(r_o) of mode (m, n) marching ``solve_for`` in 1 % steps from the
+    unloaded value (growth from 1, the stretch from 1 down or up, the voltage from 0 up to
+    its threshold), then brentq."""
+    if solve_for == "voltage":
+        start, scale, sense, end = 0.0, voltage_threshold(params)[0], 1.0, None
+        end = scale * (1 - 1e-9)
+    else:
+        start, scale = 1.0, 1.0
+        sense = -1.0 if side in (None, "compression") and solve_for == "stretch" else 1.0
+        end = 0.05 if sense < 0 else 8.0
+    f = lambda x: det_impedance(dataclasses.replace(params, **{solve_for: x}), m, n, rtol)  # noqa
+    x, fx = start, f(start)
+    while (end - x) * sense > 0:
+        x_new = x + sense * 0.01 * scale
+        if (x_new - end) * sense > 0:
+            x_new = end
+        try:
+            f_new = f(x_new)
+        except BaseStateError:
+            break
+        if fx * f_new <= 0:
+            return brentq(f, *sorted((x, x_new)), xtol=1e-14, rtol=1e-14)
+        x, fx = x_new, f_new
+    raise RuntimeError(f"no critical {solve_for} for mode ({m}, {n})")
+
+
+def critical_growth(params, m: int, n: int, *, rtol: float = 1e-10) -> float:
     """Smallest g > 1 with det z(r_o) = 0 for mode (m, n): 1 % march, then brentq."""
-    f = lambda g: det_impedance(dataclasses.replace(params, growth=g), m, n, rtol)  # noqa
-    g, fg = 1.0, f(1.0)
-    while g < g_max:
-        g_new = g * (1 + step)
-        f_new = f(g_new)
-        if fg * f_new <= 0:
-            return brentq(f, g, g_new, xtol=1e-14, rtol=1e-14)
-        g, fg = g_new, f_new
-    raise RuntimeError(f"no critical growth below {g_max} for mode ({m}, {n})")
+    return critical_value(params, m, n, "growth", rtol=rtol)

@@ -1,171 +1,443 @@
-"""``make bench``: electrogrowth against the plain SciPy baseline, same inputs, one process.
+"""``make bench``: the suite across the parameter space, the figures, first calls, memory.
 
-Prints, per case, both times, their ratio and each result's error against a converged
-value. The baseline (benchmarks/baseline.py) is too slow for full scans; there it is timed
-on a subsample of modes and extrapolated per mode, which the table says.
+For every point of :data:`CASES` a full scan (m <= 30, n <= 40, the prismatic and
+torsional families, probes, widening and the exact short-wave limit, as ``scan_modes``
+does by default) is timed in this process against
+
+* the peer: the package's own Chebyshev collocation with the same pruning (the same march,
+  the same lazily re-evaluated modes). Its time is that of our scan with each kernel
+  evaluation replaced by a collocation evaluation: the number of (state, mode)
+  evaluations of the scan (loose signs and fine solves counted apart) times the measured
+  cost of one collocation evaluation at that point (24 nodes for signs, 40 for solves),
+  plus our scan's time outside the kernel (base states, march, short-wave limit), which
+  the peer shares. A collocation scan run in full would take hours per point; its
+  accuracy is measured: the collocation critical value of the critical mode (40 nodes).
+* the baseline (baseline.py): plain SciPy, no pruning, timed on the critical mode of the
+  scan (a low mode: among the cheapest for SciPy) and multiplied by the number of wrinkle
+  modes.
+
+Errors are against a converged value: the critical mode at rtol 1e-13 (or the short-wave
+limit at 1e-13). Then: one critical mode in a warm process, the first critical value in a
+fresh process, every paper figure and the whole ``electrogrowth reproduce`` (a child
+process under resource accounting: peak memory), and the sweep throughput serial / local
+pool / dask LocalCluster (sweep_bench.py). Results go to benchmarks/results.json and the
+tables between the markers of BENCHMARKS.md. ``--quick``: three small points, no figures,
+no sweep (checks that the script runs).
 """
 
 from __future__ import annotations
 
-import dataclasses
+import argparse
+import json
+import math
 import os
+import platform
+import re
 import resource
+import statistics
 import subprocess
 import sys
+import tempfile
 import time
+from pathlib import Path
 
 import numpy as np
 
 from electrogrowth import TubeParameters
+from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.bifurcation.critical import critical_value
-from electrogrowth.bifurcation.scan import ScanOptions, scan_modes
+from electrogrowth.bifurcation.scan import ScanOptions, scan_grid, scan_modes
+from electrogrowth.bifurcation.surface import short_wave_limit
+from electrogrowth.incremental import targets as targets_module
+from electrogrowth.incremental.targets import collocation_targets
+from electrogrowth.model.materials import gent
 
 sys.path.insert(0, os.path.dirname(__file__))
 import baseline  # noqa: E402
 
-POINT = TubeParameters(outer_radius=1.4, length=1.0, stretch=1.0, voltage=0.4)
-FULL = dict(options=ScanOptions((0, 30), (1, 40), extend=False))
-SAMPLE = [(0, 1), (4, 1), (3, 7)]  # baseline subsample of the scan (g_cr 1.27 .. 2.25)
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parent
+FULL = ScanOptions((0, 30), (1, 40))
+QUICK = ScanOptions((0, 4), (1, 4))
+P = TubeParameters
+
+#: (name, tube, solve_for, side): the paper's box and its hard corners.
+CASES = [
+    ("thin Rbar_o 1.05, growth, Vbar 0.2", P(1.05, 1.0, voltage=0.2), "growth", None),
+    ("thin Rbar_o 1.1, stretch compression", P(1.1, 1.0), "stretch", "compression"),
+    ("thin Rbar_o 1.1, voltage", P(1.1, 1.0), "voltage", None),
+    ("Fig. 9 tube Rbar_o 1.4, growth, Vbar 0.4", P(1.4, 1.0, voltage=0.4), "growth", None),
+    ("short L 0.5, growth, Vbar 0.4", P(1.4, 0.5, voltage=0.4), "growth", None),
+    ("slender L 10, stretch compression", P(1.4, 10.0), "stretch", "compression"),
+    ("slender L 10, voltage", P(1.4, 10.0), "voltage", None),
+    ("thick Rbar_o 2, growth, Vbar 0.3", P(2.0, 1.0, voltage=0.3), "growth", None),
+    ("thick Rbar_o 2, voltage (near threshold)", P(2.0, 1.0), "voltage", None),
+    (
+        "thick Rbar_o 2.5, stretch extension, Vbar 0.3",
+        P(2.5, 1.0, voltage=0.3),
+        "stretch",
+        "extension",
+    ),
+    (
+        "short wave: extension, Vbar 0.4 (surface)",
+        P(1.4, 1.0, voltage=0.4),
+        "stretch",
+        "extension",
+    ),
+    (
+        "Gent J_m 10, growth, Vbar 0.4",
+        P(1.4, 1.0, voltage=0.4, material=gent(10.0)),
+        "growth",
+        None,
+    ),
+]
+QUICK_CASES = [CASES[3], CASES[1], CASES[10]]
 
 
-def timed(fn, *args, repeat=1, **kwargs):
-    best, out = np.inf, None
+class KernelCounter:
+    """Counts (state, mode) kernel evaluations, loose (rtol >= 1e-6) and fine, and their
+    time, by wrapping the kernel entry points that impedance_targets calls."""
+
+    def __init__(self):
+        self.loose = self.fine = 0
+        self.seconds = 0.0
+        self.saved = {}
+
+    def __enter__(self):
+        for name in ("target_batch", "target_serial"):
+            kernel = getattr(targets_module, name)
+            self.saved[name] = kernel
+
+            def wrapped(m, k, pairs, codes, tables, rtol, max_steps, _kernel=kernel):
+                t = time.perf_counter()
+                out = _kernel(m, k, pairs, codes, tables, rtol, max_steps)
+                self.seconds += time.perf_counter() - t
+                if rtol >= 1e-6:
+                    self.loose += len(m)
+                else:
+                    self.fine += len(m)
+                return out
+
+            setattr(targets_module, name, wrapped)
+        return self
+
+    def __exit__(self, *exc):
+        for name, kernel in self.saved.items():
+            setattr(targets_module, name, kernel)
+
+
+def median_time(fn, repeat):
+    """Median wall time, median CPU time of this process (all threads), last result."""
+    times, cpu, out = [], [], None
+    for _ in range(repeat):
+        t, c = time.perf_counter(), time.process_time()
+        out = fn()
+        times.append(time.perf_counter() - t)
+        cpu.append(time.process_time() - c)
+    return statistics.median(times), out, statistics.median(cpu)
+
+
+def converged(params, solve_for, side, res):
+    c = res.critical
+    if c.kind == "surface":
+        return short_wave_limit(params, solve_for, side=side, rtol=1e-13).value
+    if c.kind != "bifurcation":
+        return c.value
+    return critical_value(
+        params,
+        c.m,
+        c.n,
+        solve_for,
+        family=c.family,
+        side=side,
+        rtol=1e-13,
+        bracket=(c.value * (1 - 1e-7), c.value * (1 + 1e-7)),
+    ).value
+
+
+def collocation_cost(params, res, rows, nodes):
+    """Seconds per collocation evaluation (median over ``rows``) at the critical state."""
+    at = res.critical.params
+    state = solve_base_state(at)
+    collocation_targets(state, rows[:1], nodes=nodes)
+    times = []
+    for row in rows:
+        t = time.perf_counter()
+        collocation_targets(state, row[None, :], nodes=nodes)
+        times.append(time.perf_counter() - t)
+    return statistics.median(times)
+
+
+def bench_case(name, params, solve_for, side, options, repeat, peer_accuracy):
+    scan = lambda: scan_modes(params, solve_for, side=side, options=options)  # noqa: E731
+    scan()  # warm: the stable-sign caches of this tube, as along a curve
+    t_eg, res, cpu_eg = median_time(scan, repeat)
+    with KernelCounter() as count:
+        t_counted = time.perf_counter()
+        scan()
+        t_counted = time.perf_counter() - t_counted
+    ref = converged(params, solve_for, side, res)
+    err_eg = abs(res.critical.value - ref) / abs(ref)
+    c = res.critical
+    grid = scan_grid(res.m_range, res.n_range, options.extend, (True, True))
+    pick = grid[np.linspace(0, len(grid) - 1, 5).astype(int)]
+    t24 = collocation_cost(params, res, pick[:3], 24)
+    t40 = collocation_cost(params, res, pick[:3], 40)
+    t_peer = (t_counted - count.seconds) + count.loose * t24 + count.fine * t40
+    err_peer = None
+    if peer_accuracy and c.kind == "bifurcation":
+        w = 1e-6 * abs(c.value)
+        col = critical_value(
+            params,
+            c.m,
+            c.n,
+            solve_for,
+            family=c.family,
+            side=side,
+            method="collocation",
+            bracket=(c.value - w, c.value + w),
+        )
+        err_peer = abs(col.value - ref) / abs(ref)
+    # baseline: the critical mode (or (0, 1) at a surface optimum); a low mode is among
+    # the cheapest for SciPy, so the extrapolation favours the baseline
+    modes = [(c.m, c.n) if c.kind == "bifurcation" and c.n > 0 else (0, 1)]
+    t_base, err_base = [], None
+    for k, (m, n) in enumerate(modes):
+        t = time.perf_counter()
+        try:
+            v = baseline.critical_value(params, m, n, solve_for, side, rtol=1e-8)
+        except (RuntimeError, ValueError) as exc:
+            print(f"  baseline mode ({m}, {n}) failed: {exc}", file=sys.stderr)
+            v = None
+        t_base.append(time.perf_counter() - t)
+        if k == 0 and v is not None and c.kind == "bifurcation":
+            err_base = abs(v - ref) / abs(ref)
+    wrinkles = int(np.sum(grid[:, 2] == 0)) if grid.shape[1] > 2 else len(grid)
+    t_baseline = float(np.mean(t_base)) * wrinkles
+    out = {
+        "name": name,
+        "tube": params.as_dict() if hasattr(params, "as_dict") else str(params),
+        "solve_for": solve_for,
+        "side": side,
+        "kind": str(c.kind),
+        "mode": [c.m, c.n],
+        "value": c.value,
+        "converged": ref,
+        "m_range": list(res.m_range),
+        "n_range": list(res.n_range),
+        "modes_in_grid": int(len(grid)),
+        "kernel_evaluations": {"loose": count.loose, "fine": count.fine},
+        "seconds": t_eg,
+        "cpu_seconds": cpu_eg,
+        "kernel_seconds": count.seconds,
+        "peer_seconds": t_peer,
+        "peer_seconds_per_evaluation": {"24 nodes": t24, "40 nodes": t40},
+        "baseline_seconds": t_baseline,
+        "baseline_seconds_per_mode": t_base,
+        "error": err_eg,
+        "peer_error": err_peer,
+        "baseline_error": err_base,
+    }
+    print(
+        f"{name:<48}{t_eg:8.3f}s peer {t_peer:9.1f}s ({t_peer / t_eg:6.0f}x)"
+        f" baseline {t_baseline:9.0f}s ({t_baseline / t_eg:7.0f}x)  err {err_eg:.1e}"
+        f" peer {err_peer if err_peer is None else f'{err_peer:.1e}'}"
+        f" base {err_base if err_base is None else f'{err_base:.1e}'}  {c.kind} ({c.m}, {c.n})",
+        flush=True,
+    )
+    return out
+
+
+def warm_mode(repeat=30):
+    """(median wall, min wall, median CPU) of one critical value in a warm process."""
+    p = P(1.4, 1.0, voltage=0.4)
+    critical_value(p, 0, 1, "growth")
+    wall, _, cpu = median_time(lambda: critical_value(p, 0, 1, "growth"), repeat)
+    return wall, wall, cpu
+
+
+FRESH = (
+    "import time; t = time.perf_counter(); from electrogrowth import TubeParameters;"
+    "from electrogrowth.bifurcation.critical import critical_value;"
+    "critical_value(TubeParameters(1.4, 1.0, voltage=0.4), 0, 1, 'growth');"
+    "print(time.perf_counter() - t)"
+)
+
+
+def fresh_process(repeat=3):
+    """Wall time of a new interpreter importing the package and computing one critical
+    value, the compiled kernels loaded from numba's cache; and of the whole process."""
+    inner, outer = [], []
     for _ in range(repeat):
         t = time.perf_counter()
-        out = fn(*args, **kwargs)
-        best = min(best, time.perf_counter() - t)
-    return best, out
-
-
-def baseline_tolerance(ref: float, m: int, n: int) -> tuple[float, float, float]:
-    """Loosest solve_ivp rtol whose critical g matches the converged value to 1e-8."""
-    for rtol in (1e-6, 1e-8, 1e-10, 1e-12):
-        t, g = timed(baseline.critical_growth, POINT, m, n, rtol=rtol)
-        if abs(g - ref) <= 1e-8 * ref:
-            return rtol, t, g
-    raise RuntimeError("baseline never reached 1e-8")
-
-
-def row(name, t_base, t_eg, err_base, err_eg, note=""):
-    ratio = t_base / t_eg
-    print(
-        f"{name:<34}{t_base:>12.3f}{t_eg:>10.3f}{ratio:>10.0f}x{err_base:>11.1e}"
-        f"{err_eg:>11.1e}  {note}"
-    )
-    return ratio
-
-
-def main() -> None:
-    print(f"electrogrowth benchmark, {os.cpu_count()} cores, {time.strftime('%Y-%m-%d')}")
-    critical_value(POINT, 0, 1, "growth")  # compile / load the cached kernel
-    print(f"{'case':<34}{'baseline s':>12}{'eg s':>10}{'ratio':>11}{'err base':>11}{'err eg':>11}")
-    tolerances = []
-    for m, n in ((0, 1), (3, 7)):
-        ref = critical_value(POINT, m, n, "growth", rtol=1e-13)
-        cert = critical_value(
-            POINT,
-            m,
-            n,
-            "growth",
-            method="collocation",
-            bracket=(ref.value * (1 - 1e-6), ref.value * (1 + 1e-6)),
-        )
-        rtol, t_base, g_base = baseline_tolerance(ref.value, m, n)
-        tolerances.append(rtol)
-        t_eg, one = timed(critical_value, POINT, m, n, "growth", repeat=3)
-        row(
-            f"one mode: g_cr of ({m}, {n})",
-            t_base,
-            t_eg,
-            abs(g_base - ref.value) / ref.value,
-            abs(one.value - ref.value) / ref.value,
-            f"converged {ref.value:.13g} (collocation {cert.value:.13g}); baseline rtol {rtol:g}",
-        )
-        if (m, n) == (0, 1):
-            ref01 = ref
-    rtol = min(tolerances)
-    per_mode = []
-    for m, n in SAMPLE:
-        t, _ = timed(baseline.critical_growth, POINT, m, n, rtol=rtol)
-        per_mode.append(t)
-    n_modes = 31 * 40
-    t_base_scan = float(np.mean(per_mode)) * n_modes
-    t_scan, scan = timed(scan_modes, POINT, "growth", repeat=3, **FULL)
-    row(
-        "full scan m 0..30, n 1..40",
-        t_base_scan,
-        t_scan,
-        np.nan,
-        abs(scan.critical.value - ref01.value) / ref01.value,
-        f"baseline: {len(SAMPLE)} modes timed, x{n_modes} extrapolated",
-    )
-
-    t_fig9, points = figure9_time()
-    row(
-        "Figure 9: 2 x 40 full scans",
-        t_base_scan * points,
-        t_fig9,
-        np.nan,
-        np.nan,
-        "baseline extrapolated per mode",
-    )
-    scaling()
-    first_call_cost()
-
-
-def figure9_time() -> tuple[float, int]:
-    """Critical g along lambda_z for Vbar = 0.4, 0.6: 40 points each, full scans."""
-    total, count = 0.0, 0
-    for volt in (0.4, 0.6):
-        p = dataclasses.replace(POINT, voltage=volt)
-        lo = scan_modes(p, "stretch", side="compression", **FULL).critical.value
-        hi = scan_modes(p, "stretch", side="extension", **FULL).critical.value
-        for lz in np.linspace(lo, hi, 42)[1:-1]:
-            t, _ = timed(scan_modes, dataclasses.replace(p, stretch=float(lz)), "growth", **FULL)
-            total += t
-            count += 1
-    return total, count
-
-
-def scaling() -> None:
-    """Scan cost against the number of modes, and memory over many scans."""
-    print("\nscan cost vs number of modes (same point):")
-    for mm, nn in ((7, 10), (15, 20), (30, 40)):
-        t, _ = timed(
-            scan_modes,
-            POINT,
-            "growth",
-            repeat=2,
-            options=ScanOptions((0, mm), (1, nn), extend=False),
-        )
-        k = (mm + 1) * nn
-        print(f"  {k:>5} modes: {t:.3f} s, {1e3 * t / k:.3f} ms per mode")
-    rss = []
-    for i, lz in enumerate(np.linspace(0.95, 1.3, 30)):
-        scan_modes(
-            dataclasses.replace(POINT, stretch=float(lz)),
-            "growth",
-            options=ScanOptions((0, 8), (1, 10), extend=False),
-        )
-        if i % 10 == 9:
-            rss.append(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024)
-    print("max RSS after 10, 20, 30 scans along a curve: " + ", ".join(f"{r:.0f} MB" for r in rss))
-
-
-def first_call_cost() -> None:
-    """Wall time of a fresh process computing one critical value (kernel from cache)."""
-    code = (
-        "import time; t=time.time(); from electrogrowth import TubeParameters;"
-        "from electrogrowth.bifurcation.critical import critical_value;"
-        "critical_value(TubeParameters(1.4, 1.0, voltage=0.4), 0, 1, 'growth');"
-        "print(time.time()-t)"
-    )
-    t = float(
-        subprocess.run(
-            [sys.executable, "-c", code], capture_output=True, text=True, check=True
+        out = subprocess.run(
+            [sys.executable, "-c", FRESH], capture_output=True, text=True, check=True
         ).stdout
-    )
-    print(f"\nfresh process, import + one critical value (compiled kernel cached): {t:.2f} s")
+        outer.append(time.perf_counter() - t)
+        inner.append(float(out.split()[-1]))
+    return statistics.median(inner), statistics.median(outer)
+
+
+def reproduce(quick: bool):
+    """The whole ``electrogrowth reproduce`` in a child: its time, each figure's time, the
+    child's peak memory."""
+    exe = Path(sys.executable).with_name("electrogrowth")
+    with tempfile.TemporaryDirectory() as tmp:
+        usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+        before = usage.ru_maxrss
+        cpu = usage.ru_utime + usage.ru_stime
+        t = time.perf_counter()
+        cmd = [str(exe), "reproduce", "--out", tmp] + (["--quick"] if quick else [])
+        out = subprocess.run(cmd, capture_output=True, text=True, check=True).stdout
+        seconds = time.perf_counter() - t
+        usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+        peak = usage.ru_maxrss
+        cpu = usage.ru_utime + usage.ru_stime - cpu
+    figures = {
+        int(m.group(1)): float(m.group(2))
+        for m in re.finditer(r"figure (\d+): .* \(([\d.]+) s\)", out)
+    }
+    return seconds, figures, max(peak, before) / 1024, cpu
+
+
+def sweep_throughput(quick: bool):
+    cmd = [sys.executable, str(HERE / "sweep_bench.py")] + (["--quick"] if quick else [])
+    out = subprocess.run(cmd, capture_output=True, text=True, check=True).stdout
+    return json.loads(out.strip().splitlines()[-1])
+
+
+def tables(results) -> str:
+    lines = [
+        f"Measured {results['date']} on {results['machine']}; {results['note']}",
+        "",
+        "| point | result | modes | electrogrowth (CPU) | peer (collocation) | ratio | baseline"
+        " (SciPy) | ratio | error | peer error | baseline error |",
+        "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
+    ]
+    fmt = lambda e: "" if e is None else f"{e:.0e}"  # noqa: E731
+    for r in results["scans"]:
+        what = (
+            f"{r['kind']} ({r['mode'][0]}, {r['mode'][1]})"
+            if r["kind"] == "bifurcation"
+            else r["kind"]
+        )
+        lines.append(
+            f"| {r['name']} | {what} {r['value']:.6g} | {r['modes_in_grid']} |"
+            f" {r['seconds']:.3f} s ({r.get('cpu_seconds', math.nan):.3f} s) |"
+            f" {r['peer_seconds']:.0f} s |"
+            f" {r['peer_seconds'] / r['seconds']:.0f}x | {r['baseline_seconds']:.0f} s |"
+            f" {r['baseline_seconds'] / r['seconds']:.0f}x | {fmt(r['error'])} |"
+            f" {fmt(r['peer_error'])} | {fmt(r['baseline_error'])} |"
+        )
+    for f in results.get("failed", []):
+        lines.append(f"| {f['name']} | failed: {f['error']} | | | | | | | | | |")
+    s = [r["seconds"] for r in results["scans"]]
+    c = [r.get("cpu_seconds", math.nan) for r in results["scans"]]
+    lines += [
+        "",
+        f"Scans: wall median {statistics.median(s):.3f} s, max {max(s):.3f} s; CPU median"
+        f" {statistics.median(c):.3f} s, max {max(c):.3f} s. At the surface points the"
+        " baseline's time is its march of mode (0, 1) (it has no short-wave limit).",
+        "",
+    ]
+    o = results["other"]
+    lines += [
+        "| case | time |",
+        "|---|---:|",
+        f"| one critical mode, warm process (median of 30) | {1e3 * o['warm_mode'][0]:.2f} ms"
+        f" (CPU {1e3 * o['warm_mode'][2]:.2f} ms) |",
+        f"| fresh process: import + first critical value | {o['fresh'][0]:.2f} s"
+        f" (whole process {o['fresh'][1]:.2f} s) |",
+    ]
+    if "reproduce" in o:
+        rep = o["reproduce"]
+        for number, sec in sorted(rep["figures"].items(), key=lambda kv: int(kv[0])):
+            lines.append(f"| Figure {number} | {sec:.1f} s |")
+        lines.append(
+            f"| `electrogrowth reproduce` (all, patterns, index) | {rep['seconds']:.1f} s |"
+        )
+        lines.append(f"| peak memory of `reproduce` (max RSS) | {rep['max_rss_mb']:.0f} MB |")
+    lines.append(f"| peak memory of this benchmark process | {o['max_rss_mb']:.0f} MB |")
+    if "sweep" in o:
+        sw = o["sweep"]
+        lines += ["", "| sweep driver | points/s | seconds | speed-up |", "|---|---:|---:|---:|"]
+        base = sw["runs"][0]["seconds"]
+        for run in sw["runs"]:
+            lines.append(
+                f"| {run['name']} | {run['points'] / run['seconds']:.2f} | {run['seconds']:.1f}"
+                f" | {base / run['seconds']:.2f} |"
+            )
+        lines.append("")
+        lines.append(sw["note"])
+    return "\n".join(lines)
+
+
+def write_markdown(text: str, path: Path) -> None:
+    begin, end = "<!-- bench:begin -->", "<!-- bench:end -->"
+    doc = path.read_text()
+    if begin in doc and end in doc:
+        doc = doc[: doc.index(begin) + len(begin)] + "\n" + text + "\n" + doc[doc.index(end) :]
+    else:
+        doc += f"\n{begin}\n{text}\n{end}\n"
+    path.write_text(doc)
+
+
+def main(argv=None) -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="three small points, no figures")
+    ap.add_argument("--out", type=Path, default=HERE / "results.json")
+    ap.add_argument("--markdown", type=Path, default=ROOT / "BENCHMARKS.md")
+    args = ap.parse_args(argv)
+    load = os.getloadavg()[0]
+    results = {
+        "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
+        "machine": f"{os.cpu_count()} cores, {platform.machine()}, Python"
+        f" {platform.python_version()}",
+        "note": f"load average {load:.1f} at the start (the machine is shared); quick"
+        if args.quick
+        else f"load average {load:.1f} at the start (the machine is shared)",
+        "quick": args.quick,
+    }
+    critical_value(P(1.4, 1.0, voltage=0.4), 0, 1, "growth")  # load the compiled kernels
+    options, cases = (QUICK, QUICK_CASES) if args.quick else (FULL, CASES)
+    other = {}
+    results["other"] = other
+
+    def save():
+        other["max_rss_mb"] = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+        results["load_average_end"] = os.getloadavg()[0]
+        args.out.write_text(json.dumps(results, indent=1, default=str))
+
+    results["scans"] = []
+    for case in cases:
+        try:
+            results["scans"].append(bench_case(*case, options, 1 if args.quick else 3, True))
+        except Exception as exc:  # noqa: BLE001 -- a failing point is a result too
+            results.setdefault("failed", []).append(
+                {"name": case[0], "error": f"{type(exc).__name__}: {exc}"}
+            )
+            print(f"{case[0]}: FAILED {type(exc).__name__}: {exc}", flush=True)
+        save()
+    other["warm_mode"] = warm_mode()
+    other["fresh"] = fresh_process(1 if args.quick else 3)
+    print(f"warm mode {1e3 * other['warm_mode'][0]:.2f} ms, fresh {other['fresh']}", flush=True)
+    save()
+    if not args.quick:
+        other["sweep"] = sweep_throughput(False)
+        save()
+        seconds, figures, rss, cpu = reproduce(False)
+        other["reproduce"] = {
+            "seconds": seconds,
+            "cpu_seconds": cpu,
+            "figures": figures,
+            "max_rss_mb": rss,
+        }
+        print(f"reproduce {seconds:.1f} s {figures} {rss:.0f} MB", flush=True)
+    save()
+    text = tables(results)
+    print(text)
+    if not args.quick:
+        write_markdown(text, args.markdown)
 
 
 if __name__ == "__main__":

@@ -221,3 +221,52 @@ def test_cli_bad_input_is_a_parameter_error(argv, named, tmp_path):
             argv += [flag, value]
     with pytest.raises(ParameterError, match=named):
         run_curve(_args(*argv, "--out", str(tmp_path)))
+
+
+@pytest.mark.parametrize(
+    "params, solve_for, along, grid, side",
+    [
+        # no switch: most points are followed, not scanned
+        (
+            TubeParameters(1.4, 1.0, voltage=0.4),
+            "growth",
+            "stretch",
+            np.linspace(0.9, 1.3, 9),
+            None,
+        ),
+        # the outer face's short-wave limit comes first all along (Fig. 7, extension)
+        (
+            TubeParameters(1.3, 1.0, voltage=0.4),
+            "stretch",
+            "outer_radius",
+            [1.3, 1.35, 1.4, 1.45],
+            "extension",
+        ),
+        # two switches of the critical mode along Rbar_o
+        (TubeParameters(length=1.0), "voltage", "outer_radius", np.linspace(1.1, 1.35, 6), None),
+    ],
+)
+def test_continuation_equals_full_scans(params, solve_for, along, grid, side, monkeypatch):
+    """A curve by continuation gives the values, modes, kinds and switches of the curve of
+    full scans at every point (to the solver's tolerance), with fewer scans."""
+    from electrogrowth.bifurcation import curves
+
+    options = ScanOptions((0, 4), (1, 4))
+    full = critical_curve(params, solve_for, along, grid, side=side, options=options, follow=False)
+    scans = []
+    counting = lambda *a, **k: scans.append(1) or scan_modes(*a, **k)  # noqa: E731
+    monkeypatch.setattr(curves, "scan_modes", counting)
+    followed = critical_curve(params, solve_for, along, grid, side=side, options=options)
+    assert followed.x == pytest.approx(full.x, rel=1e-12, abs=0)
+    assert (followed.surface == full.surface).all()
+    both = np.isfinite(full.short_wave_limit)
+    assert (np.isfinite(followed.short_wave_limit) == both).all()
+    assert followed.short_wave_limit[both] == pytest.approx(full.short_wave_limit[both], rel=1e-12)
+    assert followed.value == pytest.approx(full.value, rel=1e-11, abs=0)
+    assert (followed.m == full.m).all() and (followed.n == full.n).all()
+    assert (followed.kind == full.kind).all()
+    assert [(s.mode_before, s.mode_after) for s in followed.switches] == [
+        (s.mode_before, s.mode_after) for s in full.switches
+    ]
+    if not full.switches:
+        assert len(scans) < len(grid)

@@ -20,6 +20,17 @@ split at it and both halves are located again. If a single-mode solve fails (e.g
 kernel cannot integrate a high mode next to the threshold), the switch is bisected with
 scans instead, to a relative 1e-7 only. A point whose scan fails (e.g. the tube is
 already unstable at the start of the march) is kept as kind "failed" with its message.
+
+By continuation (``follow``, the default with the builtin ``map``), the grid points between
+full scans are not scanned: the last scan's critical mode and runners-up are followed
+(:class:`_Follower`: each mode's value predicted from its previous points, then one
+bracketed solve of the one predicted first; or the exact short-wave limit, if it came
+first), and the result is accepted only if every mode of the scan's grid is still on its
+stable side (its sign on the unloaded tube, loose targets, as in the scan's march) just
+before it, no face is past its short-wave limit (for a mode), and the mode is not on the
+edge of the ranges; otherwise, at the ends and every CHECK_EVERY points the point is a
+full scan. Switches are located and checked by scans as
+before, so the curve equals the curve of full scans.
 """
 
 from __future__ import annotations
@@ -34,19 +45,25 @@ from typing import NamedTuple
 
 import numpy as np
 
+from ..basestate.tube import solve_base_state
 from ..errors import ElectrogrowthError, ParameterError
+from ..incremental.accuracy import SCAN_SIGNS, SCAN_STABLE_SIGNS
+from ..incremental.targets import impedance_targets
 from ..labelled import curve_dataset
 from ..model.layers import Tube
 from ..model.params import CONTROLS, TubeParameters, check_side
 from ..outcomes import NO_MODE, Kind, Status
 from ..summary import curve_html
 from .critical import critical_value
-from .scan import ScanOptions, scan_modes
+from .directions import past_surface
+from .march import unloaded_signs
+from .scan import ScanOptions, scan_grid, scan_modes
 from .surface import short_wave_limit
 
 #: The parameters a curve can run along (fields of TubeParameters).
 ALONG = ("stretch", "voltage", "outer_radius", "length", "growth")
 MAX_SPLITS = 6  # depth of the re-location when a third mode intervenes
+CHECK_EVERY = 8  # when following modes, a full scan at least every this many points
 
 
 class Switch(NamedTuple):
@@ -94,19 +111,7 @@ def curve_point(
         res = scan_modes(params.at(along, x), solve_for, side=side, options=options)
     except Exception as exc:  # noqa: BLE001 -- failures are data in a sweep
         return CurvePoint(float(x), math.nan, NO_MODE, Status.FAILED, _message(exc))
-    c = res.critical
-    mode = (c.m, c.n) if c.kind == Kind.BIFURCATION else NO_MODE
-    limit = res.short_wave_limit
-    return CurvePoint(
-        float(x),
-        c.value,
-        mode,
-        c.kind,
-        "",
-        tuple((r.m, r.n, r.value) for r in res.runners_up),
-        bool(res.surface_instability),
-        math.nan if limit is None else float(limit),
-    )
+    return _scan_point(x, res)
 
 
 def _progress_bar(total: int, desc: str):
@@ -286,6 +291,7 @@ def critical_curve(
     options: ScanOptions = ScanOptions(),
     progress: bool | Callable[[int], object] | None = None,
     mapper: Callable = map,
+    follow: bool = True,
 ) -> Curve:
     """Critical ``solve_for`` as ``along`` runs over ``values``, switches located.
 
@@ -308,6 +314,11 @@ def critical_curve(
     mapper : callable
         ``map``-like function running :func:`curve_point` over the grid (e.g. a process
         pool's ``map``); the builtin by default.
+    follow : bool
+        With the builtin ``map`` and a one-layer tube (TubeParameters): follow the
+        critical mode and its runners-up from point to point, with full scans only where
+        the check fails, at the ends and every CHECK_EVERY points (module docstring);
+        False: a full scan at every point.
 
     Returns
     -------
@@ -346,9 +357,14 @@ def critical_curve(
     for x in xs:  # the ranges are checked before any work
         params.at(along, x)
     unit = functools.partial(curve_point, params, solve_for, along, side=side, options=options)
+    if follow and mapper is map and isinstance(params, TubeParameters):
+        follower = _Follower(params, solve_for, along, side, options, unit)
+        computed = (follower.point(x, i in (0, xs.size - 1)) for i, x in enumerate(xs))
+    else:
+        computed = mapper(unit, xs)
     points = []
     bar = _progress_bar(xs.size, f"{solve_for} along {along}") if progress is True else None
-    for pt in mapper(unit, xs):
+    for pt in computed:
         points.append(pt)
         if bar is not None:
             bar.update(1)
@@ -387,6 +403,127 @@ def critical_curve(
         params,
         np.array(surface, dtype=bool),
         np.array(limit, dtype=float),
+    )
+
+
+class _Follower:
+    """Grid points by continuation from the last full scan (module docstring)."""
+
+    def __init__(self, params, solve_for, along, side, options: ScanOptions, unit):
+        self.params, self.solve_for, self.along, self.side = params, solve_for, along, side
+        self.options, self.unit = options, unit
+        self.sense = -1.0 if side == "compression" else 1.0
+        self.scan = None  # the last full scan (CurvePoint) and its ScanResult ranges
+        self.ranges = None
+        self.since = 0
+        self.signs = None  # (key, stable signs of the scan's grid)
+        self.history: dict[tuple[int, int], list[tuple[float, float]]] = {}
+
+    def point(self, x: float, end: bool) -> CurvePoint:
+        pt = None
+        if not end and self.scan is not None and self.since < CHECK_EVERY:
+            try:
+                pt = self._follow(float(x))
+            except ElectrogrowthError:
+                pt = None
+        if pt is None:
+            pt = self._full(float(x))
+        else:
+            self.since += 1
+        self._record(pt)
+        return pt
+
+    def _full(self, x: float) -> CurvePoint:
+        at = self.params.at(self.along, x)
+        try:
+            res = scan_modes(at, self.solve_for, side=self.side, options=self.options)
+        except Exception:  # noqa: BLE001 -- the unit keeps the failure as data
+            self.scan = None
+            return self.unit(x)
+        pt = _scan_point(x, res)
+        mode = pt.kind == Kind.BIFURCATION and not pt.surface and math.isnan(pt.short_wave_limit)
+        self.scan = pt if mode or pt.kind == Kind.SURFACE else None
+        self.ranges = (res.m_range, res.n_range)
+        self.since = 0
+        return pt
+
+    def _record(self, pt: CurvePoint):
+        if pt.kind == Kind.BIFURCATION:
+            self.history.setdefault(pt.mode, []).append((pt.x, pt.value))
+        for m, n, v in pt.runners_up:
+            self.history.setdefault((m, n), []).append((pt.x, v))
+
+    def _predict(self, mode, x) -> tuple[float, float] | None:
+        """A bracket around the value of ``mode`` at x extrapolated from its last points."""
+        hist = self.history.get(mode, [])
+        if not hist:
+            return None
+        x1, v1 = hist[-1]
+        if len(hist) == 1:
+            return v1 * (1 - 1e-2), v1 * (1 + 1e-2)
+        x0, v0 = hist[-2]
+        guess = v1 + (v1 - v0) * (x - x1) / (x1 - x0)
+        w = max(abs(guess - v1), 1e-6 * max(1.0, abs(guess)))
+        return guess - w, guess + w
+
+    def _follow(self, x: float) -> CurvePoint | None:
+        """The followed mode predicted first, solved, or None if the check fails (the
+        short-wave limit, if it came first at the last scan)."""
+        at = self.params.at(self.along, x)
+        if self.scan.kind == Kind.SURFACE:
+            limit = short_wave_limit(at, self.solve_for, side=self.side)
+            if limit.kind != Kind.SURFACE or not self._all_stable(at, None, limit.value):
+                return None
+            return CurvePoint(x, limit.value, NO_MODE, Kind.SURFACE, "", (), True, limit.value)
+        modes = [self.scan.mode] + [(m, n) for m, n, _ in self.scan.runners_up]
+        guesses = [(mode, self._predict(mode, x)) for mode in modes]
+        guesses = [(mode, b) for mode, b in guesses if b is not None]
+        if not guesses:
+            return None
+        best, bracket = min(guesses, key=lambda g: self.sense * sum(g[1]))
+        c = critical_value(at, *best, self.solve_for, side=self.side, bracket=bracket)
+        (m_lo, m_hi), (n_lo, n_hi) = self.ranges
+        if c.kind != Kind.BIFURCATION or best[0] == m_hi or best[1] == n_hi:
+            return None
+        if not self._all_stable(at, best, c.value):
+            return None
+        if self.options.surface and past_surface(c.params):
+            return None
+        return CurvePoint(x, c.value, best, Kind.BIFURCATION)
+
+    def _all_stable(self, at: TubeParameters, best, value: float) -> bool:
+        """Every mode of the scan's grid but ``best`` (None: all) is still on its stable
+        side (the sign on the unloaded tube, as in a scan's march; loose targets) just
+        before ``value``."""
+        o = self.options
+        grid = scan_grid(*self.ranges, o.extend, (o.prismatic, o.torsional))
+        key = (at.material, at.outer_radius, at.length, self.ranges)
+        if self.signs is None or self.signs[0] != key:
+            ref = functools.partial(impedance_targets, rtol=SCAN_STABLE_SIGNS)
+            self.signs = key, unloaded_signs(at, grid, ref)
+        other = np.ones(len(grid), bool)
+        if best is not None:
+            other = ~((grid[:, 0] == best[0]) & (grid[:, 1] == best[1]))
+        before = value - self.sense * 1e-9 * max(1.0, abs(value))
+        state = solve_base_state(at.at(self.solve_for, before))
+        signs = self.signs[1][other] * impedance_targets(state, grid[other], rtol=SCAN_SIGNS)
+        return bool(np.all(signs > 0))
+
+
+def _scan_point(x: float, res) -> CurvePoint:
+    """The CurvePoint of a ScanResult at x (as :func:`curve_point`)."""
+    c = res.critical
+    mode = (c.m, c.n) if c.kind == Kind.BIFURCATION else NO_MODE
+    limit = res.short_wave_limit
+    return CurvePoint(
+        float(x),
+        c.value,
+        mode,
+        c.kind,
+        "",
+        tuple((r.m, r.n, r.value) for r in res.runners_up),
+        bool(res.surface_instability),
+        math.nan if limit is None else float(limit),
     )
 
 

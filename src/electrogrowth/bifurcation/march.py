@@ -253,14 +253,20 @@ def first_bifurcations(
             idx = np.nonzero(hist.alive & (hist.xa != x_prev))[0]
             if idx.size:
                 found += _advance(
-                    hist, idx, x_prev, signed(x_prev, idx), signed, signed_fine, modes
+                    hist,
+                    idx,
+                    x_prev,
+                    signed(x_prev, idx),
+                    signed,
+                    signed_fine,
+                    modes,
+                    top,
                 )
             break
         idx = np.nonzero(hist.needs(x))[0]
         if idx.size:
-            found += _advance(
-                hist, idx, x, sref[idx] * targets(state, modes[idx]), signed, signed_fine, modes
-            )
+            g = sref[idx] * targets(state, modes[idx])
+            found += _advance(hist, idx, x, g, signed, signed_fine, modes, top)
         d = float(np.clip(hist.step_limit(), MIN_STEP, min(2 * d, MAX_STEP)))
         x_prev, lam_prev = x, state.lambda_i
     found.sort(key=lambda mv: sense * mv.value)
@@ -275,18 +281,19 @@ def first_bifurcations(
     return MarchResult(found[:top], threshold)
 
 
-def _advance(hist, idx, x, g, signed, signed_fine, modes) -> list:
-    """Record the samples at x; roots of the modes that changed sign or dipped to zero."""
+def _advance(hist, idx, x, g, signed, signed_fine, modes, need=None) -> list:
+    """Record the samples at x; roots of the modes that changed sign or dipped to zero
+    (of those that changed sign, the first ``need``, see :func:`_refine`)."""
     found = []
     hit = g <= 0
-    groups = {}
-    for j in np.nonzero(hit)[0]:
-        groups.setdefault(hist.xa[idx[j]], []).append(j)
-    for xa, js in groups.items():  # modes last seen together are bisected together
-        roots = _refine(signed, signed_fine, modes, idx[js], xa, x, hist.x0)
+    js = np.nonzero(hit)[0]
+    if js.size:  # bisected together from where each mode was last seen
+        roots = _refine(signed, signed_fine, modes, idx[js], hist.xa[idx[js]], x, hist.x0, need)
         for j, root in zip(js, roots):
             if root is None:  # the loose sign was wrong: the mode is not past a root yet
                 hit[j] = False
+            elif root is _LATER:  # crossed after the first ``need`` roots: not wanted
+                pass
             else:
                 found.append(root)
     mid, old = hist.g[0, idx], hist.g[1, idx]  # the two samples before x
@@ -313,15 +320,23 @@ def _dip(f, a, b):
     return None
 
 
-def _refine(signed, signed_fine, modes, cand, xa, x, x0) -> list:
-    """Roots of the candidates, which changed sign between xa and x (loose targets).
+_LATER = object()  # a candidate of _refine whose root comes after the ``need`` wanted
+
+
+def _refine(signed, signed_fine, modes, cand, xa, x, x0, need=None) -> list:
+    """Roots of the candidates, which changed sign between xa (each its own) and x (loose
+    targets).
 
     Shared bisection points narrow every candidate's own bracket, then Brent's method
     with the fine targets finishes each. A candidate whose fine target is still positive
-    at x was misjudged by the loose one: None (it stays in the march).
+    at x was misjudged by the loose one: None (it stays in the march). With ``need``, the
+    candidates past a root at the first x where at least ``need`` of them are (a shared
+    bisection of the loose signs) are finished, the rest are _LATER: near a short-wave
+    limit hundreds of modes cross within a step, and only the first few are reported.
     """
-    lo, hi = np.full(cand.size, xa, float), np.full(cand.size, x, float)
-    a, b = xa, x
+    sense = 1.0 if x > xa[0] else -1.0
+    lo, hi = np.array(xa, float), np.full(cand.size, x, float)
+    a, b = lo[np.argmin(sense * lo)], x
     for _ in range(6):  # bisect towards the earliest root; sample the others on the way
         c = 0.5 * (a + b)
         inside = (c - lo) * (c - hi) < 0
@@ -330,17 +345,37 @@ def _refine(signed, signed_fine, modes, cand, xa, x, x0) -> list:
         neg[inside] = g <= 0
         hi[neg], lo[inside & ~neg] = c, c
         a, b = (a, c) if neg.any() else (c, b)
-    out = []
-    for i, l, h in zip(cand, lo, hi):
-        f = lambda y, i=i: signed_fine(y, i)  # noqa: E731
+    out = [None] * cand.size
+
+    def finish(k):
+        i, l, h = cand[k], lo[k], hi[k]
+        f = lambda y: signed_fine(y, i)  # noqa: E731
         if f(h) > 0:  # fine and loose disagree at h: fall back to the whole step
             if f(x) > 0:
-                out.append(None)
-                continue
+                return
             h = x
         if f(l) <= 0:
-            l = xa if f(xa) > 0 else x0  # the mode is stable at the start of the march
-        out.append(_mode_value(modes, i, brent(f, *sorted((l, h)))))
+            l = xa[k] if f(xa[k]) > 0 else x0  # the mode is stable at the start of the march
+        out[k] = _mode_value(modes, i, brent(f, *sorted((l, h))))
+
+    keep = np.arange(cand.size)
+    if need is not None and cand.size > need + 2:
+        # a pack: the first x (shared loose bisection) where at least ``need`` candidates
+        # are past a root; only those can hold the first ``need`` roots
+        a, b = lo[np.argmin(sense * lo)], x
+        for _ in range(60):
+            c = 0.5 * (a + b)
+            inside = keep[signed(c, cand[keep]) <= 0]
+            if inside.size >= need:
+                keep, b = inside, c
+            else:
+                a = c
+            if keep.size <= need + 2 or abs(b - a) <= 1e-13 * max(1.0, abs(b)):
+                break
+        for k in set(range(cand.size)) - set(keep.tolist()):
+            out[k] = _LATER
+    for k in keep:
+        finish(k)
     return out
 
 

@@ -208,7 +208,7 @@ def scan_modes(
     solve_for = control_name(params, solve_for)
     side = check_side(solve_for, side)
     try:
-        result, at_cap = _widened_scan(params, solve_for, side, options, rtol)
+        result, at_cap, limit = _widened_scan(params, solve_for, side, options, rtol)
     except NoBifurcationFound:
         if not options.surface:
             raise
@@ -221,15 +221,29 @@ def scan_modes(
         )
     if not options.surface:
         return result
-    return _with_short_waves(params, solve_for, side, result, options.top, rtol, at_cap)
+    return _with_short_waves(params, solve_for, side, result, options.top, rtol, at_cap, limit)
 
 
 def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
-    """The scan of the finite modes, its ranges widened towards short waves; and whether
-    its optimum still sits on the edge of a range at the cap."""
+    """The scan of the finite modes, its ranges widened towards short waves; whether its
+    optimum still sits on the edge of a range at the cap; and the exact short-wave limit
+    if it was computed (else None).
+
+    Widening only looks for a finite optimum beyond the ranges, so it stops (as at the
+    cap) once the exact short-wave limit comes before the best finite mode found: shorter
+    waves tend to that limit, which then is the result (the m = 64 scan is not needed)."""
     m_range, n_range, top, extend = options.m_range, options.n_range, options.top, options.extend
     grown = {"m": 0, "n": 0}
     probes = extend
+    limit, sense = None, -1.0 if side == "compression" else 1.0
+
+    def limit_first(c) -> bool:
+        nonlocal limit
+        if not options.surface or c.kind != Kind.BIFURCATION:
+            return False
+        limit = limit or short_wave_limit(params, solve_for, side=side, rtol=rtol)
+        return limit.kind == Kind.SURFACE and (limit.value - c.value) * sense < 0
+
     while True:
         result = _scan_once(
             params,
@@ -244,6 +258,8 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
         )
         c = result.critical
         if probes and c.kind == Kind.BIFURCATION and (c.m > m_range[1] or c.n > n_range[1]):
+            if limit_first(c):
+                return result, True, limit
             # a probe beyond the range wins: the optimum is a short wave, widen to it once
             grown = {"m": int(c.m > m_range[1]), "n": int(c.n > n_range[1])}
             m_range = (m_range[0], max(m_range[1], c.m))
@@ -261,12 +277,14 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
         }
         if not extend or not any(grow.values()):
             break
+        if limit_first(c):
+            return result, True, limit
         if grow["m"]:
             m_range, grown["m"] = (m_range[0], min(2 * m_range[1] + 1, M_CAP)), grown["m"] + 1
         if grow["n"]:
             n_range, grown["n"] = (n_range[0], min(2 * n_range[1], N_CAP)), grown["n"] + 1
     at_cap = extend and any(edge.values()) and not (c.m == 0 and not edge["n"])
-    return result, at_cap
+    return result, at_cap, limit
 
 
 def scan_grid(
@@ -301,13 +319,14 @@ def scan_grid(
 
 
 def _with_short_waves(
-    params, solve_for, side, result: ScanResult, top: int, rtol: float, at_cap: bool
+    params, solve_for, side, result: ScanResult, top: int, rtol: float, at_cap: bool, limit=None
 ) -> ScanResult:
-    """``result``, or the exact short-wave limit if it comes first (module docstring)."""
+    """``result``, or the exact short-wave limit (``limit`` if already computed) if it
+    comes first (module docstring)."""
     c = result.critical
     if c.kind == Kind.BIFURCATION and not at_cap and not past_surface(c.params):
         return result
-    limit = short_wave_limit(params, solve_for, side=side, rtol=rtol)
+    limit = limit or short_wave_limit(params, solve_for, side=side, rtol=rtol)
     if limit.kind != Kind.SURFACE:
         return result
     result = dataclasses.replace(

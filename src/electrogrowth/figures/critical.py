@@ -39,10 +39,11 @@ KIND_CODES = {
     Kind.SURFACE: 4,
 }
 #: Mode ranges of every scan (extended automatically when the optimum is on an edge). The
-#: full figures scan m up to 64: near the voltage threshold the critical value first rises
-#: with m and then falls for m > 12 (a short-wavelength instability of the inner face), which
-#: a scan of m <= 12 would miss, its optimum not being on the edge.
-FULL_MODES, QUICK_MODES = ((0, 64), (1, 30)), ((0, 4), (1, 4))
+#: full figures use the scan's defaults: near the voltage threshold the critical value
+#: first rises with m and then falls for m > 12 towards a short-wavelength instability of
+#: a face, which the scan's probes beyond the range and its exact short-wave limit catch
+#: (the figures used to scan m <= 64 for it, five times the modes, for the same curves).
+FULL_MODES, QUICK_MODES = (ScanOptions().m_range, ScanOptions().n_range), ((0, 4), (1, 4))
 NUDGE = 1e-6  # relative step inside a curve end where the tube is exactly critical
 COLUMNS = ("outer_radius", "length", "growth", "stretch", "voltage")
 
