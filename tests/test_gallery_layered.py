@@ -97,7 +97,7 @@ def test_pressurised_dielectric_headlines():
     other = critical_value(long, 0, 1, "pressure", method="collocation")
     assert other.value == pytest.approx(result.headline["bulge_L20_open"], rel=1e-8)
     # ... is close to the limit point of the closed-ended tube carrying the same total axial
-    # load N + pi r_i^2 P (the long-wave bulging condition, docs/gallery.md): they coincide at
+    # load N + pi r_i^2 P (the long-wave bulging condition, docs/patterns.md): they coincide at
     # L = inf, and the gap is quadratic in the distance (6.7e-4 at L = 20) from it
     p20 = other.value
     open_state = solve_layered_state(dataclasses.replace(long, inner_pressure=p20))

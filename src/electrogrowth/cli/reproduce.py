@@ -186,7 +186,7 @@ def run_gallery(args) -> int:
     index.write_text(
         "# Gallery: layered, growing, pressurised tubes, computed by electrogrowth\n\n"
         "Each example: what it computes, its plot, its data and the 3D patterns at onset."
-        " The discussion is in docs/gallery.md.\n\n" + "\n".join(sections)
+        " The discussion is in docs/patterns.md.\n\n" + "\n".join(sections)
     )
     print(index)
     return 0

@@ -7,7 +7,7 @@ layout; nothing below it imports it. ``FIGURES`` is the one registry of the pape
 figures: number -> function(*, quick) returning a :class:`~.style.FigureResult` (the first
 line of its docstring is its help text). To add a figure, write the function in a module of
 this package and add it here. ``GALLERY`` is the registry of the worked examples of layered
-tubes (figures/gallery.py, docs/gallery.md): name -> function(*, quick) returning a
+tubes (figures/gallery.py, docs/patterns.md): name -> function(*, quick) returning a
 :class:`~.gallery.GalleryFigure`.
 """
 

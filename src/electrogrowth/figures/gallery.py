@@ -1,4 +1,4 @@
-"""The gallery: worked examples of layered, growing, pressurised tubes (docs/gallery.md).
+"""The gallery: worked examples of layered, growing, pressurised tubes (docs/patterns.md).
 
 Each example is a pure function ``name(*, quick=False, mapper=map)`` returning a
 :class:`~.gallery_base.GalleryFigure` (a :class:`~.style.FigureResult` named instead of
