@@ -408,37 +408,7 @@ def collocation_shape(
     ``pairs``: the block of a mode family (collocation.py); the other fields are 0.
     """
     shape = mode_shape_collocation(state, m, n, nodes=nodes, pairs=pairs)
-    r_nodes = shape["r"]
-    domain = [state.r_i, state.r_o]
-    poly = {
-        f: cheb.Chebyshev.fit(r_nodes, shape[f], len(r_nodes) - 1, domain=domain)
-        for f in ("U_r", "U_th", "U_z", "Phi", "P")
-    }
-    r = state.radius(R)
-    val = {f: p(r) for f, p in poly.items()}
-    der = {f: poly[f].deriv()(r) for f in ("U_r", "U_th", "U_z", "Phi")}
-    k = wavenumber(state.params, n)
-    mod = state.moduli(R)
-    p = state.pressure(R)
-    eta = np.empty((8, R.size))
-    eta[0], eta[1], eta[2], eta[7] = val["U_r"], val["U_th"], val["U_z"], -val["Phi"]
-    for j, x in enumerate(R):
-        G = stroh_at(state, x, m, k)
-        e = eta[:, j]
-        # row 7: r (-Phi)' = G70 U_r + G71 U_th + G72 U_z + G73 r Delta_r
-        e[3] = (-r[j] * der["Phi"][j] - G[7, :3] @ e[:3]) / G[7, 3]
-        # rows 1, 2: r U' = G[i, :4] U + G[i, 5 or 6] r Sigma + G[i, 7] (-Phi)
-        e[5] = (r[j] * der["U_th"][j] - G[1, :4] @ e[:4] - G[1, 7] * e[7]) / G[1, 5]
-        e[6] = (r[j] * der["U_z"][j] - G[2, :4] @ e[:4] - G[2, 7] * e[7]) / G[2, 6]
-    a = {name: mod[..., MODULI_INDEX[name]] for name in ("A1111", "A1122", "A1133", "G111")}
-    eta[4] = r * (
-        (a["A1111"] + p) * der["U_r"]
-        + a["A1122"] * (eta[0] + m * eta[1]) / r
-        + a["A1133"] * k * eta[2]
-        + a["G111"] * eta[3] / r
-        - val["P"]
-    )
-    return eta
+    return _eta_from_nodes(state, shape, m, wavenumber(state.params, n), R)
 
 
 # -- normalisation ---------------------------------------------------------------------------
@@ -507,17 +477,19 @@ def layered_collocation_shape(
     return eta
 
 
-def _eta_from_nodes(state, part: dict, m: float, k: float, R: FloatArray, side: str):
-    """eta at R (one layer) from its nodal U_r, U_th, U_z, Phi, P (see collocation_shape)."""
+def _eta_from_nodes(state, part: dict, m: float, k: float, R: FloatArray, side=None):
+    """eta at R (one layer: ``side`` picks it at an interface of a layered state) from its
+    nodal U_r, U_th, U_z, Phi, P (see collocation_shape)."""
     r_nodes = part["r"]
     domain = [r_nodes.min(), r_nodes.max()]
     poly = {
         f: cheb.Chebyshev.fit(r_nodes, part[f], len(r_nodes) - 1, domain=domain)
         for f in ("U_r", "U_th", "U_z", "Phi", "P")
     }
-    r = state.radius(R, side=side)
-    mod = state.moduli(R, side=side)
-    p = state.pressure(R, side=side)
+    where = {} if side is None else {"side": side}
+    r = state.radius(R, **where)
+    mod = state.moduli(R, **where)
+    p = state.pressure(R, **where)
     val = {f: q(r) for f, q in poly.items()}
     der = {f: poly[f].deriv()(r) for f in ("U_r", "U_th", "U_z", "Phi")}
     eta = np.empty((8, R.size))
@@ -526,7 +498,9 @@ def _eta_from_nodes(state, part: dict, m: float, k: float, R: FloatArray, side: 
     for j in range(R.size):
         stroh_matrix(np.ascontiguousarray(mod[j]), float(p[j]), float(m), k * r[j], G)
         e = eta[:, j]
+        # row 7: r (-Phi)' = G70 U_r + G71 U_th + G72 U_z + G73 r Delta_r
         e[3] = (-r[j] * der["Phi"][j] - G[7, :3] @ e[:3]) / G[7, 3]
+        # rows 1, 2: r U' = G[i, :4] U + G[i, 5 or 6] r Sigma + G[i, 7] (-Phi)
         e[5] = (r[j] * der["U_th"][j] - G[1, :4] @ e[:4] - G[1, 7] * e[7]) / G[1, 5]
         e[6] = (r[j] * der["U_z"][j] - G[2, :4] @ e[:4] - G[2, 7] * e[7]) / G[2, 6]
     a = {name: mod[..., MODULI_INDEX[name]] for name in ("A1111", "A1122", "A1133", "G111")}

@@ -190,19 +190,9 @@ def _validate(c: SweepConfig) -> None:
         raise ConfigError(
             ("solve", "for"), f"{c.solve_for!r} is unknown; choose growth, stretch or voltage"
         )
-    if c.side is not None:
-        if c.solve_for != "stretch":
-            raise ConfigError(("solve", "side"), 'side applies only to for = "stretch"')
-        if c.side not in SIDES:
-            raise ConfigError(
-                ("solve", "side"), f"{c.side!r} is unknown; choose compression or extension"
-            )
-    if not RTOL_RANGE[0] <= c.rtol <= RTOL_RANGE[1]:
-        raise ConfigError(
-            ("solve", "rtol"), f"rtol = {c.rtol!r} is out of range; valid range: 1e-14 to 1e-4"
-        )
-    if c.chunk < 1:
-        raise ConfigError(("run", "chunk"), f"chunk = {c.chunk} is invalid; need >= 1")
+    if c.side is not None and c.solve_for != "stretch":
+        raise ConfigError(("solve", "side"), 'side applies only to for = "stretch"')
+    _check_run(c)
     if not c.grid:
         raise ConfigError(
             ("grid",), f"nothing to sweep; give at least one of {', '.join(SWEEPABLE)} in [grid]"
@@ -232,6 +222,20 @@ def _validate(c: SweepConfig) -> None:
             _tube(name, v, ("grid", name), material)
 
 
+def _check_run(c: SweepConfig) -> None:
+    """The side's name, rtol and chunk: the checks every sweep shares."""
+    if c.side is not None and c.side not in SIDES:
+        raise ConfigError(
+            ("solve", "side"), f"{c.side!r} is unknown; choose compression or extension"
+        )
+    if not RTOL_RANGE[0] <= c.rtol <= RTOL_RANGE[1]:
+        raise ConfigError(
+            ("solve", "rtol"), f"rtol = {c.rtol!r} is out of range; valid range: 1e-14 to 1e-4"
+        )
+    if c.chunk < 1:
+        raise ConfigError(("run", "chunk"), f"chunk = {c.chunk} is invalid; need >= 1")
+
+
 def _fixed_tube(c: SweepConfig) -> Tube:
     """The sweep's tube file with its [fixed] values applied."""
     tube = parse_tube(c.tube, source="[tube] file")
@@ -253,16 +257,7 @@ def _validate_tube(c: SweepConfig) -> None:
         raise ConfigError(("solve", "for"), str(exc)) from None
     if solve_for != c.solve_for:
         raise ConfigError(("solve", "for"), f"write it as {solve_for!r}")
-    if c.side is not None and c.side not in SIDES:
-        raise ConfigError(
-            ("solve", "side"), f"{c.side!r} is unknown; choose compression or extension"
-        )
-    if not RTOL_RANGE[0] <= c.rtol <= RTOL_RANGE[1]:
-        raise ConfigError(
-            ("solve", "rtol"), f"rtol = {c.rtol!r} is out of range; valid range: 1e-14 to 1e-4"
-        )
-    if c.chunk < 1:
-        raise ConfigError(("run", "chunk"), f"chunk = {c.chunk} is invalid; need >= 1")
+    _check_run(c)
     if not c.grid:
         raise ConfigError(("grid",), "nothing to sweep; give a control or key of the tube")
     for table, items in (("fixed", [(k, (v,)) for k, v in c.fixed]), ("grid", c.grid)):
