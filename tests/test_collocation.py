@@ -53,6 +53,8 @@ class FixtureState:
     def current_length(self) -> float:
         return self.params.stretch * self.params.length
 
+    face_pressures = (0.0, 0.0)
+
     def radius(self, R):
         p = self.params
         return np.sqrt(self.r_i**2 + p.growth**3 * (np.asarray(R, float) ** 2 - 1) / p.stretch)

@@ -275,6 +275,11 @@ class LayeredState:
         )
 
     @property
+    def face_pressures(self) -> tuple[float, float]:
+        """(P_i, P_o), the follower pressures on the inner and outer face."""
+        return self.tube.inner_pressure, self.tube.outer_pressure
+
+    @property
     def current_length(self) -> float:
         """l / R_i = lambda_z L, the deformed length (sets k = n pi / l)."""
         return self.stretch * self.tube.length
@@ -444,7 +449,7 @@ class LayeredState:
             "radii": list(self.radii),
             "charge": self.charge,
             "stretch": self.stretch,
-            "current_length": self.stretch * t.length,
+            "current_length": self.current_length,
             "voltage_threshold": _finite(self.voltage_threshold),
             "threshold_kind": self.threshold_kind,
             "threshold_lambda_i": _finite(self.threshold_lambda_i),

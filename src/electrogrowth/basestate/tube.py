@@ -328,6 +328,11 @@ class BaseState:
         )
 
     @property
+    def face_pressures(self) -> tuple[float, float]:
+        """(P_i, P_o): no follower pressure on the faces of the paper's tube."""
+        return 0.0, 0.0
+
+    @property
     def current_length(self) -> float:
         """l / R_i = lambda_z L, the deformed length (sets k = n pi / l)."""
         return self.params.stretch * self.params.length

@@ -349,7 +349,8 @@ def collocation_matrix(
     ----------
     state : BaseState
         The axisymmetric base state (``electrogrowth.basestate.tube.solve_base_state``): needs
-        ``params``, ``r_i``, ``r_o``, ``moduli(R)`` and ``pressure(R)``.
+        ``params``, ``r_i``, ``r_o``, ``current_length``, ``face_pressures``, ``moduli(R)``
+        and ``pressure(R)`` (or a layered.LayeredState).
     m : int
         Circumferential wavenumber.
     n : float
@@ -386,11 +387,6 @@ def collocation_matrix(
 def _complex_matrix(state, m: float, n: float, nodes: int) -> Operator:
     """The matrix before dropping its imaginary part, which vanishes identically."""
     return _assemble(state, m, n, nodes)[0]
-
-
-def _face_pressures(state) -> tuple[float, float]:
-    tube = getattr(state, "tube", None)
-    return (0.0, 0.0) if tube is None else (tube.inner_pressure, tube.outer_pressure)
 
 
 def _assemble(state, m: float, n: float, nodes: int):
@@ -438,7 +434,7 @@ def _assemble(state, m: float, n: float, nodes: int):
         out[k * width : (k + 1) * width] = segs[k][3][0][node]
         return out
 
-    P_i, P_o = _face_pressures(state)
+    P_i, P_o = state.face_pressures
     last, fields = len(segs) - 1, ("U_r", "U_th", "U_z", "Phi")
     inner, outer = rows_of[0][:, 1], rows_of[last][:, 0]
     M[inner[:3]], M[inner[3]] = traction(0, nn - 1, P_i), unknown(0, "Phi", nn - 1)

@@ -136,11 +136,7 @@ def shooting_target(state, m: float, k: float, *, pairs: int = ALL_PAIRS, pieces
     keep = kept_pairs(pairs)
     rows = np.array(keep + [4 + j for j in keep])
     d = len(keep)
-    P_i, P_o = (
-        (0.0, 0.0)
-        if getattr(state, "tube", None) is None
-        else (state.tube.inner_pressure, state.tube.outer_pressure)
-    )
+    P_i, P_o = state.face_pressures
     s = impedance_scale(float(m), float(k), float(state.r_o))
     zi = face_impedance(P_i, float(m), k * state.r_i, pairs, s)[np.ix_(keep, keep)]
     zo = face_impedance(P_o, float(m), k * state.r_o, pairs, s)[np.ix_(keep, keep)]

@@ -116,14 +116,6 @@ def _segments(state):
     return [(1.0, prm.outer_radius, single)]
 
 
-def face_pressures(state) -> tuple[float, float]:
-    """(P_i, P_o), the follower pressures on the faces of a base state (0 without)."""
-    tube = getattr(state, "tube", None)
-    if tube is None:
-        return 0.0, 0.0
-    return float(tube.inner_pressure), float(tube.outer_pressure)
-
-
 def _segment_table(a, b, values, tol, max_nodes):
     """(chopped distinct coefficient rows, fmap) of one segment."""
     n = 17
@@ -185,7 +177,7 @@ def build_table(state, *, tol: float = 1e-15, max_nodes: int = 129) -> RadialTab
         np.array([c.shape[0] for c, _ in parts], dtype=np.int64),
         np.stack([fm for _, fm in parts]),
         np.array(bounds, dtype=float),
-        np.array(face_pressures(state), dtype=float),
+        np.array(state.face_pressures, dtype=float),
     )
 
 

@@ -445,10 +445,9 @@ def boundary_residual(eta: FloatArray, faces=(None, None)) -> float:
 
 def _face_impedances(state, m: float, k: float):
     """z_P of the faces of a layered state (incremental/impedance.py ``face_impedance``)."""
-    tube = state.tube
     return tuple(
         face_impedance(P, float(m), k * r, ALL_PAIRS, 1.0)
-        for P, r in ((tube.inner_pressure, state.r_i), (tube.outer_pressure, state.r_o))
+        for P, r in zip(state.face_pressures, (state.r_i, state.r_o))
     )
 
 
