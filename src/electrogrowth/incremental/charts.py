@@ -82,6 +82,38 @@ def determinant(a):
 
 
 @nb.njit(cache=True)
+def inverse(A, out) -> bool:
+    """out = A^-1 by Gauss-Jordan with partial pivoting; False if A is singular."""
+    n = A.shape[0]
+    m = A.copy()
+    for i in range(n):
+        for j in range(n):
+            out[i, j] = 1.0 if i == j else 0.0
+    for c in range(n):
+        piv = c
+        for i in range(c + 1, n):
+            if abs(m[i, c]) > abs(m[piv, c]):
+                piv = i
+        if m[piv, c] == 0.0 or not np.isfinite(m[piv, c]):
+            return False
+        if piv != c:
+            for j in range(n):
+                m[c, j], m[piv, j] = m[piv, j], m[c, j]
+                out[c, j], out[piv, j] = out[piv, j], out[c, j]
+        d = 1.0 / m[c, c]
+        for j in range(n):
+            m[c, j] *= d
+            out[c, j] *= d
+        for i in range(n):
+            if i != c and m[i, c] != 0.0:
+                f = m[i, c]
+                for j in range(n):
+                    m[i, j] -= f * m[c, j]
+                    out[i, j] -= f * out[c, j]
+    return True
+
+
+@nb.njit(cache=True)
 def right_divide(b, a, out):
     """out = b a^-1 (4x4) by Gaussian elimination with partial pivoting on a^T; False, and
     ``out`` undefined, at a zero or non-finite pivot or a non-finite result. Unlike
@@ -122,9 +154,10 @@ def right_divide(b, a, out):
 
 
 @nb.njit(cache=True)
-def switch_chart(z, J):
-    """Best chart for the subspace z~ (chart J); returns (z_new, J_new, sign of det W1)."""
-    X = np.zeros((8, 4))  # basis in hat coordinates: X = P_J^T [I; z]
+def hat_basis(z, J):
+    """The basis P_J^T [I; z~] (8, 4) of the subspace z~ of chart J in hat coordinates
+    (chart {} with S scaled), with the orientation of [I; z~]."""
+    X = np.zeros((8, 4))
     perm = np.empty(8, np.int64)
     sign = np.empty(8)
     chart_perm(J, perm, sign)
@@ -132,6 +165,15 @@ def switch_chart(z, J):
         for c in range(4):
             val = (1.0 if a == c else 0.0) if a < 4 else z[a - 4, c]
             X[perm[a], c] += sign[a] * val
+    return X
+
+
+@nb.njit(cache=True)
+def switch_chart(z, J):
+    """Best chart for the subspace z~ (chart J); returns (z_new, J_new, sign of det W1)."""
+    X = hat_basis(z, J)
+    perm = np.empty(8, np.int64)
+    sign = np.empty(8)
     best, bestJ, bestsgn = np.inf, -1, 1.0
     zbest = np.zeros((4, 4))
     for Jn in range(16):

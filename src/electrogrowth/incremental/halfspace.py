@@ -82,7 +82,8 @@ import scipy.linalg
 
 from ..errors import ParameterError
 from ..model.materials import MODULI_INDEX
-from .charts import determinant
+from .charts import determinant, inverse
+from .dominant import matrix_sign
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -259,38 +260,6 @@ def boundary_matrix(N, face: str) -> tuple[FloatArray, float]:
 
 
 @numba.njit(cache=True)
-def _inverse(A, out) -> bool:
-    """out = A^-1 by Gauss-Jordan with partial pivoting; False if A is singular."""
-    n = A.shape[0]
-    m = A.copy()
-    for i in range(n):
-        for j in range(n):
-            out[i, j] = 1.0 if i == j else 0.0
-    for c in range(n):
-        piv = c
-        for i in range(c + 1, n):
-            if abs(m[i, c]) > abs(m[piv, c]):
-                piv = i
-        if m[piv, c] == 0.0 or not np.isfinite(m[piv, c]):
-            return False
-        if piv != c:
-            for j in range(n):
-                m[c, j], m[piv, j] = m[piv, j], m[c, j]
-                out[c, j], out[piv, j] = out[piv, j], out[c, j]
-        d = 1.0 / m[c, c]
-        for j in range(n):
-            m[c, j] *= d
-            out[c, j] *= d
-        for i in range(n):
-            if i != c and m[i, c] != 0.0:
-                f = m[i, c]
-                for j in range(n):
-                    m[i, j] -= f * m[c, j]
-                    out[i, j] -= f * out[c, j]
-    return True
-
-
-@numba.njit(cache=True)
 def _decaying_basis(E, w, inner, Z, N, Zi, M) -> bool:
     """M (8, 4) = P[:, 4:], P the projector on the decaying subspace of N = sum_k w[k] E[k]
     (left in N), from sign(N) by Newton's iteration Z <- (Z + Z^-1) / 2 (determinant
@@ -303,33 +272,7 @@ def _decaying_basis(E, w, inner, Z, N, Zi, M) -> bool:
                 acc += w[k] * E[k, a, b]
             Z[a, b] = acc
             N[a, b] = acc
-    ok = False
-    extra = -1
-    for it in range(80):
-        if not _inverse(Z, Zi):
-            break
-        mu = 1.0
-        if it < 4:
-            dz = abs(determinant(Z))
-            if dz > 0.0 and np.isfinite(dz):
-                mu = dz ** (-0.125)
-        step, size = 0.0, 0.0
-        for a in range(8):
-            for b in range(8):
-                new = 0.5 * (mu * Z[a, b] + Zi[a, b] / mu)
-                step = max(step, abs(new - Z[a, b]))
-                size = max(size, abs(new))
-                Z[a, b] = new
-        if not np.isfinite(step):
-            break
-        if extra > 0:
-            extra -= 1
-        elif extra < 0 and it >= 4 and step <= 1e-8 * size:
-            extra = 2
-        if extra == 0:
-            ok = True
-            break
-    if not ok:
+    if not matrix_sign(Z, Zi):
         return False
     sgn = -0.5 if inner else 0.5
     for a in range(8):
@@ -348,7 +291,7 @@ def _gram(M, gram, gi) -> float:
                 acc += M[c, a] * M[c, b]
             gram[a, b] = acc
     g = determinant(gram)
-    if not (g > 1e-200 and _inverse(gram, gi)):
+    if not (g > 1e-200 and inverse(gram, gi)):
         return 0.0
     return g
 

@@ -25,6 +25,13 @@ control; the moduli come from a Chebyshev table (radial_table.py), which crosses
 compiled code as one record (a RadialTable, or a TableStack for a batch), so the kernel
 knows no material.
 
+A short wave's Riccati equation is stiff (its subspace is attracted to the dominant one at
+a rate ~ 2 |(m, k r)|), so for loose tolerances (the signs of a march) the kernel may stop
+integrating the last segment once the carried subspace lies in the dominant subspace of the
+frozen Stroh system, and restart near the outer face from it, keeping the orientation
+(:func:`_forget_plan`, :func:`_forget_check`, dominant.py, docs/derivation-dominant.md).
+Roots are always integrated through the whole wall.
+
 Every member of a batch also says which of the four pairs (U_j, S_j) its mode family keeps
 (``keep``, a bitmask, ALL_PAIRS = 0b1111 for the paper's ansatz; see charts.py and
 incremental/targets.py): the torsional pair at m = 0, the anti-plane pair at k = 0 decouple,
@@ -40,7 +47,8 @@ from typing import NamedTuple
 import numba as nb
 import numpy as np
 
-from .charts import SWITCH, chart_perm, chart_setup, chart_target, determinant, switch_chart
+from .charts import SWITCH, chart_setup, chart_target, determinant, hat_basis, switch_chart
+from .dominant import attraction_rate, dominant_impedance, growing_projector, split_orientation
 from .dop853 import E3, E5, N_STAGES, ORDER, A, B, C
 from .radial_table import RadialTable
 from .stroh import stroh_matrix
@@ -55,6 +63,19 @@ _EXPONENT = -1.0 / ORDER  # step-size exponent of the error estimate
 
 #: every pair (U_j, S_j) kept: the paper's ansatz
 ALL_PAIRS = 0b1111
+
+#: A short wave starts near the outer face from the dominant subspace (dominant.py) only
+#: for loose tolerances (the signs of a march): the roots are always integrated through
+#: the whole wall. FORGET_MARGIN / rtol bounds the remnant of what was skipped.
+FORGET_RTOL, FORGET_MARGIN, FORGET_SAFETY = 1e-9, 10.0, 1.5
+#: the carried subspace may be replaced once it is within REMNANT_MAX of the dominant one
+#: (then sign det A is that of a matrix within 0.1 of I); it is integrated exactly until
+#: then, first over BURN_NATS / rate, then for as long as the remnant says.
+REMNANT_MAX, BURN_NATS, MAX_CHECKS = 0.1, 5.0, 3
+#: ... and only tried for an integration still PLAN_STEPS steps from the outer face after
+#: its first steps (the eigenvalues cost a few steps; a wall crossed in 20 steps gains
+#: nothing)
+PLAN_STEPS = 30.0
 
 #: status codes written by the kernel
 OK, MAX_STEPS, STEP_UNDERFLOW, NO_CHART = 0, 1, 2, 3
@@ -249,14 +270,7 @@ def pressure_target(z, J, orient, zp):
     Equal to :func:`~.charts.chart_target` at zp = 0; bounded (by a power of the norm of
     [[I, 0], [-z_P, I]]) and without poles like it.
     """
-    perm = np.empty(8, np.int64)
-    sign = np.empty(8)
-    chart_perm(J, perm, sign)
-    X = np.zeros((8, 4))
-    for a in range(8):
-        for c in range(4):
-            val = (1.0 if a == c else 0.0) if a < 4 else z[a - 4, c]
-            X[perm[a], c] += sign[a] * val
+    X = hat_basis(z, J)
     B = X[4:] - zp @ X[:4]
     return orient * determinant(B) / np.sqrt(determinant(np.eye(4) + z.T @ z))
 
@@ -271,7 +285,71 @@ def _radii(table, work):
 
 
 @nb.njit(cache=True)
-def integrate_one(m, k, keep, table, rtol, max_steps):
+def _frozen(R, m, k, s, table, seg, work, Q):
+    """Q = w G~ at R: the Stroh matrix with the moduli frozen there, in hat coordinates
+    (chart {}, S scaled by s, all pairs), so that d(eta~)/dR = Q eta~."""
+    p, r, w = _base_at(R, table, seg, work.vals, work.mod)
+    stroh_matrix(work.mod, p, m, k * r, work.G)
+    for a in range(8):
+        for b in range(8):
+            v = w * work.G[a, b]
+            if a < 4 and b >= 4:
+                v *= s
+            elif a >= 4 and b < 4:
+                v /= s
+            Q[a, b] = v
+
+
+@nb.njit(cache=True)
+def _forget_plan(R_a, m, k, s, table, seg, rtol, work):
+    """(R_s, rate): where a short wave's integration of the last segment [R_a, R_b] may
+    restart from the dominant subspace (dominant.py), and the smallest attraction rate
+    seen on [R_a, R_b]; R_s = -1 if that saves nothing (a long wave, a wall attracting
+    slowly or not strongly elliptic). Past R_s, FORGET_SAFETY FORGET_MARGIN^-1 rtol of
+    any error in the start is left at R_b."""
+    R_b = table.bounds[seg + 1]
+    nats = np.log(FORGET_MARGIN / rtol)
+    Q = np.empty((8, 8))
+    _frozen(R_b, m, k, s, table, seg, work, Q)
+    rate = attraction_rate(Q)
+    if not rate > 0.0 or R_b - R_a < 3.0 * FORGET_SAFETY * nats / rate:
+        return -1.0, 0.0
+    for R in (R_a, 0.5 * (R_a + R_b)):
+        _frozen(R, m, k, s, table, seg, work, Q)
+        rate = min(rate, attraction_rate(Q))
+    R_s = R_b - FORGET_SAFETY * nats / max(rate, 1e-300)
+    if not R_s > R_a + 2.0 * BURN_NATS / max(rate, 1e-300):
+        return -1.0, 0.0
+    return R_s, rate
+
+
+@nb.njit(cache=True)
+def _forget_check(R, z, J, R_s, m, k, s, table, seg, work):
+    """At R, is the carried subspace z~ (chart J) inside the dominant one W+ up to
+    REMNANT_MAX? Returns (remnant, sign of det A, z+(R_s)) (dominant.py): the carried
+    subspace is X = X+ + X-, X+ = [I; z+] A, and remnant = ||X- A^-1||; inf if the
+    split or z+(R_s) cannot be formed."""
+    Q = np.empty((8, 8))
+    P = np.empty((8, 8))
+    Zi = np.empty((8, 8))
+    zs = np.empty((4, 4))
+    _frozen(R, m, k, s, table, seg, work, Q)
+    if not growing_projector(Q, P, Zi):
+        return np.inf, 0.0, zs
+    sign_a, remnant = split_orientation(P, hat_basis(z, J), s)
+    if not remnant <= REMNANT_MAX:
+        return remnant, sign_a, zs
+    _frozen(R_s, m, k, s, table, seg, work, Q)
+    if not (growing_projector(Q, P, Zi) and dominant_impedance(P, zs)):
+        return np.inf, 0.0, zs
+    for i in range(4):  # symmetric up to rounding (W+ is Lagrangian)
+        for j in range(i + 1, 4):
+            zs[i, j] = zs[j, i] = 0.5 * (zs[i, j] + zs[j, i])
+    return remnant, sign_a, zs
+
+
+@nb.njit(cache=True)
+def integrate_one(m, k, keep, table, rtol, max_steps, forget=True):
     """Integrate mode (m, k) through the wall of ``table`` (a RadialTable).
 
     ``keep`` (bit j set: pair (U_j, S_j) kept; ALL_PAIRS for the paper's ansatz) selects
@@ -303,10 +381,33 @@ def integrate_one(m, k, keep, table, rtol, max_steps):
     znew = np.empty((4, 4))
     h = (RN - R0) / (4.0 + s)
     steps = 0
+    plan = forget and keep == ALL_PAIRS and rtol >= FORGET_RTOL
+    R_s, rate, check, checks = -1.0, 0.0, np.inf, 0
     for seg in range(L):
         R, end = table.bounds[seg], table.bounds[seg + 1]
         _rhs(R, z, m, k, table, seg, work, K[0])
         while R < end:
+            if plan and seg == L - 1 and steps >= 3 and end - R > PLAN_STEPS * h:
+                plan = False  # a long integration ahead: is this a stiff short wave?
+                R_s, rate = _forget_plan(R, m, k, s, table, seg, rtol, work)
+                if R_s > 0.0:
+                    check = R + BURN_NATS / rate
+            if R >= check and checks < MAX_CHECKS:  # forget the inner face? (dominant.py)
+                checks += 1
+                remnant, sign_a, zs = _forget_check(R, z, J, R_s, m, k, s, table, seg, work)
+                check = R + np.log(max(remnant, 1.0) / (0.1 * REMNANT_MAX)) / rate
+                if remnant <= REMNANT_MAX and sign_a != 0.0:
+                    R, z, J, orient, check = R_s, zs, 0, orient * sign_a, np.inf
+                    if np.max(np.abs(z)) > SWITCH:
+                        zn, J, sgn = switch_chart(z, 0)
+                        if J < 0:
+                            return np.nan, z, 0, NO_CHART, steps
+                        z, orient = zn, orient * sgn
+                    chart_setup(J, s, keep, work.perm, work.mult)
+                    _rhs(R, z, m, k, table, seg, work, K[0])
+                    h = min(h, end - R)
+                if not (np.isfinite(check) and check < R_s):
+                    check = np.inf
             if steps >= max_steps:
                 return np.nan, z, J, MAX_STEPS, steps
             if h < 1e-14 * (RN - R0):
