@@ -285,3 +285,44 @@ def test_cli_help_names_every_option():
     ):
         assert option in text
     assert "two_Riccati" in text
+
+
+def test_cells_draw_what_plot_surface_draws():
+    """The pattern's faces built with arrays (figures/plots.py ``_cells``) render the same
+    pixels as matplotlib's own plot_surface(facecolors=..., rstride=1, cstride=1)."""
+    import matplotlib as mpl
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    from electrogrowth.figures.plots import _cells
+
+    p = TubeParameters(outer_radius=1.4, length=1.0, growth=1.2, voltage=0.4)
+    surf = wall_surface(mode_shape((p, 3, 1)), n_theta=24, n_z=7)
+    rgb = mpl.colormaps["RdBu_r"](np.linspace(0, 1, surf.x.size).reshape(surf.x.shape))
+
+    def pixels(draw):
+        fig = Figure(figsize=(3, 3), dpi=80)
+        ax = fig.add_axes((0, 0, 1, 1), projection="3d")
+        draw(ax)
+        ax.set(xlim=(-1.6, 1.6), ylim=(-1.6, 1.6), zlim=(surf.z.min(), surf.z.max()))
+        ax.set_axis_off()
+        canvas = FigureCanvasAgg(fig)
+        canvas.draw()
+        return np.asarray(canvas.buffer_rgba(), dtype=float)
+
+    ours = pixels(lambda ax: ax.add_collection3d(_cells(surf, rgb)))
+    theirs = pixels(
+        lambda ax: ax.plot_surface(
+            surf.x,
+            surf.y,
+            surf.z,
+            facecolors=rgb,
+            rstride=1,
+            cstride=1,
+            linewidth=0,
+            antialiased=False,
+            shade=False,
+        )
+    )
+    assert (ours != 255).any()  # something was drawn
+    np.testing.assert_array_equal(ours, theirs)
