@@ -1,14 +1,26 @@
 """Mode scans: the batched march finds the same first mode as one-by-one solves."""
 
+import functools
 import math
 
+import numpy as np
 import pytest
 
 from electrogrowth import ParameterError, TubeParameters
 from electrogrowth.bifurcation.critical import critical_value
-from electrogrowth.bifurcation.scan import ScanOptions, mode_grid, scan_modes
+from electrogrowth.bifurcation.march import unloaded_signs
+from electrogrowth.bifurcation.scan import (
+    ScanOptions,
+    mode_grid,
+    scan_grid,
+    scan_modes,
+    stable_signs,
+)
 from electrogrowth.bifurcation.surface import short_wave_limit
 from electrogrowth.errors import NoBifurcationFound
+from electrogrowth.incremental.targets import impedance_targets
+from electrogrowth.model.layers import Layer, Tube
+from electrogrowth.model.materials import gent, mooney_rivlin
 
 P = TubeParameters(1.4, 1.0, stretch=1.0, voltage=0.4)
 
@@ -145,3 +157,31 @@ def test_no_short_wave_check_where_a_finite_mode_comes_first():
     assert res.short_wave_limit is None and not res.surface_instability
     limit = short_wave_limit(TubeParameters(1.4, 1.0, voltage=0.4), "growth")
     assert limit.value > res.critical.value
+
+
+@pytest.mark.parametrize(
+    "tube",
+    [
+        TubeParameters(1.02, 0.2),
+        TubeParameters(5.0, 10.0, material=gent(10.0)),
+        TubeParameters(1.1, 1.0, material=mooney_rivlin(0.3)),
+        Tube((Layer(1.1, shear_modulus=10.0), Layer(2.0)), length=1.0),
+        Tube(
+            (
+                Layer(1.3, shear_modulus=0.1, permittivity=5.0),
+                Layer(1.4, material=mooney_rivlin(0.3), shear_modulus=30.0),
+                Layer(3.0, material=gent(10.0)),
+            ),
+            length=0.5,
+        ),
+    ],
+    ids=["thin-short", "thick-slender-gent", "mooney-rivlin", "bilayer", "trilayer"],
+)
+def test_stable_signs_are_those_of_every_unloaded_tube(tube):
+    """The scans read the stable signs once, on the paper's tube: they equal the signs of
+    the targets on this tube's own unloaded reference, mode by mode (docs/derivation.md 3)."""
+    ranges, probes, families = ((0, 12), (1, 30)), True, (True, True)
+    grid = scan_grid(*ranges, probes, families)
+    own = unloaded_signs(tube, grid, functools.partial(impedance_targets, rtol=1e-8))
+    assert np.all(own != 0)
+    np.testing.assert_array_equal(stable_signs(*ranges, probes, families), own)

@@ -47,7 +47,7 @@ import numpy as np
 
 from ..basestate.tube import solve_base_state
 from ..errors import ElectrogrowthError, ParameterError
-from ..incremental.accuracy import SCAN_SIGNS, SCAN_STABLE_SIGNS
+from ..incremental.accuracy import SCAN_SIGNS
 from ..incremental.targets import impedance_targets
 from ..labelled import curve_dataset
 from ..model.layers import Tube
@@ -56,8 +56,7 @@ from ..outcomes import NO_MODE, Kind, Status
 from ..summary import curve_html
 from .critical import critical_value
 from .directions import past_surface
-from .march import unloaded_signs
-from .scan import ScanOptions, scan_grid, scan_modes
+from .scan import ScanOptions, scan_grid, scan_modes, stable_signs
 from .surface import short_wave_limit
 
 #: The parameters a curve can run along (fields of TubeParameters).
@@ -416,7 +415,6 @@ class _Follower:
         self.scan = None  # the last full scan (CurvePoint) and its ScanResult ranges
         self.ranges = None
         self.since = 0
-        self.signs = None  # (key, stable signs of the scan's grid)
         self.history: dict[tuple[int, int], list[tuple[float, float]]] = {}
 
     def point(self, x: float, end: bool) -> CurvePoint:
@@ -496,17 +494,15 @@ class _Follower:
         side (the sign on the unloaded tube, as in a scan's march; loose targets) just
         before ``value``."""
         o = self.options
-        grid = scan_grid(*self.ranges, o.extend, (o.prismatic, o.torsional))
-        key = (at.material, at.outer_radius, at.length, self.ranges)
-        if self.signs is None or self.signs[0] != key:
-            ref = functools.partial(impedance_targets, rtol=SCAN_STABLE_SIGNS)
-            self.signs = key, unloaded_signs(at, grid, ref)
+        families = (o.prismatic, o.torsional)
+        grid = scan_grid(*self.ranges, o.extend, families)
+        signs = stable_signs(*self.ranges, o.extend, families)
         other = np.ones(len(grid), bool)
         if best is not None:
             other = ~((grid[:, 0] == best[0]) & (grid[:, 1] == best[1]))
         before = value - self.sense * 1e-9 * max(1.0, abs(value))
         state = solve_base_state(at.at(self.solve_for, before))
-        signs = self.signs[1][other] * impedance_targets(state, grid[other], rtol=SCAN_SIGNS)
+        signs = signs[other] * impedance_targets(state, grid[other], rtol=SCAN_SIGNS)
         return bool(np.all(signs > 0))
 
 

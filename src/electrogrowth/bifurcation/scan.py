@@ -359,7 +359,7 @@ def _scan_once(
         loose,
         top=top,
         brent_targets=fine,
-        stable_signs=_stable_signs(params.reference(), m_range, n_range, probes, families),
+        stable_signs=stable_signs(m_range, n_range, probes, families),
     )
     found = res.found
     if not found:  # the march stops at the threshold, so found modes come before it
@@ -389,10 +389,19 @@ def _scan_once(
     return ScanResult(crit, tuple(found[1:top]), m_range, n_range)
 
 
+#: The tube on which the stable signs of a mode grid are read: they are the same on every
+#: unloaded tube (docs/derivation.md section 3), so one evaluation serves every scan.
+SIGN_TUBE = TubeParameters(outer_radius=1.4, length=1.0)
+
+
 @functools.lru_cache(maxsize=64)
-def _stable_signs(reference, m_range, n_range, probes, families) -> np.ndarray:
-    """Signs on the unloaded tube ``reference`` (TubeParameters or Tube ``.reference()``),
-    shared by every scan of a curve or sweep."""
+def stable_signs(m_range, n_range, probes, families) -> np.ndarray:
+    """Signs of the kernel targets of :func:`scan_grid` on the unloaded tube, shared by
+    every scan, curve and sweep of any tube (one layer or layered, any energy, radius and
+    length): the unloaded incremental problem of a stress-free tube is strongly elliptic
+    with no non-trivial solution, so no target vanishes along a path of unloaded tubes
+    joining two of them and none changes sign (tests/test_scan.py checks it across radii,
+    lengths, energies and layered tubes)."""
     modes = scan_grid(m_range, n_range, probes, families)
     targets = functools.partial(impedance_targets, rtol=SCAN_STABLE_SIGNS)
-    return unloaded_signs(reference, modes, targets)
+    return unloaded_signs(SIGN_TUBE, modes, targets)
