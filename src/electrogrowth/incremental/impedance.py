@@ -305,8 +305,8 @@ def _forget_plan(R_a, m, k, s, table, seg, rtol, work):
     """(R_s, rate): where a short wave's integration of the last segment [R_a, R_b] may
     restart from the dominant subspace (dominant.py), and the smallest attraction rate
     seen on [R_a, R_b]; R_s = -1 if that saves nothing (a long wave, a wall attracting
-    slowly or not strongly elliptic). Past R_s, FORGET_SAFETY FORGET_MARGIN^-1 rtol of
-    any error in the start is left at R_b."""
+    slowly or not strongly elliptic). Between R_s and R_b any error of the restart decays
+    by (FORGET_MARGIN / rtol)^FORGET_SAFETY at the smallest rate."""
     R_b = table.bounds[seg + 1]
     nats = np.log(FORGET_MARGIN / rtol)
     Q = np.empty((8, 8))
@@ -358,6 +358,9 @@ def integrate_one(m, k, keep, table, rtol, max_steps, forget=True):
     traction, Phi and r Delta_r are continuous, so eta is) and ends with the outer face
     condition. Adaptive steps with the local error of every entry of z~ below
     rtol (1 + |z~|), and a change of chart whenever an entry of z~ exceeds SWITCH.
+    With ``forget`` (default) and rtol >= FORGET_RTOL, a stiff short wave restarts the
+    outer segment near the outer face from the dominant subspace once the carried one
+    lies in it (:func:`_forget_plan`, :func:`_forget_check`); False integrates every wall.
     Returns (f, z~, J, status, steps): the target of the kept block, the impedance in
     chart J at R_N, the chart, a status code (OK, MAX_STEPS, STEP_UNDERFLOW, NO_CHART;
     f is NaN unless OK) and the steps tried.
