@@ -143,15 +143,16 @@ def converged(params, solve_for, side, res):
         return short_wave_limit(params, solve_for, side=side, rtol=1e-13).value
     if c.kind != "bifurcation":
         return c.value
+    return resolve(params, c, solve_for, side, 1e-7, rtol=1e-13)
+
+
+def resolve(params, c, solve_for, side, width, **kw) -> float:
+    """The critical value of the scan's critical mode again, bracketed within a relative
+    ``width`` of it (``kw``: rtol, method)."""
+    w = width * abs(c.value)
+    bracket = (c.value - w, c.value + w)
     return critical_value(
-        params,
-        c.m,
-        c.n,
-        solve_for,
-        family=c.family,
-        side=side,
-        rtol=1e-13,
-        bracket=(c.value * (1 - 1e-7), c.value * (1 + 1e-7)),
+        params, c.m, c.n, solve_for, family=c.family, side=side, bracket=bracket, **kw
     ).value
 
 
@@ -191,18 +192,8 @@ def bench_case(name, params, solve_for, side, options, repeat, peer_accuracy):
     t_peer = (t_counted - count.seconds) + count.loose * t24 + count.fine * t40
     err_peer = None
     if peer_accuracy and c.kind == "bifurcation":
-        w = 1e-6 * abs(c.value)
-        col = critical_value(
-            params,
-            c.m,
-            c.n,
-            solve_for,
-            family=c.family,
-            side=side,
-            method="collocation",
-            bracket=(c.value - w, c.value + w),
-        )
-        err_peer = abs(col.value - ref) / abs(ref)
+        col = resolve(params, c, solve_for, side, 1e-6, method="collocation")
+        err_peer = abs(col - ref) / abs(ref)
     # baseline: the critical mode (or (0, 1) at a surface optimum); a low mode is among
     # the cheapest for SciPy, so the extrapolation favours the baseline
     modes = [(c.m, c.n) if c.kind == "bifurcation" and c.n > 0 else (0, 1)]
