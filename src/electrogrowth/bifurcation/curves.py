@@ -19,7 +19,10 @@ The located switch is checked by a scan there; if a third mode comes first, the 
 split at it and both halves are located again. If a single-mode solve fails (e.g. the
 kernel cannot integrate a high mode next to the threshold), the switch is bisected with
 scans instead, to a relative 1e-7 only. A point whose scan fails (e.g. the tube is
-already unstable at the start of the march) is kept as kind "failed" with its message.
+already unstable at the start of the march) is kept as kind "failed" with its message (kind
+"error": an unexpected exception, a bug). An interrupt (Ctrl-C, SIGTERM) is never a failed
+point: it ends the curve with :class:`~electrogrowth.interrupts.Interrupted`, whose
+``partial`` holds the grid points computed before it.
 
 By continuation (``follow``, the default with the builtin ``map``), the grid points between
 full scans are not scanned: the last scan's critical mode and runners-up are followed
@@ -49,10 +52,11 @@ from ..basestate.tube import solve_base_state
 from ..errors import ElectrogrowthError, ParameterError
 from ..incremental.accuracy import SCAN_SIGNS
 from ..incremental.targets import impedance_targets
+from ..interrupts import Interrupted, interrupt_of, reraise_interrupt
 from ..labelled import curve_dataset
 from ..model.layers import Tube
 from ..model.params import CONTROLS, TubeParameters, check_side
-from ..outcomes import NO_MODE, Kind, Status
+from ..outcomes import BUG_REMEDY, NO_MODE, Kind, Status, status_of
 from ..summary import curve_html
 from .critical import critical_value
 from .directions import past_surface
@@ -105,12 +109,20 @@ def curve_point(
     side: str | None = None,
     options: ScanOptions = ScanOptions(),
 ) -> CurvePoint:
-    """Scan the modes at ``along`` = x; a failure becomes kind "failed" (never raises)."""
+    """Scan the modes at ``along`` = x; a failure becomes kind "failed" (an electrogrowth
+    error) or "error" (any other exception: a bug). Raises only an interrupt (Ctrl-C,
+    SIGTERM), also where it comes wrapped by the compiled kernel."""
     try:
         res = scan_modes(params.at(along, x), solve_for, side=side, options=options)
     except Exception as exc:  # noqa: BLE001 -- failures are data in a sweep
-        return CurvePoint(float(x), math.nan, NO_MODE, Status.FAILED, _message(exc))
+        reraise_interrupt(exc)
+        return CurvePoint(float(x), math.nan, NO_MODE, status_of(exc), _message(exc))
     return _scan_point(x, res)
+
+
+def _failed(kind) -> bool:
+    """A row without a value: a failed point, or one that hit a bug."""
+    return kind in (Status.FAILED, Status.ERROR)
 
 
 def _progress_bar(total: int, desc: str):
@@ -121,9 +133,11 @@ def _progress_bar(total: int, desc: str):
 
 
 def _message(exc: Exception) -> str:
-    """One line; an unexpected (non-electrogrowth) error is named by its type."""
+    """One line; an unexpected (non-electrogrowth) error is named by its type, as a bug."""
     text = " ".join(str(exc).split())
-    return text if isinstance(exc, ElectrogrowthError) else f"{type(exc).__name__}: {text}"
+    if isinstance(exc, ElectrogrowthError):
+        return text
+    return f"internal error: {type(exc).__name__}: {text} ({BUG_REMEDY})"
 
 
 @dataclasses.dataclass(frozen=True)
@@ -159,7 +173,7 @@ class Curve:
         out, start = [], None
         for i in range(len(self.x) + 1):
             end = i == len(self.x)
-            ok = not end and self.kind[i] != Status.FAILED
+            ok = not end and not _failed(self.kind[i])
             if start is not None and (
                 not ok or (self.m[i], self.n[i]) != (self.m[start], self.n[start])
             ):
@@ -363,22 +377,41 @@ def critical_curve(
         computed = mapper(unit, xs)
     points = []
     bar = _progress_bar(xs.size, f"{solve_for} along {along}") if progress is True else None
-    for pt in computed:
-        points.append(pt)
+    try:
+        for pt in computed:
+            points.append(pt)
+            if bar is not None:
+                bar.update(1)
+            elif callable(progress):
+                progress(1)
+        rows, switches = _located(points, _Locator(params, solve_for, along, side, unit))
+    except (KeyboardInterrupt, Exception) as exc:  # an interrupt, maybe wrapped by the kernel:
+        stop = interrupt_of(exc)  # hand back the finished grid points, switches not located
+        if stop is None:
+            raise
+        partial = _curve(along, solve_for, side, params, [_row(p) for p in points], [])
+        raise Interrupted(stop.signum, str(stop), partial=partial) from None
+    finally:
         if bar is not None:
-            bar.update(1)
-        elif callable(progress):
-            progress(1)
-    if bar is not None:
-        bar.close()
-    loc = _Locator(params, solve_for, along, side, unit)
+            bar.close()
+    return _curve(along, solve_for, side, params, rows, switches)
+
+
+def _located(points: list[CurvePoint], loc: _Locator):
+    """The rows of the grid points with the located switches between them, and the
+    switches."""
     rows, switches = [], []
     for i, pt in enumerate(points):
         prev = points[i - 1] if i else None
-        if prev is not None and Status.FAILED not in (prev.kind, pt.kind) and prev.mode != pt.mode:
+        if (
+            prev is not None
+            and not (_failed(prev.kind) or _failed(pt.kind))
+            and prev.mode != pt.mode
+        ):
             try:
                 new_rows, new_switches = loc.between(prev, pt, MAX_SPLITS)
             except Exception as exc:  # noqa: BLE001 -- keep the grid points
+                reraise_interrupt(exc)
                 new_rows, new_switches = [], []
                 pt = dataclasses.replace(
                     pt, status=f"switch from {prev.mode} not located: {_message(exc)}"
@@ -386,17 +419,22 @@ def critical_curve(
             rows += new_rows
             switches += new_switches
         rows.append(_row(pt))
-    x, v, modes, kinds, status, surface, limit = zip(*rows)
+    return rows, switches
+
+
+def _curve(along, solve_for, side, params, rows, switches) -> Curve:
+    """The Curve of table rows (as :func:`_row`) and switches."""
+    x, v, modes, kinds, status, surface, limit = zip(*rows) if rows else [()] * 7
     modes = np.array(modes, dtype=int).reshape(-1, 2)
     return Curve(
         along,
         solve_for,
         side,
-        np.array(x),
-        np.array(v),
+        np.array(x, dtype=float),
+        np.array(v, dtype=float),
         modes[:, 0],
         modes[:, 1],
-        np.array(kinds),
+        np.array(kinds) if kinds else np.array([], dtype=str),
         tuple(status),
         tuple(switches),
         params,
@@ -435,7 +473,8 @@ class _Follower:
         at = self.params.at(self.along, x)
         try:
             res = scan_modes(at, self.solve_for, side=self.side, options=self.options)
-        except Exception:  # noqa: BLE001 -- the unit keeps the failure as data
+        except Exception as exc:  # noqa: BLE001 -- the unit keeps the failure as data
+            reraise_interrupt(exc)
             self.scan = None
             return self.unit(x)
         pt = _scan_point(x, res)
@@ -588,7 +627,7 @@ class _Locator:
             check = self.unit(x)
             first = min(v_before, v_after, key=lambda v: self.sense * v)
             if (
-                check.kind != Status.FAILED
+                not _failed(check.kind)
                 and check.mode not in (a.mode, b.mode)
                 and self.sense * (check.value - first) < -1e-9 * max(1.0, abs(first))
             ):
@@ -601,7 +640,7 @@ class _Locator:
 
     def _split(self, a, mid, b, depth):
         """Locate the switches on both sides of a scanned point ``mid`` (kept as a row)."""
-        if depth <= 0 or mid.kind == Status.FAILED:
+        if depth <= 0 or _failed(mid.kind):
             return [], []
         rows, switches = [], []
         if mid.mode != a.mode:
@@ -637,7 +676,7 @@ class _Locator:
         lo, hi = a, b
         while abs(hi.x - lo.x) > 1e-7 * max(1.0, abs(lo.x)):
             mid = self.unit(0.5 * (lo.x + hi.x))
-            if mid.kind == Status.FAILED or mid.mode not in (a.mode, b.mode):
+            if _failed(mid.kind) or mid.mode not in (a.mode, b.mode):
                 return mid
             lo, hi = (mid, hi) if mid.mode == a.mode else (lo, mid)
         return 0.5 * (lo.x + hi.x), lo.value, hi.value

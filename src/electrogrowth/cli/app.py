@@ -3,7 +3,9 @@
 Each subcommand is a pair of functions in :data:`COMMANDS`: ``configure(parser)`` adds its
 options, ``run(args) -> int`` does the work. :func:`main` parses, dispatches and turns every
 failure into one line ``electrogrowth: error: <message>`` on stderr with exit status 2
-(1 for an unexpected internal error); no traceback reaches the user. To add a subcommand,
+(1 for an unexpected internal error); no traceback reaches the user. Ctrl-C and SIGTERM
+stop any command with one line (``electrogrowth: interrupted; ...``, saying what was kept)
+and exit status 130 / 143 (interrupts.py). To add a subcommand,
 write the two functions (a module of this package) and add an entry to :data:`COMMANDS`;
 figures are registered in ``electrogrowth.figures.FIGURES``.
 """
@@ -11,6 +13,7 @@ figures are registered in ``electrogrowth.figures.FIGURES``.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import importlib
 import os
 import re
@@ -19,6 +22,7 @@ from collections.abc import Callable
 from importlib.metadata import version
 
 from ..errors import ElectrogrowthError, UsageError
+from ..interrupts import Interrupted, interrupt_of, signals_as_interrupts
 from .units import resolve_units
 
 
@@ -129,7 +133,17 @@ def _command_of(argv: list[str] | None) -> str:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Run the command line; return the exit status (0 ok, 2 bad input, 1 internal error)."""
+    """Run the command line; return the exit status (0 ok, 2 bad input, 1 internal error,
+    130 / 143 interrupted by SIGINT (Ctrl-C) / SIGTERM)."""
+    try:
+        with signals_as_interrupts():
+            return _dispatch(argv)
+    except KeyboardInterrupt as exc:  # also while the handlers are put back
+        return _interrupted(interrupt_of(exc))
+
+
+def _dispatch(argv: list[str] | None) -> int:
+    """Parse and run; every failure becomes one line on stderr (no traceback)."""
     try:
         try:
             args = build_parser(_command_of(argv)).parse_args(argv)
@@ -145,9 +159,21 @@ def main(argv: list[str] | None = None) -> int:
     except BrokenPipeError:  # the reader went away (e.g. `| head`): end quietly
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # no flush error
         return 0
+    except KeyboardInterrupt as exc:
+        return _interrupted(interrupt_of(exc))
     except Exception as exc:  # a bug: still one line, never a traceback
+        stop = interrupt_of(exc)  # a signal inside a compiled kernel: a wrapped interrupt
+        if stop is not None:
+            return _interrupted(stop)
         print(
             f"{PROG}: internal error: {type(exc).__name__}: {' '.join(str(exc).split())}",
             file=sys.stderr,
         )
         return 1
+
+
+def _interrupted(stop: Interrupted) -> int:
+    """One line (what was kept, if the command said so) and 128 + the signal's number."""
+    with contextlib.suppress(Exception, KeyboardInterrupt):  # a second Ctrl-C: still quiet
+        print(f"{PROG}: {' '.join(str(stop).split())}", file=sys.stderr, flush=True)
+    return stop.exit_status

@@ -17,6 +17,7 @@ import numpy as np
 from ..bifurcation.curves import ALONG, check_curve, critical_curve
 from ..errors import ParameterError
 from ..figures.plots import plot_curve
+from ..interrupts import Interrupted
 from ..model.layers import KEYS_TEXT, Tube
 from ..model.params import TubeParameters
 from ..outcomes import Status
@@ -140,6 +141,7 @@ def run_curve(args) -> int:
             file=sys.stderr,
             desc=f"{solve_for} along {args.along}",
         )
+    stem = f"curve_{solve_for}_vs_{args.along}".replace("[", "").replace("]", "")
     try:
         curve = critical_curve(
             params,
@@ -150,11 +152,13 @@ def run_curve(args) -> int:
             options=options,
             progress=bar.update if bar is not None else None,
         )
+    except Interrupted as stop:  # keep the finished points
+        raise _kept(stop, args.out / f"{stem}.partial.csv", args.points) from None
     finally:
         if bar is not None:
             bar.close()
-    stem = f"curve_{solve_for}_vs_{args.along}".replace("[", "").replace("]", "")
     csv = curve.to_csv(args.out / f"{stem}.csv")
+    (args.out / f"{stem}.partial.csv").unlink(missing_ok=True)  # of an interrupted run
     png = args.out / f"{stem}.png"
     ax = plot_curve(curve)
     ax.set_title(_fixed_text(curve), fontsize=8)
@@ -164,6 +168,19 @@ def run_curve(args) -> int:
         return 0
     print("\n".join(summary(curve) + [str(csv), str(png)]))
     return 0
+
+
+def _kept(stop: Interrupted, path: Path, total: int) -> Interrupted:
+    """The interrupt, saying where the points finished before it were written (a CSV named
+    .partial.csv: the grid points only, no switch located)."""
+    done = stop.partial
+    if done is None or not len(done.x):
+        return Interrupted(stop.signum, f"{stop}; no point was finished")
+    done.to_csv(path)
+    return Interrupted(
+        stop.signum,
+        f"{stop}; {len(done.x)} of {total} points written to {path} (switches not located)",
+    )
 
 
 def _fixed_text(curve) -> str:
@@ -211,7 +228,7 @@ def summary(curve) -> list[str]:
             f"  switch at {curve.along} = {s.x:.12g}, {curve.solve_for}_cr {value}:"
             f" {_mode(s.mode_before)} -> {_mode(s.mode_after)}"
         )
-    failed = [i for i, k in enumerate(curve.kind) if k == Status.FAILED]
+    failed = [i for i, k in enumerate(curve.kind) if k in (Status.FAILED, Status.ERROR)]
     for i in failed:
         lines.append(f"  failed at {curve.along} = {curve.x[i]:.10g}: {curve.status[i]}")
     return lines

@@ -5,12 +5,12 @@ when one of them runs, so the other commands work without them."""
 from __future__ import annotations
 
 import argparse
-import signal
 import sys
 from pathlib import Path
 
 from ..errors import ElectrogrowthError, UsageError
 from ..figures.phase_diagram import phase_diagram
+from ..interrupts import Interrupted, interrupt_of
 from ..sweep.file import load_config
 from ..sweep.run import compute_sweep
 
@@ -88,13 +88,13 @@ def run_sweep(args) -> int:
             progress=not args.quiet,
             source_text=args.file.read_text(encoding="utf-8"),
         )
-    except KeyboardInterrupt as stop:
-        print(
-            f"electrogrowth: {stop or 'interrupted'}; the finished chunks are saved in {out}:"
-            " run the same command again to resume",
-            file=sys.stderr,
-        )
-        return 128 + getattr(stop, "signum", signal.SIGINT)
+    except KeyboardInterrupt as exc:  # main prints the one line and exits 130 / 143
+        stop = interrupt_of(exc)
+        raise Interrupted(
+            stop.signum,
+            f"{stop}; the finished chunks are saved in {out}: run the same command again"
+            " to resume",
+        ) from None
     print(summary.text())
     failed = summary.counts.get("failed", 0) + summary.counts.get("error", 0)
     if failed and failed == sum(v for k, v in summary.counts.items() if k != "pending"):

@@ -22,6 +22,7 @@ import uuid
 from pathlib import Path
 
 from ..errors import SweepError
+from ..interrupts import signals_as_interrupts
 from ..outcomes import Status
 from .unit import ChunkResult, ChunkTask, compute_chunk
 
@@ -93,7 +94,7 @@ def compute_sweep(
 
     start = time.perf_counter()
     store = open_store(out, config, source_text=source_text)
-    with store.locked(), _terminate_as_interrupt():
+    with store.locked(), signals_as_interrupts():  # SIGTERM too stops the workers
         pending = store.pending_chunks()
         chunks = len(store.blocks)
         run = store.next_run()
@@ -139,33 +140,6 @@ def compute_sweep(
         counts,
         time.perf_counter() - start,
     )
-
-
-class Terminated(KeyboardInterrupt):
-    """SIGTERM (a batch scheduler's time limit) received: handled like Ctrl-C, so the
-    workers are stopped and the finished chunks stay saved."""
-
-    def __init__(self, signum: int):
-        super().__init__(f"terminated by signal {signum}")
-        self.signum = signum
-
-
-@contextlib.contextmanager
-def _terminate_as_interrupt():
-    """While a sweep runs in the main thread, SIGTERM raises Terminated (the default action
-    would end this process at once and leave the workers running)."""
-    if threading.current_thread() is not threading.main_thread():
-        yield
-        return
-
-    def interrupt(signum, frame):
-        raise Terminated(signum)
-
-    previous = signal.signal(signal.SIGTERM, interrupt)
-    try:
-        yield
-    finally:
-        signal.signal(signal.SIGTERM, previous)
 
 
 def _exit_with_parent(parent: int) -> None:
