@@ -67,6 +67,7 @@ from .surface import short_wave_limit
 ALONG = ("stretch", "voltage", "outer_radius", "length", "growth")
 MAX_SPLITS = 6  # depth of the re-location when a third mode intervenes
 CHECK_EVERY = 8  # when following modes, a full scan at least every this many points
+MAX_POINTS = 10_000  # grid points of a curve (each a mode scan, ~1 s): hours at most
 
 
 class Switch(NamedTuple):
@@ -362,8 +363,10 @@ def critical_curve(
             f"side = {side!r} applies to the stretch, pressure or force only, not {solve_for}"
         )
     xs = np.asarray(list(values), dtype=float)
-    if xs.ndim != 1 or xs.size == 0:
-        raise ParameterError("values must be a non-empty sequence of numbers")
+    if xs.ndim != 1 or not 1 <= xs.size <= MAX_POINTS:
+        raise ParameterError(
+            f"values must be a sequence of 1 to {MAX_POINTS} numbers, got {xs.size}"
+        )
     steps = np.diff(xs)
     if xs.size > 1 and not ((steps > 0).all() or (steps < 0).all()):
         raise ParameterError(f"values of {along} must be strictly monotone, got {xs.tolist()}")

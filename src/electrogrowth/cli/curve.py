@@ -14,7 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..bifurcation.curves import ALONG, check_curve, critical_curve
+from ..bifurcation.curves import ALONG, MAX_POINTS, check_curve, critical_curve
 from ..errors import ParameterError
 from ..figures.plots import plot_curve
 from ..interrupts import Interrupted
@@ -124,8 +124,11 @@ def run_curve(args) -> int:
             )
         check_curve(solve_for, args.along)
         params = curve_params(args)
-    if args.points < 2:
-        raise ParameterError(f"--points = {args.points} is too small; need >= 2")
+    if not 2 <= args.points <= MAX_POINTS:
+        raise ParameterError(
+            f"--points = {args.points} is out of range; need 2 to {MAX_POINTS} (a curve"
+            " point is a mode scan, ~1 s)"
+        )
     options = scan_options_from_args(args)
     check_side_option(args)
     if args.start == args.stop:

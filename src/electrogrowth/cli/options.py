@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import math
 
-from ..bifurcation.scan import M_CAP, N_CAP, ScanOptions
+from ..bifurcation.scan import M_CAP, N_CAP, TOP_MAX, ScanOptions
 from ..errors import ParameterError
 from ..incremental.targets import FAMILIES, METHODS, Family, check_mode
 from ..model.controls import TUBE_CONTROLS
@@ -266,7 +266,7 @@ def add_mode_range_options(group, *, top: bool = False) -> None:
     if top:
         group.add_argument(
             "--top",
-            type=bounded_int(1, 1000),
+            type=bounded_int(1, TOP_MAX),
             default=default.top,
             help=f"number of modes to report in a scan (default {default.top})",
         )

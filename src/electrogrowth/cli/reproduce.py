@@ -11,10 +11,11 @@ import time
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
-from ..errors import ParameterError, UsageError
+from ..errors import ParameterError
 from ..figures import FIGURES, GALLERY
 from ..figures.plots import render_pattern
 from ..shapes.mode_shape import mode_shape
+from ..sweep.run import check_workers
 
 #: The paper's captions (quoted; Figure 7's caption in the paper repeats Figure 5's topic,
 #: while the text describes critical stretches: we show what the text describes).
@@ -161,8 +162,7 @@ def run_gallery(args) -> int:
         raise ParameterError(
             f"gallery example {unknown[0]!r} is unknown; choose from {', '.join(GALLERY)}"
         )
-    if args.workers < 1:
-        raise UsageError(f"--workers {args.workers}: need at least 1")
+    check_workers(args.workers)
     out = args.out
     out.mkdir(parents=True, exist_ok=True)
     sections = []

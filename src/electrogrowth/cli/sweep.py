@@ -12,7 +12,7 @@ from ..errors import ElectrogrowthError, UsageError
 from ..figures.phase_diagram import phase_diagram
 from ..interrupts import Interrupted, interrupt_of
 from ..sweep.file import load_config
-from ..sweep.run import compute_sweep
+from ..sweep.run import check_workers, compute_sweep
 
 EXTRA = "pip install 'electrogrowth[sweep]'"
 
@@ -73,8 +73,8 @@ def configure_sweep(parser: argparse.ArgumentParser) -> None:
 
 def run_sweep(args) -> int:
     config = load_config(args.file)
-    if args.workers is not None and args.workers < 1:
-        raise UsageError(f"--workers {args.workers}: need at least 1")
+    if args.workers is not None:
+        check_workers(args.workers)
     _need_sweep_extra()
     out = args.out if args.out is not None else Path(args.file.stem + ".zarr")
     if args.check:

@@ -46,6 +46,10 @@ from .unit import ScanSpec
 
 #: The TubeParameters fields a sweep can fix or vary.
 SWEEPABLE = ("outer_radius", "length", "growth", "stretch", "voltage")
+#: The largest sweep (points of the grid), and the most mode records (points x top) its
+#: store may hold: refused up front rather than running out of memory or time.
+MAX_POINTS = 10**6
+MAX_MODE_RECORDS = 10**7
 
 
 @dataclasses.dataclass(frozen=True)
@@ -234,6 +238,19 @@ def _check_run(c: SweepConfig) -> None:
         )
     if c.chunk < 1:
         raise ConfigError(("run", "chunk"), f"chunk = {c.chunk} is invalid; need >= 1")
+    if c.size > MAX_POINTS:
+        raise ConfigError(
+            ("grid",),
+            f"{' x '.join(map(str, c.shape))} = {c.size:,} points is too many; a sweep has at"
+            f" most {MAX_POINTS:,} (10^6) points: split it into several sweeps",
+        )
+    if c.size * c.scan.top > MAX_MODE_RECORDS:
+        raise ConfigError(
+            ("modes", "top"),
+            f"top = {c.scan.top} modes at each of {c.size:,} points is"
+            f" {c.size * c.scan.top:,} mode records; the store holds at most"
+            f" {MAX_MODE_RECORDS:,} (10^7): lower top or the grid",
+        )
 
 
 def _fixed_tube(c: SweepConfig) -> Tube:

@@ -22,7 +22,7 @@ from ..model.controls import parse_control
 from ..model.params import TubeParameters
 from ..model.toml_input import number, parse, read_text, typename
 from ..model.tube_file import parse_tube
-from .config import SWEEPABLE, SweepConfig, default_chunk
+from .config import MAX_POINTS, SWEEPABLE, SweepConfig, default_chunk
 
 #: table -> allowed keys (None: free keys, checked by the table's own rules)
 TABLES = {
@@ -190,6 +190,11 @@ def _grid_values(key: str, value) -> tuple[float, ...]:
         num = _integer(value, where, "num")
         if num < 1:
             raise ConfigError(where + ("num",), f"num = {num} gives an empty grid; need num >= 1")
+        if num > MAX_POINTS:
+            raise ConfigError(
+                where + ("num",),
+                f"num = {num} is too large; a sweep has at most {MAX_POINTS:,} (10^6) points",
+            )
         values = [float(v) for v in np.linspace(start, stop, num)]
     elif isinstance(value, list):
         if not value:

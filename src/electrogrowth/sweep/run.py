@@ -21,7 +21,7 @@ import time
 import uuid
 from pathlib import Path
 
-from ..errors import SweepError
+from ..errors import SweepError, UsageError
 from ..interrupts import signals_as_interrupts
 from ..outcomes import Status
 from .unit import ChunkResult, ChunkTask, compute_chunk
@@ -165,6 +165,21 @@ def _exit_with_parent(parent: int) -> None:
 
 def _first_failure(result: ChunkResult) -> str:
     return next(p.message for p in result.points if p.status != Status.OK)
+
+
+#: Local worker processes per usable core at most: each holds the numeric stack (~300 MB),
+#: and more processes than cores only contend for them.
+WORKERS_PER_CORE = 4
+
+
+def check_workers(workers: int, option: str = "--workers") -> None:
+    """Raise UsageError unless 1 <= workers <= WORKERS_PER_CORE x the usable cores."""
+    most = WORKERS_PER_CORE * _usable_cores()
+    if not 1 <= workers <= most:
+        raise UsageError(
+            f"{option} {workers} is out of range; need 1 to {most} ({WORKERS_PER_CORE} per"
+            " usable core; a cluster: --scheduler)"
+        )
 
 
 def _usable_cores() -> int:
