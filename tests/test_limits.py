@@ -84,5 +84,7 @@ def test_a_huge_sweep_worker_count_is_refused(tmp_path, capsys):
 def test_library_limits():
     with pytest.raises(ParameterError, match="need an integer from 1 to 1000"):
         ScanOptions(top=1001)
-    with pytest.raises(ParameterError, match="sequence of 1 to 10000 numbers, got 10001"):
+    with pytest.raises(
+        ParameterError, match="non-empty sequence of at most 10000 numbers, got 10001"
+    ):
         critical_curve(TubeParameters(1.4), "growth", "voltage", [0.1] * 10001)

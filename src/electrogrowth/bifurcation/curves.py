@@ -365,7 +365,7 @@ def critical_curve(
     xs = np.asarray(list(values), dtype=float)
     if xs.ndim != 1 or not 1 <= xs.size <= MAX_POINTS:
         raise ParameterError(
-            f"values must be a sequence of 1 to {MAX_POINTS} numbers, got {xs.size}"
+            f"values must be a non-empty sequence of at most {MAX_POINTS} numbers, got {xs.size}"
         )
     steps = np.diff(xs)
     if xs.size > 1 and not ((steps > 0).all() or (steps < 0).all()):

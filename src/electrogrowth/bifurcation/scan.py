@@ -36,7 +36,7 @@ from ..labelled import scan_dataset
 from ..model.params import TubeParameters, check_side
 from ..outcomes import NO_MODE, Kind
 from ..summary import scan_html
-from .critical import CriticalPoint, control_name, critical_value
+from .critical import CriticalPoint, control_name, critical_value, no_bifurcation_remedy
 from .directions import past_surface
 from .march import ModeValue, first_bifurcations, unloaded_signs
 from .surface import short_wave_limit
@@ -214,7 +214,8 @@ def scan_modes(
     side = check_side(solve_for, side)
     try:
         result, at_cap, limit = _widened_scan(params, solve_for, side, options, rtol)
-    except NoBifurcationFound:
+    except NoBifurcationFound as exc:
+        exc.remedy = no_bifurcation_remedy(solve_for)  # not the remedy of one mode's solve
         if not options.surface:
             raise
         limit = short_wave_limit(params, solve_for, side=side, rtol=rtol)
