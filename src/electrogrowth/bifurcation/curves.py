@@ -48,6 +48,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from ..atomic import replaced
 from ..basestate.tube import solve_base_state
 from ..errors import ElectrogrowthError, ParameterError
 from ..incremental.accuracy import SCAN_SIGNS
@@ -196,8 +197,7 @@ class Curve:
         """Columns <along>, <solve_for>_cr, m, n, kind, surface (0/1), short_wave_limit,
         status."""
         path = Path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        with path.open("w", newline="") as fh:
+        with replaced(path, newline="") as fh:  # whole or not at all (atomic.py)
             w = csv.writer(fh)
             w.writerow(
                 [

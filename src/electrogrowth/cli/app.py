@@ -20,6 +20,7 @@ import re
 import sys
 from collections.abc import Callable
 from importlib.metadata import version
+from pathlib import Path
 
 from ..errors import ElectrogrowthError, UsageError
 from ..interrupts import Interrupted, interrupt_of, signals_as_interrupts
@@ -159,17 +160,38 @@ def _dispatch(argv: list[str] | None) -> int:
     except BrokenPipeError:  # the reader went away (e.g. `| head`): end quietly
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # no flush error
         return 0
+    except OSError as exc:  # an output path that is a file, unwritable, a full disk
+        if exc.filename is None:
+            return _internal_error(exc)
+        print(f"{PROG}: error: {_path_problem(exc)}", file=sys.stderr)
+        return 2
     except KeyboardInterrupt as exc:
         return _interrupted(interrupt_of(exc))
     except Exception as exc:  # a bug: still one line, never a traceback
         stop = interrupt_of(exc)  # a signal inside a compiled kernel: a wrapped interrupt
         if stop is not None:
             return _interrupted(stop)
-        print(
-            f"{PROG}: internal error: {type(exc).__name__}: {' '.join(str(exc).split())}",
-            file=sys.stderr,
+        return _internal_error(exc)
+
+
+def _internal_error(exc: BaseException) -> int:
+    print(
+        f"{PROG}: internal error: {type(exc).__name__}: {' '.join(str(exc).split())}",
+        file=sys.stderr,
+    )
+    return 1
+
+
+def _path_problem(exc: OSError) -> str:
+    """One line naming the path and what is wrong with it."""
+    path = Path(exc.filename)
+    if isinstance(exc, (FileExistsError, NotADirectoryError)):
+        file = next((p for p in (path, *path.parents) if p.is_file()), path)
+        return (
+            f"{file} is an existing file, not a directory: give --out a directory (new or"
+            " existing), not a file"
         )
-        return 1
+    return f"cannot use {path}: {exc.strerror or exc}"
 
 
 def _interrupted(stop: Interrupted) -> int:
