@@ -34,12 +34,12 @@ NUMBERS = {
     "--alpha": ["0.5", "1", "0.1", "1.5"],
     "--m-max": ["0", "3", "12", "64", "65", "1000000"],
     "--n-max": ["1", "3", "30", "320", "321", "1000000"],
-    "--top": ["1", "3", "0", "-1", "1001"],
+    "--top": ["1", "3", "0", "-1", "1001", "1000000000000"],
     "--rtol": ["1e-8", "1e-12", "1e-3", "1e-16", "0"],
     "--inner-pressure": ["0", "0.05", "-0.1", "10"],
     "--outer-pressure": ["0", "0.05", "5"],
     "--axial-force": ["0", "0.5", "-3"],
-    "--points": ["2", "5", "1", "0", "100000000"],
+    "--points": ["2", "5", "1", "0", "100000000", "10001", "1000000000000"],
     "--amplitude": ["0", "0.1", "-1", "1e9"],
     "--from": ["0", "0.1", "1"],
     "--to": ["0.2", "0.4", "1.2"],
@@ -71,6 +71,14 @@ SEEDS = [
     "pattern --solve-for growth --outer-radius 1.4 --mode 2 1 --out {tmp}/p",
     "reproduce --quick --out {tmp}/r",
     "demo --out {tmp}/d",
+    "curve --tube {tube} --solve-for growth --layer 1 --along layers[1].thickness --from -0.05"
+    " --to 0.2 --out {tmp}/c",
+    "curve --tube {tube} --solve-for growth --layer 2 --along layers[2].outer_radius --from 0.5"
+    " --to 3 --out {tmp}/c",
+    "curve --tube {tube} --solve-for growth --layer 1 --along stretch[2] --from 1 --to 2"
+    " --out {tmp}/c",
+    "reproduce --quick --out {tube}",
+    "reproduce --quick --out {tube}/sub",
 ]
 #: Commands that compute for minutes when valid: each line of theirs ends refused.
 REFUSED_LAST = {
@@ -93,7 +101,10 @@ def _mutate_toml(text: str, rng: random.Random) -> str:
     elif op == 1:
         lines[i] = f"{key}= {rng.choice(BAD)!r}"
     elif op == 2:
-        lines[i] = f"{key}= {rng.choice(['nan', 'inf', '-inf', '1e400', '-5', '0', '[]', '{}'])}"
+        huge = ["1000000000000", "{start = 1.0, stop = 2.0, num = 1000000000000}"]
+        lines[i] = (
+            f"{key}= {rng.choice(['nan', 'inf', '-inf', '1e400', '-5', '0', '[]', '{}'] + huge)}"
+        )
     elif op == 3:
         lines.insert(i, lines[i])  # a duplicate key
     elif op == 4:
