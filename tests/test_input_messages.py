@@ -4,6 +4,7 @@ a growth component as g_theta (growth[K] is layer K's growth), a curve's --along
 (not as solve_for), and the remedy of "no mode bifurcates" in the terms of what was asked
 (no --m-max for one --mode, no --side for growth)."""
 
+import warnings
 from pathlib import Path
 
 import pytest
@@ -97,3 +98,28 @@ def test_one_mode_without_a_root_is_not_told_to_raise_the_mode_ranges(capsys):
     assert cli.main(argv.split()) == 2
     err = capsys.readouterr().err
     assert "leave out --mode" in err and "--m-max" not in err and "--side" not in err
+
+
+def test_a_layer_growth_outside_the_box_is_named_not_the_pressure(tmp_path, capsys):
+    text = BILAYER.read_text().replace("growth = 1.0\n", "growth = 1e-9\n")
+    (tmp_path / "t.toml").write_text(text)
+    assert cli.main(["state", "--tube", str(tmp_path / "t.toml")]) == 2
+    err = capsys.readouterr().err
+    assert (
+        err.count("\n") == 1 and "layers.2.growth: growth = 1e-09 is outside the supported" in err
+    )
+    assert "inner_pressure" not in err
+
+
+def test_floating_point_warnings_stay_off_stderr(monkeypatch, capsys):
+    import numpy as np
+
+    def run(args):
+        np.divide(np.ones(2), np.zeros(2))  # a solver probing past a threshold
+        return 0
+
+    monkeypatch.setitem(cli.COMMANDS, "state", ("state", lambda parser: None, run))
+    with warnings.catch_warnings(record=True) as shown:
+        warnings.simplefilter("always")
+        assert cli.main(["state"]) == 0
+    assert shown == [] and capsys.readouterr().err == ""

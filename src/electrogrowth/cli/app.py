@@ -18,6 +18,7 @@ import importlib
 import os
 import re
 import sys
+import warnings
 from collections.abc import Callable
 from importlib.metadata import version
 from pathlib import Path
@@ -53,6 +54,7 @@ class _Parser(argparse.ArgumentParser):
         raise UsageError(message)
 
 
+_FLOATING_POINT = r"(overflow|invalid value|divide by zero|underflow) encountered"
 _NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$", re.I)
 
 
@@ -137,7 +139,10 @@ def main(argv: list[str] | None = None) -> int:
     """Run the command line; return the exit status (0 ok, 2 bad input, 1 internal error,
     130 / 143 interrupted by SIGINT (Ctrl-C) / SIGTERM)."""
     try:
-        with signals_as_interrupts():
+        with signals_as_interrupts(), warnings.catch_warnings():
+            # numpy's floating-point warnings (an overflow while a solver probes beyond a
+            # threshold) are not the user's to read: a result is checked, a failure named
+            warnings.filterwarnings("ignore", _FLOATING_POINT, RuntimeWarning)
             return _dispatch(argv)
     except KeyboardInterrupt as exc:  # also while the handlers are put back
         return _interrupted(interrupt_of(exc))

@@ -25,7 +25,7 @@ import numpy as np
 from ..errors import ParameterError
 from .controls import Control, parse_control
 from .materials import Material, neo_hookean
-from .params import TubeParameters
+from .params import SUPPORTED, SUPPORTED_WHY, TubeParameters
 
 Growth = float | tuple[float, float, float] | Callable
 
@@ -51,17 +51,25 @@ def _triple(name: str, value) -> tuple[float, float, float]:
             raise ParameterError(
                 f"{name} = {value!r} has {len(value)} entries; give g or [g_r, g_theta, g_z]"
             )
-        return tuple(
-            _number(  # named g_r, g_theta, g_z: growth[K] is layer K's growth (controls.py)
-                f"{name} g_{comp}",
-                float(v) if isinstance(v, np.floating) else v,
-                "> 0",
-                lambda v: v > 0,
-            )
+        return tuple(  # named g_r, g_theta, g_z: growth[K] is layer K's growth (controls.py)
+            _growth(f"{name} g_{comp}", float(v) if isinstance(v, np.floating) else v, "> 0")
             for comp, v in zip(("r", "theta", "z"), value)
         )
-    g = _number(name, value, "> 0 (or three entries > 0)", lambda v: v > 0)
+    g = _growth(name, value, "> 0 (or three entries > 0)")
     return (g, g, g)
+
+
+def _growth(name: str, value, valid: str) -> float:
+    """A growth entry > 0 inside the supported box of the one-layer tube (params.py): a
+    growth of 1e-9 was accepted and failed later as "no unloaded state", blamed on the
+    tube's inner pressure."""
+    g = _number(name, value, valid, lambda v: v > 0)
+    lo, hi = SUPPORTED[3], SUPPORTED[4]
+    if not lo <= g <= hi:
+        raise ParameterError(
+            f"{name} = {g:.6g} is outside the supported range {lo:g} to {hi:g}: {SUPPORTED_WHY}"
+        )
+    return g
 
 
 @dataclasses.dataclass(frozen=True)
