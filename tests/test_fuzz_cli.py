@@ -205,3 +205,42 @@ def test_cli_fuzz(tmp_path, capsys, monkeypatch):
 def test_cli_fuzz_long(tmp_path, capsys, monkeypatch):
     tally = run_fuzz(600, tmp_path, capsys, monkeypatch)
     assert tally[0] >= 50 and tally[2] >= 200
+
+
+#: Lines a fuzz found BAD (traceback, internal error, several stderr lines, a MemoryError or
+#: a run of hours), each now exit 2 with one line: {bilayer} is examples/bilayer.toml,
+#: {tiny} the same with layer 2's growth 1e-9, {sweep} a sweep of num = 10^12.
+REGRESSIONS = [
+    # a denormal growth of a layer: RuntimeWarnings and an internal error at the plot
+    "curve --tube {bilayer} --solve-for pressure --along growth[2] --from 0.9999999 --to 5e-324"
+    " --points 2 --m-max 1 --n-max 2 --out {tmp}/c",
+    # "no unloaded state" blamed on inner_pressure, after four RuntimeWarnings
+    "state --tube {tiny}",
+    # "outer_radius = 0.95 is out of range" for a thickness
+    "curve --tube {bilayer} --solve-for growth --layer 1 --along layers[1].thickness"
+    " --from -0.05 --to 0.2 --points 3 --out {tmp}/c",
+    # FileExistsError from mkdir
+    "reproduce --quick --out {bilayer}",
+    # MemoryError (745 GiB, 7.28 TiB)
+    "curve --solve-for growth --along voltage --from 0 --to 0.4 --outer-radius 1.4"
+    " --points 100000000000 --out {tmp}/c",
+    "sweep {sweep} --check --out {tmp}/s.zarr",
+    # ran for minutes
+    "pattern --solve-for growth --outer-radius 1.4 --mode 2 1 --points 1000000000 --out {tmp}/p",
+]
+
+
+@pytest.mark.parametrize("line", REGRESSIONS)
+def test_cli_fuzz_regressions(line, tmp_path, capsys):
+    bilayer = EXAMPLES / "bilayer.toml"
+    tiny = tmp_path / "tiny.toml"
+    tiny.write_text(bilayer.read_text().replace("growth = 1.0\n", "growth = 1e-9\n"))
+    sweep = tmp_path / "sweep.toml"
+    sweep.write_text(
+        (EXAMPLES / "sweep.toml").read_text().replace("num = 11", "num = 1000000000000")
+    )
+    argv = line.format(bilayer=bilayer, tiny=tiny, sweep=sweep, tmp=tmp_path).split()
+    code = cli.main(argv)
+    out, err = capsys.readouterr()
+    _check(argv, code, out, err)
+    assert code == 2
