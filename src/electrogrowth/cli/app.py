@@ -15,6 +15,7 @@ from __future__ import annotations
 import argparse
 import contextlib
 import importlib
+import logging
 import os
 import re
 import sys
@@ -143,9 +144,20 @@ def main(argv: list[str] | None = None) -> int:
             # numpy's floating-point warnings (an overflow while a solver probes beyond a
             # threshold) are not the user's to read: a result is checked, a failure named
             warnings.filterwarnings("ignore", _FLOATING_POINT, RuntimeWarning)
-            return _dispatch(argv)
+            status = _dispatch(argv)
     except KeyboardInterrupt as exc:  # also while the handlers are put back
-        return _interrupted(interrupt_of(exc))
+        status = _interrupted(interrupt_of(exc))
+    if status > 128:
+        _quiet_exit()
+    return status
+
+
+def _quiet_exit() -> None:
+    """After an interrupt, the work a library had in flight (zarr's asyncio tasks) is
+    destroyed at exit: its "Task was destroyed but it is pending!" and "coroutine ... was
+    never awaited" would follow the one line."""
+    logging.getLogger("asyncio").setLevel(logging.CRITICAL)
+    warnings.filterwarnings("ignore", r"coroutine .* was never awaited", RuntimeWarning)
 
 
 def _dispatch(argv: list[str] | None) -> int:
