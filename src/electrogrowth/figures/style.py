@@ -7,6 +7,8 @@ Figures are drawn with the object-oriented API on an Agg canvas: no pyplot, no g
 from __future__ import annotations
 
 import dataclasses
+import re
+import textwrap
 from pathlib import Path
 
 import matplotlib as mpl
@@ -22,6 +24,7 @@ STYLE = {
     "xtick.direction": "in",
     "ytick.direction": "in",
     "legend.frameon": False,
+    "axes.formatter.useoffset": False,  # 1.2 not "0.053 + 1.147": a reader reads values
 }
 
 
@@ -57,3 +60,24 @@ def new_figure(width: float, height: float, rows: int, cols: int):
     for ax in axes.flat:
         ax.tick_params(direction="in", top=True, right=True, labelsize=8)
     return fig, axes
+
+
+def wrap(text: str, width_inches: float, fontsize: float = 8.0) -> str:
+    """``text`` broken into lines that fit ``width_inches`` at ``fontsize`` points, never
+    inside a $math$ span (a line of its own in mathtext), existing line breaks kept."""
+    chars = max(20, int(width_inches * 72.0 / (0.52 * fontsize)))
+    math_spans = re.compile(r"\$[^$]*\$")
+    lines = []
+    for line in text.split("\n"):
+        kept = math_spans.sub(lambda m: m.group(0).replace(" ", "\x00"), line)
+        lines += [
+            part.replace("\x00", " ")
+            for part in textwrap.wrap(kept, chars, break_on_hyphens=False) or [""]
+        ]
+    return "\n".join(lines)
+
+
+def wrapped_title(ax, text: str, fontsize: float = 8.0) -> None:
+    """Set the title of ``ax`` wrapped to the axes' width, so it never runs off the figure."""
+    width = ax.figure.get_figwidth() * ax.get_position().width
+    ax.set_title(wrap(text, width, fontsize), fontsize=fontsize)
