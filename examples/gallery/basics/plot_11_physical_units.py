@@ -32,4 +32,4 @@ kv = [
 ]
 fig, ax = plt.subplots(figsize=(5, 3.2), layout="constrained")
 ax.plot(growths, kv, "o-")
-ax.set(xlabel="growth factor g", ylabel="critical voltage (kV)")
+_ = ax.set(xlabel="growth factor g (–)", ylabel="critical voltage (kV)")
