@@ -23,7 +23,7 @@ from scipy import ndimage
 
 from ..errors import ParameterError
 from ..outcomes import Kind, Status
-from .labels import symbol_text
+from .labels import axis_label, symbol_text
 
 THRESHOLD, NONE, FAILED, PENDING = "threshold", "no instability", "failed", "pending"
 UNSTABLE = "already unstable"
@@ -161,19 +161,14 @@ def _label_text(label) -> str:
     return f"m={label[0]}, n={label[1]}" if isinstance(label, tuple) else label
 
 
-#: Axis symbols in matplotlib's mathtext (the dataset's "symbol" attributes are plain text).
-SYMBOLS = {
-    "stretch": r"$\lambda_z$",
-    "voltage": r"$\bar V$",
-    "outer_radius": r"$\bar R_o$",
-    "length": r"$L$",
-    "growth": r"$g$",
-}
-
-
 def _axis_label(coord, name=None) -> str:
-    symbol = SYMBOLS.get(name or coord.name, coord.attrs.get("symbol", ""))
-    return " ".join(filter(None, (coord.attrs.get("long_name", coord.name), symbol)))
+    """Words, symbol and unit of a swept parameter (``name``: the solved-for control, for
+    the colour bar of the critical value), never a code name in math italics."""
+    if name is not None:
+        return axis_label(name, critical=True)
+    if coord.name in coord.coords or coord.name in coord.dims:
+        return axis_label(str(coord.name))
+    return coord.attrs.get("long_name", str(coord.name))
 
 
 def phase_diagram(ds, x: str, y: str, *, at: dict | None = None) -> Figure:
