@@ -15,7 +15,10 @@ switch is located exactly:
 * a mode and the threshold (the axisymmetric state is lost first): bisection on whether the
   mode still bifurcates before the threshold.
 
-The located switch is checked by a scan there; if a third mode comes first, the interval is
+A change with equal values on both sides, between two wrinkling modes (or a mode and the
+short-wave limit), is a "switch"; one where the value jumps, or the threshold is on one side,
+is the "end" of a branch (:class:`Switch`, ``Curve.ends``). The located switch is checked by
+a scan there; if a third mode comes first, the interval is
 split at it and both halves are located again. If a single-mode solve fails (e.g. the
 kernel cannot integrate a high mode next to the threshold), the switch is bisected with
 scans instead, to a relative 1e-7 only. A point whose scan fails (e.g. the tube is
@@ -72,7 +75,7 @@ class Switch(NamedTuple):
     ``value_after``. ``kind`` "end": the branch before ends there without a crossing, either
     at a jump (a mode's first critical value appears or vanishes discontinuously, e.g. a
     window of instability closes; ``value`` and ``value_after`` are the one-sided limits of
-    the critical value) or where no wrinkling mode follows (the threshold comes first)."""
+    the critical value) or where one side does not wrinkle (the threshold comes first)."""
 
     x: float
     value: float
