@@ -24,7 +24,7 @@ VARIABLES = {
     "r": ("R_i", "current radius r(R)"),
     "lambda": ("1", "hoop stretch r / R"),
     "sigma_rr": ("mu", "radial Cauchy stress sigma_rr"),
-    "sigma_tt": ("mu", "hoop Cauchy stress sigma_theta theta"),
+    "sigma_tt": ("mu", "hoop Cauchy stress sigma_tt (theta-theta)"),
     "sigma_zz": ("mu", "axial Cauchy stress sigma_zz"),
     "p": ("mu", "Lagrange multiplier p (hydrostatic pressure)"),
     "D_r": ("sqrt(mu eps)", "radial electric displacement D_r = c / r"),
