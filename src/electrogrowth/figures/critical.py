@@ -258,7 +258,7 @@ def figure7(
                 headline[f"m_{side}_V{V:g}_Ro{x:g}"] = float(m)
                 headline[f"n_{side}_V{V:g}_Ro{x:g}"] = float(n)
             _title(ax, rf"{side}: $\bar V = {V:g}$, $g = 1$, $L = {length:g}$")
-    curve_legend(axes[0, 0])
+    curve_legend(axes[1, 0])  # a panel with switches: the legend shows their mark
     cols, table = _table(curves)
     return ModeFigure(7, cols, table, fig, headline, tuple(curves))
 

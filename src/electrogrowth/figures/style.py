@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import dataclasses
 import re
-import textwrap
 from pathlib import Path
 
 import matplotlib as mpl
@@ -65,16 +64,28 @@ def new_figure(width: float, height: float, rows: int, cols: int):
 def wrap(text: str, width_inches: float, fontsize: float = 8.0) -> str:
     """``text`` broken into lines that fit ``width_inches`` at ``fontsize`` points, never
     inside a $math$ span (a line of its own in mathtext), existing line breaks kept."""
-    chars = max(20, int(width_inches * 72.0 / (0.52 * fontsize)))
-    math_spans = re.compile(r"\$[^$]*\$")
+    chars = max(20, int(width_inches * 72.0 / (0.55 * fontsize)))
     lines = []
     for line in text.split("\n"):
-        kept = math_spans.sub(lambda m: m.group(0).replace(" ", "\x00"), line)
-        lines += [
-            part.replace("\x00", " ")
-            for part in textwrap.wrap(kept, chars, break_on_hyphens=False) or [""]
-        ]
+        words = re.findall(r"(?:\$[^$]*\$|[^\s$])+", line) or [""]
+        current = ""
+        for word in words:
+            joined = f"{current} {word}" if current else word
+            if current and _visible(joined) > chars:
+                lines.append(current)
+                current = word
+            else:
+                current = joined
+        lines.append(current)
     return "\n".join(lines)
+
+
+def _visible(text: str) -> int:
+    """About how many characters ``text`` shows: a mathtext command (\\bar, \\lambda) is
+    one glyph or none, braces, ^, _ and $ none."""
+    text = re.sub(r"\\(bar|hat|tilde|rm|mathrm|,)\b", "", text)
+    text = re.sub(r"\\[A-Za-z]+", "x", text)
+    return len(re.sub(r"[${}^_]", "", text))
 
 
 def wrapped_title(ax, text: str, fontsize: float = 8.0) -> None:
