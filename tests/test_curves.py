@@ -338,6 +338,11 @@ def test_a_branch_that_ends_at_a_jump_is_an_end(monkeypatch, tmp_path):
     assert rec["switches"] == [] and rec["ends"][0]["mode_before"] == [0, 1]
     with curve.to_csv(tmp_path / "c.csv").open() as fh:
         assert [r["kind"] for r in csv.DictReader(fh)] == list(curve.kind)
+    from electrogrowth.cli.curve import summary
+
+    text = "\n".join(summary(curve))
+    assert "switch" not in text and "branch (0, 1) ends at voltage = 0.5" in text
+    assert "then (1, 1) from 2.5" in text
     ax = plot_curve(curve)
     marks = {line.get_label(): line for line in ax.get_lines()}
     assert "switch" not in marks
@@ -357,3 +362,6 @@ def test_a_branch_that_meets_the_threshold_ends(monkeypatch):
     (end,) = curve.ends
     assert end.mode_after == (-1, -1) and end.x == pytest.approx(0.5, abs=1e-9)
     assert list(curve.kind) == ["bifurcation", "end", "end", "threshold"]
+    from electrogrowth.cli.curve import summary
+
+    assert "then the threshold (axisymmetric state lost)" in "\n".join(summary(curve))
