@@ -642,6 +642,8 @@ def test_no_symbolic_derivation_at_run_time(monkeypatch):
     assert np.all(np.isfinite(mat.moduli(*point)))
     assert np.all(np.isfinite(mat.stress(*point)))
     assert mat.is_ideal_dielectric()
+    for general in (NON_IDEAL_POLY, NON_IDEAL_EXP, Material("I4 I6", mat.energy + I4 * I6 / 100)):
+        assert not general.is_ideal_dielectric()
 
 
 def test_ideal_dielectric_hidden_from_cancellation_is_still_detected():
