@@ -13,7 +13,9 @@ $(VENV)/.installed: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install -q --upgrade pip
 	$(BIN)/python -m pip install -q -e '.[test,lint,vtk,sweep,units]'
-	@# compile the numba kernels now (cache=True keeps them), not at a user's first call
+	@# compile the numba kernels now (cache=True keeps them), not at a user's first call.
+	@# They do not depend on the energy: gent, mooney-rivlin and --energy load this cache
+	@# (NUMBA_DEBUG_CACHE=1), and an energy's own derivatives take ~0.1 s per process.
 	$(BIN)/electrogrowth critical --solve-for growth --outer-radius 1.4 --length 1 \
 		--voltage 0.4 > /dev/null
 	touch $@
