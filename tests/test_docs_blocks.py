@@ -70,6 +70,7 @@ SLOW = {
 #: Commands not run at all, with the reason.
 SKIP = {
     "--workers 2   # all examples": "the whole gallery takes 10-30 min; its quick form runs",
+    "--scheduler tcp://head": "needs a dask cluster (tests/test_sweep.py runs one in-process)",
 }
 
 #: Quoted output -> the expression (in the namespace of its block, run up to the quote)

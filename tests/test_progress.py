@@ -5,6 +5,7 @@ alone prints the overview."""
 import argparse
 import json
 import sys
+import time
 
 import numpy as np
 
@@ -12,6 +13,7 @@ from electrogrowth import ScanOptions, TubeParameters, solve_base_state
 from electrogrowth.bifurcation.curves import critical_curve
 from electrogrowth.cli.app import main
 from electrogrowth.cli.critical import _collocation_signs
+from electrogrowth.cli.progress import stage
 from electrogrowth.incremental.targets import collocation_targets
 
 SWITCHING = dict(side="compression", options=ScanOptions((0, 2), (1, 2)))  # (1, 1) -> (0, 1)
@@ -79,3 +81,12 @@ def test_certify_counts_the_modes_it_checks_and_changes_no_value(capsys, monkeyp
     assert "certifying: every scanned mode stable before it" in err and "3/3" in err
     _collocation_signs(state, modes, argparse.Namespace(quiet=True))
     assert capsys.readouterr().err == ""
+
+
+def test_a_step_of_unknown_length_shows_the_time_it_has_taken(capsys, monkeypatch):
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
+    with stage(argparse.Namespace(quiet=False), "solving mode (0, 1) by collocation", tick=True):
+        time.sleep(2.3)
+    err = capsys.readouterr().err
+    assert "electrogrowth: solving mode (0, 1) by collocation ... 00:01" in err
+    assert "solving mode (0, 1) by collocation: done in 2." in err

@@ -74,7 +74,7 @@ def run_critical(args) -> int:
     if mode is not None:
         m, n, family = mode
         slow = args.method == "collocation"  # tens of seconds: say what is going on
-        with stage(args if slow else None, f"solving mode ({m}, {n}) by collocation"):
+        with stage(args if slow else None, f"solving mode ({m}, {n}) by collocation", tick=True):
             crit = critical_value(
                 params,
                 m,
@@ -121,7 +121,7 @@ def _certify(params, crit, args) -> dict:
     other = "collocation" if crit.method == "impedance" else "impedance"
     w = max(1e-6 * abs(crit.value), 10 * crit.error_estimate)
     name = value_name(crit.solve_for)
-    with stage(args, f"certifying {name} of mode ({crit.m}, {crit.n}) by {other}"):
+    with stage(args, f"certifying {name} of mode ({crit.m}, {crit.n}) by {other}", tick=True):
         check = critical_value(
             params,
             crit.m,

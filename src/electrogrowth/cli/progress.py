@@ -10,6 +10,7 @@ from __future__ import annotations
 import argparse
 import contextlib
 import sys
+import threading
 import time
 from collections.abc import Iterator
 from inspect import signature
@@ -39,15 +40,43 @@ def bar(args, total: int, desc: str, unit: str = "pt"):
 
 
 @contextlib.contextmanager
-def stage(args, text: str) -> Iterator[None]:
-    """``electrogrowth: <text> ...`` before a step and its duration after it."""
+def stage(args, text: str, *, tick: bool = False) -> Iterator[None]:
+    """``electrogrowth: <text> ...`` before a step and its duration after it; ``tick``: the
+    time elapsed so far, updated every second, for a step of unknown length that shows
+    nothing else (a single collocation solve)."""
     if not enabled(args):
         yield
         return
-    print(f"electrogrowth: {text} ...", file=sys.stderr, flush=True)
     t = time.perf_counter()
-    yield
+    if tick:
+        with _ticking(f"electrogrowth: {text} ..."):
+            yield
+    else:
+        print(f"electrogrowth: {text} ...", file=sys.stderr, flush=True)
+        yield
     print(f"electrogrowth: {text}: done in {time.perf_counter() - t:.1f} s", file=sys.stderr)
+
+
+@contextlib.contextmanager
+def _ticking(text: str) -> Iterator[None]:
+    """``text`` and the elapsed time, redrawn every second by a helper thread."""
+    from tqdm import tqdm
+
+    line = tqdm(desc=text, bar_format="{desc} {elapsed}", file=sys.stderr, leave=False)
+    done = threading.Event()
+
+    def redraw():
+        while not done.wait(1.0):
+            line.refresh()
+
+    thread = threading.Thread(target=redraw, daemon=True)
+    thread.start()
+    try:
+        yield
+    finally:
+        done.set()
+        thread.join()
+        line.close()
 
 
 def progress_options(fn, args) -> dict:
