@@ -59,7 +59,7 @@ def test_curve_command_bars_only_on_a_terminal(tmp_path, capsys, monkeypatch):
     assert json.loads(out)["switches"] and err == ""  # one JSON object, no bar
 
 
-def test_figure_command_names_its_stage_on_a_terminal(tmp_path, capsys, monkeypatch):
+def test_figure_commands_name_their_stages_on_a_terminal(tmp_path, capsys, monkeypatch):
     monkeypatch.setattr(sys.stderr, "isatty", lambda: True)  # (pytest's capture)
     assert main(["figure", "4", "--quick", "--out", str(tmp_path)]) == 0
     out, err = capsys.readouterr()
@@ -68,6 +68,10 @@ def test_figure_command_names_its_stage_on_a_terminal(tmp_path, capsys, monkeypa
     assert out.split() == [str(tmp_path / "fig4.png"), str(tmp_path / "fig4.csv")]
     assert main(["figure", "4", "--quick", "--quiet", "--out", str(tmp_path)]) == 0
     assert capsys.readouterr().err == ""
+    assert main(["reproduce", "--quick", "--figures", "4", "--out", str(tmp_path)]) == 0
+    out, err = capsys.readouterr()
+    assert err == "electrogrowth: figure 4 (1 of 1) ...\n"  # stdout's line says the time
+    assert "figure 4: " in out
 
 
 def test_certify_counts_the_modes_it_checks_and_changes_no_value(capsys, monkeypatch):

@@ -40,10 +40,10 @@ def bar(args, total: int, desc: str, unit: str = "pt"):
 
 
 @contextlib.contextmanager
-def stage(args, text: str, *, tick: bool = False) -> Iterator[None]:
-    """``electrogrowth: <text> ...`` before a step and its duration after it; ``tick``: the
-    time elapsed so far, updated every second, for a step of unknown length that shows
-    nothing else (a single collocation solve)."""
+def stage(args, text: str, *, tick: bool = False, done: bool = True) -> Iterator[None]:
+    """``electrogrowth: <text> ...`` before a step and (``done``) its duration after it;
+    ``tick``: the time elapsed so far, updated every second, for a step of unknown length
+    that shows nothing else (a single collocation solve)."""
     if not enabled(args):
         yield
         return
@@ -54,7 +54,8 @@ def stage(args, text: str, *, tick: bool = False) -> Iterator[None]:
     else:
         print(f"electrogrowth: {text} ...", file=sys.stderr, flush=True)
         yield
-    print(f"electrogrowth: {text}: done in {time.perf_counter() - t:.1f} s", file=sys.stderr)
+    if done:
+        print(f"electrogrowth: {text}: done in {time.perf_counter() - t:.1f} s", file=sys.stderr)
 
 
 @contextlib.contextmanager

@@ -95,7 +95,7 @@ def run_reproduce(args) -> int:
     for k, number in enumerate(numbers, 1):
         fn = FIGURES[number]
         t = time.perf_counter()
-        with stage(args, f"figure {number} ({k} of {len(numbers)})"):
+        with stage(args, f"figure {number} ({k} of {len(numbers)})", done=False):
             result = fn(quick=args.quick, **progress_options(fn, args))
             result.save(out)
             patterns = [_pattern(number, pt, out) for pt in getattr(result, "points", ())]
@@ -173,7 +173,7 @@ def run_gallery(args) -> int:
     for k, name in enumerate(names, 1):
         fn = GALLERY[name]
         t = time.perf_counter()
-        with stage(args, f"{name} ({k} of {len(names)})"):
+        with stage(args, f"{name} ({k} of {len(names)})", done=False):
             mapper = counting(pool.map if pool else map, args, name)
             result = fn(quick=args.quick, mapper=mapper)
             result.save(out)
