@@ -53,19 +53,20 @@ COMMANDS = [
     for command in _commands(code)
 ]
 
-#: Why a block or command is slow (a substring of it -> reason); they run with -m slow.
+#: Why a block or command is slow (a substring of it -> reason); they run with -m slow. The
+#: times are of one run of the slow set on the shared two-core machine under a load of 7-9.
 SLOW = {
-    'method="collocation"': "the collocation solve of a mode (about 35 s)",
-    "results.zarr": "computes or reads the 55-point sweep of examples/sweep.toml",
-    "--certify": "the collocation solve of the mode (20-100 s)",
-    "reproduce": "every figure of the paper (minutes)",
-    "figure 9": "two critical curves (about 25 s)",
-    "--points 60": "a 60-point curve",
-    "--points 17": "a 17-point curve with modes up to m = 64",
-    "curve --tube": "a layered curve with its switches located (minutes)",
-    "Material(": "a new energy: its moduli are derived and compiled (about 30 s)",
-    "--energy": "a new energy: its moduli are derived and compiled (about 30 s)",
-    "--solve-for pressure": "a layered scan for the pressure (up to m = 16, n = 8)",
+    'method="collocation"': "the collocation solve of a mode (18-22 s)",
+    "results.zarr": "computes (195 s) or reads the 55-point sweep of examples/sweep.toml",
+    "--certify": "the collocation solve of the mode (28 s one layer, 59 s bilayer)",
+    "reproduce --out": "every figure of the paper (240 s)",
+    "figure 9": "two critical curves (32-51 s)",
+    "--points 60": "a 60-point curve (53 s)",
+    "--points 17": "a 17-point curve with modes up to m = 64 (37 s)",
+    "curve --tube": "a layered curve with its switches located (26 s)",
+    "Material(": "a new energy: its moduli are derived and compiled (11-33 s)",
+    "--energy": "the same new energy, when the block above has not compiled it",
+    "--solve-for pressure": "a layered scan for the pressure up to m = 16, n = 8 (30 s)",
 }
 #: Commands not run at all, with the reason.
 SKIP = {
@@ -100,6 +101,15 @@ def workdir(tmp_path_factory):
     return path
 
 
+@pytest.fixture(scope="module")
+def sweep_store(workdir):
+    """results.zarr of examples/sweep.toml in workdir, which the plotting examples read."""
+    with pytest.MonkeyPatch.context() as mp:
+        mp.chdir(workdir)
+        assert main(["sweep", "examples/sweep.toml", "--out", "results.zarr", "--quiet"]) == 0
+    return workdir / "results.zarr"
+
+
 def _run_python(code: str, where: str) -> dict:
     namespace: dict = {"__name__": "__docs__"}
     exec(compile(code, where, "exec"), namespace)
@@ -116,11 +126,13 @@ def test_the_documents_have_examples():
     "doc, line, code",
     [pytest.param(*b, marks=_marks(b[2]), id=_id(b[0], b[1])) for b in PYTHON],
 )
-def test_python_block_runs(doc, line, code, workdir, monkeypatch):
+def test_python_block_runs(doc, line, code, workdir, monkeypatch, request):
     if doc == "README.md":  # the README shows the public surface only
         for row in code.splitlines():
             if row.startswith(("from electrogrowth", "import electrogrowth")):
                 assert row.startswith("from electrogrowth import "), row
+    if "results.zarr" in code:
+        request.getfixturevalue("sweep_store")
     monkeypatch.chdir(workdir)
     _run_python(code, f"{doc}:{line}")
 
@@ -132,10 +144,12 @@ def test_python_block_runs(doc, line, code, workdir, monkeypatch):
         for c in COMMANDS
     ],
 )
-def test_command_runs(doc, line, command, workdir, monkeypatch, capsys):
+def test_command_runs(doc, line, command, workdir, monkeypatch, capsys, request):
     for key, reason in SKIP.items():
         if key in command:
             pytest.skip(reason)
+    if command.startswith("electrogrowth plot results.zarr"):
+        request.getfixturevalue("sweep_store")
     monkeypatch.chdir(workdir)
     argv = shlex.split(command, comments=True)[1:]
     status = main(argv)
