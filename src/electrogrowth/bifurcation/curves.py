@@ -130,11 +130,23 @@ def curve_point(
     return _scan_point(x, res)
 
 
-def _progress_bar(total: int, desc: str):
+def _progress_bar(total: int, desc: str, unit: str = "pt"):
     """A tqdm.auto bar (a notebook widget or text on stderr)."""
     from tqdm.auto import tqdm
 
-    return tqdm(total=total, desc=desc, unit="pt")
+    return tqdm(total=total, desc=desc, unit=unit)
+
+
+def _critical_text(pt: CurvePoint) -> str:
+    """What is critical at a grid point, in a progress message."""
+    if pt.kind == Kind.SURFACE:
+        return "the short-wave limit"
+    return "the threshold" if pt.mode == NO_MODE else str(pt.mode)
+
+
+def _changes(prev: CurvePoint, pt: CurvePoint) -> bool:
+    """The critical mode changes between two neighbouring grid points: a switch to locate."""
+    return Status.FAILED not in (prev.kind, pt.kind) and prev.mode != pt.mode
 
 
 def _message(exc: Exception) -> str:
@@ -330,9 +342,10 @@ def critical_curve(
     options : ScanOptions
         Mode ranges of each scan (extended automatically when the optimum is on an edge).
     progress : bool or callable, optional
-        True: a progress bar (tqdm.auto: a widget in a notebook, text on a terminal);
-        None or False: none (default); a callable: called with 1 after each grid point
-        (``tqdm(...).update`` fits).
+        True: progress bars (tqdm.auto: a widget in a notebook, text on a terminal), one
+        over the grid points, then one over the mode switches to locate; None or False:
+        none (default); a callable: called with 1 after each grid point
+        (``tqdm(...).update`` fits; the switches are then located silently).
     mapper : callable
         ``map``-like function running :func:`curve_point` over the grid (e.g. a process
         pool's ``map``); the builtin by default.
@@ -396,9 +409,15 @@ def critical_curve(
         bar.close()
     loc = _Locator(params, solve_for, along, side, unit)
     rows, switches = [], []
+    located = sum(map(_changes, points[:-1], points[1:]))
+    bar = None
+    if progress is True and located:  # locating can take far longer than the grid
+        bar = _progress_bar(located, "locating mode switches", "switch")
     for i, pt in enumerate(points):
         prev = points[i - 1] if i else None
         if prev is not None and Status.FAILED not in (prev.kind, pt.kind) and prev.mode != pt.mode:
+            if bar is not None:
+                bar.set_postfix_str(f"between {_critical_text(prev)} and {_critical_text(pt)}")
             try:
                 new_rows, new_switches = loc.between(prev, pt, MAX_SPLITS)
             except Exception as exc:  # noqa: BLE001 -- keep the grid points
@@ -408,7 +427,11 @@ def critical_curve(
                 )
             rows += new_rows
             switches += new_switches
+            if bar is not None:
+                bar.update(1)
         rows.append(_row(pt))
+    if bar is not None:
+        bar.close()
     x, v, modes, kinds, status, surface, limit = zip(*rows)
     modes = np.array(modes, dtype=int).reshape(-1, 2)
     return Curve(

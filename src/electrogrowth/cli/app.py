@@ -130,6 +130,10 @@ def _command_of(argv: list[str] | None) -> str:
 
 def main(argv: list[str] | None = None) -> int:
     """Run the command line; return the exit status (0 ok, 2 bad input, 1 internal error)."""
+    words = sys.argv[1:] if argv is None else argv
+    if not words:  # no command: the overview on stdout and success, as `pip` does
+        build_parser("").print_help()
+        return 0
     try:
         try:
             args = build_parser(_command_of(argv)).parse_args(argv)

@@ -2,14 +2,14 @@
 
 Registered in :data:`cli.COMMANDS` as ("...", configure_curve, run_curve). Writes
 ``curve_<solve_for>_vs_<along>.csv`` and ``.png`` into ``--out`` and prints a summary
-(``--json``: one JSON object). A tqdm progress bar goes to stderr when it is a terminal.
+(``--json``: one JSON object). Progress bars (the points, then the switches being
+located) go to stderr when it is a terminal.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -30,6 +30,7 @@ from .options import (
     finite_number,
     scan_options_from_args,
 )
+from .progress import add_quiet_option, enabled
 from .tube_input import add_any_tube_options, control_of
 
 #: How each parameter is described in the options' help (the paper's terms).
@@ -93,6 +94,7 @@ def configure_curve(parser: argparse.ArgumentParser) -> None:
         action="store_true",
         help="print one JSON object instead of text (no progress bar)",
     )
+    add_quiet_option(parser)
 
 
 def curve_params(args) -> TubeParameters:
@@ -131,29 +133,15 @@ def run_curve(args) -> int:
     if args.start == args.stop:
         raise ParameterError(f"--from = --to = {args.start:g}; need two different values")
     values = np.linspace(args.start, args.stop, args.points)
-    bar = None
-    if not args.json and sys.stderr.isatty():
-        from tqdm import tqdm
-
-        bar = tqdm(
-            total=args.points,
-            unit="point",
-            file=sys.stderr,
-            desc=f"{solve_for} along {args.along}",
-        )
-    try:
-        curve = critical_curve(
-            params,
-            solve_for,
-            args.along,
-            values,
-            side=args.side,
-            options=options,
-            progress=bar.update if bar is not None else None,
-        )
-    finally:
-        if bar is not None:
-            bar.close()
+    curve = critical_curve(  # bars over the points, then the switches being located
+        params,
+        solve_for,
+        args.along,
+        values,
+        side=args.side,
+        options=options,
+        progress=not args.json and enabled(args),
+    )
     stem = f"curve_{solve_for}_vs_{args.along}".replace("[", "").replace("]", "")
     csv = curve.to_csv(args.out / f"{stem}.csv")
     png = args.out / f"{stem}.png"
