@@ -336,6 +336,10 @@ def test_a_branch_that_ends_at_a_jump_is_an_end(monkeypatch, tmp_path):
     assert list(curve.kind) == ["bifurcation", "end", "end", "bifurcation"]
     rec = json.loads(json.dumps(curve.as_dict()))
     assert rec["switches"] == [] and rec["ends"][0]["mode_before"] == [0, 1]
+    ds = curve.to_xarray()
+    assert ds.sizes["end"] == 1 and ds.sizes["switch"] == 0
+    assert ds["end_mode_after"].values.tolist() == [[1, 1]]
+    assert float(ds["end_value_after"][0]) == pytest.approx(2.5, abs=1e-9)
     with curve.to_csv(tmp_path / "c.csv").open() as fh:
         assert [r["kind"] for r in csv.DictReader(fh)] == list(curve.kind)
     from electrogrowth.cli.curve import summary
