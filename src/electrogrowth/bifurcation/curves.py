@@ -15,7 +15,10 @@ switch is located exactly:
 * a mode and the threshold (the axisymmetric state is lost first): bisection on whether the
   mode still bifurcates before the threshold.
 
-The located switch is checked by a scan there; if a third mode comes first, the interval is
+A change with equal values on both sides, between two wrinkling modes (or a mode and the
+short-wave limit), is a "switch"; one where the value jumps, or the threshold is on one side,
+is the "end" of a branch (:class:`Switch`, ``Curve.ends``). The located switch is checked by
+a scan there; if a third mode comes first, the interval is
 split at it and both halves are located again. If a single-mode solve fails (e.g. the
 kernel cannot integrate a high mode next to the threshold), the switch is bisected with
 scans instead, to a relative 1e-7 only. A point whose scan fails (e.g. the tube is
@@ -67,16 +70,30 @@ CHECK_EVERY = 8  # when following modes, a full scan at least every this many po
 
 class Switch(NamedTuple):
     """The critical mode changes at ``x`` from ``mode_before`` to ``mode_after`` (m, n), in
-    the order of the grid; (-1, -1) stands for the threshold. At a crossing the two modes
-    are equally critical there: ``value`` = ``value_after``. At a jump (a mode's first
-    critical value appears or vanishes discontinuously, e.g. a new window of instability)
-    they are the one-sided limits of the critical value."""
+    the order of the grid; (-1, -1) stands for the threshold or the short-wave limit.
+    ``kind`` "switch": the two are equally critical there (a crossing), ``value`` =
+    ``value_after``. ``kind`` "end": the branch before ends there without a crossing, either
+    at a jump (a mode's first critical value appears or vanishes discontinuously, e.g. a
+    window of instability closes; ``value`` and ``value_after`` are the one-sided limits of
+    the critical value) or where one side does not wrinkle (the threshold comes first)."""
 
     x: float
     value: float
     mode_before: tuple[int, int]
     mode_after: tuple[int, int]
     value_after: float
+    kind: str = Kind.SWITCH
+
+
+def _change_kind(a: CurvePoint, b: CurvePoint, v_before: float, v_after: float) -> Kind:
+    """ "switch" where the critical value is continuous and both sides wrinkle (a mode or the
+    short-wave limit); otherwise the branch before "end"s."""
+    wrinkles = a.kind in (Kind.BIFURCATION, Kind.SURFACE) and b.kind in (
+        Kind.BIFURCATION,
+        Kind.SURFACE,
+    )
+    equal = abs(v_after - v_before) <= 1e-9 * max(1.0, abs(v_before))
+    return Kind.SWITCH if wrinkles and equal else Kind.END
 
 
 @dataclasses.dataclass(frozen=True)
@@ -142,13 +159,15 @@ def _message(exc: Exception) -> str:
 class Curve:
     """The critical ``solve_for`` along ``along``.
 
-    Rows are the grid points and, at every switch, two rows at the same x: the end of the
-    branch before and the start of the branch after (kind "switch"). ``kind`` is
-    "bifurcation" (mode m, n), "threshold" (m = n = -1: the axisymmetric state is lost
-    first), "surface" (m = n = -1: the exact short-wave limit m, n -> infinity at a face
-    comes first), "switch" or "failed" (value NaN, ``status`` says why). ``surface`` marks
-    the rows of the short-wave limit; ``short_wave_limit`` holds the limit where the scan
-    computed it (NaN elsewhere).
+    Rows are the grid points and, at every located change of the critical mode, two rows at
+    the same x: the end of the branch before and the start of the branch after (kind
+    "switch" at a crossing, "end" where the branch before just ends: see :class:`Switch`).
+    ``kind`` is "bifurcation" (mode m, n), "threshold" (m = n = -1: the axisymmetric state
+    is lost first), "surface" (m = n = -1: the exact short-wave limit m, n -> infinity at a
+    face comes first), "switch", "end" or "failed" (value NaN, ``status`` says why).
+    ``surface`` marks the rows of the short-wave limit; ``short_wave_limit`` holds the limit
+    where the scan computed it (NaN elsewhere). ``switches`` lists the crossings, ``ends``
+    the branch ends that were located.
     """
 
     along: str
@@ -164,6 +183,7 @@ class Curve:
     params: TubeParameters
     surface: np.ndarray
     short_wave_limit: np.ndarray
+    ends: tuple[Switch, ...] = ()
 
     def branches(self) -> list[tuple[tuple[int, int], np.ndarray]]:
         """Maximal runs of rows with one mode ((-1, -1): threshold), failed rows excluded:
@@ -259,17 +279,20 @@ class Curve:
             "status": list(self.status),
             "surface": self.surface.tolist(),
             "short_wave_limit": num(self.short_wave_limit),
-            "switches": [
-                {
-                    "x": s.x,
-                    "value": s.value,
-                    "mode_before": list(s.mode_before),
-                    "mode_after": list(s.mode_after),
-                    "value_after": s.value_after,
-                }
-                for s in self.switches
-            ],
+            "switches": [_change_record(s) for s in self.switches],
+            "ends": [_change_record(s) for s in self.ends],
         }
+
+
+def _change_record(s: Switch) -> dict:
+    return {
+        "x": s.x,
+        "value": s.value,
+        "mode_before": list(s.mode_before),
+        "mode_after": list(s.mode_after),
+        "value_after": s.value_after,
+        "kind": str(s.kind),
+    }
 
 
 def check_curve(solve_for: str, along: str, params=None) -> None:
@@ -421,10 +444,11 @@ def critical_curve(
         modes[:, 1],
         np.array(kinds),
         tuple(status),
-        tuple(switches),
+        tuple(s for s in switches if s.kind == Kind.SWITCH),
         params,
         np.array(surface, dtype=bool),
         np.array(limit, dtype=float),
+        tuple(s for s in switches if s.kind == Kind.END),
     )
 
 
@@ -616,11 +640,12 @@ class _Locator:
                 and self.sense * (check.value - first) < -1e-9 * max(1.0, abs(first))
             ):
                 return self._split(a, check, b, depth)
+        kind = _change_kind(a, b, v_before, v_after)
         rows = [
-            (x, v_before, a.mode, Kind.SWITCH, "", a.surface, math.nan),
-            (x, v_after, b.mode, Kind.SWITCH, "", b.surface, math.nan),
+            (x, v_before, a.mode, kind, "", a.surface, math.nan),
+            (x, v_after, b.mode, kind, "", b.surface, math.nan),
         ]
-        return rows, [Switch(x, v_before, a.mode, b.mode, v_after)]
+        return rows, [Switch(x, v_before, a.mode, b.mode, v_after, kind)]
 
     def _split(self, a, mid, b, depth):
         """Locate the switches on both sides of a scanned point ``mid`` (kept as a row)."""

@@ -109,7 +109,8 @@ def run_critical(args) -> int:
                 _certify_choice(params, crit, result, args, options=scan_options_from_args(args))
             )
     if getattr(args, "scales", None) is not None:
-        record["physical"] = physical_record(record, args.scales)
+        errors = {record.get("solve_for"): record.get("error_estimate")}
+        record["physical"] = physical_record(record, args.scales, errors)
     if args.json:
         print(json.dumps(record))
         return 0

@@ -17,6 +17,7 @@ import numpy as np
 from ..bifurcation.curves import ALONG, check_curve, critical_curve
 from ..errors import ParameterError
 from ..figures.plots import plot_curve
+from ..figures.style import wrapped_title
 from ..model.layers import KEYS_TEXT, Tube
 from ..model.params import TubeParameters
 from ..outcomes import Status
@@ -145,7 +146,7 @@ def run_curve(args) -> int:
     csv = curve.to_csv(args.out / f"{stem}.csv")
     png = args.out / f"{stem}.png"
     ax = plot_curve(curve)
-    ax.set_title(_fixed_text(curve), fontsize=8)
+    wrapped_title(ax, _fixed_text(curve), 8)
     ax.figure.savefig(png, dpi=200)
     if args.json:
         print(json.dumps({**curve.as_dict(), "csv": str(csv), "png": str(png)}))
@@ -198,6 +199,20 @@ def summary(curve) -> list[str]:
         lines.append(
             f"  switch at {curve.along} = {s.x:.12g}, {curve.solve_for}_cr {value}:"
             f" {_mode(s.mode_before)} -> {_mode(s.mode_after)}"
+        )
+    for e in curve.ends:
+        row = (curve.x == e.x) & (curve.kind == "end") & (curve.m == e.mode_after[0])
+        after = None
+        if e.mode_after[0] < 0:
+            after = (
+                f"the short-wave limit from {e.value_after:.12g}"
+                if curve.surface[row].any()
+                else "the threshold (axisymmetric state lost)"
+            )
+        lines.append(
+            f"  branch {_mode(e.mode_before)} ends at {curve.along} = {e.x:.12g},"
+            f" {curve.solve_for}_cr = {e.value:.12g}; then "
+            + (after or f"{_mode(e.mode_after)} from {e.value_after:.12g}")
         )
     failed = [i for i, k in enumerate(curve.kind) if k == Status.FAILED]
     for i in failed:

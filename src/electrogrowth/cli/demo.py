@@ -92,8 +92,8 @@ def _stress_profile(state, out: Path) -> None:
     ):
         ax.plot(prof["r"], prof[key], color=color, label=label)
     ax.axhline(0.0, color="0.6", lw=0.6)
-    ax.set_xlabel("r / R_i")
-    ax.set_ylabel(r"Cauchy stress / $\mu$")
+    ax.set_xlabel(r"current radius $r / R_i$ (–)")
+    ax.set_ylabel(r"Cauchy stress / $\mu$ (–)")
     ax.set_title(
         rf"$\bar R_o$ = {state.params.outer_radius:g}, $\bar V$ ="
         rf" {state.params.voltage:g}, $\lambda_z$ = {state.params.stretch:g}",

@@ -6,10 +6,11 @@ and results are converted back here, once:
 
     Rbar_o = R_o / R_i,    L = length / R_i,    Vbar = V / (R_o - R_i) sqrt(eps / mu),
 
-so the scales of the results are R_i for lengths, mu for stresses and pressures,
-(R_o - R_i) sqrt(mu / eps) for the voltage (V = Vbar times it), sqrt(mu eps) for the
-electric displacement and sqrt(mu / eps) for the electric field. The permittivity is the
-absolute one, eps = eps_r eps_0; a plain number is read as the relative permittivity eps_r.
+so the scales of the results are R_i for lengths, mu for stresses and pressures, mu R_i^2
+for forces (the axial force N), (R_o - R_i) sqrt(mu / eps) for the voltage (V = Vbar times
+it), sqrt(mu eps) for the electric displacement and sqrt(mu / eps) for the electric field.
+The permittivity is the absolute one, eps = eps_r eps_0; a plain number is read as the
+relative permittivity eps_r.
 
 Quantities are ``pint`` quantities or strings such as ``"2 mm"`` (pint is the ``units``
 extra and imported only here, only when a quantity is converted). :class:`Scales` keeps the
@@ -101,6 +102,9 @@ class Scales:
         mu in Pa, the unit of stress and pressure.
     permittivity : float
         eps = eps_r eps_0 in F/m.
+    given_length : float
+        The undeformed length in m, if one was given (0: none was, and none is reported;
+        the non-dimensional L = 1 of a default tube is no length of the user's tube).
 
     Examples
     --------
@@ -115,8 +119,11 @@ class Scales:
     outer_radius: float = math.nan
     shear_modulus: float = math.nan
     permittivity: float = math.nan
+    given_length: float = 0.0
 
     def __post_init__(self):
+        if not (math.isfinite(self.given_length) and self.given_length >= 0):
+            raise ParameterError(f"length = {self.given_length!r} m is out of range; need > 0")
         for name in ("inner_radius", "outer_radius", "shear_modulus", "permittivity"):
             value = float(getattr(self, name))
             if not (math.isnan(value) or (math.isfinite(value) and value > 0)):
@@ -158,6 +165,15 @@ class Scales:
         """A stress or pressure x mu as a pint quantity in ``unit``."""
         self._need("stress", "shear_modulus")
         return registry().Quantity(x * self.shear_modulus, "Pa").to(unit)
+
+    def force(self, x: float, unit: str = "N"):
+        """A force x mu R_i^2 (the axial force N of the base state) as a pint quantity.
+
+        >>> round(Scales(2e-3, 2.8e-3, 1e5).force(-0.25).to("N").magnitude, 12)
+        -0.1
+        """
+        self._need("force", "shear_modulus", "inner_radius")
+        return registry().Quantity(x * self.shear_modulus * self.inner_radius**2, "N").to(unit)
 
     def _need(self, what: str, *names: str) -> None:
         missing = [n for n in names if math.isnan(getattr(self, n))]
@@ -219,7 +235,8 @@ def tube_from_quantities(
         else magnitude(shear_modulus, "shear modulus", "pressure", "Pa")
     )
     eps = math.nan if permittivity is None else absolute_permittivity(permittivity)
-    scales = Scales(r_i, r_o, mu, eps)
+    r_l = 0.0 if length is None else magnitude(length, "length", "length", "m")
+    scales = Scales(r_i, r_o, mu, eps, r_l)
     if isinstance(voltage, (int, float)):
         vbar = voltage
     else:
@@ -227,7 +244,7 @@ def tube_from_quantities(
     fields = {} if material is None else {"material": material}
     tube = TubeParameters(
         outer_radius=r_o / r_i,
-        length=1.0 if length is None else magnitude(length, "length", "length", "m") / r_i,
+        length=1.0 if length is None else r_l / r_i,
         growth=growth,
         stretch=stretch,
         voltage=vbar,
