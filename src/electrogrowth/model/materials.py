@@ -31,6 +31,7 @@ import numpy as np
 import sympy as sp
 
 from ..errors import MaterialError, ParameterError
+from .energy_grammar import parse_energy
 
 I1, I2, I4, I5, I6 = INVARIANTS = sp.symbols("I1 I2 I4 I5 I6", real=True)
 _ORDER = (1, 2, 4, 5, 6)
@@ -184,9 +185,11 @@ class Material:
     ----------
     name : str
         Short label used in output.
-    energy : sympy.Expr
+    energy : sympy.Expr or str
         Omega in the symbols ``I1, I2, I4, I5, I6`` of this module, in units mu = eps = 1
-        (the initial shear modulus and permittivity), zero-stress in the virtual state.
+        (the initial shear modulus and permittivity), zero-stress in the virtual state; or
+        its text, e.g. ``"(I1 - 3)/2 + I5/2"``, read by the grammar of
+        model/energy_grammar.py (never evaluated; docs/security.md).
     check_units : bool, keyword-only
         Refuse (MaterialError) an energy whose reference state (I1 = I2 = 3, D = 0) has a
         shear modulus mu = 2 (Omega_1 + Omega_2) or a permittivity
@@ -198,7 +201,8 @@ class Material:
     Raises
     ------
     MaterialError
-        An expression in other symbols, or (check_units) moduli other than 1, naming which.
+        An expression in other symbols, a text outside the grammar, an energy of another
+        type, or (check_units) moduli other than 1, naming which.
 
     Examples
     --------
@@ -213,12 +217,18 @@ class Material:
     check_units: bool = dataclasses.field(default=True, kw_only=True, compare=False, repr=False)
 
     def __post_init__(self):
-        # Match invariants by name, so sp.Symbol("I1") or a string energy work too.
+        # Text is read by the whitelist grammar, never by sympify (data never executes);
+        # invariants are matched by name, so sp.Symbol("I1") works too.
         names = {str(s): s for s in INVARIANTS}
-        try:
-            expr = sp.sympify(self.energy, locals=names)
-        except (sp.SympifyError, TypeError) as exc:
-            raise MaterialError(f"energy of {self.name!r} is not an expression: {exc}") from None
+        if isinstance(self.energy, str):
+            expr = parse_energy(self.energy)
+        elif isinstance(self.energy, sp.Expr):
+            expr = self.energy
+        else:
+            raise MaterialError(
+                f"energy of {self.name!r} is {type(self.energy).__name__}; give a sympy"
+                ' expression in I1, I2, I4, I5, I6 or its text, e.g. "(I1 - 3)/2 + I5/2"'
+            )
         expr = expr.subs({s: names[str(s)] for s in expr.free_symbols if str(s) in names})
         extra = expr.free_symbols - set(INVARIANTS)
         if extra:
@@ -268,24 +278,48 @@ class Material:
     def _derivs(self, l1, l2, l3, d, *, hessian: bool = True):
         l1, l2, l3, d = np.broadcast_arrays(*(np.asarray(x, float) for x in (l1, l2, l3, d)))
         inv = _invariants(l1, l2, l3, d)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            omega = np.asarray(_energy_value(self.energy)(*inv), dtype=float)
+        omega = self._evaluate(_energy_value, inv)
         if not np.all(np.isfinite(omega)):
-            bad = np.argmax(~np.isfinite(np.broadcast_to(omega, l1.shape)).ravel())
-            raise ParameterError(
-                f"deformation outside the domain of {self.name!r} (I1 = "
-                f"{np.ravel(inv[0])[bad]:.6g}): the energy is not finite there"
-            )
+            self._outside(inv, np.isfinite(np.broadcast_to(omega, l1.shape)), "energy")
         if not hessian:
             w = [
                 np.broadcast_to(np.asarray(x, float), l1.shape)
-                for x in _energy_gradient(self.energy)(*inv)
+                for x in self._evaluate(_energy_gradient, inv)
             ]
+            self._check_finite(inv, w)
             return (l1, l2, l3, d, w, _NO_HESSIAN)
-        w, W = _energy_derivatives(self.energy)(*inv)
+        w, W = self._evaluate(_energy_derivatives, inv)
         w = [np.broadcast_to(np.asarray(x, float), l1.shape) for x in w]
         W = [np.broadcast_to(np.asarray(x, float), l1.shape) for row in W for x in row]
+        self._check_finite(inv, w + W)
         return (l1, l2, l3, d, w, W)
+
+    def _evaluate(self, lambdified, inv):
+        """A lambdified function of the energy at the invariants ``inv``; overflow is
+        reported as a ParameterError by the caller's finiteness check, not as NumPy
+        warnings (or, for an integer too large for a double, an OverflowError)."""
+        try:
+            with np.errstate(all="ignore"):
+                out = lambdified(self.energy)(*inv)
+                return np.asarray(out, dtype=float) if lambdified is _energy_value else out
+        except OverflowError:
+            raise ParameterError(
+                f"the energy {self.name!r} overflows a double at I1 = "
+                f"{float(np.ravel(inv[0])[0]):.6g}"
+            ) from None
+
+    def _check_finite(self, inv, values) -> None:
+        finite = np.logical_and.reduce([np.isfinite(v) for v in values])
+        if not np.all(finite):
+            self._outside(inv, finite, "energy's derivatives")
+
+    def _outside(self, inv, finite, what: str):
+        bad = np.argmax(~np.ravel(finite))
+        raise ParameterError(
+            f"deformation outside the domain of {self.name!r} (I1 = "
+            f"{np.ravel(np.broadcast_to(inv[0], np.shape(finite)))[bad]:.6g}): the {what}"
+            f" {'is' if what == 'energy' else 'are'} not finite there"
+        )
 
     def stress(self, l1, l2, l3, d):
         """Principal tau_i = sigma_ii + p (i = r, theta, z), total (Maxwell included).
