@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 import re
+import stat
 import tomllib
 from collections.abc import Callable
 from pathlib import Path
@@ -12,14 +13,38 @@ from pathlib import Path
 from ..errors import ConfigError
 
 
+#: The largest tube or sweep file read (a real one is a few hundred bytes).
+MAX_FILE_BYTES = 1_000_000
+
+
 def read_text(path: str | Path, what: str) -> str:
-    """The UTF-8 text of ``path``; ConfigError if it cannot be read (``what``: "tube file")."""
+    """The UTF-8 text of ``path``; ConfigError if it cannot be read (``what``: "tube file").
+
+    Only a regular file of at most :data:`MAX_FILE_BYTES` is read: a path naming a
+    directory, a device (``/dev/zero`` never ends) or a pipe is refused before reading.
+    """
+    path = Path(path)
     try:
-        return Path(path).read_text(encoding="utf-8")
+        info = path.stat()
+        if not stat.S_ISREG(info.st_mode):
+            kind = "a directory" if stat.S_ISDIR(info.st_mode) else "not a regular file"
+            raise ConfigError((), f"the {what} is {kind}; give a TOML file", source=str(path))
+        if info.st_size > MAX_FILE_BYTES:
+            raise ConfigError(
+                (),
+                f"the {what} has {info.st_size} bytes, more than the limit {MAX_FILE_BYTES}",
+                source=str(path),
+            )
+        with path.open("rb") as fh:
+            data = fh.read(MAX_FILE_BYTES + 1)  # the file may have grown since stat
     except OSError as exc:
         raise ConfigError(
             (), f"cannot read the {what}: {exc.strerror}", source=str(path)
         ) from None
+    if len(data) > MAX_FILE_BYTES:
+        raise ConfigError((), f"the {what} grew beyond {MAX_FILE_BYTES} bytes", source=str(path))
+    try:
+        return data.decode("utf-8").replace("\r\n", "\n").replace("\r", "\n")  # as read_text
     except UnicodeDecodeError:
         raise ConfigError((), f"the {what} is not UTF-8 text", source=str(path)) from None
 
