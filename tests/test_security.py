@@ -431,6 +431,31 @@ def test_tampered_store_is_refused_everywhere(text, layered, tmp_path, empty_cwd
     assert _files(tmp_path) == before  # nothing written, not even the plot folder
 
 
+@pytest.mark.parametrize(
+    "stored",
+    [
+        "[" * 100_000 + "]" * 100_000,
+        "not json",
+        json.dumps({"material": {"energy": ["I1"]}}),
+        json.dumps([1, 2]),
+        json.dumps("__import__('os').system('touch X')"),
+    ],
+    ids=["deep", "not-json", "energy-list", "list", "string"],
+)
+def test_store_with_a_malformed_configuration_is_one_line(stored, tmp_path, empty_cwd):
+    from electrogrowth.errors import SweepError
+    from electrogrowth.sweep.store import open_results
+
+    store = _store(tmp_path, SWEEP.format(energy=json.dumps(NH)))
+    meta = store / "zarr.json"
+    root = json.loads(meta.read_text())
+    root["attributes"]["sweep_config"] = stored
+    meta.write_text(json.dumps(root))
+    with pytest.raises(SweepError, match="unreadable sweep configuration") as exc:
+        open_results(store)
+    _one_line(exc)
+
+
 def test_nothing_in_the_package_evaluates_or_unpickles():
     """No call of eval, exec, compile, sympify, parse_expr, literal_eval or a pickle load,
     and no allow_pickle, anywhere in the package's source (lambdify's own code generation

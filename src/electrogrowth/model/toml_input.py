@@ -12,7 +12,6 @@ from pathlib import Path
 
 from ..errors import ConfigError
 
-
 #: The largest tube or sweep file read (a real one is a few hundred bytes).
 MAX_FILE_BYTES = 1_000_000
 

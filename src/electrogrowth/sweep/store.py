@@ -239,9 +239,9 @@ def read_config(path: str | Path) -> SweepConfig:
             f"{path} is not an electrogrowth sweep store"
             f"{' (it exists: choose another --out)' if path.exists() else ''}"
         )
-    try:
-        return SweepConfig.from_dict(json.loads(text))
-    except (KeyError, TypeError, ValueError) as exc:
+    try:  # JSON, and a SweepConfig validates itself: its energy and tube texts are parsed
+        return SweepConfig.from_dict(json.loads(text))  # by the whitelist grammars, never run
+    except (KeyError, TypeError, ValueError, AttributeError, RecursionError) as exc:
         raise SweepError(f"{path} holds an unreadable sweep configuration: {exc}") from None
 
 
