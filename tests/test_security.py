@@ -541,3 +541,27 @@ def test_a_sweep_writes_only_its_out_store(tmp_path, empty_cwd, capsys):
     ds = open_results(out)
     assert str(ds["status"].values.ravel()[0]) == "ok"
     assert math.isfinite(float(ds["critical_value"].values.ravel()[0]))
+
+
+@pytest.mark.parametrize(
+    ("text", "ideal"),
+    [
+        (NH, True),
+        ("-48.6*log(1 - (I1 - 3)/97.2) + I5/2", True),
+        (f"{NH} + I6/10 - I5/10", False),
+        (f"{NH} + cosh(I4)**2 - sinh(I4)**2 - 1", True),  # zero only after simplify
+        (f"{NH} + (I4 + I6)**2*exp(I1 - 3)", False),
+    ],
+)
+def test_ideal_dielectric_check(text, ideal):
+    assert Material("x", text).is_ideal_dielectric() is ideal
+
+
+def test_ideal_dielectric_check_of_a_long_energy_is_fast():
+    """A 1000-character energy from a file: simplify took 20 s to say it is not ideal; a
+    derivative that is clearly non-zero at a sample point says it at once."""
+    term = "1e-3*(sinh(exp(I1/10 + I2/10)/3 + 1) - sinh(exp(3/5)/3 + 1))*(I4 + I6)**2"
+    mat = Material("x", " + ".join([NH] + [term.replace("10", str(10 + k)) for k in range(12)]))
+    start = time.perf_counter()
+    assert not mat.is_ideal_dielectric()
+    assert time.perf_counter() - start < 3.0
