@@ -565,3 +565,33 @@ def test_ideal_dielectric_check_of_a_long_energy_is_fast():
     start = time.perf_counter()
     assert not mat.is_ideal_dielectric()
     assert time.perf_counter() - start < 3.0
+
+
+# -- quantities on the command line ---------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["2.8 mm*9**9**9", "2.8 mm**9**9", "2.8 mm + __import__('os')", "2.8 mm; ls", "2.8 mm" * 30],
+)
+def test_quantity_text_outside_its_grammar_is_refused_before_pint(text, empty_cwd, capsys):
+    """pint evaluates arithmetic: `--outer-radius "2.8 mm*9**9**9"` ran forever."""
+    pytest.importorskip("pint")
+    start = time.perf_counter()
+    argv = ["state", "--inner-radius", "2mm", "--outer-radius", text]
+    _cli_refuses(argv, capsys, "--outer-radius = ", "is not a quantity")
+    assert time.perf_counter() - start < 1.0
+
+
+@pytest.mark.parametrize(
+    ("text", "si"),
+    [("2.8 mm", 2.8e-3), ("2.8mm", 2.8e-3), ("0.28 cm", 2.8e-3), ("1e-3 km", 1.0)],
+)
+def test_quantity_text_in_the_grammar_is_read(text, si):
+    pytest.importorskip("pint")
+    from electrogrowth.model.units import magnitude
+
+    assert magnitude(text, "outer radius", "length", "m") == pytest.approx(si, rel=1e-12)
+    assert magnitude("4.16e-11 F/m", "eps", "permittivity", "F/m") == pytest.approx(4.16e-11)
+    assert magnitude("3 N/m^2", "p", "pressure", "Pa") == pytest.approx(3.0)
+    assert magnitude("3 N * m**-2", "p", "pressure", "Pa") == pytest.approx(3.0)
