@@ -595,3 +595,49 @@ def test_quantity_text_in_the_grammar_is_read(text, si):
     assert magnitude("4.16e-11 F/m", "eps", "permittivity", "F/m") == pytest.approx(4.16e-11)
     assert magnitude("3 N/m^2", "p", "pressure", "Pa") == pytest.approx(3.0)
     assert magnitude("3 N * m**-2", "p", "pressure", "Pa") == pytest.approx(3.0)
+
+
+# -- numbers and sizes in TOML files --------------------------------------------------------
+
+TUBE_TOP = "[[layers]]\nouter_radius = 1.4\n"
+
+
+@pytest.mark.parametrize(
+    ("text", "needle"),
+    [
+        ("length = " + "1" * 5000 + "\n" + TUBE_TOP, "an integer of more than 4300 digits"),
+        ("length = " + "1" * 400 + "\n" + TUBE_TOP, "length: 1111"),
+        (TUBE_TOP + "growth = [" + "1" * 400 + ", 1, 1]\n", "layers.1.growth: 1111"),
+        ("length = " + "[" * 100_000 + "]" * 100_000 + "\n", "nested too deeply"),
+        ("length = '" + "x" * 10_000 + "'\n" + TUBE_TOP, "length: expected a number"),
+    ],
+    ids=["5000-digits", "400-digits", "400-digit-growth", "deep", "long-string"],
+)
+def test_tube_file_numbers_beyond_doubles_are_one_line(text, needle, tmp_path, capsys):
+    """These were "internal error: OverflowError/ValueError/RecursionError"."""
+    path = tmp_path / "t.toml"
+    path.write_text(text)
+    err = _cli_refuses(["state", "--tube", str(path)], capsys, needle)
+    assert len(err) < 400, err  # a huge value is shortened
+
+
+@pytest.mark.parametrize(
+    ("grid", "needle"),
+    [
+        ("voltage = {start = 0.0, stop = 1.0, num = 1000000000000}", "need 1 <= num <= 1000000"),
+        ("voltage = [0.0, " + "1" * 400 + "]", "is not a finite number"),
+        (
+            "voltage = {start = 0.0, stop = 0.1, num = 10000}\n"
+            "length = {start = 1.0, stop = 2.0, num = 10000}",
+            "1e+08 grid points, more than the limit 1e+07",
+        ),
+    ],
+)
+def test_sweep_grid_beyond_the_limits_is_refused_at_once(grid, needle, tmp_path, capsys):
+    """num = 1e12 would have allocated 8 TB before any check."""
+    text = SWEEP.format(energy=json.dumps(NH)).replace("voltage = [0.0]", grid)
+    path = tmp_path / "s.toml"
+    path.write_text(text)
+    start = time.perf_counter()
+    _cli_refuses(["sweep", str(path), "--check"], capsys, needle)
+    assert time.perf_counter() - start < 2.0

@@ -53,7 +53,13 @@ def parse(text: str, source: str, build: Callable, line_of: Callable):
     ``source`` and the line ``line_of(text, key)`` of the offending key."""
     try:
         raw = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
+    except RecursionError:
+        raise ConfigError((), "invalid TOML: nested too deeply", source=source) from None
+    except ValueError as exc:
+        if not isinstance(exc, tomllib.TOMLDecodeError):  # Python's limit on int("...")
+            raise ConfigError(
+                (), "invalid TOML: an integer of more than 4300 digits", source=source
+            ) from None
         msg = str(exc)
         hit = re.search(r"\(at line (\d+), column \d+\)", msg)
         line = int(hit.group(1)) if hit else text.count("\n") + 1
@@ -85,10 +91,20 @@ def typename(v) -> str:
 def finite(v, path: tuple) -> float:
     """``v`` as a finite float, or ConfigError at the key ``path``."""
     if isinstance(v, bool) or not isinstance(v, (int, float)):
-        raise ConfigError(path, f"expected a number, got {typename(v)} {v!r}")
-    if not math.isfinite(v):
-        raise ConfigError(path, f"{v!r} is not a finite number")
-    return float(v)
+        raise ConfigError(path, f"expected a number, got {typename(v)} {shown(v)}")
+    try:
+        value = float(v)
+    except OverflowError:  # an integer beyond the largest double
+        value = math.inf
+    if not math.isfinite(value):
+        raise ConfigError(path, f"{shown(v)} is not a finite number (largest double 1.8e308)")
+    return value
+
+
+def shown(v, limit: int = 60) -> str:
+    """``repr(v)`` cut to ``limit`` characters, for an error message."""
+    text = repr(v)
+    return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
 def number(table: dict, where: tuple, key: str) -> float:
