@@ -641,3 +641,60 @@ def test_sweep_grid_beyond_the_limits_is_refused_at_once(grid, needle, tmp_path,
     start = time.perf_counter()
     _cli_refuses(["sweep", str(path), "--check"], capsys, needle)
     assert time.perf_counter() - start < 2.0
+
+
+# -- what a store's arrays can do ------------------------------------------------------------
+
+
+class _Payload:
+    """Unpickling this creates the file X in the working directory."""
+
+    def __reduce__(self):
+        import os
+
+        return (os.system, ("touch X",))
+
+
+def test_store_with_a_pickled_array_is_refused_and_runs_nothing(tmp_path, empty_cwd, capsys):
+    """A Zarr v2 store whose object array declares the pickle codec: the package opens only
+    v3 stores (which it writes), and zarr itself refuses the pickle dtype; neither unpickles."""
+    import pickle
+
+    import numpy as np
+
+    from electrogrowth.errors import SweepError
+    from electrogrowth.sweep.store import _coordinates, open_results
+
+    config = parse_config(SWEEP.format(energy=json.dumps(NH)))
+    ds = _coordinates(config, "")
+    ds["status"] = ("voltage", np.array(["ok"], dtype=object))
+    store = tmp_path / "v2.zarr"
+    ds.to_zarr(store, zarr_format=2, mode="w")
+    meta_path = store / "status" / ".zarray"
+    meta = json.loads(meta_path.read_text())
+    meta.update(filters=[{"id": "pickle"}], compressor=None)
+    meta_path.write_text(json.dumps(meta))
+    payload = np.empty(1, dtype=object)
+    payload[0] = _Payload()
+    (store / "status" / "0").write_bytes(pickle.dumps(payload))
+    with pytest.raises(SweepError) as exc:
+        open_results(store)
+    _one_line(exc)
+    _cli_refuses(["plot", str(store), "--out", str(tmp_path / "plots")], capsys, "v2.zarr")
+    assert not (tmp_path / "plots").exists()
+
+
+def test_store_with_a_damaged_chunk_is_one_line(tmp_path, empty_cwd, capsys):
+    """A chunk file that is not what its codecs say: "cannot be read", exit 2 (it was an
+    internal error)."""
+    from electrogrowth.errors import SweepError
+    from electrogrowth.sweep.store import open_results
+
+    store = _store(tmp_path, SWEEP.format(energy=json.dumps(NH)))
+    chunk = store / "status" / "c" / "0"
+    chunk.parent.mkdir(parents=True)
+    chunk.write_bytes(b"\x00garbage" * 10)
+    with pytest.raises(SweepError, match="s.zarr cannot be read") as exc:
+        open_results(store)
+    _one_line(exc)
+    _cli_refuses(["plot", str(store), "--out", str(tmp_path / "plots")], capsys, "cannot be read")
