@@ -146,6 +146,7 @@ def test_bad_text_is_refused_in_one_line_and_runs_nothing(text, empty_cwd):
         ("-" * 60 + "I1", f"nested deeper than the limit of {MAX_DEPTH} levels"),
         ("I1+" * 301 + "I1", "more than the limit of 300 operations"),
         ("0*9**9**9", "a power of size about e^8.51e+08"),
+        ("0.5**2000*I1", "a power of size about e^-1.39e+03"),
         ("1e999999*0", "the number 1e999999 is beyond the largest double 1.8e308"),
         ("1e-999999*I1", "below the smallest double"),
         ("**".join(["I1"] * 41), "a power of size about e^"),

@@ -37,6 +37,7 @@ import re
 import sympy as sp
 
 from ..errors import MaterialError
+from .energy_sizes import as_float, log_height, log_size, undeformed_value
 
 MAX_LENGTH = 2000
 MAX_DEPTH = 50
@@ -46,9 +47,8 @@ MAX_LOG = 700.0  # e^709.8 is the largest double
 MAX_EXPONENT = 100.0
 
 #: The invariants, equal to model/materials.py's symbols (sympy symbols are equal by name
-#: and assumptions), at their values in the undeformed, unloaded state.
+#: and assumptions).
 SYMBOLS = {name: sp.Symbol(name, real=True) for name in ("I1", "I2", "I4", "I5", "I6")}
-UNDEFORMED = {"I1": 3.0, "I2": 3.0, "I4": 0.0, "I5": 0.0, "I6": 0.0}
 FUNCTIONS = {
     "log": sp.log,
     "exp": sp.exp,
@@ -313,7 +313,7 @@ class _Parser:
         finite); never evaluates sympy numbers exactly."""
         if expr in self.values:
             return self.values[expr]
-        value = _float_value(expr, self.value)
+        value = undeformed_value(expr, self.value)
         self.values[expr] = value
         return value
 
@@ -329,18 +329,18 @@ class _Parser:
         e = self.value(exponent)
         if not math.isfinite(e):
             self.fail("an exponent that is not finite at the undeformed state", pos)
-        sizes = [_log_height(base) if base.is_Rational else _log_size(self.value(base))]
+        sizes = [log_height(base) if base.is_Rational else log_size(self.value(base))]
         if exponent.is_Number:  # sympy distributes (c x)**k into c**k x**k
             coefficient = base.as_coeff_Mul()[0]
             if coefficient.is_Rational and coefficient != 0:
-                sizes.append(_log_height(coefficient))
+                sizes.append(log_height(coefficient))
         for size in sizes:
             if size is None:
                 self.fail("a power whose base is not finite at the undeformed state", pos)
-            if abs(e) * size > MAX_LOG:
+            if abs(e * size) > MAX_LOG:
                 self.fail(
                     f"a power of size about e^{e * size:.3g} at the undeformed state, beyond"
-                    f" the largest double 1.8e308 (e^{MAX_LOG:g})",
+                    f" the range of doubles (e^-{MAX_LOG:g} to e^{MAX_LOG:g}, 1.8e308)",
                     pos,
                 )
 
@@ -349,80 +349,8 @@ class _Parser:
         and lambdify read them as such)."""
         for number in expr.atoms(sp.Number):
             if number.is_Rational:
-                too_big = _log_height(number) > 709.0
+                too_big = log_height(number) > 709.0
             else:
-                too_big = not math.isfinite(_float(number))
+                too_big = not math.isfinite(as_float(number))
             if too_big:
                 self.fail("the numbers combine into one beyond the largest double 1.8e308")
-
-
-def _float(number) -> float:
-    try:
-        return float(number)
-    except (OverflowError, TypeError):
-        return math.inf
-
-
-def _log_height(rational) -> float:
-    """ln max(|p|, |q|) of the rational p/q: the size of the exact numbers sympy computes
-    when it raises it to a power."""
-    p, q = abs(int(rational.p)), int(rational.q)
-    return max(_log_int(p), _log_int(q))
-
-
-def _log_int(n: int) -> float:
-    if n == 0:
-        return 0.0
-    bits = n.bit_length()
-    if bits < 1000:
-        return math.log(n)
-    return math.log(n >> (bits - 53)) + (bits - 53) * math.log(2)
-
-
-def _log_size(value: float) -> float | None:
-    """|ln |value||, 0 for 0 (0**e needs no big number), None if not finite."""
-    if not math.isfinite(value):
-        return None
-    return 0.0 if value == 0 else abs(math.log(abs(value)))
-
-
-_MATH = {
-    sp.log: lambda x: math.log(x) if x > 0 else (-math.inf if x == 0 else math.nan),
-    sp.exp: math.exp,
-    sp.tanh: math.tanh,
-    sp.atan: math.atan,
-    sp.cosh: math.cosh,
-    sp.sinh: math.sinh,
-}
-
-
-def _float_value(expr, value) -> float:
-    """One node of :meth:`_Parser.value` (``value`` evaluates the children)."""
-    try:
-        if expr.is_Symbol:
-            return UNDEFORMED[expr.name]
-        if expr.is_Number or expr in (sp.pi, sp.E):
-            return _float(expr) if expr.is_finite else math.nan
-        args = [value(a) for a in expr.args]
-        if expr.is_Add:
-            return math.fsum(args) if all(map(math.isfinite, args)) else sum(args)
-        if expr.is_Mul:
-            return math.prod(args)
-        if expr.is_Pow:
-            return _pow(*args)
-        return _MATH[expr.func](*args)
-    except OverflowError:
-        return math.inf
-    except (ValueError, ZeroDivisionError, KeyError, TypeError):
-        return math.nan
-
-
-def _pow(base: float, exponent: float) -> float:
-    if base == 0 and exponent < 0:
-        return math.inf
-    try:
-        return math.pow(base, exponent)
-    except OverflowError:
-        return math.inf
-    except ValueError:  # a negative base to a fractional power: not real
-        return math.nan
