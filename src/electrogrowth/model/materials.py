@@ -166,6 +166,15 @@ def reference_moduli(energy: sp.Expr) -> tuple[float, float]:
     return mu, (1.0 / e if e != 0 else math.inf)
 
 
+def _all_finite(values) -> bool:
+    """Every entry of every value finite (a lambdified function returns plain numbers for
+    constant derivatives, arrays for the others)."""
+    return all(
+        math.isfinite(v) if isinstance(v, (int, float)) else bool(np.isfinite(v).all())
+        for v in values
+    )
+
+
 def _invariants(l1, l2, l3, d):
     dt2 = (d / l1) ** 2
     return (
@@ -278,47 +287,46 @@ class Material:
     def _derivs(self, l1, l2, l3, d, *, hessian: bool = True):
         l1, l2, l3, d = np.broadcast_arrays(*(np.asarray(x, float) for x in (l1, l2, l3, d)))
         inv = _invariants(l1, l2, l3, d)
-        omega = self._evaluate(_energy_value, inv)
-        if not np.all(np.isfinite(omega)):
-            self._outside(inv, np.isfinite(np.broadcast_to(omega, l1.shape)), "energy")
-        if not hessian:
-            w = [
-                np.broadcast_to(np.asarray(x, float), l1.shape)
-                for x in self._evaluate(_energy_gradient, inv)
-            ]
-            self._check_finite(inv, w)
-            return (l1, l2, l3, d, w, _NO_HESSIAN)
-        w, W = self._evaluate(_energy_derivatives, inv)
+        # Overflow is reported below as one ParameterError, not as NumPy warnings.
+        with np.errstate(all="ignore"):
+            omega = np.asarray(self._evaluate(_energy_value, inv), dtype=float)
+            if not _all_finite([omega]):
+                self._outside(inv, [omega], "energy")
+            if not hessian:
+                w = self._evaluate(_energy_gradient, inv)
+                W = []
+            else:
+                w, W = self._evaluate(_energy_derivatives, inv)
+                W = [x for row in W for x in row]
+        if not _all_finite(w) or not _all_finite(W):
+            self._outside(inv, [*w, *W], "energy's derivatives")
         w = [np.broadcast_to(np.asarray(x, float), l1.shape) for x in w]
-        W = [np.broadcast_to(np.asarray(x, float), l1.shape) for row in W for x in row]
-        self._check_finite(inv, w + W)
+        if not hessian:
+            return (l1, l2, l3, d, w, _NO_HESSIAN)
+        W = [np.broadcast_to(np.asarray(x, float), l1.shape) for x in W]
         return (l1, l2, l3, d, w, W)
 
     def _evaluate(self, lambdified, inv):
-        """A lambdified function of the energy at the invariants ``inv``; overflow is
-        reported as a ParameterError by the caller's finiteness check, not as NumPy
-        warnings (or, for an integer too large for a double, an OverflowError)."""
+        """A lambdified function of the energy at the invariants ``inv``; an integer too
+        large for a double in it is a ParameterError, not an OverflowError."""
         try:
-            with np.errstate(all="ignore"):
-                out = lambdified(self.energy)(*inv)
-                return np.asarray(out, dtype=float) if lambdified is _energy_value else out
+            return lambdified(self.energy)(*inv)
         except OverflowError:
             raise ParameterError(
                 f"the energy {shorten(self.name)!r} overflows a double at I1 = "
                 f"{float(np.ravel(inv[0])[0]):.6g}"
             ) from None
 
-    def _check_finite(self, inv, values) -> None:
-        finite = np.logical_and.reduce([np.isfinite(v) for v in values])
-        if not np.all(finite):
-            self._outside(inv, finite, "energy's derivatives")
-
-    def _outside(self, inv, finite, what: str):
-        bad = np.argmax(~np.ravel(finite))
+    def _outside(self, inv, values, what: str):
+        """ParameterError at the first point where one of ``values`` is not finite."""
+        shape = np.broadcast_shapes(*(np.shape(v) for v in [inv[0], *values]))
+        finite = np.logical_and.reduce(
+            [np.broadcast_to(np.isfinite(v), shape) for v in values], axis=0
+        )
+        at = np.ravel(np.broadcast_to(inv[0], shape))[np.argmax(~np.ravel(finite))]
         raise ParameterError(
-            f"deformation outside the domain of {shorten(self.name)!r} (I1 = "
-            f"{np.ravel(np.broadcast_to(inv[0], np.shape(finite)))[bad]:.6g}): the {what}"
-            f" {'is' if what == 'energy' else 'are'} not finite there"
+            f"deformation outside the domain of {shorten(self.name)!r} (I1 = {at:.6g}): the"
+            f" {what} {'is' if what == 'energy' else 'are'} not finite there"
         )
 
     def stress(self, l1, l2, l3, d):
