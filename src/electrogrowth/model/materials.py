@@ -38,6 +38,7 @@ import sympy as sp
 
 from ..errors import MaterialError, ParameterError
 from . import _chain_rule
+from .energy_grammar import parse_energy, shorten
 
 I1, I2, I4, I5, I6 = INVARIANTS = sp.symbols("I1 I2 I4 I5 I6", real=True)
 _ORDER = (1, 2, 4, 5, 6)
@@ -127,6 +128,15 @@ def _nonzero_at_witness(expr: sp.Expr) -> bool:
     return value.imag == 0 and math.isfinite(value.real) and abs(value.real) > 1e-12
 
 
+def _all_finite(values) -> bool:
+    """Every entry of every value finite (a lambdified function returns plain numbers for
+    constant derivatives, arrays for the others)."""
+    return all(
+        math.isfinite(v) if isinstance(v, (int, float)) else bool(np.isfinite(v).all())
+        for v in values
+    )
+
+
 def _invariants(l1, l2, l3, d):
     dt2 = (d / l1) ** 2
     return (
@@ -146,9 +156,11 @@ class Material:
     ----------
     name : str
         Short label used in output.
-    energy : sympy.Expr
+    energy : sympy.Expr or str
         Omega in the symbols ``I1, I2, I4, I5, I6`` of this module, in units mu = eps = 1
-        (the initial shear modulus and permittivity), zero-stress in the virtual state.
+        (the initial shear modulus and permittivity), zero-stress in the virtual state; or
+        its text, e.g. ``"(I1 - 3)/2 + I5/2"``, read by the grammar of
+        model/energy_grammar.py (never evaluated; docs/security.md).
     check_units : bool, keyword-only
         Refuse (MaterialError) an energy whose reference state (I1 = I2 = 3, D = 0) has a
         shear modulus mu = 2 (Omega_1 + Omega_2) or a permittivity
@@ -160,7 +172,8 @@ class Material:
     Raises
     ------
     MaterialError
-        An expression in other symbols, or (check_units) moduli other than 1, naming which.
+        An expression in other symbols, a text outside the grammar, an energy of another
+        type, or (check_units) moduli other than 1, naming which.
 
     Examples
     --------
@@ -175,17 +188,23 @@ class Material:
     check_units: bool = dataclasses.field(default=True, kw_only=True, compare=False, repr=False)
 
     def __post_init__(self):
-        # Match invariants by name, so sp.Symbol("I1") or a string energy work too.
+        # Text is read by the whitelist grammar, never by sympify (data never executes);
+        # invariants are matched by name, so sp.Symbol("I1") works too.
         names = {str(s): s for s in INVARIANTS}
-        try:
-            expr = sp.sympify(self.energy, locals=names)
-        except (sp.SympifyError, TypeError) as exc:
-            raise MaterialError(f"energy of {self.name!r} is not an expression: {exc}") from None
+        if isinstance(self.energy, str):
+            expr = parse_energy(self.energy)
+        elif isinstance(self.energy, sp.Expr):
+            expr = self.energy
+        else:
+            raise MaterialError(
+                f"energy of {shorten(self.name)!r} is {type(self.energy).__name__}; give a sympy"
+                ' expression in I1, I2, I4, I5, I6 or its text, e.g. "(I1 - 3)/2 + I5/2"'
+            )
         expr = expr.subs({s: names[str(s)] for s in expr.free_symbols if str(s) in names})
         extra = expr.free_symbols - set(INVARIANTS)
         if extra:
             raise MaterialError(
-                f"energy of {self.name!r} has unknown symbols {sorted(map(str, extra))};"
+                f"energy of {shorten(self.name)!r} has unknown symbols {sorted(map(str, extra))};"
                 " use only I1, I2, I4, I5, I6 with parameters substituted"
             )
         object.__setattr__(self, "energy", expr)
@@ -197,8 +216,8 @@ class Material:
             ):
                 if not abs(value - 1.0) <= 1e-12:
                     raise MaterialError(
-                        f"energy of {self.name!r} has {what} = {value:.12g} in the reference"
-                        f" state, not 1: every result is in units mu = eps = 1, so {why}"
+                        f"energy of {shorten(self.name)!r} has {what} = {value:.12g} in the"
+                        f" reference state, not 1: every result is in units mu = eps = 1, so {why}"
                         " would be in the wrong units; rescale it, or build it with"
                         " Material.normalized(name, energy)"
                     )
@@ -218,7 +237,7 @@ class Material:
         for what, value in (("shear modulus", mu), ("permittivity", eps)):
             if not (math.isfinite(value) and value > 0):
                 raise MaterialError(
-                    f"energy of {name!r} has {what} {value:.6g} in the reference state;"
+                    f"energy of {shorten(name)!r} has {what} {value:.6g} in the reference state;"
                     " need a finite positive value to rescale to it"
                 )
         at = {I1: 3, I2: 3, I4: 0, I5: 0, I6: 0}  # the same values, kept exact for sympy
@@ -230,24 +249,47 @@ class Material:
     def _derivs(self, l1, l2, l3, d, *, hessian: bool = True):
         l1, l2, l3, d = np.broadcast_arrays(*(np.asarray(x, float) for x in (l1, l2, l3, d)))
         inv = _invariants(l1, l2, l3, d)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            omega = np.asarray(_energy_value(self.energy)(*inv), dtype=float)
-        if not np.all(np.isfinite(omega)):
-            bad = np.argmax(~np.isfinite(np.broadcast_to(omega, l1.shape)).ravel())
-            raise ParameterError(
-                f"deformation outside the domain of {self.name!r} (I1 = "
-                f"{np.ravel(inv[0])[bad]:.6g}): the energy is not finite there"
-            )
-        if not hessian:
-            w = [
-                np.broadcast_to(np.asarray(x, float), l1.shape)
-                for x in _energy_gradient(self.energy)(*inv)
-            ]
-            return (l1, l2, l3, d, w, _NO_HESSIAN)
-        w, W = _energy_derivatives(self.energy)(*inv)
+        # Overflow is reported below as one ParameterError, not as NumPy warnings.
+        with np.errstate(all="ignore"):
+            omega = np.asarray(self._evaluate(_energy_value, inv), dtype=float)
+            if not _all_finite([omega]):
+                self._outside(inv, [omega], "energy")
+            if not hessian:
+                w = self._evaluate(_energy_gradient, inv)
+                W = []
+            else:
+                w, W = self._evaluate(_energy_derivatives, inv)
+                W = [x for row in W for x in row]
+        if not _all_finite(w) or not _all_finite(W):
+            self._outside(inv, [*w, *W], "energy's derivatives")
         w = [np.broadcast_to(np.asarray(x, float), l1.shape) for x in w]
-        W = [np.broadcast_to(np.asarray(x, float), l1.shape) for row in W for x in row]
+        if not hessian:
+            return (l1, l2, l3, d, w, _NO_HESSIAN)
+        W = [np.broadcast_to(np.asarray(x, float), l1.shape) for x in W]
         return (l1, l2, l3, d, w, W)
+
+    def _evaluate(self, lambdified, inv):
+        """A lambdified function of the energy at the invariants ``inv``; an integer too
+        large for a double in it is a ParameterError, not an OverflowError."""
+        try:
+            return lambdified(self.energy)(*inv)
+        except OverflowError:
+            raise ParameterError(
+                f"the energy {shorten(self.name)!r} overflows a double at I1 = "
+                f"{float(np.ravel(inv[0])[0]):.6g}"
+            ) from None
+
+    def _outside(self, inv, values, what: str):
+        """ParameterError at the first point where one of ``values`` is not finite."""
+        shape = np.broadcast_shapes(*(np.shape(v) for v in [inv[0], *values]))
+        finite = np.logical_and.reduce(
+            [np.broadcast_to(np.isfinite(v), shape) for v in values], axis=0
+        )
+        at = np.ravel(np.broadcast_to(inv[0], shape))[np.argmax(~np.ravel(finite))]
+        raise ParameterError(
+            f"deformation outside the domain of {shorten(self.name)!r} (I1 = {at:.6g}): the"
+            f" {what} {'is' if what == 'energy' else 'are'} not finite there"
+        )
 
     def stress(self, l1, l2, l3, d):
         """Principal tau_i = sigma_ii + p (i = r, theta, z), total (Maxwell included).

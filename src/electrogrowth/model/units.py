@@ -22,6 +22,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
+import re
 
 from ..errors import MissingDependencyError, ParameterError
 from .materials import Material
@@ -29,6 +30,15 @@ from .params import TubeParameters
 
 #: The vacuum permittivity eps_0 in F/m (CODATA 2018).
 EPSILON_0 = 8.8541878128e-12
+
+#: A quantity's text: a number, then units multiplied, divided or raised to a one-digit
+#: power ("2 mm", "4.16e-11 F/m", "3 N/m^2"). Checked before pint reads it: pint evaluates
+#: arithmetic, so "2 m*9**9**9" ran forever (docs/security.md).
+_UNIT = r"[^\W\d]+(?:\s*(?:\*\*|\^)\s*-?\d)?"
+_QUANTITY_TEXT = re.compile(
+    rf"\s*[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+    rf"(?:\s*{_UNIT}(?:\s*[*/]\s*{_UNIT}|\s+{_UNIT})*)?\s*"
+)
 
 
 @functools.lru_cache(maxsize=1)
@@ -49,6 +59,11 @@ def magnitude(value, name: str, kind: str, unit: str, *, zero: bool = False) -> 
     ParameterError names the value when it is no quantity, has no unit or is not a ``kind``
     (a word: "length", "pressure", ...) of the dimension of ``unit``, or is not positive
     (or zero, with ``zero``)."""
+    if isinstance(value, str) and not (len(value) <= 100 and _QUANTITY_TEXT.fullmatch(value)):
+        raise ParameterError(
+            f"{name} = {value[:100]!r} is not a quantity: write a number and its unit, e.g."
+            f" '2 {unit}' (units may be multiplied, divided and raised to a one-digit power)"
+        )
     ureg = registry()
     try:
         q = ureg.Quantity(value) if isinstance(value, str) else value

@@ -46,6 +46,9 @@ from .unit import ScanSpec
 
 #: The TubeParameters fields a sweep can fix or vary.
 SWEEPABLE = ("outer_radius", "length", "growth", "stretch", "voltage")
+#: The most grid points of one sweep: 1e7 points are days of a large cluster, and the store's
+#: completion marks of a larger grid are read whole into memory (docs/security.md).
+MAX_POINTS = 10_000_000
 
 
 @dataclasses.dataclass(frozen=True)
@@ -234,6 +237,11 @@ def _check_run(c: SweepConfig) -> None:
         )
     if c.chunk < 1:
         raise ConfigError(("run", "chunk"), f"chunk = {c.chunk} is invalid; need >= 1")
+    if c.size > MAX_POINTS:
+        raise ConfigError(
+            ("grid",),
+            f"{c.size:.3g} grid points, more than the limit {MAX_POINTS:.0e}; split the sweep",
+        )
 
 
 def _fixed_tube(c: SweepConfig) -> Tube:
