@@ -19,7 +19,7 @@ if TYPE_CHECKING:
 
 # The mode, scan and method options import bifurcation.scan and incremental.targets inside
 # their functions (an exception to docs/architecture.md's rule, for start-up speed): those
-# modules load numba and the compiled kernels (~0.4 s of CPU per process), which `state`
+# modules import numba for the compiled kernels (~0.35 s of CPU per process), which `state`
 # and the tube options every command shares do not need.
 
 
