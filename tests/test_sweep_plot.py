@@ -184,3 +184,17 @@ def test_a_tube_unstable_from_the_start_is_labelled_so_not_failed():
         [(0, 1), "already unstable at $g$ = 1"],
         ["failed", "pending"],
     ]
+
+
+def test_text_of_a_foreign_store_is_drawn_as_text_not_mathtext(store):
+    """A store's title and labels are someone else's text: '$...$' in them is drawn as it
+    is (matplotlib's mathtext parser ended the plot with an internal error on a malformed
+    one)."""
+    import io
+
+    ds = open_results(store)
+    ds.attrs["title"] = r"tampered $\foo{ title"
+    ds["length"].attrs["symbol"] = r"$\bar{"
+    fig = phase_diagram(ds, "stretch", "voltage")
+    fig.savefig(io.BytesIO(), format="png")  # drawing is where mathtext would fail
+    assert r"tampered \$\foo{ title" in fig.axes[0].get_title()

@@ -157,6 +157,13 @@ def cell_edges(centres) -> np.ndarray:
     return np.concatenate([[2 * c[0] - mid[0]], mid, [2 * c[-1] - mid[-1]]])
 
 
+def _plain(text) -> str:
+    """A text read from a store, shown as it is: matplotlib would parse ``$...$`` in it as
+    mathtext, and a store from someone else may hold any text (a malformed one ended the
+    plot with an internal error)."""
+    return str(text).replace("$", r"\$")
+
+
 def _label_text(label) -> str:
     return f"m={label[0]}, n={label[1]}" if isinstance(label, tuple) else label
 
@@ -168,7 +175,7 @@ def _axis_label(coord, name=None) -> str:
         return axis_label(name, critical=True)
     if coord.name in coord.coords or coord.name in coord.dims:
         return axis_label(str(coord.name))
-    return coord.attrs.get("long_name", str(coord.name))
+    return _plain(coord.attrs.get("long_name", coord.name))
 
 
 def phase_diagram(ds, x: str, y: str, *, at: dict | None = None) -> Figure:
@@ -220,12 +227,13 @@ def phase_diagram(ds, x: str, y: str, *, at: dict | None = None) -> Figure:
         ylabel=_axis_label(plane[y]),
     )
     fixed = [
-        f"{plane[c].attrs.get('symbol', c)} = {float(plane[c]):g}"
+        f"{_plain(plane[c].attrs.get('symbol', c))} = {float(plane[c]):g}"
         for c in plane.coords
         if plane[c].ndim == 0 and c != "rank"
     ]
     ax.set_title(
-        ds.attrs.get("title", "electrogrowth sweep") + (f"\n{', '.join(fixed)}" if fixed else ""),
+        _plain(ds.attrs.get("title", "electrogrowth sweep"))
+        + (f"\n{', '.join(fixed)}" if fixed else ""),
         fontsize=10,
     )
     keys = [
