@@ -10,16 +10,22 @@ OUT ?= out
 
 # Re-install only when pyproject.toml changes (the stamp is older than it).
 $(VENV)/.installed: pyproject.toml
+	@echo "electrogrowth: creating the virtualenv $(VENV)"
 	$(PYTHON) -m venv $(VENV)
+	@echo "electrogrowth: installing the package and its tools into $(VENV) (1-3 min)"
 	$(BIN)/python -m pip install -q --upgrade pip
 	$(BIN)/python -m pip install -q -e '.[test,lint,vtk,sweep,units]'
-	@# compile the numba kernels now (cache=True keeps them), not at a user's first call
+	@# compile the numba kernels now (cache=True keeps them), not at a user's first call.
+	@# They do not depend on the energy: gent, mooney-rivlin and --energy load this cache
+	@# (NUMBA_DEBUG_CACHE=1), and an energy's own derivatives take ~0.1 s per process.
+	@echo "electrogrowth: compiling the numerical kernels (once; kept in the cache)"
 	$(BIN)/electrogrowth critical --solve-for growth --outer-radius 1.4 --length 1 \
 		--voltage 0.4 > /dev/null
 	touch $@
 
 # The heavier optional extras (sweep = xarray/zarr/dask, vtk = meshio), on demand.
 $(VENV)/.installed-%: $(VENV)/.installed
+	@echo "electrogrowth: installing the optional extra '$*' into $(VENV)"
 	$(BIN)/python -m pip install -q -e '.[test,$*]'
 	touch $@
 
@@ -45,6 +51,10 @@ test-slow: $(VENV)/.installed
 
 demo: $(VENV)/.installed
 	$(BIN)/electrogrowth demo --out $(OUT)
+	@echo ""
+	@echo "The command is $(BIN)/electrogrowth. To type just 'electrogrowth' in this shell:"
+	@echo "    . $(BIN)/activate"
+	@echo "then e.g. 'electrogrowth --help' or 'electrogrowth critical --help'."
 
 # The suite (benchmarks/bench.py): tables into BENCHMARKS.md, benchmarks/results.json.
 # About an hour on the 2-core machine; make bench BENCH_ARGS=--quick checks that it runs.
@@ -56,8 +66,10 @@ figures: $(VENV)/.installed
 
 # The documentation site in docs/_build/html (Sphinx, the gallery runs every example; the
 # docs extra). -W: a warning fails the build.
+# Sphinx reports each page and each gallery example as it goes (no -q).
 docs: $(VENV)/.installed-docs
-	$(BIN)/python -m sphinx -W --keep-going -q -b html docs docs/_build/html
+	@echo "electrogrowth: building the documentation; every gallery example runs (minutes)"
+	$(BIN)/python -m sphinx -W --keep-going -b html docs docs/_build/html
 	@echo "open docs/_build/html/index.html"
 
 clean:

@@ -24,6 +24,7 @@ extensions = [
     "sphinx.ext.viewcode",
     "myst_parser",
     "sphinx_gallery.gen_gallery",
+    "pattern_viewer",  # _ext/: the interactive 3D pattern of the gallery, written at build
 ]
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 exclude_patterns = ["_build", "_ext", "gallery/*.ipynb", "gallery/*.py", "**/*.csv"]
@@ -66,6 +67,8 @@ sphinx_gallery_conf = {
     "examples_dirs": str(HERE.parent / "examples" / "gallery"),
     "gallery_dirs": "gallery",
     "filename_pattern": r"plot_",
+    # Subsections are the subfolders (each with its README.txt), in alphabetical order:
+    # basics, layered, sweeps (and design).
     "within_subsection_order": "FileNameSortKey",
     "image_scrapers": ("gallery_scraper.scraper",),
     "remove_config_comments": True,

@@ -92,7 +92,7 @@ def test_branches_csv_and_plot(thin_to_thick, tmp_path):
     assert len(rows) == 1 + len(curve.x) and float(rows[1][1]) == curve.value[0]
     ax = plot_curve(curve)
     labels = {t.get_text() for t in ax.texts}
-    assert labels == {"1, 1", "1, 0"}  # "n, m" as in the paper
+    assert labels == {"(1, 1)", "(0, 1)"}  # (m, n), the paper's "n, m" reversed
     assert "lambda" in ax.get_ylabel() and "R" in ax.get_xlabel()
     json.dumps(curve.as_dict())
 
@@ -270,3 +270,102 @@ def test_continuation_equals_full_scans(params, solve_for, along, grid, side, mo
     ]
     if not full.switches:
         assert len(scans) < len(grid)
+
+
+def _fake_modes(monkeypatch, values, threshold=None):
+    """Replace the scans and single-mode solves by closed forms: ``values[mode](x)`` is the
+    first critical value of a mode at voltage x (NaN: the mode is not reached before the
+    threshold, whose value is ``threshold(x)``)."""
+    import math
+    from types import SimpleNamespace
+
+    from electrogrowth.bifurcation import curves
+
+    def one(at, m, n, solve_for, side=None, bracket=None):
+        v = values[m, n](at.voltage)
+        if math.isnan(v):
+            return SimpleNamespace(value=threshold(at.voltage), kind="threshold")
+        return SimpleNamespace(value=v, kind="bifurcation")
+
+    def scan(at, solve_for, side=None, options=None):
+        found = [(v, mode) for mode, f in values.items() if not math.isnan(v := f(at.voltage))]
+        if found:
+            v, (m, n) = min(found)
+            crit = SimpleNamespace(kind="bifurcation", m=m, n=n, value=v)
+        else:
+            crit = SimpleNamespace(kind="threshold", m=-1, n=-1, value=threshold(at.voltage))
+        return SimpleNamespace(
+            critical=crit, runners_up=(), short_wave_limit=None, surface_instability=False
+        )
+
+    monkeypatch.setattr(curves, "critical_value", one)
+    monkeypatch.setattr(curves, "scan_modes", scan)
+
+
+def _curve(grid):
+    return critical_curve(TubeParameters(), "growth", "voltage", grid, follow=False)
+
+
+def test_a_crossing_is_a_switch(monkeypatch):
+    """Modes (0, 1): 1 + 2x and (1, 1): 1.5 + x cross at x = 0.5, value 2."""
+    _fake_modes(monkeypatch, {(0, 1): lambda x: 1 + 2 * x, (1, 1): lambda x: 1.5 + x})
+    curve = _curve([0.1, 0.9])
+    (sw,) = curve.switches
+    assert curve.ends == () and sw.kind == "switch"
+    assert sw.x == pytest.approx(0.5, abs=1e-12) and sw.value == pytest.approx(2.0, abs=1e-12)
+    assert list(curve.kind) == ["bifurcation", "switch", "switch", "bifurcation"]
+
+
+def test_a_branch_that_ends_at_a_jump_is_an_end(monkeypatch, tmp_path):
+    """Mode (0, 1) is critical at 1 + x until its window of instability closes at x = 0.5
+    (beyond, its first critical value is 3 + x); mode (1, 1), 2 + x, is critical after: the
+    critical value jumps from 1.5 to 2.5. That is the end of the branch (0, 1), not a
+    switch: recorded in ``ends``, rows of kind "end", open circles on the plot."""
+    _fake_modes(
+        monkeypatch, {(0, 1): lambda x: 1 + x if x < 0.5 else 3 + x, (1, 1): lambda x: 2 + x}
+    )
+    curve = _curve([0.1, 0.9])
+    assert curve.switches == ()
+    (end,) = curve.ends
+    assert (end.kind, end.mode_before, end.mode_after) == ("end", (0, 1), (1, 1))
+    assert end.x == pytest.approx(0.5, abs=1e-9)
+    assert (end.value, end.value_after) == (
+        pytest.approx(1.5, abs=1e-9),
+        pytest.approx(2.5, abs=1e-9),
+    )
+    assert list(curve.kind) == ["bifurcation", "end", "end", "bifurcation"]
+    rec = json.loads(json.dumps(curve.as_dict()))
+    assert rec["switches"] == [] and rec["ends"][0]["mode_before"] == [0, 1]
+    ds = curve.to_xarray()
+    assert ds.sizes["end"] == 1 and ds.sizes["switch"] == 0
+    assert ds["end_mode_after"].values.tolist() == [[1, 1]]
+    assert float(ds["end_value_after"][0]) == pytest.approx(2.5, abs=1e-9)
+    with curve.to_csv(tmp_path / "c.csv").open() as fh:
+        assert [r["kind"] for r in csv.DictReader(fh)] == list(curve.kind)
+    from electrogrowth.cli.curve import summary
+
+    text = "\n".join(summary(curve))
+    assert "switch" not in text and "branch (0, 1) ends at voltage = 0.5" in text
+    assert "then (1, 1) from 2.5" in text
+    ax = plot_curve(curve)
+    marks = {line.get_label(): line for line in ax.get_lines()}
+    assert "switch" not in marks
+    assert sorted(marks["branch ends"].get_ydata()) == pytest.approx([1.5, 2.5], abs=1e-9)
+
+
+def test_a_branch_that_meets_the_threshold_ends(monkeypatch):
+    """Mode (0, 1) bifurcates at 1 + x before the threshold 1.5 only for x < 0.5: beyond,
+    the axisymmetric state is lost first. No wrinkling mode follows: an end."""
+    _fake_modes(
+        monkeypatch,
+        {(0, 1): lambda x: 1 + x if x < 0.5 else float("nan")},
+        threshold=lambda x: 1.5,
+    )
+    curve = _curve([0.1, 0.9])
+    assert curve.switches == ()
+    (end,) = curve.ends
+    assert end.mode_after == (-1, -1) and end.x == pytest.approx(0.5, abs=1e-9)
+    assert list(curve.kind) == ["bifurcation", "end", "end", "threshold"]
+    from electrogrowth.cli.curve import summary
+
+    assert "then the threshold (axisymmetric state lost)" in "\n".join(summary(curve))

@@ -92,7 +92,10 @@ def test_kernel_impedance_equals_collocation_through_layers(m, n):
     assert status == 0
     z = physical_impedance(zc, chart, impedance_scale(m, k, state.r_o))
     kept = kept_pairs(keep)
-    col = collocation_impedance(state, m, n, nodes=48, pairs=keep)
+    # Collocation has converged by 24 nodes; beyond that its rounding grows like the
+    # conditioning of the Chebyshev operators (mode (2, 1): 6.8e-11 of the largest entry at
+    # 24 nodes, 3.6e-10 at 32, 4.7e-9 at 48 with numpy 2.4), so compare at 32.
+    col = collocation_impedance(state, m, n, nodes=32, pairs=keep)
     assert np.abs(z[np.ix_(kept, kept)] - col).max() <= 1e-9 * np.abs(col).max()
 
 

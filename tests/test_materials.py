@@ -15,7 +15,9 @@ from __future__ import annotations
 
 import doctest
 import functools
+import importlib.util
 import itertools
+import pathlib
 
 import mpmath as mp
 import numpy as np
@@ -23,6 +25,7 @@ import pytest
 import sympy as sp
 
 from electrogrowth.errors import MaterialError, ParameterError
+from electrogrowth.model import _chain_rule
 from electrogrowth.model import materials as materials
 from electrogrowth.model.materials import (
     I1,
@@ -547,3 +550,104 @@ def test_gent_beyond_locking_limit_is_flagged():
 def test_non_numeric_parameter_raises_parameter_error(make):
     with pytest.raises(ParameterError):
         make()
+
+
+# -- the generated chain rule (model/_chain_rule.py, tools/derive_chain_rule.py) -------------
+@functools.cache
+def _chain_rule_tool():
+    """tools/derive_chain_rule.py and its sympy forms (seconds of sympy: derived once)."""
+    path = pathlib.Path(__file__).resolve().parents[1] / "tools" / "derive_chain_rule.py"
+    spec = importlib.util.spec_from_file_location("derive_chain_rule", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module, module.derive()
+
+
+def test_generated_chain_rule_is_what_the_tool_writes():
+    """Regenerating gives the committed file (with the sympy that wrote it: another version
+    may print the same maths differently, which the numeric test below still checks)."""
+    tool, (args, forms) = _chain_rule_tool()
+    text = pathlib.Path(_chain_rule.__file__).read_text()
+    if f"with sympy {sp.__version__};" not in text:
+        pytest.skip(f"_chain_rule.py was written by another sympy than {sp.__version__}")
+    assert tool.render(args, forms) == text
+
+
+def _w_W_points(rng, n: int):
+    """(l1, l2, l3, d, w, W) with random derivatives w, W (W symmetric, every entry set)."""
+    l2, l3 = rng.uniform(0.75, 1.4, size=(2, n))
+    d = rng.uniform(-1.5, 1.5, size=n)
+    w = rng.uniform(-1, 1, size=(n, 5))
+    W = rng.uniform(-1, 1, size=(n, 5, 5))
+    W = W + W.transpose(0, 2, 1)
+    return [(1 / (l2[i] * l3[i]), l2[i], l3[i], d[i], w[i], W[i]) for i in range(n)]
+
+
+def _sympy_values(args, forms, point):
+    """The sympy forms at one point, evaluated by substitution (30 digits), as floats."""
+    l1, l2, l3, d, w, W = point
+    at = dict(zip(args[:4], map(sp.Float, (l1, l2, l3, d))))
+    at.update(zip(args[4], map(sp.Float, w)))
+    at.update(zip(args[5], map(sp.Float, W.ravel())))  # repeated symbols: W is symmetric
+    tau, E1, mods = forms
+    return [
+        np.array([float(sp.N(e.xreplace(at), 30)) for e in group]) for group in (tau, [E1], mods)
+    ]
+
+
+def test_generated_chain_rule_equals_sympy_forms(rng):
+    """Every generated form equals the tool's sympy expression at random stretches, fields
+    and derivatives of the energy (every w_k and W_kl non-zero)."""
+    _, (args, forms) = _chain_rule_tool()
+    for point in _w_W_points(rng, 6):
+        l1, l2, l3, d, w, W = point
+        flat = list(W.ravel())
+        got = [
+            np.array(_chain_rule.stress(l1, l2, l3, d, list(w), flat), float),
+            np.array([_chain_rule.field(l1, l2, l3, d, list(w), flat)], float),
+            np.array(_chain_rule.moduli(l1, l2, l3, d, list(w), flat), float),
+        ]
+        for g, want in zip(got, _sympy_values(args, forms, point)):
+            np.testing.assert_allclose(g, want, rtol=1e-12, atol=1e-12)
+
+
+@pytest.mark.parametrize("key", list(MATERIALS))
+def test_generated_chain_rule_equals_sympy_forms_for_each_energy(key):
+    """Stress, field and moduli of each energy (ideal and non-ideal, I4 and I6 terms) equal
+    the tool's sympy forms fed with that energy's own derivatives."""
+    _, (args, forms) = _chain_rule_tool()
+    mat = MATERIALS[key]
+    for point in POINTS[2:]:
+        w, W = materials._energy_derivatives(mat.energy)(*materials._invariants(*point))
+        want = _sympy_values(
+            args, forms, (*point, np.array(w, float), np.array(W, float).reshape(5, 5))
+        )
+        _assert_close(mat.stress(*point), want[0], rtol=1e-12)
+        _assert_close(np.atleast_1d(mat.electric_field(*point)), want[1], rtol=1e-12)
+        _assert_close(mat.moduli(*point), want[2], rtol=1e-12)
+
+
+def test_no_symbolic_derivation_at_run_time(monkeypatch):
+    """A new energy's stress, field and moduli need no simplify or Hessian of sympy: the
+    chain rule is generated code, so no process pays its derivation (seconds)."""
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("symbolic derivation at run time")
+
+    monkeypatch.setattr(sp, "simplify", refuse)
+    monkeypatch.setattr(sp, "hessian", refuse)
+    monkeypatch.setattr(sp.MatrixBase, "hessian", refuse, raising=False)
+    mat = Material("fresh", R(3, 10) * (I1 - 3) + R(1, 5) * (I2 - 3) + I5 / 2)
+    point = POINTS[3]
+    assert np.all(np.isfinite(mat.moduli(*point)))
+    assert np.all(np.isfinite(mat.stress(*point)))
+    assert mat.is_ideal_dielectric()
+    for general in (NON_IDEAL_POLY, NON_IDEAL_EXP, Material("I4 I6", mat.energy + I4 * I6 / 100)):
+        assert not general.is_ideal_dielectric()
+
+
+def test_ideal_dielectric_hidden_from_cancellation_is_still_detected():
+    """Omega - I5/2 free of I4, I5, I6 only after simplify: the fallback still finds it."""
+    mat = Material("hidden", (I1 - 3) / 2 + (I5 + 1) ** 2 / 4 - I5**2 / 4 - R(1, 4))
+    assert I5 in (mat.energy - I5 / 2).free_symbols
+    assert mat.is_ideal_dielectric()

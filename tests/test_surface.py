@@ -89,8 +89,7 @@ def nh_tube_critical(params, solve_for, x0, x1, steps=400):
 
 @pytest.fixture(scope="module")
 def generic_energies():
-    """Gent and Mooney-Rivlin. Their first base state pays the package's one-time symbolic
-    derivation of the moduli (materials._universal_forms, ~10 s, cached per process)."""
+    """Gent and Mooney-Rivlin, each with its base state solved once for the module."""
     mats = {"gent": gent(20.0), "mr": mooney_rivlin(0.3)}
     solve_base_state(TubeParameters(material=mats["gent"]))
     return mats

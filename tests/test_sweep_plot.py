@@ -155,3 +155,46 @@ def test_plot_of_a_non_store_is_one_line(tmp_path, monkeypatch, capsys):
     (tmp_path / "x.zarr").mkdir()
     assert cli.main(["plot", str(tmp_path / "x.zarr")]) == 2
     assert "is not an electrogrowth sweep store" in capsys.readouterr().err
+
+
+def test_a_tube_unstable_from_the_start_is_labelled_so_not_failed():
+    """A point whose tube is already unstable at the start of the march (g = 1) is
+    recorded as failed with the march's message; its cell says so, in the control's
+    symbol. Other failures stay "failed"."""
+    import xarray as xr
+
+    unstable = (
+        "ParameterError: the tube is already unstable in mode (0, 1) (axisymmetric) at"
+        " growth = 1; start from a stable state"
+    )
+    status = [["ok", "failed"], ["failed", "pending"]]
+    message = [["", unstable], ["ConvergenceError: no", ""]]
+    dims = ("voltage", "stretch")
+    plane = xr.Dataset(
+        {
+            "status": (dims, np.array(status, dtype=object)),
+            "message": (dims, np.array(message, dtype=object)),
+            "kind": (dims, np.array([["bifurcation", ""], ["", ""]], dtype=object)),
+            "m": (dims, [[0, -1], [-1, -1]]),
+            "n": (dims, [[1, -1], [-1, -1]]),
+        }
+    )
+    labels = outcomes(plane)
+    assert labels.tolist() == [
+        [(0, 1), "already unstable at $g$ = 1"],
+        ["failed", "pending"],
+    ]
+
+
+def test_text_of_a_foreign_store_is_drawn_as_text_not_mathtext(store):
+    """A store's title and labels are someone else's text: '$...$' in them is drawn as it
+    is (matplotlib's mathtext parser ended the plot with an internal error on a malformed
+    one)."""
+    import io
+
+    ds = open_results(store)
+    ds.attrs["title"] = r"tampered $\foo{ title"
+    ds["length"].attrs["symbol"] = r"$\bar{"
+    fig = phase_diagram(ds, "stretch", "voltage")
+    fig.savefig(io.BytesIO(), format="png")  # drawing is where mathtext would fail
+    assert r"tampered \$\foo{ title" in fig.axes[0].get_title()

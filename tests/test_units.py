@@ -118,3 +118,46 @@ def test_cli_bad_units_one_line_exit_2(capsys, argv, match):
     assert main(["state", *argv]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and match in err
+
+
+def test_cli_axial_force_in_newtons(capsys):
+    """The force scale is mu R_i^2 = 1e5 Pa * (2e-3 m)^2 = 0.4 N."""
+    rec = _state(capsys, [*PHYSICAL, "--outer-radius", "2.8mm", "--voltage", "3kV"])
+    assert rec["axial_force"] != 0
+    assert rec["physical"]["axial_force"] == [
+        pytest.approx(0.4 * rec["axial_force"], rel=1e-11),
+        "N",
+    ]
+    text = main(["state", *PHYSICAL, "--outer-radius", "2.8mm", "--voltage", "3kV"])
+    assert text == 0 and "axial_force = " in capsys.readouterr().out.replace("\n    ", " ")
+
+
+def test_cli_converted_input_comes_back_without_rounding_noise(capsys):
+    """3 kV -> Vbar -> kV is 3.0000000000000004 in floating point: reported as 3."""
+    assert 3000.0 / SCALE * SCALE / 1e3 != 3.0  # the noise the report must not show
+    rec = _state(capsys, [*PHYSICAL, "--outer-radius", "2.8mm", "--voltage", "3kV"])
+    assert rec["physical"]["voltage"] == [3.0, "kV"] and rec["physical"]["outer_radius"] == [
+        2.8,
+        "mm",
+    ]
+    assert main(["state", *PHYSICAL, "--outer-radius", "2.8mm", "--voltage", "3kV"]) == 0
+    out = capsys.readouterr().out
+    assert "voltage = 3 kV" in out and "00000" not in out.split("in physical units")[1]
+
+
+@pytest.mark.parametrize(
+    ("length", "reported"),
+    [([], None), (["--length", "5"], 10.0), (["--length", "1"], 2.0), (["--length", "1cm"], 10.0)],
+)
+def test_cli_reports_a_length_only_if_one_was_given(capsys, length, reported):
+    rec = _state(capsys, [*PHYSICAL, "--outer-radius", "2.8mm", *length])
+    assert rec["physical"].get("length") == (None if reported is None else [reported, "mm"])
+    assert rec["physical"]["outer_radius"] == [2.8, "mm"]  # the radii were given
+
+
+def test_scales_force_and_given_length():
+    s = Scales(2e-3, 2.8e-3, 1e5, EPS)
+    assert s.force(2.5).to("N").magnitude == pytest.approx(1.0, rel=1e-15)
+    assert s.given_length == 0.0  # none given
+    _, scales = tube_from_quantities("2 mm", "2.8 mm", shear_modulus="100 kPa", length="1 cm")
+    assert scales.given_length == pytest.approx(0.01, rel=1e-15)

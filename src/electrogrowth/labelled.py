@@ -24,7 +24,7 @@ VARIABLES = {
     "r": ("R_i", "current radius r(R)"),
     "lambda": ("1", "hoop stretch r / R"),
     "sigma_rr": ("mu", "radial Cauchy stress sigma_rr"),
-    "sigma_tt": ("mu", "hoop Cauchy stress sigma_theta theta"),
+    "sigma_tt": ("mu", "hoop Cauchy stress sigma_tt (theta-theta)"),
     "sigma_zz": ("mu", "axial Cauchy stress sigma_zz"),
     "p": ("mu", "Lagrange multiplier p (hydrostatic pressure)"),
     "D_r": ("sqrt(mu eps)", "radial electric displacement D_r = c / r"),
@@ -212,10 +212,43 @@ def _critical_attrs(solve_for: str) -> dict:
     return {"units": units, "long_name": f"critical {long_name}"}
 
 
+def _ends(curve) -> dict:
+    """The located branch ends of a curve: x, the one-sided values, the modes either side."""
+    ends = getattr(curve, "ends", ())
+    return {
+        "end_x": (
+            "end",
+            np.array([e.x for e in ends], float),
+            {**_attrs(curve.along), "long_name": f"{curve.along} where a branch ends"},
+        ),
+        "end_value": (
+            "end",
+            np.array([e.value for e in ends], float),
+            {**_critical_attrs(curve.solve_for), "long_name": "critical value where it ends"},
+        ),
+        "end_value_after": (
+            "end",
+            np.array([e.value_after for e in ends], float),
+            {**_critical_attrs(curve.solve_for), "long_name": "critical value just after"},
+        ),
+        "end_mode_before": (
+            ("end", "mode"),
+            np.array([e.mode_before for e in ends], int).reshape(-1, 2),
+            {"units": "1", "long_name": "(m, n) of the branch that ends"},
+        ),
+        "end_mode_after": (
+            ("end", "mode"),
+            np.array([e.mode_after for e in ends], int).reshape(-1, 2),
+            {"units": "1", "long_name": "(m, n) after it, (-1, -1): threshold or short waves"},
+        ),
+    }
+
+
 def curve_dataset(curve):
     """A Curve along dimension point (a switch appears twice, at the same x: the end of one
-    branch and the start of the next; x is the coordinate named after ``along``), and its
-    located switches along dimension switch."""
+    branch and the start of the next; x is the coordinate named after ``along``), its
+    located switches along dimension switch and the located ends of branches (a jump of the
+    critical value, or the threshold after the branch) along dimension end."""
     xr = xarray()
     name = f"{curve.solve_for}_cr"
     ds = xr.Dataset(
@@ -251,6 +284,7 @@ def curve_dataset(curve):
                 np.array([s.mode_after for s in curve.switches], int).reshape(-1, 2),
                 {"units": "1", "long_name": "(m, n) after the switch, (-1, -1): threshold"},
             ),
+            **_ends(curve),
         },
         coords={curve.along: ("point", np.asarray(curve.x, float), _attrs(curve.along))},
     )

@@ -20,7 +20,8 @@ class Kind(enum.StrEnum):
     SURFACE = "surface"  # a short-wave (surface) instability: the limit m, k -> infinity
     ELLIPTICITY = "ellipticity"  # strong ellipticity is lost first (no half-space problem)
     NONE = "none"  # no instability in the searched range
-    SWITCH = "switch"  # a row of a curve: the located change of the critical mode
+    SWITCH = "switch"  # a row of a curve: the critical mode changes, equal values both sides
+    END = "end"  # a row of a curve: a branch ends there (a jump, or no wrinkling after it)
 
 
 class Status(enum.StrEnum):

@@ -87,6 +87,10 @@ def curve_html(curve) -> str:
         (f"switch at {curve.along} = {s.x:.8g}", f"{s.mode_before} -> {s.mode_after}")
         for s in curve.switches
     ]
+    rows += [
+        (f"branch ends at {curve.along} = {s.x:.8g}", f"{s.mode_before} -> {s.mode_after}")
+        for s in curve.ends
+    ]
     failed = sum(1 for k in curve.kind if str(k) == "failed")
     if failed:
         rows.append(("failed points", failed))

@@ -1,5 +1,5 @@
 """Axisymmetric base state of a layered tube: anisotropic and graded growth, follower pressures,
-prescribed axial stretch or axial force (issue 11; derivations in docs/derivation-layered.md).
+prescribed axial stretch or axial force (derivations in docs/derivation-layered.md).
 
 The entry points (:func:`solve_layered_state`, :func:`layered_threshold`, the response curves
 :func:`voltage_response`, :func:`pressure_response`) and the solved state :class:`LayeredState`.

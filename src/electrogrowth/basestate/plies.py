@@ -262,7 +262,7 @@ def illinois(f, a, b, fa, fb):
         a, fa = np.where(same, a, x), np.where(same, fa, fx)
         b, fb = np.where(same, x, b), np.where(same, fx, fb)
         side = np.where(same, 1, -1)
-    raise ConvergenceError("charge c not converged (Illinois, 300 iterations)")
+    raise ConvergenceError("charge c not converged (bracketed secant, 300 iterations)")
 
 
 # -- the node count: successive Gauss-Legendre rules at representative states -----------------

@@ -114,8 +114,8 @@ def solve_base_state(params: TubeParameters, *, rtol: float = 1e-12) -> BaseStat
 
     lambda_i solves Vbar(lambda_i) = Vbar on the monotone branch from lambda_i0 (Vbar = 0) to
     the threshold of :func:`voltage_threshold`: in closed form for the ideal neo-Hookean
-    dielectric (brentq on NH-6, to rounding, ~20 us), else by a Chebyshev root in the cell of
-    the scanned curve that brackets Vbar (~2 ms).
+    dielectric (a bracketed root solve of NH-6, to rounding, ~20 us), else by a Chebyshev root
+    in the cell of the scanned curve that brackets Vbar (~2 ms).
 
     Parameters
     ----------

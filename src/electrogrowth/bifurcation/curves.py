@@ -15,7 +15,10 @@ switch is located exactly:
 * a mode and the threshold (the axisymmetric state is lost first): bisection on whether the
   mode still bifurcates before the threshold.
 
-The located switch is checked by a scan there; if a third mode comes first, the interval is
+A change with equal values on both sides, between two wrinkling modes (or a mode and the
+short-wave limit), is a "switch"; one where the value jumps, or the threshold is on one side,
+is the "end" of a branch (:class:`Switch`, ``Curve.ends``). The located switch is checked by
+a scan there; if a third mode comes first, the interval is
 split at it and both halves are located again. If a single-mode solve fails (e.g. the
 kernel cannot integrate a high mode next to the threshold), the switch is bisected with
 scans instead, to a relative 1e-7 only. A point whose scan fails (e.g. the tube is
@@ -73,16 +76,30 @@ MAX_POINTS = 10_000  # grid points of a curve (each a mode scan, ~1 s): hours at
 
 class Switch(NamedTuple):
     """The critical mode changes at ``x`` from ``mode_before`` to ``mode_after`` (m, n), in
-    the order of the grid; (-1, -1) stands for the threshold. At a crossing the two modes
-    are equally critical there: ``value`` = ``value_after``. At a jump (a mode's first
-    critical value appears or vanishes discontinuously, e.g. a new window of instability)
-    they are the one-sided limits of the critical value."""
+    the order of the grid; (-1, -1) stands for the threshold or the short-wave limit.
+    ``kind`` "switch": the two are equally critical there (a crossing), ``value`` =
+    ``value_after``. ``kind`` "end": the branch before ends there without a crossing, either
+    at a jump (a mode's first critical value appears or vanishes discontinuously, e.g. a
+    window of instability closes; ``value`` and ``value_after`` are the one-sided limits of
+    the critical value) or where one side does not wrinkle (the threshold comes first)."""
 
     x: float
     value: float
     mode_before: tuple[int, int]
     mode_after: tuple[int, int]
     value_after: float
+    kind: str = Kind.SWITCH
+
+
+def _change_kind(a: CurvePoint, b: CurvePoint, v_before: float, v_after: float) -> Kind:
+    """ "switch" where the critical value is continuous and both sides wrinkle (a mode or the
+    short-wave limit); otherwise the branch before "end"s."""
+    wrinkles = a.kind in (Kind.BIFURCATION, Kind.SURFACE) and b.kind in (
+        Kind.BIFURCATION,
+        Kind.SURFACE,
+    )
+    equal = abs(v_after - v_before) <= 1e-9 * max(1.0, abs(v_before))
+    return Kind.SWITCH if wrinkles and equal else Kind.END
 
 
 @dataclasses.dataclass(frozen=True)
@@ -127,11 +144,23 @@ def _failed(kind) -> bool:
     return kind in (Status.FAILED, Status.ERROR)
 
 
-def _progress_bar(total: int, desc: str):
+def _progress_bar(total: int, desc: str, unit: str = "pt"):
     """A tqdm.auto bar (a notebook widget or text on stderr)."""
     from tqdm.auto import tqdm
 
-    return tqdm(total=total, desc=desc, unit="pt")
+    return tqdm(total=total, desc=desc, unit=unit)
+
+
+def _critical_text(pt: CurvePoint) -> str:
+    """What is critical at a grid point, in a progress message."""
+    if pt.kind == Kind.SURFACE:
+        return "the short-wave limit"
+    return "the threshold" if pt.mode == NO_MODE else str(pt.mode)
+
+
+def _changes(prev: CurvePoint, pt: CurvePoint) -> bool:
+    """The critical mode changes between two neighbouring grid points: a switch to locate."""
+    return not (_failed(prev.kind) or _failed(pt.kind)) and prev.mode != pt.mode
 
 
 def _message(exc: Exception) -> str:
@@ -146,13 +175,15 @@ def _message(exc: Exception) -> str:
 class Curve:
     """The critical ``solve_for`` along ``along``.
 
-    Rows are the grid points and, at every switch, two rows at the same x: the end of the
-    branch before and the start of the branch after (kind "switch"). ``kind`` is
-    "bifurcation" (mode m, n), "threshold" (m = n = -1: the axisymmetric state is lost
-    first), "surface" (m = n = -1: the exact short-wave limit m, n -> infinity at a face
-    comes first), "switch" or "failed" (value NaN, ``status`` says why). ``surface`` marks
-    the rows of the short-wave limit; ``short_wave_limit`` holds the limit where the scan
-    computed it (NaN elsewhere).
+    Rows are the grid points and, at every located change of the critical mode, two rows at
+    the same x: the end of the branch before and the start of the branch after (kind
+    "switch" at a crossing, "end" where the branch before just ends: see :class:`Switch`).
+    ``kind`` is "bifurcation" (mode m, n), "threshold" (m = n = -1: the axisymmetric state
+    is lost first), "surface" (m = n = -1: the exact short-wave limit m, n -> infinity at a
+    face comes first), "switch", "end" or "failed" (value NaN, ``status`` says why).
+    ``surface`` marks the rows of the short-wave limit; ``short_wave_limit`` holds the limit
+    where the scan computed it (NaN elsewhere). ``switches`` lists the crossings, ``ends``
+    the branch ends that were located.
     """
 
     along: str
@@ -168,6 +199,7 @@ class Curve:
     params: TubeParameters
     surface: np.ndarray
     short_wave_limit: np.ndarray
+    ends: tuple[Switch, ...] = ()
 
     def branches(self) -> list[tuple[tuple[int, int], np.ndarray]]:
         """Maximal runs of rows with one mode ((-1, -1): threshold), failed rows excluded:
@@ -262,17 +294,20 @@ class Curve:
             "status": list(self.status),
             "surface": self.surface.tolist(),
             "short_wave_limit": num(self.short_wave_limit),
-            "switches": [
-                {
-                    "x": s.x,
-                    "value": s.value,
-                    "mode_before": list(s.mode_before),
-                    "mode_after": list(s.mode_after),
-                    "value_after": s.value_after,
-                }
-                for s in self.switches
-            ],
+            "switches": [_change_record(s) for s in self.switches],
+            "ends": [_change_record(s) for s in self.ends],
         }
+
+
+def _change_record(s: Switch) -> dict:
+    return {
+        "x": s.x,
+        "value": s.value,
+        "mode_before": list(s.mode_before),
+        "mode_after": list(s.mode_after),
+        "value_after": s.value_after,
+        "kind": str(s.kind),
+    }
 
 
 def check_curve(solve_for: str, along: str, params=None) -> None:
@@ -322,9 +357,10 @@ def critical_curve(
     options : ScanOptions
         Mode ranges of each scan (extended automatically when the optimum is on an edge).
     progress : bool or callable, optional
-        True: a progress bar (tqdm.auto: a widget in a notebook, text on a terminal);
-        None or False: none (default); a callable: called with 1 after each grid point
-        (``tqdm(...).update`` fits).
+        True: progress bars (tqdm.auto: a widget in a notebook, text on a terminal), one
+        over the grid points, then one over the mode switches to locate; None or False:
+        none (default); a callable: called with 1 after each grid point
+        (``tqdm(...).update`` fits; the switches are then located silently).
     mapper : callable
         ``map``-like function running :func:`curve_point` over the grid (e.g. a process
         pool's ``map``); the builtin by default.
@@ -387,7 +423,10 @@ def critical_curve(
                 bar.update(1)
             elif callable(progress):
                 progress(1)
-        rows, switches = _located(points, _Locator(params, solve_for, along, side, unit))
+        if bar is not None:
+            bar.close()
+        loc = _Locator(params, solve_for, along, side, unit)
+        rows, switches = _located(points, loc, progress)
     except (KeyboardInterrupt, Exception) as exc:  # an interrupt, maybe wrapped by the kernel:
         stop = interrupt_of(exc)  # hand back the finished grid points, switches not located
         if stop is None:
@@ -400,33 +439,41 @@ def critical_curve(
     return _curve(along, solve_for, side, params, rows, switches)
 
 
-def _located(points: list[CurvePoint], loc: _Locator):
+def _located(points: list[CurvePoint], loc: _Locator, progress=None):
     """The rows of the grid points with the located switches between them, and the
-    switches."""
+    switches (a progress bar of its own when ``progress`` is True)."""
     rows, switches = [], []
-    for i, pt in enumerate(points):
-        prev = points[i - 1] if i else None
-        if (
-            prev is not None
-            and not (_failed(prev.kind) or _failed(pt.kind))
-            and prev.mode != pt.mode
-        ):
-            try:
-                new_rows, new_switches = loc.between(prev, pt, MAX_SPLITS)
-            except Exception as exc:  # noqa: BLE001 -- keep the grid points
-                reraise_interrupt(exc)
-                new_rows, new_switches = [], []
-                pt = dataclasses.replace(
-                    pt, status=f"switch from {prev.mode} not located: {_message(exc)}"
-                )
-            rows += new_rows
-            switches += new_switches
-        rows.append(_row(pt))
+    located = sum(map(_changes, points[:-1], points[1:]))
+    bar = None
+    if progress is True and located:  # locating can take far longer than the grid
+        bar = _progress_bar(located, "locating mode switches", "switch")
+    try:
+        for i, pt in enumerate(points):
+            prev = points[i - 1] if i else None
+            if prev is not None and _changes(prev, pt):
+                if bar is not None:
+                    bar.set_postfix_str(f"between {_critical_text(prev)} and {_critical_text(pt)}")
+                try:
+                    new_rows, new_switches = loc.between(prev, pt, MAX_SPLITS)
+                except Exception as exc:  # noqa: BLE001 -- keep the grid points
+                    reraise_interrupt(exc)
+                    new_rows, new_switches = [], []
+                    pt = dataclasses.replace(
+                        pt, status=f"switch from {prev.mode} not located: {_message(exc)}"
+                    )
+                rows += new_rows
+                switches += new_switches
+                if bar is not None:
+                    bar.update(1)
+            rows.append(_row(pt))
+    finally:
+        if bar is not None:
+            bar.close()
     return rows, switches
 
 
 def _curve(along, solve_for, side, params, rows, switches) -> Curve:
-    """The Curve of table rows (as :func:`_row`) and switches."""
+    """The Curve of table rows (as :func:`_row`) and switches (and ends)."""
     x, v, modes, kinds, status, surface, limit = zip(*rows) if rows else [()] * 7
     modes = np.array(modes, dtype=int).reshape(-1, 2)
     return Curve(
@@ -439,10 +486,11 @@ def _curve(along, solve_for, side, params, rows, switches) -> Curve:
         modes[:, 1],
         np.array(kinds) if kinds else np.array([], dtype=str),
         tuple(status),
-        tuple(switches),
+        tuple(s for s in switches if s.kind == Kind.SWITCH),
         params,
         np.array(surface, dtype=bool),
         np.array(limit, dtype=float),
+        tuple(s for s in switches if s.kind == Kind.END),
     )
 
 
@@ -635,11 +683,12 @@ class _Locator:
                 and self.sense * (check.value - first) < -1e-9 * max(1.0, abs(first))
             ):
                 return self._split(a, check, b, depth)
+        kind = _change_kind(a, b, v_before, v_after)
         rows = [
-            (x, v_before, a.mode, Kind.SWITCH, "", a.surface, math.nan),
-            (x, v_after, b.mode, Kind.SWITCH, "", b.surface, math.nan),
+            (x, v_before, a.mode, kind, "", a.surface, math.nan),
+            (x, v_after, b.mode, kind, "", b.surface, math.nan),
         ]
-        return rows, [Switch(x, v_before, a.mode, b.mode, v_after)]
+        return rows, [Switch(x, v_before, a.mode, b.mode, v_after, kind)]
 
     def _split(self, a, mid, b, depth):
         """Locate the switches on both sides of a scanned point ``mid`` (kept as a row)."""

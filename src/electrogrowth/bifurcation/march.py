@@ -384,7 +384,7 @@ def brent(f, a, b) -> float:
     try:
         return brentq(f, a, b, xtol=1e-15 * max(1.0, abs(a)), rtol=1e-15, maxiter=200)
     except (RuntimeError, ValueError) as exc:
-        raise ConvergenceError(f"Brent's method failed on [{a}, {b}]: {exc}") from None
+        raise ConvergenceError(f"the bracketed root solve failed on [{a}, {b}]: {exc}") from None
 
 
 def _voltage_threshold(params) -> float:

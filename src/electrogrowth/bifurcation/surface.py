@@ -148,7 +148,7 @@ def _brent(f, a, b, rtol) -> float:
             f, a, b, xtol=max(1e-15, 1e-3 * rtol) * max(1.0, abs(a)), rtol=1e-15, maxiter=300
         )
     except (RuntimeError, ValueError) as exc:
-        raise ConvergenceError(f"Brent's method failed on [{a}, {b}]: {exc}") from None
+        raise ConvergenceError(f"the bracketed root solve failed on [{a}, {b}]: {exc}") from None
 
 
 def _locate(params, solve_for, side, h: Callable, rtol: float, h_march=None):

@@ -162,6 +162,10 @@ def _quiet_exit() -> None:
 
 def _dispatch(argv: list[str] | None) -> int:
     """Parse and run; every failure becomes one line on stderr (no traceback)."""
+    words = sys.argv[1:] if argv is None else argv
+    if not words:  # no command: the overview on stdout and success, as `pip` does
+        build_parser("").print_help()
+        return 0
     try:
         try:
             args = build_parser(_command_of(argv)).parse_args(argv)

@@ -27,6 +27,7 @@ from .options import (
     mode_from_args,
     scan_options_from_args,
 )
+from .progress import add_quiet_option, bar, stage
 from .report import edge_warning, physical_line, physical_record, supported, voltage_text, warn
 from .tube_input import add_any_tube_options, control_of
 
@@ -62,6 +63,7 @@ def configure_critical(parser: argparse.ArgumentParser) -> None:
         help="print one JSON object (solve_for, value, m, n, family, kind,"
         " error_estimate, ...) instead of text",
     )
+    add_quiet_option(parser)
 
 
 def run_critical(args) -> int:
@@ -71,16 +73,18 @@ def run_critical(args) -> int:
     mode = mode_from_args(args)
     if mode is not None:
         m, n, family = mode
-        crit = critical_value(
-            params,
-            m,
-            n,
-            solve_for,
-            family=family,
-            side=args.side,
-            method=args.method,
-            rtol=args.rtol,
-        )
+        slow = args.method == "collocation"  # tens of seconds: say what is going on
+        with stage(args if slow else None, f"solving mode ({m}, {n}) by collocation", tick=True):
+            crit = critical_value(
+                params,
+                m,
+                n,
+                solve_for,
+                family=family,
+                side=args.side,
+                method=args.method,
+                rtol=args.rtol,
+            )
         record, runners = crit.as_dict(), []
     else:
         if args.method != "impedance":
@@ -102,10 +106,11 @@ def run_critical(args) -> int:
         record.update(_certify(params, crit, args))
         if mode is None:  # a scan: certify the choice of the mode as well
             record.update(
-                _certify_choice(params, crit, result, options=scan_options_from_args(args))
+                _certify_choice(params, crit, result, args, options=scan_options_from_args(args))
             )
     if getattr(args, "scales", None) is not None:
-        record["physical"] = physical_record(record, args.scales)
+        errors = {record.get("solve_for"): record.get("error_estimate")}
+        record["physical"] = physical_record(record, args.scales, errors)
     if args.json:
         print(json.dumps(record))
         return 0
@@ -116,16 +121,18 @@ def run_critical(args) -> int:
 def _certify(params, crit, args) -> dict:
     other = "collocation" if crit.method == "impedance" else "impedance"
     w = max(1e-6 * abs(crit.value), 10 * crit.error_estimate)
-    check = critical_value(
-        params,
-        crit.m,
-        crit.n,
-        crit.solve_for,
-        family=crit.family,
-        side=crit.side,
-        method=other,
-        bracket=(crit.value - w, crit.value + w),
-    )
+    name = value_name(crit.solve_for)
+    with stage(args, f"certifying {name} of mode ({crit.m}, {crit.n}) by {other}", tick=True):
+        check = critical_value(
+            params,
+            crit.m,
+            crit.n,
+            crit.solve_for,
+            family=crit.family,
+            side=crit.side,
+            method=other,
+            bracket=(crit.value - w, crit.value + w),
+        )
     diff = abs(check.value - crit.value) / abs(crit.value)
     if diff > CERTIFY_RTOL:
         raise ConvergenceError(
@@ -141,7 +148,7 @@ def _certify(params, crit, args) -> dict:
     }
 
 
-def _certify_choice(params, crit, result, *, options) -> dict:
+def _certify_choice(params, crit, result, args, *, options) -> dict:
     """Every mode of the scanned ranges is still stable just before the critical value by
     the other method (collocation, positive on the stable side): no mode comes first.
     One-layer tubes and the controls growth, stretch and voltage (others: {})."""
@@ -153,7 +160,7 @@ def _certify_choice(params, crit, result, *, options) -> dict:
     modes = scan_grid(
         result.m_range, result.n_range, False, (options.prismatic, options.torsional)
     )
-    f = collocation_targets(solve_base_state(before), modes)
+    f = _collocation_signs(solve_base_state(before), modes, args)
     first = int(np.argmin(f))
     if not f[first] > 0:
         m, n = (int(x) for x in modes[first, :2])
@@ -163,6 +170,19 @@ def _certify_choice(params, crit, result, *, options) -> dict:
             f" the scan's critical mode ({crit.m}, {crit.n}) at {crit.value:.12g}"
         )
     return {"certified_modes": int(len(modes))}
+
+
+def _collocation_signs(state, modes, args) -> np.ndarray:
+    """collocation_targets of every mode, one mode at a time under a progress bar."""
+    progress = bar(args, len(modes), "certifying: every scanned mode stable before it", "mode")
+    f = []
+    for row in modes:
+        f.append(collocation_targets(state, row[None, :])[0])
+        if progress is not None:
+            progress.update(1)
+    if progress is not None:
+        progress.close()
+    return np.array(f)
 
 
 def value_name(solve_for: str) -> str:

@@ -2,14 +2,14 @@
 
 Registered in :data:`cli.COMMANDS` as ("...", configure_curve, run_curve). Writes
 ``curve_<solve_for>_vs_<along>.csv`` and ``.png`` into ``--out`` and prints a summary
-(``--json``: one JSON object). A tqdm progress bar goes to stderr when it is a terminal.
+(``--json``: one JSON object). Progress bars (the points, then the switches being
+located) go to stderr when it is a terminal.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -17,6 +17,7 @@ import numpy as np
 from ..bifurcation.curves import ALONG, MAX_POINTS, check_curve, critical_curve
 from ..errors import ParameterError
 from ..figures.plots import plot_curve
+from ..figures.style import wrapped_title
 from ..interrupts import Interrupted
 from ..model.layers import KEYS_TEXT, Tube
 from ..model.params import TubeParameters
@@ -30,6 +31,7 @@ from .options import (
     finite_number,
     scan_options_from_args,
 )
+from .progress import add_quiet_option, enabled
 from .tube_input import add_any_tube_options, control_of
 
 #: How each parameter is described in the options' help (the paper's terms).
@@ -93,6 +95,7 @@ def configure_curve(parser: argparse.ArgumentParser) -> None:
         action="store_true",
         help="print one JSON object instead of text (no progress bar)",
     )
+    add_quiet_option(parser)
 
 
 def curve_params(args) -> TubeParameters:
@@ -134,37 +137,24 @@ def run_curve(args) -> int:
     if args.start == args.stop:
         raise ParameterError(f"--from = --to = {args.start:g}; need two different values")
     values = np.linspace(args.start, args.stop, args.points)
-    bar = None
-    if not args.json and sys.stderr.isatty():
-        from tqdm import tqdm
-
-        bar = tqdm(
-            total=args.points,
-            unit="point",
-            file=sys.stderr,
-            desc=f"{solve_for} along {args.along}",
-        )
     stem = f"curve_{solve_for}_vs_{args.along}".replace("[", "").replace("]", "")
     try:
-        curve = critical_curve(
+        curve = critical_curve(  # bars over the points, then the switches being located
             params,
             solve_for,
             args.along,
             values,
             side=args.side,
             options=options,
-            progress=bar.update if bar is not None else None,
+            progress=not args.json and enabled(args),
         )
     except Interrupted as stop:  # keep the finished points
         raise _kept(stop, args.out / f"{stem}.partial.csv", args.points) from None
-    finally:
-        if bar is not None:
-            bar.close()
     csv = curve.to_csv(args.out / f"{stem}.csv")
     (args.out / f"{stem}.partial.csv").unlink(missing_ok=True)  # of an interrupted run
     png = args.out / f"{stem}.png"
     ax = plot_curve(curve)
-    ax.set_title(_fixed_text(curve), fontsize=8)
+    wrapped_title(ax, _fixed_text(curve), 8)
     ax.figure.savefig(png, dpi=200)
     if args.json:
         print(json.dumps({**curve.as_dict(), "csv": str(csv), "png": str(png)}))
@@ -230,6 +220,20 @@ def summary(curve) -> list[str]:
         lines.append(
             f"  switch at {curve.along} = {s.x:.12g}, {curve.solve_for}_cr {value}:"
             f" {_mode(s.mode_before)} -> {_mode(s.mode_after)}"
+        )
+    for e in curve.ends:
+        row = (curve.x == e.x) & (curve.kind == "end") & (curve.m == e.mode_after[0])
+        after = None
+        if e.mode_after[0] < 0:
+            after = (
+                f"the short-wave limit from {e.value_after:.12g}"
+                if curve.surface[row].any()
+                else "the threshold (axisymmetric state lost)"
+            )
+        lines.append(
+            f"  branch {_mode(e.mode_before)} ends at {curve.along} = {e.x:.12g},"
+            f" {curve.solve_for}_cr = {e.value:.12g}; then "
+            + (after or f"{_mode(e.mode_after)} from {e.value_after:.12g}")
         )
     failed = [i for i, k in enumerate(curve.kind) if k in (Status.FAILED, Status.ERROR)]
     for i in failed:

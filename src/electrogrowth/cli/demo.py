@@ -20,6 +20,7 @@ from ..figures.plots import plot_curve, render_pattern
 from ..figures.style import COLORS, new_figure
 from ..model.params import TubeParameters
 from ..shapes.mode_shape import mode_shape
+from .progress import add_quiet_option, enabled, stage
 
 HEADLINE = TubeParameters(outer_radius=1.4, length=1.0, growth=1.0, stretch=1.0, voltage=0.4)
 
@@ -33,6 +34,7 @@ def configure_demo(parser: argparse.ArgumentParser) -> None:
         help="directory for the PNG, CSV and JSON results (default ./out)",
     )
     parser.add_argument("--quick", action="store_true", help="fewer curve points (for tests)")
+    add_quiet_option(parser)
 
 
 def run_demo(args) -> int:
@@ -43,7 +45,8 @@ def run_demo(args) -> int:
     rec = state.as_dict()
     (out / "state.json").write_text(json.dumps(rec, indent=1))
     _stress_profile(state, out)
-    scan = scan_modes(p, "growth")
+    with stage(args, "scanning the wrinkling modes for the critical growth"):
+        scan = scan_modes(p, "growth")
     crit = scan.critical
     (out / "critical.json").write_text(json.dumps(scan.as_dict(), indent=1))
     lines = [
@@ -63,7 +66,7 @@ def run_demo(args) -> int:
         out / "stress_profile.png",
         out / "critical.json",
     ]
-    written += _extras(p, crit, out, args.quick)
+    written += _extras(p, crit, out, args)
     lines.append("  wrote " + ", ".join(str(w) for w in written))
     print("\n".join(lines))
     return 0
@@ -89,8 +92,8 @@ def _stress_profile(state, out: Path) -> None:
     ):
         ax.plot(prof["r"], prof[key], color=color, label=label)
     ax.axhline(0.0, color="0.6", lw=0.6)
-    ax.set_xlabel("r / R_i")
-    ax.set_ylabel(r"Cauchy stress / $\mu$")
+    ax.set_xlabel(r"current radius $r / R_i$ (–)")
+    ax.set_ylabel(r"Cauchy stress / $\mu$ (–)")
     ax.set_title(
         rf"$\bar R_o$ = {state.params.outer_radius:g}, $\bar V$ ="
         rf" {state.params.voltage:g}, $\lambda_z$ = {state.params.stretch:g}",
@@ -100,11 +103,12 @@ def _stress_profile(state, out: Path) -> None:
     fig.savefig(out / "stress_profile.png", dpi=200)
 
 
-def _extras(params, crit, out: Path, quick: bool) -> list[Path]:
+def _extras(params, crit, out: Path, args) -> list[Path]:
     """The g_cr curve along the axial stretch and the 3D pattern of the critical mode."""
-    xs = np.linspace(0.95, 1.25, 4 if quick else 13)
-    curve = critical_curve(params, "growth", "stretch", xs)
+    xs = np.linspace(0.95, 1.25, 4 if args.quick else 13)
+    curve = critical_curve(params, "growth", "stretch", xs, progress=enabled(args))
     curve.to_csv(out / "gcr_curve.csv")
     plot_curve(curve).figure.savefig(out / "gcr_curve.png", dpi=200)
-    render_pattern(mode_shape(crit), path=out / "pattern.png")
+    with stage(args, "drawing the wrinkled tube in 3D"):
+        render_pattern(mode_shape(crit), path=out / "pattern.png")
     return [out / "gcr_curve.csv", out / "gcr_curve.png", out / "pattern.png"]

@@ -6,6 +6,7 @@ import argparse
 from pathlib import Path
 
 from ..figures import FIGURES
+from .progress import add_quiet_option, progress_options, stage
 
 
 def configure_figure(parser: argparse.ArgumentParser) -> None:
@@ -26,10 +27,13 @@ def configure_figure(parser: argparse.ArgumentParser) -> None:
         help="directory for fig<N>.png and fig<N>.csv (default ./out)",
     )
     parser.add_argument("--quick", action="store_true", help="low resolution (previews and tests)")
+    add_quiet_option(parser)
 
 
 def run_figure(args) -> int:
-    result = FIGURES[args.number](quick=args.quick)
+    fn = FIGURES[args.number]
+    with stage(args, f"computing figure {args.number}"):  # its curves show their own bars
+        result = fn(quick=args.quick, **progress_options(fn, args))
     for path in result.save(args.out):
         print(path)
     return 0

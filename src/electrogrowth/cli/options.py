@@ -4,15 +4,23 @@ from __future__ import annotations
 
 import argparse
 import math
+from typing import TYPE_CHECKING
 
-from ..bifurcation.scan import M_CAP, N_CAP, TOP_MAX, ScanOptions
 from ..errors import ParameterError
-from ..incremental.targets import FAMILIES, METHODS, Family, check_mode
 from ..model.controls import TUBE_CONTROLS
 from ..model.materials import BUILTIN, material_by_name
 from ..model.params import SIDES, TubeParameters
 from .energy import energy_from_args
 from .units import add_unit_options, number_or_quantity
+
+if TYPE_CHECKING:
+    from ..bifurcation.scan import ScanOptions
+    from ..incremental.targets import Family
+
+# The mode, scan and method options import bifurcation.scan and incremental.targets inside
+# their functions (an exception to docs/architecture.md's rule, for start-up speed): those
+# modules import numba for the compiled kernels (~0.35 s of CPU per process), which `state`
+# and the tube options every command shares do not need.
 
 
 def finite_number(text: str) -> float:
@@ -47,9 +55,9 @@ def bounded_int(lowest: int, highest: int, why: str = ""):
     return parse
 
 
-#: The largest m and n a scan may start from, and of one --mode: beyond them the waves are
-#: short enough for the exact short-wave (half-space) limit, which every scan computes.
-MODE_LIMITS = (M_CAP, N_CAP)
+#: Why the largest m and n a scan may start from, and of one --mode, are bifurcation.scan's
+#: M_CAP and N_CAP: beyond them the waves are short enough for the exact short-wave
+#: (half-space) limit, which every scan computes.
 SHORT_WAVES = "larger wavenumbers are covered by the exact short-wave limit"
 
 
@@ -240,6 +248,8 @@ MODE_COVERAGE = (
 
 def add_mode_range_options(group, *, top: bool = False) -> None:
     """--m-max and --n-max (and --top): the ScanOptions of a scan, defaults from it."""
+    from ..bifurcation.scan import M_CAP, N_CAP, TOP_MAX, ScanOptions  # start-up (see top)
+
     default = ScanOptions()
     group.add_argument(
         "--m-max",
@@ -274,10 +284,13 @@ def add_mode_range_options(group, *, top: bool = False) -> None:
 
 def add_mode_option(group) -> None:
     """--mode M N and --family: one mode instead of a scan."""
+    from ..bifurcation.scan import N_CAP  # start-up speed (see top)
+    from ..incremental.targets import FAMILIES
+
     group.add_argument(
         "--mode",
         nargs=2,
-        type=bounded_int(0, MODE_LIMITS[1], SHORT_WAVES),
+        type=bounded_int(0, N_CAP, SHORT_WAVES),
         metavar=("M", "N"),
         help="one mode instead of a scan: circumferential wavenumber m >= 0"
         " (lobes around) and axial half-wavenumber n >= 0 (half-waves"
@@ -304,16 +317,22 @@ def mode_from_args(args) -> tuple[int, int, Family] | None:
                 f"--family {args.family} needs --mode M N (a scan covers every family)"
             )
         return None
+    from ..incremental.targets import check_mode  # start-up speed (see top)
+
     m, n = args.mode
     return m, n, check_mode(m, n, args.family)
 
 
 def scan_options_from_args(args) -> ScanOptions:
     """The ScanOptions of --m-max, --n-max (and --top, where the command has it)."""
+    from ..bifurcation.scan import ScanOptions  # start-up speed (see top)
+
     top = getattr(args, "top", ScanOptions().top)
     return ScanOptions(m_range=(0, args.m_max), n_range=(1, args.n_max), top=top)
 
 
 def add_method_option(group, help_text: str) -> None:
     """--method: how the incremental problem is solved (incremental.targets.Method)."""
+    from ..incremental.targets import METHODS  # start-up speed (see top)
+
     group.add_argument("--method", choices=METHODS, default=METHODS[0], help=help_text)

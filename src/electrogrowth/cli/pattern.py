@@ -59,11 +59,12 @@ def configure_pattern(parser: argparse.ArgumentParser) -> None:
     shape = parser.add_argument_group("mode shape and output")
     add_method_option(
         shape,
-        "impedance = Riccati equation for the surface impedance, then"
-        " dU/dr = (G1 + G2 z) U / r inwards from the outer face (paper"
-        " eq. two_Riccati; default, falls back to collocation if the"
-        " impedance has a pole in the wall); collocation = null vector of"
-        " the Chebyshev collocation matrix",
+        "impedance = the paper's Riccati equation for the surface impedance,"
+        " then dU/dr = (G1 + G2 z) U / r inwards from the outer face (default;"
+        " where the impedance has a pole inside the wall, the independent"
+        " collocation method is used instead and the output says so);"
+        " collocation = the null vector of the independent Chebyshev"
+        " collocation method",
     )
     shape.add_argument(
         "--points",
@@ -197,7 +198,7 @@ def _print_text(rec: dict) -> None:
         f" ({rec['m']}, {rec['n']}),"
         f" {rec['family']}, k = {rec['k']:.6g}",
         tube_line(rec),
-        f"  mode shape by {rec['route']} (boundary residual"
+        f"  mode shape by the {rec['route']} method (boundary residual"
         f" {rec['boundary_residual']:.1e}): max |U_r|, |U_theta|, |U_z| = {big['U_r']:.4g},"
         f" {big['U_th']:.4g}, {big['U_z']:.4g}; max |Phi| = {big['Phi']:.4g}",
     ]

@@ -72,15 +72,20 @@ _PHYSICAL = {
     "length": ("length", "mm"),
     "r_i": ("length", "mm"),
     "r_o": ("length", "mm"),
+    "axial_force": ("force", "N"),
     "inner_pressure": ("stress", "kPa"),
     "outer_pressure": ("stress", "kPa"),
     **{f"sigma_{c}_{e}": ("stress", "kPa") for c in ("rr", "tt", "zz") for e in ("min", "max")},
 }
 
 
-def physical_record(record: dict, scales) -> dict:
+def physical_record(record: dict, scales, errors: dict | None = None) -> dict:
     """The values of a JSON record that have a physical unit: key -> [value, unit]. A
-    voltage needs the four scales, a length R_i, a stress mu; others are left out."""
+    voltage needs the four scales, a length R_i, a stress mu, a force mu and R_i; others are
+    left out, and so is the tube's length unless the user gave one. Each value keeps the
+    significant digits of its non-dimensional value: those its absolute error estimate in
+    ``errors`` (key -> error) supports, else 14 (a converted input such as 3 kV comes back as
+    3, not 3.0000000000000004)."""
     if scales is None:
         return {}
     out = {}
@@ -88,17 +93,15 @@ def physical_record(record: dict, scales) -> dict:
         value = record.get(key)
         if not isinstance(value, (int, float)) or isinstance(value, bool):
             continue
+        if key == "length" and not scales.given_length:
+            continue
         try:
-            q = (
-                scales.voltage(value, unit)
-                if kind == "voltage"
-                else scales.length(value, unit)
-                if kind == "length"
-                else scales.stress(value, unit)
-            )
+            q = getattr(scales, kind)(value, unit)
         except ParameterError:  # that scale is not given
             continue
-        out[key] = [float(q.magnitude), unit]
+        error = (errors or {}).get(key)
+        n = digits(value, error) if error else 14
+        out[key] = [float(f"{float(q.magnitude):.{n}g}"), unit]
     return out
 
 

@@ -15,7 +15,7 @@ from ..errors import ParameterError
 from ..figures import FIGURES, GALLERY
 from ..figures.plots import render_pattern
 from ..shapes.mode_shape import mode_shape
-from ..sweep.run import check_workers
+from .progress import add_quiet_option, counting, progress_options, stage
 
 #: The paper's captions (quoted; Figure 7's caption in the paper repeats Figure 5's topic,
 #: while the text describes critical stretches: we show what the text describes).
@@ -77,6 +77,7 @@ def configure_reproduce(parser: argparse.ArgumentParser) -> None:
         metavar="N",
         help="with --gallery, solve the tubes of an example on N processes (default 1)",
     )
+    add_quiet_option(parser)
 
 
 def run_reproduce(args) -> int:
@@ -91,12 +92,13 @@ def run_reproduce(args) -> int:
     out = args.out
     out.mkdir(parents=True, exist_ok=True)
     sections = []
-    for number in numbers:
+    for k, number in enumerate(numbers, 1):
         fn = FIGURES[number]
         t = time.perf_counter()
-        result = fn(quick=args.quick)
-        result.save(out)
-        patterns = [_pattern(number, pt, out) for pt in getattr(result, "points", ())]
+        with stage(args, f"figure {number} ({k} of {len(numbers)})", done=False):
+            result = fn(quick=args.quick, **progress_options(fn, args))
+            result.save(out)
+            patterns = [_pattern(number, pt, out) for pt in getattr(result, "points", ())]
         seconds = time.perf_counter() - t
         sections.append(_section(number, fn, result, patterns, seconds, args.quick))
         print(f"figure {number}: {out / f'fig{number}.png'} ({seconds:.1f} s)")
@@ -162,21 +164,25 @@ def run_gallery(args) -> int:
         raise ParameterError(
             f"gallery example {unknown[0]!r} is unknown; choose from {', '.join(GALLERY)}"
         )
+    from ..sweep.run import check_workers  # start-up speed: numba, --gallery only
+
     check_workers(args.workers)
     out = args.out
     out.mkdir(parents=True, exist_ok=True)
     sections = []
     pool = ProcessPoolExecutor(args.workers) if args.workers > 1 else None
-    for name in names:
+    for k, name in enumerate(names, 1):
         fn = GALLERY[name]
         t = time.perf_counter()
-        result = fn(quick=args.quick, mapper=pool.map if pool else map)
-        result.save(out)
-        patterns = []
-        for label, point in result.points:
-            path = out / f"{name}-{label}.png"
-            render_pattern(mode_shape(point), path=path)
-            patterns.append((label, point, path))
+        with stage(args, f"{name} ({k} of {len(names)})", done=False):
+            mapper = counting(pool.map if pool else map, args, name)
+            result = fn(quick=args.quick, mapper=mapper)
+            result.save(out)
+            patterns = []
+            for label, point in result.points:
+                path = out / f"{name}-{label}.png"
+                render_pattern(mode_shape(point), path=path)
+                patterns.append((label, point, path))
         seconds = time.perf_counter() - t
         sections.append(_gallery_section(fn, result, patterns, seconds, args.quick))
         print(f"{name}: {out / f'{name}.png'} ({seconds:.1f} s)", flush=True)

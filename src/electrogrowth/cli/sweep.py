@@ -9,7 +9,6 @@ import sys
 from pathlib import Path
 
 from ..errors import ElectrogrowthError, UsageError
-from ..figures.phase_diagram import phase_diagram
 from ..interrupts import Interrupted, interrupt_of
 from ..sweep.file import load_config
 from ..sweep.run import check_workers, compute_sweep
@@ -169,6 +168,7 @@ def configure_plot(parser: argparse.ArgumentParser) -> None:
 
 def run_plot(args) -> int:
     _need_sweep_extra()
+    from ..figures.phase_diagram import phase_diagram  # start-up speed: matplotlib, `plot` only
     from ..sweep.store import open_results  # the sweep extra (xarray, zarr)
 
     ds = open_results(args.store)

@@ -25,8 +25,14 @@ class QuantityText(str):
     """An option value with a unit ("2mm"), converted by :func:`resolve_units`."""
 
 
+class GivenNumber(float):
+    """A number typed on the command line (a default is a plain float): a length the user
+    gave is reported in physical units, the default L = 1 is not."""
+
+
 def number_or_quantity(text: str) -> float | QuantityText:
-    """A finite number (non-dimensional, as before), or a quantity with its unit."""
+    """A finite number (non-dimensional, as before; a :class:`GivenNumber`), or a quantity
+    with its unit."""
     try:
         value = float(text)
     except ValueError:
@@ -35,7 +41,7 @@ def number_or_quantity(text: str) -> float | QuantityText:
         return QuantityText(text)
     if not math.isfinite(value):
         raise argparse.ArgumentTypeError(f"{text!r} is not a finite number")
-    return value
+    return GivenNumber(value)
 
 
 #: The unit options (dest, flag).
@@ -60,7 +66,8 @@ def add_unit_options(parser: argparse.ArgumentParser) -> None:
         " --outer-radius and --length accept lengths (2.8mm) as well as Rbar_o and L;"
         " --shear-modulus and --permittivity with both radii let --voltage take a voltage"
         " (3kV), converted to Vbar = V / (R_o - R_i) sqrt(eps / mu). Results are then also"
-        " printed in these units (voltages in kV, stresses in kPa, lengths in mm).",
+        " printed in these units (voltages in kV, stresses in kPa, lengths in mm, the axial"
+        " force in N; a length only if you gave one).",
     )
     group.add_argument(
         "--inner-radius",
@@ -88,6 +95,10 @@ def resolve_units(args: argparse.Namespace) -> None:
     """
     if not hasattr(args, "inner_radius"):
         return
+    length_given = isinstance(getattr(args, "length", None), (GivenNumber, QuantityText))
+    for dest in DIMENSIONAL:  # plain floats from here on
+        if isinstance(getattr(args, dest, None), GivenNumber):
+            setattr(args, dest, float(getattr(args, dest)))
     given = {dest: getattr(args, dest) for dest, _ in UNIT_OPTIONS}
     quantities = {
         dest: getattr(args, dest)
@@ -120,7 +131,10 @@ def resolve_units(args: argparse.Namespace) -> None:
     eps = (
         math.nan if given["permittivity"] is None else absolute_permittivity(given["permittivity"])
     )
-    scales = Scales(r_i, r_o, mu, eps)
+    length = getattr(args, "length", None)
+    known = length_given and isinstance(length, float) and not math.isnan(r_i)
+    r_l = r_i * length if known else 0.0
+    scales = Scales(r_i, r_o, mu, eps, r_l)
     if "voltage" in quantities:
         missing = [
             flag

@@ -63,12 +63,12 @@ def figure4(
             elif kind == "limit point":
                 ax.plot([thr], [lam_thr], "o", color=color, ms=4)
         ax.set_title(rf"$\lambda_z = {lz:g}$", fontsize=9)
-        ax.set_xlabel(r"$\bar V$")
+        ax.set_xlabel(r"voltage $\bar V$ (–)")
     right = 1.08 * max(np.max(r[:, 2]) for r in rows)
     for ax in axes[0]:
         ax.set_xlim(0.0, right)
         ax.set_ylim(min(0.8, min(np.min(r[:, 3]) for r in rows) - 0.1), max_lambda_i)
-    axes[0, 0].set_ylabel(r"$\lambda_i$")
+    axes[0, 0].set_ylabel(r"inner stretch $\lambda_i$ (–)")
     axes[0, 0].plot([], [], "k--", lw=0.7, label="threshold")
     axes[0, 0].legend(loc="upper left", fontsize=8)
     fig.suptitle(rf"$\bar R_o = {outer_radius:g}$, {material.name}", fontsize=9)
@@ -142,9 +142,9 @@ def figure5(
             ax.set_title(rf"{name}, $g = {g:g}$", fontsize=9)
             ax.axhline(0.0, color="0.6", lw=0.5)
             ax.set_xlim(1.0, outer_radius)
-        row[0].set_ylabel(r"stress / $\mu$")
+        row[0].set_ylabel(r"Cauchy stress / $\mu$ (–)")
     for ax in axes[-1]:
-        ax.set_xlabel(r"$R / R_i$")
+        ax.set_xlabel(r"radius $R / R_i$ (–)")
     fig.legend(
         *axes[0, 0].get_legend_handles_labels(),
         loc="outside lower center",

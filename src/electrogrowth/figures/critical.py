@@ -4,8 +4,9 @@ Each figure is a pure function ``figure<N>(*, quick=False, ...)`` returning a
 :class:`ModeFigure` (a :class:`~.style.FigureResult` that also keeps the computed
 :class:`curves.Curve` objects and, for Figs. 9 and 10, the representative points of the
 paper's panels B). Every curve comes from :func:`curves.critical_curve`: a mode scan per
-grid point, the switches of the critical mode located exactly. Branches are labelled
-"n, m" as in the paper; dots are switches.
+grid point, the switches of the critical mode located exactly. Branches are labelled with
+their critical mode "(m, n)" (the paper writes "n, m"); dots are switches, open circles the
+ends of branches.
 
 The CSV (``fig<N>.csv``) has one row per curve row: the fixed parameters of the curve, the
 abscissa, the critical value, m, n and ``kind`` coded as :data:`KIND_CODES`. Figures 9 and
@@ -27,8 +28,8 @@ from ..bifurcation.scan import ScanOptions, scan_modes
 from ..model.materials import Material, neo_hookean
 from ..model.params import TubeParameters
 from ..outcomes import Kind, Status
-from .plots import plot_curve
-from .style import COLORS, FigureResult, new_figure
+from .plots import curve_legend, plot_curve
+from .style import COLORS, FigureResult, new_figure, wrapped_title
 
 #: kind column of the CSVs.
 KIND_CODES = {
@@ -37,6 +38,7 @@ KIND_CODES = {
     Kind.THRESHOLD: 2,
     Status.FAILED: 3,
     Kind.SURFACE: 4,
+    Kind.END: 5,
 }
 #: Mode ranges of every scan (extended automatically when the optimum is on an edge). The
 #: full figures use the scan's defaults: near the voltage threshold the critical value
@@ -148,7 +150,12 @@ def _finite(c: Curve) -> np.ndarray:
 
 
 def _title(ax, text: str):
-    ax.set_title(text, fontsize=9)
+    wrapped_title(ax, text, 9)
+
+
+def _grid(c: Curve) -> np.ndarray:
+    """The grid rows of a curve (not the located switches and ends)."""
+    return ~np.isin(c.kind, (Kind.SWITCH, Kind.END))
 
 
 # -- Figure 6 -------------------------------------------------------------------------------
@@ -190,11 +197,12 @@ def figure6(
     fig, axes = new_figure(7.0, 2.8, 1, 2)
     plot_curve(a, axes[0, 0])
     plot_curve(b, axes[0, 1])
+    curve_legend(axes[0, 1])
     _title(axes[0, 0], rf"(A) $g = 1$, $\bar V = 0$, $L = {length:g}$")
     _title(axes[0, 1], rf"(B) $g = 1$, $\lambda_z = 1$, $L = {length:g}$")
     headline = {}
     for name, c in (("lambda_cr", a), ("V_cr", b)):
-        grid = c.kind != Kind.SWITCH
+        grid = _grid(c)
         for x, v, m, n in zip(c.x[grid], c.value[grid], c.m[grid], c.n[grid]):
             headline[f"{name}_Ro{x:g}"] = float(v)
             headline[f"m_{name}_Ro{x:g}"], headline[f"n_{name}_Ro{x:g}"] = float(m), float(n)
@@ -244,12 +252,13 @@ def figure7(
             c = _curve(p, "stretch", "outer_radius", radii, quick, side=side, progress=progress)
             plot_curve(c, ax, color=COLORS[row])
             curves.append(c)
-            grid = c.kind != Kind.SWITCH
+            grid = _grid(c)
             for x, v, m, n in zip(c.x[grid], c.value[grid], c.m[grid], c.n[grid]):
                 headline[f"{side}_V{V:g}_Ro{x:g}"] = float(v)
                 headline[f"m_{side}_V{V:g}_Ro{x:g}"] = float(m)
                 headline[f"n_{side}_V{V:g}_Ro{x:g}"] = float(n)
             _title(ax, rf"{side}: $\bar V = {V:g}$, $g = 1$, $L = {length:g}$")
+    curve_legend(axes[1, 0])  # a panel with switches: the legend shows their mark
     cols, table = _table(curves)
     return ModeFigure(7, cols, table, fig, headline, tuple(curves))
 
@@ -312,7 +321,7 @@ def figure8(
     ax.plot(lz, thr, ":", color="0.5", lw=0.9, label="threshold")
     ax.set_ylim(0.0, 1.15 * max(headline[f"V_max_L{L:g}"] for L in lengths))
     _title(ax, rf"$\bar R_o = {outer_radius:g}$, $g = 1$")
-    ax.legend(fontsize=7)
+    curve_legend(ax)
     cols, table = _table(curves)
     return ModeFigure(8, cols, table, fig, headline, tuple(curves))
 
@@ -450,7 +459,7 @@ def figure9(
             }
         )
     _title(ax, rf"$\bar R_o = {outer_radius:g}$, $L = {length:g}$")
-    ax.legend(fontsize=7, loc="upper left")
+    curve_legend(ax, loc="upper left")
     cols, table = _table(curves)
     return ModeFigure(9, cols, table, fig, headline, tuple(curves), tuple(pts))
 
@@ -507,6 +516,6 @@ def figure10(
             }
         )
     _title(ax, rf"$\bar R_o = {outer_radius:g}$, $L = {length:g}$")
-    ax.legend(fontsize=7, loc="lower left")
+    curve_legend(ax, loc="lower left")
     cols, table = _table(curves)
     return ModeFigure(10, cols, table, fig, headline, tuple(curves), tuple(pts))

@@ -91,7 +91,7 @@ def mucosal_folding(*, quick: bool = False, mapper: Callable = map) -> GalleryFi
     c.legend(fontsize=7)
     _bars(d, by_kind)
     for ax, tag in zip(axes.flat, "abcd", strict=True):
-        ax.set_title(f"({tag}) labels: m, n", loc="left", fontsize=7)
+        ax.set_title(f"({tag}) labels: critical mode (m, n)", loc="left", fontsize=7)
 
     base = by_h[thick.index(0.1)]
     headline = {"hoop_growth": base.value, "m_cr": base.mode[0], "n_cr": base.mode[1]}
@@ -125,7 +125,7 @@ def _bars(ax, by_kind: dict) -> None:
             value = o.value if o.critical is not None else 1.0
             ax.bar(x, value - 1.0, 0.38, bottom=1.0, color=color, label=label if i == 0 else None)
             m, n = o.mode
-            text = "none" if o.critical is None else (f"{m}, {n}" if m >= 0 else "inf")
+            text = "none" if o.critical is None else (f"({m}, {n})" if m >= 0 else "∞")
             ax.annotate(
                 text,
                 (x, max(value, 1.0)),
@@ -247,7 +247,7 @@ def pressurised_dielectric(*, quick: bool = False, mapper: Callable = map) -> Ga
     draw_onsets(a, by_p, color=COLORS[1], label=r"$\lambda_z = 1$")
     a.margins(y=0.12)
     a.set(xlabel=r"inner pressure $P_i/\mu$", ylabel=r"critical voltage $\bar V$")
-    a.set_title("(a) voltage at onset; labels m, n", loc="left", fontsize=7)
+    a.set_title("(a) voltage at onset; labels: critical mode (m, n)", loc="left", fontsize=7)
     colors = dict(zip(ends, COLORS[2:], strict=False))
     for label, thr in limits.items():
         resp = pressure_response(free[label], points=9 if quick else 41)

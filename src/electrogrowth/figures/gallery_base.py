@@ -157,8 +157,8 @@ def result(name, title, onsets, fig, headline, points=(), extra_rows=()) -> Gall
 
 
 def draw_onsets(ax, onsets, *, color, label, marker="o", annotate=True):
-    """Critical value against x, each point labelled with its mode "m, n" (the short-wave
-    limit inf); a tube with no onset is a cross on the x axis (and, when no tube of the
+    """Critical value against x, each point labelled with its mode "(m, n)" (the
+    short-wave limit "∞"); a tube with no onset is a cross on the x axis (and, when no tube of the
     panel has one, the reason is written in it)."""
     ok = [o for o in onsets if o.critical is not None]
     ax.plot(
@@ -166,7 +166,7 @@ def draw_onsets(ax, onsets, *, color, label, marker="o", annotate=True):
     )
     for o in ok:
         m, n = o.mode
-        text = f"{m}, {n}" if m >= 0 else ("inf" if o.critical.kind == "surface" else "thr")
+        text = f"({m}, {n})" if m >= 0 else ("∞" if o.critical.kind == "surface" else "threshold")
         if annotate:
             ax.annotate(
                 text,

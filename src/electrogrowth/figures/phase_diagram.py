@@ -11,6 +11,7 @@ bold and dashed.
 from __future__ import annotations
 
 import dataclasses
+import re
 
 import numpy as np
 from matplotlib import colormaps
@@ -22,8 +23,14 @@ from scipy import ndimage
 
 from ..errors import ParameterError
 from ..outcomes import Kind, Status
+from .labels import axis_label, symbol_text
 
 THRESHOLD, NONE, FAILED, PENDING = "threshold", "no instability", "failed", "pending"
+UNSTABLE = "already unstable"
+#: the message of a point whose tube is unstable before the control is applied (march.py)
+_UNSTABLE = re.compile(
+    r"already unstable in mode \(\d+, \d+\).*? at (?P<name>[\w\[\].+]+) = (?P<x>[^;\s]+)"
+)
 SURFACE = "surface (m, n -> inf)"
 MAX_LABELS = 40
 
@@ -31,7 +38,8 @@ MAX_LABELS = 40
 @dataclasses.dataclass(frozen=True)
 class Region:
     """A connected set of grid cells with the same outcome; ``label`` is (m, n) or one of
-    "threshold", "surface (m, n -> inf)", "no instability", "failed", "pending"."""
+    "threshold", "surface (m, n -> inf)", "no instability", "already unstable at g = 1"
+    (or another control and start), "failed", "pending"."""
 
     label: tuple[int, int] | str
     cells: int
@@ -70,6 +78,11 @@ def select_plane(ds, x: str, y: str, at: dict | None = None):
 def outcomes(plane) -> np.ndarray:
     """Per cell: (m, n) of the critical mode, or a string for every other outcome."""
     status = np.asarray(plane["status"].values, dtype=object)
+    message = (
+        np.asarray(plane["message"].values, dtype=object)
+        if "message" in plane
+        else np.full(status.shape, "", dtype=object)
+    )
     kind = np.asarray(plane["kind"].values, dtype=object)
     m, n = np.asarray(plane["m"].values), np.asarray(plane["n"].values)
     out = np.empty(status.shape, dtype=object)
@@ -80,9 +93,22 @@ def outcomes(plane) -> np.ndarray:
                 if kind[idx] == Kind.BIFURCATION
                 else {Kind.THRESHOLD: THRESHOLD, Kind.SURFACE: SURFACE}.get(kind[idx], NONE)
             )
+        elif status[idx] == "pending":
+            out[idx] = PENDING
         else:
-            out[idx] = PENDING if status[idx] == "pending" else FAILED
+            out[idx] = _failure(str(message[idx]))
     return out
+
+
+def _failure(message: str) -> str:
+    """ "already unstable at g = 1" when the tube is unstable before the control is applied
+    (the march's start), else "failed"."""
+    if UNSTABLE not in message:
+        return FAILED
+    found = _UNSTABLE.search(message)
+    if found is None:
+        return UNSTABLE
+    return f"{UNSTABLE} at {symbol_text(found['name'])} = {found['x']}"
 
 
 def regions(labels: np.ndarray, xs: np.ndarray, ys: np.ndarray) -> list[Region]:
@@ -131,23 +157,25 @@ def cell_edges(centres) -> np.ndarray:
     return np.concatenate([[2 * c[0] - mid[0]], mid, [2 * c[-1] - mid[-1]]])
 
 
+def _plain(text) -> str:
+    """A text read from a store, shown as it is: matplotlib would parse ``$...$`` in it as
+    mathtext, and a store from someone else may hold any text (a malformed one ended the
+    plot with an internal error)."""
+    return str(text).replace("$", r"\$")
+
+
 def _label_text(label) -> str:
     return f"m={label[0]}, n={label[1]}" if isinstance(label, tuple) else label
 
 
-#: Axis symbols in matplotlib's mathtext (the dataset's "symbol" attributes are plain text).
-SYMBOLS = {
-    "stretch": r"$\lambda_z$",
-    "voltage": r"$\bar V$",
-    "outer_radius": r"$\bar R_o$",
-    "length": r"$L$",
-    "growth": r"$g$",
-}
-
-
 def _axis_label(coord, name=None) -> str:
-    symbol = SYMBOLS.get(name or coord.name, coord.attrs.get("symbol", ""))
-    return " ".join(filter(None, (coord.attrs.get("long_name", coord.name), symbol)))
+    """Words, symbol and unit of a swept parameter (``name``: the solved-for control, for
+    the colour bar of the critical value), never a code name in math italics."""
+    if name is not None:
+        return axis_label(name, critical=True)
+    if coord.name in coord.coords or coord.name in coord.dims:
+        return axis_label(str(coord.name))
+    return _plain(coord.attrs.get("long_name", coord.name))
 
 
 def phase_diagram(ds, x: str, y: str, *, at: dict | None = None) -> Figure:
@@ -199,12 +227,13 @@ def phase_diagram(ds, x: str, y: str, *, at: dict | None = None) -> Figure:
         ylabel=_axis_label(plane[y]),
     )
     fixed = [
-        f"{plane[c].attrs.get('symbol', c)} = {float(plane[c]):g}"
+        f"{_plain(plane[c].attrs.get('symbol', c))} = {float(plane[c]):g}"
         for c in plane.coords
         if plane[c].ndim == 0 and c != "rank"
     ]
     ax.set_title(
-        ds.attrs.get("title", "electrogrowth sweep") + (f"\n{', '.join(fixed)}" if fixed else ""),
+        _plain(ds.attrs.get("title", "electrogrowth sweep"))
+        + (f"\n{', '.join(fixed)}" if fixed else ""),
         fontsize=10,
     )
     keys = [
@@ -222,7 +251,9 @@ def phase_diagram(ds, x: str, y: str, *, at: dict | None = None) -> Figure:
         ),
         (
             bool(np.ma.getmaskarray(value).any()),
-            Patch(color="0.85", label="failed / no instability / pending"),
+            Patch(
+                color="0.85", label="no value: failed, already unstable, no instability, pending"
+            ),
         ),
     ]
     handles = [h for present, h in keys if present]

@@ -6,6 +6,7 @@ figures/. Each function returns an off-screen matplotlib figure (or axes).
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import matplotlib as mpl
@@ -17,31 +18,11 @@ from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
 from .._types import FloatArray
 from ..bifurcation.curves import Curve
-from ..outcomes import NO_MODE
+from ..outcomes import NO_MODE, Status
 from ..shapes.mode_shape import ModeShape
 from ..shapes.wall import Surface, wall_surface
-from .style import COLORS, STYLE
-
-SYMBOLS = {
-    "stretch": r"\lambda_z",
-    "voltage": r"\bar V",
-    "outer_radius": r"\bar R_o",
-    "length": "L",
-    "growth": "g",
-}
-CRITICAL = {
-    "stretch": r"\lambda_{z,\rm cr}",
-    "voltage": r"\bar V_{\rm cr}",
-    "growth": r"g_{\rm cr}",
-}
-
-
-def _tex(name: str) -> str:
-    """A control or tube key of a layered tube as math text (growth[1].theta -> g_theta[1])."""
-    symbols = {"pressure": "P_i", "force": "F", "growth": "g", "outer_pressure": "P_o"}
-    head, _, rest = name.partition("[")
-    text = symbols.get(head, head.replace("_", r"\_"))
-    return text + (r"\," + "[" + rest.replace("_", r"\_") if rest else "")
+from .labels import axis_label
+from .style import COLORS, STYLE, wrap
 
 
 def plot_curve(
@@ -49,23 +30,36 @@ def plot_curve(
 ):
     """Draw the curve on ``ax`` (a new figure when None) and return ``ax``.
 
-    Each branch is labelled "n, m" (the paper's order; "inf" for the short-wave limit, a
-    surface instability) at its middle; switches are dots, the threshold a dashed line.
+    Each branch is labelled with its critical mode "(m, n)" (m circumferential, n axial;
+    "m, n → ∞" for the short-wave limit, a surface instability) at its middle; a branch of
+    one point is a marker. Switches (two modes equally critical) are filled dots, the ends
+    of branches (a jump of the critical value, or no wrinkling beyond) open circles, the
+    threshold where the axisymmetric state is lost a dashed line. Without ``ax`` the new
+    axes get the legend of these marks (:func:`curve_legend`).
     """
-    if ax is None:
-        ax = Figure(figsize=(4.0, 3.0), layout="constrained").subplots()
+    new = ax is None
+    if new:
+        with mpl.rc_context(STYLE):
+            ax = Figure(figsize=(4.4, 3.3), layout="constrained").subplots()
     first, k = True, 0
     for (m, n), rows in curve.branches():
         x, v = curve.x[rows], curve.value[rows]
         if (m, n) == NO_MODE and not curve.surface[rows].all():  # the threshold
-            ax.plot(x, v, "--", color=color, lw=0.9)
+            ax.plot(x, v, "--", color=color, lw=0.9, marker="." if len(rows) == 1 else "")
             continue
-        ax.plot(x, v, "-", color=color, label=label if first else None)
+        ax.plot(
+            x,
+            v,
+            "-" if len(rows) > 1 else "s",
+            color=color,
+            ms=3.5,
+            label=label if first else None,
+        )
         first = False
         if annotate:
             i = len(rows) // 2
             xm, vm = (x[i], v[i]) if len(rows) > 2 else (x.mean(), v.mean())
-            text = r"$\infty$" if curve.surface[rows].all() else f"{n}, {m}"
+            text = "m, n → ∞" if curve.surface[rows].all() else f"({m}, {n})"
             ax.annotate(
                 text,
                 (xm, vm),
@@ -76,18 +70,60 @@ def plot_curve(
                 color=color,
             )
             k += 1
+    _marks(ax, curve, color)
+    ax.ticklabel_format(useOffset=False)
+    ax.set_xlabel(axis_label(curve.along))
+    ax.set_ylabel(axis_label(curve.solve_for, critical=True))
+    if new:
+        curve_legend(ax)
+    return ax
+
+
+def _marks(ax, curve: Curve, color: str) -> None:
+    """Dots at the switches, open circles at the ends of branches: the located ends and the
+    last point before (first after) a failed grid point."""
+    taken = {h.get_label() for h in ax.get_lines()}
     if curve.switches:
         ax.plot(
             [s.x for s in curve.switches] * 2,
             [s.value for s in curve.switches] + [s.value_after for s in curve.switches],
             "o",
             color=color,
-            ms=2.5,
+            ms=3,
+            label=None if "switch" in taken else "switch",
         )
-    ax.set_xlabel(f"${SYMBOLS.get(curve.along, _tex(curve.along))}$")
-    crit = CRITICAL.get(curve.solve_for, _tex(curve.solve_for) + r"_{\rm cr}")
-    ax.set_ylabel(f"${crit}$")
-    return ax
+    xs, vs = [], []
+    for s in curve.ends:
+        for mode, v in ((s.mode_before, s.value), (s.mode_after, s.value_after)):
+            if mode != NO_MODE or math.isfinite(v):
+                xs.append(s.x)
+                vs.append(v)
+    failed = curve.kind == Status.FAILED
+    for _, rows in curve.branches():
+        for i in (rows[0] - 1, rows[-1] + 1):
+            if 0 <= i < len(curve.x) and failed[i]:
+                j = rows[0] if i < rows[0] else rows[-1]
+                xs.append(curve.x[j])
+                vs.append(curve.value[j])
+    if xs:
+        ax.plot(
+            xs,
+            vs,
+            "o",
+            mfc="white",
+            mec=color,
+            ms=4,
+            zorder=3,
+            label=None if "branch ends" in taken else "branch ends",
+        )
+
+
+def curve_legend(ax, **kwargs):
+    """The legend of a curve plot, titled with what the branch labels are."""
+    kwargs.setdefault("fontsize", 7)
+    kwargs.setdefault("title_fontsize", 7)
+    handles, labels = ax.get_legend_handles_labels()
+    return ax.legend(handles, labels, title="branch label: critical mode (m, n)", **kwargs)
 
 
 def describe(shape: ModeShape) -> str:
@@ -143,8 +179,8 @@ def plot_mode_shape(shape: ModeShape):
             ax.set_xlabel(r"current radius $r / R_i$")
             ax.tick_params(direction="in", top=True, right=True, labelsize=8)
             ax.legend(loc="best", fontsize=8)
-        route = shape.route + (" (fallback)" if shape.note else "")
-        fig.suptitle(f"mode shape, {describe(shape)}; {route}", fontsize=8)
+        route = f"{shape.route} method" + (" (the impedance method failed)" if shape.note else "")
+        fig.suptitle(wrap(f"mode shape, {describe(shape)}; {route}", 6.8, 8), fontsize=8)
     return fig
 
 
@@ -199,7 +235,11 @@ def render_pattern(
     elev, azim = 28.0, -60.0
     half = 1.02 * float(max(np.abs(surf.x).max(), np.abs(surf.y).max()))
     height = float(np.ptp(surf.z))
-    side, top = 4.7, 0.55  # inches: the square 3D axes, room for the title
+    side = 4.7  # inches: the square 3D axes
+    title = (
+        wrap(describe(shape), side / 0.84 - 0.2, 8) + f"\nwrinkle amplitude {amplitude:g} $R_i$"
+    )
+    top = 0.15 + 0.2 * (title.count("\n") + 1)  # inches of room for the title
     with mpl.rc_context(STYLE):
         fig = Figure(figsize=(side / 0.84, side))
         ax = fig.add_axes((0.0, 0.0, 0.84, 1.0), projection="3d")
@@ -219,7 +259,7 @@ def render_pattern(
         bar.set_label(r"radial displacement $u_r / R_i$", fontsize=8)
         bar.ax.tick_params(labelsize=7)
         fig.suptitle(
-            describe(shape) + f"\nwrinkle amplitude {amplitude:g} $R_i$",
+            title,
             fontsize=8,
             y=1.0 - 0.08 / H,
             va="top",

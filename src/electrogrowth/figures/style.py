@@ -7,6 +7,7 @@ Figures are drawn with the object-oriented API on an Agg canvas: no pyplot, no g
 from __future__ import annotations
 
 import dataclasses
+import re
 from pathlib import Path
 
 import matplotlib as mpl
@@ -22,6 +23,7 @@ STYLE = {
     "xtick.direction": "in",
     "ytick.direction": "in",
     "legend.frameon": False,
+    "axes.formatter.useoffset": False,  # 1.2 not "0.053 + 1.147": a reader reads values
 }
 
 
@@ -57,3 +59,36 @@ def new_figure(width: float, height: float, rows: int, cols: int):
     for ax in axes.flat:
         ax.tick_params(direction="in", top=True, right=True, labelsize=8)
     return fig, axes
+
+
+def wrap(text: str, width_inches: float, fontsize: float = 8.0) -> str:
+    """``text`` broken into lines that fit ``width_inches`` at ``fontsize`` points, never
+    inside a $math$ span (a line of its own in mathtext), existing line breaks kept."""
+    chars = max(20, int(width_inches * 72.0 / (0.55 * fontsize)))
+    lines = []
+    for line in text.split("\n"):
+        words = re.findall(r"(?:\$[^$]*\$|[^\s$])+", line) or [""]
+        current = ""
+        for word in words:
+            joined = f"{current} {word}" if current else word
+            if current and _visible(joined) > chars:
+                lines.append(current)
+                current = word
+            else:
+                current = joined
+        lines.append(current)
+    return "\n".join(lines)
+
+
+def _visible(text: str) -> int:
+    """About how many characters ``text`` shows: a mathtext command (\\bar, \\lambda) is
+    one glyph or none, braces, ^, _ and $ none."""
+    text = re.sub(r"\\(bar|hat|tilde|rm|mathrm|,)\b", "", text)
+    text = re.sub(r"\\[A-Za-z]+", "x", text)
+    return len(re.sub(r"[${}^_]", "", text))
+
+
+def wrapped_title(ax, text: str, fontsize: float = 8.0) -> None:
+    """Set the title of ``ax`` wrapped to the axes' width, so it never runs off the figure."""
+    width = ax.figure.get_figwidth() * ax.get_position().width
+    ax.set_title(wrap(text, width, fontsize), fontsize=fontsize)

@@ -608,7 +608,7 @@ def critical_collocation(
     root, info = scipy.optimize.brentq(target, a, b, xtol=xtol, full_output=True)
     if not info.converged:
         raise ConvergenceError(
-            f"brentq did not converge for {solve_for} in [{a}, {b}]: {info.flag}"
+            f"the bracketed root solve did not converge for {solve_for} in [{a}, {b}]: {info.flag}"
         )
     return float(root)
 

@@ -1,4 +1,4 @@
-"""A tube as a stack of perfectly bonded layers, and its loads (issue 11).
+"""A tube as a stack of perfectly bonded layers, and its loads.
 
 Units mu = eps = R_i = 1: every layer's shear modulus and permittivity are relative to these
 reference values, its outer radius is in units of the inner radius of the whole tube. Layers are

@@ -18,6 +18,12 @@ time (sympy) and evaluated numerically (numpy, vectorised):
 
 Arguments are the principal elastic stretches l1 (radial), l2 (hoop), l3 (axial), with
 l1 l2 l3 = 1, and the current (Eulerian) electric displacement d = D_1, which is radial.
+
+Per energy, sympy differentiates Omega in the invariants and lambdifies those derivatives
+(milliseconds, once per energy and process); the chain rule from them to stress, field and
+moduli is the same for every energy and ships as generated plain Python
+(:mod:`._chain_rule`, written by tools/derive_chain_rule.py), so no process derives it and
+no energy needs a compile step or an on-disk cache.
 """
 
 from __future__ import annotations
@@ -31,6 +37,8 @@ import numpy as np
 import sympy as sp
 
 from ..errors import MaterialError, ParameterError
+from . import _chain_rule
+from .energy_grammar import parse_energy, shorten
 
 I1, I2, I4, I5, I6 = INVARIANTS = sp.symbols("I1 I2 I4 I5 I6", real=True)
 _ORDER = (1, 2, 4, 5, 6)
@@ -64,67 +72,6 @@ MODULI_NAMES = (
     "K33",
 )
 MODULI_INDEX = {name: i for i, name in enumerate(MODULI_NAMES)}
-
-
-def _index(name: str) -> tuple[int, ...]:
-    return tuple(int(c) - 1 for c in name[1:])
-
-
-@functools.lru_cache(maxsize=1)
-def _universal_forms():
-    """Chain-rule forms of stress, field and moduli at a principal point.
-
-    Returns lambdified functions of (l1, l2, l3, d, w, W) where w[k] = dOmega/dI_k and
-    W[k][l] = d2Omega/dI_k dI_l, k, l over (I1, I2, I4, I5, I6). Derived once: the
-    invariants are polynomials in F and D~, so their gradients and Hessians at
-    F = diag(l1, l2, l3), D~ = (d / l1, 0, 0) are small exact expressions.
-    """
-    F = sp.Matrix(3, 3, sp.symbols("F0:9", real=True))
-    Dt = sp.Matrix(sp.symbols("Dt0:3", real=True))
-    C = F.T * F
-    inv = [
-        C.trace(),
-        (C.trace() ** 2 - (C * C).trace()) / 2,
-        (Dt.T * Dt)[0],
-        (Dt.T * C * Dt)[0],
-        (Dt.T * C * C * Dt)[0],
-    ]
-    X = list(F) + list(Dt)
-    l1, l2, l3, d = sp.symbols("l1 l2 l3 d", positive=True)
-    point = {s: 0 for s in X}
-    point.update({F[0, 0]: l1, F[1, 1]: l2, F[2, 2]: l3, Dt[0]: d / l1})
-    grad = [sp.Matrix([sp.diff(I, x) for x in X]).subs(point) for I in inv]
-    hess = [sp.hessian(I, X).subs(point) for I in inv]
-    w = sp.symbols("w0:5", real=True)
-    W = sp.Matrix(5, 5, lambda a, b: sp.Symbol(f"W{min(a, b)}{max(a, b)}", real=True))
-    dO = sum((w[k] * grad[k] for k in range(5)), sp.zeros(12, 1))
-    d2O = sum((w[k] * hess[k] for k in range(5)), sp.zeros(12, 12))
-    d2O += sum(
-        (W[a, b] * grad[a] * grad[b].T for a in range(5) for b in range(5)), sp.zeros(12, 12)
-    )
-    Fd = sp.diag(l1, l2, l3)
-    fi = lambda i, a: 9 + a if i is None else 3 * i + a  # noqa: E731  F_{i alpha} -> X
-    # tau_ij = F_ia dOmega/dF_ja ; E_i = F^-1_ai dOmega/dD~_a (diagonal F)
-    tau = [sp.simplify(Fd[i, i] * dO[fi(i, i)]) for i in range(3)]
-    E1 = sp.simplify(dO[9] / l1)
-    comps = []
-    for name in MODULI_NAMES:
-        idx = _index(name)
-        if name[0] == "A":
-            p, i, q, j = idx  # F_pa F_qb A_{a i b j}, diagonal F: a = p, b = q
-            comps.append(Fd[p, p] * Fd[q, q] * d2O[fi(i, p), fi(j, q)])
-        elif name[0] == "G":
-            p, i, q = idx  # F_pa F^-1_bq Gamma_{a i b}
-            comps.append(Fd[p, p] / Fd[q, q] * d2O[fi(i, p), 9 + q])
-        else:
-            p, q = idx
-            comps.append(d2O[9 + p, 9 + q] / (Fd[p, p] * Fd[q, q]))
-    args = (l1, l2, l3, d, w, list(W))
-    return (
-        sp.lambdify(args, tau, "numpy"),
-        sp.lambdify(args, E1, "numpy"),
-        sp.lambdify(args, [sp.expand(c) for c in comps], "numpy", cse=True),
-    )
 
 
 @functools.lru_cache(maxsize=64)
@@ -165,6 +112,31 @@ def reference_moduli(energy: sp.Expr) -> tuple[float, float]:
     return mu, (1.0 / e if e != 0 else math.inf)
 
 
+#: A point near the reference state, exact, inside every built-in energy's domain.
+_WITNESS = {I1: sp.Rational(31, 10), I2: sp.Rational(61, 20), I4: sp.Rational(1, 5)}
+_WITNESS.update({I5: sp.Rational(1, 4), I6: sp.Rational(3, 10)})
+
+
+def _nonzero_at_witness(expr: sp.Expr) -> bool:
+    """True if expr is a finite real number clearly away from 0 at _WITNESS (30 digits):
+    proof that it is not identically zero. False says nothing (zero, not finite there, or a
+    rounding residue of float coefficients, which simplify then judges as before)."""
+    try:
+        value = complex(expr.subs(_WITNESS).evalf(30))
+    except (TypeError, ValueError, ZeroDivisionError):
+        return False
+    return value.imag == 0 and math.isfinite(value.real) and abs(value.real) > 1e-12
+
+
+def _all_finite(values) -> bool:
+    """Every entry of every value finite (a lambdified function returns plain numbers for
+    constant derivatives, arrays for the others)."""
+    return all(
+        math.isfinite(v) if isinstance(v, (int, float)) else bool(np.isfinite(v).all())
+        for v in values
+    )
+
+
 def _invariants(l1, l2, l3, d):
     dt2 = (d / l1) ** 2
     return (
@@ -184,9 +156,11 @@ class Material:
     ----------
     name : str
         Short label used in output.
-    energy : sympy.Expr
+    energy : sympy.Expr or str
         Omega in the symbols ``I1, I2, I4, I5, I6`` of this module, in units mu = eps = 1
-        (the initial shear modulus and permittivity), zero-stress in the virtual state.
+        (the initial shear modulus and permittivity), zero-stress in the virtual state; or
+        its text, e.g. ``"(I1 - 3)/2 + I5/2"``, read by the grammar of
+        model/energy_grammar.py (never evaluated; docs/security.md).
     check_units : bool, keyword-only
         Refuse (MaterialError) an energy whose reference state (I1 = I2 = 3, D = 0) has a
         shear modulus mu = 2 (Omega_1 + Omega_2) or a permittivity
@@ -198,7 +172,8 @@ class Material:
     Raises
     ------
     MaterialError
-        An expression in other symbols, or (check_units) moduli other than 1, naming which.
+        An expression in other symbols, a text outside the grammar, an energy of another
+        type, or (check_units) moduli other than 1, naming which.
 
     Examples
     --------
@@ -213,17 +188,23 @@ class Material:
     check_units: bool = dataclasses.field(default=True, kw_only=True, compare=False, repr=False)
 
     def __post_init__(self):
-        # Match invariants by name, so sp.Symbol("I1") or a string energy work too.
+        # Text is read by the whitelist grammar, never by sympify (data never executes);
+        # invariants are matched by name, so sp.Symbol("I1") works too.
         names = {str(s): s for s in INVARIANTS}
-        try:
-            expr = sp.sympify(self.energy, locals=names)
-        except (sp.SympifyError, TypeError) as exc:
-            raise MaterialError(f"energy of {self.name!r} is not an expression: {exc}") from None
+        if isinstance(self.energy, str):
+            expr = parse_energy(self.energy)
+        elif isinstance(self.energy, sp.Expr):
+            expr = self.energy
+        else:
+            raise MaterialError(
+                f"energy of {shorten(self.name)!r} is {type(self.energy).__name__}; give a sympy"
+                ' expression in I1, I2, I4, I5, I6 or its text, e.g. "(I1 - 3)/2 + I5/2"'
+            )
         expr = expr.subs({s: names[str(s)] for s in expr.free_symbols if str(s) in names})
         extra = expr.free_symbols - set(INVARIANTS)
         if extra:
             raise MaterialError(
-                f"energy of {self.name!r} has unknown symbols {sorted(map(str, extra))};"
+                f"energy of {shorten(self.name)!r} has unknown symbols {sorted(map(str, extra))};"
                 " use only I1, I2, I4, I5, I6 with parameters substituted"
             )
         object.__setattr__(self, "energy", expr)
@@ -235,8 +216,8 @@ class Material:
             ):
                 if not abs(value - 1.0) <= 1e-12:
                     raise MaterialError(
-                        f"energy of {self.name!r} has {what} = {value:.12g} in the reference"
-                        f" state, not 1: every result is in units mu = eps = 1, so {why}"
+                        f"energy of {shorten(self.name)!r} has {what} = {value:.12g} in the"
+                        f" reference state, not 1: every result is in units mu = eps = 1, so {why}"
                         " would be in the wrong units; rescale it, or build it with"
                         " Material.normalized(name, energy)"
                     )
@@ -256,7 +237,7 @@ class Material:
         for what, value in (("shear modulus", mu), ("permittivity", eps)):
             if not (math.isfinite(value) and value > 0):
                 raise MaterialError(
-                    f"energy of {name!r} has {what} {value:.6g} in the reference state;"
+                    f"energy of {shorten(name)!r} has {what} {value:.6g} in the reference state;"
                     " need a finite positive value to rescale to it"
                 )
         at = {I1: 3, I2: 3, I4: 0, I5: 0, I6: 0}  # the same values, kept exact for sympy
@@ -268,52 +249,84 @@ class Material:
     def _derivs(self, l1, l2, l3, d, *, hessian: bool = True):
         l1, l2, l3, d = np.broadcast_arrays(*(np.asarray(x, float) for x in (l1, l2, l3, d)))
         inv = _invariants(l1, l2, l3, d)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            omega = np.asarray(_energy_value(self.energy)(*inv), dtype=float)
-        if not np.all(np.isfinite(omega)):
-            bad = np.argmax(~np.isfinite(np.broadcast_to(omega, l1.shape)).ravel())
-            raise ParameterError(
-                f"deformation outside the domain of {self.name!r} (I1 = "
-                f"{np.ravel(inv[0])[bad]:.6g}): the energy is not finite there"
-            )
-        if not hessian:
-            w = [
-                np.broadcast_to(np.asarray(x, float), l1.shape)
-                for x in _energy_gradient(self.energy)(*inv)
-            ]
-            return (l1, l2, l3, d, w, _NO_HESSIAN)
-        w, W = _energy_derivatives(self.energy)(*inv)
+        # Overflow is reported below as one ParameterError, not as NumPy warnings.
+        with np.errstate(all="ignore"):
+            omega = np.asarray(self._evaluate(_energy_value, inv), dtype=float)
+            if not _all_finite([omega]):
+                self._outside(inv, [omega], "energy")
+            if not hessian:
+                w = self._evaluate(_energy_gradient, inv)
+                W = []
+            else:
+                w, W = self._evaluate(_energy_derivatives, inv)
+                W = [x for row in W for x in row]
+        if not _all_finite(w) or not _all_finite(W):
+            self._outside(inv, [*w, *W], "energy's derivatives")
         w = [np.broadcast_to(np.asarray(x, float), l1.shape) for x in w]
-        W = [np.broadcast_to(np.asarray(x, float), l1.shape) for row in W for x in row]
+        if not hessian:
+            return (l1, l2, l3, d, w, _NO_HESSIAN)
+        W = [np.broadcast_to(np.asarray(x, float), l1.shape) for x in W]
         return (l1, l2, l3, d, w, W)
+
+    def _evaluate(self, lambdified, inv):
+        """A lambdified function of the energy at the invariants ``inv``; an integer too
+        large for a double in it is a ParameterError, not an OverflowError."""
+        try:
+            return lambdified(self.energy)(*inv)
+        except OverflowError:
+            raise ParameterError(
+                f"the energy {shorten(self.name)!r} overflows a double at I1 = "
+                f"{float(np.ravel(inv[0])[0]):.6g}"
+            ) from None
+
+    def _outside(self, inv, values, what: str):
+        """ParameterError at the first point where one of ``values`` is not finite."""
+        shape = np.broadcast_shapes(*(np.shape(v) for v in [inv[0], *values]))
+        finite = np.logical_and.reduce(
+            [np.broadcast_to(np.isfinite(v), shape) for v in values], axis=0
+        )
+        at = np.ravel(np.broadcast_to(inv[0], shape))[np.argmax(~np.ravel(finite))]
+        raise ParameterError(
+            f"deformation outside the domain of {shorten(self.name)!r} (I1 = {at:.6g}): the"
+            f" {what} {'is' if what == 'energy' else 'are'} not finite there"
+        )
 
     def stress(self, l1, l2, l3, d):
         """Principal tau_i = sigma_ii + p (i = r, theta, z), total (Maxwell included).
 
         Shape ``(3,) + broadcast shape``: the component is the FIRST axis.
         """
-        tau_f, _, _ = _universal_forms()
-        return np.array(tau_f(*self._derivs(l1, l2, l3, d, hessian=False)), dtype=float)
+        args = self._derivs(l1, l2, l3, d, hessian=False)
+        return np.array(_chain_rule.stress(*args), dtype=float)
 
     def electric_field(self, l1, l2, l3, d):
         """Radial current electric field E_1 for radial current displacement d."""
-        _, e_f, _ = _universal_forms()
         args = self._derivs(l1, l2, l3, d, hessian=False)
-        return np.broadcast_to(np.asarray(e_f(*args), float), args[0].shape).copy()
+        field = _chain_rule.field(*args)
+        return np.broadcast_to(np.asarray(field, float), args[0].shape).copy()
 
     def moduli(self, l1, l2, l3, d):
         """Updated moduli, shape ``broadcast(l1, ...).shape + (23,)``, order MODULI_NAMES."""
-        _, _, m_f = _universal_forms()
         args = self._derivs(l1, l2, l3, d)
         shape = args[0].shape
         return np.stack(
-            [np.broadcast_to(np.asarray(c, float), shape) for c in m_f(*args)], axis=-1
+            [np.broadcast_to(np.asarray(c, float), shape) for c in _chain_rule.moduli(*args)],
+            axis=-1,
         )
 
     def is_ideal_dielectric(self) -> bool:
         """True when Omega = W(I1, I2) + I5 / 2 (E = D / eps, paper Sec. 3.1)."""
-        rest = sp.simplify(self.energy - I5 / 2)
-        return not (rest.free_symbols & {I4, I5, I6})
+        electric = {I4, I5, I6}
+        rest = self.energy - I5 / 2
+        # Cheap answers first (simplify takes up to a second per energy): sympy's automatic
+        # cancellation settles the built-in energies (simplify cannot add a symbol), and a
+        # derivative of rest in I4, I5 or I6 that is non-zero at one point proves that rest
+        # depends on the field (simplify cannot remove that symbol).
+        if not (rest.free_symbols & electric):
+            return True
+        if any(_nonzero_at_witness(rest.diff(s)) for s in (I4, I5, I6)):
+            return False
+        return not (sp.simplify(rest).free_symbols & electric)
 
 
 @functools.lru_cache(maxsize=1)

@@ -5,21 +5,45 @@ from __future__ import annotations
 
 import math
 import re
+import stat
 import tomllib
 from collections.abc import Callable
 from pathlib import Path
 
 from ..errors import ConfigError
 
+#: The largest tube or sweep file read (a real one is a few hundred bytes).
+MAX_FILE_BYTES = 1_000_000
+
 
 def read_text(path: str | Path, what: str) -> str:
-    """The UTF-8 text of ``path``; ConfigError if it cannot be read (``what``: "tube file")."""
+    """The UTF-8 text of ``path``; ConfigError if it cannot be read (``what``: "tube file").
+
+    Only a regular file of at most :data:`MAX_FILE_BYTES` is read: a path naming a
+    directory, a device (``/dev/zero`` never ends) or a pipe is refused before reading.
+    """
+    path = Path(path)
     try:
-        return Path(path).read_text(encoding="utf-8")
+        info = path.stat()
+        if not stat.S_ISREG(info.st_mode):
+            kind = "a directory" if stat.S_ISDIR(info.st_mode) else "not a regular file"
+            raise ConfigError((), f"the {what} is {kind}; give a TOML file", source=str(path))
+        if info.st_size > MAX_FILE_BYTES:
+            raise ConfigError(
+                (),
+                f"the {what} has {info.st_size} bytes, more than the limit {MAX_FILE_BYTES}",
+                source=str(path),
+            )
+        with path.open("rb") as fh:
+            data = fh.read(MAX_FILE_BYTES + 1)  # the file may have grown since stat
     except OSError as exc:
         raise ConfigError(
             (), f"cannot read the {what}: {exc.strerror}", source=str(path)
         ) from None
+    if len(data) > MAX_FILE_BYTES:
+        raise ConfigError((), f"the {what} grew beyond {MAX_FILE_BYTES} bytes", source=str(path))
+    try:
+        return data.decode("utf-8").replace("\r\n", "\n").replace("\r", "\n")  # as read_text
     except UnicodeDecodeError:
         raise ConfigError((), f"the {what} is not UTF-8 text", source=str(path)) from None
 
@@ -29,7 +53,13 @@ def parse(text: str, source: str, build: Callable, line_of: Callable):
     ``source`` and the line ``line_of(text, key)`` of the offending key."""
     try:
         raw = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
+    except RecursionError:
+        raise ConfigError((), "invalid TOML: nested too deeply", source=source) from None
+    except ValueError as exc:
+        if not isinstance(exc, tomllib.TOMLDecodeError):  # Python's limit on int("...")
+            raise ConfigError(
+                (), "invalid TOML: an integer of more than 4300 digits", source=source
+            ) from None
         msg = str(exc)
         hit = re.search(r"\(at line (\d+), column \d+\)", msg)
         line = int(hit.group(1)) if hit else text.count("\n") + 1
@@ -61,10 +91,20 @@ def typename(v) -> str:
 def finite(v, path: tuple) -> float:
     """``v`` as a finite float, or ConfigError at the key ``path``."""
     if isinstance(v, bool) or not isinstance(v, (int, float)):
-        raise ConfigError(path, f"expected a number, got {typename(v)} {v!r}")
-    if not math.isfinite(v):
-        raise ConfigError(path, f"{v!r} is not a finite number")
-    return float(v)
+        raise ConfigError(path, f"expected a number, got {typename(v)} {shown(v)}")
+    try:
+        value = float(v)
+    except OverflowError:  # an integer beyond the largest double
+        value = math.inf
+    if not math.isfinite(value):
+        raise ConfigError(path, f"{shown(v)} is not a finite number (largest double 1.8e308)")
+    return value
+
+
+def shown(v, limit: int = 60) -> str:
+    """``repr(v)`` cut to ``limit`` characters, for an error message."""
+    text = repr(v)
+    return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
 def number(table: dict, where: tuple, key: str) -> float:

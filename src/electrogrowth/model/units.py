@@ -6,10 +6,11 @@ and results are converted back here, once:
 
     Rbar_o = R_o / R_i,    L = length / R_i,    Vbar = V / (R_o - R_i) sqrt(eps / mu),
 
-so the scales of the results are R_i for lengths, mu for stresses and pressures,
-(R_o - R_i) sqrt(mu / eps) for the voltage (V = Vbar times it), sqrt(mu eps) for the
-electric displacement and sqrt(mu / eps) for the electric field. The permittivity is the
-absolute one, eps = eps_r eps_0; a plain number is read as the relative permittivity eps_r.
+so the scales of the results are R_i for lengths, mu for stresses and pressures, mu R_i^2
+for forces (the axial force N), (R_o - R_i) sqrt(mu / eps) for the voltage (V = Vbar times
+it), sqrt(mu eps) for the electric displacement and sqrt(mu / eps) for the electric field.
+The permittivity is the absolute one, eps = eps_r eps_0; a plain number is read as the
+relative permittivity eps_r.
 
 Quantities are ``pint`` quantities or strings such as ``"2 mm"`` (pint is the ``units``
 extra and imported only here, only when a quantity is converted). :class:`Scales` keeps the
@@ -21,6 +22,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
+import re
 
 from ..errors import MissingDependencyError, ParameterError
 from .materials import Material
@@ -28,6 +30,15 @@ from .params import TubeParameters
 
 #: The vacuum permittivity eps_0 in F/m (CODATA 2018).
 EPSILON_0 = 8.8541878128e-12
+
+#: A quantity's text: a number, then units multiplied, divided or raised to a one-digit
+#: power ("2 mm", "4.16e-11 F/m", "3 N/m^2"). Checked before pint reads it: pint evaluates
+#: arithmetic, so "2 m*9**9**9" ran forever (docs/security.md).
+_UNIT = r"[^\W\d]+(?:\s*(?:\*\*|\^)\s*-?\d)?"
+_QUANTITY_TEXT = re.compile(
+    rf"\s*[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+    rf"(?:\s*{_UNIT}(?:\s*[*/]\s*{_UNIT}|\s+{_UNIT})*)?\s*"
+)
 
 
 @functools.lru_cache(maxsize=1)
@@ -48,6 +59,11 @@ def magnitude(value, name: str, kind: str, unit: str, *, zero: bool = False) -> 
     ParameterError names the value when it is no quantity, has no unit or is not a ``kind``
     (a word: "length", "pressure", ...) of the dimension of ``unit``, or is not positive
     (or zero, with ``zero``)."""
+    if isinstance(value, str) and not (len(value) <= 100 and _QUANTITY_TEXT.fullmatch(value)):
+        raise ParameterError(
+            f"{name} = {value[:100]!r} is not a quantity: write a number and its unit, e.g."
+            f" '2 {unit}' (units may be multiplied, divided and raised to a one-digit power)"
+        )
     ureg = registry()
     try:
         q = ureg.Quantity(value) if isinstance(value, str) else value
@@ -101,6 +117,9 @@ class Scales:
         mu in Pa, the unit of stress and pressure.
     permittivity : float
         eps = eps_r eps_0 in F/m.
+    given_length : float
+        The undeformed length in m, if one was given (0: none was, and none is reported;
+        the non-dimensional L = 1 of a default tube is no length of the user's tube).
 
     Examples
     --------
@@ -115,8 +134,11 @@ class Scales:
     outer_radius: float = math.nan
     shear_modulus: float = math.nan
     permittivity: float = math.nan
+    given_length: float = 0.0
 
     def __post_init__(self):
+        if not (math.isfinite(self.given_length) and self.given_length >= 0):
+            raise ParameterError(f"length = {self.given_length!r} m is out of range; need > 0")
         for name in ("inner_radius", "outer_radius", "shear_modulus", "permittivity"):
             value = float(getattr(self, name))
             if not (math.isnan(value) or (math.isfinite(value) and value > 0)):
@@ -158,6 +180,15 @@ class Scales:
         """A stress or pressure x mu as a pint quantity in ``unit``."""
         self._need("stress", "shear_modulus")
         return registry().Quantity(x * self.shear_modulus, "Pa").to(unit)
+
+    def force(self, x: float, unit: str = "N"):
+        """A force x mu R_i^2 (the axial force N of the base state) as a pint quantity.
+
+        >>> round(Scales(2e-3, 2.8e-3, 1e5).force(-0.25).to("N").magnitude, 12)
+        -0.1
+        """
+        self._need("force", "shear_modulus", "inner_radius")
+        return registry().Quantity(x * self.shear_modulus * self.inner_radius**2, "N").to(unit)
 
     def _need(self, what: str, *names: str) -> None:
         missing = [n for n in names if math.isnan(getattr(self, n))]
@@ -219,7 +250,8 @@ def tube_from_quantities(
         else magnitude(shear_modulus, "shear modulus", "pressure", "Pa")
     )
     eps = math.nan if permittivity is None else absolute_permittivity(permittivity)
-    scales = Scales(r_i, r_o, mu, eps)
+    r_l = 0.0 if length is None else magnitude(length, "length", "length", "m")
+    scales = Scales(r_i, r_o, mu, eps, r_l)
     if isinstance(voltage, (int, float)):
         vbar = voltage
     else:
@@ -227,7 +259,7 @@ def tube_from_quantities(
     fields = {} if material is None else {"material": material}
     tube = TubeParameters(
         outer_radius=r_o / r_i,
-        length=1.0 if length is None else magnitude(length, "length", "length", "m") / r_i,
+        length=1.0 if length is None else r_l / r_i,
         growth=growth,
         stretch=stretch,
         voltage=vbar,

@@ -162,7 +162,8 @@ def mode_shape(
     rtol: float = 1e-12,
     nodes: int = 40,
 ) -> ModeShape:
-    """The mode shape at a critical point (paper eqs. two_Riccati, incremental-solutions).
+    """The mode shape at a critical point: the amplitudes of the paper's incremental fields,
+    by its two-step surface-impedance method or by collocation.
 
     Parameters
     ----------

@@ -46,10 +46,12 @@ from .unit import ScanSpec
 
 #: The TubeParameters fields a sweep can fix or vary.
 SWEEPABLE = ("outer_radius", "length", "growth", "stretch", "voltage")
-#: The largest sweep (points of the grid), and the most mode records (points x top) its
-#: store may hold: refused up front rather than running out of memory or time.
-MAX_POINTS = 10**6
-MAX_MODE_RECORDS = 10**7
+#: The most grid points of one sweep: 1e7 points are days of a large cluster, and the store's
+#: completion marks of a larger grid are read whole into memory (docs/security.md).
+MAX_POINTS = 10_000_000
+#: The most mode records (points x top) a sweep's store may hold: refused up front rather
+#: than filling the disk and the memory of whoever opens it.
+MAX_MODE_RECORDS = 10**8
 
 
 @dataclasses.dataclass(frozen=True)
@@ -241,15 +243,14 @@ def _check_run(c: SweepConfig) -> None:
     if c.size > MAX_POINTS:
         raise ConfigError(
             ("grid",),
-            f"{' x '.join(map(str, c.shape))} = {c.size:,} points is too many; a sweep has at"
-            f" most {MAX_POINTS:,} (10^6) points: split it into several sweeps",
+            f"{c.size:.3g} grid points, more than the limit {MAX_POINTS:.0e}; split the sweep",
         )
     if c.size * c.scan.top > MAX_MODE_RECORDS:
         raise ConfigError(
             ("modes", "top"),
             f"top = {c.scan.top} modes at each of {c.size:,} points is"
             f" {c.size * c.scan.top:,} mode records; the store holds at most"
-            f" {MAX_MODE_RECORDS:,} (10^7): lower top or the grid",
+            f" {MAX_MODE_RECORDS:.0e}: lower top or the grid",
         )
 
 

@@ -20,9 +20,9 @@ from ..bifurcation.scan import ScanOptions
 from ..errors import ConfigError, ParameterError
 from ..model.controls import parse_control
 from ..model.params import TubeParameters
-from ..model.toml_input import number, parse, read_text, typename
+from ..model.toml_input import finite, number, parse, read_text, shown, typename
 from ..model.tube_file import parse_tube
-from .config import MAX_POINTS, SWEEPABLE, SweepConfig, default_chunk
+from .config import SWEEPABLE, SweepConfig, default_chunk
 
 #: table -> allowed keys (None: free keys, checked by the table's own rules)
 TABLES = {
@@ -34,6 +34,11 @@ TABLES = {
     "run": ("chunk",),
     "tube": ("file",),
 }
+
+
+#: The most values a {start, stop, num} range may ask for (a sweep file is read before any
+#: check of the whole grid: num = 1e12 would have allocated 8 TB).
+MAX_AXIS = 1_000_000
 
 
 def load_config(path: str | Path) -> SweepConfig:
@@ -189,11 +194,13 @@ def _grid_values(key: str, value) -> tuple[float, ...]:
         start, stop = number(value, where, "start"), number(value, where, "stop")
         num = _integer(value, where, "num")
         if num < 1:
-            raise ConfigError(where + ("num",), f"num = {num} gives an empty grid; need num >= 1")
-        if num > MAX_POINTS:
+            raise ConfigError(
+                where + ("num",), f"num = {shown(num)} gives an empty grid; need num >= 1"
+            )
+        if num > MAX_AXIS:
             raise ConfigError(
                 where + ("num",),
-                f"num = {num} is too large; a sweep has at most {MAX_POINTS:,} (10^6) points",
+                f"num = {shown(num)} is out of range; need 1 <= num <= {MAX_AXIS}",
             )
         values = [float(v) for v in np.linspace(start, stop, num)]
     elif isinstance(value, list):
@@ -202,15 +209,15 @@ def _grid_values(key: str, value) -> tuple[float, ...]:
         values = []
         for i, v in enumerate(value):
             if isinstance(v, bool) or not isinstance(v, (int, float)):
-                raise ConfigError(where, f"value {i + 1} is {typename(v)} {v!r}, not a number")
-            if not math.isfinite(v):
-                raise ConfigError(where, f"value {i + 1} = {v!r} is not a finite number")
-            values.append(float(v))
+                raise ConfigError(
+                    where, f"value {i + 1} is {typename(v)} {shown(v)}, not a number"
+                )
+            values.append(finite(v, where))
     else:
         raise ConfigError(
             where,
             f"expected a list of numbers or a range {{start, stop,"
-            f" num}}, got {typename(value)} {value!r}",
+            f" num}}, got {typename(value)} {shown(value)}",
         )
     ordered = sorted(values)
     for a, b in zip(ordered, ordered[1:]):
@@ -225,21 +232,21 @@ def _grid_values(key: str, value) -> tuple[float, ...]:
 def _string(table, where, key):
     v = table[key]
     if not isinstance(v, str):
-        raise ConfigError(where + (key,), f"expected a string, got {typename(v)} {v!r}")
+        raise ConfigError(where + (key,), f"expected a string, got {typename(v)} {shown(v)}")
     return v
 
 
 def _integer(table, where, key):
     v = table[key]
     if isinstance(v, bool) or not isinstance(v, int):
-        raise ConfigError(where + (key,), f"expected an integer, got {typename(v)} {v!r}")
+        raise ConfigError(where + (key,), f"expected an integer, got {typename(v)} {shown(v)}")
     return v
 
 
 def _bool(table, where, key):
     v = table[key]
     if not isinstance(v, bool):
-        raise ConfigError(where + (key,), f"expected true or false, got {typename(v)} {v!r}")
+        raise ConfigError(where + (key,), f"expected true or false, got {typename(v)} {shown(v)}")
     return v
 
 
@@ -252,7 +259,7 @@ def _int_pair(table, key):
     ):
         raise ConfigError(
             ("modes", key),
-            f"expected an inclusive range [{key}_min, {key}_max] of two integers, got {v!r}",
+            f"expected an inclusive range [{key}_min, {key}_max] of two integers, got {shown(v)}",
         )
     return (v[0], v[1])
 

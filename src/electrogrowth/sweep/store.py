@@ -230,8 +230,8 @@ def open_store(out: str | Path, config: SweepConfig, *, source_text: str = "") -
 def read_config(path: str | Path) -> SweepConfig:
     """The sweep stored at ``path``."""
     path = Path(path)
-    try:
-        text = zarr.open_group(str(path), mode="r").attrs.get("sweep_config")
+    try:  # only Zarr v3, as written here (v2 arrays may declare object codecs such as pickle)
+        text = zarr.open_group(str(path), mode="r", zarr_format=3).attrs.get("sweep_config")
     except (zarr.errors.BaseZarrError, ValueError, OSError):
         text = None
     if text is None:
@@ -239,9 +239,9 @@ def read_config(path: str | Path) -> SweepConfig:
             f"{path} is not an electrogrowth sweep store"
             f"{' (it exists: choose another --out)' if path.exists() else ''}"
         )
-    try:
-        return SweepConfig.from_dict(json.loads(text))
-    except (KeyError, TypeError, ValueError) as exc:
+    try:  # JSON, and a SweepConfig validates itself: its energy and tube texts are parsed
+        return SweepConfig.from_dict(json.loads(text))  # by the whitelist grammars, never run
+    except (KeyError, TypeError, ValueError, AttributeError, RecursionError) as exc:
         raise SweepError(f"{path} holds an unreadable sweep configuration: {exc}") from None
 
 
@@ -261,8 +261,12 @@ def open_results(path: str | Path) -> xr.Dataset:
     """The dataset of a sweep store, loaded into memory (points not yet computed have
     status "pending" and NaN values)."""
     read_config(path)
-    with xr.open_zarr(str(path), chunks=None) as ds:
-        return ds.load()
+    try:
+        with xr.open_zarr(str(path), chunks=None, zarr_format=3) as ds:
+            return ds.load()
+    except (zarr.errors.BaseZarrError, OSError, RuntimeError, ValueError, KeyError) as exc:
+        reason = " ".join(str(exc).split())[:200]  # a damaged array or chunk: the store's fault
+        raise SweepError(f"{path} cannot be read: {type(exc).__name__}: {reason}") from None
 
 
 def _create(out: Path, config: SweepConfig, source_text: str) -> None:

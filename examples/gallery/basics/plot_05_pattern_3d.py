@@ -17,3 +17,13 @@ shape = mode_shape(crit, points=41)
 # %%
 # The exported wall is the same as ``electrogrowth pattern --vtk`` writes for ParaView.
 fig = render_pattern(shape, amplitude=0.08, n_theta=90, n_z=40)
+
+# %%
+# The same wall to turn around: drag to rotate, wheel to zoom. The page is one HTML file
+# with an inline WebGL viewer (nothing is loaded from the network), written by
+# ``electrogrowth.figures.viewer.write_pattern_html(shape, "pattern.html", amplitude=0.08)``.
+#
+# .. raw:: html
+#
+#    <iframe src="../../_static/pattern-3d.html" title="the wrinkled tube in 3D"
+#     style="width: 100%; height: 520px; border: 1px solid #ddd"></iframe>

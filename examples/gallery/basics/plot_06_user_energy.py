@@ -33,5 +33,5 @@ for material in (neo_hookean(), mine):
 fig, ax = plt.subplots(figsize=(5, 3.2), layout="constrained")
 for name, values in curves.items():
     ax.plot(voltages, values, "o-", label=name)
-ax.set(xlabel=r"$\bar V$", ylabel=r"$g_{cr}$ of mode (0, 1)")
-ax.legend(fontsize=7)
+ax.set(xlabel=r"voltage $\bar V$ (–)", ylabel=r"critical growth $g_{\rm cr}$ of mode (0, 1) (–)")
+_ = ax.legend(fontsize=7)

@@ -5,7 +5,7 @@ Physical units in and out
 The package computes in units mu = eps = R_i = 1. A tube of 2 mm inner radius, 2.8 mm outer
 radius, 10 mm long, of a silicone with mu = 100 kPa and relative permittivity 4.7 becomes
 Rbar_o = 1.4, L = 5, and a voltage V becomes Vbar = V / (R_o - R_i) sqrt(eps / mu)
-(pint, the ``units`` extra). Results come back in kV, kPa and mm. On the command line::
+(pint, the ``units`` extra). Results come back in kV, kPa, mm and N. On the command line::
 
     electrogrowth critical --solve-for voltage --inner-radius 2mm --outer-radius 2.8mm \\
         --length 10mm --shear-modulus 100kPa --permittivity 4.7 --growth 1.1 --mode 0 1
@@ -32,4 +32,4 @@ kv = [
 ]
 fig, ax = plt.subplots(figsize=(5, 3.2), layout="constrained")
 ax.plot(growths, kv, "o-")
-ax.set(xlabel="growth factor g", ylabel="critical voltage (kV)")
+_ = ax.set(xlabel="growth factor g (–)", ylabel="critical voltage (kV)")

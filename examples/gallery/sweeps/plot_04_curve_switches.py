@@ -19,15 +19,16 @@ curve = critical_curve(
     side="compression",
     options=ScanOptions(m_range=(0, 4), n_range=(1, 3), top=2),
 )
-for s in curve.switches:
+for s in curve.switches + curve.ends:
     print(
-        f"switch at Rbar_o = {s.x:.8f}: {s.mode_before} -> {s.mode_after},"
+        f"{s.kind} at Rbar_o = {s.x:.8f}: {s.mode_before} -> {s.mode_after},"
         f" lambda_z,cr = {s.value:.8f}"
     )
 
 # %%
-# Branches are labelled "n, m" as in the paper; dots mark the located switches.
+# Branches are labelled with their critical mode (m, n) (the paper writes "n, m"); dots
+# mark the located switches, open circles the ends of branches, if any.
 ax = plot_curve(curve)
-ax.set(xlabel=r"$\bar R_o$", ylabel=r"$\lambda_{z,cr}$ (compression)")
+ax.set_title("in compression", fontsize=9)
 fig = ax.figure
 curve

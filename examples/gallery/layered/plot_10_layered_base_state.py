@@ -28,6 +28,6 @@ fig, ax = plt.subplots(figsize=(5, 3.2), layout="constrained")
 for name in ("sigma_rr", "sigma_tt", "sigma_zz"):
     ax.plot(profiles["R"], profiles[name], label=name)
 ax.axvline(1.1, color="0.6", lw=0.8)
-ax.set(xlabel="R / R_i", ylabel=r"stress / $\mu$ (outer layer's)")
-ax.legend(fontsize=8)
+ax.set(xlabel=r"radius $R / R_i$ (–)", ylabel=r"stress / $\mu$ of the outer layer (–)")
+_ = ax.legend(fontsize=8)
 profiles

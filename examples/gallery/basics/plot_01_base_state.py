@@ -23,20 +23,25 @@ print(f"Vbar threshold = {threshold:.10f} ({kind})")
 # neo-Hookean solid); the solved state sits on it.
 lam0 = solve_base_state(tube.at("voltage", 0.0)).lambda_i
 lam = np.linspace(lam0, 4.0, 200)
-fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(8, 3.2), layout="constrained")
-ax1.plot(voltage_curve(tube, lam), lam, "k-")
-ax1.axvline(threshold, ls="--", color="0.5", label="threshold")
-ax1.plot(tube.voltage, state.lambda_i, "o", color="C3", label="solved state")
-ax1.set(xlabel=r"$\bar V$", ylabel=r"$\lambda_i$", title="voltage curve")
-ax1.legend()
+fig, ax = plt.subplots(figsize=(5, 3.2), layout="constrained")
+ax.plot(voltage_curve(tube, lam), lam, "k-", label=r"$\bar V(\lambda_i)$")
+ax.axvline(threshold, ls="--", color="0.5", label="threshold")
+ax.plot(tube.voltage, state.lambda_i, "o", color="C3", label="solved state")
+ax.set(
+    xlabel=r"voltage $\bar V$ (–)", ylabel=r"inner stretch $\lambda_i$ (–)", title="voltage curve"
+)
+_ = ax.legend()
 
 # %%
 # Through-wall profiles: every stress vanishes at Vbar = 0 and g = 1; growth and voltage
 # leave a residual stress. ``state.to_xarray()`` gives the same profiles as labelled
-# arrays, with units and descriptions.
+# arrays, with units and descriptions (shown below the figure).
 profiles = state.to_xarray(101)
+fig, ax = plt.subplots(figsize=(5, 3.2), layout="constrained")
 for name in ("sigma_rr", "sigma_tt", "sigma_zz"):
-    profiles[name].plot(ax=ax2, label=profiles[name].attrs["long_name"])
-ax2.set(xlabel="R / R_i", ylabel=r"stress / $\mu$", title="residual stress")
-ax2.legend(fontsize=7)
+    profiles[name].plot(ax=ax, label=profiles[name].attrs["long_name"])
+ax.set(xlabel=r"radius $R / R_i$ (–)", ylabel=r"stress / $\mu$ (–)", title="residual stress")
+_ = ax.legend(fontsize=7)
+
+# %%
 profiles

@@ -32,6 +32,10 @@ for name, label in (
     ("Phi", r"$\Phi$"),
 ):
     ax.plot(shape.r, getattr(shape, name), label=label)
-ax.set(xlabel="r / R_i", title=f"mode (0, 1) at g_cr = {impedance.value:.6f}")
-ax.legend()
+ax.set(
+    xlabel=r"current radius $r / R_i$ (–)",
+    ylabel="amplitude (largest displacement 1)",
+    title=f"mode (0, 1) at g_cr = {impedance.value:.6f}",
+)
+_ = ax.legend()
 impedance

@@ -39,4 +39,6 @@ results = open_results(out)
 results
 
 # %%
+# The thinnest, most compressed tube is unstable before it grows at all: its cell says
+# "already unstable at g = 1" rather than "failed".
 fig = phase_diagram(results, "stretch", "outer_radius")

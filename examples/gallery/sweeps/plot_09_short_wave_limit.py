@@ -27,5 +27,8 @@ for m, v in zip(ms, values):
 fig, ax = plt.subplots(figsize=(5, 3.2), layout="constrained")
 ax.semilogx(ms, values, "o-", label="prismatic modes (m, 0)", base=2)
 ax.axhline(limit.value, ls="--", color="C3", label=f"short-wave limit ({limit.face} face)")
-ax.set(xlabel="m", ylabel=r"$\lambda_{z,cr}$ (extension)")
-ax.legend(fontsize=8)
+ax.set(
+    xlabel="circumferential wave number m",
+    ylabel=r"critical stretch $\lambda_{z,\rm cr}$ in extension (–)",
+)
+_ = ax.legend(fontsize=8)

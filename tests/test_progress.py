@@ -1,0 +1,96 @@
+"""Long work reports its progress on stderr, only on a terminal and without --quiet; stdout
+(the results, --json) stays clean; the library is silent unless asked; `electrogrowth`
+alone prints the overview."""
+
+import argparse
+import json
+import sys
+import time
+
+import numpy as np
+
+from electrogrowth import ScanOptions, TubeParameters, solve_base_state
+from electrogrowth.bifurcation.curves import critical_curve
+from electrogrowth.cli.app import main
+from electrogrowth.cli.critical import _collocation_signs
+from electrogrowth.cli.progress import stage
+from electrogrowth.incremental.targets import collocation_targets
+
+SWITCHING = dict(side="compression", options=ScanOptions((0, 2), (1, 2)))  # (1, 1) -> (0, 1)
+
+
+def test_no_command_prints_the_overview_and_succeeds(capsys):
+    assert main([]) == 0
+    out, err = capsys.readouterr()
+    assert out.startswith("usage: electrogrowth")
+    for command in ("state", "critical", "curve", "demo", "reproduce", "sweep"):
+        assert f"\n    {command}" in out, command
+    assert err == ""
+
+
+def test_curve_reports_each_switch_it_locates(capsys):
+    critical_curve(TubeParameters(), "stretch", "outer_radius", [1.2, 1.3], **SWITCHING)
+    assert capsys.readouterr().err == ""  # silent by default
+    critical_curve(
+        TubeParameters(), "stretch", "outer_radius", [1.2, 1.3], progress=True, **SWITCHING
+    )
+    err = capsys.readouterr().err
+    assert "stretch along outer_radius" in err and "2/2" in err  # the grid points
+    assert "locating mode switches" in err and "1/1" in err
+    assert "between (1, 1) and (0, 1)" in err
+
+
+def test_curve_command_bars_only_on_a_terminal(tmp_path, capsys, monkeypatch):
+    argv = [
+        "curve", "--solve-for", "stretch", "--side", "compression", "--along", "outer_radius",
+        "--from", "1.2", "--to", "1.3", "--points", "2", "--m-max", "2", "--n-max", "2",
+        "--out", str(tmp_path),
+    ]  # fmt: skip
+    assert main(argv) == 0
+    assert capsys.readouterr().err == ""  # not a terminal: nothing
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
+    assert main([*argv, "--quiet"]) == 0
+    assert capsys.readouterr().err == ""
+    assert main(argv) == 0
+    out, err = capsys.readouterr()
+    assert "between (1, 1) and (0, 1)" in err and "locating" not in out
+    assert main([*argv, "--json"]) == 0
+    out, err = capsys.readouterr()
+    assert json.loads(out)["switches"] and err == ""  # one JSON object, no bar
+
+
+def test_figure_commands_name_their_stages_on_a_terminal(tmp_path, capsys, monkeypatch):
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True)  # (pytest's capture)
+    assert main(["figure", "4", "--quick", "--out", str(tmp_path)]) == 0
+    out, err = capsys.readouterr()
+    assert "electrogrowth: computing figure 4 ..." in err
+    assert "computing figure 4: done in" in err
+    assert out.split() == [str(tmp_path / "fig4.png"), str(tmp_path / "fig4.csv")]
+    assert main(["figure", "4", "--quick", "--quiet", "--out", str(tmp_path)]) == 0
+    assert capsys.readouterr().err == ""
+    assert main(["reproduce", "--quick", "--figures", "4", "--out", str(tmp_path)]) == 0
+    out, err = capsys.readouterr()
+    assert err == "electrogrowth: figure 4 (1 of 1) ...\n"  # stdout's line says the time
+    assert "figure 4: " in out
+
+
+def test_certify_counts_the_modes_it_checks_and_changes_no_value(capsys, monkeypatch):
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
+    state = solve_base_state(TubeParameters(1.4, 1.0, growth=1.2, voltage=0.4))
+    modes = np.array([[0, 1], [2, 1], [3, 0]], dtype=float)
+    args = argparse.Namespace(quiet=False)
+    f = _collocation_signs(state, modes, args)
+    np.testing.assert_array_equal(f, collocation_targets(state, modes))  # one at a time
+    err = capsys.readouterr().err
+    assert "certifying: every scanned mode stable before it" in err and "3/3" in err
+    _collocation_signs(state, modes, argparse.Namespace(quiet=True))
+    assert capsys.readouterr().err == ""
+
+
+def test_a_step_of_unknown_length_shows_the_time_it_has_taken(capsys, monkeypatch):
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
+    with stage(argparse.Namespace(quiet=False), "solving mode (0, 1) by collocation", tick=True):
+        time.sleep(2.3)
+    err = capsys.readouterr().err
+    assert "electrogrowth: solving mode (0, 1) by collocation ... 00:01" in err
+    assert "solving mode (0, 1) by collocation: done in 2." in err
