@@ -34,12 +34,12 @@ NUMBERS = {
     "--alpha": ["0.5", "1", "0.1", "1.5"],
     "--m-max": ["0", "3", "12", "64", "65", "1000000"],
     "--n-max": ["1", "3", "30", "320", "321", "1000000"],
-    "--top": ["1", "3", "0", "-1", "1001"],
+    "--top": ["1", "3", "0", "-1", "1001", "1000000000000"],
     "--rtol": ["1e-8", "1e-12", "1e-3", "1e-16", "0"],
     "--inner-pressure": ["0", "0.05", "-0.1", "10"],
     "--outer-pressure": ["0", "0.05", "5"],
     "--axial-force": ["0", "0.5", "-3"],
-    "--points": ["2", "5", "1", "0", "100000000"],
+    "--points": ["2", "5", "1", "0", "100000000", "10001", "1000000000000"],
     "--amplitude": ["0", "0.1", "-1", "1e9"],
     "--from": ["0", "0.1", "1"],
     "--to": ["0.2", "0.4", "1.2"],
@@ -71,6 +71,14 @@ SEEDS = [
     "pattern --solve-for growth --outer-radius 1.4 --mode 2 1 --out {tmp}/p",
     "reproduce --quick --out {tmp}/r",
     "demo --out {tmp}/d",
+    "curve --tube {tube} --solve-for growth --layer 1 --along layers[1].thickness --from -0.05"
+    " --to 0.2 --out {tmp}/c",
+    "curve --tube {tube} --solve-for growth --layer 2 --along layers[2].outer_radius --from 0.5"
+    " --to 3 --out {tmp}/c",
+    "curve --tube {tube} --solve-for growth --layer 1 --along stretch[2] --from 1 --to 2"
+    " --out {tmp}/c",
+    "reproduce --quick --out {tube}",
+    "reproduce --quick --out {tube}/sub",
 ]
 #: Commands that compute for minutes when valid: each line of theirs ends refused.
 REFUSED_LAST = {
@@ -93,7 +101,10 @@ def _mutate_toml(text: str, rng: random.Random) -> str:
     elif op == 1:
         lines[i] = f"{key}= {rng.choice(BAD)!r}"
     elif op == 2:
-        lines[i] = f"{key}= {rng.choice(['nan', 'inf', '-inf', '1e400', '-5', '0', '[]', '{}'])}"
+        huge = ["1000000000000", "{start = 1.0, stop = 2.0, num = 1000000000000}"]
+        lines[i] = (
+            f"{key}= {rng.choice(['nan', 'inf', '-inf', '1e400', '-5', '0', '[]', '{}'] + huge)}"
+        )
     elif op == 3:
         lines.insert(i, lines[i])  # a duplicate key
     elif op == 4:
@@ -194,3 +205,42 @@ def test_cli_fuzz(tmp_path, capsys, monkeypatch):
 def test_cli_fuzz_long(tmp_path, capsys, monkeypatch):
     tally = run_fuzz(600, tmp_path, capsys, monkeypatch)
     assert tally[0] >= 50 and tally[2] >= 200
+
+
+#: Lines a fuzz found BAD (traceback, internal error, several stderr lines, a MemoryError or
+#: a run of hours), each now exit 2 with one line: {bilayer} is examples/bilayer.toml,
+#: {tiny} the same with layer 2's growth 1e-9, {sweep} a sweep of num = 10^12.
+REGRESSIONS = [
+    # a denormal growth of a layer: RuntimeWarnings and an internal error at the plot
+    "curve --tube {bilayer} --solve-for pressure --along growth[2] --from 0.9999999 --to 5e-324"
+    " --points 2 --m-max 1 --n-max 2 --out {tmp}/c",
+    # "no unloaded state" blamed on inner_pressure, after four RuntimeWarnings
+    "state --tube {tiny}",
+    # "outer_radius = 0.95 is out of range" for a thickness
+    "curve --tube {bilayer} --solve-for growth --layer 1 --along layers[1].thickness"
+    " --from -0.05 --to 0.2 --points 3 --out {tmp}/c",
+    # FileExistsError from mkdir
+    "reproduce --quick --out {bilayer}",
+    # MemoryError (745 GiB, 7.28 TiB)
+    "curve --solve-for growth --along voltage --from 0 --to 0.4 --outer-radius 1.4"
+    " --points 100000000000 --out {tmp}/c",
+    "sweep {sweep} --check --out {tmp}/s.zarr",
+    # ran for minutes
+    "pattern --solve-for growth --outer-radius 1.4 --mode 2 1 --points 1000000000 --out {tmp}/p",
+]
+
+
+@pytest.mark.parametrize("line", REGRESSIONS)
+def test_cli_fuzz_regressions(line, tmp_path, capsys):
+    bilayer = EXAMPLES / "bilayer.toml"
+    tiny = tmp_path / "tiny.toml"
+    tiny.write_text(bilayer.read_text().replace("growth = 1.0\n", "growth = 1e-9\n"))
+    sweep = tmp_path / "sweep.toml"
+    sweep.write_text(
+        (EXAMPLES / "sweep.toml").read_text().replace("num = 11", "num = 1000000000000")
+    )
+    argv = line.format(bilayer=bilayer, tiny=tiny, sweep=sweep, tmp=tmp_path).split()
+    code = cli.main(argv)
+    out, err = capsys.readouterr()
+    _check(argv, code, out, err)
+    assert code == 2

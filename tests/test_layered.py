@@ -483,10 +483,10 @@ def test_gent_locking_threshold():
 @pytest.mark.parametrize(
     "make, words",
     [
-        (lambda: Tube((Layer(2.0), Layer(1.5))), ["layers[1].outer_radius", "> 2"]),
-        (lambda: Tube((Layer(1.5), Layer(1.5))), ["layers[1].outer_radius", "> 1.5"]),
+        (lambda: Tube((Layer(2.0), Layer(1.5))), ["layers[2].outer_radius", "> 2"]),
+        (lambda: Tube((Layer(1.5), Layer(1.5))), ["layers[2].outer_radius", "> 1.5"]),
         (lambda: Layer(0.9), ["outer_radius", "> 1"]),
-        (lambda: Layer(1.5, growth=(1.0, 0.0, 1.0)), ["growth[1]", "> 0"]),
+        (lambda: Layer(1.5, growth=(1.0, 0.0, 1.0)), ["growth g_theta", "> 0"]),
         (lambda: Layer(1.5, growth=-1.0), ["growth", "> 0"]),
         (lambda: Layer(1.5, growth=(1.0, 2.0)), ["growth", "g_r, g_theta, g_z"]),
         (lambda: Layer(1.5, shear_modulus=0.0), ["shear_modulus", "0 <"]),

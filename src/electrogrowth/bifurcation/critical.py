@@ -155,12 +155,15 @@ def critical_value(
         try:
             res = first_bifurcations(params, solve_for, side, mode, loose, brent_targets=fine)
         except NoBifurcationFound as exc:
+            exc.remedy = no_bifurcation_remedy(solve_for, mode=(m, n))
             if fam is not Family.TORSIONAL:
                 raise
-            raise NoBifurcationFound(
+            stop = NoBifurcationFound(
                 f"{exc}: torsional modes never bifurcate while the shear moduli gamma_12 and"
                 " A3232 are positive (docs/derivation-families.md)"
-            ) from None
+            )
+            stop.remedy = exc.remedy
+            raise stop from None
         if not res.found:
             return CriticalPoint(
                 solve_for,
@@ -187,6 +190,19 @@ def critical_value(
         params.at(solve_for, value),
         family=fam,
     )
+
+
+def no_bifurcation_remedy(solve_for: str, *, mode: tuple[int, int] | None = None) -> str:
+    """The remedy of a NoBifurcationFound in the terms of what was asked: one mode (then
+    --m-max / --n-max change nothing) or a scan; the other --side only for a control that
+    has one (the stretch, the pressure, the force)."""
+    side = ", try the other --side" if check_side(solve_for, None) is not None else ""
+    if mode is not None:
+        return (
+            f"mode {tuple(mode)} has no root in the searched range: scan every mode (leave out"
+            f" --mode){side}, or solve for another control parameter"
+        )
+    return f"raise --m-max / --n-max{side}, or solve for another control parameter"
 
 
 def control_name(params: TubeParameters | Tube, solve_for) -> str:

@@ -22,7 +22,10 @@ a scan there; if a third mode comes first, the interval is
 split at it and both halves are located again. If a single-mode solve fails (e.g. the
 kernel cannot integrate a high mode next to the threshold), the switch is bisected with
 scans instead, to a relative 1e-7 only. A point whose scan fails (e.g. the tube is
-already unstable at the start of the march) is kept as kind "failed" with its message.
+already unstable at the start of the march) is kept as kind "failed" with its message (kind
+"error": an unexpected exception, a bug). An interrupt (Ctrl-C, SIGTERM) is never a failed
+point: it ends the curve with :class:`~electrogrowth.interrupts.Interrupted`, whose
+``partial`` holds the grid points computed before it.
 
 By continuation (``follow``, the default with the builtin ``map``), the grid points between
 full scans are not scanned: the last scan's critical mode and runners-up are followed
@@ -48,14 +51,16 @@ from typing import NamedTuple
 
 import numpy as np
 
+from ..atomic import replaced
 from ..basestate.tube import solve_base_state
 from ..errors import ElectrogrowthError, ParameterError
 from ..incremental.accuracy import SCAN_SIGNS
 from ..incremental.targets import impedance_targets
+from ..interrupts import Interrupted, interrupt_of, reraise_interrupt
 from ..labelled import curve_dataset
 from ..model.layers import Tube
 from ..model.params import CONTROLS, TubeParameters, check_side
-from ..outcomes import NO_MODE, Kind, Status
+from ..outcomes import BUG_REMEDY, NO_MODE, Kind, Status, status_of
 from ..summary import curve_html
 from .critical import critical_value
 from .directions import past_surface
@@ -66,6 +71,7 @@ from .surface import short_wave_limit
 ALONG = ("stretch", "voltage", "outer_radius", "length", "growth")
 MAX_SPLITS = 6  # depth of the re-location when a third mode intervenes
 CHECK_EVERY = 8  # when following modes, a full scan at least every this many points
+MAX_POINTS = 10_000  # grid points of a curve (each a mode scan, ~1 s): hours at most
 
 
 class Switch(NamedTuple):
@@ -122,12 +128,20 @@ def curve_point(
     side: str | None = None,
     options: ScanOptions = ScanOptions(),
 ) -> CurvePoint:
-    """Scan the modes at ``along`` = x; a failure becomes kind "failed" (never raises)."""
+    """Scan the modes at ``along`` = x; a failure becomes kind "failed" (an electrogrowth
+    error) or "error" (any other exception: a bug). Raises only an interrupt (Ctrl-C,
+    SIGTERM), also where it comes wrapped by the compiled kernel."""
     try:
         res = scan_modes(params.at(along, x), solve_for, side=side, options=options)
     except Exception as exc:  # noqa: BLE001 -- failures are data in a sweep
-        return CurvePoint(float(x), math.nan, NO_MODE, Status.FAILED, _message(exc))
+        reraise_interrupt(exc)
+        return CurvePoint(float(x), math.nan, NO_MODE, status_of(exc), _message(exc))
     return _scan_point(x, res)
+
+
+def _failed(kind) -> bool:
+    """A row without a value: a failed point, or one that hit a bug."""
+    return kind in (Status.FAILED, Status.ERROR)
 
 
 def _progress_bar(total: int, desc: str, unit: str = "pt"):
@@ -146,13 +160,15 @@ def _critical_text(pt: CurvePoint) -> str:
 
 def _changes(prev: CurvePoint, pt: CurvePoint) -> bool:
     """The critical mode changes between two neighbouring grid points: a switch to locate."""
-    return Status.FAILED not in (prev.kind, pt.kind) and prev.mode != pt.mode
+    return not (_failed(prev.kind) or _failed(pt.kind)) and prev.mode != pt.mode
 
 
 def _message(exc: Exception) -> str:
-    """One line; an unexpected (non-electrogrowth) error is named by its type."""
+    """One line; an unexpected (non-electrogrowth) error is named by its type, as a bug."""
     text = " ".join(str(exc).split())
-    return text if isinstance(exc, ElectrogrowthError) else f"{type(exc).__name__}: {text}"
+    if isinstance(exc, ElectrogrowthError):
+        return text
+    return f"internal error: {type(exc).__name__}: {text} ({BUG_REMEDY})"
 
 
 @dataclasses.dataclass(frozen=True)
@@ -191,7 +207,7 @@ class Curve:
         out, start = [], None
         for i in range(len(self.x) + 1):
             end = i == len(self.x)
-            ok = not end and self.kind[i] != Status.FAILED
+            ok = not end and not _failed(self.kind[i])
             if start is not None and (
                 not ok or (self.m[i], self.n[i]) != (self.m[start], self.n[start])
             ):
@@ -213,8 +229,7 @@ class Curve:
         """Columns <along>, <solve_for>_cr, m, n, kind, surface (0/1), short_wave_limit,
         status."""
         path = Path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        with path.open("w", newline="") as fh:
+        with replaced(path, newline="") as fh:  # whole or not at all (atomic.py)
             w = csv.writer(fh)
             w.writerow(
                 [
@@ -384,8 +399,10 @@ def critical_curve(
             f"side = {side!r} applies to the stretch, pressure or force only, not {solve_for}"
         )
     xs = np.asarray(list(values), dtype=float)
-    if xs.ndim != 1 or xs.size == 0:
-        raise ParameterError("values must be a non-empty sequence of numbers")
+    if xs.ndim != 1 or not 1 <= xs.size <= MAX_POINTS:
+        raise ParameterError(
+            f"values must be a non-empty sequence of at most {MAX_POINTS} numbers, got {xs.size}"
+        )
     steps = np.diff(xs)
     if xs.size > 1 and not ((steps > 0).all() or (steps < 0).all()):
         raise ParameterError(f"values of {along} must be strictly monotone, got {xs.tolist()}")
@@ -399,50 +416,75 @@ def critical_curve(
         computed = mapper(unit, xs)
     points = []
     bar = _progress_bar(xs.size, f"{solve_for} along {along}") if progress is True else None
-    for pt in computed:
-        points.append(pt)
+    try:
+        for pt in computed:
+            points.append(pt)
+            if bar is not None:
+                bar.update(1)
+            elif callable(progress):
+                progress(1)
         if bar is not None:
-            bar.update(1)
-        elif callable(progress):
-            progress(1)
-    if bar is not None:
-        bar.close()
-    loc = _Locator(params, solve_for, along, side, unit)
+            bar.close()
+        loc = _Locator(params, solve_for, along, side, unit)
+        rows, switches = _located(points, loc, progress)
+    except (KeyboardInterrupt, Exception) as exc:  # an interrupt, maybe wrapped by the kernel:
+        stop = interrupt_of(exc)  # hand back the finished grid points, switches not located
+        if stop is None:
+            raise
+        partial = _curve(along, solve_for, side, params, [_row(p) for p in points], [])
+        raise Interrupted(stop.signum, str(stop), partial=partial) from None
+    finally:
+        if bar is not None:
+            bar.close()
+    return _curve(along, solve_for, side, params, rows, switches)
+
+
+def _located(points: list[CurvePoint], loc: _Locator, progress=None):
+    """The rows of the grid points with the located switches between them, and the
+    switches (a progress bar of its own when ``progress`` is True)."""
     rows, switches = [], []
     located = sum(map(_changes, points[:-1], points[1:]))
     bar = None
     if progress is True and located:  # locating can take far longer than the grid
         bar = _progress_bar(located, "locating mode switches", "switch")
-    for i, pt in enumerate(points):
-        prev = points[i - 1] if i else None
-        if prev is not None and Status.FAILED not in (prev.kind, pt.kind) and prev.mode != pt.mode:
-            if bar is not None:
-                bar.set_postfix_str(f"between {_critical_text(prev)} and {_critical_text(pt)}")
-            try:
-                new_rows, new_switches = loc.between(prev, pt, MAX_SPLITS)
-            except Exception as exc:  # noqa: BLE001 -- keep the grid points
-                new_rows, new_switches = [], []
-                pt = dataclasses.replace(
-                    pt, status=f"switch from {prev.mode} not located: {_message(exc)}"
-                )
-            rows += new_rows
-            switches += new_switches
-            if bar is not None:
-                bar.update(1)
-        rows.append(_row(pt))
-    if bar is not None:
-        bar.close()
-    x, v, modes, kinds, status, surface, limit = zip(*rows)
+    try:
+        for i, pt in enumerate(points):
+            prev = points[i - 1] if i else None
+            if prev is not None and _changes(prev, pt):
+                if bar is not None:
+                    bar.set_postfix_str(f"between {_critical_text(prev)} and {_critical_text(pt)}")
+                try:
+                    new_rows, new_switches = loc.between(prev, pt, MAX_SPLITS)
+                except Exception as exc:  # noqa: BLE001 -- keep the grid points
+                    reraise_interrupt(exc)
+                    new_rows, new_switches = [], []
+                    pt = dataclasses.replace(
+                        pt, status=f"switch from {prev.mode} not located: {_message(exc)}"
+                    )
+                rows += new_rows
+                switches += new_switches
+                if bar is not None:
+                    bar.update(1)
+            rows.append(_row(pt))
+    finally:
+        if bar is not None:
+            bar.close()
+    return rows, switches
+
+
+def _curve(along, solve_for, side, params, rows, switches) -> Curve:
+    """The Curve of table rows (as :func:`_row`) and switches (and ends)."""
+    x, v, modes, kinds, status, surface, limit = zip(*rows) if rows else [()] * 7
     modes = np.array(modes, dtype=int).reshape(-1, 2)
     return Curve(
         along,
         solve_for,
         side,
-        np.array(x),
-        np.array(v),
+        np.array(x, dtype=float),
+        np.array(v, dtype=float),
         modes[:, 0],
         modes[:, 1],
-        np.array(kinds),
+        np.array(kinds) if kinds else np.array([], dtype=str),
         tuple(status),
         tuple(s for s in switches if s.kind == Kind.SWITCH),
         params,
@@ -482,7 +524,8 @@ class _Follower:
         at = self.params.at(self.along, x)
         try:
             res = scan_modes(at, self.solve_for, side=self.side, options=self.options)
-        except Exception:  # noqa: BLE001 -- the unit keeps the failure as data
+        except Exception as exc:  # noqa: BLE001 -- the unit keeps the failure as data
+            reraise_interrupt(exc)
             self.scan = None
             return self.unit(x)
         pt = _scan_point(x, res)
@@ -635,7 +678,7 @@ class _Locator:
             check = self.unit(x)
             first = min(v_before, v_after, key=lambda v: self.sense * v)
             if (
-                check.kind != Status.FAILED
+                not _failed(check.kind)
                 and check.mode not in (a.mode, b.mode)
                 and self.sense * (check.value - first) < -1e-9 * max(1.0, abs(first))
             ):
@@ -649,7 +692,7 @@ class _Locator:
 
     def _split(self, a, mid, b, depth):
         """Locate the switches on both sides of a scanned point ``mid`` (kept as a row)."""
-        if depth <= 0 or mid.kind == Status.FAILED:
+        if depth <= 0 or _failed(mid.kind):
             return [], []
         rows, switches = [], []
         if mid.mode != a.mode:
@@ -685,7 +728,7 @@ class _Locator:
         lo, hi = a, b
         while abs(hi.x - lo.x) > 1e-7 * max(1.0, abs(lo.x)):
             mid = self.unit(0.5 * (lo.x + hi.x))
-            if mid.kind == Status.FAILED or mid.mode not in (a.mode, b.mode):
+            if _failed(mid.kind) or mid.mode not in (a.mode, b.mode):
                 return mid
             lo, hi = (mid, hi) if mid.mode == a.mode else (lo, mid)
         return 0.5 * (lo.x + hi.x), lo.value, hi.value

@@ -36,12 +36,13 @@ from ..labelled import scan_dataset
 from ..model.params import TubeParameters, check_side
 from ..outcomes import NO_MODE, Kind
 from ..summary import scan_html
-from .critical import CriticalPoint, control_name, critical_value
+from .critical import CriticalPoint, control_name, critical_value, no_bifurcation_remedy
 from .directions import past_surface
 from .march import ModeValue, first_bifurcations, unloaded_signs
 from .surface import short_wave_limit
 
 M_CAP, N_CAP = 64, 320
+TOP_MAX = 1000  # modes a scan reports: the critical one and runners-up
 # widen a range at most this often; an optimum still on its edge is a short-wavelength
 # (surface) instability, extrapolated instead of scanned
 DOUBLINGS = 2
@@ -112,8 +113,12 @@ class ScanOptions:
             rng = getattr(self, f"{name}_range")
             _check_range(name, rng, lowest, highest)
             object.__setattr__(self, f"{name}_range", (int(rng[0]), int(rng[1])))
-        if isinstance(self.top, bool) or int(self.top) != self.top or self.top < 1:
-            raise ParameterError(f"top = {self.top!r} is invalid; need an integer >= 1")
+        top = self.top
+        if isinstance(top, bool) or int(top) != top or not 1 <= top <= TOP_MAX:
+            raise ParameterError(
+                f"top = {top!r} is invalid; need an integer from 1 to {TOP_MAX}"
+                " (the modes a scan reports)"
+            )
         object.__setattr__(self, "top", int(self.top))
         for name in ("extend", "surface", "prismatic", "torsional"):
             if not isinstance(getattr(self, name), bool):
@@ -209,7 +214,8 @@ def scan_modes(
     side = check_side(solve_for, side)
     try:
         result, at_cap, limit = _widened_scan(params, solve_for, side, options, rtol)
-    except NoBifurcationFound:
+    except NoBifurcationFound as exc:
+        exc.remedy = no_bifurcation_remedy(solve_for)  # not the remedy of one mode's solve
         if not options.surface:
             raise
         limit = short_wave_limit(params, solve_for, side=side, rtol=rtol)

@@ -3,7 +3,9 @@
 Each subcommand is a pair of functions in :data:`COMMANDS`: ``configure(parser)`` adds its
 options, ``run(args) -> int`` does the work. :func:`main` parses, dispatches and turns every
 failure into one line ``electrogrowth: error: <message>`` on stderr with exit status 2
-(1 for an unexpected internal error); no traceback reaches the user. To add a subcommand,
+(1 for an unexpected internal error); no traceback reaches the user. Ctrl-C and SIGTERM
+stop any command with one line (``electrogrowth: interrupted; ...``, saying what was kept)
+and exit status 130 / 143 (interrupts.py). To add a subcommand,
 write the two functions (a module of this package) and add an entry to :data:`COMMANDS`;
 figures are registered in ``electrogrowth.figures.FIGURES``.
 """
@@ -11,14 +13,19 @@ figures are registered in ``electrogrowth.figures.FIGURES``.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import importlib
+import logging
 import os
 import re
 import sys
+import warnings
 from collections.abc import Callable
 from importlib.metadata import version
+from pathlib import Path
 
 from ..errors import ElectrogrowthError, UsageError
+from ..interrupts import Interrupted, interrupt_of, signals_as_interrupts
 from .units import resolve_units
 
 
@@ -48,6 +55,7 @@ class _Parser(argparse.ArgumentParser):
         raise UsageError(message)
 
 
+_FLOATING_POINT = r"(overflow|invalid value|divide by zero|underflow) encountered"
 _NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$", re.I)
 
 
@@ -129,7 +137,31 @@ def _command_of(argv: list[str] | None) -> str:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Run the command line; return the exit status (0 ok, 2 bad input, 1 internal error)."""
+    """Run the command line; return the exit status (0 ok, 2 bad input, 1 internal error,
+    130 / 143 interrupted by SIGINT (Ctrl-C) / SIGTERM)."""
+    try:
+        with signals_as_interrupts(), warnings.catch_warnings():
+            # numpy's floating-point warnings (an overflow while a solver probes beyond a
+            # threshold) are not the user's to read: a result is checked, a failure named
+            warnings.filterwarnings("ignore", _FLOATING_POINT, RuntimeWarning)
+            status = _dispatch(argv)
+    except KeyboardInterrupt as exc:  # also while the handlers are put back
+        status = _interrupted(interrupt_of(exc))
+    if status > 128:
+        _quiet_exit()
+    return status
+
+
+def _quiet_exit() -> None:
+    """After an interrupt, the work a library had in flight (zarr's asyncio tasks) is
+    destroyed at exit: its "Task was destroyed but it is pending!" and "coroutine ... was
+    never awaited" would follow the one line."""
+    logging.getLogger("asyncio").setLevel(logging.CRITICAL)
+    warnings.filterwarnings("ignore", r"coroutine .* was never awaited", RuntimeWarning)
+
+
+def _dispatch(argv: list[str] | None) -> int:
+    """Parse and run; every failure becomes one line on stderr (no traceback)."""
     words = sys.argv[1:] if argv is None else argv
     if not words:  # no command: the overview on stdout and success, as `pip` does
         build_parser("").print_help()
@@ -149,9 +181,42 @@ def main(argv: list[str] | None = None) -> int:
     except BrokenPipeError:  # the reader went away (e.g. `| head`): end quietly
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # no flush error
         return 0
+    except OSError as exc:  # an output path that is a file, unwritable, a full disk
+        if exc.filename is None:
+            return _internal_error(exc)
+        print(f"{PROG}: error: {_path_problem(exc)}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt as exc:
+        return _interrupted(interrupt_of(exc))
     except Exception as exc:  # a bug: still one line, never a traceback
-        print(
-            f"{PROG}: internal error: {type(exc).__name__}: {' '.join(str(exc).split())}",
-            file=sys.stderr,
+        stop = interrupt_of(exc)  # a signal inside a compiled kernel: a wrapped interrupt
+        if stop is not None:
+            return _interrupted(stop)
+        return _internal_error(exc)
+
+
+def _internal_error(exc: BaseException) -> int:
+    print(
+        f"{PROG}: internal error: {type(exc).__name__}: {' '.join(str(exc).split())}",
+        file=sys.stderr,
+    )
+    return 1
+
+
+def _path_problem(exc: OSError) -> str:
+    """One line naming the path and what is wrong with it."""
+    path = Path(exc.filename)
+    if isinstance(exc, (FileExistsError, NotADirectoryError)):
+        file = next((p for p in (path, *path.parents) if p.is_file()), path)
+        return (
+            f"{file} is an existing file, not a directory: give --out a directory (new or"
+            " existing), not a file"
         )
-        return 1
+    return f"cannot use {path}: {exc.strerror or exc}"
+
+
+def _interrupted(stop: Interrupted) -> int:
+    """One line (what was kept, if the command said so) and 128 + the signal's number."""
+    with contextlib.suppress(Exception, KeyboardInterrupt):  # a second Ctrl-C: still quiet
+        print(f"{PROG}: {' '.join(str(stop).split())}", file=sys.stderr, flush=True)
+    return stop.exit_status

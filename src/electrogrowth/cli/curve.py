@@ -14,10 +14,11 @@ from pathlib import Path
 
 import numpy as np
 
-from ..bifurcation.curves import ALONG, check_curve, critical_curve
+from ..bifurcation.curves import ALONG, MAX_POINTS, check_curve, critical_curve
 from ..errors import ParameterError
 from ..figures.plots import plot_curve
 from ..figures.style import wrapped_title
+from ..interrupts import Interrupted
 from ..model.layers import KEYS_TEXT, Tube
 from ..model.params import TubeParameters
 from ..outcomes import Status
@@ -126,24 +127,31 @@ def run_curve(args) -> int:
             )
         check_curve(solve_for, args.along)
         params = curve_params(args)
-    if args.points < 2:
-        raise ParameterError(f"--points = {args.points} is too small; need >= 2")
+    if not 2 <= args.points <= MAX_POINTS:
+        raise ParameterError(
+            f"--points = {args.points} is out of range; need 2 to {MAX_POINTS} (a curve"
+            " point is a mode scan, ~1 s)"
+        )
     options = scan_options_from_args(args)
     check_side_option(args)
     if args.start == args.stop:
         raise ParameterError(f"--from = --to = {args.start:g}; need two different values")
     values = np.linspace(args.start, args.stop, args.points)
-    curve = critical_curve(  # bars over the points, then the switches being located
-        params,
-        solve_for,
-        args.along,
-        values,
-        side=args.side,
-        options=options,
-        progress=not args.json and enabled(args),
-    )
     stem = f"curve_{solve_for}_vs_{args.along}".replace("[", "").replace("]", "")
+    try:
+        curve = critical_curve(  # bars over the points, then the switches being located
+            params,
+            solve_for,
+            args.along,
+            values,
+            side=args.side,
+            options=options,
+            progress=not args.json and enabled(args),
+        )
+    except Interrupted as stop:  # keep the finished points
+        raise _kept(stop, args.out / f"{stem}.partial.csv", args.points) from None
     csv = curve.to_csv(args.out / f"{stem}.csv")
+    (args.out / f"{stem}.partial.csv").unlink(missing_ok=True)  # of an interrupted run
     png = args.out / f"{stem}.png"
     ax = plot_curve(curve)
     wrapped_title(ax, _fixed_text(curve), 8)
@@ -153,6 +161,19 @@ def run_curve(args) -> int:
         return 0
     print("\n".join(summary(curve) + [str(csv), str(png)]))
     return 0
+
+
+def _kept(stop: Interrupted, path: Path, total: int) -> Interrupted:
+    """The interrupt, saying where the points finished before it were written (a CSV named
+    .partial.csv: the grid points only, no switch located)."""
+    done = stop.partial
+    if done is None or not len(done.x):
+        return Interrupted(stop.signum, f"{stop}; no point was finished")
+    done.to_csv(path)
+    return Interrupted(
+        stop.signum,
+        f"{stop}; {len(done.x)} of {total} points written to {path} (switches not located)",
+    )
 
 
 def _fixed_text(curve) -> str:
@@ -214,7 +235,7 @@ def summary(curve) -> list[str]:
             f" {curve.solve_for}_cr = {e.value:.12g}; then "
             + (after or f"{_mode(e.mode_after)} from {e.value_after:.12g}")
         )
-    failed = [i for i, k in enumerate(curve.kind) if k == Status.FAILED]
+    failed = [i for i, k in enumerate(curve.kind) if k in (Status.FAILED, Status.ERROR)]
     for i in failed:
         lines.append(f"  failed at {curve.along} = {curve.x[i]:.10g}: {curve.status[i]}")
     return lines

@@ -248,7 +248,7 @@ MODE_COVERAGE = (
 
 def add_mode_range_options(group, *, top: bool = False) -> None:
     """--m-max and --n-max (and --top): the ScanOptions of a scan, defaults from it."""
-    from ..bifurcation.scan import M_CAP, N_CAP, ScanOptions  # start-up speed (see top)
+    from ..bifurcation.scan import M_CAP, N_CAP, TOP_MAX, ScanOptions  # start-up (see top)
 
     default = ScanOptions()
     group.add_argument(
@@ -276,7 +276,7 @@ def add_mode_range_options(group, *, top: bool = False) -> None:
     if top:
         group.add_argument(
             "--top",
-            type=bounded_int(1, 1000),
+            type=bounded_int(1, TOP_MAX),
             default=default.top,
             help=f"number of modes to report in a scan (default {default.top})",
         )

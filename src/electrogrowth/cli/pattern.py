@@ -41,6 +41,9 @@ from .tube_input import add_any_tube_options, control_of
 
 HELP = "mode shape of the wrinkles at onset: 3D picture, plot and CSV, VTK mesh of the wall"
 
+#: Radii at which the shape is sampled, at most (10^4: ~15 s; more only costs time).
+MAX_RADII = 10_000
+
 
 def configure_pattern(parser: argparse.ArgumentParser) -> None:
     add_control_options(parser)
@@ -107,8 +110,10 @@ def run_pattern(args) -> int:
     check_side_option(args)
     if not (math.isfinite(args.amplitude) and args.amplitude >= 0):
         raise ParameterError(f"--amplitude = {args.amplitude:g} is out of range; need A >= 0")
-    if args.points < 2:
-        raise ParameterError(f"--points = {args.points} is out of range; need at least 2")
+    if not 2 <= args.points <= MAX_RADII:
+        raise ParameterError(
+            f"--points = {args.points} is out of range; need 2 to {MAX_RADII} radii"
+        )
     if args.vtk is not None and args.vtk.suffix not in (".vtu", ".vtk"):
         raise ParameterError(f"--vtk {args.vtk} must end in .vtu (XML) or .vtk (legacy)")
     if args.vtk is not None and importlib.util.find_spec("meshio") is None:

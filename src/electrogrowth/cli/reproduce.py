@@ -11,7 +11,7 @@ import time
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
-from ..errors import ParameterError, UsageError
+from ..errors import ParameterError
 from ..figures import FIGURES, GALLERY
 from ..figures.plots import render_pattern
 from ..shapes.mode_shape import mode_shape
@@ -164,8 +164,9 @@ def run_gallery(args) -> int:
         raise ParameterError(
             f"gallery example {unknown[0]!r} is unknown; choose from {', '.join(GALLERY)}"
         )
-    if args.workers < 1:
-        raise UsageError(f"--workers {args.workers}: need at least 1")
+    from ..sweep.run import check_workers  # start-up speed: numba, --gallery only
+
+    check_workers(args.workers)
     out = args.out
     out.mkdir(parents=True, exist_ok=True)
     sections = []

@@ -50,7 +50,15 @@ def _with_physical(rec: dict, args) -> dict:
 
 def _located(exc: BaseStateError, args) -> BaseStateError:
     """A threshold error with the file and line of the load it names, when it is the file's."""
-    key = "voltage" if "Vbar" in str(exc) else "inner_pressure" if "P_i" in str(exc) else None
+    text = str(exc)  # only a message that names the load as the cause ("no unloaded state
+    # (V = 0, P_i = P_o)" is the tube's own, e.g. of a growth outside the supported range)
+    key = (
+        "voltage"
+        if text.startswith("Vbar = ")
+        else "inner_pressure"
+        if text.startswith("inner pressure P_i = ")
+        else None
+    )
     if args.tube is None or key is None or getattr(args, key) is not None:
         return exc
     with open(args.tube, encoding="utf-8") as fh:

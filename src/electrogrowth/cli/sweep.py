@@ -5,13 +5,13 @@ when one of them runs, so the other commands work without them."""
 from __future__ import annotations
 
 import argparse
-import signal
 import sys
 from pathlib import Path
 
 from ..errors import ElectrogrowthError, UsageError
+from ..interrupts import Interrupted, interrupt_of
 from ..sweep.file import load_config
-from ..sweep.run import compute_sweep
+from ..sweep.run import check_workers, compute_sweep
 
 EXTRA = "pip install 'electrogrowth[sweep]'"
 
@@ -72,8 +72,8 @@ def configure_sweep(parser: argparse.ArgumentParser) -> None:
 
 def run_sweep(args) -> int:
     config = load_config(args.file)
-    if args.workers is not None and args.workers < 1:
-        raise UsageError(f"--workers {args.workers}: need at least 1")
+    if args.workers is not None:
+        check_workers(args.workers)
     _need_sweep_extra()
     out = args.out if args.out is not None else Path(args.file.stem + ".zarr")
     if args.check:
@@ -87,13 +87,13 @@ def run_sweep(args) -> int:
             progress=not args.quiet,
             source_text=args.file.read_text(encoding="utf-8"),
         )
-    except KeyboardInterrupt as stop:
-        print(
-            f"electrogrowth: {stop or 'interrupted'}; the finished chunks are saved in {out}:"
-            " run the same command again to resume",
-            file=sys.stderr,
-        )
-        return 128 + getattr(stop, "signum", signal.SIGINT)
+    except KeyboardInterrupt as exc:  # main prints the one line and exits 130 / 143
+        stop = interrupt_of(exc)
+        raise Interrupted(
+            stop.signum,
+            f"{stop}; the finished chunks are saved in {out}: run the same command again"
+            " to resume",
+        ) from None
     print(summary.text())
     failed = summary.counts.get("failed", 0) + summary.counts.get("error", 0)
     if failed and failed == sum(v for k, v in summary.counts.items() if k != "pending"):

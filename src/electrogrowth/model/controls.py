@@ -43,14 +43,16 @@ class Control:
     components: tuple[str, ...] | None = None
 
     def __post_init__(self):
+        # The messages quote the control as written, not "solve_for": the same name is an
+        # --along of a curve or a [grid] key of a sweep.
         if self.kind not in TUBE_CONTROLS:
             raise ParameterError(
-                f"solve_for = {self.kind!r} is unknown; choose one of {', '.join(TUBE_CONTROLS)}"
+                f"control {self.kind!r} is unknown; choose one of {', '.join(TUBE_CONTROLS)}"
             )
         if self.kind != "growth" and (self.layer is not None or self.components is not None):
             raise ParameterError(
-                f"a layer or growth component is given with solve_for = {self.kind!r};"
-                " they apply to growth only"
+                f"control {str(self)!r}: a layer or growth component applies to growth only,"
+                f" not {self.kind}"
             )
         if self.components is not None:
             comps = tuple(c for c in COMPONENTS if c in self.components)
@@ -83,21 +85,21 @@ def parse_control(solve_for, layer: int | None = None, component: str | None = N
     elif isinstance(solve_for, str):
         text = solve_for.strip()
     else:
-        raise ParameterError(f"solve_for = {solve_for!r} is not a control name")
+        raise ParameterError(f"{solve_for!r} is not a control name")
     match = _SYNTAX.match(text)
     if match is None:
         raise ParameterError(
-            f"solve_for = {text!r} is not a control; write e.g. growth, growth[2],"
+            f"{text!r} is not a control; write e.g. growth, growth[2],"
             " growth[2].theta, stretch, voltage, pressure or force"
         )
     kind, lay, comp = match["kind"], match["layer"], match["comp"]
     if layer is not None:
         if lay is not None and int(lay) != layer:
-            raise ParameterError(f"layer {layer} contradicts solve_for = {text!r}")
+            raise ParameterError(f"layer {layer} contradicts the control {text!r}")
         lay = layer
     if component is not None:
         if comp is not None and comp != component:
-            raise ParameterError(f"component {component!r} contradicts solve_for = {text!r}")
+            raise ParameterError(f"component {component!r} contradicts the control {text!r}")
         comp = component
     if lay is not None and (isinstance(lay, bool) or int(lay) != float(lay)):
         raise ParameterError(f"layer = {lay!r} is not a whole number")

@@ -25,7 +25,7 @@ import numpy as np
 from ..errors import ParameterError
 from .controls import Control, parse_control
 from .materials import Material, neo_hookean
-from .params import TubeParameters
+from .params import SUPPORTED, SUPPORTED_WHY, TubeParameters
 
 Growth = float | tuple[float, float, float] | Callable
 
@@ -51,17 +51,25 @@ def _triple(name: str, value) -> tuple[float, float, float]:
             raise ParameterError(
                 f"{name} = {value!r} has {len(value)} entries; give g or [g_r, g_theta, g_z]"
             )
-        return tuple(
-            _number(
-                f"{name}[{i}]",
-                float(v) if isinstance(v, np.floating) else v,
-                "> 0",
-                lambda v: v > 0,
-            )
-            for i, v in enumerate(value)
+        return tuple(  # named g_r, g_theta, g_z: growth[K] is layer K's growth (controls.py)
+            _growth(f"{name} g_{comp}", float(v) if isinstance(v, np.floating) else v, "> 0")
+            for comp, v in zip(("r", "theta", "z"), value)
         )
-    g = _number(name, value, "> 0 (or three entries > 0)", lambda v: v > 0)
+    g = _growth(name, value, "> 0 (or three entries > 0)")
     return (g, g, g)
+
+
+def _growth(name: str, value, valid: str) -> float:
+    """A growth entry > 0 inside the supported box of the one-layer tube (params.py): a
+    growth of 1e-9 was accepted and failed later as "no unloaded state", blamed on the
+    tube's inner pressure."""
+    g = _number(name, value, valid, lambda v: v > 0)
+    lo, hi = SUPPORTED[3], SUPPORTED[4]
+    if not lo <= g <= hi:
+        raise ParameterError(
+            f"{name} = {g:.6g} is outside the supported range {lo:g} to {hi:g}: {SUPPORTED_WHY}"
+        )
+    return g
 
 
 @dataclasses.dataclass(frozen=True)
@@ -206,13 +214,13 @@ class Tube:
             raise ParameterError(f"layers = {layers!r} is invalid; give at least one Layer")
         inner = 1.0
         for k, layer in enumerate(layers):
-            if not isinstance(layer, Layer):
-                raise ParameterError(f"layers[{k}] = {layer!r} is not a Layer")
+            if not isinstance(layer, Layer):  # named layers[K], K = 1 innermost, as in Tube.at
+                raise ParameterError(f"layers[{k + 1}] = {layer!r} is not a Layer")
             if not layer.outer_radius > inner:
                 raise ParameterError(
-                    f"layers[{k}].outer_radius = {layer.outer_radius:g} is out of range;"
+                    f"layers[{k + 1}].outer_radius = {layer.outer_radius:g} is out of range;"
                     f" valid range: > {inner:g}, the layer's inner radius (layers are listed"
-                    " from R = 1 outward, radii increasing)"
+                    " from R = 1 outward, radii increasing; layers[1] is the innermost)"
                 )
             if layer.graded:
                 layer.growth_at(np.linspace(inner, layer.outer_radius, 17))
@@ -287,6 +295,10 @@ class Tube:
         value = float(value)
         if isinstance(name, str) and (name in ("length", "outer_pressure") or "layers[" in name):
             return self._with_key(name, value)
+        try:
+            parse_control(name)
+        except ParameterError as exc:  # name the keys too: ``name`` may be either
+            raise ParameterError(f"{exc}; or a key of the tube: {KEYS_TEXT}") from None
         c = self.check_control(name)
         if c.kind == "growth":
             k = (c.layer or 1) - 1
@@ -314,6 +326,7 @@ class Tube:
             )
         if field not in ("outer_radius", "thickness", "shear_modulus", "permittivity"):
             raise ParameterError(f"{name!r} is not a key of a tube; valid: {KEYS_TEXT}")
+        _check_key(name, value, field, self.radii, k)
         layers = list(self.layers)
         if field == "thickness":  # every layer outside moves out with it
             inner = self.radii[k - 1]
@@ -387,3 +400,22 @@ class Tube:
     def physical_voltage(self) -> float:
         """V in units sqrt(mu / eps) R_i: V = Vbar (R_N - 1)."""
         return self.voltage * (self.outer_radius - 1.0)
+
+
+def _check_key(name: str, value: float, field: str, radii: tuple[float, ...], k: int) -> None:
+    """Refuse a value of the key ``name`` (layers[K].field) in its own terms: the layer
+    would otherwise report a radius the user never gave (a thickness moves the radii)."""
+    if field == "thickness":
+        _number(name, value, "> 0", lambda v: v > 0)
+    elif field == "outer_radius":
+        inner = radii[k - 1]
+        outer = radii[k + 1] if k + 1 < len(radii) else math.inf
+        valid = f"{inner:g} < R < {outer:g} (the layer's inner radius, the next one's outer)"
+        _number(
+            name,
+            value,
+            valid if k + 1 < len(radii) else f"> {inner:g}",
+            lambda v: inner < v < outer,
+        )
+    else:  # shear_modulus, permittivity
+        _number(name, value, "0 < value < inf", lambda v: v > 0)

@@ -153,10 +153,10 @@ def _checked(make, where):
         return make()
     except ParameterError as exc:
         msg = str(exc)
-        hit = re.match(r"(?:layers\[(\d+)\]\.)?([a-z_]+)(?:\[\d+\])?\s*=", msg)
+        hit = re.match(r"(?:layers\[(\d+)\]\.)?([a-z_]+)(?: g_[a-z]+)?\s*=", msg)
         key = where
-        if hit and hit.group(1) is not None:
-            key = ("layers", str(int(hit.group(1)) + 1), hit.group(2))
+        if hit and hit.group(1) is not None:  # layers[K], K = 1 innermost, as in the file
+            key = ("layers", hit.group(1), hit.group(2))
         elif hit and hit.group(2) in LAYER + TOP:
             key = where + (hit.group(2),)
         raise ConfigError(key, msg) from None

@@ -49,6 +49,9 @@ SWEEPABLE = ("outer_radius", "length", "growth", "stretch", "voltage")
 #: The most grid points of one sweep: 1e7 points are days of a large cluster, and the store's
 #: completion marks of a larger grid are read whole into memory (docs/security.md).
 MAX_POINTS = 10_000_000
+#: The most mode records (points x top) a sweep's store may hold: refused up front rather
+#: than filling the disk and the memory of whoever opens it.
+MAX_MODE_RECORDS = 10**8
 
 
 @dataclasses.dataclass(frozen=True)
@@ -241,6 +244,13 @@ def _check_run(c: SweepConfig) -> None:
         raise ConfigError(
             ("grid",),
             f"{c.size:.3g} grid points, more than the limit {MAX_POINTS:.0e}; split the sweep",
+        )
+    if c.size * c.scan.top > MAX_MODE_RECORDS:
+        raise ConfigError(
+            ("modes", "top"),
+            f"top = {c.scan.top} modes at each of {c.size:,} points is"
+            f" {c.size * c.scan.top:,} mode records; the store holds at most"
+            f" {MAX_MODE_RECORDS:.0e}: lower top or the grid",
         )
 
 

@@ -21,7 +21,8 @@ import time
 import uuid
 from pathlib import Path
 
-from ..errors import SweepError
+from ..errors import SweepError, UsageError
+from ..interrupts import signals_as_interrupts
 from ..outcomes import Status
 from .unit import ChunkResult, ChunkTask, compute_chunk
 
@@ -93,7 +94,7 @@ def compute_sweep(
 
     start = time.perf_counter()
     store = open_store(out, config, source_text=source_text)
-    with store.locked(), _terminate_as_interrupt():
+    with store.locked(), signals_as_interrupts():  # SIGTERM too stops the workers
         pending = store.pending_chunks()
         chunks = len(store.blocks)
         run = store.next_run()
@@ -141,33 +142,6 @@ def compute_sweep(
     )
 
 
-class Terminated(KeyboardInterrupt):
-    """SIGTERM (a batch scheduler's time limit) received: handled like Ctrl-C, so the
-    workers are stopped and the finished chunks stay saved."""
-
-    def __init__(self, signum: int):
-        super().__init__(f"terminated by signal {signum}")
-        self.signum = signum
-
-
-@contextlib.contextmanager
-def _terminate_as_interrupt():
-    """While a sweep runs in the main thread, SIGTERM raises Terminated (the default action
-    would end this process at once and leave the workers running)."""
-    if threading.current_thread() is not threading.main_thread():
-        yield
-        return
-
-    def interrupt(signum, frame):
-        raise Terminated(signum)
-
-    previous = signal.signal(signal.SIGTERM, interrupt)
-    try:
-        yield
-    finally:
-        signal.signal(signal.SIGTERM, previous)
-
-
 def _exit_with_parent(parent: int) -> None:
     """Worker initializer: end this worker when the driver ends, even by SIGKILL (no
     orphan keeps computing, nor keeps the resource tracker alive): the kernel's
@@ -191,6 +165,21 @@ def _exit_with_parent(parent: int) -> None:
 
 def _first_failure(result: ChunkResult) -> str:
     return next(p.message for p in result.points if p.status != Status.OK)
+
+
+#: Local worker processes per usable core at most: each holds the numeric stack (~300 MB),
+#: and more processes than cores only contend for them.
+WORKERS_PER_CORE = 4
+
+
+def check_workers(workers: int, option: str = "--workers") -> None:
+    """Raise UsageError unless 1 <= workers <= WORKERS_PER_CORE x the usable cores."""
+    most = WORKERS_PER_CORE * _usable_cores()
+    if not 1 <= workers <= most:
+        raise UsageError(
+            f"{option} {workers} is out of range; need 1 to {most} ({WORKERS_PER_CORE} per"
+            " usable core; a cluster: --scheduler)"
+        )
 
 
 def _usable_cores() -> int:

@@ -24,6 +24,7 @@ import time
 
 from ..bifurcation.scan import ScanOptions, scan_modes
 from ..errors import NoBifurcationFound
+from ..interrupts import reraise_interrupt
 from ..model.params import TubeParameters
 from ..outcomes import NO_MODE, Kind, Status, remedy, status_of
 
@@ -82,6 +83,7 @@ def compute_point(params: TubeParameters, spec: ScanSpec) -> PointResult:
     except NoBifurcationFound as exc:
         return PointResult(Status.OK, kind=Kind.NONE, message=str(exc), seconds=took())
     except Exception as exc:  # noqa: BLE001 - failures are data
+        reraise_interrupt(exc)  # Ctrl-C inside the compiled kernel is no failed point
         status = status_of(exc)
         prefix = "" if status is Status.FAILED else "internal error: "
         return PointResult(

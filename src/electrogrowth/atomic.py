@@ -1,0 +1,41 @@
+"""Output files written whole or not at all.
+
+:func:`replaced` writes a file under a temporary name in the same directory and renames it
+into place (``os.replace``, atomic on POSIX and Windows): two commands writing the same
+output at once each leave a complete file (the last one wins), and a command stopped
+mid-write (Ctrl-C, a full disk) leaves the previous file as it was, never half a file.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import functools
+import os
+import tempfile
+from pathlib import Path
+
+
+@contextlib.contextmanager
+def replaced(path: str | Path, mode: str = "w", **open_args):
+    """``open(path, mode)`` for writing, the file taking ``path``'s place only when the block
+    ends without an exception; the directory is created if missing."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(fd, mode, **open_args) as fh:
+            yield fh
+        os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes it 0600: the usual mode instead
+        os.replace(tmp, path)
+    except BaseException:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
+        raise
+
+
+@functools.cache
+def _umask() -> int:
+    """The process's umask (read by setting it: once, and put back at once)."""
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return mask

@@ -1,0 +1,214 @@
+"""Ctrl-C and SIGTERM: any command stops within seconds with exit 130 / 143 and one line on
+stderr, keeps what it finished (a curve's points, a sweep's chunks), and an interrupt that
+the compiled kernel wraps in a SystemError is never filed as a failed point."""
+
+import csv
+import math
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from electrogrowth import TubeParameters
+from electrogrowth.bifurcation import curves
+from electrogrowth.cli import app as cli
+from electrogrowth.interrupts import Interrupted, interrupt_of, signals_as_interrupts
+from electrogrowth.outcomes import Status
+from electrogrowth.sweep import unit
+
+SRC = Path(__file__).resolve().parents[1] / "src"
+#: Runs the command line, with a file "mark" written once the work is under way: after
+#: each finished point of a curve, when a scan starts.
+LAUNCHER = """\
+import pathlib
+from electrogrowth.cli import app, critical, curve
+
+def marking(compute):
+    def run(*args, **kwargs):
+        if "progress" in kwargs:
+            kwargs["progress"] = lambda n: pathlib.Path("mark").write_text("point")
+        else:
+            pathlib.Path("mark").write_text("scan")
+        return compute(*args, **kwargs)
+    return run
+
+curve.critical_curve = marking(curve.critical_curve)
+critical.scan_modes = marking(critical.scan_modes)
+raise SystemExit(app.main())
+"""
+STOPS_WITHIN = 10.0  # seconds from the signal to the exit (~1.5 s measured on a busy machine)
+
+
+def _wrapped_interrupt() -> SystemError:
+    """What numba raises when Ctrl-C arrives inside a compiled kernel."""
+    try:
+        try:
+            raise KeyboardInterrupt
+        except KeyboardInterrupt as stop:
+            raise SystemError(
+                "CPUDispatcher(...) returned a result with an exception set"
+            ) from stop
+    except SystemError as exc:
+        return exc
+
+
+def _interrupt(tmp_path, sig, *argv, ready=None, timeout=300):
+    """Run the command, send ``sig`` once ``ready()`` (default: the launcher's mark exists);
+    check the exit and return stderr."""
+    ready = ready or (tmp_path / "mark").exists
+    (tmp_path / "launch.py").write_text(LAUNCHER)
+    env = {
+        **os.environ,
+        "PYTHONPATH": os.pathsep.join(filter(None, [str(SRC), os.environ.get("PYTHONPATH")])),
+    }
+    proc = subprocess.Popen(
+        [sys.executable, "launch.py", *argv],
+        cwd=tmp_path,
+        env=env,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+    )
+    try:
+        deadline = time.monotonic() + timeout
+        while not ready():
+            assert proc.poll() is None, proc.stderr.read().decode()
+            assert time.monotonic() < deadline, f"not under way within {timeout} s"
+            time.sleep(0.05)
+        time.sleep(0.5)  # well inside the computation
+        proc.send_signal(sig)
+        sent = time.monotonic()
+        code = proc.wait(timeout=60)
+        took = time.monotonic() - sent
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    err = proc.stderr.read().decode()
+    proc.stderr.close()
+    assert took < STOPS_WITHIN, f"{took:.1f} s after the signal"
+    assert "Traceback" not in err and err.count("\n") == 1, err
+    assert code == 128 + sig, err
+    return err
+
+
+@pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM])
+def test_interrupted_curve_writes_its_points(tmp_path, sig):
+    err = _interrupt(
+        tmp_path,
+        sig,
+        *"curve --solve-for growth --along voltage --from 0 --to 0.4 --points 60".split(),
+        *"--outer-radius 1.4 --out out".split(),
+    )
+    partial = tmp_path / "out" / "curve_growth_vs_voltage.partial.csv"
+    first = "interrupted" if sig == signal.SIGINT else "terminated by signal 15"
+    assert err.startswith(f"electrogrowth: {first}; ")
+    rows = list(csv.DictReader(partial.open()))
+    assert f"{len(rows)} of 60 points written to {Path('out') / partial.name}" in err
+    assert 1 <= len(rows) < 60
+    assert all(r["kind"] == "bifurcation" and math.isfinite(float(r["growth_cr"])) for r in rows)
+    assert not (tmp_path / "out" / "curve_growth_vs_voltage.csv").exists()
+
+
+def test_interrupted_scan(tmp_path):
+    err = _interrupt(
+        tmp_path,
+        signal.SIGINT,
+        *"critical --solve-for growth --outer-radius 1.4 --voltage 0.4".split(),
+    )
+    assert err == "electrogrowth: interrupted\n"
+
+
+def test_interrupted_sweep_keeps_its_chunks(tmp_path):
+    pytest.importorskip("zarr")
+    from test_sweep import TINY
+
+    from electrogrowth.sweep.store import open_results
+
+    (tmp_path / "s.toml").write_text(TINY)
+    marks = tmp_path / "s.zarr" / "run" / "c"  # the completion marks of the chunks
+    err = _interrupt(
+        tmp_path,
+        signal.SIGINT,
+        *"sweep s.toml --workers 1 --quiet".split(),
+        ready=lambda: marks.exists() and any(p.is_file() for p in marks.rglob("*")),
+    )
+    assert "interrupted; the finished chunks are saved in s.zarr" in err
+    done = int((open_results(tmp_path / "s.zarr")["run"] > 0).sum())
+    assert 1 <= done < 9
+
+
+# -- the same, in-process: a wrapped interrupt is no failed point, a bug no ordinary failure --
+
+
+def test_a_wrapped_interrupt_is_recognised():
+    assert isinstance(interrupt_of(_wrapped_interrupt()), Interrupted)
+    assert interrupt_of(SystemError("another")) is None
+    assert interrupt_of(ValueError("x")) is None
+    stop = interrupt_of(Interrupted(signal.SIGTERM))
+    assert (str(stop), stop.exit_status) == ("terminated by signal 15", 143)
+
+
+def _scan_raising(exc):
+    def scan(*args, **kwargs):
+        raise exc
+
+    return scan
+
+
+def test_a_curve_point_lets_an_interrupt_through_and_records_a_bug(monkeypatch):
+    params = TubeParameters(1.4)
+    monkeypatch.setattr(curves, "scan_modes", _scan_raising(_wrapped_interrupt()))
+    with pytest.raises(Interrupted):
+        curves.curve_point(params, "growth", "voltage", 0.1)
+    monkeypatch.setattr(curves, "scan_modes", _scan_raising(ZeroDivisionError("oops")))
+    pt = curves.curve_point(params, "growth", "voltage", 0.1)
+    assert pt.kind == Status.ERROR and pt.status.startswith("internal error: ZeroDivisionError")
+
+
+def test_an_interrupted_curve_hands_back_its_points(monkeypatch):
+    calls = []
+
+    def scan(params, *args, **kwargs):
+        if calls:
+            raise _wrapped_interrupt()
+        calls.append(params)
+        return real(params, *args, **kwargs)
+
+    real = curves.scan_modes
+    monkeypatch.setattr(curves, "scan_modes", scan)
+    with pytest.raises(Interrupted) as stop:
+        curves.critical_curve(
+            TubeParameters(1.4), "growth", "voltage", [0.0, 0.1, 0.2], follow=False
+        )
+    assert stop.value.partial.x.tolist() == [0.0]
+    assert stop.value.partial.kind.tolist() == ["bifurcation"]
+
+
+def test_a_sweep_point_lets_an_interrupt_through(monkeypatch):
+    monkeypatch.setattr(unit, "scan_modes", _scan_raising(_wrapped_interrupt()))
+    with pytest.raises(Interrupted):
+        unit.compute_point(TubeParameters(1.4), unit.ScanSpec("growth"))
+    monkeypatch.setattr(unit, "scan_modes", _scan_raising(ZeroDivisionError("oops")))
+    assert unit.compute_point(TubeParameters(1.4), unit.ScanSpec("growth")).status == Status.ERROR
+
+
+def test_main_reports_a_wrapped_interrupt_in_one_line(monkeypatch, capsys):
+    def run(args):
+        raise _wrapped_interrupt()
+
+    monkeypatch.setitem(cli.COMMANDS, "state", ("state", lambda parser: None, run))
+    assert cli.main(["state"]) == 130
+    assert capsys.readouterr().err == "electrogrowth: interrupted\n"
+
+
+def test_sigterm_raises_an_interrupt_and_the_handlers_come_back():
+    before = signal.getsignal(signal.SIGTERM)
+    with pytest.raises(Interrupted) as stop, signals_as_interrupts():
+        os.kill(os.getpid(), signal.SIGTERM)
+        time.sleep(5)  # the handler runs at once
+    assert stop.value.signum == signal.SIGTERM
+    assert signal.getsignal(signal.SIGTERM) is before

@@ -1,0 +1,63 @@
+"""Output files: --out naming an existing file is one clear error (was FileExistsError), two
+commands writing the same CSV leave a whole file, and an interrupted write leaves the
+previous file as it was."""
+
+import threading
+
+import numpy as np
+import pytest
+
+from electrogrowth import TubeParameters
+from electrogrowth.atomic import replaced
+from electrogrowth.bifurcation.curves import _curve
+from electrogrowth.cli import app as cli
+from electrogrowth.outcomes import NO_MODE, Kind
+
+
+@pytest.mark.parametrize("under", ["", "/sub"])
+def test_out_naming_a_file_is_one_clear_error(tmp_path, capsys, under):
+    tube = tmp_path / "tube.toml"
+    tube.write_text("length = 1.0\n")
+    assert cli.main(["reproduce", "--quick", "--out", f"{tube}{under}"]) == 2
+    err = capsys.readouterr().err
+    assert err == (
+        f"electrogrowth: error: {tube} is an existing file, not a directory: give --out a"
+        " directory (new or existing), not a file\n"
+    )
+    assert tube.read_text() == "length = 1.0\n"
+
+
+def _a_curve(rows: int, value: float):
+    row = (0.0, value, NO_MODE, Kind.THRESHOLD, "", False, np.nan)
+    rows = [(float(i), *row[1:]) for i in range(rows)]
+    return _curve("voltage", "growth", None, TubeParameters(1.4), rows, [])
+
+
+def test_two_writers_of_one_csv_leave_a_whole_file(tmp_path):
+    path = tmp_path / "out" / "curve.csv"
+    curves = [_a_curve(2000, 1.5), _a_curve(3000, 2.5)]
+    whole = []
+    for i, curve in enumerate(curves):
+        whole.append(curve.to_csv(tmp_path / f"ref{i}.csv").read_text())
+
+    def write(curve):
+        for _ in range(20):
+            curve.to_csv(path)
+
+    threads = [threading.Thread(target=write, args=(c,)) for c in curves]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert path.read_text() in whole
+    assert [p.name for p in path.parent.iterdir()] == ["curve.csv"]  # no temporary left
+
+
+def test_an_interrupted_write_keeps_the_previous_file(tmp_path):
+    path = tmp_path / "curve.csv"
+    path.write_text("the finished curve\n")
+    with pytest.raises(KeyboardInterrupt), replaced(path) as fh:
+        fh.write("half a ")
+        raise KeyboardInterrupt
+    assert path.read_text() == "the finished curve\n"
+    assert [p.name for p in tmp_path.iterdir()] == ["curve.csv"]
