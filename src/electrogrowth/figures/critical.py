@@ -39,6 +39,7 @@ KIND_CODES = {
     Status.FAILED: 3,
     Kind.SURFACE: 4,
     Kind.END: 5,
+    Status.ERROR: 6,  # an internal error at that point (a bug), never an ordinary failure
 }
 #: Mode ranges of every scan (extended automatically when the optimum is on an edge). The
 #: full figures use the scan's defaults: near the voltage threshold the critical value
