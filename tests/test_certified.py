@@ -9,6 +9,7 @@ is the rule, with the true root computed without the fault.
 
 import dataclasses
 import json
+from pathlib import Path
 
 import pytest
 
@@ -140,3 +141,26 @@ def test_soft_substrate_scan_is_not_killed_by_an_estimate():
     res = scan_modes(tube, "growth[1].theta", options=ScanOptions(top=2))
     assert res.critical.value > 1.0
     assert res.critical.status in (Status.OK, Status.INACCURATE)
+
+
+def test_cli_layered_tube_line_shows_only_supported_digits(monkeypatch, capsys):
+    """The solved growth also appears in the tube's line (it printed all 17 digits)."""
+    import electrogrowth.cli.critical as cli
+    from electrogrowth.bifurcation.critical import CriticalPoint
+    from electrogrowth.outcomes import Kind
+
+    value = 2.0404425746823858
+
+    def fake(params, m, n, solve_for, **kwargs):
+        at = params.at(solve_for, value)
+        return CriticalPoint(
+            solve_for, value, m, n, Kind.BIFURCATION, 3e-4, "impedance", None, at,
+            status=Status.INACCURATE,
+        )  # fmt: skip
+
+    monkeypatch.setattr(cli, "critical_value", fake)
+    bilayer = str(Path(__file__).resolve().parents[1] / "examples" / "bilayer.toml")
+    argv = ["critical", "--tube", bilayer, "--solve-for", "growth"]
+    assert main(argv + ["--layer", "1", "--component", "theta", "--mode", "12", "1"]) == 3
+    out = capsys.readouterr().out
+    assert "2.040442" not in out and "g [1, 2.0404, 1]" in out

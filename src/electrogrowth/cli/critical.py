@@ -212,7 +212,8 @@ def tube_line(rec: dict, scales=None) -> str:
             f" {volts}, {rec['material']}"
         )
     layers = "; ".join(
-        f"R <= {ly['outer_radius']:g} {ly['material']} mu {ly['shear_modulus']:g} g {ly['growth']}"
+        f"R <= {ly['outer_radius']:g} {ly['material']} mu {ly['shear_modulus']:g}"
+        f" g {_growth_text(ly['growth'], rec)}"
         for ly in rec["layers"]
     )
     axial = (
@@ -224,6 +225,22 @@ def tube_line(rec: dict, scales=None) -> str:
         f"  tube: {len(rec['layers'])} layer(s) [{layers}], L = {rec['length']:g}, {axial},"
         f" Vbar = {rec['voltage']:.12g}, P_i = {rec['inner_pressure']:.12g},"
         f" P_o = {rec['outer_pressure']:.12g}"
+    )
+
+
+def _growth_text(growth, rec: dict) -> str:
+    """A layer's growth triple, the component solved for with the digits its estimate
+    supports (graded growth as recorded)."""
+    if not isinstance(growth, list):
+        return str(growth)
+    solved = rec["solve_for"].startswith("growth") and rec["kind"] == Kind.BIFURCATION
+    return (
+        "["
+        + ", ".join(
+            supported(g, rec["error_estimate"]) if solved and g == rec["value"] else f"{g:.12g}"
+            for g in growth
+        )
+        + "]"
     )
 
 
