@@ -28,6 +28,7 @@ class Status(enum.StrEnum):
     """Whether the computation at one point (of a curve or a sweep) succeeded."""
 
     OK = "ok"
+    INACCURATE = "inaccurate"  # computed, but its error estimate exceeds the accuracy asked
     FAILED = "failed"  # an electrogrowth error: no base state, no convergence, ...
     ERROR = "error"  # an unexpected exception: a bug
 

@@ -13,6 +13,13 @@ mode: along any path of parameters f keeps that sign until the first bifurcation
 A critical value is found by marching the control parameter from the stable start
 (march.py), then converging with Brent's method. If the axisymmetric base state ceases to
 exist first (the voltage threshold), that is reported instead.
+
+Every value carries an error estimate, the distance to the root of the same target at 100
+times looser accuracy (searched only inside the march's path: a probe never leaves the
+control's domain). A value whose estimate exceeds CERTIFIED rtol max(1, |value|) (the
+looser root more than 100 times its own tolerance away) is solved again at rtol / 100
+(down to the smallest rtol), and if it still misses it is returned with the status
+INACCURATE (outcomes.Status), never silently.
 """
 
 from __future__ import annotations
@@ -22,7 +29,7 @@ import math
 
 from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError, NoBifurcationFound
-from ..incremental.accuracy import STABLE_SIGN, Accuracy
+from ..incremental.accuracy import RTOL_RANGE, STABLE_SIGN, Accuracy
 from ..incremental.targets import (
     Family,
     check_mode,
@@ -32,9 +39,14 @@ from ..incremental.targets import (
 )
 from ..model.layers import Tube
 from ..model.params import TubeParameters, check_control, check_side
-from ..outcomes import Kind
+from ..outcomes import Kind, Status
 from ..summary import critical_html
-from .march import brent, first_bifurcations
+from .march import brent, control_path, first_bifurcations
+
+#: a value is certified when its error estimate is at most CERTIFIED rtol max(1, |value|)
+CERTIFIED = 1e4
+#: an uncertified value is solved again at rtol / REFINE, down to the smallest rtol
+REFINE = 100.0
 
 
 @dataclasses.dataclass(frozen=True)
@@ -46,7 +58,9 @@ class CriticalPoint:
     state is lost first, at ``value``) or, from a scan, SURFACE: the short-wave limit
     m, k -> infinity at ``face`` ("inner" or "outer") with the wave direction ``psi``
     (radians; tan psi = k r / m: 0 wrinkles along theta, pi/2 along z). (m, n) is
-    NO_MODE unless the kind is BIFURCATION; ``as_dict`` gives null there.
+    NO_MODE unless the kind is BIFURCATION; ``as_dict`` gives null there. ``status`` is
+    OK, or INACCURATE when the error estimate exceeds the accuracy asked even after
+    refinement (module docstring): the value then has only the digits the estimate supports.
     """
 
     solve_for: str
@@ -61,6 +75,7 @@ class CriticalPoint:
     face: str | None = None
     psi: float | None = None
     family: str | None = None
+    status: Status = Status.OK
 
     def __post_init__(self):
         if self.family is None and self.kind == Kind.BIFURCATION:
@@ -80,6 +95,7 @@ class CriticalPoint:
             "error_estimate": self.error_estimate,
             "method": self.method,
             "side": self.side,
+            "status": str(self.status),
             **self.params.as_dict(),
         }
 
@@ -122,7 +138,9 @@ def critical_value(
     method : {"impedance", "collocation"}
         The compiled Riccati kernel or the independent spectral collocation.
     rtol : float
-        Local accuracy of the integration; the value is converged to ~10 rtol.
+        Local accuracy of the integration; the value is converged to ~10 rtol. A value whose
+        error estimate exceeds CERTIFIED rtol max(1, |value|) is solved again at rtol / 100,
+        and returned with status INACCURATE if it still does.
     bracket : (float, float), optional
         A known sign-change interval (e.g. from a mode scan); the march is skipped when
         the target does change sign on it.
@@ -130,7 +148,8 @@ def critical_value(
     Returns
     -------
     CriticalPoint
-        With an error estimate from a second solve at 100 times looser accuracy.
+        With an error estimate from a second solve at 100 times looser accuracy, and a
+        status (OK or INACCURATE).
 
     Raises
     ------
@@ -139,6 +158,25 @@ def critical_value(
     fam = check_mode(m, n, family)
     solve_for = control_name(params, solve_for)
     side = check_side(solve_for, side)
+    point = _solve(params, m, n, solve_for, fam, side, method, rtol, bracket)
+    tight = rtol
+    while not _certified(point, rtol) and tight / REFINE >= RTOL_RANGE[0] * (1 - 1e-9):
+        tight /= REFINE
+        point = _solve(params, m, n, solve_for, fam, side, method, tight, bracket)
+    if _certified(point, rtol):
+        return point
+    return dataclasses.replace(point, status=Status.INACCURATE)
+
+
+def _certified(point: CriticalPoint, rtol: float) -> bool:
+    """Is the error estimate of ``point`` within CERTIFIED rtol max(1, |value|)?"""
+    if point.kind != Kind.BIFURCATION:
+        return True
+    return point.error_estimate <= CERTIFIED * rtol * max(1.0, abs(point.value))
+
+
+def _solve(params, m, n, solve_for, fam, side, method, rtol, bracket) -> CriticalPoint:
+    """One solve of :func:`critical_value` at ``rtol`` (checked arguments)."""
     mode = with_family(m, n, fam)
     acc = Accuracy(rtol)
     fine, coarse = targets_for(method, acc.fine), targets_for(method, acc.coarse)
@@ -184,7 +222,7 @@ def critical_value(
         int(m),
         int(n),
         Kind.BIFURCATION,
-        _second_resolution(signed(coarse), value),
+        _second_resolution(signed(coarse), value, control_path(params, solve_for, side)[:2]),
         method,
         side,
         params.at(solve_for, value),
@@ -228,12 +266,19 @@ def stable_sign(
     return math.copysign(1.0, f)
 
 
-def _second_resolution(g_coarse, value: float) -> float:
-    """|root of the 100x looser target - value|: the error estimate of the value."""
+def _second_resolution(g_coarse, value: float, path: tuple[float, float]) -> float:
+    """|root of the 100x looser target - value|: the error estimate of the value.
+
+    The root is searched in widening windows around the value, clipped to the march's
+    ``path`` (start, end): the probes stay in the control's domain (a window of +-4.2 put
+    a growth at -0.16), and a root before the start is not this one. Without a root in the
+    widest window the estimate is that window's half-width (the looser root is at least
+    that far): an uncertified value, not a failure."""
+    lo_b, hi_b = min(path), max(path)
     w = 1e-6 * max(1.0, abs(value))
     for _ in range(12):
-        lo, hi = value - w, value + w
-        if g_coarse(lo) * g_coarse(hi) < 0:
+        lo, hi = max(value - w, lo_b), min(value + w, hi_b)
+        if lo < hi and g_coarse(lo) * g_coarse(hi) < 0:
             return abs(brent(g_coarse, lo, hi) - value)
         w *= 4
-    raise ConvergenceError(f"no root of the coarse target near {value}")
+    return w / 4

@@ -9,14 +9,14 @@ import math
 import numpy as np
 
 from ..basestate.tube import solve_base_state
-from ..bifurcation.critical import critical_value
+from ..bifurcation.critical import CERTIFIED, critical_value
 from ..bifurcation.scan import scan_grid, scan_modes
 from ..errors import ConvergenceError, ParameterError
 from ..incremental.accuracy import check_rtol
 from ..incremental.targets import collocation_targets
 from ..model.controls import parse_control
 from ..model.params import CONTROLS, TubeParameters
-from ..outcomes import Kind
+from ..outcomes import Kind, Status
 from .options import (
     MODE_COVERAGE,
     add_control_options,
@@ -32,6 +32,7 @@ from .report import edge_warning, physical_line, physical_record, supported, vol
 from .tube_input import add_any_tube_options, control_of
 
 CERTIFY_RTOL = 1e-8  # the two methods must agree this well for a certified value
+INACCURATE_EXIT = 3  # the exit status of a value not certified to --rtol
 
 
 def configure_critical(parser: argparse.ArgumentParser) -> None:
@@ -56,6 +57,14 @@ def configure_critical(parser: argparse.ArgumentParser) -> None:
     )
     num.add_argument(
         "--rtol", type=float, default=1e-12, help="local integration tolerance (default 1e-12)"
+    )
+    num.add_argument(
+        "--accept-inaccurate",
+        action="store_true",
+        help="exit 0 even when the critical value is not certified to --rtol (its error"
+        f" estimate exceeds {CERTIFIED:g} rtol |value| after a solve at rtol / 100); without"
+        " it such a value is printed with the digits its estimate supports, a warning on"
+        f" stderr, and exit status {INACCURATE_EXIT}",
     )
     parser.add_argument(
         "--json",
@@ -113,9 +122,22 @@ def run_critical(args) -> int:
         record["physical"] = physical_record(record, args.scales, errors)
     if args.json:
         print(json.dumps(record))
+    else:
+        _print_text(record, runners, getattr(args, "scales", None))
+    return _inaccurate_exit(crit, args)
+
+
+def _inaccurate_exit(crit, args) -> int:
+    """0, or INACCURATE_EXIT with a warning for a value not certified to --rtol (unless
+    --accept-inaccurate)."""
+    if crit.status != Status.INACCURATE:
         return 0
-    _print_text(record, runners, getattr(args, "scales", None))
-    return 0
+    warn(
+        f"{crit.solve_for} = {crit.value:.6g} is not certified to rtol = {args.rtol:g}: its"
+        f" error estimate {crit.error_estimate:.1e} remained above {CERTIFIED:g} rtol |value|"
+        " at rtol / 100 (only the digits it supports are printed)"
+    )
+    return 0 if args.accept_inaccurate else INACCURATE_EXIT
 
 
 def _certify(params, crit, args) -> dict:
@@ -210,7 +232,8 @@ def tube_line(rec: dict, scales=None) -> str:
             f" {volts}, {rec['material']}"
         )
     layers = "; ".join(
-        f"R <= {ly['outer_radius']:g} {ly['material']} mu {ly['shear_modulus']:g} g {ly['growth']}"
+        f"R <= {ly['outer_radius']:g} {ly['material']} mu {ly['shear_modulus']:g}"
+        f" g {_growth_text(ly['growth'], rec)}"
         for ly in rec["layers"]
     )
     axial = (
@@ -222,6 +245,22 @@ def tube_line(rec: dict, scales=None) -> str:
         f"  tube: {len(rec['layers'])} layer(s) [{layers}], L = {rec['length']:g}, {axial},"
         f" Vbar = {rec['voltage']:.12g}, P_i = {rec['inner_pressure']:.12g},"
         f" P_o = {rec['outer_pressure']:.12g}"
+    )
+
+
+def _growth_text(growth, rec: dict) -> str:
+    """A layer's growth triple, the component solved for with the digits its estimate
+    supports (graded growth as recorded)."""
+    if not isinstance(growth, list):
+        return str(growth)
+    solved = rec["solve_for"].startswith("growth") and rec["kind"] == Kind.BIFURCATION
+    return (
+        "["
+        + ", ".join(
+            supported(g, rec["error_estimate"]) if solved and g == rec["value"] else f"{g:.12g}"
+            for g in growth
+        )
+        + "]"
     )
 
 
