@@ -236,7 +236,9 @@ class LayeredState:
                     axis=-1,
                 )
 
-            coef = chebyshev(f, ply.a, ply.b, 0.01 * rtol, "base-state profile")
+            mu, eps = ply.layer.shear_modulus, ply.layer.permittivity
+            unit = np.array([mu, mu, math.sqrt(mu / eps), mu])  # stress, field: the layer's
+            coef = chebyshev(f, ply.a, ply.b, 0.01 * rtol, "base-state profile", unit)
             antider = cheb.Chebyshev(coef[:, 0], domain=[ply.a, ply.b]).integ(lbnd=ply.a)
             weights = np.zeros(coef.shape[0])  # int_a^b T_k = (b - a) / (1 - k^2), k even
             weights[::2] = (ply.b - ply.a) / (1.0 - np.arange(0, coef.shape[0], 2) ** 2)

@@ -56,17 +56,24 @@ def numeric_energy(material: Material):
     return sp.lambdify(INVARIANTS, material.energy, "numpy")
 
 
-def chebyshev(f, a: float, b: float, tol: float, what: str) -> np.ndarray:
+def chebyshev(f, a: float, b: float, tol: float, what: str, unit=1.0) -> np.ndarray:
     """Chebyshev coefficients of the vectorised f (values on the last axis) on [a, b], degree
-    doubled until the last three are below tol of the largest (or of 1), or have stopped
-    falling (the noise floor of f, e.g. next to a locking stretch) below 1e-8 of it."""
+    doubled until, in every column, the last three are below tol of its size, or have stopped
+    falling (the noise floor of f, e.g. next to a locking stretch) below 1e-8 of it.
+
+    A column's size is the larger of its largest coefficient and ``unit`` (per column), the
+    scale of the quantity it holds: a column that cancels to rounding (tau_2 - tau_1 of a
+    stress-free layer is mu_k times rounding) is measured against its units, never against
+    its own noise nor against a constant that is rounding-small for a stiff layer."""
     last = None
     for deg in (16, 32, 64, 128, 256, 512):
         coef = cheb.chebinterpolate(lambda x: f(a + 0.5 * (b - a) * (x + 1.0)), deg)
-        size = np.maximum(abs(coef).max(0), 1.0)
+        size = np.maximum(abs(coef).max(0), unit)
         tail = abs(coef[-3:]).max(0) / size
         if np.all(tail <= tol) or (
-            last is not None and np.all(tail <= 1e-8) and np.all(tail > 0.1 * last)
+            last is not None
+            and np.all(tail <= 1e-8)
+            and np.all((tail <= tol) | (tail > 0.1 * last))  # each column resolved or at noise
         ):
             return coef
         last = tail

@@ -77,6 +77,13 @@ REMNANT_MAX, BURN_NATS, MAX_CHECKS = 0.1, 5.0, 3
 #: nothing)
 PLAN_STEPS = 30.0
 
+#: an accepted step may not end with an entry of z~ above LEAP: such a step went through (or
+#: next to) a pole of its chart, where the error estimate, relative to |z~|, accepts anything
+#: (entries of 1e279 were accepted when a soft layer follows a stiff one) and the chart and
+#: orientation read off it at the next switch are arbitrary (a flipped target: issue 21).
+#: Rejected, the step shrinks until it ends below LEAP and the chart switches cleanly.
+LEAP = 16.0 * SWITCH
+
 #: status codes written by the kernel
 OK, MAX_STEPS, STEP_UNDERFLOW, NO_CHART = 0, 1, 2, 3
 STATUS_TEXT = {
@@ -357,7 +364,8 @@ def integrate_one(m, k, keep, table, rtol, max_steps, forget=True):
     or the follower pressure's z_P), is carried unchanged across every interface (u, the
     traction, Phi and r Delta_r are continuous, so eta is) and ends with the outer face
     condition. Adaptive steps with the local error of every entry of z~ below
-    rtol (1 + |z~|), and a change of chart whenever an entry of z~ exceeds SWITCH.
+    rtol (1 + |z~|), and a change of chart whenever an entry of z~ exceeds SWITCH (a step
+    ending above LEAP is rejected: it jumped a pole of the chart).
     With ``forget`` (default) and rtol >= FORGET_RTOL, a stiff short wave restarts the
     outer segment near the outer face from the dominant subspace once the carried one
     lies in it (:func:`_forget_plan`, :func:`_forget_check`); False integrates every wall.
@@ -421,6 +429,8 @@ def integrate_one(m, k, keep, table, rtol, max_steps, forget=True):
             _step(R, h, z, m, k, table, seg, work, K, ztmp, znew)
             err = _error(h, z, znew, K, rtol)
             steps += 1
+            if err <= 1.0 and not np.max(np.abs(znew)) <= LEAP:
+                err = 1e6  # past a pole of the chart: shrink the step (LEAP)
             if err <= 1.0:
                 R = end if last else R + h
                 for i in range(4):

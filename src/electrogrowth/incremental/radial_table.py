@@ -15,6 +15,15 @@ r dr = (J / lambda_z) R dR (J = det F_g; docs/derivation-layered.md (K)),
 
     w(R) = J(R) R / (lambda_z r(R)^2).
 
+The moduli, p and the face pressures are tabulated in units of a reference modulus mu_ref and
+permittivity eps_ref of the tube's own (:func:`table_units`: 1 whenever the layers' values
+straddle 1, else the nearest of them): A and p over mu_ref, Gamma over sqrt(mu_ref / eps_ref),
+K times eps_ref. That is a positive diagonal rescaling of the Stroh vector (S by mu_ref, the
+electric pair by sqrt(mu_ref eps_ref)), which keeps the sign of the kernel's target and its
+zeros, and makes a one-layer tube of modulus mu_k the same table as one of modulus 1: its
+error control (relative to 1 + |z~|) would otherwise be absolute for a soft tube and read
+mixed scales for a stiff one (issue 21).
+
 A table is one record (:class:`RadialTable`, with the follower pressures on the two faces,
 which enter the face conditions), and the tables of a batch of base states are one padded
 record (:class:`TableStack`); both are named tuples of arrays, which the compiled kernel
@@ -23,6 +32,7 @@ takes as they are.
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 import numpy as np
@@ -53,7 +63,7 @@ class RadialTable(NamedTuple):
     bounds : (L + 1,) array
         The reference radii of the faces and interfaces, 1 = R_0 < R_1 < ... < R_L.
     face_pressure : (2,) array
-        Follower pressures (P_i, P_o) on the inner and outer face (units mu).
+        Follower pressures (P_i, P_o) on the inner and outer face (units mu_ref).
     """
 
     coef: np.ndarray
@@ -89,18 +99,38 @@ def _cheb_coefficients(values: np.ndarray) -> np.ndarray:
     return c
 
 
+def table_units(state) -> tuple[float, float]:
+    """(mu_ref, eps_ref) of the table of ``state``: 1 where the layers' shear moduli
+    (permittivities) straddle 1, else the one nearest to 1 (one layer: its own)."""
+    if not hasattr(state, "tube"):
+        return 1.0, 1.0
+    layers = state.tube.layers
+    mu = [layer.shear_modulus for layer in layers]
+    eps = [layer.permittivity for layer in layers]
+    return float(np.clip(1.0, min(mu), max(mu))), float(np.clip(1.0, min(eps), max(eps)))
+
+
+def _column_units(state) -> np.ndarray:
+    """The divisor of each of the 26 columns (moduli by family, p, r, w): see the module
+    docstring."""
+    mu, eps = table_units(state)
+    family = {"A": mu, "G": math.sqrt(mu / eps), "K": 1.0 / eps}
+    return np.array([family[name[0]] for name in MODULI_NAMES] + [mu, 1.0, 1.0])
+
+
 def _segments(state):
     """[(a, b, values)] per segment: values(R) is the (n, 26) array of the 23 moduli, p,
-    r and w at the reference radii R (strictly inside [a, b])."""
+    r and w at the reference radii R (strictly inside [a, b]), in the table's units."""
     if hasattr(state, "tube"):  # a LayeredState
         tube = state.tube
         radii = tube.radii
+        units = _column_units(state)
 
         def values(R, layer):
             r = state.radius(R)
             J = np.prod(layer.growth_at(R), axis=0)
             w = J * R / (state.stretch * r * r)
-            return np.column_stack([state.moduli(R), state.pressure(R), r, w])
+            return np.column_stack([state.moduli(R), state.pressure(R), r, w]) / units
 
         return [
             (a, b, lambda R, layer=layer: values(R, layer))
@@ -177,7 +207,7 @@ def build_table(state, *, tol: float = 1e-15, max_nodes: int = 129) -> RadialTab
         np.array([c.shape[0] for c, _ in parts], dtype=np.int64),
         np.stack([fm for _, fm in parts]),
         np.array(bounds, dtype=float),
-        np.array(state.face_pressures, dtype=float),
+        np.array(state.face_pressures, dtype=float) / table_units(state)[0],
     )
 
 
