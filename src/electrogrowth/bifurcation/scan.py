@@ -31,7 +31,7 @@ import numpy as np
 
 from ..errors import NoBifurcationFound, ParameterError
 from ..incremental.accuracy import SCAN_SIGNS, SCAN_STABLE_SIGNS, Accuracy
-from ..incremental.targets import Family, impedance_targets
+from ..incremental.targets import MODE_MAX, Family, impedance_targets
 from ..labelled import scan_dataset
 from ..model.params import TubeParameters, check_side
 from ..outcomes import NO_MODE, Kind
@@ -39,11 +39,17 @@ from ..summary import scan_html
 from .critical import CriticalPoint, control_name, critical_value
 from .directions import past_surface
 from .march import ModeValue, first_bifurcations, unloaded_signs
+from .msearch import search_m
 from .surface import short_wave_limit
 
-M_CAP, N_CAP = 64, 320
-# widen a range at most this often; an optimum still on its edge is a short-wavelength
-# (surface) instability, extrapolated instead of scanned
+#: The largest m and n of a scan: those of a mode (incremental.targets.MODE_MAX, set by
+#: the kernel's step budget); shorter waves tend to the exact short-wave limit.
+M_CAP = N_CAP = MODE_MAX
+#: Every m is scanned up to EVERY_M (the modes of small m are irregular); beyond it the
+#: best m of an edge optimum's family row is searched coarse-to-fine (msearch.py).
+EVERY_M = 64
+# widen a range mode by mode at most this often (m up to EVERY_M, n up to N_CAP); an m
+# optimum still on its edge is then searched for up to M_CAP (msearch.py)
 DOUBLINGS = 2
 
 
@@ -69,7 +75,7 @@ def _check_range(name, rng, lowest, highest):
     if not whole or int(lo) != lo or int(hi) != hi or lo < lowest or hi < lo or hi > highest:
         raise ParameterError(
             f"{name} range {list(rng)} is invalid; need integers "
-            f"{lowest} <= {name}_min <= {name}_max <= {highest} (shorter waves are the"
+            f"{lowest} <= {name}_min <= {name}_max <= {highest} (shorter waves tend to the"
             " exact short-wave limit, which every scan computes)"
         )
 
@@ -231,7 +237,10 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
 
     Widening only looks for a finite optimum beyond the ranges, so it stops (as at the
     cap) once the exact short-wave limit comes before the best finite mode found: shorter
-    waves tend to that limit, which then is the result (the m = 64 scan is not needed)."""
+    waves tend to that limit, which then is the result (the wider scan is not needed).
+    Every m is scanned up to EVERY_M; an optimum on the m edge beyond that (or a probe
+    beyond it) is followed by the coarse-to-fine search of its family row up to M_CAP
+    (:func:`_searched`), which brackets the best m or ends at the cap."""
     m_range, n_range, top, extend = options.m_range, options.n_range, options.top, options.extend
     grown = {"m": 0, "n": 0}
     probes = extend
@@ -243,6 +252,9 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
             return False
         limit = limit or short_wave_limit(params, solve_for, side=side, rtol=rtol)
         return limit.kind == Kind.SURFACE and (limit.value - c.value) * sense < 0
+
+    def search(result):
+        return _searched(params, solve_for, side, result, options, rtol)
 
     while True:
         result = _scan_once(
@@ -260,6 +272,8 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
         if probes and c.kind == Kind.BIFURCATION and (c.m > m_range[1] or c.n > n_range[1]):
             if limit_first(c):
                 return result, True, limit
+            if c.m > max(m_range[1], EVERY_M):  # a probe beyond the every-m scan wins
+                return (*search(result), limit)
             # a probe beyond the range wins: the optimum is a short wave, widen to it once
             grown = {"m": int(c.m > m_range[1]), "n": int(c.n > n_range[1])}
             m_range = (m_range[0], max(m_range[1], c.m))
@@ -272,19 +286,53 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
             "n": c.kind == Kind.BIFURCATION and c.n == n_range[1],
         }
         grow = {
-            "m": edge["m"] and m_range[1] < M_CAP and grown["m"] < DOUBLINGS,
+            "m": edge["m"] and m_range[1] < EVERY_M and grown["m"] < DOUBLINGS,
             "n": edge["n"] and n_range[1] < N_CAP and grown["n"] < DOUBLINGS,
         }
-        if not extend or not any(grow.values()):
+        beyond = extend and edge["m"] and not grow["m"] and m_range[1] < M_CAP
+        if not extend or not (any(grow.values()) or beyond):
             break
         if limit_first(c):
             return result, True, limit
+        if not any(grow.values()):  # only m is on its edge, past the every-m scan
+            return (*search(result), limit)
         if grow["m"]:
-            m_range, grown["m"] = (m_range[0], min(2 * m_range[1] + 1, M_CAP)), grown["m"] + 1
+            m_range, grown["m"] = (m_range[0], min(2 * m_range[1] + 1, EVERY_M)), grown["m"] + 1
         if grow["n"]:
             n_range, grown["n"] = (n_range[0], min(2 * n_range[1], N_CAP)), grown["n"] + 1
     at_cap = extend and any(edge.values()) and not (c.m == 0 and not edge["n"])
     return result, at_cap, limit
+
+
+def _searched(params, solve_for, side, result: ScanResult, options: ScanOptions, rtol):
+    """``result`` with its critical mode replaced by the best m of the search (msearch.py)
+    from the scanned edge up to M_CAP, along the critical mode's family row and the
+    prismatic row; and whether the best m is at the cap."""
+    c = result.critical
+    rows = {(c.n, Family(c.family).code)}
+    if options.prismatic:
+        rows.add((0, Family.PRISMATIC.code))
+    m_edge = min(result.m_range[1], c.m)
+    found = search_m(params, solve_for, side, sorted(rows), m_edge, M_CAP, rtol)
+    best = found.best
+    w = 1e-7 * abs(best.value)
+    crit = critical_value(
+        params,
+        best.m,
+        best.n,
+        solve_for,
+        family=best.family,
+        side=side,
+        rtol=rtol,
+        bracket=(best.value - w, best.value + w),
+    )
+    others = {(v.m, v.n, v.family): v for v in (*result.runners_up, *found.found)}
+    others[(c.m, c.n, c.family)] = ModeValue(c.m, c.n, c.value, c.family)
+    others.pop((best.m, best.n, best.family), None)
+    sense = -1.0 if side == "compression" else 1.0
+    runners = sorted(others.values(), key=lambda v: sense * v.value)[: options.top - 1]
+    m_range = (result.m_range[0], M_CAP)
+    return ScanResult(crit, tuple(runners), m_range, result.n_range), found.at_cap
 
 
 def scan_grid(

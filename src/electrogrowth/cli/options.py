@@ -47,10 +47,14 @@ def bounded_int(lowest: int, highest: int, why: str = ""):
     return parse
 
 
-#: The largest m and n a scan may start from, and of one --mode: beyond them the waves are
-#: short enough for the exact short-wave (half-space) limit, which every scan computes.
+#: The largest m and n a scan may start from, and of one --mode (the kernel's step budget,
+#: incremental.targets.MODE_MAX); shorter waves tend to the exact short-wave (half-space)
+#: limit, which every scan computes.
 MODE_LIMITS = (M_CAP, N_CAP)
-SHORT_WAVES = "larger wavenumbers are covered by the exact short-wave limit"
+SHORT_WAVES = (
+    "the kernel's step budget; shorter waves tend to the exact short-wave limit,"
+    " which every scan computes"
+)
 
 
 # -- the tube --------------------------------------------------------------------------------
@@ -277,7 +281,7 @@ def add_mode_option(group) -> None:
     group.add_argument(
         "--mode",
         nargs=2,
-        type=bounded_int(0, MODE_LIMITS[1], SHORT_WAVES),
+        type=bounded_int(0, max(MODE_LIMITS), SHORT_WAVES),
         metavar=("M", "N"),
         help="one mode instead of a scan: circumferential wavenumber m >= 0"
         " (lobes around) and axial half-wavenumber n >= 0 (half-waves"
