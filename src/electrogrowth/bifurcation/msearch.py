@@ -84,7 +84,7 @@ def search_m(
         seen += got
         if _earlier(got[0], best, side):
             best = got[0]
-        lo, hi = _neighbours([lo, *inner, hi], best.m)
+        lo, hi = _neighbours([lo, *inner, best.m, hi], best.m)
         if complete:
             break
     key = {(v.m, v.n, v.family): v for v in seen}

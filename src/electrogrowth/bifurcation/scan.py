@@ -238,10 +238,13 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
     Widening only looks for a finite optimum beyond the ranges, so it stops (as at the
     cap) once the exact short-wave limit comes before the best finite mode found: shorter
     waves tend to that limit, which then is the result (the wider scan is not needed).
-    Every m is scanned up to EVERY_M; an optimum on the m edge beyond that (or a probe
-    beyond it) is followed by the coarse-to-fine search of its family row up to M_CAP
-    (:func:`_searched`), which brackets the best m or ends at the cap."""
-    m_range, n_range, top, extend = options.m_range, options.n_range, options.top, options.extend
+    Every m is scanned up to EVERY_M (or m_max, if smaller); m beyond it, of an m range
+    reaching past EVERY_M or of an optimum on the m edge there (or a probe beyond it), are
+    examined by the coarse-to-fine search along family rows (:func:`_searched`), which
+    brackets the best m or ends at m_max (M_CAP when extending)."""
+    n_range, top, extend = options.n_range, options.top, options.extend
+    m_lo, m_max = options.m_range
+    m_range = (m_lo, min(m_max, max(m_lo, EVERY_M)))  # scanned mode by mode
     grown = {"m": 0, "n": 0}
     probes = extend
     limit, sense = None, -1.0 if side == "compression" else 1.0
@@ -253,8 +256,8 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
         limit = limit or short_wave_limit(params, solve_for, side=side, rtol=rtol)
         return limit.kind == Kind.SURFACE and (limit.value - c.value) * sense < 0
 
-    def search(result):
-        return _searched(params, solve_for, side, result, options, rtol)
+    def search(result, m_top=M_CAP):
+        return _searched(params, solve_for, side, result, options, rtol, m_top)
 
     while True:
         result = _scan_once(
@@ -301,38 +304,51 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
         if grow["n"]:
             n_range, grown["n"] = (n_range[0], min(2 * n_range[1], N_CAP)), grown["n"] + 1
     at_cap = extend and any(edge.values()) and not (c.m == 0 and not edge["n"])
+    if m_max > m_range[1]:  # the m asked for beyond the mode-by-mode scan
+        result, m_cap = search(result, M_CAP if extend else m_max)
+        c = result.critical
+        at_cap = m_cap or (extend and c.kind == Kind.BIFURCATION and c.n == n_range[1])
     return result, at_cap, limit
 
 
-def _searched(params, solve_for, side, result: ScanResult, options: ScanOptions, rtol):
-    """``result`` with its critical mode replaced by the best m of the search (msearch.py)
-    from the scanned edge up to M_CAP, along the critical mode's family row and the
-    prismatic row; and whether the best m is at the cap."""
-    c = result.critical
-    rows = {(c.n, Family(c.family).code)}
+def _searched(params, solve_for, side, result: ScanResult, options: ScanOptions, rtol, m_top: int):
+    """``result`` merged with the coarse-to-fine search (msearch.py) of m from the scanned
+    edge up to ``m_top`` along the critical mode's family row, the prismatic row and the
+    wrinkles of the smallest n: the earlier of the two is the critical mode, the others
+    the runners-up; and whether the critical m is ``m_top`` (the edge of the search)."""
+    c, sense = result.critical, -1.0 if side == "compression" else 1.0
+    rows = {(max(options.n_range[0], 1), Family.WRINKLE.code)}
     if options.prismatic:
         rows.add((0, Family.PRISMATIC.code))
-    m_edge = min(result.m_range[1], c.m)
-    found = search_m(params, solve_for, side, sorted(rows), m_edge, M_CAP, rtol)
-    best = found.best
-    w = 1e-7 * abs(best.value)
-    crit = critical_value(
-        params,
-        best.m,
-        best.n,
-        solve_for,
-        family=best.family,
-        side=side,
-        rtol=rtol,
-        bracket=(best.value - w, best.value + w),
-    )
-    others = {(v.m, v.n, v.family): v for v in (*result.runners_up, *found.found)}
-    others[(c.m, c.n, c.family)] = ModeValue(c.m, c.n, c.value, c.family)
-    others.pop((best.m, best.n, best.family), None)
-    sense = -1.0 if side == "compression" else 1.0
+    if c.kind == Kind.BIFURCATION:
+        rows.add((c.n, Family(c.family).code))
+    try:
+        found = search_m(params, solve_for, side, sorted(rows), result.m_range[1], m_top, rtol)
+    except NoBifurcationFound:  # no m beyond the scan bifurcates first: the scan stands
+        return dataclasses.replace(result, m_range=(result.m_range[0], m_top)), False
+    best, others = found.best, {(v.m, v.n, v.family): v for v in found.found}
+    others.update({(v.m, v.n, v.family): v for v in result.runners_up})
+    if c.kind == Kind.BIFURCATION:
+        others[(c.m, c.n, c.family)] = ModeValue(c.m, c.n, c.value, c.family)
+    if c.kind == Kind.BIFURCATION and sense * c.value <= sense * best.value:
+        crit = c
+    else:
+        w = 1e-7 * abs(best.value)
+        crit = critical_value(
+            params,
+            best.m,
+            best.n,
+            solve_for,
+            family=best.family,
+            side=side,
+            rtol=rtol,
+            bracket=(best.value - w, best.value + w),
+        )
+    others.pop((crit.m, crit.n, crit.family), None)
     runners = sorted(others.values(), key=lambda v: sense * v.value)[: options.top - 1]
-    m_range = (result.m_range[0], M_CAP)
-    return ScanResult(crit, tuple(runners), m_range, result.n_range), found.at_cap
+    m_range = (result.m_range[0], m_top)
+    at_top = crit.kind == Kind.BIFURCATION and crit.m == m_top
+    return ScanResult(crit, tuple(runners), m_range, result.n_range), at_top
 
 
 def scan_grid(
