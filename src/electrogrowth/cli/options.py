@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import math
 
-from ..bifurcation.scan import M_CAP, N_CAP, ScanOptions
+from ..bifurcation.scan import EVERY_M, M_CAP, N_CAP, ScanOptions
 from ..errors import ParameterError
 from ..incremental.targets import FAMILIES, METHODS, Family, check_mode
 from ..model.controls import TUBE_CONTROLS
@@ -253,7 +253,9 @@ def add_mode_range_options(group, *, top: bool = False) -> None:
         help="largest circumferential wavenumber m of the scan, from 0"
         f" (default {default.m_range[1]}; widened automatically when the"
         " critical mode sits on the edge, and probed beyond for short"
-        " waves). The scan covers the wrinkles (m, n), n >= 1, the"
+        f" waves; every m is scanned up to {EVERY_M}, larger m up to {M_CAP} are"
+        " searched coarse-to-fine for the best m). The scan covers the"
+        " wrinkles (m, n), n >= 1, the"
         " prismatic modes (m, 0), m >= 2, and the torsional modes (0, n);"
         " the short-wave limit m, n -> infinity comes exactly from the"
         " half-space problem",
