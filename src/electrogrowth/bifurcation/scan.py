@@ -13,13 +13,16 @@ signs right; the modes that change sign in a step are narrowed together by bisec
 finished by Brent's method at full accuracy. Marching on yields the runner-up modes.
 
 When the best mode sits on the edge of the range the range is doubled in that direction
-(up to a cap). The infimum over all modes may be the short-wave limit m, k -> infinity, a
-surface instability of a face: it is computed exactly from the half-space problem
-(surface.py) when the best finite mode sits on the edge at the cap, when no finite mode
-bifurcates before the threshold (or at all), or when a face is already past its
-half-space instability at the best finite value. If it comes first, it is the result
-(kind SURFACE, with the face and the wave direction) and the best finite mode is the
-first runner-up.
+(every m up to EVERY_M = 64, n up to the cap). Beyond m = 64 (an optimum on that edge, a
+probe beyond it, or an m range asked for beyond it) the best m is searched coarse-to-
+fine along family rows up to M_CAP = 2000 (msearch.py, docs/derivation-film.md): a thin
+stiff film folds at a finite m of tens to hundreds, which the search brackets. The
+infimum over all modes may be the short-wave limit m, k -> infinity, a surface
+instability of a face: it is computed exactly from the half-space problem (surface.py)
+when the best finite mode sits on the edge at the cap, when no finite mode bifurcates
+before the threshold (or at all), or when a face is already past its half-space
+instability at the best finite value. If it comes first, it is the result (kind SURFACE,
+with the face and the wave direction) and the best finite mode is the first runner-up.
 """
 
 from __future__ import annotations
@@ -88,12 +91,14 @@ class ScanOptions:
     ----------
     m_range, n_range : (int, int)
         Inclusive starting ranges of the circumferential wavenumber m >= 0 and the axial
-        half-wavenumber n >= 1.
+        half-wavenumber n >= 1 (up to M_CAP, N_CAP = 2000; m beyond EVERY_M = 64 is
+        searched coarse-to-fine, not mode by mode).
     top : int
         Modes reported: the critical one and ``top - 1`` runners-up (top >= 1).
     extend : bool
         Probe short waves beyond the ranges and widen a range while the optimum sits on
-        its upper edge (at most DOUBLINGS times, up to M_CAP, N_CAP).
+        its upper edge (mode by mode at most DOUBLINGS times, m up to EVERY_M, n up to
+        N_CAP; then m by the coarse-to-fine search up to M_CAP).
     surface : bool
         Compare with the exact short-wave limit (m, k -> infinity) at both faces, which is
         the result when it comes first (see the module docstring).
