@@ -179,3 +179,31 @@ def test_flat_film_limit():
 def test_flat_film_limit_converges_like_h():
     errors = [flat_errors(h)[0] for h in (0.004, 0.002)]
     assert 1.8 < errors[0] / errors[1] < 2.2
+
+
+@pytest.mark.parametrize(
+    "h, options, m, value",
+    [
+        # an m range asked for beyond 64: mode by mode to 64, searched beyond (no widening)
+        (
+            0.002,
+            ScanOptions(m_range=(60, 2000), n_range=(1, 1), extend=False, torsional=False),
+            74,
+            1.0293683530,
+        ),
+        # the probe m = 129 wins over the edge m = 64: searched from 64 (search_m alone
+        # from 64 gives (146, 0) at 1.0171819372318)
+        pytest.param(
+            0.001,
+            ScanOptions(m_range=(60, 64), n_range=(1, 1), torsional=False),
+            146,
+            1.0171819372,
+            marks=pytest.mark.slow,
+        ),
+    ],
+)
+def test_scan_beyond_64_is_the_search(h, options, m, value):
+    s = scan_modes(film(h, 1e-3), THETA, options=options, rtol=RTOL)
+    assert (s.critical.m, s.critical.n, s.critical.family) == (m, 0, "prismatic")
+    assert s.m_range == (60, 2000) and edge_warning(s) == ""
+    assert s.critical.value == pytest.approx(value, abs=2e-9)
