@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 from electrogrowth import Layer, ScanOptions, Tube, critical_value, scan_modes, solve_base_state
+from electrogrowth.bifurcation.march import ModeValue
 from electrogrowth.bifurcation.msearch import geometric_samples, refine_samples, search_m
 from electrogrowth.bifurcation.scan import EVERY_M, M_CAP, N_CAP, ScanResult
 from electrogrowth.cli.report import edge_warning
@@ -207,3 +208,19 @@ def test_scan_beyond_64_is_the_search(h, options, m, value):
     assert (s.critical.m, s.critical.n, s.critical.family) == (m, 0, "prismatic")
     assert s.m_range == (60, 2000) and edge_warning(s) == ""
     assert s.critical.value == pytest.approx(value, abs=2e-9)
+
+
+@pytest.mark.parametrize("centre", [64.2, 74.4, 137.3, 211.6, 999.4, 1999.2, 2400.0])
+def test_search_logic_on_a_synthetic_row(monkeypatch, centre):
+    """The search's bracketing alone, on critical values (m - centre)^2 (any centre, the
+    best inside a bracket or at either end): the exhaustive minimum over [64, 2000]."""
+    from electrogrowth.bifurcation import msearch
+
+    def first(params, solve_for, side, rows, rtol, ms, only=None):
+        ordered = sorted(ms, key=lambda m: (m - centre) ** 2)
+        return [ModeValue(m, 0, 1 + (m - centre) ** 2) for m in ordered[:3]]
+
+    monkeypatch.setattr(msearch, "_first", first)
+    found = search_m(None, THETA, None, PRISMATIC, 64, 2000, RTOL)
+    exact = min(range(64, 2001), key=lambda m: (m - centre) ** 2)
+    assert found.best.m == exact and found.at_cap == (exact == 2000)

@@ -74,13 +74,15 @@ def search_m(
     samples = geometric_samples(m_edge, m_cap)
     seen = list(march(samples))
     best = seen[0]
-    at_cap = best.m == m_cap
     row = [(best.n, _code(best))]
     lo, hi = _neighbours(samples, best.m)
-    while hi - lo > 1 and not at_cap:
+    while hi - lo > 1:  # (at the cap too: the minimum may lie just below it)
         inner = refine_samples(lo, hi)
         complete = len(inner) == hi - lo - 1  # every integer of the bracket is marched
-        got = list(march(inner, row))
+        try:
+            got = list(march(inner, row))
+        except NoBifurcationFound:  # none of them before the end of the march: best stands
+            break
         seen += got
         if _earlier(got[0], best, side):
             best = got[0]
@@ -89,7 +91,7 @@ def search_m(
             break
     key = {(v.m, v.n, v.family): v for v in seen}
     ordered = sorted(key.values(), key=lambda v: _sense(side) * v.value)
-    return SearchResult(best, tuple(ordered), at_cap)
+    return SearchResult(best, tuple(ordered), best.m == m_cap)
 
 
 def _first(params, solve_for, side, rows, rtol, ms, only=None) -> list[ModeValue]:
