@@ -10,6 +10,7 @@ from electrogrowth import ParameterError, TubeParameters
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.bifurcation.march import unloaded_signs
 from electrogrowth.bifurcation.scan import (
+    M_CAP,
     ScanOptions,
     mode_grid,
     scan_grid,
@@ -66,12 +67,14 @@ def test_extension_finds_bifurcation_before_the_threshold():
     the outer face's short-wave limit (half-space) comes before them all.
 
     The prismatic family (n = 0, scanned by default) now comes first among the finite
-    modes: its probe (15, 0) beats the wrinkles, the m range is widened twice and
-    (31, 0) wins at lambda_z = 2.476792462071, below the best wrinkle (0, 1) at
-    2.496809788768 (the wrinkle-only scan). Checked by the prismatic single-mode solver
-    by both methods: impedance 2.47679246207104, collocation (full march)
-    2.47679246207128. With the short-wave limit on (the default) the widening is not
-    needed: the limit comes before the probe (15, 0) and is the result.
+    modes: its probe (15, 0) beats the wrinkles, the m range is widened twice, (31, 0)
+    wins the mode-by-mode scan at lambda_z = 2.476792462071, below the best wrinkle (0, 1)
+    at 2.496809788768 (the wrinkle-only scan), and its critical value keeps falling with m
+    towards the outer face's short-wave limit: the search beyond (msearch.py) follows it
+    to the cap (2000, 0). (31, 0) checked by the prismatic single-mode solver by both
+    methods: impedance 2.47679246207104, collocation (full march) 2.47679246207128. With
+    the short-wave limit on (the default) the widening is not needed: the limit comes
+    before the probe (15, 0) and is the result.
     """
     wrinkles = ScanOptions((0, 3), (1, 2), surface=False, prismatic=False, torsional=False)
     only = scan_modes(P, "stretch", side="extension", options=wrinkles).critical
@@ -80,10 +83,13 @@ def test_extension_finds_bifurcation_before_the_threshold():
     finite = ScanOptions((0, 3), (1, 2), surface=False)
     res = scan_modes(P, "stretch", side="extension", options=finite)
     assert res.critical.kind == "bifurcation"
-    assert (res.critical.m, res.critical.n, res.critical.family) == (31, 0, "prismatic")
+    assert (res.critical.m, res.critical.n, res.critical.family) == (M_CAP, 0, "prismatic")
     assert 2.4559 < res.critical.value < only.value
-    direct = critical_value(P, res.critical.m, res.critical.n, "stretch", side="extension")
+    direct = critical_value(P, M_CAP, 0, "stretch", side="extension")
     assert res.critical.value == pytest.approx(direct.value, rel=1e-12)
+    direct = critical_value(P, 31, 0, "stretch", side="extension")
+    assert direct.value == pytest.approx(2.476792462071, abs=1e-11)
+    assert direct.value > res.critical.value
     v, w = direct.value, 1e-6
     col = critical_value(
         P, 31, 0, "stretch", side="extension", method="collocation", bracket=(v - w, v + w)
@@ -93,7 +99,7 @@ def test_extension_finds_bifurcation_before_the_threshold():
     limit = short_wave_limit(P, "stretch", side="extension")
     assert full.critical.kind == "surface" and full.critical.value == limit.value
     assert (full.critical.face, full.critical.psi) == ("outer", 0.0)
-    assert full.critical.value < res.critical.value  # before every finite mode
+    assert full.critical.value < res.critical.value  # before every finite mode, m <= 2000
     # the best finite mode found follows; the widening stopped once the limit came first
     # (the probe (15, 0) already lies after it), so it is not the widened optimum (31, 0)
     first = full.runners_up[0]

@@ -13,13 +13,16 @@ signs right; the modes that change sign in a step are narrowed together by bisec
 finished by Brent's method at full accuracy. Marching on yields the runner-up modes.
 
 When the best mode sits on the edge of the range the range is doubled in that direction
-(up to a cap). The infimum over all modes may be the short-wave limit m, k -> infinity, a
-surface instability of a face: it is computed exactly from the half-space problem
-(surface.py) when the best finite mode sits on the edge at the cap, when no finite mode
-bifurcates before the threshold (or at all), or when a face is already past its
-half-space instability at the best finite value. If it comes first, it is the result
-(kind SURFACE, with the face and the wave direction) and the best finite mode is the
-first runner-up.
+(every m up to EVERY_M = 64, n up to the cap). Beyond m = 64 (an optimum on that edge, a
+probe beyond it, or an m range asked for beyond it) the best m is searched coarse-to-
+fine along family rows up to M_CAP = 2000 (msearch.py, docs/derivation-film.md): a thin
+stiff film folds at a finite m of tens to hundreds, which the search brackets. The
+infimum over all modes may be the short-wave limit m, k -> infinity, a surface
+instability of a face: it is computed exactly from the half-space problem (surface.py)
+when the best finite mode sits on the edge at the cap, when no finite mode bifurcates
+before the threshold (or at all), or when a face is already past its half-space
+instability at the best finite value. If it comes first, it is the result (kind SURFACE,
+with the face and the wave direction) and the best finite mode is the first runner-up.
 """
 
 from __future__ import annotations
@@ -31,7 +34,7 @@ import numpy as np
 
 from ..errors import NoBifurcationFound, ParameterError
 from ..incremental.accuracy import SCAN_SIGNS, SCAN_STABLE_SIGNS, Accuracy
-from ..incremental.targets import Family, impedance_targets
+from ..incremental.targets import MODE_MAX, Family, impedance_targets
 from ..labelled import scan_dataset
 from ..model.params import TubeParameters, check_side
 from ..outcomes import NO_MODE, Kind
@@ -39,12 +42,18 @@ from ..summary import scan_html
 from .critical import CriticalPoint, control_name, critical_value, no_bifurcation_remedy
 from .directions import past_surface
 from .march import ModeValue, first_bifurcations, unloaded_signs
+from .msearch import search_m
 from .surface import short_wave_limit
 
-M_CAP, N_CAP = 64, 320
+#: The largest m and n of a scan: those of a mode (incremental.targets.MODE_MAX, set by
+#: the kernel's step budget); shorter waves tend to the exact short-wave limit.
+M_CAP = N_CAP = MODE_MAX
+#: Every m is scanned up to EVERY_M (the modes of small m are irregular); beyond it the
+#: best m of an edge optimum's family row is searched coarse-to-fine (msearch.py).
+EVERY_M = 64
 TOP_MAX = 1000  # modes a scan reports: the critical one and runners-up
-# widen a range at most this often; an optimum still on its edge is a short-wavelength
-# (surface) instability, extrapolated instead of scanned
+# widen a range mode by mode at most this often (m up to EVERY_M, n up to N_CAP); an m
+# optimum still on its edge is then searched for up to M_CAP (msearch.py)
 DOUBLINGS = 2
 
 
@@ -70,7 +79,7 @@ def _check_range(name, rng, lowest, highest):
     if not whole or int(lo) != lo or int(hi) != hi or lo < lowest or hi < lo or hi > highest:
         raise ParameterError(
             f"{name} range {list(rng)} is invalid; need integers "
-            f"{lowest} <= {name}_min <= {name}_max <= {highest} (shorter waves are the"
+            f"{lowest} <= {name}_min <= {name}_max <= {highest} (shorter waves tend to the"
             " exact short-wave limit, which every scan computes)"
         )
 
@@ -83,12 +92,14 @@ class ScanOptions:
     ----------
     m_range, n_range : (int, int)
         Inclusive starting ranges of the circumferential wavenumber m >= 0 and the axial
-        half-wavenumber n >= 1.
+        half-wavenumber n >= 1 (up to M_CAP, N_CAP = 2000; m beyond EVERY_M = 64 is
+        searched coarse-to-fine, not mode by mode).
     top : int
         Modes reported: the critical one and ``top - 1`` runners-up (top >= 1).
     extend : bool
         Probe short waves beyond the ranges and widen a range while the optimum sits on
-        its upper edge (at most DOUBLINGS times, up to M_CAP, N_CAP).
+        its upper edge (mode by mode at most DOUBLINGS times, m up to EVERY_M, n up to
+        N_CAP; then m by the coarse-to-fine search up to M_CAP).
     surface : bool
         Compare with the exact short-wave limit (m, k -> infinity) at both faces, which is
         the result when it comes first (see the module docstring).
@@ -237,8 +248,14 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
 
     Widening only looks for a finite optimum beyond the ranges, so it stops (as at the
     cap) once the exact short-wave limit comes before the best finite mode found: shorter
-    waves tend to that limit, which then is the result (the m = 64 scan is not needed)."""
-    m_range, n_range, top, extend = options.m_range, options.n_range, options.top, options.extend
+    waves tend to that limit, which then is the result (the wider scan is not needed).
+    Every m is scanned up to EVERY_M (or m_max, if smaller); m beyond it, of an m range
+    reaching past EVERY_M or of an optimum on the m edge there (or a probe beyond it), are
+    examined by the coarse-to-fine search along family rows (:func:`_searched`), which
+    brackets the best m or ends at m_max (M_CAP when extending)."""
+    n_range, top, extend = options.n_range, options.top, options.extend
+    m_lo, m_max = options.m_range
+    m_range = (m_lo, min(m_max, max(m_lo, EVERY_M)))  # scanned mode by mode
     grown = {"m": 0, "n": 0}
     probes = extend
     limit, sense = None, -1.0 if side == "compression" else 1.0
@@ -249,6 +266,9 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
             return False
         limit = limit or short_wave_limit(params, solve_for, side=side, rtol=rtol)
         return limit.kind == Kind.SURFACE and (limit.value - c.value) * sense < 0
+
+    def search(result, m_top=M_CAP):
+        return _searched(params, solve_for, side, result, options, rtol, m_top)
 
     while True:
         result = _scan_once(
@@ -266,6 +286,8 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
         if probes and c.kind == Kind.BIFURCATION and (c.m > m_range[1] or c.n > n_range[1]):
             if limit_first(c):
                 return result, True, limit
+            if c.m > max(m_range[1], EVERY_M):  # a probe beyond the every-m scan wins
+                return (*search(result), limit)
             # a probe beyond the range wins: the optimum is a short wave, widen to it once
             grown = {"m": int(c.m > m_range[1]), "n": int(c.n > n_range[1])}
             m_range = (m_range[0], max(m_range[1], c.m))
@@ -278,19 +300,66 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
             "n": c.kind == Kind.BIFURCATION and c.n == n_range[1],
         }
         grow = {
-            "m": edge["m"] and m_range[1] < M_CAP and grown["m"] < DOUBLINGS,
+            "m": edge["m"] and m_range[1] < EVERY_M and grown["m"] < DOUBLINGS,
             "n": edge["n"] and n_range[1] < N_CAP and grown["n"] < DOUBLINGS,
         }
-        if not extend or not any(grow.values()):
+        beyond = extend and edge["m"] and not grow["m"] and m_range[1] < M_CAP
+        if not extend or not (any(grow.values()) or beyond):
             break
         if limit_first(c):
             return result, True, limit
+        if not any(grow.values()):  # only m is on its edge, past the every-m scan
+            return (*search(result), limit)
         if grow["m"]:
-            m_range, grown["m"] = (m_range[0], min(2 * m_range[1] + 1, M_CAP)), grown["m"] + 1
+            m_range, grown["m"] = (m_range[0], min(2 * m_range[1] + 1, EVERY_M)), grown["m"] + 1
         if grow["n"]:
             n_range, grown["n"] = (n_range[0], min(2 * n_range[1], N_CAP)), grown["n"] + 1
     at_cap = extend and any(edge.values()) and not (c.m == 0 and not edge["n"])
+    if m_max > m_range[1]:  # the m asked for beyond the mode-by-mode scan
+        result, m_cap = search(result, M_CAP if extend else m_max)
+        c = result.critical
+        at_cap = m_cap or (extend and c.kind == Kind.BIFURCATION and c.n == n_range[1])
     return result, at_cap, limit
+
+
+def _searched(params, solve_for, side, result: ScanResult, options: ScanOptions, rtol, m_top: int):
+    """``result`` merged with the coarse-to-fine search (msearch.py) of m from the scanned
+    edge up to ``m_top`` along the critical mode's family row, the prismatic row and the
+    wrinkles of the smallest n: the earlier of the two is the critical mode, the others
+    the runners-up; and whether the critical m is ``m_top`` (the edge of the search)."""
+    c, sense = result.critical, -1.0 if side == "compression" else 1.0
+    rows = {(max(options.n_range[0], 1), Family.WRINKLE.code)}
+    if options.prismatic:
+        rows.add((0, Family.PRISMATIC.code))
+    if c.kind == Kind.BIFURCATION:
+        rows.add((c.n, Family(c.family).code))
+    try:
+        found = search_m(params, solve_for, side, sorted(rows), result.m_range[1], m_top, rtol)
+    except NoBifurcationFound:  # no m beyond the scan bifurcates first: the scan stands
+        return dataclasses.replace(result, m_range=(result.m_range[0], m_top)), False
+    best, others = found.best, {(v.m, v.n, v.family): v for v in found.found}
+    others.update({(v.m, v.n, v.family): v for v in result.runners_up})
+    if c.kind == Kind.BIFURCATION:
+        others[(c.m, c.n, c.family)] = ModeValue(c.m, c.n, c.value, c.family)
+    if c.kind == Kind.BIFURCATION and sense * c.value <= sense * best.value:
+        crit = c
+    else:
+        w = 1e-7 * abs(best.value)
+        crit = critical_value(
+            params,
+            best.m,
+            best.n,
+            solve_for,
+            family=best.family,
+            side=side,
+            rtol=rtol,
+            bracket=(best.value - w, best.value + w),
+        )
+    others.pop((crit.m, crit.n, crit.family), None)
+    runners = sorted(others.values(), key=lambda v: sense * v.value)[: options.top - 1]
+    m_range = (result.m_range[0], m_top)
+    at_top = crit.kind == Kind.BIFURCATION and crit.m == m_top
+    return ScanResult(crit, tuple(runners), m_range, result.n_range), at_top
 
 
 def scan_grid(

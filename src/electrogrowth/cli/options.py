@@ -56,9 +56,12 @@ def bounded_int(lowest: int, highest: int, why: str = ""):
 
 
 #: Why the largest m and n a scan may start from, and of one --mode, are bifurcation.scan's
-#: M_CAP and N_CAP: beyond them the waves are short enough for the exact short-wave
-#: (half-space) limit, which every scan computes.
-SHORT_WAVES = "larger wavenumbers are covered by the exact short-wave limit"
+#: M_CAP and N_CAP (the kernel's step budget, incremental.targets.MODE_MAX); shorter
+#: waves tend to the exact short-wave (half-space) limit, which every scan computes.
+SHORT_WAVES = (
+    "the kernel's step budget; shorter waves tend to the exact short-wave limit,"
+    " which every scan computes"
+)
 
 
 # -- the tube --------------------------------------------------------------------------------
@@ -248,7 +251,7 @@ MODE_COVERAGE = (
 
 def add_mode_range_options(group, *, top: bool = False) -> None:
     """--m-max and --n-max (and --top): the ScanOptions of a scan, defaults from it."""
-    from ..bifurcation.scan import M_CAP, N_CAP, TOP_MAX, ScanOptions  # start-up (see top)
+    from ..bifurcation.scan import EVERY_M, M_CAP, N_CAP, TOP_MAX, ScanOptions  # start-up (see top)
 
     default = ScanOptions()
     group.add_argument(
@@ -259,7 +262,9 @@ def add_mode_range_options(group, *, top: bool = False) -> None:
         help="largest circumferential wavenumber m of the scan, from 0"
         f" (default {default.m_range[1]}; widened automatically when the"
         " critical mode sits on the edge, and probed beyond for short"
-        " waves). The scan covers the wrinkles (m, n), n >= 1, the"
+        f" waves; every m is scanned up to {EVERY_M}, larger m up to {M_CAP} are"
+        " searched coarse-to-fine for the best m). The scan covers the"
+        " wrinkles (m, n), n >= 1, the"
         " prismatic modes (m, 0), m >= 2, and the torsional modes (0, n);"
         " the short-wave limit m, n -> infinity comes exactly from the"
         " half-space problem",
@@ -290,7 +295,13 @@ def add_mode_option(group) -> None:
     group.add_argument(
         "--mode",
         nargs=2,
-        type=bounded_int(0, N_CAP, SHORT_WAVES),
+#: Why the largest m and n a scan may start from, and of one --mode, are bifurcation.scan's
+#: M_CAP and N_CAP (the kernel's step budget, incremental.targets.MODE_MAX); shorter
+#: waves tend to the exact short-wave (half-space) limit, which every scan computes.
+SHORT_WAVES = (
+    "the kernel's step budget; shorter waves tend to the exact short-wave limit,"
+    " which every scan computes"
+)
         metavar=("M", "N"),
         help="one mode instead of a scan: circumferential wavenumber m >= 0"
         " (lobes around) and axial half-wavenumber n >= 0 (half-waves"

@@ -16,6 +16,7 @@ import math
 import sys
 import textwrap
 
+from ..bifurcation.scan import M_CAP, N_CAP
 from ..errors import ParameterError
 
 MAX_DIGITS, MIN_DIGITS = 12, 3
@@ -116,22 +117,31 @@ def physical_line(physical: dict) -> list[str]:
 
 def edge_warning(result) -> str:
     """A one-line warning when the critical mode of a scan (a ScanResult) sits on the upper
-    edge of the final m or n range, else "" (the scan widens a range twice and then relies on
-    the exact short-wave limit; a mode on the edge may still hide a lower one beyond)."""
+    edge of the final m or n range, else "" (the scan widens a range and searches m up to
+    the cap; a mode on the edge may still hide a lower one beyond). At the cap itself
+    raising --m-max / --n-max cannot help, and the warning says so."""
     c = result.critical
     if c.kind != "bifurcation":
         return ""
-    edges = []
-    if c.m == result.m_range[1]:
-        edges.append(f"m = {c.m} is the largest m scanned")
-    if c.n == result.n_range[1]:
-        edges.append(f"n = {c.n} is the largest n scanned")
-    if not edges:
+    edges, capped = [], []
+    for name, value, top, cap in (
+        ("m", c.m, result.m_range[1], M_CAP),
+        ("n", c.n, result.n_range[1], N_CAP),
+    ):
+        if value == top:
+            (capped if value >= cap else edges).append(
+                f"{name} = {value} is the largest {name} scanned"
+            )
+    if not edges and not capped:
         return ""
+    where = " and ".join(edges + capped)
+    head = f"the critical mode (m, n) = ({c.m}, {c.n}) sits on the edge of the scanned range"
+    head += f" ({where})"
+    if edges:
+        return f"{head}; raise --m-max / --n-max to make sure no mode beyond it comes first"
     return (
-        f"the critical mode (m, n) = ({c.m}, {c.n}) sits on the edge of the scanned range"
-        f" ({' and '.join(edges)}); raise --m-max / --n-max to make sure no mode beyond it"
-        " comes first"
+        f"{head}, the largest supported; shorter waves tend to the exact short-wave limit,"
+        " which the scan compares with and reports when it comes first"
     )
 
 

@@ -42,6 +42,12 @@ from .collocation import collocation_target
 from .impedance import ALL_PAIRS, STATUS_TEXT, target_batch, target_serial
 from .radial_table import build_table, stack_tables
 
+#: The largest m and n of a mode: the kernel's steps grow like the decay rate integrated
+#: through the wall, ~1.1 max(m ln(r_o / r_i), k (r_o - r_i)) at rtol 1e-12, so m = 2000
+#: keeps every Rbar_o <= 100 well inside the 20000-step budget (docs/derivation-film.md,
+#: "Large m"); shorter waves tend to the exact short-wave limit (bifurcation/surface.py).
+MODE_MAX = 2000
+
 PARALLEL_FROM = 16  # batches smaller than this run on one thread (thread launch costs more)
 
 #: targets(state, modes (k, 2) or (k, 3) array) -> (k,) array of target values
@@ -118,7 +124,8 @@ def check_mode(m, n, family: str | None = None) -> Family:
     """The family of mode (m, n) (``family``, or the natural one), or ParameterError.
 
     Valid: wrinkle m >= 0, n >= 1; prismatic n = 0, m >= 2 ((0, 0) is the breathing mode,
-    the base state's own limit point; (1, 0) a rigid translation); torsional m = 0, n >= 1.
+    the base state's own limit point; (1, 0) a rigid translation); torsional m = 0, n >= 1;
+    m, n <= MODE_MAX.
 
     >>> check_mode(3, 0)
     <Family.PRISMATIC: 'prismatic'>
@@ -130,10 +137,11 @@ def check_mode(m, n, family: str | None = None) -> Family:
         and int(x) == x
         for x in (m, n)
     )
-    if not whole or m < 0 or n < 0:
+    if not whole or m < 0 or n < 0 or m > MODE_MAX or n > MODE_MAX:
         raise ParameterError(
-            f"mode (m, n) = ({m}, {n}) is invalid; need integers m >= 0,"
-            " n >= 0 (n = 0: prismatic, m >= 2)"
+            f"mode (m, n) = ({m}, {n}) is invalid; need integers 0 <= m <= {MODE_MAX},"
+            f" 0 <= n <= {MODE_MAX} (n = 0: prismatic, m >= 2; shorter waves tend to the"
+            " exact short-wave limit, which every scan computes)"
         )
     fam = natural_family(m, n) if family is None else check_family(family)
     where = f"mode (m, n) = ({m:g}, {n:g})"
