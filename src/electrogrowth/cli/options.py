@@ -251,7 +251,8 @@ MODE_COVERAGE = (
 
 def add_mode_range_options(group, *, top: bool = False) -> None:
     """--m-max and --n-max (and --top): the ScanOptions of a scan, defaults from it."""
-    from ..bifurcation.scan import EVERY_M, M_CAP, N_CAP, TOP_MAX, ScanOptions  # start-up (see top)
+    # start-up speed (see top)
+    from ..bifurcation.scan import EVERY_M, M_CAP, N_CAP, TOP_MAX, ScanOptions
 
     default = ScanOptions()
     group.add_argument(
@@ -295,13 +296,7 @@ def add_mode_option(group) -> None:
     group.add_argument(
         "--mode",
         nargs=2,
-#: Why the largest m and n a scan may start from, and of one --mode, are bifurcation.scan's
-#: M_CAP and N_CAP (the kernel's step budget, incremental.targets.MODE_MAX); shorter
-#: waves tend to the exact short-wave (half-space) limit, which every scan computes.
-SHORT_WAVES = (
-    "the kernel's step budget; shorter waves tend to the exact short-wave limit,"
-    " which every scan computes"
-)
+        type=bounded_int(0, N_CAP, SHORT_WAVES),
         metavar=("M", "N"),
         help="one mode instead of a scan: circumferential wavenumber m >= 0"
         " (lobes around) and axial half-wavenumber n >= 0 (half-waves"
