@@ -31,6 +31,8 @@ _EXPORTS = {
     ".bifurcation.critical": ("CriticalPoint", "critical_value"),
     ".bifurcation.curves": ("Curve", "critical_curve"),
     ".bifurcation.scan": ("ScanOptions", "ScanResult", "scan_modes"),
+    ".design.prescribe": ("Design", "design"),
+    ".design.sequence": ("ModeSequence", "mode_sequence"),
     ".errors": (
         "BaseStateError",
         "ConfigError",
@@ -118,6 +120,11 @@ __all__ = [
     "ScanOptions",
     "ScanResult",
     "scan_modes",
+    # design
+    "ModeSequence",
+    "mode_sequence",
+    "Design",
+    "design",
     "Curve",
     "critical_curve",
     "Method",
