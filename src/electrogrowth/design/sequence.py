@@ -18,7 +18,7 @@ import numpy as np
 
 from ..bifurcation.curves import Curve, critical_curve
 from ..bifurcation.scan import ScanOptions
-from ..errors import ParameterError
+from ..errors import ElectrogrowthError, ParameterError
 from ..outcomes import NO_MODE, Kind, Status
 
 MIN_POINTS, MAX_POINTS = 2, 2001
@@ -247,3 +247,22 @@ def from_curve(curve: Curve, key: str, lo: float, hi: float) -> ModeSequence:
         for s in changes
     )
     return ModeSequence(key, lo, hi, curve.solve_for, curve.side, intervals, switches, curve)
+
+
+def mode_values(tube, solve_for: str, key: str, modes, xs, *, side: str | None = None) -> dict:
+    """{(m, n): array of the first critical value of that mode at each ``key`` = x of
+    ``xs``} (NaN where the mode does not wrinkle before the threshold, or fails): the
+    competing branches behind a :class:`ModeSequence`, e.g. for its plot."""
+    from ..bifurcation.critical import critical_value
+
+    out = {}
+    for mode in modes:
+        vals = []
+        for x in xs:
+            try:
+                c = critical_value(tube.at(key, x), *mode, solve_for, side=side)
+                vals.append(c.value if c.kind == Kind.BIFURCATION else math.nan)
+            except ElectrogrowthError:
+                vals.append(math.nan)
+        out[tuple(mode)] = np.array(vals)
+    return out
