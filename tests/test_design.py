@@ -204,5 +204,8 @@ def test_cli_design_bad_range(capsys):
     args = ["design", "--solve-for", "stretch", "--target", "0", "1"]
     assert main([*args, "--vary", "outer_radius", "1.3", "1.2"]) == 2
     assert main([*args, "--vary", "outer_radius", "0.5", "1.2"]) == 2
+    assert main([*args, "--vary", "layers[1].thickness", "0.1", "0.2"]) == 2  # one layer
+    assert main([*args, "--vary", "outer_radius", "nan", "1.2"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 2 and all(e.startswith("electrogrowth: error:") for e in err)
+    assert len(err) == 4 and all(e.startswith("electrogrowth: error:") for e in err)
+    assert "vary key 'layers[1].thickness' is unknown for a one-layer tube" in err[2]

@@ -103,11 +103,13 @@ def _target(args):
 
 def run_design(args) -> int:
     from ..design import design  # the numeric stack, after the options are checked
+    from ..design.sequence import check_vary
 
     vary, target = _vary(args), _target(args)
     check_side_option(args)
     tube, solve_for = control_of(args)
-    tube = tube.at(vary[0], vary[1])  # the variable's range is checked before any work
+    check_vary(vary, tube, solve_for)  # the key and its range, before any work
+    tube = tube.at(vary[0], vary[1])
     result = design(
         tube,
         solve_for,

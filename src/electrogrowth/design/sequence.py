@@ -16,9 +16,10 @@ import math
 
 import numpy as np
 
-from ..bifurcation.curves import Curve, critical_curve
+from ..bifurcation.curves import ALONG, Curve, check_curve, critical_curve
 from ..bifurcation.scan import ScanOptions
 from ..errors import ElectrogrowthError, ParameterError
+from ..model.layers import KEYS_TEXT, Tube
 from ..outcomes import NO_MODE, Kind, Status
 
 MIN_POINTS, MAX_POINTS = 2, 2001
@@ -144,8 +145,9 @@ class ModeSequence:
         )
 
 
-def check_vary(vary) -> tuple[str, float, float]:
-    """(key, lo, hi) with lo < hi finite, or ParameterError."""
+def check_vary(vary, tube=None, solve_for: str | None = None) -> tuple[str, float, float]:
+    """(key, lo, hi) with lo < hi finite, or ParameterError; with ``tube`` and
+    ``solve_for`` also a key of the tube other than the unknown, at both ends in range."""
     if not isinstance(vary, (tuple, list)) or len(vary) != 3 or not isinstance(vary[0], str):
         raise ParameterError(f"vary = {vary!r} is invalid; give (key, lo, hi)")
     key, lo, hi = vary
@@ -157,6 +159,23 @@ def check_vary(vary) -> tuple[str, float, float]:
         raise ParameterError(
             f"vary range {lo!r} to {hi!r} of {key} is invalid; need finite numbers lo < hi"
         )
+    if tube is not None:
+        if not isinstance(tube, Tube) and key not in ALONG:
+            raise ParameterError(
+                f"vary key {key!r} is unknown for a one-layer tube; choose one of"
+                f" {', '.join(ALONG)} (a layered Tube has more)"
+            )
+        if isinstance(tube, Tube) and not (key in ("length", "outer_pressure") or "[" in key):
+            try:
+                tube.check_control(key)
+            except ParameterError:
+                raise ParameterError(
+                    f"vary key {key!r} is not a key of this tube; valid: a control (growth[K],"
+                    f" growth[K].theta, stretch, voltage, pressure, force) or {KEYS_TEXT}"
+                ) from None
+        check_curve(solve_for, key, tube)
+        tube.at(key, lo)
+        tube.at(key, hi)
     return key, float(lo), float(hi)
 
 
@@ -211,7 +230,7 @@ def mode_sequence(
     >>> [(iv.mode, round(iv.lo, 6), round(iv.hi, 6)) for iv in seq.intervals]
     [((1, 1), 1.2, 1.256361), ((0, 1), 1.256361, 1.3)]
     """
-    key, lo, hi = check_vary(vary)
+    key, lo, hi = check_vary(vary, tube, solve_for)
     points = check_points(points)
     xs = np.linspace(lo, hi, points)
     curve = critical_curve(tube, solve_for, key, xs, side=side, options=options, progress=progress)
