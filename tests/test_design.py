@@ -209,3 +209,14 @@ def test_cli_design_bad_range(capsys):
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 4 and all(e.startswith("electrogrowth: error:") for e in err)
     assert "vary key 'layers[1].thickness' is unknown for a one-layer tube" in err[2]
+
+
+def test_public_design_is_the_function_after_the_subpackage_is_imported():
+    """design/ is imported above (from electrogrowth.design import ...), which binds the
+    subpackage on electrogrowth; the public name must stay the function."""
+    import electrogrowth
+
+    assert electrogrowth.design is design and callable(electrogrowth.design)
+    namespace: dict = {}
+    exec("from electrogrowth import *", namespace)  # noqa: S102 -- a literal, not data
+    assert namespace["design"] is design and namespace["mode_sequence"] is mode_sequence
