@@ -220,3 +220,14 @@ def test_public_design_is_the_function_after_the_subpackage_is_imported():
     namespace: dict = {}
     exec("from electrogrowth import *", namespace)  # noqa: S102 -- a literal, not data
     assert namespace["design"] is design and namespace["mode_sequence"] is mode_sequence
+
+
+def test_sequence_records(sequence):
+    record = json.loads(json.dumps(sequence.as_dict()))
+    assert [iv["mode"] for iv in record["intervals"]] == [[1, 1], [0, 1]]
+    assert record["switches"][0]["x"] == sequence.switches[0].x
+    pytest.importorskip("xarray")
+    ds = sequence.to_xarray()
+    assert ds["switch_x"].values.tolist() == [sequence.switches[0].x]
+    assert ds["mode"].values.tolist() == [[1, 1], [0, 1]]
+    assert ds["hi"].values[0] == ds["lo"].values[1] == sequence.switches[0].x
