@@ -231,3 +231,16 @@ def test_sequence_records(sequence):
     assert ds["switch_x"].values.tolist() == [sequence.switches[0].x]
     assert ds["mode"].values.tolist() == [[1, 1], [0, 1]]
     assert ds["hi"].values[0] == ds["lo"].values[1] == sequence.switches[0].x
+
+
+def test_design_for_a_set_joins_its_intervals(sequence):
+    d = design(TUBE, "stretch", [(1, 1), (0, 1)], VARY, sequence=sequence, options=SMALL)
+    assert d.status == "found" and len(d.region) == 2
+    assert d.to_boundary is None  # the set is first over the whole range
+    assert d.next_mode not in ((1, 1), (0, 1)) and d.margin > 0
+    at = TUBE.at("outer_radius", d.x)
+    v = critical_value(at, *d.mode, "stretch", side="compression").value
+    w = critical_value(at, *d.next_mode, "stretch", side="compression").value
+    assert d.margin == pytest.approx(-(w - v) / abs(v), abs=1e-9)
+    axi = design(TUBE, "stretch", "axisymmetric", VARY, sequence=sequence, options=SMALL)
+    assert [iv.mode for iv in axi.region] == [(0, 1)] and axi.mode == (0, 1)

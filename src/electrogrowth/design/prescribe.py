@@ -42,8 +42,9 @@ class Design:
     ``status`` FOUND: ``x`` is the design with the widest margin in the ``region`` (the
     intervals where the target is first), ``mode`` is critical there at ``value`` and
     ``next_mode`` comes next at ``next_value``; ``to_boundary`` is the distance from x to
-    the nearest end of its interval that is a located switch (None if both ends are the
-    ends of the range). NOT_FIRST: no region; x is the closest design, M < 0, and
+    the nearest end of the region (its intervals joined where they touch) that is a located
+    switch (None if both ends are the ends of the range). NOT_FIRST: no region; x is the
+    closest design, M < 0, and
     ``next_mode`` beats the target there. NOT_REACHED: no target mode was found among the
     scanned modes (x and the values are NaN). ``sensitivity``: d(value)/dp of the target
     mode's critical value for every parameter p of the tube at x; ``margin_sensitivity``:
@@ -169,7 +170,9 @@ def design(
         dv/dp = -f_p / f_v of the target's critical value (design/sensitivity.py).
     """
     goal = check_target(target)
-    key, lo, hi = check_vary(vary)
+    key, lo, hi = (
+        check_vary(vary) if sequence is None else (sequence.key, sequence.lo, sequence.hi)
+    )
     if sequence is None:
         sequence = mode_sequence(tube, solve_for, vary, side=side, options=options, points=points)
     side = sequence.side
@@ -202,11 +205,11 @@ def design(
         sens_next = sensitivities(at, nxt, sequence.solve_for, v_next, rtol=rtol)
         scale = margins.sense * math.copysign(1.0, v) / v**2  # dM = s sgn(v)(v dv_N - v_N dv)/v^2
         sens_margin = {p: scale * (v * sens_next[p] - v_next * sens[p]) for p in sens}
-    iv = next((r for r in region if r.contains(x)), None)
+    span = _span(region, x)
     ends = (
         []
-        if iv is None
-        else [abs(x - iv.lo)] * (not iv.lo_edge) + [abs(iv.hi - x)] * (not iv.hi_edge)
+        if span is None
+        else [abs(x - span.lo)] * (not span.lo_edge) + [abs(span.hi - x)] * (not span.hi_edge)
     )
     return Design(
         goal.name,
@@ -226,6 +229,18 @@ def design(
         sens_margin,
         sequence,
     )
+
+
+def _span(region, x: float) -> Interval | None:
+    """The region's intervals joined where they touch (a set's modes side by side), the one
+    holding x."""
+    spans: list[Interval] = []
+    for iv in region:
+        if spans and spans[-1].hi == iv.lo:
+            last = spans.pop()
+            iv = dataclasses.replace(iv, lo=last.lo, lo_edge=last.lo_edge)
+        spans.append(iv)
+    return next((sp for sp in spans if sp.contains(x)), None)
 
 
 def _unreached(goal: Target, key, sequence, region) -> Design:
