@@ -244,3 +244,24 @@ def test_design_for_a_set_joins_its_intervals(sequence):
     assert d.margin == pytest.approx(-(w - v) / abs(v), abs=1e-9)
     axi = design(TUBE, "stretch", "axisymmetric", VARY, sequence=sequence, options=SMALL)
     assert [iv.mode for iv in axi.region] == [(0, 1)] and axi.mode == (0, 1)
+
+
+def test_a_wider_map_every_switch_agrees_with_collocation():
+    """Rbar_o from 1.1 to 1.5 in compression: every located switch is a common root of the
+    two modes' collocation targets (sign changes within 1e-9 of the common value)."""
+    from electrogrowth.incremental.targets import collocation_targets
+
+    seq = mode_sequence(
+        TUBE, "stretch", ("outer_radius", 1.1, 1.5), side="compression", points=9,
+        options=ScanOptions((0, 4), (1, 3)),
+    )  # fmt: skip
+    chain = [(s.mode_before, s.mode_after) for s in seq.switches]
+    assert chain == [((3, 1), (2, 1)), ((2, 1), (1, 1)), ((1, 1), (0, 1))]
+    for s in seq.switches:
+        at = TUBE.at("outer_radius", s.x)
+        for mode in (s.mode_before, s.mode_after):
+            below, above = (
+                collocation_targets(solve_base_state(at.at("stretch", s.value + d)), [mode])[0]
+                for d in (-1e-9, 1e-9)
+            )
+            assert below * above < 0, (s, mode)
