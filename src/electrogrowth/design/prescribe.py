@@ -89,9 +89,9 @@ class Design:
                 "to_boundary": num(self.to_boundary),
             },
             "sensitivity": {
-                "value": self.sensitivity,
-                "next_value": self.next_sensitivity,
-                "margin": self.margin_sensitivity,
+                "value": {p: num(d) for p, d in self.sensitivity.items()},
+                "next_value": {p: num(d) for p, d in self.next_sensitivity.items()},
+                "margin": {p: num(d) for p, d in self.margin_sensitivity.items()},
             },
         }
 
