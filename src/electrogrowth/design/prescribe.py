@@ -179,10 +179,12 @@ def design(
     margins = _Margins(tube, sequence.solve_for, key, side)
     scan_opts = dataclasses.replace(options, top=max(options.top, 6))
 
-    def scan(x):
-        return _ranked(
-            scan_modes(tube.at(key, x), sequence.solve_for, side=side, options=scan_opts)
-        )
+    def scan(x):  # the modes in the order reached; none where the scan fails
+        try:
+            res = scan_modes(tube.at(key, x), sequence.solve_for, side=side, options=scan_opts)
+        except ElectrogrowthError:
+            return []
+        return _ranked(res)
 
     region = tuple(
         iv for iv in sequence.intervals if iv.kind == Kind.BIFURCATION and iv.mode in goal
