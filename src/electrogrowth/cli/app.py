@@ -93,6 +93,11 @@ COMMANDS: dict[str, tuple[str, Callable, Callable]] = {
         _lazy("curve", "configure_curve"),
         _lazy("curve", "run_curve"),
     ),
+    "design": (
+        "which value of one design variable gives the wanted pattern, with the widest margin",
+        _lazy("design", "configure_design"),
+        _lazy("design", "run_design"),
+    ),
     "reproduce": (
         "the paper's Figures 4-10, the 3D patterns of Figs 9B/10B and an index page",
         _lazy("reproduce", "configure_reproduce"),

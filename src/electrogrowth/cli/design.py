@@ -1,0 +1,180 @@
+"""``electrogrowth design``: which value of one design variable gives the target pattern,
+with the widest margin against the next pattern, and how sensitive that is.
+
+Registered in :data:`cli.COMMANDS` as ("...", configure_design, run_design). Prints the
+region, the switches, the best design and the sensitivities (``--json``: one JSON object);
+writes ``design_<target>_vs_<key>.csv`` (the first mode along the variable, switches
+located) and ``.png`` (the competing modes, the region shaded) into ``--out``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import re
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import ParameterError
+from ..model.layers import KEYS_TEXT
+from .options import (
+    add_control_options,
+    add_mode_range_options,
+    bounded_int,
+    check_side_option,
+    finite_number,
+    scan_options_from_args,
+)
+from .progress import add_quiet_option
+from .tube_input import add_any_tube_options, control_of
+
+PLOT_POINTS = 25  # critical values of each competing mode drawn at this many designs
+
+
+def configure_design(parser: argparse.ArgumentParser) -> None:
+    what = parser.add_argument_group("what to design")
+    add_control_options(what)
+    what.add_argument(
+        "--target",
+        nargs=2,
+        action="append",
+        type=bounded_int(0, 320),
+        metavar=("M", "N"),
+        help="the pattern wanted: mode (m, n) = (M, N) (repeat for a set of modes)",
+    )
+    what.add_argument(
+        "--target-set",
+        choices=("axisymmetric", "prismatic"),
+        help="the pattern wanted as a set: axisymmetric (m = 0) or prismatic (n = 0)",
+    )
+    what.add_argument(
+        "--vary",
+        nargs=3,
+        action="append",
+        required=True,
+        metavar=("KEY", "LO", "HI"),
+        help="the design variable and its range: outer_radius, length, growth, stretch or"
+        f" voltage; for a layered --tube any control or key ({KEYS_TEXT})",
+    )
+    what.add_argument(
+        "--points",
+        type=bounded_int(2, 2001),
+        default=9,
+        metavar="N",
+        help="grid points from LO to HI scanned before the switches between them are"
+        " located (default 9)",
+    )
+    add_any_tube_options(parser, outer_radius=1.4)
+    modes = parser.add_argument_group("modes u ~ cos(m theta) cos(n pi z / l)")
+    add_mode_range_options(modes)
+    parser.add_argument(
+        "--out",
+        type=Path,
+        default=None,
+        metavar="DIR",
+        help="directory for the CSV of the mode sequence and the PNG (none by default)",
+    )
+    parser.add_argument("--json", action="store_true", help="print one JSON object")
+    add_quiet_option(parser)
+
+
+def _vary(args) -> tuple[str, float, float]:
+    if len(args.vary) > 1:
+        raise ParameterError("two design variables are not supported yet")
+    key, lo, hi = args.vary[0]
+    try:
+        lo, hi = finite_number(lo), finite_number(hi)
+    except argparse.ArgumentTypeError as exc:
+        raise ParameterError(f"--vary {key}: {exc}") from None
+    if not lo < hi:
+        raise ParameterError(f"--vary {key} {lo:g} {hi:g}: need LO < HI")
+    return key, lo, hi
+
+
+def _target(args):
+    if (args.target is None) == (args.target_set is None):
+        raise ParameterError("give the pattern wanted: --target M N (repeatable) or --target-set")
+    if args.target_set is not None:
+        return args.target_set
+    modes = [tuple(t) for t in args.target]
+    return modes[0] if len(modes) == 1 else modes
+
+
+def run_design(args) -> int:
+    from ..design import design  # the numeric stack, after the options are checked
+    from ..design.sequence import check_vary
+
+    vary, target = _vary(args), _target(args)
+    check_side_option(args)
+    tube, solve_for = control_of(args)
+    check_vary(vary, tube, solve_for)  # the key and its range, before any work
+    tube = tube.at(vary[0], vary[1])
+    result = design(
+        tube,
+        solve_for,
+        target,
+        vary,
+        side=args.side,
+        options=scan_options_from_args(args),
+        points=args.points,
+    )
+    record = result.as_dict()
+    if args.out is not None:
+        record["files"] = [str(p) for p in _write(result, args.out)]
+    if args.json:
+        print(json.dumps(record))
+        return 0
+    print("\n".join(summary(result) + record.get("files", [])))
+    return 0
+
+
+def _write(result, out: Path) -> list[Path]:
+    from ..design.sequence import mode_values
+    from ..figures.design import plot_design
+
+    seq = result.sequence
+    name = re.sub(r"[^A-Za-z0-9]+", "_", result.target).strip("_")
+    stem = f"design_{name}_vs_{seq.key}".replace("[", "").replace("]", "")
+    csv = seq.curve.to_csv(out / f"{stem}.csv")
+    modes = {iv.mode for iv in seq.intervals if iv.kind == "bifurcation"}
+    modes |= {m for m in (result.mode, result.next_mode) if m is not None}
+    xs = np.linspace(seq.lo, seq.hi, PLOT_POINTS)
+    values = mode_values(
+        seq.curve.params, seq.solve_for, seq.key, sorted(modes), xs, side=seq.side
+    )
+    ax = plot_design(result, values, xs)
+    png = out / f"{stem}.png"
+    ax.figure.savefig(png, dpi=200)
+    return [csv, png]
+
+
+def summary(result) -> list[str]:
+    """Text lines: the sequence, the region, the best design, the largest sensitivities."""
+    seq = result.sequence
+    side = f" ({seq.side})" if seq.side else ""
+    lines = [f"target {result.target}: critical {seq.solve_for}{side} along {seq.key}"]
+    for iv in seq.intervals:
+        what = f"mode {iv.mode}" if iv.kind == "bifurcation" else iv.kind
+        lines.append(f"  {seq.key} {iv.lo:.10g} .. {iv.hi:.10g}: {what}")
+    for s in seq.switches:
+        lines.append(
+            f"  {s.kind} at {seq.key} = {s.x:.12g}: {s.mode_before} -> {s.mode_after},"
+            f" {seq.solve_for}_cr = {s.value:.12g}"
+        )
+    if result.status == "not_reached":
+        lines.append("  no target mode among the scanned modes: widen --m-max / --n-max")
+        return lines
+    best = "best design" if result.status == "found" else "never first; closest design"
+    lines.append(
+        f"  {best}: {seq.key} = {result.x:.10g}, mode {result.mode} at {seq.solve_for}_cr ="
+        f" {result.value:.10g}, margin {result.margin:.4g} to {result.next_mode}"
+        f" ({result.next_value:.10g})"
+    )
+    if result.to_boundary is not None:
+        lines.append(f"  distance to the region's boundary: {result.to_boundary:.6g}")
+    for p, d in sorted(result.sensitivity.items(), key=lambda kv: -abs(kv[1])):
+        dm = result.margin_sensitivity.get(p)
+        extra = "" if dm is None else f", d(margin)/d{p} = {dm:.6g}"
+        lines.append(f"  d{seq.solve_for}_cr/d{p} = {d:.6g}{extra}")
+    return lines

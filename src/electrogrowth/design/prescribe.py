@@ -1,0 +1,346 @@
+"""Pattern prescription along one design variable: where a target pattern comes first, the
+design with the widest margin against the next pattern, and its sensitivities.
+
+The margin at a design x (a value of the design variable) is the relative gap between the
+critical value v_T(x) of the target mode T and that of the next mode N, the first mode
+outside the target set reached after T:
+
+    M(x) = s (v_N(x) - v_T(x)) / |v_T(x)|,
+
+s = +1 where the control grows from its stable start (growth, voltage, stretch in extension,
+inflating pressure) and -1 where it falls (stretch in compression, axial force): M > 0
+exactly where T comes first, and M is the fraction by which the control can overshoot v_T
+before N could also wrinkle. The best design maximises M over the target's region. Where no
+x in [lo, hi] makes the target first, the closest design maximises M < 0 (the smallest
+relative gap) and N is the mode that beats T there. docs/design.md.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+from ..bifurcation.critical import critical_value
+from ..bifurcation.scan import ScanOptions, scan_modes
+from ..errors import ElectrogrowthError
+from ..outcomes import Kind
+from .sensitivity import sensitivities
+from .sequence import Interval, ModeSequence, check_vary, mode_sequence
+from .targets import Target, check_target
+
+FOUND = "found"  # the target comes first in its region; the best design has M > 0
+NOT_FIRST = "not_first"  # never first in [lo, hi]: the closest design (M < 0)
+NOT_REACHED = "not_reached"  # no target mode among the modes scanned anywhere
+REFINE_ROUNDS = 3  # a competitor missed by the refinement is added, at most this often
+XTOL = 1e-9  # relative accuracy of the best design
+
+
+@dataclasses.dataclass(frozen=True)
+class Design:
+    """Result of :func:`design` (module docstring for the margin M).
+
+    ``status`` FOUND: ``x`` is the design with the widest margin in the ``region`` (the
+    intervals where the target is first), ``mode`` is critical there at ``value`` and
+    ``next_mode`` comes next at ``next_value``; ``to_boundary`` is the distance from x to
+    the nearest end of the region (its intervals joined where they touch) that is a located
+    switch (None if both ends are the ends of the range). NOT_FIRST: no region; x is the
+    closest design, M < 0, and
+    ``next_mode`` beats the target there. NOT_REACHED: no target mode was found among the
+    scanned modes (x and the values are NaN). ``sensitivity``: d(value)/dp of the target
+    mode's critical value for every parameter p of the tube at x; ``margin_sensitivity``:
+    dM/dp from the two modes' sensitivities; ``next_sensitivity``: those of the next mode.
+    """
+
+    target: str
+    status: str
+    key: str
+    solve_for: str
+    region: tuple[Interval, ...]
+    x: float
+    mode: tuple[int, int] | None
+    value: float
+    margin: float
+    next_mode: tuple[int, int] | None
+    next_value: float
+    to_boundary: float | None
+    sensitivity: dict
+    next_sensitivity: dict
+    margin_sensitivity: dict
+    sequence: ModeSequence
+
+    def as_dict(self) -> dict:
+        num = lambda v: v if v is not None and math.isfinite(v) else None  # noqa: E731
+        return {
+            "target": self.target,
+            "status": self.status,
+            "vary": self.key,
+            "solve_for": self.solve_for,
+            "side": self.sequence.side,
+            "region": [iv.as_dict() for iv in self.region],
+            "switches": [s.as_dict() for s in self.sequence.switches],
+            "sequence": [iv.as_dict() for iv in self.sequence.intervals],
+            "best": {
+                "design": num(self.x),
+                "mode": None if self.mode is None else list(self.mode),
+                "value": num(self.value),
+                "margin": num(self.margin),
+                "next_mode": None if self.next_mode is None else list(self.next_mode),
+                "next_value": num(self.next_value),
+                "to_boundary": num(self.to_boundary),
+            },
+            "sensitivity": {
+                "value": {p: num(d) for p, d in self.sensitivity.items()},
+                "next_value": {p: num(d) for p, d in self.next_sensitivity.items()},
+                "margin": {p: num(d) for p, d in self.margin_sensitivity.items()},
+            },
+        }
+
+
+class _Margins:
+    """Critical values of single modes at designs x, cached, and the margin M(x)."""
+
+    def __init__(self, tube, solve_for, key, side):
+        self.tube, self.solve_for, self.key, self.side = tube, solve_for, key, side
+        self.sense = -1.0 if side == "compression" else 1.0
+        self.cache: dict = {}
+
+    def value(self, mode, x: float) -> float:
+        """The first critical value of ``mode`` at x; +-inf (never) if the threshold or no
+        bifurcation comes first."""
+        if (mode, x) not in self.cache:
+            try:
+                at = self.tube.at(self.key, x)
+                c = critical_value(at, *mode, self.solve_for, side=self.side)
+                v = c.value if c.kind == Kind.BIFURCATION else self.sense * math.inf
+            except ElectrogrowthError:
+                v = self.sense * math.inf
+            self.cache[mode, x] = v
+        return self.cache[mode, x]
+
+    def margin(self, mode, x: float, v_next: float) -> float:
+        v = self.value(mode, x)
+        return self.sense * (v_next - v) / abs(v) if math.isfinite(v) else -math.inf
+
+    def best_margin(self, mode, others, x: float) -> tuple[float, tuple | None]:
+        """(M, the next mode) at x over the competitors ``others``."""
+        if not others:
+            return math.inf, None
+        nxt = min(others, key=lambda o: self.sense * self.value(o, x))
+        return self.margin(mode, x, self.value(nxt, x)), nxt
+
+
+def _ranked(res) -> list[tuple[tuple[int, int], float]]:
+    """The modes of a scan in the order they are reached: [((m, n), value), ...]."""
+    out = []
+    c = res.critical
+    if c.kind == Kind.BIFURCATION:
+        out.append(((c.m, c.n), c.value))
+    out += [((r.m, r.n), r.value) for r in res.runners_up if r.family != "torsional"]
+    return out
+
+
+def design(
+    tube,
+    solve_for: str,
+    target,
+    vary: tuple[str, float, float],
+    *,
+    side: str | None = None,
+    options: ScanOptions = ScanOptions(),
+    points: int = 9,
+    rtol: float = 1e-12,
+    sequence: ModeSequence | None = None,
+) -> Design:
+    """The design x in [lo, hi] with the widest margin M for the target pattern.
+
+    Parameters
+    ----------
+    tube, solve_for, vary, side, options, points
+        As in :func:`mode_sequence` (``sequence``: its result, if already computed).
+    target : (m, n), list of (m, n), "axisymmetric" (m = 0), "prismatic" (n = 0) or callable
+        The pattern aimed at: a set of modes (a callable (m, n) -> bool).
+    rtol : float
+        Accuracy of the target evaluations behind the sensitivities.
+
+    Returns
+    -------
+    Design
+        The region, the best (or closest) design, its margin
+        M = s (v_next - v_target) / |v_target| (module docstring) and the sensitivities
+        dv/dp = -f_p / f_v of the target's critical value (design/sensitivity.py).
+    """
+    goal = check_target(target)
+    key, lo, hi = (
+        check_vary(vary) if sequence is None else (sequence.key, sequence.lo, sequence.hi)
+    )
+    if sequence is None:
+        sequence = mode_sequence(tube, solve_for, vary, side=side, options=options, points=points)
+    side = sequence.side
+    margins = _Margins(tube, sequence.solve_for, key, side)
+    scan_opts = dataclasses.replace(options, top=max(options.top, 6))
+
+    def scan(x):  # the modes in the order reached; none where the scan fails
+        try:
+            res = scan_modes(tube.at(key, x), sequence.solve_for, side=side, options=scan_opts)
+        except ElectrogrowthError:
+            return []
+        return _ranked(res)
+
+    region = tuple(
+        iv for iv in sequence.intervals if iv.kind == Kind.BIFURCATION and iv.mode in goal
+    )
+    grid = sorted(set(float(x) for x in sequence.curve.x))
+    if region:
+        status, best = FOUND, _best_in_region(region, grid, goal, margins, scan)
+    else:
+        status, best = NOT_FIRST, _closest(grid, goal, margins, scan, lo, hi)
+    if best is None:
+        return _unreached(goal, key, sequence, region)
+    x, mode, others = best
+    m_x, nxt = margins.best_margin(mode, others, x)
+    v = margins.value(mode, x)
+    v_next = margins.value(nxt, x) if nxt is not None else math.nan
+    at = tube.at(key, x)
+    sens = sensitivities(at, mode, sequence.solve_for, v, rtol=rtol)
+    sens_next, sens_margin = {}, {}
+    if nxt is not None and math.isfinite(v_next):
+        sens_next = sensitivities(at, nxt, sequence.solve_for, v_next, rtol=rtol)
+        scale = margins.sense * math.copysign(1.0, v) / v**2  # dM = s sgn(v)(v dv_N - v_N dv)/v^2
+        sens_margin = {p: scale * (v * sens_next[p] - v_next * sens[p]) for p in sens}
+    span = _span(region, x)
+    ends = (
+        []
+        if span is None
+        else [abs(x - span.lo)] * (not span.lo_edge) + [abs(span.hi - x)] * (not span.hi_edge)
+    )
+    return Design(
+        goal.name,
+        status,
+        key,
+        sequence.solve_for,
+        region,
+        x,
+        mode,
+        v,
+        m_x,
+        nxt,
+        v_next,
+        min(ends) if ends else None,
+        sens,
+        sens_next,
+        sens_margin,
+        sequence,
+    )
+
+
+def _span(region, x: float) -> Interval | None:
+    """The region's intervals joined where they touch (a set's modes side by side), the one
+    holding x."""
+    spans: list[Interval] = []
+    for iv in region:
+        if spans and spans[-1].hi == iv.lo:
+            last = spans.pop()
+            iv = dataclasses.replace(iv, lo=last.lo, lo_edge=last.lo_edge)
+        spans.append(iv)
+    return next((sp for sp in spans if sp.contains(x)), None)
+
+
+def _unreached(goal: Target, key, sequence, region) -> Design:
+    nan = math.nan
+    return Design(
+        goal.name, NOT_REACHED, key, sequence.solve_for, region, nan, None, nan, nan, None,
+        nan, None, {}, {}, {}, sequence,
+    )  # fmt: skip
+
+
+def _best_in_region(region, grid, goal: Target, margins: _Margins, scan):
+    """(x, target mode, competitors) of the widest margin over the region's intervals."""
+    best = None
+    for iv in region:
+        inside = [x for x in grid if iv.lo < x < iv.hi] + [0.5 * (iv.lo + iv.hi)]
+        if iv.lo_edge:
+            inside.append(iv.lo)
+        if iv.hi_edge:
+            inside.append(iv.hi)
+        inside = sorted(set(inside))
+        others = set()
+        for x in inside:
+            others |= set(_competitors(iv.mode, scan(x), goal))
+        others = tuple(sorted(others))
+        if not others:
+            continue
+        scores = [margins.best_margin(iv.mode, others, x)[0] for x in inside]
+        i = max(range(len(inside)), key=scores.__getitem__)
+        a = inside[i - 1] if i > 0 else iv.lo
+        b = inside[i + 1] if i + 1 < len(inside) else iv.hi
+        x, others = _refine(iv.mode, others, a, b, inside[i], goal, margins, scan)
+        score = margins.best_margin(iv.mode, others, x)[0]
+        if best is None or score > best[0]:
+            best = (score, x, iv.mode, others)
+    return None if best is None else best[1:]
+
+
+def _closest(grid, goal: Target, margins: _Margins, scan, lo, hi):
+    """(x, target mode, competitors ahead of it) where the best target mode comes closest
+    to first: M < 0 maximised."""
+    scored = []
+    for x in grid:
+        ranked = scan(x)
+        for mode in goal.modes:  # listed modes beyond the scan's top: solved directly
+            if all(r[0] != mode for r in ranked) and math.isfinite(margins.value(mode, x)):
+                ranked.append((mode, margins.value(mode, x)))
+        hits = [(mode, v) for mode, v in ranked if mode in goal]
+        if not hits:
+            continue
+        mode, v = min(hits, key=lambda h: margins.sense * h[1])
+        ahead = tuple(m for m, w in ranked if m not in goal and margins.sense * (w - v) < 0)
+        if ahead:
+            scored.append((margins.best_margin(mode, ahead, x)[0], x, mode, ahead))
+    if not scored:
+        return None
+    j = max(range(len(scored)), key=lambda k: scored[k][0])
+    _, x0, mode, ahead = scored[j]
+    a = b = x0
+    others = set(ahead)
+    if j > 0 and scored[j - 1][2] == mode:
+        a, others = scored[j - 1][1], others | set(scored[j - 1][3])
+    if j + 1 < len(scored) and scored[j + 1][2] == mode:
+        b, others = scored[j + 1][1], others | set(scored[j + 1][3])
+    x, others = _refine(mode, tuple(sorted(others)), a, b, x0, goal, margins, scan)
+    return x, mode, others
+
+
+def _competitors(mode, ranked, goal: Target) -> list:
+    """The modes of a scan that decide M for ``mode``: every non-target mode ahead of it
+    and the first one after it."""
+    out, passed = [], False
+    for m, _ in ranked:
+        passed = passed or m == mode
+        if m not in goal:
+            out.append(m)
+            if passed:
+                break
+    return out
+
+
+def _refine(mode, others, a, b, x0, goal: Target, margins: _Margins, scan):
+    """Maximise M over [a, b] by bounded Brent from the grid's best x0; a competitor that a
+    scan at the optimum finds but ``others`` lacks is added and the maximisation repeated."""
+    from scipy.optimize import minimize_scalar
+
+    x = x0
+    for _ in range(REFINE_ROUNDS):
+        if b > a:
+            res = minimize_scalar(
+                lambda t, others=others: -margins.best_margin(mode, others, t)[0],
+                bounds=(a, b),
+                method="bounded",
+                options={"xatol": XTOL * max(1.0, abs(x0))},
+            )
+            better = -res.fun >= margins.best_margin(mode, others, x0)[0]
+            x = float(res.x) if better else x0
+        missing = [m for m in _competitors(mode, scan(x), goal) if m not in others]
+        if not missing:
+            break
+        others = tuple(sorted(set(others) | set(missing)))
+    return x, others

@@ -1,0 +1,287 @@
+"""The first mode along one design variable: intervals of one pattern and the switches.
+
+``mode_sequence`` runs :func:`bifurcation.critical_curve` over a grid of the design variable
+``key`` (any key the tube's ``.at`` accepts) and reads the curve as a sequence of intervals,
+each with the pattern that comes first there: a mode (m, n), the exact short-wave limit
+("surface") or the loss of the axisymmetric state ("threshold"). The switch between two
+intervals is the curve's own location (bifurcation/curves.py): Brent's method on the
+two-mode condition s (v_A(x) - v_B(x)) = 0, each v the critical value of one fixed mode, to
+an x tolerance of 1e-13 relative; it is not computed a second time here.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+
+from ..bifurcation.curves import ALONG, Curve, check_curve, critical_curve
+from ..bifurcation.scan import ScanOptions
+from ..errors import ElectrogrowthError, ParameterError
+from ..model.layers import KEYS_TEXT, Tube
+from ..outcomes import NO_MODE, Kind, Status
+
+MIN_POINTS, MAX_POINTS = 2, 2001
+
+
+@dataclasses.dataclass(frozen=True)
+class Interval:
+    """``key`` in [lo, hi] (in the order of the grid, lo < hi) has ``mode`` (m, n) first,
+    kind "bifurcation"; or kind "surface" (the short-wave limit), "threshold" (no mode
+    before the axisymmetric state is lost) or "failed" (mode (-1, -1)). ``lo_edge`` and
+    ``hi_edge`` say whether an end is the end of the searched range (else a located switch,
+    or, after a failed point, a grid point)."""
+
+    lo: float
+    hi: float
+    mode: tuple[int, int]
+    kind: str
+    lo_edge: bool = False
+    hi_edge: bool = False
+
+    def contains(self, x: float) -> bool:
+        return self.lo <= x <= self.hi
+
+    def as_dict(self) -> dict:
+        finite = self.kind == Kind.BIFURCATION
+        return {
+            "lo": self.lo,
+            "hi": self.hi,
+            "mode": list(self.mode) if finite else None,
+            "kind": str(self.kind),
+            "lo_edge": self.lo_edge,
+            "hi_edge": self.hi_edge,
+        }
+
+
+@dataclasses.dataclass(frozen=True)
+class SequenceSwitch:
+    """The first pattern changes at ``x`` from ``mode_before`` to ``mode_after`` (grid
+    order; (-1, -1): the short-wave limit or the threshold). ``kind`` "switch": both are
+    equally critical there, at ``value``; "end": the branch before ends without a crossing
+    (a jump: ``value`` and ``value_after`` are the one-sided limits, or the threshold)."""
+
+    x: float
+    mode_before: tuple[int, int]
+    mode_after: tuple[int, int]
+    value: float
+    value_after: float
+    kind: str
+
+    def as_dict(self) -> dict:
+        return {
+            "x": self.x,
+            "mode_before": list(self.mode_before),
+            "mode_after": list(self.mode_after),
+            "value": self.value,
+            "value_after": self.value_after,
+            "kind": str(self.kind),
+        }
+
+
+@dataclasses.dataclass(frozen=True)
+class ModeSequence:
+    """Result of :func:`mode_sequence`: the intervals of ``key`` in [lo, hi] with their first
+    pattern, in increasing ``key``, the switches between them, and the underlying curve."""
+
+    key: str
+    lo: float
+    hi: float
+    solve_for: str
+    side: str | None
+    intervals: tuple[Interval, ...]
+    switches: tuple[SequenceSwitch, ...]
+    curve: Curve
+
+    def interval_at(self, x: float) -> Interval | None:
+        """The (first) interval holding x, or None."""
+        return next((iv for iv in self.intervals if iv.contains(x)), None)
+
+    def as_dict(self) -> dict:
+        return {
+            "key": self.key,
+            "range": [self.lo, self.hi],
+            "solve_for": self.solve_for,
+            "side": self.side,
+            "intervals": [iv.as_dict() for iv in self.intervals],
+            "switches": [s.as_dict() for s in self.switches],
+        }
+
+    def to_xarray(self):
+        """Intervals (dimension interval) and switches (dimension switch) as an
+        ``xarray.Dataset`` (needs xarray, the ``sweep`` extra)."""
+        from ..labelled import xarray
+
+        xr = xarray()
+        key = {"units": "1", "long_name": f"design variable {self.key}"}
+        value = {"units": "1", "long_name": f"critical {self.solve_for} at the switch"}
+        mode = {"units": "1", "long_name": "(m, n); (-1, -1): no finite mode"}
+        return xr.Dataset(
+            {
+                "lo": ("interval", [iv.lo for iv in self.intervals], key),
+                "hi": ("interval", [iv.hi for iv in self.intervals], key),
+                "mode": (
+                    ("interval", "mn"),
+                    np.array([iv.mode for iv in self.intervals], int).reshape(-1, 2),
+                    mode,
+                ),
+                "kind": ("interval", [str(iv.kind) for iv in self.intervals]),
+                "switch_x": ("switch", [s.x for s in self.switches], key),
+                "switch_value": ("switch", [s.value for s in self.switches], value),
+                "switch_mode_before": (
+                    ("switch", "mn"),
+                    np.array([s.mode_before for s in self.switches], int).reshape(-1, 2),
+                    mode,
+                ),
+                "switch_mode_after": (
+                    ("switch", "mn"),
+                    np.array([s.mode_after for s in self.switches], int).reshape(-1, 2),
+                    mode,
+                ),
+                "switch_kind": ("switch", [str(s.kind) for s in self.switches]),
+            },
+            attrs={"key": self.key, "solve_for": self.solve_for, "side": self.side or ""},
+        )
+
+
+def check_vary(vary, tube=None, solve_for: str | None = None) -> tuple[str, float, float]:
+    """(key, lo, hi) with lo < hi finite, or ParameterError; with ``tube`` and
+    ``solve_for`` also a key of the tube other than the unknown, at both ends in range."""
+    if not isinstance(vary, (tuple, list)) or len(vary) != 3 or not isinstance(vary[0], str):
+        raise ParameterError(f"vary = {vary!r} is invalid; give (key, lo, hi)")
+    key, lo, hi = vary
+    ok = all(
+        not isinstance(v, bool) and isinstance(v, (int, float)) and math.isfinite(v)
+        for v in (lo, hi)
+    )
+    if not ok or not lo < hi:
+        raise ParameterError(
+            f"vary range {lo!r} to {hi!r} of {key} is invalid; need finite numbers lo < hi"
+        )
+    if tube is not None:
+        if not isinstance(tube, Tube) and key not in ALONG:
+            raise ParameterError(
+                f"vary key {key!r} is unknown for a one-layer tube; choose one of"
+                f" {', '.join(ALONG)} (a layered Tube has more)"
+            )
+        if isinstance(tube, Tube) and not (key in ("length", "outer_pressure") or "[" in key):
+            try:
+                tube.check_control(key)
+            except ParameterError:
+                raise ParameterError(
+                    f"vary key {key!r} is not a key of this tube; valid: a control (growth[K],"
+                    f" growth[K].theta, stretch, voltage, pressure, force) or {KEYS_TEXT}"
+                ) from None
+        check_curve(solve_for, key, tube)
+        tube.at(key, lo)
+        tube.at(key, hi)
+    return key, float(lo), float(hi)
+
+
+def check_points(points) -> int:
+    if isinstance(points, bool) or not isinstance(points, int):
+        raise ParameterError(f"points = {points!r} is not an integer")
+    if not MIN_POINTS <= points <= MAX_POINTS:
+        raise ParameterError(
+            f"points = {points} is out of range; valid range: {MIN_POINTS} to {MAX_POINTS}"
+        )
+    return points
+
+
+def mode_sequence(
+    tube,
+    solve_for: str,
+    vary: tuple[str, float, float],
+    *,
+    side: str | None = None,
+    options: ScanOptions = ScanOptions(),
+    points: int = 9,
+    progress=None,
+) -> ModeSequence:
+    """The first pattern as the design variable runs over [lo, hi], switches located.
+
+    Parameters
+    ----------
+    tube : TubeParameters or Tube
+        The tube; ``solve_for`` is the unknown, ``vary[0]`` is overridden.
+    solve_for : str
+        The control whose critical value decides which pattern comes first (as in
+        :func:`scan_modes`; ``side`` for the stretch, pressure and force).
+    vary : (key, lo, hi)
+        The design variable: any key ``tube.at`` accepts (TubeParameters: outer_radius,
+        length, growth, stretch, voltage; Tube also layers[K].thickness, ... see
+        :meth:`Tube.at`), and its range.
+    options : ScanOptions
+        The modes each scan examines.
+    points : int
+        Grid points, evenly spaced on [lo, hi], scanned (or followed) before the switches
+        between them are located; an interval narrower than the spacing can be missed.
+
+    Returns
+    -------
+    ModeSequence
+
+    Examples
+    --------
+    >>> from electrogrowth import ScanOptions, TubeParameters
+    >>> seq = mode_sequence(TubeParameters(), "stretch", ("outer_radius", 1.2, 1.3),
+    ...                     side="compression", points=2, options=ScanOptions((0, 2), (1, 2)))
+    >>> [(iv.mode, round(iv.lo, 6), round(iv.hi, 6)) for iv in seq.intervals]
+    [((1, 1), 1.2, 1.256361), ((0, 1), 1.256361, 1.3)]
+    """
+    key, lo, hi = check_vary(vary, tube, solve_for)
+    points = check_points(points)
+    xs = np.linspace(lo, hi, points)
+    curve = critical_curve(tube, solve_for, key, xs, side=side, options=options, progress=progress)
+    return from_curve(curve, key, lo, hi)
+
+
+def _label(curve: Curve, i: int) -> tuple[tuple[int, int], str]:
+    """The pattern of row i: (mode, kind) with kind bifurcation, surface, threshold or
+    failed; a switch or end row takes its mode's kind."""
+    mode = (int(curve.m[i]), int(curve.n[i]))
+    if curve.kind[i] == Status.FAILED:
+        return NO_MODE, str(Status.FAILED)
+    if bool(curve.surface[i]):
+        return NO_MODE, str(Kind.SURFACE)
+    if mode == NO_MODE:
+        return NO_MODE, str(Kind.THRESHOLD)
+    return mode, str(Kind.BIFURCATION)
+
+
+def from_curve(curve: Curve, key: str, lo: float, hi: float) -> ModeSequence:
+    """The intervals of constant first pattern of a curve, and its located changes."""
+    runs: list[list] = []  # [mode, kind, x_first, x_last]
+    for i, x in enumerate(curve.x):
+        mode, kind = _label(curve, i)
+        if runs and runs[-1][:2] == [mode, kind]:
+            runs[-1][3] = float(x)
+        else:
+            runs.append([mode, kind, float(x), float(x)])
+    intervals = tuple(Interval(a, b, mode, kind, a == lo, b == hi) for mode, kind, a, b in runs)
+    changes = sorted(curve.switches + curve.ends, key=lambda s: s.x)
+    switches = tuple(
+        SequenceSwitch(s.x, s.mode_before, s.mode_after, s.value, s.value_after, s.kind)
+        for s in changes
+    )
+    return ModeSequence(key, lo, hi, curve.solve_for, curve.side, intervals, switches, curve)
+
+
+def mode_values(tube, solve_for: str, key: str, modes, xs, *, side: str | None = None) -> dict:
+    """{(m, n): array of the first critical value of that mode at each ``key`` = x of
+    ``xs``} (NaN where the mode does not wrinkle before the threshold, or fails): the
+    competing branches behind a :class:`ModeSequence`, e.g. for its plot."""
+    from ..bifurcation.critical import critical_value
+
+    out = {}
+    for mode in modes:
+        vals = []
+        for x in xs:
+            try:
+                c = critical_value(tube.at(key, x), *mode, solve_for, side=side)
+                vals.append(c.value if c.kind == Kind.BIFURCATION else math.nan)
+            except ElectrogrowthError:
+                vals.append(math.nan)
+        out[tuple(mode)] = np.array(vals)
+    return out

@@ -1,0 +1,267 @@
+"""Design along one variable (src/electrogrowth/design/): the mode sequence's switches
+against bisection of full scans and against collocation, the switch condition, the
+sensitivities against finite differences of full critical-value solves, the margin against
+direct solves, the target sets, and the command line."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+from electrogrowth import Layer, ScanOptions, Tube, TubeParameters, critical_value, gent
+from electrogrowth.basestate.tube import solve_base_state
+from electrogrowth.bifurcation.scan import scan_grid, scan_modes, stable_signs
+from electrogrowth.cli.app import main
+from electrogrowth.design import design, mode_sequence
+from electrogrowth.design.sensitivity import key_value, sensitivities
+from electrogrowth.design.targets import check_target
+from electrogrowth.errors import ParameterError
+from electrogrowth.incremental.targets import impedance_targets
+
+SMALL = ScanOptions((0, 2), (1, 2))
+TUBE = TubeParameters()  # uncharged, ungrown, L = 1: axial compression
+VARY = ("outer_radius", 1.2, 1.3)
+
+
+@pytest.fixture(scope="module")
+def sequence():
+    return mode_sequence(TUBE, "stretch", VARY, side="compression", points=2, options=SMALL)
+
+
+def _first(x: float) -> tuple[int, int]:
+    c = scan_modes(TUBE.at("outer_radius", x), "stretch", side="compression", options=SMALL)
+    return c.critical.m, c.critical.n
+
+
+def test_switch_equals_bisection_of_full_scans(sequence):
+    (s,) = sequence.switches
+    assert (s.mode_before, s.mode_after) == ((1, 1), (0, 1))
+    lo, hi = VARY[1:]
+    assert _first(lo) == (1, 1) and _first(hi) == (0, 1)
+    while hi - lo > 2e-9:  # the scans themselves, not the two-mode condition
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if _first(mid) == (1, 1) else (lo, mid)
+    assert abs(s.x - 0.5 * (lo + hi)) < 1e-8
+    iv = sequence.intervals
+    assert [i.mode for i in iv] == [(1, 1), (0, 1)]
+    assert iv[0].hi == iv[1].lo == s.x and iv[0].lo_edge and iv[1].hi_edge
+
+
+def test_at_a_switch_both_modes_are_critical_and_no_other_is_earlier(sequence):
+    (s,) = sequence.switches
+    at = TUBE.at("outer_radius", s.x)
+    a = critical_value(at, 1, 1, "stretch", side="compression").value
+    b = critical_value(at, 0, 1, "stretch", side="compression").value
+    assert abs(a - b) < 1e-8 and abs(a - s.value) < 1e-8
+    scan = scan_modes(at, "stretch", side="compression", options=SMALL)
+    assert (scan.critical.m, scan.critical.n) in ((1, 1), (0, 1))
+    assert abs(scan.critical.value - s.value) < 1e-8
+    # every scanned mode on its stable side just before the common value (compression:
+    # lambda_z falls from 1, so just before is just above)
+    grid = scan_grid(SMALL.m_range, SMALL.n_range, False, (True, True))
+    signs = stable_signs(SMALL.m_range, SMALL.n_range, False, (True, True))
+    f = impedance_targets(solve_base_state(at.at("stretch", s.value + 1e-7)), grid)
+    assert np.all(signs * f > 0)
+
+
+def test_switch_agrees_with_collocation_at_the_switch(sequence):
+    """The independent route: the collocation target of each mode changes sign across the
+    common value, within 1e-9 of it (the full collocation solves are the slow twin)."""
+    from electrogrowth.incremental.targets import collocation_targets
+
+    (s,) = sequence.switches
+    at = TUBE.at("outer_radius", s.x)
+    for mode in ((1, 1), (0, 1)):
+        below, above = (
+            collocation_targets(solve_base_state(at.at("stretch", s.value + d)), [mode])[0]
+            for d in (-1e-9, 1e-9)
+        )
+        assert below * above < 0, mode
+
+
+@pytest.mark.slow
+def test_switch_agrees_with_collocation_solves(sequence):
+    (s,) = sequence.switches
+    at = TUBE.at("outer_radius", s.x)
+    for mode in ((1, 1), (0, 1)):
+        c = critical_value(at, *mode, "stretch", side="compression", method="collocation")
+        assert abs(c.value - s.value) < 1e-8, mode
+
+
+def _fd(tube, mode, solve_for, key, h=1e-4):
+    """Richardson-extrapolated central difference of full critical_value solves."""
+    p = key_value(tube, key)
+    h *= max(1.0, abs(p))
+
+    def v(q):
+        return critical_value(tube.at(key, q), *mode, solve_for).value
+
+    return (8 * (v(p + h / 2) - v(p - h / 2)) - (v(p + h) - v(p - h))) / (6 * h)
+
+
+def test_sensitivities_equal_finite_differences_one_layer():
+    tube = TubeParameters(outer_radius=1.25, voltage=0.2, stretch=0.9)
+    c = critical_value(tube, 1, 1, "growth")
+    sens = sensitivities(tube, (1, 1), "growth", c.value)
+    assert set(sens) == {"outer_radius", "length", "stretch", "voltage"}
+    for key in ("outer_radius", "voltage", "length"):
+        ref = _fd(tube, (1, 1), "growth", key)
+        assert abs(sens[key] - ref) < 1e-6 * abs(ref), key
+
+
+def test_sensitivities_equal_finite_differences_bilayer():
+    tube = Tube(
+        [Layer(1.1, shear_modulus=10.0, growth=(1.0, 1.2, 1.0)), Layer(2.0, material=gent(97.2))],
+        length=3.0,
+        voltage=0.3,
+    )
+    c = critical_value(tube, 12, 1, "growth[1].theta")
+    keys = ("layers[1].shear_modulus", "voltage", "layers[2].thickness")
+    sens = sensitivities(tube, (12, 1), "growth[1].theta", c.value, keys=keys)
+    for key in keys:
+        ref = _fd(tube, (12, 1), "growth[1].theta", key)
+        assert abs(sens[key] - ref) < 1e-6 * abs(ref), key
+
+
+def test_design_widest_margin_in_the_region(sequence):
+    d = design(TUBE, "stretch", (1, 1), VARY, sequence=sequence, options=SMALL)
+    assert d.status == "found" and d.mode == (1, 1)
+    assert [(iv.lo, iv.hi) for iv in d.region] == [(1.2, sequence.switches[0].x)]
+
+    def margin(x):  # M = s (v_next - v) / |v|, s = -1 in compression, by direct solves
+        at = TUBE.at("outer_radius", x)
+        v = critical_value(at, 1, 1, "stretch", side="compression").value
+        others = [critical_value(at, *m, "stretch", side="compression").value
+                  for m in ((0, 1), (2, 1))]  # fmt: skip
+        return min(-(w - v) / abs(v) for w in others)
+
+    assert abs(d.margin - margin(d.x)) < 1e-8
+    assert d.margin > 0
+    for x in (1.2, 1.205, 1.23, 1.25, d.x - 1e-4, d.x + 1e-4):
+        assert margin(x) <= d.margin + 1e-9, x
+    assert abs(d.to_boundary - (sequence.switches[0].x - d.x)) < 1e-12
+    # the margin's sensitivity from the two modes' sensitivities
+    v, w = d.value, d.next_value
+    expect = -(v * d.next_sensitivity["length"] - w * d.sensitivity["length"]) / v**2
+    assert d.margin_sensitivity["length"] == pytest.approx(expect, rel=1e-12)
+
+
+def test_design_never_first_names_the_closest_design(sequence):
+    d = design(TUBE, "stretch", (0, 2), VARY, sequence=sequence, options=SMALL)
+    assert d.status == "not_first" and d.region == () and d.margin < 0
+    at = TUBE.at("outer_radius", d.x)
+    scan = scan_modes(at, "stretch", side="compression", options=SMALL)
+    assert d.next_mode == (scan.critical.m, scan.critical.n)
+    v = critical_value(at, 0, 2, "stretch", side="compression").value
+    assert d.margin == pytest.approx(-(scan.critical.value - v) / abs(v), abs=1e-8)
+
+
+def test_target_sets():
+    axi = check_target("axisymmetric")
+    assert (0, 3) in axi and (1, 1) not in axi
+    assert (4, 0) in check_target("prismatic") and (4, 1) not in check_target("prismatic")
+    assert (1, 2) in check_target([(0, 1), (1, 2)])
+    assert (2, 1) in check_target(lambda m, n: m == 2)
+    for bad in ("helical", (1, -1), [], 3):
+        with pytest.raises(ParameterError):
+            check_target(bad)
+
+
+def test_cli_design_json(capsys, tmp_path):
+    args = ["design", "--solve-for", "stretch", "--side", "compression", "--target", "0", "1"]
+    args += ["--vary", "outer_radius", "1.2", "1.3", "--points", "2", "--m-max", "2"]
+    args += ["--n-max", "2", "--json", "--out", str(tmp_path)]
+    assert main(args) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["target"] == "(0, 1)" and out["best"]["mode"] == [0, 1]
+    assert out["region"][0]["lo"] == pytest.approx(1.2563609916543, abs=1e-10)
+    (s,) = out["switches"]
+    assert s["mode_before"] == [1, 1] and s["mode_after"] == [0, 1]
+    assert set(out["sensitivity"]["value"]) == {"outer_radius", "length", "growth", "voltage"}
+    assert math.isfinite(out["best"]["margin"]) and out["best"]["margin"] > 0
+    assert sorted(p.rsplit(".", 1)[1] for p in out["files"]) == ["csv", "png"]
+
+
+@pytest.mark.parametrize(
+    "extra, words",
+    [
+        (["--vary", "length", "1", "2"], "two design variables are not supported yet"),
+        (["--target-set", "prismatic"], "--target M N (repeatable) or --target-set"),
+    ],
+)
+def test_cli_design_bad_input(capsys, extra, words):
+    args = ["design", "--solve-for", "stretch", "--target", "0", "1"]
+    args += ["--vary", "outer_radius", "1.2", "1.3", *extra]
+    assert main(args) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("electrogrowth: error:") and words in err and "\n" not in err
+
+
+def test_cli_design_bad_range(capsys):
+    args = ["design", "--solve-for", "stretch", "--target", "0", "1"]
+    assert main([*args, "--vary", "outer_radius", "1.3", "1.2"]) == 2
+    assert main([*args, "--vary", "outer_radius", "0.5", "1.2"]) == 2
+    assert main([*args, "--vary", "layers[1].thickness", "0.1", "0.2"]) == 2  # one layer
+    assert main([*args, "--vary", "outer_radius", "nan", "1.2"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 4 and all(e.startswith("electrogrowth: error:") for e in err)
+    assert "vary key 'layers[1].thickness' is unknown for a one-layer tube" in err[2]
+
+
+def test_public_design_is_the_function_after_the_subpackage_is_imported():
+    """design/ is imported above (from electrogrowth.design import ...), which binds the
+    subpackage on electrogrowth; the public name must stay the function."""
+    import electrogrowth
+
+    assert electrogrowth.design is design and callable(electrogrowth.design)
+    namespace: dict = {}
+    exec("from electrogrowth import *", namespace)  # noqa: S102 -- a literal, not data
+    assert namespace["design"] is design and namespace["mode_sequence"] is mode_sequence
+
+
+def test_sequence_records(sequence):
+    record = json.loads(json.dumps(sequence.as_dict()))
+    assert [iv["mode"] for iv in record["intervals"]] == [[1, 1], [0, 1]]
+    assert record["switches"][0]["x"] == sequence.switches[0].x
+    pytest.importorskip("xarray")
+    ds = sequence.to_xarray()
+    assert ds["switch_x"].values.tolist() == [sequence.switches[0].x]
+    assert ds["mode"].values.tolist() == [[1, 1], [0, 1]]
+    assert ds["hi"].values[0] == ds["lo"].values[1] == sequence.switches[0].x
+
+
+def test_design_for_a_set_joins_its_intervals(sequence):
+    d = design(TUBE, "stretch", [(1, 1), (0, 1)], VARY, sequence=sequence, options=SMALL)
+    assert d.status == "found" and len(d.region) == 2
+    assert d.to_boundary is None  # the set is first over the whole range
+    assert d.next_mode not in ((1, 1), (0, 1)) and d.margin > 0
+    at = TUBE.at("outer_radius", d.x)
+    v = critical_value(at, *d.mode, "stretch", side="compression").value
+    w = critical_value(at, *d.next_mode, "stretch", side="compression").value
+    assert d.margin == pytest.approx(-(w - v) / abs(v), abs=1e-9)
+    axi = design(TUBE, "stretch", "axisymmetric", VARY, sequence=sequence, options=SMALL)
+    assert [iv.mode for iv in axi.region] == [(0, 1)] and axi.mode == (0, 1)
+
+
+def test_a_wider_map_every_switch_agrees_with_collocation():
+    """Rbar_o from 1.1 to 1.5 in compression: every located switch is a common root of the
+    two modes' collocation targets (sign changes within 1e-9 of the common value)."""
+    from electrogrowth.incremental.targets import collocation_targets
+
+    seq = mode_sequence(
+        TUBE, "stretch", ("outer_radius", 1.1, 1.5), side="compression", points=9,
+        options=ScanOptions((0, 4), (1, 3)),
+    )  # fmt: skip
+    chain = [(s.mode_before, s.mode_after) for s in seq.switches]
+    assert chain == [((3, 1), (2, 1)), ((2, 1), (1, 1)), ((1, 1), (0, 1))]
+    for s in seq.switches:
+        at = TUBE.at("outer_radius", s.x)
+        for mode in (s.mode_before, s.mode_after):
+            below, above = (
+                collocation_targets(solve_base_state(at.at("stretch", s.value + d)), [mode])[0]
+                for d in (-1e-9, 1e-9)
+            )
+            assert below * above < 0, (s, mode)
