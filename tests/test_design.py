@@ -15,7 +15,7 @@ from electrogrowth import Layer, ScanOptions, Tube, TubeParameters, critical_val
 from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.bifurcation.scan import scan_grid, scan_modes, stable_signs
 from electrogrowth.cli.app import main
-from electrogrowth.design import design, mode_sequence
+from electrogrowth.design import mode_sequence, prescribe
 from electrogrowth.design.sensitivity import key_value, sensitivities
 from electrogrowth.design.targets import check_target
 from electrogrowth.errors import ParameterError
@@ -127,7 +127,7 @@ def test_sensitivities_equal_finite_differences_bilayer():
 
 
 def test_design_widest_margin_in_the_region(sequence):
-    d = design(TUBE, "stretch", (1, 1), VARY, sequence=sequence, options=SMALL)
+    d = prescribe(TUBE, "stretch", (1, 1), VARY, sequence=sequence, options=SMALL)
     assert d.status == "found" and d.mode == (1, 1)
     assert [(iv.lo, iv.hi) for iv in d.region] == [(1.2, sequence.switches[0].x)]
 
@@ -150,7 +150,7 @@ def test_design_widest_margin_in_the_region(sequence):
 
 
 def test_design_never_first_names_the_closest_design(sequence):
-    d = design(TUBE, "stretch", (0, 2), VARY, sequence=sequence, options=SMALL)
+    d = prescribe(TUBE, "stretch", (0, 2), VARY, sequence=sequence, options=SMALL)
     assert d.status == "not_first" and d.region == () and d.margin < 0
     at = TUBE.at("outer_radius", d.x)
     scan = scan_modes(at, "stretch", side="compression", options=SMALL)
@@ -211,15 +211,11 @@ def test_cli_design_bad_range(capsys):
     assert "vary key 'layers[1].thickness' is unknown for a one-layer tube" in err[2]
 
 
-def test_public_design_is_the_function_after_the_subpackage_is_imported():
-    """design/ is imported above (from electrogrowth.design import ...), which binds the
-    subpackage on electrogrowth; the public name must stay the function."""
+def test_public_names_are_the_functions():
+    """prescribe and mode_sequence are exported from the top (lazily) as the functions."""
     import electrogrowth
 
-    assert electrogrowth.design is design and callable(electrogrowth.design)
-    namespace: dict = {}
-    exec("from electrogrowth import *", namespace)  # noqa: S102 -- a literal, not data
-    assert namespace["design"] is design and namespace["mode_sequence"] is mode_sequence
+    assert electrogrowth.prescribe is prescribe and electrogrowth.mode_sequence is mode_sequence
 
 
 def test_sequence_records(sequence):
@@ -234,7 +230,7 @@ def test_sequence_records(sequence):
 
 
 def test_design_for_a_set_joins_its_intervals(sequence):
-    d = design(TUBE, "stretch", [(1, 1), (0, 1)], VARY, sequence=sequence, options=SMALL)
+    d = prescribe(TUBE, "stretch", [(1, 1), (0, 1)], VARY, sequence=sequence, options=SMALL)
     assert d.status == "found" and len(d.region) == 2
     assert d.to_boundary is None  # the set is first over the whole range
     assert d.next_mode not in ((1, 1), (0, 1)) and d.margin > 0
@@ -242,7 +238,7 @@ def test_design_for_a_set_joins_its_intervals(sequence):
     v = critical_value(at, *d.mode, "stretch", side="compression").value
     w = critical_value(at, *d.next_mode, "stretch", side="compression").value
     assert d.margin == pytest.approx(-(w - v) / abs(v), abs=1e-9)
-    axi = design(TUBE, "stretch", "axisymmetric", VARY, sequence=sequence, options=SMALL)
+    axi = prescribe(TUBE, "stretch", "axisymmetric", VARY, sequence=sequence, options=SMALL)
     assert [iv.mode for iv in axi.region] == [(0, 1)] and axi.mode == (0, 1)
 
 

@@ -14,8 +14,6 @@ command line in :mod:`electrogrowth.cli`; docs/architecture.md maps every module
 """
 
 import importlib
-import sys
-import types
 
 __version__ = "0.1.0"
 
@@ -33,7 +31,7 @@ _EXPORTS = {
     ".bifurcation.critical": ("CriticalPoint", "critical_value"),
     ".bifurcation.curves": ("Curve", "critical_curve"),
     ".bifurcation.scan": ("ScanOptions", "ScanResult", "scan_modes"),
-    ".design.prescribe": ("Design", "design"),
+    ".design.prescribe": ("Design", "prescribe"),
     ".design.sequence": ("ModeSequence", "mode_sequence"),
     ".errors": (
         "BaseStateError",
@@ -84,26 +82,6 @@ def __getattr__(name: str):
     return value
 
 
-class _Package(types.ModuleType):
-    """This package's module type. ``electrogrowth.design`` names both the subpackage
-    design/ and its entry point, the function :func:`design`. Importing a subpackage binds
-    it on its parent (``setattr(electrogrowth, "design", <package>)``), which would shadow
-    the function whenever design/ is imported first; this property keeps the public name
-    the function. The subpackage stays importable by its dotted name (sys.modules):
-    ``from electrogrowth.design import mode_sequence``."""
-
-    @property
-    def design(self):
-        return importlib.import_module(".design.prescribe", __name__).design
-
-    @design.setter
-    def design(self, subpackage) -> None:
-        pass  # the import system's binding of design/: kept in sys.modules only
-
-
-sys.modules[__name__].__class__ = _Package
-
-
 def __dir__() -> list[str]:
     return sorted(set(globals()) | set(__all__))
 
@@ -146,7 +124,7 @@ __all__ = [
     "ModeSequence",
     "mode_sequence",
     "Design",
-    "design",
+    "prescribe",
     "Curve",
     "critical_curve",
     "Method",

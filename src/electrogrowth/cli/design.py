@@ -102,7 +102,7 @@ def _target(args):
 
 
 def run_design(args) -> int:
-    from ..design import design  # the numeric stack, after the options are checked
+    from ..design import prescribe  # the numeric stack, after the options are checked
     from ..design.sequence import check_vary
 
     vary, target = _vary(args), _target(args)
@@ -110,7 +110,7 @@ def run_design(args) -> int:
     tube, solve_for = control_of(args)
     check_vary(vary, tube, solve_for)  # the key and its range, before any work
     tube = tube.at(vary[0], vary[1])
-    result = design(
+    result = prescribe(
         tube,
         solve_for,
         target,

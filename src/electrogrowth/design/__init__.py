@@ -6,13 +6,13 @@ May import ``bifurcation``, ``incremental``, ``basestate``, ``model``, ``outcome
 ``errors``; only ``cli`` and the package's ``__init__`` import it.
 """
 
-from .prescribe import Design, design
+from .prescribe import Design, prescribe
 from .sensitivity import sensitivities
 from .sequence import Interval, ModeSequence, SequenceSwitch, mode_sequence
 
 __all__ = [
     "Design",
-    "design",
+    "prescribe",
     "sensitivities",
     "Interval",
     "ModeSequence",

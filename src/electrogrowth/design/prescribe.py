@@ -139,7 +139,7 @@ def _ranked(res) -> list[tuple[tuple[int, int], float]]:
     return out
 
 
-def design(
+def prescribe(
     tube,
     solve_for: str,
     target,
