@@ -16,7 +16,6 @@ import math
 import sys
 import textwrap
 
-from ..bifurcation.scan import M_CAP, N_CAP
 from ..errors import ParameterError
 
 MAX_DIGITS, MIN_DIGITS = 12, 3
@@ -120,6 +119,8 @@ def edge_warning(result) -> str:
     edge of the final m or n range, else "" (the scan widens a range and searches m up to
     the cap; a mode on the edge may still hide a lower one beyond). At the cap itself
     raising --m-max / --n-max cannot help, and the warning says so."""
+    from ..bifurcation.scan import M_CAP, N_CAP  # start-up speed: `state` loads no kernel
+
     c = result.critical
     if c.kind != "bifurcation":
         return ""
