@@ -236,3 +236,34 @@ def test_blocks_tile_the_grid(shape, points, block, count):
     for b in blocks:
         cover[b] += 1
     assert len(blocks) == count and (cover == 1).all()
+
+
+def test_inaccurate_point_is_stored_as_inaccurate(tmp_path, monkeypatch):
+    """A critical value not certified to rtol (status INACCURATE from critical_value, here
+    injected at Rbar_o = 1.4) is stored with status "inaccurate", its value, mode and a
+    message; it is counted apart, and is no failure."""
+    import dataclasses
+
+    from electrogrowth.bifurcation import scan
+    from electrogrowth.outcomes import Status
+
+    real = scan.critical_value
+
+    def flagged(params, *args, **kwargs):
+        c = real(params, *args, **kwargs)
+        return (
+            dataclasses.replace(c, status=Status.INACCURATE) if params.outer_radius == 1.4 else c
+        )
+
+    monkeypatch.setattr(scan, "critical_value", flagged)
+    text = TINY.replace("stretch = [1.0, 1.2, 1.4]", "stretch = [1.0]")
+    text = text.replace("outer_radius = [1.4, 1.5, 1.6]", "outer_radius = [1.4, 1.5]")
+    summary = compute_sweep(parse_config(text), tmp_path / "i.zarr", workers=1, progress=False)
+    ds = open_results(tmp_path / "i.zarr")
+    bad, good = ds.sel(stretch=1.0, outer_radius=1.4), ds.sel(stretch=1.0, outer_radius=1.5)
+    assert str(bad["status"].values) == "inaccurate" and str(bad["kind"].values) == "bifurcation"
+    assert np.isfinite(bad["critical_value"]) and int(bad["m"]) >= 0
+    assert str(bad["message"].values).startswith("inaccurate: error estimate")
+    assert str(good["status"].values) == "ok" and str(good["message"].values) == ""
+    assert summary.counts["inaccurate"] == 1 and summary.counts["bifurcation"] == 1
+    assert summary.counts["failed"] == 0 and "1 inaccurate" in summary.text()

@@ -123,7 +123,7 @@ def compute_sweep(
                         " free space or fix the permissions and run the same command again"
                     ) from None
                 bar.update(len(result.points))
-                if any(p.status != Status.OK for p in result.points):
+                if any(_failed(p) for p in result.points):
                     bar.set_postfix_str(
                         f"last failure: {_first_failure(result)}"[:60], refresh=False
                     )
@@ -163,8 +163,13 @@ def _exit_with_parent(parent: int) -> None:
     threading.Thread(target=watch, name="exit-with-parent", daemon=True).start()
 
 
+def _failed(point) -> bool:
+    """A failure (an inaccurate point has a value: it is no failure)."""
+    return point.status in (Status.FAILED, Status.ERROR)
+
+
 def _first_failure(result: ChunkResult) -> str:
-    return next(p.message for p in result.points if p.status != Status.OK)
+    return next(p.message for p in result.points if _failed(p))
 
 
 #: Local worker processes per usable core at most: each holds the numeric stack (~300 MB),
