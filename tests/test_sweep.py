@@ -267,3 +267,29 @@ def test_inaccurate_point_is_stored_as_inaccurate(tmp_path, monkeypatch):
     assert str(good["status"].values) == "ok" and str(good["message"].values) == ""
     assert summary.counts["inaccurate"] == 1 and summary.counts["bifurcation"] == 1
     assert summary.counts["failed"] == 0 and "1 inaccurate" in summary.text()
+
+
+def test_compute_sweep_is_silent_by_default(tmp_path, capfd):
+    """The Python API prints nothing unless asked (progress=True shows the bar)."""
+    text = TINY.replace("stretch = [1.0, 1.2, 1.4]", "stretch = [1.0]")
+    text = text.replace("outer_radius = [1.4, 1.5, 1.6]", "outer_radius = [1.4]")
+    compute_sweep(parse_config(text), tmp_path / "quiet.zarr", workers=1)
+    assert capfd.readouterr() == ("", "")
+    compute_sweep(parse_config(text), tmp_path / "loud.zarr", workers=1, progress=True)
+    assert "sweep" in capfd.readouterr().err
+
+
+def test_sweep_command_bars_only_on_a_terminal(tmp_path, capfd, commands, monkeypatch):
+    text = TINY.replace("stretch = [1.0, 1.2, 1.4]", "stretch = [1.0]")
+    (tmp_path / "s.toml").write_text(
+        text.replace("outer_radius = [1.4, 1.5, 1.6]", "outer_radius = [1.4]")
+    )
+    argv = ["sweep", str(tmp_path / "s.toml"), "--workers", "1", "--out"]
+    assert commands([*argv, str(tmp_path / "a.zarr")]) == 0
+    assert capfd.readouterr().err == ""  # not a terminal: no bar
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
+    assert commands([*argv, str(tmp_path / "b.zarr"), "--quiet"]) == 0
+    assert capfd.readouterr().err == ""
+    assert commands([*argv, str(tmp_path / "c.zarr")]) == 0
+    out, err = capfd.readouterr()
+    assert "sweep" in err and "1 points (1 bifurcation)" in out

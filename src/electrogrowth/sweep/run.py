@@ -63,7 +63,7 @@ def compute_sweep(
     *,
     workers: int | None = None,
     scheduler: str | None = None,
-    progress: bool = True,
+    progress: bool = False,
     source_text: str = "",
 ) -> SweepSummary:
     """Run the sweep ``config`` (a :class:`sweep_config.SweepConfig`) into the store ``out``.
@@ -81,7 +81,8 @@ def compute_sweep(
         Address of a dask.distributed scheduler (``tcp://host:8786``); ``workers`` is then
         ignored.
     progress : bool
-        A tqdm progress bar (points done, rate, ETA) on stderr.
+        A tqdm progress bar (points done, rate, ETA) on stderr; off by default (the library
+        prints nothing unless asked; the command shows it on a terminal).
     source_text : str
         The sweep file as written, kept in the store's attributes.
 
