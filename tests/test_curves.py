@@ -272,10 +272,11 @@ def test_continuation_equals_full_scans(params, solve_for, along, grid, side, mo
         assert len(scans) < len(grid)
 
 
-def _fake_modes(monkeypatch, values, threshold=None):
+def _fake_modes(monkeypatch, values, threshold=None, inaccurate=()):
     """Replace the scans and single-mode solves by closed forms: ``values[mode](x)`` is the
     first critical value of a mode at voltage x (NaN: the mode is not reached before the
-    threshold, whose value is ``threshold(x)``)."""
+    threshold, whose value is ``threshold(x)``); the scans at the voltages ``inaccurate``
+    return a critical value of status "inaccurate"."""
     import math
     from types import SimpleNamespace
 
@@ -294,6 +295,7 @@ def _fake_modes(monkeypatch, values, threshold=None):
             crit = SimpleNamespace(kind="bifurcation", m=m, n=n, value=v)
         else:
             crit = SimpleNamespace(kind="threshold", m=-1, n=-1, value=threshold(at.voltage))
+        crit.status = "inaccurate" if at.voltage in inaccurate else "ok"
         return SimpleNamespace(
             critical=crit, runners_up=(), short_wave_limit=None, surface_instability=False
         )
@@ -369,3 +371,34 @@ def test_a_branch_that_meets_the_threshold_ends(monkeypatch):
     from electrogrowth.cli.curve import summary
 
     assert "then the threshold (axisymmetric state lost)" in "\n".join(summary(curve))
+
+
+def test_an_inaccurate_critical_value_stays_marked(monkeypatch, tmp_path):
+    """A grid point whose critical value is not certified (status "inaccurate" from
+    critical_value) keeps that status in the curve, its CSV, JSON and xarray; the others
+    stay "" (ok)."""
+    _fake_modes(monkeypatch, {(0, 1): lambda x: 1 + x}, inaccurate=(0.5,))
+    curve = _curve([0.1, 0.5, 0.9])
+    assert list(curve.status) == ["", "inaccurate", ""]
+    assert curve.inaccurate.tolist() == [False, True, False]
+    assert list(curve.kind) == ["bifurcation"] * 3  # still a value and a mode
+    assert json.loads(json.dumps(curve.as_dict()))["status"] == ["", "inaccurate", ""]
+    with curve.to_csv(tmp_path / "c.csv").open() as fh:
+        assert [r["status"] for r in csv.DictReader(fh)] == ["", "inaccurate", ""]
+    assert curve.to_xarray()["status"].values.tolist() == ["", "inaccurate", ""]
+
+
+def test_cli_warns_of_inaccurate_points_and_exits_0(monkeypatch, tmp_path, capsys):
+    from electrogrowth.cli import curve as cli_curve
+
+    _fake_modes(monkeypatch, {(0, 1): lambda x: 1 + x}, inaccurate=(0.5,))
+    real = cli_curve.critical_curve
+    monkeypatch.setattr(
+        cli_curve, "critical_curve", lambda *a, **k: real(*a, **{**k, "follow": False})
+    )
+    argv = ("--solve-for", "growth", "--along", "voltage", "--from", "0.1", "--to", "0.9")
+    args = _args(*argv, "--points", "3", "--out", str(tmp_path), "--json")
+    assert run_curve(args) == 0
+    out, err = capsys.readouterr()
+    assert json.loads(out)["status"] == ["", "inaccurate", ""]
+    assert err.count("\n") == 1 and "warning: 1 of 3 points are inaccurate" in err

@@ -94,3 +94,28 @@ def test_a_step_of_unknown_length_shows_the_time_it_has_taken(capsys, monkeypatc
     err = capsys.readouterr().err
     assert "electrogrowth: solving mode (0, 1) by collocation ... 00:01" in err
     assert "solving mode (0, 1) by collocation: done in 2." in err
+
+
+def test_pattern_names_its_stages_on_a_terminal(tmp_path, capsys, monkeypatch):
+    argv = [
+        "pattern", "--solve-for", "growth", "--outer-radius", "1.4", "--length", "1",
+        "--voltage", "0.4", "--m-max", "3", "--n-max", "2", "--out", str(tmp_path), "--json",
+    ]  # fmt: skip
+    assert main(argv) == 0
+    out, err = capsys.readouterr()
+    assert err == "" and json.loads(out)["m"] == 0  # not a terminal: nothing
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
+    assert main([*argv, "--quiet"]) == 0
+    assert capsys.readouterr().err == ""
+    assert main(argv) == 0
+    out, err = capsys.readouterr()
+    rec = json.loads(out)  # stdout: still the one JSON object
+    assert len(rec["files"]) == 3
+    lines = err.splitlines()
+    assert lines[0] == "electrogrowth: solving the critical mode (a scan of the modes) ..."
+    assert "electrogrowth: mode shape of (0, 1) through the wall ..." in lines
+    assert f"electrogrowth: 3D pattern and mode-shape plot into {tmp_path} ..." in lines
+    assert len([line for line in lines if ": done in " in line]) == 3
+    assert main([*argv[:-1], "--mode", "0", "1"]) == 0  # one mode, text output
+    out, err = capsys.readouterr()
+    assert err.startswith("electrogrowth: solving mode (0, 1) ...") and "mode (m, n)" in out

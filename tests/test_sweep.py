@@ -236,3 +236,60 @@ def test_blocks_tile_the_grid(shape, points, block, count):
     for b in blocks:
         cover[b] += 1
     assert len(blocks) == count and (cover == 1).all()
+
+
+def test_inaccurate_point_is_stored_as_inaccurate(tmp_path, monkeypatch):
+    """A critical value not certified to rtol (status INACCURATE from critical_value, here
+    injected at Rbar_o = 1.4) is stored with status "inaccurate", its value, mode and a
+    message; it is counted apart, and is no failure."""
+    import dataclasses
+
+    from electrogrowth.bifurcation import scan
+    from electrogrowth.outcomes import Status
+
+    real = scan.critical_value
+
+    def flagged(params, *args, **kwargs):
+        c = real(params, *args, **kwargs)
+        return (
+            dataclasses.replace(c, status=Status.INACCURATE) if params.outer_radius == 1.4 else c
+        )
+
+    monkeypatch.setattr(scan, "critical_value", flagged)
+    text = TINY.replace("stretch = [1.0, 1.2, 1.4]", "stretch = [1.0]")
+    text = text.replace("outer_radius = [1.4, 1.5, 1.6]", "outer_radius = [1.4, 1.5]")
+    summary = compute_sweep(parse_config(text), tmp_path / "i.zarr", workers=1, progress=False)
+    ds = open_results(tmp_path / "i.zarr")
+    bad, good = ds.sel(stretch=1.0, outer_radius=1.4), ds.sel(stretch=1.0, outer_radius=1.5)
+    assert str(bad["status"].values) == "inaccurate" and str(bad["kind"].values) == "bifurcation"
+    assert np.isfinite(bad["critical_value"]) and int(bad["m"]) >= 0
+    assert str(bad["message"].values).startswith("inaccurate: error estimate")
+    assert str(good["status"].values) == "ok" and str(good["message"].values) == ""
+    assert summary.counts["inaccurate"] == 1 and summary.counts["bifurcation"] == 1
+    assert summary.counts["failed"] == 0 and "1 inaccurate" in summary.text()
+
+
+def test_compute_sweep_is_silent_by_default(tmp_path, capfd):
+    """The Python API prints nothing unless asked (progress=True shows the bar)."""
+    text = TINY.replace("stretch = [1.0, 1.2, 1.4]", "stretch = [1.0]")
+    text = text.replace("outer_radius = [1.4, 1.5, 1.6]", "outer_radius = [1.4]")
+    compute_sweep(parse_config(text), tmp_path / "quiet.zarr", workers=1)
+    assert capfd.readouterr() == ("", "")
+    compute_sweep(parse_config(text), tmp_path / "loud.zarr", workers=1, progress=True)
+    assert "sweep" in capfd.readouterr().err
+
+
+def test_sweep_command_bars_only_on_a_terminal(tmp_path, capfd, commands, monkeypatch):
+    text = TINY.replace("stretch = [1.0, 1.2, 1.4]", "stretch = [1.0]")
+    (tmp_path / "s.toml").write_text(
+        text.replace("outer_radius = [1.4, 1.5, 1.6]", "outer_radius = [1.4]")
+    )
+    argv = ["sweep", str(tmp_path / "s.toml"), "--workers", "1", "--out"]
+    assert commands([*argv, str(tmp_path / "a.zarr")]) == 0
+    assert capfd.readouterr().err == ""  # not a terminal: no bar
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
+    assert commands([*argv, str(tmp_path / "b.zarr"), "--quiet"]) == 0
+    assert capfd.readouterr().err == ""
+    assert commands([*argv, str(tmp_path / "c.zarr")]) == 0
+    out, err = capfd.readouterr()
+    assert "sweep" in err and "1 points (1 bifurcation)" in out

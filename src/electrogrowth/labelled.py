@@ -35,7 +35,7 @@ VARIABLES = {
     "family": ("1", "mode family: wrinkle, prismatic (n = 0) or torsional (m = 0)"),
     "kind": ("1", "bifurcation, threshold, surface, switch or failed"),
     "surface": ("1", "1 where the critical point is the exact short-wave limit"),
-    "status": ("1", "why a point failed (empty where it did not)"),
+    "status": ("1", "why a point failed, or inaccurate (empty where it is ok)"),
 }
 #: the unit and name of each control / tube parameter
 PARAMETERS = {

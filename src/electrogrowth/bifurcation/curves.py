@@ -105,7 +105,9 @@ def _change_kind(a: CurvePoint, b: CurvePoint, v_before: float, v_after: float) 
 @dataclasses.dataclass(frozen=True)
 class CurvePoint:
     """One grid point: critical value and mode, kind "bifurcation", "threshold", "surface"
-    or "failed" (then ``status`` is the error message and value NaN), the runners-up
+    or "failed" (then ``status`` is the error message and value NaN; else ``status`` is
+    "" or "inaccurate": the critical value's error estimate exceeds the accuracy asked even
+    after refinement, :func:`bifurcation.critical_value`), the runners-up
     (m, n, value), whether the critical point is the short-wave limit (``surface``), and
     that limit where the scan computed it (else NaN)."""
 
@@ -181,6 +183,8 @@ class Curve:
     ``kind`` is "bifurcation" (mode m, n), "threshold" (m = n = -1: the axisymmetric state
     is lost first), "surface" (m = n = -1: the exact short-wave limit m, n -> infinity at a
     face comes first), "switch", "end" or "failed" (value NaN, ``status`` says why).
+    ``status`` starts with "inaccurate" where the critical value's error estimate exceeds
+    the accuracy asked even after refinement (``inaccurate`` marks those rows).
     ``surface`` marks the rows of the short-wave limit; ``short_wave_limit`` holds the limit
     where the scan computed it (NaN elsewhere). ``switches`` lists the crossings, ``ends``
     the branch ends that were located.
@@ -200,6 +204,12 @@ class Curve:
     surface: np.ndarray
     short_wave_limit: np.ndarray
     ends: tuple[Switch, ...] = ()
+
+    @property
+    def inaccurate(self) -> np.ndarray:
+        """Rows whose critical value is not certified to the rtol asked (boolean)."""
+        mark = str(Status.INACCURATE)
+        return np.array([s.split(";")[0] == mark for s in self.status], dtype=bool)
 
     def branches(self) -> list[tuple[tuple[int, int], np.ndarray]]:
         """Maximal runs of rows with one mode ((-1, -1): threshold), failed rows excluded:
@@ -458,9 +468,8 @@ def _located(points: list[CurvePoint], loc: _Locator, progress=None):
                 except Exception as exc:  # noqa: BLE001 -- keep the grid points
                     reraise_interrupt(exc)
                     new_rows, new_switches = [], []
-                    pt = dataclasses.replace(
-                        pt, status=f"switch from {prev.mode} not located: {_message(exc)}"
-                    )
+                    why = f"switch from {prev.mode} not located: {_message(exc)}"
+                    pt = dataclasses.replace(pt, status="; ".join(filter(None, (pt.status, why))))
                 rows += new_rows
                 switches += new_switches
                 if bar is not None:
@@ -577,7 +586,7 @@ class _Follower:
             return None
         if self.options.surface and past_surface(c.params):
             return None
-        return CurvePoint(x, c.value, best, Kind.BIFURCATION)
+        return CurvePoint(x, c.value, best, Kind.BIFURCATION, _accuracy(c))
 
     def _all_stable(self, at: TubeParameters, best, value: float) -> bool:
         """Every mode of the scan's grid but ``best`` (None: all) is still on its stable
@@ -606,11 +615,17 @@ def _scan_point(x: float, res) -> CurvePoint:
         c.value,
         mode,
         c.kind,
-        "",
+        _accuracy(c),
         tuple((r.m, r.n, r.value) for r in res.runners_up),
         bool(res.surface_instability),
         math.nan if limit is None else float(limit),
     )
+
+
+def _accuracy(c) -> str:
+    """A grid point's status from its CriticalPoint: "inaccurate" (not certified to the
+    rtol asked) or ""."""
+    return str(Status.INACCURATE) if c.status == Status.INACCURATE else ""
 
 
 def _row(pt: CurvePoint):

@@ -3,7 +3,10 @@
 Registered in :data:`cli.COMMANDS` as ("...", configure_curve, run_curve). Writes
 ``curve_<solve_for>_vs_<along>.csv`` and ``.png`` into ``--out`` and prints a summary
 (``--json``: one JSON object). Progress bars (the points, then the switches being
-located) go to stderr when it is a terminal.
+located) go to stderr when it is a terminal. Points whose critical value is not certified
+to the accuracy asked (status "inaccurate" in the CSV and JSON) get one warning line on
+stderr; the exit status stays 0 (unlike ``critical``): the curve is written, each such row
+marked.
 """
 
 from __future__ import annotations
@@ -32,6 +35,7 @@ from .options import (
     scan_options_from_args,
 )
 from .progress import add_quiet_option, enabled
+from .report import warn
 from .tube_input import add_any_tube_options, control_of
 
 #: How each parameter is described in the options' help (the paper's terms).
@@ -156,11 +160,24 @@ def run_curve(args) -> int:
     ax = plot_curve(curve)
     wrapped_title(ax, _fixed_text(curve), 8)
     ax.figure.savefig(png, dpi=200)
+    warn(_inaccurate_text(curve))
     if args.json:
         print(json.dumps({**curve.as_dict(), "csv": str(csv), "png": str(png)}))
         return 0
     print("\n".join(summary(curve) + [str(csv), str(png)]))
     return 0
+
+
+def _inaccurate_text(curve) -> str:
+    """The warning for rows not certified to the accuracy asked ("" if there are none)."""
+    count = int(curve.inaccurate.sum())
+    if not count:
+        return ""
+    return (
+        f"{count} of {len(curve.x)} points are inaccurate: their critical value's error"
+        ' estimate exceeds the accuracy asked even after refinement (status "inaccurate"'
+        " in the table)"
+    )
 
 
 def _kept(stop: Interrupted, path: Path, total: int) -> Interrupted:

@@ -3,8 +3,9 @@
 Finds the critical point (one mode with ``--mode M N``, else the first mode to bifurcate
 over a scan), computes its mode shape (shapes/mode_shape.py) and writes, on request, a 3D
 picture of the wrinkled tube, a plot and a CSV of the mode shape (``--out DIR``) and a VTK mesh of
-the wall (``--vtk FILE``). To register: ``COMMANDS["pattern"] = (HELP, configure_pattern,
-run_pattern)`` in cli/app.py.
+the wall (``--vtk FILE``). Each stage (a few seconds) is named on stderr when it is a
+terminal and ``--quiet`` is not given (cli/progress.py); stdout is left to the results.
+To register: ``COMMANDS["pattern"] = (HELP, configure_pattern, run_pattern)`` in cli/app.py.
 """
 
 from __future__ import annotations
@@ -36,6 +37,7 @@ from .options import (
     mode_from_args,
     scan_options_from_args,
 )
+from .progress import add_quiet_option, stage
 from .report import edge_warning, physical_line, physical_record, supported, warn
 from .tube_input import add_any_tube_options, control_of
 
@@ -103,6 +105,7 @@ def configure_pattern(parser: argparse.ArgumentParser) -> None:
         action="store_true",
         help="print one JSON object (critical point, mode, route, files) instead of text",
     )
+    add_quiet_option(parser)
 
 
 def run_pattern(args) -> int:
@@ -126,19 +129,25 @@ def run_pattern(args) -> int:
         _check_torsional_outputs(args)
     if mode is not None:
         m, n, family = mode
-        crit = critical_value(params, m, n, solve_for, family=family, side=args.side)
+        with stage(args, f"solving mode ({m}, {n})"):
+            crit = critical_value(params, m, n, solve_for, family=family, side=args.side)
     else:
-        scan = scan_modes(params, solve_for, side=args.side, options=scan_options_from_args(args))
+        options = scan_options_from_args(args)
+        with stage(args, "solving the critical mode (a scan of the modes)"):
+            scan = scan_modes(params, solve_for, side=args.side, options=options)
         crit = scan.critical
         warn(edge_warning(scan))
         if crit.family == Family.TORSIONAL:
             _check_torsional_outputs(args)
-    shape = mode_shape(crit, method=args.method, points=args.points)
+    with stage(args, f"mode shape of ({crit.m}, {crit.n}) through the wall"):
+        shape = mode_shape(crit, method=args.method, points=args.points)
     files = []
     if args.out is not None:
-        files += write_outputs(shape, args.out, amplitude=args.amplitude)
+        with stage(args, f"3D pattern and mode-shape plot into {args.out}"):
+            files += write_outputs(shape, args.out, amplitude=args.amplitude)
     if args.vtk is not None:
-        files.append(export_vtk(shape, args.vtk, amplitude=args.amplitude))
+        with stage(args, f"VTK mesh of the wall into {args.vtk}"):
+            files.append(export_vtk(shape, args.vtk, amplitude=args.amplitude))
     record = crit.as_dict()
     record.update(
         k=shape.k,

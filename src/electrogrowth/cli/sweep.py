@@ -12,6 +12,7 @@ from ..errors import ElectrogrowthError, UsageError
 from ..interrupts import Interrupted, interrupt_of
 from ..sweep.file import load_config
 from ..sweep.run import check_workers, compute_sweep
+from .progress import enabled
 
 EXTRA = "pip install 'electrogrowth[sweep]'"
 
@@ -67,7 +68,9 @@ def configure_sweep(parser: argparse.ArgumentParser) -> None:
         action="store_true",
         help="only validate the file (and an existing store) and print the plan; compute nothing",
     )
-    parser.add_argument("--quiet", action="store_true", help="no progress bar")
+    parser.add_argument(
+        "--quiet", action="store_true", help="no progress bar (shown only on a terminal)"
+    )
 
 
 def run_sweep(args) -> int:
@@ -84,7 +87,7 @@ def run_sweep(args) -> int:
             out,
             workers=args.workers,
             scheduler=args.scheduler,
-            progress=not args.quiet,
+            progress=enabled(args),  # a terminal, and no --quiet
             source_text=args.file.read_text(encoding="utf-8"),
         )
     except KeyboardInterrupt as exc:  # main prints the one line and exits 130 / 143

@@ -87,7 +87,7 @@ def outcomes(plane) -> np.ndarray:
     m, n = np.asarray(plane["m"].values), np.asarray(plane["n"].values)
     out = np.empty(status.shape, dtype=object)
     for idx in np.ndindex(status.shape):
-        if status[idx] == Status.OK:
+        if status[idx] in (Status.OK, Status.INACCURATE):  # a value, if not certified
             out[idx] = (
                 (int(m[idx]), int(n[idx]))
                 if kind[idx] == Kind.BIFURCATION

@@ -63,7 +63,7 @@ def compute_sweep(
     *,
     workers: int | None = None,
     scheduler: str | None = None,
-    progress: bool = True,
+    progress: bool = False,
     source_text: str = "",
 ) -> SweepSummary:
     """Run the sweep ``config`` (a :class:`sweep_config.SweepConfig`) into the store ``out``.
@@ -81,7 +81,8 @@ def compute_sweep(
         Address of a dask.distributed scheduler (``tcp://host:8786``); ``workers`` is then
         ignored.
     progress : bool
-        A tqdm progress bar (points done, rate, ETA) on stderr.
+        A tqdm progress bar (points done, rate, ETA) on stderr; off by default (the library
+        prints nothing unless asked; the command shows it on a terminal).
     source_text : str
         The sweep file as written, kept in the store's attributes.
 
@@ -123,7 +124,7 @@ def compute_sweep(
                         " free space or fix the permissions and run the same command again"
                     ) from None
                 bar.update(len(result.points))
-                if any(p.status != Status.OK for p in result.points):
+                if any(_failed(p) for p in result.points):
                     bar.set_postfix_str(
                         f"last failure: {_first_failure(result)}"[:60], refresh=False
                     )
@@ -163,8 +164,13 @@ def _exit_with_parent(parent: int) -> None:
     threading.Thread(target=watch, name="exit-with-parent", daemon=True).start()
 
 
+def _failed(point) -> bool:
+    """A failure (an inaccurate point has a value: it is no failure)."""
+    return point.status in (Status.FAILED, Status.ERROR)
+
+
 def _first_failure(result: ChunkResult) -> str:
-    return next(p.message for p in result.points if p.status != Status.OK)
+    return next(p.message for p in result.points if _failed(p))
 
 
 #: Local worker processes per usable core at most: each holds the numeric stack (~300 MB),

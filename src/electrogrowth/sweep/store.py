@@ -83,8 +83,17 @@ POINT_VARIABLES = {
         False,
         "the critical point is the short-wave (surface) limit m, n -> infinity at a face",
     ),
-    "status": (object, "pending", "ok | failed (see message) | error (a bug) | pending"),
-    "message": (object, "", "why the point failed, or why no instability was found"),
+    "status": (
+        object,
+        "pending",
+        "ok | inaccurate (error estimate above the accuracy asked, see message) |"
+        " failed (see message) | error (a bug) | pending",
+    ),
+    "message": (
+        object,
+        "",
+        "why the point failed or is inaccurate, or why no instability was found",
+    ),
     "remedy": (object, "", "what to try where the point failed"),
     "seconds": ("f8", math.nan, "wall time of the point's mode scan"),
 }
@@ -189,8 +198,8 @@ class SweepStore:
         self.group[MARK[0]][where] = np.full(shape, run, dtype=MARK[1])
 
     def counts(self) -> dict:
-        """Number of points by outcome: bifurcation, surface, threshold, none, failed,
-        error, pending."""
+        """Number of points by outcome: bifurcation, surface, threshold, none, inaccurate
+        (a value not certified, whatever its kind), failed, error, pending."""
         status = np.asarray(self.group["status"][...], dtype=object)
         kind = np.asarray(self.group["kind"][...], dtype=object)
         outcome = np.where(status == Status.OK, kind, status)
@@ -201,6 +210,7 @@ class SweepStore:
                 Kind.SURFACE,
                 Kind.THRESHOLD,
                 Kind.NONE,
+                Status.INACCURATE,
                 Status.FAILED,
                 Status.ERROR,
                 "pending",

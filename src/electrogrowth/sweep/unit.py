@@ -22,6 +22,7 @@ import dataclasses
 import math
 import time
 
+from ..bifurcation.critical import CERTIFIED, REFINE
 from ..bifurcation.scan import ScanOptions, scan_modes
 from ..errors import NoBifurcationFound
 from ..interrupts import reraise_interrupt
@@ -45,8 +46,11 @@ class PointResult:
 
     ``status`` is OK (``kind`` then says what was found: BIFURCATION in mode (m, n),
     THRESHOLD where the axisymmetric state is lost first, or NONE: no instability in
-    the range), FAILED (an electrogrowth error: no base state, no convergence; see
-    ``message`` and ``remedy``) or ERROR (an unexpected exception, a bug: please report it).
+    the range), INACCURATE (found as with OK, but the critical value's error estimate
+    exceeds the accuracy asked even after refinement: ``message`` says by how much; see
+    :func:`bifurcation.critical_value`), FAILED (an electrogrowth error: no base state, no
+    convergence; see ``message`` and ``remedy``) or ERROR (an unexpected exception, a bug:
+    please report it).
     ``runners_up`` holds (m, n, value) of the next modes to bifurcate; (m, n) is NO_MODE
     where no mode is critical.
     """
@@ -93,8 +97,9 @@ def compute_point(params: TubeParameters, spec: ScanSpec) -> PointResult:
             remedy=remedy(exc),
         )
     c = res.critical
+    inaccurate = c.status == Status.INACCURATE
     return PointResult(
-        Status.OK,
+        Status.INACCURATE if inaccurate else Status.OK,
         value=float(c.value),
         m=int(c.m),
         n=int(c.n),
@@ -102,7 +107,16 @@ def compute_point(params: TubeParameters, spec: ScanSpec) -> PointResult:
         error_estimate=float(c.error_estimate),
         surface_instability=res.surface_instability,
         runners_up=tuple((int(r.m), int(r.n), float(r.value)) for r in res.runners_up),
+        message=_inaccurate_message(c, spec.rtol) if inaccurate else "",
         seconds=took(),
+    )
+
+
+def _inaccurate_message(c, rtol: float) -> str:
+    """Why a critical value is not certified (bifurcation/critical.py's rule)."""
+    return (
+        f"inaccurate: error estimate {c.error_estimate:.1e} exceeds {CERTIFIED:g} rtol"
+        f" max(1, |value|) (rtol = {rtol:g}) even at rtol / {REFINE:g}"
     )
 
 
