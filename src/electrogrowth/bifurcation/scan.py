@@ -344,17 +344,7 @@ def _searched(params, solve_for, side, result: ScanResult, options: ScanOptions,
     if c.kind == Kind.BIFURCATION and sense * c.value <= sense * best.value:
         crit = c
     else:
-        w = 1e-7 * abs(best.value)
-        crit = critical_value(
-            params,
-            best.m,
-            best.n,
-            solve_for,
-            family=best.family,
-            side=side,
-            rtol=rtol,
-            bracket=(best.value - w, best.value + w),
-        )
+        crit = _finished(params, solve_for, side, rtol, best)
     others.pop((crit.m, crit.n, crit.family), None)
     runners = sorted(others.values(), key=lambda v: sense * v.value)[: options.top - 1]
     m_range = (result.m_range[0], m_top)
@@ -449,9 +439,16 @@ def _scan_once(
             params.at(solve_for, res.threshold),
         )
         return ScanResult(crit, (), m_range, n_range)
-    best = found[0]
-    w = 1e-7 * abs(best.value)  # relative: a small value's bracket must stay on its side of 0
-    crit = critical_value(
+    crit = _finished(params, solve_for, side, rtol, found[0])
+    return ScanResult(crit, tuple(found[1:top]), m_range, n_range)
+
+
+def _finished(params, solve_for, side, rtol, best: ModeValue) -> CriticalPoint:
+    """The critical point of the mode ``best`` (its value from a march), solved at ``rtol``
+    in a narrow bracket around that value, which is relative: a small value's bracket must
+    stay on its side of 0."""
+    w = 1e-7 * abs(best.value)
+    return critical_value(
         params,
         best.m,
         best.n,
@@ -461,7 +458,6 @@ def _scan_once(
         rtol=rtol,
         bracket=(best.value - w, best.value + w),
     )
-    return ScanResult(crit, tuple(found[1:top]), m_range, n_range)
 
 
 #: The tube on which the stable signs of a mode grid are read: they are the same on every
