@@ -80,7 +80,7 @@ PLAN_STEPS = 30.0
 #: an accepted step may not end with an entry of z~ above LEAP: such a step went through (or
 #: next to) a pole of its chart, where the error estimate, relative to |z~|, accepts anything
 #: (entries of 1e279 were accepted when a soft layer follows a stiff one) and the chart and
-#: orientation read off it at the next switch are arbitrary (a flipped target: issue 21).
+#: orientation read off it at the next switch are arbitrary (a flipped target).
 #: Rejected, the step shrinks until it ends below LEAP and the chart switches cleanly.
 LEAP = 16.0 * SWITCH
 

@@ -22,7 +22,7 @@ K times eps_ref. That is a positive diagonal rescaling of the Stroh vector (S by
 electric pair by sqrt(mu_ref eps_ref)), which keeps the sign of the kernel's target and its
 zeros, and makes a one-layer tube of modulus mu_k the same table as one of modulus 1: its
 error control (relative to 1 + |z~|) would otherwise be absolute for a soft tube and read
-mixed scales for a stiff one (issue 21).
+mixed scales for a stiff one.
 
 A table is one record (:class:`RadialTable`, with the follower pressures on the two faces,
 which enter the face conditions), and the tables of a batch of base states are one padded
