@@ -65,6 +65,23 @@ def test_folds_under_hoop_growth_ignore_the_axial_constraint():
     assert free.value == pytest.approx(fixed.value, rel=1e-10)
 
 
+def test_stiff_mucosal_layer_solves_and_equals_collocation():
+    """mu_1/mu_2 = 100 (the gallery's stiff point, whose base state once failed "not resolved
+    by Chebyshev degree 512"): the base state and the critical hoop growth of its mode (4, 1)
+    solve, collocation agrees, and the neighbouring modes come later."""
+    tube = bilayer(mu=100.0)
+    crit = critical_value(tube, 4, 1, "growth[1].theta")
+    grown = Tube((Layer(1.1, shear_modulus=100.0, growth=(1.0, crit.value, 1.0)), Layer(2.0)))
+    state = solve_layered_state(grown)
+    assert state.quadrature_error < 1e-10  # the independent per-layer quadrature's residual
+    # the stiff ring nearly reaches its grown circumference: a hoop compression of ~1 %
+    assert 0.98 * crit.value < state.lambda_i < crit.value
+    other = critical_value(tube, 4, 1, "growth[1].theta", family=crit.family, method="collocation")
+    assert other.value == pytest.approx(crit.value, rel=1e-8)
+    for m, n in ((3, 1), (5, 1), (4, 2)):
+        assert critical_value(tube, m, n, "growth[1].theta").value > crit.value
+
+
 @pytest.mark.slow
 def test_mucosal_folding_headline_by_collocation():
     result = mucosal_folding(quick=True)

@@ -40,7 +40,7 @@ def mucosal_folding(*, quick: bool = False, mapper: Callable = map) -> GalleryFi
     opts = QUICK if quick else FULL
     hoop, free = "growth[1].theta", {"axial_force": 0.0}
     thick = (0.1,) if quick else (0.05, 0.1, 0.2, 0.3)
-    moduli = (10.0,) if quick else (0.1, 1.0, 10.0, 100.0)
+    moduli = (10.0,) if quick else (0.1, 1.0, 10.0, 100.0, 1000.0)
     volts = () if quick else (0.0, 0.4)
     kinds = (
         (("hoop", hoop),)
