@@ -20,6 +20,7 @@ from electrogrowth import (
     load_tube,
     scan_modes,
 )
+from electrogrowth.bifurcation import certify as certify_module
 from electrogrowth.bifurcation.certify import CERTIFY_RTOL
 from electrogrowth.cli.app import main
 from electrogrowth.errors import ConvergenceError
@@ -79,6 +80,36 @@ def test_a_layered_scan_certifies_its_choice_of_mode():
     res = scan_modes(tube, "voltage", options=opts)
     cert = certify(tube, _as_collocation(res.critical), scan=res, options=opts)
     assert cert.certified and cert.modes_checked == 2  # (0, 1), (1, 1)
+
+
+def test_a_layered_wrong_choice_is_refused_by_both_methods():
+    """Claiming the bilayer's runner-up (1, 2): mode (1, 1) has changed sign by collocation
+    and by impedance before it, a real crossing."""
+    tube = load_tube(BILAYER)
+    later = critical_value(tube, 1, 2, "voltage")
+    fake = ScanResult(_as_collocation(later), (), (0, 1), (1, 2))
+    opts = ScanOptions((0, 1), (1, 2), prismatic=False, torsional=False)
+    with pytest.raises(ConvergenceError, match=r"collocation and impedance mode \(1, 1\)"):
+        certify(tube, fake.critical, scan=fake, options=opts)
+
+
+def test_a_layered_collocation_sign_change_alone_is_no_bifurcation(monkeypatch):
+    """Where only the collocation determinant changes sign (L.3), the impedance kernel
+    decides: mode (1, 1) keeps its unloaded impedance sign before the critical value, so
+    a collocation sign flipped there (injected) does not refuse the choice."""
+    tube = load_tube(BILAYER)
+    opts = ScanOptions((0, 1), (1, 1), extend=False, surface=False, prismatic=False)
+    opts = dataclasses.replace(opts, torsional=False)
+    res = scan_modes(tube, "voltage", options=opts)
+    real = certify_module.collocation_targets
+
+    def flipped(state, modes, **kw):
+        f = real(state, modes, **kw)
+        return -f if modes[0, 0] == 1 and state.tube.voltage > 0 else f  # not the reference
+
+    monkeypatch.setattr(certify_module, "collocation_targets", flipped)
+    cert = certify(tube, _as_collocation(res.critical), scan=res, options=opts)
+    assert cert.certified and cert.modes_checked == 2
 
 
 def test_a_surface_result_says_what_it_certified():
