@@ -22,7 +22,7 @@ from collections.abc import Callable
 import numpy as np
 
 from ..basestate.tube import solve_base_state
-from ..errors import ConvergenceError
+from ..errors import ConvergenceError, ParameterError
 from ..incremental.targets import collocation_targets, impedance_targets
 from ..model.layers import Tube
 from ..model.params import CONTROLS
@@ -106,11 +106,15 @@ def certify(
     ConvergenceError
         "not certified: ..." when the two methods disagree about a bifurcation, or a
         scanned mode comes before the critical one.
+    ParameterError
+        ``crit`` is neither a bifurcation nor a surface result (a threshold, none).
     """
     if crit.kind == Kind.SURFACE:
         return _surface(params, crit, scan, rtol)
     if crit.kind != Kind.BIFURCATION:
-        raise ConvergenceError(f"not certified: a {crit.kind} result has no mode to certify")
+        raise ParameterError(
+            f"crit.kind = {crit.kind}: certify takes a bifurcation or a surface result"
+        )
     mode = (crit.m, crit.n, crit.family)
     other, value, diff = _other_method(params, crit, mode, crit.value, crit.error_estimate, rtol)
     families = (True, True) if options is None else (options.prismatic, options.torsional)
@@ -216,7 +220,10 @@ def _surface(params, crit, scan, rtol) -> Certificate:
             f" rtol {SURFACE_RTOL:g} (relative difference {diff:.2e} > {rtol:g})"
         )
         return Certificate(False, "halfspace", limit.value, diff, None, msg)
-    msg = f"half-space value recomputed at rtol {SURFACE_RTOL:g}"
+    msg = (
+        f"half-space value recomputed at rtol {SURFACE_RTOL:g}: {limit.value:.12g}"
+        f" (relative difference {diff:.1e})"
+    )
     runners = [] if scan is None else list(scan.runners_up)
     if not runners:
         msg += "; no finite mode was reached before the end of the march, none to certify"
