@@ -155,3 +155,12 @@ def test_the_cli_certifies_a_layered_scan(capsys):
     assert main(argv) == 0
     rec = json.loads(capsys.readouterr().out)
     assert rec["certified"] and rec["certified_modes"] > 0 and rec["certified_by"] == "collocation"
+
+
+def test_the_cli_prints_what_a_surface_result_certified(capsys):
+    argv = ["critical", "--outer-radius", "2.5", "--length", "3.0", "--stretch", "0.8"]
+    argv += ["--solve-for", "voltage", "--m-max", "2", "--n-max", "6", "--certify", "--quiet"]
+    assert main(argv) == 0
+    out = capsys.readouterr().out
+    assert "  certified: half-space value recomputed at rtol 1e-14" in out
+    assert "the best finite mode (0, 24)" in out and "certified by collocation" in out
