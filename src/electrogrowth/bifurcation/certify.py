@@ -25,7 +25,6 @@ from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError, ParameterError
 from ..incremental.targets import collocation_targets, impedance_targets
 from ..model.layers import Tube
-from ..model.params import CONTROLS
 from ..outcomes import Kind
 from .critical import critical_value
 from .march import control_path
@@ -164,14 +163,14 @@ def _certify_choice(params, crit, scan, families, progress) -> int:
         sense = 1.0 if end > start else -1.0
     else:
         sense = -1.0 if crit.side == "compression" else 1.0
-        if crit.solve_for not in CONTROLS:
-            raise ConvergenceError(f"not certified: {crit.solve_for!r} is not a control")
     before = crit.value - sense * _window(crit)
     modes = scan_grid(scan.m_range, scan.n_range, False, families)
     state = solve_base_state(params.at(crit.solve_for, before))
-    f = np.sign(_one_by_one(lambda row: collocation_targets(state, row)[0], modes, progress))
+    f = _one_by_one(lambda row: collocation_targets(state, row)[0], modes, progress)
     stable = _unloaded(params, modes, collocation_targets) if layered else np.ones(len(modes))
-    for i in np.flatnonzero(f != stable):
+    for i in np.argsort(f * stable):  # the most unstable-looking mode first
+        if np.sign(f[i]) == stable[i]:
+            break
         if layered and _impedance_stable(params, state, modes[i]):
             continue  # a sign change of the collocation determinant, not a bifurcation
         m, n = (int(x) for x in modes[i, :2])
