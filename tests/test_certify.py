@@ -133,7 +133,6 @@ def test_a_surface_scan_certifies_its_best_finite_mode_too():
     assert ("certified by collocation" in cert.message) == cert.certified
 
 
-@pytest.mark.slow
 def test_the_library_certificate_equals_the_cli_one_layer(capsys):
     """The CLI prints the library's certificate (a one-layer scan, collocation checking)."""
     argv = ["critical", "--outer-radius", "1.4", "--length", "1.0", "--voltage", "0.4"]
