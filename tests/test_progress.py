@@ -10,9 +10,10 @@ import time
 import numpy as np
 
 from electrogrowth import ScanOptions, TubeParameters, solve_base_state
+from electrogrowth.bifurcation.certify import _one_by_one
 from electrogrowth.bifurcation.curves import critical_curve
 from electrogrowth.cli.app import main
-from electrogrowth.cli.critical import _collocation_signs
+from electrogrowth.cli.critical import _Progress
 from electrogrowth.cli.progress import stage
 from electrogrowth.incremental.targets import collocation_targets
 
@@ -78,12 +79,15 @@ def test_certify_counts_the_modes_it_checks_and_changes_no_value(capsys, monkeyp
     monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
     state = solve_base_state(TubeParameters(1.4, 1.0, growth=1.2, voltage=0.4))
     modes = np.array([[0, 1], [2, 1], [3, 0]], dtype=float)
-    args = argparse.Namespace(quiet=False)
-    f = _collocation_signs(state, modes, args)
+    progress = _Progress(argparse.Namespace(quiet=False))
+    f = _one_by_one(lambda row: collocation_targets(state, row)[0], modes, progress)
+    progress.close()
     np.testing.assert_array_equal(f, collocation_targets(state, modes))  # one at a time
     err = capsys.readouterr().err
     assert "certifying: every scanned mode stable before it" in err and "3/3" in err
-    _collocation_signs(state, modes, argparse.Namespace(quiet=True))
+    quiet = _Progress(argparse.Namespace(quiet=True))
+    _one_by_one(lambda row: collocation_targets(state, row)[0], modes, quiet)
+    quiet.close()
     assert capsys.readouterr().err == ""
 
 

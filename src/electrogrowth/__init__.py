@@ -28,6 +28,7 @@ _EXPORTS = {
         "voltage_response",
     ),
     ".basestate.tube": ("BaseState", "solve_base_state", "voltage_curve", "voltage_threshold"),
+    ".bifurcation.certify": ("Certificate", "certify"),
     ".bifurcation.critical": ("CriticalPoint", "critical_value"),
     ".bifurcation.curves": ("Curve", "critical_curve"),
     ".bifurcation.scan": ("ScanOptions", "ScanResult", "scan_modes"),
@@ -120,6 +121,8 @@ __all__ = [
     "ScanOptions",
     "ScanResult",
     "scan_modes",
+    "Certificate",
+    "certify",
     # design
     "ModeSequence",
     "mode_sequence",

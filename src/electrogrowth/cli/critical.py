@@ -3,19 +3,16 @@
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import math
 
-import numpy as np
-
-from ..basestate.tube import solve_base_state
+from ..bifurcation.certify import CERTIFY_RTOL, certify
 from ..bifurcation.critical import CERTIFIED, critical_value
-from ..bifurcation.scan import scan_grid, scan_modes
-from ..errors import ConvergenceError, ParameterError
+from ..bifurcation.scan import scan_modes
+from ..errors import ParameterError
 from ..incremental.accuracy import check_rtol
-from ..incremental.targets import collocation_targets
 from ..model.controls import parse_control
-from ..model.params import CONTROLS, TubeParameters
 from ..outcomes import Kind, Status
 from .options import (
     MODE_COVERAGE,
@@ -31,7 +28,6 @@ from .progress import add_quiet_option, bar, stage
 from .report import edge_warning, physical_line, physical_record, supported, voltage_text, warn
 from .tube_input import add_any_tube_options, control_of
 
-CERTIFY_RTOL = 1e-8  # the two methods must agree this well for a certified value
 INACCURATE_EXIT = 3  # the exit status of a value not certified to --rtol
 
 
@@ -111,12 +107,9 @@ def run_critical(args) -> int:
         crit, record = result.critical, result.as_dict()
         runners = record["runners_up"]
         warn(edge_warning(result))
-    if args.certify and crit.kind == Kind.BIFURCATION:
-        record.update(_certify(params, crit, args))
-        if mode is None:  # a scan: certify the choice of the mode as well
-            record.update(
-                _certify_choice(params, crit, result, args, options=scan_options_from_args(args))
-            )
+    if args.certify and crit.kind in (Kind.BIFURCATION, Kind.SURFACE):
+        # a scan: certify the choice of the mode as well
+        record.update(_certify(params, crit, args, result if mode is None else None))
     if getattr(args, "scales", None) is not None:
         errors = {record.get("solve_for"): record.get("error_estimate")}
         record["physical"] = physical_record(record, args.scales, errors)
@@ -140,71 +133,44 @@ def _inaccurate_exit(crit, args) -> int:
     return 0 if args.accept_inaccurate else INACCURATE_EXIT
 
 
-def _certify(params, crit, args) -> dict:
+def _certify(params, crit, args, result=None) -> dict:
+    """The certificate of ``crit`` (and of the scan ``result``'s choice of mode)."""
+    if crit.kind == Kind.SURFACE:
+        with stage(args, "certifying the half-space value and the best finite mode", tick=True):
+            return certify(params, crit, scan=result).as_dict()
     other = "collocation" if crit.method == "impedance" else "impedance"
-    w = max(1e-6 * abs(crit.value), 10 * crit.error_estimate)
     name = value_name(crit.solve_for)
-    with stage(args, f"certifying {name} of mode ({crit.m}, {crit.n}) by {other}", tick=True):
-        check = critical_value(
-            params,
-            crit.m,
-            crit.n,
-            crit.solve_for,
-            family=crit.family,
-            side=crit.side,
-            method=other,
-            bracket=(crit.value - w, crit.value + w),
-        )
-    diff = abs(check.value - crit.value) / abs(crit.value)
-    if diff > CERTIFY_RTOL:
-        raise ConvergenceError(
-            f"not certified: {crit.method} gives {crit.value:.12g},"
-            f" {other} gives {check.value:.12g} (relative difference"
-            f" {diff:.2e} > {CERTIFY_RTOL:g})"
-        )
-    return {
-        "certified": True,
-        "certified_by": other,
-        "certified_value": check.value,
-        "certification_difference": diff,
-    }
-
-
-def _certify_choice(params, crit, result, args, *, options) -> dict:
-    """Every mode of the scanned ranges is still stable just before the critical value by
-    the other method (collocation, positive on the stable side): no mode comes first.
-    One-layer tubes and the controls growth, stretch and voltage (others: {})."""
-    if not isinstance(params, TubeParameters) or crit.solve_for not in CONTROLS:
-        return {}
-    sense = -1.0 if crit.side == "compression" else 1.0
-    w = max(1e-6 * abs(crit.value), 10 * crit.error_estimate)
-    before = params.at(crit.solve_for, crit.value - sense * w)
-    modes = scan_grid(
-        result.m_range, result.n_range, False, (options.prismatic, options.torsional)
+    options = None if result is None else scan_options_from_args(args)
+    progress = _Progress(args)
+    progress.stage.enter_context(
+        stage(args, f"certifying {name} of mode ({crit.m}, {crit.n}) by {other}", tick=True)
     )
-    f = _collocation_signs(solve_base_state(before), modes, args)
-    first = int(np.argmin(f))
-    if not f[first] > 0:
-        m, n = (int(x) for x in modes[first, :2])
-        raise ConvergenceError(
-            f"not certified: by collocation mode ({m}, {n}) is already unstable at"
-            f" {crit.solve_for} = {crit.value - sense * w:.12g}, before"
-            f" the scan's critical mode ({crit.m}, {crit.n}) at {crit.value:.12g}"
-        )
-    return {"certified_modes": int(len(modes))}
+    with progress.stage:
+        cert = certify(params, crit, scan=result, options=options, progress=progress)
+    progress.close()
+    return cert.as_dict()
 
 
-def _collocation_signs(state, modes, args) -> np.ndarray:
-    """collocation_targets of every mode, one mode at a time under a progress bar."""
-    progress = bar(args, len(modes), "certifying: every scanned mode stable before it", "mode")
-    f = []
-    for row in modes:
-        f.append(collocation_targets(state, row[None, :])[0])
-        if progress is not None:
-            progress.update(1)
-    if progress is not None:
-        progress.close()
-    return np.array(f)
+class _Progress:
+    """A progress bar over the scanned modes, opened on the first mode checked (once the
+    stage of the other method's solve, a line of its own, is over)."""
+
+    def __init__(self, args):
+        self.args, self.bar = args, None
+        self.stage = contextlib.ExitStack()
+
+    def __call__(self, done: int, total: int) -> None:
+        if self.bar is None:
+            self.stage.close()
+            self.bar = bar(
+                self.args, total, "certifying: every scanned mode stable before it", "mode"
+            )
+        if self.bar is not None:
+            self.bar.update(1)
+
+    def close(self) -> None:
+        if self.bar is not None:
+            self.bar.close()
 
 
 def value_name(solve_for: str) -> str:
@@ -294,7 +260,11 @@ def _print_text(rec: dict, runners: list, scales=None) -> None:
         )
     lines = [head, tube_line(rec, scales)]
     lines += physical_line(rec.get("physical", {}))
-    if rec.get("certified"):
+    if "certification" in rec:  # a surface result: what was certified and how, or why not
+        lines.append(
+            f"  {'certified' if rec['certified'] else 'NOT certified'}: {rec['certification']}"
+        )
+    elif rec.get("certified"):
         lines.append(
             f"  certified by {rec['certified_by']}: {rec['certified_value']:.12g}"
             f" (relative difference {rec['certification_difference']:.1e})"

@@ -1,0 +1,241 @@
+"""Certification of a critical value by the other method, and of a scan's choice of mode.
+
+A bifurcation value found by one method (impedance or collocation) is certified when the
+other method's root, searched in a narrow window around it, agrees to ``rtol``. A scan's
+choice of mode is certified when no scanned mode is already unstable just before the
+critical value: its collocation target there has the sign it has on the unloaded tube
+(``params.reference()``, where every mode is stable). On a one-layer tube that sign is
+positive. On a layered Tube the collocation determinant may change sign without a
+bifurcation where the layers differ strongly (docs/derivation-layered-modes.md L.3), so a
+mode whose collocation sign has changed is decided by the impedance kernel at a tight
+tolerance: a root lies before the critical value only if its sign has changed too.
+
+A surface (short-wave) result is certified by recomputing the exact half-space value at a
+tighter tolerance, and its best finite runner-up, if any, by the other method.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable
+
+import numpy as np
+
+from ..basestate.tube import solve_base_state
+from ..errors import ConvergenceError, ParameterError
+from ..incremental.targets import collocation_targets, impedance_targets
+from ..model.layers import Tube
+from ..outcomes import Kind
+from .critical import critical_value
+from .march import control_path
+from .scan import scan_grid
+from .surface import short_wave_limit
+
+CERTIFY_RTOL = 1e-8  # the two methods must agree this well for a certified value
+SURFACE_RTOL = 1e-14  # the half-space value is recomputed at this tolerance
+SIGN_RTOL = 1e-12  # the impedance kernel decides a layered mode's sign this tightly
+
+
+@dataclasses.dataclass(frozen=True)
+class Certificate:
+    """What :func:`certify` established.
+
+    certified : whether the value (and, for a scan, the choice of its mode) is certified.
+    by : the method that certified the value ("collocation", "impedance", "halfspace").
+    value : the value that method gives; difference : its relative difference.
+    modes_checked : scanned modes found stable before the critical value (None: no scan).
+    message : one line saying what was certified and how, or why not.
+    """
+
+    certified: bool
+    by: str | None
+    value: float | None
+    difference: float | None
+    modes_checked: int | None
+    message: str
+
+    def as_dict(self) -> dict:
+        """The keys ``electrogrowth critical --certify --json`` prints."""
+        out = {
+            "certified": self.certified,
+            "certified_by": self.by,
+            "certified_value": self.value,
+            "certification_difference": self.difference,
+        }
+        if self.modes_checked is not None:
+            out["certified_modes"] = self.modes_checked
+        if self.by == "halfspace" or not self.certified:
+            out["certification"] = self.message
+        return out
+
+
+def certify(
+    params,
+    crit,
+    *,
+    scan=None,
+    options=None,
+    rtol: float = CERTIFY_RTOL,
+    progress: Callable[[int, int], None] | None = None,
+) -> Certificate:
+    """Certify the critical point ``crit`` (of ``params``) by the other method.
+
+    Parameters
+    ----------
+    params : TubeParameters or Tube
+        The tube ``crit`` was solved for.
+    crit : CriticalPoint
+        A bifurcation (``critical_value`` or ``scan.critical``) or a surface result.
+    scan : ScanResult, optional
+        The scan that chose ``crit``: its choice of mode is certified as well.
+    options : ScanOptions, optional
+        The scan's options (default ScanOptions()): which families it covered.
+    rtol : float
+        The relative agreement required of the two methods.
+    progress : callable(done, total), optional
+        Called after each scanned mode is checked.
+
+    Returns
+    -------
+    Certificate
+        For a surface result, ``certified`` False with the reason when it is not.
+
+    Raises
+    ------
+    ConvergenceError
+        "not certified: ..." when the two methods disagree about a bifurcation, or a
+        scanned mode comes before the critical one.
+    ParameterError
+        ``crit`` is neither a bifurcation nor a surface result (a threshold, none).
+    """
+    if crit.kind == Kind.SURFACE:
+        return _surface(params, crit, scan, rtol)
+    if crit.kind != Kind.BIFURCATION:
+        raise ParameterError(
+            f"crit.kind = {crit.kind}: certify takes a bifurcation or a surface result"
+        )
+    mode = (crit.m, crit.n, crit.family)
+    other, value, diff = _other_method(params, crit, mode, crit.value, crit.error_estimate, rtol)
+    families = (True, True) if options is None else (options.prismatic, options.torsional)
+    checked = None if scan is None else _certify_choice(params, crit, scan, families, progress)
+    message = f"certified by {other}: {value:.12g} (relative difference {diff:.1e})"
+    return Certificate(True, other, value, diff, checked, message)
+
+
+def _window(crit) -> float:
+    return max(1e-6 * abs(crit.value), 10 * crit.error_estimate)
+
+
+def _other_method(params, crit, mode, value, error, rtol, method=None):
+    """(other method, its value, relative difference) for ``mode`` = (m, n, family) of the
+    control of ``crit``, found by ``method`` (default crit.method) at ``value`` (error
+    estimate ``error``); raises ConvergenceError beyond ``rtol``."""
+    method = method or crit.method
+    other = "collocation" if method == "impedance" else "impedance"
+    m, n, family = mode
+    w = max(1e-6 * abs(value), 10 * error)
+    check = critical_value(
+        params,
+        m,
+        n,
+        crit.solve_for,
+        family=family,
+        side=crit.side,
+        method=other,
+        bracket=(value - w, value + w),
+    )
+    diff = abs(check.value - value) / abs(value)
+    if diff > rtol:
+        raise ConvergenceError(
+            f"not certified: {method} gives {value:.12g},"
+            f" {other} gives {check.value:.12g} (relative difference"
+            f" {diff:.2e} > {rtol:g})"
+        )
+    return other, check.value, diff
+
+
+def _certify_choice(params, crit, scan, families, progress) -> int:
+    """The number of scanned modes found stable just before the critical value; raises
+    ConvergenceError naming a mode already unstable there."""
+    layered = isinstance(params, Tube)
+    if layered:
+        start, end, _ = control_path(params, crit.solve_for, crit.side)
+        sense = 1.0 if end > start else -1.0
+    else:
+        sense = -1.0 if crit.side == "compression" else 1.0
+    before = crit.value - sense * _window(crit)
+    modes = scan_grid(scan.m_range, scan.n_range, False, families)
+    state = solve_base_state(params.at(crit.solve_for, before))
+    f = _one_by_one(lambda row: collocation_targets(state, row)[0], modes, progress)
+    stable = _unloaded(params, modes, collocation_targets) if layered else np.ones(len(modes))
+    for i in np.argsort(f * stable):  # the most unstable-looking mode first
+        if np.sign(f[i]) == stable[i]:
+            break
+        if layered and _impedance_stable(params, state, modes[i]):
+            continue  # a sign change of the collocation determinant, not a bifurcation
+        m, n = (int(x) for x in modes[i, :2])
+        by = "collocation and impedance" if layered else "collocation"
+        raise ConvergenceError(
+            f"not certified: by {by} mode ({m}, {n}) is already unstable at"
+            f" {crit.solve_for} = {before:.12g}, before"
+            f" the scan's critical mode ({crit.m}, {crit.n}) at {crit.value:.12g}"
+        )
+    return int(len(modes))
+
+
+def _one_by_one(target, modes, progress) -> np.ndarray:
+    f = []
+    for i, row in enumerate(modes):
+        f.append(target(row[None, :]))
+        if progress is not None:
+            progress(i + 1, len(modes))
+    return np.array(f)
+
+
+def _unloaded(params, modes, targets) -> np.ndarray:
+    """Signs of ``targets`` on the unloaded tube, mode by mode."""
+    state = solve_base_state(params.reference())
+    return np.sign([targets(state, row[None, :])[0] for row in modes])
+
+
+def _impedance_stable(params, state, row) -> bool:
+    """Whether the impedance target of mode ``row`` has its unloaded sign at ``state``."""
+    ref = solve_base_state(params.reference())
+    now = impedance_targets(state, row[None, :], rtol=SIGN_RTOL)[0]
+    return bool(np.sign(now) == np.sign(impedance_targets(ref, row[None, :], rtol=SIGN_RTOL)[0]))
+
+
+def _surface(params, crit, scan, rtol) -> Certificate:
+    """The half-space value recomputed at SURFACE_RTOL (and the best finite runner-up by the
+    other method), or certified False with the reason."""
+    limit = short_wave_limit(params, crit.solve_for, side=crit.side, rtol=SURFACE_RTOL)
+    if limit.kind != Kind.SURFACE:
+        msg = f"not certified: at rtol {SURFACE_RTOL:g} the short-wave limit is {limit.kind}"
+        return Certificate(False, "halfspace", None, None, None, msg)
+    diff = abs(limit.value - crit.value) / abs(crit.value)
+    if diff > rtol:
+        msg = (
+            f"not certified: the half-space value {crit.value:.12g} is {limit.value:.12g} at"
+            f" rtol {SURFACE_RTOL:g} (relative difference {diff:.2e} > {rtol:g})"
+        )
+        return Certificate(False, "halfspace", limit.value, diff, None, msg)
+    msg = (
+        f"half-space value recomputed at rtol {SURFACE_RTOL:g}: {limit.value:.12g}"
+        f" (relative difference {diff:.1e})"
+    )
+    runners = [] if scan is None else list(scan.runners_up)
+    if not runners:
+        msg += "; no finite mode was reached before the end of the march, none to certify"
+        return Certificate(True, "halfspace", limit.value, diff, None, msg)
+    r = runners[0]
+    try:
+        mode = (r.m, r.n, r.family)
+        other, value, rdiff = _other_method(params, crit, mode, r.value, 0.0, rtol, "impedance")
+    except ConvergenceError as exc:
+        msg += f"; the best finite mode ({r.m}, {r.n}) at {r.value:.12g} is {exc}"
+        return Certificate(False, "halfspace", limit.value, diff, None, msg)
+    msg += (
+        f"; the best finite mode ({r.m}, {r.n}) at {r.value:.12g} certified by {other}"
+        f" ({value:.12g}, relative difference {rdiff:.1e}): it comes after the surface"
+    )
+    return Certificate(True, "halfspace", limit.value, diff, None, msg)
