@@ -212,3 +212,20 @@ def test_sigterm_raises_an_interrupt_and_the_handlers_come_back():
         time.sleep(5)  # the handler runs at once
     assert stop.value.signum == signal.SIGTERM
     assert signal.getsignal(signal.SIGTERM) is before
+
+
+def test_ctrl_c_while_the_command_line_loads_is_one_line(monkeypatch, capsys):
+    """The console script and `python -m electrogrowth` load the command line inside
+    _console.main: a Ctrl-C during those imports (before cli.main handles signals) is one
+    line and 130, not Python's traceback."""
+    import types
+
+    from electrogrowth import _console
+
+    class Loading(types.ModuleType):
+        def __getattr__(self, name):
+            raise KeyboardInterrupt
+
+    monkeypatch.setitem(sys.modules, "electrogrowth.cli", Loading("electrogrowth.cli"))
+    assert _console.main() == 130
+    assert capsys.readouterr().err == "electrogrowth: interrupted\n"
