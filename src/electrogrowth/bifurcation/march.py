@@ -125,6 +125,11 @@ def _tube_path(tube: Tube, solve_for: str, side: str | None):
     return (0.0, 20.0 * scale, scale) if up else (0.0, -20.0 * scale, scale)
 
 
+#: The tube on which the stable signs of a mode grid are read: they are the same on every
+#: unloaded tube (docs/derivation.md section 3), so one evaluation serves every scan.
+SIGN_TUBE = TubeParameters(outer_radius=1.4, length=1.0)
+
+
 def unloaded_signs(params, modes: np.ndarray, targets: Targets) -> np.ndarray:
     """Signs of the targets on the unloaded tube (``params.reference()``: g = 1,
     lambda_z = 1, no voltage or pressure)."""

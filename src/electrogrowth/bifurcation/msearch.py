@@ -30,7 +30,7 @@ import numpy as np
 from ..errors import NoBifurcationFound
 from ..incremental.accuracy import SCAN_SIGNS, SCAN_STABLE_SIGNS
 from ..incremental.targets import Family, impedance_targets
-from .march import ModeValue, first_bifurcations, unloaded_signs
+from .march import SIGN_TUBE, ModeValue, first_bifurcations, unloaded_signs
 
 RATIO = 1.25  # geometric sampling: m_cap / m_edge = 2000 / 64 takes 16 samples
 SPLIT = 8  # interior samples of a refining march
@@ -117,8 +117,6 @@ def _first(params, solve_for, side, rows, rtol, ms, only=None) -> list[ModeValue
 
 
 def _stable(modes, targets):
-    from .scan import SIGN_TUBE  # the shared unloaded tube of every scan (scan imports us)
-
     return unloaded_signs(SIGN_TUBE, modes, targets)
 
 

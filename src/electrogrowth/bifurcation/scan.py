@@ -41,7 +41,7 @@ from ..outcomes import NO_MODE, Kind
 from ..summary import scan_html
 from .critical import CriticalPoint, control_name, critical_value, no_bifurcation_remedy
 from .directions import past_surface
-from .march import ModeValue, first_bifurcations, unloaded_signs
+from .march import SIGN_TUBE, ModeValue, first_bifurcations, unloaded_signs
 from .msearch import search_m
 from .surface import short_wave_limit
 
@@ -458,11 +458,6 @@ def _finished(params, solve_for, side, rtol, best: ModeValue) -> CriticalPoint:
         rtol=rtol,
         bracket=(best.value - w, best.value + w),
     )
-
-
-#: The tube on which the stable signs of a mode grid are read: they are the same on every
-#: unloaded tube (docs/derivation.md section 3), so one evaluation serves every scan.
-SIGN_TUBE = TubeParameters(outer_radius=1.4, length=1.0)
 
 
 @functools.lru_cache(maxsize=64)
