@@ -3,6 +3,7 @@ commands writing the same CSV leave a whole file, and an interrupted write leave
 previous file as it was."""
 
 import threading
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -61,3 +62,32 @@ def test_an_interrupted_write_keeps_the_previous_file(tmp_path):
         raise KeyboardInterrupt
     assert path.read_text() == "the finished curve\n"
     assert [p.name for p in tmp_path.iterdir()] == ["curve.csv"]
+
+
+def test_a_figure_stopped_while_saving_keeps_its_previous_files(tmp_path):
+    """FigureResult.save writes the PNG and the CSV whole or not at all: a drawing that fails
+    (or is interrupted) leaves the previous fig<N>.png as it was and no temporary file."""
+    import numpy as np
+    from matplotlib.figure import Figure
+
+    from electrogrowth.figures.style import FigureResult
+
+    fig = Figure()
+    fig.add_subplot().plot([0, 1], [0, 1])
+    result = FigureResult(99, ("x", "y"), np.array([[0.0, 1.0], [1.0, 2.0]]), fig, {})
+    png, csv = result.save(tmp_path)
+    before = png.read_bytes()
+    assert csv.read_text() == "x,y\n0,1\n1,2\n"
+
+    def broken(target, **kwargs):  # half a file written, then Ctrl-C
+        if hasattr(target, "write"):
+            target.write(b"half a png")
+        else:
+            Path(target).write_bytes(b"half a png")
+        raise KeyboardInterrupt
+
+    fig.savefig = broken
+    with pytest.raises(KeyboardInterrupt):
+        result.save(tmp_path)
+    assert png.read_bytes() == before
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["fig99.csv", "fig99.png"]

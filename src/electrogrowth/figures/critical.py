@@ -21,6 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..atomic import replaced
 from ..basestate.tube import voltage_threshold
 from ..bifurcation.critical import critical_value
 from ..bifurcation.curves import Curve, critical_curve
@@ -78,7 +79,7 @@ class ModeFigure(FigureResult):
         paths = super().save(directory, dpi=dpi)
         if self.points:
             path = Path(directory) / f"fig{self.number}_points.csv"
-            with path.open("w") as fh:
+            with replaced(path) as fh:
                 fh.write("name,m,n," + ",".join(COLUMNS) + "\n")
                 for p in self.points:
                     d = p.as_dict()

@@ -20,6 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..atomic import replaced
 from ..bifurcation.critical import CriticalPoint, critical_value
 from ..bifurcation.scan import ScanOptions, scan_modes
 from ..errors import BaseStateError, ConvergenceError, NoBifurcationFound
@@ -87,8 +88,9 @@ class GalleryFigure(FigureResult):
         out = Path(directory)
         out.mkdir(parents=True, exist_ok=True)
         png, path = out / f"{self.name}.png", out / f"{self.name}.csv"
-        self.figure.savefig(png, dpi=dpi)
-        with path.open("w", newline="") as fh:
+        with replaced(png, "wb") as fh:  # whole or not at all (see FigureResult.save)
+            self.figure.savefig(fh, dpi=dpi, format="png")
+        with replaced(path, newline="") as fh:
             writer = csv.writer(fh)
             writer.writerow(self.columns)
             for row in self.table:

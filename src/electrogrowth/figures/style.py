@@ -14,6 +14,8 @@ import matplotlib as mpl
 import numpy as np
 from matplotlib.figure import Figure
 
+from ..atomic import replaced
+
 #: Line colours (colour-blind safe, Okabe-Ito) and the paper-like style of every figure.
 COLORS = ("#000000", "#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00")
 STYLE = {
@@ -43,10 +45,12 @@ class FigureResult:
         out = Path(directory)
         out.mkdir(parents=True, exist_ok=True)
         png, csv = out / f"fig{self.number}.png", out / f"fig{self.number}.csv"
-        self.figure.savefig(png, dpi=dpi)
-        np.savetxt(
-            csv, self.table, delimiter=",", header=",".join(self.columns), comments="", fmt="%.15g"
-        )
+        # each file whole or not at all: two runs into one folder, or a Ctrl-C, never mix one
+        with replaced(png, "wb") as fh:
+            self.figure.savefig(fh, dpi=dpi, format="png")
+        with replaced(csv) as fh:
+            header = ",".join(self.columns)
+            np.savetxt(fh, self.table, delimiter=",", header=header, comments="", fmt="%.15g")
         return [png, csv]
 
 
