@@ -292,9 +292,11 @@ def _fake_modes(monkeypatch, values, threshold=None, inaccurate=()):
         found = [(v, mode) for mode, f in values.items() if not math.isnan(v := f(at.voltage))]
         if found:
             v, (m, n) = min(found)
-            crit = SimpleNamespace(kind="bifurcation", m=m, n=n, value=v)
+            crit = SimpleNamespace(kind="bifurcation", m=m, n=n, value=v, error_estimate=0.0)
         else:
-            crit = SimpleNamespace(kind="threshold", m=-1, n=-1, value=threshold(at.voltage))
+            crit = SimpleNamespace(
+                kind="threshold", m=-1, n=-1, value=threshold(at.voltage), error_estimate=0.0
+            )
         crit.status = "inaccurate" if at.voltage in inaccurate else "ok"
         return SimpleNamespace(
             critical=crit, runners_up=(), short_wave_limit=None, surface_instability=False

@@ -166,7 +166,7 @@ def test_a_curve_point_lets_an_interrupt_through_and_records_a_bug(monkeypatch):
         curves.curve_point(params, "growth", "voltage", 0.1)
     monkeypatch.setattr(curves, "scan_modes", _scan_raising(ZeroDivisionError("oops")))
     pt = curves.curve_point(params, "growth", "voltage", 0.1)
-    assert pt.kind == Status.ERROR and pt.status.startswith("internal error: ZeroDivisionError")
+    assert pt.status == Status.ERROR and pt.message.startswith("internal error: ZeroDivisionError")
 
 
 def test_an_interrupted_curve_hands_back_its_points(monkeypatch):

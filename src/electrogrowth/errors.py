@@ -2,14 +2,64 @@
 
 Every message is one line that names the offending value and the valid range, so the
 command line can print it as is (exit status 2) and a sweep can store it as a status.
+A remedy speaks to whoever reads it: its text (``str``, ``.cli``) names command-line flags
+("loosen --rtol"), which the command line prints after the message; ``.python`` names
+keyword arguments ("pass rtol=1e-10"), which a Python traceback shows under the message
+(a note, ``__notes__``). ``str(error)`` is the message alone in both worlds.
 """
+
+from __future__ import annotations
+
+
+class Remedy(str):
+    """A one-line remedy in two forms: the text itself is the command line's (``.cli``,
+    what the CLI prints and a sweep store keeps), ``.python`` the same advice in terms of
+    the Python API (the text itself where the two agree).
+
+    >>> r = Remedy("loosen --rtol", python="pass a larger rtol=")
+    >>> r, r.cli, r.python
+    ('loosen --rtol', 'loosen --rtol', 'pass a larger rtol=')
+    """
+
+    python: str
+
+    def __new__(cls, cli: str = "", *, python: str | None = None) -> Remedy:
+        self = super().__new__(cls, cli)
+        self.python = cli if python is None else python
+        return self
+
+    @property
+    def cli(self) -> str:
+        return str(self)
+
+
+def python_remedy(remedy: str) -> str:
+    """The Python form of a remedy (a plain string is the same in both worlds)."""
+    return remedy.python if isinstance(remedy, Remedy) else remedy
 
 
 class ElectrogrowthError(Exception):
     """Base class: anything the package raises on purpose. ``remedy`` is the one-line
     advice a user can act on (empty where the message already names the valid range)."""
 
-    remedy = ""
+    remedy: str = Remedy("")
+
+    @property
+    def __notes__(self) -> list[str]:
+        """What Python prints under the traceback: any notes added, then the remedy in
+        Python's terms (the command line prints its own form instead)."""
+        notes = self.__dict__.setdefault("_notes", [])
+        notes[:] = [n for n in notes if not n.startswith(_NOTE)]
+        if self.remedy:
+            notes.append(_NOTE + python_remedy(self.remedy))
+        return notes
+
+    @__notes__.setter
+    def __notes__(self, notes: list[str]) -> None:
+        self.__dict__["_notes"] = list(notes)
+
+
+_NOTE = "remedy: "
 
 
 class ParameterError(ElectrogrowthError, ValueError):
@@ -19,34 +69,44 @@ class ParameterError(ElectrogrowthError, ValueError):
 class MaterialError(ElectrogrowthError, ValueError):
     """An unknown material or an energy the package cannot use."""
 
-    remedy = "use a built-in energy or an expression in I1, I2, I4, I5, I6"
+    remedy = Remedy("use a built-in energy or an expression in I1, I2, I4, I5, I6")
 
 
 class BaseStateError(ElectrogrowthError, RuntimeError):
     """No axisymmetric base state exists (e.g. the voltage is above the threshold)."""
 
-    remedy = (
+    remedy = Remedy(
         "lower the voltage below the threshold (`electrogrowth state` prints it) or"
-        " move the growth or stretch back towards 1"
+        " move the growth or stretch back towards 1",
+        python="lower the voltage below the threshold (`voltage_threshold` gives it) or"
+        " move the growth or stretch back towards 1",
     )
 
 
 class ConvergenceError(ElectrogrowthError, RuntimeError):
     """A root finder or integrator did not reach the requested accuracy."""
 
-    remedy = "loosen --rtol (e.g. 1e-10), or certify the point with --method collocation"
+    remedy = Remedy(
+        "loosen --rtol (e.g. 1e-10), or certify the point with --method collocation",
+        python="pass a looser rtol (e.g. rtol=1e-10), or certify the point with"
+        " method='collocation'",
+    )
 
 
 class NoBifurcationFound(ElectrogrowthError, RuntimeError):
     """No bifurcation of the requested kind lies in the searched range."""
 
-    remedy = "raise --m-max / --n-max, try the other --side, or another control parameter"
+    remedy = Remedy(
+        "raise --m-max / --n-max, try the other --side, or another control parameter",
+        python="widen ScanOptions(m_range=..., n_range=...), try the other side=, or"
+        " another control parameter",
+    )
 
 
 class MissingDependencyError(ElectrogrowthError, ImportError):
     """An optional package (an extra such as ``vtk`` or ``sweep``) is not installed."""
 
-    remedy = "pip install 'electrogrowth[sweep,vtk]'"
+    remedy = Remedy("pip install 'electrogrowth[sweep,vtk]'")
 
 
 class ConfigError(ParameterError):
@@ -64,8 +124,23 @@ class ConfigError(ParameterError):
 class SweepError(ElectrogrowthError, RuntimeError):
     """The sweep as a whole cannot go on (store in use or of another sweep, lost cluster)."""
 
-    remedy = "write to another --out store, or wait for the sweep that holds it"
+    remedy = Remedy(
+        "write to another --out store, or wait for the sweep that holds it",
+        python="write to another store (compute_sweep(config, out=...)), or wait for the"
+        " sweep that holds it",
+    )
 
 
 class UsageError(ElectrogrowthError, ValueError):
     """A bad command line (raised by the parser instead of printing usage and exiting)."""
+
+
+class FailedPoint(ElectrogrowthError, RuntimeError):
+    """A failure kept as data (a point of a sweep or a curve), raised by
+    :meth:`~electrogrowth.outcomes.Outcome.unwrap`; ``remedy`` is the point's."""
+
+
+class InternalError(RuntimeError):
+    """A bug kept as data (status ERROR), raised by
+    :meth:`~electrogrowth.outcomes.Outcome.unwrap` with the original traceback in its
+    message. Not an ElectrogrowthError: it is never the user's mistake."""

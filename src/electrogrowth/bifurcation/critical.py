@@ -28,7 +28,7 @@ import dataclasses
 import math
 
 from ..basestate.tube import solve_base_state
-from ..errors import ConvergenceError, NoBifurcationFound
+from ..errors import ConvergenceError, NoBifurcationFound, Remedy
 from ..incremental.accuracy import RTOL_RANGE, STABLE_SIGN, Accuracy
 from ..incremental.targets import (
     Family,
@@ -39,7 +39,7 @@ from ..incremental.targets import (
 )
 from ..model.layers import Tube
 from ..model.params import TubeParameters, check_control, check_side
-from ..outcomes import Kind, Status
+from ..outcomes import Kind, Outcome, Status
 from ..summary import critical_html
 from .march import brent, control_path, first_bifurcations
 
@@ -50,7 +50,7 @@ REFINE = 100.0
 
 
 @dataclasses.dataclass(frozen=True)
-class CriticalPoint:
+class CriticalPoint(Outcome):
     """Result of :func:`critical_value`.
 
     ``kind`` is BIFURCATION (wrinkling in mode (m, n) of ``family``, see
@@ -60,7 +60,9 @@ class CriticalPoint:
     (radians; tan psi = k r / m: 0 wrinkles along theta, pi/2 along z). (m, n) is
     NO_MODE unless the kind is BIFURCATION; ``as_dict`` gives null there. ``status`` is
     OK, or INACCURATE when the error estimate exceeds the accuracy asked even after
-    refinement (module docstring): the value then has only the digits the estimate supports.
+    refinement (module docstring): the value then has only the digits the estimate supports;
+    ``message`` then says by how much and ``remedy`` what to try. An
+    :class:`~electrogrowth.outcomes.Outcome` (``unwrap``, ``outcome_dict``).
     """
 
     solve_for: str
@@ -76,6 +78,8 @@ class CriticalPoint:
     psi: float | None = None
     family: str | None = None
     status: Status = Status.OK
+    message: str = ""
+    remedy: str = ""
 
     def __post_init__(self):
         if self.family is None and self.kind == Kind.BIFURCATION:
@@ -165,7 +169,13 @@ def critical_value(
         point = _solve(params, m, n, solve_for, fam, side, method, tight, bracket)
     if _certified(point, rtol):
         return point
-    return dataclasses.replace(point, status=Status.INACCURATE)
+    return dataclasses.replace(
+        point,
+        status=Status.INACCURATE,
+        message=f"error estimate {point.error_estimate:.1e} exceeds {CERTIFIED:g} rtol"
+        f" max(1, |value|) (rtol = {rtol:g}) even at rtol / {REFINE:g}",
+        remedy=ConvergenceError.remedy,
+    )
 
 
 def _certified(point: CriticalPoint, rtol: float) -> bool:
@@ -230,17 +240,24 @@ def _solve(params, m, n, solve_for, fam, side, method, rtol, bracket) -> Critica
     )
 
 
-def no_bifurcation_remedy(solve_for: str, *, mode: tuple[int, int] | None = None) -> str:
+def no_bifurcation_remedy(solve_for: str, *, mode: tuple[int, int] | None = None) -> Remedy:
     """The remedy of a NoBifurcationFound in the terms of what was asked: one mode (then
     --m-max / --n-max change nothing) or a scan; the other --side only for a control that
     has one (the stretch, the pressure, the force)."""
-    side = ", try the other --side" if check_side(solve_for, None) is not None else ""
+    sided = check_side(solve_for, None) is not None
+    side, side_py = (", try the other --side", ", try the other side=") if sided else ("", "")
     if mode is not None:
-        return (
+        return Remedy(
             f"mode {tuple(mode)} has no root in the searched range: scan every mode (leave out"
-            f" --mode){side}, or solve for another control parameter"
+            f" --mode){side}, or solve for another control parameter",
+            python=f"mode {tuple(mode)} has no root in the searched range: scan every mode"
+            f" (scan_modes){side_py}, or solve for another control parameter",
         )
-    return f"raise --m-max / --n-max{side}, or solve for another control parameter"
+    return Remedy(
+        f"raise --m-max / --n-max{side}, or solve for another control parameter",
+        python=f"widen ScanOptions(m_range=..., n_range=...){side_py}, or solve for another"
+        " control parameter",
+    )
 
 
 def control_name(params: TubeParameters | Tube, solve_for) -> str:

@@ -23,7 +23,8 @@ split at it and both halves are located again. If a single-mode solve fails (e.g
 kernel cannot integrate a high mode next to the threshold), the switch is bisected with
 scans instead, to a relative 1e-7 only. A point whose scan fails (e.g. the tube is
 already unstable at the start of the march) is kept as kind "failed" with its message (kind
-"error": an unexpected exception, a bug). An interrupt (Ctrl-C, SIGTERM) is never a failed
+"error": an unexpected exception, a bug; its CurvePoint, an outcomes.Outcome, keeps the
+traceback) and is scanned only once. An interrupt (Ctrl-C, SIGTERM) is never a failed
 point: it ends the curve with :class:`~electrogrowth.interrupts.Interrupted`, whose
 ``partial`` holds the grid points computed before it.
 
@@ -60,7 +61,7 @@ from ..interrupts import Interrupted, interrupt_of, reraise_interrupt
 from ..labelled import curve_dataset
 from ..model.layers import Tube
 from ..model.params import CONTROLS, TubeParameters, check_side
-from ..outcomes import BUG_REMEDY, NO_MODE, Kind, Status, status_of
+from ..outcomes import NO_MODE, Kind, Outcome, Status, remedy, status_of, traceback_of
 from ..summary import curve_html
 from .critical import critical_value
 from .directions import past_surface
@@ -103,22 +104,33 @@ def _change_kind(a: CurvePoint, b: CurvePoint, v_before: float, v_after: float) 
 
 
 @dataclasses.dataclass(frozen=True)
-class CurvePoint:
-    """One grid point: critical value and mode, kind "bifurcation", "threshold", "surface"
-    or "failed" (then ``status`` is the error message and value NaN; else ``status`` is
-    "" or "inaccurate": the critical value's error estimate exceeds the accuracy asked even
-    after refinement, :func:`bifurcation.critical_value`), the runners-up
-    (m, n, value), whether the critical point is the short-wave limit (``surface``), and
-    that limit where the scan computed it (else NaN)."""
+class CurvePoint(Outcome):
+    """One grid point, an :class:`~electrogrowth.outcomes.Outcome`: critical value and
+    mode, kind "bifurcation", "threshold" or "surface" ("" where the scan failed: then
+    value NaN and ``status`` FAILED, an electrogrowth error, or ERROR, a bug, with
+    ``message``, ``remedy`` and, for a bug, its ``traceback``), status OK or INACCURATE
+    (the critical value's error estimate exceeds the accuracy asked even after
+    refinement, :func:`bifurcation.critical_value`), the runners-up (m, n, value), whether
+    the critical point is the short-wave limit (``surface``), and that limit where the
+    scan computed it (else NaN). A status given as text ("", "inaccurate") is read as the
+    Status. The curve's table writes a failure's status in its kind column (:func:`_row`).
+    """
 
     x: float
     value: float
     mode: tuple[int, int]
     kind: str
-    status: str = ""
+    status: Status = Status.OK
     runners_up: tuple[tuple[int, int, float], ...] = ()
     surface: bool = False
     short_wave_limit: float = math.nan
+    error_estimate: float = math.nan
+    message: str = ""
+    remedy: str = ""
+    traceback: str = dataclasses.field(default="", repr=False, compare=False)
+
+    def __post_init__(self):
+        object.__setattr__(self, "status", Status(self.status or Status.OK))
 
 
 def curve_point(
@@ -137,12 +149,35 @@ def curve_point(
         res = scan_modes(params.at(along, x), solve_for, side=side, options=options)
     except Exception as exc:  # noqa: BLE001 -- failures are data in a sweep
         reraise_interrupt(exc)
-        return CurvePoint(float(x), math.nan, NO_MODE, status_of(exc), _message(exc))
+        return _failed_point(x, exc)
     return _scan_point(x, res)
 
 
-def _failed(kind) -> bool:
-    """A row without a value: a failed point, or one that hit a bug."""
+def _failed_point(x: float, exc: Exception) -> CurvePoint:
+    """The grid point at x whose scan raised ``exc``: FAILED (an electrogrowth error) or
+    ERROR (a bug, its traceback kept)."""
+    status = status_of(exc)
+    text = " ".join(str(exc).split())
+    message = text if status is Status.FAILED else f"internal error: {type(exc).__name__}: {text}"
+    return CurvePoint(
+        float(x),
+        math.nan,
+        NO_MODE,
+        "",
+        status,
+        message=message,
+        remedy=remedy(exc),
+        traceback=traceback_of(exc),
+    )
+
+
+def _failed(pt: CurvePoint) -> bool:
+    """A grid point without a value: its scan failed, or hit a bug."""
+    return pt.status in (Status.FAILED, Status.ERROR)
+
+
+def _failed_row(kind) -> bool:
+    """A row of a curve's table without a value (its kind column holds the status)."""
     return kind in (Status.FAILED, Status.ERROR)
 
 
@@ -162,15 +197,12 @@ def _critical_text(pt: CurvePoint) -> str:
 
 def _changes(prev: CurvePoint, pt: CurvePoint) -> bool:
     """The critical mode changes between two neighbouring grid points: a switch to locate."""
-    return not (_failed(prev.kind) or _failed(pt.kind)) and prev.mode != pt.mode
+    return not (_failed(prev) or _failed(pt)) and prev.mode != pt.mode
 
 
 def _message(exc: Exception) -> str:
     """One line; an unexpected (non-electrogrowth) error is named by its type, as a bug."""
-    text = " ".join(str(exc).split())
-    if isinstance(exc, ElectrogrowthError):
-        return text
-    return f"internal error: {type(exc).__name__}: {text} ({BUG_REMEDY})"
+    return _row_status(_failed_point(math.nan, exc))
 
 
 @dataclasses.dataclass(frozen=True)
@@ -217,7 +249,7 @@ class Curve:
         out, start = [], None
         for i in range(len(self.x) + 1):
             end = i == len(self.x)
-            ok = not end and not _failed(self.kind[i])
+            ok = not end and not _failed_row(self.kind[i])
             if start is not None and (
                 not ok or (self.m[i], self.n[i]) != (self.m[start], self.n[start])
             ):
@@ -468,8 +500,7 @@ def _located(points: list[CurvePoint], loc: _Locator, progress=None):
                 except Exception as exc:  # noqa: BLE001 -- keep the grid points
                     reraise_interrupt(exc)
                     new_rows, new_switches = [], []
-                    why = f"switch from {prev.mode} not located: {_message(exc)}"
-                    pt = dataclasses.replace(pt, status="; ".join(filter(None, (pt.status, why))))
+                    pt = _not_located(pt, prev, exc)
                 rows += new_rows
                 switches += new_switches
                 if bar is not None:
@@ -536,7 +567,7 @@ class _Follower:
         except Exception as exc:  # noqa: BLE001 -- the unit keeps the failure as data
             reraise_interrupt(exc)
             self.scan = None
-            return self.unit(x)
+            return _failed_point(x, exc)  # as the unit would, without scanning again
         pt = _scan_point(x, res)
         mode = pt.kind == Kind.BIFURCATION and not pt.surface and math.isnan(pt.short_wave_limit)
         self.scan = pt if mode or pt.kind == Kind.SURFACE else None
@@ -619,17 +650,38 @@ def _scan_point(x: float, res) -> CurvePoint:
         tuple((r.m, r.n, r.value) for r in res.runners_up),
         bool(res.surface_instability),
         math.nan if limit is None else float(limit),
+        float(c.error_estimate),
     )
 
 
-def _accuracy(c) -> str:
-    """A grid point's status from its CriticalPoint: "inaccurate" (not certified to the
-    rtol asked) or ""."""
-    return str(Status.INACCURATE) if c.status == Status.INACCURATE else ""
+def _accuracy(c) -> Status:
+    """A grid point's status from its CriticalPoint: INACCURATE (not certified to the
+    rtol asked) or OK."""
+    return Status.INACCURATE if c.status == Status.INACCURATE else Status.OK
 
 
 def _row(pt: CurvePoint):
-    return (pt.x, pt.value, pt.mode, pt.kind, pt.status, pt.surface, pt.short_wave_limit)
+    """The table row of a grid point: a failure's status in the kind column."""
+    kind = pt.status if pt.kind == "" else pt.kind
+    return (pt.x, pt.value, pt.mode, kind, _row_status(pt), pt.surface, pt.short_wave_limit)
+
+
+def _row_status(pt: CurvePoint) -> str:
+    """The status column: a failure's message (a bug's with its remedy), else "" or
+    "inaccurate", then any note (a switch not located)."""
+    if pt.kind == "" and pt.status == Status.ERROR:
+        return f"{pt.message} ({pt.remedy})"
+    if pt.kind == "":
+        return pt.message
+    mark = str(Status.INACCURATE) if pt.status == Status.INACCURATE else ""
+    return "; ".join(filter(None, (mark, pt.message)))
+
+
+def _not_located(pt: CurvePoint, prev: CurvePoint, exc: Exception) -> CurvePoint:
+    """``pt`` (its status kept) noting that the switch from ``prev`` could not be located;
+    a bug is named as one ("internal error: ...", with the bug report's remedy)."""
+    why = f"switch from {prev.mode} not located: {_message(exc)}"
+    return dataclasses.replace(pt, message="; ".join(filter(None, (pt.message, why))))
 
 
 class _Locator:
@@ -693,7 +745,7 @@ class _Locator:
             check = self.unit(x)
             first = min(v_before, v_after, key=lambda v: self.sense * v)
             if (
-                not _failed(check.kind)
+                not _failed(check)
                 and check.mode not in (a.mode, b.mode)
                 and self.sense * (check.value - first) < -1e-9 * max(1.0, abs(first))
             ):
@@ -707,7 +759,7 @@ class _Locator:
 
     def _split(self, a, mid, b, depth):
         """Locate the switches on both sides of a scanned point ``mid`` (kept as a row)."""
-        if depth <= 0 or _failed(mid.kind):
+        if depth <= 0 or _failed(mid):
             return [], []
         rows, switches = [], []
         if mid.mode != a.mode:
@@ -743,7 +795,7 @@ class _Locator:
         lo, hi = a, b
         while abs(hi.x - lo.x) > 1e-7 * max(1.0, abs(lo.x)):
             mid = self.unit(0.5 * (lo.x + hi.x))
-            if _failed(mid.kind) or mid.mode not in (a.mode, b.mode):
+            if _failed(mid) or mid.mode not in (a.mode, b.mode):
                 return mid
             lo, hi = (mid, hi) if mid.mode == a.mode else (lo, mid)
         return 0.5 * (lo.x + hi.x), lo.value, hi.value

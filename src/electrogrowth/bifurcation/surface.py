@@ -48,7 +48,7 @@ from ..errors import BaseStateError, ConvergenceError, ParameterError
 from ..incremental.halfspace import surface_radius, surfaces
 from ..model.layers import Tube
 from ..model.params import SIDES, TubeParameters, check_control, check_side
-from ..outcomes import Kind
+from ..outcomes import Kind, Outcome, Status
 from .directions import (
     HALF_PI,
     MARCH_REFINE,
@@ -64,7 +64,7 @@ LAMBDA_CAP = 50.0  # stop approaching a voltage threshold once lambda_i grew thi
 
 
 @dataclasses.dataclass(frozen=True)
-class SurfaceLimit:
+class SurfaceLimit(Outcome):
     """Result of :func:`short_wave_limit` and :func:`ray_limit`.
 
     kind : "surface" (the half-space at ``face`` bifurcates in direction ``psi`` at
@@ -79,6 +79,8 @@ class SurfaceLimit:
     params : the parameters (TubeParameters or layered Tube) at ``value``.
     face : the surface: "inner", "outer" or, in a layered tube, "interface-K" (between
         layers K and K + 1).
+    status, message, remedy : always OK, "" and "" (a failure raises); with them a
+        SurfaceLimit is an :class:`~electrogrowth.outcomes.Outcome` like every result.
     """
 
     solve_for: str
@@ -90,6 +92,9 @@ class SurfaceLimit:
     error_estimate: float
     params: TubeParameters | Tube
     side: str | None = None
+    status: Status = Status.OK
+    message: str = ""
+    remedy: str = ""
 
     def as_dict(self) -> dict:
         return {

@@ -180,7 +180,7 @@ def _dispatch(argv: list[str] | None) -> int:
         return args.run(args)
     except ElectrogrowthError as exc:  # bad input, or a failure with a remedy
         text = " ".join(str(exc).split())
-        remedy = f" ({exc.remedy})" if exc.remedy else ""
+        remedy = f" ({exc.remedy})" if exc.remedy else ""  # a Remedy's text: the CLI form
         print(f"{PROG}: error: {text}{remedy}", file=sys.stderr)
         return 2
     except BrokenPipeError:  # the reader went away (e.g. `| head`): end quietly

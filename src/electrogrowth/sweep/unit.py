@@ -27,7 +27,7 @@ from ..bifurcation.scan import ScanOptions, scan_modes
 from ..errors import NoBifurcationFound
 from ..interrupts import reraise_interrupt
 from ..model.params import TubeParameters
-from ..outcomes import NO_MODE, Kind, Status, remedy, status_of
+from ..outcomes import NO_MODE, Kind, Outcome, Status, remedy, status_of, traceback_of
 
 
 @dataclasses.dataclass(frozen=True)
@@ -41,7 +41,7 @@ class ScanSpec:
 
 
 @dataclasses.dataclass(frozen=True)
-class PointResult:
+class PointResult(Outcome):
     """The outcome at one grid point.
 
     ``status`` is OK (``kind`` then says what was found: BIFURCATION in mode (m, n),
@@ -50,9 +50,10 @@ class PointResult:
     exceeds the accuracy asked even after refinement: ``message`` says by how much; see
     :func:`bifurcation.critical_value`), FAILED (an electrogrowth error: no base state, no
     convergence; see ``message`` and ``remedy``) or ERROR (an unexpected exception, a bug:
-    please report it).
+    please report it; ``traceback`` says where, and is not stored).
     ``runners_up`` holds (m, n, value) of the next modes to bifurcate; (m, n) is NO_MODE
-    where no mode is critical.
+    where no mode is critical. An :class:`~electrogrowth.outcomes.Outcome`:
+    ``unwrap()`` raises the failure, ``outcome_dict()`` gives the shared fields.
     """
 
     status: Status
@@ -66,6 +67,7 @@ class PointResult:
     message: str = ""
     seconds: float = math.nan
     remedy: str = ""
+    traceback: str = dataclasses.field(default="", repr=False, compare=False)
 
 
 def compute_point(params: TubeParameters, spec: ScanSpec) -> PointResult:
@@ -95,6 +97,7 @@ def compute_point(params: TubeParameters, spec: ScanSpec) -> PointResult:
             message=f"{prefix}{type(exc).__name__}: {exc}",
             seconds=took(),
             remedy=remedy(exc),
+            traceback=traceback_of(exc),
         )
     c = res.critical
     inaccurate = c.status == Status.INACCURATE
