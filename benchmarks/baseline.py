@@ -11,7 +11,6 @@ is being timed); what is timed is the per-mode SciPy integration inside a root f
 
 from __future__ import annotations
 
-import dataclasses
 import math
 
 import numpy as np
@@ -59,7 +58,7 @@ def critical_value(
         start, scale = 1.0, 1.0
         sense = -1.0 if side in (None, "compression") and solve_for == "stretch" else 1.0
         end = 0.05 if sense < 0 else 8.0
-    f = lambda x: det_impedance(dataclasses.replace(params, **{solve_for: x}), m, n, rtol)  # noqa
+    f = lambda x: det_impedance(params.at(solve_for, x), m, n, rtol)  # noqa
     x, fx = start, f(start)
     while (end - x) * sense > 0:
         x_new = x + sense * 0.01 * scale

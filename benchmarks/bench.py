@@ -43,7 +43,7 @@ from pathlib import Path
 
 import numpy as np
 
-from electrogrowth import TubeParameters
+from electrogrowth import Tube
 from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.bifurcation.scan import ScanOptions, scan_grid, scan_modes
@@ -59,7 +59,7 @@ HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 FULL = ScanOptions((0, 30), (1, 40))
 QUICK = ScanOptions((0, 4), (1, 4))
-P = TubeParameters
+P = Tube.uniform
 
 #: (name, tube, solve_for, side): the paper's box and its hard corners.
 CASES = [
@@ -253,9 +253,9 @@ def warm_mode(repeat=30):
 
 
 FRESH = (
-    "import time; t = time.perf_counter(); from electrogrowth import TubeParameters;"
+    "import time; t = time.perf_counter(); from electrogrowth import Tube;"
     "from electrogrowth.bifurcation.critical import critical_value;"
-    "critical_value(TubeParameters(1.4, 1.0, voltage=0.4), 0, 1, 'growth');"
+    "critical_value(Tube.uniform(1.4, 1.0, voltage=0.4), 0, 1, 'growth');"
     "print(time.perf_counter() - t)"
 )
 

@@ -16,7 +16,7 @@ import time
 from pathlib import Path
 
 from electrogrowth.bifurcation.critical import critical_value
-from electrogrowth.model.params import TubeParameters
+from electrogrowth.model.layers import Tube
 from electrogrowth.sweep.file import parse_config
 from electrogrowth.sweep.run import compute_sweep
 from electrogrowth.sweep.unit import ChunkTask, compute_chunk
@@ -54,7 +54,7 @@ def main() -> None:
     args = ap.parse_args()
     num, chunk = (2, 2) if args.quick else (4, 2)
     config = parse_config(SWEEP.format(num=num, chunk=chunk))
-    critical_value(TubeParameters(1.4, 1.0, voltage=0.4), 0, 1, "growth")
+    critical_value(Tube.uniform(1.4, 1.0, voltage=0.4), 0, 1, "growth")
     runs = []
     # the points alone: one task of the whole grid, serial, in this process, no store
     whole = tuple(slice(0, len(values)) for _, values in config.grid)
@@ -81,7 +81,7 @@ def main() -> None:
             ) as cluster:
                 t = time.perf_counter()
                 with Client(cluster) as client:
-                    client.run(critical_value, TubeParameters(1.4, 1.0), 0, 1, "growth")
+                    client.run(critical_value, Tube.uniform(1.4, 1.0), 0, 1, "growth")
                 warm = time.perf_counter() - t
                 r = run(
                     f"dask LocalCluster, {n} worker(s)",

@@ -15,12 +15,12 @@ compare_figures = pytest.importorskip("compare_figures")
 
 def test_bench_case_at_tiny_size():
     """One point of the suite with a 2 x 2 mode range: counts, ratios and errors."""
-    from electrogrowth import TubeParameters
+    from electrogrowth import Tube
     from electrogrowth.bifurcation.scan import ScanOptions
 
     r = bench.bench_case(
         "tiny",
-        TubeParameters(1.4, 1.0, voltage=0.4),
+        Tube.uniform(1.4, 1.0, voltage=0.4),
         "growth",
         None,
         ScanOptions((0, 1), (1, 2), extend=False),

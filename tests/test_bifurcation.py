@@ -6,7 +6,7 @@ import math
 import pytest
 from scipy.optimize import brentq
 
-from electrogrowth import NoBifurcationFound, ParameterError, TubeParameters
+from electrogrowth import NoBifurcationFound, ParameterError, Tube
 from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.bifurcation.critical import critical_value, stable_sign
 from electrogrowth.incremental.targets import impedance_targets
@@ -20,7 +20,7 @@ def test_euler_column_limit():
     """V = 0, g = 1, slender thin tube, mode (1, 1): 1 - lambda_z -> pi^2 (Ro^2 + 1)/(4 l^2)."""
     ro, errors = 1.1, []
     for L in (20.0, 40.0):
-        lz = critical_value(TubeParameters(ro, L), 1, 1, "stretch").value
+        lz = critical_value(Tube.uniform(ro, L), 1, 1, "stretch").value
         euler = math.pi**2 * (ro**2 + 1) / (4 * (lz * L) ** 2)
         errors.append(abs((1 - lz) / euler - 1))
     assert errors[1] < 0.02
@@ -32,28 +32,26 @@ def test_surface_instability_limit():
     x = brentq(lambda x: x**3 + x**2 + 3 * x - 1, 0, 1)
     lam = x ** (2 / 3)
     assert abs(lam - 0.443746) < 1e-6
-    gaps = [
-        critical_value(TubeParameters(3.0, 1.0), 0, n, "stretch").value - lam for n in (20, 40)
-    ]
+    gaps = [critical_value(Tube.uniform(3.0, 1.0), 0, n, "stretch").value - lam for n in (20, 40)]
     assert 0 < gaps[1] < 2e-4
     assert 1.8 < gaps[0] / gaps[1] < 2.2  # O(1/n) approach from the stable side
 
 
 def test_critical_growth_is_a_sign_change_to_many_digits():
-    p = TubeParameters(1.4, 1.0, stretch=1.0, voltage=0.4)
+    p = Tube.uniform(1.4, 1.0, stretch=1.0, voltage=0.4)
     c = critical_value(p, 3, 7, "growth")
     assert c.kind == "bifurcation" and c.error_estimate < 1e-8
     g = c.value
-    assert _f(dataclasses.replace(p, growth=g * (1 - 1e-10)), 3, 7) > 0
-    assert _f(dataclasses.replace(p, growth=g * (1 + 1e-10)), 3, 7) < 0
+    assert _f(p.at("growth", g * (1 - 1e-10)), 3, 7) > 0
+    assert _f(p.at("growth", g * (1 + 1e-10)), 3, 7) < 0
 
 
 def test_growth_is_a_rescaling_of_the_reference_tube():
     """(g, lambda_z, Vbar) is the ungrown tube at (lambda_z/g, Vbar/g): same critical point."""
-    p = TubeParameters(1.4, 1.0, stretch=1.1, voltage=0.4)
+    p = Tube.uniform(1.4, 1.0, stretch=1.1, voltage=0.4)
     m, n = 4, 9
     g = critical_value(p, m, n, "growth").value
-    ungrown = TubeParameters(1.4, 1.0, growth=1.0, voltage=0.4 / g)
+    ungrown = Tube.uniform(1.4, 1.0, growth=1.0, voltage=0.4 / g)
 
     def f(lz):
         return _f(dataclasses.replace(ungrown, stretch=lz), m, n)
@@ -63,14 +61,14 @@ def test_growth_is_a_rescaling_of_the_reference_tube():
 
 
 def test_growth_identity_for_critical_voltage():
-    p = TubeParameters(1.6, 1.2, growth=1.15, stretch=1.2)
+    p = Tube.uniform(1.6, 1.2, growth=1.15, stretch=1.2)
     v = critical_value(p, 2, 1, "voltage").value
-    v0 = critical_value(TubeParameters(1.6, 1.2, stretch=1.2 / 1.15), 2, 1, "voltage").value
+    v0 = critical_value(Tube.uniform(1.6, 1.2, stretch=1.2 / 1.15), 2, 1, "voltage").value
     assert abs(v - 1.15 * v0) < 1e-9 * v
 
 
 def test_extension_and_compression_sides():
-    p = TubeParameters(1.4, 1.0, voltage=0.6)
+    p = Tube.uniform(1.4, 1.0, voltage=0.6)
     lo = critical_value(p, 0, 1, "stretch", side="compression")
     hi = critical_value(p, 0, 1, "stretch", side="extension")
     assert lo.value < 1.0 < hi.value
@@ -79,22 +77,22 @@ def test_extension_and_compression_sides():
 
 
 def test_bad_mode_and_unknown_control():
-    p = TubeParameters()
+    p = Tube.uniform()
     with pytest.raises(ParameterError, match="mode"):
         critical_value(p, -1, 1, "growth")
-    with pytest.raises(ParameterError, match="solve_for"):
+    with pytest.raises(ParameterError, match="'temperature' is unknown"):
         critical_value(p, 0, 1, "temperature")
     with pytest.raises(ParameterError, match="side"):
         critical_value(p, 0, 1, "stretch", side="sideways")
 
 
 def test_already_unstable_start_is_an_error():
-    p = TubeParameters(1.4, 1.0, stretch=0.5)  # far beyond compressive buckling
+    p = Tube.uniform(1.4, 1.0, stretch=0.5)  # far beyond compressive buckling
     with pytest.raises(ParameterError, match="already unstable"):
         critical_value(p, 0, 1, "growth")
 
 
 def test_no_bifurcation_in_range():
-    p = TubeParameters(1.4, 1.0, growth=1.0)
+    p = Tube.uniform(1.4, 1.0, growth=1.0)
     with pytest.raises(NoBifurcationFound):  # axial extension of an unloaded tube is stable
         critical_value(p, 0, 1, "stretch", side="extension")

@@ -13,14 +13,14 @@ from pathlib import Path
 
 import pytest
 
-from electrogrowth import TubeParameters
+from electrogrowth import Tube
 from electrogrowth.bifurcation import critical
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.cli.app import main
-from electrogrowth.model.layers import Layer, Tube
+from electrogrowth.model.layers import Layer
 from electrogrowth.outcomes import Status
 
-PARAMS = TubeParameters(outer_radius=1.4, length=1.0, voltage=0.4)
+PARAMS = Tube.uniform(outer_radius=1.4, length=1.0, voltage=0.4)
 MODE = (3, 1)
 TRUE = critical_value(PARAMS, *MODE, "growth")
 #: growth windows where the faulty targets of a tolerance have the wrong sign (the march's
@@ -39,7 +39,7 @@ def faulty_targets(windows):
 
         def wrong(state, modes):
             out = f(state, modes)
-            return -out if lo < state.params.growth < hi else out
+            return -out if lo < state.tube.growth < hi else out
 
         return wrong
 

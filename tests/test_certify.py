@@ -14,7 +14,7 @@ import pytest
 from electrogrowth import (
     ScanOptions,
     ScanResult,
-    TubeParameters,
+    Tube,
     certify,
     critical_value,
     load_tube,
@@ -25,7 +25,7 @@ from electrogrowth.bifurcation.certify import CERTIFY_RTOL
 from electrogrowth.cli.app import main
 from electrogrowth.errors import ConvergenceError
 
-P = TubeParameters(1.4, 1.0, voltage=0.4)
+P = Tube.uniform(1.4, 1.0, voltage=0.4)
 BILAYER = Path(__file__).parent.parent / "examples" / "bilayer.toml"
 
 
@@ -114,7 +114,7 @@ def test_a_layered_collocation_sign_change_alone_is_no_bifurcation(monkeypatch):
 
 def test_a_surface_result_says_what_it_certified():
     """The thick compressed tube of test_scan: the inner face's half-space value first."""
-    p = TubeParameters(2.5, 3.0, stretch=0.8)
+    p = Tube.uniform(2.5, 3.0, stretch=0.8)
     res = scan_modes(p, "voltage", options=ScanOptions((0, 2), (1, 6)))
     assert res.critical.kind == "surface"
     cert = certify(p, res.critical)  # no scan: the half-space value alone
@@ -125,7 +125,7 @@ def test_a_surface_result_says_what_it_certified():
 
 @pytest.mark.slow
 def test_a_surface_scan_certifies_its_best_finite_mode_too():
-    p = TubeParameters(2.5, 3.0, stretch=0.8)
+    p = Tube.uniform(2.5, 3.0, stretch=0.8)
     res = scan_modes(p, "voltage", options=ScanOptions((0, 2), (1, 6)))
     cert = certify(p, res.critical, scan=res)
     best = res.runners_up[0]

@@ -4,7 +4,7 @@ import json
 
 import pytest
 
-from electrogrowth import TubeParameters
+from electrogrowth import Tube
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.cli.app import main
 
@@ -18,7 +18,7 @@ def _json(capsys, argv):
 
 def test_single_mode_json_equals_api(capsys):
     rec = _json(capsys, BASE + ["--solve-for", "growth", "--voltage", "0.4", "--mode", "3", "1"])
-    want = critical_value(TubeParameters(1.4, 1.0, voltage=0.4), 3, 1, "growth")
+    want = critical_value(Tube.uniform(1.4, 1.0, voltage=0.4), 3, 1, "growth")
     assert {"solve_for", "value", "m", "n", "error_estimate", "kind"} <= rec.keys()
     assert rec["kind"] == "bifurcation" and (rec["m"], rec["n"]) == (3, 1)
     assert rec["value"] == pytest.approx(want.value, rel=1e-12)
@@ -29,10 +29,10 @@ def test_scan_reports_critical_mode_and_runners_up(capsys):
     rec = _json(capsys, BASE + ["--solve-for", "voltage", "--m-max", "4", "--n-max", "4"])
     values = [rec["value"]] + [r["value"] for r in rec["runners_up"]]
     assert values == sorted(values) and len(values) == 5
-    direct = critical_value(TubeParameters(1.4, 1.0), rec["m"], rec["n"], "voltage")
+    direct = critical_value(Tube.uniform(1.4, 1.0), rec["m"], rec["n"], "voltage")
     assert rec["value"] == pytest.approx(direct.value, rel=1e-11)
     for r in rec["runners_up"][:2]:  # each runner-up is a genuine critical value of its mode
-        c = critical_value(TubeParameters(1.4, 1.0), r["m"], r["n"], "voltage")
+        c = critical_value(Tube.uniform(1.4, 1.0), r["m"], r["n"], "voltage")
         assert r["value"] == pytest.approx(c.value, rel=1e-8)
 
 

@@ -4,7 +4,7 @@ import json
 
 import pytest
 
-from electrogrowth import TubeParameters
+from electrogrowth import Tube
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.cli.app import main
 
@@ -23,7 +23,7 @@ def test_demo_writes_results_and_the_critical_growth(tmp_path, capsys):
     ):
         assert (tmp_path / name).stat().st_size > 100, name
     crit = json.loads((tmp_path / "critical.json").read_text())
-    want = critical_value(TubeParameters(1.4, 1.0, voltage=0.4), crit["m"], crit["n"], "growth")
+    want = critical_value(Tube.uniform(1.4, 1.0, voltage=0.4), crit["m"], crit["n"], "growth")
     assert crit["value"] == pytest.approx(want.value, rel=1e-12)
     assert f"g_cr = {want.value:.10f}" in out
 

@@ -13,8 +13,8 @@ import pytest
 from electrogrowth.basestate.tube import neo_hookean_asymptote, solve_base_state
 from electrogrowth.cli.app import main
 from electrogrowth.figures import FIGURES
+from electrogrowth.model.layers import Tube
 from electrogrowth.model.materials import gent
-from electrogrowth.model.params import TubeParameters
 
 BASE = ["state", "--outer-radius", "2.0", "--growth", "1.1", "--stretch", "1.0"]
 
@@ -29,9 +29,7 @@ def test_state_json_matches_the_api(capsys):
     status, out, err = run(capsys, *BASE, "--voltage", "0.3", "--json")
     assert status == 0 and err == ""
     rec = json.loads(out)
-    state = solve_base_state(
-        TubeParameters(outer_radius=2.0, growth=1.1, stretch=1.0, voltage=0.3)
-    )
+    state = solve_base_state(Tube.uniform(outer_radius=2.0, growth=1.1, stretch=1.0, voltage=0.3))
     for key in ("lambda_i", "lambda_o", "r_i", "r_o", "charge", "axial_force"):
         assert rec[key] == getattr(state, key)
     assert rec["voltage_threshold"] == pytest.approx(
@@ -47,7 +45,7 @@ def test_state_json_matches_the_api(capsys):
 def test_state_text_reports_every_quantity(capsys):
     status, out, err = run(capsys, *BASE, "--voltage", "0.3")
     assert status == 0 and err == ""
-    state = solve_base_state(TubeParameters(outer_radius=2.0, growth=1.1, voltage=0.3))
+    state = solve_base_state(Tube.uniform(outer_radius=2.0, growth=1.1, voltage=0.3))
     assert f"{state.lambda_i:.12g}" in out and f"{state.lambda_o:.12g}" in out
     assert f"{state.r_o:.12g}" in out and f"{state.axial_force:.12g}" in out
     assert f"{state.voltage_threshold:.12g} (asymptote)" in out
@@ -60,7 +58,7 @@ def test_gent_material_and_its_parameter(capsys):
     )
     rec = json.loads(out)
     state = solve_base_state(
-        TubeParameters(outer_radius=2.0, growth=1.1, voltage=1.0, material=gent(50))
+        Tube.uniform(outer_radius=2.0, growth=1.1, voltage=1.0, material=gent(50))
     )
     assert status == 0 and rec["lambda_i"] == state.lambda_i
     assert rec["threshold_kind"] == "none" and rec["voltage_threshold"] is None
@@ -107,7 +105,7 @@ def test_bad_input_is_one_line_and_exit_status_2(capsys, argv, named):
 
 
 def test_voltage_at_threshold_names_both_numbers(capsys):
-    thr = neo_hookean_asymptote(TubeParameters(outer_radius=2.0, growth=1.1))
+    thr = neo_hookean_asymptote(Tube.uniform(outer_radius=2.0, growth=1.1))
     status, _, err = run(capsys, *BASE, "--voltage", repr(thr))
     assert status == 2 and err.count("\n") == 1
     assert f"{thr:.12g}" in err and "threshold" in err
@@ -141,7 +139,7 @@ def test_figure4_data_headline(tmp_path):
     t = res.table  # columns g, lambda_z, Vbar, lambda_i, Vbar_threshold
     assert np.all(t[:, 2] < t[:, 4]) and t[:, 3].max() == pytest.approx(5.0, rel=1e-6)
     row = t[(t[:, 0] == 1.1) & (t[:, 1] == 1.0)][7]
-    state = solve_base_state(TubeParameters(outer_radius=2.0, growth=1.1, voltage=row[2]))
+    state = solve_base_state(Tube.uniform(outer_radius=2.0, growth=1.1, voltage=row[2]))
     assert state.lambda_i == pytest.approx(row[3], rel=1e-11)
 
 
@@ -150,9 +148,7 @@ def test_figure5_data_headline():
     t = res.table  # g, lambda_z, Vbar, R, r, sigma_rr, sigma_tt, sigma_zz
     faces = np.isin(t[:, 3], (1.0, 2.0))
     assert np.abs(t[faces, 5]).max() < 1e-12  # traction-free faces
-    state = solve_base_state(
-        TubeParameters(outer_radius=2.0, growth=1.1, stretch=0.9, voltage=0.8)
-    )
+    state = solve_base_state(Tube.uniform(outer_radius=2.0, growth=1.1, stretch=0.9, voltage=0.8))
     got = res.headline["sigma_tt_inner_g1.1_lz0.9_V0.8"]
     assert got == pytest.approx(state.stresses(1.0)[1], rel=1e-13)
     assert got > 0.05  # tensile hoop stress on the inner face

@@ -18,6 +18,7 @@ from scipy.special import ivp, kvp
 
 from electrogrowth.errors import NoBifurcationFound, ParameterError
 from electrogrowth.incremental import collocation as col
+from electrogrowth.model.layers import Tube
 from electrogrowth.model.materials import (
     I1,
     I2,
@@ -30,7 +31,6 @@ from electrogrowth.model.materials import (
     mooney_rivlin,
     neo_hookean,
 )
-from electrogrowth.model.params import TubeParameters
 
 HALF_SPACE = 0.443745615894947  # lambda_z with lambda_z^{3/2} = root of x^3 + x^2 + 3x - 1
 
@@ -44,23 +44,35 @@ class FixtureState:
     """Traction-free base state: sigma_rr = int_{r_i}^r (tau_2 - tau_1) ds / s, p = tau_1 -
     sigma_rr, D_r = c / r, c = V / ln(r_o / r_i) (E = D for an ideal dielectric)."""
 
-    params: TubeParameters
+    tube: Tube
     r_i: float
     r_o: float
     charge: float
 
     @property
     def current_length(self) -> float:
-        return self.params.stretch * self.params.length
+        return self.tube.stretch * self.tube.length
 
     face_pressures = (0.0, 0.0)
 
-    def radius(self, R):
-        p = self.params
+    @property
+    def stretch(self) -> float:
+        return self.tube.stretch
+
+    @property
+    def radii(self) -> tuple[float, float]:
+        return (self.r_i, self.r_o)
+
+    def reference_radius(self, r, *, layer: int = 0):
+        t = self.tube
+        return np.sqrt(1 + t.stretch * (np.asarray(r) ** 2 - self.r_i**2) / t.growth**3)
+
+    def radius(self, R, *, side="outer"):
+        p = self.tube
         return np.sqrt(self.r_i**2 + p.growth**3 * (np.asarray(R, float) ** 2 - 1) / p.stretch)
 
     def _stretches(self, r):
-        p = self.params
+        p = self.tube
         R = np.sqrt(1 + p.stretch * (r**2 - self.r_i**2) / p.growth**3)
         l2, l3 = r / R / p.growth, p.stretch / p.growth
         return 1 / (l2 * l3), l2, l3, self.charge / r
@@ -68,18 +80,18 @@ class FixtureState:
     def sigma_rr(self, r):
         r = np.asarray(r, float)
         s = self.r_i + (r[..., None] - self.r_i) * (_GX + 1) / 2
-        tau = self.params.material.stress(*self._stretches(s))
+        tau = self.tube.material.stress(*self._stretches(s))
         return (r - self.r_i) / 2 * np.sum(_GW * (tau[1] - tau[0]) / s, axis=-1)
 
-    def moduli(self, R):
-        return self.params.material.moduli(*self._stretches(self.radius(R)))
+    def moduli(self, R, *, side="outer"):
+        return self.tube.material.moduli(*self._stretches(self.radius(R)))
 
-    def pressure(self, R):
+    def pressure(self, R, *, side="outer"):
         r = self.radius(R)
-        return self.params.material.stress(*self._stretches(r))[0] - self.sigma_rr(r)
+        return self.tube.material.stress(*self._stretches(r))[0] - self.sigma_rr(r)
 
 
-def fixture_state(params: TubeParameters) -> FixtureState:
+def fixture_state(params: Tube) -> FixtureState:
     g, lz, V = params.growth, params.stretch, params.physical_voltage
 
     def state(ri):
@@ -97,8 +109,8 @@ def fixture_state(params: TubeParameters) -> FixtureState:
     return state(ri)
 
 
-def tube(**kw) -> TubeParameters:
-    return TubeParameters(**{"outer_radius": 1.5, "length": 3.0, **kw})
+def tube(**kw) -> Tube:
+    return Tube.uniform(**{"outer_radius": 1.5, "length": 3.0, **kw})
 
 
 def critical(params, m, n, solve_for, bracket, nodes=24):

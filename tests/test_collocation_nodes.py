@@ -10,8 +10,8 @@ from numpy.polynomial import chebyshev as cheb
 from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.incremental.targets import resolving_nodes, targets_for
+from electrogrowth.model.layers import Tube
 from electrogrowth.model.materials import mooney_rivlin
-from electrogrowth.model.params import TubeParameters
 
 
 @pytest.mark.parametrize("q", [10.0, 100.0, 347.0, 1000.0])
@@ -33,7 +33,7 @@ def test_mooney_rivlin_short_wave_roots_agree():
     2.698012067, 88: 2.6980124037604, 104: 2.6980124039946): collocation was under-resolved
     (q = k (r_o - r_i) = 347 e-folds across the wall). At 102 nodes its target changes sign
     within 1e-8 of the impedance's root."""
-    params = TubeParameters(
+    params = Tube.uniform(
         outer_radius=3.765, length=0.337, stretch=1.202, voltage=0.2, material=mooney_rivlin(0.7)
     )
     root = critical_value(params, 0, 4, "growth", bracket=(2.6975, 2.6985)).value

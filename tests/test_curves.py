@@ -3,7 +3,6 @@ solves, failures as data, and the ``electrogrowth curve`` command."""
 
 import argparse
 import csv
-import dataclasses
 import json
 
 import numpy as np
@@ -15,7 +14,7 @@ from electrogrowth.bifurcation.scan import ScanOptions, scan_modes
 from electrogrowth.cli.curve import configure_curve, run_curve
 from electrogrowth.errors import ParameterError
 from electrogrowth.figures.plots import plot_curve
-from electrogrowth.model.params import TubeParameters
+from electrogrowth.model.layers import Tube
 
 SMALL = {"options": ScanOptions((0, 2), (1, 2))}  # the optimum on an edge extends the range
 
@@ -26,7 +25,7 @@ def thin_to_thick():
     mode switches from (m, n) = (1, 1) to (0, 1) near Rbar_o = 1.256."""
     calls = []
     curve = critical_curve(
-        TubeParameters(length=1.0),
+        Tube.uniform(length=1.0),
         "stretch",
         "outer_radius",
         [1.2, 1.3],
@@ -44,7 +43,7 @@ def test_switch_is_where_the_two_modes_are_equally_critical(thin_to_thick):
     assert isinstance(sw, Switch) and 1.2 < sw.x < 1.3
     assert sw.value_after == pytest.approx(sw.value, abs=1e-10)  # a crossing, not a jump
     assert (sw.mode_before, sw.mode_after) == ((1, 1), (0, 1))
-    at = dataclasses.replace(curve.params, outer_radius=sw.x)
+    at = curve.params.at("outer_radius", sw.x)
     before = critical_value(at, 1, 1, "stretch", side="compression").value
     after = critical_value(at, 0, 1, "stretch", side="compression").value
     assert abs(before - after) < 1e-8
@@ -58,7 +57,7 @@ def test_values_between_grid_points_are_the_direct_critical_values(thin_to_thick
     curve, _ = thin_to_thick
     sw = curve.switches[0]
     for x in (0.5 * (1.2 + sw.x), 0.5 * (sw.x + 1.3)):  # inside each branch
-        p = dataclasses.replace(curve.params, outer_radius=x)
+        p = curve.params.at("outer_radius", x)
         scan = scan_modes(p, "stretch", side="compression", **SMALL).critical
         mode = (1, 1) if x < sw.x else (0, 1)
         assert (scan.m, scan.n) == mode
@@ -100,7 +99,7 @@ def test_branches_csv_and_plot(thin_to_thick, tmp_path):
 def test_failures_are_data():
     """At Vbar = 0.6 the ungrown tube (Rbar_o = 1.4, L = 1) buckles in extension at
     lambda_z = 1.583: beyond it there is no stable start for the growth factor."""
-    p = TubeParameters(outer_radius=1.4, voltage=0.6)
+    p = Tube.uniform(outer_radius=1.4, voltage=0.6)
     curve = critical_curve(p, "growth", "stretch", [1.6, 1.65], **SMALL)
     assert list(curve.kind) == ["failed", "failed"]
     assert np.isnan(curve.value).all() and "already unstable" in curve.status[0]
@@ -113,14 +112,14 @@ def test_failures_are_data():
         ("growth", "growth", {}, "along = 'growth'"),
         ("stretch", "stretch", {}, "along = 'stretch'"),
         ("growth", "radius", {}, "along = 'radius'"),
-        ("pressure", "stretch", {}, "solve_for = 'pressure'"),
+        ("force", "stretch", {}, "solve_for = force is not a control of this tube"),
         ("voltage", "stretch", {"side": "extension"}, "side"),
         ("stretch", "voltage", {"side": "sideways"}, "sideways"),
     ],
 )
 def test_bad_combinations_raise(solve_for, along, extra, named):
     with pytest.raises(ParameterError, match=named):
-        critical_curve(TubeParameters(), solve_for, along, [1.0, 1.1], **extra)
+        critical_curve(Tube.uniform(), solve_for, along, [1.0, 1.1], **extra)
 
 
 @pytest.mark.parametrize(
@@ -133,7 +132,7 @@ def test_bad_combinations_raise(solve_for, along, extra, named):
 )
 def test_bad_grids_raise(values, named):
     with pytest.raises(ParameterError, match=named):
-        critical_curve(TubeParameters(), "voltage", "outer_radius", values)
+        critical_curve(Tube.uniform(), "voltage", "outer_radius", values)
 
 
 def _args(*argv):
@@ -228,7 +227,7 @@ def test_cli_bad_input_is_a_parameter_error(argv, named, tmp_path):
     [
         # no switch: most points are followed, not scanned
         (
-            TubeParameters(1.4, 1.0, voltage=0.4),
+            Tube.uniform(1.4, 1.0, voltage=0.4),
             "growth",
             "stretch",
             np.linspace(0.9, 1.3, 9),
@@ -236,14 +235,14 @@ def test_cli_bad_input_is_a_parameter_error(argv, named, tmp_path):
         ),
         # the outer face's short-wave limit comes first all along (Fig. 7, extension)
         (
-            TubeParameters(1.3, 1.0, voltage=0.4),
+            Tube.uniform(1.3, 1.0, voltage=0.4),
             "stretch",
             "outer_radius",
             [1.3, 1.35, 1.4, 1.45],
             "extension",
         ),
         # two switches of the critical mode along Rbar_o
-        (TubeParameters(length=1.0), "voltage", "outer_radius", np.linspace(1.1, 1.35, 6), None),
+        (Tube.uniform(length=1.0), "voltage", "outer_radius", np.linspace(1.1, 1.35, 6), None),
     ],
 )
 def test_continuation_equals_full_scans(params, solve_for, along, grid, side, monkeypatch):
@@ -307,7 +306,7 @@ def _fake_modes(monkeypatch, values, threshold=None, inaccurate=()):
 
 
 def _curve(grid):
-    return critical_curve(TubeParameters(), "growth", "voltage", grid, follow=False)
+    return critical_curve(Tube.uniform(), "growth", "voltage", grid, follow=False)
 
 
 def test_a_crossing_is_a_switch(monkeypatch):

@@ -11,7 +11,7 @@ import math
 import numpy as np
 import pytest
 
-from electrogrowth import Layer, ScanOptions, Tube, TubeParameters, critical_value, gent
+from electrogrowth import Layer, ScanOptions, Tube, critical_value, gent
 from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.bifurcation.scan import scan_grid, scan_modes, stable_signs
 from electrogrowth.cli.app import main
@@ -22,7 +22,7 @@ from electrogrowth.errors import ParameterError
 from electrogrowth.incremental.targets import impedance_targets
 
 SMALL = ScanOptions((0, 2), (1, 2))
-TUBE = TubeParameters()  # uncharged, ungrown, L = 1: axial compression
+TUBE = Tube.uniform()  # uncharged, ungrown, L = 1: axial compression
 VARY = ("outer_radius", 1.2, 1.3)
 
 
@@ -103,7 +103,7 @@ def _fd(tube, mode, solve_for, key, h=1e-4):
 
 
 def test_sensitivities_equal_finite_differences_one_layer():
-    tube = TubeParameters(outer_radius=1.25, voltage=0.2, stretch=0.9)
+    tube = Tube.uniform(outer_radius=1.25, voltage=0.2, stretch=0.9)
     c = critical_value(tube, 1, 1, "growth")
     sens = sensitivities(tube, (1, 1), "growth", c.value)
     assert set(sens) == {"outer_radius", "length", "stretch", "voltage"}
@@ -204,11 +204,11 @@ def test_cli_design_bad_range(capsys):
     args = ["design", "--solve-for", "stretch", "--target", "0", "1"]
     assert main([*args, "--vary", "outer_radius", "1.3", "1.2"]) == 2
     assert main([*args, "--vary", "outer_radius", "0.5", "1.2"]) == 2
-    assert main([*args, "--vary", "layers[1].thickness", "0.1", "0.2"]) == 2  # one layer
+    assert main([*args, "--vary", "layers[2].thickness", "0.1", "0.2"]) == 2  # one layer
     assert main([*args, "--vary", "outer_radius", "nan", "1.2"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 4 and all(e.startswith("electrogrowth: error:") for e in err)
-    assert "vary key 'layers[1].thickness' is unknown for a one-layer tube" in err[2]
+    assert "vary key 'layers[2].thickness' is not a key of this tube" in err[2]
 
 
 def test_public_names_are_the_functions():

@@ -15,7 +15,7 @@ import math
 import numpy as np
 import pytest
 
-from electrogrowth import TubeParameters, solve_base_state
+from electrogrowth import Tube, solve_base_state
 from electrogrowth.incremental.dominant import (
     attraction_rate,
     dominant_impedance,
@@ -24,7 +24,7 @@ from electrogrowth.incremental.dominant import (
 )
 from electrogrowth.incremental.impedance import ALL_PAIRS, integrate_one
 from electrogrowth.incremental.radial_table import build_table
-from electrogrowth.model.layers import Layer, Tube
+from electrogrowth.model.layers import Layer
 
 
 def test_matrix_sign_of_a_known_spectrum():
@@ -86,9 +86,9 @@ MODES = [(1, 12), (1, 18), (2, 18), (5, 20), (1, 30), (20, 30), (12, 40), (3, 8)
     "params",
     [
         # near the voltage threshold: the inner face is next to its short-wave limit
-        TubeParameters(2.0, 1.0, voltage=0.796063),
-        TubeParameters(2.0, 1.0, growth=2.11, voltage=0.3),
-        TubeParameters(1.4, 0.5, growth=1.888, voltage=0.4),
+        Tube.uniform(2.0, 1.0, voltage=0.796063),
+        Tube.uniform(2.0, 1.0, growth=2.11, voltage=0.3),
+        Tube.uniform(1.4, 0.5, growth=1.888, voltage=0.4),
     ],
     ids=["thick-near-threshold", "thick-grown", "short"],
 )

@@ -4,7 +4,7 @@ import json
 
 import pytest
 
-from electrogrowth import ConfigError, MaterialError, TubeParameters, solve_base_state
+from electrogrowth import ConfigError, MaterialError, Tube, solve_base_state
 from electrogrowth.cli.app import main
 from electrogrowth.model.energy_text import energy_material
 from electrogrowth.model.materials import mooney_rivlin
@@ -16,8 +16,8 @@ MR = "0.4*(I1 - 3) + 0.1*(I2 - 3) + I5/2"
 def test_energy_equals_the_builtin():
     text = energy_material(MR)
     builtin = mooney_rivlin(0.8)
-    a = solve_base_state(TubeParameters(1.4, growth=1.1, voltage=0.3, material=text))
-    b = solve_base_state(TubeParameters(1.4, growth=1.1, voltage=0.3, material=builtin))
+    a = solve_base_state(Tube.uniform(1.4, growth=1.1, voltage=0.3, material=text))
+    b = solve_base_state(Tube.uniform(1.4, growth=1.1, voltage=0.3, material=builtin))
     assert a.lambda_i == pytest.approx(b.lambda_i, rel=1e-10)
 
 

@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 from scipy.special import iv, kv
 
-from electrogrowth import ParameterError, TubeParameters
+from electrogrowth import ParameterError, Tube
 from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.bifurcation.scan import ScanOptions, scan_grid, scan_modes
@@ -62,7 +62,7 @@ def test_prismatic_is_the_long_tube_limit_neo_hookean_with_voltage_and_growth():
     """g = 1.2, Vbar = 0.4, extension, m = 12: lambda_z,cr(L) - lambda_z,cr(prismatic) falls
     like 1/L^2 (k^2 = (pi / (lambda_z L))^2; measured slope -1.996, local slopes -1.991,
     -1.998, -1.999) and its Richardson limit is the prismatic value to 1e-8."""
-    p = TubeParameters(1.4, 1.0, growth=1.2, voltage=0.4)
+    p = Tube.uniform(1.4, 1.0, growth=1.2, voltage=0.4)
     prism = critical_value(p, 12, 0, "stretch", side="extension")
     assert prism.family == Family.PRISMATIC and prism.kind == "bifurcation"
     assert prism.value == pytest.approx(3.599760295002, abs=1e-10)
@@ -78,7 +78,7 @@ def test_prismatic_is_the_long_tube_limit_neo_hookean_with_voltage_and_growth():
 def test_prismatic_is_the_long_tube_limit_gent():
     """gent(20), thick tube Rbar_o = 3, lambda_z = 1.5, m = 24, critical voltage: slope
     -1.9994, Richardson limit within 1e-9 of the prismatic value."""
-    p = TubeParameters(3.0, 1.0, stretch=1.5, material=gent(20.0))
+    p = Tube.uniform(3.0, 1.0, stretch=1.5, material=gent(20.0))
     prism = critical_value(p, 24, 0, "voltage")
     assert prism.value == pytest.approx(0.714541308333, abs=1e-10)
     v0 = prism.value
@@ -125,7 +125,7 @@ def test_torsional_impedance_is_the_exact_bessel_solution(material, lz, Ro, n):
     two_w1 = 1.0 if material == "neo-hookean" else 20.0 / (20.0 - (2 / lz + lz**2 - 3))
     L = 2.0
     exact, k, ro = bessel_torsional_impedance(lz, n, Ro, L, two_w1)
-    state = solve_base_state(TubeParameters(Ro, L, stretch=lz, material=mat))
+    state = solve_base_state(Tube.uniform(Ro, L, stretch=lz, material=mat))
     twin = impedance_reference(state, 0, k, pairs=U_TH, rtol=1e-13, atol=1e-15)
     assert twin.shape == (1, 1) and twin[0, 0] == pytest.approx(exact, rel=1e-10)
     col = collocation_impedance(state, 0, n, nodes=24, pairs=U_TH)
@@ -143,7 +143,7 @@ def test_exact_torsional_dispersion_has_no_root():
     assert np.all(bessel_dispersion(kap, 1.0, 1.4) < 0)
     with pytest.raises(NoBifurcationFound):
         critical_value(
-            TubeParameters(1.4, 1.0, voltage=0.4),
+            Tube.uniform(1.4, 1.0, voltage=0.4),
             0,
             1,
             "stretch",
@@ -158,16 +158,16 @@ def test_exact_torsional_dispersion_has_no_root():
 @pytest.mark.parametrize(
     "params, m, solve_for, side, want",
     [
-        (TubeParameters(3.0, 1.0, stretch=2.0), 30, "voltage", None, 0.499891281791),
+        (Tube.uniform(3.0, 1.0, stretch=2.0), 30, "voltage", None, 0.499891281791),
         (
-            TubeParameters(1.4, 1.0, growth=1.2, voltage=0.4),
+            Tube.uniform(1.4, 1.0, growth=1.2, voltage=0.4),
             12,
             "stretch",
             "extension",
             3.599760295002,
         ),
         (
-            TubeParameters(3.0, 1.0, stretch=1.5, material=gent(20.0)),
+            Tube.uniform(3.0, 1.0, stretch=1.5, material=gent(20.0)),
             24,
             "voltage",
             None,
@@ -196,9 +196,9 @@ def test_impedance_of_every_family_by_both_methods(material, m, n, pairs):
     """The conditional impedance z(r_o) of each block with voltage and growth: Riccati
     (SciPy twin) against collocation (outer-face U prescribed, no Stroh matrix), 1e-9."""
     state = solve_base_state(
-        TubeParameters(1.6, 2.0, growth=1.15, stretch=1.1, voltage=0.3, material=material)
+        Tube.uniform(1.6, 2.0, growth=1.15, stretch=1.1, voltage=0.3, material=material)
     )
-    k = wavenumber(state.params, n)
+    k = wavenumber(state.tube, n)
     z = impedance_reference(state, m, k, pairs=pairs, rtol=1e-12, atol=1e-14)
     zc = collocation_impedance(state, m, n, nodes=24, pairs=pairs)
     assert z.shape == zc.shape == (bin(pairs).count("1"),) * 2
@@ -210,13 +210,13 @@ def test_kernel_family_targets_equal_the_reduced_twin():
     integrates the reduced (kept x kept) equation: same target."""
     from electrogrowth.incremental.impedance_reference import target_reference
 
-    state = solve_base_state(TubeParameters(1.4, 2.0, growth=1.2, stretch=1.1, voltage=0.4))
+    state = solve_base_state(Tube.uniform(1.4, 2.0, growth=1.2, stretch=1.1, voltage=0.4))
     for m, n, fam in [(3, 0, "prismatic"), (0, 2, "torsional"), (0, 2, "wrinkle")]:
         f = impedance_targets(state, with_family(m, n, fam))[0]
         ref = target_reference(
             state,
             m,
-            wavenumber(state.params, n),
+            wavenumber(state.tube, n),
             pairs=Family(fam).pairs(m),
             rtol=1e-12,
             atol=1e-14,
@@ -234,7 +234,7 @@ def test_k0_target_is_in_plane_times_exact_anti_plane(V):
     z = (g / lambda_z) m tanh(m ln Rbar_o) (anti-plane shear of a neo-Hookean solid is
     Laplace's equation in the reference radius), scaled by s = m."""
     g, lz, Ro = 1.1, 1.05, 1.4
-    state = solve_base_state(TubeParameters(Ro, 1.0, growth=g, stretch=lz, voltage=V))
+    state = solve_base_state(Tube.uniform(Ro, 1.0, growth=g, stretch=lz, voltage=V))
     table = build_table(state)
     for m in (2, 3, 6):
         full, in_plane, anti = (
@@ -251,7 +251,7 @@ def test_m0_target_is_axisymmetric_times_torsional_and_never_torsional():
     """At m = 0 today's 4x4 target is the axisymmetric target times the torsional one. At the
     (0, 1) critical growth of the paper's headline tube the full target vanishes with the
     axisymmetric factor while the torsional factor is ~0.48: the root was never torsional."""
-    p = TubeParameters(1.4, 1.0, voltage=0.4)
+    p = Tube.uniform(1.4, 1.0, voltage=0.4)
     crit = critical_value(p, 0, 1, "growth")
     assert crit.value == pytest.approx(1.2661115622623, abs=1e-11)  # unchanged value
     for params in (p.at("growth", 1.1), crit.params):
@@ -270,14 +270,14 @@ def test_collocation_blocks_at_k0():
     """The collocation matrix at k = 0 is block diagonal after a permutation: its singular
     values are the in-plane and anti-plane blocks' together, its determinant's sign their
     product; the targets have the unloaded tube's sign convention (f > 0 there)."""
-    state = solve_base_state(TubeParameters(1.4, 1.0, growth=1.1, voltage=0.5))
+    state = solve_base_state(Tube.uniform(1.4, 1.0, growth=1.1, voltage=0.5))
     M, A, B = (collocation_matrix(state, 3, 0, nodes=16, pairs=q) for q in (ALL, IN_PLANE, U_Z))
     s = np.linalg.svd(M, compute_uv=False)
     both = np.sort(np.concatenate([np.linalg.svd(X, compute_uv=False) for X in (A, B)]))
     np.testing.assert_allclose(np.sort(s), both, rtol=1e-10, atol=1e-12 * s[0])
     signs = [np.linalg.slogdet(X)[0] for X in (M, A, B)]
     assert signs[0] == signs[1] * signs[2]
-    unloaded = solve_base_state(TubeParameters(1.4, 1.0))
+    unloaded = solve_base_state(Tube.uniform(1.4, 1.0))
     for nodes in (9, 10, 24):
         for m, n, q in [(3, 0, IN_PLANE), (3, 0, U_Z), (0, 2, U_TH), (0, 2, AXISYMMETRIC)]:
             assert collocation_target(unloaded, m, n, nodes=nodes, pairs=q) > 0
@@ -300,7 +300,7 @@ def test_scan_finds_a_prismatic_critical_mode():
     """Thick tube Rbar_o = 3, L = 1, lambda_z = 2 under voltage: the plane-strain mode
     (30, 0) comes first, Vbar_cr = 0.499891281791, below every wrinkle and the short-wave
     limit 0.500105 (outer face, along theta); the default scan finds the same (slow test)."""
-    p = TubeParameters(3.0, 1.0, stretch=2.0)
+    p = Tube.uniform(3.0, 1.0, stretch=2.0)
     res = scan_modes(p, "voltage", options=ScanOptions(m_range=(0, 40), n_range=(1, 4)))
     c = res.critical
     assert (c.kind, c.m, c.n, c.family) == ("bifurcation", 30, 0, "prismatic")
@@ -319,7 +319,7 @@ def test_scan_finds_a_prismatic_critical_mode():
 
 @pytest.mark.slow
 def test_default_scan_finds_the_prismatic_mode():
-    res = scan_modes(TubeParameters(3.0, 1.0, stretch=2.0), "voltage")
+    res = scan_modes(Tube.uniform(3.0, 1.0, stretch=2.0), "voltage")
     c = res.critical
     assert (c.m, c.n, c.family) == (30, 0, "prismatic") and res.m_range == (0, 51)
     assert c.value == pytest.approx(0.499891281791, abs=1e-11)
@@ -330,7 +330,7 @@ def test_default_scan_finds_the_prismatic_mode():
 
 def test_prismatic_mode_shape_by_both_routes():
     crit = critical_value(
-        TubeParameters(1.4, 1.0, growth=1.2, voltage=0.4), 12, 0, "stretch", side="extension"
+        Tube.uniform(1.4, 1.0, growth=1.2, voltage=0.4), 12, 0, "stretch", side="extension"
     )
     a, b = (mode_shape(crit, method=meth, points=41) for meth in ("impedance", "collocation"))
     assert (a.route, b.route, a.family, a.k) == ("impedance", "collocation", "prismatic", 0.0)
@@ -340,7 +340,7 @@ def test_prismatic_mode_shape_by_both_routes():
 
 
 def test_torsional_mode_shape_is_u_theta_only():
-    p = TubeParameters(1.4, 1.0, voltage=0.4)
+    p = Tube.uniform(1.4, 1.0, voltage=0.4)
     for meth in ("impedance", "collocation"):
         s = mode_shape((p, 0, 2, "torsional"), method=meth, points=21)
         assert s.family == "torsional" and s.U_th.max() == 1.0
@@ -367,7 +367,7 @@ def test_bad_modes_are_one_line_parameter_errors(m, n, family, needle):
         check_mode(m, n, family)
     assert "\n" not in str(err.value)
     with pytest.raises(ParameterError, match=needle):
-        critical_value(TubeParameters(1.4, 1.0), m, n, "growth", family=family)
+        critical_value(Tube.uniform(1.4, 1.0), m, n, "growth", family=family)
 
 
 # -- command line ---------------------------------------------------------------------------

@@ -3,7 +3,6 @@ agrees with an independent single-mode computation (or the paper's own cross-ref
 between figures)."""
 
 import csv
-import dataclasses
 
 import numpy as np
 import pytest
@@ -13,11 +12,11 @@ from electrogrowth.bifurcation.scan import ScanOptions, scan_modes
 from electrogrowth.bifurcation.surface import short_wave_limit
 from electrogrowth.figures import FIGURES
 from electrogrowth.figures import critical as fm
-from electrogrowth.model.params import TubeParameters
+from electrogrowth.model.layers import Tube
 
 MODE_FIGURES = (6, 7, 8, 9, 10)
 
-RO14 = TubeParameters(outer_radius=1.4, length=1.0)
+RO14 = Tube.uniform(outer_radius=1.4, length=1.0)
 
 
 @pytest.fixture(scope="module")
@@ -55,7 +54,7 @@ def test_figure6_matches_single_mode_solves(figures):
 
 def test_figure7_brackets_the_stable_stretches(figures):
     h = figures[7].headline
-    p = TubeParameters(outer_radius=1.4, voltage=0.4)
+    p = Tube.uniform(outer_radius=1.4, voltage=0.4)
     assert h["compression_V0.4_Ro1.4"] == pytest.approx(
         critical_value(p, 0, 1, "stretch", side="compression").value, abs=1e-10
     )
@@ -88,7 +87,7 @@ def test_figure8_starts_at_zero_voltage_and_has_a_maximum(figures):
 def test_figure9_ends_at_the_ungrown_critical_stretches(figures):
     res = figures[9]
     h = res.headline
-    p = TubeParameters(outer_radius=1.4, voltage=0.4)
+    p = Tube.uniform(outer_radius=1.4, voltage=0.4)
     lo = scan_modes(p, "stretch", side="compression", options=ScanOptions((0, 2), (1, 2)))
     assert h["lambda_compression_V0.4"] == pytest.approx(lo.critical.value, abs=1e-10)
     c = res.curves[0]
@@ -111,8 +110,8 @@ def test_growth_curves_obey_the_growth_rescaling(figures, number):
         for x, g, m, n in zip(c.x, c.value, c.m, c.n):
             if not np.isfinite(g):
                 continue
-            p = dataclasses.replace(c.params, **{c.along: float(x)})
-            ungrown = dataclasses.replace(p, growth=1.0, voltage=p.voltage / g)
+            p = c.params.at(c.along, x)
+            ungrown = p.at("growth", 1.0).at("voltage", p.voltage / g)
             lam = critical_value(ungrown, int(m), int(n), "stretch", side="compression")
             assert lam.value == pytest.approx(p.stretch / g, abs=1e-9)
 
@@ -132,7 +131,7 @@ def test_figure10_starts_at_the_growth_only_value(figures):
 def test_figure7_headline_by_collocation(figures):
     """The second, independent method (spectral collocation) at one headline point."""
     h = figures[7].headline
-    p = TubeParameters(outer_radius=1.4, voltage=0.4)
+    p = Tube.uniform(outer_radius=1.4, voltage=0.4)
     v = h["compression_V0.4_Ro1.4"]
     col = critical_value(
         p, 0, 1, "stretch", side="compression", method="collocation", bracket=(v - 1e-4, v + 1e-4)

@@ -8,7 +8,7 @@ import math
 import numpy as np
 import pytest
 
-from electrogrowth import TubeParameters, critical_value
+from electrogrowth import Tube, critical_value
 from electrogrowth.basestate.layered import (
     layered_threshold,
     pressure_response,
@@ -21,7 +21,7 @@ from electrogrowth.figures.gallery import (
     one_layer_growth,
     pressurised_dielectric,
 )
-from electrogrowth.model.layers import Layer, Tube
+from electrogrowth.model.layers import Layer
 
 
 def _case(result, case):
@@ -44,7 +44,7 @@ def test_axial_growth_is_an_axial_compression_of_the_ungrown_tube(one_layer):
     o = _case(one_layer, "g_z, fixed stretch")
     assert o.critical.kind == "bifurcation"
     g, (m, n) = o.value, o.mode
-    ungrown = TubeParameters(2.0, length=g)
+    ungrown = Tube.uniform(2.0, length=g)
     assert critical_value(ungrown, m, n, "stretch").value == pytest.approx(1.0 / g, rel=1e-8)
     assert one_layer.headline["g_z_fixed_Ro2"] == g
 

@@ -20,7 +20,7 @@ from electrogrowth.incremental.impedance import (
 from electrogrowth.incremental.impedance_reference import impedance_reference, target_reference
 from electrogrowth.incremental.radial_table import build_table, stack_tables
 from electrogrowth.incremental.targets import impedance_targets, mode_pairs, wavenumber
-from electrogrowth.model.params import TubeParameters
+from electrogrowth.model.layers import Tube
 
 CASES = [  # (Rbar_o, L, g, lambda_z, Vbar, m, n)
     (1.4, 1.0, 1.0, 1.0, 0.0, 0, 1),
@@ -33,11 +33,11 @@ CASES = [  # (Rbar_o, L, g, lambda_z, Vbar, m, n)
 
 def _state(ro, L, g, lz, V, material=None):
     kw = {} if material is None else {"material": material}
-    return solve_base_state(TubeParameters(ro, L, g, lz, V, **kw))
+    return solve_base_state(Tube.uniform(ro, L, g, lz, V, **kw))
 
 
 def _kernel(state, m, n, rtol=1e-12):
-    k = wavenumber(state.params, n)
+    k = wavenumber(state.tube, n)
     return integrate_one(float(m), k, ALL_PAIRS, build_table(state), rtol, 20000)
 
 
@@ -48,7 +48,7 @@ def test_kernel_equals_scipy_reference(case):
     f = impedance_targets(state, [(m, n)])[0]
     pairs = int(mode_pairs(np.array([[m, n]], float))[0])  # m = 0: torsion excluded
     ref = target_reference(
-        state, m, wavenumber(state.params, n), pairs=pairs, rtol=1e-12, atol=1e-14
+        state, m, wavenumber(state.tube, n), pairs=pairs, rtol=1e-12, atol=1e-14
     )
     assert abs(f - ref) <= 1e-8 * abs(ref)
 
@@ -58,7 +58,7 @@ def test_kernel_impedance_is_the_papers_impedance(gent_mat):
     m, n = 4, 5
     f, zc, chart, status, _ = _kernel(state, m, n)
     assert status == 0 and chart == 0
-    k = wavenumber(state.params, n)
+    k = wavenumber(state.tube, n)
     z = physical_impedance(zc, chart, impedance_scale(m, k, state.r_o))
     z_ref = impedance_reference(state, m, k, rtol=1e-12, atol=1e-14)
     np.testing.assert_allclose(z, z_ref, rtol=1e-8, atol=1e-9 * np.abs(z_ref).max())
@@ -89,7 +89,7 @@ def test_batch_equals_one_by_one():
     modes = [(0, 1, 0), (3, 7, 1), (5, 2, 0), (1, 15, 1)]
     m = np.array([a for a, _, _ in modes], float)
     idx = np.array([t for _, _, t in modes])
-    k = np.array([wavenumber(states[t].params, n) for _, n, t in modes])
+    k = np.array([wavenumber(states[t].tube, n) for _, n, t in modes])
     keep = mode_pairs(np.array([(mm, n) for mm, n, _ in modes], float))
     f, status, steps = target_batch(m, k, keep, idx, tables, 1e-12, 20000)
     one = [impedance_targets(states[t], [(mm, n)])[0] for mm, n, t in modes]
@@ -130,7 +130,7 @@ def test_riccati_integration_is_of_order_8():
     """
     state = _state(1.4, 1.0, 1.2, 1.0, 0.4)
     table = build_table(state)
-    m, k = 0.0, wavenumber(state.params, 1)
+    m, k = 0.0, wavenumber(state.tube, 1)
     exact = integrate_fixed(m, k, ALL_PAIRS, table, 512)
     N = np.array([10, 12, 14, 16, 20, 24])
     err = [np.linalg.norm(integrate_fixed(m, k, ALL_PAIRS, table, int(n)) - exact) for n in N]
@@ -158,7 +158,7 @@ def test_pole_of_impedance_is_not_a_root():
     for g in (2.25, 2.30):
         state = _state(1.4, 1.0, g, 1.0, 0.0)
         f, zc, chart, status, _ = _kernel(state, 0, 3)
-        k = wavenumber(state.params, 3)
+        k = wavenumber(state.tube, 3)
         dets.append(np.linalg.det(physical_impedance(zc, chart, impedance_scale(0, k, state.r_o))))
         fs.append(f)
     assert dets[0] < 0 < dets[1]  # a naive sign-change search would report a root here
@@ -177,7 +177,7 @@ def _pole_location():
     def inv_det(g):
         state = _state(1.4, 1.0, g, 1.0, 0.0)
         f, zc, chart, status, _ = _kernel(state, 0, 3)
-        k = wavenumber(state.params, 3)
+        k = wavenumber(state.tube, 3)
         z = physical_impedance(zc, chart, impedance_scale(0, k, state.r_o))
         return 1.0 / np.linalg.det(z)
 

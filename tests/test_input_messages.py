@@ -14,7 +14,6 @@ from electrogrowth.bifurcation.critical import no_bifurcation_remedy
 from electrogrowth.cli import app as cli
 from electrogrowth.errors import ConfigError, NoBifurcationFound, ParameterError
 from electrogrowth.model.layers import Layer, Tube
-from electrogrowth.model.params import TubeParameters
 from electrogrowth.model.tube_file import parse_tube
 
 BILAYER = Path(__file__).resolve().parents[1] / "examples" / "bilayer.toml"
@@ -89,7 +88,7 @@ def test_a_scan_finding_nothing_gives_the_scan_remedy(monkeypatch):
     monkeypatch.setattr(scan, "_widened_scan", nothing)
     options = scan.ScanOptions(surface=False)
     with pytest.raises(NoBifurcationFound) as err:
-        scan.scan_modes(TubeParameters(1.4), "growth", options=options)
+        scan.scan_modes(Tube.uniform(1.4), "growth", options=options)
     assert err.value.remedy == "raise --m-max / --n-max, or solve for another control parameter"
 
 

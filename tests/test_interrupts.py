@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 
-from electrogrowth import TubeParameters
+from electrogrowth import Tube
 from electrogrowth.bifurcation import curves
 from electrogrowth.cli import app as cli
 from electrogrowth.interrupts import Interrupted, interrupt_of, signals_as_interrupts
@@ -160,7 +160,7 @@ def _scan_raising(exc):
 
 
 def test_a_curve_point_lets_an_interrupt_through_and_records_a_bug(monkeypatch):
-    params = TubeParameters(1.4)
+    params = Tube.uniform(1.4)
     monkeypatch.setattr(curves, "scan_modes", _scan_raising(_wrapped_interrupt()))
     with pytest.raises(Interrupted):
         curves.curve_point(params, "growth", "voltage", 0.1)
@@ -182,7 +182,7 @@ def test_an_interrupted_curve_hands_back_its_points(monkeypatch):
     monkeypatch.setattr(curves, "scan_modes", scan)
     with pytest.raises(Interrupted) as stop:
         curves.critical_curve(
-            TubeParameters(1.4), "growth", "voltage", [0.0, 0.1, 0.2], follow=False
+            Tube.uniform(1.4), "growth", "voltage", [0.0, 0.1, 0.2], follow=False
         )
     assert stop.value.partial.x.tolist() == [0.0]
     assert stop.value.partial.kind.tolist() == ["bifurcation"]
@@ -191,9 +191,9 @@ def test_an_interrupted_curve_hands_back_its_points(monkeypatch):
 def test_a_sweep_point_lets_an_interrupt_through(monkeypatch):
     monkeypatch.setattr(unit, "scan_modes", _scan_raising(_wrapped_interrupt()))
     with pytest.raises(Interrupted):
-        unit.compute_point(TubeParameters(1.4), unit.ScanSpec("growth"))
+        unit.compute_point(Tube.uniform(1.4), unit.ScanSpec("growth"))
     monkeypatch.setattr(unit, "scan_modes", _scan_raising(ZeroDivisionError("oops")))
-    assert unit.compute_point(TubeParameters(1.4), unit.ScanSpec("growth")).status == Status.ERROR
+    assert unit.compute_point(Tube.uniform(1.4), unit.ScanSpec("growth")).status == Status.ERROR
 
 
 def test_main_reports_a_wrapped_interrupt_in_one_line(monkeypatch, capsys):

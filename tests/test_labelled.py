@@ -10,20 +10,12 @@ import warnings
 import numpy as np
 import pytest
 
-from electrogrowth import (
-    Layer,
-    ScanOptions,
-    Tube,
-    TubeParameters,
-    critical_curve,
-    scan_modes,
-    solve_base_state,
-)
+from electrogrowth import Layer, ScanOptions, Tube, critical_curve, scan_modes, solve_base_state
 from electrogrowth.cli.report import edge_warning, supported
 
 xr = pytest.importorskip("xarray")
 
-TUBE = TubeParameters(outer_radius=1.4, voltage=0.4)
+TUBE = Tube.uniform(outer_radius=1.4, voltage=0.4)
 SMALL = ScanOptions(m_range=(0, 3), n_range=(1, 3), top=3, extend=False, surface=False)
 
 

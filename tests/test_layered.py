@@ -30,7 +30,6 @@ from electrogrowth.cli.app import main
 from electrogrowth.errors import BaseStateError, ConfigError, ParameterError
 from electrogrowth.model.layers import Layer, LinearGrowth, Tube
 from electrogrowth.model.materials import I1, I5, I6, Material, gent, mooney_rivlin, neo_hookean
-from electrogrowth.model.params import TubeParameters
 from electrogrowth.model.tube_file import load_tube, parse_tube
 
 # -- independent neo-Hookean closed forms (constant growth per layer) -------------------------
@@ -105,10 +104,10 @@ BILAYER = Tube(
     "Ro, g, lz, frac", [(2.0, 1.2, 1.0, 0.6), (1.3, 0.9, 1.1, 0.3), (1.6, 1.4, 0.8, 0.85)]
 )
 def test_one_layer_is_todays_tube(material, Ro, g, lz, frac):
-    p = TubeParameters(outer_radius=Ro, growth=g, stretch=lz, material=material)
+    p = Tube.uniform(outer_radius=Ro, growth=g, stretch=lz, material=material)
     thr = solve_base_state(p).voltage_threshold
     p = dataclasses.replace(p, voltage=frac * (thr if math.isfinite(thr) else 1.5))
-    ref, st = solve_base_state(p), solve_base_state(Tube.from_parameters(p))
+    ref, st = solve_base_state(p), solve_layered_state(p)
     for key in ("lambda_i", "lambda_o", "r_i", "r_o", "charge", "axial_force"):
         assert getattr(st, key) == pytest.approx(getattr(ref, key), rel=1e-12, abs=1e-12), key
     R = np.linspace(1.0, Ro, 17)

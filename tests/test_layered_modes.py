@@ -9,13 +9,13 @@ import math
 import numpy as np
 import pytest
 
-from electrogrowth import TubeParameters, critical_value, solve_base_state
+from electrogrowth import Tube, critical_value, mode_shape, solve_base_state
 from electrogrowth.errors import ParameterError
 from electrogrowth.incremental.collocation import collocation_impedance
 from electrogrowth.incremental.impedance import ALL_PAIRS, integrate_one
 from electrogrowth.incremental.radial_table import build_table
 from electrogrowth.incremental.targets import U_Z, impedance_targets
-from electrogrowth.model.layers import Layer, Tube
+from electrogrowth.model.layers import Layer
 from electrogrowth.model.materials import mooney_rivlin
 
 LOADS = ("length", "stretch", "voltage", "inner_pressure", "outer_pressure")
@@ -35,7 +35,7 @@ def bilayer(**loads) -> Tube:
     [("growth", 3, 2, None), ("voltage", 3, 2, None), ("stretch", 2, 1, "compression")],
 )
 def test_identical_layers_equal_one_layer(solve_for, m, n, side):
-    params = TubeParameters(outer_radius=1.6, length=2.0, growth=1.1, stretch=1.0, voltage=0.3)
+    params = Tube.uniform(outer_radius=1.6, length=2.0, growth=1.1, stretch=1.0, voltage=0.3)
     layers = (Layer(1.25, growth=1.1), Layer(1.6, growth=1.1))
     tube = Tube(layers, length=2.0, stretch=1.0, voltage=0.3)
     if solve_for == "growth":  # one Tube layer grows like the homogeneous tube
@@ -222,3 +222,29 @@ def test_two_interface_modes_cross_close_together():
         assert f == pytest.approx(shooting_target(state, 0, k, pairs=keep), rel=1e-9)
         signs.append(np.sign(f))
     assert signs == [1.0, -1.0, 1.0]
+
+
+@pytest.mark.parametrize(
+    "tube, mode, solve_for",
+    [
+        (Tube((Layer(1.1, shear_modulus=10.0), Layer(2.0))), (4, 1), "growth[1]"),
+        (Tube((Layer(1.1, shear_modulus=10.0), Layer(2.0))), (0, 2), "growth[1]"),
+        (Tube((Layer(1.3),), inner_pressure=0.1), (3, 2), "growth"),
+    ],
+    ids=["bilayer-wrinkle", "bilayer-axisymmetric", "pressurised"],
+)
+def test_impedance_mode_shape_through_layers_is_the_collocation_limit(tube, mode, solve_for):
+    """The impedance route (Riccati layer by layer, z continuous at interfaces, the faces'
+    follower-pressure impedances) and the multi-domain collocation route are independent:
+    the shapes agree to the collocation's own accuracy, which improves spectrally with its
+    nodes (to ~1e-8 by 20 nodes, after which its rounding grows), and the impedance shape
+    meets the face conditions S = z_P U to 1e-10."""
+    crit = critical_value(tube, *mode, solve_for)
+    imp = mode_shape(crit, method="impedance", points=41)
+    assert imp.route == "impedance" and imp.note == ""
+    assert imp.boundary_residual < 1e-10
+    diffs = [
+        np.abs(mode_shape(crit, method="collocation", points=41, nodes=nodes).eta - imp.eta).max()
+        for nodes in (12, 20)
+    ]
+    assert diffs[1] < 1e-6 and diffs[1] < 1e-2 * diffs[0]

@@ -8,7 +8,7 @@ from electrogrowth.bifurcation.curves import critical_curve
 from electrogrowth.bifurcation.scan import ScanOptions
 from electrogrowth.cli import app as cli
 from electrogrowth.errors import ConfigError, ParameterError
-from electrogrowth.model.params import TubeParameters
+from electrogrowth.model.layers import Tube
 from electrogrowth.sweep.file import parse_config
 
 SWEEP = """\
@@ -87,4 +87,4 @@ def test_library_limits():
     with pytest.raises(
         ParameterError, match="non-empty sequence of at most 10000 numbers, got 10001"
     ):
-        critical_curve(TubeParameters(1.4), "growth", "voltage", [0.1] * 10001)
+        critical_curve(Tube.uniform(1.4), "growth", "voltage", [0.1] * 10001)

@@ -5,7 +5,7 @@ import dataclasses
 import numpy as np
 import pytest
 
-from electrogrowth import NoBifurcationFound, ParameterError, TubeParameters
+from electrogrowth import NoBifurcationFound, ParameterError, Tube
 from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.bifurcation.critical import CriticalPoint, critical_value
 from electrogrowth.figures.plots import plot_mode_shape
@@ -19,11 +19,11 @@ from electrogrowth.shapes.mode_shape import (
 
 #: name -> (tube, m, n, control): with and without voltage and growth, m = 0, 2, 5, n = 1, 7
 CASES = {
-    "elastic_m0_n1": (TubeParameters(1.4, 1.0), 0, 1, "stretch"),
-    "voltage_m0_n1": (TubeParameters(1.4, 1.0, voltage=0.6), 0, 1, "growth"),
-    "grown_voltage_m2_n1": (TubeParameters(1.4, 1.0, growth=1.1, voltage=0.3), 2, 1, "stretch"),
-    "grown_m5_n1": (TubeParameters(1.4, 1.0, stretch=1.1), 5, 1, "growth"),
-    "grown_voltage_m5_n7": (TubeParameters(1.4, 1.0, stretch=1.1, voltage=0.4), 5, 7, "growth"),
+    "elastic_m0_n1": (Tube.uniform(1.4, 1.0), 0, 1, "stretch"),
+    "voltage_m0_n1": (Tube.uniform(1.4, 1.0, voltage=0.6), 0, 1, "growth"),
+    "grown_voltage_m2_n1": (Tube.uniform(1.4, 1.0, growth=1.1, voltage=0.3), 2, 1, "stretch"),
+    "grown_m5_n1": (Tube.uniform(1.4, 1.0, stretch=1.1), 5, 1, "growth"),
+    "grown_voltage_m5_n7": (Tube.uniform(1.4, 1.0, stretch=1.1, voltage=0.4), 5, 7, "growth"),
 }
 _CRITICAL = {}
 
@@ -156,7 +156,7 @@ def test_inner_face_mode_and_fallback_at_a_pole():
     """Thick charged tube, short axial waves: the mode is localised at the inner face,
     where D_r = c / r is largest. Just below the critical stretch the impedance z has a pole
     in the wall, so the Riccati route falls back to collocation and says so."""
-    params = TubeParameters(3.0, 5.0, voltage=0.5)
+    params = Tube.uniform(3.0, 5.0, voltage=0.5)
     crit = critical_value(params, 0, 15, "stretch", bracket=(0.4887, 0.4888))
     imp = mode_shape(crit, points=41)
     col = mode_shape(crit, method="collocation", nodes=60, points=41)

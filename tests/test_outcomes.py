@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from electrogrowth import TubeParameters, critical_value
+from electrogrowth import Tube, critical_value
 from electrogrowth.bifurcation import curves
 from electrogrowth.bifurcation.critical import no_bifurcation_remedy
 from electrogrowth.bifurcation.scan import ScanOptions
@@ -50,7 +50,7 @@ def _buggy_scan(*args, **kwargs):
 @pytest.fixture(scope="module")
 def computed():
     """One computed record of each kind (a tube of the paper, a cheap mode range)."""
-    params = TubeParameters(voltage=0.2)
+    params = Tube.uniform(voltage=0.2)
     return {
         "critical point": critical_value(params, 1, 1, "growth"),
         "surface limit": short_wave_limit(params, "growth"),
@@ -81,7 +81,7 @@ def test_an_inaccurate_critical_point_says_why_and_what_to_try(monkeypatch):
 
     monkeypatch.setattr(critical, "CERTIFIED", 0.0)  # no estimate is good enough
     monkeypatch.setattr(critical, "REFINE", 1e9)  # and no refinement is tried
-    cp = critical_value(TubeParameters(voltage=0.2), 1, 1, "growth")
+    cp = critical_value(Tube.uniform(voltage=0.2), 1, 1, "growth")
     assert cp.status is Status.INACCURATE and cp.ok and cp.unwrap() is cp
     assert cp.message.startswith("error estimate") and "rtol = 1e-12" in cp.message
     assert cp.remedy == ConvergenceError.remedy
@@ -93,8 +93,8 @@ def test_a_user_failure_is_failed_with_its_remedy_in_every_record(monkeypatch):
     exc = BaseStateError("Vbar = 5 is above the threshold")
     monkeypatch.setattr(unit, "scan_modes", _raising(exc))
     monkeypatch.setattr(curves, "scan_modes", _raising(exc))
-    sweep_pt = unit.compute_point(TubeParameters(1.4), SPEC)
-    curve_pt = curves.curve_point(TubeParameters(1.4), "growth", "voltage", 5.0)
+    sweep_pt = unit.compute_point(Tube.uniform(1.4), SPEC)
+    curve_pt = curves.curve_point(Tube.uniform(1.4), "growth", "voltage", 5.0)
     for rec in (sweep_pt, curve_pt):
         assert rec.status is Status.FAILED and not rec.ok and rec.kind == ""
         assert "above the threshold" in rec.message and rec.traceback == ""
@@ -112,8 +112,8 @@ def test_a_user_failure_is_failed_with_its_remedy_in_every_record(monkeypatch):
 def test_a_bug_is_an_internal_error_with_its_traceback_not_the_users_failure(monkeypatch):
     monkeypatch.setattr(unit, "scan_modes", _buggy_scan)
     monkeypatch.setattr(curves, "scan_modes", _buggy_scan)
-    sweep_pt = unit.compute_point(TubeParameters(1.4), SPEC)
-    curve_pt = curves.curve_point(TubeParameters(1.4), "growth", "voltage", 0.1)
+    sweep_pt = unit.compute_point(Tube.uniform(1.4), SPEC)
+    curve_pt = curves.curve_point(Tube.uniform(1.4), "growth", "voltage", 0.1)
     for rec in (sweep_pt, curve_pt):
         assert rec.status is Status.ERROR and rec.status is not Status.FAILED
         assert rec.message.startswith("internal error: ZeroDivisionError")
@@ -135,7 +135,7 @@ def test_a_failing_scan_runs_once_when_following_a_curve(monkeypatch):
         raise ConvergenceError("no convergence")
 
     monkeypatch.setattr(curves, "scan_modes", scan)
-    curve = curves.critical_curve(TubeParameters(1.4), "growth", "voltage", [0.0, 0.1, 0.2])
+    curve = curves.critical_curve(Tube.uniform(1.4), "growth", "voltage", [0.0, 0.1, 0.2])
     assert list(curve.kind) == ["failed"] * 3 and list(curve.status) == ["no convergence"] * 3
     assert len(calls) == 3  # once a point (it used to scan a failing point twice)
 

@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from electrogrowth import TubeParameters
+from electrogrowth import Tube
 from electrogrowth.atomic import replaced
 from electrogrowth.bifurcation.curves import _curve
 from electrogrowth.cli import app as cli
@@ -31,7 +31,7 @@ def test_out_naming_a_file_is_one_clear_error(tmp_path, capsys, under):
 def _a_curve(rows: int, value: float):
     row = (0.0, value, NO_MODE, Kind.THRESHOLD, "", False, np.nan)
     rows = [(float(i), *row[1:]) for i in range(rows)]
-    return _curve("voltage", "growth", None, TubeParameters(1.4), rows, [])
+    return _curve("voltage", "growth", None, Tube.uniform(1.4), rows, [])
 
 
 def test_two_writers_of_one_csv_leave_a_whole_file(tmp_path):

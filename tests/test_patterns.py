@@ -7,7 +7,7 @@ import sys
 import numpy as np
 import pytest
 
-from electrogrowth import ParameterError, TubeParameters
+from electrogrowth import ParameterError, Tube
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.cli.pattern import configure_pattern, run_pattern
 from electrogrowth.errors import MissingDependencyError
@@ -22,7 +22,7 @@ def shape_of(m: int, n: int):
     """A critical mode shape, computed once: (5, 1) of the grown tube without voltage,
     (5, 7) of the grown charged tube."""
     if (m, n) not in _SHAPES:
-        params = TubeParameters(1.4, 1.0, stretch=1.1, voltage=0.0 if n == 1 else 0.4)
+        params = Tube.uniform(1.4, 1.0, stretch=1.1, voltage=0.0 if n == 1 else 0.4)
         _SHAPES[m, n] = mode_shape(critical_value(params, m, n, "growth"))
     return _SHAPES[m, n]
 
@@ -296,7 +296,7 @@ def test_cells_draw_what_plot_surface_draws():
 
     from electrogrowth.figures.plots import _cells
 
-    p = TubeParameters(outer_radius=1.4, length=1.0, growth=1.2, voltage=0.4)
+    p = Tube.uniform(outer_radius=1.4, length=1.0, growth=1.2, voltage=0.4)
     surf = wall_surface(mode_shape((p, 3, 1)), n_theta=24, n_z=7)
     rgb = mpl.colormaps["RdBu_r"](np.linspace(0, 1, surf.x.size).reshape(surf.x.shape))
 

@@ -9,7 +9,7 @@ import time
 
 import numpy as np
 
-from electrogrowth import ScanOptions, TubeParameters, solve_base_state
+from electrogrowth import ScanOptions, Tube, solve_base_state
 from electrogrowth.bifurcation.certify import _one_by_one
 from electrogrowth.bifurcation.curves import critical_curve
 from electrogrowth.cli.app import main
@@ -30,10 +30,10 @@ def test_no_command_prints_the_overview_and_succeeds(capsys):
 
 
 def test_curve_reports_each_switch_it_locates(capsys):
-    critical_curve(TubeParameters(), "stretch", "outer_radius", [1.2, 1.3], **SWITCHING)
+    critical_curve(Tube.uniform(), "stretch", "outer_radius", [1.2, 1.3], **SWITCHING)
     assert capsys.readouterr().err == ""  # silent by default
     critical_curve(
-        TubeParameters(), "stretch", "outer_radius", [1.2, 1.3], progress=True, **SWITCHING
+        Tube.uniform(), "stretch", "outer_radius", [1.2, 1.3], progress=True, **SWITCHING
     )
     err = capsys.readouterr().err
     assert "stretch along outer_radius" in err and "2/2" in err  # the grid points
@@ -77,7 +77,7 @@ def test_figure_commands_name_their_stages_on_a_terminal(tmp_path, capsys, monke
 
 def test_certify_counts_the_modes_it_checks_and_changes_no_value(capsys, monkeypatch):
     monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
-    state = solve_base_state(TubeParameters(1.4, 1.0, growth=1.2, voltage=0.4))
+    state = solve_base_state(Tube.uniform(1.4, 1.0, growth=1.2, voltage=0.4))
     modes = np.array([[0, 1], [2, 1], [3, 0]], dtype=float)
     progress = _Progress(argparse.Namespace(quiet=False))
     f = _one_by_one(lambda row: collocation_targets(state, row)[0], modes, progress)

@@ -27,7 +27,7 @@ from hypothesis import HealthCheck, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 from scipy.integrate import quad  # noqa: E402
 
-from electrogrowth import TubeParameters, critical_value, solve_base_state  # noqa: E402
+from electrogrowth import Tube, critical_value, solve_base_state  # noqa: E402
 from electrogrowth.basestate.tube import voltage_threshold  # noqa: E402
 from electrogrowth.errors import ElectrogrowthError  # noqa: E402
 from electrogrowth.incremental.targets import (  # noqa: E402
@@ -58,7 +58,7 @@ materials = st.one_of(
 def tubes(draw, *, voltage_fraction=(0.0, 0.9)):
     """A tube anywhere in the physical space, its voltage a fraction of its threshold."""
     growth = draw(st.floats(0.6, 2.0))
-    params = TubeParameters(
+    params = Tube.uniform(
         outer_radius=draw(st.floats(1.02, 5.0)),
         length=draw(st.floats(0.2, 20.0)),
         growth=growth,
@@ -86,7 +86,7 @@ def _named(exc: ElectrogrowthError) -> None:
 def _quad_voltage(state) -> float:
     """Vbar of the solved state by scipy's adaptive quadrature of (*) (ideal dielectrics):
     c^2 = 2 M r_i^2 r_o^2 / (r_o^2 - r_i^2), Vbar = c ln(r_o / r_i) / (Rbar_o - 1)."""
-    p = state.params
+    p = state.tube
     g, lz, ro, lam, mat = p.growth, p.stretch, p.outer_radius, state.lambda_i, p.material
     b = g**3 / lz
 
@@ -112,7 +112,7 @@ def check_base_state_and_rescaling(params, m, n):
     v = _quad_voltage(state)  # Vbar^2 ~ M is the well-conditioned quantity near Vbar = 0
     assert abs(math.copysign(v * v, v) - params.voltage**2) <= 1e-8 * max(1.0, params.voltage**2)
     g = params.growth
-    ungrown = TubeParameters(
+    ungrown = Tube.uniform(
         params.outer_radius,
         params.length,
         1.0,

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from electrogrowth import TubeParameters
+from electrogrowth import Tube
 from electrogrowth.basestate import voltage
 from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.cli import app as cli
@@ -26,7 +26,7 @@ def test_gent_node_count_is_found_near_the_locking_stretch(growth):
 
 def test_failed_mode_is_retried_not_fatal():
     """Was: "step size underflow" for mode (3, 11) under the scan's loose rtol 1e-5."""
-    p = TubeParameters(1.895, 0.753, 1.7814756661232656, 0.806, 0.012)
+    p = Tube.uniform(1.895, 0.753, 1.7814756661232656, 0.806, 0.012)
     state = solve_base_state(p)
     f = impedance_targets(state, np.array([[3.0, 11.0]]), rtol=1e-5)[0]
     assert np.isfinite(f) and np.sign(f) == np.sign(collocation_targets(state, [[3, 11]])[0])

@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pytest
 
-from electrogrowth import ParameterError, TubeParameters
+from electrogrowth import ParameterError, Tube
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.bifurcation.march import unloaded_signs
 from electrogrowth.bifurcation.scan import (
@@ -20,10 +20,10 @@ from electrogrowth.bifurcation.scan import (
 from electrogrowth.bifurcation.surface import short_wave_limit
 from electrogrowth.errors import NoBifurcationFound
 from electrogrowth.incremental.targets import impedance_targets
-from electrogrowth.model.layers import Layer, Tube
+from electrogrowth.model.layers import Layer
 from electrogrowth.model.materials import gent, mooney_rivlin
 
-P = TubeParameters(1.4, 1.0, stretch=1.0, voltage=0.4)
+P = Tube.uniform(1.4, 1.0, stretch=1.0, voltage=0.4)
 
 
 def _brute(params, solve_for, modes, side=None):
@@ -42,7 +42,7 @@ def _brute(params, solve_for, modes, side=None):
     "solve_for, side", [("growth", None), ("voltage", None), ("stretch", "compression")]
 )
 def test_scan_equals_brute_force(solve_for, side):
-    params = P if solve_for != "voltage" else TubeParameters(1.4, 1.0)
+    params = P if solve_for != "voltage" else Tube.uniform(1.4, 1.0)
     res = scan_modes(
         params, solve_for, side=side, options=ScanOptions((0, 3), (1, 3), top=3, extend=False)
     )
@@ -132,7 +132,7 @@ def test_surface_instability_is_computed_exactly_not_scanned_forever():
     """Thick, long, compressed tube under voltage: the critical voltage keeps falling with n
     up to the cap; the infimum is the inner face's half-space limit (wrinkles along z),
     which the finite modes approach like 1/n."""
-    p = TubeParameters(2.5, 3.0, stretch=0.8)
+    p = Tube.uniform(2.5, 3.0, stretch=0.8)
     res = scan_modes(p, "voltage", options=ScanOptions((0, 2), (1, 6)))
     c, best = res.critical, res.runners_up[0]
     assert res.surface_instability and c.kind == "surface" and c.m == c.n == -1
@@ -158,19 +158,19 @@ def test_short_wave_beyond_the_range_is_found_by_probes():
 
 def test_no_short_wave_check_where_a_finite_mode_comes_first():
     """The headline tube: growth is a rescaling, mode (0, 1) first; no limit computed."""
-    res = scan_modes(TubeParameters(1.4, 1.0, voltage=0.4), "growth")
+    res = scan_modes(Tube.uniform(1.4, 1.0, voltage=0.4), "growth")
     assert res.critical.kind == "bifurcation" and (res.critical.m, res.critical.n) == (0, 1)
     assert res.short_wave_limit is None and not res.surface_instability
-    limit = short_wave_limit(TubeParameters(1.4, 1.0, voltage=0.4), "growth")
+    limit = short_wave_limit(Tube.uniform(1.4, 1.0, voltage=0.4), "growth")
     assert limit.value > res.critical.value
 
 
 @pytest.mark.parametrize(
     "tube",
     [
-        TubeParameters(1.02, 0.2),
-        TubeParameters(5.0, 10.0, material=gent(10.0)),
-        TubeParameters(1.1, 1.0, material=mooney_rivlin(0.3)),
+        Tube.uniform(1.02, 0.2),
+        Tube.uniform(5.0, 10.0, material=gent(10.0)),
+        Tube.uniform(1.1, 1.0, material=mooney_rivlin(0.3)),
         Tube((Layer(1.1, shear_modulus=10.0), Layer(2.0)), length=1.0),
         Tube(
             (

@@ -28,8 +28,8 @@ from electrogrowth.incremental.halfspace import (
     target_from_moduli,
 )
 from electrogrowth.incremental.stroh import stroh_matrix
+from electrogrowth.model.layers import Tube
 from electrogrowth.model.materials import MODULI_INDEX, gent, mooney_rivlin, neo_hookean_moduli
-from electrogrowth.model.params import TubeParameters
 
 try:
     from electrogrowth.bifurcation.critical import critical_value
@@ -73,7 +73,7 @@ def nh_tube_critical(params, solve_for, x0, x1, steps=400):
     of min_face min_psi P along x0 -> x1."""
 
     def h(x):
-        st = solve_base_state(dataclasses.replace(params, **{solve_for: x}))
+        st = solve_base_state(params.at(solve_for, x))
         out = []
         for R in (1.0, params.outer_radius):
             l1, l2, l3 = (float(v) for v in st.elastic_stretches(R))
@@ -91,7 +91,7 @@ def nh_tube_critical(params, solve_for, x0, x1, steps=400):
 def generic_energies():
     """Gent and Mooney-Rivlin, each with its base state solved once for the module."""
     mats = {"gent": gent(20.0), "mr": mooney_rivlin(0.3)}
-    solve_base_state(TubeParameters(material=mats["gent"]))
+    solve_base_state(Tube.uniform(material=mats["gent"]))
     return mats
 
 
@@ -149,7 +149,7 @@ def test_psi_symmetry_both_faces(generic_energies):
     states with voltage, at both faces."""
     psi = np.array([0.13, 0.7, 1.3])
     for mat in generic_energies.values():
-        st = solve_base_state(TubeParameters(material=mat, stretch=1.3, voltage=0.3))
+        st = solve_base_state(Tube.uniform(material=mat, stretch=1.3, voltage=0.3))
         for face in FACES:
             f = surface_target(st, face, psi)
             assert np.all(np.isfinite(f))
@@ -172,10 +172,10 @@ def test_ellipticity_loss_is_detected():
 
     # the march reports it (kind "ellipticity") instead of a value
     def fake(state):
-        g = state.params.growth
+        g = state.tube.growth
         return directions.Sample(math.nan if g > 1.7 else 2.0 - g, "inner", 0.5)
 
-    kind, value, bracket = surface._locate(TubeParameters(), "growth", None, fake, 1e-12)
+    kind, value, bracket = surface._locate(Tube.uniform(), "growth", None, fake, 1e-12)
     assert kind == "ellipticity" and abs(value - 1.7) < 1e-11 and bracket is None
 
 
@@ -185,7 +185,7 @@ def test_ellipticity_loss_is_detected():
 def test_biot_uniaxial_compression():
     """g = 1, Vbar = 0: homogeneous uniaxial compression; wrinkles along z at Biot's
     lambda_z = 0.443746 (root of the cubic, computed independently)."""
-    res = short_wave_limit(TubeParameters(outer_radius=1.4), "stretch")
+    res = short_wave_limit(Tube.uniform(outer_radius=1.4), "stretch")
     assert isinstance(res, SurfaceLimit) and res.kind == "surface"
     assert abs(res.value - biot_stretch()) < 1e-12
     assert round(res.value, 6) == 0.443746
@@ -234,10 +234,10 @@ def test_neo_hookean_worst_direction_is_an_endpoint():
 @pytest.mark.parametrize(
     "params, solve_for, side, x1, face, psi",
     [
-        (TubeParameters(outer_radius=1.4), "voltage", None, 1.0, "inner", HALF_PI),
-        (TubeParameters(outer_radius=1.4, voltage=0.4), "stretch", "extension", 2.5, "outer", 0.0),
+        (Tube.uniform(outer_radius=1.4), "voltage", None, 1.0, "inner", HALF_PI),
+        (Tube.uniform(outer_radius=1.4, voltage=0.4), "stretch", "extension", 2.5, "outer", 0.0),
         (
-            TubeParameters(outer_radius=2.0, stretch=1.2, voltage=0.2),
+            Tube.uniform(outer_radius=2.0, stretch=1.2, voltage=0.2),
             "growth",
             None,
             3.0,
@@ -261,7 +261,7 @@ def test_issue_10_extension_example():
     """Issue 10: Rbar_o = 1.4, L = 1, Vbar = 0.4, stretch on the extension side. The scan's
     Richardson estimate is 2.4559 +- 0.0013; the exact limit is at the OUTER face with
     hoop wrinkles (psi = 0, k r / m -> 0)."""
-    params = TubeParameters(outer_radius=1.4, length=1.0, voltage=0.4)
+    params = Tube.uniform(outer_radius=1.4, length=1.0, voltage=0.4)
     res = short_wave_limit(params, "stretch", side="extension")
     assert res.kind == "surface" and abs(res.value - 2.4559) < 0.0013
     assert res.face == "outer" and res.psi == 0.0 and res.ratio == 0.0
@@ -277,20 +277,20 @@ def test_issue_10_extension_example():
 def test_growth_is_a_rescaling():
     """(g, lambda_z, Vbar) ~ (1, lambda_z / g, Vbar / g) for the short-wave values."""
     g = 1.3
-    a = short_wave_limit(TubeParameters(growth=g, voltage=0.3), "stretch")
-    b = short_wave_limit(TubeParameters(voltage=0.3 / g), "stretch")
+    a = short_wave_limit(Tube.uniform(growth=g, voltage=0.3), "stretch")
+    b = short_wave_limit(Tube.uniform(voltage=0.3 / g), "stretch")
     assert abs(a.value - g * b.value) < 1e-10 and (a.face, a.psi) == (b.face, b.psi)
     g = 1.2
-    a = short_wave_limit(TubeParameters(outer_radius=2.0, growth=g, stretch=1.5), "voltage")
-    b = short_wave_limit(TubeParameters(outer_radius=2.0, stretch=1.5 / g), "voltage")
+    a = short_wave_limit(Tube.uniform(outer_radius=2.0, growth=g, stretch=1.5), "voltage")
+    b = short_wave_limit(Tube.uniform(outer_radius=2.0, stretch=1.5 / g), "voltage")
     assert abs(a.value - g * b.value) < 1e-10 and (a.face, a.psi) == (b.face, b.psi)
     # growth at fixed lambda_z = 1, Vbar = 0 is uniaxial compression lambda_z / g: Biot
-    c = short_wave_limit(TubeParameters(), "growth")
+    c = short_wave_limit(Tube.uniform(), "growth")
     assert abs(c.value - 1.0 / biot_stretch()) < 1e-10 and c.psi == HALF_PI
     # with voltage: the growth-critical state is critical for the rescaled tube
-    c = short_wave_limit(TubeParameters(stretch=1.1, voltage=0.2), "growth")
-    st = solve_base_state(TubeParameters(stretch=1.1 / c.value, voltage=0.2 / c.value))
-    signs = directions.stable_signs(TubeParameters())
+    c = short_wave_limit(Tube.uniform(stretch=1.1, voltage=0.2), "growth")
+    st = solve_base_state(Tube.uniform(stretch=1.1 / c.value, voltage=0.2 / c.value))
+    signs = directions.stable_signs(Tube.uniform())
     h = directions.sampler(FACES, signs, directions.Resolution(25, 1e-10, 1e-12))(st)
     assert abs(h.value) < 1e-12 and h.face == c.face
 
@@ -299,7 +299,7 @@ def test_finite_modes_approach_the_limit_like_one_over_j():
     """Modes (j m0, j n0) of the impedance solver tend to the half-space value in the
     direction tan psi = k r / m of the ray, like 1/j (rate fitted), for an oblique ray and
     for m = 0 (psi = pi/2)."""
-    params = TubeParameters(outer_radius=1.4, voltage=0.3)
+    params = Tube.uniform(outer_radius=1.4, voltage=0.3)
     lim = ray_limit(params, 3, 1, "growth")
     assert lim.kind == "surface" and 0 < lim.psi < HALF_PI
     js = np.array([8, 16, 32, 64])
@@ -309,7 +309,7 @@ def test_finite_modes_approach_the_limit_like_one_over_j():
     assert abs(xs[-1] - lim.value) > 1e-4  # finite modes are far ...
     assert abs(2 * xs[-1] - xs[-2] - lim.value) < 2e-5  # ... their 1/j extrapolation is not
     # m = 0: wrinkles along z; the short-wave limit of the tube is in that direction too
-    params = TubeParameters(outer_radius=1.4)
+    params = Tube.uniform(outer_radius=1.4)
     lim = ray_limit(params, 0, 1, "voltage")
     assert lim.psi == HALF_PI and lim.ratio is None
     assert lim.value == pytest.approx(short_wave_limit(params, "voltage").value, abs=1e-13)
@@ -327,7 +327,7 @@ def test_mooney_rivlin_biot_along_z_but_oblique_wrinkles_first(generic_energies)
     """Mooney-Rivlin in uniaxial compression: along z the in-plane problem is neo-Hookean
     with mu = C1 + C2 lambda_r^2, so the m = 0 ray gives Biot exactly; but an oblique
     direction is reached first (lambda_z = 0.47261 > Biot), confirmed by finite modes."""
-    params = TubeParameters(outer_radius=1.4, material=generic_energies["mr"])
+    params = Tube.uniform(outer_radius=1.4, material=generic_energies["mr"])
     along_z = ray_limit(params, 0, 1, "stretch")
     assert abs(along_z.value - biot_stretch()) < 1e-9
     worst = short_wave_limit(params, "stretch")
@@ -350,7 +350,7 @@ def test_gent_compression_and_voltage(generic_energies):
     """Gent (Jm = 20): uniaxial compression wrinkles along z at 0.42756 (stiffening delays
     Biot's 0.44375), confirmed by the m = 0 modes; with voltage both faces are searched
     and the first one reported."""
-    params = TubeParameters(outer_radius=1.4, material=generic_energies["gent"])
+    params = Tube.uniform(outer_radius=1.4, material=generic_energies["gent"])
     res = short_wave_limit(params, "stretch")
     assert res.kind == "surface" and res.psi == HALF_PI
     assert res.value == pytest.approx(0.4275605821, abs=1e-9)
@@ -366,7 +366,7 @@ def test_gent_compression_and_voltage(generic_energies):
 
 def test_both_faces_neo_hookean():
     """Each face alone, and both: the combined value is the first reached."""
-    params = TubeParameters(outer_radius=1.4)
+    params = Tube.uniform(outer_radius=1.4)
     inner = short_wave_limit(params, "voltage", faces=("inner",))
     outer = short_wave_limit(params, "voltage", faces="outer")
     both = short_wave_limit(params, "voltage")
@@ -378,7 +378,7 @@ def test_both_faces_neo_hookean():
 
 def test_threshold_none_and_errors():
     """Base state lost first (kind threshold), nothing in range (none), bad input."""
-    res = short_wave_limit(TubeParameters(outer_radius=1.4), "stretch", side="extension")
+    res = short_wave_limit(Tube.uniform(outer_radius=1.4), "stretch", side="extension")
     assert res.kind == "none" and math.isnan(res.value) and res.face is None
 
     # a face that stays stable until the base state is lost (a sampler that never
@@ -387,25 +387,25 @@ def test_threshold_none_and_errors():
     def stable(state):
         return directions.Sample(1.0, "inner", 0.0)
 
-    params = TubeParameters(outer_radius=1.4, voltage=0.4)
+    params = Tube.uniform(outer_radius=1.4, voltage=0.4)
     kind, value, _ = surface._locate(params, "stretch", "extension", stable, 1e-12)
     assert kind == "threshold"
     assert abs(value - math.sqrt(0.96 * math.log(1.4) / 2) / (0.4 * 0.4)) < 1e-10
     kind, value, _ = surface._locate(
-        TubeParameters(outer_radius=2.0), "voltage", None, stable, 1e-12
+        Tube.uniform(outer_radius=2.0), "voltage", None, stable, 1e-12
     )
     assert kind == "threshold" and abs(value - 1.019667) < 1e-6
     with pytest.raises(ParameterError, match="solve_for"):
-        short_wave_limit(TubeParameters(), "pressure")
+        short_wave_limit(Tube.uniform(), "force")
     with pytest.raises(ParameterError, match="side"):
-        short_wave_limit(TubeParameters(), "stretch", side="sideways")
+        short_wave_limit(Tube.uniform(), "stretch", side="sideways")
     with pytest.raises(ParameterError, match="faces"):
-        short_wave_limit(TubeParameters(), "stretch", faces=("middle",))
+        short_wave_limit(Tube.uniform(), "stretch", faces=("middle",))
     with pytest.raises(ParameterError, match="psi"):
-        short_wave_limit(TubeParameters(), "stretch", psi=2.0)
+        short_wave_limit(Tube.uniform(), "stretch", psi=2.0)
     with pytest.raises(ParameterError, match="rtol"):
-        short_wave_limit(TubeParameters(), "stretch", rtol=0.0)
+        short_wave_limit(Tube.uniform(), "stretch", rtol=0.0)
     with pytest.raises(ParameterError, match=r"\(0, 0\)"):
-        ray_limit(TubeParameters(), 0, 0, "stretch")
+        ray_limit(Tube.uniform(), 0, 0, "stretch")
     with pytest.raises(ParameterError, match="already unstable"):
-        short_wave_limit(TubeParameters(outer_radius=1.4, voltage=0.95), "stretch")
+        short_wave_limit(Tube.uniform(outer_radius=1.4, voltage=0.95), "stretch")

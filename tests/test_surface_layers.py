@@ -29,7 +29,6 @@ from electrogrowth.incremental.halfspace import (
 from electrogrowth.incremental.impedance import ALL_PAIRS, face_impedance
 from electrogrowth.model.layers import Layer, Tube
 from electrogrowth.model.materials import neo_hookean_moduli
-from electrogrowth.model.params import TubeParameters
 
 HALF_PI = 0.5 * math.pi
 PSI = np.linspace(0.0, HALF_PI, 9)
@@ -159,7 +158,7 @@ def test_psi_symmetry_with_pressure_and_interface():
 def test_identical_layers_equal_one_layer():
     """Splitting a tube into identical layers changes no short-wave limit (1e-10), and the
     interface between identical layers is never critical (its target stays far from 0)."""
-    one = TubeParameters(outer_radius=1.4, voltage=0.4)
+    one = Tube.uniform(outer_radius=1.4, voltage=0.4)
     two = Tube((Layer(1.15), Layer(1.4)), voltage=0.4)
     a = short_wave_limit(one, "stretch", side="extension")
     b = short_wave_limit(two, "stretch", side="extension")
@@ -179,9 +178,9 @@ def test_one_layer_tube_equals_parameters_and_neo_hookean_closed_form():
     """A one-layer Tube gives the TubeParameters values, which equal the closed form (NH) of
     the traction-free face (derivation-surface.md §5 table) to 1e-10."""
     cases = [
-        (TubeParameters(outer_radius=1.4), "voltage", None, 0.8478824129396783, "inner"),
+        (Tube.uniform(outer_radius=1.4), "voltage", None, 0.8478824129396783, "inner"),
         (
-            TubeParameters(outer_radius=2.0, stretch=1.2, voltage=0.2),
+            Tube.uniform(outer_radius=2.0, stretch=1.2, voltage=0.2),
             "growth",
             None,
             2.7006482944111054,
@@ -189,7 +188,12 @@ def test_one_layer_tube_equals_parameters_and_neo_hookean_closed_form():
         ),
     ]
     for params, solve_for, side, closed, face in cases:
-        tube = Tube.from_parameters(params)
+        tube = Tube(
+            (Layer(params.outer_radius, params.material, growth=params.growth),),
+            length=params.length,
+            stretch=params.stretch,
+            voltage=params.voltage,
+        )
         lim = short_wave_limit(tube, solve_for, side=side)
         assert lim.kind == "surface" and lim.face == face
         assert abs(lim.value - closed) < 1e-10
@@ -310,5 +314,5 @@ def test_scan_of_a_layered_tube_ends_in_the_exact_limit():
     res = scan_modes(tube, "voltage", options=ScanOptions((0, 2), (1, 6)))
     c = res.critical
     assert res.surface_instability and c.kind == "surface" and c.face == "inner"
-    one = short_wave_limit(TubeParameters(2.5, 3.0, stretch=0.8), "voltage")
+    one = short_wave_limit(Tube.uniform(2.5, 3.0, stretch=0.8), "voltage")
     assert abs(c.value - one.value) < 1e-10

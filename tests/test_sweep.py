@@ -16,7 +16,7 @@ pytest.importorskip("xarray")
 pytest.importorskip("zarr")
 
 import electrogrowth  # noqa: E402
-from electrogrowth import TubeParameters  # noqa: E402
+from electrogrowth import Tube  # noqa: E402
 from electrogrowth.bifurcation.scan import ScanOptions  # noqa: E402
 from electrogrowth.cli import app as cli  # noqa: E402
 from electrogrowth.cli import sweep as cli_sweep  # noqa: E402
@@ -106,7 +106,7 @@ def test_reference_sweep_is_labelled_and_matches_single_scans(reference):
     assert (ds["status"] == "ok").all() and (ds["kind"] == "bifurcation").all()
     assert (ds["run"] == 1).all() and ds["runner_up_value"].shape == (3, 3, 4)
     assert json.loads(ds.attrs["sweep_config"]) == config.to_dict()
-    one = compute_point(TubeParameters(1.6, 1.0, stretch=1.2), config.spec)
+    one = compute_point(Tube.uniform(1.6, 1.0, stretch=1.2), config.spec)
     assert ds["critical_value"].sel(stretch=1.2, outer_radius=1.6) == one.value
     assert (ds["critical_value"] > ds["runner_up_value"].isel(rank=0)).sum() == 0
 
@@ -126,7 +126,7 @@ def test_failing_point_is_recorded_and_the_rest_computed(tmp_path):
 
 def test_unit_turns_every_exception_into_a_record(monkeypatch):
     spec = ScanSpec("growth", options=ScanOptions((0, 1), (1, 1)))
-    rec = compute_point(TubeParameters(1.4, voltage=5.0), spec)
+    rec = compute_point(Tube.uniform(1.4, voltage=5.0), spec)
     assert rec.status == "failed" and rec.message.startswith("BaseStateError: Vbar = 5")
     import electrogrowth.sweep.unit as sweep
 
@@ -134,7 +134,7 @@ def test_unit_turns_every_exception_into_a_record(monkeypatch):
         raise ZeroDivisionError("a bug")
 
     monkeypatch.setattr(sweep, "scan_modes", boom)
-    rec = compute_point(TubeParameters(1.4), spec)
+    rec = compute_point(Tube.uniform(1.4), spec)
     assert rec.status == "error" and rec.message == "internal error: ZeroDivisionError: a bug"
 
 

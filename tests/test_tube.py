@@ -17,8 +17,8 @@ import sympy as sp
 from scipy.integrate import quad
 from scipy.optimize import brentq, minimize_scalar
 
-from electrogrowth.basestate import tube as tube
 from electrogrowth.basestate import voltage as _voltage
+from electrogrowth.basestate import voltage as tube
 from electrogrowth.basestate.tube import (
     neo_hookean_asymptote,
     solve_base_state,
@@ -26,8 +26,8 @@ from electrogrowth.basestate.tube import (
     voltage_threshold,
 )
 from electrogrowth.errors import BaseStateError
+from electrogrowth.model.layers import Tube
 from electrogrowth.model.materials import I1, I4, I5, I6, Material, gent, mooney_rivlin
-from electrogrowth.model.params import TubeParameters
 
 CASES = [  # (Rbar_o, g, lambda_z, Vbar)
     (2.0, 1.0, 1.0, 0.5),
@@ -51,7 +51,7 @@ NH_TWINS = [
 
 def params(Ro, g, lz, V, material=None):
     extra = {} if material is None else {"material": material}
-    return TubeParameters(outer_radius=Ro, growth=g, stretch=lz, voltage=V, **extra)
+    return Tube.uniform(outer_radius=Ro, growth=g, stretch=lz, voltage=V, **extra)
 
 
 # -- independent neo-Hookean closed forms (docs/derivation-base-state.md, eqs. NH-1 .. NH-5) --
@@ -119,7 +119,7 @@ def mechanical_lambda_i(p):
 
 def twin_integrals(state):
     """(int (tau_2 - tau_1) dr / r, int E_r dr, int (|tau_1| + |tau_2|) dr / r) by quad in r."""
-    p, mat = state.params, state.params.material
+    p, mat = state.tube, state.tube.material
     b = p.growth**3 / p.stretch
 
     def local(r):
@@ -206,7 +206,7 @@ def test_equilibrium_and_traction_free_faces(material):
         + s.sigma_rr(R - 2 * h)
     ) / (12 * h)
     r = s.radius(R)
-    drdR = s.params.growth**3 * R / (s.params.stretch * r)
+    drdR = s.tube.growth**3 * R / (s.tube.stretch * r)
     srr, stt, _ = s.stresses(R)
     np.testing.assert_allclose(dsdR / drdR, (stt - srr) / r, rtol=0, atol=1e-9 * np.abs(stt).max())
     assert s.sigma_rr(1.0) == 0.0
@@ -214,8 +214,7 @@ def test_equilibrium_and_traction_free_faces(material):
     prof = s.profiles(11)
     np.testing.assert_allclose(
         prof["p"],
-        s.params.material.stress(*s.elastic_stretches(prof["R"]), prof["D_r"])[0]
-        - prof["sigma_rr"],
+        s.tube.material.stress(*s.elastic_stretches(prof["R"]), prof["D_r"])[0] - prof["sigma_rr"],
         rtol=1e-14,
     )
     assert set(prof) == {"R", "r", "lambda", "sigma_rr", "sigma_tt", "sigma_zz", "p", "D_r", "E_r"}
@@ -257,8 +256,8 @@ def test_growth_is_a_rescaling_of_the_ungrown_tube(material, g, lz, V):
     R = np.linspace(1, 2, 9)
     for a, b in zip(grown.stresses(R), ref.stresses(R)):
         np.testing.assert_allclose(a, b, rtol=0, atol=1e-11 * np.abs(b).max())
-    thr, kind, lam = voltage_threshold(grown.params)
-    thr1, kind1, lam1 = voltage_threshold(ref.params)
+    thr, kind, lam = voltage_threshold(grown.tube)
+    thr1, kind1, lam1 = voltage_threshold(ref.tube)
     assert kind == kind1 and thr == pytest.approx(g * thr1, rel=1e-12)
     assert lam == pytest.approx(g * lam1, rel=1e-9)
 
@@ -414,7 +413,7 @@ def test_moduli_are_the_materials_at_the_local_state():
     R = np.array([[1.0, 1.5], [1.7, 2.0]])
     got = s.moduli(R)
     assert got.shape == (2, 2, 23)
-    want = s.params.material.moduli(*s.elastic_stretches(R), s.displacement(R))
+    want = s.tube.material.moduli(*s.elastic_stretches(R), s.displacement(R))
     np.testing.assert_array_equal(got, want)
 
 
@@ -433,7 +432,7 @@ def test_closed_form_route_matches_the_generic_route(twin, rng):
         rng.uniform(0.02, 0.97, 16),
     ):
         p = params(Ro, g, lz, frac * neo_hookean_asymptote(params(Ro, g, lz, 0.0)))
-        q = dataclasses.replace(p, material=twin)
+        q = Tube.uniform(p.outer_radius, p.length, p.growth, p.stretch, p.voltage, twin)
         fast, slow = solve_base_state(p), solve_base_state(q)
         # two routes indeed
         assert tube.threshold_info(p).nodes == 0 and tube.threshold_info(q).nodes > 0

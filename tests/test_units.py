@@ -6,7 +6,7 @@ import math
 
 import pytest
 
-from electrogrowth import ParameterError, TubeParameters, solve_base_state, tube_from_quantities
+from electrogrowth import ParameterError, Tube, solve_base_state, tube_from_quantities
 from electrogrowth.cli.app import main
 from electrogrowth.model.units import EPSILON_0, Scales
 
@@ -89,7 +89,7 @@ def test_cli_quantities_equal_the_nondimensional_input(capsys):
         pytest.approx(100.0 * phys["sigma_zz_min"], rel=1e-12),
         "kPa",
     ]
-    state = solve_base_state(TubeParameters(1.4, growth=1.1, voltage=vbar))
+    state = solve_base_state(Tube.uniform(1.4, growth=1.1, voltage=vbar))
     thr = state.voltage_threshold * SCALE / 1e3
     assert phys["physical"]["voltage_threshold"][0] == pytest.approx(thr, rel=1e-9)
 

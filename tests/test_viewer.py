@@ -7,14 +7,14 @@ import re
 import numpy as np
 import pytest
 
-from electrogrowth import TubeParameters, critical_value, mode_shape
+from electrogrowth import Tube, critical_value, mode_shape
 from electrogrowth.figures.viewer import mesh_arrays, pattern_html, write_pattern_html
 from electrogrowth.shapes.wall import wall_surface
 
 
 @pytest.fixture(scope="module")
 def shape():
-    tube = TubeParameters(outer_radius=1.4, length=1.0, voltage=0.4)
+    tube = Tube.uniform(outer_radius=1.4, length=1.0, voltage=0.4)
     return mode_shape(critical_value(tube, 3, 1, "growth"), points=21)
 
 

@@ -11,10 +11,10 @@ from pathlib import Path
 def _write(app, exception):
     if exception is not None or app.builder.format != "html":
         return
-    from electrogrowth import TubeParameters, critical_value, mode_shape
+    from electrogrowth import Tube, critical_value, mode_shape
     from electrogrowth.figures.viewer import write_pattern_html
 
-    tube = TubeParameters(outer_radius=1.4, length=1.0, stretch=1.0, voltage=0.4)
+    tube = Tube.uniform(outer_radius=1.4, length=1.0, stretch=1.0, voltage=0.4)
     shape = mode_shape(critical_value(tube, 3, 1, "growth"), points=41)
     out = Path(app.outdir) / "_static" / "pattern-3d.html"
     write_pattern_html(shape, out, amplitude=0.08, n_theta=90, n_z=40)

@@ -2,7 +2,7 @@
 
 The public surface, one name per stage of the computation (units mu = eps = R_i = 1)::
 
-    tube   = TubeParameters(outer_radius=1.4, length=1.0, voltage=0.4)    # model
+    tube   = Tube.uniform(outer_radius=1.4, length=1.0, voltage=0.4)    # model
     state  = solve_base_state(tube)                                        # basestate
     crit   = critical_value(tube, 0, 1, "growth")                          # bifurcation
     scan   = scan_modes(tube, "growth", options=ScanOptions(m_range=(0, 8)))
@@ -27,7 +27,9 @@ _EXPORTS = {
         "pressure_response",
         "voltage_response",
     ),
-    ".basestate.tube": ("BaseState", "solve_base_state", "voltage_curve", "voltage_threshold"),
+    ".basestate.tube": ("solve_base_state", "threshold", "voltage_curve", "voltage_threshold"),
+    ".basestate.uniform": ("UniformState",),
+    ".basestate": ("BaseState",),
     ".bifurcation.certify": ("Certificate", "certify"),
     ".bifurcation.critical": ("CriticalPoint", "critical_value"),
     ".bifurcation.curves": ("Curve", "critical_curve"),
@@ -51,7 +53,7 @@ _EXPORTS = {
     ),
     ".incremental.accuracy": ("Accuracy",),
     ".incremental.targets": ("Family", "Method"),
-    ".model.layers": ("Layer", "LinearGrowth", "Tube"),
+    ".model.layers": ("Layer", "LinearGrowth", "Tube", "TubeParameters"),
     ".model.materials": (
         "I1",
         "I2",
@@ -64,7 +66,6 @@ _EXPORTS = {
         "mooney_rivlin",
         "neo_hookean",
     ),
-    ".model.params": ("TubeParameters",),
     ".model.tube_file": ("load_tube",),
     ".model.units": ("Scales", "tube_from_quantities"),
     ".outcomes": ("Kind", "Outcome", "Status"),
@@ -115,6 +116,8 @@ __all__ = [
     "I6",
     # base state
     "BaseState",
+    "UniformState",
+    "threshold",
     "solve_base_state",
     "voltage_curve",
     "voltage_threshold",

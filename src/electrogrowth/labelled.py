@@ -88,9 +88,9 @@ def clean(attrs: dict) -> dict:
 
 
 def _tube_attrs(params) -> dict:
-    """The tube's fields: TubeParameters, or a layered Tube (its layers' outer radii and
+    """The tube's fields: Tube, or a layered Tube (its layers' outer radii and
     materials, and its loads)."""
-    if hasattr(params, "layers"):
+    if not params.is_uniform:
         return {
             "layer_outer_radii": [float(layer.outer_radius) for layer in params.layers],
             "materials": [layer.material.name for layer in params.layers],
@@ -105,7 +105,7 @@ def _tube_attrs(params) -> dict:
 
 
 def base_state_dataset(state, points: int = 101):
-    """Profiles of a one-layer BaseState on ``points`` radii R (dimension R)."""
+    """Profiles of a uniform state (UniformState) on ``points`` radii R (dimension R)."""
     xr = xarray()
     prof = state.profiles(points)
     R = prof.pop("R")
@@ -117,7 +117,7 @@ def base_state_dataset(state, points: int = 101):
         {
             "title": "axisymmetric base state of a grown, stretched, charged tube",
             "units": "mu = eps = R_i = 1",
-            **_tube_attrs(state.params),
+            **_tube_attrs(state.tube),
             "lambda_i": state.lambda_i,
             "lambda_o": state.lambda_o,
             "r_i": state.r_i,

@@ -37,7 +37,7 @@ def table(title: str, rows: list[tuple[str, object]]) -> str:
 
 
 def _tube(params) -> str:
-    if hasattr(params, "layers"):  # a layered Tube
+    if not params.is_uniform:
         layers = ", ".join(
             f"{layer.material.name} to R = {layer.outer_radius:g}" for layer in params.layers
         )
@@ -106,6 +106,6 @@ def base_state_html(state) -> str:
         ("charge c (D_r = c / r)", f"{state.charge:.10g}"),
         ("V̄ threshold", f"{thr:.10g} ({state.threshold_kind})"),
         ("axial force N / (μ R_i²)", f"{state.axial_force:.10g}"),
-        ("tube", _tube(state.params)),
+        ("tube", _tube(state.tube)),
     ]
     return table("BaseState", rows)

@@ -10,9 +10,9 @@ carry (its threshold), and the residual stresses through the wall.
 import matplotlib.pyplot as plt
 import numpy as np
 
-from electrogrowth import TubeParameters, solve_base_state, voltage_curve, voltage_threshold
+from electrogrowth import Tube, solve_base_state, voltage_curve, voltage_threshold
 
-tube = TubeParameters(outer_radius=2.0, growth=1.1, stretch=1.0, voltage=0.6)
+tube = Tube.uniform(outer_radius=2.0, growth=1.1, stretch=1.0, voltage=0.6)
 state = solve_base_state(tube)
 print(f"lambda_i = {state.lambda_i:.10f}, charge c = {state.charge:.10f}")
 threshold, kind, _ = voltage_threshold(tube)

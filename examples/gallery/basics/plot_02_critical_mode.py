@@ -9,9 +9,9 @@ surface-impedance (Riccati) method and certified by an independent Chebyshev col
 
 import matplotlib.pyplot as plt
 
-from electrogrowth import TubeParameters, critical_value, mode_shape
+from electrogrowth import Tube, critical_value, mode_shape
 
-tube = TubeParameters(outer_radius=1.4, length=1.0, stretch=1.0, voltage=0.4)
+tube = Tube.uniform(outer_radius=1.4, length=1.0, stretch=1.0, voltage=0.4)
 impedance = critical_value(tube, 0, 1, "growth")
 collocation = critical_value(tube, 0, 1, "growth", method="collocation")
 print(

@@ -10,9 +10,9 @@ and a map of each mode's own critical voltage over a small (m, n) grid.
 import matplotlib.pyplot as plt
 import numpy as np
 
-from electrogrowth import ScanOptions, TubeParameters, critical_value, scan_modes
+from electrogrowth import ScanOptions, Tube, critical_value, scan_modes
 
-tube = TubeParameters(outer_radius=1.4, length=3.0, stretch=1.2)
+tube = Tube.uniform(outer_radius=1.4, length=3.0, stretch=1.2)
 scan = scan_modes(tube, "voltage", options=ScanOptions(m_range=(0, 4), n_range=(1, 4), top=4))
 c = scan.critical
 print(f"Vbar_cr = {c.value:.10f} in mode (m, n) = ({c.m}, {c.n}); runners-up:")

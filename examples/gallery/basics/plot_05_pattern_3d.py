@@ -6,10 +6,10 @@ The mode shape at onset drawn on the tube, coloured by the radial displacement u
 the paper's Figs. 9B and 10B. A prismatic or non-axisymmetric mode gives lobes around.
 """
 
-from electrogrowth import TubeParameters, critical_value, mode_shape
+from electrogrowth import Tube, critical_value, mode_shape
 from electrogrowth.figures.plots import render_pattern
 
-tube = TubeParameters(outer_radius=1.4, length=1.0, stretch=1.0, voltage=0.4)
+tube = Tube.uniform(outer_radius=1.4, length=1.0, stretch=1.0, voltage=0.4)
 crit = critical_value(tube, 3, 1, "growth")
 print(f"mode (3, 1): g_cr = {crit.value:.10f}")
 shape = mode_shape(crit, points=41)

@@ -11,7 +11,7 @@ changes with the stretch (an I6 term), written as a string as the command line t
 import matplotlib.pyplot as plt
 import numpy as np
 
-from electrogrowth import TubeParameters, critical_value, neo_hookean
+from electrogrowth import Tube, critical_value, neo_hookean
 from electrogrowth.model.energy_text import energy_material
 
 mine = energy_material("0.4*(I1 - 3) + 0.1*(I2 - 3) + I5/2 + 0.05*(I6 - I4)")
@@ -21,9 +21,7 @@ voltages = np.linspace(0.0, 0.5, 3)
 curves = {}
 for material in (neo_hookean(), mine):
     curves[material.name] = [
-        critical_value(
-            TubeParameters(1.4, 1.0, voltage=v, material=material), 0, 1, "growth"
-        ).value
+        critical_value(Tube.uniform(1.4, 1.0, voltage=v, material=material), 0, 1, "growth").value
         for v in voltages
     ]
 

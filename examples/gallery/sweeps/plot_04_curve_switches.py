@@ -7,10 +7,10 @@ thickens: thin tubes buckle with lobes around (m = 3, 2, 1), thick ones axisymme
 (m = 0). Between grid points whose critical modes differ, the switch is located exactly.
 """
 
-from electrogrowth import ScanOptions, TubeParameters, critical_curve
+from electrogrowth import ScanOptions, Tube, critical_curve
 from electrogrowth.figures.plots import plot_curve
 
-tube = TubeParameters(outer_radius=1.4, length=1.0, voltage=0.3)
+tube = Tube.uniform(outer_radius=1.4, length=1.0, voltage=0.3)
 curve = critical_curve(
     tube,
     "stretch",

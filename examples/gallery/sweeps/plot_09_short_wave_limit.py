@@ -9,10 +9,10 @@ surface instability of one face, computed from the half-space problem without an
 
 import matplotlib.pyplot as plt
 
-from electrogrowth import TubeParameters, critical_value
+from electrogrowth import Tube, critical_value
 from electrogrowth.bifurcation.surface import short_wave_limit
 
-tube = TubeParameters(outer_radius=1.4, length=1.0, voltage=0.6)
+tube = Tube.uniform(outer_radius=1.4, length=1.0, voltage=0.6)
 limit = short_wave_limit(tube, "stretch", side="extension")
 print(f"short-wave limit: lambda_z = {limit.value:.10f} at the {limit.face} face")
 

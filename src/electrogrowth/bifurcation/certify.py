@@ -23,8 +23,7 @@ import numpy as np
 
 from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError, ParameterError
-from ..incremental.targets import collocation_targets, impedance_targets
-from ..model.layers import Tube
+from ..incremental.targets import collocation_stable_signs, collocation_targets, impedance_targets
 from ..outcomes import Kind
 from .critical import critical_value
 from .march import control_path
@@ -82,7 +81,7 @@ def certify(
 
     Parameters
     ----------
-    params : TubeParameters or Tube
+    params : Tube
         The tube ``crit`` was solved for.
     crit : CriticalPoint
         A bifurcation (``critical_value`` or ``scan.critical``) or a surface result.
@@ -157,26 +156,21 @@ def _other_method(params, crit, mode, value, error, rtol, method=None):
 def _certify_choice(params, crit, scan, families, progress) -> int:
     """The number of scanned modes found stable just before the critical value; raises
     ConvergenceError naming a mode already unstable there."""
-    layered = isinstance(params, Tube)
-    if layered:
-        start, end, _ = control_path(params, crit.solve_for, crit.side)
-        sense = 1.0 if end > start else -1.0
-    else:
-        sense = -1.0 if crit.side == "compression" else 1.0
+    start, end, _ = control_path(params, crit.solve_for, crit.side)
+    sense = 1.0 if end > start else -1.0
     before = crit.value - sense * _window(crit)
     modes = scan_grid(scan.m_range, scan.n_range, False, families)
     state = solve_base_state(params.at(crit.solve_for, before))
     f = _one_by_one(lambda row: collocation_targets(state, row)[0], modes, progress)
-    stable = _unloaded(params, modes, collocation_targets) if layered else np.ones(len(modes))
+    stable = collocation_stable_signs(params, modes)
     for i in np.argsort(f * stable):  # the most unstable-looking mode first
         if np.sign(f[i]) == stable[i]:
             break
-        if layered and _impedance_stable(params, state, modes[i]):
+        if _impedance_stable(params, state, modes[i]):
             continue  # a sign change of the collocation determinant, not a bifurcation
         m, n = (int(x) for x in modes[i, :2])
-        by = "collocation and impedance" if layered else "collocation"
         raise ConvergenceError(
-            f"not certified: by {by} mode ({m}, {n}) is already unstable at"
+            f"not certified: by collocation and impedance mode ({m}, {n}) is already unstable at"
             f" {crit.solve_for} = {before:.12g}, before"
             f" the scan's critical mode ({crit.m}, {crit.n}) at {crit.value:.12g}"
         )
@@ -190,12 +184,6 @@ def _one_by_one(target, modes, progress) -> np.ndarray:
         if progress is not None:
             progress(i + 1, len(modes))
     return np.array(f)
-
-
-def _unloaded(params, modes, targets) -> np.ndarray:
-    """Signs of ``targets`` on the unloaded tube, mode by mode."""
-    state = solve_base_state(params.reference())
-    return np.sign([targets(state, row[None, :])[0] for row in modes])
 
 
 def _impedance_stable(params, state, row) -> bool:

@@ -38,7 +38,7 @@ from ..incremental.targets import (
     with_family,
 )
 from ..model.layers import Tube
-from ..model.params import TubeParameters, check_control, check_side
+from ..model.params import check_side
 from ..outcomes import Kind, Outcome, Status
 from ..summary import critical_html
 from .march import brent, control_path, first_bifurcations
@@ -73,7 +73,7 @@ class CriticalPoint(Outcome):
     error_estimate: float
     method: str
     side: str | None
-    params: TubeParameters
+    params: Tube
     face: str | None = None
     psi: float | None = None
     family: str | None = None
@@ -108,7 +108,7 @@ class CriticalPoint(Outcome):
 
 
 def critical_value(
-    params: TubeParameters,
+    params: Tube,
     m: int,
     n: int,
     solve_for: str,
@@ -123,7 +123,7 @@ def critical_value(
 
     Parameters
     ----------
-    params : TubeParameters or Tube
+    params : Tube
         The tube (one homogeneous layer, or a layered Tube with its loads); the value of
         the control ``solve_for`` is ignored (it is the unknown).
     m, n : int
@@ -260,16 +260,14 @@ def no_bifurcation_remedy(solve_for: str, *, mode: tuple[int, int] | None = None
     )
 
 
-def control_name(params: TubeParameters | Tube, solve_for) -> str:
-    """The canonical name of the control ``solve_for`` of ``params`` (a TubeParameters:
-    growth, stretch or voltage; a layered Tube: model/controls.py, checked against it)."""
-    if isinstance(params, Tube):
-        return str(params.check_control(solve_for))
-    return check_control(solve_for)
+def control_name(params: Tube, solve_for) -> str:
+    """The canonical name of the control ``solve_for`` of ``params`` (model/controls.py,
+    checked against the tube)."""
+    return str(params.check_control(solve_for))
 
 
 def stable_sign(
-    m: int, n: int, params: TubeParameters, method: str = "impedance", *, family: str | None = None
+    m: int, n: int, params: Tube, method: str = "impedance", *, family: str | None = None
 ) -> float:
     """Sign of the target of mode (m, n) of ``family`` (default: the natural one) on the
     unloaded tube (g = 1, lambda_z = 1, Vbar = 0)."""

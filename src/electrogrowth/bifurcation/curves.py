@@ -2,7 +2,7 @@
 
 A curve is ``x -> value(x)``: the critical ``solve_for`` ("growth", "stretch" or "voltage",
 as in :func:`scan.scan_modes`) minimised over the modes (m, n) while the parameter ``along``
-(any other field of :class:`TubeParameters`) runs over a grid. Each grid point is one mode
+(any other control or key of the :class:`Tube`) runs over a grid. Each grid point is one mode
 scan (:func:`curve_point`, a pure picklable function, so a process pool's ``map`` can run
 them). Between two grid points whose critical modes differ, A at x_a and B at x_b, the
 switch is located exactly:
@@ -59,8 +59,8 @@ from ..incremental.accuracy import SCAN_SIGNS
 from ..incremental.targets import impedance_targets
 from ..interrupts import Interrupted, interrupt_of, reraise_interrupt
 from ..labelled import curve_dataset
-from ..model.layers import Tube
-from ..model.params import CONTROLS, TubeParameters, check_side
+from ..model.layers import KEYS_TEXT, Tube
+from ..model.params import check_side
 from ..outcomes import NO_MODE, Kind, Outcome, Status, remedy, status_of, traceback_of
 from ..summary import curve_html
 from .critical import critical_value
@@ -68,7 +68,7 @@ from .directions import past_surface
 from .scan import ScanOptions, scan_grid, scan_modes, stable_signs
 from .surface import short_wave_limit
 
-#: The parameters a curve can run along (fields of TubeParameters).
+#: The parameters of the paper's tube a curve can run along (Tube.parameter_keys).
 ALONG = ("stretch", "voltage", "outer_radius", "length", "growth")
 MAX_SPLITS = 6  # depth of the re-location when a third mode intervenes
 CHECK_EVERY = 8  # when following modes, a full scan at least every this many points
@@ -134,7 +134,7 @@ class CurvePoint(Outcome):
 
 
 def curve_point(
-    params: TubeParameters,
+    params: Tube,
     solve_for: str,
     along: str,
     x: float,
@@ -232,7 +232,7 @@ class Curve:
     kind: np.ndarray
     status: tuple[str, ...]
     switches: tuple[Switch, ...]
-    params: TubeParameters
+    params: Tube
     surface: np.ndarray
     short_wave_limit: np.ndarray
     ends: tuple[Switch, ...] = ()
@@ -314,9 +314,9 @@ class Curve:
         """JSON-ready record (NaN -> None)."""
         num = lambda a: [None if not math.isfinite(v) else float(v) for v in a]  # noqa: E731
         p = self.params
-        if isinstance(p, Tube):
+        if not p.is_uniform:
             fixed = {"tube": p.as_dict()}
-        else:
+        else:  # the paper's tube: the fields a curve may run along, as before
             fixed = {
                 "material": p.material.name,
                 "fixed": {
@@ -352,28 +352,23 @@ def _change_record(s: Switch) -> dict:
     }
 
 
-def check_curve(solve_for: str, along: str, params=None) -> None:
-    """Raise ParameterError unless ``solve_for`` is a control and ``along`` another field
-    (of a layered Tube ``params``: a control or a key of :meth:`Tube.at`)."""
-    if isinstance(params, Tube):
-        if str(params.check_control(solve_for)) == along:  # along: checked by Tube.at
-            raise ParameterError(f"along = {along!r} is the unknown itself; choose another")
-        return
-    if solve_for not in CONTROLS:
+def check_curve(solve_for: str, along: str, params: Tube) -> None:
+    """Raise ParameterError unless ``solve_for`` is a control of ``params`` and ``along``
+    is not that control (whether ``along`` is a control or key is checked by :meth:`Tube.at`
+    at the curve's values)."""
+    control = str(params.check_control(solve_for))
+    if along == control:
+        raise ParameterError(f"along = {along!r} is the unknown itself; choose another")
+    try:
+        params.value_of(along)
+    except ParameterError as exc:
         raise ParameterError(
-            f"solve_for = {solve_for!r} is unknown; choose one of {', '.join(CONTROLS)}"
-        )
-    if along not in ALONG:
-        raise ParameterError(f"along = {along!r} is unknown; choose one of {', '.join(ALONG)}")
-    if along == solve_for:
-        raise ParameterError(
-            f"along = {along!r} is the unknown itself; choose another of "
-            f"{', '.join(a for a in ALONG if a != solve_for)}"
-        )
+            f"along = {along!r}: {exc}; or a key of the tube: {KEYS_TEXT}"
+        ) from None
 
 
 def critical_curve(
-    params: TubeParameters,
+    params: Tube,
     solve_for: str,
     along: str,
     values: Iterable[float],
@@ -388,7 +383,7 @@ def critical_curve(
 
     Parameters
     ----------
-    params : TubeParameters
+    params : Tube
         The fixed parameters; fields ``along`` and ``solve_for`` are overridden.
     solve_for : {"growth", "stretch", "voltage"}
         The unknown, as in :func:`scan.scan_modes` (``side`` for the stretch).
@@ -407,7 +402,7 @@ def critical_curve(
         ``map``-like function running :func:`curve_point` over the grid (e.g. a process
         pool's ``map``); the builtin by default.
     follow : bool
-        With the builtin ``map`` and a one-layer tube (TubeParameters): follow the
+        With the builtin ``map``: follow the
         critical mode and its runners-up from point to point, with full scans only where
         the check fails, at the ends and every CHECK_EVERY points (module docstring);
         False: a full scan at every point.
@@ -427,14 +422,13 @@ def critical_curve(
     Buckling under axial compression (Vbar = 0, L = 1): thin tubes in mode (1, 1), thicker
     ones in (0, 1), the switch between Rbar_o = 1.2 and 1.3 located exactly:
 
-    >>> c = critical_curve(TubeParameters(), "stretch", "outer_radius", [1.2, 1.3],
+    >>> c = critical_curve(Tube.uniform(), "stretch", "outer_radius", [1.2, 1.3],
     ...                    side="compression", options=ScanOptions((0, 2), (1, 2)))
     >>> [(s.mode_before, s.mode_after, round(s.x, 6)) for s in c.switches]
     [((1, 1), (0, 1), 1.256361)]
     """
     check_curve(solve_for, along, params)
-    if isinstance(params, Tube):
-        solve_for = str(params.check_control(solve_for))
+    solve_for = str(params.check_control(solve_for))
     side = check_side(solve_for, side)
     if side is not None and solve_for not in ("stretch", "pressure", "force"):
         raise ParameterError(
@@ -451,7 +445,7 @@ def critical_curve(
     for x in xs:  # the ranges are checked before any work
         params.at(along, x)
     unit = functools.partial(curve_point, params, solve_for, along, side=side, options=options)
-    if follow and mapper is map and isinstance(params, TubeParameters):
+    if follow and mapper is map:
         follower = _Follower(params, solve_for, along, side, options, unit)
         computed = (follower.point(x, i in (0, xs.size - 1)) for i, x in enumerate(xs))
     else:
@@ -619,7 +613,7 @@ class _Follower:
             return None
         return CurvePoint(x, c.value, best, Kind.BIFURCATION, _accuracy(c))
 
-    def _all_stable(self, at: TubeParameters, best, value: float) -> bool:
+    def _all_stable(self, at: Tube, best, value: float) -> bool:
         """Every mode of the scan's grid but ``best`` (None: all) is still on its stable
         side (the sign on the unloaded tube, as in a scan's march; loose targets) just
         before ``value``."""

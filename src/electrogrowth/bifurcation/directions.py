@@ -63,7 +63,7 @@ def stable_signs(params, faces=None) -> dict[str, float]:
 @functools.lru_cache(maxsize=64)
 def _unloaded_signs(reference) -> dict[str, float]:
     """stable_signs of every surface, shared by every state of one tube (keyed by its
-    unloaded reference, a hashable TubeParameters or Tube)."""
+    unloaded reference, a hashable Tube)."""
     return stable_signs(reference)
 
 

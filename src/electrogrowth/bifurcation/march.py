@@ -26,12 +26,10 @@ from collections.abc import Callable
 import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
-from ..basestate.layered import layered_threshold, solve_layered_state
-from ..basestate.tube import solve_base_state, voltage_threshold
+from ..basestate.tube import free_stretch, solve_base_state, threshold
 from ..errors import BaseStateError, ConvergenceError, NoBifurcationFound, ParameterError
 from ..incremental.targets import natural_family, row_family
 from ..model.layers import Tube
-from ..model.params import TubeParameters
 
 FIRST_STEP, MIN_STEP, MAX_STEP, MAX_LAMBDA_JUMP = 0.004, 1e-4, 0.05, 0.05
 MAX_WAIT = 0.25
@@ -67,58 +65,31 @@ class MarchResult:
     threshold: float | None  # where the axisymmetric state is lost, if reached first
 
 
-def control_path(params: TubeParameters | Tube, solve_for: str, side: str | None):
-    """(start, end, scale) of the march for ``solve_for``."""
-    if isinstance(params, Tube):
-        return _tube_path(params, solve_for, side)
-    if solve_for == "growth":
-        return 1.0, 6.0, 1.0
-    if solve_for == "stretch":
-        g = params.growth  # lambda_z = g: no elastic axial strain
-        return (g, 8.0 * g, g) if side == "extension" else (g, 0.05 * g, g)
-    if solve_for == "voltage":
-        thr = voltage_threshold(params)[0]
-        if not math.isfinite(thr):  # stiffening energies may have no threshold at all
-            return 0.0, 1e3, 1.0
-        return 0.0, thr * (1 - 1e-12), thr
-    raise ParameterError(
-        f"solve_for = {solve_for!r} is unknown; choose growth, stretch or voltage"
-    )
-
-
-def _tube_path(tube: Tube, solve_for: str, side: str | None):
-    """(start, end, scale) for a layered tube: growth from 1 (ungrown); the stretch from the
-    free length of the tube at its growth (no loads) down (compression) or up; Vbar from 0
-    and the inner pressure from P_o (no pressure difference) up to their thresholds (or
-    the pressure down, compression: a collapse under external pressure); the axial force
-    from 0 down (compression) or up. The pressure and force scales are the unloaded
-    tube's: sum mu_k ln(R_k / R_{k-1}) and pi sum mu_k (R_k^2 - R_{k-1}^2)."""
+def control_path(tube: Tube, solve_for: str, side: str | None):
+    """(start, end, scale) of the march for ``solve_for``: growth from 1 (ungrown); the
+    stretch from the free length of the tube at its growth (no loads; g for a uniform tube)
+    down (compression) or up; Vbar from 0 and the inner pressure from P_o (no pressure
+    difference) up to their thresholds (or the pressure down, compression: a collapse under
+    external pressure); the axial force from 0 down (compression) or up. The pressure and
+    force scales are the unloaded tube's: sum mu_k ln(R_k / R_{k-1}) and
+    pi sum mu_k (R_k^2 - R_{k-1}^2)."""
     kind = tube.check_control(solve_for).kind
     up = side == "extension"
     pairs = list(zip(tube.layers, tube.radii, tube.radii[1:]))
     if kind == "growth":
         return 1.0, 6.0, 1.0
     if kind == "stretch":
-        free = dataclasses.replace(
-            tube,
-            stretch=None,
-            axial_force=0.0,
-            voltage=0.0,
-            inner_pressure=0.0,
-            outer_pressure=0.0,
-            closed_ends=False,
-        )
-        lz = solve_layered_state(free).stretch
+        lz = free_stretch(tube)
         return (lz, 8.0 * lz, lz) if up else (lz, 0.05 * lz, lz)
     if kind == "voltage":
-        thr = layered_threshold(tube, "voltage").value
+        thr = threshold(tube, "voltage").value  # stiffening energies may have none (inf)
         return (0.0, 1e3, 1.0) if not math.isfinite(thr) else (0.0, thr * (1 - 1e-12), thr)
     if kind == "pressure":
         scale = sum(ply.shear_modulus * math.log(b / a) for ply, a, b in pairs)
         start = tube.outer_pressure
         if not up:
             return start, start - 20.0 * scale, scale
-        thr = layered_threshold(tube, "pressure").value
+        thr = threshold(tube, "pressure").value
         end = thr * (1 - 1e-12) if math.isfinite(thr) else start + 50.0 * scale
         return start, end, scale
     scale = math.pi * sum(ply.shear_modulus * (b * b - a * a) for ply, a, b in pairs)
@@ -127,7 +98,7 @@ def _tube_path(tube: Tube, solve_for: str, side: str | None):
 
 #: The tube on which the stable signs of a mode grid are read: they are the same on every
 #: unloaded tube (docs/derivation.md section 3), so one evaluation serves every scan.
-SIGN_TUBE = TubeParameters(outer_radius=1.4, length=1.0)
+SIGN_TUBE = Tube.uniform(outer_radius=1.4, length=1.0)
 
 
 def unloaded_signs(params, modes: np.ndarray, targets: Targets) -> np.ndarray:
@@ -194,7 +165,7 @@ class _History:
 
 
 def first_bifurcations(
-    params: TubeParameters,
+    params: Tube,
     solve_for: str,
     side: str | None,
     modes: np.ndarray,
@@ -392,25 +363,25 @@ def brent(f, a, b) -> float:
         raise ConvergenceError(f"the bracketed root solve failed on [{a}, {b}]: {exc}") from None
 
 
-def _voltage_threshold(params) -> float:
-    if isinstance(params, Tube):
-        return layered_threshold(params, "voltage").value
-    return voltage_threshold(params)[0]
+def _voltage_threshold(tube) -> float:
+    return threshold(tube, "voltage").value
 
 
 def _threshold_between(at, params, x_ok, x_bad) -> float:
     """Parameter value where the base state is lost between x_ok and x_bad: where the
-    voltage threshold falls to the applied voltage (one layer), or, for a layered tube
-    (whose loads may be several), the edge of the states that solve, bisected."""
-    lo, hi = min(x_ok, x_bad), max(x_ok, x_bad)
-    if not isinstance(params, Tube):
-        return brentq(
-            lambda x: voltage_threshold(at(x))[0] - params.voltage,
-            lo,
-            hi,
-            xtol=1e-14,
-            rtol=1e-15,
-        )
+    voltage threshold falls to the applied voltage if that brackets it, else the edge of the
+    states that solve (whichever of the tube's loads reaches its threshold), bisected."""
+    if params.voltage > 0:
+        try:
+            return brentq(
+                lambda x: _voltage_threshold(at(x)) - params.voltage,
+                min(x_ok, x_bad),
+                max(x_ok, x_bad),
+                xtol=1e-14,
+                rtol=1e-15,
+            )
+        except ValueError:  # the voltage's threshold does not bracket it: another load
+            pass
     ok, bad = x_ok, x_bad
     while abs(bad - ok) > 1e-13 * max(1.0, abs(ok)):
         mid = 0.5 * (ok + bad)

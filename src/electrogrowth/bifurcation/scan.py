@@ -36,7 +36,8 @@ from ..errors import NoBifurcationFound, ParameterError
 from ..incremental.accuracy import SCAN_SIGNS, SCAN_STABLE_SIGNS, Accuracy
 from ..incremental.targets import MODE_MAX, Family, impedance_targets
 from ..labelled import scan_dataset
-from ..model.params import TubeParameters, check_side
+from ..model.layers import Tube
+from ..model.params import check_side
 from ..outcomes import NO_MODE, Kind
 from ..summary import scan_html
 from .critical import CriticalPoint, control_name, critical_value, no_bifurcation_remedy
@@ -192,7 +193,7 @@ def family_rows(m_values, n_values, prismatic: bool, torsional: bool) -> np.ndar
 
 
 def scan_modes(
-    params: TubeParameters,
+    params: Tube,
     solve_for: str,
     *,
     side: str | None = None,
@@ -203,7 +204,7 @@ def scan_modes(
 
     Parameters
     ----------
-    params : TubeParameters or Tube
+    params : Tube
         The tube; the control named by ``solve_for`` is the unknown.
     solve_for : str
         As in :func:`bifurcation.critical_value` (growth, stretch, voltage; for a layered

@@ -42,12 +42,11 @@ from collections.abc import Callable
 import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
-from ..basestate.layered import layered_threshold
-from ..basestate.tube import solve_base_state, voltage_threshold
+from ..basestate.tube import solve_base_state, threshold
 from ..errors import BaseStateError, ConvergenceError, ParameterError
 from ..incremental.halfspace import surface_radius, surfaces
 from ..model.layers import Tube
-from ..model.params import SIDES, TubeParameters, check_control, check_side
+from ..model.params import check_side
 from ..outcomes import Kind, Outcome, Status
 from .directions import (
     HALF_PI,
@@ -76,7 +75,7 @@ class SurfaceLimit(Outcome):
         theta, pi/2: along z); ``ratio`` = k r / m = tan psi, None at psi = pi/2.
     error_estimate : |value - value at a second, coarser resolution| (0 if not a root, NaN
         if the base state is lost within the search for the coarser root).
-    params : the parameters (TubeParameters or layered Tube) at ``value``.
+    params : the parameters (Tube) at ``value``.
     face : the surface: "inner", "outer" or, in a layered tube, "interface-K" (between
         layers K and K + 1).
     status, message, remedy : always OK, "" and "" (a failure raises); with them a
@@ -90,7 +89,7 @@ class SurfaceLimit(Outcome):
     ratio: float | None
     kind: str
     error_estimate: float
-    params: TubeParameters | Tube
+    params: Tube
     side: str | None = None
     status: Status = Status.OK
     message: str = ""
@@ -115,17 +114,13 @@ class SurfaceLimit(Outcome):
 
 def _check(params, solve_for, side, faces, rtol) -> tuple[str, str | None, tuple[str, ...]]:
     """(canonical control, side, surfaces) after checking the input."""
-    if isinstance(params, Tube):
-        solve_for = str(params.check_control(solve_for))
-        side = check_side(solve_for.split("[")[0], side)
-    elif isinstance(params, TubeParameters):
-        check_control(solve_for)
-        if side is not None and side not in SIDES:
-            raise ParameterError(f"side = {side!r} is unknown; choose compression or extension")
-        # as critical_value: the side matters for the stretch only (ignored otherwise)
-        side = (side or "compression") if solve_for == "stretch" else None
-    else:
-        raise ParameterError(f"params = {params!r} is not a TubeParameters or a Tube")
+    if not isinstance(params, Tube):
+        raise ParameterError(f"params = {params!r} is not a Tube")
+    control = params.check_control(solve_for)
+    solve_for = str(control)
+    side = check_side(control.kind, side)
+    # as critical_value: a side only for the stretch, pressure or force (ignored otherwise)
+    side = side if control.kind in ("stretch", "pressure", "force") else None
     valid = surfaces(params)
     faces = valid if faces is None else (faces,) if isinstance(faces, str) else tuple(faces)
     if not faces or any(f not in valid for f in faces) or len(set(faces)) != len(faces):
@@ -137,11 +132,9 @@ def _check(params, solve_for, side, faces, rtol) -> tuple[str, str | None, tuple
     return solve_for, side, faces
 
 
-def _voltage_threshold(params) -> float:
+def _voltage_threshold(tube) -> float:
     """The voltage threshold of the tube's voltage branch (inf if there is none)."""
-    if isinstance(params, Tube):
-        return layered_threshold(params, "voltage").value
-    return voltage_threshold(params)[0]
+    return threshold(tube, "voltage").value
 
 
 # -- the march ------------------------------------------------------------------------------
@@ -369,7 +362,7 @@ def _ratio(psi):
 
 
 def short_wave_limit(
-    params: TubeParameters | Tube,
+    params: Tube,
     solve_for: str,
     *,
     side: str | None = None,
@@ -381,7 +374,7 @@ def short_wave_limit(
 
     Parameters
     ----------
-    params : TubeParameters or Tube
+    params : Tube
         The tube (one homogeneous layer, or a layered, pressurised Tube); the control named
         by ``solve_for`` is the unknown (``params.at(solve_for, x)``).
     solve_for : str
@@ -421,7 +414,7 @@ def short_wave_limit(
 
 
 def ray_limit(
-    params: TubeParameters | Tube,
+    params: Tube,
     m: float,
     n: float,
     solve_for: str,
@@ -450,7 +443,7 @@ def ray_limit(
     def direction(state, face):
         length = getattr(state, "current_length", None)  # a layered state
         if length is None:
-            length = state.params.stretch * state.params.length
+            length = state.tube.stretch * state.tube.length
         return math.atan2(n * math.pi * surface_radius(state, face) / length, m)
 
     return _solve(params, solve_for, side, faces, rtol, direction)

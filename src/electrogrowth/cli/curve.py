@@ -17,17 +17,15 @@ from pathlib import Path
 
 import numpy as np
 
-from ..bifurcation.curves import ALONG, MAX_POINTS, check_curve, critical_curve
+from ..bifurcation.curves import MAX_POINTS, check_curve, critical_curve
 from ..errors import ParameterError
 from ..figures.plots import plot_curve
 from ..figures.style import wrapped_title
 from ..interrupts import Interrupted
-from ..model.layers import KEYS_TEXT, Tube
-from ..model.params import TubeParameters
+from ..model.layers import KEYS_TEXT
 from ..outcomes import Status
 from .critical import tube_line
 from .options import (
-    _material,
     add_control_options,
     add_mode_range_options,
     check_side_option,
@@ -102,35 +100,10 @@ def configure_curve(parser: argparse.ArgumentParser) -> None:
     add_quiet_option(parser)
 
 
-def curve_params(args) -> TubeParameters:
-    """The fixed parameters; the --along and --solve-for fields are placeholders."""
-    fixed = {
-        "outer_radius": args.outer_radius,
-        "length": args.length,
-        "growth": args.growth,
-        "stretch": args.stretch,
-        "voltage": args.voltage,
-    }
-    fixed[args.along] = args.start
-    fixed[args.solve_for] = {"growth": 1.0, "stretch": fixed["growth"], "voltage": 0.0}[
-        args.solve_for
-    ]
-    return TubeParameters(**fixed, material=_material(args))
-
-
 def run_curve(args) -> int:
     params, solve_for = control_of(args)
-    if isinstance(params, Tube):
-        check_curve(solve_for, args.along, params)
-        params = params.at(args.along, args.start)
-    else:
-        if args.along not in ALONG:
-            raise ParameterError(
-                f"--along {args.along} is unknown; choose one of {', '.join(ALONG)}"
-                " (a layered --tube has more)"
-            )
-        check_curve(solve_for, args.along)
-        params = curve_params(args)
+    check_curve(solve_for, args.along, params)
+    params = params.at(args.along, args.start)
     if not 2 <= args.points <= MAX_POINTS:
         raise ParameterError(
             f"--points = {args.points} is out of range; need 2 to {MAX_POINTS} (a curve"
@@ -194,7 +167,7 @@ def _kept(stop: Interrupted, path: Path, total: int) -> Interrupted:
 
 
 def _fixed_text(curve) -> str:
-    if isinstance(curve.params, Tube):
+    if not curve.params.is_uniform:
         return tube_line(curve.params.as_dict()).removeprefix("  tube: ")
     d = curve.as_dict()["fixed"]
     names = {
@@ -213,7 +186,7 @@ def summary(curve) -> list[str]:
     side = f" ({curve.side})" if curve.side else ""
     lines = [
         f"critical {curve.solve_for}{side} along {curve.along}: "
-        + ("" if isinstance(curve.params, Tube) else f"{curve.params.material.name}, ")
+        + (f"{curve.params.material.name}, " if curve.params.is_uniform else "")
         + _fixed_text(curve)
     ]
     ok = np.isfinite(curve.value)

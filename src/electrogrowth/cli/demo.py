@@ -18,11 +18,11 @@ from ..bifurcation.curves import critical_curve
 from ..bifurcation.scan import scan_modes
 from ..figures.plots import plot_curve, render_pattern
 from ..figures.style import COLORS, new_figure
-from ..model.params import TubeParameters
+from ..model.layers import Tube
 from ..shapes.mode_shape import mode_shape
 from .progress import add_quiet_option, enabled, stage
 
-HEADLINE = TubeParameters(outer_radius=1.4, length=1.0, growth=1.0, stretch=1.0, voltage=0.4)
+HEADLINE = Tube.uniform(outer_radius=1.4, length=1.0, growth=1.0, stretch=1.0, voltage=0.4)
 
 
 def configure_demo(parser: argparse.ArgumentParser) -> None:
@@ -95,8 +95,8 @@ def _stress_profile(state, out: Path) -> None:
     ax.set_xlabel(r"current radius $r / R_i$ (–)")
     ax.set_ylabel(r"Cauchy stress / $\mu$ (–)")
     ax.set_title(
-        rf"$\bar R_o$ = {state.params.outer_radius:g}, $\bar V$ ="
-        rf" {state.params.voltage:g}, $\lambda_z$ = {state.params.stretch:g}",
+        rf"$\bar R_o$ = {state.tube.outer_radius:g}, $\bar V$ ="
+        rf" {state.tube.voltage:g}, $\lambda_z$ = {state.tube.stretch:g}",
         fontsize=9,
     )
     ax.legend()

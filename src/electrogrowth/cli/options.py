@@ -8,8 +8,9 @@ from typing import TYPE_CHECKING
 
 from ..errors import ParameterError
 from ..model.controls import TUBE_CONTROLS
+from ..model.layers import Tube
 from ..model.materials import BUILTIN, material_by_name
-from ..model.params import SIDES, TubeParameters
+from ..model.params import SIDES
 from .energy import energy_from_args
 from .units import add_unit_options, number_or_quantity
 
@@ -24,7 +25,7 @@ if TYPE_CHECKING:
 
 
 def finite_number(text: str) -> float:
-    """A finite real number (ranges are checked by TubeParameters, which names the value)."""
+    """A finite real number (ranges are checked by Tube.uniform, which names the value)."""
     try:
         value = float(text)
     except ValueError:
@@ -154,9 +155,9 @@ def add_tube_options(
     add_unit_options(parser)
 
 
-def tube_from_args(args) -> TubeParameters:
-    """TubeParameters from the options of :func:`add_tube_options`."""
-    return TubeParameters(
+def tube_from_args(args) -> Tube:
+    """The paper's tube (``Tube.uniform``) from the options of :func:`add_tube_options`."""
+    return Tube.uniform(
         outer_radius=args.outer_radius,
         length=args.length,
         growth=args.growth,

@@ -27,7 +27,7 @@ def configure_state(parser: argparse.ArgumentParser) -> None:
 
 def run_state(args) -> int:
     tube = tube_of(args)
-    if not isinstance(tube, Tube):
+    if tube.is_uniform:  # the paper's tube: its five numbers, as the paper prints them
         rec = _with_physical(solve_base_state(tube).as_dict(), args)
         return _print_one_layer(tube, rec, args.json)
     try:

@@ -16,7 +16,6 @@ import dataclasses
 from ..errors import ParameterError, UsageError
 from ..model.layers import Tube
 from ..model.materials import material_by_name
-from ..model.params import TubeParameters
 from ..model.tube_file import load_tube
 from .energy import energy_from_args
 from .options import add_tube_options, finite_number, tube_from_args
@@ -76,13 +75,9 @@ def _given(args) -> dict:
     return {dest: getattr(args, dest) for dest in _SHARED if getattr(args, dest) is not None}
 
 
-def _layered_options(args) -> bool:
-    return any(getattr(args, d) is not None for d in _LOADS) or args.closed_ends is not None
-
-
-def tube_of(args, *, layered: bool = False) -> TubeParameters | Tube:
-    """TubeParameters (one layer, no pressure or force: the paper's solver) or a layered
-    Tube (a file, a load only a Tube has, or ``layered``: the control needs one)."""
+def tube_of(args) -> Tube:
+    """The tube of the options: the paper's tube (``Tube.uniform``) from --outer-radius,
+    --growth, ..., or a --tube file, with the loads given (pressures, force) applied."""
     given = _given(args)
     if "stretch" in given and args.axial_force is not None:
         raise ParameterError(
@@ -94,10 +89,7 @@ def tube_of(args, *, layered: bool = False) -> TubeParameters | Tube:
             raise UsageError("the following arguments are required: --outer-radius (or --tube)")
         for dest, value in args.shared_defaults.items():
             setattr(args, dest, given.get(dest, value))
-        params = tube_from_args(args)
-        if not (layered or _layered_options(args)):
-            return params
-        tube = Tube.from_parameters(params)
+        tube = tube_from_args(args)
     else:
         tube = load_tube(args.tube)
         layer_opts = {k: given[k] for k in ("outer_radius", "growth", "material") if k in given}
@@ -149,17 +141,10 @@ def _override_layer(tube: Tube, args, opts: dict) -> Tube:
     return dataclasses.replace(tube, layers=(dataclasses.replace(tube.layers[0], **fields),))
 
 
-def control_of(args) -> tuple[TubeParameters | Tube, str]:
+def control_of(args) -> tuple[Tube, str]:
     """(the tube, the canonical control name) of a command with --solve-for, --layer,
-    --component: a layered Tube when the control or a load needs one."""
-    needs_tube = (
-        args.solve_for in ("pressure", "force")
-        or args.layer is not None
-        or args.component is not None
-    )
-    params = tube_of(args, layered=needs_tube)
-    if not isinstance(params, Tube):
-        return params, args.solve_for
+    --component."""
+    params = tube_of(args)
     name = args.solve_for
     if args.layer is not None or args.component is not None:
         if name != "growth":

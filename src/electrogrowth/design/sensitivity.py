@@ -20,7 +20,6 @@ finite differences of full critical_value solves.
 from __future__ import annotations
 
 import math
-import re
 
 from ..basestate.tube import solve_base_state
 from ..bifurcation.critical import control_name
@@ -30,44 +29,22 @@ from ..incremental.targets import check_mode, targets_for, with_family
 from ..model.layers import Tube
 
 STEP = 1e-4
-SCALAR_KEYS = ("outer_radius", "length", "growth", "stretch", "voltage")
 
 
-def parameter_keys(tube, solve_for: str) -> tuple[str, ...]:
-    """Every numeric key of ``tube`` but the unknown ``solve_for``: a one-layer
-    TubeParameters' outer_radius, length, growth, stretch, voltage; a layered Tube's layer
-    thicknesses, shear moduli and permittivities, growth components of layers with constant
-    growth, voltage, the stretch or the force (whichever it prescribes), the inner and outer
-    pressures and the length."""
+def parameter_keys(tube: Tube, solve_for: str) -> tuple[str, ...]:
+    """Every number of ``tube`` (:meth:`Tube.parameter_keys`) but the unknown ``solve_for``
+    (for a growth: each component it moves)."""
     solve_for = control_name(tube, solve_for)
-    if not isinstance(tube, Tube):
-        return tuple(k for k in SCALAR_KEYS if k != solve_for)
-    keys = []
-    for k, layer in enumerate(tube.layers, start=1):
-        keys += [f"layers[{k}].{f}" for f in ("thickness", "shear_modulus", "permittivity")]
-        if not layer.graded:
-            keys += [f"growth[{k}].{c}" for c in ("r", "theta", "z")]
-    keys += ["voltage", tube.control, "pressure", "outer_pressure", "length"]
     own = {solve_for}
     if solve_for.startswith("growth"):  # the growth solved for: all or some components
         c = tube.check_control(solve_for)
         comps = c.components or ("r", "theta", "z")
         own |= {f"growth[{c.layer or 1}].{comp}" for comp in comps}
-    return tuple(k for k in keys if k not in own)
+    return tuple(k for k in tube.parameter_keys() if k not in own)
 
 
-def key_value(tube, key: str) -> float:
+def key_value(tube: Tube, key: str) -> float:
     """The current value of ``key`` (as ``tube.at`` sets it)."""
-    if not isinstance(tube, Tube):
-        return float(getattr(tube, key))
-    match = re.fullmatch(r"layers\[(\d+)\]\.(\w+)", key)
-    if match:
-        k = int(match[1])
-        if match[2] == "thickness":
-            return tube.radii[k] - tube.radii[k - 1]
-        return float(getattr(tube.layers[k - 1], match[2]))
-    if key in ("length", "outer_pressure"):
-        return float(getattr(tube, key))
     return tube.value_of(key)
 
 
@@ -102,7 +79,7 @@ def sensitivities(
 
     Parameters
     ----------
-    tube : TubeParameters or Tube
+    tube : Tube
         The design; its ``solve_for`` is replaced by ``value``.
     mode : (m, n)
         The mode, critical at ``value`` (f(value) = 0 to the accuracy ``rtol``).

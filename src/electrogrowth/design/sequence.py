@@ -16,10 +16,10 @@ import math
 
 import numpy as np
 
-from ..bifurcation.curves import ALONG, Curve, check_curve, critical_curve
+from ..bifurcation.curves import Curve, check_curve, critical_curve
 from ..bifurcation.scan import ScanOptions
 from ..errors import ElectrogrowthError, ParameterError
-from ..model.layers import KEYS_TEXT, Tube
+from ..model.layers import KEYS_TEXT
 from ..outcomes import NO_MODE, Kind, Status
 
 MIN_POINTS, MAX_POINTS = 2, 2001
@@ -160,19 +160,13 @@ def check_vary(vary, tube=None, solve_for: str | None = None) -> tuple[str, floa
             f"vary range {lo!r} to {hi!r} of {key} is invalid; need finite numbers lo < hi"
         )
     if tube is not None:
-        if not isinstance(tube, Tube) and key not in ALONG:
+        try:
+            tube.value_of(key)
+        except (ParameterError, AttributeError):
             raise ParameterError(
-                f"vary key {key!r} is unknown for a one-layer tube; choose one of"
-                f" {', '.join(ALONG)} (a layered Tube has more)"
-            )
-        if isinstance(tube, Tube) and not (key in ("length", "outer_pressure") or "[" in key):
-            try:
-                tube.check_control(key)
-            except ParameterError:
-                raise ParameterError(
-                    f"vary key {key!r} is not a key of this tube; valid: a control (growth[K],"
-                    f" growth[K].theta, stretch, voltage, pressure, force) or {KEYS_TEXT}"
-                ) from None
+                f"vary key {key!r} is not a key of this tube; valid: a control (growth[K],"
+                f" growth[K].theta, stretch, voltage, pressure, force) or {KEYS_TEXT}"
+            ) from None
         check_curve(solve_for, key, tube)
         tube.at(key, lo)
         tube.at(key, hi)
@@ -203,15 +197,15 @@ def mode_sequence(
 
     Parameters
     ----------
-    tube : TubeParameters or Tube
+    tube : Tube
         The tube; ``solve_for`` is the unknown, ``vary[0]`` is overridden.
     solve_for : str
         The control whose critical value decides which pattern comes first (as in
         :func:`scan_modes`; ``side`` for the stretch, pressure and force).
     vary : (key, lo, hi)
-        The design variable: any key ``tube.at`` accepts (TubeParameters: outer_radius,
-        length, growth, stretch, voltage; Tube also layers[K].thickness, ... see
-        :meth:`Tube.at`), and its range.
+        The design variable: any control or key ``tube.at`` accepts (outer_radius,
+        length, growth, stretch, voltage, layers[K].thickness, ... see :meth:`Tube.at`),
+        and its range.
     options : ScanOptions
         The modes each scan examines.
     points : int
@@ -224,8 +218,8 @@ def mode_sequence(
 
     Examples
     --------
-    >>> from electrogrowth import ScanOptions, TubeParameters
-    >>> seq = mode_sequence(TubeParameters(), "stretch", ("outer_radius", 1.2, 1.3),
+    >>> from electrogrowth import ScanOptions, Tube
+    >>> seq = mode_sequence(Tube.uniform(), "stretch", ("outer_radius", 1.2, 1.3),
     ...                     side="compression", points=2, options=ScanOptions((0, 2), (1, 2)))
     >>> [(iv.mode, round(iv.lo, 6), round(iv.hi, 6)) for iv in seq.intervals]
     [((1, 1), 1.2, 1.256361), ((0, 1), 1.256361, 1.3)]

@@ -10,8 +10,8 @@ from __future__ import annotations
 import numpy as np
 
 from ..basestate.tube import solve_base_state, voltage_curve, voltage_threshold
+from ..model.layers import Tube
 from ..model.materials import Material, neo_hookean
-from ..model.params import TubeParameters
 from .style import COLORS, FigureResult, new_figure
 
 
@@ -44,7 +44,7 @@ def figure4(
     rows, headline = [], {}
     for ax, lz in zip(axes[0], stretches):
         for color, g in zip(COLORS, growths):
-            p = TubeParameters(outer_radius=outer_radius, growth=g, stretch=lz, material=material)
+            p = Tube.uniform(outer_radius=outer_radius, growth=g, stretch=lz, material=material)
             thr, kind, lam_thr = voltage_threshold(p)
             lam0 = solve_base_state(p).lambda_i
             top = min(max_lambda_i, lam_thr * (1 - 1e-9))  # a limit point or locking
@@ -112,7 +112,7 @@ def figure5(
     for row, g in zip(axes, growths):
         for dash, lz in zip(dashes, stretches):
             for color, V in zip(COLORS, voltages):
-                p = TubeParameters(
+                p = Tube.uniform(
                     outer_radius=outer_radius, growth=g, stretch=lz, voltage=V, material=material
                 )
                 prof = solve_base_state(p).profiles(points)

@@ -26,8 +26,8 @@ from ..basestate.tube import voltage_threshold
 from ..bifurcation.critical import critical_value
 from ..bifurcation.curves import Curve, critical_curve
 from ..bifurcation.scan import ScanOptions, scan_modes
+from ..model.layers import Tube
 from ..model.materials import Material, neo_hookean
-from ..model.params import TubeParameters
 from ..outcomes import Kind, Status
 from .plots import curve_legend, plot_curve
 from .style import COLORS, FigureResult, new_figure, wrapped_title
@@ -58,7 +58,7 @@ class PatternPoint:
     critical growth factor, wrinkling in mode (m, n)."""
 
     name: str
-    params: TubeParameters
+    params: Tube
     m: int
     n: int
 
@@ -191,7 +191,7 @@ def figure6(
         else ((1.2, 1.3, 1.4) if quick else np.round(np.arange(1.1, 1.8001, 0.05), 10)),
         float,
     )
-    base = TubeParameters(outer_radius=radii[0], length=length, material=material)
+    base = Tube.uniform(outer_radius=radii[0], length=length, material=material)
     a = _curve(
         base, "stretch", "outer_radius", radii, quick, side="compression", progress=progress
     )
@@ -250,7 +250,7 @@ def figure7(
     for col, V in enumerate(voltages):
         for row, side in enumerate(("extension", "compression")):
             ax = axes[row, col]
-            p = TubeParameters(outer_radius=radii[0], length=length, voltage=V, material=material)
+            p = Tube.uniform(outer_radius=radii[0], length=length, voltage=V, material=material)
             c = _curve(p, "stretch", "outer_radius", radii, quick, side=side, progress=progress)
             plot_curve(c, ax, color=COLORS[row])
             curves.append(c)
@@ -298,7 +298,7 @@ def figure8(
     ax = axes[0, 0]
     curves, headline = [], {}
     for color, L in zip(COLORS, lengths):
-        p = TubeParameters(outer_radius=outer_radius, length=L, material=material)
+        p = Tube.uniform(outer_radius=outer_radius, length=L, material=material)
         start = scan_modes(p, "stretch", side="compression", options=_modes(quick)).critical.value
         t = np.linspace(0.0, 1.0, points) ** 2  # Vbar_cr ~ sqrt(lambda_z - start) there
         grid = (
@@ -315,9 +315,7 @@ def figure8(
         ax.plot([x_max], [v_max], "s", color=color, ms=3)
     lz = np.linspace(min(c.x[0] for c in curves), max(c.x[-1] for c in curves), 100)
     thr = [
-        voltage_threshold(TubeParameters(outer_radius=outer_radius, stretch=x, material=material))[
-            0
-        ]
+        voltage_threshold(Tube.uniform(outer_radius=outer_radius, stretch=x, material=material))[0]
         for x in lz
     ]
     ax.plot(lz, thr, ":", color="0.5", lw=0.9, label="threshold")
@@ -343,7 +341,7 @@ def _maximum(c: Curve) -> tuple[float, float]:
     from scipy.optimize import minimize_scalar
 
     mode = int(c.m[i]), int(c.n[i])
-    at = lambda x: dataclasses.replace(c.params, **{c.along: float(x)})  # noqa: E731
+    at = lambda x: c.params.at(c.along, x)  # noqa: E731
     res = minimize_scalar(
         lambda x: -critical_value(at(x), *mode, c.solve_for, side=c.side).value,
         bounds=(c.x[i - 1], c.x[i + 1]),
@@ -387,17 +385,14 @@ def representative_points(curve: Curve, prefix: str, count: int = 4) -> tuple[Pa
     chosen = sorted([first, *inner, last], key=lambda i: curve.x[i])
     out = []
     for k, i in enumerate(chosen, 1):
-        params = dataclasses.replace(
-            curve.params,
-            **{curve.along: float(curve.x[i]), curve.solve_for: float(curve.value[i])},
-        )
+        params = curve.params.at(curve.along, curve.x[i]).at(curve.solve_for, curve.value[i])
         out.append(PatternPoint(f"{prefix}{k}", params, int(curve.m[i]), int(curve.n[i])))
     return tuple(out)
 
 
 def _mark(ax, pts, color, along):
     for p in pts:
-        x, y = getattr(p.params, along), p.params.growth
+        x, y = p.params.value_of(along), p.params.growth
         ax.plot([x], [y], "o", mfc="white", mec=color, ms=4, zorder=3)
         ax.annotate(
             f"${p.name[0]}_{p.name[1:]}$",
@@ -440,7 +435,7 @@ def figure9(
     ax = axes[0, 0]
     curves, pts, headline = [], [], {}
     for color, V, prefix in zip(COLORS, voltages, "NMKJ"):
-        p = TubeParameters(outer_radius=outer_radius, length=length, voltage=V, material=material)
+        p = Tube.uniform(outer_radius=outer_radius, length=length, voltage=V, material=material)
         lo = scan_modes(p, "stretch", side="compression", options=_modes(quick)).critical
         hi = scan_modes(p, "stretch", side="extension", options=_modes(quick)).critical
         grid = np.linspace(lo.value * (1 + NUDGE), hi.value * (1 - NUDGE), points)
@@ -496,7 +491,7 @@ def figure10(
     ax = axes[0, 0]
     curves, pts, headline = [], [], {}
     for color, lz, prefix in zip(COLORS, stretches, "PQRS"):
-        p = TubeParameters(outer_radius=outer_radius, length=length, stretch=lz, material=material)
+        p = Tube.uniform(outer_radius=outer_radius, length=length, stretch=lz, material=material)
         vcr = scan_modes(p, "voltage", options=_modes(quick)).critical
         t = np.linspace(0.0, 1.0, points)  # denser towards Vbar_cr, where g_cr falls fast
         grid = vcr.value * (1 - NUDGE) * (1 - (1 - t) ** 2)

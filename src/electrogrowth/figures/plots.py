@@ -129,7 +129,7 @@ def curve_legend(ax, **kwargs):
 def describe(shape: ModeShape) -> str:
     """One line: mode and tube, for titles and captions."""
     p = shape.params
-    if hasattr(p, "layers"):  # a layered Tube
+    if not p.is_uniform:
         return (
             rf"$(m, n) = ({shape.m}, {shape.n})$, {len(p.layers)} layers to"
             rf" $\bar R = {p.outer_radius:g}$, $L = {p.length:g}$,"

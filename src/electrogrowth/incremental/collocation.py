@@ -52,8 +52,9 @@ import scipy.optimize
 from .._types import FloatArray
 from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
+from ..model.layers import Tube
 from ..model.materials import MODULI_INDEX
-from ..model.params import CONTROLS, TubeParameters
+from ..model.params import CONTROLS
 
 #: A linear map from the 5 nodes - 2 unknowns (U_r, U_th, U_z, P, Phi) to nodal values.
 Operator = npt.NDArray[np.complex128]
@@ -161,13 +162,6 @@ def _grid(state, n: float, nodes: int) -> _Grid:
     return _Grid(r=r, rh=r / h, Dx=Dx, kh=k * h, h=h)
 
 
-def _reference_radius(state, r: FloatArray) -> FloatArray:
-    """R(r) = sqrt(1 + lambda_z (r^2 - r_i^2) / g^3) (paper eq. 15, R_i = 1)."""
-    prm = state.params
-    R = np.sqrt(1.0 + prm.stretch * (r**2 - state.r_i**2) / prm.growth**3)
-    return np.clip(R, 1.0, prm.outer_radius)  # end nodes: remove rounding outside [1, R_o]
-
-
 def _layout(nn: int) -> dict[str, slice]:
     """Column ranges of the unknowns: nn values of U_r, U_th, U_z, Phi; nn - 2 of P."""
     sizes = {"U_r": nn, "U_th": nn, "U_z": nn, "P": nn - 2, "Phi": nn}
@@ -270,10 +264,9 @@ def _contract(T: FloatArray, X: Operator, out_rank: int) -> Operator:
     return out
 
 
-def _fluxes(state, grid: _Grid, m: float) -> tuple[Operator, Operator, Operator]:
-    """Nodal maps of L, the incremental stress S_pi and displacement D_q (one layer)."""
-    R = _reference_radius(state, grid.r)
-    return _fluxes_at(state.moduli(R), np.asarray(state.pressure(R), float), grid, m)
+def _fluxes(state, grid: _Grid, m: float, layer: int = 0) -> tuple[Operator, Operator, Operator]:
+    """Nodal maps of L, the incremental stress S_pi and displacement D_q in ``layer``."""
+    return _fluxes_at(*_layer_fields(state, layer, grid.r), grid, m)
 
 
 def _fluxes_at(moduli, p, grid: _Grid, m: float) -> tuple[Operator, Operator, Operator]:
@@ -317,15 +310,12 @@ def _layer_fields(state, k: int, r: FloatArray) -> tuple[FloatArray, FloatArray]
 
 
 def _segments(state, m: float, n: float, nodes: int) -> list:
-    """[(grid, L, S, D)] of every layer, inner layer first (one for a BaseState)."""
-    if not hasattr(state, "tube"):
-        grid = _grid(state, n, nodes)
-        return [(grid, *_fluxes(state, grid, m))]
+    """[(grid, L, S, D)] of every layer, inner layer first."""
     _grid(state, n, nodes)  # validates ``nodes``
     out = []
     for k in range(len(state.tube.layers)):
         grid = _layer_grid(state, k, n, nodes)
-        out.append((grid, *_fluxes_at(*_layer_fields(state, k, grid.r), grid, m)))
+        out.append((grid, *_fluxes(state, grid, m, k)))
     return out
 
 
@@ -370,7 +360,7 @@ def collocation_matrix(
     Examples
     --------
     >>> from electrogrowth.basestate.tube import solve_base_state
-    >>> state = solve_base_state(TubeParameters(outer_radius=1.5, length=3.0))
+    >>> state = solve_base_state(Tube.uniform(outer_radius=1.5, length=3.0))
     >>> collocation_matrix(state, 2, 1, nodes=20).shape
     (98, 98)
     >>> collocation_target(state, 2, 1, nodes=20) > 0  # the unloaded tube is stable
@@ -458,8 +448,7 @@ def _block_indices(nn: int, pairs: int, layers: int) -> tuple[np.ndarray, np.nda
 
 
 def _layers(state) -> int:
-    tube = getattr(state, "tube", None)
-    return 1 if tube is None else len(tube.layers)
+    return len(state.tube.layers)
 
 
 def collocation_impedance(
@@ -537,7 +526,7 @@ def collocation_target(
 
 
 def critical_collocation(
-    params: TubeParameters,
+    params: Tube,
     m: int,
     n: float,
     solve_for: str,
@@ -552,7 +541,7 @@ def critical_collocation(
 
     Parameters
     ----------
-    params : TubeParameters
+    params : Tube
         The tube; the field named by ``solve_for`` is varied with ``dataclasses.replace``.
     m, n : int
         Circumferential and axial mode numbers.
@@ -580,7 +569,7 @@ def critical_collocation(
     --------
     Axial compression of the unloaded tube (exact Bessel value 0.8024795851541):
 
-    >>> params = TubeParameters(outer_radius=1.5, length=3.0)
+    >>> params = Tube.uniform(outer_radius=1.5, length=3.0)
     >>> round(critical_collocation(params, 2, 1, "stretch", (0.79, 0.81), nodes=24), 10)
     0.8024795852
     """
@@ -630,11 +619,7 @@ def mode_shape_collocation(
     width = 5 * nn - 2
     v = np.zeros(width * layers)
     v[_block_indices(nn, check_pairs(pairs), layers)[1]] = np.linalg.svd(M)[2][-1]
-    grids = (
-        [_grid(state, n, nn)]
-        if layers == 1
-        else [_layer_grid(state, k, n, nn) for k in range(layers)]
-    )
+    grids = [_layer_grid(state, k, n, nn) for k in range(layers)]
     cols = _layout(nn)
     pieces = []
     for k, grid in enumerate(grids):  # inner layer first

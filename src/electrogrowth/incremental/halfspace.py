@@ -577,15 +577,13 @@ class InterfaceProblem:
 def surfaces(state_or_tube) -> tuple[str, ...]:
     """The surfaces where short waves can live: ("inner", "outer") for a homogeneous tube,
     and "interface-1", ..., "interface-(N-1)" (between layers k and k + 1) for a tube of N
-    layers (a base state, a Tube or a TubeParameters)."""
+    layers (a base state or a Tube)."""
     tube = getattr(state_or_tube, "tube", state_or_tube)
-    layers = getattr(tube, "layers", ())
-    return FACES + tuple(f"interface-{k}" for k in range(1, len(layers)))
+    return FACES + tuple(f"interface-{k}" for k in range(1, len(tube.layers)))
 
 
 def _interface_index(state, name: str) -> int:
-    tube = getattr(state, "tube", None)
-    n = len(getattr(tube, "layers", ()))
+    n = len(state.tube.layers)
     prefix = "interface-"
     if isinstance(name, str) and name.startswith(prefix) and name[len(prefix) :].isdigit():
         k = int(name[len(prefix) :])
@@ -633,8 +631,7 @@ def face_radius(state, face: str) -> float:
     """Reference radius R of the face: 1 (inner) or the outer radius (Rbar_o, R_N)."""
     if check_face(face) == "inner":
         return 1.0
-    tube = getattr(state, "tube", None)
-    return tube.outer_radius if tube is not None else state.params.outer_radius
+    return state.tube.outer_radius
 
 
 def face_data(state, face: str) -> tuple[FloatArray, float, float]:
@@ -642,22 +639,17 @@ def face_data(state, face: str) -> tuple[FloatArray, float, float]:
     state, of the layer at that face)."""
     R = face_radius(state, face)
     r = state.r_i if face == "inner" else state.r_o
-    if getattr(state, "tube", None) is not None:
-        side = "outer" if face == "inner" else "inner"  # the layer on the wall's side
-        return (
-            np.asarray(state.moduli(R, side=side), float).reshape(23),
-            float(state.pressure(R, side=side)),
-            r,
-        )
-    return (np.asarray(state.moduli(R), float).reshape(23), float(state.pressure(R)), r)
+    side = "outer" if face == "inner" else "inner"  # the layer on the wall's side
+    return (
+        np.asarray(state.moduli(R, side=side), float).reshape(23),
+        float(state.pressure(R, side=side)),
+        r,
+    )
 
 
 def face_pressure(state, face: str) -> float:
-    """The follower pressure on ``face`` (P_i inner, P_o outer; 0 without a Tube)."""
-    tube = getattr(state, "tube", None)
-    if tube is None:
-        return 0.0
-    return float(tube.inner_pressure if check_face(face) == "inner" else tube.outer_pressure)
+    """The follower pressure on ``face`` (P_i inner, P_o outer)."""
+    return float(state.face_pressures[0 if check_face(face) == "inner" else 1])
 
 
 def surface_target(state, face: str, psi) -> FloatArray:

@@ -35,7 +35,7 @@ def kept_pairs(pairs: int) -> list[int]:
 def impedance_rhs(state, m: float, k: float, pairs: int = ALL_PAIRS):
     """Right-hand side of the Riccati equation in R for ``solve_ivp`` (z flattened), on the
     block of the kept ``pairs``."""
-    g, lz = state.params.growth, state.params.stretch
+    g, lz = state.tube.growth, state.tube.stretch
     a = g**3 / lz
     G = np.empty((8, 8))
     keep = kept_pairs(pairs)
@@ -65,7 +65,7 @@ def impedance_reference(
 ) -> np.ndarray:
     """Conditional impedance z(r_o) of mode (m, k): the paper's method, unscaled; the block
     of the kept ``pairs`` (4x4 for the paper's ansatz)."""
-    ro = state.params.outer_radius
+    ro = state.tube.outer_radius
     d = len(kept_pairs(pairs))
     sol = solve_ivp(
         impedance_rhs(state, m, k, pairs),
@@ -94,20 +94,10 @@ def target_reference(state, m: float, k: float, *, pairs: int = ALL_PAIRS, **kwa
 # -- orthonormalised shooting: the target without an impedance, through layers -------------
 
 
-def _segments(state):
-    """[(a, b, fields(R) -> (moduli, p, r, w))] per layer (one for a BaseState); w = dr/dR / r
-    and the fields of the layer itself at its ends."""
-    tube = getattr(state, "tube", None)
-    if tube is None:
-        prm = state.params
-        area = prm.growth**3 / prm.stretch
-
-        def one(R):
-            R = np.array([R])
-            r = float(state.radius(R)[0])
-            return state.moduli(R)[0], float(state.pressure(R)[0]), r, area * R[0] / r**2
-
-        return [(1.0, prm.outer_radius, one)]
+def layer_fields(state):
+    """[(a, b, fields(R) -> (moduli, p, r, w))] per layer; w = dr/dR / r and the fields of
+    the layer itself at its ends."""
+    tube = state.tube
     out = []
     for k, (a, b) in enumerate(zip(tube.radii, tube.radii[1:])):
         layer = tube.layers[k]
@@ -144,7 +134,7 @@ def shooting_target(state, m: float, k: float, *, pairs: int = ALL_PAIRS, pieces
     sign, G = 1.0, np.empty((8, 8))
     scale = np.r_[np.ones(d), np.full(d, s)]  # eta = diag(scale) eta~
 
-    for a, b, fields in _segments(state):
+    for a, b, fields in layer_fields(state):
 
         def rhs(R, y, fields=fields):
             mod, p, r, w = fields(R)

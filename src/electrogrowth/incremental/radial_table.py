@@ -102,8 +102,6 @@ def _cheb_coefficients(values: np.ndarray) -> np.ndarray:
 def table_units(state) -> tuple[float, float]:
     """(mu_ref, eps_ref) of the table of ``state``: 1 where the layers' shear moduli
     (permittivities) straddle 1, else the one nearest to 1 (one layer: its own)."""
-    if not hasattr(state, "tube"):
-        return 1.0, 1.0
     layers = state.tube.layers
     mu = [layer.shear_modulus for layer in layers]
     eps = [layer.permittivity for layer in layers]
@@ -121,29 +119,20 @@ def _column_units(state) -> np.ndarray:
 def _segments(state):
     """[(a, b, values)] per segment: values(R) is the (n, 26) array of the 23 moduli, p,
     r and w at the reference radii R (strictly inside [a, b]), in the table's units."""
-    if hasattr(state, "tube"):  # a LayeredState
-        tube = state.tube
-        radii = tube.radii
-        units = _column_units(state)
+    tube = state.tube
+    radii = tube.radii
+    units = _column_units(state)
 
-        def values(R, layer):
-            r = state.radius(R)
-            J = np.prod(layer.growth_at(R), axis=0)
-            w = J * R / (state.stretch * r * r)
-            return np.column_stack([state.moduli(R), state.pressure(R), r, w]) / units
-
-        return [
-            (a, b, lambda R, layer=layer: values(R, layer))
-            for a, b, layer in zip(radii, radii[1:], tube.layers)
-        ]
-    prm = state.params
-    area = prm.growth**3 / prm.stretch  # r^2 = r_i^2 + area (R^2 - 1)
-
-    def single(R):
+    def values(R, layer):
         r = state.radius(R)
-        return np.column_stack([state.moduli(R), state.pressure(R), r, area * R / (r * r)])
+        J = np.prod(layer.growth_at(R), axis=0)
+        w = J * R / (state.stretch * r * r)
+        return np.column_stack([state.moduli(R), state.pressure(R), r, w]) / units
 
-    return [(1.0, prm.outer_radius, single)]
+    return [
+        (a, b, lambda R, layer=layer: values(R, layer))
+        for a, b, layer in zip(radii, radii[1:], tube.layers)
+    ]
 
 
 def _segment_table(a, b, values, tol, max_nodes):

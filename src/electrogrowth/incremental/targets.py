@@ -36,6 +36,7 @@ from collections.abc import Callable
 
 import numpy as np
 
+from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError, ParameterError
 from .accuracy import Accuracy
 from .collocation import collocation_target
@@ -298,3 +299,14 @@ def targets_for(method: str, rtol: float) -> Targets:
         )
 
     return targets
+
+
+def collocation_stable_signs(tube, modes) -> np.ndarray:
+    """The signs of :func:`collocation_targets` of ``modes`` on the unloaded ``tube``, where
+    every mode is stable: +1 for one layer (the determinant is normalised by
+    ``collocation.stable_det_sign``), else evaluated there, mode by mode."""
+    modes = np.asarray(modes)
+    if len(tube.layers) == 1:
+        return np.ones(len(modes))
+    state = solve_base_state(tube.reference())
+    return np.sign([collocation_targets(state, row[None, :])[0] for row in modes])

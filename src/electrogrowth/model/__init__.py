@@ -9,7 +9,7 @@ nothing of the package but ``errors``.
 
 from .layers import Layer, LinearGrowth, Tube
 from .materials import Material, gent, material_by_name, mooney_rivlin, neo_hookean
-from .params import CONTROLS, SIDES, TubeParameters
+from .params import CONTROLS, SIDES
 from .tube_file import load_tube
 
 __all__ = [

@@ -16,8 +16,10 @@ lambda_z is solved for. Derivations: docs/derivation-layered.md.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 import re
+import warnings
 from collections.abc import Callable
 
 import numpy as np
@@ -25,13 +27,16 @@ import numpy as np
 from ..errors import ParameterError
 from .controls import Control, parse_control
 from .materials import Material, neo_hookean
-from .params import SUPPORTED, SUPPORTED_WHY, TubeParameters
+from .params import SUPPORTED, SUPPORTED_WHY, check_uniform
 
 Growth = float | tuple[float, float, float] | Callable
 
+#: the numbers of the paper's tube (Tube.uniform), its parameter keys
+UNIFORM_KEYS = ("outer_radius", "length", "growth", "stretch", "voltage")
+
 #: the keys of a tube that a curve or sweep may vary besides its controls (:meth:`Tube.at`)
 KEYS_TEXT = (
-    "length, outer_pressure, layers[K].outer_radius, layers[K].thickness,"
+    "length, outer_pressure, outer_radius, layers[K].outer_radius, layers[K].thickness,"
     " layers[K].shear_modulus, layers[K].permittivity"
 )
 
@@ -191,9 +196,14 @@ class Tube:
         The ends are capped, so the pressures load them: under force control they add to the
         wall's axial force; at a prescribed stretch they change only the reported end force.
 
+    The paper's tube (one homogeneous layer, isotropic growth g) is :meth:`Tube.uniform`;
+    such a tube :attr:`is_uniform` and is solved in closed form.
+
     >>> tube = Tube((Layer(1.1, shear_modulus=10.0, growth=1.2), Layer(2.0)), voltage=0.3)
-    >>> tube.radii, tube.control
-    ((1.0, 1.1, 2.0), 'stretch')
+    >>> tube.radii, tube.control, tube.is_uniform
+    ((1.0, 1.1, 2.0), 'stretch', False)
+    >>> Tube.uniform(outer_radius=2.0, growth=1.2).is_uniform
+    True
     """
 
     layers: tuple[Layer, ...]
@@ -242,12 +252,99 @@ class Tube:
         fix("voltage", _number("voltage", self.voltage, "0 <= Vbar < threshold", lambda v: v >= 0))
         for f in ("inner_pressure", "outer_pressure"):
             fix(f, _number(f, getattr(self, f), "finite (units mu)", lambda v: True))
+        self._check_supported()
+
+    def _check_supported(self) -> None:
+        """The box in which every solver is supported (params.SUPPORTED), in the paper's
+        symbols for the paper's tube, per layer otherwise."""
+        if self.is_uniform:
+            check_uniform(self.outer_radius, self.length, self.growth, self.stretch, self.voltage)
+            return
+        ro_max, l_lo, l_hi, _, _, e_lo, e_hi = SUPPORTED
+        checks = [
+            ("outer_radius", self.outer_radius, 1.0, ro_max),
+            ("length", self.length, l_lo, l_hi),
+        ]
+        if self.stretch is not None:
+            checks += [
+                (
+                    f"layers[{k}]: elastic axial stretch lambda_z / g_z",
+                    self.stretch / la.growth[2],
+                    e_lo,
+                    e_hi,
+                )
+                for k, la in enumerate(self.layers, 1)
+                if not la.graded
+            ]
+        for name, value, lo, hi in checks:
+            if not lo <= value <= hi:
+                raise ParameterError(
+                    f"{name} = {value:.6g} is outside the supported range {lo:g} to {hi:g}:"
+                    f" {SUPPORTED_WHY}"
+                )
 
     @classmethod
-    def from_parameters(cls, params: TubeParameters) -> Tube:
-        """The one-layer tube of ``params`` (isotropic growth g, no pressure)."""
-        layer = Layer(params.outer_radius, params.material, growth=params.growth)
-        return cls((layer,), length=params.length, stretch=params.stretch, voltage=params.voltage)
+    def uniform(
+        cls,
+        outer_radius: float = 1.4,
+        length: float = 1.0,
+        growth: float = 1.0,
+        stretch: float = 1.0,
+        voltage: float = 0.0,
+        material: Material | None = None,
+    ) -> Tube:
+        """The paper's tube (Sec. 3.1): one homogeneous layer 1 <= R <= Rbar_o of unit shear
+        modulus and permittivity, isotropic growth g (F_g = g I), total axial stretch
+        lambda_z (growth included), voltage Vbar, no pressure.
+
+        >>> tube = Tube.uniform(outer_radius=1.4, growth=1.2, voltage=0.4)
+        >>> tube.growth, tube.material.name, tube.at("growth", 1.5).growth
+        (1.2, 'neo-hookean', 1.5)
+        """
+        check_uniform(outer_radius, length, growth, stretch, voltage)
+        material = neo_hookean() if material is None else material
+        if not isinstance(material, Material):
+            raise ParameterError(f"material = {material!r} is not a Material")
+        layer = Layer(float(outer_radius), material, growth=float(growth))
+        return cls((layer,), length=length, stretch=stretch, voltage=voltage)
+
+    @functools.cached_property
+    def is_uniform(self) -> bool:
+        """One homogeneous layer of the reference modulus and permittivity growing
+        isotropically at a prescribed stretch, without pressure: the paper's tube, whose base
+        state has a closed form (basestate/uniform.py), the fast path of every solver."""
+        if len(self.layers) != 1:
+            return False
+        (layer,) = self.layers
+        return (
+            not layer.graded
+            and layer.growth[0] == layer.growth[1] == layer.growth[2]
+            and layer.shear_modulus == 1.0
+            and layer.permittivity == 1.0
+            and self.axial_force is None
+            and self.inner_pressure == 0.0
+            and self.outer_pressure == 0.0
+            and not self.closed_ends
+        )
+
+    @property
+    def growth(self) -> float:
+        """g, the isotropic growth of a uniform tube (a layered tube: ``layers[K].growth``)."""
+        if not self.is_uniform:
+            raise AttributeError(
+                "growth is a layer's for this tube (tube.layers[K].growth); a single g exists"
+                " only for a uniform tube (Tube.uniform)"
+            )
+        return self.layers[0].growth[0]
+
+    @property
+    def material(self) -> Material:
+        """The energy of a one-layer tube (several layers: ``layers[K].material``)."""
+        if len(self.layers) != 1:
+            raise AttributeError(
+                "material is a layer's for a tube of several layers (tube.layers[K].material)"
+            )
+        return self.layers[0].material
 
     def check_control(self, solve_for) -> Control:
         """The Control named by ``solve_for`` (model/controls.py), checked against this tube:
@@ -293,6 +390,11 @@ class Tube:
         ``layers[K].thickness`` (the other layers' thicknesses kept), ``layers[K].shear_modulus``,
         ``layers[K].permittivity``; K = 1 innermost)."""
         value = float(value)
+        if self.is_uniform and name in UNIFORM_KEYS:  # named in the paper's symbols
+            five = {key: self.value_of(key) for key in UNIFORM_KEYS}
+            check_uniform(**{**five, name: value})
+        if name == "outer_radius":  # the wall's outer face, for any number of layers
+            name = f"layers[{len(self.layers)}].outer_radius"
         if isinstance(name, str) and (name in ("length", "outer_pressure") or "layers[" in name):
             return self._with_key(name, value)
         try:
@@ -341,15 +443,42 @@ class Tube:
             layers[k - 1] = dataclasses.replace(layers[k - 1], **{field: value})
         return dataclasses.replace(self, layers=tuple(layers))
 
-    def value_of(self, solve_for) -> float:
-        """The current value of the control ``solve_for`` (for growth: its first varied
-        component)."""
-        c = self.check_control(solve_for)
+    def value_of(self, name) -> float:
+        """The current value of a control (for growth: its first varied component) or of a
+        key of :meth:`at` (as ``at`` sets it)."""
+        if name == "outer_radius":
+            return self.outer_radius
+        if name in ("length", "outer_pressure"):
+            return float(getattr(self, name))
+        match = re.fullmatch(r"layers\[(\d+)\]\.(\w+)", str(name))
+        if match:
+            k = int(match[1])
+            if not 1 <= k <= len(self.layers):
+                raise ParameterError(f"{name}: layer {k} does not exist")
+            if match[2] == "thickness":
+                return self.radii[k] - self.radii[k - 1]
+            return float(getattr(self.layers[k - 1], match[2]))
+        c = self.check_control(name)
         if c.kind == "growth":
             comp = ("r", "theta", "z").index(c.components[0]) if c.components else 0
             return float(self.layers[(c.layer or 1) - 1].growth[comp])
         field = {"pressure": "inner_pressure", "force": "axial_force"}.get(c.kind, c.kind)
         return float(getattr(self, field))
+
+    def parameter_keys(self) -> tuple[str, ...]:
+        """Every number of the tube that :meth:`at` can set: the paper's five for a uniform
+        tube (outer_radius, length, growth, stretch, voltage); otherwise the layers'
+        thicknesses, shear moduli and permittivities, the growth components of layers with
+        constant growth, the voltage, the stretch or the force (whichever is prescribed), the
+        inner and outer pressures and the length."""
+        if self.is_uniform:
+            return UNIFORM_KEYS
+        keys = []
+        for k, layer in enumerate(self.layers, start=1):
+            keys += [f"layers[{k}].{f}" for f in ("thickness", "shear_modulus", "permittivity")]
+            if not layer.graded:
+                keys += [f"growth[{k}].{c}" for c in ("r", "theta", "z")]
+        return (*keys, "voltage", self.control, "pressure", "outer_pressure", "length")
 
     def reference(self) -> Tube:
         """The unloaded, ungrown tube (stress free, stable in every mode): growth 1 in every
@@ -359,7 +488,16 @@ class Tube:
 
     def as_dict(self) -> dict:
         """The tube as a JSON record: layers (radius, material, modulus, permittivity,
-        growth) and loads."""
+        growth) and loads; a uniform tube by its material and five numbers."""
+        if self.is_uniform:
+            return {
+                "material": self.material.name,
+                "outer_radius": self.outer_radius,
+                "length": self.length,
+                "growth": self.growth,
+                "stretch": self.stretch,
+                "voltage": self.voltage,
+            }
         return {
             "layers": [
                 {
@@ -419,3 +557,20 @@ def _check_key(name: str, value: float, field: str, radii: tuple[float, ...], k:
         )
     else:  # shear_modulus, permittivity
         _number(name, value, "0 < value < inf", lambda v: v > 0)
+
+
+def TubeParameters(  # noqa: N802 -- the former class's name, kept for one release
+    outer_radius: float = 1.4,
+    length: float = 1.0,
+    growth: float = 1.0,
+    stretch: float = 1.0,
+    voltage: float = 0.0,
+    material: Material | None = None,
+) -> Tube:
+    """Deprecated: the paper's tube is ``Tube.uniform(...)`` (same arguments)."""
+    warnings.warn(
+        "TubeParameters(...) is deprecated; use Tube.uniform(...) (same arguments)",
+        DeprecationWarning,
+        stacklevel=2,
+    )
+    return Tube.uniform(outer_radius, length, growth, stretch, voltage, material)

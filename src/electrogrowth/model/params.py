@@ -1,15 +1,14 @@
-"""The parameters of a grown, stretched, electrically loaded tube (paper Sec. 3.1).
+"""The ranges of a tube's numbers and the names of its controls (paper Sec. 3.1).
 
-Non-dimensional units: mu = eps = R_i = 1. Vary one field with ``dataclasses.replace``.
+Non-dimensional units: mu = eps = R_i = 1. The tube itself is :class:`model.layers.Tube`;
+the paper's tube is ``Tube.uniform(...)``.
 """
 
 from __future__ import annotations
 
-import dataclasses
 import math
 
 from ..errors import ParameterError
-from .materials import Material, neo_hookean
 
 
 def _check(name: str, value: float, valid: str, ok) -> None:
@@ -29,85 +28,30 @@ SUPPORTED_WHY = (
 )
 
 
-@dataclasses.dataclass(frozen=True)
-class TubeParameters:
-    """One tube and its loading.
-
-    Parameters
-    ----------
-    outer_radius : float
-        Rbar_o = R_o / R_i > 1, the undeformed outer radius (inner radius is 1).
-    length : float
-        L / R_i > 0, the undeformed length (sets the axial wavenumber k = n pi / (lambda_z L)).
-    growth : float
-        Isotropic growth factor g > 0 (F_g = g I).
-    stretch : float
-        Total axial stretch lambda_z = l / L > 0, growth included.
-    voltage : float
-        Vbar = V / (R_o - R_i) sqrt(eps / mu) >= 0, the radial voltage.
-    material : Material
-        The energy Omega(I1, I2, I4, I5, I6); default the ideal neo-Hookean dielectric.
-    """
-
-    outer_radius: float = 1.4
-    length: float = 1.0
-    growth: float = 1.0
-    stretch: float = 1.0
-    voltage: float = 0.0
-    material: Material = dataclasses.field(default_factory=neo_hookean)
-
-    def __post_init__(self):
-        (ro_max, l_lo, l_hi, g_lo, g_hi, e_lo, e_hi) = SUPPORTED
-        _check(
-            "outer radius Rbar_o", self.outer_radius, f"1 < Rbar_o <= {ro_max:g}", lambda v: 1 < v
-        )
-        _check("length L", self.length, f"{l_lo:g} <= L <= {l_hi:g}", lambda v: v > 0)
-        _check("growth factor g", self.growth, f"{g_lo:g} <= g <= {g_hi:g}", lambda v: v > 0)
-        _check("axial stretch lambda_z", self.stretch, "0 < lambda_z < inf", lambda v: v > 0)
-        _check("voltage Vbar", self.voltage, "0 <= Vbar < threshold", lambda v: v >= 0)
-        for name, value, lo, hi in (
-            ("outer radius Rbar_o", self.outer_radius, 1.0, ro_max),
-            ("length L", self.length, l_lo, l_hi),
-            ("growth factor g", self.growth, g_lo, g_hi),
-            ("elastic axial stretch lambda_z / g", self.stretch / self.growth, e_lo, e_hi),
-        ):
-            if not value <= hi or not lo <= value:
-                raise ParameterError(
-                    f"{name} = {value:.6g} is outside the supported range {lo:g} to {hi:g}:"
-                    f" {SUPPORTED_WHY}"
-                )
-        if not isinstance(self.material, Material):
-            raise ParameterError(f"material = {self.material!r} is not a Material")
-        for f in ("outer_radius", "length", "growth", "stretch", "voltage"):
-            object.__setattr__(self, f, float(getattr(self, f)))
-
-    def at(self, name: str, value: float) -> TubeParameters:
-        """This tube with the field ``name`` set to ``value`` (a control, or any field)."""
-        return dataclasses.replace(self, **{name: float(value)})
-
-    def reference(self) -> TubeParameters:
-        """The unloaded tube (g = 1, lambda_z = 1, Vbar = 0): stress free, stable in every
-        mode, where the stable sign of every target is read off."""
-        return dataclasses.replace(self, growth=1.0, stretch=1.0, voltage=0.0)
-
-    def as_dict(self) -> dict:
-        """The tube as a JSON record: the material's name and the five fields."""
-        return {
-            "material": self.material.name,
-            "outer_radius": self.outer_radius,
-            "length": self.length,
-            "growth": self.growth,
-            "stretch": self.stretch,
-            "voltage": self.voltage,
-        }
-
-    @property
-    def physical_voltage(self) -> float:
-        """V in units sqrt(mu/eps) R_i: V = Vbar (Rbar_o - 1)."""
-        return self.voltage * (self.outer_radius - 1.0)
+def check_uniform(outer_radius, length, growth, stretch, voltage) -> None:
+    """Check the five numbers of the paper's tube (:meth:`model.layers.Tube.uniform`) against
+    their physical ranges and the supported box, naming each in the paper's symbols."""
+    (ro_max, l_lo, l_hi, g_lo, g_hi, e_lo, e_hi) = SUPPORTED
+    _check("outer radius Rbar_o", outer_radius, f"1 < Rbar_o <= {ro_max:g}", lambda v: 1 < v)
+    _check("length L", length, f"{l_lo:g} <= L <= {l_hi:g}", lambda v: v > 0)
+    _check("growth factor g", growth, f"{g_lo:g} <= g <= {g_hi:g}", lambda v: v > 0)
+    _check("axial stretch lambda_z", stretch, "0 < lambda_z < inf", lambda v: v > 0)
+    _check("voltage Vbar", voltage, "0 <= Vbar < threshold", lambda v: v >= 0)
+    for name, value, lo, hi in (
+        ("outer radius Rbar_o", outer_radius, 1.0, ro_max),
+        ("length L", length, l_lo, l_hi),
+        ("growth factor g", growth, g_lo, g_hi),
+        ("elastic axial stretch lambda_z / g", stretch / growth, e_lo, e_hi),
+    ):
+        if not value <= hi or not lo <= value:
+            raise ParameterError(
+                f"{name} = {value:.6g} is outside the supported range {lo:g} to {hi:g}:"
+                f" {SUPPORTED_WHY}"
+            )
 
 
-#: The control parameters a critical value can be solved for (fields of TubeParameters).
+#: The control parameters of the paper's tube (Tube.uniform); a layered tube adds pressure
+#: and force (model/controls.py).
 CONTROLS = ("growth", "stretch", "voltage")
 #: The sides of a critical stretch: below or above lambda_z = g.
 SIDES = ("compression", "extension")

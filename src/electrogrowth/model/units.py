@@ -25,8 +25,8 @@ import math
 import re
 
 from ..errors import MissingDependencyError, ParameterError
+from .layers import Tube
 from .materials import Material
-from .params import TubeParameters
 
 #: The vacuum permittivity eps_0 in F/m (CODATA 2018).
 EPSILON_0 = 8.8541878128e-12
@@ -209,7 +209,7 @@ def tube_from_quantities(
     growth: float = 1.0,
     stretch: float = 1.0,
     material: Material | None = None,
-) -> tuple[TubeParameters, Scales]:
+) -> tuple[Tube, Scales]:
     """The non-dimensional tube of a tube in physical units, and its :class:`Scales`.
 
     Parameters
@@ -231,7 +231,7 @@ def tube_from_quantities(
 
     Returns
     -------
-    (TubeParameters, Scales)
+    (Tube, Scales)
 
     Examples
     --------
@@ -257,7 +257,7 @@ def tube_from_quantities(
     else:
         vbar = scales.to_vbar(magnitude(voltage, "voltage", "voltage", "V", zero=True))
     fields = {} if material is None else {"material": material}
-    tube = TubeParameters(
+    tube = Tube.uniform(
         outer_radius=r_o / r_i,
         length=1.0 if length is None else r_l / r_i,
         growth=growth,

@@ -45,18 +45,17 @@ from numpy.polynomial import chebyshev as cheb
 from scipy.integrate import solve_ivp
 from scipy.interpolate import CubicSpline
 
-from .._types import FloatArray
-from ..basestate.tube import BaseState, solve_base_state
+from .._types import FloatArray, State
+from ..basestate.tube import solve_base_state
 from ..bifurcation.critical import CriticalPoint
 from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
 from ..incremental.collocation import mode_shape_collocation
 from ..incremental.impedance import ALL_PAIRS, face_impedance, impedance_scale
-from ..incremental.impedance_reference import impedance_rhs, kept_pairs
+from ..incremental.impedance_reference import kept_pairs, layer_fields
 from ..incremental.stroh import stroh_matrix
-from ..incremental.targets import Family, Method, check_method, check_mode, wavenumber
+from ..incremental.targets import Family, Method, check_method, check_mode
 from ..model.layers import Tube
 from ..model.materials import MODULI_INDEX
-from ..model.params import TubeParameters
 from ..outcomes import Kind
 
 #: Components of the Stroh vector eta, in order (stroh.py, SIGN_PHI = -1).
@@ -86,7 +85,7 @@ class ModeShape:
         The whole Stroh vector [U_r, U_th, U_z, r Delta_r, r Sigma_rr, r Sigma_rth,
         r Sigma_rz, -Phi] (``ETA_NAMES``), same normalisation.
     m, n, k : mode numbers and axial wavenumber k = n pi / (lambda_z L) (0 for n = 0).
-    params : TubeParameters at the critical point.
+    params : the Tube at the critical point.
     route : "impedance" or "collocation", the route actually used.
     boundary_residual : max |S| on the faces over max |S| in the wall (0 at bifurcation).
     note : why the route differs from the one requested ("" otherwise).
@@ -99,7 +98,7 @@ class ModeShape:
     m: int
     n: int
     k: float
-    params: TubeParameters
+    params: Tube
     route: str
     boundary_residual: float
     note: str = ""
@@ -167,7 +166,7 @@ def mode_shape(
 
     Parameters
     ----------
-    critical : CriticalPoint or (TubeParameters, m, n[, family])
+    critical : CriticalPoint or (Tube, m, n[, family])
         A bifurcation from ``bifurcation.critical_value`` / ``scan.scan_modes`` (of any
         family: wrinkle, prismatic or torsional), or the parameters at (the caller's)
         critical point with the mode numbers (and the family; default the natural one of
@@ -197,7 +196,7 @@ def mode_shape(
     Examples
     --------
     >>> from electrogrowth.bifurcation.critical import critical_value
-    >>> crit = critical_value(TubeParameters(1.4, 1.0, voltage=0.4), 2, 1, "stretch")
+    >>> crit = critical_value(Tube.uniform(1.4, 1.0, voltage=0.4), 2, 1, "stretch")
     >>> shape = mode_shape(crit, points=21)
     >>> shape.route, float(abs(shape.eta[:3]).max()), bool(shape.U_r.max() > 0)
     ('impedance', 1.0, True)
@@ -210,23 +209,6 @@ def mode_shape(
     state = solve_base_state(params)
     R = np.linspace(1.0, params.outer_radius, int(points))
     k = n * math.pi / state.current_length
-    if isinstance(params, Tube):
-        eta = normalise(layered_collocation_shape(state, m, n, R, nodes=nodes, pairs=pairs))
-        note = "" if method is Method.COLLOCATION else "layered tube: shape from collocation"
-        return ModeShape(
-            R,
-            state.radius(R),
-            eta,
-            m,
-            n,
-            k,
-            params,
-            Method.COLLOCATION.value,
-            boundary_residual(eta, _face_impedances(state, m, k)),
-            note,
-            family,
-            state.current_length,
-        )
     note = ""
     if method is Method.IMPEDANCE:
         try:
@@ -245,13 +227,14 @@ def mode_shape(
         k,
         params,
         method.value,
-        boundary_residual(eta),
+        boundary_residual(eta, _face_impedances(state, m, k)),
         note,
         family,
+        state.current_length,
     )
 
 
-def _unpack(critical) -> tuple[TubeParameters, int, int, Family]:
+def _unpack(critical) -> tuple[Tube, int, int, Family]:
     if isinstance(critical, CriticalPoint):
         if critical.kind != Kind.BIFURCATION:
             why = (
@@ -273,8 +256,8 @@ def _unpack(critical) -> tuple[TubeParameters, int, int, Family]:
         raise ParameterError(
             f"critical = {critical!r} is neither a CriticalPoint nor (params, m, n[, family])"
         ) from None
-    if not isinstance(params, (TubeParameters, Tube)):
-        raise ParameterError(f"params = {params!r} is not a TubeParameters or a Tube")
+    if not isinstance(params, Tube):
+        raise ParameterError(f"params = {params!r} is not a Tube")
     fam = check_mode(m, n, family[0] if family else None)
     return params, int(m), int(n), fam
 
@@ -286,7 +269,7 @@ class _PoleError(ConvergenceError):
     """The Riccati integration for z stopped (a pole of the impedance inside the wall)."""
 
 
-def stroh_at(state: BaseState, R: float, m: float, k: float) -> FloatArray:
+def stroh_at(state: State, R: float, m: float, k: float) -> FloatArray:
     """The Stroh matrix G (8x8) at reference radius R (moduli and p of the base state)."""
     G = np.empty((8, 8))
     r = float(state.radius(R))
@@ -296,7 +279,7 @@ def stroh_at(state: BaseState, R: float, m: float, k: float) -> FloatArray:
 
 
 def impedance_shape(
-    state: BaseState,
+    state: State,
     m: int,
     k: float,
     R: FloatArray,
@@ -304,62 +287,90 @@ def impedance_shape(
     rtol: float = 1e-12,
     pairs: int = ALL_PAIRS,
 ) -> FloatArray:
-    """Un-normalised eta at R by the paper's two-step impedance method (eq. two_Riccati).
+    """Un-normalised eta at R by the paper's two-step impedance method (eq. two_Riccati),
+    layer by layer (eta, hence z = S U^-1, is continuous across a bonded interface):
 
-    1. dz/dR = (dr/dR)(1/r)(G3 + G4 z - z G1 - z G2 z), z(1) = 0, to R = Rbar_o (dense).
-    2. U(r_o): right singular vector of the smallest singular value of z(r_o).
-    3. dU/dR = (dr/dR)(1/r)(G1 + G2 z) U from Rbar_o down to 1; S = z U.
+    1. dz/dR = w (G3 + G4 z - z G1 - z G2 z), w = (dr/dR) / r, from z(1) = z_P(P_i) (0 on a
+       traction-free face) to R = R_N (dense);
+    2. U(r_o): right singular vector of the smallest singular value of z(r_o) - z_P(P_o);
+    3. dU/dR = w (G1 + G2 z) U from R_N down to 1; S = z U.
 
     On the block of the kept ``pairs`` (a mode family); the other components are 0.
     Raises _PoleError when step 1 fails or z blows up (a pole of the impedance).
     """
-    Ro = state.params.outer_radius
+    keep = kept_pairs(pairs)
+    Ro = state.tube.outer_radius
     z = impedance_profile(state, m, k, rtol=rtol, pairs=pairs)
-    U_o = np.linalg.svd(z(Ro))[2][-1]
+    zo = _face_impedances(state, m, k)[1][np.ix_(keep, keep)]
+    U_o = np.linalg.svd(z(Ro) - zo)[2][-1]
     U = transport(state, m, k, z, U_o, (Ro, 1.0), R[::-1], rtol=rtol, pairs=pairs)[:, ::-1]
     S = np.stack([z(x) @ U[:, j] for j, x in enumerate(R)], axis=1)
-    keep = kept_pairs(pairs)
     eta = np.zeros((8, R.size))
     eta[keep], eta[[4 + j for j in keep]] = U, S
     return eta
 
 
+def _stroh_blocks(pairs: int):
+    """A function (fields, m, k, R) -> (w, G1, G2, G3, G4): the Stroh matrix's blocks on the
+    kept ``pairs`` at R, times nothing, and w = (dr/dR) / r of the layer of ``fields``."""
+    keep = kept_pairs(pairs)
+    rows, d = np.array(keep + [4 + j for j in keep]), len(keep)
+    G = np.empty((8, 8))
+
+    def blocks(fields, m, k, R):
+        mod, p, r, w = fields(R)
+        stroh_matrix(np.ascontiguousarray(mod, dtype=float), p, float(m), k * r, G)
+        Gk = G[np.ix_(rows, rows)]
+        return w, Gk[:d, :d], Gk[:d, d:], Gk[d:, :d], Gk[d:, d:]
+
+    return blocks
+
+
 def impedance_profile(
-    state: BaseState, m: int, k: float, *, rtol: float = 1e-12, pairs: int = ALL_PAIRS
+    state: State, m: int, k: float, *, rtol: float = 1e-12, pairs: int = ALL_PAIRS
 ):
-    """z(R) for R in [1, Rbar_o]: the Riccati equation (paper eq. Riccati) integrated by
-    SciPy DOP853 from z(1) = 0, as a callable R -> symmetric d x d (dense output), d the
-    number of kept ``pairs`` (4 for the paper's ansatz)."""
-    Ro = state.params.outer_radius
+    """z(R) for R in [1, R_N]: the Riccati equation (paper eq. Riccati) integrated by SciPy
+    DOP853 from z(1) = z_P(P_i), layer by layer (z continuous at interfaces), as a callable
+    R -> symmetric d x d (dense output), d the number of kept ``pairs`` (4 for the paper's
+    ansatz)."""
+    keep = kept_pairs(pairs)
+    d = len(keep)
     scale = impedance_scale(float(m), float(k), float(state.r_o))
-    d = len(kept_pairs(pairs))
-    with np.errstate(all="ignore"):
-        ric = solve_ivp(
-            impedance_rhs(state, m, k, pairs),
-            (1.0, Ro),
-            np.zeros(d * d),
-            method="DOP853",
-            rtol=rtol,
-            atol=1e-3 * rtol,
-            dense_output=True,
-        )
-    big = np.abs(ric.y).max() if ric.y.size else np.inf
-    if ric.status != 0 or not np.isfinite(big) or big > 1e8 * scale**2:
-        r_stop = float(state.radius(min(max(ric.t[-1], 1.0), Ro)))
-        raise _PoleError(
-            f"the impedance z has a pole near r = {r_stop:.6g}"
-            f" (Riccati integration stopped: {ric.message})"
-        )
+    blocks = _stroh_blocks(pairs)
+    z0 = _face_impedances(state, m, k)[0][np.ix_(keep, keep)].ravel()
+    pieces = []
+    for a, b, fields in layer_fields(state):
+
+        def rhs(R, y, fields=fields):
+            w, G1, G2, G3, G4 = blocks(fields, m, k, R)
+            z = y.reshape(d, d)
+            return (w * (G3 + G4 @ z - z @ G1 - z @ G2 @ z)).ravel()
+
+        with np.errstate(all="ignore"):
+            ric = solve_ivp(
+                rhs, (a, b), z0, method="DOP853", rtol=rtol, atol=1e-3 * rtol, dense_output=True
+            )
+        big = np.abs(ric.y).max() if ric.y.size else np.inf
+        if ric.status != 0 or not np.isfinite(big) or big > 1e8 * scale**2:
+            r_stop = float(state.radius(min(max(ric.t[-1], a), b), side="outer"))
+            raise _PoleError(
+                f"the impedance z has a pole near r = {r_stop:.6g}"
+                f" (Riccati integration stopped: {ric.message})"
+            )
+        pieces.append((b, ric.sol))
+        z0 = ric.y[:, -1]
+    ends = np.array([b for b, _ in pieces])
 
     def z(x: float) -> FloatArray:
-        zx = ric.sol(x).reshape(d, d)
+        sol = pieces[min(int(np.searchsorted(ends, x)), len(pieces) - 1)][1]
+        zx = sol(x).reshape(d, d)
         return 0.5 * (zx + zx.T)  # symmetric exactly (docs/derivation-stroh.md, sec. 4)
 
     return z
 
 
 def transport(
-    state: BaseState,
+    state: State,
     m: int,
     k: float,
     z,
@@ -370,46 +381,43 @@ def transport(
     rtol: float = 1e-12,
     pairs: int = ALL_PAIRS,
 ) -> FloatArray:
-    """Solve dU/dR = (dr/dR)(1/r)(G1 + G2 z) U (paper eq. two_Riccati, second part) from
-    U(span[0]) = U0 to span[1]; U at ``R_eval`` (in the order of integration), (d, len),
-    on the block of the kept ``pairs`` (d of them; 4 for the paper's ansatz).
+    """Solve dU/dR = w (G1 + G2 z) U (paper eq. two_Riccati, second part) from
+    U(span[0]) = U0 to span[1], layer by layer (U continuous at interfaces); U at ``R_eval``
+    (in the order of integration), (d, len), on the block of the kept ``pairs`` (d of
+    them; 4 for the paper's ansatz).
 
-    Stable inwards (span = (Rbar_o, 1)); outwards errors grow like exp(2 k (r_o - r_i)).
+    Stable inwards (span = (R_N, 1)); outwards errors grow like exp(2 k (r_o - r_i)).
     """
-    b = state.params.growth**3 / state.params.stretch  # r dr/dR = b R
-    keep = np.array(kept_pairs(pairs))
+    blocks = _stroh_blocks(pairs)
+    start, end = span
+    sense = 1.0 if end > start else -1.0
+    R_eval = np.asarray(R_eval, float)
+    out = np.empty((len(U0), R_eval.size))
+    segments = layer_fields(state)
+    U = np.asarray(U0, float)
+    for a, b, fields in segments if sense > 0 else segments[::-1]:
+        lo, hi = max(a, min(span)), min(b, max(span))
+        if not lo < hi:
+            continue
+        t0, t1 = (lo, hi) if sense > 0 else (hi, lo)
 
-    def rhs(x, U):
-        G = stroh_at(state, x, m, k)
-        G1, G2 = G[np.ix_(keep, keep)], G[np.ix_(keep, 4 + keep)]
-        return b * x / float(state.radius(x)) ** 2 * ((G1 + G2 @ z(x)) @ U)
+        def rhs(x, U, fields=fields):
+            w, G1, G2, _, _ = blocks(fields, m, k, x)
+            return w * ((G1 + G2 @ z(x)) @ U)
 
-    sol = solve_ivp(rhs, span, U0, method="DOP853", t_eval=R_eval, rtol=rtol, atol=1e-3 * rtol)
-    if sol.status != 0:
-        raise _PoleError(f"the integration of U failed: {sol.message}")
-    return sol.y
+        here = np.flatnonzero(((R_eval - t0) * sense >= 0) & ((R_eval - t1) * sense <= 0))
+        sol = solve_ivp(
+            rhs, (t0, t1), U, method="DOP853", dense_output=True, rtol=rtol, atol=1e-3 * rtol
+        )
+        if sol.status != 0:
+            raise _PoleError(f"the integration of U failed: {sol.message}")
+        if here.size:
+            out[:, here] = sol.sol(R_eval[here])
+        U = sol.y[:, -1]
+    return out
 
 
 # -- collocation route -----------------------------------------------------------------------
-
-
-def collocation_shape(
-    state: BaseState, m: int, n: int, R: FloatArray, *, nodes: int = 40, pairs: int = ALL_PAIRS
-) -> FloatArray:
-    """Un-normalised eta at R from the collocation null vector.
-
-    U_r, U_th, U_z, Phi and P are the nodal values of polynomials in r (degree nodes - 1;
-    P from the collocation's interior interpolation); they are interpolated, differentiated
-    where needed, and the rest of eta follows from the incremental law (stroh.py rows 1, 2,
-    7 for r Sigma_rth, r Sigma_rz, r Delta_r; S_rr from docs/derivation-stroh.md):
-
-        r Sigma_rr = r [(A1111 + p) U_r' + A1122 (U_r + m U_th)/r + A1133 k U_z
-                        + Gamma111 Delta_r - P].
-
-    ``pairs``: the block of a mode family (collocation.py); the other fields are 0.
-    """
-    shape = mode_shape_collocation(state, m, n, nodes=nodes, pairs=pairs)
-    return _eta_from_nodes(state, shape, m, wavenumber(state.params, n), R)
 
 
 # -- normalisation ---------------------------------------------------------------------------
@@ -452,16 +460,23 @@ def _face_impedances(state, m: float, k: float):
     )
 
 
-# -- layered tubes ---------------------------------------------------------------------------
-
-
-def layered_collocation_shape(
-    state, m: int, n: int, R: FloatArray, *, nodes: int = 40, pairs: int = ALL_PAIRS
+def collocation_shape(
+    state: State, m: int, n: int, R: FloatArray, *, nodes: int = 40, pairs: int = ALL_PAIRS
 ) -> FloatArray:
-    """Un-normalised eta at R of a layered state (basestate.layered.LayeredState), from the
-    multi-domain collocation null vector: :func:`collocation_shape` layer by layer (each
-    layer's nodal values are its own polynomial; a sample on an interface is taken from the
-    layer inside it, eta being continuous there)."""
+    """Un-normalised eta at R from the collocation null vector.
+
+    U_r, U_th, U_z, Phi and P are the nodal values of polynomials in r (degree nodes - 1;
+    P from the collocation's interior interpolation); they are interpolated, differentiated
+    where needed, and the rest of eta follows from the incremental law (stroh.py rows 1, 2,
+    7 for r Sigma_rth, r Sigma_rz, r Delta_r; S_rr from docs/derivation-stroh.md):
+
+        r Sigma_rr = r [(A1111 + p) U_r' + A1122 (U_r + m U_th)/r + A1133 k U_z
+                        + Gamma111 Delta_r - P].
+
+    ``pairs``: the block of a mode family (collocation.py); the other fields are 0. Layer
+    by layer: each layer's nodal values are its own polynomial; a sample on an interface is
+    taken from the layer inside it, eta being continuous there.
+    """
     shape = mode_shape_collocation(state, m, n, nodes=nodes, pairs=pairs)
     radii = state.tube.radii
     layer_of = np.clip(np.searchsorted(np.array(radii[1:-1]), R, side="left"), 0, len(radii) - 2)

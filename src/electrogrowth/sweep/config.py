@@ -21,7 +21,7 @@ the offending key (sweep/file.py adds the file and line). Read from a TOML file
                 "layers[1].shear_modulus", "growth[1].theta", voltage, pressure, ...).
 
 A parameter is either fixed or swept, never both, and never the one solved for; unset
-ones take the :class:`~electrogrowth.model.params.TubeParameters` defaults, except the outer
+ones take the :meth:`~electrogrowth.Tube.uniform` defaults, except the outer
 radius, which must be given (with a tube file: the file's values).
 """
 
@@ -40,11 +40,11 @@ from ..incremental.accuracy import RTOL_RANGE
 from ..model.energy_text import energy_material
 from ..model.layers import Tube
 from ..model.materials import BUILTIN, material_by_name
-from ..model.params import CONTROLS, SIDES, TubeParameters
+from ..model.params import CONTROLS, SIDES
 from ..model.tube_file import parse_tube
 from .unit import ScanSpec
 
-#: The TubeParameters fields a sweep can fix or vary.
+#: The numbers of the paper's tube (Tube.uniform) a sweep can fix or vary.
 SWEEPABLE = ("outer_radius", "length", "growth", "stretch", "voltage")
 #: The most grid points of one sweep: 1e7 points are days of a large cluster, and the store's
 #: completion marks of a larger grid are read whole into memory (docs/security.md).
@@ -103,7 +103,7 @@ class SweepConfig:
         name, params = self.material
         return material_by_name(name, **dict(params))
 
-    def points(self, index_slices, material=None) -> list[TubeParameters | Tube]:
+    def points(self, index_slices, material=None) -> list[Tube]:
         """The tubes of a block of the grid (tuple of slices), in C order."""
         axes = [values[s] for (_, values), s in zip(self.grid, index_slices)]
         fixed = dict(self.fixed)
@@ -113,7 +113,7 @@ class SweepConfig:
         for combo in np.ndindex(*(len(a) for a in axes)):
             swept = {name: axes[d][i] for d, (name, i) in enumerate(zip(self.dims, combo))}
             if base is None:
-                out.append(TubeParameters(**fixed, **swept, material=material))
+                out.append(Tube.uniform(**fixed, **swept, material=material))
                 continue
             tube = base
             for name, value in swept.items():
@@ -219,7 +219,7 @@ def _validate(c: SweepConfig) -> None:
         if not values or list(values) != sorted(set(values)):
             raise ConfigError(("grid", name), "need distinct values in increasing order")
     material = _energy(c.energy) if c.energy else _material(c.material)
-    # TubeParameters checks each field on its own and its defaults are valid, so every
+    # Tube.uniform checks each field on its own and its defaults are valid, so every
     # value is checked alone: the error then names the entry that is wrong.
     for name, value in c.fixed:
         _tube(name, value, ("fixed", name), material)
@@ -296,7 +296,7 @@ def _validate_tube(c: SweepConfig) -> None:
 
 def _tube(name, value, where, material):
     try:
-        TubeParameters(**{name: value}, material=material)
+        Tube.uniform(**{name: value}, material=material)
     except ParameterError as exc:
         raise ConfigError(where, str(exc)) from None
     except TypeError:

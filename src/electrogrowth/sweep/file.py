@@ -10,6 +10,7 @@ tomllib keeps no positions, so the line is found by scanning the text for the ke
 from __future__ import annotations
 
 import functools
+import inspect
 import math
 import re
 from pathlib import Path
@@ -19,7 +20,7 @@ import numpy as np
 from ..bifurcation.scan import ScanOptions
 from ..errors import ConfigError, ParameterError
 from ..model.controls import parse_control
-from ..model.params import TubeParameters
+from ..model.layers import Tube
 from ..model.toml_input import finite, number, parse, read_text, shown, typename
 from ..model.tube_file import parse_tube
 from .config import SWEEPABLE, SweepConfig, default_chunk
@@ -179,7 +180,7 @@ def _scan_options(modes: dict) -> ScanOptions:
 
 
 def _default(field: str) -> float:
-    return TubeParameters.__dataclass_fields__[field].default
+    return inspect.signature(Tube.uniform).parameters[field].default
 
 
 def _grid_values(key: str, value) -> tuple[float, ...]:

@@ -26,7 +26,7 @@ from ..bifurcation.critical import CERTIFIED, REFINE
 from ..bifurcation.scan import ScanOptions, scan_modes
 from ..errors import NoBifurcationFound
 from ..interrupts import reraise_interrupt
-from ..model.params import TubeParameters
+from ..model.layers import Tube
 from ..outcomes import NO_MODE, Kind, Outcome, Status, remedy, status_of, traceback_of
 
 
@@ -70,13 +70,13 @@ class PointResult(Outcome):
     traceback: str = dataclasses.field(default="", repr=False, compare=False)
 
 
-def compute_point(params: TubeParameters, spec: ScanSpec) -> PointResult:
+def compute_point(params: Tube, spec: ScanSpec) -> PointResult:
     """The critical point of ``spec.solve_for`` at one tube; never raises.
 
     Examples
     --------
-    >>> from electrogrowth import TubeParameters
-    >>> r = compute_point(TubeParameters(1.4, voltage=50.0), ScanSpec("growth"))
+    >>> from electrogrowth import Tube
+    >>> r = compute_point(Tube.uniform(1.4, voltage=50.0), ScanSpec("growth"))
     >>> r.status.value, r.message.split(":")[0], r.remedy.split(" (")[0]
     ('failed', 'BaseStateError', 'lower the voltage below the threshold')
     """
@@ -130,7 +130,7 @@ class ChunkTask:
 
     index: int
     block: tuple[tuple[int, int], ...]
-    params: tuple[TubeParameters, ...]
+    params: tuple[Tube, ...]
     spec: ScanSpec
 
 

@@ -1,0 +1,385 @@
+"""The base state of the paper's uniform tube: grown, stretched, radially charged (Sec. 3.1).
+
+Units mu = eps = R_i = 1. The reference tube 1 <= R <= Rbar_o grows isotropically (F_g = g I)
+and deforms (det F_e = 1) into r_i <= r <= r_o at total axial stretch lambda_z (eqs. 14-15):
+
+    r(R)^2 = r_i^2 + b (R^2 - 1),   b = g^3 / lambda_z,   dr/dR = b R / r,
+
+with elastic stretches l2 = r / (g R), l3 = lambda_z / g, l1 = 1 / (l2 l3). Maxwell's equation
+gives D_r = c / r, the voltage is V = Vbar (Rbar_o - 1) = int_{r_i}^{r_o} E_r dr, and radial
+equilibrium with both faces traction-free (eq. 25) fixes c for each lambda_i = r_i: the curve
+Vbar(lambda_i) and its threshold live in ``voltage.py``. Here: the public entry points, and the
+through-wall profile of the solved state, sigma_rr(R) = int_{r_i}^{r} (tau_2 - tau_1) dr / r.
+
+Two routes. The ideal neo-Hookean dielectric (the paper's material) is solved in closed form:
+lambda_i by brentq on (NH-6), sigma_rr by (NH-1), N by (NH-4), moduli by
+``materials.neo_hookean_moduli``. Every other energy takes the generic route: Gauss-Legendre
+quadratures, a scanned threshold, and sigma_rr as a Chebyshev antiderivative, exact to
+quadrature accuracy at any R; it is also the reference the closed form is tested against.
+Derivation, closed forms and the paper's typos: docs/derivation-base-state.md.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+from numpy.polynomial import chebyshev as cheb
+
+from ..errors import BaseStateError, ConvergenceError, ParameterError
+from ..labelled import base_state_dataset
+from ..model.layers import Tube
+from ..model.materials import neo_hookean_moduli
+from ..summary import base_state_html
+from .voltage import (
+    GAUSS_ORDERS,
+    UniformWall,
+    cell_root,
+    energy_kind,
+    nh_lambda_i,
+    nh_traction,
+    threshold_info,
+)
+
+
+def solve_uniform(tube: Tube, rtol: float) -> UniformState:
+    """The base state of a uniform tube (``tube.is_uniform``): lambda_i solves
+    Vbar(lambda_i) = Vbar on the monotone branch from lambda_i0 (Vbar = 0) to the threshold,
+    in closed form for the ideal neo-Hookean dielectric (a bracketed root solve of NH-6, to
+    rounding, ~20 us), else by a Chebyshev root in the cell of the scanned curve that brackets
+    Vbar (~2 ms)."""
+    info = threshold_info(tube, rtol)
+    target = tube.voltage
+    if not target < info.value:
+        raise BaseStateError(
+            f"Vbar = {target:.12g} is at or above the threshold Vbar = {info.value:.12g}"
+            f" ({info.kind}) for g = {tube.growth:g}, lambda_z = {tube.stretch:g},"
+            f" Rbar_o = {tube.outer_radius:g}, {tube.material.name}; no axisymmetric state"
+        )
+    Ro, g, lz = tube.outer_radius, tube.growth, tube.stretch
+    if info.nodes == 0:  # neo-Hookean closed form
+        if not (ratio := target / info.value) < 1.0:
+            raise BaseStateError(
+                f"Vbar = {target:.12g} is within rounding of the threshold"
+                f" {info.value:.12g}; no base state resolved"
+            )
+        wall = UniformWall(tube.material, Ro, g, lz)
+        return UniformState._neo_hookean(tube, wall, nh_lambda_i(Ro, g, lz, ratio), info)
+    wall = UniformWall(tube.material, Ro, g, lz, info.nodes)
+    if target == 0:
+        return UniformState._build(tube, wall, info.lambda_i0, info, rtol)
+    grid, v = info.grid, info.values
+    if target > v[-1]:  # beyond the scan: towards an asymptote or a locking stretch
+        far = info.lambda_i
+        tail = (
+            grid[-1] * 4.0 ** np.arange(1, 21)
+            if math.isinf(far)
+            else far - (far - grid[-1]) * 4.0 ** -np.arange(1, 21)
+        )
+        grid, v = np.append(grid[-1], tail), np.append(v[-1], wall.voltage(tail))
+    k = np.flatnonzero(v >= target)
+    if not k.size:
+        raise BaseStateError(
+            f"Vbar = {target:.12g} is within rounding of the threshold"
+            f" {info.value:.12g}; no base state resolved"
+        )
+    a, b = grid[k[0] - 1], grid[k[0]]
+    for n in GAUSS_ORDERS[GAUSS_ORDERS.index(wall.nodes) :]:
+        wall = dataclasses.replace(wall, nodes=n)
+        lam = cell_root(lambda x, t=wall: np.sign(v := t.voltage(x)) * v**2 - target**2, a, b)
+        state = UniformState._build(tube, wall, lam, info, rtol)
+        if state.quadrature_error <= max(rtol, 1e-14):
+            return state
+    raise ConvergenceError(f"base state at Vbar = {target:.12g} not resolved to rtol = {rtol}")
+
+
+@dataclasses.dataclass(frozen=True)
+class UniformState:
+    """The solved base state; methods take the reference radius R in [1, Rbar_o] (vectorised).
+
+    Attributes: lambda_i = r_i, lambda_o = r_o / Rbar_o, r_i, r_o, charge c (D_r = c / r), the
+    Vbar threshold and its kind, the axial force N = 2 pi int sigma_zz r dr holding lambda_z,
+    and quadrature_error, the residuals (outer traction over the stress scale, voltage) of an
+    independent Chebyshev quadrature of the solved state (neo-Hookean: the traction residual
+    of (*) at the solved lambda_i and c, rounding level).
+    """
+
+    tube: Tube
+    lambda_i: float
+    lambda_o: float
+    r_i: float
+    r_o: float
+    charge: float
+    voltage_threshold: float
+    threshold_kind: str
+    axial_force: float
+    quadrature_error: float = 0.0
+    threshold_lambda_i: float = math.inf
+    _wall: UniformWall = dataclasses.field(default=None, repr=False, compare=False)
+    # sigma_rr(R) on the generic route; None: the neo-Hookean closed form (NH-1)
+    _sigma: cheb.Chebyshev | None = dataclasses.field(default=None, repr=False, compare=False)
+
+    @classmethod
+    def _build(cls, tube, wall, lam, info, rtol) -> UniformState:
+        """Chebyshev interpolants (degree doubled until the tail < rtol) of the integrands of
+        sigma_rr = int_1^R (tau_2 - tau_1) dr/r, of N = pi int (2 tau_3 - tau_1 - tau_2) r dr
+        (sigma_rr vanishes on both faces, so int sigma_rr r dr = -int (tau_2 - tau_1) r dr / 2)
+        and of V = int E_r dr: a second quadrature, independent of the Gauss one that fixed
+        lambda_i and c, whose residuals sigma_rr(Rbar_o) and V - Vbar (Rbar_o - 1) give
+        quadrature_error."""
+        c = float(wall.charge_and_voltage(lam)[0][0]) if tube.voltage > 0 else 0.0
+        Ro, mat = tube.outer_radius, tube.material
+
+        def integrands(x):
+            r, stretches, drdR = wall.kinematics(lam, 1.0 + 0.5 * (Ro - 1.0) * (x + 1.0))
+            tau = mat.stress(*stretches, c / r)
+            e = mat.electric_field(*stretches, c / r) if energy_kind(mat) == "general" else c / r
+            return np.stack(
+                [
+                    (tau[1] - tau[0]) * drdR / r,
+                    (tau[1] + tau[0]) * drdR / r,
+                    (2 * tau[2] - tau[0] - tau[1]) * r * drdR,
+                    e * drdR,
+                ],
+                axis=-1,
+            )
+
+        for deg in (32, 64, 128, 256, 512):
+            coef = cheb.chebinterpolate(integrands, deg)
+            if np.all(abs(coef[-4:]).max(0) <= 0.01 * rtol * np.maximum(abs(coef).max(0), 1.0)):
+                break
+        else:
+            raise ConvergenceError(f"base-state profile not resolved to rtol = {rtol}")
+        sigma = cheb.Chebyshev(coef[:, 0], domain=[1.0, Ro]).integ(lbnd=1.0)
+        weights = np.zeros(coef.shape[0])  # int_1^Ro T_k = (Ro - 1) / (1 - k^2), k even
+        weights[::2] = (Ro - 1.0) / (1.0 - np.arange(0, coef.shape[0], 2) ** 2)
+        scale, force, volt = weights @ coef[:, 1:]
+        r_o = math.sqrt(lam**2 + wall.b * (Ro**2 - 1.0))
+        error = max(
+            abs(sigma(Ro)) / max(1.0, abs(scale)),
+            abs(volt / (Ro - 1.0) - tube.voltage) / max(1.0, tube.voltage),
+        )
+        return cls(
+            tube,
+            float(lam),
+            r_o / Ro,
+            float(lam),
+            r_o,
+            c,
+            info.value,
+            info.kind,
+            float(math.pi * force),
+            float(error),
+            float(info.lambda_i),
+            wall,
+            sigma,
+        )
+
+    @classmethod
+    def _neo_hookean(cls, tube, wall, lam, info) -> UniformState:
+        """Closed forms at lambda_i = lam: c from (V), N from (NH-4), and as quadrature_error
+        the traction residual M - c^2 Delta / (2 r_i^2 r_o^2) of (*), M = (g / lz) m by (NH-6),
+        over max(1, (g / lz) ln Rbar_o)."""
+        Ro, g, lz = tube.outer_radius, tube.growth, tube.stretch
+        b, x = wall.b, lam * lam
+        delta = b * (Ro**2 - 1.0)  # r_o^2 - r_i^2
+        s = 0.5 * math.log1p(delta / x)  # ln(r_o / r_i)
+        c = tube.voltage * (Ro - 1.0) / s
+        residual = g / lz * nh_traction(b / x, Ro**2 - 1.0) - 0.5 * c * c * delta / (
+            x * (x + delta)
+        )
+        a = x - b  # A = r^2 - b R^2
+        force = math.pi * (
+            lz**2 * delta / g**2
+            - c * c * s
+            - g**4 / lz**2 * (0.5 * (Ro**2 - 1.0) - a / b * s)
+            - b / g**2 * (a * math.log(Ro) + 0.5 * delta)
+        )
+        r_o = math.sqrt(x + delta)
+        return cls(
+            tube,
+            lam,
+            r_o / Ro,
+            lam,
+            r_o,
+            c,
+            info.value,
+            info.kind,
+            force,
+            abs(residual) / max(1.0, g / lz * math.log(Ro)),
+            float(info.lambda_i),
+            wall,
+            None,
+        )
+
+    def _local(self, R):
+        R = np.asarray(R, float)
+        if np.any((R < 1.0 - 1e-12) | (R > self.tube.outer_radius * (1.0 + 1e-12))):
+            raise ParameterError(f"R outside the wall [1, {self.tube.outer_radius:g}]")
+        r, stretches, _ = self._wall.kinematics(self.lambda_i, R)
+        return R, r, stretches, self.charge / r
+
+    def _tau(self, stretches, d) -> np.ndarray:
+        """tau_i (Maxwell included); neo-Hookean (l1^2 + d^2, l2^2, l3^2)."""
+        if self._sigma is not None:
+            return self.tube.material.stress(*stretches, d)
+        l1, l2, l3 = stretches
+        return np.array([l1**2 + d**2, l2**2, l3**2])
+
+    def _sigma_rr(self, R, r) -> np.ndarray:
+        """sigma_rr; neo-Hookean (NH-1) with rho = (R^2 - 1) / (Rbar_o^2 - 1):
+        (g / 2 lz) [log1p((R^2 - 1) A / r^2) - log1p(kappa_o) (r_o / r)^2 rho],
+        A = r_i^2 - b, kappa_o = (Rbar_o^2 - 1) A / r_o^2: exactly 0 at R = 1 and at Vbar = 0."""
+        if self._sigma is not None:
+            return self._sigma(R)
+        p = self.tube
+        a, ro2, k = self.r_i**2 - self._wall.b, self.r_o**2, p.outer_radius**2 - 1.0
+        R2m1 = R**2 - 1.0
+        return (
+            0.5
+            * p.growth
+            / p.stretch
+            * (np.log1p(R2m1 * a / r**2) - math.log1p(k * a / ro2) * ro2 / r**2 * R2m1 / k)
+        )
+
+    # -- the State protocol (_types.State): one layer, so ``side`` changes nothing ------------
+
+    @property
+    def stretch(self) -> float:
+        """lambda_z, prescribed."""
+        return self.tube.stretch
+
+    @property
+    def radii(self) -> tuple[float, float]:
+        """(r_i, r_o): the current faces (a uniform tube has no interface)."""
+        return (self.r_i, self.r_o)
+
+    @property
+    def interface_radii(self) -> tuple[float, ...]:
+        return ()
+
+    @property
+    def hoop_stretches(self) -> tuple[float, float]:
+        """r / R at the inner and outer face."""
+        return (self.lambda_i, self.lambda_o)
+
+    @property
+    def end_force(self) -> float:
+        """The force the ends carry: N (no pressure on them)."""
+        return self.axial_force
+
+    def reference_radius(self, r, *, layer: int = 0) -> np.ndarray:
+        """R(r) = sqrt(1 + lambda_z (r^2 - r_i^2) / g^3) (paper eq. 15, R_i = 1)."""
+        t = self.tube
+        return np.sqrt(1.0 + t.stretch * (np.asarray(r) ** 2 - self.r_i**2) / t.growth**3)
+
+    @property
+    def face_pressures(self) -> tuple[float, float]:
+        """(P_i, P_o): no follower pressure on the faces of the paper's tube."""
+        return 0.0, 0.0
+
+    @property
+    def current_length(self) -> float:
+        """l / R_i = lambda_z L, the deformed length (sets k = n pi / l)."""
+        return self.tube.stretch * self.tube.length
+
+    def radius(self, R, *, side: str = "outer") -> np.ndarray:
+        """r(R) = sqrt(r_i^2 + g^3 (R^2 - 1) / lambda_z)."""
+        return self._local(R)[1]
+
+    def elastic_stretches(
+        self, R, *, side: str = "outer"
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(l1, l2, l3) = (g^2 R / (r lambda_z), r / (g R), lambda_z / g)."""
+        return self._local(R)[2]
+
+    def displacement(self, R, *, side: str = "outer") -> np.ndarray:
+        """Radial current electric displacement D_r = c / r."""
+        return self._local(R)[3]
+
+    def electric_field(self, R, *, side: str = "outer") -> np.ndarray:
+        """Radial current electric field E_r = dOmega/dD~ / l1 (= D_r for ideal dielectrics)."""
+        _, _, stretches, d = self._local(R)
+        if self._sigma is None:
+            return d
+        return self.tube.material.electric_field(*stretches, d)
+
+    def sigma_rr(self, R, *, side: str = "outer") -> np.ndarray:
+        """Radial Cauchy stress sigma_rr(R) = int_{r_i}^{r(R)} (tau_2 - tau_1) dr / r."""
+        R, r, _, _ = self._local(R)
+        return self._sigma_rr(R, r)
+
+    def stresses(self, R, *, side: str = "outer") -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(sigma_rr, sigma_tt, sigma_zz), sigma_ii = tau_i - p with p = tau_1 - sigma_rr."""
+        R, r, stretches, d = self._local(R)
+        tau = self._tau(stretches, d)
+        srr = self._sigma_rr(R, r)
+        return srr, tau[1] - tau[0] + srr, tau[2] - tau[0] + srr
+
+    def pressure(self, R, *, side: str = "outer") -> np.ndarray:
+        """Lagrange multiplier p = tau_1 - sigma_rr."""
+        R, r, stretches, d = self._local(R)
+        return self._tau(stretches, d)[0] - self._sigma_rr(R, r)
+
+    def moduli(self, R, *, side: str = "outer") -> np.ndarray:
+        """Updated moduli (materials.MODULI_NAMES order), shape R.shape + (23,)."""
+        _, _, stretches, d = self._local(R)
+        if self._sigma is None:
+            return neo_hookean_moduli(*stretches, d)
+        return self.tube.material.moduli(*stretches, d)
+
+    def as_dict(self) -> dict:
+        """The JSON record of the state (inf -> null): geometry, charge, threshold, axial
+        force and the extremes of the three principal Cauchy stresses over 401 points of
+        the wall."""
+        p = self.tube
+        prof = self.profiles(401)
+        record = {
+            "material": p.material.name,
+            "outer_radius": p.outer_radius,
+            "growth": p.growth,
+            "stretch": p.stretch,
+            "voltage": p.voltage,
+            "length": p.length,
+            "lambda_i": self.lambda_i,
+            "lambda_o": self.lambda_o,
+            "r_i": self.r_i,
+            "r_o": self.r_o,
+            "charge": self.charge,
+            "voltage_threshold": (
+                float(self.voltage_threshold) if math.isfinite(self.voltage_threshold) else None
+            ),
+            "threshold_kind": self.threshold_kind,
+            "axial_force": self.axial_force,
+        }
+        for key in ("sigma_rr", "sigma_tt", "sigma_zz"):
+            record[f"{key}_min"] = float(prof[key].min())
+            record[f"{key}_max"] = float(prof[key].max())
+        return record
+
+    def to_xarray(self, points: int = 101):
+        """The through-wall profiles (:meth:`profiles`) as an ``xarray.Dataset`` on dimension
+        R, with units and descriptions in attributes (labelled.py; needs xarray)."""
+        return base_state_dataset(self, points)
+
+    def _repr_html_(self) -> str:
+        return base_state_html(self)
+
+    def profiles(self, n: int = 101) -> dict[str, np.ndarray]:
+        """Through-wall profiles at n equally spaced R in [1, Rbar_o]: keys R, r, lambda
+        (= r / R), sigma_rr, sigma_tt, sigma_zz, p, D_r, E_r."""
+        R = np.linspace(1.0, self.tube.outer_radius, n)
+        r = self.radius(R)
+        srr, stt, szz = self.stresses(R)
+        return {
+            "R": R,
+            "r": r,
+            "lambda": r / R,
+            "sigma_rr": srr,
+            "sigma_tt": stt,
+            "sigma_zz": szz,
+            "p": self.pressure(R),
+            "D_r": self.displacement(R),
+            "E_r": self.electric_field(R),
+        }
