@@ -206,7 +206,7 @@ def stable_det_sign(pairs: int, nodes: int) -> float:
     the lone theta or z block (a scalar second-order problem, nodes x nodes) has
     -(-1)^nodes, its complement (-1)^nodes, so their product is the whole matrix's -1
     (moving a block of nodes rows past blocks of nodes rows is an even permutation).
-    Measured for nodes = 6..40, every mode and tube tried (tests/test_families.py).
+    Measured for nodes = 6..40, every mode and tube tried (tests/incremental/test_targets.py).
     """
     if pairs == ALL_PAIRS:
         return -1.0

@@ -14,7 +14,8 @@ S(r_i) = S(r_o) = 0. Two independent routes compute it:
   U(r_o) in the null space of z(r_o); integrate dU/dr = (G1 + G2 z) U / r inwards from r_o
   and recover S = z U. Inwards is the stable direction: the inner-face subspace is
   dominated by solutions that grow outwards (like exp(k r)), so G1 + G2 z has mostly
-  growing directions outwards and decaying ones inwards (tested in tests/test_modes.py).
+  growing directions outwards and decaying ones inwards (tested in
+  tests/shapes/test_mode_shape.py).
   z may have a pole inside the wall (the subspace is then not a graph over U); the
   integration fails there and the collocation route is used instead (``route``, ``note``).
 * "collocation": the null vector of the Chebyshev collocation matrix (collocation.py),

@@ -120,7 +120,7 @@ def test_unknown_subcommand_and_figure(capsys):
     assert status == 2 and "99" in err and err.count("\n") == 1
 
 
-@pytest.mark.parametrize("number", [4, 5])  # Figures 6-10: tests/test_figures_modes.py
+@pytest.mark.parametrize("number", [4, 5])  # Figures 6-10: tests/figures/test_critical.py
 def test_figure_writes_png_and_csv(capsys, tmp_path, number):
     status, out, err = run(capsys, "figure", str(number), "--quick", "--out", str(tmp_path))
     assert status == 0 and err == ""
@@ -159,7 +159,7 @@ def test_figure5_data_headline():
 
 
 def test_python_dash_m_runs_the_cli():
-    env = dict(os.environ, PYTHONPATH=str(Path(__file__).parents[1] / "src"))
+    env = dict(os.environ, PYTHONPATH=str(Path(__file__).parents[2] / "src"))
     done = subprocess.run(
         [sys.executable, "-m", "electrogrowth", *BASE, "--voltage", "0.2", "--json"],
         capture_output=True,

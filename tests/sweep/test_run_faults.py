@@ -16,8 +16,6 @@ pytest.importorskip("xarray")
 pytest.importorskip("zarr")
 psutil = pytest.importorskip("psutil")
 
-from test_sweep import LAUNCHER, SRC, TINY, assert_same_results  # noqa: E402
-
 from electrogrowth.cli import app as cli  # noqa: E402
 from electrogrowth.cli import sweep as cli_sweep  # noqa: E402
 from electrogrowth.errors import SweepError  # noqa: E402
@@ -25,11 +23,12 @@ from electrogrowth.sweep import store as sweep_store  # noqa: E402
 from electrogrowth.sweep.file import parse_config  # noqa: E402
 from electrogrowth.sweep.run import compute_sweep  # noqa: E402
 from electrogrowth.sweep.store import open_results, open_store  # noqa: E402
+from tests.sweep.test_run import LAUNCHER, SRC, TINY, assert_same_results  # noqa: E402
 
 
 @pytest.fixture
 def commands(monkeypatch):
-    """cli.main with the sweep command registered (as in test_sweep.py)."""
+    """cli.main with the sweep command registered (as in tests/sweep/test_run.py)."""
     monkeypatch.setitem(
         cli.COMMANDS, "sweep", ("sweep", cli_sweep.configure_sweep, cli_sweep.run_sweep)
     )

@@ -20,13 +20,13 @@ Vbar_cr(mu_k, eps_k) = sqrt(mu_k / eps_k) Vbar_cr(1, 1).
 import math
 
 import pytest
-from test_layered import nh_closed  # the independent neo-Hookean closed form
 
 from electrogrowth.basestate.layered import solve_layered_state
 from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.incremental.targets import Family, impedance_targets
 from electrogrowth.model.layers import Layer, Tube
+from tests.basestate.test_layered import nh_closed  # the independent neo-Hookean closed form
 
 MODULI = (1e-4, 1e-2, 1.0, 60.0, 99.0, 100.0, 1000.0, 1e4)
 

@@ -23,7 +23,7 @@ import pytest
 
 from electrogrowth.cli.app import main
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 DOCS = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
 FENCE = re.compile(r"^```([\w-]*)[^\n]*\n(.*?)^```", flags=re.S | re.M)
 
@@ -71,7 +71,7 @@ SLOW = {
 #: Commands not run at all, with the reason.
 SKIP = {
     "--workers 2   # all examples": "the whole gallery takes 10-30 min; its quick form runs",
-    "--scheduler tcp://head": "needs a dask cluster (tests/test_sweep.py runs one in-process)",
+    "--scheduler tcp://head": "needs a dask cluster (tests/sweep/test_run.py runs one in-process)",
 }
 
 #: Quoted output -> the expression (in the namespace of its block, run up to the quote)

@@ -15,7 +15,7 @@ from electrogrowth.model.tube_file import load_tube
 from electrogrowth.sweep.config import SweepConfig
 from electrogrowth.sweep.file import parse_config
 
-EXAMPLE = str(Path(__file__).resolve().parents[1] / "examples" / "bilayer.toml")
+EXAMPLE = str(Path(__file__).resolve().parents[2] / "examples" / "bilayer.toml")
 
 
 def test_critical_of_one_growth_component_equals_the_api(capsys):

@@ -556,7 +556,7 @@ def test_non_numeric_parameter_raises_parameter_error(make):
 @functools.cache
 def _chain_rule_tool():
     """tools/derive_chain_rule.py and its sympy forms (seconds of sympy: derived once)."""
-    path = pathlib.Path(__file__).resolve().parents[1] / "tools" / "derive_chain_rule.py"
+    path = pathlib.Path(__file__).resolve().parents[2] / "tools" / "derive_chain_rule.py"
     spec = importlib.util.spec_from_file_location("derive_chain_rule", path)
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)

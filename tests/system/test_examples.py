@@ -9,7 +9,7 @@ import matplotlib.pyplot as plt
 import pytest
 from matplotlib.figure import Figure
 
-GALLERY = Path(__file__).resolve().parents[1] / "examples" / "gallery"
+GALLERY = Path(__file__).resolve().parents[2] / "examples" / "gallery"
 SECTIONS = ("basics", "layered", "sweeps")  # sphinx-gallery's subsections, in this order
 SCRIPTS = sorted(GALLERY.glob("*/plot_*.py"))
 

@@ -59,7 +59,7 @@ def material_states(material, n, seed):
 @pytest.fixture(scope="module")
 def derivation():
     """The sympy derivation of tools/derive_stroh.py, lambdified: f(*moduli, p, m, kr)."""
-    path = pathlib.Path(__file__).resolve().parents[1] / "tools" / "derive_stroh.py"
+    path = pathlib.Path(__file__).resolve().parents[2] / "tools" / "derive_stroh.py"
     spec = importlib.util.spec_from_file_location("derive_stroh", path)
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)

@@ -542,7 +542,7 @@ def test_energy_expression_layer_and_sympy_energy():
 
 # -- 7. the tube file and the command line ---------------------------------------------------
 
-EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "bilayer.toml"
+EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "bilayer.toml"
 
 
 def test_example_tube_file():

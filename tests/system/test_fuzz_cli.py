@@ -14,7 +14,7 @@ import pytest
 from electrogrowth.cli import app as cli
 from electrogrowth.cli import sweep as cli_sweep
 
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 SEED = 20261202
 
 #: Values that are wrong for most options: not numbers, not finite, out of range, huge.

@@ -159,7 +159,7 @@ def test_cli_layered_tube_line_shows_only_supported_digits(monkeypatch, capsys):
         )  # fmt: skip
 
     monkeypatch.setattr(cli, "critical_value", fake)
-    bilayer = str(Path(__file__).resolve().parents[1] / "examples" / "bilayer.toml")
+    bilayer = str(Path(__file__).resolve().parents[2] / "examples" / "bilayer.toml")
     argv = ["critical", "--tube", bilayer, "--solve-for", "growth"]
     assert main(argv + ["--layer", "1", "--component", "theta", "--mode", "12", "1"]) == 3
     out = capsys.readouterr().out

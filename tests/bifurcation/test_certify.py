@@ -26,7 +26,7 @@ from electrogrowth.cli.app import main
 from electrogrowth.errors import ConvergenceError
 
 P = TubeParameters(1.4, 1.0, voltage=0.4)
-BILAYER = Path(__file__).parent.parent / "examples" / "bilayer.toml"
+BILAYER = Path(__file__).parents[2] / "examples" / "bilayer.toml"
 
 
 def _as_collocation(crit):

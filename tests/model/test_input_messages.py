@@ -17,7 +17,7 @@ from electrogrowth.model.layers import Layer, Tube
 from electrogrowth.model.params import TubeParameters
 from electrogrowth.model.tube_file import parse_tube
 
-BILAYER = Path(__file__).resolve().parents[1] / "examples" / "bilayer.toml"
+BILAYER = Path(__file__).resolve().parents[2] / "examples" / "bilayer.toml"
 TUBE = Tube((Layer(1.1), Layer(2.0)))
 
 

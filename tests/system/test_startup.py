@@ -15,7 +15,7 @@ import sys
 
 import pytest
 
-ROOT = pathlib.Path(__file__).resolve().parents[1]
+ROOT = pathlib.Path(__file__).resolve().parents[2]
 EXTRAS = ("matplotlib", "xarray", "pint", "zarr", "dask", "meshio")
 
 _PROBE = """
