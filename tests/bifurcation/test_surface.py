@@ -20,14 +20,16 @@ from electrogrowth.errors import ParameterError
 from electrogrowth.incremental.halfspace import (
     FACES,
     FaceProblem,
-    decaying_solutions,
-    limit_matrix,
-    neo_hookean_secular,
     schur_target,
     surface_target,
     target_from_moduli,
 )
 from electrogrowth.incremental.stroh import stroh_matrix
+from electrogrowth.incremental.stroh_limit import (
+    decaying_solutions,
+    limit_matrix,
+    neo_hookean_secular,
+)
 from electrogrowth.model.materials import MODULI_INDEX, gent, mooney_rivlin, neo_hookean_moduli
 from electrogrowth.model.params import TubeParameters
 

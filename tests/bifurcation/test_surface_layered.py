@@ -21,12 +21,11 @@ from electrogrowth.errors import ParameterError
 from electrogrowth.incremental.halfspace import (
     FaceProblem,
     InterfaceProblem,
-    decaying_solutions,
-    limit_matrix,
     surface_problem,
     surfaces,
 )
 from electrogrowth.incremental.impedance import ALL_PAIRS, face_impedance
+from electrogrowth.incremental.stroh_limit import decaying_solutions, limit_matrix
 from electrogrowth.model.layers import Layer, Tube
 from electrogrowth.model.materials import neo_hookean_moduli
 from electrogrowth.model.params import TubeParameters
