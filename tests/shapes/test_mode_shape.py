@@ -9,13 +9,8 @@ from electrogrowth import NoBifurcationFound, ParameterError, TubeParameters
 from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.bifurcation.critical import CriticalPoint, critical_value
 from electrogrowth.figures.plots import plot_mode_shape
-from electrogrowth.shapes.mode_shape import (
-    ModeShape,
-    impedance_profile,
-    mode_shape,
-    stroh_at,
-    transport,
-)
+from electrogrowth.shapes.mode_shape import ModeShape, mode_shape
+from electrogrowth.shapes.riccati import impedance_profile, stroh_at, transport
 
 #: name -> (tube, m, n, control): with and without voltage and growth, m = 0, 2, 5, n = 1, 7
 CASES = {

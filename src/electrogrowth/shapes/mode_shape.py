@@ -7,7 +7,7 @@ At a critical point the incremental problem (paper eq. incremental-solutions)
 
 has a non-trivial solution, the Stroh vector eta = [U; S] (stroh.py),
 U = [U_r, U_th, U_z, r Delta_r], S = [r Sigma_rr, r Sigma_rth, r Sigma_rz, -Phi], with
-S(r_i) = S(r_o) = 0. Two independent routes compute it:
+S(r_i) = S(r_o) = 0. Two independent routes compute it (riccati.py, null_vector.py):
 
 * "impedance" (paper eq. two_Riccati): integrate the Riccati equation for the conditional
   impedance z (S = z U, z(r_i) = 0) outwards, keeping z(r) as a dense interpolant; take
@@ -42,23 +42,19 @@ import dataclasses
 import math
 
 import numpy as np
-from numpy.polynomial import chebyshev as cheb
-from scipy.integrate import solve_ivp
 from scipy.interpolate import CubicSpline
 
 from .._types import FloatArray
-from ..basestate.tube import BaseState, solve_base_state
+from ..basestate.tube import solve_base_state
 from ..bifurcation.critical import CriticalPoint
-from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
-from ..incremental.collocation import mode_shape_collocation
-from ..incremental.impedance import ALL_PAIRS, face_impedance, impedance_scale
-from ..incremental.impedance_reference import impedance_rhs, kept_pairs
-from ..incremental.stroh import stroh_matrix
-from ..incremental.targets import Family, Method, check_method, check_mode, wavenumber
+from ..errors import NoBifurcationFound, ParameterError
+from ..incremental.impedance import ALL_PAIRS, face_impedance
+from ..incremental.targets import Family, Method, check_method, check_mode
 from ..model.layers import Tube
-from ..model.materials import MODULI_INDEX
 from ..model.params import TubeParameters
 from ..outcomes import Kind
+from .null_vector import collocation_shape, layered_collocation_shape
+from .riccati import _PoleError, impedance_shape
 
 #: Components of the Stroh vector eta, in order (stroh.py, SIGN_PHI = -1).
 ETA_NAMES = (
@@ -280,139 +276,6 @@ def _unpack(critical) -> tuple[TubeParameters, int, int, Family]:
     return params, int(m), int(n), fam
 
 
-# -- impedance route -------------------------------------------------------------------------
-
-
-class _PoleError(ConvergenceError):
-    """The Riccati integration for z stopped (a pole of the impedance inside the wall)."""
-
-
-def stroh_at(state: BaseState, R: float, m: float, k: float) -> FloatArray:
-    """The Stroh matrix G (8x8) at reference radius R (moduli and p of the base state)."""
-    G = np.empty((8, 8))
-    r = float(state.radius(R))
-    mod = np.ascontiguousarray(state.moduli(np.array(R)), dtype=float)
-    stroh_matrix(mod, float(state.pressure(np.array(R))), float(m), k * r, G)
-    return G
-
-
-def impedance_shape(
-    state: BaseState,
-    m: int,
-    k: float,
-    R: FloatArray,
-    *,
-    rtol: float = 1e-12,
-    pairs: int = ALL_PAIRS,
-) -> FloatArray:
-    """Un-normalised eta at R by the paper's two-step impedance method (eq. two_Riccati).
-
-    1. dz/dR = (dr/dR)(1/r)(G3 + G4 z - z G1 - z G2 z), z(1) = 0, to R = Rbar_o (dense).
-    2. U(r_o): right singular vector of the smallest singular value of z(r_o).
-    3. dU/dR = (dr/dR)(1/r)(G1 + G2 z) U from Rbar_o down to 1; S = z U.
-
-    On the block of the kept ``pairs`` (a mode family); the other components are 0.
-    Raises _PoleError when step 1 fails or z blows up (a pole of the impedance).
-    """
-    Ro = state.params.outer_radius
-    z = impedance_profile(state, m, k, rtol=rtol, pairs=pairs)
-    U_o = np.linalg.svd(z(Ro))[2][-1]
-    U = transport(state, m, k, z, U_o, (Ro, 1.0), R[::-1], rtol=rtol, pairs=pairs)[:, ::-1]
-    S = np.stack([z(x) @ U[:, j] for j, x in enumerate(R)], axis=1)
-    keep = kept_pairs(pairs)
-    eta = np.zeros((8, R.size))
-    eta[keep], eta[[4 + j for j in keep]] = U, S
-    return eta
-
-
-def impedance_profile(
-    state: BaseState, m: int, k: float, *, rtol: float = 1e-12, pairs: int = ALL_PAIRS
-):
-    """z(R) for R in [1, Rbar_o]: the Riccati equation (paper eq. Riccati) integrated by
-    SciPy DOP853 from z(1) = 0, as a callable R -> symmetric d x d (dense output), d the
-    number of kept ``pairs`` (4 for the paper's ansatz)."""
-    Ro = state.params.outer_radius
-    scale = impedance_scale(float(m), float(k), float(state.r_o))
-    d = len(kept_pairs(pairs))
-    with np.errstate(all="ignore"):
-        ric = solve_ivp(
-            impedance_rhs(state, m, k, pairs),
-            (1.0, Ro),
-            np.zeros(d * d),
-            method="DOP853",
-            rtol=rtol,
-            atol=1e-3 * rtol,
-            dense_output=True,
-        )
-    big = np.abs(ric.y).max() if ric.y.size else np.inf
-    if ric.status != 0 or not np.isfinite(big) or big > 1e8 * scale**2:
-        r_stop = float(state.radius(min(max(ric.t[-1], 1.0), Ro)))
-        raise _PoleError(
-            f"the impedance z has a pole near r = {r_stop:.6g}"
-            f" (Riccati integration stopped: {ric.message})"
-        )
-
-    def z(x: float) -> FloatArray:
-        zx = ric.sol(x).reshape(d, d)
-        return 0.5 * (zx + zx.T)  # symmetric exactly (docs/derivation-stroh.md, sec. 4)
-
-    return z
-
-
-def transport(
-    state: BaseState,
-    m: int,
-    k: float,
-    z,
-    U0: FloatArray,
-    span: tuple[float, float],
-    R_eval: FloatArray,
-    *,
-    rtol: float = 1e-12,
-    pairs: int = ALL_PAIRS,
-) -> FloatArray:
-    """Solve dU/dR = (dr/dR)(1/r)(G1 + G2 z) U (paper eq. two_Riccati, second part) from
-    U(span[0]) = U0 to span[1]; U at ``R_eval`` (in the order of integration), (d, len),
-    on the block of the kept ``pairs`` (d of them; 4 for the paper's ansatz).
-
-    Stable inwards (span = (Rbar_o, 1)); outwards errors grow like exp(2 k (r_o - r_i)).
-    """
-    b = state.params.growth**3 / state.params.stretch  # r dr/dR = b R
-    keep = np.array(kept_pairs(pairs))
-
-    def rhs(x, U):
-        G = stroh_at(state, x, m, k)
-        G1, G2 = G[np.ix_(keep, keep)], G[np.ix_(keep, 4 + keep)]
-        return b * x / float(state.radius(x)) ** 2 * ((G1 + G2 @ z(x)) @ U)
-
-    sol = solve_ivp(rhs, span, U0, method="DOP853", t_eval=R_eval, rtol=rtol, atol=1e-3 * rtol)
-    if sol.status != 0:
-        raise _PoleError(f"the integration of U failed: {sol.message}")
-    return sol.y
-
-
-# -- collocation route -----------------------------------------------------------------------
-
-
-def collocation_shape(
-    state: BaseState, m: int, n: int, R: FloatArray, *, nodes: int = 40, pairs: int = ALL_PAIRS
-) -> FloatArray:
-    """Un-normalised eta at R from the collocation null vector.
-
-    U_r, U_th, U_z, Phi and P are the nodal values of polynomials in r (degree nodes - 1;
-    P from the collocation's interior interpolation); they are interpolated, differentiated
-    where needed, and the rest of eta follows from the incremental law (stroh.py rows 1, 2,
-    7 for r Sigma_rth, r Sigma_rz, r Delta_r; S_rr from docs/derivation-stroh.md):
-
-        r Sigma_rr = r [(A1111 + p) U_r' + A1122 (U_r + m U_th)/r + A1133 k U_z
-                        + Gamma111 Delta_r - P].
-
-    ``pairs``: the block of a mode family (collocation.py); the other fields are 0.
-    """
-    shape = mode_shape_collocation(state, m, n, nodes=nodes, pairs=pairs)
-    return _eta_from_nodes(state, shape, m, wavenumber(state.params, n), R)
-
-
 # -- normalisation ---------------------------------------------------------------------------
 
 
@@ -451,65 +314,3 @@ def _face_impedances(state, m: float, k: float):
         face_impedance(P, float(m), k * r, ALL_PAIRS, 1.0)
         for P, r in zip(state.face_pressures, (state.r_i, state.r_o))
     )
-
-
-# -- layered tubes ---------------------------------------------------------------------------
-
-
-def layered_collocation_shape(
-    state, m: int, n: int, R: FloatArray, *, nodes: int = 40, pairs: int = ALL_PAIRS
-) -> FloatArray:
-    """Un-normalised eta at R of a layered state (basestate.layered.LayeredState), from the
-    multi-domain collocation null vector: :func:`collocation_shape` layer by layer (each
-    layer's nodal values are its own polynomial; a sample on an interface is taken from the
-    layer inside it, eta being continuous there)."""
-    shape = mode_shape_collocation(state, m, n, nodes=nodes, pairs=pairs)
-    radii = state.tube.radii
-    layer_of = np.clip(np.searchsorted(np.array(radii[1:-1]), R, side="left"), 0, len(radii) - 2)
-    k = n * math.pi / state.current_length
-    eta = np.empty((8, R.size))
-    for j in range(len(radii) - 1):
-        sel = layer_of == j
-        if not sel.any():
-            continue
-        part = {f: v[j * nodes : (j + 1) * nodes] for f, v in shape.items()}
-        side = "inner" if j < len(radii) - 2 else "outer"  # R on the outer end is this layer's
-        eta[:, sel] = _eta_from_nodes(state, part, m, k, R[sel], side)
-    return eta
-
-
-def _eta_from_nodes(state, part: dict, m: float, k: float, R: FloatArray, side=None):
-    """eta at R (one layer: ``side`` picks it at an interface of a layered state) from its
-    nodal U_r, U_th, U_z, Phi, P (see collocation_shape)."""
-    r_nodes = part["r"]
-    domain = [r_nodes.min(), r_nodes.max()]
-    poly = {
-        f: cheb.Chebyshev.fit(r_nodes, part[f], len(r_nodes) - 1, domain=domain)
-        for f in ("U_r", "U_th", "U_z", "Phi", "P")
-    }
-    where = {} if side is None else {"side": side}
-    r = state.radius(R, **where)
-    mod = state.moduli(R, **where)
-    p = state.pressure(R, **where)
-    val = {f: q(r) for f, q in poly.items()}
-    der = {f: poly[f].deriv()(r) for f in ("U_r", "U_th", "U_z", "Phi")}
-    eta = np.empty((8, R.size))
-    eta[0], eta[1], eta[2], eta[7] = val["U_r"], val["U_th"], val["U_z"], -val["Phi"]
-    G = np.empty((8, 8))
-    for j in range(R.size):
-        stroh_matrix(np.ascontiguousarray(mod[j]), float(p[j]), float(m), k * r[j], G)
-        e = eta[:, j]
-        # row 7: r (-Phi)' = G70 U_r + G71 U_th + G72 U_z + G73 r Delta_r
-        e[3] = (-r[j] * der["Phi"][j] - G[7, :3] @ e[:3]) / G[7, 3]
-        # rows 1, 2: r U' = G[i, :4] U + G[i, 5 or 6] r Sigma + G[i, 7] (-Phi)
-        e[5] = (r[j] * der["U_th"][j] - G[1, :4] @ e[:4] - G[1, 7] * e[7]) / G[1, 5]
-        e[6] = (r[j] * der["U_z"][j] - G[2, :4] @ e[:4] - G[2, 7] * e[7]) / G[2, 6]
-    a = {name: mod[..., MODULI_INDEX[name]] for name in ("A1111", "A1122", "A1133", "G111")}
-    eta[4] = r * (
-        (a["A1111"] + p) * der["U_r"]
-        + a["A1122"] * (eta[0] + m * eta[1]) / r
-        + a["A1133"] * k * eta[2]
-        + a["G111"] * eta[3] / r
-        - val["P"]
-    )
-    return eta
