@@ -18,6 +18,7 @@ from scipy.special import ivp, kvp
 
 from electrogrowth.errors import NoBifurcationFound, ParameterError
 from electrogrowth.incremental import collocation as col
+from electrogrowth.incremental.nodal_law import full_moduli
 from electrogrowth.model.materials import (
     I1,
     I2,
@@ -166,14 +167,14 @@ def test_full_moduli_obey_the_stress_relation(material):
     """A_piqj - A_ipqj = tau_pq delta_ij - tau_iq delta_pj (docs/conventions.md)."""
     l2, l3, d = 1.3, 0.8, 0.6
     tau = np.diag(material.stress(1 / (l2 * l3), l2, l3, d))
-    A = col.full_moduli(material.moduli(1 / (l2 * l3), l2, l3, d)[None, :])[0][..., 0]
+    A = full_moduli(material.moduli(1 / (l2 * l3), l2, l3, d)[None, :])[0][..., 0]
     eye = np.eye(3)
     rhs = np.einsum("pq,ij->piqj", tau, eye) - np.einsum("iq,pj->piqj", tau, eye)
     assert np.allclose(A - A.transpose(1, 0, 2, 3), rhs, atol=1e-12)
 
 
 def test_full_moduli_fill_every_symmetric_slot():
-    A, G, K = (t[..., 0] for t in col.full_moduli(np.arange(1.0, 24.0)[None, :]))
+    A, G, K = (t[..., 0] for t in full_moduli(np.arange(1.0, 24.0)[None, :]))
     assert np.array_equal(A, A.transpose(2, 3, 0, 1)) and np.array_equal(G, G.transpose(1, 0, 2))
     assert (np.count_nonzero(A), np.count_nonzero(G), np.count_nonzero(K)) == (21, 7, 3)
     assert A[1, 0, 0, 1] == A[0, 1, 1, 0] == 1 + MODULI_INDEX["A1221"]

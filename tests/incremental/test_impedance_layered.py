@@ -11,7 +11,7 @@ import pytest
 
 from electrogrowth import TubeParameters, critical_value, solve_base_state
 from electrogrowth.errors import ParameterError
-from electrogrowth.incremental.collocation import collocation_impedance
+from electrogrowth.incremental.collocation_impedance import collocation_impedance
 from electrogrowth.incremental.impedance import ALL_PAIRS, integrate_one
 from electrogrowth.incremental.radial_table import build_table
 from electrogrowth.incremental.targets import U_Z, impedance_targets

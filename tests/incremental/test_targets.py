@@ -22,11 +22,11 @@ from electrogrowth.bifurcation.scan import ScanOptions, scan_grid, scan_modes
 from electrogrowth.cli.app import main
 from electrogrowth.errors import NoBifurcationFound
 from electrogrowth.incremental.collocation import (
-    collocation_impedance,
     collocation_matrix,
     collocation_target,
     critical_collocation,
 )
+from electrogrowth.incremental.collocation_impedance import collocation_impedance
 from electrogrowth.incremental.impedance import integrate_one
 from electrogrowth.incremental.impedance_reference import impedance_reference
 from electrogrowth.incremental.radial_table import build_table
