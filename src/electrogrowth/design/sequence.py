@@ -173,7 +173,7 @@ def check_vary(vary, tube=None, solve_for: str | None = None) -> tuple[str, floa
                     f"vary key {key!r} is not a key of this tube; valid: a control (growth[K],"
                     f" growth[K].theta, stretch, voltage, pressure, force) or {KEYS_TEXT}"
                 ) from None
-        check_curve(solve_for, key, tube)
+        check_curve(solve_for, key, tube)  # type: ignore[arg-type]  # None: refused there
         tube.at(key, lo)
         tube.at(key, hi)
     return key, float(lo), float(hi)
@@ -279,7 +279,7 @@ def mode_values(tube, solve_for: str, key: str, modes, xs, *, side: str | None =
         vals = []
         for x in xs:
             try:
-                c = critical_value(tube.at(key, x), *mode, solve_for, side=side)
+                c = critical_value(tube.at(key, x), mode[0], mode[1], solve_for, side=side)
                 vals.append(c.value if c.kind == Kind.BIFURCATION else math.nan)
             except ElectrogrowthError:
                 vals.append(math.nan)

@@ -50,7 +50,8 @@ def representative_points(curve: Curve, prefix: str, count: int = 4) -> tuple[Pa
     for k, i in enumerate(chosen, 1):
         params = dataclasses.replace(
             curve.params,
-            **{curve.along: float(curve.x[i]), curve.solve_for: float(curve.value[i])},
+            # fields chosen by name: the checker cannot match the floats to their types
+            **{curve.along: float(curve.x[i]), curve.solve_for: float(curve.value[i])},  # type: ignore[arg-type]
         )
         out.append(PatternPoint(f"{prefix}{k}", params, int(curve.m[i]), int(curve.n[i])))
     return tuple(out)
@@ -99,7 +100,8 @@ def figure9(
     points = points or (3 if quick else 30)
     fig, axes = new_figure(4.6, 3.2, 1, 1)
     ax = axes[0, 0]
-    curves, pts, headline = [], [], {}
+    curves, headline = [], {}
+    pts: list[PatternPoint] = []
     for color, V, prefix in zip(COLORS, voltages, "NMKJ"):
         p = TubeParameters(outer_radius=outer_radius, length=length, voltage=V, material=material)
         lo = scan_modes(p, "stretch", side="compression", options=_modes(quick)).critical
@@ -155,7 +157,8 @@ def figure10(
     points = points or (3 if quick else 30)
     fig, axes = new_figure(4.6, 3.2, 1, 1)
     ax = axes[0, 0]
-    curves, pts, headline = [], [], {}
+    curves, headline = [], {}
+    pts: list[PatternPoint] = []
     for color, lz, prefix in zip(COLORS, stretches, "PQRS"):
         p = TubeParameters(outer_radius=outer_radius, length=length, stretch=lz, material=material)
         vcr = scan_modes(p, "voltage", options=_modes(quick)).critical

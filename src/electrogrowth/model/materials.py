@@ -31,6 +31,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
+from collections.abc import Callable
 
 import numpy as np
 import sympy as sp
@@ -298,7 +299,11 @@ def mooney_rivlin(alpha: float = 0.5) -> Material:
     )
 
 
-BUILTIN = {"neo-hookean": neo_hookean, "gent": gent, "mooney-rivlin": mooney_rivlin}
+BUILTIN: dict[str, Callable[..., Material]] = {
+    "neo-hookean": neo_hookean,
+    "gent": gent,
+    "mooney-rivlin": mooney_rivlin,
+}
 
 
 def material_by_name(name: str, **params) -> Material:
