@@ -37,9 +37,11 @@ test: lint
 
 # Exit status 5 (no test selected) is not a failure while no test is marked slow.
 # ruff: the lint rules and the formatting of pyproject.toml [tool.ruff]; changes nothing.
+# mypy: the types of the public API (pyproject.toml [tool.mypy]; ~30 s cold, ~2 s cached).
 lint: $(VENV)/.installed
 	$(BIN)/ruff check src tests benchmarks tools examples docs/conf.py docs/_ext
 	$(BIN)/ruff format --check src tests benchmarks tools examples docs/conf.py docs/_ext
+	$(BIN)/mypy
 
 # Apply ruff's safe fixes and its formatting.
 format: $(VENV)/.installed
@@ -73,7 +75,7 @@ docs: $(VENV)/.installed-docs
 	@echo "open docs/_build/html/index.html"
 
 clean:
-	rm -rf $(OUT) build .pytest_cache src/*.egg-info docs/_build docs/gallery
+	rm -rf $(OUT) build .pytest_cache .mypy_cache src/*.egg-info docs/_build docs/gallery
 	find . -path ./$(VENV) -prune -o -name __pycache__ -type d -prune -exec rm -rf {} +
 
 # clean, and also remove the virtualenv.

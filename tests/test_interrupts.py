@@ -124,9 +124,8 @@ def test_interrupted_scan(tmp_path):
 
 def test_interrupted_sweep_keeps_its_chunks(tmp_path):
     pytest.importorskip("zarr")
-    from test_sweep import TINY
-
     from electrogrowth.sweep.store import open_results
+    from tests.sweep.test_run import TINY
 
     (tmp_path / "s.toml").write_text(TINY)
     marks = tmp_path / "s.zarr" / "run" / "c"  # the completion marks of the chunks

@@ -1,6 +1,6 @@
 """Results as labelled arrays: ``xarray.Dataset`` with units and descriptions in attributes.
 
-The ``to_xarray()`` methods of :class:`~electrogrowth.BaseState`,
+The ``to_xarray()`` methods of :class:`~electrogrowth.UniformState`,
 :class:`~electrogrowth.LayeredState`, :class:`~electrogrowth.ScanResult` and
 :class:`~electrogrowth.Curve` call the functions here. Every variable carries ``units`` (in
 the package's units mu = eps = R_i = 1: "R_i", "mu", ...; "1" for a pure number) and

@@ -467,8 +467,8 @@ def stable_signs(m_range, n_range, probes, families) -> np.ndarray:
     every scan, curve and sweep of any tube (one layer or layered, any energy, radius and
     length): the unloaded incremental problem of a stress-free tube is strongly elliptic
     with no non-trivial solution, so no target vanishes along a path of unloaded tubes
-    joining two of them and none changes sign (tests/test_scan.py checks it across radii,
-    lengths, energies and layered tubes)."""
+    joining two of them and none changes sign (tests/bifurcation/test_scan.py checks it
+    across radii, lengths, energies and layered tubes)."""
     modes = scan_grid(m_range, n_range, probes, families)
     targets = functools.partial(impedance_targets, rtol=SCAN_STABLE_SIGNS)
     return unloaded_signs(SIGN_TUBE, modes, targets)

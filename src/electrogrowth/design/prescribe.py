@@ -110,7 +110,7 @@ class _Margins:
         if (mode, x) not in self.cache:
             try:
                 at = self.tube.at(self.key, x)
-                c = critical_value(at, *mode, self.solve_for, side=self.side)
+                c = critical_value(at, mode[0], mode[1], self.solve_for, side=self.side)
                 v = c.value if c.kind == Kind.BIFURCATION else self.sense * math.inf
             except ElectrogrowthError:
                 v = self.sense * math.inf
@@ -263,10 +263,10 @@ def _best_in_region(region, grid, goal: Target, margins: _Margins, scan):
         if iv.hi_edge:
             inside.append(iv.hi)
         inside = sorted(set(inside))
-        others = set()
+        found = set()
         for x in inside:
-            others |= set(_competitors(iv.mode, scan(x), goal))
-        others = tuple(sorted(others))
+            found |= set(_competitors(iv.mode, scan(x), goal))
+        others = tuple(sorted(found))
         if not others:
             continue
         scores = [margins.best_margin(iv.mode, others, x)[0] for x in inside]

@@ -13,7 +13,7 @@ an absolute step h = 1e-4 max(1, |p|) and h / 2, combined by Richardson extrapol
 targets of thick layered tubes at high m are strongly curved in p, where D(h) alone is off
 by ~1e-4 at h = 1e-4. Where p cannot be moved both ways (a bound of its range) a one-sided
 second-order difference is used.
-docs/design.md derives it and tests/test_design.py compares it with
+docs/design.md derives it and tests/design/test_sequence.py compares it with
 finite differences of full critical_value solves.
 """
 

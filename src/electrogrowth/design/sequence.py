@@ -273,7 +273,7 @@ def mode_values(tube, solve_for: str, key: str, modes, xs, *, side: str | None =
         vals = []
         for x in xs:
             try:
-                c = critical_value(tube.at(key, x), *mode, solve_for, side=side)
+                c = critical_value(tube.at(key, x), mode[0], mode[1], solve_for, side=side)
                 vals.append(c.value if c.kind == Kind.BIFURCATION else math.nan)
             except ElectrogrowthError:
                 vals.append(math.nan)

@@ -14,9 +14,10 @@ tubes (figures/gallery.py, docs/patterns.md): name -> function(*, quick) returni
 from collections.abc import Callable
 
 from .base_state import figure4, figure5
-from .critical import figure6, figure7, figure8, figure9, figure10
+from .critical import figure6, figure7, figure8
 from .gallery import mucosal_folding, one_layer_growth, pressurised_dielectric
 from .gallery_base import GalleryFigure
+from .growth import figure9, figure10
 from .style import FigureResult
 
 FIGURES: dict[int, Callable[..., FigureResult]] = {

@@ -16,6 +16,7 @@ from __future__ import annotations
 import dataclasses
 import math
 from collections.abc import Callable
+from typing import Any
 
 from ..basestate.layered import layered_threshold, pressure_response
 from ..model.layers import Layer, Tube
@@ -47,7 +48,7 @@ def mucosal_folding(*, quick: bool = False, mapper: Callable = map) -> GalleryFi
         if quick
         else (("hoop", hoop), ("cross-section", "growth[1].r+theta"), ("isotropic", "growth[1]"))
     )
-    ends = (("fixed stretch", {}), ("free ends", free))
+    ends: tuple[tuple[str, dict[str, Any]], ...] = (("fixed stretch", {}), ("free ends", free))
     groups = {  # the slowest first
         "kinds": [
             Job(bilayer(**loads), control, f"{what}, {label}", "h", 0.1)
@@ -147,7 +148,10 @@ def one_layer_growth(*, quick: bool = False, mapper: Callable = map) -> GalleryF
     (R = 1 .. R_o): critical g_theta and g_z against R_o, at lambda_z = 1 and with free ends."""
     opts = QUICK if quick else FULL
     radii = (2.0,) if quick else (1.4, 2.0, 3.0)
-    ends = (("fixed stretch", {"stretch": 1.0}), ("free ends", {"axial_force": 0.0}))
+    ends: tuple[tuple[str, dict[str, Any]], ...] = (
+        ("fixed stretch", {"stretch": 1.0}),
+        ("free ends", {"axial_force": 0.0}),
+    )
     groups = {
         (comp, label): [
             Job(Tube((Layer(r),), **loads), f"growth[1].{comp}", f"g_{comp}, {label}", "R_o", r)

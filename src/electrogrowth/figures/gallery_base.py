@@ -118,7 +118,7 @@ def solve(key: tuple, options: ScanOptions) -> tuple[CriticalPoint | None, str]:
     try:
         if mode is None:
             return scan_modes(tube, control, options=options).critical, ""
-        return critical_value(tube, *mode, control), ""
+        return critical_value(tube, mode[0], mode[1], control), ""
     except (NoBifurcationFound, ConvergenceError, BaseStateError) as exc:
         return None, str(exc)
 

@@ -57,7 +57,7 @@ class FigureResult:
 def new_figure(width: float, height: float, rows: int, cols: int):
     """An off-screen figure of ``width`` x ``height`` inches with a rows x cols grid of axes
     in the common style (ticks inside, on all four sides)."""
-    with mpl.rc_context(STYLE):
+    with mpl.rc_context(STYLE):  # type: ignore[arg-type]  # matplotlib: literal keys
         fig = Figure(figsize=(width, height), layout="constrained")
         axes = fig.subplots(rows, cols, squeeze=False)
     for ax in axes.flat:

@@ -29,23 +29,19 @@ applied to them ("differentiate the flux"). The pressure lives on the interior n
 (P_N - P_{N-2}), which keeps the discrete system free of a spurious pressure mode.
 Details, validation and convergence: docs/collocation.md.
 
-Mode families (docs/derivation-families.md). ``pairs`` (bit j set: kept) selects the
-unknowns and equations of a block that decouples exactly: bit 0 U_r and P with the r
-equilibrium and tr L = 0, bit 1 U_th with the theta equilibrium, bit 2 U_z with the z
-equilibrium, bit 3 Phi with div D = 0 (the same bits as the Stroh pairs of the impedance
-kernel). ALL_PAIRS (default) is the paper's ansatz; at m = 0 the theta block (torsion,
-u_th = U_th(r) cos kz) decouples, at k = 0 (n = 0, prismatic) the z block (anti-plane
-shear u_z = U_z(r) cos m th); nothing divides by k, so k = 0 needs no special case.
+Mode families: ``pairs`` selects the block of unknowns and equations that decouples
+(collocation_layout.py). ALL_PAIRS (default) is the paper's ansatz; at m = 0 the theta
+block (torsion) decouples, at k = 0 (n = 0, prismatic) the z block (anti-plane shear);
+nothing divides by k, so k = 0 needs no special case. The pieces: chebyshev.py (nodes,
+differentiation), nodal_law.py (the law at the nodes), collocation_impedance.py (z(r_o)).
 """
 
 from __future__ import annotations
 
-import dataclasses
 import math
 from collections.abc import Callable
 
 import numpy as np
-import numpy.typing as npt
 import scipy.linalg
 import scipy.optimize
 
@@ -55,101 +51,16 @@ from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
 from ..model.layers import Tube
 from ..model.materials import MODULI_INDEX
 from ..model.params import CONTROLS
-
-#: A linear map from the 5 nodes - 2 unknowns (U_r, U_th, U_z, P, Phi) to nodal values.
-Operator = npt.NDArray[np.complex128]
-
-_FIELDS = ("U_r", "U_th", "U_z", "P", "Phi")
-
-#: every block kept: the paper's ansatz (bit 0 U_r and P, 1 U_th, 2 U_z, 3 Phi)
-ALL_PAIRS = 0b1111
-#: the unknowns and the equations (row blocks) of each bit of ``pairs``
-_BIT_FIELDS = (("U_r", "P"), ("U_th",), ("U_z",), ("Phi",))
-_BIT_ROWS = (("r", "incompressible"), ("theta",), ("z",), ("maxwell",))
-#: the blocks that decouple: all; m = 0 without / with only the torsion (theta) block;
-#: k = 0 without / with only the anti-plane (z) block
-BLOCKS = (ALL_PAIRS, 0b1101, 0b0010, 0b1011, 0b0100)
-_SINGLE = (0b0010, 0b0100)  # one displacement field, one second-order equation
-
-
-def chebyshev_lobatto(nodes: int) -> tuple[FloatArray, FloatArray]:
-    """Chebyshev-Lobatto points x_j = cos(j pi / (nodes-1)) and the matrix of d/dx.
-
-    Trefethen's construction (Spectral Methods in MATLAB, ch. 6) with the diagonal set by
-    the negative row sum, so the matrix differentiates constants exactly.
-
-    >>> x, Dx = chebyshev_lobatto(5)
-    >>> bool(np.allclose(Dx @ x**3, 3 * x**2))
-    True
-    """
-    N = nodes - 1
-    j = np.arange(nodes)
-    x = np.cos(np.pi * j / N)
-    c = np.where((j == 0) | (j == N), 2.0, 1.0) * (-1.0) ** j
-    dX = x[:, None] - x[None, :]
-    Dx = np.outer(c, 1.0 / c) / (dX + np.eye(nodes))
-    Dx -= np.diag(Dx.sum(axis=1))
-    return x, Dx
-
-
-def interior_interpolation(nodes: int) -> FloatArray:
-    """Values at all ``nodes`` Lobatto points of the degree nodes-3 polynomial through the
-    interior points x_1 .. x_{nodes-2} (the pressure space of the P_N - P_{N-2} scheme).
-
-    Barycentric formula; the interior points are the zeros of U_{N-1}, whose barycentric
-    weights are (-1)^j sin^2(j pi / N).
-
-    >>> P = interior_interpolation(8)
-    >>> x = chebyshev_lobatto(8)[0]
-    >>> bool(np.allclose(P @ x[1:-1]**5, x**5))
-    True
-    """
-    N = nodes - 1
-    j = np.arange(1, N)
-    x = np.cos(np.pi * np.arange(nodes) / N)
-    y, w = x[1:-1], (-1.0) ** j * np.sin(np.pi * j / N) ** 2
-    P = np.zeros((nodes, N - 1))
-    P[1:-1] = np.eye(N - 1)
-    for row in (0, N):
-        c = w / (x[row] - y)
-        P[row] = c / c.sum()
-    return P
-
-
-def full_moduli(moduli: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
-    """Expand the 23 principal moduli (last axis, order MODULI_NAMES) into full tensors.
-
-    Returns A[p, i, q, j, ...], G[p, i, q, ...] and K[p, q, ...] with the node axis last,
-    filled with the symmetries A_piqj = A_qjpi and Gamma_piq = Gamma_ipq
-    (docs/conventions.md).
-    """
-    mod = np.moveaxis(np.asarray(moduli, float), -1, 0)
-    shape = mod.shape[1:]
-    A = np.zeros((3, 3, 3, 3) + shape)
-    G = np.zeros((3, 3, 3) + shape)
-    K = np.zeros((3, 3) + shape)
-    for name, k in MODULI_INDEX.items():
-        idx = tuple(int(c) - 1 for c in name[1:])
-        if name[0] == "A":
-            p, i, q, j = idx
-            A[p, i, q, j] = A[q, j, p, i] = mod[k]
-        elif name[0] == "G":
-            p, i, q = idx
-            G[p, i, q] = G[i, p, q] = mod[k]
-        else:
-            K[idx] = K[idx[::-1]] = mod[k]
-    return A, G, K
-
-
-@dataclasses.dataclass(frozen=True)
-class _Grid:
-    """Nodes of one discretisation: r = h (c + x), everything in units of h."""
-
-    r: FloatArray  # physical current radius at the nodes (outer face first)
-    rh: FloatArray  # r / h
-    Dx: FloatArray  # d/d(r/h) = d/dx
-    kh: float  # k h
-    h: float
+from .chebyshev import chebyshev_lobatto, interior_interpolation
+from .collocation_layout import (
+    _FIELDS,
+    ALL_PAIRS,
+    _block_indices,
+    _layout,
+    check_pairs,
+    stable_det_sign,
+)
+from .nodal_law import Operator, _fluxes_at, _Grid
 
 
 def _grid(state, n: float, nodes: int) -> _Grid:
@@ -162,126 +73,9 @@ def _grid(state, n: float, nodes: int) -> _Grid:
     return _Grid(r=r, rh=r / h, Dx=Dx, kh=k * h, h=h)
 
 
-def _layout(nn: int) -> dict[str, slice]:
-    """Column ranges of the unknowns: nn values of U_r, U_th, U_z, Phi; nn - 2 of P."""
-    sizes = {"U_r": nn, "U_th": nn, "U_z": nn, "P": nn - 2, "Phi": nn}
-    out, start = {}, 0
-    for f in _FIELDS:
-        out[f] = slice(start, start + sizes[f])
-        start += sizes[f]
-    return out
-
-
-def _row_layout(nn: int) -> dict[str, slice]:
-    """Row ranges of the equations, in the order of :func:`collocation_matrix`."""
-    return {
-        "r": slice(0, nn),
-        "theta": slice(nn, 2 * nn),
-        "z": slice(2 * nn, 3 * nn),
-        "maxwell": slice(3 * nn, 4 * nn),
-        "incompressible": slice(4 * nn, 5 * nn - 2),
-    }
-
-
-def check_pairs(pairs) -> int:
-    """``pairs`` as an int, one of BLOCKS, else ParameterError."""
-    if isinstance(pairs, bool) or pairs not in BLOCKS:
-        raise ParameterError(
-            f"pairs = {pairs!r} is invalid; choose a block that decouples:"
-            f" one of {BLOCKS} (bits: U_r + P, U_th, U_z, Phi)"
-        )
-    return int(pairs)
-
-
-def stable_det_sign(pairs: int, nodes: int) -> float:
-    """Sign of det M of the block ``pairs`` on the unloaded tube (stable in every mode).
-
-    -1 for the whole matrix. A block that decouples has a sign alternating with ``nodes``:
-    the lone theta or z block (a scalar second-order problem, nodes x nodes) has
-    -(-1)^nodes, its complement (-1)^nodes, so their product is the whole matrix's -1
-    (moving a block of nodes rows past blocks of nodes rows is an even permutation).
-    Measured for nodes = 6..40, every mode and tube tried (tests/test_families.py).
-    """
-    if pairs == ALL_PAIRS:
-        return -1.0
-    alt = -1.0 if nodes % 2 else 1.0
-    return -alt if pairs in _SINGLE else alt
-
-
-def block_indices(nn: int, pairs: int) -> tuple[np.ndarray, np.ndarray]:
-    """(rows, columns) of the collocation matrix kept by ``pairs``, in their order."""
-    cols, rows = _layout(nn), _row_layout(nn)
-    c = [
-        np.arange(5 * nn - 2)[cols[f]]
-        for j in range(4)
-        if (pairs >> j) & 1
-        for f in _BIT_FIELDS[j]
-    ]
-    r = [
-        np.arange(5 * nn - 2)[rows[e]] for j in range(4) if (pairs >> j) & 1 for e in _BIT_ROWS[j]
-    ]
-    return np.sort(np.concatenate(r)), np.sort(np.concatenate(c))
-
-
-def _operators(grid: _Grid, m: float) -> tuple[Operator, Operator, Operator]:
-    """Nodal maps of L_jq = du_j/dx_q (paper eq. 52), E_p = -(grad phidot)_p and pdot.
-
-    With u = (U_r, -i U_th, -i U_z) e^{i(m th + k z)}, phidot = Phi e^{...}, d/dth -> i m,
-    d/dz -> i k. Returns L[j, q], E[p] and pdot, each of shape (nodes, 5 nodes - 2).
-    """
-    nn = grid.rh.size
-    cols = _layout(nn)
-    eye, D, inv_r, ik = np.eye(nn), grid.Dx, np.diag(1.0 / grid.rh), 1j * grid.kh
-
-    def op(**parts):
-        out = np.zeros((nn, 5 * nn - 2), complex)
-        for f, block in parts.items():
-            out[:, cols[f]] = block
-        return out
-
-    Ur, Ut, Uz = "U_r", "U_th", "U_z"
-    L = np.empty((3, 3, nn, 5 * nn - 2), complex)
-    L[0, 0] = op(**{Ur: D})  # dU_r/dr
-    L[0, 1] = op(**{Ur: 1j * m * inv_r, Ut: 1j * inv_r})  # (d_th u_r - u_th)/r
-    L[0, 2] = op(**{Ur: ik * eye})  # d_z u_r
-    L[1, 0] = op(**{Ut: -1j * D})  # d_r u_th
-    L[1, 1] = op(**{Ur: inv_r, Ut: m * inv_r})  # (d_th u_th + u_r)/r
-    L[1, 2] = op(**{Ut: grid.kh * eye})  # d_z u_th
-    L[2, 0] = op(**{Uz: -1j * D})  # d_r u_z
-    L[2, 1] = op(**{Uz: m * inv_r})  # d_th u_z / r
-    L[2, 2] = op(**{Uz: grid.kh * eye})  # d_z u_z
-    E = np.stack([op(Phi=-D), op(Phi=-1j * m * inv_r), op(Phi=-ik * eye)])
-    pdot = op(P=interior_interpolation(nn))
-    return L, E, pdot
-
-
-def _contract(T: FloatArray, X: Operator, out_rank: int) -> Operator:
-    """sum over the trailing tensor indices of T[..., n] X[..., n, c] over the non-zero
-    entries of T only (the moduli are sparse: 21 of 81 A, 7 of 27 Gamma)."""
-    out = np.zeros(T.shape[:out_rank] + X.shape[-2:], complex)
-    for idx in np.argwhere(np.any(T != 0, axis=-1)):
-        out[tuple(idx[:out_rank])] += T[tuple(idx)][:, None] * X[tuple(idx[out_rank:])]
-    return out
-
-
 def _fluxes(state, grid: _Grid, m: float, layer: int = 0) -> tuple[Operator, Operator, Operator]:
     """Nodal maps of L, the incremental stress S_pi and displacement D_q in ``layer``."""
     return _fluxes_at(*_layer_fields(state, layer, grid.r), grid, m)
-
-
-def _fluxes_at(moduli, p, grid: _Grid, m: float) -> tuple[Operator, Operator, Operator]:
-    """The maps of :func:`_fluxes` from the moduli and p at the nodes."""
-    A, G, K = full_moduli(moduli)
-    L, E, pdot = _operators(grid, m)
-    Lt = L.transpose(1, 0, 2, 3)  # Lt[q, j] = L_jq
-    # E_p = Gamma_qjp L_jq + K_pq D_q  =>  D = K^{-1} (E - Gamma_qjp L_jq)
-    Kinv = np.moveaxis(np.linalg.inv(np.moveaxis(K, -1, 0)), 0, -1)
-    Dq = _contract(Kinv, E - _contract(G.transpose(2, 0, 1, 3), Lt, 1), 1)
-    # S_pi = A_piqj L_jq + Gamma_piq D_q + p L_pi - pdot delta_pi
-    S = _contract(A, Lt, 2) + _contract(G, Dq, 2) + p[:, None] * L
-    for a in range(3):
-        S[a, a] -= pdot
-    return L, S, Dq
 
 
 def _layer_grid(state, k: int, n: float, nodes: int) -> _Grid:
@@ -337,7 +131,7 @@ def collocation_matrix(
 
     Parameters
     ----------
-    state : BaseState
+    state : State
         The axisymmetric base state (``electrogrowth.basestate.tube.solve_base_state``): needs
         ``params``, ``r_i``, ``r_o``, ``current_length``, ``face_pressures``, ``moduli(R)``
         and ``pressure(R)`` (or a layered.LayeredState).
@@ -439,58 +233,8 @@ def _assemble(state, m: float, n: float, nodes: int):
     return M, S, Dq, grid
 
 
-def _block_indices(nn: int, pairs: int, layers: int) -> tuple[np.ndarray, np.ndarray]:
-    """:func:`block_indices` of every layer block, with the layers' offsets."""
-    rows, cols = block_indices(nn, pairs)
-    width = 5 * nn - 2
-    offsets = width * np.arange(layers)[:, None]
-    return (rows + offsets).ravel(), (cols + offsets).ravel()
-
-
 def _layers(state) -> int:
     return len(state.tube.layers)
-
-
-def collocation_impedance(
-    state, m: int, n: float, *, nodes: int = 40, pairs: int = ALL_PAIRS
-) -> FloatArray:
-    """The conditional impedance z(r_o) of the kept ``pairs``, by collocation.
-
-    z is defined as in the Riccati method (S = z U at r_o for the solutions with
-    S(r_i) = 0; Stroh variables U = [U_r, U_th, U_z, r Delta_r],
-    S = [r Sigma_rr, r Sigma_rth, r Sigma_rz, -Phi], docs/derivation-stroh.md, units
-    R_i = 1), but computed without the Stroh matrix: for each kept pair j the collocated
-    problem of :func:`collocation_matrix` with its outer-face condition S_j(r_o) = 0
-    replaced by U_j(r_o) = 1 (the other kept U_i(r_o) = 0) is solved, and S(r_o) is read
-    off the incremental law. A (kept x kept) array, rows and columns in pair order;
-    singular where the mode is at bifurcation, infinite at a pole of z.
-    """
-    pairs = check_pairs(pairs)
-    nn, width, layers = int(nodes), 5 * int(nodes) - 2, _layers(state)
-    M, S, Dq, grid = _assemble(state, m, n, nn)
-    cols, r_o, h = _layout(nn), grid.r[0], grid.h  # node 0 is the outer face
-    off = width * (layers - 1)  # the outermost layer's block
-    # outer-face maps of the Stroh U and S (physical units) on the scaled unknowns
-    U_out = np.zeros((4, width * layers))
-    for j, f in enumerate(("U_r", "U_th", "U_z")):
-        U_out[j, off + cols[f].start] = h
-    U_out[3, off:] = r_o * Dq[0][0].real
-    S_out = np.zeros((4, width * layers))
-    S_out[0, off:] = r_o * S[0, 0][0].real
-    S_out[1, off:] = r_o * (1j * S[0, 1][0]).real
-    S_out[2, off:] = r_o * (1j * S[0, 2][0]).real
-    S_out[3, off + cols["Phi"].start] = -h
-    face_rows = [off, off + nn, off + 2 * nn, off + 3 * nn]  # S_rr, S_rth, S_rz, Phi at r_o
-    A = M.real.copy()
-    A[face_rows] = U_out
-    rows, keep_cols = _block_indices(nn, pairs, layers)
-    kept = [j for j in range(4) if (pairs >> j) & 1]
-    rhs = np.zeros((width * layers, len(kept)))
-    for c, j in enumerate(kept):
-        rhs[face_rows[j], c] = 1.0
-    v = np.zeros((width * layers, len(kept)))
-    v[keep_cols] = np.linalg.solve(A[np.ix_(rows, keep_cols)], rhs[rows])
-    return (S_out @ v)[kept]
 
 
 def collocation_target(

@@ -13,7 +13,7 @@ error estimates that DOP853 combines into its step-size control.
 
 The coefficients are SciPy's transcription of DOP853 (scipy/integrate/_ivp/
 dop853_coefficients.py, BSD licence), copied here digit for digit: only the 12 stages of
-a step and the error weights, not the dense-output extension. tests/test_impedance.py
+a step and the error weights, not the dense-output extension. tests/incremental/test_impedance.py
 checks that they equal SciPy's exactly.
 """
 

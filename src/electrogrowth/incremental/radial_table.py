@@ -172,7 +172,7 @@ def _dedupe(coef, degree):
 
 
 def build_table(state, *, tol: float = 1e-15, max_nodes: int = 129) -> RadialTable:
-    """Tabulate a base state (a tube.BaseState or a layered.LayeredState), segment by
+    """Tabulate a base state (a UniformState or a LayeredState), segment by
     segment.
 
     The number of nodes of a segment doubles from 17 until the trailing coefficients of

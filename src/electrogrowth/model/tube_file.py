@@ -24,6 +24,7 @@ from __future__ import annotations
 import inspect
 import re
 from pathlib import Path
+from typing import Any
 
 from ..errors import ConfigError, MaterialError, ParameterError
 from .energy_text import energy_material
@@ -115,7 +116,7 @@ def _layer(table, where: tuple[str, ...], inner: float) -> Layer:
         args = {p: number(table, where, p) for p in params if p in table}
         at = where + ((next(iter(args)),) if len(args) == 1 else ("material",))
         material = _checked(lambda: material_by_name(name, **args), at)
-    fields = {"outer_radius": b, "material": material}
+    fields: dict[str, Any] = {"outer_radius": b, "material": material}
     for key in ("shear_modulus", "permittivity"):
         if key in table:
             fields[key] = number(table, where, key)
@@ -176,8 +177,8 @@ def line_of(text: str, key: tuple[str, ...]) -> int | None:
     lines = text.splitlines()
     if key[0] != "layers" or len(key) == 1:
         for n, line in enumerate(lines, 1):
-            if _HEADER.match(line):
-                if key[0] == "layers" and _HEADER.match(line).group(1) == "layers":
+            if header := _HEADER.match(line):
+                if key[0] == "layers" and header.group(1) == "layers":
                     return n
                 break
             if (hit := _KEY.match(line)) and hit.group(1) == key[0]:

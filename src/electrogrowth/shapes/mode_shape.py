@@ -7,14 +7,15 @@ At a critical point the incremental problem (paper eq. incremental-solutions)
 
 has a non-trivial solution, the Stroh vector eta = [U; S] (stroh.py),
 U = [U_r, U_th, U_z, r Delta_r], S = [r Sigma_rr, r Sigma_rth, r Sigma_rz, -Phi], with
-S(r_i) = S(r_o) = 0. Two independent routes compute it:
+S(r_i) = S(r_o) = 0. Two independent routes compute it (riccati.py, null_vector.py):
 
 * "impedance" (paper eq. two_Riccati): integrate the Riccati equation for the conditional
   impedance z (S = z U, z(r_i) = 0) outwards, keeping z(r) as a dense interpolant; take
   U(r_o) in the null space of z(r_o); integrate dU/dr = (G1 + G2 z) U / r inwards from r_o
   and recover S = z U. Inwards is the stable direction: the inner-face subspace is
   dominated by solutions that grow outwards (like exp(k r)), so G1 + G2 z has mostly
-  growing directions outwards and decaying ones inwards (tested in tests/test_modes.py).
+  growing directions outwards and decaying ones inwards (tested in
+  tests/shapes/test_mode_shape.py).
   z may have a pole inside the wall (the subspace is then not a graph over U); the
   integration fails there and the collocation route is used instead (``route``, ``note``).
 * "collocation": the null vector of the Chebyshev collocation matrix (collocation.py),
@@ -41,22 +42,17 @@ import dataclasses
 import math
 
 import numpy as np
-from numpy.polynomial import chebyshev as cheb
-from scipy.integrate import solve_ivp
 from scipy.interpolate import CubicSpline
 
-from .._types import FloatArray, State
+from .._types import FloatArray
 from ..basestate.tube import solve_base_state
 from ..bifurcation.critical import CriticalPoint
-from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
-from ..incremental.collocation import mode_shape_collocation
-from ..incremental.impedance import ALL_PAIRS, face_impedance, impedance_scale
-from ..incremental.impedance_reference import kept_pairs, layer_fields
-from ..incremental.stroh import stroh_matrix
+from ..errors import NoBifurcationFound, ParameterError
 from ..incremental.targets import Family, Method, check_method, check_mode
 from ..model.layers import Tube
-from ..model.materials import MODULI_INDEX
 from ..outcomes import Kind
+from .null_vector import collocation_shape
+from .riccati import _PoleError, face_impedances, impedance_shape
 
 #: Components of the Stroh vector eta, in order (stroh.py, SIGN_PHI = -1).
 ETA_NAMES = (
@@ -227,7 +223,7 @@ def mode_shape(
         k,
         params,
         method.value,
-        boundary_residual(eta, _face_impedances(state, m, k)),
+        boundary_residual(eta, face_impedances(state, m, k)),
         note,
         family,
         state.current_length,
@@ -262,164 +258,6 @@ def _unpack(critical) -> tuple[Tube, int, int, Family]:
     return params, int(m), int(n), fam
 
 
-# -- impedance route -------------------------------------------------------------------------
-
-
-class _PoleError(ConvergenceError):
-    """The Riccati integration for z stopped (a pole of the impedance inside the wall)."""
-
-
-def stroh_at(state: State, R: float, m: float, k: float) -> FloatArray:
-    """The Stroh matrix G (8x8) at reference radius R (moduli and p of the base state)."""
-    G = np.empty((8, 8))
-    r = float(state.radius(R))
-    mod = np.ascontiguousarray(state.moduli(np.array(R)), dtype=float)
-    stroh_matrix(mod, float(state.pressure(np.array(R))), float(m), k * r, G)
-    return G
-
-
-def impedance_shape(
-    state: State,
-    m: int,
-    k: float,
-    R: FloatArray,
-    *,
-    rtol: float = 1e-12,
-    pairs: int = ALL_PAIRS,
-) -> FloatArray:
-    """Un-normalised eta at R by the paper's two-step impedance method (eq. two_Riccati),
-    layer by layer (eta, hence z = S U^-1, is continuous across a bonded interface):
-
-    1. dz/dR = w (G3 + G4 z - z G1 - z G2 z), w = (dr/dR) / r, from z(1) = z_P(P_i) (0 on a
-       traction-free face) to R = R_N (dense);
-    2. U(r_o): right singular vector of the smallest singular value of z(r_o) - z_P(P_o);
-    3. dU/dR = w (G1 + G2 z) U from R_N down to 1; S = z U.
-
-    On the block of the kept ``pairs`` (a mode family); the other components are 0.
-    Raises _PoleError when step 1 fails or z blows up (a pole of the impedance).
-    """
-    keep = kept_pairs(pairs)
-    Ro = state.tube.outer_radius
-    z = impedance_profile(state, m, k, rtol=rtol, pairs=pairs)
-    zo = _face_impedances(state, m, k)[1][np.ix_(keep, keep)]
-    U_o = np.linalg.svd(z(Ro) - zo)[2][-1]
-    U = transport(state, m, k, z, U_o, (Ro, 1.0), R[::-1], rtol=rtol, pairs=pairs)[:, ::-1]
-    S = np.stack([z(x) @ U[:, j] for j, x in enumerate(R)], axis=1)
-    eta = np.zeros((8, R.size))
-    eta[keep], eta[[4 + j for j in keep]] = U, S
-    return eta
-
-
-def _stroh_blocks(pairs: int):
-    """A function (fields, m, k, R) -> (w, G1, G2, G3, G4): the Stroh matrix's blocks on the
-    kept ``pairs`` at R, times nothing, and w = (dr/dR) / r of the layer of ``fields``."""
-    keep = kept_pairs(pairs)
-    rows, d = np.array(keep + [4 + j for j in keep]), len(keep)
-    G = np.empty((8, 8))
-
-    def blocks(fields, m, k, R):
-        mod, p, r, w = fields(R)
-        stroh_matrix(np.ascontiguousarray(mod, dtype=float), p, float(m), k * r, G)
-        Gk = G[np.ix_(rows, rows)]
-        return w, Gk[:d, :d], Gk[:d, d:], Gk[d:, :d], Gk[d:, d:]
-
-    return blocks
-
-
-def impedance_profile(
-    state: State, m: int, k: float, *, rtol: float = 1e-12, pairs: int = ALL_PAIRS
-):
-    """z(R) for R in [1, R_N]: the Riccati equation (paper eq. Riccati) integrated by SciPy
-    DOP853 from z(1) = z_P(P_i), layer by layer (z continuous at interfaces), as a callable
-    R -> symmetric d x d (dense output), d the number of kept ``pairs`` (4 for the paper's
-    ansatz)."""
-    keep = kept_pairs(pairs)
-    d = len(keep)
-    scale = impedance_scale(float(m), float(k), float(state.r_o))
-    blocks = _stroh_blocks(pairs)
-    z0 = _face_impedances(state, m, k)[0][np.ix_(keep, keep)].ravel()
-    pieces = []
-    for a, b, fields in layer_fields(state):
-
-        def rhs(R, y, fields=fields):
-            w, G1, G2, G3, G4 = blocks(fields, m, k, R)
-            z = y.reshape(d, d)
-            return (w * (G3 + G4 @ z - z @ G1 - z @ G2 @ z)).ravel()
-
-        with np.errstate(all="ignore"):
-            ric = solve_ivp(
-                rhs, (a, b), z0, method="DOP853", rtol=rtol, atol=1e-3 * rtol, dense_output=True
-            )
-        big = np.abs(ric.y).max() if ric.y.size else np.inf
-        if ric.status != 0 or not np.isfinite(big) or big > 1e8 * scale**2:
-            r_stop = float(state.radius(min(max(ric.t[-1], a), b), side="outer"))
-            raise _PoleError(
-                f"the impedance z has a pole near r = {r_stop:.6g}"
-                f" (Riccati integration stopped: {ric.message})"
-            )
-        pieces.append((b, ric.sol))
-        z0 = ric.y[:, -1]
-    ends = np.array([b for b, _ in pieces])
-
-    def z(x: float) -> FloatArray:
-        sol = pieces[min(int(np.searchsorted(ends, x)), len(pieces) - 1)][1]
-        zx = sol(x).reshape(d, d)
-        return 0.5 * (zx + zx.T)  # symmetric exactly (docs/derivation-stroh.md, sec. 4)
-
-    return z
-
-
-def transport(
-    state: State,
-    m: int,
-    k: float,
-    z,
-    U0: FloatArray,
-    span: tuple[float, float],
-    R_eval: FloatArray,
-    *,
-    rtol: float = 1e-12,
-    pairs: int = ALL_PAIRS,
-) -> FloatArray:
-    """Solve dU/dR = w (G1 + G2 z) U (paper eq. two_Riccati, second part) from
-    U(span[0]) = U0 to span[1], layer by layer (U continuous at interfaces); U at ``R_eval``
-    (in the order of integration), (d, len), on the block of the kept ``pairs`` (d of
-    them; 4 for the paper's ansatz).
-
-    Stable inwards (span = (R_N, 1)); outwards errors grow like exp(2 k (r_o - r_i)).
-    """
-    blocks = _stroh_blocks(pairs)
-    start, end = span
-    sense = 1.0 if end > start else -1.0
-    R_eval = np.asarray(R_eval, float)
-    out = np.empty((len(U0), R_eval.size))
-    segments = layer_fields(state)
-    U = np.asarray(U0, float)
-    for a, b, fields in segments if sense > 0 else segments[::-1]:
-        lo, hi = max(a, min(span)), min(b, max(span))
-        if not lo < hi:
-            continue
-        t0, t1 = (lo, hi) if sense > 0 else (hi, lo)
-
-        def rhs(x, U, fields=fields):
-            w, G1, G2, _, _ = blocks(fields, m, k, x)
-            return w * ((G1 + G2 @ z(x)) @ U)
-
-        here = np.flatnonzero(((R_eval - t0) * sense >= 0) & ((R_eval - t1) * sense <= 0))
-        sol = solve_ivp(
-            rhs, (t0, t1), U, method="DOP853", dense_output=True, rtol=rtol, atol=1e-3 * rtol
-        )
-        if sol.status != 0:
-            raise _PoleError(f"the integration of U failed: {sol.message}")
-        if here.size:
-            out[:, here] = sol.sol(R_eval[here])
-        U = sol.y[:, -1]
-    return out
-
-
-# -- collocation route -----------------------------------------------------------------------
-
-
 # -- normalisation ---------------------------------------------------------------------------
 
 
@@ -450,80 +288,3 @@ def boundary_residual(eta: FloatArray, faces=(None, None)) -> float:
         res = eta[4:, col] - (0.0 if zp is None else zp @ eta[:4, col])
         ends.append(np.abs(res).max())
     return float(max(ends) / top)
-
-
-def _face_impedances(state, m: float, k: float):
-    """z_P of the faces of a layered state (incremental/impedance.py ``face_impedance``)."""
-    return tuple(
-        face_impedance(P, float(m), k * r, ALL_PAIRS, 1.0)
-        for P, r in zip(state.face_pressures, (state.r_i, state.r_o))
-    )
-
-
-def collocation_shape(
-    state: State, m: int, n: int, R: FloatArray, *, nodes: int = 40, pairs: int = ALL_PAIRS
-) -> FloatArray:
-    """Un-normalised eta at R from the collocation null vector.
-
-    U_r, U_th, U_z, Phi and P are the nodal values of polynomials in r (degree nodes - 1;
-    P from the collocation's interior interpolation); they are interpolated, differentiated
-    where needed, and the rest of eta follows from the incremental law (stroh.py rows 1, 2,
-    7 for r Sigma_rth, r Sigma_rz, r Delta_r; S_rr from docs/derivation-stroh.md):
-
-        r Sigma_rr = r [(A1111 + p) U_r' + A1122 (U_r + m U_th)/r + A1133 k U_z
-                        + Gamma111 Delta_r - P].
-
-    ``pairs``: the block of a mode family (collocation.py); the other fields are 0. Layer
-    by layer: each layer's nodal values are its own polynomial; a sample on an interface is
-    taken from the layer inside it, eta being continuous there.
-    """
-    shape = mode_shape_collocation(state, m, n, nodes=nodes, pairs=pairs)
-    radii = state.tube.radii
-    layer_of = np.clip(np.searchsorted(np.array(radii[1:-1]), R, side="left"), 0, len(radii) - 2)
-    k = n * math.pi / state.current_length
-    eta = np.empty((8, R.size))
-    for j in range(len(radii) - 1):
-        sel = layer_of == j
-        if not sel.any():
-            continue
-        part = {f: v[j * nodes : (j + 1) * nodes] for f, v in shape.items()}
-        side = "inner" if j < len(radii) - 2 else "outer"  # R on the outer end is this layer's
-        eta[:, sel] = _eta_from_nodes(state, part, m, k, R[sel], side)
-    return eta
-
-
-def _eta_from_nodes(state, part: dict, m: float, k: float, R: FloatArray, side=None):
-    """eta at R (one layer: ``side`` picks it at an interface of a layered state) from its
-    nodal U_r, U_th, U_z, Phi, P (see collocation_shape)."""
-    r_nodes = part["r"]
-    domain = [r_nodes.min(), r_nodes.max()]
-    poly = {
-        f: cheb.Chebyshev.fit(r_nodes, part[f], len(r_nodes) - 1, domain=domain)
-        for f in ("U_r", "U_th", "U_z", "Phi", "P")
-    }
-    where = {} if side is None else {"side": side}
-    r = state.radius(R, **where)
-    mod = state.moduli(R, **where)
-    p = state.pressure(R, **where)
-    val = {f: q(r) for f, q in poly.items()}
-    der = {f: poly[f].deriv()(r) for f in ("U_r", "U_th", "U_z", "Phi")}
-    eta = np.empty((8, R.size))
-    eta[0], eta[1], eta[2], eta[7] = val["U_r"], val["U_th"], val["U_z"], -val["Phi"]
-    G = np.empty((8, 8))
-    for j in range(R.size):
-        stroh_matrix(np.ascontiguousarray(mod[j]), float(p[j]), float(m), k * r[j], G)
-        e = eta[:, j]
-        # row 7: r (-Phi)' = G70 U_r + G71 U_th + G72 U_z + G73 r Delta_r
-        e[3] = (-r[j] * der["Phi"][j] - G[7, :3] @ e[:3]) / G[7, 3]
-        # rows 1, 2: r U' = G[i, :4] U + G[i, 5 or 6] r Sigma + G[i, 7] (-Phi)
-        e[5] = (r[j] * der["U_th"][j] - G[1, :4] @ e[:4] - G[1, 7] * e[7]) / G[1, 5]
-        e[6] = (r[j] * der["U_z"][j] - G[2, :4] @ e[:4] - G[2, 7] * e[7]) / G[2, 6]
-    a = {name: mod[..., MODULI_INDEX[name]] for name in ("A1111", "A1122", "A1133", "G111")}
-    eta[4] = r * (
-        (a["A1111"] + p) * der["U_r"]
-        + a["A1122"] * (eta[0] + m * eta[1]) / r
-        + a["A1133"] * k * eta[2]
-        + a["G111"] * eta[3] / r
-        - val["P"]
-    )
-    return eta

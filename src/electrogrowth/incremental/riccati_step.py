@@ -1,0 +1,166 @@
+"""One step of the impedance kernel (impedance.py), compiled: the Riccati equation of the
+scaled impedance z~ in its current chart, with the base state read off the Chebyshev table,
+and a Dormand-Prince 8(5,3) step (the tableau of dop853.py) with DOP853's error norm.
+
+    dz~/dR = w (G~3 - z~ G~1 - (z~ G~1)^T - z~ G~2 z~),   w = (dr/dR) / r,
+
+using G~4 = -G~1^T (G Hamiltonian); the chart's permutation and signs (charts.py) are held
+in the scratch record :class:`_Work`, allocated once per integration.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numba as nb
+import numpy as np
+
+from .dop853 import E3, E5, N_STAGES, ORDER, A, B, C
+from .stroh import stroh_matrix
+
+_NS = N_STAGES
+
+
+_A = np.ascontiguousarray(A)
+
+
+_B = np.ascontiguousarray(B)
+
+
+_C = np.ascontiguousarray(C)
+
+
+_E3 = np.ascontiguousarray(E3)
+
+
+_E5 = np.ascontiguousarray(E5)
+
+
+_EXPONENT = -1.0 / ORDER  # step-size exponent of the error estimate
+
+
+class _Work(NamedTuple):
+    """Scratch arrays of one integration, allocated once: a step allocates nothing."""
+
+    vals: np.ndarray  # (2 F,) the two Clenshaw recurrences of the F table functions
+    mod: np.ndarray  # (23,) the moduli at the current radius
+    G: np.ndarray  # (8, 8) the Stroh matrix
+    Gt: np.ndarray  # (8, 8) its blocks in the current chart, scaled
+    P: np.ndarray  # (4, 8) z~ [G~1 G~2]
+    perm: np.ndarray  # (8,) the current chart ...
+    mult: np.ndarray  # (8, 8) ... and its signs times the scaling of S
+
+
+@nb.njit(cache=True)
+def _new_work(table):
+    return _Work(
+        np.empty(2 * table.coef.shape[1]),
+        np.empty(23),
+        np.empty((8, 8)),
+        np.empty((8, 8)),
+        np.empty((4, 8)),
+        np.empty(8, np.int64),
+        np.empty((8, 8)),
+    )
+
+
+@nb.njit(cache=True)
+def _base_at(R, table, seg, vals, mod):
+    """Fill mod[23] at R in segment ``seg``; return (p, r, w = (dr/dR)/r).
+
+    One Clenshaw recurrence for all distinct functions of the segment at once (the
+    coefficient rows are zero-padded), so the inner loop runs across functions and
+    vectorises.
+    """
+    coef, fmap = table.coef[seg], table.fmap[seg]
+    a, b = table.bounds[seg], table.bounds[seg + 1]
+    x2 = 2.0 * (2.0 * R - a - b) / (b - a)
+    nf, width = table.n_funcs[seg], coef.shape[1]
+    b1 = vals  # reuse scratch: vals[:nf] = b1, vals[nf:2nf] = b2
+    for f in range(2 * nf):
+        b1[f] = 0.0
+    for j in range(width - 1, 0, -1):
+        for f in range(nf):
+            t = x2 * b1[f] - b1[nf + f] + coef[f, j]
+            b1[nf + f] = b1[f]
+            b1[f] = t
+    for f in range(nf):
+        b1[f] = 0.5 * x2 * b1[f] - b1[nf + f] + coef[f, 0]
+    for f in range(23):
+        mod[f] = vals[fmap[f]]
+    return vals[fmap[23]], vals[fmap[24]], vals[fmap[25]]
+
+
+@nb.njit(cache=True)
+def _rhs(R, z, m, k, table, seg, work, out):
+    """dz~/dR = w (G3 - z G1 - (z G1)^T - z G2 z), using G4 = -G1^T (G Hamiltonian)."""
+    p, r, w = _base_at(R, table, seg, work.vals, work.mod)
+    G, Gt, P, perm, mult = work.G, work.Gt, work.P, work.perm, work.mult
+    stroh_matrix(work.mod, p, m, k * r, G)
+    for a in range(8):  # the blocks G~1, G~2 (rows 0-3) and G~3 (rows 4-7, cols 0-3)
+        for b in range(8 if a < 4 else 4):
+            Gt[a, b] = G[perm[a], perm[b]] * mult[a, b]
+    for i in range(4):
+        for j in range(4):
+            a1 = 0.0
+            a2 = 0.0
+            for q in range(4):
+                a1 += z[i, q] * Gt[q, j]
+                a2 += z[i, q] * Gt[q, 4 + j]
+            P[i, j] = a1
+            P[i, 4 + j] = a2
+    for i in range(4):
+        for j in range(i, 4):
+            acc = Gt[4 + i, j] - P[i, j] - P[j, i]
+            for q in range(4):
+                acc -= P[i, 4 + q] * z[q, j]
+            out[i, j] = w * acc
+            out[j, i] = w * acc
+
+
+@nb.njit(cache=True)
+def _step(R, h, z, m, k, table, seg, work, K, ztmp, znew):
+    """One DOP853 step of size h from (R, z), given K[0] = dz~/dR there.
+
+    Writes the 8th-order solution at R + h into ``znew`` and the stages into K[1..12],
+    K[12] = dz~/dR at (R + h, znew) being the last one of the error estimate.
+    """
+    for st in range(1, _NS):
+        for i in range(4):
+            for j in range(4):
+                acc = 0.0
+                for q in range(st):
+                    acc += _A[st, q] * K[q, i, j]
+                ztmp[i, j] = z[i, j] + h * acc
+        _rhs(R + _C[st] * h, ztmp, m, k, table, seg, work, K[st])
+    for i in range(4):
+        for j in range(4):
+            acc = 0.0
+            for q in range(_NS):
+                acc += _B[q] * K[q, i, j]
+            znew[i, j] = z[i, j] + h * acc
+    _rhs(R + h, znew, m, k, table, seg, work, K[_NS])
+
+
+@nb.njit(cache=True)
+def _error(h, z, znew, K, rtol):
+    """DOP853's error norm of a step (<= 1: accept), entry ij in units of
+    rtol (1 + max(|z_ij|, |znew_ij|))."""
+    e5 = 0.0
+    e3 = 0.0
+    for i in range(4):
+        for j in range(4):
+            a5 = 0.0
+            a3 = 0.0
+            for q in range(_NS + 1):
+                a5 += _E5[q] * K[q, i, j]
+                a3 += _E3[q] * K[q, i, j]
+            sc = rtol * (1.0 + max(abs(z[i, j]), abs(znew[i, j])))
+            e5 += (a5 / sc) ** 2
+            e3 += (a3 / sc) ** 2
+    err = 0.0
+    if e5 > 0.0 or e3 > 0.0:
+        err = h * e5 / np.sqrt((e5 + 0.01 * e3) * 16.0)
+    if not (np.isfinite(err) and np.all(np.isfinite(znew))):
+        err = 1e6  # overflow or NaN in a stage: retry with a smaller step
+    return err

@@ -1,0 +1,166 @@
+"""A critical value whose error estimate exceeds the accuracy asked is refined or flagged,
+never returned silently (issue 21, bug 2), and the error estimate never probes outside the
+control's domain (bug 3).
+
+The faults are injected into the targets at chosen tolerances, as the kernel's missed
+orientation produced them (a spurious sign window at some tolerances only): what is checked
+is the rule, with the true root computed without the fault.
+"""
+
+import dataclasses
+import json
+from pathlib import Path
+
+import pytest
+
+from electrogrowth import Tube
+from electrogrowth.bifurcation import critical
+from electrogrowth.bifurcation.critical import critical_value
+from electrogrowth.cli.app import main
+from electrogrowth.model.layers import Layer
+from electrogrowth.outcomes import Status
+
+PARAMS = Tube.uniform(outer_radius=1.4, length=1.0, voltage=0.4)
+MODE = (3, 1)
+TRUE = critical_value(PARAMS, *MODE, "growth")
+#: growth windows where the faulty targets of a tolerance have the wrong sign (the march's
+#: signs are at 1e-8, the default fine and coarse targets at 1e-12 and 1e-10)
+MARCH, FINE, TIGHT = {1e-8: (1.04, 1.3)}, {1e-12: (1.05, 1.3)}, {1e-14: (1.06, 1.3)}
+
+
+def faulty_targets(windows):
+    real = critical.targets_for
+
+    def targets_for(method, rtol):
+        f = real(method, rtol)
+        lo, hi = next(
+            (w for r, w in windows.items() if rtol == pytest.approx(r, rel=1e-6, abs=0)), (0, 0)
+        )
+
+        def wrong(state, modes):
+            out = f(state, modes)
+            return -out if lo < state.tube.growth < hi else out
+
+        return wrong
+
+    return targets_for
+
+
+def test_true_root_is_outside_the_fault_windows():
+    assert TRUE.status == Status.OK and TRUE.value > 1.3 + 0.1
+
+
+def test_a_wrong_root_is_refined_at_a_tighter_rtol(monkeypatch):
+    """The march's signs and the fine target see a spurious sign change, the coarse one does
+    not: the estimate (the distance to the coarse root) is large, so the value is solved
+    again at 1e-14, which finds the true root (whose coarse root, at 1e-12, agrees)."""
+    monkeypatch.setattr(critical, "targets_for", faulty_targets(MARCH | FINE))
+    cp = critical_value(PARAMS, *MODE, "growth")
+    assert cp.status == Status.OK
+    assert cp.value == pytest.approx(TRUE.value, rel=1e-11)
+
+
+def test_a_value_that_stays_wrong_is_flagged(monkeypatch):
+    """Every tolerance but the coarse one sees a spurious root, each elsewhere: the refined
+    value is spurious too, and returned with status INACCURATE and an estimate beyond the
+    accuracy asked."""
+    monkeypatch.setattr(critical, "targets_for", faulty_targets(MARCH | FINE | TIGHT))
+    cp = critical_value(PARAMS, *MODE, "growth")
+    assert cp.value == pytest.approx(1.06, abs=1e-9)
+    assert cp.status == Status.INACCURATE
+    assert cp.error_estimate == pytest.approx(0.01, abs=1e-9)
+    assert cp.as_dict()["status"] == "inaccurate"
+
+
+# -- the command line: only the supported digits, a warning, exit 3 unless accepted -----------
+
+ARGV = ["critical", "--solve-for", "growth", "--outer-radius", "1.4", "--length", "1.0"]
+ARGV += ["--voltage", "0.4", "--mode", "3", "1"]
+
+
+@pytest.fixture
+def inaccurate(monkeypatch):
+    import electrogrowth.cli.critical as cli
+
+    def fake(*args, **kwargs):
+        return dataclasses.replace(TRUE, error_estimate=3e-4, status=Status.INACCURATE)
+
+    monkeypatch.setattr(cli, "critical_value", fake)
+
+
+def test_cli_exits_3_with_a_warning_for_an_inaccurate_value(inaccurate, capsys):
+    assert main(ARGV) == 3
+    out, err = capsys.readouterr()
+    head = out.splitlines()[0]
+    assert head.startswith(f"g_cr = {TRUE.value:.5g} ") and f"{TRUE.value:.7g}" not in head
+    assert err.startswith("electrogrowth: warning: growth") and "not certified" in err
+    assert len(err.splitlines()) == 1
+
+
+def test_cli_accept_inaccurate_exits_0(inaccurate, capsys):
+    assert main(ARGV + ["--accept-inaccurate", "--json"]) == 0
+    out, err = capsys.readouterr()
+    assert json.loads(out)["status"] == "inaccurate" and "not certified" in err
+
+
+def test_cli_help_documents_the_flag(capsys):
+    assert main(["critical", "--help"]) == 0
+    text = " ".join(capsys.readouterr().out.split())
+    assert "--accept-inaccurate" in text and "exit status 3" in text
+
+
+# -- bug 3: the estimate's windows stay inside the march's path ---------------------------------
+
+
+def test_second_resolution_never_leaves_the_path():
+    """A coarse target without a root near the value: the windows widen to +-4.2 but are
+    clipped to the path (growth from 1): no probe below 1, and the estimate says the looser
+    root is at least the widest window away (an uncertified value, not a ParameterError)."""
+    seen = []
+
+    def g(x):
+        seen.append(x)
+        return 1.0
+
+    est = critical._second_resolution(g, 1.1, (1.0, 6.0))
+    assert min(seen) >= 1.0 and max(seen) <= 6.0
+    assert est == pytest.approx(1.1e-6 * 4**11, rel=1e-12)
+
+
+def test_second_resolution_finds_the_coarse_root_inside_the_path():
+    est = critical._second_resolution(lambda x: x - 1.3, 1.2999, (1.0, 6.0))
+    assert est == pytest.approx(1e-4, rel=1e-9)
+
+
+def test_soft_substrate_scan_is_not_killed_by_an_estimate():
+    """The issue's scan: a hoop-growing layer on a substrate of modulus 0.01 ended after
+    45-60 s with "ParameterError: growth[1] = -0.16 is out of range"."""
+    from electrogrowth.bifurcation.scan import ScanOptions, scan_modes
+
+    tube = Tube((Layer(1.1), Layer(2.0, shear_modulus=0.01)))
+    res = scan_modes(tube, "growth[1].theta", options=ScanOptions(top=2))
+    assert res.critical.value > 1.0
+    assert res.critical.status in (Status.OK, Status.INACCURATE)
+
+
+def test_cli_layered_tube_line_shows_only_supported_digits(monkeypatch, capsys):
+    """The solved growth also appears in the tube's line (it printed all 17 digits)."""
+    import electrogrowth.cli.critical as cli
+    from electrogrowth.bifurcation.critical import CriticalPoint
+    from electrogrowth.outcomes import Kind
+
+    value = 2.0404425746823858
+
+    def fake(params, m, n, solve_for, **kwargs):
+        at = params.at(solve_for, value)
+        return CriticalPoint(
+            solve_for, value, m, n, Kind.BIFURCATION, 3e-4, "impedance", None, at,
+            status=Status.INACCURATE,
+        )  # fmt: skip
+
+    monkeypatch.setattr(cli, "critical_value", fake)
+    bilayer = str(Path(__file__).resolve().parents[2] / "examples" / "bilayer.toml")
+    argv = ["critical", "--tube", bilayer, "--solve-for", "growth"]
+    assert main(argv + ["--layer", "1", "--component", "theta", "--mode", "12", "1"]) == 3
+    out = capsys.readouterr().out
+    assert "2.040442" not in out and "g [1, 2.0404, 1]" in out

@@ -1,0 +1,413 @@
+"""Tests of the short-wave (surface) limit: the half-space problem at a face of the tube
+(electrogrowth.incremental.halfspace) and its critical values (bifurcation.surface).
+
+Derivation and the numbers quoted here: docs/derivation-surface.md.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+
+from electrogrowth.basestate.tube import solve_base_state
+from electrogrowth.bifurcation import directions, surface
+from electrogrowth.bifurcation.surface import SurfaceLimit, ray_limit, short_wave_limit
+from electrogrowth.errors import ParameterError
+from electrogrowth.incremental.halfspace import (
+    FACES,
+    FaceProblem,
+    schur_target,
+    surface_target,
+    target_from_moduli,
+)
+from electrogrowth.incremental.stroh import stroh_matrix
+from electrogrowth.incremental.stroh_limit import (
+    decaying_solutions,
+    limit_matrix,
+    neo_hookean_secular,
+)
+from electrogrowth.model.layers import Tube
+from electrogrowth.model.materials import MODULI_INDEX, gent, mooney_rivlin, neo_hookean_moduli
+
+try:
+    from electrogrowth.bifurcation.critical import critical_value
+except ImportError:  # the module may move during a refactoring
+    from electrogrowth.bifurcation import critical_value
+
+HALF_PI = 0.5 * math.pi
+J = np.block([[np.zeros((4, 4)), np.eye(4)], [-np.eye(4), np.zeros((4, 4))]])
+
+
+def biot_stretch() -> float:
+    """Biot's critical stretch in uniaxial compression, independently: the root beta of
+    beta^3 + beta^2 + 3 beta - 1 = 0 (beta = lambda^(3/2), docs section 6)."""
+    beta = brentq(lambda b: b**3 + b**2 + 3 * b - 1, 0.0, 1.0, xtol=1e-17, rtol=1e-15)
+    return beta ** (2.0 / 3.0)
+
+
+def nh_state(l2, l3, d):
+    """Neo-Hookean face moduli and p of a traction-free face (sigma_rr = 0)."""
+    l1 = 1.0 / (l2 * l3)
+    return l1, neo_hookean_moduli(l1, l2, l3, d), l1 * l1 + d * d
+
+
+def nh_worst(l1, l2, l3, d) -> float:
+    """min over psi of the neo-Hookean secular function P (closed form, docs section 5):
+    P is a cubic in beta, beta ranges over [l2, l3] / l1; its interior minimum (3 beta^2 +
+    2 beta + 3 - delta = 0) exists for delta > 3."""
+    delta = d * d / (l1 * l1)
+    lo, hi = sorted((l2 / l1, l3 / l1))
+    P = lambda b: b**3 + b**2 + (3 - delta) * b - (1 + delta)  # noqa: E731
+    cands = [P(lo), P(hi)]
+    if 12 * delta - 32 > 0:
+        b = (-2 + math.sqrt(12 * delta - 32)) / 6
+        if lo < b < hi:
+            cands.append(P(b))
+    return min(cands)
+
+
+def nh_tube_critical(params, solve_for, x0, x1, steps=400):
+    """Critical value of the neo-Hookean tube from the closed form alone: the first zero
+    of min_face min_psi P along x0 -> x1."""
+
+    def h(x):
+        st = solve_base_state(params.at(solve_for, x))
+        out = []
+        for R in (1.0, params.outer_radius):
+            l1, l2, l3 = (float(v) for v in st.elastic_stretches(R))
+            out.append(nh_worst(l1, l2, l3, float(st.displacement(R))))
+        return min(out)
+
+    xs = np.linspace(x0, x1, steps)
+    hs = [h(x) for x in xs]
+    assert hs[0] > 0
+    i = next(i for i in range(steps - 1) if hs[i + 1] <= 0)
+    return brentq(h, xs[i], xs[i + 1], xtol=1e-15, rtol=1e-15)
+
+
+@pytest.fixture(scope="module")
+def generic_energies():
+    """Gent and Mooney-Rivlin, each with its base state solved once for the module."""
+    mats = {"gent": gent(20.0), "mr": mooney_rivlin(0.3)}
+    solve_base_state(Tube.uniform(material=mats["gent"]))
+    return mats
+
+
+# --- the limit matrix and the target --------------------------------------------------------
+
+
+def test_limit_matrix_is_the_scaled_limit_of_the_stroh_matrix():
+    """T^-1 G(Lam cos psi, Lam sin psi) T / Lam -> N(psi) like 1/Lam, for arbitrary moduli;
+    N is Hamiltonian and homogeneous of degree 0 (its eigenvalues come in +- pairs)."""
+    rng = np.random.default_rng(7)
+    for _ in range(5):
+        mod = rng.uniform(0.3, 2.0, 23)
+        p = rng.uniform(-1.0, 2.0)
+        for psi in (0.0, 0.4, 1.1, HALF_PI):
+            N = limit_matrix(mod, p, psi)
+            errs = []
+            for lam in (1e3, 1e6):
+                G = np.empty((8, 8))
+                stroh_matrix(mod, p, lam * math.cos(psi), lam * math.sin(psi), G)
+                T = np.array([1, 1, 1, lam, lam, lam, lam, 1.0])
+                errs.append(np.abs(G * T[None, :] / T[:, None] / lam - N).max())
+            assert errs[1] < 1e-5 * max(1.0, np.abs(N).max())
+            assert 5e2 < errs[0] / max(errs[1], 1e-300) < 2e3 or errs[0] < 1e-12
+            assert np.abs(J @ N - (J @ N).T).max() < 1e-13
+            ev = np.linalg.eigvals(N)
+            assert np.abs(ev[:, None] + ev[None, :]).min(axis=1).max() < 1e-7
+
+
+def test_projector_target_equals_schur_target_and_unloaded_sign(generic_energies):
+    """The vectorised target (spectral projector) and the ordered-Schur one agree; on the
+    unloaded tube f > 0 with a negative (inner) / positive (outer) definite impedance."""
+    rng = np.random.default_rng(11)
+    for mat in (gent(20.0), mooney_rivlin(0.3)):
+        for _ in range(6):
+            l2, l3, d = rng.uniform(0.7, 1.5), rng.uniform(0.6, 1.6), rng.uniform(0, 1.2)
+            l1 = 1.0 / (l2 * l3)
+            mod, p = mat.moduli(l1, l2, l3, d), float(mat.stress(l1, l2, l3, d)[0])
+            psi = rng.uniform(0, HALF_PI, 4)
+            for face in FACES:
+                fast = target_from_moduli(mod, p, psi, face)
+                slow = [schur_target(mod, p, x, face) for x in psi]
+                assert np.allclose(fast, slow, rtol=0, atol=1e-12)
+    mod = neo_hookean_moduli(1.0, 1.0, 1.0, 0.0)
+    for face, sign in (("inner", -1.0), ("outer", 1.0)):
+        assert np.all(target_from_moduli(mod, 1.0, np.linspace(0, HALF_PI, 5), face) > 0)
+        Q, nu, _ = decaying_solutions(limit_matrix(mod, 1.0, 0.7), face)
+        assert np.all(sign * nu.real > 0)  # Re nu < 0 decays into r > r_i, > 0 into r < r_o
+        z = Q[4:] @ np.linalg.inv(Q[:4])
+        assert np.allclose(z, z.T, atol=1e-12)
+        assert np.all(sign * np.linalg.eigvalsh(0.5 * (z + z.T)) > 0)
+
+
+def test_psi_symmetry_both_faces(generic_energies):
+    """f(psi) = f(-psi) = f(pi - psi) (k -> -k is z -> -z), for Gent and Mooney-Rivlin
+    states with voltage, at both faces."""
+    psi = np.array([0.13, 0.7, 1.3])
+    for mat in generic_energies.values():
+        st = solve_base_state(Tube.uniform(material=mat, stretch=1.3, voltage=0.3))
+        for face in FACES:
+            f = surface_target(st, face, psi)
+            assert np.all(np.isfinite(f))
+            for other in (-psi, math.pi - psi, psi + math.pi):
+                assert np.allclose(surface_target(st, face, other), f, atol=1e-13)
+
+
+def test_ellipticity_loss_is_detected():
+    """A negative shear modulus: imaginary nu, no decaying split: NaN, not a number."""
+    mod = neo_hookean_moduli(1.0, 1.0, 1.0, 0.0)
+    problem = FaceProblem.from_moduli(mod, 1.0, "inner")
+    assert problem.margin(0.5) > 0.1
+    bad = mod.copy()
+    bad[MODULI_INDEX["A2323"]] = bad[MODULI_INDEX["A3232"]] = -0.5
+    problem = FaceProblem.from_moduli(bad, 1.0, "inner")
+    assert problem.margin(0.3) < 1e-9
+    assert np.isnan(problem.target(0.3))
+    Q, nu, margin = decaying_solutions(limit_matrix(bad, 1.0, 0.3), "outer")
+    assert np.isnan(Q).all() and margin < 1e-9
+
+    # the march reports it (kind "ellipticity") instead of a value
+    def fake(state):
+        g = state.tube.growth
+        return directions.Sample(math.nan if g > 1.7 else 2.0 - g, "inner", 0.5)
+
+    kind, value, bracket = surface._locate(Tube.uniform(), "growth", None, fake, 1e-12)
+    assert kind == "ellipticity" and abs(value - 1.7) < 1e-11 and bracket is None
+
+
+# --- neo-Hookean: Biot and the closed-form electro-elastic criterion ----------------------
+
+
+def test_biot_uniaxial_compression():
+    """g = 1, Vbar = 0: homogeneous uniaxial compression; wrinkles along z at Biot's
+    lambda_z = 0.443746 (root of the cubic, computed independently)."""
+    res = short_wave_limit(Tube.uniform(outer_radius=1.4), "stretch")
+    assert isinstance(res, SurfaceLimit) and res.kind == "surface"
+    assert abs(res.value - biot_stretch()) < 1e-12
+    assert round(res.value, 6) == 0.443746
+    assert res.psi == HALF_PI and res.ratio is None
+    assert res.error_estimate < 1e-10
+    assert res.params.stretch == res.value and res.side == "compression"
+
+
+def test_neo_hookean_secular_equation_at_synthetic_states():
+    """The general solver (23 moduli) vanishes exactly where the scalar electro-elastic
+    secular equation does: critical d = l1 sqrt(delta*), delta* = (beta^3 + beta^2 +
+    3 beta - 1)/(beta + 1), both faces, several directions; same sign elsewhere."""
+    rng = np.random.default_rng(3)
+    for l2, l3, psi in [
+        (1.2, 0.8, 1.2),
+        (1.0, 1.3, 0.4),
+        (1.5, 1.1, 0.0),
+        (0.9, 0.9, HALF_PI),
+        (1.3, 1.6, 0.9),
+    ]:
+        l1 = 1.0 / (l2 * l3)
+        beta = math.sqrt(l2**2 * math.cos(psi) ** 2 + l3**2 * math.sin(psi) ** 2) / l1
+        d_crit = l1 * math.sqrt((beta**3 + beta**2 + 3 * beta - 1) / (beta + 1))
+        for face in FACES:
+            f = lambda d: float(target_from_moduli(*nh_state(l2, l3, d)[1:], psi, face))  # noqa
+            root = brentq(f, 0.5 * d_crit, 1.5 * d_crit, xtol=1e-15, rtol=1e-15)
+            assert abs(root - d_crit) < 1e-12 * d_crit
+        for d in rng.uniform(0, 2.5, 4):
+            Pv = neo_hookean_secular(l1, l2, l3, d, psi)
+            if abs(Pv) > 1e-6:
+                for face in FACES:
+                    assert np.sign(
+                        target_from_moduli(*nh_state(l2, l3, d)[1:], psi, face)
+                    ) == np.sign(Pv)
+
+
+def test_neo_hookean_worst_direction_is_an_endpoint():
+    """Where P'(beta) = 0, P = -2 beta^3 - 4 beta^2 - 2 beta - 4 < 0: P can first vanish
+    only at beta(0) or beta(pi/2), so the neo-Hookean worst direction is psi = 0 or pi/2."""
+    beta = np.linspace(0.01, 20, 2000)
+    delta = 3 * beta**2 + 2 * beta + 3  # P'(beta) = 0
+    P = beta**3 + beta**2 + (3 - delta) * beta - (1 + delta)
+    assert np.allclose(P, -2 * beta**3 - 4 * beta**2 - 2 * beta - 4) and np.all(P < 0)
+
+
+@pytest.mark.parametrize(
+    "params, solve_for, side, x1, face, psi",
+    [
+        (Tube.uniform(outer_radius=1.4), "voltage", None, 1.0, "inner", HALF_PI),
+        (Tube.uniform(outer_radius=1.4, voltage=0.4), "stretch", "extension", 2.5, "outer", 0.0),
+        (
+            Tube.uniform(outer_radius=2.0, stretch=1.2, voltage=0.2),
+            "growth",
+            None,
+            3.0,
+            "inner",
+            HALF_PI,
+        ),
+    ],
+)
+def test_neo_hookean_tube_against_closed_form(params, solve_for, side, x1, face, psi):
+    """Tube states with voltage: the general solver's critical value, face and direction
+    equal those of the closed-form criterion (independent march + Brent) to 1e-10."""
+    res = short_wave_limit(params, solve_for, side=side)
+    x0 = {"voltage": 0.0, "stretch": params.growth, "growth": 1.0}[solve_for]
+    exact = nh_tube_critical(params, solve_for, x0, x1)
+    assert res.kind == "surface"
+    assert abs(res.value - exact) < 1e-10 * max(1.0, exact)
+    assert res.face == face and res.psi == psi
+
+
+def test_issue_10_extension_example():
+    """Issue 10: Rbar_o = 1.4, L = 1, Vbar = 0.4, stretch on the extension side. The scan's
+    Richardson estimate is 2.4559 +- 0.0013; the exact limit is at the OUTER face with
+    hoop wrinkles (psi = 0, k r / m -> 0)."""
+    params = Tube.uniform(outer_radius=1.4, length=1.0, voltage=0.4)
+    res = short_wave_limit(params, "stretch", side="extension")
+    assert res.kind == "surface" and abs(res.value - 2.4559) < 0.0013
+    assert res.face == "outer" and res.psi == 0.0 and res.ratio == 0.0
+    assert res.error_estimate < 1e-10
+    again = short_wave_limit(params, "stretch", side="extension", rtol=1e-10)
+    assert abs(again.value - res.value) < 1e-10
+    assert abs(res.value - 2.456221128743) < 1e-11
+
+
+# --- identities ------------------------------------------------------------------------------
+
+
+def test_growth_is_a_rescaling():
+    """(g, lambda_z, Vbar) ~ (1, lambda_z / g, Vbar / g) for the short-wave values."""
+    g = 1.3
+    a = short_wave_limit(Tube.uniform(growth=g, voltage=0.3), "stretch")
+    b = short_wave_limit(Tube.uniform(voltage=0.3 / g), "stretch")
+    assert abs(a.value - g * b.value) < 1e-10 and (a.face, a.psi) == (b.face, b.psi)
+    g = 1.2
+    a = short_wave_limit(Tube.uniform(outer_radius=2.0, growth=g, stretch=1.5), "voltage")
+    b = short_wave_limit(Tube.uniform(outer_radius=2.0, stretch=1.5 / g), "voltage")
+    assert abs(a.value - g * b.value) < 1e-10 and (a.face, a.psi) == (b.face, b.psi)
+    # growth at fixed lambda_z = 1, Vbar = 0 is uniaxial compression lambda_z / g: Biot
+    c = short_wave_limit(Tube.uniform(), "growth")
+    assert abs(c.value - 1.0 / biot_stretch()) < 1e-10 and c.psi == HALF_PI
+    # with voltage: the growth-critical state is critical for the rescaled tube
+    c = short_wave_limit(Tube.uniform(stretch=1.1, voltage=0.2), "growth")
+    st = solve_base_state(Tube.uniform(stretch=1.1 / c.value, voltage=0.2 / c.value))
+    signs = directions.stable_signs(Tube.uniform())
+    h = directions.sampler(FACES, signs, directions.Resolution(25, 1e-10, 1e-12))(st)
+    assert abs(h.value) < 1e-12 and h.face == c.face
+
+
+def test_finite_modes_approach_the_limit_like_one_over_j():
+    """Modes (j m0, j n0) of the impedance solver tend to the half-space value in the
+    direction tan psi = k r / m of the ray, like 1/j (rate fitted), for an oblique ray and
+    for m = 0 (psi = pi/2)."""
+    params = Tube.uniform(outer_radius=1.4, voltage=0.3)
+    lim = ray_limit(params, 3, 1, "growth")
+    assert lim.kind == "surface" and 0 < lim.psi < HALF_PI
+    js = np.array([8, 16, 32, 64])
+    xs = np.array([critical_value(params, 3 * j, j, "growth").value for j in js])
+    rate = np.polyfit(np.log(js), np.log(np.abs(xs - lim.value)), 1)[0]
+    assert abs(rate + 1.0) < 0.1
+    assert abs(xs[-1] - lim.value) > 1e-4  # finite modes are far ...
+    assert abs(2 * xs[-1] - xs[-2] - lim.value) < 2e-5  # ... their 1/j extrapolation is not
+    # m = 0: wrinkles along z; the short-wave limit of the tube is in that direction too
+    params = Tube.uniform(outer_radius=1.4)
+    lim = ray_limit(params, 0, 1, "voltage")
+    assert lim.psi == HALF_PI and lim.ratio is None
+    assert lim.value == pytest.approx(short_wave_limit(params, "voltage").value, abs=1e-13)
+    js = np.array([16, 32, 64])
+    xs = np.array([critical_value(params, 0, j, "voltage").value for j in js])
+    rate = np.polyfit(np.log(js), np.log(np.abs(xs - lim.value)), 1)[0]
+    assert abs(rate + 1.0) < 0.15
+    assert abs(2 * xs[-1] - xs[-2] - lim.value) < 2e-5
+
+
+# --- other energies -------------------------------------------------------------------------
+
+
+def test_mooney_rivlin_biot_along_z_but_oblique_wrinkles_first(generic_energies):
+    """Mooney-Rivlin in uniaxial compression: along z the in-plane problem is neo-Hookean
+    with mu = C1 + C2 lambda_r^2, so the m = 0 ray gives Biot exactly; but an oblique
+    direction is reached first (lambda_z = 0.47261 > Biot), confirmed by finite modes."""
+    params = Tube.uniform(outer_radius=1.4, material=generic_energies["mr"])
+    along_z = ray_limit(params, 0, 1, "stretch")
+    assert abs(along_z.value - biot_stretch()) < 1e-9
+    worst = short_wave_limit(params, "stretch")
+    assert worst.kind == "surface" and 1.1 < worst.psi < 1.3
+    assert worst.value == pytest.approx(0.4726130556, abs=1e-9)
+    assert worst.error_estimate < 1e-10
+    for dpsi in (-0.05, 0.05):  # the worst direction: other directions come later
+        other = short_wave_limit(params, "stretch", psi=worst.psi + dpsi)
+        assert other.value < worst.value - 1e-4
+    fixed = short_wave_limit(params, "stretch", psi=worst.psi)
+    assert fixed.value == pytest.approx(worst.value, abs=1e-12)
+    ray = ray_limit(params, 5, 1, "stretch")  # tan psi = k r / m close to the worst one
+    assert ray.value <= worst.value + 1e-14
+    xs = [critical_value(params, 5 * j, j, "stretch").value for j in (32, 64)]
+    assert abs(2 * xs[1] - xs[0] - ray.value) < 5e-6
+    assert abs(xs[1] - ray.value) > 5e-5
+
+
+def test_gent_compression_and_voltage(generic_energies):
+    """Gent (Jm = 20): uniaxial compression wrinkles along z at 0.42756 (stiffening delays
+    Biot's 0.44375), confirmed by the m = 0 modes; with voltage both faces are searched
+    and the first one reported."""
+    params = Tube.uniform(outer_radius=1.4, material=generic_energies["gent"])
+    res = short_wave_limit(params, "stretch")
+    assert res.kind == "surface" and res.psi == HALF_PI
+    assert res.value == pytest.approx(0.4275605821, abs=1e-9)
+    xs = [critical_value(params, 0, j, "stretch").value for j in (32, 64)]
+    assert abs(2 * xs[1] - xs[0] - res.value) < 1e-5
+    params = dataclasses.replace(params, stretch=1.5)
+    both = short_wave_limit(params, "voltage")
+    outer = short_wave_limit(params, "voltage", faces=("outer",))
+    assert both.face == "inner" and outer.face == "outer"
+    assert both.value == pytest.approx(0.6906535844, abs=1e-9)
+    assert outer.value == pytest.approx(0.6992191780, abs=1e-9)
+
+
+def test_both_faces_neo_hookean():
+    """Each face alone, and both: the combined value is the first reached."""
+    params = Tube.uniform(outer_radius=1.4)
+    inner = short_wave_limit(params, "voltage", faces=("inner",))
+    outer = short_wave_limit(params, "voltage", faces="outer")
+    both = short_wave_limit(params, "voltage")
+    assert inner.face == "inner" and outer.face == "outer"
+    assert inner.value == pytest.approx(0.8478824129, abs=1e-9)
+    assert outer.value == pytest.approx(0.9063041550, abs=1e-9)
+    assert both.value == inner.value and both.face == "inner"
+
+
+def test_threshold_none_and_errors():
+    """Base state lost first (kind threshold), nothing in range (none), bad input."""
+    res = short_wave_limit(Tube.uniform(outer_radius=1.4), "stretch", side="extension")
+    assert res.kind == "none" and math.isnan(res.value) and res.face is None
+
+    # a face that stays stable until the base state is lost (a sampler that never
+    # vanishes): kind threshold, where the voltage threshold falls to Vbar = 0.4, i.e.
+    # Vbar_inf = sqrt((Rbar_o^2 - 1) ln Rbar_o / 2) / (lambda_z (Rbar_o - 1)) = 0.4
+    def stable(state):
+        return directions.Sample(1.0, "inner", 0.0)
+
+    params = Tube.uniform(outer_radius=1.4, voltage=0.4)
+    kind, value, _ = surface._locate(params, "stretch", "extension", stable, 1e-12)
+    assert kind == "threshold"
+    assert abs(value - math.sqrt(0.96 * math.log(1.4) / 2) / (0.4 * 0.4)) < 1e-10
+    kind, value, _ = surface._locate(
+        Tube.uniform(outer_radius=2.0), "voltage", None, stable, 1e-12
+    )
+    assert kind == "threshold" and abs(value - 1.019667) < 1e-6
+    with pytest.raises(ParameterError, match="solve_for"):
+        short_wave_limit(Tube.uniform(), "force")
+    with pytest.raises(ParameterError, match="side"):
+        short_wave_limit(Tube.uniform(), "stretch", side="sideways")
+    with pytest.raises(ParameterError, match="faces"):
+        short_wave_limit(Tube.uniform(), "stretch", faces=("middle",))
+    with pytest.raises(ParameterError, match="psi"):
+        short_wave_limit(Tube.uniform(), "stretch", psi=2.0)
+    with pytest.raises(ParameterError, match="rtol"):
+        short_wave_limit(Tube.uniform(), "stretch", rtol=0.0)
+    with pytest.raises(ParameterError, match=r"\(0, 0\)"):
+        ray_limit(Tube.uniform(), 0, 0, "stretch")
+    with pytest.raises(ParameterError, match="already unstable"):
+        short_wave_limit(Tube.uniform(outer_radius=1.4, voltage=0.95), "stretch")

@@ -1,0 +1,124 @@
+"""A refused input is named as the user gave it: a thickness as the thickness (not the radius
+it moves), a layer by the number the tube file and the keys use (layers[K], K = 1 innermost),
+a growth component as g_theta (growth[K] is layer K's growth), a curve's --along as itself
+(not as solve_for), and the remedy of "no mode bifurcates" in the terms of what was asked
+(no --m-max for one --mode, no --side for growth)."""
+
+import warnings
+from pathlib import Path
+
+import pytest
+
+from electrogrowth.bifurcation import scan
+from electrogrowth.bifurcation.critical import no_bifurcation_remedy
+from electrogrowth.cli import app as cli
+from electrogrowth.errors import ConfigError, NoBifurcationFound, ParameterError
+from electrogrowth.model.layers import Layer, Tube
+from electrogrowth.model.tube_file import parse_tube
+
+BILAYER = Path(__file__).resolve().parents[2] / "examples" / "bilayer.toml"
+TUBE = Tube((Layer(1.1), Layer(2.0)))
+
+
+@pytest.mark.parametrize(
+    "key, value, named, valid",
+    [
+        ("layers[1].thickness", -0.05, "layers[1].thickness = -0.05", "> 0"),
+        ("layers[2].thickness", 0.0, "layers[2].thickness = 0.0", "> 0"),
+        ("layers[1].outer_radius", 2.25, "layers[1].outer_radius = 2.25", "1 < R < 2"),
+        ("layers[2].outer_radius", 0.5, "layers[2].outer_radius = 0.5", "> 1.1"),
+        ("layers[2].shear_modulus", -1.0, "layers[2].shear_modulus = -1.0", "0 < value"),
+    ],
+)
+def test_a_key_of_a_layered_tube_is_refused_in_its_own_terms(key, value, named, valid):
+    with pytest.raises(ParameterError) as err:
+        TUBE.at(key, value)
+    text = str(err.value)
+    assert text.startswith(named) and f"valid range: {valid}" in text
+
+
+def test_a_layer_is_named_as_in_the_file():
+    text = BILAYER.read_text().replace("outer_radius = 2.0", "outer_radius = 1.05")
+    with pytest.raises(ConfigError) as err:
+        parse_tube(text, source="t.toml")
+    assert err.value.key == ("layers", "2", "outer_radius")
+    assert "layers[2].outer_radius = 1.05 is out of range" in str(err.value)
+    with pytest.raises(ParameterError, match=r"^layers\[2\].outer_radius = 1.5 "):
+        Tube((Layer(1.5), Layer(1.5)))
+
+
+def test_a_growth_component_is_named_by_its_component():
+    with pytest.raises(ParameterError, match=r"^growth g_theta = 0.0 is out of range"):
+        Layer(1.5, growth=(1.0, 0.0, 1.0))
+    text = BILAYER.read_text().replace("growth = [1.0, 1.2, 1.0]", "growth = [1.0, 1.2, -1]")
+    with pytest.raises(ConfigError) as err:
+        parse_tube(text, source="t.toml")
+    assert err.value.key == ("layers", "1", "growth") and "growth g_z = -1" in str(err.value)
+
+
+@pytest.mark.parametrize(
+    "along, named",
+    [
+        ("bogus", "control 'bogus' is unknown"),
+        ("stretch[2]", "control 'stretch[2]': a layer or growth component applies to growth"),
+    ],
+)
+def test_a_curve_along_a_bad_name_blames_that_name(along, named, capsys):
+    argv = f"curve --tube {BILAYER} --solve-for growth --layer 1 --along {along}"
+    assert cli.main([*argv.split(), "--from", "0", "--to", "1", "--points", "3"]) == 2
+    err = capsys.readouterr().err
+    assert named in err and "solve_for" not in err
+    assert "or a key of the tube: length" in err  # what --along may also be
+
+
+def test_the_remedy_of_no_bifurcation_fits_the_question():
+    one_mode = no_bifurcation_remedy("growth[1].r", mode=(1, 1))
+    assert "leave out --mode" in one_mode and "--m-max" not in one_mode
+    assert "--side" not in one_mode + no_bifurcation_remedy("growth")
+    assert "--side" in no_bifurcation_remedy("stretch")
+    assert "--m-max" in no_bifurcation_remedy("voltage")
+
+
+def test_a_scan_finding_nothing_gives_the_scan_remedy(monkeypatch):
+    def nothing(*args):
+        exc = NoBifurcationFound("no mode bifurcates for growth between 1 and 6")
+        exc.remedy = "the remedy of one mode"
+        raise exc
+
+    monkeypatch.setattr(scan, "_widened_scan", nothing)
+    options = scan.ScanOptions(surface=False)
+    with pytest.raises(NoBifurcationFound) as err:
+        scan.scan_modes(Tube.uniform(1.4), "growth", options=options)
+    assert err.value.remedy == "raise --m-max / --n-max, or solve for another control parameter"
+
+
+def test_one_mode_without_a_root_is_not_told_to_raise_the_mode_ranges(capsys):
+    argv = "critical --solve-for growth --outer-radius 1.4 --mode 0 1 --family torsional"
+    assert cli.main(argv.split()) == 2
+    err = capsys.readouterr().err
+    assert "leave out --mode" in err and "--m-max" not in err and "--side" not in err
+
+
+def test_a_layer_growth_outside_the_box_is_named_not_the_pressure(tmp_path, capsys):
+    text = BILAYER.read_text().replace("growth = 1.0\n", "growth = 1e-9\n")
+    (tmp_path / "t.toml").write_text(text)
+    assert cli.main(["state", "--tube", str(tmp_path / "t.toml")]) == 2
+    err = capsys.readouterr().err
+    assert (
+        err.count("\n") == 1 and "layers.2.growth: growth = 1e-09 is outside the supported" in err
+    )
+    assert "inner_pressure" not in err
+
+
+def test_floating_point_warnings_stay_off_stderr(monkeypatch, capsys):
+    import numpy as np
+
+    def run(args):
+        np.divide(np.ones(2), np.zeros(2))  # a solver probing past a threshold
+        return 0
+
+    monkeypatch.setitem(cli.COMMANDS, "state", ("state", lambda parser: None, run))
+    with warnings.catch_warnings(record=True) as shown:
+        warnings.simplefilter("always")
+        assert cli.main(["state"]) == 0
+    assert shown == [] and capsys.readouterr().err == ""

@@ -1,0 +1,205 @@
+"""Mode shapes: the two routes agree, solve the Stroh system, meet the boundary conditions."""
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+from electrogrowth import NoBifurcationFound, ParameterError, Tube
+from electrogrowth.basestate.tube import solve_base_state
+from electrogrowth.bifurcation.critical import CriticalPoint, critical_value
+from electrogrowth.figures.plots import plot_mode_shape
+from electrogrowth.shapes.mode_shape import ModeShape, mode_shape
+from electrogrowth.shapes.riccati import impedance_profile, stroh_at, transport
+
+#: name -> (tube, m, n, control): with and without voltage and growth, m = 0, 2, 5, n = 1, 7
+CASES = {
+    "elastic_m0_n1": (Tube.uniform(1.4, 1.0), 0, 1, "stretch"),
+    "voltage_m0_n1": (Tube.uniform(1.4, 1.0, voltage=0.6), 0, 1, "growth"),
+    "grown_voltage_m2_n1": (Tube.uniform(1.4, 1.0, growth=1.1, voltage=0.3), 2, 1, "stretch"),
+    "grown_m5_n1": (Tube.uniform(1.4, 1.0, stretch=1.1), 5, 1, "growth"),
+    "grown_voltage_m5_n7": (Tube.uniform(1.4, 1.0, stretch=1.1, voltage=0.4), 5, 7, "growth"),
+}
+_CRITICAL = {}
+
+
+def critical(name: str) -> CriticalPoint:
+    """critical_value of a case, computed once per test session."""
+    if name not in _CRITICAL:
+        params, m, n, solve_for = CASES[name]
+        _CRITICAL[name] = critical_value(params, m, n, solve_for)
+    return _CRITICAL[name]
+
+
+def stroh_residual(shape: ModeShape) -> np.ndarray:
+    """max |d eta/dR - (dr/dR) G eta / r| per component over max |rhs|: fourth-order
+    central differences on the equally spaced R samples (the two ends left out)."""
+    state = solve_base_state(shape.params)
+    R, eta = shape.R, shape.eta
+    h = R[1] - R[0]
+    d = (-eta[:, 4:] + 8 * eta[:, 3:-1] - 8 * eta[:, 1:-3] + eta[:, :-4]) / (12 * h)
+    b = shape.params.growth**3 / shape.params.stretch  # r dr/dR = b R
+    rhs = np.stack(
+        [
+            b * x / float(state.radius(x)) ** 2 * stroh_at(state, x, shape.m, shape.k) @ eta[:, j]
+            for j, x in enumerate(R[2:-2], start=2)
+        ],
+        axis=1,
+    )
+    return np.abs(d - rhs).max(axis=1) / np.abs(rhs).max(axis=1)
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_routes_agree(name):
+    imp = mode_shape(critical(name))
+    col = mode_shape(critical(name), method="collocation")
+    assert imp.route == "impedance" and col.route == "collocation"
+    for f in ("U_r", "U_th", "U_z", "Phi"):
+        assert np.abs(getattr(imp, f) - getattr(col, f)).max() < 1e-6, f
+    S = np.abs(imp.eta[4:]).max()
+    assert np.abs(imp.eta[3:] - col.eta[3:]).max() < 1e-6 * S
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+@pytest.mark.parametrize("method", ["impedance", "collocation"])
+def test_normalisation_and_boundary_conditions(name, method):
+    shape = mode_shape(critical(name), method=method)
+    disp = shape.eta[:3]
+    assert np.abs(disp).max() == 1.0
+    assert shape.U_r[np.argmax(np.abs(shape.U_r))] > 0
+    # S = (r Sigma_rr, r Sigma_rth, r Sigma_rz, -Phi) vanishes on both faces (paper eq. 57)
+    assert shape.boundary_residual < (1e-12 if method == "impedance" else 1e-8)
+    assert abs(shape.Phi[0]) < 1e-9 and abs(shape.Phi[-1]) < 1e-9
+    assert shape.r[0] == pytest.approx(solve_base_state(shape.params).r_i, rel=1e-14)
+
+
+@pytest.mark.parametrize("method", ["impedance", "collocation"])
+def test_shape_solves_the_stroh_system_to_fourth_order(method):
+    """The residual of d eta/dr = G eta / r falls like h^4 (the finite differences)."""
+    res = [
+        stroh_residual(mode_shape(critical("grown_voltage_m5_n7"), method=method, points=p)).max()
+        for p in (201, 401)
+    ]
+    assert res[1] < 5e-6
+    assert 3.6 < np.log2(res[0] / res[1]) < 4.6
+
+
+def test_long_wave_shape_solves_the_stroh_system_to_integration_accuracy():
+    assert stroh_residual(mode_shape(critical("grown_voltage_m2_n1"), points=401)).max() < 1e-8
+
+
+@pytest.mark.parametrize("name", ["elastic_m0_n1", "voltage_m0_n1"])
+def test_axisymmetric_mode_has_no_hoop_displacement(name):
+    imp = mode_shape(critical(name))
+    assert not imp.U_th.any() and not imp.eta[5].any()  # the torsion block decouples exactly
+    col = mode_shape(critical(name), method="collocation")  # null vector: to rounding
+    assert np.abs(col.U_th).max() < 1e-10 and np.abs(col.eta[5]).max() < 1e-9
+
+
+@pytest.mark.parametrize("name", ["elastic_m0_n1", "grown_m5_n1"])
+def test_no_voltage_no_potential(name):
+    for method in ("impedance", "collocation"):
+        shape = mode_shape(critical(name), method=method)
+        assert np.abs(shape.Phi).max() < 1e-12
+        assert np.abs(shape.eta[3]).max() < 1e-10  # nor an electric displacement
+
+
+def test_with_voltage_the_potential_is_not_zero():
+    assert np.abs(mode_shape(critical("voltage_m0_n1")).Phi).max() > 0.05
+
+
+def test_inward_integration_is_the_stable_direction():
+    """dU/dr = (G1 + G2 z) U / r: a relative perturbation 1e-8 of U(r_o) changes U(r_i) by
+    ~1e-8 (inwards), one of U(r_i) changes U(r_o) by ~1e3 for short waves (outwards,
+    k r_o ~ 100): outward integration from the inner face would amplify every error."""
+    shape = mode_shape(critical("grown_voltage_m5_n7"))
+    state = solve_base_state(shape.params)
+    z = impedance_profile(state, shape.m, shape.k)
+    Ro = shape.params.outer_radius
+    U_i, U_o = shape.eta[:4, 0], shape.eta[:4, -1]
+    dv = np.array([0.3, -0.5, 0.7, 0.4])
+    rel = lambda a, b: np.linalg.norm(a - b) / np.linalg.norm(b)  # noqa: E731
+
+    def kick(U):
+        return U + 1e-8 * np.linalg.norm(U) * dv / np.linalg.norm(dv)
+
+    inward = transport(state, shape.m, shape.k, z, kick(U_o), (Ro, 1.0), [1.0])[:, -1]
+    outward = transport(state, shape.m, shape.k, z, kick(U_i), (1.0, Ro), [Ro])[:, -1]
+    assert rel(inward, U_i) < 1e-7
+    assert rel(outward, U_o) > 1e-3
+    # and even unperturbed, the outward integration misses the outer face
+    assert rel(transport(state, shape.m, shape.k, z, U_i, (1.0, Ro), [Ro])[:, -1], U_o) > 1e-3
+
+
+def test_long_waves_are_benign_both_ways():
+    shape = mode_shape(critical("grown_voltage_m2_n1"))
+    state = solve_base_state(shape.params)
+    z = impedance_profile(state, shape.m, shape.k)
+    U_o = transport(
+        state,
+        shape.m,
+        shape.k,
+        z,
+        shape.eta[:4, 0],
+        (1.0, shape.params.outer_radius),
+        [shape.params.outer_radius],
+    )[:, -1]
+    assert np.abs(U_o - shape.eta[:4, -1]).max() < 1e-8
+
+
+def test_inner_face_mode_and_fallback_at_a_pole():
+    """Thick charged tube, short axial waves: the mode is localised at the inner face,
+    where D_r = c / r is largest. Just below the critical stretch the impedance z has a pole
+    in the wall, so the Riccati route falls back to collocation and says so."""
+    params = Tube.uniform(3.0, 5.0, voltage=0.5)
+    crit = critical_value(params, 0, 15, "stretch", bracket=(0.4887, 0.4888))
+    imp = mode_shape(crit, points=41)
+    col = mode_shape(crit, method="collocation", nodes=60, points=41)
+    assert imp.route == "impedance"
+    assert imp.R[np.argmax(np.abs(imp.U_r))] < 1.1 and abs(imp.U_r[-1]) < 1e-5  # inner face
+    assert np.abs(imp.eta[:3] - col.eta[:3]).max() < 1e-5  # rests on a tail ~1e-7
+    near = mode_shape(
+        (dataclasses.replace(params, stretch=crit.value - 5e-5), 0, 15), points=41, nodes=60
+    )
+    assert near.route == "collocation" and "pole" in near.note
+    assert np.abs(near.eta[:3] - col.eta[:3]).max() < 1e-3
+
+
+def test_params_tuple_and_interpolation():
+    crit = critical("grown_voltage_m2_n1")
+    a = mode_shape(crit, points=21)
+    b = mode_shape((crit.params, 2, 1), points=21)
+    assert np.array_equal(a.eta, b.eta) and a.k == b.k == pytest.approx(np.pi / crit.value)
+    assert np.allclose(a.at(a.R), a.eta, rtol=0, atol=1e-14)
+    fine = mode_shape(crit, points=161)
+    assert np.abs(a.at(fine.R) - fine.eta).max() < 1e-4 * np.abs(fine.eta).max()
+    columns, table = a.table()
+    assert columns[:6] == ("R", "r", "U_r", "U_th", "U_z", "Phi") and table.shape == (21, 10)
+
+
+def test_bad_inputs():
+    crit = critical("elastic_m0_n1")
+    with pytest.raises(ParameterError, match="method"):
+        mode_shape(crit, method="shooting")
+    with pytest.raises(ParameterError, match="points"):
+        mode_shape(crit, points=1)
+    with pytest.raises(ParameterError, match="mode"):
+        mode_shape((crit.params, -1, 1))
+    with pytest.raises(ParameterError, match="CriticalPoint"):
+        mode_shape("growth")
+    threshold = dataclasses.replace(crit, kind="threshold", m=-1, n=-1)
+    with pytest.raises(NoBifurcationFound, match="threshold"):
+        mode_shape(threshold)
+
+
+def test_plot_mode_shape():
+    shape = mode_shape(critical("grown_voltage_m5_n7"), points=41)
+    fig = plot_mode_shape(shape)
+    left, right = fig.axes
+    assert [line.get_label() for line in left.get_lines()[:3]] == [
+        r"$U_r$",
+        r"$U_\theta$",
+        r"$U_z$",
+    ]
+    assert "(5, 7)" in fig._suptitle.get_text()
+    assert np.allclose(right.get_lines()[0].get_ydata(), shape.Phi)
