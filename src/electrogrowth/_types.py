@@ -24,14 +24,22 @@ class State(Protocol):
     threshold with its kind and lambda_i, and the quadrature error.
     """
 
-    tube: Tube
-    lambda_i: float
-    lambda_o: float
-    r_i: float
-    r_o: float
-    charge: float
-    axial_force: float
-    quadrature_error: float
+    @property
+    def tube(self) -> Tube: ...
+    @property
+    def lambda_i(self) -> float: ...
+    @property
+    def lambda_o(self) -> float: ...
+    @property
+    def r_i(self) -> float: ...
+    @property
+    def r_o(self) -> float: ...
+    @property
+    def charge(self) -> float: ...
+    @property
+    def axial_force(self) -> float: ...
+    @property
+    def quadrature_error(self) -> float: ...
 
     @property
     def radii(self) -> tuple[float, ...]: ...

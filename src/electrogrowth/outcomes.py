@@ -99,6 +99,13 @@ class Outcome:
         ``.python`` the keyword arguments; "" when OK).
     """
 
+    # the shared fields, declared by each record (a dataclass) in its own order
+    kind: str
+    status: Status
+    value: float
+    error_estimate: float
+    message: str
+    remedy: str
     #: where a bug happened (records that catch exceptions keep it as a field)
     traceback: str = ""
     #: the keys of :meth:`outcome_dict`, in order

@@ -314,6 +314,7 @@ class Curve:
         """JSON-ready record (NaN -> None)."""
         num = lambda a: [None if not math.isfinite(v) else float(v) for v in a]  # noqa: E731
         p = self.params
+        fixed: dict
         if not p.is_uniform:
             fixed = {"tube": p.as_dict()}
         else:  # the paper's tube: the fields a curve may run along, as before

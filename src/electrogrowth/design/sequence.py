@@ -167,7 +167,8 @@ def check_vary(vary, tube=None, solve_for: str | None = None) -> tuple[str, floa
                 f"vary key {key!r} is not a key of this tube; valid: a control (growth[K],"
                 f" growth[K].theta, stretch, voltage, pressure, force) or {KEYS_TEXT}"
             ) from None
-        check_curve(solve_for, key, tube)
+        if solve_for is not None:
+            check_curve(solve_for, key, tube)
         tube.at(key, lo)
         tube.at(key, hi)
     return key, float(lo), float(hi)

@@ -122,7 +122,7 @@ class ModeShape:
         """Current length l = lambda_z L of the tube."""
         if self.current_length is not None:
             return self.current_length
-        return self.params.stretch * self.params.length
+        return self.params.value_of("stretch") * self.params.length
 
     def at(self, R) -> FloatArray:
         """eta at reference radii R in [1, Rbar_o] (cubic spline of the samples), (8, ...)."""

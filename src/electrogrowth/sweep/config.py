@@ -256,7 +256,7 @@ def _check_run(c: SweepConfig) -> None:
 
 def _fixed_tube(c: SweepConfig) -> Tube:
     """The sweep's tube file with its [fixed] values applied."""
-    tube = parse_tube(c.tube, source="[tube] file")
+    tube = parse_tube(c.tube or "", source="[tube] file")
     for name, value in c.fixed:
         tube = tube.at(name, value)
     return tube
@@ -266,7 +266,7 @@ def _validate_tube(c: SweepConfig) -> None:
     """The checks of :func:`_validate` for a sweep of a layered tube: the control is one of
     the tube's, every fixed and swept name is a control or key of it and every value valid."""
     try:
-        tube = parse_tube(c.tube, source="[tube] file")
+        tube = parse_tube(c.tube or "", source="[tube] file")
     except ConfigError as exc:
         raise ConfigError(("tube", "file"), str(exc)) from None
     try:
