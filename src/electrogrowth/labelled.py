@@ -88,20 +88,8 @@ def clean(attrs: dict) -> dict:
 
 
 def _tube_attrs(params) -> dict:
-    """The tube's fields: Tube, or a layered Tube (its layers' outer radii and
-    materials, and its loads)."""
-    if not params.is_uniform:
-        return {
-            "layer_outer_radii": [float(layer.outer_radius) for layer in params.layers],
-            "materials": [layer.material.name for layer in params.layers],
-            **{
-                f: getattr(params, f, None)
-                for f in ("length", "stretch", "axial_force", "voltage")
-                + ("inner_pressure", "outer_pressure")
-            },
-        }
-    fields = ("outer_radius", "length", "growth", "stretch", "voltage")
-    return {"material": params.material.name, **{f: getattr(params, f) for f in fields}}
+    """The tube's numbers (:meth:`Tube.record`)."""
+    return params.record()
 
 
 def base_state_dataset(state, points: int = 101):

@@ -36,16 +36,38 @@ def table(title: str, rows: list[tuple[str, object]]) -> str:
     )
 
 
+#: the symbols of a tube's numbers (Tube.record) in one-line texts
+SYMBOLS = {
+    "outer_radius": "Rbar_o",
+    "length": "L",
+    "growth": "g",
+    "stretch": "λ_z",
+    "voltage": "V̄",
+    "layer_outer_radii": "R_k",
+    "axial_force": "N",
+    "inner_pressure": "P_i",
+    "outer_pressure": "P_o",
+}
+
+
+def tube_text(tube, symbols: dict = SYMBOLS, skip=(), tex: bool = False) -> str:
+    """One line: the tube's numbers (:meth:`Tube.record`) as "symbol = value" (each in
+    $...$ with ``tex``), its material(s) last; ``skip``: keys left out (e.g. a curve's own
+    variables)."""
+    rec = tube.record()
+    names = rec.pop("material", None) or " / ".join(rec.pop("materials", ()))
+    shown = lambda v: ", ".join(f"{x:g}" for x in v) if isinstance(v, list) else f"{v:.6g}"  # noqa: E731
+    wrap = (lambda t: f"${t}$") if tex else (lambda t: t)  # noqa: E731
+    parts = [
+        wrap(f"{symbols.get(k, k.replace('_', ' '))} = {shown(v)}")
+        for k, v in rec.items()
+        if v is not None and k not in skip
+    ]
+    return ", ".join(parts + [names])
+
+
 def _tube(params) -> str:
-    if not params.is_uniform:
-        layers = ", ".join(
-            f"{layer.material.name} to R = {layer.outer_radius:g}" for layer in params.layers
-        )
-        return f"{len(params.layers)} layers ({layers}), V̄ = {params.voltage:.6g}"
-    return (
-        f"Rbar_o = {params.outer_radius:g}, L = {params.length:g}, g = {params.growth:.6g},"
-        f" λ_z = {params.stretch:.6g}, V̄ = {params.voltage:.6g}, {params.material.name}"
-    )
+    return tube_text(params)
 
 
 def critical_rows(c) -> list[tuple[str, object]]:

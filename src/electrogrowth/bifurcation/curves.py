@@ -314,16 +314,12 @@ class Curve:
         """JSON-ready record (NaN -> None)."""
         num = lambda a: [None if not math.isfinite(v) else float(v) for v in a]  # noqa: E731
         p = self.params
-        fixed: dict
-        if not p.is_uniform:
-            fixed = {"tube": p.as_dict()}
-        else:  # the paper's tube: the fields a curve may run along, as before
-            fixed = {
-                "material": p.material.name,
-                "fixed": {
-                    f: getattr(p, f) for f in ALONG if f not in (self.along, self.solve_for)
-                },
-            }
+        rec = p.record()
+        fixed = {  # the tube's material(s), its numbers but the curve's own two, and itself
+            "material": rec.pop("material", None) or " / ".join(rec.pop("materials", ())),
+            "fixed": {k: v for k, v in rec.items() if k not in (self.along, self.solve_for)},
+            "tube": p.as_dict(),
+        }
         return {
             "along": self.along,
             "solve_for": self.solve_for,

@@ -24,7 +24,7 @@ from ..figures.style import wrapped_title
 from ..interrupts import Interrupted
 from ..model.layers import KEYS_TEXT
 from ..outcomes import Status
-from .critical import tube_line
+from ..summary import tube_text
 from .options import (
     add_control_options,
     add_mode_range_options,
@@ -131,7 +131,7 @@ def run_curve(args) -> int:
     (args.out / f"{stem}.partial.csv").unlink(missing_ok=True)  # of an interrupted run
     png = args.out / f"{stem}.png"
     ax = plot_curve(curve)
-    wrapped_title(ax, _fixed_text(curve), 8)
+    wrapped_title(ax, tube_text(curve.params, SYMBOLS, skip=(curve.along, curve.solve_for)), 8)
     ax.figure.savefig(png, dpi=200)
     warn(_inaccurate_text(curve))
     if args.json:
@@ -166,18 +166,18 @@ def _kept(stop: Interrupted, path: Path, total: int) -> Interrupted:
     )
 
 
-def _fixed_text(curve) -> str:
-    if not curve.params.is_uniform:
-        return tube_line(curve.params.as_dict()).removeprefix("  tube: ")
-    d = curve.as_dict()["fixed"]
-    names = {
-        "outer_radius": "Rbar_o",
-        "length": "L",
-        "growth": "g",
-        "stretch": "lambda_z",
-        "voltage": "Vbar",
-    }
-    return ", ".join(f"{names[k]} = {v:g}" for k, v in d.items())
+#: the symbols of the CLI's text (ASCII)
+SYMBOLS = {
+    "outer_radius": "Rbar_o",
+    "length": "L",
+    "growth": "g",
+    "stretch": "lambda_z",
+    "voltage": "Vbar",
+    "layer_outer_radii": "R_k",
+    "axial_force": "N",
+    "inner_pressure": "P_i",
+    "outer_pressure": "P_o",
+}
 
 
 def summary(curve) -> list[str]:
@@ -186,8 +186,7 @@ def summary(curve) -> list[str]:
     side = f" ({curve.side})" if curve.side else ""
     lines = [
         f"critical {curve.solve_for}{side} along {curve.along}: "
-        + (f"{curve.params.material.name}, " if curve.params.is_uniform else "")
-        + _fixed_text(curve)
+        + tube_text(curve.params, SYMBOLS, skip=(curve.along, curve.solve_for))
     ]
     ok = np.isfinite(curve.value)
     if ok.any():

@@ -21,6 +21,7 @@ from ..bifurcation.curves import Curve
 from ..outcomes import NO_MODE, Status
 from ..shapes.mode_shape import ModeShape
 from ..shapes.wall import Surface, wall_surface
+from ..summary import tube_text
 from .labels import axis_label
 from .style import COLORS, STYLE, wrap
 
@@ -126,21 +127,23 @@ def curve_legend(ax, **kwargs):
     return ax.legend(handles, labels, title="branch label: critical mode (m, n)", **kwargs)
 
 
+#: the symbols of a tube's numbers in figure titles (mathtext)
+TEX_SYMBOLS = {
+    "outer_radius": r"\bar R_o",
+    "length": "L",
+    "growth": "g",
+    "stretch": r"\lambda_z",
+    "voltage": r"\bar V",
+    "layer_outer_radii": "R_k",
+    "axial_force": "N",
+    "inner_pressure": "P_i",
+    "outer_pressure": "P_o",
+}
+
+
 def describe(shape: ModeShape) -> str:
     """One line: mode and tube, for titles and captions."""
-    p = shape.params
-    if not p.is_uniform:
-        return (
-            rf"$(m, n) = ({shape.m}, {shape.n})$, {len(p.layers)} layers to"
-            rf" $\bar R = {p.outer_radius:g}$, $L = {p.length:g}$,"
-            rf" $l = {shape.length:.6g}$, $\bar V = {p.voltage:.6g}$,"
-            rf" $P_i = {p.inner_pressure:.6g}$, $P_o = {p.outer_pressure:.6g}$"
-        )
-    return (
-        rf"$(m, n) = ({shape.m}, {shape.n})$, $\bar R_o = {p.outer_radius:g}$,"
-        rf" $L = {p.length:g}$, $g = {p.growth:.6g}$, $\lambda_z = {p.stretch:.6g}$,"
-        rf" $\bar V = {p.voltage:.6g}$, {p.material.name}"
-    )
+    return rf"$(m, n) = ({shape.m}, {shape.n})$, " + tube_text(shape.params, TEX_SYMBOLS, tex=True)
 
 
 def plot_mode_shape(shape: ModeShape):

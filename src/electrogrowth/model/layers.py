@@ -490,14 +490,7 @@ class Tube:
         """The tube as a JSON record: layers (radius, material, modulus, permittivity,
         growth) and loads; a uniform tube by its material and five numbers."""
         if self.is_uniform:
-            return {
-                "material": self.material.name,
-                "outer_radius": self.outer_radius,
-                "length": self.length,
-                "growth": self.growth,
-                "stretch": self.stretch,
-                "voltage": self.voltage,
-            }
+            return self.record()
         return {
             "layers": [
                 {
@@ -517,6 +510,23 @@ class Tube:
             "inner_pressure": self.inner_pressure,
             "outer_pressure": self.outer_pressure,
             "closed_ends": self.closed_ends,
+        }
+
+    def record(self) -> dict:
+        """The tube's numbers as one flat record, for attributes, records and one-line
+        texts: the material and the paper's five numbers for a uniform tube; otherwise the
+        layers' outer radii and materials and the loads (None: not prescribed)."""
+        if self.is_uniform:
+            return {"material": self.material.name, **{k: self.value_of(k) for k in UNIFORM_KEYS}}
+        return {
+            "layer_outer_radii": [float(layer.outer_radius) for layer in self.layers],
+            "materials": [layer.material.name for layer in self.layers],
+            "length": self.length,
+            "stretch": self.stretch,
+            "axial_force": self.axial_force,
+            "voltage": self.voltage,
+            "inner_pressure": self.inner_pressure,
+            "outer_pressure": self.outer_pressure,
         }
 
     @property
