@@ -19,14 +19,15 @@ import math
 
 import numpy as np
 from numpy.polynomial import chebyshev as cheb
-from scipy.optimize import brentq
 
+from ..continuation.events import BRANCH, BRANCH_STRETCH, LOCK, bisect, brent, reached, turned
+from ..continuation.path import GeometricGrid
 from ..errors import BaseStateError, ConvergenceError
 from ..model.layers import Tube
 from .plies import Ply, Wall, choose_nodes, illinois, numeric_energy, start_guess
 
-_RATIO, _SPAN = 1.08, 1e3  # branch scans: r_start 1.08^k up to 1e3 r_start
-_EPS = np.finfo(float).eps
+#: branch scans: r_start 1.08^k up to 1e3 r_start, eight points evaluated at a time
+BRANCH_STEPS = GeometricGrid(ratio=1.08, span=1e3, batch=8)
 
 
 # -- the two branches -------------------------------------------------------------------------
@@ -175,8 +176,7 @@ class Branch:
                 if not np.isfinite(hn):
                     ends[sense] = None
                 elif np.sign(hn) != np.sign(hl):
-                    a, b = sorted((last, nxt))
-                    return brentq(h, a, b, xtol=1e-16 * a, rtol=4 * _EPS, maxiter=200)
+                    return brent(h, *sorted((last, nxt)), BRANCH_STRETCH, named=False)
                 else:
                     ends[sense] = (nxt, hn)
             if ends[1] is None and ends[-1] is None:
@@ -228,9 +228,7 @@ def _walk(branch: Branch, x0: float, lz0: float, *, sign: int = 1, target=None):
     >= 0), "peak" (the load turned back), "lock" (an energy ended: last entry NaN) or "end"."""
     first = clean(branch.at([x0], lz0))
     xs, lzs, loads = [x0], [lz0], [float(branch.value(first)[0])]
-    kmax = math.ceil(math.log(_SPAN, _RATIO))
-    for k in range(1, kmax + 1, 8):
-        x = x0 * _RATIO ** (sign * np.arange(k, min(k + 8, kmax + 1)))
+    for x in BRANCH_STEPS.batches(x0, sign):
         pt = clean(branch.at(x, lzs[-1]))
         for xj, lj, vj in zip(x, pt["stretch"], branch.value(pt)):
             xs.append(float(xj)), lzs.append(float(lj)), loads.append(float(vj))
@@ -240,9 +238,9 @@ def _walk(branch: Branch, x0: float, lz0: float, *, sign: int = 1, target=None):
                         f"no lambda_z balances the axial force at lambda_i = {xj:.12g}"
                     )
                 return np.array(xs), np.array(lzs), np.array(loads), "lock"
-            if target is not None and sign * (vj - target) >= 0:
+            if target is not None and reached(vj, target, sign):
                 return np.array(xs), np.array(lzs), np.array(loads), "target"
-            if sign * (vj - loads[-2]) < 0:
+            if turned(loads[-2], vj, sign):
                 return np.array(xs), np.array(lzs), np.array(loads), "peak"
     return np.array(xs), np.array(lzs), np.array(loads), "end"
 
@@ -297,13 +295,11 @@ def threshold(
             grid,
         )
     if stop == "lock":
-        a, b = xs[-2], xs[-1]
-        while abs(b - a) > 1e-14 * abs(b):  # bisect the edge of the energy's domain
-            m = 0.5 * (a + b)
-            if np.isfinite(branch.value(clean(branch.at([m], guess(m))))[0]):
-                a = m
-            else:
-                b = m
+
+        def finite(x):
+            return bool(np.isfinite(branch.value(clean(branch.at([x], guess(x))))[0]))
+
+        a, _ = bisect(finite, xs[-2], xs[-1], LOCK, near_bad=True)  # the energy's domain ends
         grid = (xs[:-1], lzs[:-1], loads[:-1])
         return Threshold(control, sign * math.inf, "locking", float(a), float(guess(a)), 0.0, grid)
     grid = (xs, lzs, loads)
@@ -361,8 +357,7 @@ def solve_on(branch: Branch, grid, target: float, thr: Threshold | None, what: s
     def f(x):
         return float(branch.value(clean(branch.at([x], guess(x))))[0]) - target
 
-    lo, hi = sorted((a, b))
-    x = brentq(f, lo, hi, xtol=1e-16 * lo, rtol=4 * _EPS, maxiter=300)
+    x = brent(f, *sorted((a, b)), BRANCH, named=False)
     return x, float(clean(branch.at([x], guess(x)))["stretch"][0])
 
 
@@ -390,8 +385,7 @@ def _start(wall: Wall) -> tuple[float, float]:
         if not np.isfinite(fn):
             break
         if np.sign(fn) != np.sign(f_last):
-            a, b = sorted((last, nxt))
-            x = brentq(lambda x: f(x)[0], a, b, xtol=1e-16 * a, rtol=4 * _EPS, maxiter=300)
+            x = brent(lambda x: f(x)[0], *sorted((last, nxt)), BRANCH, named=False)
             return x, f(x)[1]
         last, f_last = nxt, fn
     raise BaseStateError("no unloaded state (V = 0, P_i = P_o) found for this tube")

@@ -28,6 +28,7 @@ import dataclasses
 import math
 
 from ..basestate.tube import solve_base_state
+from ..continuation.events import brent, widening_windows
 from ..errors import ConvergenceError, NoBifurcationFound, Remedy
 from ..incremental.accuracy import RTOL_RANGE, STABLE_SIGN, Accuracy
 from ..incremental.targets import (
@@ -41,7 +42,7 @@ from ..model.layers import Tube
 from ..model.params import check_side
 from ..outcomes import Kind, Outcome, Status
 from ..summary import critical_html
-from .march import brent, control_path, first_bifurcations
+from .march import control_path, first_bifurcations
 
 #: a value is certified when its error estimate is at most CERTIFIED rtol max(1, |value|)
 CERTIFIED = 1e4
@@ -289,11 +290,9 @@ def _second_resolution(g_coarse, value: float, path: tuple[float, float]) -> flo
     a growth at -0.16), and a root before the start is not this one. Without a root in the
     widest window the estimate is that window's half-width (the looser root is at least
     that far): an uncertified value, not a failure."""
-    lo_b, hi_b = min(path), max(path)
-    w = 1e-6 * max(1.0, abs(value))
-    for _ in range(12):
-        lo, hi = max(value - w, lo_b), min(value + w, hi_b)
+    bounds = (min(path), max(path))
+    windows = list(widening_windows(value, 1e-6 * max(1.0, abs(value)), 12, bounds=bounds))
+    for lo, hi, _ in windows:
         if lo < hi and g_coarse(lo) * g_coarse(hi) < 0:
             return abs(brent(g_coarse, lo, hi) - value)
-        w *= 4
-    return w / 4
+    return windows[-1][2]  # the widest window's half-width

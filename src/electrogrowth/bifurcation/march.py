@@ -14,7 +14,9 @@ lambda_i runs away and modes can lose and regain stability within a tiny interva
 the base state is lost between two steps the threshold is located exactly and approached
 with shrinking steps. Modes that change sign in a step are narrowed by a shared bisection
 and finished with Brent's method; a mode whose target dips towards zero between steps
-without crossing is examined by a bounded minimisation.
+without crossing is examined by a bounded minimisation. The stepping, the prediction and
+the location are the continuation engine's (continuation/: MODE_STEPS, EventWatch,
+first_roots); the march says what a state, a mode and a lost state are.
 """
 
 from __future__ import annotations
@@ -24,16 +26,18 @@ import math
 from collections.abc import Callable
 
 import numpy as np
-from scipy.optimize import brentq, minimize_scalar
 
 from ..basestate.tube import free_stretch, solve_base_state, threshold
-from ..errors import BaseStateError, ConvergenceError, NoBifurcationFound, ParameterError
+from ..continuation.events import LATER, brent, crossed, dip_bracket, dipped, first_roots
+from ..continuation.events import threshold_between as _lost_between
+from ..continuation.path import ControlPath, Stepper, StepPolicy
+from ..continuation.predict import EventWatch
+from ..errors import BaseStateError, NoBifurcationFound, ParameterError
 from ..incremental.targets import natural_family, row_family
 from ..model.layers import Tube
 
-FIRST_STEP, MIN_STEP, MAX_STEP, MAX_LAMBDA_JUMP = 0.004, 1e-4, 0.05, 0.05
-MAX_WAIT = 0.25
-LAMBDA_CAP = 50.0  # stop approaching a threshold once lambda_i has grown this much
+#: the mode march's step control: 0.4 % of the scale doubling up to 5 %, not below 1e-4
+MODE_STEPS = StepPolicy(smallest=1e-4)
 
 #: targets(state, modes (k, 2) or (k, 3) array) -> (k,) array of target values
 Targets = Callable[[object, np.ndarray], np.ndarray]
@@ -107,63 +111,6 @@ def unloaded_signs(params, modes: np.ndarray, targets: Targets) -> np.ndarray:
     return np.sign(targets(solve_base_state(params.reference()), modes))
 
 
-class _History:
-    """Last three samples (x, signed target) of every mode, and when each is due again.
-
-    A mode's target is extrapolated to its root, by the line through its last two samples
-    and the parabola through its last three, whichever reaches zero first (near Vbar = 0
-    targets fall like Vbar^2, which a line overestimates). The mode is re-evaluated once
-    the march has covered half that distance, and at least every MAX_WAIT of the scale (a
-    mode may lose and regain stability between two distant samples), so modes far from
-    bifurcation cost a few evaluations, not one per step.
-    """
-
-    def __init__(self, x0, g0, sense, scale):
-        n = g0.size
-        self.sense, self.scale = sense, scale
-        self.x = np.full((3, n), np.nan)  # rows: newest, previous, oldest
-        self.g = np.full((3, n), np.nan)
-        self.x[0], self.g[0] = x0, g0
-        self.alive = np.ones(n, bool)
-        self.due = np.full(n, x0)
-        self.x0 = x0
-
-    @property
-    def xa(self):
-        return self.x[0]
-
-    def root_distance(self):
-        """Extrapolated distance from the newest sample to the root (inf if receding)."""
-        (xa, xb, xc), (ga, gb, gc) = self.x, self.g
-        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-            slope = (ga - gb) / (xa - xb)
-            line = np.where(slope * self.sense < 0, -ga / slope * self.sense, np.inf)
-            curv = ((ga - gb) / (xa - xb) - (gb - gc) / (xb - xc)) / (xa - xc)
-            # g(xa + sense t) = ga + s t + c t^2 with s = slope sense, c = curv
-            s_, c_ = slope * self.sense, curv
-            disc = s_ * s_ - 4 * c_ * ga
-            t = (-s_ - np.sqrt(np.maximum(disc, 0))) / (2 * c_)
-            t2 = (-s_ + np.sqrt(np.maximum(disc, 0))) / (2 * c_)
-            t = np.where((t > 0) & (disc >= 0), t, np.where((t2 > 0) & (disc >= 0), t2, np.inf))
-        return np.fmin(np.where(np.isnan(line), np.inf, line), np.where(np.isnan(t), np.inf, t))
-
-    def needs(self, x):
-        """Alive modes to evaluate at x: due, or predicted to have crossed by x."""
-        reach = self.sense * (x - self.xa)
-        return self.alive & ((self.sense * (x - self.due) >= 0) | (reach >= self.root_distance()))
-
-    def record(self, idx, x, g):
-        self.x[:, idx] = np.vstack([np.full(idx.size, x), self.x[0, idx], self.x[1, idx]])
-        self.g[:, idx] = np.vstack([g, self.g[0, idx], self.g[1, idx]])
-        wait = np.minimum(0.5 * self.root_distance()[idx], MAX_WAIT * self.scale)
-        self.due[idx] = x + self.sense * wait
-
-    def step_limit(self):
-        """0.7 of the smallest extrapolated distance to a root, relative to the scale."""
-        dist = self.root_distance()[self.alive]
-        return 0.7 * dist.min() / self.scale if dist.size else np.inf
-
-
 def first_bifurcations(
     params: Tube,
     solve_for: str,
@@ -186,8 +133,8 @@ def first_bifurcations(
     if stable_signs is None:
         stable_signs = unloaded_signs(params, modes, targets)
     sref = stable_signs
-    x0, end, scale = control_path(params, solve_for, side)
-    sense = 1.0 if end > x0 else -1.0
+    path = ControlPath(*control_path(params, solve_for, side))
+    x0, sense = path.start, path.sense
     state = solve_base_state(at(x0))
     g0 = sref * targets(state, modes)
     doubt = np.nonzero(g0 <= 0)[0]
@@ -207,44 +154,33 @@ def first_bifurcations(
     def signed_fine(x, i):
         return float(sref[i] * fine(solve_base_state(at(x)), modes[[i]])[0])
 
-    hist = _History(x0, g0, sense, scale)
+    watch = EventWatch(x0, g0, sense, path.scale)
+    step = Stepper(path, MODE_STEPS, state.lambda_i)
     found, threshold = [], None
-    x_prev, lam_prev, lam0, d = x0, state.lambda_i, state.lambda_i, FIRST_STEP
-    while hist.alive.any():
-        done = (end - x_prev) * sense <= 0 or len(found) >= top
+    while watch.alive.any():
+        done = step.at_end() or len(found) >= top
         if not done:
-            x = min(x_prev + sense * d * scale, end, key=lambda v: sense * v)
+            x = step.propose()
             try:
                 state = solve_base_state(at(x))
             except BaseStateError:
-                threshold = _threshold_between(at, params, x_prev, x)
-                end = threshold - sense * 1e-12 * scale
-                d /= 4
+                threshold = _threshold_between(at, params, step.x, x)
+                step.lost(threshold)
                 continue
-            if abs(state.lambda_i / lam_prev - 1) > MAX_LAMBDA_JUMP and d > 1e-12:
-                d /= 2
+            if step.jumped(state.lambda_i):
                 continue
-            done = state.lambda_i > LAMBDA_CAP * lam0  # the wall is a film: at the threshold
-        if done:  # a last look at every mode not seen at x_prev: nothing left behind
-            idx = np.nonzero(hist.alive & (hist.xa != x_prev))[0]
+            done = step.film(state.lambda_i)  # the wall is a film: at the threshold
+        if done:  # a last look at every mode not seen at step.x: nothing left behind
+            x = step.x
+            idx = np.nonzero(watch.alive & (watch.xa != x))[0]
             if idx.size:
-                found += _advance(
-                    hist,
-                    idx,
-                    x_prev,
-                    signed(x_prev, idx),
-                    signed,
-                    signed_fine,
-                    modes,
-                    top,
-                )
+                found += _advance(watch, idx, x, signed(x, idx), signed, signed_fine, modes, top)
             break
-        idx = np.nonzero(hist.needs(x))[0]
+        idx = np.nonzero(watch.needs(x))[0]
         if idx.size:
             g = sref[idx] * targets(state, modes[idx])
-            found += _advance(hist, idx, x, g, signed, signed_fine, modes, top)
-        d = float(np.clip(hist.step_limit(), MIN_STEP, min(2 * d, MAX_STEP)))
-        x_prev, lam_prev = x, state.lambda_i
+            found += _advance(watch, idx, x, g, signed, signed_fine, modes, top)
+        step.accept(x, state.lambda_i, MODE_STEPS.limit(watch.distance(), path.scale))
     found.sort(key=lambda mv: sense * mv.value)
     if not found and threshold is None:
         thr = _voltage_threshold(params) if solve_for == "voltage" else math.inf
@@ -252,115 +188,38 @@ def first_bifurcations(
             threshold = thr
         else:
             raise NoBifurcationFound(
-                f"no mode bifurcates for {solve_for} between {x0:g} and {end:g}"
+                f"no mode bifurcates for {solve_for} between {x0:g} and {step.end:g}"
             )
     return MarchResult(found[:top], threshold)
 
 
-def _advance(hist, idx, x, g, signed, signed_fine, modes, need=None) -> list:
+def _advance(watch, idx, x, g, signed, signed_fine, modes, need=None) -> list:
     """Record the samples at x; roots of the modes that changed sign or dipped to zero
-    (of those that changed sign, the first ``need``, see :func:`_refine`)."""
+    (of those that changed sign, the first ``need``, see events.first_roots)."""
     found = []
-    hit = g <= 0
+    hit = crossed(g)
     js = np.nonzero(hit)[0]
     if js.size:  # bisected together from where each mode was last seen
-        roots = _refine(signed, signed_fine, modes, idx[js], hist.xa[idx[js]], x, hist.x0, need)
+        cand = idx[js]
+        roots = first_roots(signed, signed_fine, cand, watch.xa[cand], x, watch.x0, need)
         for j, root in zip(js, roots):
             if root is None:  # the loose sign was wrong: the mode is not past a root yet
                 hit[j] = False
-            elif root is _LATER:  # crossed after the first ``need`` roots: not wanted
+            elif root is LATER:  # crossed after the first ``need`` roots: not wanted
                 pass
             else:
-                found.append(root)
-    mid, old = hist.g[0, idx], hist.g[1, idx]  # the two samples before x
-    dips = np.nonzero(~hit & (mid < 0.25 * np.minimum(old, g)))[0]
+                found.append(_mode_value(modes, idx[j], root))
+    mid, old = watch.g[0, idx], watch.g[1, idx]  # the two samples before x
+    dips = np.nonzero(~hit & dipped(old, mid, g))[0]
     for j in dips[np.argsort(mid[dips])][:8]:
         i = idx[j]
-        bracket = _dip(lambda y, i=i: signed_fine(y, i), hist.x[1, i], x)
+        bracket = dip_bracket(lambda y, i=i: signed_fine(y, i), watch.x[1, i], x)
         if bracket is not None:
             found.append(_mode_value(modes, i, brent(lambda y, i=i: signed_fine(y, i), *bracket)))
             hit[j] = True
-    hist.alive[idx[hit]] = False
-    hist.record(idx[~hit], x, g[~hit])
+    watch.alive[idx[hit]] = False
+    watch.record(idx[~hit], x, g[~hit])
     return found
-
-
-def _dip(f, a, b):
-    """Does f (positive at a and b) dip below zero between? Bracket from the a side."""
-    lo, hi = min(a, b), max(a, b)
-    res = minimize_scalar(
-        f, bounds=(lo, hi), method="bounded", options={"xatol": 1e-12 * max(1.0, abs(lo))}
-    )
-    if res.fun <= 0:
-        return (a, res.x)  # a is where the march came from: the first root lies here
-    return None
-
-
-_LATER = object()  # a candidate of _refine whose root comes after the ``need`` wanted
-
-
-def _refine(signed, signed_fine, modes, cand, xa, x, x0, need=None) -> list:
-    """Roots of the candidates, which changed sign between xa (each its own) and x (loose
-    targets).
-
-    Shared bisection points narrow every candidate's own bracket, then Brent's method
-    with the fine targets finishes each. A candidate whose fine target is still positive
-    at x was misjudged by the loose one: None (it stays in the march). With ``need``, the
-    candidates past a root at the first x where at least ``need`` of them are (a shared
-    bisection of the loose signs) are finished, the rest are _LATER: near a short-wave
-    limit hundreds of modes cross within a step, and only the first few are reported.
-    """
-    sense = 1.0 if x > xa[0] else -1.0
-    lo, hi = np.array(xa, float), np.full(cand.size, x, float)
-    a, b = lo[np.argmin(sense * lo)], x
-    for _ in range(6):  # bisect towards the earliest root; sample the others on the way
-        c = 0.5 * (a + b)
-        inside = (c - lo) * (c - hi) < 0
-        g = signed(c, cand[inside])
-        neg = np.zeros(cand.size, bool)
-        neg[inside] = g <= 0
-        hi[neg], lo[inside & ~neg] = c, c
-        a, b = (a, c) if neg.any() else (c, b)
-    out = [None] * cand.size
-
-    def finish(k):
-        i, l, h = cand[k], lo[k], hi[k]
-        f = lambda y: signed_fine(y, i)  # noqa: E731
-        if f(h) > 0:  # fine and loose disagree at h: fall back to the whole step
-            if f(x) > 0:
-                return
-            h = x
-        if f(l) <= 0:
-            l = xa[k] if f(xa[k]) > 0 else x0  # the mode is stable at the start of the march
-        out[k] = _mode_value(modes, i, brent(f, *sorted((l, h))))
-
-    keep = np.arange(cand.size)
-    if need is not None and cand.size > need + 2:
-        # a pack: the first x (shared loose bisection) where at least ``need`` candidates
-        # are past a root; only those can hold the first ``need`` roots
-        a, b = lo[np.argmin(sense * lo)], x
-        for _ in range(60):
-            c = 0.5 * (a + b)
-            inside = keep[signed(c, cand[keep]) <= 0]
-            if inside.size >= need:
-                keep, b = inside, c
-            else:
-                a = c
-            if keep.size <= need + 2 or abs(b - a) <= 1e-13 * max(1.0, abs(b)):
-                break
-        for k in set(range(cand.size)) - set(keep.tolist()):
-            out[k] = _LATER
-    for k in keep:
-        finish(k)
-    return out
-
-
-def brent(f, a, b) -> float:
-    """Brent's method to full double precision, with a one-line error."""
-    try:
-        return brentq(f, a, b, xtol=1e-15 * max(1.0, abs(a)), rtol=1e-15, maxiter=200)
-    except (RuntimeError, ValueError) as exc:
-        raise ConvergenceError(f"the bracketed root solve failed on [{a}, {b}]: {exc}") from None
 
 
 def _voltage_threshold(tube) -> float:
@@ -371,23 +230,17 @@ def _threshold_between(at, params, x_ok, x_bad) -> float:
     """Parameter value where the base state is lost between x_ok and x_bad: where the
     voltage threshold falls to the applied voltage if that brackets it, else the edge of the
     states that solve (whichever of the tube's loads reaches its threshold), bisected."""
-    if params.voltage > 0:
-        try:
-            return brentq(
-                lambda x: _voltage_threshold(at(x)) - params.voltage,
-                min(x_ok, x_bad),
-                max(x_ok, x_bad),
-                xtol=1e-14,
-                rtol=1e-15,
-            )
-        except ValueError:  # the voltage's threshold does not bracket it: another load
-            pass
-    ok, bad = x_ok, x_bad
-    while abs(bad - ok) > 1e-13 * max(1.0, abs(ok)):
-        mid = 0.5 * (ok + bad)
-        try:
-            solve_base_state(at(mid))
-            ok = mid
-        except BaseStateError:
-            bad = mid
-    return ok
+    margin = (lambda x: _voltage_threshold(at(x)) - params.voltage) if params.voltage > 0 else None
+    return _lost_between(
+        x_ok, x_bad, margin=margin, exists=lambda x: _solves(at, x), tolerate=(ValueError,)
+    )
+
+
+def _solves(at, x, errors=(BaseStateError,), **options) -> bool:
+    """Does the base state at ``at(x)`` solve (``options`` to solve_base_state)? False on
+    one of ``errors``: the state is lost."""
+    try:
+        solve_base_state(at(x), **options)
+    except errors:
+        return False
+    return True

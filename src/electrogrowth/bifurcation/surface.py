@@ -39,10 +39,9 @@ import dataclasses
 import math
 from collections.abc import Callable
 
-import numpy as np
-from scipy.optimize import brentq, minimize_scalar
-
-from ..basestate.tube import solve_base_state, threshold
+from ..basestate.tube import solve_base_state
+from ..continuation import events
+from ..continuation.path import ControlPath, Stepper, StepPolicy
 from ..errors import BaseStateError, ConvergenceError, ParameterError
 from ..incremental.halfspace import surface_radius, surfaces
 from ..model.layers import Tube
@@ -55,11 +54,11 @@ from .directions import (
     reference_signs,
     sampler,
 )
-from .march import control_path
+from .march import _solves, _voltage_threshold, control_path
 
-FIRST_STEP, MIN_STEP, MAX_STEP = 0.004, 1e-6, 0.05
-MAX_LAMBDA_JUMP = 0.05  # shrink a step that changes lambda_i by more than this
-LAMBDA_CAP = 50.0  # stop approaching a voltage threshold once lambda_i grew this much
+#: the short-wave march's step control: as the mode march's, but down to 1e-6 of the scale
+#: (h is one continuous function: its zero may be approached closer)
+SURFACE_STEPS = StepPolicy(smallest=1e-6)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -132,21 +131,7 @@ def _check(params, solve_for, side, faces, rtol) -> tuple[str, str | None, tuple
     return solve_for, side, faces
 
 
-def _voltage_threshold(tube) -> float:
-    """The voltage threshold of the tube's voltage branch (inf if there is none)."""
-    return threshold(tube, "voltage").value
-
-
 # -- the march ------------------------------------------------------------------------------
-
-
-def _brent(f, a, b, rtol) -> float:
-    try:
-        return brentq(
-            f, a, b, xtol=max(1e-15, 1e-3 * rtol) * max(1.0, abs(a)), rtol=1e-15, maxiter=300
-        )
-    except (RuntimeError, ValueError) as exc:
-        raise ConvergenceError(f"the bracketed root solve failed on [{a}, {b}]: {exc}") from None
 
 
 def _locate(params, solve_for, side, h: Callable, rtol: float, h_march=None):
@@ -157,8 +142,8 @@ def _locate(params, solve_for, side, h: Callable, rtol: float, h_march=None):
     fine_h, h = h, (h_march or h)
     at = lambda x: params.at(solve_for, float(x))  # noqa: E731
     state_at = lambda x: solve_base_state(at(x), rtol=rtol)  # noqa: E731
-    x0, end, scale = control_path(params, solve_for, side)
-    sense = 1.0 if end > x0 else -1.0
+    path = ControlPath(*control_path(params, solve_for, side))
+    x0, scale = path.start, path.scale
     try:
         state = state_at(x0)
     except BaseStateError as exc:
@@ -177,76 +162,54 @@ def _locate(params, solve_for, side, h: Callable, rtol: float, h_march=None):
             f" at {solve_for} = {x0:g}; start from a stable state"
         )
     value_of = lambda x: h(state_at(x)).value  # noqa: E731
+    fine_of = lambda y: fine_h(state_at(y)).value  # noqa: E731
     xs, hs = [x0], [s0.value]
-    lam0 = lam_prev = state.lambda_i
+    step = Stepper(path, SURFACE_STEPS, state.lambda_i)
     threshold = None
-    d = FIRST_STEP
-    while True:
-        x_prev = xs[-1]
-        if (end - x_prev) * sense <= 0:
-            break
-        x = min(x_prev + sense * d * scale, end, key=lambda v: sense * v)
+    while not step.at_end():
+        x_prev = step.x
+        x = step.propose()
         try:
             state = state_at(x)
         except BaseStateError:
             threshold = _threshold_between(at, params, x_prev, x, rtol)
-            end = threshold - sense * 1e-12 * scale
-            d /= 4
-            if abs(end - x_prev) <= 1e-12 * scale:
+            if step.lost(threshold):
                 break
             continue
         except ConvergenceError as exc:  # the base-state solver failed here: step shorter
-            if d <= 1e-5:
+            if not step.unresolved():
                 raise ConvergenceError(
                     f"base state not resolved at {solve_for} = {x:.12g}"
                     f" while marching from {x0:g} (no surface instability"
                     f" before it): {exc}"
                 ) from None
-            d /= 4
             continue
-        if abs(state.lambda_i / lam_prev - 1) > MAX_LAMBDA_JUMP and d > 1e-12:
-            d /= 2
+        if step.jumped(state.lambda_i):
             continue
         s = h(state)
         if math.isnan(s.value):  # ellipticity lost in (x_prev, x]
-            lo, hi = x_prev, x
-            for _ in range(60):
-                mid = 0.5 * (lo + hi)
-                if abs(hi - lo) <= 1e-13 * scale:
-                    break
-                if math.isnan(value_of(mid)):
-                    hi = mid
-                else:
-                    lo = mid
-            if fine_h(state_at(lo)).value <= 0:  # a surface instability just before
-                return Kind.SURFACE, None, _bracket(xs, lo, lambda y: fine_h(state_at(y)).value)
+            elliptic = lambda y: not math.isnan(value_of(y))  # noqa: E731
+            edge = events.Tolerance(1e-13 * scale, maxiter=60, scale="absolute")
+            lo, hi = events.bisect(elliptic, x_prev, x, edge)
+            if fine_of(lo) <= 0:  # a surface instability just before
+                return Kind.SURFACE, None, _bracket(xs, lo, fine_of)
             return Kind.ELLIPTICITY, 0.5 * (lo + hi), None
         if s.value <= 0:
-            return Kind.SURFACE, None, _bracket(xs, x, lambda y: fine_h(state_at(y)).value)
-        if len(hs) >= 2 and hs[-1] < 0.25 * min(hs[-2], s.value):  # a dip between samples?
-            lo, hi = sorted((xs[-2], x))
-            dip = minimize_scalar(
-                value_of,
-                bounds=(lo, hi),
-                method="bounded",
-                options={"xatol": 1e-12 * max(1.0, abs(lo))},
-            )
-            if dip.fun <= 0:
-                return (
-                    Kind.SURFACE,
-                    None,
-                    _bracket(xs[:-1], float(dip.x), lambda y: fine_h(state_at(y)).value),
-                )
+            return Kind.SURFACE, None, _bracket(xs, x, fine_of)
+        if len(hs) >= 2 and events.dipped(hs[-2], hs[-1], s.value):  # a dip between samples?
+            dip = events.dip_bracket(value_of, xs[-2], x)
+            if dip is not None:
+                return Kind.SURFACE, None, _bracket(xs[:-1], float(dip[1]), fine_of)
         xs.append(x)
         hs.append(s.value)
-        lam_prev = state.lambda_i
-        if state.lambda_i > LAMBDA_CAP * lam0:  # the wall is a film: at the threshold
+        if step.film(state.lambda_i):  # the wall is a film: at the threshold
+            step.accept(x, state.lambda_i)
             if solve_for != "voltage" and threshold is None:
-                threshold = _threshold_between(at, params, x, end, rtol, exists=False)
+                threshold = _threshold_between(at, params, x, step.end, rtol, exists=False)
             break
-        slope = (hs[-1] - hs[-2]) / (xs[-1] - xs[-2]) * sense
-        limit = 0.7 * hs[-1] / -slope / scale if slope < 0 else math.inf
-        d = float(np.clip(limit, MIN_STEP, min(2 * d, MAX_STEP)))
+        slope = (hs[-1] - hs[-2]) / (xs[-1] - xs[-2]) * path.sense
+        limit = SURFACE_STEPS.safety * hs[-1] / -slope / scale if slope < 0 else math.inf
+        step.accept(x, state.lambda_i, limit)
     if threshold is None and solve_for == "voltage":
         thr = _voltage_threshold(params)
         threshold = thr if math.isfinite(thr) else None
@@ -269,49 +232,34 @@ def _threshold_between(at, params, x_ok, x_bad, rtol, exists: bool = True) -> fl
     """Control value between x_ok and x_bad where the base state ceases to exist: where the
     voltage threshold falls to the applied voltage if that brackets it, else (e.g. a
     locking stretch of a stiffening energy) by bisection on the existence of the state
-    (a state the base-state solver cannot resolve counts as lost). With exists=False
-    (x_bad not known to be lost) only the voltage threshold is tried, None if it does not
-    fall to the applied voltage before x_bad."""
-    lo, hi = min(x_ok, x_bad), max(x_ok, x_bad)
-    if params.voltage > 0:
-        try:
-            return brentq(
-                lambda x: _voltage_threshold(at(x)) - params.voltage,
-                lo,
-                hi,
-                xtol=1e-14,
-                rtol=1e-15,
-            )
-        except (ValueError, BaseStateError, ConvergenceError):
-            pass
-    if not exists:
-        return None
-    good, bad = x_ok, x_bad
-    while abs(bad - good) > 1e-13 * max(1.0, abs(good)):
-        mid = 0.5 * (good + bad)
-        try:
-            solve_base_state(at(mid), rtol=rtol)
-            good = mid
-        except (BaseStateError, ConvergenceError):
-            bad = mid
-    return bad
+    (a state the base-state solver cannot resolve counts as lost; the first lost value).
+    With exists=False (x_bad not known to be lost) only the voltage threshold is tried,
+    None if it does not fall to the applied voltage before x_bad."""
+    lost = (BaseStateError, ConvergenceError)
+    return events.threshold_between(
+        x_ok,
+        x_bad,
+        margin=(lambda x: _voltage_threshold(at(x)) - params.voltage)
+        if params.voltage > 0
+        else None,
+        exists=(lambda x: _solves(at, x, lost, rtol=rtol)) if exists else None,
+        tolerate=(ValueError, *lost),
+        last="bad",
+    )
 
 
 def _second_resolution(value_coarse, value: float) -> float:
     """|root of the coarser h near value - value| (NaN if the base state is lost before
     the coarse target changes sign: a surface instability at the threshold itself)."""
-    w = 1e-8 * max(1.0, abs(value))
-    for _ in range(14):
-        lo, hi = value - w, value + w
+    for lo, hi, _ in events.widening_windows(value, 1e-8 * max(1.0, abs(value)), 14):
         try:
             flo, fhi = value_coarse(lo), value_coarse(hi)
         except (BaseStateError, ConvergenceError):
             return math.nan
         if flo * fhi < 0:
             return abs(
-                brentq(value_coarse, lo, hi, xtol=1e-15 * max(1.0, abs(value)), rtol=1e-15) - value
+                events.brent(value_coarse, lo, hi, events.SECOND, ref=value, named=False) - value
             )
-        w *= 4
     raise ConvergenceError(f"no root of the coarse half-space target near {value}")
 
 
@@ -343,7 +291,7 @@ def _solve(params, solve_for, side, faces, rtol, direction) -> SurfaceLimit:
             solve_for, value, s.face, s.psi, _ratio(s.psi), kind, 0.0, at(value), side
         )
     value_of = lambda x: h(solve_base_state(at(x), rtol=rtol)).value  # noqa: E731
-    value = _brent(value_of, *bracket, rtol)
+    value = events.brent(value_of, *bracket, events.surface_tolerance(rtol))
     coarse_of = lambda x: hc(solve_base_state(at(x), rtol=coarse.rtol)).value  # noqa: E731
     err = _second_resolution(coarse_of, value)
     s = h(solve_base_state(at(value), rtol=rtol))

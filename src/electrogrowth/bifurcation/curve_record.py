@@ -1,0 +1,304 @@
+"""The record of a critical curve: its grid points, the switches of the critical mode, the
+table (CSV, JSON, xarray) they make (bifurcation/curves.py computes them)."""
+
+from __future__ import annotations
+
+import csv
+import dataclasses
+import math
+from pathlib import Path
+from typing import NamedTuple
+
+import numpy as np
+
+from ..atomic import replaced
+from ..labelled import curve_dataset
+from ..model.layers import Tube
+from ..outcomes import NO_MODE, Kind, Outcome, Status, remedy, status_of, traceback_of
+from ..summary import curve_html
+
+#: The parameters of the paper's tube a curve can run along (Tube.parameter_keys).
+ALONG = ("stretch", "voltage", "outer_radius", "length", "growth")
+
+
+class Switch(NamedTuple):
+    """The critical mode changes at ``x`` from ``mode_before`` to ``mode_after`` (m, n), in
+    the order of the grid; (-1, -1) stands for the threshold or the short-wave limit.
+    ``kind`` "switch": the two are equally critical there (a crossing), ``value`` =
+    ``value_after``. ``kind`` "end": the branch before ends there without a crossing, either
+    at a jump (a mode's first critical value appears or vanishes discontinuously, e.g. a
+    window of instability closes; ``value`` and ``value_after`` are the one-sided limits of
+    the critical value) or where one side does not wrinkle (the threshold comes first)."""
+
+    x: float
+    value: float
+    mode_before: tuple[int, int]
+    mode_after: tuple[int, int]
+    value_after: float
+    kind: str = Kind.SWITCH
+
+
+def _change_kind(a: CurvePoint, b: CurvePoint, v_before: float, v_after: float) -> Kind:
+    """ "switch" where the critical value is continuous and both sides wrinkle (a mode or the
+    short-wave limit); otherwise the branch before "end"s."""
+    wrinkles = a.kind in (Kind.BIFURCATION, Kind.SURFACE) and b.kind in (
+        Kind.BIFURCATION,
+        Kind.SURFACE,
+    )
+    equal = abs(v_after - v_before) <= 1e-9 * max(1.0, abs(v_before))
+    return Kind.SWITCH if wrinkles and equal else Kind.END
+
+
+@dataclasses.dataclass(frozen=True)
+class CurvePoint(Outcome):
+    """One grid point, an :class:`~electrogrowth.outcomes.Outcome`: critical value and
+    mode, kind "bifurcation", "threshold" or "surface" ("" where the scan failed: then
+    value NaN and ``status`` FAILED, an electrogrowth error, or ERROR, a bug, with
+    ``message``, ``remedy`` and, for a bug, its ``traceback``), status OK or INACCURATE
+    (the critical value's error estimate exceeds the accuracy asked even after
+    refinement, :func:`bifurcation.critical_value`), the runners-up (m, n, value), whether
+    the critical point is the short-wave limit (``surface``), and that limit where the
+    scan computed it (else NaN). A status given as text ("", "inaccurate") is read as the
+    Status. The curve's table writes a failure's status in its kind column (:func:`_row`).
+    """
+
+    x: float
+    value: float
+    mode: tuple[int, int]
+    kind: str
+    status: Status = Status.OK
+    runners_up: tuple[tuple[int, int, float], ...] = ()
+    surface: bool = False
+    short_wave_limit: float = math.nan
+    error_estimate: float = math.nan
+    message: str = ""
+    remedy: str = ""
+    traceback: str = dataclasses.field(default="", repr=False, compare=False)
+
+    def __post_init__(self):
+        object.__setattr__(self, "status", Status(self.status or Status.OK))
+
+
+def _failed_point(x: float, exc: Exception) -> CurvePoint:
+    """The grid point at x whose scan raised ``exc``: FAILED (an electrogrowth error) or
+    ERROR (a bug, its traceback kept)."""
+    status = status_of(exc)
+    text = " ".join(str(exc).split())
+    message = text if status is Status.FAILED else f"internal error: {type(exc).__name__}: {text}"
+    return CurvePoint(
+        float(x),
+        math.nan,
+        NO_MODE,
+        "",
+        status,
+        message=message,
+        remedy=remedy(exc),
+        traceback=traceback_of(exc),
+    )
+
+
+def _failed(pt: CurvePoint) -> bool:
+    """A grid point without a value: its scan failed, or hit a bug."""
+    return pt.status in (Status.FAILED, Status.ERROR)
+
+
+def _failed_row(kind) -> bool:
+    """A row of a curve's table without a value (its kind column holds the status)."""
+    return kind in (Status.FAILED, Status.ERROR)
+
+
+def _message(exc: Exception) -> str:
+    """One line; an unexpected (non-electrogrowth) error is named by its type, as a bug."""
+    return _row_status(_failed_point(math.nan, exc))
+
+
+@dataclasses.dataclass(frozen=True)
+class Curve:
+    """The critical ``solve_for`` along ``along``.
+
+    Rows are the grid points and, at every located change of the critical mode, two rows at
+    the same x: the end of the branch before and the start of the branch after (kind
+    "switch" at a crossing, "end" where the branch before just ends: see :class:`Switch`).
+    ``kind`` is "bifurcation" (mode m, n), "threshold" (m = n = -1: the axisymmetric state
+    is lost first), "surface" (m = n = -1: the exact short-wave limit m, n -> infinity at a
+    face comes first), "switch", "end" or "failed" (value NaN, ``status`` says why).
+    ``status`` starts with "inaccurate" where the critical value's error estimate exceeds
+    the accuracy asked even after refinement (``inaccurate`` marks those rows).
+    ``surface`` marks the rows of the short-wave limit; ``short_wave_limit`` holds the limit
+    where the scan computed it (NaN elsewhere). ``switches`` lists the crossings, ``ends``
+    the branch ends that were located.
+    """
+
+    along: str
+    solve_for: str
+    side: str | None
+    x: np.ndarray
+    value: np.ndarray
+    m: np.ndarray
+    n: np.ndarray
+    kind: np.ndarray
+    status: tuple[str, ...]
+    switches: tuple[Switch, ...]
+    params: Tube
+    surface: np.ndarray
+    short_wave_limit: np.ndarray
+    ends: tuple[Switch, ...] = ()
+
+    @property
+    def inaccurate(self) -> np.ndarray:
+        """Rows whose critical value is not certified to the rtol asked (boolean)."""
+        mark = str(Status.INACCURATE)
+        return np.array([s.split(";")[0] == mark for s in self.status], dtype=bool)
+
+    def branches(self) -> list[tuple[tuple[int, int], np.ndarray]]:
+        """Maximal runs of rows with one mode ((-1, -1): threshold), failed rows excluded:
+        [((m, n), row indices), ...] in order."""
+        out, start = [], None
+        for i in range(len(self.x) + 1):
+            end = i == len(self.x)
+            ok = not end and not _failed_row(self.kind[i])
+            if start is not None and (
+                not ok or (self.m[i], self.n[i]) != (self.m[start], self.n[start])
+            ):
+                out.append(((int(self.m[start]), int(self.n[start])), np.arange(start, i)))
+                start = None
+            if ok and start is None:
+                start = i
+        return out
+
+    def to_xarray(self):
+        """The curve as an ``xarray.Dataset``: rows on dimension point (x is the coordinate
+        named after ``along``), the located switches on dimension switch (labelled.py)."""
+        return curve_dataset(self)
+
+    def _repr_html_(self) -> str:
+        return curve_html(self)
+
+    def to_csv(self, path: str | Path) -> Path:
+        """Columns <along>, <solve_for>_cr, m, n, kind, surface (0/1), short_wave_limit,
+        status."""
+        path = Path(path)
+        with replaced(path, newline="") as fh:  # whole or not at all (atomic.py)
+            w = csv.writer(fh)
+            w.writerow(
+                [
+                    self.along,
+                    f"{self.solve_for}_cr",
+                    "m",
+                    "n",
+                    "kind",
+                    "surface",
+                    "short_wave_limit",
+                    "status",
+                ]
+            )
+            for row in zip(
+                self.x,
+                self.value,
+                self.m,
+                self.n,
+                self.kind,
+                self.surface,
+                self.short_wave_limit,
+                self.status,
+            ):
+                x, v, m, n, kind, surf, limit, status = row
+                w.writerow(
+                    [
+                        repr(float(x)),
+                        repr(float(v)),
+                        int(m),
+                        int(n),
+                        kind,
+                        int(surf),
+                        repr(float(limit)),
+                        status,
+                    ]
+                )
+        return path
+
+    def as_dict(self) -> dict:
+        """JSON-ready record (NaN -> None)."""
+        num = lambda a: [None if not math.isfinite(v) else float(v) for v in a]  # noqa: E731
+        p = self.params
+        rec = p.record()
+        fixed = {  # the tube's material(s), its numbers but the curve's own two, and itself
+            "material": rec.pop("material", None) or " / ".join(rec.pop("materials", ())),
+            "fixed": {k: v for k, v in rec.items() if k not in (self.along, self.solve_for)},
+            "tube": p.as_dict(),
+        }
+        return {
+            "along": self.along,
+            "solve_for": self.solve_for,
+            "side": self.side,
+            **fixed,
+            "x": num(self.x),
+            "value": num(self.value),
+            "m": self.m.tolist(),
+            "n": self.n.tolist(),
+            "kind": self.kind.tolist(),
+            "status": list(self.status),
+            "surface": self.surface.tolist(),
+            "short_wave_limit": num(self.short_wave_limit),
+            "switches": [_change_record(s) for s in self.switches],
+            "ends": [_change_record(s) for s in self.ends],
+        }
+
+
+def _change_record(s: Switch) -> dict:
+    return {
+        "x": s.x,
+        "value": s.value,
+        "mode_before": list(s.mode_before),
+        "mode_after": list(s.mode_after),
+        "value_after": s.value_after,
+        "kind": str(s.kind),
+    }
+
+
+def _scan_point(x: float, res) -> CurvePoint:
+    """The CurvePoint of a ScanResult at x (as :func:`curve_point`)."""
+    c = res.critical
+    mode = (c.m, c.n) if c.kind == Kind.BIFURCATION else NO_MODE
+    limit = res.short_wave_limit
+    return CurvePoint(
+        float(x),
+        c.value,
+        mode,
+        c.kind,
+        _accuracy(c),
+        tuple((r.m, r.n, r.value) for r in res.runners_up),
+        bool(res.surface_instability),
+        math.nan if limit is None else float(limit),
+        float(c.error_estimate),
+    )
+
+
+def _accuracy(c) -> Status:
+    """A grid point's status from its CriticalPoint: INACCURATE (not certified to the
+    rtol asked) or OK."""
+    return Status.INACCURATE if c.status == Status.INACCURATE else Status.OK
+
+
+def _row(pt: CurvePoint):
+    """The table row of a grid point: a failure's status in the kind column."""
+    kind = pt.status if pt.kind == "" else pt.kind
+    return (pt.x, pt.value, pt.mode, kind, _row_status(pt), pt.surface, pt.short_wave_limit)
+
+
+def _row_status(pt: CurvePoint) -> str:
+    """The status column: a failure's message (a bug's with its remedy), else "" or
+    "inaccurate", then any note (a switch not located)."""
+    if pt.kind == "" and pt.status == Status.ERROR:
+        return f"{pt.message} ({pt.remedy})"
+    if pt.kind == "":
+        return pt.message
+    mark = str(Status.INACCURATE) if pt.status == Status.INACCURATE else ""
+    return "; ".join(filter(None, (mark, pt.message)))
+
+
+def _not_located(pt: CurvePoint, prev: CurvePoint, exc: Exception) -> CurvePoint:
+    """``pt`` (its status kept) noting that the switch from ``prev`` could not be located;
+    a bug is named as one ("internal error: ...", with the bug report's remedy)."""
+    why = f"switch from {prev.mode} not located: {_message(exc)}"
+    return dataclasses.replace(pt, message="; ".join(filter(None, (pt.message, why))))

@@ -1,0 +1,273 @@
+"""What a path meets, and where: sign changes, dips, turning loads, and the root finders
+that locate them (one Brent, one bisection, widening windows, the edge of a path).
+
+Every march signs its event functions so that the start of the path is positive (a
+mode's target times its sign on the unloaded tube, the half-space minimum): an event
+happens where a function reaches zero. Between two samples a function can also dip below
+zero and come back (a window of instability): a sample lower than DIP_RATIO of both its
+neighbours is examined by a bounded minimisation. The tolerances are named here, each
+with its caller, so a march's accuracy is read off one table.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Callable, Iterator
+
+import numpy as np
+from scipy.optimize import brentq, minimize_scalar
+
+from ..errors import ConvergenceError
+
+#: a sample lower than this fraction of both neighbours may hide a dip below zero
+DIP_RATIO = 0.25
+#: the bounded minimisation of a dip stops at DIP_XATOL max(1, |lower end|)
+DIP_XATOL = 1e-12
+
+
+# -- events ---------------------------------------------------------------------------------
+
+
+def crossed(g):
+    """Signed event values (positive at the start of the path) at or past zero."""
+    return g <= 0
+
+
+def dipped(old, mid, new):
+    """Did ``mid``, sampled between ``old`` and ``new``, fall below DIP_RATIO of both? (a
+    window of instability between samples may be hiding there)."""
+    return mid < DIP_RATIO * np.minimum(old, new)
+
+
+def reached(value, target, sense) -> bool:
+    """Has ``value``, moving in ``sense``, reached ``target``?"""
+    return sense * (value - target) >= 0
+
+
+def turned(previous, value, sense) -> bool:
+    """Has a load that rose in ``sense`` turned back (a limit point, a fold of the path)?"""
+    return sense * (value - previous) < 0
+
+
+def dip_bracket(f, a: float, b: float) -> tuple[float, float] | None:
+    """Does f (positive at a and b) dip to zero or below between them? (a, where it does)
+    from a bounded minimisation, or None: the first root lies between them."""
+    lo, hi = min(a, b), max(a, b)
+    res = minimize_scalar(
+        f, bounds=(lo, hi), method="bounded", options={"xatol": DIP_XATOL * max(1.0, abs(lo))}
+    )
+    if res.fun <= 0:
+        return (a, res.x)  # a is where the march came from: the first root lies here
+    return None
+
+
+# -- Brent's method, with named tolerances --------------------------------------------------
+
+
+@dataclasses.dataclass(frozen=True)
+class Tolerance:
+    """When a root finder stops. Brent's method: |x - root| <= xtol + rtol |x|; a
+    bisection: |bad - good| <= xtol. xtol is ``xtol`` times max(1, |ref|) (``scale``
+    "unit"), times |ref| ("relative") or as it is ("absolute"), ref being the end the
+    caller names (Brent: the bracket's first end by default). ``maxiter`` iterations at
+    most."""
+
+    xtol: float
+    rtol: float = 0.0
+    maxiter: int = 100
+    scale: str = "unit"
+
+    def at(self, ref: float) -> float:
+        """The absolute tolerance near ``ref``."""
+        if self.scale == "unit":
+            return self.xtol * max(1.0, abs(ref))
+        if self.scale == "relative":
+            return self.xtol * abs(ref)
+        return self.xtol
+
+
+_EPS = float(np.finfo(float).eps)
+
+#: a root to full double precision (critical values of modes, their error estimates)
+FULL = Tolerance(1e-15, 1e-15, 200)
+#: a switch between two modes of a curve
+SWITCH = Tolerance(1e-13, 1e-14, 100)
+#: where the voltage threshold falls to the applied voltage
+THRESHOLD = Tolerance(1e-14, 1e-15, 100, "absolute")
+#: the coarser root of an error estimate of the short-wave limit
+SECOND = Tolerance(1e-15, 1e-15, 100)
+#: a point of a base-state branch (lambda_z, r_i: positive), to the last bits
+BRANCH = Tolerance(1e-16, 4 * _EPS, 300, "relative")
+#: lambda_z balancing the axial force on a branch
+BRANCH_STRETCH = Tolerance(1e-16, 4 * _EPS, 200, "relative")
+
+
+def surface_tolerance(rtol: float) -> Tolerance:
+    """The short-wave limit to ~1e-3 of its accuracy rtol (not below FULL's)."""
+    return Tolerance(max(1e-15, 1e-3 * rtol), 1e-15, 300)
+
+
+def brent(f, a: float, b: float, tol: Tolerance = FULL, *, ref=None, named: bool = True):
+    """The root of f in [a, b] by Brent's method to ``tol`` (near ``ref``, default a).
+
+    A failure (no sign change, no convergence, or a RuntimeError/ValueError from f itself)
+    is a ConvergenceError naming the bracket; with ``named=False`` SciPy's and f's errors
+    pass as they are (the callers that always have a bracket)."""
+    xtol = tol.at(a if ref is None else ref)
+    if not named:
+        return brentq(f, a, b, xtol=xtol, rtol=tol.rtol, maxiter=tol.maxiter)
+    try:
+        return brentq(f, a, b, xtol=xtol, rtol=tol.rtol, maxiter=tol.maxiter)
+    except (RuntimeError, ValueError) as exc:
+        raise ConvergenceError(f"the bracketed root solve failed on [{a}, {b}]: {exc}") from None
+
+
+# -- bisection ------------------------------------------------------------------------------
+
+#: the edge of a path's states (where its base state is lost), and a pack of roots
+EDGE = Tolerance(1e-13, maxiter=200)
+#: the edge of an energy's domain (a locking stretch) on a base-state branch, near |bad|
+LOCK = Tolerance(1e-14, maxiter=200, scale="relative")
+#: where a mode of a curve stops bifurcating before the threshold
+MODE_EDGE = Tolerance(1e-12, maxiter=200)
+
+
+def bisect(
+    holds: Callable[[float], bool],
+    good: float,
+    bad: float,
+    tol: Tolerance = EDGE,
+    *,
+    near_bad: bool = False,
+) -> tuple[float, float]:
+    """Narrow [good, bad] (``holds`` true at good, false at bad) by halving until
+    |bad - good| <= tol (near good, or near bad with ``near_bad``), at most tol.maxiter
+    halvings; returns the final (good, bad)."""
+    for _ in range(tol.maxiter):
+        if abs(bad - good) <= tol.at(bad if near_bad else good):
+            break
+        mid = 0.5 * (good + bad)
+        if holds(mid):
+            good = mid
+        else:
+            bad = mid
+    return good, bad
+
+
+def widening_windows(
+    x: float, width: float, rounds: int, *, bounds=(-math.inf, math.inf), factor: float = 4.0
+) -> Iterator[tuple[float, float, float]]:
+    """Windows [x - w, x + w] (clipped to ``bounds``) for w = width, factor width, ...:
+    (lo, hi, w) ``rounds`` times, where a root near x is looked for."""
+    lo_b, hi_b = bounds
+    for _ in range(rounds):
+        yield max(x - width, lo_b), min(x + width, hi_b), width
+        width *= factor
+
+
+def threshold_between(
+    x_ok: float,
+    x_bad: float,
+    *,
+    margin: Callable[[float], float] | None = None,
+    exists: Callable[[float], bool] | None = None,
+    tolerate: tuple[type[BaseException], ...] = (),
+    last: str = "ok",
+) -> float | None:
+    """The control value between x_ok (a state exists) and x_bad where the path's state is
+    lost.
+
+    With ``margin`` (how far a state is from its threshold, e.g. the voltage threshold
+    minus the applied voltage), its root by Brent (tolerance THRESHOLD); an error of one
+    of the types ``tolerate`` (no sign change: ValueError) falls back on ``exists``,
+    others pass. With ``exists``
+    (does a state solve at x?), the edge of the states by bisection to EDGE: the last x
+    with a state (``last`` "ok") or the first without ("bad"). None if neither applies.
+    """
+    lo, hi = min(x_ok, x_bad), max(x_ok, x_bad)
+    if margin is not None:
+        try:
+            return brent(margin, lo, hi, THRESHOLD, named=False)
+        except tolerate:
+            pass
+    if exists is None:
+        return None
+    ok, bad = bisect(exists, x_ok, x_bad, EDGE)
+    return ok if last == "ok" else bad
+
+
+# -- many events at once: the march's shared bisection --------------------------------------
+
+#: halvings shared by the candidates of a step before each is finished alone
+SHARED_ROUNDS = 6
+#: halvings to find the first x where ``need`` candidates are past zero (a pack)
+PACK_ROUNDS = 60
+
+LATER = object()  # a candidate whose root comes after the ``need`` wanted
+
+
+def first_roots(
+    signed: Callable[[float, np.ndarray], np.ndarray],
+    fine: Callable[[float, int], float],
+    cand: np.ndarray,
+    xa: np.ndarray,
+    x: float,
+    x0: float,
+    need: int | None = None,
+) -> list:
+    """Roots of the candidates ``cand``, which changed sign between xa (each its own last
+    sample) and x by the loose ``signed(x, cand)``; ``fine(x, i)`` is the accurate signed
+    value of candidate i.
+
+    Shared bisection points narrow every candidate's own bracket (SHARED_ROUNDS), then
+    Brent's method on ``fine`` finishes each. A candidate whose fine value is still
+    positive at x was misjudged by the loose one: None (it stays in the march). With
+    ``need``, the candidates past zero at the first x where at least ``need`` of them are
+    (a shared bisection of the loose signs) are finished, the rest are LATER: near a
+    short-wave limit hundreds of modes cross within a step, and only the first few are
+    reported. x0 is the start of the path, where every candidate is positive.
+    """
+    sense = 1.0 if x > xa[0] else -1.0
+    lo, hi = np.array(xa, float), np.full(cand.size, x, float)
+    a, b = lo[np.argmin(sense * lo)], x
+    for _ in range(SHARED_ROUNDS):  # bisect towards the earliest root; the others on the way
+        c = 0.5 * (a + b)
+        inside = (c - lo) * (c - hi) < 0
+        g = signed(c, cand[inside])
+        neg = np.zeros(cand.size, bool)
+        neg[inside] = g <= 0
+        hi[neg], lo[inside & ~neg] = c, c
+        a, b = (a, c) if neg.any() else (c, b)
+    out: list = [None] * cand.size
+
+    def finish(k):
+        i, l, h = cand[k], lo[k], hi[k]
+        f = lambda y: fine(y, i)  # noqa: E731
+        if f(h) > 0:  # fine and loose disagree at h: fall back to the whole step
+            if f(x) > 0:
+                return
+            h = x
+        if f(l) <= 0:
+            l = xa[k] if f(xa[k]) > 0 else x0  # the candidate is positive at the start
+        out[k] = brent(f, *sorted((l, h)))
+
+    keep = np.arange(cand.size)
+    if need is not None and cand.size > need + 2:
+        # a pack: the first x (shared loose bisection) where at least ``need`` candidates
+        # are past zero; only those can hold the first ``need`` roots
+        a, b = lo[np.argmin(sense * lo)], x
+        for _ in range(PACK_ROUNDS):
+            c = 0.5 * (a + b)
+            inside = keep[signed(c, cand[keep]) <= 0]
+            if inside.size >= need:
+                keep, b = inside, c
+            else:
+                a = c
+            if keep.size <= need + 2 or abs(b - a) <= EDGE.at(b):
+                break
+        for k in set(range(cand.size)) - set(keep.tolist()):
+            out[k] = LATER
+    for k in keep:
+        finish(k)
+    return out

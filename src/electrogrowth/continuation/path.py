@@ -1,0 +1,169 @@
+"""The one stepper: how a march moves along its control, from a stable start to its events.
+
+A path is a one-parameter family of solutions: its state is a :class:`Point` (the control
+value, the unknowns solved there: a base state, the critical values of some modes, a
+branch's load). Every march of the package is natural-parameter continuation: the step is
+taken in the control, and the unknowns are solved at the new value (:class:`Path`).
+
+The step control is one object per march, :class:`StepPolicy`: steps start at ``first``
+of the path's scale and at most double (``growth``) up to ``largest``, never beyond
+``safety`` of the distance at which the march's predictor (continuation.predict) expects
+the next event, and never below ``smallest`` (1e-4 for the mode march, 1e-6 for the
+short-wave march). A step is halved when the monitored unknown (lambda_i, the inner
+stretch) changes by more than ``max_jump``: near the voltage threshold lambda_i runs away
+and modes lose and regain stability within a tiny interval. When the state is lost between
+two steps the threshold is located (continuation.events.threshold_between) and approached
+with shrinking steps; a wall thinned to a film (lambda_i grown ``film``-fold) is at it.
+:class:`Stepper` holds this, :class:`GeometricGrid` the fixed geometric steps of a
+base-state branch (in r_i, past its folds).
+
+Arc-length continuation (post-buckling branches, which turn back in the control) plugs in
+beside :class:`Stepper`: a stepper whose ``propose`` returns a predicted :class:`Point`
+(control and unknowns along the tangent) and whose ``accept`` takes the corrected one, on
+a :class:`Path` that also gives its residual and Jacobian (the pseudo-arclength
+corrector); it shares :class:`StepPolicy` and the events. Its place is
+``continuation/arclength.py``.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Iterator
+from typing import Any, NamedTuple, Protocol
+
+import numpy as np
+
+
+class Point(NamedTuple):
+    """A state of a path: the control value and the unknowns solved there."""
+
+    control: float
+    unknowns: Any
+
+
+class Path(Protocol):
+    """A one-parameter family of solutions.
+
+    ``solve(control)`` returns the unknowns at a control value (natural-parameter
+    continuation), raising the path's error (e.g. BaseStateError) where there are none.
+    Arc-length continuation adds ``residual(point)`` and ``jacobian(point)``."""
+
+    def solve(self, control: float) -> Any: ...
+
+
+@dataclasses.dataclass(frozen=True)
+class ControlPath:
+    """Where a march runs: from ``start`` towards ``end``, steps in units of ``scale``."""
+
+    start: float
+    end: float
+    scale: float
+
+    @property
+    def sense(self) -> float:
+        return 1.0 if self.end > self.start else -1.0
+
+
+@dataclasses.dataclass(frozen=True)
+class StepPolicy:
+    """The constants of a march's step control (module docstring); steps are fractions of
+    the path's scale."""
+
+    smallest: float
+    first: float = 0.004
+    largest: float = 0.05
+    growth: float = 2.0  # a step at most doubles
+    safety: float = 0.7  # of the predicted distance to the next event
+    max_jump: float = 0.05  # relative change of the monitored unknown (lambda_i) per step
+    jump_shrink: float = 2.0
+    jump_floor: float = 1e-12  # a step this small is taken whatever the jump
+    lost_shrink: float = 4.0  # after the state was lost within a step
+    edge_gap: float = 1e-12  # stop this far (times the scale) before a lost state
+    film: float = 50.0  # lambda_i grown this much: the wall is a film, at its threshold
+    #: the state solver failed (not lost): retry shorter until the step is this small
+    unresolved_floor: float = 1e-5
+
+    def __post_init__(self):
+        if not 0 < self.smallest <= self.first <= self.largest:
+            raise ValueError(f"steps {self.smallest}, {self.first}, {self.largest} not ordered")
+
+    def next(self, step: float, limit: float) -> float:
+        """The step after an accepted one: ``limit`` (a predictor's, relative to the scale)
+        clipped to [smallest, min(growth step, largest)]."""
+        return float(np.clip(limit, self.smallest, min(self.growth * step, self.largest)))
+
+    def limit(self, distance: float, scale: float) -> float:
+        """The step limit ``safety`` of a predicted distance to the next event."""
+        return self.safety * distance / scale
+
+
+class Stepper:
+    """Natural-parameter continuation along a :class:`ControlPath` with a
+    :class:`StepPolicy`; ``x`` is the last accepted control value, ``step`` the next step
+    (relative to the scale), ``end`` the end of the path (cut where the state is lost).
+    The monitored unknown (lambda_i) is given to :meth:`jumped` and :meth:`accept`."""
+
+    def __init__(self, path: ControlPath, policy: StepPolicy, monitor0: float):
+        self.policy, self.scale, self.sense = policy, path.scale, path.sense
+        self.x, self.end = path.start, path.end
+        self.step = policy.first
+        self.monitor0 = self.monitor = monitor0
+
+    def at_end(self) -> bool:
+        """Has the march reached the end of its path?"""
+        return (self.end - self.x) * self.sense <= 0
+
+    def propose(self) -> float:
+        """The next control value: one step on, not beyond the end."""
+        sense = self.sense
+        return min(self.x + sense * self.step * self.scale, self.end, key=lambda v: sense * v)
+
+    def lost(self, threshold: float) -> bool:
+        """The state was lost within the step, at ``threshold``: the path ends just before
+        it, the step shrinks. True if nothing is left of the path."""
+        self.end = threshold - self.sense * self.policy.edge_gap * self.scale
+        self.step /= self.policy.lost_shrink
+        return abs(self.end - self.x) <= self.policy.edge_gap * self.scale
+
+    def unresolved(self) -> bool:
+        """The state solver failed at the proposed value: shorten the step (True), or
+        False if it is already below ``unresolved_floor``."""
+        if self.step <= self.policy.unresolved_floor:
+            return False
+        self.step /= self.policy.lost_shrink
+        return True
+
+    def jumped(self, monitor: float) -> bool:
+        """Did the monitored unknown change by more than ``max_jump``? Then the step is
+        shortened and the proposal should be dropped (True)."""
+        p = self.policy
+        if abs(monitor / self.monitor - 1) > p.max_jump and self.step > p.jump_floor:
+            self.step /= p.jump_shrink
+            return True
+        return False
+
+    def film(self, monitor: float) -> bool:
+        """Has the monitored unknown grown ``film``-fold since the start?"""
+        return monitor > self.policy.film * self.monitor0
+
+    def accept(self, x: float, monitor: float, limit: float | None = None) -> None:
+        """Move to x; with a predictor's ``limit``, choose the next step."""
+        if limit is not None:
+            self.step = self.policy.next(self.step, limit)
+        self.x, self.monitor = x, monitor
+
+
+@dataclasses.dataclass(frozen=True)
+class GeometricGrid:
+    """Fixed geometric steps x0 ratio^(sign k), k = 1, 2, ... up to a factor ``span``, in
+    batches of ``batch`` (evaluated together: a vectorised path)."""
+
+    ratio: float
+    span: float
+    batch: int = 8
+
+    def batches(self, x0: float, sign: int) -> Iterator[np.ndarray]:
+        kmax = math.ceil(math.log(self.span, self.ratio))
+        for k in range(1, kmax + 1, self.batch):
+            yield x0 * self.ratio ** (sign * np.arange(k, min(k + self.batch, kmax + 1)))

@@ -1,0 +1,93 @@
+"""Predictors: where a path's events are expected, and where a followed value goes next.
+
+:class:`EventWatch` keeps the last samples of many signed event functions (a march's
+modes) and extrapolates each to its zero, which both limits the step
+(continuation.path.StepPolicy) and says which functions need a new sample.
+:func:`secant_bracket` extrapolates a followed value (a mode's critical value along a
+curve) from its last two points: the natural-parameter form of arc-length continuation's
+tangent predictor.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+
+#: an event function is sampled at least every MAX_WAIT of the path's scale
+MAX_WAIT = 0.25
+
+
+class EventWatch:
+    """Last three samples (x, signed value) of every event function, and when each is due.
+
+    A function is extrapolated to its zero, by the line through its last two samples and
+    the parabola through its last three, whichever reaches zero first (near Vbar = 0
+    targets fall like Vbar^2, which a line overestimates). The function is sampled again
+    once the march has covered half that distance, and at least every MAX_WAIT of the
+    scale (a function may dip below zero and return between two distant samples), so
+    functions far from zero cost a few evaluations, not one per step.
+    """
+
+    def __init__(self, x0, g0, sense, scale):
+        n = g0.size
+        self.sense, self.scale = sense, scale
+        self.x = np.full((3, n), np.nan)  # rows: newest, previous, oldest
+        self.g = np.full((3, n), np.nan)
+        self.x[0], self.g[0] = x0, g0
+        self.alive = np.ones(n, bool)
+        self.due = np.full(n, x0)
+        self.x0 = x0
+
+    @property
+    def xa(self):
+        return self.x[0]
+
+    def root_distance(self):
+        """Extrapolated distance from the newest sample to the zero (inf if receding)."""
+        (xa, xb, xc), (ga, gb, gc) = self.x, self.g
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            slope = (ga - gb) / (xa - xb)
+            line = np.where(slope * self.sense < 0, -ga / slope * self.sense, np.inf)
+            curv = ((ga - gb) / (xa - xb) - (gb - gc) / (xb - xc)) / (xa - xc)
+            # g(xa + sense t) = ga + s t + c t^2 with s = slope sense, c = curv
+            s_, c_ = slope * self.sense, curv
+            disc = s_ * s_ - 4 * c_ * ga
+            t = (-s_ - np.sqrt(np.maximum(disc, 0))) / (2 * c_)
+            t2 = (-s_ + np.sqrt(np.maximum(disc, 0))) / (2 * c_)
+            t = np.where((t > 0) & (disc >= 0), t, np.where((t2 > 0) & (disc >= 0), t2, np.inf))
+        return np.fmin(np.where(np.isnan(line), np.inf, line), np.where(np.isnan(t), np.inf, t))
+
+    def needs(self, x):
+        """Live functions to sample at x: due, or predicted to have reached zero by x."""
+        reach = self.sense * (x - self.xa)
+        return self.alive & ((self.sense * (x - self.due) >= 0) | (reach >= self.root_distance()))
+
+    def record(self, idx, x, g):
+        self.x[:, idx] = np.vstack([np.full(idx.size, x), self.x[0, idx], self.x[1, idx]])
+        self.g[:, idx] = np.vstack([g, self.g[0, idx], self.g[1, idx]])
+        wait = np.minimum(0.5 * self.root_distance()[idx], MAX_WAIT * self.scale)
+        self.due[idx] = x + self.sense * wait
+
+    def distance(self) -> float:
+        """The smallest extrapolated distance to a zero of a live function (inf if none)."""
+        dist = self.root_distance()[self.alive]
+        return dist.min() if dist.size else np.inf
+
+
+def secant_bracket(
+    history: Sequence[tuple[float, float]], x: float, *, first: float = 1e-2, least: float = 1e-6
+) -> tuple[float, float] | None:
+    """A bracket around a followed value at x, from its last points (x_k, v_k): the secant
+    through the last two extrapolated to x, widened by the change it predicts (at least
+    ``least`` max(1, |guess|)); from one point, that value +- ``first`` of it; None
+    without points."""
+    if not history:
+        return None
+    x1, v1 = history[-1]
+    if len(history) == 1:
+        return v1 * (1 - first), v1 * (1 + first)
+    x0, v0 = history[-2]
+    guess = v1 + (v1 - v0) * (x - x1) / (x1 - x0)
+    w = max(abs(guess - v1), least * max(1.0, abs(guess)))
+    return guess - w, guess + w
