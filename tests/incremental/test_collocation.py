@@ -442,6 +442,6 @@ def test_failures_are_named():
     with pytest.raises(NoBifurcationFound, match="widen or move the bracket"):
         critical(tube(), 2, 1, "stretch", (0.95, 1.0))
     with pytest.raises(ParameterError, match="solve_for"):
-        critical(tube(), 2, 1, "pressure", (0.9, 1.0))
+        critical(tube(), 2, 1, "force", (0.9, 1.0))
     with pytest.raises(ParameterError, match="nodes"):
         col.collocation_target(fixture_state(tube()), 2, 1, nodes=4)

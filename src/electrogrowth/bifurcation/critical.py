@@ -38,8 +38,8 @@ from ..incremental.targets import (
     targets_for,
     with_family,
 )
+from ..model.controls import check_side
 from ..model.layers import Tube
-from ..model.params import check_side
 from ..outcomes import Kind, Outcome, Status
 from ..summary import critical_html
 from .march import control_path, first_bifurcations

@@ -49,8 +49,8 @@ import numpy as np
 
 from ..errors import ParameterError
 from ..interrupts import Interrupted, interrupt_of, reraise_interrupt
+from ..model.controls import SIDED, check_side
 from ..model.layers import KEYS_TEXT, Tube
-from ..model.params import check_side
 from ..outcomes import NO_MODE, Kind
 from .critical import critical_value
 from .curve_follow import CHECK_EVERY, _Follower
@@ -202,7 +202,7 @@ def critical_curve(
     check_curve(solve_for, along, params)
     solve_for = str(params.check_control(solve_for))
     side = check_side(solve_for, side)
-    if side is not None and solve_for not in ("stretch", "pressure", "force"):
+    if side is not None and solve_for not in SIDED:
         raise ParameterError(
             f"side = {side!r} applies to the stretch, pressure or force only, not {solve_for}"
         )

@@ -27,13 +27,15 @@ from collections.abc import Callable
 
 import numpy as np
 
-from ..basestate.tube import free_stretch, solve_base_state, threshold
+from ..basestate import tube as door
+from ..basestate.tube import solve_base_state, threshold
 from ..continuation.events import LATER, brent, crossed, dip_bracket, dipped, first_roots
 from ..continuation.events import threshold_between as _lost_between
 from ..continuation.path import ControlPath, Stepper, StepPolicy
 from ..continuation.predict import EventWatch
 from ..errors import BaseStateError, NoBifurcationFound, ParameterError
 from ..incremental.targets import natural_family, row_family
+from ..model.controls import KINDS
 from ..model.layers import Tube
 
 #: the mode march's step control: 0.4 % of the scale doubling up to 5 %, not below 1e-4
@@ -70,34 +72,10 @@ class MarchResult:
 
 
 def control_path(tube: Tube, solve_for: str, side: str | None):
-    """(start, end, scale) of the march for ``solve_for``: growth from 1 (ungrown); the
-    stretch from the free length of the tube at its growth (no loads; g for a uniform tube)
-    down (compression) or up; Vbar from 0 and the inner pressure from P_o (no pressure
-    difference) up to their thresholds (or the pressure down, compression: a collapse under
-    external pressure); the axial force from 0 down (compression) or up. The pressure and
-    force scales are the unloaded tube's: sum mu_k ln(R_k / R_{k-1}) and
-    pi sum mu_k (R_k^2 - R_{k-1}^2)."""
+    """(start, end, scale) of the march for ``solve_for``: its kind's path
+    (model/controls.py KINDS) on this tube, read off the base-state door."""
     kind = tube.check_control(solve_for).kind
-    up = side == "extension"
-    pairs = list(zip(tube.layers, tube.radii, tube.radii[1:]))
-    if kind == "growth":
-        return 1.0, 6.0, 1.0
-    if kind == "stretch":
-        lz = free_stretch(tube)
-        return (lz, 8.0 * lz, lz) if up else (lz, 0.05 * lz, lz)
-    if kind == "voltage":
-        thr = threshold(tube, "voltage").value  # stiffening energies may have none (inf)
-        return (0.0, 1e3, 1.0) if not math.isfinite(thr) else (0.0, thr * (1 - 1e-12), thr)
-    if kind == "pressure":
-        scale = sum(ply.shear_modulus * math.log(b / a) for ply, a, b in pairs)
-        start = tube.outer_pressure
-        if not up:
-            return start, start - 20.0 * scale, scale
-        thr = threshold(tube, "pressure").value
-        end = thr * (1 - 1e-12) if math.isfinite(thr) else start + 50.0 * scale
-        return start, end, scale
-    scale = math.pi * sum(ply.shear_modulus * (b * b - a * a) for ply, a, b in pairs)
-    return (0.0, 20.0 * scale, scale) if up else (0.0, -20.0 * scale, scale)
+    return KINDS[kind].path(tube, side == "extension", door)
 
 
 #: The tube on which the stable signs of a mode grid are read: they are the same on every

@@ -36,8 +36,8 @@ from ..errors import NoBifurcationFound, ParameterError
 from ..incremental.accuracy import SCAN_SIGNS, SCAN_STABLE_SIGNS, Accuracy
 from ..incremental.targets import MODE_MAX, Family, impedance_targets
 from ..labelled import scan_dataset
+from ..model.controls import check_side
 from ..model.layers import Tube
-from ..model.params import check_side
 from ..outcomes import NO_MODE, Kind
 from ..summary import scan_html
 from .critical import CriticalPoint, control_name, critical_value, no_bifurcation_remedy

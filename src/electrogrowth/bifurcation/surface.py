@@ -44,8 +44,8 @@ from ..continuation import events
 from ..continuation.path import ControlPath, Stepper, StepPolicy
 from ..errors import BaseStateError, ConvergenceError, ParameterError
 from ..incremental.halfspace import surface_radius, surfaces
+from ..model.controls import KINDS, check_side
 from ..model.layers import Tube
-from ..model.params import check_side
 from ..outcomes import Kind, Outcome, Status
 from .directions import (
     HALF_PI,
@@ -119,7 +119,7 @@ def _check(params, solve_for, side, faces, rtol) -> tuple[str, str | None, tuple
     solve_for = str(control)
     side = check_side(control.kind, side)
     # as critical_value: a side only for the stretch, pressure or force (ignored otherwise)
-    side = side if control.kind in ("stretch", "pressure", "force") else None
+    side = side if KINDS[control.kind].sided else None
     valid = surfaces(params)
     faces = valid if faces is None else (faces,) if isinstance(faces, str) else tuple(faces)
     if not faces or any(f not in valid for f in faces) or len(set(faces)) != len(faces):

@@ -7,10 +7,9 @@ import math
 from typing import TYPE_CHECKING
 
 from ..errors import ParameterError
-from ..model.controls import TUBE_CONTROLS
+from ..model.controls import KINDS, SIDED, SIDES, TUBE_CONTROLS
 from ..model.layers import Tube
 from ..model.materials import BUILTIN, material_by_name
-from ..model.params import SIDES
 from .energy import energy_from_args
 from .units import add_unit_options, number_or_quantity
 
@@ -192,13 +191,9 @@ def add_control_options(parser: argparse.ArgumentParser) -> None:
         "--solve-for",
         required=True,
         choices=TUBE_CONTROLS,
-        help="the control parameter to find: growth = g_cr, the smallest"
-        " g > 1 at which the tube wrinkles (of one layer of a --tube: --layer, --component);"
-        " stretch = lambda_z,cr on --side; voltage = Vbar_cr, the smallest Vbar (or the"
-        " threshold where the axisymmetric state is lost, if that comes first); pressure ="
-        " the inner follower pressure P_i,cr (from P_o: inflation, or --side compression:"
-        " collapse); force = the axial end force F_cr of a tube with --axial-force (from 0:"
-        " compression, or --side extension). The value given for it below is ignored.",
+        help="the control parameter to find: "
+        + "; ".join(kind.help for kind in KINDS.values())
+        + ". The value given for it below is ignored.",
     )
     parser.add_argument(
         "--layer",
@@ -228,9 +223,10 @@ def add_control_options(parser: argparse.ArgumentParser) -> None:
 
 def check_side_option(args) -> None:
     """--side belongs to --solve-for stretch, pressure and force only."""
-    if args.side is not None and args.solve_for not in ("stretch", "pressure", "force"):
+    if args.side is not None and args.solve_for not in SIDED:
         raise ParameterError(
-            f"--side {args.side} applies only to --solve-for stretch, pressure or force"
+            f"--side {args.side} applies only to --solve-for {', '.join(SIDED[:-1])}"
+            f" or {SIDED[-1]}"
         )
 
 

@@ -15,16 +15,14 @@ from __future__ import annotations
 
 import re
 
+from ..model.controls import KINDS
+
 #: words, symbol (mathtext) and unit of each one-layer parameter, control and tube key
 LABELS = {
-    "stretch": ("axial stretch", r"\lambda_z", "(–)"),
-    "voltage": ("voltage", r"\bar V", "(–)"),
+    **{name: (k.words, k.symbol, k.unit) for name, k in KINDS.items()},  # the controls
     "outer_radius": ("outer radius", r"R_o", r"($R_i$)"),
     "length": ("length", "L", r"($R_i$)"),
-    "growth": ("growth factor", "g", "(–)"),
-    "pressure": ("inner pressure", "P_i", r"($\mu$)"),
     "outer_pressure": ("outer pressure", "P_o", r"($\mu$)"),
-    "force": ("axial force", "F", r"($\mu R_i^2$)"),
 }
 #: a layer's key: words, symbol with {k} for the layer, unit
 LAYER_KEYS = {

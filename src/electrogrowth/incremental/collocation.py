@@ -50,7 +50,6 @@ from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
 from ..model.layers import Tube
 from ..model.materials import MODULI_INDEX
-from ..model.params import CONTROLS
 from .chebyshev import chebyshev_lobatto, interior_interpolation
 from .collocation_layout import (
     _FIELDS,
@@ -317,10 +316,7 @@ def critical_collocation(
     >>> round(critical_collocation(params, 2, 1, "stretch", (0.79, 0.81), nodes=24), 10)
     0.8024795852
     """
-    if solve_for not in CONTROLS:
-        raise ParameterError(
-            f"solve_for = {solve_for!r} is invalid; choose one of {', '.join(CONTROLS)}"
-        )
+    params.check_control(solve_for)  # any control of the tube, named if unknown
     base_state = base_state or solve_base_state
 
     def target(value: float) -> float:

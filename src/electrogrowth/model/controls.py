@@ -15,18 +15,168 @@ JSON records:
 ==========================  =====================================================
 
 :func:`parse_control` reads one into a :class:`Control`; ``str(control)`` writes it back in
-the canonical form above, and :meth:`Control.apply` sets its value on a tube.
+the canonical form above.
+
+Each kind of control is one entry of :data:`KINDS`, a :class:`ControlKind`: the tube field
+it sets, its default side, its path (where a march starts, where it may end, the scale of
+its steps), its words, symbol and unit. The lists of controls, the sides, the checks that a
+side belongs to the control and the axis labels are read from there: a new load is one
+entry (and its physics in basestate/ and incremental/).
 """
 
 from __future__ import annotations
 
 import dataclasses
+import math
 import re
+from collections.abc import Callable
+from typing import Any
 
 from ..errors import ParameterError
 
-#: the kinds of control of a layered tube (model/layers.py Tube)
-TUBE_CONTROLS = ("growth", "stretch", "voltage", "pressure", "force")
+#: the sides of a control that may move both ways: it decreases (compression) or
+#: increases (extension)
+SIDES = ("compression", "extension")
+
+
+@dataclasses.dataclass(frozen=True)
+class ControlKind:
+    """One kind of control.
+
+    ``field`` is the Tube field it sets (None: a layer's growth, set through its layer and
+    components); ``default_side`` the side a march takes (None: the control only
+    increases, and a side is refused); ``path(tube, up, base)`` the march's (start, end,
+    scale), given ``base``, the base-state door (``free_stretch`` and ``threshold``: the
+    model itself solves nothing); ``words``, ``symbol`` (mathtext) and ``unit`` name it on
+    an axis, ``help`` on the command line."""
+
+    name: str
+    field: str | None
+    default_side: str | None
+    path: Callable[[Any, bool, Any], tuple[float, float, float]]
+    words: str
+    symbol: str
+    unit: str
+    help: str
+
+    @property
+    def sided(self) -> bool:
+        return self.default_side is not None
+
+
+def _wall_sum(tube, term) -> float:
+    return sum(
+        layer.shear_modulus * term(a, b)
+        for layer, a, b in zip(tube.layers, tube.radii, tube.radii[1:])
+    )
+
+
+def _growth_path(tube, up, base):
+    return 1.0, 6.0, 1.0  # from the ungrown tube
+
+
+def _stretch_path(tube, up, base):
+    lz = base.free_stretch(tube)  # the free length at the tube's growth, no load
+    return (lz, 8.0 * lz, lz) if up else (lz, 0.05 * lz, lz)
+
+
+def _voltage_path(tube, up, base):
+    thr = base.threshold(tube, "voltage").value  # stiffening energies may have none (inf)
+    return (0.0, 1e3, 1.0) if not math.isfinite(thr) else (0.0, thr * (1 - 1e-12), thr)
+
+
+def _pressure_path(tube, up, base):
+    """From P_i = P_o up to the pressure branch's threshold (inflation) or down (collapse);
+    the scale is the unloaded tube's sum mu_k ln(R_k / R_{k-1})."""
+    scale = _wall_sum(tube, lambda a, b: math.log(b / a))
+    start = tube.outer_pressure
+    if not up:
+        return start, start - 20.0 * scale, scale
+    thr = base.threshold(tube, "pressure").value
+    return start, thr * (1 - 1e-12) if math.isfinite(thr) else start + 50.0 * scale, scale
+
+
+def _force_path(tube, up, base):
+    """From 0 down (compression) or up; the scale is pi sum mu_k (R_k^2 - R_{k-1}^2)."""
+    scale = math.pi * _wall_sum(tube, lambda a, b: b * b - a * a)
+    return (0.0, 20.0 * scale, scale) if up else (0.0, -20.0 * scale, scale)
+
+
+#: every kind of control, in the order the command line lists them
+KINDS = {
+    k.name: k
+    for k in (
+        ControlKind(
+            "growth",
+            None,
+            None,
+            _growth_path,
+            "growth factor",
+            "g",
+            "(–)",
+            "growth = g_cr, the smallest g > 1 at which the tube wrinkles (of one layer of a"
+            " --tube: --layer, --component)",
+        ),
+        ControlKind(
+            "stretch",
+            "stretch",
+            "compression",
+            _stretch_path,
+            "axial stretch",
+            r"\lambda_z",
+            "(–)",
+            "stretch = lambda_z,cr on --side",
+        ),
+        ControlKind(
+            "voltage",
+            "voltage",
+            None,
+            _voltage_path,
+            "voltage",
+            r"\bar V",
+            "(–)",
+            "voltage = Vbar_cr, the smallest Vbar (or the threshold where the axisymmetric"
+            " state is lost, if that comes first)",
+        ),
+        ControlKind(
+            "pressure",
+            "inner_pressure",
+            "extension",
+            _pressure_path,
+            "inner pressure",
+            "P_i",
+            r"($\mu$)",
+            "pressure = the inner follower pressure P_i,cr (from P_o: inflation, or --side"
+            " compression: collapse)",
+        ),
+        ControlKind(
+            "force",
+            "axial_force",
+            "compression",
+            _force_path,
+            "axial force",
+            "F",
+            r"($\mu R_i^2$)",
+            "force = the axial end force F_cr of a tube with --axial-force (from 0:"
+            " compression, or --side extension)",
+        ),
+    )
+}
+#: the kinds of control of a tube (model/layers.py Tube)
+TUBE_CONTROLS = tuple(KINDS)
+#: the controls a side belongs to (they may move both ways)
+SIDED = tuple(name for name, k in KINDS.items() if k.sided)
+
+
+def check_side(solve_for, side: str | None) -> str | None:
+    """Validate ``side``; the control's default side when it has one (stretch and force
+    compress, a pressure inflates), None for a control that only increases."""
+    if side is not None and side not in SIDES:
+        raise ParameterError(f"side = {side!r} is unknown; choose compression or extension")
+    kind = KINDS.get(str(solve_for).split("[")[0].split(".")[0])
+    return side or (kind.default_side if kind is not None else None)
+
+
 #: the components of a layer's growth tensor diag(g_r, g_theta, g_z)
 COMPONENTS = ("r", "theta", "z")
 
@@ -45,9 +195,9 @@ class Control:
     def __post_init__(self):
         # The messages quote the control as written, not "solve_for": the same name is an
         # --along of a curve or a [grid] key of a sweep.
-        if self.kind not in TUBE_CONTROLS:
+        if self.kind not in KINDS:
             raise ParameterError(
-                f"control {self.kind!r} is unknown; choose one of {', '.join(TUBE_CONTROLS)}"
+                f"control {self.kind!r} is unknown; choose one of {', '.join(KINDS)}"
             )
         if self.kind != "growth" and (self.layer is not None or self.components is not None):
             raise ParameterError(

@@ -25,7 +25,7 @@ from collections.abc import Callable
 import numpy as np
 
 from ..errors import ParameterError
-from .controls import Control, parse_control
+from .controls import KINDS, Control, parse_control
 from .materials import Material, neo_hookean
 from .params import SUPPORTED, SUPPORTED_WHY, check_uniform
 
@@ -412,7 +412,7 @@ class Tube:
             layers = list(self.layers)
             layers[k] = dataclasses.replace(layers[k], growth=g)
             return dataclasses.replace(self, layers=tuple(layers))
-        field = {"pressure": "inner_pressure", "force": "axial_force"}.get(c.kind, c.kind)
+        field = KINDS[c.kind].field
         return dataclasses.replace(self, **{field: value})
 
     def _with_key(self, name: str, value: float) -> Tube:
@@ -462,7 +462,7 @@ class Tube:
         if c.kind == "growth":
             comp = ("r", "theta", "z").index(c.components[0]) if c.components else 0
             return float(self.layers[(c.layer or 1) - 1].growth[comp])
-        field = {"pressure": "inner_pressure", "force": "axial_force"}.get(c.kind, c.kind)
+        field = KINDS[c.kind].field
         return float(getattr(self, field))
 
     def parameter_keys(self) -> tuple[str, ...]:

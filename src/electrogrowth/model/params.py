@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 
 from ..errors import ParameterError
+from .controls import SIDES, check_side  # noqa: F401  (the sides live with the controls)
 
 
 def _check(name: str, value: float, valid: str, ok) -> None:
@@ -53,27 +54,3 @@ def check_uniform(outer_radius, length, growth, stretch, voltage) -> None:
 #: The control parameters of the paper's tube (Tube.uniform); a layered tube adds pressure
 #: and force (model/controls.py).
 CONTROLS = ("growth", "stretch", "voltage")
-#: The sides of a critical stretch: below or above lambda_z = g.
-SIDES = ("compression", "extension")
-
-
-def check_control(solve_for: str) -> str:
-    """Return ``solve_for`` if it is a control, else raise ParameterError naming the choices."""
-    if solve_for not in CONTROLS:
-        raise ParameterError(
-            f"solve_for = {solve_for!r} is unknown; choose growth, stretch or voltage"
-        )
-    return solve_for
-
-
-#: The side a march takes by default: a stretch or an axial force compresses, a pressure
-#: inflates (extension: the control increases; compression: it decreases).
-DEFAULT_SIDE = {"stretch": "compression", "force": "compression", "pressure": "extension"}
-
-
-def check_side(solve_for: str, side: str | None) -> str | None:
-    """Validate ``side``; the default of DEFAULT_SIDE for the stretch, the axial force and
-    the pressure, None otherwise (growth and voltage only increase)."""
-    if side is not None and side not in SIDES:
-        raise ParameterError(f"side = {side!r} is unknown; choose compression or extension")
-    return side or DEFAULT_SIDE.get(str(solve_for))
