@@ -11,12 +11,15 @@ from __future__ import annotations
 
 import dataclasses
 
+import numpy as np
+
 from .._types import State
+from ..errors import BaseStateError, ParameterError
 from ..model.layers import Tube
 from .branches import Threshold
 from .layered import layered_threshold, solve_layered_state
-from .uniform import neo_hookean_asymptote, solve_uniform, voltage_curve
-from .voltage import threshold_info
+from .uniform import solve_uniform
+from .voltage import UniformWall, nh_asymptote, nh_voltage, threshold_info
 
 __all__ = [
     "free_stretch",
@@ -115,3 +118,49 @@ def free_stretch(tube: Tube, *, rtol: float = 1e-12) -> float:
         closed_ends=False,
     )
     return solve_layered_state(free, rtol=rtol).stretch
+
+
+# -- the paper's tube only: its voltage curve ------------------------------------------------
+
+
+def neo_hookean_asymptote(params: Tube) -> float:
+    """Neo-Hookean lim_{lambda_i -> inf} Vbar (material ignored), derived in the docs:
+
+    Vbar_inf = g^2 / (lambda_z (Rbar_o - 1)) sqrt((Rbar_o^2 - 1) ln(Rbar_o) / 2).
+
+    >>> round(neo_hookean_asymptote(Tube.uniform(outer_radius=2.0)), 6)
+    1.019667
+    """
+    return nh_asymptote(params.outer_radius, params.growth, params.value_of("stretch"))
+
+
+def voltage_curve(params: Tube, lambda_i) -> np.ndarray:
+    """Vbar(lambda_i) of the traction-free tube (paper eq. dimensionless-voltage), vectorised.
+
+    ``params.voltage`` is ignored. Raises BaseStateError for lambda_i below the mechanical
+    lambda_i0 (no real voltage) or where the energy is undefined (beyond a locking stretch).
+    """
+    lam = np.asarray(lambda_i, float)
+    if not np.all(np.isfinite(lam) & (lam > 0)):
+        raise ParameterError(
+            f"lambda_i = {lam[~(np.isfinite(lam) & (lam > 0))].flat[0]!r}"
+            " is invalid; need 0 < lambda_i < inf"
+        )
+    info = threshold_info(params)
+    low = lam < info.lambda_i0 * (1.0 - 1e-12)
+    if low.any():
+        raise BaseStateError(
+            f"lambda_i = {lam[low].flat[0]:.12g} is below the Vbar = 0 value"
+            f" {info.lambda_i0:.12g}; no real voltage there"
+        )
+    Ro, g, lz = params.outer_radius, params.growth, params.value_of("stretch")
+    if info.nodes == 0:  # neo-Hookean closed form (NH-6)
+        return np.maximum(nh_voltage(Ro, g, lz, lam), 0.0)
+    tube = UniformWall(params.material, Ro, g, lz, info.nodes)
+    v = tube.voltage(lam.ravel())
+    if not np.all(np.isfinite(v)):
+        raise BaseStateError(
+            f"energy of {params.material.name} undefined at lambda_i ="
+            f" {lam.ravel()[~np.isfinite(v)][0]:.12g} (beyond locking)"
+        )
+    return np.maximum(v, 0.0).reshape(lam.shape)

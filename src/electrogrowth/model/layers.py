@@ -1,10 +1,7 @@
-"""A tube as a stack of perfectly bonded layers, and its loads.
+"""A tube as a stack of perfectly bonded layers (model/layer.py), and its loads.
 
-Units mu = eps = R_i = 1: every layer's shear modulus and permittivity are relative to these
-reference values, its outer radius is in units of the inner radius of the whole tube. Layers are
-listed from the inner face (R = 1) outward; layer k occupies R_{k-1} <= R <= R_k, R_0 = 1.
-Each layer grows by F_g = diag(g_r, g_theta, g_z): a scalar (isotropic, g I), three constants,
-or a function of R returning the triple (graded growth, e.g. :class:`LinearGrowth`).
+Layers are listed from the inner face (R = 1) outward; layer k occupies
+R_{k-1} <= R <= R_k, R_0 = 1. The paper's tube is :meth:`Tube.uniform`.
 
 The loads: a radial voltage Vbar = V / (R_N - 1) between electrodes on the inner and outer
 faces; follower pressures P_i on the inner face (P_i > 0 pushes it outward) and P_o on the
@@ -17,157 +14,29 @@ from __future__ import annotations
 
 import dataclasses
 import functools
-import math
-import re
 import warnings
-from collections.abc import Callable
 
 import numpy as np
 
 from ..errors import ParameterError
 from .controls import KINDS, Control, parse_control
+from .keys import KEYS_TEXT, key_value, with_key
+from .layer import Growth, Layer, LinearGrowth, _number
 from .materials import Material, neo_hookean
 from .params import SUPPORTED, SUPPORTED_WHY, check_uniform
 
-Growth = float | tuple[float, float, float] | Callable
+__all__ = [
+    "Growth",
+    "Layer",
+    "LinearGrowth",
+    "Tube",
+    "TubeParameters",
+    "UNIFORM_KEYS",
+    "KEYS_TEXT",
+]
 
 #: the numbers of the paper's tube (Tube.uniform), its parameter keys
 UNIFORM_KEYS = ("outer_radius", "length", "growth", "stretch", "voltage")
-
-#: the keys of a tube that a curve or sweep may vary besides its controls (:meth:`Tube.at`)
-KEYS_TEXT = (
-    "length, outer_pressure, outer_radius, layers[K].outer_radius, layers[K].thickness,"
-    " layers[K].shear_modulus, layers[K].permittivity"
-)
-
-
-def _number(name: str, value, valid: str, ok) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise ParameterError(f"{name} = {value!r} is not a number; valid range: {valid}")
-    if not math.isfinite(value) or not ok(value):
-        raise ParameterError(f"{name} = {value!r} is out of range; valid range: {valid}")
-    return float(value)
-
-
-def _triple(name: str, value) -> tuple[float, float, float]:
-    """A growth scalar or triple as three floats > 0 (ParameterError naming ``name``)."""
-    if isinstance(value, (list, tuple, np.ndarray)):
-        if len(value) != 3:
-            raise ParameterError(
-                f"{name} = {value!r} has {len(value)} entries; give g or [g_r, g_theta, g_z]"
-            )
-        return tuple(  # named g_r, g_theta, g_z: growth[K] is layer K's growth (controls.py)
-            _growth(f"{name} g_{comp}", float(v) if isinstance(v, np.floating) else v, "> 0")
-            for comp, v in zip(("r", "theta", "z"), value)
-        )
-    g = _growth(name, value, "> 0 (or three entries > 0)")
-    return (g, g, g)
-
-
-def _growth(name: str, value, valid: str) -> float:
-    """A growth entry > 0 inside the supported box of the one-layer tube (params.py): a
-    growth of 1e-9 was accepted and failed later as "no unloaded state", blamed on the
-    tube's inner pressure."""
-    g = _number(name, value, valid, lambda v: v > 0)
-    lo, hi = SUPPORTED[3], SUPPORTED[4]
-    if not lo <= g <= hi:
-        raise ParameterError(
-            f"{name} = {g:.6g} is outside the supported range {lo:g} to {hi:g}: {SUPPORTED_WHY}"
-        )
-    return g
-
-
-@dataclasses.dataclass(frozen=True)
-class LinearGrowth:
-    """Growth varying linearly in R from ``inner`` at ``inner_radius`` to ``outer`` at
-    ``outer_radius`` (each a scalar or a triple (g_r, g_theta, g_z), entries > 0); a picklable
-    callable R -> (g_r, g_theta, g_z) for :class:`Layer`.
-
-    >>> LinearGrowth(1.0, 2.0, 1.0, (1.2, 1.0, 1.0))(1.5)
-    (1.1, 1.0, 1.0)
-    """
-
-    inner_radius: float
-    outer_radius: float
-    inner: tuple[float, float, float] | float
-    outer: tuple[float, float, float] | float
-
-    def __post_init__(self):
-        a = _number("inner_radius", self.inner_radius, ">= 1", lambda v: v >= 1)
-        _number("outer_radius", self.outer_radius, f"> inner_radius = {a:g}", lambda v: v > a)
-        object.__setattr__(self, "inner", _triple("growth.inner", self.inner))
-        object.__setattr__(self, "outer", _triple("growth.outer", self.outer))
-
-    def __call__(self, R):
-        t = (np.asarray(R, float) - self.inner_radius) / (self.outer_radius - self.inner_radius)
-        out = tuple(gi + (go - gi) * t for gi, go in zip(self.inner, self.outer))
-        return tuple(float(x) for x in out) if np.ndim(t) == 0 else out
-
-
-@dataclasses.dataclass(frozen=True)
-class Layer:
-    """One layer of the wall.
-
-    Parameters
-    ----------
-    outer_radius : float
-        R_k / R_i > 1, the undeformed outer radius of the layer (its inner radius is the outer
-        radius of the layer inside it, or 1).
-    material : Material
-        The energy Omega(I1, I2, I4, I5, I6) in units of this layer's own shear modulus and
-        permittivity (default the ideal neo-Hookean dielectric).
-    shear_modulus, permittivity : float
-        mu_k / mu > 0 and eps_k / eps > 0 (default 1). The layer's energy is
-        mu_k Omega(F, D / sqrt(mu_k eps_k)), i.e. mu_k W + I5 / (2 eps_k) for an ideal dielectric.
-    growth : float, (g_r, g_theta, g_z) or callable
-        F_g = diag(g_r, g_theta, g_z), entries > 0: a scalar g (isotropic), three constants,
-        or a function R -> (g_r, g_theta, g_z), vectorised over an array R (graded growth).
-        A scalar is stored as the triple (g, g, g).
-    """
-
-    outer_radius: float
-    material: Material = dataclasses.field(default_factory=neo_hookean)
-    shear_modulus: float = 1.0
-    permittivity: float = 1.0
-    growth: Growth = 1.0
-
-    def __post_init__(self):
-        fix = lambda f, v: object.__setattr__(self, f, v)  # noqa: E731
-        fix("outer_radius", _number("outer_radius", self.outer_radius, "> 1", lambda v: v > 1))
-        if not isinstance(self.material, Material):
-            raise ParameterError(f"material = {self.material!r} is not a Material")
-        for f in ("shear_modulus", "permittivity"):
-            fix(f, _number(f, getattr(self, f), "0 < value < inf", lambda v: v > 0))
-        if not callable(self.growth):
-            fix("growth", _triple("growth", self.growth))
-
-    @property
-    def graded(self) -> bool:
-        """True when the growth is a function of R."""
-        return callable(self.growth)
-
-    def growth_at(self, R) -> np.ndarray:
-        """(g_r, g_theta, g_z) at R, shape (3,) + R.shape; ParameterError if an entry is not
-        finite and > 0 (a graded growth called once with the array, else point by point)."""
-        R = np.asarray(R, float)
-        if not self.graded:
-            return np.broadcast_to(
-                np.array(self.growth)[(...,) + (None,) * R.ndim], (3,) + R.shape
-            )
-        try:
-            g = np.asarray(self.growth(R), float)
-            g = np.broadcast_to(
-                g.reshape((3,) + (1,) * R.ndim) if g.shape == (3,) else g, (3,) + R.shape
-            )
-        except (TypeError, ValueError):
-            g = np.array([np.asarray(self.growth(x), float) for x in R.ravel()])
-            g = g.T.reshape((3,) + R.shape) if g.shape[-1:] == (3,) else None
-        if g is None or not np.all(np.isfinite(g) & (g > 0)):
-            raise ParameterError(
-                f"growth function of the layer with outer_radius = {self.outer_radius:g}"
-                " must return three finite entries > 0 (g_r, g_theta, g_z) at every R"
-            )
-        return g
 
 
 @dataclasses.dataclass(frozen=True)
@@ -396,7 +265,7 @@ class Tube:
         if name == "outer_radius":  # the wall's outer face, for any number of layers
             name = f"layers[{len(self.layers)}].outer_radius"
         if isinstance(name, str) and (name in ("length", "outer_pressure") or "layers[" in name):
-            return self._with_key(name, value)
+            return with_key(self, name, value)
         try:
             parse_control(name)
         except ParameterError as exc:  # name the keys too: ``name`` may be either
@@ -415,49 +284,12 @@ class Tube:
         field = KINDS[c.kind].field
         return dataclasses.replace(self, **{field: value})
 
-    def _with_key(self, name: str, value: float) -> Tube:
-        match = re.fullmatch(r"layers\[(\d+)\]\.(\w+)", name)
-        if match is None:
-            if name not in ("length", "outer_pressure"):
-                raise ParameterError(f"{name!r} is not a key of a tube; valid: {KEYS_TEXT}")
-            return dataclasses.replace(self, **{name: value})
-        k, field = int(match[1]), match[2]
-        if not 1 <= k <= len(self.layers):
-            raise ParameterError(
-                f"{name}: layer {k} does not exist; this tube has layers 1..{len(self.layers)}"
-            )
-        if field not in ("outer_radius", "thickness", "shear_modulus", "permittivity"):
-            raise ParameterError(f"{name!r} is not a key of a tube; valid: {KEYS_TEXT}")
-        _check_key(name, value, field, self.radii, k)
-        layers = list(self.layers)
-        if field == "thickness":  # every layer outside moves out with it
-            inner = self.radii[k - 1]
-            shift = inner + value - layers[k - 1].outer_radius
-            for j in range(k - 1, len(layers)):
-                if layers[j].graded:
-                    raise ParameterError(f"{name}: layer {j + 1} has graded growth")
-                layers[j] = dataclasses.replace(
-                    layers[j], outer_radius=layers[j].outer_radius + shift
-                )
-        else:
-            layers[k - 1] = dataclasses.replace(layers[k - 1], **{field: value})
-        return dataclasses.replace(self, layers=tuple(layers))
-
     def value_of(self, name) -> float:
         """The current value of a control (for growth: its first varied component) or of a
         key of :meth:`at` (as ``at`` sets it)."""
-        if name == "outer_radius":
-            return self.outer_radius
-        if name in ("length", "outer_pressure"):
-            return float(getattr(self, name))
-        match = re.fullmatch(r"layers\[(\d+)\]\.(\w+)", str(name))
-        if match:
-            k = int(match[1])
-            if not 1 <= k <= len(self.layers):
-                raise ParameterError(f"{name}: layer {k} does not exist")
-            if match[2] == "thickness":
-                return self.radii[k] - self.radii[k - 1]
-            return float(getattr(self.layers[k - 1], match[2]))
+        value = key_value(self, name)
+        if value is not None:
+            return value
         c = self.check_control(name)
         if c.kind == "growth":
             comp = ("r", "theta", "z").index(c.components[0]) if c.components else 0
@@ -548,25 +380,6 @@ class Tube:
     def physical_voltage(self) -> float:
         """V in units sqrt(mu / eps) R_i: V = Vbar (R_N - 1)."""
         return self.voltage * (self.outer_radius - 1.0)
-
-
-def _check_key(name: str, value: float, field: str, radii: tuple[float, ...], k: int) -> None:
-    """Refuse a value of the key ``name`` (layers[K].field) in its own terms: the layer
-    would otherwise report a radius the user never gave (a thickness moves the radii)."""
-    if field == "thickness":
-        _number(name, value, "> 0", lambda v: v > 0)
-    elif field == "outer_radius":
-        inner = radii[k - 1]
-        outer = radii[k + 1] if k + 1 < len(radii) else math.inf
-        valid = f"{inner:g} < R < {outer:g} (the layer's inner radius, the next one's outer)"
-        _number(
-            name,
-            value,
-            valid if k + 1 < len(radii) else f"> {inner:g}",
-            lambda v: inner < v < outer,
-        )
-    else:  # shear_modulus, permittivity
-        _number(name, value, "0 < value < inf", lambda v: v > 0)
 
 
 def TubeParameters(  # noqa: N802 -- the former class's name, kept for one release
