@@ -39,6 +39,7 @@ import dataclasses
 import inspect
 import json
 import math
+from typing import Any
 
 import numpy as np
 
@@ -210,13 +211,12 @@ def _modes_options(modes: dict) -> ScanOptions:
     for key in modes:
         if key not in MODE_KEYS:
             raise ValueError(f"modes.{key} is not a scan option; known: {', '.join(MODE_KEYS)}")
-    return ScanOptions(
-        **{
-            field: tuple(modes[key]) if field.endswith("_range") else modes[key]
-            for key, field in MODE_KEYS.items()
-            if key in modes
-        }
-    )
+    given: dict[str, Any] = {
+        field: tuple(modes[key]) if field.endswith("_range") else modes[key]
+        for key, field in MODE_KEYS.items()
+        if key in modes
+    }
+    return ScanOptions(**given)
 
 
 def differences(a: SweepConfig, b: SweepConfig) -> list[str]:

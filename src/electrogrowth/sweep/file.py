@@ -63,9 +63,9 @@ def _from_raw(raw: dict, base: Path = Path()) -> SweepConfig:
         raise ConfigError(("solve",), "missing key 'for' (growth, stretch or voltage)")
     text, tube = _tube_file(raw, base) if "tube" in raw else (None, reference_tube(None))
     keys = sweep_keys(text, tube)
-    for table in ("fixed", "grid"):
-        for key in raw.get(table, {}) if keys is not None else ():
-            if key not in keys:
+    for table in ("fixed", "grid"):  # the paper's tube takes its keys; a tube file's, Tube.at
+        for key in raw.get(table, {}):
+            if keys is not None and key not in keys:
                 raise ConfigError((table, key), f"unknown key; [{table}] takes {', '.join(keys)}")
     solve_for = _solve_for(solve, tube if text is not None else None)
     material, energy = _material_table(raw.get("material", {}))
