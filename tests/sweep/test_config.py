@@ -1,13 +1,23 @@
 """The sweep file: every mistake is rejected before any work, naming the line and the
 reason, with exit status 2 and nothing written."""
 
+import dataclasses
+import itertools
+import json
+from pathlib import Path
+
 import pytest
 
+from electrogrowth.bifurcation.scan import ScanOptions
 from electrogrowth.cli import app as cli
 from electrogrowth.cli import sweep as cli_sweep
 from electrogrowth.errors import ConfigError
-from electrogrowth.sweep.config import SweepConfig, differences
+from electrogrowth.model.layers import Tube
+from electrogrowth.model.tube_file import load_tube
+from electrogrowth.sweep.config import MODE_KEYS, SweepConfig, differences
 from electrogrowth.sweep.file import line_of, parse_config
+
+BILAYER = Path(__file__).resolve().parents[2] / "examples" / "bilayer.toml"
 
 GOOD = """\
 [solve]
@@ -72,6 +82,14 @@ def test_good_file_is_normalised():
     "text, line, needle",
     [
         (edit(8, "extnd = false"), 8, "modes.extnd: unknown key; [modes] takes m, n, extend"),
+        (
+            edit(8, "family = false"),
+            8,
+            "[modes] takes m, n, extend, top, surface, prismatic, torsional",
+        ),
+        (edit(8, 'surface = "no"'), 8, "modes.surface: expected true or false, got a string"),
+        (edit(8, "prismatic = 0"), 8, "modes.prismatic: expected true or false, got an integer"),
+        (edit(8, "torsional = [1]"), 8, "modes.torsional: expected true or false, got a list"),
         (GOOD + "\n[output]\npath = 'x'\n", 21, "output: unknown key"),
         (edit(3, 'rtol = "1e-10"'), 3, "solve.rtol: expected a number, got a string"),
         (edit(3, "rtol = 1.0"), 3, "rtol = 1.0 is out of range"),
@@ -135,3 +153,160 @@ def test_line_of_follows_tables_and_inline_tables(key, line):
         '\n[ modes ]\n"m" = [0, 1]\n'
     )
     assert line_of(text, key) == line
+
+
+# -- every scan option is a sweep option -----------------------------------------------------
+
+
+def test_every_scan_option_is_a_modes_key():
+    assert sorted(MODE_KEYS.values()) == sorted(f.name for f in dataclasses.fields(ScanOptions))
+
+
+@pytest.mark.parametrize("key", ["surface", "prismatic", "torsional"])
+def test_a_scan_switch_is_set_stored_by_name_and_compared(key):
+    c = parse_config(GOOD.replace("extend = false", f"extend = false\n{key} = false"))
+    assert getattr(c.spec.options, key) is False
+    others = {"surface", "prismatic", "torsional"} - {key}
+    assert all(getattr(c.scan, name) is True for name in others)
+    assert c.to_dict()["modes"] == {
+        "m": [0, 3],
+        "n": [1, 3],
+        "extend": False,
+        "top": 5,
+        key: False,
+    }
+    assert SweepConfig.from_dict(json.loads(c.to_json())) == c
+    assert differences(parse_config(GOOD), c) == [f"modes.{key}"]
+    # the default, written out, is the same sweep as a file that leaves it alone
+    same = parse_config(GOOD.replace("extend = false", f"extend = false\n{key} = true"))
+    assert same.to_json() == parse_config(GOOD).to_json()
+
+
+def test_a_stored_sweep_without_the_newer_options_reads_with_the_defaults():
+    d = parse_config(GOOD).to_dict()
+    assert list(d["modes"]) == ["m", "n", "extend", "top"]  # what stores have always held
+    scan = SweepConfig.from_dict(d).scan
+    assert (scan.surface, scan.prismatic, scan.torsional) == (True, True, True)
+
+
+def test_a_stored_sweep_with_an_unknown_mode_key_is_refused():
+    d = parse_config(GOOD).to_dict()
+    d["modes"]["family"] = "wrinkle"
+    with pytest.raises(ValueError, match="modes.family is not a scan option"):
+        SweepConfig.from_dict(d)
+
+
+# -- one path for the paper's tube and a tube file -------------------------------------------
+
+FIVE = """[solve]
+for = "voltage"
+[material]
+name = "gent"
+jm = 50
+[fixed]
+length = 2.0
+[grid]
+growth = [1.0, 1.5, 20.0]
+stretch = [0.5, 1.0, 40.0]
+outer_radius = [1.2, 3.0]
+"""
+
+
+def test_points_of_the_paper_tube_are_its_uniform_tubes():
+    """Each point is the reference tube with the fixed, then the swept values set by
+    Tube.at: the same tube as Tube.uniform of all its numbers (how points were built)."""
+    c = parse_config(FIVE)
+    material = c.build_material()
+    tubes = c.points(tuple(slice(0, n) for n in c.shape), material)
+    combos = itertools.product(*(values for _, values in c.grid))
+    expected = [
+        Tube.uniform(**dict(c.fixed), **dict(zip(c.dims, combo)), material=material)
+        for combo in combos
+    ]
+    assert tubes == expected and all(t.is_uniform for t in tubes)
+    assert [t.as_dict() for t in tubes] == [t.as_dict() for t in expected]
+
+
+def test_the_paper_tube_takes_its_parameter_keys_and_their_controls():
+    keys = Tube.uniform().parameter_keys()
+    assert keys == ("outer_radius", "length", "growth", "stretch", "voltage")
+    with pytest.raises(
+        ConfigError, match=r"grid.pressure: unknown key; \[grid\] takes " + ", ".join(keys)
+    ):
+        parse_config(FIVE.replace("outer_radius = [1.2, 3.0]", "pressure = [0.1]"))
+    with pytest.raises(
+        ConfigError, match="'pressure' is unknown; choose growth, stretch or voltage"
+    ):
+        parse_config(FIVE.replace('for = "voltage"', 'for = "pressure"'))
+
+
+def _paper(**changes) -> SweepConfig:
+    kwargs = {
+        "solve_for": "growth",
+        "grid": (("voltage", (0.0, 0.1)),),
+        "fixed": (("outer_radius", 1.4),),
+        **changes,
+    }
+    return SweepConfig(**kwargs)
+
+
+@pytest.mark.parametrize(
+    ("changes", "needle"),
+    [
+        ({"solve_for": "growth[1]"}, "solve.for: 'growth[1]' is unknown; choose growth, stretch"),
+        ({"side": "extension"}, 'solve.side: side applies only to for = "stretch"'),
+        ({"grid": (("width", (1.0,)),)}, "grid.width: unknown parameter; use any of outer_radius"),
+        ({"grid": (("growth", (1.2,)),)}, "grid.growth: growth is what is solved for"),
+        ({"fixed": (("voltage", 0.1),)}, "fixed.voltage: voltage is also swept"),
+        ({"grid": (("voltage", ("0.1",)),)}, "grid.voltage: expected a number, got a string"),
+        ({"fixed": (("outer_radius", True),)}, "fixed.outer_radius: expected a number"),
+        ({"fixed": (("outer_radius", 0.5),)}, "outer radius Rbar_o = 0.5 is out of range"),
+        ({"grid": (("voltage", (0.1, 0.0)),)}, "grid.voltage: need distinct values in increasing"),
+        ({"grid": ()}, "grid: nothing to sweep; give at least one of outer_radius, length,"),
+    ],
+)
+def test_a_paper_sweep_in_python_is_refused_naming_the_key(changes, needle):
+    with pytest.raises(ConfigError) as err:
+        _paper(**changes)
+    assert needle in str(err.value) and "\n" not in str(err.value)
+
+
+def _bilayer(**changes) -> SweepConfig:
+    kwargs = {
+        "solve_for": "growth[1].theta",
+        "grid": (("layers[1].shear_modulus", (5.0, 20.0)),),
+        "fixed": (("voltage", 0.1),),
+        "tube": BILAYER.read_text(),
+        **changes,
+    }
+    return SweepConfig(**kwargs)
+
+
+@pytest.mark.parametrize(
+    ("changes", "needle"),
+    [
+        ({"solve_for": "growth"}, "solve.for: solve_for = growth needs a layer"),
+        ({"solve_for": "growth[1].theta+r"}, "solve.for: write it as 'growth[1].r+theta'"),
+        ({"solve_for": "force"}, "solve.for: solve_for = force is not a control of this tube"),
+        ({"grid": (("width", (1.0,)),)}, "grid.width: "),
+        ({"grid": (("layers[3].thickness", (0.1,)),)}, "layer 3 does not exist"),
+        ({"fixed": (("growth[1].theta", 1.2),)}, "fixed.growth[1].theta: growth[1].theta is what"),
+        ({"grid": (("length", (-1.0,)),)}, "grid.length: length = -1"),
+        ({"grid": ()}, "grid: nothing to sweep; give a control or key of the tube in [grid]"),
+        ({"tube": "[[layers]]\nouter_radius = 0.5\n"}, "tube.file: "),
+    ],
+)
+def test_a_tube_sweep_in_python_is_refused_naming_the_key(changes, needle):
+    with pytest.raises(ConfigError) as err:
+        _bilayer(**changes)
+    assert needle in str(err.value) and "\n" not in str(err.value)
+
+
+def test_a_tube_sweep_takes_the_same_path():
+    """The fixed values, then the swept ones, set on the file's tube by Tube.at; a side is
+    kept for any control of a tube file, as stores written so far may hold one."""
+    c = _bilayer(side="compression")
+    tubes = c.points((slice(0, 2),))
+    file_tube = load_tube(BILAYER).at("voltage", 0.1)
+    assert tubes == [file_tube.at("layers[1].shear_modulus", mu) for mu in (5.0, 20.0)]
+    assert SweepConfig.from_dict(json.loads(c.to_json())) == c

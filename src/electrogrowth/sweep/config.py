@@ -7,7 +7,8 @@ the offending key (sweep/file.py adds the file and line). Read from a TOML file
     [solve]     for = "growth" | "stretch" | "voltage"       (required)
                 side = "compression" | "extension"           (stretch only)
                 rtol = 1e-12                                  (1e-14 .. 1e-4)
-    [modes]     m = [0, 12], n = [1, 30], extend = true, top = 5
+    [modes]     m = [0, 12], n = [1, 30], extend = true, top = 5, surface = true,
+                prismatic = true, torsional = true            (every ScanOptions field)
     [material]  name = "neo-hookean" | "gent" | "mooney-rivlin", and its parameters;
                 or energy = "(I1 - 3)/2 + I5/2" (an energy as text, model/energy_text.py)
     [fixed]     outer_radius, length, growth, stretch, voltage   (numbers)
@@ -20,6 +21,13 @@ the offending key (sweep/file.py adds the file and line). Read from a TOML file
                 and keys (model/layers.py Tube.at: "layers[1].thickness",
                 "layers[1].shear_modulus", "growth[1].theta", voltage, pressure, ...).
 
+Both kinds of sweep take one path: the sweep's :func:`reference_tube` (the tube file's
+tube, or the paper's tube ``Tube.uniform()`` with the sweep's material) is what every name
+and value is checked on, and every point is that tube with the [fixed] values and then the
+point's grid values set by ``Tube.at``. The names a sweep of the paper's tube takes are
+that tube's ``parameter_keys()``, and it solves for the controls among them (see
+:func:`sweep_keys`).
+
 A parameter is either fixed or swept, never both, and never the one solved for; unset
 ones take the :meth:`~electrogrowth.Tube.uniform` defaults, except the outer
 radius, which must be given (with a tube file: the file's values).
@@ -31,27 +39,53 @@ import dataclasses
 import inspect
 import json
 import math
+from typing import Any
 
 import numpy as np
 
 from ..bifurcation.scan import ScanOptions
 from ..errors import ConfigError, ElectrogrowthError, ParameterError
 from ..incremental.accuracy import RTOL_RANGE
+from ..model.controls import TUBE_CONTROLS
 from ..model.energy_text import energy_material
 from ..model.layers import Tube
-from ..model.materials import BUILTIN, material_by_name
-from ..model.params import CONTROLS, SIDES
+from ..model.materials import BUILTIN, Material, material_by_name
+from ..model.params import DEFAULT_SIDE, SIDES
+from ..model.toml_input import shown, typename
 from ..model.tube_file import parse_tube
 from .unit import ScanSpec
 
-#: The numbers of the paper's tube (Tube.uniform) a sweep can fix or vary.
-SWEEPABLE = ("outer_radius", "length", "growth", "stretch", "voltage")
+#: The [modes] keys a store has always held, in its order: a sweep stores them always.
+ALWAYS_STORED = ("m", "n", "extend", "top")
+#: The [modes] keys and the ScanOptions field each sets: every field, named without
+#: "_range", so a new scan option is a sweep option too (read as its default's type, stored
+#: and compared on resume). The keys beyond ALWAYS_STORED are stored only where they differ
+#: from the default, so a sweep that leaves them alone stores what stores always held.
+_FIELDS = {f.name.removesuffix("_range"): f.name for f in dataclasses.fields(ScanOptions)}
+MODE_KEYS = {key: _FIELDS[key] for key in ALWAYS_STORED} | _FIELDS
 #: The most grid points of one sweep: 1e7 points are days of a large cluster, and the store's
 #: completion marks of a larger grid are read whole into memory (docs/security.md).
 MAX_POINTS = 10_000_000
 #: The most mode records (points x top) a sweep's store may hold: refused up front rather
 #: than filling the disk and the memory of whoever opens it.
 MAX_MODE_RECORDS = 10**8
+
+
+def reference_tube(tube_text: str | None, material: Material | None = None) -> Tube:
+    """The tube a sweep's names and values are checked on and its points start from,
+    before the [fixed] values: the [tube] file's tube, or (no file) the paper's tube
+    ``Tube.uniform()`` at its defaults with ``material`` (default neo-Hookean)."""
+    if tube_text is None:
+        return Tube.uniform(material=material)
+    return parse_tube(tube_text, source="[tube] file")
+
+
+def sweep_keys(tube_text: str | None, tube: Tube) -> tuple[str, ...] | None:
+    """The names [fixed] and [grid] take: a sweep without a [tube] file is of the paper's
+    tube and takes its ``parameter_keys()`` only (any other key, a layer's modulus, a
+    pressure, one growth component, would make it another tube than the paper's); a tube
+    file's sweep takes every control and key ``Tube.at`` accepts (None: ask the tube)."""
+    return tube.parameter_keys() if tube_text is None else None
 
 
 @dataclasses.dataclass(frozen=True)
@@ -75,10 +109,7 @@ class SweepConfig:
     energy: str = ""  # an energy as text (model/energy_text.py) in place of ``material``
 
     def __post_init__(self):
-        if self.tube is not None:
-            _validate_tube(self)
-        else:
-            _validate(self)
+        _validate(self)
 
     @property
     def dims(self) -> tuple[str, ...]:
@@ -103,21 +134,25 @@ class SweepConfig:
         name, params = self.material
         return material_by_name(name, **dict(params))
 
-    def points(self, index_slices, material=None) -> list[Tube]:
-        """The tubes of a block of the grid (tuple of slices), in C order."""
+    def reference(self, material: Material | None = None) -> Tube:
+        """The tube before the [fixed] values (:func:`reference_tube`; ``material``, when
+        given, is this sweep's, already built)."""
+        if self.tube is None and material is None:
+            material = self.build_material()
+        return reference_tube(self.tube, material)
+
+    def points(self, index_slices, material: Material | None = None) -> list[Tube]:
+        """The tubes of a block of the grid (tuple of slices), in C order: the reference
+        tube with the [fixed] values, then each point's grid values, set by ``Tube.at``."""
         axes = [values[s] for (_, values), s in zip(self.grid, index_slices)]
-        fixed = dict(self.fixed)
-        base = None if self.tube is None else _fixed_tube(self)
-        material = material or (self.build_material() if base is None else None)
+        base = self.reference(material)
+        for name, value in self.fixed:
+            base = base.at(name, value)
         out = []
         for combo in np.ndindex(*(len(a) for a in axes)):
-            swept = {name: axes[d][i] for d, (name, i) in enumerate(zip(self.dims, combo))}
-            if base is None:
-                out.append(Tube.uniform(**fixed, **swept, material=material))
-                continue
             tube = base
-            for name, value in swept.items():
-                tube = tube.at(name, value)
+            for name, axis, i in zip(self.dims, axes, combo):
+                tube = tube.at(name, axis[i])
             out.append(tube)
         return out
 
@@ -125,12 +160,7 @@ class SweepConfig:
         """A JSON-ready dict (stored in the dataset attributes; see :meth:`from_dict`)."""
         return {
             "solve": {"for": self.solve_for, "side": self.side, "rtol": self.rtol},
-            "modes": {
-                "m": list(self.scan.m_range),
-                "n": list(self.scan.n_range),
-                "extend": self.scan.extend,
-                "top": self.scan.top,
-            },
+            "modes": _modes_dict(self.scan),
             "material": (
                 {"energy": self.energy}
                 if self.energy
@@ -157,15 +187,36 @@ class SweepConfig:
             fixed=tuple(d["fixed"].items()),
             material=(mat.pop("name", "neo-hookean"), tuple(mat.items())),
             energy=energy,
-            scan=ScanOptions(
-                tuple(d["modes"]["m"]),
-                tuple(d["modes"]["n"]),
-                d["modes"]["top"],
-                d["modes"]["extend"],
-            ),
+            scan=_modes_options(d["modes"]),
             chunk=d["run"]["chunk"],
             tube=d["tube"]["text"] if "tube" in d else None,
         )
+
+
+def _modes_dict(scan: ScanOptions) -> dict:
+    """The [modes] table of ``scan``, keyed by name: the first four always, the others
+    where they differ from the default (MODE_KEYS)."""
+    default = ScanOptions()
+    out = {}
+    for key, field in MODE_KEYS.items():
+        value = getattr(scan, field)
+        if key in ALWAYS_STORED or value != getattr(default, field):
+            out[key] = list(value) if isinstance(value, tuple) else value
+    return out
+
+
+def _modes_options(modes: dict) -> ScanOptions:
+    """ScanOptions from a stored [modes] table, by name; a key it lacks (a store written
+    before that option was stored) takes today's default, an unknown key is refused."""
+    for key in modes:
+        if key not in MODE_KEYS:
+            raise ValueError(f"modes.{key} is not a scan option; known: {', '.join(MODE_KEYS)}")
+    given: dict[str, Any] = {
+        field: tuple(modes[key]) if field.endswith("_range") else modes[key]
+        for key, field in MODE_KEYS.items()
+        if key in modes
+    }
+    return ScanOptions(**given)
 
 
 def differences(a: SweepConfig, b: SweepConfig) -> list[str]:
@@ -192,22 +243,21 @@ def default_chunk(size: int) -> int:
 
 
 def _validate(c: SweepConfig) -> None:
-    if c.solve_for not in CONTROLS:
-        raise ConfigError(
-            ("solve", "for"), f"{c.solve_for!r} is unknown; choose growth, stretch or voltage"
-        )
-    if c.side is not None and c.solve_for != "stretch":
-        raise ConfigError(("solve", "side"), 'side applies only to for = "stretch"')
+    """Every check of a sweep, of the paper's tube or of a tube file alike: the names and
+    values are checked on the reference tube (each value alone, set by ``Tube.at``)."""
+    tube = _reference(c)
+    keys = sweep_keys(c.tube, tube)
+    _check_solve(c, tube, keys)
     _check_run(c)
     if not c.grid:
-        raise ConfigError(
-            ("grid",), f"nothing to sweep; give at least one of {', '.join(SWEEPABLE)} in [grid]"
-        )
-    for table, names in (("grid", c.dims), ("fixed", [name for name, _ in c.fixed])):
-        for name in names:
-            if name not in SWEEPABLE:
+        what = f"at least one of {', '.join(keys)}" if keys else "a control or key of the tube"
+        raise ConfigError(("grid",), f"nothing to sweep; give {what} in [grid]")
+    fixed = [(name, (value,)) for name, value in c.fixed]
+    for table, items in (("grid", c.grid), ("fixed", fixed)):
+        for name, _ in items:
+            if keys is not None and name not in keys:
                 raise ConfigError(
-                    (table, name), f"unknown parameter; use any of {', '.join(SWEEPABLE)}"
+                    (table, name), f"unknown parameter; use any of {', '.join(keys)}"
                 )
             if name == c.solve_for:
                 raise ConfigError(
@@ -218,14 +268,60 @@ def _validate(c: SweepConfig) -> None:
     for name, values in c.grid:
         if not values or list(values) != sorted(set(values)):
             raise ConfigError(("grid", name), "need distinct values in increasing order")
-    material = _energy(c.energy) if c.energy else _material(c.material)
-    # Tube.uniform checks each field on its own and its defaults are valid, so every
-    # value is checked alone: the error then names the entry that is wrong.
-    for name, value in c.fixed:
-        _tube(name, value, ("fixed", name), material)
-    for name, values in c.grid:
-        for v in values:
-            _tube(name, v, ("grid", name), material)
+    # Each value is checked alone on the reference tube, whose other values are valid, so
+    # the error names the entry that is wrong.
+    for table, items in (("fixed", fixed), ("grid", c.grid)):
+        for name, values in items:
+            for value in values:
+                _check_value(tube, name, value, (table, name))
+
+
+def _reference(c: SweepConfig) -> Tube:
+    """The reference tube of ``c``, a mistake in the tube file or the material a
+    ConfigError naming it."""
+    if c.tube is not None:
+        try:
+            return reference_tube(c.tube)
+        except ConfigError as exc:
+            raise ConfigError(("tube", "file"), str(exc)) from None
+    return reference_tube(None, _energy(c.energy) if c.energy else _material(c.material))
+
+
+def _check_solve(c: SweepConfig, tube: Tube, keys: tuple[str, ...] | None) -> None:
+    """What is solved for is a control of the tube, written as the tube names it. The
+    paper's tube solves for the controls among its keys, and of those only the stretch
+    takes a side; a tube file's sweep takes a side for any control, as the stores written
+    so far may (a stricter rule would make them unreadable)."""
+    if keys is not None:
+        controls = [k for k in keys if k in TUBE_CONTROLS]
+        if c.solve_for not in controls:
+            raise ConfigError(
+                ("solve", "for"), f"{c.solve_for!r} is unknown; choose {_or(controls)}"
+            )
+        sided = [f'"{k}"' for k in controls if k in DEFAULT_SIDE]
+        if c.side is not None and f'"{c.solve_for}"' not in sided:
+            raise ConfigError(("solve", "side"), f"side applies only to for = {_or(sided)}")
+    try:
+        name = str(tube.check_control(c.solve_for))
+    except ParameterError as exc:
+        raise ConfigError(("solve", "for"), str(exc)) from None
+    if name != c.solve_for:
+        raise ConfigError(("solve", "for"), f"write it as {name!r}")
+
+
+def _check_value(tube: Tube, name: str, value, where: tuple[str, ...]) -> None:
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise ConfigError(where, f"expected a number, got {typename(value)} {shown(value)}")
+    try:
+        tube.at(name, value)
+    except ParameterError as exc:
+        raise ConfigError(where, str(exc)) from None
+
+
+def _or(names) -> str:
+    """'a, b or c'."""
+    names = list(names)
+    return names[0] if len(names) == 1 else f"{', '.join(names[:-1])} or {names[-1]}"
 
 
 def _check_run(c: SweepConfig) -> None:
@@ -252,55 +348,6 @@ def _check_run(c: SweepConfig) -> None:
             f" {c.size * c.scan.top:,} mode records; the store holds at most"
             f" {MAX_MODE_RECORDS:.0e}: lower top or the grid",
         )
-
-
-def _fixed_tube(c: SweepConfig) -> Tube:
-    """The sweep's tube file with its [fixed] values applied."""
-    tube = parse_tube(c.tube or "", source="[tube] file")
-    for name, value in c.fixed:
-        tube = tube.at(name, value)
-    return tube
-
-
-def _validate_tube(c: SweepConfig) -> None:
-    """The checks of :func:`_validate` for a sweep of a layered tube: the control is one of
-    the tube's, every fixed and swept name is a control or key of it and every value valid."""
-    try:
-        tube = parse_tube(c.tube or "", source="[tube] file")
-    except ConfigError as exc:
-        raise ConfigError(("tube", "file"), str(exc)) from None
-    try:
-        solve_for = str(tube.check_control(c.solve_for))
-    except ParameterError as exc:
-        raise ConfigError(("solve", "for"), str(exc)) from None
-    if solve_for != c.solve_for:
-        raise ConfigError(("solve", "for"), f"write it as {solve_for!r}")
-    _check_run(c)
-    if not c.grid:
-        raise ConfigError(("grid",), "nothing to sweep; give a control or key of the tube")
-    for table, items in (("fixed", [(k, (v,)) for k, v in c.fixed]), ("grid", c.grid)):
-        for name, values in items:
-            if name == solve_for:
-                raise ConfigError((table, name), f"{name} is what is solved for")
-            if table == "fixed" and name in c.dims:
-                raise ConfigError((table, name), f"{name} is also swept in [grid]; keep one")
-            for v in values:
-                try:
-                    tube.at(name, v)
-                except ParameterError as exc:
-                    raise ConfigError((table, name), str(exc)) from None
-    for name, values in c.grid:
-        if not values or list(values) != sorted(set(values)):
-            raise ConfigError(("grid", name), "need distinct values in increasing order")
-
-
-def _tube(name, value, where, material):
-    try:
-        Tube.uniform(**{name: value}, material=material)
-    except ParameterError as exc:
-        raise ConfigError(where, str(exc)) from None
-    except TypeError:
-        raise ConfigError(where, f"unknown parameter; use any of {', '.join(SWEEPABLE)}") from None
 
 
 def _energy(text: str):

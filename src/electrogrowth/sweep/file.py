@@ -10,7 +10,6 @@ tomllib keeps no positions, so the line is found by scanning the text for the ke
 from __future__ import annotations
 
 import functools
-import inspect
 import math
 import re
 from pathlib import Path
@@ -23,15 +22,16 @@ from ..model.controls import parse_control
 from ..model.layers import Tube
 from ..model.toml_input import finite, number, parse, read_text, shown, typename
 from ..model.tube_file import parse_tube
-from .config import SWEEPABLE, SweepConfig, default_chunk
+from .config import MODE_KEYS, SweepConfig, default_chunk, reference_tube, sweep_keys
 
-#: table -> allowed keys (None: free keys, checked by the table's own rules)
+#: table -> allowed keys (None: free keys, checked by the table's own rules; [fixed] and
+#: [grid] take the names of the sweep's tube, config.sweep_keys)
 TABLES = {
     "solve": ("for", "side", "rtol", "layer", "component"),
-    "modes": ("m", "n", "extend", "top"),
+    "modes": tuple(MODE_KEYS),
     "material": None,
-    "fixed": SWEEPABLE,
-    "grid": SWEEPABLE,
+    "fixed": None,
+    "grid": None,
     "run": ("chunk",),
     "tube": ("file",),
 }
@@ -55,44 +55,20 @@ def parse_config(text: str, *, source: str = "<sweep>") -> SweepConfig:
 
 
 def _from_raw(raw: dict, base: Path = Path()) -> SweepConfig:
-    for table, value in raw.items():
-        if table not in TABLES:
-            raise ConfigError(
-                (table,),
-                f"unknown key; the sweep file has the tables"
-                f" {', '.join(f'[{t}]' for t in TABLES)}",
-            )
-        if not isinstance(value, dict):
-            raise ConfigError((table,), f"expected a table [{table}], got {typename(value)}")
-        # a tube file's controls and keys are checked against the tube (config.py)
-        allowed = None if table in ("fixed", "grid") and "tube" in raw else TABLES[table]
-        for key in value:
-            if allowed is not None and key not in allowed:
-                raise ConfigError(
-                    (table, key), f"unknown key; [{table}] takes {', '.join(allowed)}"
-                )
+    """The SweepConfig of a sweep file's tables: of its [tube] file's tube, or of the
+    paper's tube (every key not given at its default) with its [material]."""
+    _check_tables(raw)
     solve, modes, run = (raw.get(t, {}) for t in ("solve", "modes", "run"))
     if "for" not in solve:
         raise ConfigError(("solve",), "missing key 'for' (growth, stretch or voltage)")
-    solve_for = _string(solve, ("solve",), "for")
-    if "tube" in raw:
-        return _tube_sweep(raw, base, solve_for)
-    for key in ("layer", "component"):
-        if key in solve:
-            raise ConfigError(("solve", key), "applies only to a sweep with a [tube] file")
-    opt = lambda table, where, key, read, default: (  # noqa: E731
-        read(table, where, key) if key in table else default
-    )
-    mat = dict(raw.get("material", {}))
-    energy = opt(mat, ("material",), "energy", _string, "")
-    mat.pop("energy", None)
-    if energy and mat:
-        raise ConfigError(
-            ("material", "energy"), "give either energy or a name and its parameters, not both"
-        )
-    name = opt(mat, ("material",), "name", _string, "neo-hookean")
-    mat.pop("name", None)
-    material = tuple((key, number(mat, ("material",), key)) for key in mat)
+    text, tube = _tube_file(raw, base) if "tube" in raw else (None, reference_tube(None))
+    keys = sweep_keys(text, tube)
+    for table in ("fixed", "grid"):  # the paper's tube takes its keys; a tube file's, Tube.at
+        for key in raw.get(table, {}):
+            if keys is not None and key not in keys:
+                raise ConfigError((table, key), f"unknown key; [{table}] takes {', '.join(keys)}")
+    solve_for = _solve_for(solve, tube if text is not None else None)
+    material, energy = _material_table(raw.get("material", {}))
     fixed = {key: number(raw.get("fixed", {}), ("fixed",), key) for key in raw.get("fixed", {})}
     grid = tuple((key, _grid_values(key, value)) for key, value in raw.get("grid", {}).items())
     for key in fixed:
@@ -104,54 +80,15 @@ def _from_raw(raw: dict, base: Path = Path()) -> SweepConfig:
         raise ConfigError(
             ("grid", solve_for), f"{solve_for} is what is solved for; it cannot be swept"
         )
-    if "outer_radius" not in fixed and "outer_radius" not in dict(grid):
-        raise ConfigError(
-            ("fixed",),
-            "missing outer_radius (Rbar_o > 1): give it in [fixed] or sweep it in [grid]",
-        )
-    full = {
-        f: fixed.get(f, _default(f)) for f in SWEEPABLE if f != solve_for and f not in dict(grid)
-    }
-    chunk = opt(run, ("run",), "chunk", _integer, None)
-    return SweepConfig(
-        solve_for=solve_for,
-        grid=grid,
-        fixed=tuple(full.items()),
-        material=(name, material),
-        energy=energy,
-        side=opt(solve, ("solve",), "side", _string, None),
-        rtol=opt(solve, ("solve",), "rtol", number, 1e-12),
-        scan=_scan_options(modes),
-        chunk=chunk if chunk is not None else default_chunk(math.prod(len(v) for _, v in grid)),
-    )
-
-
-def _tube_sweep(raw: dict, base: Path, solve_for: str) -> SweepConfig:
-    """A sweep of a layered tube file: [fixed] and [grid] name its controls and keys."""
-    if "material" in raw:
-        raise ConfigError(("material",), "the materials come from the [tube] file; remove it")
-    path = base / _string(raw["tube"], ("tube",), "file") if "file" in raw["tube"] else None
-    if path is None:
-        raise ConfigError(("tube",), "missing key 'file' (the tube file, relative to this file)")
-    try:
-        text = read_text(path, "tube file")
-        tube = parse_tube(text, source=str(path))
-    except ConfigError as exc:
-        raise ConfigError(("tube", "file"), str(exc)) from None
-    solve, modes, run = (raw.get(t, {}) for t in ("solve", "modes", "run"))
-    layer = _integer(solve, ("solve",), "layer") if "layer" in solve else None
-    comp = _string(solve, ("solve",), "component") if "component" in solve else None
-    try:
-        solve_for = str(tube.check_control(parse_control(solve_for, layer, comp)))
-    except ParameterError as exc:
-        raise ConfigError(("solve", "for"), str(exc)) from None
-    fixed = {key: number(raw.get("fixed", {}), ("fixed",), key) for key in raw.get("fixed", {})}
-    grid = tuple((key, _grid_values(key, value)) for key, value in raw.get("grid", {}).items())
+    if text is None:  # the paper's tube: the store holds every one of its numbers
+        fixed = _with_defaults(tube, fixed, grid, solve_for)
     chunk = _integer(run, ("run",), "chunk") if "chunk" in run else None
     return SweepConfig(
         solve_for=solve_for,
         grid=grid,
         fixed=tuple(fixed.items()),
+        material=material,
+        energy=energy,
         side=_string(solve, ("solve",), "side") if "side" in solve else None,
         rtol=number(solve, ("solve",), "rtol") if "rtol" in solve else 1e-12,
         scan=_scan_options(modes),
@@ -160,27 +97,107 @@ def _tube_sweep(raw: dict, base: Path, solve_for: str) -> SweepConfig:
     )
 
 
+def _check_tables(raw: dict) -> None:
+    """Every table is known and a table, every key of a table with fixed keys is one."""
+    for table, value in raw.items():
+        if table not in TABLES:
+            raise ConfigError(
+                (table,),
+                f"unknown key; the sweep file has the tables"
+                f" {', '.join(f'[{t}]' for t in TABLES)}",
+            )
+        if not isinstance(value, dict):
+            raise ConfigError((table,), f"expected a table [{table}], got {typename(value)}")
+        allowed = TABLES[table]
+        for key in value:
+            if allowed is not None and key not in allowed:
+                raise ConfigError(
+                    (table, key), f"unknown key; [{table}] takes {', '.join(allowed)}"
+                )
+
+
+def _tube_file(raw: dict, base: Path) -> tuple[str, Tube]:
+    """The text and tube of the [tube] file (relative to the sweep file's folder), which
+    replaces [material]."""
+    if "material" in raw:
+        raise ConfigError(("material",), "the materials come from the [tube] file; remove it")
+    if "file" not in raw["tube"]:
+        raise ConfigError(("tube",), "missing key 'file' (the tube file, relative to this file)")
+    path = base / _string(raw["tube"], ("tube",), "file")
+    try:
+        text = read_text(path, "tube file")
+        return text, parse_tube(text, source=str(path))
+    except ConfigError as exc:
+        raise ConfigError(("tube", "file"), str(exc)) from None
+
+
+def _solve_for(solve: dict, tube: Tube | None) -> str:
+    """[solve] for, with a tube file's layer and component folded into the control's name
+    as that tube writes it; the paper's tube (``tube`` None) takes the name as written,
+    which SweepConfig checks against its controls."""
+    name = _string(solve, ("solve",), "for")
+    if tube is None:
+        for key in ("layer", "component"):
+            if key in solve:
+                raise ConfigError(("solve", key), "applies only to a sweep with a [tube] file")
+        return name
+    layer = _integer(solve, ("solve",), "layer") if "layer" in solve else None
+    comp = _string(solve, ("solve",), "component") if "component" in solve else None
+    try:
+        return str(tube.check_control(parse_control(name, layer, comp)))
+    except ParameterError as exc:
+        raise ConfigError(("solve", "for"), str(exc)) from None
+
+
+def _material_table(mat: dict) -> tuple[tuple[str, tuple[tuple[str, float], ...]], str]:
+    """[material]: (name, parameters) and the energy text ("" unless given)."""
+    mat = dict(mat)
+    energy = _string(mat, ("material",), "energy") if "energy" in mat else ""
+    mat.pop("energy", None)
+    if energy and mat:
+        raise ConfigError(
+            ("material", "energy"), "give either energy or a name and its parameters, not both"
+        )
+    name = _string(mat, ("material",), "name") if "name" in mat else "neo-hookean"
+    mat.pop("name", None)
+    return (name, tuple((key, number(mat, ("material",), key)) for key in mat)), energy
+
+
+def _with_defaults(tube: Tube, fixed: dict, grid: tuple, solve_for: str) -> dict:
+    """Every key of the paper's tube neither swept nor solved for: given, or the default
+    (``tube`` is Tube.uniform() at its defaults); the outer radius has none."""
+    if "outer_radius" not in fixed and "outer_radius" not in dict(grid):
+        raise ConfigError(
+            ("fixed",),
+            "missing outer_radius (Rbar_o > 1): give it in [fixed] or sweep it in [grid]",
+        )
+    return {
+        key: fixed.get(key, tube.value_of(key))
+        for key in tube.parameter_keys()
+        if key != solve_for and key not in dict(grid)
+    }
+
+
 def _scan_options(modes: dict) -> ScanOptions:
     """The [modes] table as ScanOptions, its defaults where a key is absent; an invalid
-    entry is a ConfigError naming it."""
-    given = {}
-    if "m" in modes:
-        given["m_range"] = _int_pair(modes, "m")
-    if "n" in modes:
-        given["n_range"] = _int_pair(modes, "n")
-    for key, read in (("extend", _bool), ("top", _integer)):
+    entry is a ConfigError naming it. Each key is read as its default's type: a range is
+    two integers, a switch true or false, a count an integer."""
+    default, given = ScanOptions(), {}
+    for key, field in MODE_KEYS.items():
         if key in modes:
-            given[key] = read(modes, ("modes",), key)
+            like = getattr(default, field)
+            if isinstance(like, tuple):
+                given[field] = _int_pair(modes, key)
+            else:
+                read = _bool if isinstance(like, bool) else _integer
+                given[field] = read(modes, ("modes",), key)
+    keys = {field: key for key, field in MODE_KEYS.items()}
     for field, value in given.items():  # one at a time: the error names the entry
         try:
             ScanOptions(**{field: value})
         except ParameterError as exc:
-            raise ConfigError(("modes", field.removesuffix("_range")), str(exc)) from None
+            raise ConfigError(("modes", keys[field]), str(exc)) from None
     return ScanOptions(**given)
-
-
-def _default(field: str) -> float:
-    return inspect.signature(Tube.uniform).parameters[field].default
 
 
 def _grid_values(key: str, value) -> tuple[float, ...]:
