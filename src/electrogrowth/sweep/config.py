@@ -46,11 +46,10 @@ import numpy as np
 from ..bifurcation.scan import ScanOptions
 from ..errors import ConfigError, ElectrogrowthError, ParameterError
 from ..incremental.accuracy import RTOL_RANGE
-from ..model.controls import TUBE_CONTROLS
+from ..model.controls import SIDED, SIDES, TUBE_CONTROLS
 from ..model.energy_text import energy_material
 from ..model.layers import Tube
 from ..model.materials import BUILTIN, Material, material_by_name
-from ..model.params import DEFAULT_SIDE, SIDES
 from ..model.toml_input import shown, typename
 from ..model.tube_file import parse_tube
 from .unit import ScanSpec
@@ -298,7 +297,7 @@ def _check_solve(c: SweepConfig, tube: Tube, keys: tuple[str, ...] | None) -> No
             raise ConfigError(
                 ("solve", "for"), f"{c.solve_for!r} is unknown; choose {_or(controls)}"
             )
-        sided = [f'"{k}"' for k in controls if k in DEFAULT_SIDE]
+        sided = [f'"{k}"' for k in controls if k in SIDED]
         if c.side is not None and f'"{c.solve_for}"' not in sided:
             raise ConfigError(("solve", "side"), f"side applies only to for = {_or(sided)}")
     try:
