@@ -161,7 +161,7 @@ def _certify_choice(params, crit, scan, families, progress) -> int:
     before = crit.value - sense * _window(crit)
     modes = scan_grid(scan.m_range, scan.n_range, False, families)
     state = solve_base_state(params.at(crit.solve_for, before))
-    f = _one_by_one(lambda row: collocation_targets(state, row)[0], modes, progress)
+    f = _one_by_one(state, modes, progress)
     stable = collocation_stable_signs(params, modes)
     for i in np.argsort(f * stable):  # the most unstable-looking mode first
         if np.sign(f[i]) == stable[i]:
@@ -177,10 +177,12 @@ def _certify_choice(params, crit, scan, families, progress) -> int:
     return int(len(modes))
 
 
-def _one_by_one(target, modes, progress) -> np.ndarray:
+def _one_by_one(state, modes, progress) -> np.ndarray:
+    """The collocation targets of ``modes`` at ``state``, one mode at a time (reported to
+    ``progress``)."""
     f = []
     for i, row in enumerate(modes):
-        f.append(target(row[None, :]))
+        f.append(collocation_targets(state, row[None, :])[0])
         if progress is not None:
             progress(i + 1, len(modes))
     return np.array(f)

@@ -42,6 +42,7 @@ from ..model.layers import Tube
 from ..model.params import check_side
 from ..outcomes import Kind, Outcome, Status
 from ..summary import critical_html
+from .along import SignedMode, TubeAt
 from .march import control_path, first_bifurcations
 
 #: a value is certified when its error estimate is at most CERTIFIED rtol max(1, |value|)
@@ -192,11 +193,8 @@ def _solve(params, m, n, solve_for, fam, side, method, rtol, bracket) -> Critica
     acc = Accuracy(rtol)
     fine, coarse = targets_for(method, acc.fine), targets_for(method, acc.coarse)
     sref = stable_sign(m, n, params, method, family=fam)
-
-    def signed(targets):  # the target of this mode as a function of the control, stable > 0
-        return lambda x: sref * float(targets(solve_base_state(params.at(solve_for, x)), mode)[0])
-
-    g = signed(fine)
+    at = TubeAt(params, solve_for)
+    g = SignedMode(at, fine, mode, sref)  # the target along the control, stable > 0
     if bracket is not None and g(bracket[0]) * g(bracket[1]) < 0:
         value = brent(g, *bracket)
     else:
@@ -233,7 +231,9 @@ def _solve(params, m, n, solve_for, fam, side, method, rtol, bracket) -> Critica
         int(m),
         int(n),
         Kind.BIFURCATION,
-        _second_resolution(signed(coarse), value, control_path(params, solve_for, side)[:2]),
+        _second_resolution(
+            SignedMode(at, coarse, mode, sref), value, control_path(params, solve_for, side)[:2]
+        ),
         method,
         side,
         params.at(solve_for, value),

@@ -34,7 +34,7 @@ import numpy as np
 
 from ..errors import NoBifurcationFound, ParameterError
 from ..incremental.accuracy import SCAN_SIGNS, SCAN_STABLE_SIGNS, Accuracy
-from ..incremental.targets import MODE_MAX, Family, impedance_targets
+from ..incremental.targets import MODE_MAX, Family, ImpedanceTarget
 from ..labelled import scan_dataset
 from ..model.layers import Tube
 from ..model.params import check_side
@@ -415,8 +415,8 @@ def _scan_once(
     params, solve_for, side, m_range, n_range, top, rtol, probes, families
 ) -> ScanResult:
     modes = scan_grid(m_range, n_range, probes, families)
-    loose = functools.partial(impedance_targets, rtol=SCAN_SIGNS)
-    fine = functools.partial(impedance_targets, rtol=Accuracy(rtol).runners_up)
+    loose = ImpedanceTarget(SCAN_SIGNS)
+    fine = ImpedanceTarget(Accuracy(rtol).runners_up)
     res = first_bifurcations(
         params,
         solve_for,
@@ -470,5 +470,5 @@ def stable_signs(m_range, n_range, probes, families) -> np.ndarray:
     joining two of them and none changes sign (tests/bifurcation/test_scan.py checks it
     across radii, lengths, energies and layered tubes)."""
     modes = scan_grid(m_range, n_range, probes, families)
-    targets = functools.partial(impedance_targets, rtol=SCAN_STABLE_SIGNS)
+    targets = ImpedanceTarget(SCAN_STABLE_SIGNS)
     return unloaded_signs(SIGN_TUBE, modes, targets)
