@@ -27,6 +27,7 @@ from ..incremental.targets import collocation_stable_signs, collocation_targets,
 from ..outcomes import Kind
 from .critical import critical_value
 from .march import control_path
+from .problem import Problem
 from .scan import scan_grid
 from .surface import short_wave_limit
 
@@ -81,8 +82,9 @@ def certify(
 
     Parameters
     ----------
-    params : Tube
-        The tube ``crit`` was solved for.
+    params : Tube or Problem
+        The tube ``crit`` was solved for, or its Problem (whose options are the scan's
+        unless ``options`` is given).
     crit : CriticalPoint
         A bifurcation (``critical_value`` or ``scan.critical``) or a surface result.
     scan : ScanResult, optional
@@ -107,6 +109,8 @@ def certify(
     ParameterError
         ``crit`` is neither a bifurcation nor a surface result (a threshold, none).
     """
+    if isinstance(params, Problem):
+        params, options = params.tube, params.options if options is None else options
     if crit.kind == Kind.SURFACE:
         return _surface(params, crit, scan, rtol)
     if crit.kind != Kind.BIFURCATION:

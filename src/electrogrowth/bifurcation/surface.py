@@ -57,6 +57,7 @@ from .directions import (
     sampler,
 )
 from .march import control_path
+from .problem import DEFAULT_RTOL, Problem, as_problem
 
 #: the short-wave march's step control: as the mode march's, but down to 1e-6 of the scale
 #: (h is one continuous function: its zero may be approached closer)
@@ -334,21 +335,26 @@ def _ratio(psi):
 
 
 def short_wave_limit(
-    params: Tube,
-    solve_for: str,
+    params: Tube | Problem,
+    solve_for: str | None = None,
     *,
     side: str | None = None,
     faces=None,
     psi: float | None = None,
-    rtol: float = 1e-12,
+    rtol: float | None = None,
 ) -> SurfaceLimit:
     """Critical value of ``solve_for`` for wrinkles of vanishing wavelength (m, k -> inf).
 
+    ``short_wave_limit(problem)`` takes the control, side and rtol from a
+    :class:`~.problem.Problem`; the keyword form ``short_wave_limit(tube, solve_for,
+    side=..., rtol=...)`` stays (with its own rtol range, 0 < rtol <= 1e-3).
+
     Parameters
     ----------
-    params : Tube
+    params : Tube or Problem
         The tube (one homogeneous layer, or a layered, pressurised Tube); the control named
-        by ``solve_for`` is the unknown (``params.at(solve_for, x)``).
+        by ``solve_for`` is the unknown (``params.at(solve_for, x)``). Or a Problem (then
+        ``solve_for``, ``side`` and ``rtol`` are left out).
     solve_for : str
         Growth: smallest g > 1 (march 1 -> 6). Stretch: the lambda_z nearest to
         lambda_z = g on ``side`` ("compression", default, march to 0.05 g; or "extension",
@@ -361,8 +367,8 @@ def short_wave_limit(
     psi : float, optional
         Examine only this wave direction (radians in [0, pi/2]) instead of the worst one:
         the directional critical value, whose infimum over psi is the default result.
-    rtol : float
-        Accuracy of the base state and of Brent's method (0 < rtol <= 1e-3).
+    rtol : float, optional
+        Accuracy of the base state and of Brent's method (default 1e-12, 0 < rtol <= 1e-3).
 
     Returns
     -------
@@ -377,6 +383,11 @@ def short_wave_limit(
     ConvergenceError
         A root could not be converged.
     """
+    if isinstance(params, Problem):
+        problem = as_problem(params, solve_for, side=side, rtol=rtol)
+        params, solve_for, side, rtol = problem.tube, problem.control, problem.side, problem.rtol
+    elif rtol is None:
+        rtol = DEFAULT_RTOL
     if psi is None:
         return _solve(params, solve_for, side, faces, rtol, None)
     if isinstance(psi, bool) or not isinstance(psi, (int, float)) or not 0 <= psi <= HALF_PI:
