@@ -35,7 +35,6 @@ from __future__ import annotations
 import dataclasses
 import enum
 import math
-from collections.abc import Callable
 
 import numpy as np
 
@@ -53,9 +52,6 @@ from .radial_table import build_table, stack_tables
 MODE_MAX = 2000
 
 PARALLEL_FROM = 16  # batches smaller than this run on one thread (thread launch costs more)
-
-#: targets(state, modes (k, 2) or (k, 3) array) -> (k,) array of target values
-Targets = Callable[[object, np.ndarray], np.ndarray]
 
 #: Bits of the Stroh pairs (U_j, S_j): U_r / r Sigma_rr, U_th / r Sigma_rth,
 #: U_z / r Sigma_rz, r Delta_r / -Phi (collocation: U_r and P, U_th, U_z, Phi).
