@@ -165,7 +165,7 @@ def _certify_choice(params, crit, scan, families, progress) -> int:
     before = crit.value - sense * _window(crit)
     modes = scan_grid(scan.m_range, scan.n_range, False, families)
     state = solve_base_state(params.at(crit.solve_for, before))
-    f = _one_by_one(state, modes, progress)
+    f = _one_by_one(CollocationRow(state), modes, progress)
     stable = collocation_stable_signs(params, modes)
     for i in np.argsort(f * stable):  # the most unstable-looking mode first
         if np.sign(f[i]) == stable[i]:
@@ -181,12 +181,21 @@ def _certify_choice(params, crit, scan, families, progress) -> int:
     return int(len(modes))
 
 
-def _one_by_one(state, modes, progress) -> np.ndarray:
-    """The collocation targets of ``modes`` at ``state``, one mode at a time (reported to
-    ``progress``)."""
+@dataclasses.dataclass(frozen=True)
+class CollocationRow:
+    """The collocation target of one mode (a one-row ``modes`` array) at ``state``."""
+
+    state: object
+
+    def __call__(self, row) -> float:
+        return collocation_targets(self.state, row)[0]
+
+
+def _one_by_one(target, modes, progress) -> np.ndarray:
+    """``target`` of each row of ``modes``, one mode at a time (reported to ``progress``)."""
     f = []
     for i, row in enumerate(modes):
-        f.append(collocation_targets(state, row[None, :])[0])
+        f.append(target(row[None, :]))
         if progress is not None:
             progress(i + 1, len(modes))
     return np.array(f)
