@@ -22,7 +22,13 @@ from scipy.optimize import minimize_scalar
 
 from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError
-from ..incremental.halfspace import FaceProblem, InterfaceProblem, surface_problem, surfaces
+from ..incremental.halfspace import (
+    FaceProblem,
+    InterfaceProblem,
+    surface_problem,
+    surface_radius,
+    surfaces,
+)
 
 HALF_PI = 0.5 * math.pi
 ENDPOINT_SLACK = 1e-14  # f (|f| <= 1) equal to rounding: keep the exact endpoint psi
@@ -138,6 +144,31 @@ def worst_direction(
     if not math.isfinite(best_v):
         return math.nan, best_p
     return best_v, best_p
+
+
+@dataclasses.dataclass(frozen=True)
+class FixedDirection:
+    """The wave direction psi at every state and face (short_wave_limit(psi=...))."""
+
+    psi: float
+
+    def __call__(self, state, face) -> float:
+        return self.psi
+
+
+@dataclasses.dataclass(frozen=True)
+class RayDirection:
+    """The direction tan psi = k r / m of the ray of modes (j m, j n) at a face of radius
+    r, k = n pi / (lambda_z L): it follows the state (ray_limit)."""
+
+    m: float
+    n: float
+
+    def __call__(self, state, face) -> float:
+        length = getattr(state, "current_length", None)  # a layered state
+        if length is None:
+            length = state.tube.stretch * state.tube.length
+        return math.atan2(self.n * math.pi * surface_radius(state, face) / length, self.m)
 
 
 @dataclasses.dataclass(frozen=True, eq=False)

@@ -128,15 +128,11 @@ def scan_modes(
 ) -> ScanResult:
     """Critical value of ``solve_for`` minimised (first reached) over all modes.
 
-    ``scan_modes(problem)`` takes the control, side, accuracy and options from a
-    :class:`~.problem.Problem`; ``scan_modes(tube, solve_for, side=..., options=...,
-    rtol=...)`` builds that problem from the keywords.
-
     Parameters
     ----------
     params : Tube or Problem
-        The tube; the control named by ``solve_for`` is the unknown. Or a Problem (then
-        the keywords are left out).
+        The tube; the control named by ``solve_for`` is the unknown. Or a
+        :class:`~.problem.Problem`, which gives every keyword below.
     solve_for : str
         As in :func:`bifurcation.critical_value` (growth, stretch, voltage; for a layered
         Tube also growth[K].component, pressure, force).
@@ -147,8 +143,7 @@ def scan_modes(
         The mode ranges (extended automatically while the optimum sits on an upper edge),
         the number of modes reported, and whether to extend (default ScanOptions()).
     rtol : float, optional
-        Accuracy of the critical value (default 1e-12, valid 1e-14 to 1e-4; see
-        incremental/accuracy.py).
+        Accuracy of the critical value (default 1e-12, 1e-14 to 1e-4; incremental/accuracy.py).
 
     Returns
     -------
@@ -205,17 +200,8 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
         return _searched(params, solve_for, side, result, options, rtol, m_top)
 
     while True:
-        result = _scan_once(
-            params,
-            solve_for,
-            side,
-            m_range,
-            n_range,
-            top,
-            rtol,
-            probes,
-            (options.prismatic, options.torsional),
-        )
+        families = (options.prismatic, options.torsional)
+        result = _scan_once(params, solve_for, side, m_range, n_range, top, rtol, probes, families)
         c = result.critical
         if probes and c.kind == Kind.BIFURCATION and (c.m > m_range[1] or c.n > n_range[1]):
             if limit_first(c):

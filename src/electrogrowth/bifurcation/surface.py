@@ -43,7 +43,7 @@ from ..basestate.tube import solve_base_state
 from ..continuation import events
 from ..continuation.path import ControlPath, Stepper, StepPolicy
 from ..errors import BaseStateError, ConvergenceError, ParameterError
-from ..incremental.halfspace import surface_radius, surfaces
+from ..incremental.halfspace import surfaces
 from ..model.layers import Tube
 from ..model.params import check_side
 from ..outcomes import Kind, Outcome, Status
@@ -52,6 +52,8 @@ from .along import voltage_threshold as _voltage_threshold
 from .directions import (
     HALF_PI,
     MARCH_REFINE,
+    FixedDirection,
+    RayDirection,
     Resolution,
     reference_signs,
     sampler,
@@ -300,31 +302,6 @@ def _solve(params, solve_for, side, faces, rtol, direction) -> SurfaceLimit:
     )
 
 
-@dataclasses.dataclass(frozen=True)
-class FixedDirection:
-    """The wave direction psi at every state and face (short_wave_limit(psi=...))."""
-
-    psi: float
-
-    def __call__(self, state, face) -> float:
-        return self.psi
-
-
-@dataclasses.dataclass(frozen=True)
-class RayDirection:
-    """The direction tan psi = k r / m of the ray of modes (j m, j n) at a face of radius
-    r, k = n pi / (lambda_z L): it follows the state (ray_limit)."""
-
-    m: float
-    n: float
-
-    def __call__(self, state, face) -> float:
-        length = getattr(state, "current_length", None)  # a layered state
-        if length is None:
-            length = state.tube.stretch * state.tube.length
-        return math.atan2(self.n * math.pi * surface_radius(state, face) / length, self.m)
-
-
 def _ratio(psi):
     if psi is None or abs(psi - HALF_PI) <= 1e-12:
         return None
@@ -345,16 +322,12 @@ def short_wave_limit(
 ) -> SurfaceLimit:
     """Critical value of ``solve_for`` for wrinkles of vanishing wavelength (m, k -> inf).
 
-    ``short_wave_limit(problem)`` takes the control, side and rtol from a
-    :class:`~.problem.Problem`; the keyword form ``short_wave_limit(tube, solve_for,
-    side=..., rtol=...)`` stays (with its own rtol range, 0 < rtol <= 1e-3).
-
     Parameters
     ----------
     params : Tube or Problem
         The tube (one homogeneous layer, or a layered, pressurised Tube); the control named
-        by ``solve_for`` is the unknown (``params.at(solve_for, x)``). Or a Problem (then
-        ``solve_for``, ``side`` and ``rtol`` are left out).
+        by ``solve_for`` is the unknown (``params.at(solve_for, x)``). Or a
+        :class:`~.problem.Problem`, which gives ``solve_for``, ``side`` and ``rtol``.
     solve_for : str
         Growth: smallest g > 1 (march 1 -> 6). Stretch: the lambda_z nearest to
         lambda_z = g on ``side`` ("compression", default, march to 0.05 g; or "extension",
