@@ -33,6 +33,7 @@ _EXPORTS = {
     ".bifurcation.certify": ("Certificate", "certify"),
     ".bifurcation.critical": ("CriticalPoint", "critical_value"),
     ".bifurcation.curves": ("Curve", "critical_curve"),
+    ".bifurcation.problem": ("Problem",),
     ".bifurcation.scan": ("ScanOptions", "ScanResult", "scan_modes"),
     ".design.prescribe": ("Design", "prescribe"),
     ".design.sequence": ("ModeSequence", "mode_sequence"),
@@ -122,6 +123,7 @@ __all__ = [
     "voltage_curve",
     "voltage_threshold",
     # bifurcation
+    "Problem",
     "CriticalPoint",
     "critical_value",
     "ScanOptions",

@@ -1,14 +1,17 @@
 """Where the tube first wrinkles: the march of a control parameter from the stable unloaded
 tube to the first sign change of the targets (:mod:`.march`), one mode's critical value
-(:mod:`.critical`), the scan over all modes (:mod:`.scan`), critical curves with located mode
-switches (:mod:`.curves`) and the exact short-wave limit (:mod:`.surface`, its worst wave
-direction at a state in :mod:`.directions`).
+(:mod:`.critical`) of a :class:`~.problem.Problem` (tube, control, side, accuracy, scan
+options; its targets and march functions are named objects, :mod:`.along`), the scan over
+all modes (:mod:`.scan`), critical curves with located mode switches (:mod:`.curves`) and
+the exact short-wave limit (:mod:`.surface`, its worst wave direction at a state in
+:mod:`.directions`).
 
 May import ``incremental``, ``basestate``, ``model``, ``outcomes`` and ``errors``.
 """
 
 from .critical import CriticalPoint, critical_value, stable_sign
 from .curves import Curve, critical_curve
+from .problem import Problem
 from .scan import ScanOptions, ScanResult, scan_modes
 
 __all__ = [
@@ -17,6 +20,7 @@ __all__ = [
     "stable_sign",
     "Curve",
     "critical_curve",
+    "Problem",
     "ScanOptions",
     "ScanResult",
     "scan_modes",

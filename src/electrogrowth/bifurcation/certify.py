@@ -27,6 +27,7 @@ from ..incremental.targets import collocation_stable_signs, collocation_targets,
 from ..outcomes import Kind
 from .critical import critical_value
 from .march import control_path
+from .problem import Problem
 from .scan import scan_grid
 from .surface import short_wave_limit
 
@@ -81,8 +82,9 @@ def certify(
 
     Parameters
     ----------
-    params : Tube
-        The tube ``crit`` was solved for.
+    params : Tube or Problem
+        The tube ``crit`` was solved for, or its Problem (whose options are the scan's
+        unless ``options`` is given).
     crit : CriticalPoint
         A bifurcation (``critical_value`` or ``scan.critical``) or a surface result.
     scan : ScanResult, optional
@@ -107,6 +109,8 @@ def certify(
     ParameterError
         ``crit`` is neither a bifurcation nor a surface result (a threshold, none).
     """
+    if isinstance(params, Problem):
+        params, options = params.tube, params.options if options is None else options
     if crit.kind == Kind.SURFACE:
         return _surface(params, crit, scan, rtol)
     if crit.kind != Kind.BIFURCATION:
@@ -161,7 +165,7 @@ def _certify_choice(params, crit, scan, families, progress) -> int:
     before = crit.value - sense * _window(crit)
     modes = scan_grid(scan.m_range, scan.n_range, False, families)
     state = solve_base_state(params.at(crit.solve_for, before))
-    f = _one_by_one(lambda row: collocation_targets(state, row)[0], modes, progress)
+    f = _one_by_one(CollocationRow(state), modes, progress)
     stable = collocation_stable_signs(params, modes)
     for i in np.argsort(f * stable):  # the most unstable-looking mode first
         if np.sign(f[i]) == stable[i]:
@@ -177,7 +181,18 @@ def _certify_choice(params, crit, scan, families, progress) -> int:
     return int(len(modes))
 
 
+@dataclasses.dataclass(frozen=True)
+class CollocationRow:
+    """The collocation target of one mode (a one-row ``modes`` array) at ``state``."""
+
+    state: object
+
+    def __call__(self, row) -> float:
+        return collocation_targets(self.state, row)[0]
+
+
 def _one_by_one(target, modes, progress) -> np.ndarray:
+    """``target`` of each row of ``modes``, one mode at a time (reported to ``progress``)."""
     f = []
     for i, row in enumerate(modes):
         f.append(target(row[None, :]))

@@ -42,7 +42,9 @@ from ..model.controls import check_side
 from ..model.layers import Tube
 from ..outcomes import Kind, Outcome, Status
 from ..summary import critical_html
+from .along import SignedMode, TubeAt
 from .march import control_path, first_bifurcations
+from .problem import Problem, as_problem
 
 #: a value is certified when its error estimate is at most CERTIFIED rtol max(1, |value|)
 CERTIFIED = 1e4
@@ -109,24 +111,29 @@ class CriticalPoint(Outcome):
 
 
 def critical_value(
-    params: Tube,
+    params: Tube | Problem,
     m: int,
     n: int,
-    solve_for: str,
+    solve_for: str | None = None,
     *,
     family: str | None = None,
     side: str | None = None,
     method: str = "impedance",
-    rtol: float = 1e-12,
+    rtol: float | None = None,
     bracket: tuple[float, float] | None = None,
 ) -> CriticalPoint:
     """Critical value of ``solve_for`` for mode (m, n), the other parameters fixed.
 
+    ``critical_value(problem, m, n)`` takes the control, side and accuracy from a
+    :class:`~.problem.Problem`; ``critical_value(tube, m, n, solve_for, side=...,
+    rtol=...)`` builds that problem from the keywords.
+
     Parameters
     ----------
-    params : Tube
+    params : Tube or Problem
         The tube (one homogeneous layer, or a layered Tube with its loads); the value of
-        the control ``solve_for`` is ignored (it is the unknown).
+        the control ``solve_for`` is ignored (it is the unknown). Or a Problem (then
+        ``solve_for``, ``side`` and ``rtol`` are left out).
     m, n : int
         Circumferential wavenumber m >= 0 and axial half-wavenumber n >= 0 (k = n pi /
         (lambda_z L); n = 0: a prismatic mode, m >= 2).
@@ -143,7 +150,8 @@ def critical_value(
     method : {"impedance", "collocation"}
         The compiled Riccati kernel or the independent spectral collocation.
     rtol : float
-        Local accuracy of the integration; the value is converged to ~10 rtol. A value whose
+        Local accuracy of the integration (default 1e-12, valid 1e-14 to 1e-4); the value is
+        converged to ~10 rtol. A value whose
         error estimate exceeds CERTIFIED rtol max(1, |value|) is solved again at rtol / 100,
         and returned with status INACCURATE if it still does.
     bracket : (float, float), optional
@@ -161,8 +169,8 @@ def critical_value(
     ParameterError, NoBifurcationFound, ConvergenceError
     """
     fam = check_mode(m, n, family)
-    solve_for = control_name(params, solve_for)
-    side = check_side(solve_for, side)
+    problem = as_problem(params, solve_for, side=side, rtol=rtol)
+    params, solve_for, side, rtol = problem.tube, problem.control, problem.side, problem.rtol
     point = _solve(params, m, n, solve_for, fam, side, method, rtol, bracket)
     tight = rtol
     while not _certified(point, rtol) and tight / REFINE >= RTOL_RANGE[0] * (1 - 1e-9):
@@ -192,11 +200,8 @@ def _solve(params, m, n, solve_for, fam, side, method, rtol, bracket) -> Critica
     acc = Accuracy(rtol)
     fine, coarse = targets_for(method, acc.fine), targets_for(method, acc.coarse)
     sref = stable_sign(m, n, params, method, family=fam)
-
-    def signed(targets):  # the target of this mode as a function of the control, stable > 0
-        return lambda x: sref * float(targets(solve_base_state(params.at(solve_for, x)), mode)[0])
-
-    g = signed(fine)
+    at = TubeAt(params, solve_for)
+    g = SignedMode(at, fine, mode, sref)  # the target along the control, stable > 0
     if bracket is not None and g(bracket[0]) * g(bracket[1]) < 0:
         value = brent(g, *bracket)
     else:
@@ -233,7 +238,9 @@ def _solve(params, m, n, solve_for, fam, side, method, rtol, bracket) -> Critica
         int(m),
         int(n),
         Kind.BIFURCATION,
-        _second_resolution(signed(coarse), value, control_path(params, solve_for, side)[:2]),
+        _second_resolution(
+            SignedMode(at, coarse, mode, sref), value, control_path(params, solve_for, side)[:2]
+        ),
         method,
         side,
         params.at(solve_for, value),

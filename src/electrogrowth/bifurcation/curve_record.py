@@ -219,7 +219,7 @@ class Curve:
 
     def as_dict(self) -> dict:
         """JSON-ready record (NaN -> None)."""
-        num = lambda a: [None if not math.isfinite(v) else float(v) for v in a]  # noqa: E731
+        num = _finite_or_none
         p = self.params
         rec = p.record()
         fixed = {  # the tube's material(s), its numbers but the curve's own two, and itself
@@ -302,3 +302,8 @@ def _not_located(pt: CurvePoint, prev: CurvePoint, exc: Exception) -> CurvePoint
     a bug is named as one ("internal error: ...", with the bug report's remedy)."""
     why = f"switch from {prev.mode} not located: {_message(exc)}"
     return dataclasses.replace(pt, message="; ".join(filter(None, (pt.message, why))))
+
+
+def _finite_or_none(values) -> list:
+    """The floats of ``values`` with NaN and infinities as None (JSON has neither)."""
+    return [None if not math.isfinite(v) else float(v) for v in values]

@@ -66,6 +66,7 @@ from .curve_record import (
     _scan_point,
 )
 from .curve_switches import _Locator
+from .problem import DEFAULT_RTOL, Problem, as_problem
 from .scan import ScanOptions, scan_modes
 from .surface import short_wave_limit
 
@@ -140,31 +141,38 @@ def check_curve(solve_for: str, along: str, params: Tube) -> None:
 
 
 def critical_curve(
-    params: Tube,
+    params: Tube | Problem,
     solve_for: str,
-    along: str,
-    values: Iterable[float],
+    along: str | Iterable[float],
+    values: Iterable[float] | None = None,
     *,
     side: str | None = None,
-    options: ScanOptions = ScanOptions(),
+    options: ScanOptions | None = None,
     progress: bool | Callable[[int], object] | None = None,
     mapper: Callable = map,
     follow: bool = True,
 ) -> Curve:
     """Critical ``solve_for`` as ``along`` runs over ``values``, switches located.
 
+    ``critical_curve(problem, along, values)`` takes the tube, the control, the side and
+    the scan options from a :class:`~.problem.Problem` (at the default accuracy, the
+    curve's); ``critical_curve(tube, solve_for, along, values, side=..., options=...)``
+    is the keyword form.
+
     Parameters
     ----------
-    params : Tube
-        The fixed parameters; fields ``along`` and ``solve_for`` are overridden.
+    params : Tube or Problem
+        The fixed parameters; fields ``along`` and ``solve_for`` are overridden. Or a
+        Problem (then ``solve_for`` is left out, ``side`` and ``options`` too).
     solve_for : {"growth", "stretch", "voltage"}
         The unknown, as in :func:`scan.scan_modes` (``side`` for the stretch).
     along : {"stretch", "voltage", "outer_radius", "length", "growth"}
         The parameter of the abscissa; not ``solve_for``.
     values : sequence of float
         Strictly monotone grid of ``along``.
-    options : ScanOptions
-        Mode ranges of each scan (extended automatically when the optimum is on an edge).
+    options : ScanOptions, optional
+        Mode ranges of each scan (extended automatically when the optimum is on an edge;
+        default ScanOptions()).
     progress : bool or callable, optional
         True: progress bars (tqdm.auto: a widget in a notebook, text on a terminal), one
         over the grid points, then one over the mode switches to locate; None or False:
@@ -199,6 +207,25 @@ def critical_curve(
     >>> [(s.mode_before, s.mode_after, round(s.x, 6)) for s in c.switches]
     [((1, 1), (0, 1), 1.256361)]
     """
+    if isinstance(params, Problem):
+        if values is not None:
+            raise ParameterError(
+                "critical_curve(problem, along, values): solve_for is the problem's"
+            )
+        problem, along, values = as_problem(params, side=side, options=options), solve_for, along
+        if problem.rtol != DEFAULT_RTOL:
+            raise ParameterError(
+                f"rtol = {problem.rtol!r}: critical_curve runs at the default {DEFAULT_RTOL:g}"
+            )
+        params, solve_for, side, options = (
+            problem.tube,
+            problem.control,
+            problem.side,
+            problem.options,
+        )
+    if values is None:
+        raise ParameterError("critical_curve(tube, solve_for, along, values): values missing")
+    options = ScanOptions() if options is None else options
     check_curve(solve_for, along, params)
     solve_for = str(params.check_control(solve_for))
     side = check_side(solve_for, side)

@@ -15,13 +15,20 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
+from collections.abc import Callable
 
 import numpy as np
 from scipy.optimize import minimize_scalar
 
 from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError
-from ..incremental.halfspace import FaceProblem, InterfaceProblem, surface_problem, surfaces
+from ..incremental.halfspace import (
+    FaceProblem,
+    InterfaceProblem,
+    surface_problem,
+    surface_radius,
+    surfaces,
+)
 
 HALF_PI = 0.5 * math.pi
 ENDPOINT_SLACK = 1e-14  # f (|f| <= 1) equal to rounding: keep the exact endpoint psi
@@ -139,19 +146,52 @@ def worst_direction(
     return best_v, best_p
 
 
-def sampler(faces, signs, res: Resolution, direction=None, refine_below=math.inf):
-    """h(state) -> Sample: min over surfaces (faces and interfaces) of the signed target,
-    in the worst direction (direction None) or in the direction direction(state, face) of
-    a ray. With refine_below, a face whose grid minimum is above it is not refined (the
-    march)."""
+@dataclasses.dataclass(frozen=True)
+class FixedDirection:
+    """The wave direction psi at every state and face (short_wave_limit(psi=...))."""
 
-    def h(state) -> Sample:
+    psi: float
+
+    def __call__(self, state, face) -> float:
+        return self.psi
+
+
+@dataclasses.dataclass(frozen=True)
+class RayDirection:
+    """The direction tan psi = k r / m of the ray of modes (j m, j n) at a face of radius
+    r, k = n pi / (lambda_z L): it follows the state (ray_limit)."""
+
+    m: float
+    n: float
+
+    def __call__(self, state, face) -> float:
+        length = getattr(state, "current_length", None)  # a layered state
+        if length is None:
+            length = state.tube.stretch * state.tube.length
+        return math.atan2(self.n * math.pi * surface_radius(state, face) / length, self.m)
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class Sampler:
+    """h(state) -> Sample: min over ``faces`` (faces and interfaces) of the target signed by
+    ``signs``, in the worst direction (``direction`` None) or in the direction
+    direction(state, face) of a ray. With ``refine_below``, a face whose grid minimum is
+    above it is not refined (the march)."""
+
+    faces: tuple[str, ...]
+    signs: dict[str, float]
+    res: Resolution
+    direction: Callable | None = None
+    refine_below: float = math.inf
+
+    def __call__(self, state) -> Sample:
+        res, signs, direction = self.res, self.signs, self.direction
         best = Sample(math.inf, None, None)
-        for face in faces:
+        for face in self.faces:
             problem = surface_problem(state, face)
             if direction is None:
                 v, psi = worst_direction(problem, signs[face], grid=res.grid, psi_tol=None)
-                if not v > refine_below:  # close to zero (or NaN): refine
+                if not v > self.refine_below:  # close to zero (or NaN): refine
                     v, psi = worst_direction(
                         problem, signs[face], grid=res.grid, psi_tol=res.psi_tol
                     )
@@ -166,4 +206,7 @@ def sampler(faces, signs, res: Resolution, direction=None, refine_below=math.inf
                 best = Sample(v, best.face, best.psi)
         return best
 
-    return h
+
+def sampler(faces, signs, res: Resolution, direction=None, refine_below=math.inf) -> Sampler:
+    """The :class:`Sampler` of ``faces`` (kept for callers of the function form)."""
+    return Sampler(tuple(faces), signs, res, direction, refine_below)

@@ -28,7 +28,7 @@ from collections.abc import Callable
 import numpy as np
 
 from ..basestate import tube as door
-from ..basestate.tube import solve_base_state, threshold
+from ..basestate.tube import solve_base_state
 from ..continuation.events import LATER, brent, crossed, dip_bracket, dipped, first_roots
 from ..continuation.events import threshold_between as _lost_between
 from ..continuation.path import ControlPath, Stepper, StepPolicy
@@ -37,6 +37,8 @@ from ..errors import BaseStateError, NoBifurcationFound, ParameterError
 from ..incremental.targets import natural_family, row_family
 from ..model.controls import KINDS
 from ..model.layers import Tube
+from .along import Signed, Solves, TubeAt, VoltageMargin
+from .along import voltage_threshold as _voltage_threshold
 
 #: the mode march's step control: 0.4 % of the scale doubling up to 5 %, not below 1e-4
 MODE_STEPS = StepPolicy(smallest=1e-4)
@@ -107,7 +109,7 @@ def first_bifurcations(
     on the unloaded tube, are computed unless given (they depend only on the material,
     Rbar_o, L and the modes, so a curve or sweep can reuse them).
     """
-    at = lambda x: params.at(solve_for, x)  # noqa: E731
+    at = TubeAt(params, solve_for)
     if stable_signs is None:
         stable_signs = unloaded_signs(params, modes, targets)
     sref = stable_signs
@@ -126,11 +128,8 @@ def first_bifurcations(
             f" ({row_family(modes[i])}) at {solve_for} = {x0:g}; start from"
             " a stable state"
         )
-    fine = brent_targets or targets
-    signed = lambda x, idx: sref[idx] * targets(solve_base_state(at(x)), modes[idx])  # noqa
-
-    def signed_fine(x, i):
-        return float(sref[i] * fine(solve_base_state(at(x)), modes[[i]])[0])
+    signed = Signed(at, targets, modes, sref)
+    signed_fine = Signed(at, brent_targets or targets, modes, sref)
 
     watch = EventWatch(x0, g0, sense, path.scale)
     step = Stepper(path, MODE_STEPS, state.lambda_i)
@@ -152,12 +151,12 @@ def first_bifurcations(
             x = step.x
             idx = np.nonzero(watch.alive & (watch.xa != x))[0]
             if idx.size:
-                found += _advance(watch, idx, x, signed(x, idx), signed, signed_fine, modes, top)
+                found += _advance(watch, idx, x, signed(x, idx), signed, signed_fine, top)
             break
         idx = np.nonzero(watch.needs(x))[0]
         if idx.size:
             g = sref[idx] * targets(state, modes[idx])
-            found += _advance(watch, idx, x, g, signed, signed_fine, modes, top)
+            found += _advance(watch, idx, x, g, signed, signed_fine, top)
         step.accept(x, state.lambda_i, MODE_STEPS.limit(watch.distance(), path.scale))
     found.sort(key=lambda mv: sense * mv.value)
     if not found and threshold is None:
@@ -171,15 +170,15 @@ def first_bifurcations(
     return MarchResult(found[:top], threshold)
 
 
-def _advance(watch, idx, x, g, signed, signed_fine, modes, need=None) -> list:
+def _advance(watch, idx, x, g, signed: Signed, signed_fine: Signed, need=None) -> list:
     """Record the samples at x; roots of the modes that changed sign or dipped to zero
     (of those that changed sign, the first ``need``, see events.first_roots)."""
-    found = []
+    found, modes = [], signed.modes
     hit = crossed(g)
     js = np.nonzero(hit)[0]
     if js.size:  # bisected together from where each mode was last seen
         cand = idx[js]
-        roots = first_roots(signed, signed_fine, cand, watch.xa[cand], x, watch.x0, need)
+        roots = first_roots(signed, signed_fine.one, cand, watch.xa[cand], x, watch.x0, need)
         for j, root in zip(js, roots):
             if root is None:  # the loose sign was wrong: the mode is not past a root yet
                 hit[j] = False
@@ -191,34 +190,18 @@ def _advance(watch, idx, x, g, signed, signed_fine, modes, need=None) -> list:
     dips = np.nonzero(~hit & dipped(old, mid, g))[0]
     for j in dips[np.argsort(mid[dips])][:8]:
         i = idx[j]
-        bracket = dip_bracket(lambda y, i=i: signed_fine(y, i), watch.x[1, i], x)
+        bracket = dip_bracket(signed_fine.row(i), watch.x[1, i], x)
         if bracket is not None:
-            found.append(_mode_value(modes, i, brent(lambda y, i=i: signed_fine(y, i), *bracket)))
+            found.append(_mode_value(modes, i, brent(signed_fine.row(i), *bracket)))
             hit[j] = True
     watch.alive[idx[hit]] = False
     watch.record(idx[~hit], x, g[~hit])
     return found
 
 
-def _voltage_threshold(tube) -> float:
-    return threshold(tube, "voltage").value
-
-
 def _threshold_between(at, params, x_ok, x_bad) -> float:
     """Parameter value where the base state is lost between x_ok and x_bad: where the
     voltage threshold falls to the applied voltage if that brackets it, else the edge of the
     states that solve (whichever of the tube's loads reaches its threshold), bisected."""
-    margin = (lambda x: _voltage_threshold(at(x)) - params.voltage) if params.voltage > 0 else None
-    return _lost_between(
-        x_ok, x_bad, margin=margin, exists=lambda x: _solves(at, x), tolerate=(ValueError,)
-    )
-
-
-def _solves(at, x, errors=(BaseStateError,), **options) -> bool:
-    """Does the base state at ``at(x)`` solve (``options`` to solve_base_state)? False on
-    one of ``errors``: the state is lost."""
-    try:
-        solve_base_state(at(x), **options)
-    except errors:
-        return False
-    return True
+    margin = VoltageMargin(at, params.voltage) if params.voltage > 0 else None
+    return _lost_between(x_ok, x_bad, margin=margin, exists=Solves(at), tolerate=(ValueError,))

@@ -29,7 +29,7 @@ import numpy as np
 
 from ..errors import NoBifurcationFound
 from ..incremental.accuracy import SCAN_SIGNS, SCAN_STABLE_SIGNS
-from ..incremental.targets import Family, impedance_targets
+from ..incremental.targets import Family, ImpedanceTarget
 from .march import SIGN_TUBE, ModeValue, first_bifurcations, unloaded_signs
 
 RATIO = 1.25  # geometric sampling: m_cap / m_edge = 2000 / 64 takes 16 samples
@@ -98,9 +98,9 @@ def _first(params, solve_for, side, rows, rtol, ms, only=None) -> list[ModeValue
     """The first modes to bifurcate among m in ``ms`` of the rows (``only`` rows instead,
     if given), finished at ``rtol``; NoBifurcationFound if none does."""
     modes = np.array([(m, n, code) for m in ms for n, code in (only or rows)], float)
-    loose = functools.partial(impedance_targets, rtol=SCAN_SIGNS)
-    fine = functools.partial(impedance_targets, rtol=rtol)
-    stable = functools.partial(impedance_targets, rtol=SCAN_STABLE_SIGNS)
+    loose = ImpedanceTarget(SCAN_SIGNS)
+    fine = ImpedanceTarget(rtol)
+    stable = ImpedanceTarget(SCAN_STABLE_SIGNS)
     res = first_bifurcations(
         params,
         solve_for,

@@ -32,27 +32,22 @@ import functools
 
 import numpy as np
 
-from ..errors import NoBifurcationFound, ParameterError
+from ..errors import NoBifurcationFound
 from ..incremental.accuracy import SCAN_SIGNS, SCAN_STABLE_SIGNS, Accuracy
-from ..incremental.targets import MODE_MAX, Family, impedance_targets
+from ..incremental.targets import Family, ImpedanceTarget
 from ..labelled import scan_dataset
-from ..model.controls import check_side
 from ..model.layers import Tube
 from ..outcomes import NO_MODE, Kind
 from ..summary import scan_html
-from .critical import CriticalPoint, control_name, critical_value, no_bifurcation_remedy
+from .critical import CriticalPoint, critical_value, no_bifurcation_remedy
 from .directions import past_surface
 from .march import SIGN_TUBE, ModeValue, first_bifurcations, unloaded_signs
 from .msearch import search_m
+from .options import EVERY_M, M_CAP, N_CAP, ScanOptions
+from .options import TOP_MAX as TOP_MAX  # re-exported: the CLI checks --top against it
+from .problem import Problem, as_problem
 from .surface import short_wave_limit
 
-#: The largest m and n of a scan: those of a mode (incremental.targets.MODE_MAX, set by
-#: the kernel's step budget); shorter waves tend to the exact short-wave limit.
-M_CAP = N_CAP = MODE_MAX
-#: Every m is scanned up to EVERY_M (the modes of small m are irregular); beyond it the
-#: best m of an edge optimum's family row is searched coarse-to-fine (msearch.py).
-EVERY_M = 64
-TOP_MAX = 1000  # modes a scan reports: the critical one and runners-up
 # widen a range mode by mode at most this often (m up to EVERY_M, n up to N_CAP); an m
 # optimum still on its edge is then searched for up to M_CAP (msearch.py)
 DOUBLINGS = 2
@@ -72,75 +67,6 @@ def _surface_point(limit, side) -> CriticalPoint:
         face=limit.face,
         psi=limit.psi,
     )
-
-
-def _check_range(name, rng, lowest, highest):
-    lo, hi = rng
-    whole = all(isinstance(x, (int, float, np.number)) and np.isfinite(x) for x in rng)
-    if not whole or int(lo) != lo or int(hi) != hi or lo < lowest or hi < lo or hi > highest:
-        raise ParameterError(
-            f"{name} range {list(rng)} is invalid; need integers "
-            f"{lowest} <= {name}_min <= {name}_max <= {highest} (shorter waves tend to the"
-            " exact short-wave limit, which every scan computes)"
-        )
-
-
-@dataclasses.dataclass(frozen=True)
-class ScanOptions:
-    """Which modes a scan examines and how much it reports: the defaults, written once.
-
-    Parameters
-    ----------
-    m_range, n_range : (int, int)
-        Inclusive starting ranges of the circumferential wavenumber m >= 0 and the axial
-        half-wavenumber n >= 1 (up to M_CAP, N_CAP = 2000; m beyond EVERY_M = 64 is
-        searched coarse-to-fine, not mode by mode).
-    top : int
-        Modes reported: the critical one and ``top - 1`` runners-up (top >= 1).
-    extend : bool
-        Probe short waves beyond the ranges and widen a range while the optimum sits on
-        its upper edge (mode by mode at most DOUBLINGS times, m up to EVERY_M, n up to
-        N_CAP; then m by the coarse-to-fine search up to M_CAP).
-    surface : bool
-        Compare with the exact short-wave limit (m, k -> infinity) at both faces, which is
-        the result when it comes first (see the module docstring).
-    prismatic : bool
-        Also scan the prismatic modes (m, 0), k = 0, for max(2, m_min) <= m <= m_max:
-        plane-strain wrinkles, admissible with sliding ends (the long-tube limit of n = 1).
-    torsional : bool
-        Also scan the torsional modes (0, n), u_th = U(r) cos kz, for n in n_range (when
-        m_min = 0).
-    """
-
-    m_range: tuple[int, int] = (0, 12)
-    n_range: tuple[int, int] = (1, 30)
-    top: int = 5
-    extend: bool = True
-    surface: bool = True
-    prismatic: bool = True
-    torsional: bool = True
-
-    def __post_init__(self):
-        for name, lowest, highest in (("m", 0, M_CAP), ("n", 1, N_CAP)):
-            rng = getattr(self, f"{name}_range")
-            _check_range(name, rng, lowest, highest)
-            object.__setattr__(self, f"{name}_range", (int(rng[0]), int(rng[1])))
-        top = self.top
-        if isinstance(top, bool) or int(top) != top or not 1 <= top <= TOP_MAX:
-            raise ParameterError(
-                f"top = {top!r} is invalid; need an integer from 1 to {TOP_MAX}"
-                " (the modes a scan reports)"
-            )
-        object.__setattr__(self, "top", int(self.top))
-        for name in ("extend", "surface", "prismatic", "torsional"):
-            if not isinstance(getattr(self, name), bool):
-                raise ParameterError(
-                    f"{name} = {getattr(self, name)!r} is invalid; need True or False"
-                )
-
-    def with_maxima(self, m_max: int, n_max: int) -> ScanOptions:
-        """These options with the ranges 0..m_max and 1..n_max (the CLI's --m-max, --n-max)."""
-        return dataclasses.replace(self, m_range=(0, m_max), n_range=(1, n_max))
 
 
 @dataclasses.dataclass(frozen=True)
@@ -193,37 +119,39 @@ def family_rows(m_values, n_values, prismatic: bool, torsional: bool) -> np.ndar
 
 
 def scan_modes(
-    params: Tube,
-    solve_for: str,
+    params: Tube | Problem,
+    solve_for: str | None = None,
     *,
     side: str | None = None,
-    options: ScanOptions = ScanOptions(),
-    rtol: float = 1e-12,
+    options: ScanOptions | None = None,
+    rtol: float | None = None,
 ) -> ScanResult:
     """Critical value of ``solve_for`` minimised (first reached) over all modes.
 
     Parameters
     ----------
-    params : Tube
-        The tube; the control named by ``solve_for`` is the unknown.
+    params : Tube or Problem
+        The tube; the control named by ``solve_for`` is the unknown. Or a
+        :class:`~.problem.Problem`, which gives every keyword below.
     solve_for : str
         As in :func:`bifurcation.critical_value` (growth, stretch, voltage; for a layered
         Tube also growth[K].component, pressure, force).
     side : {"compression", "extension"}, optional
         For the stretch, the pressure and the force (defaults: compression, extension
         (inflation), compression).
-    options : ScanOptions
+    options : ScanOptions, optional
         The mode ranges (extended automatically while the optimum sits on an upper edge),
-        the number of modes reported, and whether to extend.
-    rtol : float
-        Accuracy of the critical value (see incremental/accuracy.py).
+        the number of modes reported, and whether to extend (default ScanOptions()).
+    rtol : float, optional
+        Accuracy of the critical value (default 1e-12, 1e-14 to 1e-4; incremental/accuracy.py).
 
     Returns
     -------
     ScanResult
     """
-    solve_for = control_name(params, solve_for)
-    side = check_side(solve_for, side)
+    problem = as_problem(params, solve_for, side=side, rtol=rtol, options=options)
+    params, solve_for, side = problem.tube, problem.control, problem.side
+    options, rtol = problem.options, problem.rtol
     try:
         result, at_cap, limit = _widened_scan(params, solve_for, side, options, rtol)
     except NoBifurcationFound as exc:
@@ -272,17 +200,8 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
         return _searched(params, solve_for, side, result, options, rtol, m_top)
 
     while True:
-        result = _scan_once(
-            params,
-            solve_for,
-            side,
-            m_range,
-            n_range,
-            top,
-            rtol,
-            probes,
-            (options.prismatic, options.torsional),
-        )
+        families = (options.prismatic, options.torsional)
+        result = _scan_once(params, solve_for, side, m_range, n_range, top, rtol, probes, families)
         c = result.critical
         if probes and c.kind == Kind.BIFURCATION and (c.m > m_range[1] or c.n > n_range[1]):
             if limit_first(c):
@@ -415,8 +334,8 @@ def _scan_once(
     params, solve_for, side, m_range, n_range, top, rtol, probes, families
 ) -> ScanResult:
     modes = scan_grid(m_range, n_range, probes, families)
-    loose = functools.partial(impedance_targets, rtol=SCAN_SIGNS)
-    fine = functools.partial(impedance_targets, rtol=Accuracy(rtol).runners_up)
+    loose = ImpedanceTarget(SCAN_SIGNS)
+    fine = ImpedanceTarget(Accuracy(rtol).runners_up)
     res = first_bifurcations(
         params,
         solve_for,
@@ -470,5 +389,5 @@ def stable_signs(m_range, n_range, probes, families) -> np.ndarray:
     joining two of them and none changes sign (tests/bifurcation/test_scan.py checks it
     across radii, lengths, energies and layered tubes)."""
     modes = scan_grid(m_range, n_range, probes, families)
-    targets = functools.partial(impedance_targets, rtol=SCAN_STABLE_SIGNS)
+    targets = ImpedanceTarget(SCAN_STABLE_SIGNS)
     return unloaded_signs(SIGN_TUBE, modes, targets)

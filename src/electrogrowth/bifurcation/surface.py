@@ -43,18 +43,23 @@ from ..basestate.tube import solve_base_state
 from ..continuation import events
 from ..continuation.path import ControlPath, Stepper, StepPolicy
 from ..errors import BaseStateError, ConvergenceError, ParameterError
-from ..incremental.halfspace import surface_radius, surfaces
+from ..incremental.halfspace import surfaces
 from ..model.controls import KINDS, check_side
 from ..model.layers import Tube
 from ..outcomes import Kind, Outcome, Status
+from .along import Elliptic, SampleValue, Solves, StateAt, TubeAt, VoltageMargin
+from .along import voltage_threshold as _voltage_threshold
 from .directions import (
     HALF_PI,
     MARCH_REFINE,
+    FixedDirection,
+    RayDirection,
     Resolution,
     reference_signs,
     sampler,
 )
-from .march import _solves, _voltage_threshold, control_path
+from .march import control_path
+from .problem import DEFAULT_RTOL, Problem, as_problem
 
 #: the short-wave march's step control: as the mode march's, but down to 1e-6 of the scale
 #: (h is one continuous function: its zero may be approached closer)
@@ -140,8 +145,8 @@ def _locate(params, solve_for, side, h: Callable, rtol: float, h_march=None):
     h_march (default h) is used for the steps: it may be cheaper where h is far from 0
     but must agree with h wherever either is <= MARCH_REFINE."""
     fine_h, h = h, (h_march or h)
-    at = lambda x: params.at(solve_for, float(x))  # noqa: E731
-    state_at = lambda x: solve_base_state(at(x), rtol=rtol)  # noqa: E731
+    at = TubeAt(params, solve_for, as_float=True)
+    state_at = StateAt(at, rtol)
     path = ControlPath(*control_path(params, solve_for, side))
     x0, scale = path.start, path.scale
     try:
@@ -161,8 +166,7 @@ def _locate(params, solve_for, side, h: Callable, rtol: float, h_march=None):
             f"the {s0.face} face is already unstable (psi = {s0.psi:.6g})"
             f" at {solve_for} = {x0:g}; start from a stable state"
         )
-    value_of = lambda x: h(state_at(x)).value  # noqa: E731
-    fine_of = lambda y: fine_h(state_at(y)).value  # noqa: E731
+    value_of, fine_of = SampleValue(h, state_at), SampleValue(fine_h, state_at)
     xs, hs = [x0], [s0.value]
     step = Stepper(path, SURFACE_STEPS, state.lambda_i)
     threshold = None
@@ -188,7 +192,7 @@ def _locate(params, solve_for, side, h: Callable, rtol: float, h_march=None):
             continue
         s = h(state)
         if math.isnan(s.value):  # ellipticity lost in (x_prev, x]
-            elliptic = lambda y: not math.isnan(value_of(y))  # noqa: E731
+            elliptic = Elliptic(value_of)
             edge = events.Tolerance(1e-13 * scale, maxiter=60, scale="absolute")
             lo, hi = events.bisect(elliptic, x_prev, x, edge)
             if fine_of(lo) <= 0:  # a surface instability just before
@@ -239,10 +243,8 @@ def _threshold_between(at, params, x_ok, x_bad, rtol, exists: bool = True) -> fl
     return events.threshold_between(
         x_ok,
         x_bad,
-        margin=(lambda x: _voltage_threshold(at(x)) - params.voltage)
-        if params.voltage > 0
-        else None,
-        exists=(lambda x: _solves(at, x, lost, rtol=rtol)) if exists else None,
+        margin=VoltageMargin(at, params.voltage) if params.voltage > 0 else None,
+        exists=Solves(at, lost, rtol) if exists else None,
         tolerate=(ValueError, *lost),
         last="bad",
     )
@@ -271,7 +273,7 @@ def _solve(params, solve_for, side, faces, rtol, direction) -> SurfaceLimit:
     h = sampler(faces, signs, fine, direction)
     hm = sampler(faces, signs, fine, direction, refine_below=MARCH_REFINE)
     hc = sampler(faces, signs, coarse, direction)
-    at = lambda x: params.at(solve_for, float(x))  # noqa: E731
+    at = TubeAt(params, solve_for, as_float=True)
     kind, value, bracket = _locate(params, solve_for, side, h, rtol, hm)
     if kind in (Kind.THRESHOLD, Kind.NONE):
         return SurfaceLimit(
@@ -290,9 +292,9 @@ def _solve(params, solve_for, side, faces, rtol, direction) -> SurfaceLimit:
         return SurfaceLimit(
             solve_for, value, s.face, s.psi, _ratio(s.psi), kind, 0.0, at(value), side
         )
-    value_of = lambda x: h(solve_base_state(at(x), rtol=rtol)).value  # noqa: E731
+    value_of = SampleValue(h, StateAt(at, rtol))
     value = events.brent(value_of, *bracket, events.surface_tolerance(rtol))
-    coarse_of = lambda x: hc(solve_base_state(at(x), rtol=coarse.rtol)).value  # noqa: E731
+    coarse_of = SampleValue(hc, StateAt(at, coarse.rtol))
     err = _second_resolution(coarse_of, value)
     s = h(solve_base_state(at(value), rtol=rtol))
     return SurfaceLimit(
@@ -310,21 +312,22 @@ def _ratio(psi):
 
 
 def short_wave_limit(
-    params: Tube,
-    solve_for: str,
+    params: Tube | Problem,
+    solve_for: str | None = None,
     *,
     side: str | None = None,
     faces=None,
     psi: float | None = None,
-    rtol: float = 1e-12,
+    rtol: float | None = None,
 ) -> SurfaceLimit:
     """Critical value of ``solve_for`` for wrinkles of vanishing wavelength (m, k -> inf).
 
     Parameters
     ----------
-    params : Tube
+    params : Tube or Problem
         The tube (one homogeneous layer, or a layered, pressurised Tube); the control named
-        by ``solve_for`` is the unknown (``params.at(solve_for, x)``).
+        by ``solve_for`` is the unknown (``params.at(solve_for, x)``). Or a
+        :class:`~.problem.Problem`, which gives ``solve_for``, ``side`` and ``rtol``.
     solve_for : str
         Growth: smallest g > 1 (march 1 -> 6). Stretch: the lambda_z nearest to
         lambda_z = g on ``side`` ("compression", default, march to 0.05 g; or "extension",
@@ -337,8 +340,8 @@ def short_wave_limit(
     psi : float, optional
         Examine only this wave direction (radians in [0, pi/2]) instead of the worst one:
         the directional critical value, whose infimum over psi is the default result.
-    rtol : float
-        Accuracy of the base state and of Brent's method (0 < rtol <= 1e-3).
+    rtol : float, optional
+        Accuracy of the base state and of Brent's method (default 1e-12, 0 < rtol <= 1e-3).
 
     Returns
     -------
@@ -353,12 +356,17 @@ def short_wave_limit(
     ConvergenceError
         A root could not be converged.
     """
+    if isinstance(params, Problem):
+        problem = as_problem(params, solve_for, side=side, rtol=rtol)
+        params, solve_for, side, rtol = problem.tube, problem.control, problem.side, problem.rtol
+    elif rtol is None:
+        rtol = DEFAULT_RTOL
     if psi is None:
         return _solve(params, solve_for, side, faces, rtol, None)
     if isinstance(psi, bool) or not isinstance(psi, (int, float)) or not 0 <= psi <= HALF_PI:
         raise ParameterError(f"psi = {psi!r} is out of range; valid range: 0 <= psi <= pi/2")
     fixed = float(psi)
-    return _solve(params, solve_for, side, faces, rtol, lambda state, face: fixed)
+    return _solve(params, solve_for, side, faces, rtol, FixedDirection(fixed))
 
 
 def ray_limit(
@@ -387,11 +395,4 @@ def ray_limit(
             raise ParameterError(f"ray {name} = {v!r} is invalid; need 0 <= {name} < inf")
     if m == 0 and n == 0:
         raise ParameterError("ray (m, n) = (0, 0) is invalid; need m > 0 or n > 0")
-
-    def direction(state, face):
-        length = getattr(state, "current_length", None)  # a layered state
-        if length is None:
-            length = state.tube.stretch * state.tube.length
-        return math.atan2(n * math.pi * surface_radius(state, face) / length, m)
-
-    return _solve(params, solve_for, side, faces, rtol, direction)
+    return _solve(params, solve_for, side, faces, rtol, RayDirection(m, n))

@@ -24,15 +24,17 @@ A family keeps a subset of the four pairs (U_j, S_j) of the Stroh vector (``PAIR
 ``modes`` arrays have rows (m, n) (the natural family: prismatic for n = 0, else wrinkle)
 or (m, n, code) with code = ``Family.code``.
 
-:func:`targets_for` turns a method and an :class:`~.accuracy.Accuracy` into a function
-``targets(state, modes) -> f``, which the march (bifurcation/march.py) evaluates.
+:func:`targets_for` turns a method and a tolerance into a named target object,
+:class:`ImpedanceTarget` or :class:`CollocationTarget`, called as ``target(state, modes) -> f``,
+which the march (bifurcation/march.py) evaluates; being plain frozen dataclasses, targets
+pickle and compare by value.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import enum
 import math
-from collections.abc import Callable
 
 import numpy as np
 
@@ -50,9 +52,6 @@ from .radial_table import build_table, stack_tables
 MODE_MAX = 2000
 
 PARALLEL_FROM = 16  # batches smaller than this run on one thread (thread launch costs more)
-
-#: targets(state, modes (k, 2) or (k, 3) array) -> (k,) array of target values
-Targets = Callable[[object, np.ndarray], np.ndarray]
 
 #: Bits of the Stroh pairs (U_j, S_j): U_r / r Sigma_rr, U_th / r Sigma_rth,
 #: U_z / r Sigma_rz, r Delta_r / -Phi (collocation: U_r and P, U_th, U_z, Phi).
@@ -278,27 +277,50 @@ def resolving_nodes(state, m: float, n: float, rtol: float) -> int:
     return math.ceil(math.sqrt(q * math.log(1.0 / rtol))) + 4
 
 
-def targets_for(method: str, rtol: float) -> Targets:
-    """targets(state, modes) of the impedance kernel or of the collocation method (at
-    Accuracy(rtol).collocation_nodes, more for a mode whose decay through the wall needs
-    them: :func:`resolving_nodes`)."""
-    method = check_method(method)
-    if method is Method.IMPEDANCE:
-        return lambda state, modes: impedance_targets(state, modes, rtol=rtol)
-    nodes = Accuracy(rtol).collocation_nodes
+@dataclasses.dataclass(frozen=True)
+class ImpedanceTarget:
+    """The impedance kernel's target f(state, modes) at ``rtol`` (:func:`impedance_targets`):
+    a named, picklable function of a base state and a batch of modes."""
 
-    def targets(state, modes):
+    rtol: float = 1e-12
+    max_steps: int = 20000
+
+    def __call__(self, state, modes) -> np.ndarray:
+        return impedance_targets(state, modes, rtol=self.rtol, max_steps=self.max_steps)
+
+
+@dataclasses.dataclass(frozen=True)
+class CollocationTarget:
+    """The collocation target f(state, modes), mode by mode, at Accuracy(rtol)'s nodes or
+    more for a mode whose decay through the wall needs them (:func:`resolving_nodes`)."""
+
+    rtol: float = 1e-12
+
+    def __call__(self, state, modes) -> np.ndarray:
+        nodes = Accuracy(self.rtol).collocation_nodes
         modes = np.atleast_2d(np.asarray(modes, dtype=float))
         return np.array(
             [
-                collocation_targets(
-                    state, row[None], nodes=max(nodes, resolving_nodes(state, *row[:2], rtol))
-                )[0]
+                collocation_targets(state, row[None], nodes=max(nodes, self._nodes(state, row)))[0]
                 for row in modes
             ]
         )
 
-    return targets
+    def _nodes(self, state, row) -> int:
+        """The nodes resolving the mode of ``row`` (m, n[, code]) at this rtol."""
+        return resolving_nodes(state, row[0], row[1], self.rtol)
+
+
+#: targets(state, modes (k, 2) or (k, 3) array) -> (k,) array of target values
+Target = ImpedanceTarget | CollocationTarget
+
+
+def targets_for(method: str, rtol: float) -> Target:
+    """The target f(state, modes) of ``method`` at ``rtol``: an :class:`ImpedanceTarget` or a
+    :class:`CollocationTarget`."""
+    if check_method(method) is Method.IMPEDANCE:
+        return ImpedanceTarget(rtol)
+    return CollocationTarget(rtol)
 
 
 def collocation_stable_signs(tube, modes) -> np.ndarray:

@@ -1,0 +1,157 @@
+"""Functions of the control value x along a march, as named picklable objects.
+
+A march (march.py, surface.py) asks questions of the tube at a control value x: the tube
+there (:class:`TubeAt`), its base state (:class:`StateAt`), the targets of some modes with
+their stable signs applied (:class:`Signed`, positive until a mode's first bifurcation),
+how far the applied voltage is from its threshold (:class:`VoltageMargin`), whether the
+state still exists (:class:`Solves`). Each is a small frozen dataclass with ``__call__``,
+so a reader following a control from the CLI or ``critical_value`` sees what is evaluated
+(the target's class names the kernel: incremental.targets.ImpedanceTarget or
+CollocationTarget) and a process pool can ship it. They compute exactly what the lambdas
+they replace computed.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Callable
+
+import numpy as np
+
+from ..basestate.tube import solve_base_state, threshold
+from ..errors import BaseStateError
+from ..model.layers import Tube
+
+
+@dataclasses.dataclass(frozen=True)
+class TubeAt:
+    """The tube with its control ``control`` set to x (``tube.at(control, x)``)."""
+
+    tube: Tube
+    control: str
+    as_float: bool = False  # convert x to float first (the short-wave march's probes)
+
+    def __call__(self, x) -> Tube:
+        return self.tube.at(self.control, float(x) if self.as_float else x)
+
+
+@dataclasses.dataclass(frozen=True)
+class StateAt:
+    """The base state at x: ``solve_base_state(at(x), rtol=rtol)``."""
+
+    at: TubeAt
+    rtol: float
+
+    def __call__(self, x):
+        return solve_base_state(self.at(x), rtol=self.rtol)
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class Signed:
+    """The targets of rows of ``modes`` along the path, times their stable ``signs``: every
+    value is positive until that mode's first bifurcation."""
+
+    at: TubeAt
+    target: Callable
+    modes: np.ndarray
+    signs: np.ndarray
+
+    def __call__(self, x, idx) -> np.ndarray:
+        """Signed targets of the rows ``idx`` at x (one base state for them all)."""
+        return self.signs[idx] * self.target(solve_base_state(self.at(x)), self.modes[idx])
+
+    def one(self, x, i) -> float:
+        """Signed target of row i at x."""
+        return float(self.signs[i] * self.target(solve_base_state(self.at(x)), self.modes[[i]])[0])
+
+    def row(self, i: int) -> SignedRow:
+        """Row i alone, a function of x."""
+        return SignedRow(self, i)
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class SignedRow:
+    """One row of a :class:`Signed`, as a function of x alone (for Brent and minimisers)."""
+
+    signed: Signed
+    i: int
+
+    def __call__(self, x) -> float:
+        return self.signed.one(x, self.i)
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class SignedMode:
+    """The target of one mode (a one-row ``mode`` array) along the path, times its stable
+    ``sign`` (a float): positive until the mode's first bifurcation."""
+
+    at: TubeAt
+    target: Callable
+    mode: np.ndarray
+    sign: float
+
+    def __call__(self, x) -> float:
+        return self.sign * float(self.target(solve_base_state(self.at(x)), self.mode)[0])
+
+
+@dataclasses.dataclass(frozen=True)
+class SampleValue:
+    """The value of a half-space sampler h (directions.Sampler) at the state at x."""
+
+    h: Callable
+    state_at: Callable
+
+    def __call__(self, x) -> float:
+        return self.h(self.state_at(x)).value
+
+
+@dataclasses.dataclass(frozen=True)
+class Elliptic:
+    """Is the half-space still strongly elliptic at x (its sampled value is not NaN)?"""
+
+    value_of: Callable
+
+    def __call__(self, x) -> bool:
+        return not math.isnan(self.value_of(x))
+
+
+@dataclasses.dataclass(frozen=True)
+class VoltageMargin:
+    """The voltage threshold of the tube at x minus the applied ``voltage``: it falls to 0
+    where the state is lost."""
+
+    at: TubeAt
+    voltage: float
+
+    def __call__(self, x) -> float:
+        return voltage_threshold(self.at(x)) - self.voltage
+
+
+@dataclasses.dataclass(frozen=True)
+class Solves:
+    """Does the base state at x solve? False on one of ``errors`` (the state is lost);
+    ``rtol`` is handed to solve_base_state when given."""
+
+    at: TubeAt
+    errors: tuple[type[BaseException], ...] = (BaseStateError,)
+    rtol: float | None = None
+
+    def __call__(self, x) -> bool:
+        options = {} if self.rtol is None else {"rtol": self.rtol}
+        return solves(self.at, x, self.errors, **options)
+
+
+def voltage_threshold(tube) -> float:
+    """The voltage threshold of ``tube`` (inf where a stiffening energy has none)."""
+    return threshold(tube, "voltage").value
+
+
+def solves(at, x, errors=(BaseStateError,), **options) -> bool:
+    """Does the base state at ``at(x)`` solve (``options`` to solve_base_state)? False on
+    one of ``errors``: the state is lost."""
+    try:
+        solve_base_state(at(x), **options)
+    except errors:
+        return False
+    return True
