@@ -122,12 +122,15 @@ def _segments(state):
     tube = state.tube
     radii = tube.radii
     units = _column_units(state)
+    unit = bool(np.all(units == 1.0))  # the reference modulus and permittivity: no division
 
     def values(R, layer):
         r = state.radius(R)
-        J = np.prod(layer.growth_at(R), axis=0)
+        # J = det F_g: a constant layer's product once (the same floating-point product)
+        J = np.prod(layer.growth_at(R), axis=0) if layer.graded else math.prod(layer.growth)
         w = J * R / (state.stretch * r * r)
-        return np.column_stack([state.moduli(R), state.pressure(R), r, w]) / units
+        out = np.column_stack([state.moduli(R), state.pressure(R), r, w])
+        return out if unit else out / units
 
     return [
         (a, b, lambda R, layer=layer: values(R, layer))

@@ -175,7 +175,27 @@ class Tube:
         if not isinstance(material, Material):
             raise ParameterError(f"material = {material!r} is not a Material")
         layer = Layer(float(outer_radius), material, growth=float(growth))
-        return cls((layer,), length=length, stretch=stretch, voltage=voltage)
+        # every number is checked above and the layer by itself: the rest of Tube's checks
+        # hold by construction, so a march setting g at every step pays for them once
+        tube = object.__new__(cls)
+        fields = dict(_UNLOADED, layers=(layer,), length=float(length), stretch=float(stretch))
+        fields["voltage"] = float(voltage)
+        for name, value in fields.items():
+            object.__setattr__(tube, name, value)
+        return tube
+
+    def _uniform_at(self, name: str, value: float) -> Tube:
+        """A uniform tube with one of its five numbers set: checked in the paper's symbols,
+        built as Tube.uniform builds it (a march sets one at every step)."""
+        five = dict(
+            outer_radius=self.outer_radius,
+            length=self.length,
+            growth=self.layers[0].growth[0],
+            stretch=self.stretch,
+            voltage=self.voltage,
+        )
+        five[name] = value
+        return Tube.uniform(**five, material=self.layers[0].material)
 
     @functools.cached_property
     def is_uniform(self) -> bool:
@@ -259,9 +279,8 @@ class Tube:
         ``layers[K].thickness`` (the other layers' thicknesses kept), ``layers[K].shear_modulus``,
         ``layers[K].permittivity``; K = 1 innermost)."""
         value = float(value)
-        if self.is_uniform and name in UNIFORM_KEYS:  # named in the paper's symbols
-            five = {key: self.value_of(key) for key in UNIFORM_KEYS}
-            check_uniform(**{**five, name: value})
+        if self.is_uniform and name in UNIFORM_KEYS:  # the paper's tube: its own numbers
+            return self._uniform_at(name, value)
         if name == "outer_radius":  # the wall's outer face, for any number of layers
             name = f"layers[{len(self.layers)}].outer_radius"
         if isinstance(name, str) and (name in ("length", "outer_pressure") or "layers[" in name):
@@ -397,3 +416,11 @@ def TubeParameters(  # noqa: N802 -- the former class's name, kept for one relea
         stacklevel=2,
     )
     return Tube.uniform(outer_radius, length, growth, stretch, voltage, material)
+
+
+#: the loads of a uniform tube besides its stretch and voltage (Tube.uniform): the defaults
+_UNLOADED = {
+    f.name: f.default
+    for f in dataclasses.fields(Tube)
+    if f.name not in ("layers", "length", "stretch", "voltage")
+}
