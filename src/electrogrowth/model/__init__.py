@@ -9,7 +9,7 @@ Physics only, pure functions and frozen dataclasses. The bottom of the ladder: i
 nothing of the package but ``errors``.
 """
 
-from .layers import Layer, LinearGrowth, Tube
+from .layers import Layer, LinearGrowth, Tube, TubeParameters
 from .materials import Material, gent, material_by_name, mooney_rivlin, neo_hookean
 from .params import CONTROLS, SIDES
 from .tube_file import load_tube
