@@ -131,11 +131,16 @@ def test_kernel_target_equals_orthonormalised_shooting(m, n):
     assert f == pytest.approx(shooting_target(state, m, k, pairs=keep), rel=1e-9)
 
 
-def test_pressure_keeps_the_rigid_translation_a_zero_mode():
+@pytest.mark.parametrize(
+    "tube",
+    [*TUBES.values(), bilayer(inner_pressure=0.4, outer_pressure=-0.1)],
+    ids=[*TUBES, "pressurised-bilayer"],
+)
+def test_rigid_translation_is_a_zero_mode(tube):
     """u = e_x (m = 1, k = 0, U_th = -U_r) has L = 0, so it satisfies the follower-pressure
-    condition Sigma_ri = P du_r/dx_i exactly: its target vanishes at any pressure. A wrong
-    pressure condition (sign, or a missing m term) makes it non-zero."""
-    state = solve_base_state(bilayer(inner_pressure=0.4, outer_pressure=-0.1))
+    condition Sigma_ri = P du_r/dx_i exactly: its target vanishes for every tube, at any
+    pressure. A wrong pressure condition (sign, or a missing m term) makes it non-zero."""
+    state = solve_base_state(tube)
     f = integrate_one(1.0, 0.0, ALL_PAIRS & ~U_Z, build_table(state), 1e-13, 20000)[0]
     g = integrate_one(2.0, 0.0, ALL_PAIRS & ~U_Z, build_table(state), 1e-13, 20000)[0]
     assert abs(f) <= 1e-11 and abs(g) > 1e-3
