@@ -281,7 +281,7 @@ def test_unloaded_tube_is_stable_at_every_surface(tube):
     for face, sign in (("inner", -1.0), ("outer", 1.0)):
         mod, p, _ = face_data(state, face)
         assert np.all(target_from_moduli(mod, p, PSI, face) > 0)
-        for x in PSI:
+        for x in (*PSI, 0.7):
             Q, nu, _ = decaying_solutions(limit_matrix(mod, p, x), face)
             assert np.all(sign * nu.real > 0)  # Re nu < 0 decays into r > r_i, > 0 into r < r_o
             z = Q[4:] @ np.linalg.inv(Q[:4])
