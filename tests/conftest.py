@@ -11,30 +11,10 @@ os.environ.setdefault("OMP_NUM_THREADS", "1")
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
-from electrogrowth.model.layers import Layer, LinearGrowth, Tube  # noqa: E402
-from electrogrowth.model.materials import gent, mooney_rivlin, neo_hookean  # noqa: E402
+from electrogrowth.model.layers import Tube  # noqa: E402
+from electrogrowth.model.materials import gent, neo_hookean  # noqa: E402
 
-#: one tube of every kind, for physics that holds for any tube (the ``tubes`` fixture)
-TUBES = {
-    "uniform": Tube.uniform(1.5, 2.0, growth=1.1, stretch=1.05, voltage=0.3),
-    "two-layer": Tube(
-        (Layer(1.2, shear_modulus=4.0, growth=(1.0, 1.15, 1.0)), Layer(1.8, gent(50.0))),
-        length=2.0,
-        voltage=0.2,
-    ),
-    "graded": Tube(
-        (Layer(1.6, mooney_rivlin(0.3), growth=LinearGrowth(1.0, 1.6, (1.0, 1.12, 1.0), 1.0)),),
-        length=2.0,
-        stretch=1.02,
-    ),
-    "pressurised": Tube((Layer(1.5),), length=2.0, inner_pressure=0.08, outer_pressure=0.02),
-    "force-controlled": Tube(
-        (Layer(1.3, shear_modulus=3.0), Layer(1.7, permittivity=2.0)),
-        length=2.0,
-        axial_force=-0.5,
-        voltage=0.1,
-    ),
-}
+from .tubes import TUBES  # noqa: E402
 
 
 @pytest.fixture

@@ -39,7 +39,7 @@ from electrogrowth.incremental.stroh_limit import (
 )
 from electrogrowth.model.layers import Layer, Tube
 from electrogrowth.model.materials import MODULI_INDEX, gent, mooney_rivlin, neo_hookean_moduli
-from tests.conftest import TUBES
+from tests.tubes import TUBES
 
 try:
     from electrogrowth.bifurcation.critical import critical_value

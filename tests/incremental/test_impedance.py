@@ -35,7 +35,7 @@ from electrogrowth.incremental.radial_table import build_table, stack_tables
 from electrogrowth.incremental.targets import U_Z, impedance_targets, mode_pairs, wavenumber
 from electrogrowth.model.layers import Layer, Tube
 from electrogrowth.model.materials import mooney_rivlin
-from tests.conftest import TUBES
+from tests.tubes import TUBES
 
 CASES = [  # (Rbar_o, L, g, lambda_z, Vbar, m, n)
     (1.4, 1.0, 1.0, 1.0, 0.0, 0, 1),
