@@ -20,6 +20,7 @@ from __future__ import annotations
 import enum
 import math
 import traceback as _traceback
+from typing import TYPE_CHECKING
 
 from .errors import ElectrogrowthError, FailedPoint, InternalError, Remedy
 
@@ -79,8 +80,8 @@ class Outcome:
     """The shape every result record shares (a base of the frozen result dataclasses;
     each declares the fields in the order its callers construct it).
 
-    Attributes
-    ----------
+    The shared fields (each record declares them, in its own order):
+
     kind : Kind
         What was found (bifurcation, threshold, surface, ellipticity, none); "" where
         nothing was computed (FAILED, ERROR).
@@ -99,13 +100,13 @@ class Outcome:
         ``.python`` the keyword arguments; "" when OK).
     """
 
-    # the shared fields, declared by each record (a dataclass) in its own order
-    kind: str
-    status: Status
-    value: float
-    error_estimate: float
-    message: str
-    remedy: str
+    if TYPE_CHECKING:  # the shared fields, declared by each record (a dataclass) in its order
+        kind: str
+        status: Status
+        value: float
+        error_estimate: float
+        message: str
+        remedy: str
     #: where a bug happened (records that catch exceptions keep it as a field)
     traceback: str = ""
     #: the keys of :meth:`outcome_dict`, in order

@@ -43,6 +43,9 @@ UNIFORM_KEYS = ("outer_radius", "length", "growth", "stretch", "voltage")
 class Tube:
     """A layered tube and its loads (units mu = eps = R_i = 1).
 
+    The only tube type. The paper's tube (one homogeneous layer, isotropic growth g) is
+    :meth:`Tube.uniform`; such a tube :attr:`is_uniform` and is solved in closed form.
+
     Parameters
     ----------
     layers : sequence of Layer
@@ -65,9 +68,8 @@ class Tube:
         The ends are capped, so the pressures load them: under force control they add to the
         wall's axial force; at a prescribed stretch they change only the reported end force.
 
-    The paper's tube (one homogeneous layer, isotropic growth g) is :meth:`Tube.uniform`;
-    such a tube :attr:`is_uniform` and is solved in closed form.
-
+    Examples
+    --------
     >>> tube = Tube((Layer(1.1, shear_modulus=10.0, growth=1.2), Layer(2.0)), voltage=0.3)
     >>> tube.radii, tube.control, tube.is_uniform
     ((1.0, 1.1, 2.0), 'stretch', False)
@@ -218,7 +220,7 @@ class Tube:
 
     @property
     def growth(self) -> float:
-        """g, the isotropic growth of a uniform tube (a layered tube: ``layers[K].growth``)."""
+        """The isotropic growth g of a uniform tube; a layered tube has ``layers[K].growth``."""
         if not self.is_uniform:
             raise AttributeError(
                 "growth is a layer's for this tube (tube.layers[K].growth); a single g exists"
@@ -228,7 +230,7 @@ class Tube:
 
     @property
     def material(self) -> Material:
-        """The energy of a one-layer tube (several layers: ``layers[K].material``)."""
+        """The energy of a one-layer tube; several layers have ``layers[K].material``."""
         if len(self.layers) != 1:
             raise AttributeError(
                 "material is a layer's for a tube of several layers (tube.layers[K].material)"
