@@ -15,7 +15,9 @@ a failed point: :func:`reraise_interrupt` raises it again as the interrupt it is
 from __future__ import annotations
 
 import contextlib
+import os
 import signal
+import sys
 import threading
 
 #: The signal received while :func:`signals_as_interrupts` is active (None: none yet); a
@@ -66,11 +68,36 @@ def signals_as_interrupts():
         if signal.getsignal(sig) is not signal.SIG_IGN:
             previous[sig] = signal.signal(sig, _raise)
     _received = None
+    hook, sys.unraisablehook = sys.unraisablehook, _redeliver(sys.unraisablehook)
     try:
         yield
     finally:
+        sys.unraisablehook = hook
         for sig, handler in previous.items():
             signal.signal(sig, handler)
+
+
+#: seconds before a signal caught in a finaliser is sent again (the finaliser is long gone)
+REDELIVER = 0.01
+
+
+def _redeliver(hook):
+    """An unraisable-exception hook for the block: a signal that lands in a finaliser (a
+    ``__del__``, e.g. llvmlite's while numba compiles) raises there, where Python can only
+    print the exception and carry on; the signal is sent again instead, a moment later
+    from another thread (sent from here it would be handled inside this hook again), so
+    the code that runs next is interrupted, with one line and no traceback. Anything else
+    goes to ``hook``."""
+
+    def handle(info):
+        if isinstance(info.exc_value, Interrupted):
+            again = threading.Timer(REDELIVER, os.kill, (os.getpid(), info.exc_value.signum))
+            again.daemon = True
+            again.start()
+            return
+        hook(info)
+
+    return handle
 
 
 def interrupt_of(exc: BaseException) -> Interrupted | None:
