@@ -32,6 +32,7 @@ takes as they are.
 
 from __future__ import annotations
 
+import functools
 import math
 from typing import NamedTuple
 
@@ -105,24 +106,28 @@ def table_units(state) -> tuple[float, float]:
     layers = state.tube.layers
     mu = [layer.shear_modulus for layer in layers]
     eps = [layer.permittivity for layer in layers]
-    return float(np.clip(1.0, min(mu), max(mu))), float(np.clip(1.0, min(eps), max(eps)))
+    # clip(1, lo, hi) in plain floats: a table is built at every step of a march
+    return float(min(max(1.0, min(mu)), max(mu))), float(min(max(1.0, min(eps)), max(eps)))
 
 
-def _column_units(state) -> np.ndarray:
-    """The divisor of each of the 26 columns (moduli by family, p, r, w): see the module
-    docstring."""
-    mu, eps = table_units(state)
+@functools.lru_cache(maxsize=64)
+def _column_units(mu: float, eps: float) -> np.ndarray:
+    """The divisor of each of the 26 columns (moduli by family, p, r, w) for the table
+    units (mu, eps): see the module docstring."""
     family = {"A": mu, "G": math.sqrt(mu / eps), "K": 1.0 / eps}
-    return np.array([family[name[0]] for name in MODULI_NAMES] + [mu, 1.0, 1.0])
+    units = np.array([family[name[0]] for name in MODULI_NAMES] + [mu, 1.0, 1.0])
+    units.setflags(write=False)  # shared by every table of these units
+    return units
 
 
-def _segments(state):
+def _segments(state, mu: float, eps: float):
     """[(a, b, values)] per segment: values(R) is the (n, 26) array of the 23 moduli, p,
-    r and w at the reference radii R (strictly inside [a, b]), in the table's units."""
+    r and w at the reference radii R (strictly inside [a, b]), in the table's units
+    (mu, eps) (:func:`table_units`)."""
     tube = state.tube
     radii = tube.radii
-    units = _column_units(state)
-    unit = bool(np.all(units == 1.0))  # the reference modulus and permittivity: no division
+    units = _column_units(mu, eps)
+    unit = mu == 1.0 and eps == 1.0  # the reference modulus and permittivity: no division
 
     def values(R, layer):
         r = state.radius(R)
@@ -186,7 +191,8 @@ def build_table(state, *, tol: float = 1e-15, max_nodes: int = 129) -> RadialTab
     ConvergenceError
         If ``max_nodes`` Chebyshev points do not resolve a segment.
     """
-    segments = _segments(state)
+    mu, eps = table_units(state)
+    segments = _segments(state, mu, eps)
     parts = [_segment_table(a, b, f, tol, max_nodes) for a, b, f in segments]
     F = max(c.shape[0] for c, _ in parts)
     C = max(c.shape[1] for c, _ in parts)
@@ -199,7 +205,7 @@ def build_table(state, *, tol: float = 1e-15, max_nodes: int = 129) -> RadialTab
         np.array([c.shape[0] for c, _ in parts], dtype=np.int64),
         np.stack([fm for _, fm in parts]),
         np.array(bounds, dtype=float),
-        np.array(state.face_pressures, dtype=float) / table_units(state)[0],
+        np.array(state.face_pressures, dtype=float) / mu,
     )
 
 
