@@ -17,9 +17,6 @@ from ..model.layers import Tube
 from ..outcomes import NO_MODE, Kind, Outcome, Status, remedy, status_of, traceback_of
 from ..summary import curve_html
 
-#: The parameters of the paper's tube a curve can run along (Tube.parameter_keys).
-ALONG = ("stretch", "voltage", "outer_radius", "length", "growth")
-
 
 class Switch(NamedTuple):
     """The critical mode changes at ``x`` from ``mode_before`` to ``mode_after`` (m, n), in

@@ -55,7 +55,6 @@ from ..outcomes import NO_MODE, Kind
 from .critical import critical_value
 from .curve_follow import CHECK_EVERY, _Follower
 from .curve_record import (
-    ALONG,
     Curve,
     CurvePoint,
     Switch,
@@ -71,7 +70,6 @@ from .scan import ScanOptions, scan_modes
 from .surface import short_wave_limit
 
 __all__ = [
-    "ALONG",
     "CHECK_EVERY",
     "MAX_POINTS",
     "Curve",
