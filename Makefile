@@ -6,7 +6,7 @@ VENV ?= .venv
 BIN := $(VENV)/bin
 OUT ?= out
 
-.PHONY: install test test-slow lint format demo bench figures docs clean distclean
+.PHONY: install test test-slow lint format demo bench bench-ab figures docs clean distclean
 
 # Re-install only when pyproject.toml changes (the stamp is older than it).
 $(VENV)/.installed: pyproject.toml
@@ -62,6 +62,11 @@ demo: $(VENV)/.installed
 # About an hour on the 2-core machine; make bench BENCH_ARGS=--quick checks that it runs.
 bench: $(VENV)/.installed
 	$(BIN)/python benchmarks/bench.py $(BENCH_ARGS)
+
+# This checkout against BASE (a git revision) on the same points, in alternating fresh
+# processes: make bench-ab BASE=<revision>. About 40 minutes; BENCH_ARGS=--quick to check it runs.
+bench-ab: $(VENV)/.installed
+	$(BIN)/python benchmarks/ab.py $(BASE) $(BENCH_ARGS)
 
 figures: $(VENV)/.installed
 	$(BIN)/electrogrowth reproduce --out $(OUT)/figures
