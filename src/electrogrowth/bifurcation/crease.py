@@ -103,7 +103,10 @@ def face_creases(state) -> tuple[FaceCrease, ...]:
     """The inner and outer face of a base state (any tube: the State protocol)."""
     tube = state.tube
     out = []
-    for face, R, layer in (("inner", 1.0, tube.layers[0]), ("outer", tube.outer_radius, tube.layers[-1])):
+    for face, R, layer in (
+        ("inner", 1.0, tube.layers[0]),
+        ("outer", tube.outer_radius, tube.layers[-1]),
+    ):
         side = "outer" if face == "inner" else "inner"  # the wall's own layer at the face
         l1, l2, l3 = (float(v) for v in state.elastic_stretches(R, side=side))
         e = float(state.electric_field(R, side=side))
@@ -121,9 +124,7 @@ def criterion_text(tube: Tube) -> str:
     """Which criterion is applied to the tube's face layers, in words."""
     names = {ly.material.name for ly in (tube.layers[0], tube.layers[-1])}
     nh = all(energy_kind(ly.material) == "neo-hookean" for ly in (tube.layers[0], tube.layers[-1]))
-    base = (
-        f"neo-Hookean crease ratio {CREASE_RATIO:g}, electro-crease field {CREASE_FIELD:g}"
-    )
+    base = f"neo-Hookean crease ratio {CREASE_RATIO:g}, electro-crease field {CREASE_FIELD:g}"
     if nh:
         return base
     return f"{base}, applied to {', '.join(sorted(names))} (not that energy's own onset)"
@@ -229,7 +230,9 @@ def crease_onset(
         if h_new >= 0:
             value = brent(margin, x, x_new, FULL)
             f = crease_margin(state(value))
-            return result(value, Kind.CREASE, f.face, f.trigger, _criterion_error(margin, value, x, f))
+            return result(
+                value, Kind.CREASE, f.face, f.trigger, _criterion_error(margin, value, x, f)
+            )
         x, h = x_new, h_new
     return result(math.nan, Kind.NONE)
 

@@ -105,7 +105,7 @@ class ScanResult:
         out["surface_instability"] = self.surface_instability
         out["short_wave_limit"] = self.short_wave_limit
         out["short_wave_error"] = self.short_wave_error
-        return verdict_record(out, self.verdict)
+        return verdict_record(out, self.verdict, self.critical)
 
     def to_xarray(self):
         """The critical point and the runners-up as an ``xarray.Dataset`` on dimension rank

@@ -164,8 +164,7 @@ def meaning(first: Rival, others: list[Rival], sense: float, name: str) -> str:
         head = f"the tube wrinkles smoothly in {_mode(first)} at {name} = {first.value:.4g}"
     elif first.kind == Kind.SURFACE:
         head = (
-            f"short-wave surface wrinkles at the {first.face} face at {name} ="
-            f" {first.value:.4g}"
+            f"short-wave surface wrinkles at the {first.face} face at {name} = {first.value:.4g}"
         )
     else:
         head = (
@@ -202,11 +201,14 @@ def crease_rival(onset) -> Rival | None:
     )
 
 
-def record(base: dict, verdict: Verdict) -> dict:
+def record(base: dict, verdict: Verdict, critical=None) -> dict:
     """A result's JSON record with the verdict over it: ``kind``, ``value``, ``face`` and
     ``error_estimate`` of what comes first (m, n and family null unless a wrinkle does),
-    the runner-up of each kind, ``meaning``, ``branch`` and ``koiter``."""
+    the runner-up of each kind, ``meaning``, ``branch`` and ``koiter``; the tube's fields
+    at a crease's value when a crease comes first (``critical``: the linear result)."""
     out = dict(base)
+    if critical is not None and verdict.kind == Kind.CREASE:
+        out.update(critical.params.at(critical.solve_for, verdict.value).as_dict())
     v = verdict.as_dict()
     first = verdict.first if verdict.kind != Kind.NONE else None
     out.update(v)
