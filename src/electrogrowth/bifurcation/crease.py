@@ -26,12 +26,15 @@ method; its error estimate is the criterion's (its published digits), not the ro
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 
+import sympy as sp
+
 from ..basestate.tube import solve_base_state
-from ..basestate.voltage import energy_kind
 from ..continuation.events import FULL, brent, threshold_between
 from ..errors import BaseStateError, ConvergenceError
+from ..model.invariants import I1, I2, I5
 from ..model.layers import Tube
 from ..outcomes import Kind, Outcome, Status
 from .along import TubeAt
@@ -120,14 +123,27 @@ def crease_margin(state) -> FaceCrease:
     return max(face_creases(state), key=lambda f: f.margin)
 
 
+@functools.lru_cache(maxsize=64)
+def ratio_is_exact(material) -> bool:
+    """Is the neo-Hookean crease ratio exact for ``material``? For an ideal dielectric
+    whose elastic energy is linear in I1 and I2 (neo-Hookean, Mooney-Rivlin): in the plane
+    of a crease it is a neo-Hookean energy (docs/derivation-crease.md section 2)."""
+    if not material.is_ideal_dielectric():
+        return False
+    elastic = sp.expand(material.energy - I5 / 2)
+    if not elastic.free_symbols <= {I1, I2} or not elastic.is_polynomial(I1, I2):
+        return False
+    return sp.Poly(elastic, I1, I2).total_degree() <= 1
+
+
 def criterion_text(tube: Tube) -> str:
     """Which criterion is applied to the tube's face layers, in words."""
-    names = {ly.material.name for ly in (tube.layers[0], tube.layers[-1])}
-    nh = all(energy_kind(ly.material) == "neo-hookean" for ly in (tube.layers[0], tube.layers[-1]))
+    faces = (tube.layers[0].material, tube.layers[-1].material)
     base = f"neo-Hookean crease ratio {CREASE_RATIO:g}, electro-crease field {CREASE_FIELD:g}"
-    if nh:
+    other = sorted({m.name for m in faces if not ratio_is_exact(m)})
+    if not other:
         return base
-    return f"{base}, applied to {', '.join(sorted(names))} (not that energy's own onset)"
+    return f"{base}, applied to {', '.join(other)} (not that energy's own onset)"
 
 
 @dataclasses.dataclass(frozen=True)
