@@ -72,6 +72,7 @@ class Verdict:
     crease: Rival | None = None
     threshold: Rival | None = None
     criterion: str | None = None
+    side: str | None = None  # "compression": the march decreases the control
     branch: str | None = None  # "supercritical" | "subcritical"; None: not computed
     koiter: float | None = None  # the Koiter coefficient; None: not computed
 
@@ -86,7 +87,8 @@ class Verdict:
 
     def _ordered(self):
         found = [getattr(self, key) for key in RIVALS.values()]
-        return [r for r in found if r is not None]
+        sense = -1.0 if self.side == "compression" else 1.0
+        return sorted((r for r in found if r is not None), key=lambda r: sense * r.value)
 
     def as_dict(self) -> dict:
         return {
@@ -140,6 +142,7 @@ def judge(
         crease,
         threshold,
         criterion,
+        side,
     )
 
 
