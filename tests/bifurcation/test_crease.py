@@ -20,6 +20,7 @@ from electrogrowth.bifurcation.crease import (
     CREASE_FIELD,
     CREASE_RATIO,
     FaceCrease,
+    biot_ratio,
     crease_onset,
     criterion_text,
     face_creases,
@@ -120,5 +121,16 @@ def test_the_criterion_says_when_it_is_not_the_energys_own():
     assert ratio_is_exact(neo_hookean()) and ratio_is_exact(mooney_rivlin(0.3))
     assert not ratio_is_exact(gent(20.0))
     text = criterion_text(Tube.uniform(1.4, material=gent(20.0)))
-    assert "applied to gent(jm=20)" in text and "not that energy's own" in text
+    assert "applied to gent(jm=20) (its Biot ratio 3.577 against 3.383, +5.7 %)" in text
+    assert "not that energy's own" in text
     assert "applied" not in criterion_text(Tube.uniform(1.4))
+
+
+def test_energies_linear_in_i1_and_i2_have_biots_ratio_along_the_axis():
+    """The reduction of docs/derivation-crease.md section 2 for Mooney-Rivlin, by the
+    half-space solver: waves along z at neo-Hookean's ratio (alpha = 0.3 wrinkles first
+    obliquely, which the principal-direction ratio leaves out); Gent's own ratio is larger
+    (it stiffens), and one that stiffens steeply has none."""
+    assert biot_ratio(mooney_rivlin(0.3)) == pytest.approx(BIOT_RATIO, rel=1e-12)
+    assert BIOT_RATIO < biot_ratio(gent(97.2)) < 1.02 * BIOT_RATIO
+    assert biot_ratio(gent(5.0)) == math.inf

@@ -33,13 +33,14 @@ import sympy as sp
 
 from ..basestate.tube import solve_base_state
 from ..continuation.events import FULL, brent, threshold_between
-from ..errors import BaseStateError, ConvergenceError
+from ..errors import BaseStateError, ConvergenceError, ElectrogrowthError
 from ..model.invariants import I1, I2, I5
 from ..model.layers import Tube
 from ..outcomes import Kind, Outcome, Status
 from .along import TubeAt
 from .march import control_path
 from .problem import Problem, as_problem
+from .surface import ray_limit
 
 #: the neo-Hookean plane-strain crease onset, lambda_normal / lambda_compressed (Hong, Zhao &
 #: Suo 2009, Appl. Phys. Lett. 95, 111904: strain 0.35, ratio 2.4; Cao & Hutchinson 2012)
@@ -48,7 +49,7 @@ CREASE_RATIO = 2.4
 CREASE_RATIO_ACCURACY = 0.03
 #: Biot's plane-strain wrinkling (surface) ratio of the neo-Hookean half-space, 3.383
 #: (the root of x^3 + x^2 + 3x - 1 = 0 is x = 1 / ratio; tests/bifurcation/test_crease.py)
-BIOT_RATIO = 3.3829757679
+BIOT_RATIO = 3.382975767906238
 #: the electro-creasing field E sqrt(eps / mu) of an ideal neo-Hookean dielectric film
 #: bonded to a rigid electrode (Wang, Zhang & Zhao 2011, Phys. Rev. Lett. 106, 118301)
 CREASE_FIELD = 1.03
@@ -136,14 +137,41 @@ def ratio_is_exact(material) -> bool:
     return sp.Poly(elastic, I1, I2).total_degree() <= 1
 
 
+@functools.lru_cache(maxsize=64)
+def biot_ratio(material) -> float:
+    """Biot's wrinkling ratio lambda_r / lambda_z of ``material``: the short-wave limit of
+    an ungrown, uncharged tube compressed axially, waves along z (surface.py's half-space
+    solver); BIOT_RATIO for every energy linear in I1 and I2. inf where the faces never
+    wrinkle before the state is lost (a solid that stiffens steeply), NaN if it fails.
+    It measures how far the energy is from neo-Hookean near the crease onset."""
+    tube = Tube.uniform(2.0, length=1.0, material=material)
+    try:
+        limit = ray_limit(tube, 0, 1, "stretch", side="compression")
+    except ElectrogrowthError:
+        return math.nan
+    return limit.value**-1.5 if limit.kind == Kind.SURFACE else math.inf
+
+
 def criterion_text(tube: Tube) -> str:
-    """Which criterion is applied to the tube's face layers, in words."""
+    """Which criterion is applied to the tube's face layers, in words; for an energy it is
+    not exact for, how far that energy's own Biot ratio is from neo-Hookean's."""
     faces = (tube.layers[0].material, tube.layers[-1].material)
     base = f"neo-Hookean crease ratio {CREASE_RATIO:g}, electro-crease field {CREASE_FIELD:g}"
-    other = sorted({m.name for m in faces if not ratio_is_exact(m)})
+    other = sorted({m for m in faces if not ratio_is_exact(m)}, key=lambda m: m.name)
     if not other:
         return base
-    return f"{base}, applied to {', '.join(other)} (not that energy's own onset)"
+    notes = []
+    for m in other:
+        b = biot_ratio(m)
+        how = (
+            f"its Biot ratio {b:.4g} against {BIOT_RATIO:.4g}, {100 * (b / BIOT_RATIO - 1):+.1f} %"
+            if math.isfinite(b)
+            else "it has no Biot wrinkling in compression"
+            if b == math.inf
+            else "its Biot ratio not computed"
+        )
+        notes.append(f"{m.name} ({how})")
+    return f"{base}, applied to {'; '.join(notes)}: not that energy's own onset"
 
 
 @dataclasses.dataclass(frozen=True)
