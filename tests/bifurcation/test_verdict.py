@@ -9,7 +9,10 @@ scan's (checked by the independent collocation in the slow test).
 
 import math
 
+import numpy as np
 import pytest
+from scipy.optimize import brentq
+from scipy.special import iv, kv
 
 from electrogrowth import Tube
 from electrogrowth.bifurcation.crease import CREASE_RATIO
@@ -21,6 +24,44 @@ from electrogrowth.outcomes import Kind
 
 SMALL = ScanOptions(m_range=(0, 3), n_range=(1, 3), extend=False)
 CREASE = CREASE_RATIO ** (-2 / 3)  # lambda_z where lambda_r / lambda_z = 2.4, homogeneous
+
+
+def bessel_axisymmetric(lz, outer_radius, length=1.0, n=1):
+    """det of the face conditions of the axisymmetric mode (0, n) of a homogeneous
+    neo-Hookean tube (g = 1, Vbar = 0) at axial stretch lz: zero at its bifurcation.
+
+    docs/derivation-crease.md section 7: lambda_r = lambda_theta = l = lz^(-1/2), radii
+    r = l R; U = A I1(kr) + B K1(kr) + C I1(eta k r) + D K1(eta k r), eta = lz / l, with
+    P / mu = k (l^2 - lz^2) (A I0 - B K0) and W = -(U' + U/r) / k; the faces need
+    2 l^2 U' - P / mu = 0 and W' - k U = 0.
+    """
+    lam = lz**-0.5
+    eta, k, c = lz / lam, n * math.pi / (lz * length), lam**2 - lz**2
+    d_i1 = lambda s: iv(0, s) - iv(1, s) / s  # noqa: E731
+    d_k1 = lambda s: -kv(0, s) - kv(1, s) / s  # noqa: E731
+    rows = []
+    for r in (lam, lam * outer_radius):
+        x, y = k * r, eta * k * r
+        du = [k * d_i1(x), k * d_k1(x), eta * k * d_i1(y), eta * k * d_k1(y)]
+        p = [k * c * iv(0, x), -k * c * kv(0, x), 0.0, 0.0]
+        rows.append([2 * lam**2 * a - b for a, b in zip(du, p)])
+        rows.append(
+            [
+                -2 * k * iv(1, x),
+                -2 * k * kv(1, x),
+                -k * (1 + eta**2) * iv(1, y),
+                -k * (1 + eta**2) * kv(1, y),
+            ]
+        )
+    return np.linalg.det(np.array(rows))
+
+
+def bessel_wrinkle(outer_radius) -> float:
+    """The first root of :func:`bessel_axisymmetric` below lambda_z = 1."""
+    xs = np.linspace(0.99, 0.3, 346)
+    ds = [bessel_axisymmetric(x, outer_radius) for x in xs]
+    i = next(i for i in range(len(xs) - 1) if ds[i] * ds[i + 1] < 0)
+    return brentq(bessel_axisymmetric, xs[i + 1], xs[i], args=(outer_radius,), xtol=1e-15)
 
 
 def _scan(outer_radius, options=SMALL):
@@ -39,6 +80,7 @@ def test_the_papers_ungrown_tubes_wrinkle_or_crease_first(outer_radius, first):
     assert v.crease.value == pytest.approx(CREASE, rel=1e-12)
     assert (v.crease.face, v.crease.trigger) in {("inner", "axial"), ("outer", "axial")}
     assert v.wrinkle.value == res.critical.value and (v.wrinkle.m, v.wrinkle.n) == (0, 1)
+    assert v.wrinkle.value == pytest.approx(bessel_wrinkle(outer_radius), rel=1e-10)
     # the verdict is no closer than the criterion's accuracy
     assert abs(v.wrinkle.value - v.crease.value) > 2 * v.crease.error_estimate
     assert v.threshold is None and v.branch is None and v.koiter is None
