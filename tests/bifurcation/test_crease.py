@@ -110,7 +110,9 @@ def test_the_voltage_creases_the_inner_face_at_the_field_from_the_potential():
 
 def test_the_field_is_measured_in_the_face_layers_own_units():
     """A face layer of modulus 4 and permittivity 1: E sqrt(eps_k / mu_k) = E / 2."""
-    tube = LayeredTube(layers=(Layer(1.2, shear_modulus=4.0), Layer(1.6)), stretch=1.0, voltage=0.3)
+    tube = LayeredTube(
+        layers=(Layer(1.2, shear_modulus=4.0), Layer(1.6)), stretch=1.0, voltage=0.3
+    )
     state = solve_base_state(tube)
     inner, outer = face_creases(state)
     assert inner.field == pytest.approx(float(state.electric_field(1.0)) / 2, rel=1e-14)

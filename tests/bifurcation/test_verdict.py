@@ -135,7 +135,10 @@ def test_the_json_record_gives_the_verdict_at_the_top():
     assert rec["kind"] == "crease" and rec["face"] in ("inner", "outer")
     assert rec["value"] == pytest.approx(CREASE, rel=1e-12) == rec["stretch"]
     assert rec["m"] is None and rec["n"] is None and rec["method"] == "crease criterion"
-    assert rec["wrinkle"]["kind"] == "bifurcation" and (rec["wrinkle"]["m"], rec["wrinkle"]["n"]) == (0, 1)
+    assert rec["wrinkle"]["kind"] == "bifurcation" and (
+        rec["wrinkle"]["m"],
+        rec["wrinkle"]["n"],
+    ) == (0, 1)
     assert rec["crease"]["trigger"] == "axial" and rec["threshold"] is None
     assert rec["branch"] is None and rec["koiter"] is None and rec["meaning"]
     first = _scan(1.6).as_dict()
