@@ -55,8 +55,9 @@ BIOT_RATIO = 3.382975767906238
 CREASE_FIELD = 1.03
 #: its accuracy (two published digits)
 CREASE_FIELD_ACCURACY = 0.01
-#: the march's largest step, a fraction of the control's scale
-STEP = 0.02
+#: the march's first, smallest and largest step, fractions of the control's scale: each
+#: next step is half the secant's distance to the onset, within these bounds
+STEP, STEP_MIN, STEP_MAX = 0.02, 0.002, 0.1
 #: the faces that may crease: free (an interface is bonded and is left out)
 FACES = ("inner", "outer")
 
@@ -65,8 +66,8 @@ def onset_strain(ratio: float = CREASE_RATIO) -> float:
     """The plane-strain compression strain 1 - lambda at which lambda_2 / lambda_1 =
     ``ratio`` (lambda_1 lambda_2 = 1): 1 - ratio^(-1/2).
 
-    >>> round(onset_strain(), 3), round(onset_strain(BIOT_RATIO), 3)
-    (0.354, 0.456)
+    >>> round(onset_strain(), 4), round(onset_strain(BIOT_RATIO), 4)
+    (0.3545, 0.4563)
     """
     return 1.0 - ratio**-0.5
 
@@ -237,7 +238,7 @@ def crease_onset(
     CreaseOnset
 
     >>> c = crease_onset(Tube.uniform(2.0, length=1.0), "stretch", side="compression")
-    >>> c.kind, c.trigger, abs(c.value - CREASE_RATIO ** (-2 / 3)) < 1e-12
+    >>> str(c.kind), c.trigger, abs(c.value - CREASE_RATIO ** (-2 / 3)) < 1e-12
     ('crease', 'axial', True)
     """
     problem = as_problem(params, solve_for, side=side, rtol=rtol)
@@ -263,8 +264,8 @@ def crease_onset(
         f = crease_margin(state(start))
         return result(start, Kind.CREASE, f.face, f.trigger, 0.0)
     sense = 1.0 if end > start else -1.0
+    step = STEP * scale
     while sense * (end - x) > 0:
-        step = STEP * scale
         x_new = x + sense * step if sense * (end - x - sense * step) > 0 else end
         try:
             h_new = margin(x_new)
@@ -277,6 +278,9 @@ def crease_onset(
             return result(
                 value, Kind.CREASE, f.face, f.trigger, _criterion_error(margin, value, x, f)
             )
+        slope = sense * (h_new - h) / abs(x_new - x)  # the margin's rise per unit of march
+        ahead = -h_new / slope if slope > 0 else math.inf
+        step = min(max(0.5 * ahead, STEP_MIN * scale), STEP_MAX * scale)
         x, h = x_new, h_new
     return result(math.nan, Kind.NONE)
 

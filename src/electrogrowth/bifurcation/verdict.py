@@ -123,7 +123,7 @@ def judge(
     >>> w = Rival(Kind.BIFURCATION, 0.511, m=0, n=1, family="wrinkle")
     >>> c = Rival(Kind.CREASE, 0.558, 0.005, face="outer", trigger="axial")
     >>> v = judge("compression", wrinkle=w, crease=c, name="lambda_z")
-    >>> v.kind, v.value, [r.kind for r in v.runners_up]
+    >>> str(v.kind), v.value, [str(r.kind) for r in v.runners_up]
     ('crease', 0.558, ['bifurcation'])
     """
     sense = -1.0 if side == "compression" else 1.0
