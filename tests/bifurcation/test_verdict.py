@@ -156,3 +156,18 @@ def test_the_wrinkles_of_the_geometry_check_by_collocation(outer_radius):
     imp = _scan(outer_radius).critical
     assert col.value == pytest.approx(imp.value, rel=1e-8)
     assert (col.value > CREASE) == (outer_radius == 1.6)
+
+
+def test_a_failed_crease_march_leaves_the_linear_result_standing(monkeypatch):
+    from electrogrowth.bifurcation import verdict as verdict_module
+    from electrogrowth.errors import ConvergenceError
+
+    def fails(*args, **kwargs):
+        raise ConvergenceError("the bracketed root solve failed on [0.5, 0.6]")
+
+    monkeypatch.setattr(verdict_module, "crease_onset", fails)
+    c = critical_value(Tube.uniform(1.8, length=1.0), 0, 1, "stretch", side="compression")
+    v = c.verdict
+    assert v.kind == "bifurcation" and v.value == c.value and v.crease is None
+    assert v.criterion.startswith("crease criterion not evaluated: the bracketed root")
+    assert v.meaning.endswith("(crease not evaluated)")

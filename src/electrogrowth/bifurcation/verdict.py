@@ -18,6 +18,7 @@ import dataclasses
 import math
 
 from ..basestate.tube import threshold
+from ..errors import ElectrogrowthError
 from ..model.controls import parse_control
 from ..outcomes import Kind
 from .crease import crease_onset
@@ -77,8 +78,10 @@ class Verdict:
     koiter: float | None = None  # the Koiter coefficient; None: not computed
 
     @property
-    def first(self) -> Rival:
-        return getattr(self, RIVALS[Kind(self.kind)])
+    def first(self) -> Rival | None:
+        """The rival that comes first (None when nothing was found)."""
+        key = RIVALS.get(Kind(self.kind))
+        return None if key is None else getattr(self, key)
 
     @property
     def runners_up(self) -> tuple[Rival, ...]:
@@ -242,8 +245,9 @@ def threshold_rival(critical, onset) -> Rival | None:
     voltage or inflation threshold of the tube (where that is the control), else the one
     the crease march met (None: not reached)."""
     if critical.kind == Kind.THRESHOLD:
-        return Rival(Kind.THRESHOLD, critical.value, 0.0, detail="voltage threshold")
     kind = parse_control(critical.solve_for).kind
+    if critical.kind == Kind.THRESHOLD:
+        return Rival(Kind.THRESHOLD, critical.value, 0.0, detail=f"{kind} threshold")
     if kind == "voltage" or (kind == "pressure" and critical.side != "compression"):
         t = threshold(critical.params, kind)
         if math.isfinite(t.value):
@@ -259,7 +263,11 @@ def verdict_of(critical, *, finite=None, short_wave=None) -> Verdict:
     along the same control computed here. ``finite`` is the best finite mode when the
     critical point is the surface limit (a ModeValue); ``short_wave`` (value, error) the
     exact surface limit where a scan computed it after the wrinkle."""
-    onset = crease_onset(critical.params, critical.solve_for, side=critical.side)
+    try:
+        onset = crease_onset(critical.params, critical.solve_for, side=critical.side)
+        criterion = onset.criterion
+    except ElectrogrowthError as exc:  # the linear result stands; say why there is no crease
+        onset, criterion = None, f"crease criterion not evaluated: {exc}"
     wrinkle = surface = None
     if critical.kind == Kind.BIFURCATION:
         wrinkle = Rival(
@@ -276,12 +284,15 @@ def verdict_of(critical, *, finite=None, short_wave=None) -> Verdict:
         wrinkle = Rival(Kind.BIFURCATION, finite.value, None, finite.m, finite.n, finite.family)
     if short_wave is not None and surface is None:
         surface = Rival(Kind.SURFACE, short_wave[0], short_wave[1])
-    return judge(
+    verdict = judge(
         critical.side,
         wrinkle=wrinkle,
         surface=surface,
         crease=crease_rival(onset),
         threshold=threshold_rival(critical, onset),
-        criterion=onset.criterion,
+        criterion=criterion,
         name=control_symbol(critical.solve_for),
     )
+    if onset is None:
+        return dataclasses.replace(verdict, meaning=verdict.meaning + " (crease not evaluated)")
+    return verdict
