@@ -244,7 +244,6 @@ def threshold_rival(critical, onset) -> Rival | None:
     """Where the axisymmetric state is lost: the linear result's threshold, else the
     voltage or inflation threshold of the tube (where that is the control), else the one
     the crease march met (None: not reached)."""
-    if critical.kind == Kind.THRESHOLD:
     kind = parse_control(critical.solve_for).kind
     if critical.kind == Kind.THRESHOLD:
         return Rival(Kind.THRESHOLD, critical.value, 0.0, detail=f"{kind} threshold")
