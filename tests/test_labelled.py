@@ -134,3 +134,4 @@ def test_scan_dataset_has_the_verdict(tmp_path):
         assert name in ds
     back, _ = _round_trip(ds, tmp_path)
     assert str(back["verdict"].values) == "crease" and "creases" in str(back["meaning"].values)
+    assert "verdict" in res._repr_html_() and "creases" in res._repr_html_()
