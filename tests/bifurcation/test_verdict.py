@@ -132,7 +132,7 @@ def test_a_crease_within_its_accuracy_of_the_wrinkle_is_too_close_to_call():
 
 def test_the_json_record_gives_the_verdict_at_the_top():
     rec = _scan(1.8).as_dict()
-    assert rec["kind"] == "crease" and rec["face"] in ("inner", "outer")
+    assert rec["kind"] == rec["verdict"] == "crease" and rec["face"] in ("inner", "outer")
     assert rec["value"] == pytest.approx(CREASE, rel=1e-12) == rec["stretch"]
     assert rec["m"] is None and rec["n"] is None and rec["method"] == "crease criterion"
     assert rec["wrinkle"]["kind"] == "bifurcation" and (

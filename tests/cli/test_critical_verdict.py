@@ -32,8 +32,8 @@ def _json(capsys, argv):
 
 def test_json_kind_is_crease_with_the_wrinkle_as_runner_up(capsys):
     rec = _json(capsys, COMPRESSED)
-    assert rec["kind"] == "crease" and rec["face"] in ("inner", "outer")
-    assert rec["value"] == pytest.approx(CREASE, rel=1e-12)
+    assert rec["kind"] == rec["verdict"] == "crease" and rec["face"] in ("inner", "outer")
+    assert rec["value"] == pytest.approx(CREASE, rel=1e-12) == rec["verdict_value"]
     w = rec["wrinkle"]
     assert w["kind"] == "bifurcation" and (w["m"], w["n"]) == (0, 1) and w["value"] < CREASE
     for key in ("crease", "surface", "threshold", "meaning", "branch", "koiter"):
@@ -47,6 +47,20 @@ def test_json_of_one_mode_has_the_verdict_and_the_threshold(capsys):
     assert rec["kind"] == "bifurcation" and (rec["m"], rec["n"]) == (0, 1)
     assert rec["threshold"]["kind"] == "threshold" and rec["threshold"]["value"] > rec["value"]
     assert rec["crease"]["trigger"] == "field" and rec["crease"]["face"] == "inner"
+
+
+def test_one_mode_asked_for_stays_on_top_with_the_verdict_beside(capsys):
+    rec = _json(capsys, COMPRESSED[:-4] + ["--mode", "0", "1"])
+    assert rec["kind"] == "bifurcation" and (rec["m"], rec["n"]) == (0, 1)
+    assert rec["value"] < CREASE and rec["verdict"] == "crease"
+    assert rec["verdict_value"] == pytest.approx(CREASE, rel=1e-12)
+    assert (
+        rec["crease"]["value"] == rec["verdict_value"] and rec["wrinkle"]["value"] == rec["value"]
+    )
+    assert main(COMPRESSED[:-4] + ["--mode", "0", "1"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("lambda_z,cr = 0.51124807") and "  crease: " in out
+    assert "verdict: the" in out and "creases" in out
 
 
 def test_text_names_the_crease_the_wrinkle_and_the_verdict(capsys):

@@ -207,26 +207,31 @@ def crease_rival(onset) -> Rival | None:
     )
 
 
-def record(base: dict, verdict: Verdict, critical=None) -> dict:
-    """A result's JSON record with the verdict over it: ``kind``, ``value``, ``face`` and
-    ``error_estimate`` of what comes first (m, n and family null unless a wrinkle does),
-    the runner-up of each kind, ``meaning``, ``branch`` and ``koiter``; the tube's fields
-    at a crease's value when a crease comes first (``critical``: the linear result)."""
+def record(base: dict, verdict: Verdict, critical=None, *, first_on_top: bool = True) -> dict:
+    """A result's JSON record with the verdict: ``verdict``, ``verdict_value`` and
+    ``verdict_face`` (what comes first), the runner-up of each kind (``wrinkle``,
+    ``surface``, ``crease``, ``threshold``), ``meaning``, ``crease_criterion``, ``branch``
+    and ``koiter``. With ``first_on_top`` (a scan) ``kind``, ``value``, ``face`` and
+    ``error_estimate`` are also those of what comes first (m, n and family null unless a
+    wrinkle does; the tube's fields at a crease's value: ``critical`` is the linear
+    result); without it (one mode asked for) they stay the mode's."""
     out = dict(base)
+    v = verdict.as_dict()
+    out.update({key: value for key, value in v.items() if key not in ("kind", "value", "face")})
+    out["verdict"], out["verdict_value"], out["verdict_face"] = v["kind"], v["value"], v["face"]
+    first = verdict.first
+    if not first_on_top or first is None:
+        return out
     if critical is not None and verdict.kind == Kind.CREASE:
         out.update(critical.params.at(critical.solve_for, verdict.value).as_dict())
-    v = verdict.as_dict()
-    first = verdict.first if verdict.kind != Kind.NONE else None
-    out.update(v)
-    if first is not None and first.kind in (Kind.CREASE, Kind.THRESHOLD):
+    out["kind"], out["face"] = v["kind"], v["face"]
+    if first.kind in (Kind.CREASE, Kind.THRESHOLD):
         out["value"] = first.value
         out["error_estimate"] = _fin(first.error_estimate)
         out["m"] = out["n"] = out["family"] = None
         out["psi"] = None
         if first.kind == Kind.CREASE:
             out["method"] = "crease criterion"
-    if verdict.kind == Kind.NONE:
-        out["kind"] = base.get("kind")
     return out
 
 

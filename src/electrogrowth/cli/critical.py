@@ -67,9 +67,10 @@ def configure_critical(parser: argparse.ArgumentParser) -> None:
         "--json",
         action="store_true",
         help="print one JSON object (solve_for, value, m, n, family, kind,"
-        " error_estimate, ...; kind is what comes first of a wrinkle, a crease of a free"
-        " face and the loss of the axisymmetric state, each other one under wrinkle,"
-        " crease, surface, threshold; meaning in words) instead of text",
+        " error_estimate, ...; verdict is what comes first of a wrinkle, a crease of a free"
+        " face and the loss of the axisymmetric state, and a scan's kind and value are"
+        " its; each kind under wrinkle, crease, surface, threshold; meaning in words)"
+        " instead of text",
     )
     add_quiet_option(parser)
 
@@ -93,7 +94,8 @@ def run_critical(args) -> int:
                 method=args.method,
                 rtol=args.rtol,
             )
-        record, runners = verdict_record(crit.as_dict(), crit.verdict, crit), []
+        record = verdict_record(crit.as_dict(), crit.verdict, crit, first_on_top=False)
+        runners = []
     else:
         if args.method != "impedance":
             raise ParameterError(
