@@ -270,6 +270,12 @@ def _print_text(rec: dict, runners: list, scales=None) -> None:
         )
     lines = [head, tube_line(rec, scales)]
     lines += physical_line(rec.get("physical", {}))
+    w = rec.get("wrinkle")
+    if w is not None and rec["kind"] != Kind.BIFURCATION:
+        lines.append(
+            f"  wrinkle (linear analysis): (m, n) = ({w['m']}, {w['n']})"
+            f"{_family_note(w.get('family'))}   {name} = {w['value']:.10g}"
+        )
     if "certification" in rec:  # a surface result: what was certified and how, or why not
         lines.append(
             f"  {'certified' if rec['certified'] else 'NOT certified'}: {rec['certification']}"
@@ -288,12 +294,6 @@ def _print_text(rec: dict, runners: list, scales=None) -> None:
         lines.append(
             f"  short-wave (surface) limit m, n -> infinity: {name} ="
             f" {rec['short_wave_limit']:.12g} (after this mode)"
-        )
-    w = rec.get("wrinkle")
-    if w is not None and rec["kind"] != Kind.BIFURCATION:
-        lines.append(
-            f"  wrinkle (linear analysis): (m, n) = ({w['m']}, {w['n']})"
-            f"{_family_note(w.get('family'))}   {name} = {w['value']:.10g}"
         )
     for r in runners:
         lines.append(
