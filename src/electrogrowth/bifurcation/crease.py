@@ -298,8 +298,10 @@ def _solves(state):
 
 def _criterion_error(margin, value: float, x_before: float, face: FaceCrease) -> float:
     """How far the onset moves over the criterion's accuracy: d(drive) = accuracy / onset,
-    divided by the slope of the margin at the root (a secant to the last point before)."""
-    slope = (margin(value) - margin(x_before)) / (value - x_before)
+    divided by the slope of the margin at the root (a secant over 1e-4 of the last step,
+    on the side the march came from, where the state exists)."""
+    near = value + 1e-4 * (x_before - value)
+    slope = (margin(value) - margin(near)) / (value - near)
     rel = (
         CREASE_FIELD_ACCURACY / CREASE_FIELD
         if face.trigger == "field"
