@@ -115,3 +115,23 @@ def test_digits_follow_the_error_estimate():
     assert supported(1.2661115622623291, 0.0038) == "1.266"
     assert supported(1.2661115622623291, 1.4e-12) == "1.26611156226"
     assert supported(0.613948, 2e-4) == "0.6139"
+
+
+def test_scan_dataset_has_the_verdict(tmp_path):
+    """The verdict of a tube that creases first (docs/derivation-crease.md): what comes
+    first, each kind along rival, the empty branch/koiter slot; saved and read back."""
+    res = scan_modes(Tube.uniform(1.8, length=1.0), "stretch", side="compression", options=SMALL)
+    ds = res.to_xarray()
+    crease = 2.4 ** (-2 / 3)  # the homogeneous tube's axial crease, closed form
+    assert str(ds["verdict"].values) == "crease"
+    assert float(ds["verdict_value"]) == pytest.approx(crease, rel=1e-12)
+    assert list(ds["rival"].values) == ["bifurcation", "surface", "crease", "threshold"]
+    values = ds["rival_value"].values
+    assert values[0] == res.critical.value and np.isnan(values[1]) and np.isnan(values[3])
+    assert values[2] == pytest.approx(crease, rel=1e-12)
+    assert str(ds["branch"].values) == "" and np.isnan(float(ds["koiter"]))
+    for name in ("verdict_face", "meaning", "rival_face", "crease_criterion"):
+        assert name in ds
+    back, _ = _round_trip(ds, tmp_path)
+    assert str(back["verdict"].values) == "crease" and "creases" in str(back["meaning"].values)
+    assert "verdict" in res._repr_html_() and "creases" in res._repr_html_()

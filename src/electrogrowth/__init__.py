@@ -32,6 +32,8 @@ _EXPORTS = {
     ".basestate": ("BaseState",),
     ".bifurcation.certify": ("Certificate", "certify"),
     ".bifurcation.critical": ("CriticalPoint", "critical_value"),
+    ".bifurcation.crease": ("CreaseOnset", "crease_onset"),
+    ".bifurcation.verdict": ("Verdict",),
     ".bifurcation.curves": ("Curve", "critical_curve"),
     ".bifurcation.problem": ("Problem",),
     ".bifurcation.scan": ("ScanOptions", "ScanResult", "scan_modes"),
@@ -131,6 +133,9 @@ __all__ = [
     "scan_modes",
     "Certificate",
     "certify",
+    "CreaseOnset",
+    "crease_onset",
+    "Verdict",
     # design
     "ModeSequence",
     "mode_sequence",

@@ -192,7 +192,62 @@ def scan_dataset(result):
             **{f"tube_{k}": v for k, v in _tube_attrs(c.params).items()},
         }
     )
-    return ds
+    return ds.assign(verdict_variables(result.verdict, c.solve_for))
+
+
+#: the kinds of a verdict, along dimension rival, and their field on the Verdict
+RIVAL_KINDS = (
+    ("bifurcation", "wrinkle"),
+    ("surface", "surface"),
+    ("crease", "crease"),
+    ("threshold", "threshold"),
+)
+
+
+def verdict_variables(v, solve_for: str) -> dict:
+    """A Verdict (bifurcation/verdict.py) as variables: what comes first (``verdict``,
+    ``verdict_value``, ``verdict_face``, ``meaning``), each kind's value and face along
+    dimension rival (NaN and "" where that kind was not found), the slot ``branch`` (""
+    not computed) and ``koiter`` (NaN)."""
+    rivals = [getattr(v, key) for _, key in RIVAL_KINDS]
+    units, long_name = PARAMETERS.get(solve_for, ("1", solve_for))
+    text = lambda long: {"units": "1", "long_name": long}  # noqa: E731
+    return {
+        "verdict": (
+            (),
+            str(v.kind),
+            text("what comes first: " + ", ".join(k for k, _ in RIVAL_KINDS)),
+        ),
+        "verdict_value": (
+            (),
+            float(v.value),
+            {"units": units, "long_name": f"{long_name} where it comes"},
+        ),
+        "verdict_face": ((), v.face or "", text("the face of a crease or surface instability")),
+        "meaning": ((), v.meaning, text("the verdict in one line")),
+        "rival_value": (
+            "rival",
+            np.array([np.nan if r is None else r.value for r in rivals], float),
+            {"units": units, "long_name": f"{long_name} of each kind (NaN: not found)"},
+        ),
+        "rival_face": (
+            "rival",
+            np.array([(r and r.face) or "" for r in rivals], str),
+            text("face"),
+        ),
+        "rival": (
+            "rival",
+            np.array([k for k, _ in RIVAL_KINDS], str),
+            text("kind of instability"),
+        ),
+        "crease_criterion": ((), v.criterion or "", text("the crease criterion applied")),
+        "branch": ((), v.branch or "", text("supercritical | subcritical | '' (not computed)")),
+        "koiter": (
+            (),
+            np.nan if v.koiter is None else float(v.koiter),
+            text("Koiter coefficient (NaN: not computed)"),
+        ),
+    }
 
 
 def _critical_attrs(solve_for: str) -> dict:

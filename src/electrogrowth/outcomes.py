@@ -31,6 +31,7 @@ class Kind(enum.StrEnum):
     BIFURCATION = "bifurcation"  # wrinkling in a mode (m, n)
     THRESHOLD = "threshold"  # the axisymmetric base state is lost first
     SURFACE = "surface"  # a short-wave (surface) instability: the limit m, k -> infinity
+    CREASE = "crease"  # a free face reaches the crease onset (bifurcation/crease.py) first
     ELLIPTICITY = "ellipticity"  # strong ellipticity is lost first (no half-space problem)
     NONE = "none"  # no instability in the searched range (or nothing computed: a failure)
     SWITCH = "switch"  # a row of a curve: the critical mode changes, equal values both sides

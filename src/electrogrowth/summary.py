@@ -85,7 +85,9 @@ def critical_rows(c) -> list[tuple[str, object]]:
 
 
 def critical_html(c) -> str:
-    return table(f"CriticalPoint: critical {c.solve_for}", critical_rows(c))
+    rows = critical_rows(c)
+    rows.insert(-1, ("verdict", c.verdict.meaning))
+    return table(f"CriticalPoint: critical {c.solve_for}", rows)
 
 
 def scan_html(result) -> str:
@@ -95,6 +97,7 @@ def scan_html(result) -> str:
         rows.insert(-1, ("short-wave limit", f"{result.short_wave_limit:.10g}"))
     for r in result.runners_up:
         rows.insert(-1, (f"next ({r.m}, {r.n})", f"{r.value:.10g}"))
+    rows.insert(-1, ("verdict", result.verdict.meaning))
     return table(f"ScanResult: critical {result.critical.solve_for} over the modes", rows)
 
 

@@ -4,15 +4,18 @@ tube to the first sign change of the targets (:mod:`.march`), one mode's critica
 options; its targets and march functions are named objects, :mod:`.along`), the scan over
 all modes (:mod:`.scan`), critical curves with located mode switches (:mod:`.curves`) and
 the exact short-wave limit (:mod:`.surface`, its worst wave direction at a state in
-:mod:`.directions`).
+:mod:`.directions`), the crease competitor (:mod:`.crease`) and the verdict of what comes
+first (:mod:`.verdict`).
 
 May import ``incremental``, ``basestate``, ``model``, ``outcomes`` and ``errors``.
 """
 
+from .crease import CreaseOnset, crease_onset
 from .critical import CriticalPoint, critical_value, stable_sign
 from .curves import Curve, critical_curve
 from .problem import Problem
 from .scan import ScanOptions, ScanResult, scan_modes
+from .verdict import Verdict
 
 __all__ = [
     "CriticalPoint",
@@ -24,4 +27,7 @@ __all__ = [
     "ScanOptions",
     "ScanResult",
     "scan_modes",
+    "CreaseOnset",
+    "crease_onset",
+    "Verdict",
 ]

@@ -25,6 +25,7 @@ INACCURATE (outcomes.Status), never silently.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 
 from ..basestate.tube import solve_base_state
@@ -45,6 +46,7 @@ from ..summary import critical_html
 from .along import SignedMode, TubeAt
 from .march import control_path, first_bifurcations
 from .problem import Problem, as_problem
+from .verdict import Verdict, verdict_of
 
 #: a value is certified when its error estimate is at most CERTIFIED rtol max(1, |value|)
 CERTIFIED = 1e4
@@ -66,6 +68,11 @@ class CriticalPoint(Outcome):
     refinement (module docstring): the value then has only the digits the estimate supports;
     ``message`` then says by how much and ``remedy`` what to try. An
     :class:`~electrogrowth.outcomes.Outcome` (``unwrap``, ``outcome_dict``).
+
+    ``verdict`` (computed when first read: it marches the crease criterion along the same
+    control, bifurcation/verdict.py) says what comes first of this wrinkle, a crease of a
+    free face (crease.py) and the loss of the axisymmetric state; ``kind`` stays the
+    linear result's.
     """
 
     solve_for: str
@@ -105,6 +112,11 @@ class CriticalPoint(Outcome):
             "status": str(self.status),
             **self.params.as_dict(),
         }
+
+    @functools.cached_property
+    def verdict(self) -> Verdict:
+        """What comes first: this linear result, a crease or the threshold (verdict.py)."""
+        return verdict_of(self)
 
     def _repr_html_(self) -> str:
         return critical_html(self)

@@ -47,6 +47,8 @@ from .options import EVERY_M, M_CAP, N_CAP, ScanOptions
 from .options import TOP_MAX as TOP_MAX  # re-exported: the CLI checks --top against it
 from .problem import Problem, as_problem
 from .surface import short_wave_limit
+from .verdict import Verdict, verdict_of
+from .verdict import record as verdict_record
 
 # widen a range mode by mode at most this often (m up to EVERY_M, n up to N_CAP); an m
 # optimum still on its edge is then searched for up to M_CAP (msearch.py)
@@ -71,7 +73,13 @@ def _surface_point(limit, side) -> CriticalPoint:
 
 @dataclasses.dataclass(frozen=True)
 class ScanResult:
-    """Result of :func:`scan_modes`: the critical point and the next modes after it."""
+    """Result of :func:`scan_modes`: the critical point and the next modes after it.
+
+    ``critical`` is the first linear instability (a wrinkle, the short-wave limit or the
+    threshold); ``verdict`` (computed when first read) what comes first of it and a crease
+    of a free face (bifurcation/crease.py), with the runner-up of each kind. ``as_dict``
+    (the JSON of ``electrogrowth critical``) gives the verdict's kind and value at the top.
+    """
 
     critical: CriticalPoint
     runners_up: tuple[ModeValue, ...]
@@ -81,6 +89,15 @@ class ScanResult:
     short_wave_limit: float | None = None  # the exact limit m, k -> inf, where computed
     short_wave_error: float | None = None
 
+    @functools.cached_property
+    def verdict(self) -> Verdict:
+        """What comes first: the linear result, a crease or the threshold (verdict.py)."""
+        c, runners = self.critical, self.runners_up
+        finite = runners[0] if self.surface_instability and runners else None
+        swl = self.short_wave_limit
+        short = None if swl is None or self.surface_instability else (swl, self.short_wave_error)
+        return verdict_of(c, finite=finite, short_wave=short)
+
     def as_dict(self) -> dict:
         out = self.critical.as_dict()
         out["runners_up"] = [dataclasses.asdict(r) for r in self.runners_up]
@@ -88,7 +105,7 @@ class ScanResult:
         out["surface_instability"] = self.surface_instability
         out["short_wave_limit"] = self.short_wave_limit
         out["short_wave_error"] = self.short_wave_error
-        return out
+        return verdict_record(out, self.verdict, self.critical)
 
     def to_xarray(self):
         """The critical point and the runners-up as an ``xarray.Dataset`` on dimension rank

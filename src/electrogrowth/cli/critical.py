@@ -10,6 +10,7 @@ import math
 from ..bifurcation.certify import CERTIFY_RTOL, certify
 from ..bifurcation.critical import CERTIFIED, critical_value
 from ..bifurcation.scan import scan_modes
+from ..bifurcation.verdict import record as verdict_record
 from ..errors import ParameterError
 from ..incremental.accuracy import check_rtol
 from ..model.controls import parse_control
@@ -66,7 +67,10 @@ def configure_critical(parser: argparse.ArgumentParser) -> None:
         "--json",
         action="store_true",
         help="print one JSON object (solve_for, value, m, n, family, kind,"
-        " error_estimate, ...) instead of text",
+        " error_estimate, ...; verdict is what comes first of a wrinkle, a crease of a free"
+        " face and the loss of the axisymmetric state, and a scan's kind and value are"
+        " its; each kind under wrinkle, crease, surface, threshold; meaning in words)"
+        " instead of text",
     )
     add_quiet_option(parser)
 
@@ -90,7 +94,8 @@ def run_critical(args) -> int:
                 method=args.method,
                 rtol=args.rtol,
             )
-        record, runners = crit.as_dict(), []
+        record = verdict_record(crit.as_dict(), crit.verdict, crit, first_on_top=False)
+        runners = []
     else:
         if args.method != "impedance":
             raise ParameterError(
@@ -233,7 +238,12 @@ def _growth_text(growth, rec: dict) -> str:
 def _print_text(rec: dict, runners: list, scales=None) -> None:
     name = value_name(rec["solve_for"])
     value = supported(rec["value"], rec["error_estimate"])  # the digits the estimate supports
-    if rec["kind"] == Kind.THRESHOLD:
+    if rec["kind"] == Kind.CREASE:
+        head = (
+            f"{name} = {value}  (accuracy of the crease criterion {rec['error_estimate']:.1e})"
+            f"   crease at the {rec['face']} face, {_TRIGGER.get(rec['crease']['trigger'], '')}"
+        )
+    elif rec["kind"] == Kind.THRESHOLD:
         head = (
             f"{name} = {rec['value']:.12g}: the axisymmetric state is lost (voltage"
             " threshold) before any wrinkling mode"
@@ -260,6 +270,12 @@ def _print_text(rec: dict, runners: list, scales=None) -> None:
         )
     lines = [head, tube_line(rec, scales)]
     lines += physical_line(rec.get("physical", {}))
+    w = rec.get("wrinkle")
+    if w is not None and rec["kind"] != Kind.BIFURCATION:
+        lines.append(
+            f"  wrinkle (linear analysis): (m, n) = ({w['m']}, {w['n']})"
+            f"{_family_note(w.get('family'))}   {name} = {w['value']:.10g}"
+        )
     if "certification" in rec:  # a surface result: what was certified and how, or why not
         lines.append(
             f"  {'certified' if rec['certified'] else 'NOT certified'}: {rec['certification']}"
@@ -284,7 +300,32 @@ def _print_text(rec: dict, runners: list, scales=None) -> None:
             f"  next: (m, n) = ({r['m']}, {r['n']}){_family_note(r.get('family'))}"
             f"   {name} = {r['value']:.10g}"
         )
+    lines += _rival_lines(rec, name)
     print("\n".join(lines))
+
+
+_TRIGGER = {
+    "prismatic": "fold lines along the axis (hoop compression)",
+    "axial": "rings (axial compression)",
+    "field": "driven by the electric field",
+}
+
+
+def _rival_lines(rec: dict, name: str) -> list[str]:
+    """The runner-up crease and threshold, and the verdict in words."""
+    lines = []
+    c, t = rec.get("crease"), rec.get("threshold")
+    if c is not None and rec["kind"] != Kind.CREASE:
+        lines.append(
+            f"  crease: {c['face']} face, {_TRIGGER.get(c['trigger'], '')}   {name} ="
+            f" {supported(c['value'], c['error_estimate'])}"
+            f" (accuracy of the criterion {c['error_estimate']:.1e})"
+        )
+    if t is not None and rec["kind"] != Kind.THRESHOLD:
+        lines.append(f"  axisymmetric state lost ({t['detail']}): {name} = {t['value']:.10g}")
+    if rec.get("meaning"):
+        lines.append(f"  verdict: {rec['meaning']}")
+    return lines
 
 
 def _error(rec: dict, key: str) -> float | None:

@@ -96,6 +96,31 @@ POINT_VARIABLES = {
     ),
     "remedy": (object, "", "what to try where the point failed"),
     "seconds": ("f8", math.nan, "wall time of the point's mode scan"),
+    "verdict": (
+        object,
+        "",
+        "what comes first: bifurcation (a smooth wrinkle) | crease (a free face creases) |"
+        " surface | threshold | none",
+    ),
+    "verdict_value": ("f8", math.nan, "the value of the solved-for parameter where it comes"),
+    "verdict_face": (object, "", "the face of a crease or surface instability that comes first"),
+    "wrinkle_value": ("f8", math.nan, "the first wrinkle of the linear analysis (NaN: none)"),
+    "crease_value": (
+        "f8",
+        math.nan,
+        "where a free face reaches the crease onset (neo-Hookean criterion; NaN: not reached)",
+    ),
+    "crease_face": (object, "", "inner | outer: the face that creases first"),
+    "crease_trigger": (
+        object,
+        "",
+        "prismatic (hoop compression) | axial (axial compression) | field (electric field)",
+    ),
+    "crease_error": ("f8", math.nan, "the crease value's spread over the criterion's accuracy"),
+    "threshold_value": ("f8", math.nan, "where the axisymmetric state is lost (NaN: not found)"),
+    "meaning": (object, "", "the verdict in one line"),
+    "branch": (object, "", "supercritical | subcritical | '' (not computed)"),
+    "koiter": ("f8", math.nan, "the Koiter coefficient of the wrinkle (NaN: not computed)"),
 }
 RUNNER_VARIABLES = {
     "runner_up_value": ("f8", math.nan, "critical value of the next modes, in order"),
@@ -181,6 +206,8 @@ class SweepStore:
         shape = tuple(s.stop - s.start for s in where)
         pts = result.points
         for name, (dtype, _, _) in POINT_VARIABLES.items():
+            if name not in self.group:  # a store begun before the variable was added
+                continue
             field = "value" if name == "critical_value" else name
             column = [getattr(p, field) for p in pts]
             if dtype is object:  # enums stored as their plain values

@@ -52,7 +52,13 @@ class PointResult(Outcome):
     convergence; see ``message`` and ``remedy``) or ERROR (an unexpected exception, a bug:
     please report it; ``traceback`` says where, and is not stored).
     ``runners_up`` holds (m, n, value) of the next modes to bifurcate; (m, n) is NO_MODE
-    where no mode is critical. An :class:`~electrogrowth.outcomes.Outcome`:
+    where no mode is critical. ``kind`` and ``value`` are the linear result's (a wrinkle,
+    the short-wave limit or the threshold); the verdict (bifurcation/verdict.py) says what
+    comes first once a crease of a free face competes: ``verdict`` (its kind),
+    ``verdict_value``, ``verdict_face``, the runner-ups ``wrinkle_value``,
+    ``crease_value`` (``crease_face``, ``crease_trigger``, ``crease_error``: the
+    criterion's accuracy), ``threshold_value``, ``meaning``, and the slot ``branch`` ("" not
+    computed) and ``koiter`` (NaN). An :class:`~electrogrowth.outcomes.Outcome`:
     ``unwrap()`` raises the failure, ``outcome_dict()`` gives the shared fields.
     """
 
@@ -68,6 +74,18 @@ class PointResult(Outcome):
     seconds: float = math.nan
     remedy: str = ""
     traceback: str = dataclasses.field(default="", repr=False, compare=False)
+    verdict: str = ""
+    verdict_value: float = math.nan
+    verdict_face: str = ""
+    wrinkle_value: float = math.nan
+    crease_value: float = math.nan
+    crease_face: str = ""
+    crease_trigger: str = ""
+    crease_error: float = math.nan
+    threshold_value: float = math.nan
+    meaning: str = ""
+    branch: str = ""
+    koiter: float = math.nan
 
 
 def compute_point(params: Tube, spec: ScanSpec) -> PointResult:
@@ -86,6 +104,7 @@ def compute_point(params: Tube, spec: ScanSpec) -> PointResult:
         res = scan_modes(
             params, spec.solve_for, side=spec.side, options=spec.options, rtol=spec.rtol
         )
+        verdict = verdict_fields(res.verdict)
     except NoBifurcationFound as exc:
         return PointResult(Status.OK, kind=Kind.NONE, message=str(exc), seconds=took())
     except Exception as exc:  # noqa: BLE001 - failures are data
@@ -112,7 +131,28 @@ def compute_point(params: Tube, spec: ScanSpec) -> PointResult:
         runners_up=tuple((int(r.m), int(r.n), float(r.value)) for r in res.runners_up),
         message=_inaccurate_message(c, spec.rtol) if inaccurate else "",
         seconds=took(),
+        **verdict,
     )
+
+
+def verdict_fields(v) -> dict:
+    """The verdict's fields of a PointResult (NaN and "" where a kind was not found)."""
+    val = lambda r: math.nan if r is None else float(r.value)  # noqa: E731
+    c = v.crease
+    return {
+        "verdict": str(v.kind),
+        "verdict_value": float(v.value),
+        "verdict_face": v.face or "",
+        "wrinkle_value": val(v.wrinkle),
+        "crease_value": val(c),
+        "crease_face": "" if c is None else c.face or "",
+        "crease_trigger": "" if c is None else c.trigger or "",
+        "crease_error": math.nan if c is None else float(c.error_estimate),
+        "threshold_value": val(v.threshold),
+        "meaning": v.meaning,
+        "branch": v.branch or "",
+        "koiter": math.nan if v.koiter is None else float(v.koiter),
+    }
 
 
 def _inaccurate_message(c, rtol: float) -> str:

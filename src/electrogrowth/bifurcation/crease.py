@@ -1,0 +1,310 @@
+"""The crease competitor: where a free face of the tube reaches the onset of creasing.
+
+A crease is a sharp self-contacting fold of a free surface, a nonlinear instability with no
+length scale that no linear (wrinkling) analysis finds. Having no length, its onset is
+decided by the local state at the surface (docs/derivation-crease.md):
+
+* mechanically, for an incompressible neo-Hookean solid, when the ratio of the stretch
+  normal to the face to the smaller in-face stretch reaches CREASE_RATIO = 2.4 (Hong, Zhao
+  & Suo 2009; plane-strain compression strain 0.35), against Biot's 3.38 for wrinkles. At
+  a tube's face the normal stretch is lambda_r; a *prismatic* crease (fold lines along z)
+  is driven by lambda_r / lambda_theta, an *axial* crease (rings) by lambda_r / lambda_z.
+  The out-of-plane stretch scales the neo-Hookean plane problem by a constant modulus and
+  drops out of the ratio;
+* electrically, on a face that is an electrode, when the current field reaches
+  E sqrt(eps / mu) = CREASE_FIELD = 1.03 (Wang, Zhang & Zhao 2011, a film bonded to a rigid
+  electrode, no prestretch). The two are separate limits: their interaction (a field on a
+  compressed or stretched face) is not known in closed form, and a face creases here when
+  either is reached.
+
+For energies other than the neo-Hookean the neo-Hookean criterion is applied and the
+result says so (``criterion``). The onset is the first root of the crease margin along the
+march of the control from its stable start (model/controls.py KINDS), located by Brent's
+method; its error estimate is the criterion's (its published digits), not the root's.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import math
+
+import sympy as sp
+
+from ..basestate.tube import solve_base_state
+from ..continuation.events import FULL, brent, threshold_between
+from ..errors import BaseStateError, ConvergenceError, ElectrogrowthError
+from ..model.invariants import I1, I2, I5
+from ..model.layers import Tube
+from ..outcomes import Kind, Outcome, Status
+from .along import TubeAt
+from .march import control_path
+from .problem import Problem, as_problem
+from .surface import ray_limit
+
+#: the neo-Hookean plane-strain crease onset, lambda_normal / lambda_compressed (Hong, Zhao &
+#: Suo 2009, Appl. Phys. Lett. 95, 111904: strain 0.35, ratio 2.4; Cao & Hutchinson 2012)
+CREASE_RATIO = 2.4
+#: its accuracy: the published onset strains 0.35 to 0.354 give ratios 2.37 to 2.40
+CREASE_RATIO_ACCURACY = 0.03
+#: Biot's plane-strain wrinkling (surface) ratio of the neo-Hookean half-space, 3.383
+#: (the root of x^3 + x^2 + 3x - 1 = 0 is x = 1 / ratio; tests/bifurcation/test_crease.py)
+BIOT_RATIO = 3.382975767906238
+#: the electro-creasing field E sqrt(eps / mu) of an ideal neo-Hookean dielectric film
+#: bonded to a rigid electrode (Wang, Zhang & Zhao 2011, Phys. Rev. Lett. 106, 118301)
+CREASE_FIELD = 1.03
+#: its accuracy (two published digits)
+CREASE_FIELD_ACCURACY = 0.01
+#: the march's first, smallest and largest step, fractions of the control's scale: each
+#: next step is half the secant's distance to the onset, within these bounds
+STEP, STEP_MIN, STEP_MAX = 0.02, 0.002, 0.1
+#: the faces that may crease: free (an interface is bonded and is left out)
+FACES = ("inner", "outer")
+
+
+def onset_strain(ratio: float = CREASE_RATIO) -> float:
+    """The plane-strain compression strain 1 - lambda at which lambda_2 / lambda_1 =
+    ``ratio`` (lambda_1 lambda_2 = 1): 1 - ratio^(-1/2).
+
+    >>> round(onset_strain(), 4), round(onset_strain(BIOT_RATIO), 4)
+    (0.3545, 0.4563)
+    """
+    return 1.0 - ratio**-0.5
+
+
+@dataclasses.dataclass(frozen=True)
+class FaceCrease:
+    """How close one free face is to creasing: the ratios lambda_r / lambda_theta
+    (prismatic crease, fold lines along z) and lambda_r / lambda_z (axial crease, rings),
+    and the field E sqrt(eps_k / mu_k) of the face's layer."""
+
+    face: str
+    hoop: float
+    axial: float
+    field: float
+
+    @property
+    def drives(self) -> dict[str, float]:
+        """Each trigger as the fraction of its onset reached (1 at the onset)."""
+        return {
+            "prismatic": self.hoop / CREASE_RATIO,
+            "axial": self.axial / CREASE_RATIO,
+            "field": abs(self.field) / CREASE_FIELD,
+        }
+
+    @property
+    def trigger(self) -> str:
+        """The trigger nearest its onset: "prismatic", "axial" or "field"."""
+        d = self.drives
+        return max(d, key=d.__getitem__)
+
+    @property
+    def margin(self) -> float:
+        """max(drives) - 1: negative while the face is smooth, 0 at the crease onset."""
+        return max(self.drives.values()) - 1.0
+
+
+def face_creases(state) -> tuple[FaceCrease, ...]:
+    """The inner and outer face of a base state (any tube: the State protocol)."""
+    tube = state.tube
+    out = []
+    for face, R, layer in (
+        ("inner", 1.0, tube.layers[0]),
+        ("outer", tube.outer_radius, tube.layers[-1]),
+    ):
+        side = "outer" if face == "inner" else "inner"  # the wall's own layer at the face
+        l1, l2, l3 = (float(v) for v in state.elastic_stretches(R, side=side))
+        e = float(state.electric_field(R, side=side))
+        scale = math.sqrt(layer.permittivity / layer.shear_modulus)
+        out.append(FaceCrease(face, l1 / l2, l1 / l3, e * scale))
+    return tuple(out)
+
+
+def crease_margin(state) -> FaceCrease:
+    """The face nearest its crease onset (largest margin)."""
+    return max(face_creases(state), key=lambda f: f.margin)
+
+
+@functools.lru_cache(maxsize=64)
+def ratio_is_exact(material) -> bool:
+    """Is the neo-Hookean crease ratio exact for ``material``? For an ideal dielectric
+    whose elastic energy is linear in I1 and I2 (neo-Hookean, Mooney-Rivlin): in the plane
+    of a crease it is a neo-Hookean energy (docs/derivation-crease.md section 2)."""
+    if not material.is_ideal_dielectric():
+        return False
+    elastic = sp.expand(material.energy - I5 / 2)
+    if not elastic.free_symbols <= {I1, I2} or not elastic.is_polynomial(I1, I2):
+        return False
+    return sp.Poly(elastic, I1, I2).total_degree() <= 1
+
+
+@functools.lru_cache(maxsize=64)
+def biot_ratio(material) -> float:
+    """Biot's wrinkling ratio lambda_r / lambda_z of ``material``: the short-wave limit of
+    an ungrown, uncharged tube compressed axially, waves along z (surface.py's half-space
+    solver); BIOT_RATIO for every energy linear in I1 and I2. inf where the faces never
+    wrinkle before the state is lost (a solid that stiffens steeply), NaN if it fails.
+    It measures how far the energy is from neo-Hookean near the crease onset."""
+    tube = Tube.uniform(2.0, length=1.0, material=material)
+    try:
+        limit = ray_limit(tube, 0, 1, "stretch", side="compression")
+    except ElectrogrowthError:
+        return math.nan
+    return limit.value**-1.5 if limit.kind == Kind.SURFACE else math.inf
+
+
+def criterion_text(tube: Tube) -> str:
+    """Which criterion is applied to the tube's face layers, in words; for an energy it is
+    not exact for, how far that energy's own Biot ratio is from neo-Hookean's."""
+    faces = (tube.layers[0].material, tube.layers[-1].material)
+    base = f"neo-Hookean crease ratio {CREASE_RATIO:g}, electro-crease field {CREASE_FIELD:g}"
+    other = sorted({m for m in faces if not ratio_is_exact(m)}, key=lambda m: m.name)
+    if not other:
+        return base
+    notes = []
+    for m in other:
+        b = biot_ratio(m)
+        how = (
+            f"its Biot ratio {b:.4g} against {BIOT_RATIO:.4g}, {100 * (b / BIOT_RATIO - 1):+.1f} %"
+            if math.isfinite(b)
+            else "it has no Biot wrinkling in compression"
+            if b == math.inf
+            else "its Biot ratio not computed"
+        )
+        notes.append(f"{m.name} ({how})")
+    return f"{base}, applied to {'; '.join(notes)}: not that energy's own onset"
+
+
+@dataclasses.dataclass(frozen=True)
+class CreaseOnset(Outcome):
+    """Result of :func:`crease_onset`.
+
+    ``kind`` is CREASE (``value``: the control where ``face`` reaches the onset through
+    ``trigger``: "prismatic", "axial" or "field") or NONE (no crease before the end of the
+    path or before the axisymmetric state is lost at ``threshold``). ``error_estimate`` is
+    the change of the value over the criterion's accuracy (CREASE_RATIO_ACCURACY,
+    CREASE_FIELD_ACCURACY), linearised; ``criterion`` says which criterion was applied.
+    ``threshold`` is where the march lost the axisymmetric state (NaN if it did not)."""
+
+    solve_for: str
+    value: float
+    kind: str
+    face: str | None
+    trigger: str | None
+    error_estimate: float
+    side: str | None
+    params: Tube
+    criterion: str
+    threshold: float = math.nan
+    status: Status = Status.OK
+    message: str = ""
+    remedy: str = ""
+
+    def as_dict(self) -> dict:
+        fin = lambda v: v if math.isfinite(v) else None  # noqa: E731
+        return {
+            "kind": str(self.kind),
+            "value": fin(self.value),
+            "face": self.face,
+            "trigger": self.trigger,
+            "error_estimate": fin(self.error_estimate),
+            "criterion": self.criterion,
+        }
+
+
+def crease_onset(
+    params: Tube | Problem,
+    solve_for: str | None = None,
+    *,
+    side: str | None = None,
+    rtol: float | None = None,
+) -> CreaseOnset:
+    """The control value at which a free face of the tube first reaches the crease onset.
+
+    The control ``solve_for`` (any of model/controls.py KINDS) is marched from its stable
+    start along the base-state path, as for a critical value; the crease margin of the
+    inner and outer face (:func:`crease_margin`) is followed and its first root found by
+    Brent's method.
+
+    Parameters
+    ----------
+    params : Tube or Problem
+        As for :func:`~.critical.critical_value`.
+    solve_for, side, rtol
+        The control, its side and the base state's accuracy (Problem's defaults).
+
+    Returns
+    -------
+    CreaseOnset
+
+    >>> c = crease_onset(Tube.uniform(2.0, length=1.0), "stretch", side="compression")
+    >>> str(c.kind), c.trigger, abs(c.value - CREASE_RATIO ** (-2 / 3)) < 1e-12
+    ('crease', 'axial', True)
+    """
+    problem = as_problem(params, solve_for, side=side, rtol=rtol)
+    tube, control, side, rtol = problem.tube, problem.control, problem.side, problem.rtol
+    at = TubeAt(tube, control)
+    start, end, scale = control_path(tube, control, side)
+    criterion = criterion_text(tube)
+
+    def state(x):
+        return solve_base_state(at(x), rtol=rtol)
+
+    def margin(x) -> float:
+        return crease_margin(state(x)).margin
+
+    def result(value, kind, face=None, trigger=None, error=math.nan, threshold=math.nan):
+        params_at = tube.at(control, value) if math.isfinite(value) else tube
+        return CreaseOnset(
+            control, value, kind, face, trigger, error, side, params_at, criterion, threshold
+        )
+
+    x, h = start, margin(start)
+    if h >= 0:  # already past the onset where the march starts
+        f = crease_margin(state(start))
+        return result(start, Kind.CREASE, f.face, f.trigger, 0.0)
+    sense = 1.0 if end > start else -1.0
+    step = STEP * scale
+    while sense * (end - x) > 0:
+        x_new = x + sense * step if sense * (end - x - sense * step) > 0 else end
+        try:
+            h_new = margin(x_new)
+        except (BaseStateError, ConvergenceError):
+            lost = threshold_between(x, x_new, exists=_solves(state))
+            return result(math.nan, Kind.NONE, threshold=math.nan if lost is None else lost)
+        if h_new >= 0:
+            value = brent(margin, x, x_new, FULL)
+            f = crease_margin(state(value))
+            return result(
+                value, Kind.CREASE, f.face, f.trigger, _criterion_error(margin, value, x, f)
+            )
+        slope = sense * (h_new - h) / abs(x_new - x)  # the margin's rise per unit of march
+        ahead = -h_new / slope if slope > 0 else math.inf
+        step = min(max(0.5 * ahead, STEP_MIN * scale), STEP_MAX * scale)
+        x, h = x_new, h_new
+    return result(math.nan, Kind.NONE)
+
+
+def _solves(state):
+    def exists(x) -> bool:
+        try:
+            state(x)
+        except (BaseStateError, ConvergenceError):
+            return False
+        return True
+
+    return exists
+
+
+def _criterion_error(margin, value: float, x_before: float, face: FaceCrease) -> float:
+    """How far the onset moves over the criterion's accuracy: d(drive) = accuracy / onset,
+    divided by the slope of the margin at the root (a secant over 1e-4 of the last step,
+    on the side the march came from, where the state exists)."""
+    near = value + 1e-4 * (x_before - value)
+    slope = (margin(value) - margin(near)) / (value - near)
+    rel = (
+        CREASE_FIELD_ACCURACY / CREASE_FIELD
+        if face.trigger == "field"
+        else CREASE_RATIO_ACCURACY / CREASE_RATIO
+    )
+    return abs(rel / slope) if slope != 0 else math.inf

@@ -1,0 +1,302 @@
+"""One verdict per result: what comes first along the control, and what comes next.
+
+The linear analysis (critical.py, scan.py) finds the first wrinkle (kind BIFURCATION), the
+short-wave surface limit (SURFACE) or the loss of the axisymmetric state (THRESHOLD); the
+crease criterion (crease.py) finds where a free face creases (CREASE). A :class:`Verdict`
+puts them on one footing: ``kind`` and ``value`` of the first reached, the runner-up of
+every other kind that was found (``wrinkle``, ``surface``, ``crease``, ``threshold``: a
+:class:`Rival` or None), and ``meaning``, one line for a user.
+
+``branch`` ("supercritical" / "subcritical") and ``koiter`` (the coefficient of the
+amplitude equation) are a slot for the weakly nonlinear expansion of the wrinkle: None
+until it is computed.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+from ..basestate.tube import threshold
+from ..errors import ElectrogrowthError
+from ..model.controls import parse_control
+from ..outcomes import Kind
+from .crease import crease_onset
+
+#: the kinds a verdict compares, and the record key of each one's runner-up
+RIVALS = {
+    Kind.BIFURCATION: "wrinkle",
+    Kind.SURFACE: "surface",
+    Kind.CREASE: "crease",
+    Kind.THRESHOLD: "threshold",
+}
+
+
+def _fin(v):
+    return v if v is not None and math.isfinite(v) else None
+
+
+@dataclasses.dataclass(frozen=True)
+class Rival:
+    """One kind of instability at its value: a wrinkle (``m``, ``n``, ``family``), a
+    surface or crease (``face``; a crease's ``trigger``: prismatic, axial or field) or the
+    threshold (``detail``: what is lost)."""
+
+    kind: str
+    value: float
+    error_estimate: float | None = None
+    m: int | None = None
+    n: int | None = None
+    family: str | None = None
+    face: str | None = None
+    trigger: str | None = None
+    detail: str | None = None
+
+    def as_dict(self) -> dict:
+        out = dataclasses.asdict(self)
+        out["kind"] = str(self.kind)
+        out["value"], out["error_estimate"] = _fin(self.value), _fin(self.error_estimate)
+        return out
+
+
+@dataclasses.dataclass(frozen=True)
+class Verdict:
+    """What comes first (``kind``, ``value``, ``face``), the runner-up of each other kind,
+    the one-line ``meaning``, and the slot ``branch``/``koiter`` (None: not computed)."""
+
+    kind: str
+    value: float
+    face: str | None
+    meaning: str
+    wrinkle: Rival | None = None
+    surface: Rival | None = None
+    crease: Rival | None = None
+    threshold: Rival | None = None
+    criterion: str | None = None
+    side: str | None = None  # "compression": the march decreases the control
+    branch: str | None = None  # "supercritical" | "subcritical"; None: not computed
+    koiter: float | None = None  # the Koiter coefficient; None: not computed
+
+    @property
+    def first(self) -> Rival | None:
+        """The rival that comes first (None when nothing was found)."""
+        key = RIVALS.get(Kind(self.kind))
+        return None if key is None else getattr(self, key)
+
+    @property
+    def runners_up(self) -> tuple[Rival, ...]:
+        """The other kinds found, in the order they are reached."""
+        return tuple(r for r in self._ordered() if r is not self.first)
+
+    def _ordered(self):
+        found = [getattr(self, key) for key in RIVALS.values()]
+        sense = -1.0 if self.side == "compression" else 1.0
+        return sorted((r for r in found if r is not None), key=lambda r: sense * r.value)
+
+    def as_dict(self) -> dict:
+        return {
+            "kind": str(self.kind),
+            "value": _fin(self.value),
+            "face": self.face,
+            "meaning": self.meaning,
+            **{key: _rival_dict(getattr(self, key)) for key in RIVALS.values()},
+            "crease_criterion": self.criterion,
+            "branch": self.branch,
+            "koiter": self.koiter,
+        }
+
+
+def _rival_dict(r: Rival | None):
+    return None if r is None else r.as_dict()
+
+
+def judge(
+    side: str | None,
+    *,
+    wrinkle: Rival | None = None,
+    surface: Rival | None = None,
+    crease: Rival | None = None,
+    threshold: Rival | None = None,
+    criterion: str | None = None,
+    name: str = "the control",
+) -> Verdict:
+    """The verdict of the rivals found: the first reached along the march (decreasing on
+    the compression side, else increasing) comes first; a tie goes to the linear result.
+
+    >>> w = Rival(Kind.BIFURCATION, 0.511, m=0, n=1, family="wrinkle")
+    >>> c = Rival(Kind.CREASE, 0.558, 0.005, face="outer", trigger="axial")
+    >>> v = judge("compression", wrinkle=w, crease=c, name="lambda_z")
+    >>> str(v.kind), v.value, [str(r.kind) for r in v.runners_up]
+    ('crease', 0.558, ['bifurcation'])
+    """
+    sense = -1.0 if side == "compression" else 1.0
+    rivals = [r for r in (wrinkle, surface, threshold, crease) if r is not None]
+    rivals = [r for r in rivals if math.isfinite(r.value)]
+    if not rivals:
+        return Verdict(Kind.NONE, math.nan, None, "no instability found in the searched range")
+    first = min(rivals, key=lambda r: sense * r.value)  # the first listed wins a tie
+    return Verdict(
+        first.kind,
+        first.value,
+        first.face,
+        meaning(first, [r for r in rivals if r is not first], sense, name),
+        wrinkle,
+        surface,
+        crease,
+        threshold,
+        criterion,
+        side,
+    )
+
+
+def _mode(r: Rival) -> str:
+    return f"mode (m, n) = ({r.m}, {r.n})"
+
+
+def meaning(first: Rival, others: list[Rival], sense: float, name: str) -> str:
+    """One line for a user: what they will see first and what it pre-empts."""
+    nxt = min(others, key=lambda r: sense * r.value) if others else None
+    after = "" if nxt is None else f"; next: {_what(nxt)} at {name} = {nxt.value:.4g}"
+    close = ""
+    if first.kind == Kind.CREASE and nxt is not None and first.error_estimate is not None:
+        if abs(nxt.value - first.value) <= first.error_estimate:
+            close = " (within the crease criterion's accuracy of it: too close to call)"
+    if first.kind == Kind.CREASE:
+        head = (
+            f"the {first.face} face creases (sharp folds, {_trigger(first.trigger)}) at"
+            f" {name} = {first.value:.4g} before any smooth wrinkle"
+        )
+    elif first.kind == Kind.BIFURCATION:
+        head = f"the tube wrinkles smoothly in {_mode(first)} at {name} = {first.value:.4g}"
+    elif first.kind == Kind.SURFACE:
+        head = (
+            f"short-wave surface wrinkles at the {first.face} face at {name} = {first.value:.4g}"
+        )
+    else:
+        head = (
+            f"the axisymmetric state is lost ({first.detail or 'threshold'}) at {name} ="
+            f" {first.value:.4g} before any wrinkle or crease"
+        )
+    return head + after + close
+
+
+def _what(r: Rival) -> str:
+    if r.kind == Kind.CREASE:
+        return f"a crease at the {r.face} face"
+    if r.kind == Kind.BIFURCATION:
+        return f"the wrinkle {_mode(r)}"
+    if r.kind == Kind.SURFACE:
+        return f"short-wave wrinkles at the {r.face} face"
+    return "the loss of the axisymmetric state"
+
+
+def _trigger(trigger: str | None) -> str:
+    return {
+        "prismatic": "fold lines along the axis, by hoop compression",
+        "axial": "rings, by axial compression",
+        "field": "by the electric field",
+    }.get(trigger or "", "")
+
+
+def crease_rival(onset) -> Rival | None:
+    """A :class:`~.crease.CreaseOnset` as a rival (None where no crease was reached)."""
+    if onset is None or onset.kind != Kind.CREASE:
+        return None
+    return Rival(
+        Kind.CREASE, onset.value, onset.error_estimate, face=onset.face, trigger=onset.trigger
+    )
+
+
+def record(base: dict, verdict: Verdict, critical=None, *, first_on_top: bool = True) -> dict:
+    """A result's JSON record with the verdict: ``verdict``, ``verdict_value`` and
+    ``verdict_face`` (what comes first), the runner-up of each kind (``wrinkle``,
+    ``surface``, ``crease``, ``threshold``), ``meaning``, ``crease_criterion``, ``branch``
+    and ``koiter``. With ``first_on_top`` (a scan) ``kind``, ``value``, ``face`` and
+    ``error_estimate`` are also those of what comes first (m, n and family null unless a
+    wrinkle does; the tube's fields at a crease's value: ``critical`` is the linear
+    result); without it (one mode asked for) they stay the mode's."""
+    out = dict(base)
+    v = verdict.as_dict()
+    out.update({key: value for key, value in v.items() if key not in ("kind", "value", "face")})
+    out["verdict"], out["verdict_value"], out["verdict_face"] = v["kind"], v["value"], v["face"]
+    first = verdict.first
+    if not first_on_top or first is None:
+        return out
+    if critical is not None and verdict.kind == Kind.CREASE:
+        out.update(critical.params.at(critical.solve_for, verdict.value).as_dict())
+    out["kind"], out["face"] = v["kind"], v["face"]
+    if first.kind in (Kind.CREASE, Kind.THRESHOLD):
+        out["value"] = first.value
+        out["error_estimate"] = _fin(first.error_estimate)
+        out["m"] = out["n"] = out["family"] = None
+        out["psi"] = None
+        if first.kind == Kind.CREASE:
+            out["method"] = "crease criterion"
+    return out
+
+
+#: how a control is named in a verdict's meaning
+_NAMES = {"growth": "g", "stretch": "lambda_z", "voltage": "Vbar", "pressure": "P_i", "force": "F"}
+
+
+def control_symbol(solve_for: str) -> str:
+    """g, lambda_z, Vbar, P_i or F (a layer's growth as its control string)."""
+    kind = parse_control(solve_for).kind
+    return solve_for if kind == "growth" and solve_for != "growth" else _NAMES[kind]
+
+
+def threshold_rival(critical, onset) -> Rival | None:
+    """Where the axisymmetric state is lost: the linear result's threshold, else the
+    voltage or inflation threshold of the tube (where that is the control), else the one
+    the crease march met (None: not reached)."""
+    kind = parse_control(critical.solve_for).kind
+    if critical.kind == Kind.THRESHOLD:
+        return Rival(Kind.THRESHOLD, critical.value, 0.0, detail=f"{kind} threshold")
+    if kind == "voltage" or (kind == "pressure" and critical.side != "compression"):
+        t = threshold(critical.params, kind)
+        if math.isfinite(t.value):
+            return Rival(Kind.THRESHOLD, t.value, t.error, detail=f"{kind} {t.kind}")
+        return None
+    if onset is not None and math.isfinite(onset.threshold):
+        return Rival(Kind.THRESHOLD, onset.threshold, None, detail="no axisymmetric state")
+    return None
+
+
+def verdict_of(critical, *, finite=None, short_wave=None) -> Verdict:
+    """The verdict of a critical point (``critical_value`` or a scan's), the crease onset
+    along the same control computed here. ``finite`` is the best finite mode when the
+    critical point is the surface limit (a ModeValue); ``short_wave`` (value, error) the
+    exact surface limit where a scan computed it after the wrinkle."""
+    try:
+        onset = crease_onset(critical.params, critical.solve_for, side=critical.side)
+        criterion = onset.criterion
+    except ElectrogrowthError as exc:  # the linear result stands; say why there is no crease
+        onset, criterion = None, f"crease criterion not evaluated: {exc}"
+    wrinkle = surface = None
+    if critical.kind == Kind.BIFURCATION:
+        wrinkle = Rival(
+            Kind.BIFURCATION,
+            critical.value,
+            critical.error_estimate,
+            critical.m,
+            critical.n,
+            str(critical.family) if critical.family else None,
+        )
+    elif critical.kind == Kind.SURFACE:
+        surface = Rival(Kind.SURFACE, critical.value, critical.error_estimate, face=critical.face)
+    if finite is not None:
+        wrinkle = Rival(Kind.BIFURCATION, finite.value, None, finite.m, finite.n, finite.family)
+    if short_wave is not None and surface is None:
+        surface = Rival(Kind.SURFACE, short_wave[0], short_wave[1])
+    verdict = judge(
+        critical.side,
+        wrinkle=wrinkle,
+        surface=surface,
+        crease=crease_rival(onset),
+        threshold=threshold_rival(critical, onset),
+        criterion=criterion,
+        name=control_symbol(critical.solve_for),
+    )
+    if onset is None:
+        return dataclasses.replace(verdict, meaning=verdict.meaning + " (crease not evaluated)")
+    return verdict

@@ -1,0 +1,138 @@
+"""The crease criterion (bifurcation/crease.py, docs/derivation-crease.md).
+
+Checks, each against something independent: the published onset strains of a neo-Hookean
+half-space from the ratios (Hong, Zhao & Suo 2009; Cao & Hutchinson 2012; Biot's cubic);
+the reduction of a three-dimensional face state to its ratio, by the package's own
+half-space solver (Biot's ratio in a state that is not plane strain); the closed forms of
+homogeneous tubes under axial compression and under growth; the electro-crease field from
+the voltage and the current radii (not from the state's field).
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from electrogrowth import Tube
+from electrogrowth.basestate.tube import solve_base_state
+from electrogrowth.bifurcation.crease import (
+    BIOT_RATIO,
+    CREASE_FIELD,
+    CREASE_RATIO,
+    FaceCrease,
+    biot_ratio,
+    crease_onset,
+    criterion_text,
+    face_creases,
+    onset_strain,
+    ratio_is_exact,
+)
+from electrogrowth.bifurcation.surface import short_wave_limit
+from electrogrowth.model.layer import Layer
+from electrogrowth.model.layers import Tube as LayeredTube
+from electrogrowth.model.materials import gent, mooney_rivlin, neo_hookean
+
+
+def test_the_ratio_gives_the_published_onset_strain():
+    # Hong, Zhao & Suo (2009): 0.35 in plane strain; Cao & Hutchinson (2012): 0.354
+    assert onset_strain() == pytest.approx(0.354, abs=1e-3)
+    assert onset_strain() == pytest.approx(0.35, abs=5e-3)
+    assert CREASE_RATIO < BIOT_RATIO  # creases come before Biot's wrinkles
+
+
+def test_biot_ratio_is_the_root_of_biots_cubic():
+    roots = np.roots([1.0, 1.0, 3.0, -1.0])  # x^3 + x^2 + 3x - 1 = 0, x = lambda_s / lambda_n
+    x = float(next(r.real for r in roots if abs(r.imag) < 1e-12))
+    assert 1 / x == pytest.approx(BIOT_RATIO, rel=1e-10)
+    assert onset_strain(BIOT_RATIO) == pytest.approx(0.456, abs=5e-4)  # Biot (1963)
+
+
+def test_the_out_of_plane_stretch_drops_out_by_the_half_space_solver():
+    """An axially compressed tube has lambda_theta = lambda_r, not 1 (no plane strain): the
+    reduction says its faces wrinkle at lambda_r / lambda_z = Biot's ratio, lambda_z =
+    3.383^(-2/3); the half-space solver (surface.py) knows nothing of that argument."""
+    s = short_wave_limit(Tube.uniform(2.0, length=1.0), "stretch", side="compression")
+    assert s.kind == "surface" and s.psi == pytest.approx(math.pi / 2)
+    assert s.value == pytest.approx(BIOT_RATIO ** (-2 / 3), rel=1e-12)
+
+
+@pytest.mark.parametrize("outer_radius", [1.6, 1.8, 2.0])
+def test_axial_compression_creases_at_the_closed_form(outer_radius):
+    c = crease_onset(Tube.uniform(outer_radius, length=1.0), "stretch", side="compression")
+    # homogeneous: lambda_r = lambda_z^(-1/2), so lambda_r / lambda_z = lambda_z^(-3/2) = 2.4
+    assert c.kind == "crease" and c.trigger == "axial" and c.face in ("inner", "outer")
+    assert c.value == pytest.approx(CREASE_RATIO ** (-2 / 3), rel=1e-12)
+    # the criterion's accuracy (2.4 +- 0.03) moves lambda_z by (2/3) lambda_z 0.03 / 2.4
+    assert c.error_estimate == pytest.approx(2 / 3 * c.value * 0.03 / 2.4, rel=1e-3)
+
+
+def test_growth_at_fixed_length_creases_at_the_closed_form():
+    # lambda_z = 1, isotropic growth g: elastic lambda_z = 1/g, lambda_r = g^(1/2)
+    c = crease_onset(Tube.uniform(1.4, length=1.0, stretch=1.0), "growth")
+    assert c.kind == "crease" and c.trigger == "axial"
+    assert c.value == pytest.approx(CREASE_RATIO ** (2 / 3), rel=1e-12)
+
+
+def test_extension_never_creases():
+    c = crease_onset(Tube.uniform(2.0), "stretch", side="extension")
+    assert c.kind == "none" and math.isnan(c.value)
+
+
+def test_hoop_growth_of_a_layer_creases_prismatically():
+    """Hoop growth of the inner layer compresses it along theta: a prismatic crease at the
+    inner face, where lambda_r / lambda_theta (read off the radii) reaches 2.4."""
+    tube = LayeredTube(
+        layers=(Layer(1.5, growth=(1.0, 1.0, 1.0)), Layer(3.0, shear_modulus=10.0)), stretch=1.0
+    )
+    c = crease_onset(tube, "growth[1].theta")
+    assert c.kind == "crease" and (c.face, c.trigger) == ("inner", "prismatic")
+    state = solve_base_state(c.params)
+    l_theta = state.r_i / c.value  # r / (g_theta R) at R = 1
+    l_r = 1.0 / (l_theta * state.stretch)  # incompressible, g_r = g_z = 1
+    assert l_r / l_theta == pytest.approx(CREASE_RATIO, rel=1e-10)
+
+
+def test_the_field_trigger_is_the_published_field_on_an_unstretched_face():
+    assert FaceCrease("outer", 1.0, 1.0, CREASE_FIELD).margin == pytest.approx(0.0, abs=1e-15)
+    assert FaceCrease("outer", 1.0, 1.0, -0.99 * CREASE_FIELD).margin < 0
+    assert FaceCrease("outer", 1.0, 1.0, 1.01 * CREASE_FIELD).trigger == "field"
+
+
+def test_the_voltage_creases_the_inner_face_at_the_field_from_the_potential():
+    """E_r = c / r and V = c ln(r_o / r_i) (ideal dielectric, eps = 1): the inner face's
+    field is V / (r_i ln(r_o / r_i)), V = Vbar (Rbar_o - 1); at the onset it is 1.03."""
+    c = crease_onset(Tube.uniform(1.4, length=1.0), "voltage")
+    assert c.kind == "crease" and (c.face, c.trigger) == ("inner", "field")
+    s = solve_base_state(c.params)
+    field = c.value * (1.4 - 1.0) / (s.r_i * math.log(s.r_o / s.r_i))
+    assert field == pytest.approx(CREASE_FIELD, rel=1e-10)
+
+
+def test_the_field_is_measured_in_the_face_layers_own_units():
+    """A face layer of modulus 4 and permittivity 1: E sqrt(eps_k / mu_k) = E / 2."""
+    tube = LayeredTube(
+        layers=(Layer(1.2, shear_modulus=4.0), Layer(1.6)), stretch=1.0, voltage=0.3
+    )
+    state = solve_base_state(tube)
+    inner, outer = face_creases(state)
+    assert inner.field == pytest.approx(float(state.electric_field(1.0)) / 2, rel=1e-14)
+    assert outer.field == pytest.approx(float(state.electric_field(1.6, side="inner")), rel=1e-14)
+
+
+def test_the_criterion_says_when_it_is_not_the_energys_own():
+    assert ratio_is_exact(neo_hookean()) and ratio_is_exact(mooney_rivlin(0.3))
+    assert not ratio_is_exact(gent(20.0))
+    text = criterion_text(Tube.uniform(1.4, material=gent(20.0)))
+    assert "applied to gent(jm=20) (its Biot ratio 3.577 against 3.383, +5.7 %)" in text
+    assert "not that energy's own" in text
+    assert "applied" not in criterion_text(Tube.uniform(1.4))
+
+
+def test_energies_linear_in_i1_and_i2_have_biots_ratio_along_the_axis():
+    """The reduction of docs/derivation-crease.md section 2 for Mooney-Rivlin, by the
+    half-space solver: waves along z at neo-Hookean's ratio (alpha = 0.3 wrinkles first
+    obliquely, which the principal-direction ratio leaves out); Gent's own ratio is larger
+    (it stiffens), and one that stiffens steeply has none."""
+    assert biot_ratio(mooney_rivlin(0.3)) == pytest.approx(BIOT_RATIO, rel=1e-12)
+    assert BIOT_RATIO < biot_ratio(gent(97.2)) < 1.02 * BIOT_RATIO
+    assert biot_ratio(gent(5.0)) == math.inf

@@ -1,0 +1,81 @@
+"""``electrogrowth critical``: the verdict in the JSON record and the text, bad input."""
+
+import json
+
+import pytest
+
+from electrogrowth.bifurcation.crease import CREASE_RATIO
+from electrogrowth.cli.app import main
+
+COMPRESSED = [
+    "critical",
+    "--outer-radius",
+    "1.8",
+    "--length",
+    "1.0",
+    "--solve-for",
+    "stretch",
+    "--side",
+    "compression",
+    "--m-max",
+    "2",
+    "--n-max",
+    "2",
+]
+CREASE = CREASE_RATIO ** (-2 / 3)  # the homogeneous tube's axial crease (closed form)
+
+
+def _json(capsys, argv):
+    assert main(argv + ["--json"]) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+def test_json_kind_is_crease_with_the_wrinkle_as_runner_up(capsys):
+    rec = _json(capsys, COMPRESSED)
+    assert rec["kind"] == rec["verdict"] == "crease" and rec["face"] in ("inner", "outer")
+    assert rec["value"] == pytest.approx(CREASE, rel=1e-12) == rec["verdict_value"]
+    w = rec["wrinkle"]
+    assert w["kind"] == "bifurcation" and (w["m"], w["n"]) == (0, 1) and w["value"] < CREASE
+    for key in ("crease", "surface", "threshold", "meaning", "branch", "koiter"):
+        assert key in rec
+    assert rec["branch"] is None and rec["koiter"] is None
+
+
+def test_json_of_one_mode_has_the_verdict_and_the_threshold(capsys):
+    argv = ["critical", "--outer-radius", "1.4", "--solve-for", "voltage", "--mode", "0", "1"]
+    rec = _json(capsys, argv)
+    assert rec["kind"] == "bifurcation" and (rec["m"], rec["n"]) == (0, 1)
+    assert rec["threshold"]["kind"] == "threshold" and rec["threshold"]["value"] > rec["value"]
+    assert rec["crease"]["trigger"] == "field" and rec["crease"]["face"] == "inner"
+
+
+def test_one_mode_asked_for_stays_on_top_with_the_verdict_beside(capsys):
+    rec = _json(capsys, COMPRESSED[:-4] + ["--mode", "0", "1"])
+    assert rec["kind"] == "bifurcation" and (rec["m"], rec["n"]) == (0, 1)
+    assert rec["value"] < CREASE and rec["verdict"] == "crease"
+    assert rec["verdict_value"] == pytest.approx(CREASE, rel=1e-12)
+    assert (
+        rec["crease"]["value"] == rec["verdict_value"] and rec["wrinkle"]["value"] == rec["value"]
+    )
+    assert main(COMPRESSED[:-4] + ["--mode", "0", "1"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("lambda_z,cr = 0.51124807") and "  crease: " in out
+    assert "verdict: the" in out and "creases" in out
+
+
+def test_text_names_the_crease_the_wrinkle_and_the_verdict(capsys):
+    assert main(COMPRESSED) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("lambda_z,cr = 0.558")  # the digits the criterion supports
+    assert "crease at the" in out and "wrinkle (linear analysis): (m, n) = (0, 1)" in out
+    assert "verdict: the" in out and "creases" in out
+
+
+@pytest.mark.parametrize(
+    "extra",
+    [["--side", "sideways"], ["--mode", "0", "x"], ["--rtol", "-1"]],
+)
+def test_bad_input_is_one_line_and_exit_2(capsys, extra):
+    assert main(COMPRESSED[:-4] + extra) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("electrogrowth: error:")
