@@ -27,6 +27,7 @@ from ..labelled import layered_state_dataset
 from ..model.layers import Layer, Tube
 from .branches import Branch, Threshold, clean, prepare, solve_on, threshold
 from .plies import ORDERS, Wall, chebyshev
+from .warm import continued
 
 __all__ = [
     "LayeredState",
@@ -41,13 +42,17 @@ __all__ = [
 # -- entry points -------------------------------------------------------------------------------
 
 
-def solve_layered_state(tube: Tube, *, rtol: float = 1e-12) -> LayeredState:
+def solve_layered_state(tube: Tube, *, rtol: float = 1e-12, near=None) -> LayeredState:
     """The axisymmetric base state of a layered tube at its loads.
 
     Reached from the unloaded state (V = 0, P_i = P_o) by raising the inner pressure to P_i at
     V = 0 (pressure branch), then the voltage to Vbar (voltage branch), each followed in r_i.
     Solves (*) = P_i - P_o and int E_r dr = Vbar (R_N - 1) for (r_i, c), and under force control
     the axial balance for lambda_z.
+
+    ``near``, the solved state of a neighbouring tube (a march's previous step), is the
+    start of Newton's method instead (:mod:`.warm`: the same root, checked to be on the same
+    branch before its threshold); where that fails, the walk from the unloaded state.
 
     Raises
     ------
@@ -59,6 +64,11 @@ def solve_layered_state(tube: Tube, *, rtol: float = 1e-12) -> LayeredState:
     >>> round(state.lambda_i, 6), state.threshold_kind
     (1.151387, 'asymptote')
     """
+    if near is not None and (warm := continued(tube, near, rtol)) is not None:
+        _, wall, prep, x, lz, c = warm
+        state = LayeredState._build(tube, wall, prep, x, lz, c, rtol)
+        if state.quadrature_error <= max(rtol, 1e-14):
+            return state
     key = dataclasses.replace(tube, voltage=0.0)
     nodes = None
     for _ in range(len(ORDERS)):
