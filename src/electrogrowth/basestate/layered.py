@@ -42,7 +42,7 @@ __all__ = [
 # -- entry points -------------------------------------------------------------------------------
 
 
-def solve_layered_state(tube: Tube, *, rtol: float = 1e-12, near=None) -> LayeredState:
+def solve_layered_state(tube: Tube, *, rtol: float = 1e-12, near=None, guess=None) -> LayeredState:
     """The axisymmetric base state of a layered tube at its loads.
 
     Reached from the unloaded state (V = 0, P_i = P_o) by raising the inner pressure to P_i at
@@ -52,7 +52,8 @@ def solve_layered_state(tube: Tube, *, rtol: float = 1e-12, near=None) -> Layere
 
     ``near``, the solved state of a neighbouring tube (a march's previous step), is the
     start of Newton's method instead (:mod:`.warm`: the same root, checked to be on the same
-    branch before its threshold); where that fails, the walk from the unloaded state.
+    branch before its threshold), or ``guess`` = (r_i, lambda_z) when given (extrapolated
+    from two neighbours); where that fails, the walk from the unloaded state.
 
     Raises
     ------
@@ -64,7 +65,7 @@ def solve_layered_state(tube: Tube, *, rtol: float = 1e-12, near=None) -> Layere
     >>> round(state.lambda_i, 6), state.threshold_kind
     (1.151387, 'asymptote')
     """
-    if near is not None and (warm := continued(tube, near, rtol)) is not None:
+    if near is not None and (warm := continued(tube, near, rtol, guess)) is not None:
         _, wall, prep, x, lz, c = warm
         state = LayeredState._build(tube, wall, prep, x, lz, c, rtol)
         if state.quadrature_error <= max(rtol, 1e-14):

@@ -49,7 +49,9 @@ def voltage_threshold(params: Tube) -> tuple[float, str, float]:
     return t.value, t.kind, t.lambda_i
 
 
-def solve_base_state(tube: Tube, *, rtol: float = 1e-12, near: State | None = None) -> State:
+def solve_base_state(
+    tube: Tube, *, rtol: float = 1e-12, near: State | None = None, guess=None
+) -> State:
     """Solve the axisymmetric base state of ``tube`` at its loads (paper Sec. 3.1).
 
     Parameters
@@ -63,6 +65,9 @@ def solve_base_state(tube: Tube, *, rtol: float = 1e-12, near: State | None = No
         The solved state of a neighbouring tube (a march's last step): a layered state is
         then continued from it by Newton's method, the same root as the walk from the
         unloaded tube (basestate/warm.py), which is the fallback. Ignored for a uniform tube.
+    guess : (float, float) or None, keyword-only
+        With ``near``: Newton's start (r_i, lambda_z) instead of near's own (e.g. extrapolated
+        from two neighbours).
 
     Returns
     -------
@@ -82,7 +87,7 @@ def solve_base_state(tube: Tube, *, rtol: float = 1e-12, near: State | None = No
     if tube.is_uniform:
         return solve_uniform(tube, rtol)
     warm = near if isinstance(near, LayeredState) else None
-    return solve_layered_state(tube, rtol=rtol, near=warm)
+    return solve_layered_state(tube, rtol=rtol, near=warm, guess=guess if warm else None)
 
 
 def threshold(tube: Tube, control: str = "voltage", *, rtol: float = 1e-12) -> Threshold:

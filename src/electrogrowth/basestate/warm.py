@@ -70,10 +70,12 @@ class LazyPrepared:
         return prepare(self.tube, self.rtol).voltage
 
 
-def continued(tube: Tube, near, rtol: float):
+def continued(tube: Tube, near, rtol: float, guess=None):
     """(key, wall, prep, r_i, lambda_z, c) of ``tube``'s state continued from the solved
     state ``near`` of a neighbouring tube, or None where that is not the walk's root (see
-    the module docstring)."""
+    the module docstring). ``guess``: a better Newton start (r_i, lambda_z) than the
+    neighbour's own, e.g. extrapolated from two neighbours (the checks still compare with
+    ``near``)."""
     old = near.tube
     if (
         near._wall is None
@@ -82,15 +84,24 @@ def continued(tube: Tube, near, rtol: float):
         or any(a.material != b.material for a, b in zip(old.layers, tube.layers))
     ):
         return None
-    key = dataclasses.replace(tube, voltage=0.0)
-    if key == near._wall.tube:  # the same wall and preparation (a voltage march)
-        wall, prep = near._wall, near._prep
+    if _same_wall(tube, near._wall.tube):  # the same wall and preparation (a voltage march)
+        key, wall, prep = near._wall.tube, near._wall, near._prep
     else:
+        key = dataclasses.replace(tube, voltage=0.0)
         wall, prep = Wall.build(key, near._wall.nodes), LazyPrepared(key, rtol)
     branch = Branch(wall, "pressure", vbar=tube.voltage)
     force = tube.control == "force"
-    u = np.array([near.r_i, near.stretch] if force else [near.r_i])
     dp = tube.inner_pressure - tube.outer_pressure
+    for start in ([] if guess is None else [guess]) + [(near.r_i, near.stretch)]:
+        u = np.array(start if force else start[:1], float)
+        out = _newton(tube, near, branch, wall, u, dp, force)
+        if out is not None:
+            return (key, wall, prep, *out)
+    return None
+
+
+def _newton(tube, near, branch, wall, u, dp, force):
+    """(r_i, lambda_z, c) by Newton from u, or None (module docstring: the checks)."""
     for _ in range(MAX_ITER):
         F, J = _system(branch, u, dp, force)
         if not (np.all(np.isfinite(F)) and np.all(np.isfinite(J))):
@@ -99,7 +110,7 @@ def continued(tube: Tube, near, rtol: float):
             step = np.linalg.solve(J, -F)
         except np.linalg.LinAlgError:
             return None
-        u = u + step
+        last, u = u, u + step
         # converged once a step is below CONVERGED: the Jacobian's relative error (~1e-7)
         # and the curvature make the next step smaller than rounding
         if not np.all(abs(step) <= CONVERGED * abs(u)):
@@ -109,11 +120,27 @@ def continued(tube: Tube, near, rtol: float):
             force and abs(lz - near.stretch) > JUMP * near.stretch
         ):
             return None
-        if not _rising(wall, tube, x, lz, J, force):
+        if not _rising(wall, tube, last, F, J, dp, force):
             return None
-        c = float(branch.point([x], [lz])["charge"][0])
-        return key, wall, prep, x, lz, c
+        if wall.ideal:  # c = V / Lambda, as Branch.point has it, without the integrals
+            thick = tube.outer_radius - 1.0
+            c = tube.voltage * thick / float(wall.electric(np.array([x]), np.array([lz]))[1][0])
+        else:
+            c = float(branch.point([x], [lz])["charge"][0])
+        return x, lz, c
     return None
+
+
+def _same_wall(tube: Tube, key: Tube) -> bool:
+    """Is ``key`` (a tube at voltage 0) ``tube`` without its voltage? (No new Tube built.)"""
+    return (
+        tube.layers == key.layers
+        and all(
+            getattr(tube, f) == getattr(key, f)
+            for f in ("length", "stretch", "axial_force", "inner_pressure", "outer_pressure")
+        )
+        and tube.closed_ends == key.closed_ends
+    )
 
 
 def _system(branch: Branch, u, dp: float, force: bool):
@@ -128,20 +155,20 @@ def _system(branch: Branch, u, dp: float, force: bool):
     return res[:, 0], (res[:, 1:] - res[:, :1]) / h
 
 
-def _rising(wall: Wall, tube: Tube, x: float, lz: float, J, force: bool) -> bool:
-    """Does the load of the last loading stage rise with r_i at (x, lz)? J: d(dp, N)/d(r_i,
-    lambda_z) at fixed Vbar."""
+def _rising(wall: Wall, tube: Tube, u, F, J, dp: float, force: bool) -> bool:
+    """Does the load of the last loading stage rise with r_i at u (the last iterate, F and J
+    the residuals and their Jacobian d(dp, N)/d(r_i, lambda_z) there at fixed Vbar)?"""
     vbar = tube.voltage
     if vbar == 0:  # the pressure branch at V = 0 (or the unloaded state): dP_i / dr_i
         if not force:
-            return J[0, 0] > 0
+            return bool(J[0, 0] > 0)
         lz_x = -J[1, 0] / J[1, 1]
-        return J[0, 0] + J[0, 1] * lz_x > 0
+        return bool(J[0, 0] + J[0, 1] * lz_x > 0)
     # the voltage branch at fixed P_i - P_o: F(r_i, lambda_z, Vbar) = const along it
     hv = _H * vbar
-    up = Branch(wall, "pressure", vbar=vbar + hv).point([x], [lz])
-    at = Branch(wall, "pressure", vbar=vbar).point([x], [lz])
-    F_v = np.array([up["dp"][0] - at["dp"][0], up["residual"][0] - at["residual"][0]]) / hv
+    lz = u[1] if force else tube.stretch
+    up = Branch(wall, "pressure", vbar=vbar + hv).point([u[0]], [lz])
+    F_v = (np.array([up["dp"][0] - dp, up["residual"][0]])[: len(u)] - F) / hv
     if not force:
         return bool(-J[0, 0] / F_v[0] > 0)
     A = np.array([[J[0, 1], F_v[0]], [J[1, 1], F_v[1]]])

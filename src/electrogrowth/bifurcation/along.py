@@ -38,16 +38,21 @@ class Neighbours:
         return (Neighbours, ())
 
     def nearest(self, x: float, rtol: float):
-        best = (
-            min(
-                (abs(x - xs), -k, s)
-                for k, (xs, r, s) in enumerate(self.states)
-                if r == rtol and math.isfinite(xs)
-            )
-            if self.states
-            else None
+        """(the state nearest to x, Newton's start (r_i, lambda_z) extrapolated linearly
+        from the two nearest), (None, None) when there is none, guess None from one."""
+        known = sorted(
+            (abs(x - xs), -k, xs)
+            for k, (xs, r, _) in enumerate(self.states)
+            if r == rtol and math.isfinite(xs)
         )
-        return None if best is None else best[2]
+        if not known:
+            return None, None
+        s1, x1 = self.states[-known[0][1]][2], known[0][2]
+        if len(known) < 2 or known[1][2] == x1:
+            return s1, None
+        s2, x2 = self.states[-known[1][1]][2], known[1][2]
+        t = (x - x1) / (x1 - x2)
+        return s1, (s1.r_i + t * (s1.r_i - s2.r_i), s1.stretch + t * (s1.stretch - s2.stretch))
 
     def keep(self, x: float, rtol: float, state) -> None:
         self.states.append((x, rtol, state))
@@ -76,7 +81,8 @@ class TubeAt:
         if tube.is_uniform:
             return solve_base_state(tube, rtol=rtol)
         x = float(x)
-        state = solve_base_state(tube, rtol=rtol, near=self.neighbours.nearest(x, rtol))
+        near, guess = self.neighbours.nearest(x, rtol)
+        state = solve_base_state(tube, rtol=rtol, near=near, guess=guess)
         self.neighbours.keep(x, rtol, state)
         return state
 
