@@ -28,6 +28,7 @@ import numpy as np
 
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.bifurcation.march import first_bifurcations, unloaded_signs
+from electrogrowth.bifurcation.problem import as_problem
 from electrogrowth.bifurcation.scan import scan_grid, scan_modes
 from electrogrowth.incremental.accuracy import SCAN_SIGNS, SCAN_STABLE_SIGNS
 from electrogrowth.incremental.targets import (
@@ -95,7 +96,9 @@ def _timed(fn):
 
 
 def march(tube, solve_for, side, method: str):
-    """The mode march over GRID with ``method``'s targets, stable signs included."""
+    """The mode march over GRID with ``method``'s targets, stable signs included, on the
+    side the scan takes (the control's default side when ``side`` is None)."""
+    side = as_problem(tube, solve_for, side=side).side
     if method == "impedance":
         loose, fine = ImpedanceTarget(SCAN_SIGNS), ImpedanceTarget(1e-12)
         signs = unloaded_signs(tube, GRID, ImpedanceTarget(SCAN_STABLE_SIGNS))
