@@ -215,9 +215,8 @@ def write_markdown(path: Path, text: str) -> None:
     if begin in doc:
         doc = re.sub(re.escape(begin) + ".*?" + re.escape(end), lambda _: block, doc, flags=re.S)
     else:
-        doc = (
-            doc.rstrip("\n") + "\n\n## Same-process A/B against a base revision\n\n" + block + "\n"
-        )
+        title = "## A/B against a base revision (`make bench-ab`)"
+        doc = doc.rstrip("\n") + f"\n\n{title}\n\n{block}\n"
     path.write_text(doc)
 
 

@@ -21,8 +21,11 @@ limit at 1e-13). Then: one critical mode in a warm process, the first critical v
 fresh process, every paper figure and the whole ``electrogrowth reproduce`` (a child
 process under resource accounting: peak memory), and the sweep throughput serial / local
 pool / dask LocalCluster (sweep_bench.py). Results go to benchmarks/results.json and the
-tables between the markers of BENCHMARKS.md. ``--quick``: three small points, no figures,
-no sweep (checks that the script runs).
+tables between the markers of BENCHMARKS.md. The layered points (layered_bench.py: a
+mucosal bilayer, a thin stiff film, three layers, a pressurised and a force-controlled tube,
+the collocation peer run on four) follow; ``--layered`` runs only those (their table
+between the layered markers). ``--quick``: three small points, no figures, no sweep
+(checks that the script runs).
 """
 
 from __future__ import annotations
@@ -54,6 +57,7 @@ from electrogrowth.model.materials import gent
 
 sys.path.insert(0, os.path.dirname(__file__))
 import baseline  # noqa: E402
+import layered_bench  # noqa: E402
 
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
@@ -368,8 +372,8 @@ def tables(results) -> str:
     return "\n".join(lines)
 
 
-def write_markdown(text: str, path: Path) -> None:
-    begin, end = "<!-- bench:begin -->", "<!-- bench:end -->"
+def write_markdown(text: str, path: Path, which: str = "bench") -> None:
+    begin, end = f"<!-- {which}:begin -->", f"<!-- {which}:end -->"
     doc = path.read_text()
     if begin in doc and end in doc:
         doc = doc[: doc.index(begin) + len(begin)] + "\n" + text + "\n" + doc[doc.index(end) :]
@@ -381,6 +385,7 @@ def write_markdown(text: str, path: Path) -> None:
 def main(argv=None) -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="three small points, no figures")
+    ap.add_argument("--layered", action="store_true", help="only the layered points")
     ap.add_argument("--out", type=Path, default=HERE / "results.json")
     ap.add_argument("--markdown", type=Path, default=ROOT / "BENCHMARKS.md")
     args = ap.parse_args(argv)
@@ -395,6 +400,9 @@ def main(argv=None) -> None:
         "quick": args.quick,
     }
     critical_value(P(1.4, 1.0, voltage=0.4), 0, 1, "growth")  # load the compiled kernels
+    if args.layered:
+        results["layered"] = layered(results, args)
+        return
     options, cases = (QUICK, QUICK_CASES) if args.quick else (FULL, CASES)
     other = {}
     results["other"] = other
@@ -434,6 +442,35 @@ def main(argv=None) -> None:
     print(text)
     if not args.quick:
         write_markdown(text, args.markdown)
+        layered(results, args)
+
+
+def layered(results, args) -> list:
+    """The layered points (layered_bench.py), their results in ``layered`` of the results
+    file (of results_layered.json with ``--layered``) and their table in BENCHMARKS.md."""
+    rows = results.setdefault("layered", [])
+    out = args.out.with_name("results_layered.json") if args.layered else args.out
+    for case in layered_bench.LAYERED_CASES:
+        try:
+            rows.append(layered_bench.bench_layered(*case))
+        except Exception as exc:  # noqa: BLE001 -- a failing point is a result too
+            rows.append({"name": case[0], "failed": f"{type(exc).__name__}: {exc}"})
+        results["load_average_end"] = os.getloadavg()[0]
+        out.write_text(json.dumps(results, indent=1, default=str))
+    done = [r for r in rows if "failed" not in r]
+    text = "\n".join(
+        [
+            f"Measured {results['date']} on {results['machine']}; {results['note']}, load"
+            f" average {results['load_average_end']:.1f} at the end",
+            "",
+            layered_bench.layered_table(done),
+        ]
+        + [f"\n{r['name']}: failed: {r['failed']}" for r in rows if "failed" in r]
+    )
+    print(text)
+    if not args.quick:
+        write_markdown(text, args.markdown, "layered")
+    return rows
 
 
 if __name__ == "__main__":

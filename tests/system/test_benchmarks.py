@@ -44,3 +44,39 @@ def test_bench_case_at_tiny_size():
 def test_figure_comparison_of_the_committed_figures_with_themselves(capsys):
     assert compare_figures.compare(ROOT / "docs/figures", ROOT / "docs/figures")
     assert "fig9.csv: 60 rows" in capsys.readouterr().out
+
+
+@pytest.mark.slow  # the peer's collocation march: ~15 s idle, minutes on a loaded machine
+def test_layered_march_head_to_head_at_tiny_size(monkeypatch):
+    """The layered points' march, ours and the collocation peer's, on two modes: the same
+    first mode and value (to the peer's accuracy); the table prints the row."""
+    import numpy as np
+
+    layered_bench = pytest.importorskip("layered_bench")
+    monkeypatch.setattr(layered_bench, "GRID", np.array([[2.0, 0.0, 1.0], [3.0, 0.0, 1.0]]))
+    tube = layered_bench.PRESSURISED
+    ours = layered_bench.march(tube, "pressure", None, "impedance")
+    peer = layered_bench.march(tube, "pressure", None, "collocation")
+    assert (ours.m, ours.n) == (peer.m, peer.n)
+    assert peer.value == pytest.approx(ours.value, rel=1e-8)
+    row = {
+        "name": "tiny",
+        "kind": "bifurcation",
+        "mode": [ours.m, ours.n],
+        "family": ours.family,
+        "value": ours.value,
+        "scan_seconds": 1.0,
+        "scan_cpu_seconds": 1.0,
+        "scan_error": 1e-14,
+        "march": {
+            "modes": 2,
+            "mode": [ours.m, ours.n],
+            "seconds": 0.1,
+            "cpu_seconds": 0.1,
+            "peer_seconds": 10.0,
+            "peer_cpu_seconds": 10.0,
+            "error": 1e-14,
+            "peer_error": 1e-11,
+        },
+    }
+    assert "| 100x (100x) |" in layered_bench.layered_table([row])

@@ -27,6 +27,7 @@ from ..labelled import layered_state_dataset
 from ..model.layers import Layer, Tube
 from .branches import Branch, Threshold, clean, prepare, solve_on, threshold
 from .plies import ORDERS, Wall, chebyshev
+from .warm import continued
 
 __all__ = [
     "LayeredState",
@@ -41,13 +42,18 @@ __all__ = [
 # -- entry points -------------------------------------------------------------------------------
 
 
-def solve_layered_state(tube: Tube, *, rtol: float = 1e-12) -> LayeredState:
+def solve_layered_state(tube: Tube, *, rtol: float = 1e-12, near=None, guess=None) -> LayeredState:
     """The axisymmetric base state of a layered tube at its loads.
 
     Reached from the unloaded state (V = 0, P_i = P_o) by raising the inner pressure to P_i at
     V = 0 (pressure branch), then the voltage to Vbar (voltage branch), each followed in r_i.
     Solves (*) = P_i - P_o and int E_r dr = Vbar (R_N - 1) for (r_i, c), and under force control
     the axial balance for lambda_z.
+
+    ``near``, the solved state of a neighbouring tube (a march's previous step), is the
+    start of Newton's method instead (:mod:`.warm`: the same root, checked to be on the same
+    branch before its threshold), or ``guess`` = (r_i, lambda_z) when given (extrapolated
+    from two neighbours); where that fails, the walk from the unloaded state.
 
     Raises
     ------
@@ -59,6 +65,11 @@ def solve_layered_state(tube: Tube, *, rtol: float = 1e-12) -> LayeredState:
     >>> round(state.lambda_i, 6), state.threshold_kind
     (1.151387, 'asymptote')
     """
+    if near is not None and (warm := continued(tube, near, rtol, guess)) is not None:
+        _, wall, prep, x, lz, c = warm
+        state = LayeredState._build(tube, wall, prep, x, lz, c, rtol)
+        if state.quadrature_error <= max(rtol, 1e-14):
+            return state
     key = dataclasses.replace(tube, voltage=0.0)
     nodes = None
     for _ in range(len(ORDERS)):
@@ -82,7 +93,7 @@ def solve_layered_state(tube: Tube, *, rtol: float = 1e-12) -> LayeredState:
         # c from the voltage, c = V / Lambda for ideal dielectrics (from (*) it would carry
         # the cancellation of T - (P_i - P_o) near the start, amplified by the square root)
         pt = Branch(prep.wall, "pressure", vbar=tube.voltage).point([x], [lz])
-        state = LayeredState._build(tube, prep, x, lz, float(pt["charge"][0]), rtol)
+        state = LayeredState._build(tube, prep.wall, prep, x, lz, float(pt["charge"][0]), rtol)
         if state.quadrature_error <= max(rtol, 1e-14):
             return state
         nodes = ORDERS[min(ORDERS.index(prep.wall.nodes) + 2, len(ORDERS) - 1)]
@@ -213,11 +224,10 @@ class LayeredState:
         return self._prep.voltage.lambda_i
 
     @classmethod
-    def _build(cls, tube, prep, x, lz, c, rtol) -> LayeredState:
+    def _build(cls, tube, wall, prep, x, lz, c, rtol) -> LayeredState:
         """Chebyshev interpolants per layer (degree doubled until the tail < 1e-2 rtol) of the
         integrands of sigma_rr, its scale, V and Nint: a quadrature independent of the Gauss one
         that fixed (r_i, c, lambda_z)."""
-        wall = prep.wall
         sigma, s_a, totals = [], -tube.inner_pressure, np.zeros(3)
         for ply in wall.plies:
 
@@ -309,32 +319,38 @@ class LayeredState:
             np.array(radii[1:-1]), R, side="right" if side == "outer" else "left"
         )
         out: dict = {}
-        for k, ply in enumerate(self._wall.plies):
+        for k in range(len(self._wall.plies)):
             mask = which == k
             if not mask.any():
                 continue
-            Rk = np.clip(R[mask], ply.a, ply.b)
-            g = ply.layer.growth_at(Rk)
-            r, _, ls, d = ply.kinematics(Rk, g, ply.G(Rk), self.r_i, self.stretch, self.charge)
-            antider, s_a = self._sigma[k]
-            vals = {
-                "r": r,
-                "l1": ls[0],
-                "l2": ls[1],
-                "l3": ls[2],
-                "d": d,
-                "E": ply.field(*ls, d),
-                "sigma_rr": s_a + antider(Rk),
-            }
-            vals.update(zip(("tau1", "tau2", "tau3"), ply.stress(*ls, d)))
-            vals["g_r"], vals["g_theta"], vals["g_z"] = g
-            if moduli:
-                vals["moduli"] = ply.moduli(*ls, d)
-            for key, v in vals.items():
+            for key, v in self.layer_fields(R[mask], k, moduli).items():
                 if key not in out:
                     out[key] = np.zeros(R.shape + np.shape(v)[1:])
                 out[key][mask] = v
         return out
+
+    def layer_fields(self, R, k: int, moduli: bool = False) -> dict:
+        """The fields of layer k (0-based) at reference radii R inside it (1-d array): r,
+        l1, l2, l3, d, E, sigma_rr, tau1..3, g_r, g_theta, g_z (and the moduli)."""
+        ply = self._wall.plies[k]
+        Rk = np.clip(R, ply.a, ply.b)
+        g = ply.layer.growth_at(Rk)
+        r, _, ls, d = ply.kinematics(Rk, g, ply.G(Rk), self.r_i, self.stretch, self.charge)
+        antider, s_a = self._sigma[k]
+        vals = {
+            "r": r,
+            "l1": ls[0],
+            "l2": ls[1],
+            "l3": ls[2],
+            "d": d,
+            "E": ply.field(*ls, d),
+            "sigma_rr": s_a + antider(Rk),
+        }
+        vals.update(zip(("tau1", "tau2", "tau3"), ply.stress(*ls, d)))
+        vals["g_r"], vals["g_theta"], vals["g_z"] = g
+        if moduli:
+            vals["moduli"] = ply.moduli(*ls, d)
+        return vals
 
     def radius(self, R, *, side: str = "outer") -> np.ndarray:
         """r(R) = sqrt(r_i^2 + 2 G(R) / lambda_z)."""

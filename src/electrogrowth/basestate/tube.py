@@ -17,7 +17,7 @@ from .._types import State
 from ..errors import BaseStateError, ParameterError
 from ..model.layers import Tube
 from .branches import Threshold
-from .layered import layered_threshold, solve_layered_state
+from .layered import LayeredState, layered_threshold, solve_layered_state
 from .uniform import solve_uniform
 from .voltage import UniformWall, nh_asymptote, nh_voltage, threshold_info
 
@@ -49,7 +49,9 @@ def voltage_threshold(params: Tube) -> tuple[float, str, float]:
     return t.value, t.kind, t.lambda_i
 
 
-def solve_base_state(tube: Tube, *, rtol: float = 1e-12) -> State:
+def solve_base_state(
+    tube: Tube, *, rtol: float = 1e-12, near: State | None = None, guess=None
+) -> State:
     """Solve the axisymmetric base state of ``tube`` at its loads (paper Sec. 3.1).
 
     Parameters
@@ -59,6 +61,13 @@ def solve_base_state(tube: Tube, *, rtol: float = 1e-12) -> State:
     rtol : float, keyword-only
         Relative accuracy of quadratures and root finding (default 1e-12); the neo-Hookean
         closed form is always at rounding level.
+    near : State or None, keyword-only
+        The solved state of a neighbouring tube (a march's last step): a layered state is
+        then continued from it by Newton's method, the same root as the walk from the
+        unloaded tube (basestate/warm.py), which is the fallback. Ignored for a uniform tube.
+    guess : (float, float) or None, keyword-only
+        With ``near``: Newton's start (r_i, lambda_z) instead of near's own (e.g. extrapolated
+        from two neighbours).
 
     Returns
     -------
@@ -77,7 +86,8 @@ def solve_base_state(tube: Tube, *, rtol: float = 1e-12) -> State:
     """
     if tube.is_uniform:
         return solve_uniform(tube, rtol)
-    return solve_layered_state(tube, rtol=rtol)
+    warm = near if isinstance(near, LayeredState) else None
+    return solve_layered_state(tube, rtol=rtol, near=warm, guess=guess if warm else None)
 
 
 def threshold(tube: Tube, control: str = "voltage", *, rtol: float = 1e-12) -> Threshold:

@@ -24,27 +24,78 @@ from ..errors import BaseStateError
 from ..model.layers import Tube
 
 
+class Neighbours:
+    """The last few base states solved along one path, by control value: each new state is
+    continued from the nearest of them (solve_base_state's ``near``). Not pickled: a copy
+    shipped to another process starts empty."""
+
+    KEEP = 6
+
+    def __init__(self):
+        self.states: list = []  # (x, rtol, state), the newest last
+
+    def __reduce__(self):
+        return (Neighbours, ())
+
+    def nearest(self, x: float, rtol: float):
+        """(the state nearest to x, Newton's start (r_i, lambda_z) extrapolated linearly
+        from the two nearest), (None, None) when there is none, guess None from one."""
+        known = sorted(
+            (abs(x - xs), -k, xs)
+            for k, (xs, r, _) in enumerate(self.states)
+            if r == rtol and math.isfinite(xs)
+        )
+        if not known:
+            return None, None
+        s1, x1 = self.states[-known[0][1]][2], known[0][2]
+        if len(known) < 2 or known[1][2] == x1:
+            return s1, None
+        s2, x2 = self.states[-known[1][1]][2], known[1][2]
+        t = (x - x1) / (x1 - x2)
+        return s1, (s1.r_i + t * (s1.r_i - s2.r_i), s1.stretch + t * (s1.stretch - s2.stretch))
+
+    def keep(self, x: float, rtol: float, state) -> None:
+        self.states.append((x, rtol, state))
+        del self.states[: -self.KEEP]
+
+
 @dataclasses.dataclass(frozen=True)
 class TubeAt:
-    """The tube with its control ``control`` set to x (``tube.at(control, x)``)."""
+    """The tube with its control ``control`` set to x (``tube.at(control, x)``), and its
+    base state there (:meth:`state`), continued from the nearest state solved before."""
 
     tube: Tube
     control: str
     as_float: bool = False  # convert x to float first (the short-wave march's probes)
+    neighbours: Neighbours = dataclasses.field(
+        default_factory=Neighbours, compare=False, repr=False
+    )
 
     def __call__(self, x) -> Tube:
         return self.tube.at(self.control, float(x) if self.as_float else x)
 
+    def state(self, x, rtol: float = 1e-12):
+        """``solve_base_state(self(x), rtol=rtol)``, started from the nearest state this path
+        has solved (the same root: basestate/warm.py)."""
+        tube = self(x)
+        if tube.is_uniform:
+            return solve_base_state(tube, rtol=rtol)
+        x = float(x)
+        near, guess = self.neighbours.nearest(x, rtol)
+        state = solve_base_state(tube, rtol=rtol, near=near, guess=guess)
+        self.neighbours.keep(x, rtol, state)
+        return state
+
 
 @dataclasses.dataclass(frozen=True)
 class StateAt:
-    """The base state at x: ``solve_base_state(at(x), rtol=rtol)``."""
+    """The base state at x: ``solve_base_state(at(x), rtol=rtol)`` (``at.state``)."""
 
     at: TubeAt
     rtol: float
 
     def __call__(self, x):
-        return solve_base_state(self.at(x), rtol=self.rtol)
+        return self.at.state(x, self.rtol)
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -59,11 +110,11 @@ class Signed:
 
     def __call__(self, x, idx) -> np.ndarray:
         """Signed targets of the rows ``idx`` at x (one base state for them all)."""
-        return self.signs[idx] * self.target(solve_base_state(self.at(x)), self.modes[idx])
+        return self.signs[idx] * self.target(self.at.state(x), self.modes[idx])
 
     def one(self, x, i) -> float:
         """Signed target of row i at x."""
-        return float(self.signs[i] * self.target(solve_base_state(self.at(x)), self.modes[[i]])[0])
+        return float(self.signs[i] * self.target(self.at.state(x), self.modes[[i]])[0])
 
     def row(self, i: int) -> SignedRow:
         """Row i alone, a function of x."""
@@ -92,7 +143,7 @@ class SignedMode:
     sign: float
 
     def __call__(self, x) -> float:
-        return self.sign * float(self.target(solve_base_state(self.at(x)), self.mode)[0])
+        return self.sign * float(self.target(self.at.state(x), self.mode)[0])
 
 
 @dataclasses.dataclass(frozen=True)

@@ -115,7 +115,7 @@ def first_bifurcations(
     sref = stable_signs
     path = ControlPath(*control_path(params, solve_for, side))
     x0, sense = path.start, path.sense
-    state = solve_base_state(at(x0))
+    state = at.state(x0)
     g0 = sref * targets(state, modes)
     doubt = np.nonzero(g0 <= 0)[0]
     if doubt.size and brent_targets is not None:  # a loose sign may be wrong: ask again
@@ -139,7 +139,7 @@ def first_bifurcations(
         if not done:
             x = step.propose()
             try:
-                state = solve_base_state(at(x))
+                state = at.state(x)
             except BaseStateError:
                 threshold = _threshold_between(at, params, step.x, x)
                 step.lost(threshold)

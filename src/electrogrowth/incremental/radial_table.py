@@ -129,17 +129,23 @@ def _segments(state, mu: float, eps: float):
     units = _column_units(mu, eps)
     unit = mu == 1.0 and eps == 1.0  # the reference modulus and permittivity: no division
 
-    def values(R, layer):
-        r = state.radius(R)
+    layered = hasattr(state, "layer_fields")  # a LayeredState: one layer's fields at once
+
+    def values(R, k, layer):
+        if layered:  # r, the moduli and p from one evaluation of the layer's fields
+            f = state.layer_fields(R, k, moduli=True)
+            r, moduli, p = f["r"], f["moduli"], f["tau1"] - f["sigma_rr"]
+        else:
+            r, moduli, p = state.radius(R), state.moduli(R), state.pressure(R)
         # J = det F_g: a constant layer's product once (the same floating-point product)
         J = np.prod(layer.growth_at(R), axis=0) if layer.graded else math.prod(layer.growth)
         w = J * R / (state.stretch * r * r)
-        out = np.column_stack([state.moduli(R), state.pressure(R), r, w])
+        out = np.column_stack([moduli, p, r, w])
         return out if unit else out / units
 
     return [
-        (a, b, lambda R, layer=layer: values(R, layer))
-        for a, b, layer in zip(radii, radii[1:], tube.layers)
+        (a, b, lambda R, k=k, layer=layer: values(R, k, layer))
+        for k, (a, b, layer) in enumerate(zip(radii, radii[1:], tube.layers))
     ]
 
 

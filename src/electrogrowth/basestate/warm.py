@@ -1,0 +1,179 @@
+"""A layered base state continued from a neighbouring one (docs/derivation-layered.md,
+"Continuation along a march").
+
+Along a march the tube changes a little from one step to the next, and so does its state.
+Instead of walking the loading branches again from the unloaded tube
+(:func:`.layered.solve_layered_state`), the unknowns of the neighbour's state (r_i, and
+lambda_z under force control) are the start of Newton's method on the same equations the
+walk ends with: on the pressure branch at the tube's voltage (the charge c fixed by the
+voltage, :class:`.branches.Branch`),
+
+    T(r_i, lambda_z, c) - (P_i - P_o) = 0,     [ N(r_i, lambda_z, c) - N_applied = 0 ],
+
+with a forward-difference Jacobian (all perturbed points in one vectorised evaluation). The
+root is accepted only if it is the walk's root, i.e. on the same branch as the neighbour and
+before that branch's threshold:
+
+* Newton converged (a step below ``CONVERGED`` within ``MAX_ITER`` iterations);
+* continuity: r_i (and lambda_z under force control) moved by at most ``JUMP`` (relative)
+  from the neighbour's;
+* the load of the last loading stage rises along its branch at the root, as it does on the
+  whole walked part of a branch before its threshold: d Vbar / d r_i > 0 on the voltage
+  branch (P_i - P_o fixed) when Vbar > 0, else d P_i / d r_i > 0 on the pressure branch at
+  V = 0 (for both directions of the pressure); beyond a limit point the continued root has
+  the opposite slope, beyond an asymptote or a locking stretch Newton does not converge;
+* the independent Chebyshev quadrature of the state agrees with the Gauss rule of the
+  neighbour's node count (``quadrature_error`` <= rtol, as for every state).
+
+Otherwise None is returned and the caller walks from the unloaded tube (the cold solve),
+which also raises for a load beyond its threshold. What the local checks cannot see is a
+fold pair born strictly between the start of the branch and the root within one step (a
+cusp of the branch); the march's step (a few per cent) bounds how far such a pair could be
+from the neighbour's state. The thresholds of a continued state (``voltage_threshold``...)
+are walked from the unloaded tube when first asked for, as for every state.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import math
+
+import numpy as np
+
+from ..model.layers import Tube
+from .branches import Branch, prepare
+from .plies import Wall
+
+#: Newton iterations before the warm start gives up
+MAX_ITER = 12
+#: the largest relative change of r_i (and of lambda_z under force control) from the
+#: neighbour's state
+JUMP = 0.1
+#: the relative Newton step after which the iterate is the root to rounding (the next step,
+#: ~ 1e-7 CONVERGED + C CONVERGED^2 for curvature C, is below an ulp)
+CONVERGED = 1e-10
+#: relative forward-difference step of the Jacobian
+_H = 1e-7
+
+
+@dataclasses.dataclass(frozen=True)
+class LazyPrepared:
+    """The cold preparation of ``tube`` (voltage 0), made only when a threshold is asked
+    for (a continued state has no walked branch of its own)."""
+
+    tube: Tube
+    rtol: float
+
+    @functools.cached_property
+    def voltage(self):
+        return prepare(self.tube, self.rtol).voltage
+
+
+def continued(tube: Tube, near, rtol: float, guess=None):
+    """(key, wall, prep, r_i, lambda_z, c) of ``tube``'s state continued from the solved
+    state ``near`` of a neighbouring tube, or None where that is not the walk's root (see
+    the module docstring). ``guess``: a better Newton start (r_i, lambda_z) than the
+    neighbour's own, e.g. extrapolated from two neighbours (the checks still compare with
+    ``near``)."""
+    old = near.tube
+    if (
+        near._wall is None
+        or len(old.layers) != len(tube.layers)
+        or old.control != tube.control
+        or any(a.material != b.material for a, b in zip(old.layers, tube.layers))
+    ):
+        return None
+    if _same_wall(tube, near._wall.tube):  # the same wall and preparation (a voltage march)
+        key, wall, prep = near._wall.tube, near._wall, near._prep
+    else:
+        key = dataclasses.replace(tube, voltage=0.0)
+        wall, prep = Wall.build(key, near._wall.nodes), LazyPrepared(key, rtol)
+    branch = Branch(wall, "pressure", vbar=tube.voltage)
+    force = tube.control == "force"
+    dp = tube.inner_pressure - tube.outer_pressure
+    for start in ([] if guess is None else [guess]) + [(near.r_i, near.stretch)]:
+        u = np.array(start if force else start[:1], float)
+        out = _newton(tube, near, branch, wall, u, dp, force)
+        if out is not None:
+            return (key, wall, prep, *out)
+    return None
+
+
+def _newton(tube, near, branch, wall, u, dp, force):
+    """(r_i, lambda_z, c) by Newton from u, or None (module docstring: the checks)."""
+    for _ in range(MAX_ITER):
+        F, J = _system(branch, u, dp, force)
+        if not (np.all(np.isfinite(F)) and np.all(np.isfinite(J))):
+            return None
+        try:
+            step = np.linalg.solve(J, -F)
+        except np.linalg.LinAlgError:
+            return None
+        last, u = u, u + step
+        # converged once a step is below CONVERGED: the Jacobian's relative error (~1e-7)
+        # and the curvature make the next step smaller than rounding
+        if not np.all(abs(step) <= CONVERGED * abs(u)):
+            continue
+        x, lz = float(u[0]), float(u[1]) if force else tube.stretch
+        if abs(x - near.r_i) > JUMP * near.r_i or (
+            force and abs(lz - near.stretch) > JUMP * near.stretch
+        ):
+            return None
+        if not _rising(wall, tube, last, F, J, dp, force):
+            return None
+        if wall.ideal:  # c = V / Lambda, as Branch.point has it, without the integrals
+            thick = tube.outer_radius - 1.0
+            c = tube.voltage * thick / float(wall.electric(np.array([x]), np.array([lz]))[1][0])
+        else:
+            c = float(branch.point([x], [lz])["charge"][0])
+        return x, lz, c
+    return None
+
+
+def _same_wall(tube: Tube, key: Tube) -> bool:
+    """Is ``key`` (a tube at voltage 0) ``tube`` without its voltage? (No new Tube built.)"""
+    return (
+        tube.layers == key.layers
+        and all(
+            getattr(tube, f) == getattr(key, f)
+            for f in ("length", "stretch", "axial_force", "inner_pressure", "outer_pressure")
+        )
+        and tube.closed_ends == key.closed_ends
+    )
+
+
+def _system(branch: Branch, u, dp: float, force: bool):
+    """Residuals F(u) and their forward-difference Jacobian J, u = (r_i[, lambda_z])."""
+    n = len(u)
+    pts = np.tile(u, (n + 1, 1))
+    h = _H * abs(u)
+    pts[np.arange(1, n + 1), np.arange(n)] += h
+    lz = pts[:, 1] if force else np.full(n + 1, branch.wall.tube.stretch)
+    pt = branch.point(pts[:, 0], lz)
+    res = np.stack([pt["dp"] - dp, pt["residual"]])[:n]  # (equations, points)
+    return res[:, 0], (res[:, 1:] - res[:, :1]) / h
+
+
+def _rising(wall: Wall, tube: Tube, u, F, J, dp: float, force: bool) -> bool:
+    """Does the load of the last loading stage rise with r_i at u (the last iterate, F and J
+    the residuals and their Jacobian d(dp, N)/d(r_i, lambda_z) there at fixed Vbar)?"""
+    vbar = tube.voltage
+    if vbar == 0:  # the pressure branch at V = 0 (or the unloaded state): dP_i / dr_i
+        if not force:
+            return bool(J[0, 0] > 0)
+        lz_x = -J[1, 0] / J[1, 1]
+        return bool(J[0, 0] + J[0, 1] * lz_x > 0)
+    # the voltage branch at fixed P_i - P_o: F(r_i, lambda_z, Vbar) = const along it
+    hv = _H * vbar
+    lz = u[1] if force else tube.stretch
+    up = Branch(wall, "pressure", vbar=vbar + hv).point([u[0]], [lz])
+    F_v = (np.array([up["dp"][0] - dp, up["residual"][0]])[: len(u)] - F) / hv
+    if not force:
+        return bool(-J[0, 0] / F_v[0] > 0)
+    A = np.array([[J[0, 1], F_v[0]], [J[1, 1], F_v[1]]])
+    try:
+        _, v_x = np.linalg.solve(A, -J[:, 0])
+    except np.linalg.LinAlgError:
+        return False
+    return bool(v_x > 0 and math.isfinite(v_x))

@@ -1,0 +1,114 @@
+"""A layered state continued from its neighbour (basestate/warm.py) is the walk's state.
+
+The independent route is the cold solve: the walk from the unloaded tube along the loading
+branches and Brent's method (basestate/branches.py). Along a march of each control, every
+continued state must be the cold state to 1e-12, and the continuation must really be taken
+(not its fallback); past a threshold it must refuse, so the cold solve raises.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from electrogrowth.basestate import warm
+from electrogrowth.basestate.layered import solve_layered_state
+from electrogrowth.errors import BaseStateError
+from electrogrowth.model.layers import Layer, Tube
+from electrogrowth.model.materials import gent, mooney_rivlin
+
+MUCOSA = Tube(
+    (Layer(1.1, shear_modulus=10.0, growth=(1.0, 1.2, 1.0)), Layer(2.0)),
+    length=3.0,
+    voltage=0.3,
+    inner_pressure=0.05,
+)
+FORCE = Tube(
+    (Layer(1.1, shear_modulus=10.0, growth=(1.0, 1.2, 1.0)), Layer(2.0)),
+    length=3.0,
+    axial_force=0.0,
+    voltage=0.2,
+    closed_ends=True,
+    inner_pressure=0.03,
+)
+STACK = Tube(
+    (
+        Layer(1.05, shear_modulus=20.0, growth=(1.0, 1.15, 1.0)),
+        Layer(1.3, shear_modulus=2.0, material=mooney_rivlin(0.3)),
+        Layer(1.8, shear_modulus=0.5, growth=1.05, material=gent(30.0)),
+    ),
+    length=2.0,
+    voltage=0.2,
+)
+
+#: (tube, control, the control's values along a march)
+MARCHES = [
+    (MUCOSA, "voltage", np.linspace(0.3, 0.6, 13)),
+    (MUCOSA, "growth[1].theta", np.linspace(1.2, 1.6, 13)),
+    (MUCOSA, "pressure", np.linspace(0.05, -0.1, 13)),
+    (MUCOSA, "stretch", np.linspace(1.0, 0.7, 13)),
+    (FORCE, "voltage", np.linspace(0.2, 0.45, 11)),
+    (FORCE, "force", np.linspace(0.0, -1.5, 11)),
+    (STACK, "growth[1].theta", np.linspace(1.15, 1.4, 11)),
+    (STACK, "voltage", np.linspace(0.2, 0.5, 11)),
+]
+
+
+def _close(a, b, tol=1e-12):
+    for key in ("r_i", "stretch", "charge", "r_o", "axial_force"):
+        x, y = getattr(a, key), getattr(b, key)
+        assert abs(x - y) <= tol * max(1.0, abs(y)), (key, x, y)
+
+
+@pytest.mark.parametrize(
+    "tube, control, values", MARCHES, ids=[f"{i}-{m[1]}" for i, m in enumerate(MARCHES)]
+)
+def test_continued_states_are_the_walks_states(tube, control, values):
+    prev = solve_layered_state(tube.at(control, values[0]))
+    for v in values[1:]:
+        t = tube.at(control, v)
+        assert warm.continued(t, prev, 1e-12) is not None, v  # the continuation is taken
+        state = solve_layered_state(t, near=prev)
+        cold = solve_layered_state(t)
+        _close(state, cold)
+        assert state.quadrature_error <= 1e-12
+        # the profiles the tables are built from agree too
+        R = np.linspace(1.0, t.radii[-1], 9)
+        assert np.allclose(state.sigma_rr(R), cold.sigma_rr(R), rtol=0, atol=1e-12)
+        prev = state
+    # a continued state's thresholds are the tube's (walked on demand)
+    assert state.voltage_threshold == pytest.approx(cold.voltage_threshold, rel=1e-12)
+
+
+def test_past_the_voltage_threshold_the_continuation_refuses():
+    """Two identical layers of the paper's tube at g = 1.1 lose the state at the voltage
+    asymptote of its branch: a neighbour just below it continues no state above it."""
+    tube = Tube((Layer(1.2, growth=1.1), Layer(1.4, growth=1.1)), length=1.0)
+    thr = solve_layered_state(tube).voltage_threshold
+    near = solve_layered_state(tube.at("voltage", 0.995 * thr))
+    beyond = tube.at("voltage", 1.005 * thr)
+    assert warm.continued(beyond, near, 1e-12) is None
+    with pytest.raises(BaseStateError):
+        solve_layered_state(beyond, near=near)
+
+
+def test_a_limit_point_is_not_continued_onto_the_falling_side():
+    """Under force control the voltage branch of a free tube has a limit point (a maximum
+    of Vbar): from the rising side just below it, a Vbar above it is refused, and a state
+    continued onto the falling side (from a neighbour there) is never returned."""
+    tube = Tube((Layer(1.3, growth=1.0), Layer(2.5)), length=1.0, axial_force=0.0)
+    thr = solve_layered_state(tube).voltage_threshold
+    assert solve_layered_state(tube).threshold_kind == "limit point"
+    near = solve_layered_state(tube.at("voltage", 0.999 * thr))
+    assert warm.continued(tube.at("voltage", 1.001 * thr), near, 1e-12) is None
+    # a state below the threshold continued from one nearer the threshold: the root on the
+    # rising side, the walk's
+    t = tube.at("voltage", 0.99 * thr)
+    _close(solve_layered_state(t, near=near), solve_layered_state(t))
+
+
+def test_another_tube_is_not_a_neighbour():
+    near = solve_layered_state(MUCOSA)
+    other = Tube((Layer(1.1, growth=1.1), Layer(1.5), Layer(2.0)), voltage=0.3)
+    assert warm.continued(other, near, 1e-12) is None
+    _close(solve_layered_state(other, near=near), solve_layered_state(other))
