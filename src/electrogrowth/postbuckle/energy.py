@@ -44,22 +44,27 @@ def density_expression() -> tuple[sp.Expr, tuple[sp.Symbol, ...], tuple[sp.Symbo
 @functools.cache
 def derivatives():
     """(gradient, hessian): functions of (state (7, ...), params (6, ...)) returning arrays of
-    shape (7, ...) and (7, 7, ...)."""
+    shape (7, ...) and (7, 7, ...); ``gradient.density`` is psi itself."""
     psi, xs, ps = density_expression()
     grad = [sp.diff(psi, x) for x in xs]
     hess = [[sp.diff(g, y) for y in xs] for g in grad]
     g_fun = sp.lambdify(xs + ps, grad, modules="numpy", cse=True)
+    p_fun = sp.lambdify(xs + ps, psi, modules="numpy", cse=True)
     h_fun = sp.lambdify(xs + ps, hess, modules="numpy", cse=True)
 
     def gradient(state, params):
         shape = np.shape(state[0])
         return np.array([np.broadcast_to(v, shape) for v in g_fun(*state, *params)])
 
+    def density(state, params):
+        return np.broadcast_to(p_fun(*state, *params), np.shape(state[0]))
+
     def hessian(state, params):
         shape = np.shape(state[0])
         rows = h_fun(*state, *params)
         return np.array([[np.broadcast_to(v, shape) for v in row] for row in rows])
 
+    gradient.density = density  # type: ignore[attr-defined]
     return gradient, hessian
 
 

@@ -1,0 +1,215 @@
+"""``postbuckle``: from the package's linear onset to the finite-element post-buckled branch
+of one prismatic mode m (plane strain), and its result record."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Callable
+
+import numpy as np
+
+from ..bifurcation.critical import critical_value
+from ..errors import ParameterError
+from ..model.layers import Tube
+from .branch import AmplitudeBranch, BranchPoint, amplitude_vector
+from .newton import newton
+from .onset import fe_onset, start_value
+from .section import MeshSize, Section, mesh_size
+
+#: the amplitudes of the branch's curvature estimate, units R_i (Richardson on a and 2a)
+CURVATURE_AMPLITUDE = 1e-3
+
+
+@dataclasses.dataclass(frozen=True)
+class PostbuckleResult:
+    """The post-buckled branch of mode (m, 0).
+
+    ``onset_linear`` the package's critical value, ``onset_fe`` the sign change of the FE
+    tangent's lowest eigenvalue on the unperturbed path; ``control``, ``amplitude``,
+    ``energy`` the branch (amplitude a: the inner face's cos(m Theta) displacement, units
+    R_i; energy: the whole ring's per unit reference length, units mu R_i^2), ``curvature``
+    d(control) / d(a^2) at onset on the perfect branch; ``imperfection`` the load
+    imperfection's size (0: the perfect bifurcated branch); ``states`` the unknowns of each
+    point, ``section`` the FE model (for shapes and VTK)."""
+
+    tube: Tube
+    solve_for: str
+    m: int
+    onset_linear: float
+    onset_fe: float
+    mesh: MeshSize
+    unknowns: int
+    control: np.ndarray
+    amplitude: np.ndarray
+    energy: np.ndarray
+    curvature: float
+    imperfection: float
+    states: tuple = dataclasses.field(repr=False, compare=False)
+    section: object = dataclasses.field(repr=False, compare=False)
+
+    def as_dict(self) -> dict:
+        """The JSON record."""
+        return {
+            "solve_for": self.solve_for,
+            "m": self.m,
+            "n": 0,
+            "onset_linear": self.onset_linear,
+            "onset_fe": self.onset_fe,
+            "onset_relative_difference": (self.onset_fe - self.onset_linear)
+            / abs(self.onset_linear),
+            "curvature": self.curvature,
+            "imperfection": self.imperfection,
+            "mesh": {
+                "radial_elements": list(self.mesh.radial),
+                "hoop_elements": self.mesh.hoop,
+                "elements": self.mesh.elements,
+                "unknowns": self.unknowns,
+                "sector": f"pi/{self.m}",
+            },
+            "branch": {
+                "control": self.control.tolist(),
+                "amplitude": self.amplitude.tolist(),
+                "energy": self.energy.tolist(),
+            },
+            "tube": self.tube.record(),
+        }
+
+    def to_xarray(self):
+        """The branch as an ``xarray.Dataset`` on dimension ``point``."""
+        import xarray as xr
+
+        return xr.Dataset(
+            {
+                "control": ("point", self.control, {"long_name": self.solve_for}),
+                "energy": ("point", self.energy, {"units": "mu R_i^2"}),
+            },
+            coords={"amplitude": ("point", self.amplitude, {"units": "R_i"})},
+            attrs={
+                "m": self.m,
+                "onset_linear": self.onset_linear,
+                "onset_fe": self.onset_fe,
+                "curvature": self.curvature,
+            },
+        )
+
+
+def postbuckle(
+    tube: Tube,
+    m: int,
+    solve_for: str,
+    *,
+    amplitude: float = 0.05,
+    points: int = 10,
+    density: float = 20.0,
+    hoop: int | None = None,
+    imperfection: float = 0.0,
+    progress: Callable[[str], None] | None = None,
+) -> PostbuckleResult:
+    """The post-buckled branch of the prismatic mode (m, 0) of ``tube`` along ``solve_for``.
+
+    The package's onset (``critical_value(tube, m, 0, solve_for)``) guides the march of the
+    FE model's unperturbed path (:func:`~.onset.fe_onset`) to the sign change of its lowest
+    eigenvalue; the branch is then followed in the fold amplitude a (the inner face's
+    cos(m Theta) radial displacement) in ``points`` equal steps up to ``amplitude``
+    (units R_i), from the onset state plus a times the FE critical mode, with a load
+    imperfection ``imperfection`` mu M z in the shape of that mode (0: the perfect branch).
+
+    Parameters
+    ----------
+    density : float
+        Elements per unit reference length across the wall (at least 2 per layer).
+    hoop : int, optional
+        Elements along the sector pi / m (default from ``density``, at least 4).
+
+    Returns
+    -------
+    PostbuckleResult
+
+    Raises
+    ------
+    ParameterError, NoBifurcationFound, ConvergenceError, Interrupted (with the finished
+    points in ``partial``)
+    """
+    if not (isinstance(m, int) and m >= 2):
+        raise ParameterError(f"m = {m!r} is out of range; valid range: an integer m >= 2")
+    if not (math.isfinite(amplitude) and amplitude > 0):
+        raise ParameterError(f"amplitude = {amplitude!r} is out of range; valid range: > 0")
+    if not (isinstance(points, int) and 1 <= points <= 1000):
+        raise ParameterError(f"points = {points!r} is out of range; valid range: 1 to 1000")
+    if not (math.isfinite(imperfection) and imperfection >= 0):
+        raise ParameterError(f"imperfection = {imperfection!r} is out of range; valid: >= 0")
+    say = progress or (lambda text: None)
+    control = str(tube.check_control(solve_for))
+    say(f"linear onset of mode ({m}, 0)")
+    linear = critical_value(tube, m, 0, control).value
+    size = mesh_size(tube, m, density, hoop=hoop)
+    section = Section(tube, m, size)
+    say(f"finite-element onset on {size.elements} elements ({section.free.size} unknowns)")
+    onset = fe_onset(section, tube, control, linear)
+    a = amplitude_vector(section)
+    mode = onset.mode / (a @ onset.mode)
+    perfect = AmplitudeBranch(section, tube, control)
+    start = BranchPoint(onset.value, 0.0, section.energy(onset.x), onset.x)
+    say("initial curvature of the branch")
+    near = perfect.follow(start, [CURVATURE_AMPLITUDE, 2 * CURVATURE_AMPLITUDE], direction=mode)
+    q = [(p.control - onset.value) / p.amplitude**2 for p in near]
+    curvature = (4 * q[0] - q[1]) / 3
+    amps = amplitude * np.arange(1, points + 1) / points
+    if imperfection > 0:
+        force = np.zeros(section.basis.N)
+        force[section.free] = imperfection * (section.M @ mode)[section.free]
+        branch = AmplitudeBranch(section, tube, control, force)
+        # the imperfect path from 90 % of the way to onset, in the amplitude
+        c0 = onset.value - 0.1 * (onset.value - start_value(tube, control))
+        section.set_tube(tube.at(control, c0))
+        x0, _ = newton(section, onset.x)
+        x0 = _with_imperfection(section, x0, force)
+        first = BranchPoint(c0, float(a @ x0), section.energy(x0), x0)
+        amps = amps[amps > first.amplitude]
+        pts = [first] + branch.follow(
+            first, amps, direction=mode, progress=_reporter(say, control)
+        )
+    else:
+        pts = [start] + perfect.follow(
+            near[-1], amps[amps > near[-1].amplitude], progress=_reporter(say, control)
+        )
+    full = 2 * m  # the ring is 2 m sectors
+    return PostbuckleResult(
+        tube=tube,
+        solve_for=control,
+        m=m,
+        onset_linear=float(linear),
+        onset_fe=onset.value,
+        mesh=size,
+        unknowns=int(section.free.size),
+        control=np.array([p.control for p in pts]),
+        amplitude=np.array([p.amplitude for p in pts]),
+        energy=full * np.array([p.energy for p in pts]),
+        curvature=float(curvature),
+        imperfection=float(imperfection),
+        states=tuple(p.x for p in pts),
+        section=section,
+    )
+
+
+def _with_imperfection(section, x, force):
+    """The equilibrium with the imperfection at the section's current control."""
+    branch_residual = section.residual
+
+    class _Imperfect:
+        def __getattr__(self, name):
+            return getattr(section, name)
+
+        def residual(self, y):
+            return branch_residual(y) - force
+
+    x, _ = newton(_Imperfect(), x)
+    return x
+
+
+def _reporter(say, control):
+    def report(point):
+        say(f"amplitude {point.amplitude:.4g}: {control} = {point.control:.8g}")
+
+    return report

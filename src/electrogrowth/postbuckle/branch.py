@@ -1,0 +1,142 @@
+"""The post-buckled branch: equilibria followed in the fold amplitude.
+
+The amplitude a = (u_R(1, 0) - u_R(1, pi / m)) / 2, half the difference of the inner face's
+radial displacement at the two rays (the coefficient of cos(m Theta) up to third-order
+harmonics), is prescribed and the control is an unknown: each point solves
+
+    residual(x; c) - xi f = 0,   a(x) = a_k
+
+by Newton's method on the bordered system [[K, dR/dc], [a^T, 0]] (dR/dc by central
+differences of the residual in the control). Prescribing the amplitude passes the limit
+points of the control (a snap-through of a subcritical onset) and the bifurcation point
+itself (the border removes the null direction), as a displacement-controlled arc length.
+``xi = 0`` gives the perfect bifurcated branch (started from the onset state plus a times
+the critical mode); ``xi > 0`` the path of the tube with a load imperfection f = M z in the
+shape of the critical mode z.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import signal
+from collections.abc import Callable
+
+import numpy as np
+import scipy.sparse as sps
+import scipy.sparse.linalg as spla
+
+from ..errors import ConvergenceError
+from ..interrupts import Interrupted
+from .newton import MAX_ITERATIONS, RESIDUAL_TOL
+
+#: relative step of the central difference dR/dc
+DC = 1e-6
+
+
+@dataclasses.dataclass
+class BranchPoint:
+    """One equilibrium: control value, amplitude, energy, unknowns."""
+
+    control: float
+    amplitude: float
+    energy: float
+    x: np.ndarray
+
+
+def amplitude_vector(section) -> np.ndarray:
+    """The functional a(x) = a . x (inner face, the two rays)."""
+    dofs, theta = section.face_dofs("inner")
+    a = np.zeros(section.basis.N)
+    a[dofs[0]] += 0.5
+    a[dofs[-1]] -= 0.5
+    return a
+
+
+class AmplitudeBranch:
+    """Newton on (x, c) at a prescribed amplitude, for ``section`` of ``tube`` along
+    ``control``; ``imperfection`` a force vector (zero on the prescribed unknowns) or None."""
+
+    def __init__(self, section, tube, control: str, imperfection=None):
+        self.section, self.tube, self.control = section, tube, control
+        self.a = amplitude_vector(section)
+        self.f = None if imperfection is None else imperfection
+
+    def _set(self, c: float) -> None:
+        self.section.set_tube(self.tube.at(self.control, c))
+
+    def _residual(self, x, c):
+        self._set(c)
+        x = self.section.with_fixed(x)
+        r = self.section.residual(x)
+        if self.f is not None:
+            r = r - self.f
+        return x, r
+
+    def solve(self, x, c, amplitude: float) -> tuple[np.ndarray, float, int]:
+        """The equilibrium at ``amplitude`` from the guess (x, c)."""
+        s = self.section
+        free = s.free
+        for it in range(MAX_ITERATIONS + 1):
+            x, r = self._residual(x, c)
+            g = self.a @ x - amplitude
+            norm = max(np.abs(r[free]).max(), abs(g))
+            if norm < RESIDUAL_TOL:
+                return x, c, it
+            if not np.isfinite(norm):
+                break
+            h = DC * max(1.0, abs(c))
+            _, rp = self._residual(x, c + h)
+            _, rm = self._residual(x, c - h)
+            dr = ((rp - rm) / (2 * h))[free]
+            x, _ = self._residual(x, c)  # the section back at c (and its prescribed values)
+            K = s.tangent(x)[free][:, free]
+            A = sps.bmat(
+                [[K, sps.csc_matrix(dr[:, None])], [sps.csr_matrix(self.a[free][None, :]), None]]
+            ).tocsc()
+            step = spla.spsolve(A, -np.concatenate([r[free], [g]]))
+            x = x.copy()
+            x[free] += step[:-1]
+            c += step[-1]
+        raise ConvergenceError(
+            f"the branch point at amplitude {amplitude:.4g} did not converge (residual"
+            f" {norm:.3g}); take smaller amplitude steps"
+        )
+
+    def follow(
+        self,
+        start: BranchPoint,
+        amplitudes,
+        *,
+        direction: np.ndarray | None = None,
+        stop: Callable[[BranchPoint], bool] | None = None,
+        progress: Callable[[BranchPoint], None] | None = None,
+    ) -> list[BranchPoint]:
+        """The points at ``amplitudes`` (increasing), from ``start``: the first guess is the
+        start plus (a - a_0) ``direction`` (the critical mode), then secant predictions.
+        Stops early (returning what it has) when ``stop(point)`` is true; a Ctrl-C raises
+        Interrupted carrying the finished points as ``partial``."""
+        points = [start]
+        prev = None
+        for amp in amplitudes:
+            last = points[-1]
+            if prev is None:
+                d = direction if direction is not None else np.zeros_like(last.x)
+                x0 = last.x + (amp - last.amplitude) * d
+                c0 = last.control
+            else:
+                t = (amp - last.amplitude) / (last.amplitude - prev.amplitude)
+                x0 = last.x + t * (last.x - prev.x)
+                c0 = last.control + t * (last.control - prev.control)
+            try:
+                x, c, _ = self.solve(x0, c0, float(amp))
+            except KeyboardInterrupt as exc:
+                signum = getattr(exc, "signum", signal.SIGINT)
+                raise Interrupted(signum, partial=points[1:]) from exc
+            point = BranchPoint(c, float(amp), self.section.energy(x), x)
+            prev = last
+            points.append(point)
+            if progress is not None:
+                progress(point)
+            if stop is not None and stop(point):
+                break
+        return points[1:]
