@@ -152,8 +152,7 @@ def _write(result, out: Path) -> None:
         import meshio
     except ImportError:
         print(
-            "electrogrowth: no VTK files: meshio is missing (pip install"
-            " 'electrogrowth[vtk]')",
+            "electrogrowth: no VTK files: meshio is missing (pip install 'electrogrowth[vtk]')",
             file=sys.stderr,
         )
         return

@@ -21,8 +21,14 @@ def plot_branch(result):
     ax.plot(result.amplitude, result.control, "o-", ms=3, lw=1.2, color="k", label="FE branch")
     ax.axhline(result.onset_linear, color="C0", ls="--", lw=1, label="linear onset")
     a = np.linspace(0, result.amplitude.max(), 50)
-    ax.plot(a, result.onset_fe + result.curvature * a**2, color="C1", lw=1, ls=":",
-            label="onset + curvature a$^2$")
+    ax.plot(
+        a,
+        result.onset_fe + result.curvature * a**2,
+        color="C1",
+        lw=1,
+        ls=":",
+        label="onset + curvature a$^2$",
+    )
     ax.set_xlabel("fold amplitude a / $R_i$ (inner face, cos m$\\theta$)", fontsize=8)
     ax.set_ylabel(axis_label(result.solve_for), fontsize=8)
     ax.legend(fontsize=7, frameon=False)

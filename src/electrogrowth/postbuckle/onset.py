@@ -82,7 +82,8 @@ def fe_onset(
     unperturbed path. The path is walked from the start value (:func:`start_value`) in
     ``steps`` equal steps to 0.9 ``guess`` (e.g. the package's linear onset: only the steps
     depend on it), then by secant predictions of the eigenvalue's zero (stepping 1 % of the
-    span past it) until it changes sign, then Brent's method to ``xtol``. NoBifurcationFound if it has not changed sign by 2 ``guess``."""
+    span past it) until it changes sign, then Brent's method to ``xtol``.
+    NoBifurcationFound if it has not changed sign by 2 ``guess``."""
     start = start_value(tube, control)
     x = loaded(section, tube.at(control, start), steps=3)
     states = {}

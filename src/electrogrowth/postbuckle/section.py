@@ -114,7 +114,14 @@ def _enclosed_gradient(b, R):
 
 
 #: its constant Hessian (i, j, value), symmetric pairs listed both ways
-_ENCLOSED_HESSIAN = ((0, 0, 2.0), (0, 3, 1.0), (3, 0, 1.0), (1, 1, 2.0), (1, 2, -1.0), (2, 1, -1.0))
+_ENCLOSED_HESSIAN = (
+    (0, 0, 2.0),
+    (0, 3, 1.0),
+    (3, 0, 1.0),
+    (1, 1, 2.0),
+    (1, 2, -1.0),
+    (2, 1, -1.0),
+)
 
 
 @LinearForm
