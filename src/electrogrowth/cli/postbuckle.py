@@ -10,6 +10,7 @@ import sys
 from pathlib import Path
 
 from ..errors import MissingDependencyError, ParameterError
+from ..interrupts import Interrupted
 from .options import add_control_options, bounded_int, check_side_option, finite_number
 from .progress import add_quiet_option, enabled
 from .tube_input import add_any_tube_options, control_of
@@ -87,17 +88,27 @@ def run_postbuckle(args) -> int:
     tube, control = control_of(args)
     m = args.mode if args.mode is not None else _critical_prismatic(tube, control, args)
     say = _say if enabled(args) else None
-    result = postbuckle(
-        tube,
-        m,
-        control,
-        amplitude=args.amplitude,
-        points=args.points,
-        density=args.density,
-        hoop=args.hoop,
-        imperfection=args.imperfection,
-        progress=say,
-    )
+    try:
+        result = postbuckle(
+            tube,
+            m,
+            control,
+            amplitude=args.amplitude,
+            points=args.points,
+            density=args.density,
+            hoop=args.hoop,
+            imperfection=args.imperfection,
+            progress=say,
+        )
+    except Interrupted as stop:  # keep the finished branch points
+        done = stop.partial
+        if done is None or args.out is None:
+            raise
+        _write(done, Path(args.out))
+        raise Interrupted(
+            stop.signum,
+            f"{stop}; {len(done.amplitude)} finished branch points written to {args.out}",
+        ) from None
     if args.out:
         _write(result, Path(args.out))
     if args.json:

@@ -4,6 +4,7 @@ of one prismatic mode m (plane strain), and its result record."""
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 from collections.abc import Callable
 
@@ -11,6 +12,7 @@ import numpy as np
 
 from ..bifurcation.critical import critical_value
 from ..errors import ParameterError
+from ..interrupts import Interrupted
 from ..model.layers import Tube
 from .branch import AmplitudeBranch, BranchPoint, amplitude_vector
 from .newton import newton
@@ -156,6 +158,9 @@ def postbuckle(
     q = [(p.control - onset.value) / p.amplitude**2 for p in near]
     curvature = (4 * q[0] - q[1]) / 3
     amps = amplitude * np.arange(1, points + 1) / points
+    record = functools.partial(
+        _record, tube, control, m, linear, onset.value, size, section, curvature, imperfection
+    )
     if imperfection > 0:
         force = np.zeros(section.basis.N)
         force[section.free] = imperfection * (section.M @ mode)[section.free]
@@ -166,21 +171,28 @@ def postbuckle(
         x0, _ = newton(section, onset.x)
         x0 = _with_imperfection(section, x0, force)
         first = BranchPoint(c0, float(a @ x0), section.energy(x0), x0)
+        head, follow_from, direction = [first], first, mode
         amps = amps[amps > first.amplitude]
-        pts = [first] + branch.follow(
-            first, amps, direction=mode, progress=_reporter(say, control)
-        )
     else:
-        pts = [start] + perfect.follow(
-            near[-1], amps[amps > near[-1].amplitude], progress=_reporter(say, control)
+        branch, head, follow_from, direction = perfect, [start], near[-1], mode
+        amps = amps[amps > near[-1].amplitude]
+    try:
+        pts = head + branch.follow(
+            follow_from, amps, direction=direction, progress=_reporter(say, control)
         )
+    except Interrupted as stop:  # the finished points, as a result
+        raise Interrupted(stop.signum, str(stop), partial=record(head + stop.partial)) from None
+    return record(pts)
+
+
+def _record(tube, control, m, linear, onset, size, section, curvature, imperfection, pts):
     full = 2 * m  # the ring is 2 m sectors
     return PostbuckleResult(
         tube=tube,
         solve_for=control,
         m=m,
         onset_linear=float(linear),
-        onset_fe=onset.value,
+        onset_fe=onset,
         mesh=size,
         unknowns=int(section.free.size),
         control=np.array([p.control for p in pts]),
