@@ -49,3 +49,16 @@ def test_ctrl_c_keeps_the_finished_points():
     with pytest.raises(Interrupted) as stop:
         _branch(solve).follow(start, [0.1, 0.2, 0.3, 0.4])
     assert [p.amplitude for p in stop.value.partial] == [0.1, 0.2]
+
+
+def test_a_failed_step_is_halved():
+    from electrogrowth.errors import ConvergenceError
+
+    def solve(x, c, amplitude):
+        if amplitude - x[0] > 0.15:  # converges only from within 0.15 of the target
+            raise ConvergenceError("too far")
+        return np.array([amplitude, 0.0]), 1 + amplitude, 0
+
+    start = BranchPoint(1.0, 0.0, 0.0, np.zeros(2))
+    pts = _branch(solve).follow(start, [0.2])
+    assert [p.amplitude for p in pts] == [0.1, 0.2]

@@ -27,10 +27,12 @@ import scipy.sparse.linalg as spla
 
 from ..errors import ConvergenceError
 from ..interrupts import Interrupted
-from .newton import MAX_ITERATIONS, RESIDUAL_TOL
+from .newton import MAX_ITERATIONS, RESIDUAL_TOL, fe_error
 
 #: relative step of the central difference dR/dc
 DC = 1e-6
+#: a failed amplitude step is halved at most this many times
+HALVINGS = 3
 
 
 @dataclasses.dataclass
@@ -97,10 +99,36 @@ class AmplitudeBranch:
             x = x.copy()
             x[free] += step[:-1]
             c += step[-1]
-        raise ConvergenceError(
+        raise fe_error(
+            ConvergenceError,
             f"the branch point at amplitude {amplitude:.4g} did not converge (residual"
-            f" {norm:.3g}); take smaller amplitude steps"
+            f" {norm:.3g}, even in steps of 1/{2**HALVINGS} of the amplitude step)",
         )
+
+    def _guess(self, last, prev, amp, direction):
+        if prev is None:
+            d = direction if direction is not None else np.zeros_like(last.x)
+            return last.x + (amp - last.amplitude) * d, last.control
+        t = (amp - last.amplitude) / (last.amplitude - prev.amplitude)
+        return last.x + t * (last.x - prev.x), last.control + t * (last.control - prev.control)
+
+    def _advance(self, points: list, amp: float, direction) -> None:
+        """Append the point at ``amp`` to ``points``, through intermediate amplitudes (the
+        step halved, at most HALVINGS times in all) when Newton fails there."""
+        targets, halvings = [amp], 0
+        while targets:
+            last = points[-1]
+            prev = points[-2] if len(points) > 1 else None
+            x0, c0 = self._guess(last, prev, targets[-1], direction)
+            try:
+                x, c, _ = self.solve(x0, c0, targets[-1])
+            except ConvergenceError:
+                if halvings >= HALVINGS:
+                    raise
+                halvings += 1
+                targets.append(0.5 * (last.amplitude + targets[-1]))
+                continue
+            points.append(BranchPoint(c, targets.pop(), self.section.energy(x), x))
 
     def follow(
         self,
@@ -112,31 +140,19 @@ class AmplitudeBranch:
         progress: Callable[[BranchPoint], None] | None = None,
     ) -> list[BranchPoint]:
         """The points at ``amplitudes`` (increasing), from ``start``: the first guess is the
-        start plus (a - a_0) ``direction`` (the critical mode), then secant predictions.
+        start plus (a - a_0) ``direction`` (the critical mode), then secant predictions; a
+        step where Newton fails is halved (the intermediate points are kept).
         Stops early (returning what it has) when ``stop(point)`` is true; a Ctrl-C raises
         Interrupted carrying the finished points as ``partial``."""
         points = [start]
-        prev = None
         for amp in amplitudes:
-            last = points[-1]
-            if prev is None:
-                d = direction if direction is not None else np.zeros_like(last.x)
-                x0 = last.x + (amp - last.amplitude) * d
-                c0 = last.control
-            else:
-                t = (amp - last.amplitude) / (last.amplitude - prev.amplitude)
-                x0 = last.x + t * (last.x - prev.x)
-                c0 = last.control + t * (last.control - prev.control)
             try:
-                x, c, _ = self.solve(x0, c0, float(amp))
+                self._advance(points, float(amp), direction)
             except KeyboardInterrupt as exc:
                 signum = getattr(exc, "signum", signal.SIGINT)
                 raise Interrupted(signum, partial=points[1:]) from exc
-            point = BranchPoint(c, float(amp), self.section.energy(x), x)
-            prev = last
-            points.append(point)
             if progress is not None:
-                progress(point)
-            if stop is not None and stop(point):
+                progress(points[-1])
+            if stop is not None and stop(points[-1]):
                 break
         return points[1:]

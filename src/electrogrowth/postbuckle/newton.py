@@ -8,7 +8,23 @@ import dataclasses
 import numpy as np
 import scipy.sparse.linalg as spla
 
-from ..errors import ConvergenceError
+from ..errors import ConvergenceError, Remedy
+
+#: what to try when the finite-element Newton iteration fails
+FE_REMEDY = Remedy(
+    "take smaller steps (more --points, a smaller --amplitude) or a finer mesh (--density,"
+    " --hoop)",
+    python="take smaller steps (more points=, a smaller amplitude=) or a finer mesh"
+    " (density=, hoop=)",
+)
+
+
+def fe_error(cls, message: str):
+    """An exception of ``cls`` with the finite-element model's remedy."""
+    exc = cls(message)
+    exc.remedy = FE_REMEDY
+    return exc
+
 
 #: Newton stops when the free residual's max norm is below this (units mu R_i)
 RESIDUAL_TOL = 1e-10
@@ -34,9 +50,10 @@ def newton(section, x: np.ndarray, *, tol: float = RESIDUAL_TOL) -> tuple[np.nda
             break
         K = section.tangent(x)[f][:, f].tocsc()
         x[f] -= spla.spsolve(K, r)
-    raise ConvergenceError(
+    raise fe_error(
+        ConvergenceError,
         f"the finite-element equilibrium did not converge (residual {norm:.3g} after {it}"
-        " Newton steps); take smaller control steps"
+        " Newton steps)",
     )
 
 
