@@ -48,6 +48,9 @@ def test_json_and_files_of_a_charged_pressurised_bilayer(tmp_path, capsys):
     assert rec["mesh"]["elements"] == (2 + 6) * 3
     branch = rec["branch"]
     assert len(branch["control"]) == len(branch["amplitude"]) == len(branch["energy"]) == 3
+    assert rec["ended"] is None
+    # stable below onset and on the branch beyond it (its curvature sign says which)
+    assert all(v > 0 for v in branch["lowest_eigenvalue"][:1])
     assert branch["amplitude"][-1] == pytest.approx(0.02)
     # the imperfect path starts below onset, close to the axisymmetric state
     assert branch["control"][0] < rec["onset_fe"] and branch["amplitude"][0] < 1e-3

@@ -111,6 +111,8 @@ def run_postbuckle(args) -> int:
         ) from None
     if args.out:
         _write(result, Path(args.out))
+    if result.ended:
+        print(f"electrogrowth: warning: {result.ended}", file=sys.stderr)
     if args.json:
         print(json.dumps(result.as_dict(), indent=2))
     else:
@@ -121,9 +123,9 @@ def run_postbuckle(args) -> int:
             f" mesh {result.mesh.elements} elements, {result.unknowns} unknowns"
         )
         print(f"initial curvature d({control})/d(a^2) = {result.curvature:.6g}")
-        print("amplitude  control  energy")
-        for a, c, e in zip(result.amplitude, result.control, result.energy):
-            print(f"{a:.6g}  {c:.10g}  {e:.10g}")
+        print("amplitude  control  energy  lowest_eigenvalue")
+        for a, c, e, v in zip(result.amplitude, result.control, result.energy, result.eigenvalue):
+            print(f"{a:.6g}  {c:.10g}  {e:.10g}  {v:.4g}")
     return 0
 
 
@@ -154,8 +156,8 @@ def _write(result, out: Path) -> None:
     out.mkdir(parents=True, exist_ok=True)
     with open(out / "branch.csv", "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["amplitude", result.solve_for, "energy"])
-        for row in zip(result.amplitude, result.control, result.energy):
+        w.writerow(["amplitude", result.solve_for, "energy", "lowest_eigenvalue"])
+        for row in zip(result.amplitude, result.control, result.energy, result.eigenvalue):
             w.writerow([repr(float(v)) for v in row])
     plot_branch(result).savefig(out / "branch.png", dpi=150)
     plot_folding(result).savefig(out / "folding.png", dpi=150)

@@ -32,8 +32,11 @@ class PostbuckleResult:
     ``energy`` the branch (amplitude a: the inner face's cos(m Theta) displacement, units
     R_i; energy: the whole ring's per unit reference length, units mu R_i^2), ``curvature``
     d(control) / d(a^2) at onset on the perfect branch; ``imperfection`` the load
-    imperfection's size (0: the perfect bifurcated branch); ``states`` the unknowns of each
-    point, ``section`` the FE model (for shapes and VTK)."""
+    imperfection's size (0: the perfect bifurcated branch); ``eigenvalue`` the lowest
+    eigenvalue of the tangent at fixed control at each point (< 0: unstable; NaN at the
+    onset itself); ``ended`` why the branch stopped short of the amplitude asked ("" if it
+    did not); ``states`` the unknowns of each point, ``section`` the FE model (for shapes
+    and VTK)."""
 
     tube: Tube
     solve_for: str
@@ -47,8 +50,10 @@ class PostbuckleResult:
     energy: np.ndarray
     curvature: float
     imperfection: float
+    eigenvalue: np.ndarray
     states: tuple = dataclasses.field(repr=False, compare=False)
     section: object = dataclasses.field(repr=False, compare=False)
+    ended: str = ""
 
     def as_dict(self) -> dict:
         """The JSON record."""
@@ -73,7 +78,9 @@ class PostbuckleResult:
                 "control": self.control.tolist(),
                 "amplitude": self.amplitude.tolist(),
                 "energy": self.energy.tolist(),
+                "lowest_eigenvalue": [None if np.isnan(v) else v for v in self.eigenvalue],
             },
+            "ended": self.ended or None,
             "tube": self.tube.record(),
         }
 
@@ -85,6 +92,7 @@ class PostbuckleResult:
             {
                 "control": ("point", self.control, {"long_name": self.solve_for}),
                 "energy": ("point", self.energy, {"units": "mu R_i^2"}),
+                "lowest_eigenvalue": ("point", self.eigenvalue, {"units": "mu / R_i^2"}),
             },
             coords={"amplitude": ("point", self.amplitude, {"units": "R_i"})},
             attrs={
@@ -164,7 +172,7 @@ def postbuckle(
     if imperfection > 0:
         force = np.zeros(section.basis.N)
         force[section.free] = imperfection * (section.M @ mode)[section.free]
-        branch = AmplitudeBranch(section, tube, control, force)
+        branch = AmplitudeBranch(section, tube, control, force, eigenvalues=True)
         # the imperfect path from 90 % of the way to onset, in the amplitude
         c0 = onset.value - 0.1 * (onset.value - start_value(tube, control))
         section.set_tube(tube.at(control, c0))
@@ -174,15 +182,20 @@ def postbuckle(
         head, follow_from, direction = [first], first, mode
         amps = amps[amps > first.amplitude]
     else:
-        branch, head, follow_from, direction = perfect, [start], near[-1], mode
+        branch = AmplitudeBranch(section, tube, control, eigenvalues=True)
+        head, follow_from, direction = [start], near[-1], mode
         amps = amps[amps > near[-1].amplitude]
     try:
         pts = head + branch.follow(
-            follow_from, amps, direction=direction, progress=_reporter(say, control)
+            follow_from,
+            amps,
+            direction=direction,
+            progress=_reporter(say, control),
+            keep_going=True,
         )
     except Interrupted as stop:  # the finished points, as a result
         raise Interrupted(stop.signum, str(stop), partial=record(head + stop.partial)) from None
-    return record(pts)
+    return dataclasses.replace(record(pts), ended=branch.ended)
 
 
 def _record(tube, control, m, linear, onset, size, section, curvature, imperfection, pts):
@@ -198,6 +211,7 @@ def _record(tube, control, m, linear, onset, size, section, curvature, imperfect
         control=np.array([p.control for p in pts]),
         amplitude=np.array([p.amplitude for p in pts]),
         energy=full * np.array([p.energy for p in pts]),
+        eigenvalue=np.array([p.eigenvalue for p in pts]),
         curvature=float(curvature),
         imperfection=float(imperfection),
         states=tuple(p.x for p in pts),

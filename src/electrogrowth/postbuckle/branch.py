@@ -28,6 +28,7 @@ import scipy.sparse.linalg as spla
 from ..errors import ConvergenceError
 from ..interrupts import Interrupted
 from .newton import MAX_ITERATIONS, RESIDUAL_TOL, fe_error
+from .onset import lowest_eigenvalue
 
 #: relative step of the central difference dR/dc
 DC = 1e-6
@@ -43,6 +44,8 @@ class BranchPoint:
     amplitude: float
     energy: float
     x: np.ndarray
+    #: the lowest eigenvalue of the tangent at fixed control (< 0: unstable), when computed
+    eigenvalue: float = float("nan")
 
 
 def amplitude_vector(section) -> np.ndarray:
@@ -56,10 +59,12 @@ def amplitude_vector(section) -> np.ndarray:
 
 class AmplitudeBranch:
     """Newton on (x, c) at a prescribed amplitude, for ``section`` of ``tube`` along
-    ``control``; ``imperfection`` a force vector (zero on the prescribed unknowns) or None."""
+    ``control``; ``imperfection`` a force vector (zero on the prescribed unknowns) or None;
+    ``eigenvalues``: each point's lowest eigenvalue at fixed control (its stability)."""
 
-    def __init__(self, section, tube, control: str, imperfection=None):
+    def __init__(self, section, tube, control: str, imperfection=None, *, eigenvalues=False):
         self.section, self.tube, self.control = section, tube, control
+        self.eigenvalues, self.ended = eigenvalues, ""
         self.a = amplitude_vector(section)
         self.f = None if imperfection is None else imperfection
 
@@ -128,7 +133,10 @@ class AmplitudeBranch:
                 halvings += 1
                 targets.append(0.5 * (last.amplitude + targets[-1]))
                 continue
-            points.append(BranchPoint(c, targets.pop(), self.section.energy(x), x))
+            point = BranchPoint(c, targets.pop(), self.section.energy(x), x)
+            if self.eigenvalues:
+                point.eigenvalue = lowest_eigenvalue(self.section, x)
+            points.append(point)
 
     def follow(
         self,
@@ -138,16 +146,28 @@ class AmplitudeBranch:
         direction: np.ndarray | None = None,
         stop: Callable[[BranchPoint], bool] | None = None,
         progress: Callable[[BranchPoint], None] | None = None,
+        keep_going: bool = False,
     ) -> list[BranchPoint]:
         """The points at ``amplitudes`` (increasing), from ``start``: the first guess is the
         start plus (a - a_0) ``direction`` (the critical mode), then secant predictions; a
-        step where Newton fails is halved (the intermediate points are kept).
+        step where Newton fails is halved (the intermediate points are kept). With
+        ``keep_going`` a step that still fails ends the branch there: the points so far are
+        returned and ``self.ended`` says why (else ConvergenceError).
         Stops early (returning what it has) when ``stop(point)`` is true; a Ctrl-C raises
         Interrupted carrying the finished points as ``partial``."""
         points = [start]
+        self.ended = ""
         for amp in amplitudes:
             try:
                 self._advance(points, float(amp), direction)
+            except ConvergenceError as exc:
+                if not keep_going:
+                    raise
+                self.ended = (
+                    f"the branch ends at amplitude {points[-1].amplitude:.4g}: {exc} (a limit"
+                    " point of the amplitude, a secondary bifurcation, or too coarse a mesh)"
+                )
+                break
             except KeyboardInterrupt as exc:
                 signum = getattr(exc, "signum", signal.SIGINT)
                 raise Interrupted(signum, partial=points[1:]) from exc
