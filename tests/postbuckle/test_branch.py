@@ -19,6 +19,7 @@ def _branch(solve):
     branch = object.__new__(AmplitudeBranch)
     branch.section = _Section()
     branch.solve = solve
+    branch.eigenvalues = False
     return branch
 
 

@@ -18,7 +18,19 @@ def plot_branch(result):
     """The control against the amplitude (units R_i), the onsets marked; a Figure."""
     fig, axes = new_figure(4.2, 3.2, 1, 1)
     ax = axes[0, 0]
-    ax.plot(result.amplitude, result.control, "o-", ms=3, lw=1.2, color="k", label="FE branch")
+    ax.plot(result.amplitude, result.control, "-", lw=1.2, color="k", label="FE branch")
+    unstable = result.eigenvalue < 0
+    ax.plot(result.amplitude[~unstable], result.control[~unstable], "o", ms=3, color="k")
+    if unstable.any():
+        ax.plot(
+            result.amplitude[unstable],
+            result.control[unstable],
+            "o",
+            ms=4,
+            mfc="w",
+            color="C3",
+            label="unstable (lowest eigenvalue < 0)",
+        )
     ax.axhline(result.onset_linear, color="C0", ls="--", lw=1, label="linear onset")
     a = np.linspace(0, result.amplitude.max(), 50)
     ax.plot(

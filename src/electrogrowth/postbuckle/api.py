@@ -16,7 +16,7 @@ from ..interrupts import Interrupted
 from ..model.layers import Tube
 from .branch import AmplitudeBranch, BranchPoint, amplitude_vector
 from .newton import newton
-from .onset import fe_onset, start_value
+from .onset import fe_onset, lowest_eigenvalue, start_value
 from .section import MeshSize, Section, mesh_size
 
 #: the amplitudes of the branch's curvature estimate, units R_i (Richardson on a and 2a)
@@ -149,18 +149,24 @@ def postbuckle(
         raise ParameterError(f"points = {points!r} is out of range; valid range: 1 to 1000")
     if not (math.isfinite(imperfection) and imperfection >= 0):
         raise ParameterError(f"imperfection = {imperfection!r} is out of range; valid: >= 0")
+    if not (math.isfinite(density) and 0 < density <= 2000):
+        raise ParameterError(f"density = {density!r} is out of range; valid range: 0 to 2000")
+    if hoop is not None and not (isinstance(hoop, int) and 1 <= hoop <= 1000):
+        raise ParameterError(f"hoop = {hoop!r} is out of range; valid range: 1 to 1000")
     say = progress or (lambda text: None)
     control = str(tube.check_control(solve_for))
+    start_value(tube, control)  # a control the model follows
+    size = mesh_size(tube, m, density, hoop=hoop)
+    section = Section(tube, m, size)  # refuses what the model does not cover, before solving
     say(f"linear onset of mode ({m}, 0)")
     linear = critical_value(tube, m, 0, control).value
-    size = mesh_size(tube, m, density, hoop=hoop)
-    section = Section(tube, m, size)
     say(f"finite-element onset on {size.elements} elements ({section.free.size} unknowns)")
     onset = fe_onset(section, tube, control, linear)
     a = amplitude_vector(section)
     mode = onset.mode / (a @ onset.mode)
     perfect = AmplitudeBranch(section, tube, control)
     start = BranchPoint(onset.value, 0.0, section.energy(onset.x), onset.x)
+    start.eigenvalue = lowest_eigenvalue(section, onset.x)  # zero to the onset's tolerance
     say("initial curvature of the branch")
     near = perfect.follow(start, [CURVATURE_AMPLITUDE, 2 * CURVATURE_AMPLITUDE], direction=mode)
     q = [(p.control - onset.value) / p.amplitude**2 for p in near]
@@ -179,6 +185,7 @@ def postbuckle(
         x0, _ = newton(section, onset.x)
         x0 = _with_imperfection(section, x0, force)
         first = BranchPoint(c0, float(a @ x0), section.energy(x0), x0)
+        first.eigenvalue = lowest_eigenvalue(section, x0)
         head, follow_from, direction = [first], first, mode
         amps = amps[amps > first.amplitude]
     else:

@@ -143,7 +143,7 @@ class _Where:
     """The coordinates and element centres as a form's ``w`` sees them."""
 
     def __init__(self, X, centres):
-        self.x = X.value
+        self.x = np.asarray(X)
         self._c = centres
 
     def __getitem__(self, key):
@@ -217,7 +217,7 @@ class Section:
         self.phi_outer = self.basis.get_dofs(lambda x: np.isclose(x[0], R_N)).all("u^5")
         self.fixed = np.unique(np.concatenate([self.hoop_fixed, self.phi_inner, self.phi_outer]))
         self.free = np.setdiff1d(np.arange(self.basis.N), self.fixed)
-        self.R = self.basis.global_coordinates().value[0]
+        self.R = np.asarray(self.basis.global_coordinates())[0]
         mid = self.mesh.p[0, self.mesh.t].mean(axis=0)
         self.layer_of = np.searchsorted(np.asarray(radii[1:-1]), mid)
         centre = self.mesh.p[:, self.mesh.t].mean(axis=1)
