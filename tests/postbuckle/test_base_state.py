@@ -39,7 +39,9 @@ def errors(tube, density):
 
 
 @pytest.mark.parametrize(
-    "tube, density", [(BILAYER, 20), (LOADED, 8)], ids=["bilayer-growth", "pressures-voltage"]
+    "tube, density",
+    [pytest.param(BILAYER, 20, marks=pytest.mark.slow), (LOADED, 8)],
+    ids=["bilayer-growth", "pressures-voltage"],
 )
 def test_base_state_matches_the_package(tube, density):
     r1, s1, shear = errors(tube, density)

@@ -140,8 +140,9 @@ def _critical_prismatic(tube, control, args) -> int:
         _say("scanning the modes for the critical prismatic one")
     scan = scan_modes(tube, control, side=args.side)
     for point in (scan.critical, *scan.runners_up):
-        if getattr(point, "n", None) == 0 and getattr(point, "m", 0) >= 2:
-            return int(point.m)
+        m, n = getattr(point, "m", None), getattr(point, "n", None)
+        if n == 0 and isinstance(m, int) and m >= 2:
+            return m
     c = scan.critical
     raise ParameterError(
         f"the scan's critical mode is ({c.m}, {c.n}) and no prismatic mode (m, 0) is among"

@@ -64,7 +64,7 @@ def derivatives():
         rows = h_fun(*state, *params)
         return np.array([[np.broadcast_to(v, shape) for v in row] for row in rows])
 
-    gradient.density = density  # type: ignore[attr-defined]
+    gradient.density = density
     return gradient, hessian
 
 

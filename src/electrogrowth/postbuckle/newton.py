@@ -89,4 +89,5 @@ def loaded(section, tube, *, steps: int = 5) -> np.ndarray:
         section.set_tube(t)
         x = unloaded(section) if x is None else x
         x, _ = newton(section, x)
+    assert x is not None  # the loop runs at least once
     return x

@@ -86,7 +86,7 @@ def fe_onset(
     NoBifurcationFound if it has not changed sign by 2 ``guess``."""
     start = start_value(tube, control)
     x = loaded(section, tube.at(control, start), steps=3)
-    states = {}
+    states: dict[float, tuple[np.ndarray, float]] = {}
 
     def at(c: float) -> float:
         nonlocal x

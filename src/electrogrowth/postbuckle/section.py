@@ -195,7 +195,7 @@ class Section:
         if len(size.radial) != len(tube.layers):
             raise ParameterError(f"{len(size.radial)} radial counts for {len(tube.layers)} layers")
         self.m, self.size = m, size
-        radii = tube.radii
+        self.radii = radii = tube.radii
         nodes = [np.linspace(a, b, n + 1) for a, b, n in zip(radii, radii[1:], size.radial)]
         Rn = np.unique(np.concatenate(nodes))
         self.sector = math.pi / m
@@ -236,8 +236,10 @@ class Section:
     # -- the tube's numbers at the quadrature points ---------------------------------------
     def set_tube(self, tube: Tube) -> None:
         """Take the loads and growth of ``tube`` (same layers' radii)."""
-        if tube.radii != self._radii_checked(tube):
+        if tube.radii != self.radii:
             raise ParameterError("the tube's radii differ from the mesh's")
+        if tube.stretch is None:
+            raise ParameterError("the cross-section model needs a prescribed axial stretch")
         shape = self.R.shape
         mu, eps = np.empty(shape), np.empty(shape)
         g = np.empty((3,) + shape)
@@ -250,11 +252,9 @@ class Section:
         self.voltage = tube.voltage * (tube.radii[-1] - 1.0)
         self._tube = tube
 
-    def _radii_checked(self, tube: Tube):
-        return tube.radii if self._tube is None else self._tube.radii
-
     @property
     def tube(self) -> Tube:
+        assert self._tube is not None  # set in __init__
         return self._tube
 
     # -- unknowns ---------------------------------------------------------------------------
@@ -273,8 +273,8 @@ class Section:
 
     def state(self, x: np.ndarray) -> np.ndarray:
         """The 7 variables (F, Grad phi, p) at the quadrature points, shape (7, ne, nq)."""
-        fields = self.basis.interpolate(x)
-        s = np.array(_avec(*fields, self._w))
+        u, p0, p1, p2, phi = self.basis.interpolate(x)
+        s = np.array(_avec(u, p0, p1, p2, phi, self._w))
         s[0] += 1.0
         s[3] += 1.0
         return s
