@@ -36,3 +36,14 @@ def test_onset_converges_below_1e_4():
     errors = [relative_error((2 * k, 9 * k), 4 * k) for k in (1, 2, 3)]
     assert errors[0] > errors[1] > errors[2] > 0
     assert errors[1] < 1e-4 and errors[2] < 2e-5
+
+
+@pytest.mark.slow
+def test_voltage_onset_of_a_grown_bilayer():
+    """The voltage as the control (the electrodes' potential moves with it): the grown
+    bilayer (g_theta = 1.6 in the film) wrinkles in mode (12, 0) at Vbar = 1.1839660; the
+    coarse mesh's FE onset is 8.3e-5 below (measured)."""
+    tube = Tube((Layer(1.1, shear_modulus=10.0, growth=(1.0, 1.6, 1.0)), Layer(2.0)), stretch=1.0)
+    linear = critical_value(tube, M, 0, "voltage").value
+    onset = fe_onset(Section(tube, M, MeshSize((2, 9), 4)), tube, "voltage", linear, xtol=1e-10)
+    assert abs(onset.value - linear) < 2e-4 * linear
