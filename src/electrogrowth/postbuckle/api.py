@@ -11,7 +11,7 @@ from collections.abc import Callable
 import numpy as np
 
 from ..bifurcation.critical import critical_value
-from ..errors import ParameterError
+from ..errors import NoBifurcationFound, ParameterError
 from ..interrupts import Interrupted
 from ..model.layers import Tube
 from .branch import AmplitudeBranch, BranchPoint, amplitude_vector
@@ -158,8 +158,9 @@ def postbuckle(
     start_value(tube, control)  # a control the model follows
     size = mesh_size(tube, m, density, hoop=hoop)
     section = Section(tube, m, size)  # refuses what the model does not cover, before solving
-    say(f"linear onset of mode ({m}, 0)")
+    say(f"linear onset of mode ({m}, 0) and of its multiples")
     linear = critical_value(tube, m, 0, control).value
+    _check_first_in_sector(tube, m, control, linear)
     say(f"finite-element onset on {size.elements} elements ({section.free.size} unknowns)")
     onset = fe_onset(section, tube, control, linear)
     a = amplitude_vector(section)
@@ -203,6 +204,27 @@ def postbuckle(
     except Interrupted as stop:  # the finished points, as a result
         raise Interrupted(stop.signum, str(stop), partial=record(head + stop.partial)) from None
     return dataclasses.replace(record(pts), ended=branch.ended)
+
+
+#: the multiples j m (j = 2 .. SECTOR_MULTIPLES) checked to come after mode m
+SECTOR_MULTIPLES = 3
+
+
+def _check_first_in_sector(tube, m, control, linear):
+    """ParameterError if a mode j m, which the sector pi / m holds too, comes before m on the
+    path from the start value: the FE onset and branch would be of that mode."""
+    start = start_value(tube, control)
+    for j in range(2, SECTOR_MULTIPLES + 1):
+        try:
+            other = critical_value(tube, j * m, 0, control).value
+        except NoBifurcationFound:
+            continue
+        if abs(other - start) < abs(linear - start):
+            raise ParameterError(
+                f"mode ({j * m}, 0) comes before ({m}, 0) ({control} = {other:.8g} against"
+                f" {linear:.8g}); the sector pi/{m} holds both and would follow it: ask for"
+                f" mode {j * m}"
+            )
 
 
 def _record(tube, control, m, linear, onset, size, section, curvature, imperfection, pts):

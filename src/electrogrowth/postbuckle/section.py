@@ -48,7 +48,8 @@ INTORDER = 4
 
 def _avec(u, p0, p1, p2, phi, w):
     """The 7 variables (F - I flattened, Grad phi, p) linear in one (trial or test) field;
-    p = p0 + p1 (R - R_c) + p2 (Theta - Theta_c) is linear in each element (P1, discontinuous)."""
+    p = p0 + p1 (R - R_c) / h_R + p2 (Theta - Theta_c) / h_Theta is linear in each element
+    (P1, discontinuous; the slopes scaled by the element's sides keep the matrix balanced)."""
     R = w.x[0]
     g = u.grad
     return (
@@ -58,7 +59,7 @@ def _avec(u, p0, p1, p2, phi, w):
         (g[1, 1] + u[0]) / R,
         phi.grad[0],
         phi.grad[1] / R,
-        p0 + p1 * (R - w["Rc"]) + p2 * (w.x[1] - w["Tc"]),
+        p0 + p1 * (R - w["Rc"]) / w["hR"] + p2 * (w.x[1] - w["Tc"]) / w["hT"],
     )
 
 
@@ -220,8 +221,15 @@ class Section:
         self.R = np.asarray(self.basis.global_coordinates())[0]
         mid = self.mesh.p[0, self.mesh.t].mean(axis=0)
         self.layer_of = np.searchsorted(np.asarray(radii[1:-1]), mid)
-        centre = self.mesh.p[:, self.mesh.t].mean(axis=1)
-        self.centres = {"Rc": centre[0][:, None], "Tc": centre[1][:, None]}
+        corners = self.mesh.p[:, self.mesh.t]
+        centre = corners.mean(axis=1)
+        sides = corners.max(axis=1) - corners.min(axis=1)
+        self.centres = {
+            "Rc": centre[0][:, None],
+            "Tc": centre[1][:, None],
+            "hR": sides[0][:, None],
+            "hT": sides[1][:, None],
+        }
         X = self.basis.global_coordinates()
         self._w = _Where(X, self.centres)
         self.M = asm(_mass, self.basis)
