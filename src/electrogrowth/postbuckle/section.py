@@ -216,6 +216,7 @@ class Section:
         self.hoop_fixed = on_rays.all("u^2^1")
         self.phi_inner = self.basis.get_dofs(lambda x: np.isclose(x[0], 1.0)).all("u^5")
         self.phi_outer = self.basis.get_dofs(lambda x: np.isclose(x[0], R_N)).all("u^5")
+        self.phi_dofs = self.basis.get_dofs(elements=True).all("u^5")
         self.fixed = np.unique(np.concatenate([self.hoop_fixed, self.phi_inner, self.phi_outer]))
         self.free = np.setdiff1d(np.arange(self.basis.N), self.fixed)
         self.R = np.asarray(self.basis.global_coordinates())[0]
@@ -273,8 +274,19 @@ class Section:
         return x
 
     def with_fixed(self, x: np.ndarray) -> np.ndarray:
-        """``x`` with its prescribed entries set to the current tube's values."""
+        """``x`` with its prescribed entries set to the current tube's values. When the
+        voltage differs from the one ``x`` was solved at, the whole potential is scaled to it
+        (from zero: the undeformed wall's V log(R_N / R) / log R_N), Newton's start: a jump
+        in the electrodes' values alone puts the whole field into the first element."""
         x = x.copy()
+        old = x[self.phi_inner[0]]
+        if old != self.voltage:
+            phi = self.phi_dofs
+            if old != 0:
+                x[phi] *= self.voltage / old
+            else:
+                R = self.basis.doflocs[0, phi]
+                x[phi] = self.voltage * np.log(self.radii[-1] / R) / np.log(self.radii[-1])
         d = self.dirichlet()
         x[self.fixed] = d[self.fixed]
         return x
