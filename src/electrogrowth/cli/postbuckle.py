@@ -9,7 +9,7 @@ import json
 import sys
 from pathlib import Path
 
-from ..errors import MissingDependencyError, ParameterError
+from ..errors import MissingDependencyError, ParameterError, Remedy
 from ..interrupts import Interrupted
 from .options import add_control_options, bounded_int, check_side_option, finite_number
 from .progress import add_quiet_option, enabled
@@ -79,9 +79,9 @@ def run_postbuckle(args) -> int:
     try:
         import skfem  # noqa: F401
     except ImportError:
-        raise MissingDependencyError(
-            f"postbuckle needs the finite-element extra: {INSTALL}"
-        ) from None
+        missing = MissingDependencyError("postbuckle needs the finite-element extra, scikit-fem")
+        missing.remedy = Remedy(INSTALL)
+        raise missing from None
     from ..postbuckle import postbuckle
 
     check_side_option(args)
