@@ -34,8 +34,9 @@ def configure_postbuckle(parser: argparse.ArgumentParser) -> None:
         type=finite_number,
         default=0.05,
         metavar="A",
-        help="follow the branch up to this fold amplitude, units R_i: the inner face's"
-        " cos(m theta) radial displacement (default 0.05)",
+        help="follow the branch up to this fold amplitude, units R_i: the inner (or, where"
+        " the mode is larger, the outer) face's cos(m theta) radial displacement (default"
+        " 0.05)",
     )
     mode.add_argument(
         "--points",

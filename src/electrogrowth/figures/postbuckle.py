@@ -41,7 +41,7 @@ def plot_branch(result):
         ls=":",
         label="onset + curvature a$^2$",
     )
-    ax.set_xlabel("fold amplitude a / $R_i$ (inner face, cos m$\\theta$)", fontsize=8)
+    ax.set_xlabel(f"fold amplitude a / $R_i$ ({result.face} face, cos m$\\theta$)", fontsize=8)
     ax.set_ylabel(axis_label(result.solve_for), fontsize=8)
     ax.legend(fontsize=7, frameon=False)
     wrapped_title(ax, f"post-buckled branch of mode (m, n) = ({result.m}, 0)")

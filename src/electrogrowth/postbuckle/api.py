@@ -29,8 +29,9 @@ class PostbuckleResult:
 
     ``onset_linear`` the package's critical value, ``onset_fe`` the sign change of the FE
     tangent's lowest eigenvalue on the unperturbed path; ``control``, ``amplitude``,
-    ``energy`` the branch (amplitude a: the inner face's cos(m Theta) displacement, units
-    R_i; energy: the whole ring's per unit reference length, units mu R_i^2), ``curvature``
+    ``energy`` the branch (amplitude a: the cos(m Theta) radial displacement of ``face``,
+    the face where the critical mode is larger, units R_i; energy: the whole ring's per
+    unit reference length, units mu R_i^2), ``curvature``
     d(control) / d(a^2) at onset on the perfect branch; ``imperfection`` the load
     imperfection's size (0: the perfect bifurcated branch); ``eigenvalue`` the lowest
     eigenvalue of the tangent at fixed control at each point (< 0: unstable; NaN at the
@@ -54,6 +55,7 @@ class PostbuckleResult:
     states: tuple = dataclasses.field(repr=False, compare=False)
     section: object = dataclasses.field(repr=False, compare=False)
     ended: str = ""
+    face: str = "inner"
 
     def as_dict(self) -> dict:
         """The JSON record."""
@@ -66,6 +68,7 @@ class PostbuckleResult:
             "onset_relative_difference": (self.onset_fe - self.onset_linear)
             / abs(self.onset_linear),
             "curvature": self.curvature,
+            "amplitude_face": self.face,
             "imperfection": self.imperfection,
             "mesh": {
                 "radial_elements": list(self.mesh.radial),
@@ -120,10 +123,11 @@ def postbuckle(
 
     The package's onset (``critical_value(tube, m, 0, solve_for)``) guides the march of the
     FE model's unperturbed path (:func:`~.onset.fe_onset`) to the sign change of its lowest
-    eigenvalue; the branch is then followed in the fold amplitude a (the inner face's
-    cos(m Theta) radial displacement) in ``points`` equal steps up to ``amplitude``
-    (units R_i), from the onset state plus a times the FE critical mode, with a load
-    imperfection ``imperfection`` mu M z in the shape of that mode (0: the perfect branch).
+    eigenvalue; the branch is then followed in the fold amplitude a (the cos(m Theta)
+    radial displacement of the inner face, or the outer where the mode is larger) in
+    ``points`` equal steps up to ``amplitude`` (units R_i), from the onset state plus a
+    times the FE critical mode, with a load imperfection ``imperfection`` mu M z in the
+    shape of that mode (0: the perfect branch).
 
     Parameters
     ----------
@@ -163,9 +167,12 @@ def postbuckle(
     _check_first_in_sector(tube, m, control, linear)
     say(f"finite-element onset on {size.elements} elements ({section.free.size} unknowns)")
     onset = fe_onset(section, tube, control, linear)
-    a = amplitude_vector(section)
+    # the amplitude is read on the face where the critical mode is larger
+    faces = {f: amplitude_vector(section, f) for f in ("inner", "outer")}
+    face = max(faces, key=lambda f: abs(faces[f] @ onset.mode))
+    a = faces[face]
     mode = onset.mode / (a @ onset.mode)
-    perfect = AmplitudeBranch(section, tube, control)
+    perfect = AmplitudeBranch(section, tube, control, face=face)
     start = BranchPoint(onset.value, 0.0, section.energy(onset.x), onset.x)
     start.eigenvalue = lowest_eigenvalue(section, onset.x)  # zero to the onset's tolerance
     say("initial curvature of the branch")
@@ -176,10 +183,11 @@ def postbuckle(
     record = functools.partial(
         _record, tube, control, m, linear, onset.value, size, section, curvature, imperfection
     )
+    record = functools.partial(_with_face, record, face)
     if imperfection > 0:
         force = np.zeros(section.basis.N)
         force[section.free] = imperfection * (section.M @ mode)[section.free]
-        branch = AmplitudeBranch(section, tube, control, force, eigenvalues=True)
+        branch = AmplitudeBranch(section, tube, control, force, eigenvalues=True, face=face)
         # the imperfect path from 90 % of the way to onset, in the amplitude
         c0 = onset.value - 0.1 * (onset.value - start_value(tube, control))
         section.set_tube(tube.at(control, c0))
@@ -190,7 +198,7 @@ def postbuckle(
         head, follow_from, direction = [first], first, mode
         amps = amps[amps > first.amplitude]
     else:
-        branch = AmplitudeBranch(section, tube, control, eigenvalues=True)
+        branch = AmplitudeBranch(section, tube, control, eigenvalues=True, face=face)
         head, follow_from, direction = [start], near[-1], mode
         amps = amps[amps > near[-1].amplitude]
     try:
@@ -225,6 +233,10 @@ def _check_first_in_sector(tube, m, control, linear):
                 f" {linear:.8g}); the sector pi/{m} holds both and would follow it: ask for"
                 f" mode {j * m}"
             )
+
+
+def _with_face(record, face, pts):
+    return dataclasses.replace(record(pts), face=face)
 
 
 def _record(tube, control, m, linear, onset, size, section, curvature, imperfection, pts):

@@ -48,9 +48,10 @@ class BranchPoint:
     eigenvalue: float = float("nan")
 
 
-def amplitude_vector(section) -> np.ndarray:
-    """The functional a(x) = a . x (inner face, the two rays)."""
-    dofs, theta = section.face_dofs("inner")
+def amplitude_vector(section, face: str = "inner") -> np.ndarray:
+    """The functional a(x) = a . x: half the difference of ``face``'s radial displacement at
+    the two rays."""
+    dofs, theta = section.face_dofs(face)
     a = np.zeros(section.basis.N)
     a[dofs[0]] += 0.5
     a[dofs[-1]] -= 0.5
@@ -62,10 +63,12 @@ class AmplitudeBranch:
     ``control``; ``imperfection`` a force vector (zero on the prescribed unknowns) or None;
     ``eigenvalues``: each point's lowest eigenvalue at fixed control (its stability)."""
 
-    def __init__(self, section, tube, control: str, imperfection=None, *, eigenvalues=False):
+    def __init__(
+        self, section, tube, control: str, imperfection=None, *, eigenvalues=False, face="inner"
+    ):
         self.section, self.tube, self.control = section, tube, control
         self.eigenvalues, self.ended = eigenvalues, ""
-        self.a = amplitude_vector(section)
+        self.a = amplitude_vector(section, face)
         self.f = None if imperfection is None else imperfection
 
     def _set(self, c: float) -> None:
@@ -73,7 +76,7 @@ class AmplitudeBranch:
 
     def _residual(self, x, c):
         self._set(c)
-        x = self.section.with_fixed(x)
+        x = self.section.with_fixed(x)  # the potential moves with the voltage (its lift)
         r = self.section.residual(x)
         if self.f is not None:
             r = r - self.f

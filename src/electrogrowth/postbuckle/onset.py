@@ -36,8 +36,11 @@ def lowest_eigenvalue(section, x: np.ndarray, *, vector: bool = False):
     i = int(np.argmin(vals))
     if not vector:
         return float(vals[i])
+    # one step of the shift-invert iteration sets the pressure and potential parts, which
+    # the Lanczos vectors leave undetermined where M is singular (purification)
+    v = spla.spsolve((K - SHIFT * M).tocsc(), M @ vecs[:, i])
     z = np.zeros(section.basis.N)
-    z[f] = vecs[:, i]
+    z[f] = v / np.sqrt(v @ (M @ v))
     return float(vals[i]), z
 
 

@@ -217,6 +217,8 @@ class Section:
         self.phi_inner = self.basis.get_dofs(lambda x: np.isclose(x[0], 1.0)).all("u^5")
         self.phi_outer = self.basis.get_dofs(lambda x: np.isclose(x[0], R_N)).all("u^5")
         self.phi_dofs = self.basis.get_dofs(elements=True).all("u^5")
+        R_phi = self.basis.doflocs[0, self.phi_dofs]
+        self.lift = np.log(radii[-1] / R_phi) / np.log(radii[-1])
         self.fixed = np.unique(np.concatenate([self.hoop_fixed, self.phi_inner, self.phi_outer]))
         self.free = np.setdiff1d(np.arange(self.basis.N), self.fixed)
         self.R = np.asarray(self.basis.global_coordinates())[0]
@@ -275,18 +277,15 @@ class Section:
 
     def with_fixed(self, x: np.ndarray) -> np.ndarray:
         """``x`` with its prescribed entries set to the current tube's values. When the
-        voltage differs from the one ``x`` was solved at, the whole potential is scaled to it
-        (from zero: the undeformed wall's V log(R_N / R) / log R_N), Newton's start: a jump
-        in the electrodes' values alone puts the whole field into the first element."""
+        voltage differs from the one ``x`` holds, the whole potential moves by the change
+        times the lift L = log(R_N / R) / log R_N (1 on the inner electrode, 0 on the outer),
+        not the electrodes' values alone (which would put the whole change into the first
+        element): the free unknowns are in effect phi - V L, so a change of the control
+        moves the state smoothly (Newton's start, and dR/dc of the branch)."""
         x = x.copy()
-        old = x[self.phi_inner[0]]
-        if old != self.voltage:
-            phi = self.phi_dofs
-            if old != 0:
-                x[phi] *= self.voltage / old
-            else:
-                R = self.basis.doflocs[0, phi]
-                x[phi] = self.voltage * np.log(self.radii[-1] / R) / np.log(self.radii[-1])
+        change = self.voltage - x[self.phi_inner[0]]
+        if change:
+            x[self.phi_dofs] += change * self.lift
         d = self.dirichlet()
         x[self.fixed] = d[self.fixed]
         return x
