@@ -25,7 +25,7 @@ import numpy as np
 import scipy.sparse as sps
 import scipy.sparse.linalg as spla
 
-from ..errors import ConvergenceError
+from ..errors import ConvergenceError, ParameterError
 from ..interrupts import Interrupted
 from .newton import MAX_ITERATIONS, RESIDUAL_TOL, fe_error
 from .onset import lowest_eigenvalue
@@ -75,7 +75,11 @@ class AmplitudeBranch:
         self.section.set_tube(self.tube.at(self.control, c))
 
     def _residual(self, x, c):
-        self._set(c)
+        try:
+            self._set(c)
+        except ParameterError as exc:  # a Newton step left the control's range
+            message = f"a Newton step left the control's range: {exc}"
+            raise fe_error(ConvergenceError, message) from None
         x = self.section.with_fixed(x)  # the potential moves with the voltage (its lift)
         r = self.section.residual(x)
         if self.f is not None:
