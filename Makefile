@@ -14,7 +14,7 @@ $(VENV)/.installed: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	@echo "electrogrowth: installing the package and its tools into $(VENV) (1-3 min)"
 	$(BIN)/python -m pip install -q --upgrade pip
-	$(BIN)/python -m pip install -q -e '.[test,lint,vtk,sweep,units]'
+	$(BIN)/python -m pip install -q -e '.[test,lint,vtk,sweep,units,fe]'
 	@# compile the numba kernels now (cache=True keeps them), not at a user's first call.
 	@# They do not depend on the energy: gent, mooney-rivlin and --energy load this cache
 	@# (NUMBA_DEBUG_CACHE=1), and an energy's own derivatives take ~0.1 s per process.

@@ -66,6 +66,8 @@ SLOW = {
     "curve --tube": "a layered curve with its switches located (26 s)",
     "Material(": "a new energy: its moduli are derived and compiled (11-33 s)",
     "--energy": "the same new energy, when the block above has not compiled it",
+    "postbuckle --tube": "a finite-element onset and branch (the fe extra; 40 s)",
+    "postbuckle(tube": "a finite-element onset and branch (the fe extra; 40 s)",
     "--solve-for pressure": "a layered scan for the pressure up to m = 16, n = 8 (30 s)",
 }
 #: Commands not run at all, with the reason.

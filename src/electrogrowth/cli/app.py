@@ -93,6 +93,11 @@ COMMANDS: dict[str, tuple[str, Callable, Callable]] = {
         _lazy("curve", "configure_curve"),
         _lazy("curve", "run_curve"),
     ),
+    "postbuckle": (
+        "the post-buckled cross-section of a prismatic mode by finite elements (the fe extra)",
+        _lazy("postbuckle", "configure_postbuckle"),
+        _lazy("postbuckle", "run_postbuckle"),
+    ),
     "design": (
         "which value of one design variable gives the wanted pattern, with the widest margin",
         _lazy("design", "configure_design"),

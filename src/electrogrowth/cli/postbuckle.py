@@ -1,0 +1,184 @@
+"""``electrogrowth postbuckle``: the post-buckled cross-section of a prismatic mode (m, 0) by
+finite elements, from the package's onset (the ``fe`` extra)."""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import sys
+from pathlib import Path
+
+from ..errors import MissingDependencyError, ParameterError, Remedy
+from ..interrupts import Interrupted
+from .options import add_control_options, bounded_int, check_side_option, finite_number
+from .progress import add_quiet_option, enabled
+from .tube_input import add_any_tube_options, control_of
+
+INSTALL = "pip install 'electrogrowth[fe]'"
+
+
+def configure_postbuckle(parser: argparse.ArgumentParser) -> None:
+    add_control_options(parser)
+    add_any_tube_options(parser)
+    mode = parser.add_argument_group("mode and branch")
+    mode.add_argument(
+        "--mode",
+        type=bounded_int(2, 200),
+        metavar="M",
+        help="the circumferential wavenumber m of the prismatic mode (m, 0) (default: the"
+        " critical prismatic mode of a scan)",
+    )
+    mode.add_argument(
+        "--amplitude",
+        type=finite_number,
+        default=0.05,
+        metavar="A",
+        help="follow the branch up to this fold amplitude, units R_i: the inner (or, where"
+        " the mode is larger, the outer) face's cos(m theta) radial displacement (default"
+        " 0.05)",
+    )
+    mode.add_argument(
+        "--points",
+        type=bounded_int(1, 1000),
+        default=10,
+        help="branch points, equally spaced in the amplitude (default 10)",
+    )
+    mode.add_argument(
+        "--imperfection",
+        type=finite_number,
+        default=0.0,
+        metavar="XI",
+        help="a load imperfection in the shape of the critical mode, units mu (default 0: the"
+        " perfect bifurcated branch)",
+    )
+    num = parser.add_argument_group("mesh")
+    num.add_argument(
+        "--density",
+        type=finite_number,
+        default=20.0,
+        help="elements per unit reference length across the wall, at least 2 per layer"
+        " (default 20)",
+    )
+    num.add_argument(
+        "--hoop",
+        type=bounded_int(1, 1000),
+        metavar="N",
+        help="elements along the sector pi/m (default from --density, at least 4)",
+    )
+    parser.add_argument("--json", action="store_true", help="print the result as JSON")
+    parser.add_argument(
+        "--out",
+        metavar="DIR",
+        help="write branch.csv, branch.png, folding.png and the deformed ring of each branch"
+        " point as shape-K.vtu (VTK, needs meshio: the vtk extra) into DIR",
+    )
+    add_quiet_option(parser)
+
+
+def run_postbuckle(args) -> int:
+    try:
+        import skfem  # noqa: F401
+    except ImportError:
+        missing = MissingDependencyError("postbuckle needs the finite-element extra, scikit-fem")
+        missing.remedy = Remedy(INSTALL)
+        raise missing from None
+    from ..postbuckle import postbuckle
+
+    check_side_option(args)
+    tube, control = control_of(args)
+    m = args.mode if args.mode is not None else _critical_prismatic(tube, control, args)
+    say = _say if enabled(args) else None
+    try:
+        result = postbuckle(
+            tube,
+            m,
+            control,
+            amplitude=args.amplitude,
+            points=args.points,
+            density=args.density,
+            hoop=args.hoop,
+            imperfection=args.imperfection,
+            progress=say,
+        )
+    except Interrupted as stop:  # keep the finished branch points
+        done = stop.partial
+        if done is None or args.out is None:
+            raise
+        _write(done, Path(args.out))
+        raise Interrupted(
+            stop.signum,
+            f"{stop}; {len(done.amplitude)} finished branch points written to {args.out}",
+        ) from None
+    if args.out:
+        _write(result, Path(args.out))
+    if result.ended:
+        print(f"electrogrowth: warning: {result.ended}", file=sys.stderr)
+    if args.json:
+        print(json.dumps(result.as_dict(), indent=2))
+    else:
+        print(
+            f"mode ({m}, 0), {control}: linear onset {result.onset_linear:.8g}, FE onset"
+            f" {result.onset_fe:.8g} (relative difference"
+            f" {(result.onset_fe - result.onset_linear) / abs(result.onset_linear):.2e}),"
+            f" mesh {result.mesh.elements} elements, {result.unknowns} unknowns"
+        )
+        print(f"initial curvature d({control})/d(a^2) = {result.curvature:.6g}")
+        print("amplitude  control  energy  lowest_eigenvalue")
+        for a, c, e, v in zip(result.amplitude, result.control, result.energy, result.eigenvalue):
+            print(f"{a:.6g}  {c:.10g}  {e:.10g}  {v:.4g}")
+    return 0
+
+
+def _say(text: str) -> None:
+    print(f"electrogrowth: {text}", file=sys.stderr, flush=True)
+
+
+def _critical_prismatic(tube, control, args) -> int:
+    from ..bifurcation.scan import scan_modes
+
+    if enabled(args):
+        _say("scanning the modes for the critical prismatic one")
+    scan = scan_modes(tube, control, side=args.side)
+    for point in (scan.critical, *scan.runners_up):
+        m, n = getattr(point, "m", None), getattr(point, "n", None)
+        if n == 0 and isinstance(m, int) and m >= 2:
+            return m
+    c = scan.critical
+    raise ParameterError(
+        f"the scan's critical mode is ({c.m}, {c.n}) and no prismatic mode (m, 0) is among"
+        " its runners-up; the cross-section model covers n = 0: give --mode M"
+    )
+
+
+def _write(result, out: Path) -> None:
+    from ..figures.postbuckle import plot_branch, plot_folding
+    from ..postbuckle.shape import ring
+
+    out.mkdir(parents=True, exist_ok=True)
+    with open(out / "branch.csv", "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["amplitude", result.solve_for, "energy", "lowest_eigenvalue"])
+        for row in zip(result.amplitude, result.control, result.energy, result.eigenvalue):
+            w.writerow([repr(float(v)) for v in row])
+    plot_branch(result).savefig(out / "branch.png", dpi=150)
+    plot_folding(result).savefig(out / "folding.png", dpi=150)
+    try:
+        import meshio
+    except ImportError:
+        print(
+            "electrogrowth: no VTK files: meshio is missing (pip install 'electrogrowth[vtk]')",
+            file=sys.stderr,
+        )
+        return
+    import numpy as np
+
+    section = result.section
+    for k, x in enumerate(result.states):
+        section.set_tube(result.tube.at(result.solve_for, result.control[k]))
+        pts, cells, layer = ring(section, x)
+        points = np.vstack([pts, np.zeros(pts.shape[1])]).T
+        meshio.write(
+            out / f"shape-{k}.vtu",
+            meshio.Mesh(points, [("quad", cells)], cell_data={"layer": [layer + 1]}),
+        )

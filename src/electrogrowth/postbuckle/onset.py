@@ -1,0 +1,130 @@
+"""Where the finite-element cross-section loses stability on its unperturbed path: the
+sign change of the lowest eigenvalue of the tangent stiffness restricted to the
+incompressible, charge-balanced displacements of the sector (the modes cos(j m Theta)).
+
+The eigenproblem K z = lambda M z with M the L2 mass of the displacement alone: the
+pressure and potential rows of M vanish, so their directions have infinite eigenvalues, and
+the finite ones are those of the stiffness condensed onto the displacements that keep
+det F_e = 1 and Gauss's law (the second variation of the energy there). Solved by
+shift-invert Lanczos about a shift below the spectrum.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import scipy.optimize as so
+import scipy.sparse.linalg as spla
+
+from ..errors import NoBifurcationFound, ParameterError
+from ..model.layers import Tube
+from .newton import loaded, newton
+
+#: the shift of the shift-invert eigensolver, units mu: below the lowest eigenvalues met
+#: near onset, above the large negative ones a buckled state never reaches
+SHIFT = -0.5
+
+
+def lowest_eigenvalue(section, x: np.ndarray, *, vector: bool = False):
+    """The lowest eigenvalue of the tangent at ``x`` in the sector's subspace (and, with
+    ``vector``, its eigenvector on all unknowns, zero on the prescribed ones, mass-normalised)."""
+    f = section.free
+    K = section.tangent(x)[f][:, f].tocsc()
+    M = section.M[f][:, f].tocsc()
+    vals, vecs = spla.eigsh(K, k=2, M=M, sigma=SHIFT, which="LM")
+    i = int(np.argmin(vals))
+    if not vector:
+        return float(vals[i])
+    # one step of the shift-invert iteration sets the pressure and potential parts, which
+    # the Lanczos vectors leave undetermined where M is singular (purification)
+    v = spla.spsolve((K - SHIFT * M).tocsc(), M @ vecs[:, i])
+    z = np.zeros(section.basis.N)
+    z[f] = v / np.sqrt(v @ (M @ v))
+    return float(vals[i]), z
+
+
+def start_value(tube: Tube, control: str) -> float:
+    """Where the unperturbed path starts: the ungrown tube (growth 1), no voltage, the inner
+    pressure equal to the outer."""
+    kind = tube.check_control(control).kind
+    if kind == "growth":
+        return 1.0
+    if kind == "voltage":
+        return 0.0
+    if kind == "pressure":
+        return tube.outer_pressure
+    raise ParameterError(
+        f"control {control!r} is not followed by the finite-element model; choose growth,"
+        " growth[K], growth[K].theta, voltage or pressure"
+    )
+
+
+@dataclasses.dataclass(frozen=True)
+class FEOnset:
+    """The sign change of the lowest eigenvalue: ``value`` of the control, the state there
+    ``x`` and the eigenvector ``mode`` (the critical mode on the mesh), the eigenvalues
+    sampled on the march (``path``: control, eigenvalue)."""
+
+    value: float
+    x: np.ndarray
+    mode: np.ndarray
+    path: tuple[tuple[float, float], ...]
+
+
+def fe_onset(
+    section,
+    tube: Tube,
+    control: str,
+    guess: float,
+    *,
+    steps: int = 4,
+    xtol: float = 1e-10,
+) -> FEOnset:
+    """The control value where the lowest eigenvalue of ``section`` changes sign on the
+    unperturbed path. The path is walked from the start value (:func:`start_value`) in
+    ``steps`` equal steps to 0.9 ``guess`` (e.g. the package's linear onset: only the steps
+    depend on it), then by secant predictions of the eigenvalue's zero (stepping 1 % of the
+    span past it) until it changes sign, then Brent's method to ``xtol``.
+    NoBifurcationFound if it has not changed sign by 2 ``guess``."""
+    start = start_value(tube, control)
+    x = loaded(section, tube.at(control, start), steps=3)
+    states: dict[float, tuple[np.ndarray, float]] = {}
+
+    def at(c: float) -> float:
+        nonlocal x
+        near = min(states, key=lambda k: abs(k - c)) if states else None
+        x0 = states[near][0] if near is not None else x
+        section.set_tube(tube.at(control, c))
+        xc, _ = newton(section, x0)
+        lam = lowest_eigenvalue(section, xc)
+        states[c] = (xc, lam)
+        return lam
+
+    path = []
+    span = guess - start
+    for c in np.linspace(start, start + 0.9 * span, steps + 1)[1:]:
+        path.append((float(c), at(float(c))))
+    (c_prev, lam_prev), (c, lam) = path[-2], path[-1]
+    if lam <= 0:
+        raise NoBifurcationFound(
+            f"the finite-element tube is already unstable at {control} = {c:.6g};"
+            " give a larger guess or more steps"
+        )
+    while lam > 0:
+        # the secant's zero, 1 % of the span past it, at most 10 % of the span ahead
+        zero = c - lam * (c - c_prev) / (lam - lam_prev) if lam != lam_prev else c + span
+        ahead = np.clip(zero + 0.01 * span - c, 0.002 * span, 0.1 * span)
+        c_prev, lam_prev = c, lam
+        c = c + float(ahead)
+        if abs(c - start) > 2 * abs(span):
+            raise NoBifurcationFound(
+                f"the lowest eigenvalue does not change sign up to {control} = {c:.6g}"
+            )
+        lam = at(c)
+        path.append((float(c), lam))
+    value = so.brentq(at, c_prev, c, xtol=xtol, rtol=4 * np.finfo(float).eps)
+    section.set_tube(tube.at(control, value))
+    xv, _ = newton(section, states[min(states, key=lambda k: abs(k - value))][0])
+    _, mode = lowest_eigenvalue(section, xv, vector=True)
+    return FEOnset(float(value), xv, mode, tuple(sorted(path)))

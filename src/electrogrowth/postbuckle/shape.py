@@ -1,0 +1,57 @@
+"""The deformed cross-section: the sector's vertices moved, and the whole ring by reflecting
+the sector about its first ray and turning the pair by 2 pi / m (the symmetry it was solved
+with)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+
+def deformed_vertices(section, x: np.ndarray) -> np.ndarray:
+    """Current Cartesian positions of the sector's mesh vertices, shape (2, nvertices)."""
+    R, T = section.mesh.p
+    uR = x[section.basis.nodal_dofs[0]]
+    uT = x[section.basis.nodal_dofs[1]]
+    c, s = np.cos(T), np.sin(T)
+    return np.array([(R + uR) * c - uT * s, (R + uR) * s + uT * c])
+
+
+def ring(section, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The whole ring: (points (2, n), quadrilaterals (n_cells, 4), layer of each cell), the
+    sector reflected and turned 2 m times (vertices on the rays repeated)."""
+    m = section.m
+    pts = deformed_vertices(section, x)
+    cells = section.mesh.t.T
+    mirror = np.array([pts[0], -pts[1]])
+    all_pts, all_cells, layers = [], [], []
+    n = pts.shape[1]
+    for k in range(m):
+        a = 2 * math.pi * k / m
+        rot = np.array([[math.cos(a), -math.sin(a)], [math.sin(a), math.cos(a)]])
+        for j, (p, c) in enumerate(((pts, cells), (mirror, cells[:, ::-1]))):
+            all_pts.append(rot @ p)
+            all_cells.append(c + n * (2 * k + j))
+            layers.append(section.layer_of)
+    return np.hstack(all_pts), np.vstack(all_cells), np.concatenate(layers)
+
+
+def face_curve(section, x: np.ndarray, face: str) -> np.ndarray:
+    """The current face (inner or outer) around the whole ring, closed, shape (2, n)."""
+    dofs, theta = section.face_dofs(face)
+    R = 1.0 if face == "inner" else section.tube.radii[-1]
+    verts = np.nonzero(np.isclose(section.mesh.p[0], R))[0]
+    verts = verts[np.argsort(section.mesh.p[1, verts])]
+    pts = deformed_vertices(section, x)[:, verts]
+    m = section.m
+    parts = []
+    for k in range(m):
+        a = 2 * math.pi * k / m
+        rot = np.array([[math.cos(a), -math.sin(a)], [math.sin(a), math.cos(a)]])
+        mirror = np.array([pts[0], -pts[1]])[:, ::-1]
+        parts.append(rot @ mirror[:, :-1])
+        parts.append(rot @ pts[:, :-1])
+    curve = np.hstack(parts)
+    # sector 0 starts at the reflected half (-pi/m .. 0): rotate so it starts at angle 0
+    return np.hstack([curve, curve[:, :1]])

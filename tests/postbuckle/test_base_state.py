@@ -1,0 +1,65 @@
+"""The finite-element base state against the package's (basestate/: closed-form kinematics
+and quadrature, an independent route): radii to 1e-6 at coarse meshes (Q2 displacements
+converge at fourth order at the nodes), stresses at second order (the pressure is linear
+per element)."""
+
+import numpy as np
+import pytest
+
+pytest.importorskip("skfem")
+
+from electrogrowth.basestate.tube import solve_base_state  # noqa: E402
+from electrogrowth.model.layers import Layer, Tube  # noqa: E402
+from electrogrowth.postbuckle.newton import loaded  # noqa: E402
+from electrogrowth.postbuckle.section import Section, mesh_size  # noqa: E402
+
+BILAYER = Tube((Layer(1.1, shear_modulus=10.0, growth=(1.0, 1.5, 1.0)), Layer(2.0)), stretch=1.0)
+#: every load at once: anisotropic growth, axial stretch, both pressures, voltage, contrasts
+LOADED = Tube(
+    (Layer(1.5, growth=(1.05, 1.1, 1.02)), Layer(2.0, shear_modulus=2.0, permittivity=3.0)),
+    stretch=1.1,
+    voltage=0.3,
+    inner_pressure=0.3,
+    outer_pressure=0.1,
+)
+
+
+def errors(tube, density, m=4):
+    """The base state on one element along the sector pi / m (the state does not depend on
+    Theta; m sets the elements' aspect ratio)."""
+    section = Section(tube, m, mesh_size(tube, m, density, hoop=1))
+    x = loaded(section, tube, steps=3)
+    state = solve_base_state(tube)
+    radius = 0.0
+    for face, R in (("inner", 1.0), ("outer", tube.radii[-1])):
+        dofs, _ = section.face_dofs(face)
+        radius = max(radius, np.abs(R + x[dofs] - state.radius(R)).max())
+    sigma = section.stresses(x)
+    srr, stt, _ = state.stresses(section.R.ravel())
+    stress = max(np.abs(sigma[0, 0].ravel() - srr).max(), np.abs(sigma[1, 1].ravel() - stt).max())
+    return radius, stress, np.abs(sigma[0, 1]).max()
+
+
+@pytest.mark.parametrize(
+    "tube, density",
+    [pytest.param(BILAYER, 20, marks=pytest.mark.slow), (LOADED, 8)],
+    ids=["bilayer-growth", "pressures-voltage"],
+)
+def test_base_state_matches_the_package(tube, density):
+    r1, s1, shear = errors(tube, density)
+    assert r1 < 1e-6
+    assert s1 < 2e-3
+    assert shear < 1e-9  # the axisymmetric state has no shear
+    r2, s2, _ = errors(tube, 2 * density)
+    assert r2 < r1 / 4  # fourth order at the nodes (2**4 = 16; 5.5 from 8 to 16)
+    assert s2 < s1 / 2.5  # second order in the stresses (2**2 = 4; 2.75 seen)
+
+
+@pytest.mark.slow
+def test_base_state_stresses_converge_to_1e_6():
+    """Stresses to 1e-6 at 320 elements across the unit wall (second order; 2.3e-7
+    measured), radii at the Newton tolerance's floor (3e-10); the sector pi / 64 keeps the
+    elements' aspect ratio below 40."""
+    r, s, _ = errors(LOADED, 320, m=64)
+    assert r < 1e-9
+    assert s < 1e-6

@@ -1,0 +1,65 @@
+"""The branch follower's bookkeeping (without a mesh): secant predictions, early stop, and a
+Ctrl-C that keeps the finished points."""
+
+import numpy as np
+import pytest
+
+pytest.importorskip("skfem")
+
+from electrogrowth.interrupts import Interrupted  # noqa: E402
+from electrogrowth.postbuckle.branch import AmplitudeBranch, BranchPoint  # noqa: E402
+
+
+class _Section:
+    def energy(self, x):
+        return float(x @ x)
+
+
+def _branch(solve):
+    branch = object.__new__(AmplitudeBranch)
+    branch.section = _Section()
+    branch.solve = solve
+    branch.eigenvalues = False
+    return branch
+
+
+def test_secant_prediction_is_exact_on_a_straight_branch():
+    guesses = []
+
+    def solve(x, c, amplitude):  # the branch c = 1 + a, x = (a, 2a)
+        guesses.append((x.copy(), c))
+        return np.array([amplitude, 2 * amplitude]), 1 + amplitude, 0
+
+    start = BranchPoint(1.0, 0.0, 0.0, np.zeros(2))
+    pts = _branch(solve).follow(start, [0.1, 0.2, 0.3], direction=np.array([1.0, 2.0]))
+    assert [p.control for p in pts] == pytest.approx([1.1, 1.2, 1.3])
+    x2, c2 = guesses[2]
+    assert c2 == pytest.approx(1.3) and x2 == pytest.approx([0.3, 0.6])
+
+
+def test_ctrl_c_keeps_the_finished_points():
+    calls = []
+
+    def solve(x, c, amplitude):
+        calls.append(amplitude)
+        if len(calls) == 3:
+            raise KeyboardInterrupt
+        return x, c, 0
+
+    start = BranchPoint(1.0, 0.0, 0.0, np.zeros(2))
+    with pytest.raises(Interrupted) as stop:
+        _branch(solve).follow(start, [0.1, 0.2, 0.3, 0.4])
+    assert [p.amplitude for p in stop.value.partial] == [0.1, 0.2]
+
+
+def test_a_failed_step_is_halved():
+    from electrogrowth.errors import ConvergenceError
+
+    def solve(x, c, amplitude):
+        if amplitude - x[0] > 0.15:  # converges only from within 0.15 of the target
+            raise ConvergenceError("too far")
+        return np.array([amplitude, 0.0]), 1 + amplitude, 0
+
+    start = BranchPoint(1.0, 0.0, 0.0, np.zeros(2))
+    pts = _branch(solve).follow(start, [0.2])
+    assert [p.amplitude for p in pts] == [0.1, 0.2]

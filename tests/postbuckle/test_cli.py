@@ -1,0 +1,58 @@
+"""``electrogrowth postbuckle``: the JSON record, the files of --out, and the one-line
+message without the fe extra."""
+
+import json
+import sys
+
+import pytest
+
+from electrogrowth.cli.app import main
+
+TUBE = """stretch = 1.0
+voltage = 0.3
+inner_pressure = 0.05
+
+[[layers]]
+outer_radius = 1.1
+shear_modulus = 10.0
+
+[[layers]]
+outer_radius = 2.0
+"""
+ARGS = ["postbuckle", "--solve-for", "growth", "--layer", "1", "--component", "theta"]
+
+
+def test_without_the_extra_says_how_to_install(tmp_path, capsys, monkeypatch):
+    monkeypatch.setitem(sys.modules, "skfem", None)  # import skfem raises ImportError
+    (tmp_path / "tube.toml").write_text(TUBE)
+    status = main([*ARGS, "--tube", str(tmp_path / "tube.toml"), "--mode", "12"])
+    out, err = capsys.readouterr()
+    assert status == 2 and out == ""
+    assert len(err.strip().splitlines()) == 1
+    assert "pip install 'electrogrowth[fe]'" in err
+
+
+def test_json_and_files_of_a_charged_pressurised_bilayer(tmp_path, capsys):
+    """Growth, voltage and pressure at once on a coarse mesh (6 x 3 elements): the FE onset
+    within 2e-3 of the linear one, the imperfect branch through it, every file written."""
+    pytest.importorskip("skfem")
+    (tmp_path / "tube.toml").write_text(TUBE)
+    argv = [*ARGS, "--tube", str(tmp_path / "tube.toml"), "--mode", "12", "--density", "6"]
+    argv += ["--hoop", "3", "--points", "2", "--amplitude", "0.02", "--imperfection", "1e-3"]
+    status = main([*argv, "--json", "--out", str(tmp_path / "out")])
+    out, err = capsys.readouterr()
+    assert status == 0, err
+    rec = json.loads(out)
+    assert rec["m"] == 12 and rec["n"] == 0
+    assert abs(rec["onset_fe"] - rec["onset_linear"]) < 2e-3 * rec["onset_linear"]
+    assert rec["mesh"]["elements"] == (2 + 6) * 3
+    branch = rec["branch"]
+    assert len(branch["control"]) == len(branch["amplitude"]) == len(branch["energy"]) == 3
+    assert rec["ended"] is None
+    # stable below onset and on the branch beyond it (its curvature sign says which)
+    assert all(v > 0 for v in branch["lowest_eigenvalue"][:1])
+    assert branch["amplitude"][-1] == pytest.approx(0.02)
+    # the imperfect path starts below onset, close to the axisymmetric state
+    assert branch["control"][0] < rec["onset_fe"] and branch["amplitude"][0] < 1e-3
+    names = {p.name for p in (tmp_path / "out").iterdir()}
+    assert {"branch.csv", "branch.png", "folding.png", "shape-0.vtu"} <= names
