@@ -1,0 +1,216 @@
+"""The Koiter coefficient of a film on a half-space (bifurcation/koiter.py,
+docs/derivation-koiter.md): the linear problem against the exact determinant, the
+super/subcritical boundary against the literature, convergence, symmetry, invariances,
+and the curvature of the branch from a direct Newton solve of the nonlinear problem."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import pytest
+import scipy.optimize
+
+from electrogrowth.bifurcation.koiter import (
+    MODE,
+    FilmOnHalfSpace,
+    critical_mode,
+    critical_stretch,
+    expansion,
+    koiter_coefficient,
+    sign_change_ratio,
+)
+from electrogrowth.errors import NoBifurcationFound, ParameterError
+from electrogrowth.incremental.plane_forms import Forms, Segment, Space
+from electrogrowth.model.layers import Tube
+
+FAST = {"nodes": 10, "substrate_nodes": 14}
+
+
+# ---- an independent route to the linear problem: the exact determinant ---------------
+
+
+def _columns(s: float, k: float, mu: float, l2: float, y: float) -> np.ndarray:
+    """(u1, u2, t1, t2) at y of psi = e^{s y} e^{ikx} (u1 = psi_y, u2 = -psi_x) in a
+    neo-Hookean layer at stretches (1 / l2, l2), p0 = mu l2^2, with the traction on
+    y = const S_2i = mu l2^2 u_i,2 + p0 u_2,i - p delta_2i and p from the x1 equation
+    (Ogden's incremental equations, as in tools/derive_film.py), current coordinates."""
+    l1 = 1 / l2
+    e = np.exp(s * y)
+    u1, u2 = s * e, -1j * k * e
+    p = mu * (-(l1**2) * k**2 * s + l2**2 * s**3) / (1j * k) * e
+    p0 = mu * l2**2
+    t1 = mu * l2**2 * s**2 * e + p0 * 1j * k * u2
+    t2 = mu * l2**2 * s * u2 + p0 * s * u2 - p
+    return np.array([u1, u2, t1, t2])
+
+
+def _determinant(lam: float, K: float, ratio: float) -> float:
+    """The 6 x 6 determinant of the compressed bilayer (film [0, 1/lam] current, on a
+    half-space, both at stretch lam along the wave, reference wavenumber K, k = K / lam):
+    four film exponentials +-k, +-k lam^2, two decaying ones k, k lam^2 below."""
+    k, h = K / lam, 1 / lam
+    rates = (k, -k, k * lam**2, -k * lam**2)
+    M = np.zeros((6, 6), complex)
+    for j, s in enumerate(rates):
+        M[0:2, j] = _columns(s, k, ratio, 1 / lam, h)[2:]
+        M[2:6, j] = _columns(s, k, ratio, 1 / lam, 0.0)
+    for j, s in enumerate((k, k * lam**2)):
+        M[2:6, 4 + j] = -_columns(s, k, 1.0, 1 / lam, 0.0)
+    M /= np.abs(M).max(axis=1, keepdims=True)
+    return float(np.real(np.linalg.det(M) / 1j))
+
+
+@pytest.mark.parametrize("ratio", [2.0, 5.0])
+def test_linear_problem_against_the_exact_determinant(ratio):
+    """The critical stretch of a fixed wavenumber from the discrete energy is a root of
+    the exact determinant (independent: closed-form exponentials, no discretisation)."""
+    film = FilmOnHalfSpace(ratio, **FAST)
+    forms = Forms.build(Space(film.segments(), MODE))
+    for K in (0.5, 0.9):
+        lam = critical_stretch(forms, K).lam
+        exact = scipy.optimize.brentq(_determinant, lam - 2e-3, lam + 2e-3, args=(K, ratio))
+        assert lam == pytest.approx(exact, abs=1e-9)
+
+
+def test_unstressed_substrate_matches_the_flat_film_table():
+    """docs/derivation-film.md (tools/derive_film.py, exact): mu_f / mu_s = 2 on an
+    unstressed half-space folds at k h = 1.3907973 (current), lambda_cr = 0.7295973."""
+    K, lam = critical_mode(FilmOnHalfSpace(2.0, substrate="unstressed", **FAST))
+    assert lam == pytest.approx(0.7295973, abs=1e-7)
+    assert K / lam**2 == pytest.approx(1.3907973, abs=1e-6)  # k h = (K / lam) (1 / lam)
+
+
+# ---- the sign change against the literature -----------------------------------------
+
+
+def test_sign_change_ratio_matches_the_published_threshold():
+    """Cao & Hutchinson (2012, J. Appl. Mech. 79, 031019): a compressed neo-Hookean
+    bilayer wrinkles stably (supercritically) for mu_f / mu_s above about 1.74; Zhou, Cai
+    & Fu (2021, Math. Mech. Solids, doi 10.1177/10812865211010886) quote the same boundary
+    as mu_s / mu_f ~ 0.57. Both are given to two or three digits, which is what is tested;
+    the computed ratio itself is converged to 1e-6 (test_sign_change_converges)."""
+    r = sign_change_ratio(1.745, 1.76, xtol=1e-4, **FAST)
+    assert abs(r - 1.74) < 0.015
+    assert abs(1 / r - 0.57) <= 0.005
+    assert koiter_coefficient(FilmOnHalfSpace(r + 0.01, **FAST)).branch == "supercritical"
+    assert koiter_coefficient(FilmOnHalfSpace(r - 0.01, **FAST)).branch == "subcritical"
+
+
+@pytest.mark.slow
+def test_sign_change_converges():
+    """Finer nodes and a deeper truncation move the ratio by less than 1e-6."""
+    coarse = sign_change_ratio(1.74, 1.76, **FAST)
+    fine = sign_change_ratio(1.74, 1.76, nodes=20, substrate_nodes=30, depth=60.0)
+    assert fine == pytest.approx(coarse, abs=1e-6)
+
+
+# ---- convergence, symmetry, invariances ---------------------------------------------
+
+
+def test_coefficient_converges_and_estimates_its_error():
+    r = koiter_coefficient(FilmOnHalfSpace(5.0, **FAST))
+    fine = expansion(FilmOnHalfSpace(5.0, nodes=14, substrate_nodes=20, depth=30.0).segments())
+    assert r.branch == "supercritical" and r.coefficient < 0
+    assert r.coefficient == pytest.approx(fine.lambda_2, rel=1e-7)
+    assert r.error_estimate < 1e-6 * abs(r.coefficient)
+    assert r.as_dict()["branch"] == "supercritical"
+
+
+def test_cubic_term_vanishes_by_symmetry():
+    """lambda_1 = -C[phi, phi, phi] / (2 A'[phi, phi]) = 0 for the symmetric wrinkle; and
+    the correction is orthogonal to the mode by construction (other harmonics)."""
+    e = expansion(FilmOnHalfSpace(3.0, **FAST).segments())
+    f = e.first.fields(e.phi, e.K)
+    cubic = e.first.cubic_gradient(f, f, e.K) @ e.phi
+    second_order = e.second.cubic_gradient(f, f, e.K) @ e.psi  # C[phi, phi, psi], not 0
+    assert abs(second_order) > 1e-3
+    assert abs(cubic) < 1e-12 * abs(second_order)
+
+
+def _scaled(segments, mu=1.0, length=1.0):
+    return tuple(
+        dataclasses.replace(s, bottom=s.bottom * length, top=s.top * length, mu=s.mu * mu)
+        for s in segments
+    )
+
+
+@pytest.mark.parametrize(
+    "scale", [{"mu": 7.0}, pytest.param({"length": 1.6}, marks=pytest.mark.slow)]
+)
+def test_invariant_under_moduli_and_length_scales(scale):
+    """Multiplying every modulus, or every length, leaves lambda_c and lambda_2 unchanged
+    (eps = K w is dimensionless); K_c scales as 1 / length."""
+    segs = FilmOnHalfSpace(2.5, **FAST).segments()
+    base, e = expansion(segs), expansion(_scaled(segs, **scale))
+    assert e.lam == pytest.approx(base.lam, abs=1e-11)
+    assert e.lambda_2 == pytest.approx(base.lambda_2, rel=1e-8)
+    assert e.K * scale.get("length", 1.0) == pytest.approx(base.K, rel=1e-8)
+
+
+# ---- a second route: the branch of the full nonlinear discrete problem ---------------
+
+
+def _branch_point(e, eps: float) -> float:
+    """lambda on the bifurcated branch at amplitude eps = K_c w, by Newton's method on the
+    full equations A(lambda) w + C[w, w, .] / 2 = 0 of the discrete energy (harmonics 0-3,
+    exact in X), with the amplitude of harmonic 1 at the free face prescribed: no
+    expansion, no Koiter formula."""
+    segs = e.first.space.segments
+    harmonics = tuple((f, j) for j in range(4) for f in range(3) if not (f == 0 and j == 0))
+    forms = Forms.build(Space(segs, harmonics, x_points=16))
+    layout, n = forms.space._layout
+    w = np.zeros(n)
+    one = dict(zip(harmonics, layout))
+    mode_layout = e.first.space._layout[0]
+    for f in range(3):
+        w[one[(f, 1)]] = eps * e.phi[mode_layout[f]]
+    top = one[(1, 1)].stop - 1
+    lam, K = e.lam, e.K
+    for _ in range(30):
+        fw = forms.fields(w, K)
+        R = forms.stiffness(K, lam) @ w + 0.5 * forms.cubic_gradient(fw, fw, K)
+        J = np.zeros((n + 1, n + 1))
+        J[:n, :n] = forms.stiffness(K, lam) + forms.cubic_hessian(fw, K)
+        J[:n, n] = forms.stiffness(K, lam, wrt="lambda") @ w
+        J[n, top] = K
+        rhs = np.concatenate([R, [K * w[top] - eps]])
+        step = np.linalg.solve(J, rhs)
+        w -= step[:n]
+        lam -= step[n]
+        if abs(step[n]) < 1e-15 and np.abs(step[:n]).max() < 1e-13:
+            break
+    return lam
+
+
+@pytest.mark.parametrize("ratio", [1.3, pytest.param(3.0, marks=pytest.mark.slow)])
+def test_branch_curvature_from_a_direct_nonlinear_solve(ratio):
+    """(lambda(eps) - lambda_c) / eps^2 of the Newton branch, Richardson-extrapolated in
+    eps^2, equals lambda_2 of the expansion: sub- (1.3) and supercritical (3.0)."""
+    e = expansion(FilmOnHalfSpace(ratio, **FAST).segments())
+    eps = 0.004
+    d1, d2 = (_branch_point(e, a) - e.lam for a in (eps, 2 * eps))
+    curvature = (16 * d1 - d2) / (12 * eps**2)
+    assert curvature == pytest.approx(e.lambda_2, rel=1e-4)
+    assert np.sign(e.lambda_2) == (1 if ratio < 1.75 else -1)
+
+
+# ---- what is not covered raises one line ---------------------------------------------
+
+
+def test_uncovered_cases_raise_one_line():
+    with pytest.raises(ParameterError, match="flat film on a half-space"):
+        koiter_coefficient(Tube.uniform(1.5, 1.0, 1.0, 1.0, 0.0))
+    with pytest.raises(ParameterError, match="only the critical wrinkle"):
+        koiter_coefficient(FilmOnHalfSpace(3.0, **FAST), mode=(4, 0))
+    with pytest.raises(ParameterError, match="modulus_ratio"):
+        FilmOnHalfSpace(-1.0)
+    with pytest.raises(ParameterError, match="substrate"):
+        FilmOnHalfSpace(2.0, substrate="glued")
+    with pytest.raises(ParameterError, match="segment"):
+        Segment(1.0, 0.0, 1.0)
+
+
+def test_soft_film_has_no_finite_critical_wavenumber():
+    with pytest.raises(NoBifurcationFound, match="no maximum"):
+        critical_mode(FilmOnHalfSpace(0.8, **FAST))
