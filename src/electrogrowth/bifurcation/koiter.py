@@ -137,16 +137,33 @@ def _nearest_zero(A: FloatArray, start: FloatArray | None = None) -> tuple[float
     return float(w[i]), V[:, i]
 
 
+def _sign(forms: Forms, K: float, lam: float) -> float:
+    return float(np.linalg.slogdet(forms.stiffness(K, lam))[0])
+
+
 def _first_crossing(forms: Forms, K: float) -> tuple[float, float]:
-    """A bracket (lo, hi) of the largest lambda < 1 at which det A(K, lambda) changes sign."""
-    grid = np.linspace(0.999, 0.3, 71)
-    prev = np.linalg.slogdet(forms.stiffness(K, grid[0]))[0]
+    """A bracket (lo, hi) of the largest lambda < 1 at which det A(K, lambda) changes sign:
+    compressive strains 1 - lambda from 1e-4 to 0.7, geometric (a stiff film folds at a
+    small strain)."""
+    grid = 1.0 - np.geomspace(1e-4, 0.7, 90)
+    prev = _sign(forms, K, grid[0])
     for a, b in zip(grid, grid[1:]):
-        s = np.linalg.slogdet(forms.stiffness(K, b))[0]
+        s = _sign(forms, K, b)
         if s != prev:
             return float(b), float(a)
         prev = s
     raise NoBifurcationFound(f"no bifurcation of wavenumber K = {K:.6g} for stretches in [0.3, 1)")
+
+
+def _bracket_near(forms: Forms, K: float, lam: float) -> tuple[float, float]:
+    """A sign change of det A(K, .) around a neighbour's critical stretch, widened by 3."""
+    delta = 1e-4 * (1 - lam) + 1e-7
+    while delta < 0.5:
+        lo, hi = max(lam - delta, 0.3), min(lam + delta, 1 - 1e-6)
+        if _sign(forms, K, lo) != _sign(forms, K, hi):
+            return lo, hi
+        delta *= 3
+    return _first_crossing(forms, K)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -166,23 +183,30 @@ class _Critical:
 
 def critical_stretch(forms: Forms, K: float, near: _Critical | None = None) -> _Critical:
     """The largest lambda < 1 at which the mode of reference wavenumber K bifurcates: a
-    scan of det A for its sign (or the neighbour ``near``), then Newton on the eigenvalue
-    of A(K, lambda) nearest zero with its derivative phi^T A_lambda phi."""
+    scan of det A for its sign change (or a bracket around the neighbour ``near``), then
+    Newton on the eigenvalue of A(K, lambda) nearest zero with its derivative
+    phi^T A_lambda phi, safeguarded by bisection of the bracket."""
     if near is None:
         lo, hi = _first_crossing(forms, K)
-        lam, phi = 0.5 * (lo + hi), None
+        phi = None
     else:
-        lo, hi, lam, phi = 0.3, 0.9999, near.lam, near.phi
-    last = math.inf
-    for _ in range(40):
+        lo, hi = _bracket_near(forms, K, near.lam)
+        phi = near.phi
+    s_lo = _sign(forms, K, lo)
+    lam = 0.5 * (lo + hi)
+    for _ in range(60):
         sigma, phi = _nearest_zero(forms.stiffness(K, lam), phi)
         new = lam - sigma / (phi @ forms.stiffness(K, lam, wrt="lambda") @ phi)
+        step = abs(new - lam)
+        if step < 1e-12 * (1 - lam) or hi - lo < 1e-13:
+            return _Critical(K, new, _nearest_zero(forms.stiffness(K, new), phi)[1])
         if not lo < new < hi:
             new = 0.5 * (lo + hi)
-        step = abs(new - lam)
-        if step < 1e-12 or (step < 1e-9 and step > 0.5 * last):  # converged, or rounding
-            return _Critical(K, new, _nearest_zero(forms.stiffness(K, new), phi)[1])
-        lam, last = new, step
+        if _sign(forms, K, new) == s_lo:
+            lo = new
+        else:
+            hi = new
+        lam = new
     raise ConvergenceError(f"the critical stretch of K = {K:.6g} did not converge")
 
 
@@ -208,6 +232,11 @@ def _critical_mode(forms: Forms) -> _Critical:
 
     Ks = np.geomspace(0.1, 10.0, 15)
     prev = critical_stretch(forms, Ks[0])
+    if prev.slope(forms) <= 0:
+        raise NoBifurcationFound(
+            "the critical wavenumber lies below K = 0.1 per film thickness (mu_f / mu_s above "
+            "~ 3000): folds longer than the truncated substrate resolves"
+        )
     for K in Ks[1:]:
         cur = critical_stretch(forms, K, prev)
         if prev.slope(forms) > 0 >= cur.slope(forms):
