@@ -29,12 +29,18 @@ import scipy.linalg
 import scipy.optimize
 
 from .._types import FloatArray
+from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
 from ..incremental.plane_forms import Forms, Segment, Space
+from ..incremental.polar_forms import PolarForms, rings
+from ..model.layers import Tube
+from .critical import critical_value
 
 #: The unknowns of the mode (harmonic 1) and of the second-order correction (0 and 2).
 MODE = ((0, 1), (1, 1), (2, 1))
 SECOND = ((0, 2), (1, 0), (1, 2), (2, 0), (2, 2))
+#: In a tube the even field is u_r (cos), the odd one u_theta (sin).
+POLAR_SECOND = ((0, 0), (0, 2), (1, 2), (2, 0), (2, 2))
 
 SUBSTRATES = ("compressed", "unstressed")
 
@@ -234,8 +240,9 @@ def _critical_mode(forms: Forms) -> _Critical:
     prev = critical_stretch(forms, Ks[0])
     if prev.slope(forms) <= 0:
         raise NoBifurcationFound(
-            "the critical wavenumber lies below K = 0.1 per film thickness (mu_f / mu_s above "
-            "~ 3000): folds longer than the truncated substrate resolves"
+            "the critical stretch has no maximum for K in [0.1, 10] per film thickness: it "
+            "rises towards longer waves (a film softer than ~ its substrate, or one stiffer "
+            "than ~ 3000 times, whose folds the truncated substrate does not resolve)"
         )
     for K in Ks[1:]:
         cur = critical_stretch(forms, K, prev)
@@ -290,6 +297,57 @@ def _coefficient(film: FilmOnHalfSpace) -> tuple[float, float, float]:
     """(lambda_2, lambda_c, K_c) at the film's resolution."""
     e = expansion(film.segments())
     return e.lambda_2, e.lam, e.K
+
+
+@dataclasses.dataclass(frozen=True)
+class TubeExpansion:
+    """The expansion of a tube's prismatic mode (m, 0) in a growth control c:
+    c = c_c + coefficient eps^2, eps = max_R |u_r| / R_i of the mode (R_i = 1)."""
+
+    control_value: float
+    coefficient: float
+    impedance_value: float
+
+
+def tube_expansion(tube: Tube, m: int, control: str, *, nodes: int = 24) -> TubeExpansion:
+    """NOT YET VERIFIED (not used by :func:`koiter_coefficient`): its thin-film limit is
+    15 % off the flat film's (docs/derivation-koiter.md, "The tube's prismatic family").
+
+    The Koiter coefficient of the prismatic mode (m, 0) of a neo-Hookean tube at fixed
+    axial stretch, in a growth control (docs/derivation-koiter.md): the critical value from
+    the package's impedance route, refined where A(c) of incremental/polar_forms.py is
+    singular (Newton on its eigenvalue nearest zero, dA/dc by central differences of the
+    base state), the mode, the correction at harmonics 0 and 2m, and
+    c_2 = 2 A[psi, psi] / A'[phi, phi]."""
+    first = PolarForms.build(rings(tube, m, nodes), m, MODE)
+    second = PolarForms.build(rings(tube, m, nodes), m, POLAR_SECOND)
+
+    def A(form, c):
+        return form.stiffness(solve_base_state(tube.at(control, c)))
+
+    def dA(form, c):  # central differences, Richardson-extrapolated: error O(h^4)
+        h = 2e-3 * max(1.0, abs(c))
+        d = [(A(form, c + s) - A(form, c - s)) / (2 * s) for s in (h, h / 2)]
+        return (4 * d[1] - d[0]) / 3
+
+    start = critical_value(tube, m, 0, control, rtol=1e-12).value
+    c, phi = start, None
+    for _ in range(20):
+        sigma, phi = _nearest_zero(A(first, c), phi)
+        step = sigma / (phi @ dA(first, c) @ phi)
+        c -= step
+        if abs(step) < 1e-12 * max(1.0, abs(c)):
+            break
+    else:
+        raise ConvergenceError(f"the critical {control} of mode ({m}, 0) did not converge")
+    sigma, phi = _nearest_zero(A(first, c), phi)
+    phi = phi / first.peak_radial(phi, first.slices[0])[1]  # eps = max |u_r| / R_i
+    state = solve_base_state(tube.at(control, c))
+    f1 = first.fields(phi)
+    A2 = second.stiffness(state)
+    psi = np.linalg.solve(A2, -0.5 * second.cubic_gradient(f1, f1, state.stretch))
+    c2 = 2 * (psi @ A2 @ psi) / (phi @ dA(first, c) @ phi)
+    return TubeExpansion(float(c), float(c2), float(start))
 
 
 def koiter_coefficient(problem, mode=None, control: str = "stretch") -> KoiterResult:

@@ -4,10 +4,12 @@ linearised problem), its lambda-derivative A' and the cubic form C (the second-o
 problem) that the Koiter coefficient needs (docs/derivation-koiter.md).
 
 Geometry: a periodic cell 0 <= X < 2 pi / K of a stack of segments Y_b <= Y <= Y_t in the
-reference (unstressed) configuration; the base state is the homogeneous plane strain
-x = F0 X, F0 = diag(l, 1/l) of each segment (its own stretch l), with sigma_22 = 0 (a free
-top face), so its Lagrange multiplier is p0 = mu / l^2. A displacement U(X, Y) from the
-base state and a pressure increment q give F = F0 + G, G = grad_X U, and the Lagrangian
+reference (unstressed) configuration of the film; the base state is the homogeneous plane
+strain x = F0 X, F0 = diag(l, 1/l) of a compressed segment (l = lambda, the control), with
+sigma_22 = 0 (a free top face), so its Lagrange multiplier is p0 = mu / l^2. A segment held
+unstressed under a compressed film (the film alone compressed) has its stress-free state
+at diag(l, 1) of these coordinates, a "growth" F_g = F0 = diag(l, 1) (``_pieces``).
+A displacement U(X, Y) from the base state and a pressure increment q give F = F0 + G, G = grad_X U, and the Lagrangian
 per unit reference area (exact, no truncation: the energy is quadratic in F and the
 constraint det F = 1 is quadratic in G)
 
@@ -185,54 +187,60 @@ class Forms:
 
     @functools.cached_property
     def _pieces(self) -> dict:
-        """The Hessian of E2 as sum of (K power, lambda function) pieces: keys
-        (name, group, K power), name in mu (1), P (1 / l^2), Q (1 / l), R (l), group
-        follows / fixed (l = lambda or 1)."""
+        """The Hessian of E2 as a sum of lambda- and K-free pieces: keys (scale, K power),
+        scale the function of lambda that multiplies it ("1", "1/l", "1/l2", "l").
+
+        A compressed segment (follows): F0 = diag(l, 1/l), no growth, p0 = mu / l^2:
+            mu/2 |G|^2 - (mu / l^2) det G - q (G11 / l + l G22).
+        An unstressed segment bonded to a compressed film (fixed): its stress-free state is
+        diag(l, 1) of the film's reference coordinates, F0 = F_g = diag(l, 1), p0 = mu,
+        energy J_g mu/2 |F F_g^-1|^2 per unit film reference area, J_g = l:
+            mu / (2 l) (G11^2 + G21^2) + mu l / 2 (G12^2 + G22^2) - mu det G - q (G11 + l G22)."""
         mu, f = self.mu, self.follows
-        out: dict = {}
-        terms = [  # (name, coefficient without the group mask, pair)
-            ("mu", mu / 2, ("G11", "G11")),
-            ("mu", mu / 2, ("G12", "G12")),
-            ("mu", mu / 2, ("G21", "G21")),
-            ("mu", mu / 2, ("G22", "G22")),
-            ("P", -mu, ("G11", "G22")),  # -p0 det G, p0 = mu / l^2
-            ("P", mu, ("G12", "G21")),
-            ("Q", -np.ones_like(mu), ("q", "G11")),  # -q G11 / l
-            ("R", -np.ones_like(mu), ("q", "G22")),  # -q G22 l
+        fx = 1.0 - f
+        one = np.ones_like(mu)
+        terms = [  # (scale, coefficient, pair)
+            ("1", f * mu / 2, ("G11", "G11")),
+            ("1", f * mu / 2, ("G12", "G12")),
+            ("1", f * mu / 2, ("G21", "G21")),
+            ("1", f * mu / 2, ("G22", "G22")),
+            ("1/l2", -f * mu, ("G11", "G22")),
+            ("1/l2", f * mu, ("G12", "G21")),
+            ("1/l", -f * one, ("q", "G11")),
+            ("l", -f * one, ("q", "G22")),
+            ("1/l", fx * mu / 2, ("G11", "G11")),
+            ("1/l", fx * mu / 2, ("G21", "G21")),
+            ("l", fx * mu / 2, ("G12", "G12")),
+            ("l", fx * mu / 2, ("G22", "G22")),
+            ("1", -fx * mu, ("G11", "G22")),
+            ("1", fx * mu, ("G12", "G21")),
+            ("1", -fx * one, ("q", "G11")),
+            ("l", -fx * one, ("q", "G22")),
         ]
-        groups = [(g, m) for g, m in (("follows", f), ("fixed", 1.0 - f)) if m.any()]
-        for name, coeff, (a, b) in terms:
+        out: dict = {}
+        for scale, coeff, (a, b) in terms:
+            if not coeff.any():
+                continue
             power = sum(x in ("G11", "G21") for x in (a, b))
-            for group, mask in groups:
-                M = self.maps[a].T @ ((coeff * mask * self.weight)[:, None] * self.maps[b])
-                key = (name, group, power)
-                out[key] = out.get(key, 0.0) + M + M.T  # the Hessian (2 M when a = b)
+            M = self.maps[a].T @ ((coeff * self.weight)[:, None] * self.maps[b])
+            key = (scale, power)
+            out[key] = out.get(key, 0.0) + M + M.T  # the Hessian (2 M when a = b)
         return out
 
     def stiffness(self, K: float, lam: float, *, wrt: str = "") -> FloatArray:
-        """A(K, lambda), the Hessian of E2, or its derivative ``wrt`` "lambda" or "K": the
-        segments that follow the control are at stretch lam, the others at 1.
-
-        E2 = mean over a period of int mu/2 |G|^2 - p0 det G - q (G11 / l + l G22),
-        p0 = mu / l^2 (docs/derivation-koiter.md)."""
-        scale = {"mu": lambda l: 1.0, "P": lambda l: l**-2, "Q": lambda l: 1 / l, "R": lambda l: l}
-        dscale = {
-            "mu": lambda l: 0.0,
-            "P": lambda l: -2 * l**-3,
-            "Q": lambda l: -(l**-2),
-            "R": lambda l: 1.0,
-        }
+        """A(K, lambda), the Hessian of E2, or its derivative ``wrt`` "lambda" or "K"
+        (docs/derivation-koiter.md; the two kinds of segment in ``_pieces``)."""
+        scale = {"1": 1.0, "1/l": 1 / lam, "1/l2": lam**-2, "l": lam}
+        dscale = {"1": 0.0, "1/l": -(lam**-2), "1/l2": -2 * lam**-3, "l": 1.0}
         n = self.space.size
         A = np.zeros((n, n))
-        for (name, group, power), M in self._pieces.items():
-            l = lam if group == "follows" else 1.0  # noqa: E741
+        for (name, power), M in self._pieces.items():
             if wrt == "lambda":
-                c = dscale[name](l) if group == "follows" else 0.0
-                c *= K**power
+                c = dscale[name] * K**power
             elif wrt == "K":
-                c = scale[name](l) * power * K ** (power - 1) if power else 0.0
+                c = scale[name] * power * K ** (power - 1) if power else 0.0
             else:
-                c = scale[name](l) * K**power
+                c = scale[name] * K**power
             if c:
                 A += c * M
         return A
