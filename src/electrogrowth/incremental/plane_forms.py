@@ -9,9 +9,9 @@ strain x = F0 X, F0 = diag(l, 1/l) of a compressed segment (l = lambda, the cont
 sigma_22 = 0 (a free top face), so its Lagrange multiplier is p0 = mu / l^2. A segment held
 unstressed under a compressed film (the film alone compressed) has its stress-free state
 at diag(l, 1) of these coordinates, a "growth" F_g = F0 = diag(l, 1) (``_pieces``).
-A displacement U(X, Y) from the base state and a pressure increment q give F = F0 + G, G = grad_X U, and the Lagrangian
-per unit reference area (exact, no truncation: the energy is quadratic in F and the
-constraint det F = 1 is quadratic in G)
+A displacement U(X, Y) from the base state and a pressure increment q give F = F0 + G,
+G = grad_X U, and the Lagrangian per unit reference area of a compressed segment (exact,
+no truncation: the energy is quadratic in F and the constraint det F = 1 in G)
 
     E(U, q) = E2 + E3,
     E2 = int mu/2 |G|^2 - p0 det G - q cof(F0) : G,   cof(F0) = diag(1/l, l),
