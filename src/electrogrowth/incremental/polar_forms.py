@@ -221,6 +221,17 @@ class PolarForms:
             out += M["rT"].T @ (w * qx * g["tR"]) + M["tR"].T @ (w * qx * g["rT"])
         return out
 
+    def cubic_hessian(self, fa: dict, lz: float) -> FloatArray:
+        """The matrix C[a, ., .] (as plane_forms.Forms.cubic_hessian)."""
+        w, M = self.weight * lz, self.maps
+        qw = (w * fa["q"])[:, None]
+        H = M["rR"].T @ (qw * M["tT"]) - M["rT"].T @ (qw * M["tR"])
+        H = H + H.T
+        L = fa["rR"][:, None] * M["tT"] + fa["tT"][:, None] * M["rR"]
+        L -= fa["rT"][:, None] * M["tR"] + fa["tR"][:, None] * M["rT"]
+        T = M["q"].T @ (w[:, None] * L)
+        return -(H + T + T.T)
+
 
 @dataclasses.dataclass(frozen=True)
 class _Seg:
