@@ -98,20 +98,23 @@ class FilmOnHalfSpace:
 
 @dataclasses.dataclass(frozen=True)
 class KoiterResult:
-    """The amplitude equation lambda = lambda_c + coefficient * eps^2 of one mode.
+    """The amplitude equation c = c_c + coefficient * eps^2 of one mode, c the control.
 
-    ``coefficient`` is lambda_2 with eps = K_c w (w the peak vertical displacement of the
-    free face, K_c the reference wavenumber, both in film thicknesses); ``branch`` is
-    "supercritical" when lambda_2 < 0 (compression grows as lambda falls), else
-    "subcritical"; ``error_estimate`` the change of the coefficient from a resolution 3/4 as
-    fine (the discretisation converges spectrally, so it bounds the error of the finer)."""
+    Flat film: c = lambda, the compressive stretch; eps = K_c w (w the amplitude of the
+    vertical displacement of the free face, K_c the reference wavenumber, both in film
+    thicknesses); ``wavenumber`` K_c. Tube: c the growth control; eps = max_R |u_r| / R_i
+    of the mode (R_i = 1, the undeformed inner radius); ``wavenumber`` m.
+    ``branch`` is "supercritical" when the branch exists beyond onset, in the direction
+    the control moves to reach it (lambda_2 < 0 for the compressive stretch, > 0 for
+    growth), else "subcritical"; ``error_estimate`` the change of the coefficient from a
+    resolution 3/4 as fine (spectral convergence: it bounds the error of the finer)."""
 
     coefficient: float
-    lambda_c: float
+    critical_value: float
     wavenumber: float
     branch: str
     error_estimate: float
-    normalisation: str = "eps = K_c w, w the peak vertical displacement of the free face"
+    normalisation: str = "eps = K_c w, w the amplitude of the free face's deflection"
 
     def as_dict(self) -> dict:
         return dataclasses.asdict(self)
@@ -307,13 +310,11 @@ class TubeExpansion:
     control_value: float
     coefficient: float
     impedance_value: float
+    inner_face: float  # u_r of the mode at R_i over its peak
 
 
 def tube_expansion(tube: Tube, m: int, control: str, *, nodes: int = 24) -> TubeExpansion:
-    """NOT YET VERIFIED (not used by :func:`koiter_coefficient`): its thin-film limit is
-    15 % off the flat film's (docs/derivation-koiter.md, "The tube's prismatic family").
-
-    The Koiter coefficient of the prismatic mode (m, 0) of a neo-Hookean tube at fixed
+    """The Koiter coefficient of the prismatic mode (m, 0) of a neo-Hookean tube at fixed
     axial stretch, in a growth control (docs/derivation-koiter.md): the critical value from
     the package's impedance route, refined where A(c) of incremental/polar_forms.py is
     singular (Newton on its eigenvalue nearest zero, dA/dc by central differences of the
@@ -342,30 +343,33 @@ def tube_expansion(tube: Tube, m: int, control: str, *, nodes: int = 24) -> Tube
         raise ConvergenceError(f"the critical {control} of mode ({m}, 0) did not converge")
     sigma, phi = _nearest_zero(A(first, c), phi)
     phi = phi / first.peak_radial(phi, first.slices[0])[1]  # eps = max |u_r| / R_i
+    inner_face = float(phi[first.slices[0]][0])
     state = solve_base_state(tube.at(control, c))
     f1 = first.fields(phi)
     A2 = second.stiffness(state)
     psi = np.linalg.solve(A2, -0.5 * second.cubic_gradient(f1, f1, state.stretch))
     c2 = 2 * (psi @ A2 @ psi) / (phi @ dA(first, c) @ phi)
-    return TubeExpansion(float(c), float(c2), float(start))
+    return TubeExpansion(float(c), float(c2), float(start), inner_face)
 
 
 def koiter_coefficient(problem, mode=None, control: str = "stretch") -> KoiterResult:
-    """The Koiter coefficient lambda_2 of the critical wrinkle (docs/derivation-koiter.md):
-    lambda = lambda_c + lambda_2 eps^2, eps = K_c w, from the mode phi, the second-order
-    correction psi (harmonics 0 and 2) of A(lambda_c) psi = -C[phi, phi, .] / 2 and
+    """The Koiter coefficient of a critical mode (docs/derivation-koiter.md): the control
+    on the bifurcated branch is c = c_c + c_2 eps^2 (``KoiterResult`` says which eps),
+    from the mode phi, the second-order correction psi (harmonics 0 and 2) of
+    A(c_c) psi = -C[phi, phi, .] / 2 and
 
-        lambda_2 = 2 A(lambda_c)[psi, psi] / A'(lambda_c)[phi, phi].
+        c_2 = 2 A(c_c)[psi, psi] / A'(c_c)[phi, phi].
 
     Parameters
     ----------
-    problem : FilmOnHalfSpace
-        The only case covered so far; a tube raises ParameterError.
-    mode : None
-        The critical mode is found (K_c maximises lambda_c); no other mode is covered yet.
+    problem : FilmOnHalfSpace or Tube
+        A flat film on a half-space, or a tube (neo-Hookean layers with constant growth,
+        the axial stretch prescribed, no voltage or pressure: its prismatic modes).
+    mode : None or (m, 0)
+        The film: None (K_c maximises lambda_c). A tube: the prismatic mode (m, 0), m >= 2.
     control : str
-        "stretch", the compressive stretch lambda of the film (and of the substrate when
-        it is compressed).
+        The film: "stretch", the compressive stretch lambda. A tube: a growth control
+        ("growth", "growth[K]", "growth[K].theta", ...).
 
     Returns
     -------
@@ -374,7 +378,7 @@ def koiter_coefficient(problem, mode=None, control: str = "stretch") -> KoiterRe
     Raises
     ------
     ParameterError
-        For any problem but a flat film, a mode or another control.
+        For any other problem, mode or control (one line naming what is covered).
     NoBifurcationFound
         When no wrinkle of finite wavelength is critical (mu_f / mu_s too small).
 
@@ -382,10 +386,12 @@ def koiter_coefficient(problem, mode=None, control: str = "stretch") -> KoiterRe
     >>> r.branch
     'supercritical'
     """
+    if isinstance(problem, Tube):
+        return _tube_result(problem, mode, control)
     if not isinstance(problem, FilmOnHalfSpace):
         raise ParameterError(
             f"the amplitude equation covers a flat film on a half-space (FilmOnHalfSpace) "
-            f"so far, not {type(problem).__name__}"
+            f"and a tube's prismatic modes so far, not {type(problem).__name__}"
         )
     if mode is not None or control != "stretch":
         raise ParameterError(
@@ -396,11 +402,50 @@ def koiter_coefficient(problem, mode=None, control: str = "stretch") -> KoiterRe
     coarse = _coefficient(problem.refined(0.75))[0]
     return KoiterResult(
         coefficient=fine,
-        lambda_c=lam,
+        critical_value=float(lam),
         wavenumber=Kc,
         branch="supercritical" if fine < 0 else "subcritical",
         error_estimate=abs(fine - coarse),
     )
+
+
+def _tube_result(tube: Tube, mode, control: str) -> KoiterResult:
+    """The tube's case of :func:`koiter_coefficient`, with its one-line refusals."""
+    if not (isinstance(mode, tuple) and len(mode) == 2 and mode[1] == 0 and mode[0] >= 2):
+        raise ParameterError(
+            f"mode = {mode!r}: the tube's amplitude equation covers prismatic modes (m, 0), "
+            "m >= 2, so far (not the axisymmetric family or wrinkles)"
+        )
+    if not (isinstance(control, str) and control.startswith("growth")):
+        raise ParameterError(f"control = {control!r}: only a growth control is covered so far")
+    why = _tube_not_covered(tube)
+    if why:
+        raise ParameterError(f"the tube's amplitude equation needs {why}")
+    m = int(mode[0])
+    fine = tube_expansion(tube, m, control, nodes=24)
+    coarse = tube_expansion(tube, m, control, nodes=18)
+    return KoiterResult(
+        coefficient=fine.coefficient,
+        critical_value=fine.control_value,
+        wavenumber=float(m),
+        branch="supercritical" if fine.coefficient > 0 else "subcritical",
+        error_estimate=abs(fine.coefficient - coarse.coefficient),
+        normalisation="eps = max_R |u_r| / R_i of the mode (R_i = 1)",
+    )
+
+
+def _tube_not_covered(tube: Tube) -> str:
+    """What the tube lacks for the expansion, in words ("" when covered)."""
+    if tube.stretch is None:
+        return "the axial stretch prescribed (not the axial force)"
+    if tube.voltage != 0 or tube.inner_pressure != 0 or tube.outer_pressure != 0:
+        return "no voltage and no pressure"
+    for ply in tube.layers:
+        if ply.graded:
+            return "constant growth in every layer"
+        if ply.material.name != "neo-hookean":
+            return f"neo-Hookean layers (not {ply.material.name})"
+    return ""
 
 
 def sign_change_ratio(lo: float = 1.5, hi: float = 2.0, *, xtol: float = 1e-7, **film) -> float:
