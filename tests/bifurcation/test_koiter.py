@@ -6,6 +6,7 @@ and the curvature of the branch from a direct Newton solve of the nonlinear prob
 from __future__ import annotations
 
 import dataclasses
+import functools
 
 import numpy as np
 import pytest
@@ -83,6 +84,72 @@ def test_unstressed_substrate_matches_the_flat_film_table():
     K, lam = critical_mode(FilmOnHalfSpace(2.0, substrate="unstressed", **FAST))
     assert lam == pytest.approx(0.7295973, abs=1e-7)
     assert K / lam**2 == pytest.approx(1.3907973, abs=1e-6)  # k h = (K / lam) (1 / lam)
+
+
+class _GrownFilm(Forms):
+    """The film alone compressed, written in the substrate's stress-free coordinates: the
+    film grown by g = 1 / s along X (F_g = diag(g, 1), F0 = diag(1, g), p0 = mu g^2,
+    J_g = g), the substrate undeformed; the control is s = 1 / g. A second parametrisation
+    of the same bilayer (the period fixed in the substrate, not in the film)."""
+
+    @functools.cached_property
+    def _pieces(self):
+        mu, f = self.mu, self.follows  # follows: the film
+        fx, one = 1.0 - f, np.ones_like(self.mu)
+        terms = [
+            ("1/g", f * mu / 2, ("G11", "G11")),
+            ("1/g", f * mu / 2, ("G21", "G21")),
+            ("g", f * mu / 2, ("G12", "G12")),
+            ("g", f * mu / 2, ("G22", "G22")),
+            ("g2", -f * mu, ("G11", "G22")),
+            ("g2", f * mu, ("G12", "G21")),
+            ("g", -f * one, ("q", "G11")),
+            ("1", -f * one, ("q", "G22")),
+            ("1", fx * mu / 2, ("G11", "G11")),
+            ("1", fx * mu / 2, ("G12", "G12")),
+            ("1", fx * mu / 2, ("G21", "G21")),
+            ("1", fx * mu / 2, ("G22", "G22")),
+            ("1", -fx * mu, ("G11", "G22")),
+            ("1", fx * mu, ("G12", "G21")),
+            ("1", -fx * one, ("q", "G11")),
+            ("1", -fx * one, ("q", "G22")),
+        ]
+        out: dict = {}
+        for scale, coeff, (a, b) in terms:
+            if coeff.any():
+                power = sum(x in ("G11", "G21") for x in (a, b))
+                M = self.maps[a].T @ ((coeff * self.weight)[:, None] * self.maps[b])
+                out[scale, power] = out.get((scale, power), 0.0) + M + M.T
+        return out
+
+    def stiffness(self, K, lam, *, wrt=""):
+        g = 1 / lam  # the control s = lam = 1 / g
+        value = {"1": 1.0, "1/g": 1 / g, "g": g, "g2": g * g}
+        dg = {"1": 0.0, "1/g": -1 / g**2, "g": 1.0, "g2": 2 * g}  # d/dg
+        A = np.zeros((self.space.size,) * 2)
+        for (name, power), M in self._pieces.items():
+            if wrt == "lambda":
+                c = dg[name] * K**power * (-(g**2))  # dg/ds = -g^2
+            elif wrt == "K":
+                c = value[name] * power * K ** (power - 1) if power else 0.0
+            else:
+                c = value[name] * K**power
+            A += c * M
+        return A
+
+
+def test_film_alone_compressed_in_a_second_parametrisation():
+    """The film alone compressed on an unstressed substrate, written in the substrate's
+    coordinates with the film grown (_GrownFilm), gives the same lambda_c, K_c (scaled:
+    K_f = K_s / g) and lambda_2 (eps_f = eps_s / g, s = 1 / g = lambda) as the film's
+    coordinates with the substrate's stress-free state at diag(lambda, 1)."""
+    segs = FilmOnHalfSpace(5.0, substrate="unstressed", **FAST).segments()
+    film_frame = expansion(segs)
+    substrate_frame = expansion(segs, forms=_GrownFilm)
+    assert substrate_frame.lam == pytest.approx(film_frame.lam, abs=1e-11)
+    assert substrate_frame.K * substrate_frame.lam == pytest.approx(film_frame.K, rel=1e-8)
+    lam2 = substrate_frame.lambda_2 / substrate_frame.lam**2
+    assert lam2 == pytest.approx(film_frame.lambda_2, rel=1e-8)
 
 
 # ---- the sign change against the literature -----------------------------------------

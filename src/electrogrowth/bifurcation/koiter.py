@@ -278,16 +278,18 @@ class Expansion:
     second: Forms
 
 
-def expansion(segments: tuple[Segment, ...]) -> Expansion:
+def expansion(segments: tuple[Segment, ...], *, forms: type[Forms] = Forms) -> Expansion:
     """The Koiter expansion of the critical wrinkle of a stack of segments (the film is
     the top one): phi from A(lambda_c) phi = 0, psi from A(lambda_c) psi = -C[phi, phi, .] / 2
-    on harmonics 0 and 2, lambda_2 = 2 A(lambda_c)[psi, psi] / A'(lambda_c)[phi, phi]."""
-    first = Forms.build(Space(segments, MODE))
+    on harmonics 0 and 2, lambda_2 = 2 A(lambda_c)[psi, psi] / A'(lambda_c)[phi, phi].
+    ``forms`` builds the quadratic and cubic forms (another parametrisation of the energy,
+    for checks)."""
+    first = forms.build(Space(segments, MODE))
     crit = _critical_mode(first)
     Kc, lam = crit.K, crit.lam
     top = first.space._layout[0][1].stop - 1  # b at the free face
     phi = crit.phi / (Kc * crit.phi[top])  # eps = K_c w
-    second = Forms.build(Space(segments, SECOND))
+    second = forms.build(Space(segments, SECOND))
     f1 = first.fields(phi, Kc)
     A2 = second.stiffness(Kc, lam)
     psi = np.linalg.solve(A2, -0.5 * second.cubic_gradient(f1, f1, Kc))
