@@ -3,10 +3,12 @@ branch is super- or subcritical (docs/derivation-koiter.md).
 
 Covered so far: the flat film on a half-space (both incompressible neo-Hookean, plane
 strain, uniaxial compression of the film alone or of the whole bilayer), the limit of a
-thin stiff film on a thick tube. The tube's own families raise a one-line
-:class:`~electrogrowth.errors.ParameterError`.
+thin stiff film on a thick tube; and a tube's prismatic modes (m, 0) (neo-Hookean layers,
+constant growth, axial stretch prescribed, no voltage or pressure) in a growth control,
+c = c_c + c_2 eps^2 with eps = max |u_r| / R_i, supercritical when c_2 > 0. Other cases
+raise a one-line :class:`~electrogrowth.errors.ParameterError`.
 
-Near the critical stretch lambda_c the bifurcated branch of the mode with the critical
+For the flat film, near the critical stretch lambda_c the bifurcated branch of the mode with the critical
 reference wavenumber K_c is
 
     lambda = lambda_c + lambda_2 eps^2 + O(eps^4),   eps = K_c w,
