@@ -8,8 +8,8 @@ constant growth, axial stretch prescribed, no voltage or pressure) in a growth c
 c = c_c + c_2 eps^2 with eps = max |u_r| / R_i, supercritical when c_2 > 0. Other cases
 raise a one-line :class:`~electrogrowth.errors.ParameterError`.
 
-For the flat film, near the critical stretch lambda_c the bifurcated branch of the mode with the critical
-reference wavenumber K_c is
+For the flat film, near the critical stretch lambda_c the bifurcated branch of the mode
+with the critical reference wavenumber K_c is
 
     lambda = lambda_c + lambda_2 eps^2 + O(eps^4),   eps = K_c w,
 
