@@ -1,0 +1,240 @@
+"""The energy of a layered, growing neo-Hookean tube in plane deformations (r, theta) at
+fixed axial stretch, expanded about its axisymmetric state: the quadratic form A and the
+cubic form C of the prismatic modes (n = 0) that the Koiter coefficient needs
+(docs/derivation-koiter.md, "The tube's prismatic family").
+
+A displacement u = U_r e_r + U_th e_th from the base state r(R) (reference polar
+coordinates R, Theta; physical components) has the in-plane gradient G = F - F0,
+
+    G_rR = U_r,R,  G_rT = (U_r,T - U_th) / R,  G_tR = U_th,R,  G_tT = (U_r + U_th,T) / R,
+
+F0 = diag(r', r / R), F_zZ = lambda_z fixed. For a layer with growth F_g = diag(g_r, g_t,
+g_z), J_g = g_r g_t g_z, the energy per reference volume J_g mu_k/2 |F F_g^-1|^2 and the
+constraint lambda_z det F_2 = J_g (det F_2 the in-plane determinant) are quadratic in G,
+so with p0 the base Lagrange multiplier (the state's ``pressure``) and q its increment
+
+    E2 = J_g mu_k / 2 (G_rR^2 / g_r^2 + G_rT^2 / g_t^2 + G_tR^2 / g_r^2 + G_tT^2 / g_t^2)
+         - p0 lambda_z det G - q lambda_z cof(F0) : G,   cof(F0) = diag(r / R, r'),
+    E3 = -q lambda_z det G,
+
+per unit reference volume, integrated over R dR and averaged over Theta. Harmonics of
+m Theta with the reflection symmetry Theta -> -Theta: U_r = a_j cos(j m Theta),
+U_th = b_j sin(j m Theta), q = c_j cos(j m Theta); a, b on Chebyshev-Lobatto nodes of each
+segment (continuous across segments and layers: bonded), c on the interior nodes
+(P_N - P_{N-2}), as in plane_forms.py; no node is clamped (free faces).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+
+from .._types import FloatArray
+from ..errors import ParameterError
+from .plane_forms import _barycentric, _segment_maps
+
+_THETA_POINTS = 8
+
+
+@dataclasses.dataclass(frozen=True)
+class Ring:
+    """One radial segment R_a <= R <= R_b of layer ``layer`` (0-based) with ``nodes``
+    Lobatto points."""
+
+    inner: float
+    outer: float
+    layer: int
+    nodes: int = 24
+
+
+def rings(tube, m: int, nodes: int = 24) -> tuple[Ring, ...]:
+    """Each layer cut at 3 / m, 12 / m and 30 / m from its faces where it is thick enough (a
+    mode of number m decays like (R / R_face)^(+-m) away from a face)."""
+    out = []
+    radii = tube.radii
+    for k in range(len(radii) - 1):
+        a, b = radii[k], radii[k + 1]
+        cuts = [a]
+        for d in (3.0 / m, 12.0 / m, 30.0 / m):
+            if d < (b - a) / 4:
+                cuts.append(a + d)
+        for d in (30.0 / m, 12.0 / m, 3.0 / m):
+            if d < (b - a) / 4 and b - d > cuts[-1] + d / 2:
+                cuts.append(b - d)
+        cuts.append(b)
+        cuts = sorted(set(cuts))
+        out += [Ring(x, y, k, nodes) for x, y in zip(cuts, cuts[1:])]
+    return tuple(out)
+
+
+@dataclasses.dataclass
+class PolarForms:
+    """The maps from the unknowns of ``harmonics`` ((field, j): 0 = a, 1 = b, 2 = c) to the
+    gradient and pressure at the quadrature points, for mode number m."""
+
+    rings: tuple[Ring, ...]
+    m: int
+    harmonics: tuple[tuple[int, int], ...]
+    maps: dict
+    R: FloatArray
+    weight: FloatArray
+    layer: np.ndarray
+    slices: list
+    size: int
+
+    @classmethod
+    def build(cls, rings_: tuple[Ring, ...], m: int, harmonics) -> PolarForms:
+        if m < 2:
+            raise ParameterError(f"m = {m}: prismatic modes need m >= 2")
+        theta = 2 * np.pi * np.arange(_THETA_POINTS) / (_THETA_POINTS * m)  # one period
+        per = [_segment_maps(_Seg(r.inner, r.outer, r.nodes), max(2 * r.nodes, 8)) for r in rings_]
+        nR = sum(len(p[0]) for p in per)
+        n_disp = sum(r.nodes - 1 for r in rings_) + 1
+        n_pres = sum(r.nodes - 2 for r in rings_)
+        V, D, P = np.zeros((nR, n_disp)), np.zeros((nR, n_disp)), np.zeros((nR, n_pres))
+        row, col_d, col_p = 0, 0, 0
+        for r, (Y, _w, Pm, PD, Pi) in zip(rings_, per):
+            rows = slice(row, row + len(Y))
+            V[rows, col_d : col_d + r.nodes] = Pm
+            D[rows, col_d : col_d + r.nodes] = PD
+            P[rows, col_p : col_p + r.nodes - 2] = Pi
+            row += len(Y)
+            col_d += r.nodes - 1
+            col_p += r.nodes - 2
+        R = np.concatenate([p[0] for p in per])
+        wR = np.concatenate([p[1] for p in per]) * R
+        layer = np.concatenate([np.full(len(p[0]), r.layer) for r, p in zip(rings_, per)])
+        slices, at = [], 0
+        for field, _j in harmonics:
+            size = n_pres if field == 2 else n_disp
+            slices.append(slice(at, at + size))
+            at += size
+        npts = _THETA_POINTS * nR
+        maps = {k: np.zeros((npts, at)) for k in ("rR", "rT", "tR", "tT", "q")}
+        inv = (1.0 / R)[:, None]
+        for (field, j), sl in zip(harmonics, slices):
+            n = j * m
+            c, s = np.cos(n * theta)[:, None], np.sin(n * theta)[:, None]
+            if field == 0:  # U_r = a cos: G_rR = a' cos, G_rT = -n a / R sin, G_tT = a / R cos
+                maps["rR"][:, sl] += np.kron(c, D)
+                maps["rT"][:, sl] += np.kron(-n * s, inv * V)
+                maps["tT"][:, sl] += np.kron(c, inv * V)
+            elif field == 1:  # U_th = b sin: G_rT = -b / R sin, G_tR = b' sin, G_tT = n b / R cos
+                maps["rT"][:, sl] += np.kron(-s, inv * V)
+                maps["tR"][:, sl] += np.kron(s, D)
+                maps["tT"][:, sl] += np.kron(n * c, inv * V)
+            else:
+                maps["q"][:, sl] += np.kron(c, P)
+        weight = np.tile(wR, _THETA_POINTS) / _THETA_POINTS
+        return cls(
+            rings_,
+            m,
+            tuple(harmonics),
+            maps,
+            np.tile(R, _THETA_POINTS),
+            weight,
+            np.tile(layer, _THETA_POINTS),
+            slices,
+            at,
+        )
+
+    def coefficients(self, state) -> dict:
+        """The base state at the quadrature points: J_g mu_k / g_r^2, J_g mu_k / g_t^2, p0,
+        lambda_z, r / R, r' (= J_g R / (lambda_z r))."""
+        tube = state.tube
+        lz = state.stretch
+        out = {k: np.zeros_like(self.R) for k in ("cr", "ct", "p0", "cofR", "cofT")}
+        for k, ply in enumerate(tube.layers):
+            sel = self.layer == k
+            if not sel.any():
+                continue
+            if ply.graded:
+                raise ParameterError("graded growth is not covered by the amplitude equation yet")
+            gr, gt, gz = ply.growth
+            J = gr * gt * gz
+            R = self.R[sel]
+            r = state.radius(R)
+            mu = ply.shear_modulus
+            out["cr"][sel] = J * mu / gr**2
+            out["ct"][sel] = J * mu / gt**2
+            out["p0"][sel] = state.pressure(R)
+            out["cofR"][sel] = r / R  # cof(F0)_rR = F0_tT
+            out["cofT"][sel] = J * R / (lz * r)  # cof(F0)_tT = F0_rR = r'
+        out["lz"] = lz
+        return out
+
+    def stiffness(self, state) -> FloatArray:
+        """A = the Hessian of E2 at the state."""
+        c = self.coefficients(state)
+        lz = c["lz"]
+        terms = [
+            (c["cr"] / 2, "rR", "rR"),
+            (c["ct"] / 2, "rT", "rT"),
+            (c["cr"] / 2, "tR", "tR"),
+            (c["ct"] / 2, "tT", "tT"),
+            (-c["p0"] * lz, "rR", "tT"),  # -p0 lz det G
+            (c["p0"] * lz, "rT", "tR"),
+            (-lz * c["cofR"], "q", "rR"),  # -q lz cof(F0) : G
+            (-lz * c["cofT"], "q", "tT"),
+        ]
+        A = np.zeros((self.size, self.size))
+        for coeff, a, b in terms:
+            M = self.maps[a].T @ ((coeff * self.weight)[:, None] * self.maps[b])
+            A += M + M.T
+        return A
+
+    def peak_radial(self, v: FloatArray, field_slice: slice) -> tuple[float, float]:
+        """(R, a(R)) where |a| of the displacement values ``v[field_slice]`` is largest: on
+        a dense grid of each ring, then a parabola through the best three points."""
+        a_nodes, at, best = v[field_slice], 0, (0.0, 0.0)
+        for r in self.rings:
+            t = np.cos(np.pi * np.arange(r.nodes) / (r.nodes - 1))[::-1]
+            dense = np.linspace(-1.0, 1.0, 2001)
+            vals = _barycentric(t, dense) @ a_nodes[at : at + r.nodes]
+            i = int(np.argmax(np.abs(vals)))
+            if 0 < i < len(dense) - 1:  # vertex of the parabola through i - 1, i, i + 1
+                y0, y1, y2 = vals[i - 1 : i + 2]
+                den = y0 - 2 * y1 + y2
+                shift = 0.5 * (y0 - y2) / den if den else 0.0
+                peak = y1 - 0.25 * (y0 - y2) * shift
+                xi = dense[i] + shift * (dense[1] - dense[0])
+            else:
+                peak, xi = vals[i], dense[i]
+            if abs(peak) > abs(best[1]):
+                best = (r.inner + 0.5 * (xi + 1) * (r.outer - r.inner), float(peak))
+            at += r.nodes - 1
+        return best
+
+    def fields(self, v: FloatArray) -> dict:
+        return {k: M @ v for k, M in self.maps.items()}
+
+    def cubic_gradient(self, fa: dict, fb: dict, lz: float) -> FloatArray:
+        """C[a, b, .] for E3 = -lambda_z int q det G (as plane_forms.Forms.cubic_gradient)."""
+        w, M = self.weight * lz, self.maps
+        two_d = (
+            fa["rR"] * fb["tT"] + fb["rR"] * fa["tT"] - fa["rT"] * fb["tR"] - fb["rT"] * fa["tR"]
+        )
+        out = -(M["q"].T @ (w * two_d))
+        for qx, g in ((fa["q"], fb), (fb["q"], fa)):
+            out -= M["rR"].T @ (w * qx * g["tT"]) + M["tT"].T @ (w * qx * g["rR"])
+            out += M["rT"].T @ (w * qx * g["tR"]) + M["tR"].T @ (w * qx * g["rT"])
+        return out
+
+    def cubic_hessian(self, fa: dict, lz: float) -> FloatArray:
+        """The matrix C[a, ., .] (as plane_forms.Forms.cubic_hessian)."""
+        w, M = self.weight * lz, self.maps
+        qw = (w * fa["q"])[:, None]
+        H = M["rR"].T @ (qw * M["tT"]) - M["rT"].T @ (qw * M["tR"])
+        H = H + H.T
+        L = fa["rR"][:, None] * M["tT"] + fa["tT"][:, None] * M["rR"]
+        L -= fa["rT"][:, None] * M["tR"] + fa["tR"][:, None] * M["rT"]
+        T = M["q"].T @ (w[:, None] * L)
+        return -(H + T + T.T)
+
+
+@dataclasses.dataclass(frozen=True)
+class _Seg:
+    bottom: float
+    top: float
+    nodes: int
