@@ -115,6 +115,14 @@ class ModeMap:
     solves: int = 0
     seconds: float = 0.0
 
+    def grid_labels(self) -> np.ndarray:
+        """The grid's patterns as an object array of shape (len(xs), len(ys))."""
+        out = np.empty((len(self.xs), len(self.ys)), object)
+        for i, row in enumerate(self.labels):
+            for j, lab in enumerate(row):
+                out[i, j] = lab
+        return out
+
     def _unit(self, x, y):
         (x0, x1), (y0, y1) = self.box
         return (np.asarray(x, float) - x0) / (x1 - x0), (np.asarray(y, float) - y0) / (y1 - y0)
@@ -134,7 +142,7 @@ class ModeMap:
         best = np.full(X.shape, np.inf)
         if not self.boundaries:
             gu, gw = self._unit(*np.meshgrid(self.xs, self.ys, indexing="ij"))
-            lab = np.array(self.labels, object)
+            lab = self.grid_labels()
             for idx in np.ndindex(X.shape):
                 k = np.argmin((gu - U[idx]) ** 2 + (gw - W[idx]) ** 2)
                 out[idx] = lab.ravel()[k]
@@ -145,7 +153,9 @@ class ModeMap:
                 p = np.array([bu[k], bw[k]])
                 e = np.array([bu[k + 1] - bu[k], bw[k + 1] - bw[k]])
                 ee = float(e @ e)
-                t = np.zeros(X.shape) if ee == 0 else ((U - p[0]) * e[0] + (W - p[1]) * e[1]) / ee
+                if ee == 0.0:
+                    continue
+                t = ((U - p[0]) * e[0] + (W - p[1]) * e[1]) / ee
                 t = np.clip(t, 0.0, 1.0)
                 dx, dy = U - (p[0] + t * e[0]), W - (p[1] + t * e[1])
                 dist = dx * dx + dy * dy
@@ -189,10 +199,10 @@ class ModeMap:
         from ..labelled import xarray
 
         xr = xarray()
-        lab = np.array(self.labels, object)
-        m = np.vectorize(lambda v: v[0] if isinstance(v, tuple) else -1, otypes=[int])(lab)
-        n = np.vectorize(lambda v: v[1] if isinstance(v, tuple) else -1, otypes=[int])(lab)
-        kind = np.vectorize(lambda v: "bifurcation" if isinstance(v, tuple) else v)(lab)
+        lab = self.grid_labels()
+        m = np.array([[v[0] if isinstance(v, tuple) else -1 for v in row] for row in lab], int)
+        n = np.array([[v[1] if isinstance(v, tuple) else -1 for v in row] for row in lab], int)
+        kind = np.array([["bifurcation" if isinstance(v, tuple) else v for v in row] for row in lab])
         px, py, pv, pb = [], [], [], []
         for k, b in enumerate(self.boundaries):
             px += b.x

@@ -25,7 +25,6 @@ from ..outcomes import Kind
 from .map_record import Boundary, Certificate, ModeMap, TriplePoint, label_json
 from .map_trace import (
     FAILED,
-    NEAR,
     SURFACE,
     THRESHOLD,
     TRIPLE,
@@ -87,8 +86,7 @@ class _Mapper:
     def __init__(self, values: Values, grid_u, labels, options, progress):
         self.values, self.grid_u, self.labels = values, grid_u, labels
         self.options, self.progress = options, progress
-        nx, ny = labels.shape
-        self.near = NEAR * max(1 / (nx - 1), 1 / (ny - 1))
+        self.found: set = set()  # set once the grid is scanned
         self.curves: list[dict] = []
         self.triples: list[tuple] = []
 
@@ -97,8 +95,9 @@ class _Mapper:
             self.progress(text)
 
     def candidates(self, u):
-        dist = np.hypot(self.grid_u[..., 0] - u[0], self.grid_u[..., 1] - u[1])
-        return {lab for lab in self.labels[dist <= self.near] if lab != FAILED}
+        """The patterns a traced point is checked against: every pattern of the grid, and
+        those found first by a scan where no grid node has them (``extra``)."""
+        return self.found
 
     def scan_label(self, u):
         try:
@@ -120,22 +119,19 @@ class _Mapper:
         if self.covered(p, q, a, b):
             return
         r = edge_root(self.values, p, q, a, b)
-        if r is not None:
-            third, v3 = self.values.first(self.candidates(r) - {p, q}, r)
-            v = self.values.value(p, r) if valued(p) else self.values.value(q, r)
-            if third is not None and v is not None and self.values.sense * (v3 - v) < 0:
-                r, mid = None, third  # a third pattern first at the root: split there
-        if r is None:
+        crossing = r is not None
+        if r is None:  # no crossing of d_PQ: a third pattern between, found by a scan
             if depth <= 0:
                 return
-            m = 0.5 * (np.asarray(a) + np.asarray(b))
-            mid, _ = self.scan_label(m)
-            if mid in (p, q, FAILED):
-                return
-            self.edge(p, mid, a, m, depth - 1)
-            self.edge(mid, q, m, b, depth - 1)
+            r = 0.5 * (np.asarray(a) + np.asarray(b))
+        first, _ = self.scan_label(r)  # the root checked by a scan: a third pattern splits
+        if first not in (p, q):
+            if first != FAILED and depth > 0:
+                self.found.add(first)
+                self.edge(p, first, a, r, depth - 1)
+                self.edge(first, q, r, b, depth - 1)
             return
-        if not self.values.agree(p, q, r):
+        if not crossing or not self.values.agree(p, q, r):
             return  # a jump of one pattern's first critical value, not a crossing
         ab = np.asarray(b, float) - np.asarray(a, float)
         if valued(p) and valued(q):
@@ -153,7 +149,12 @@ class _Mapper:
             back = follow(self.values, p, q, start, -t, self.candidates)
         else:
             back = ([np.asarray(start)], start_end, None)
-        pts = [np.asarray(x) for x in back[0][::-1]] + [np.asarray(x) for x in fwd[0][1:]]
+        pts = [np.asarray(x) for x in back[0][::-1]]
+        for x in fwd[0][1:]:
+            if np.linalg.norm(np.asarray(x) - pts[-1]) > 1e-14:
+                pts.append(np.asarray(x))
+        while len(pts) > 1 and np.linalg.norm(pts[1] - pts[0]) <= 1e-14:
+            pts.pop(0)  # an exit at the seed itself (a seed on the box's edge)
         self.curves.append(
             {"left": left, "right": q if left == p else p, "u": np.array(pts),
              "ends": (back[1], fwd[1])}
@@ -300,6 +301,7 @@ def mode_map(
         labels[i, j], crit[i, j] = mapper.scan_label(grid_u[i, j])
         if valued(labels[i, j]) and math.isfinite(crit[i, j]):
             values.cache[(labels[i, j], *map(float, grid_u[i, j]), True)] = crit[i, j]
+    mapper.found = {lab for lab in labels.ravel() if lab != FAILED}
     edges = [((i, j), (i + 1, j)) for i in range(nx - 1) for j in range(ny)]
     edges += [((i, j), (i, j + 1)) for i in range(nx) for j in range(ny - 1)]
     for a, b in edges:

@@ -1,0 +1,151 @@
+"""Mode maps over two design variables (src/electrogrowth/design/mode_map.py): the traced
+boundaries against bisection of full scans and against the exact Bessel-function buckling
+condition of the stretched neo-Hookean tube (tests/design/wilkes.py, derived in
+docs/design.md), the triple point's three equalities, the certificates, the records; and the
+contour tracer on a curve known in closed form."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+
+from electrogrowth import ScanOptions, Tube, critical_value
+from electrogrowth.bifurcation.scan import scan_modes
+from electrogrowth.continuation.contour import CLOSED, EDGE, trace_contour
+from electrogrowth.design.mode_map import mode_map
+from electrogrowth.errors import ParameterError
+
+from .wilkes import critical_stretch
+
+TUBE = Tube.uniform()  # uncharged, ungrown: a homogeneous state under axial compression
+NEAR = ScanOptions((0, 1), (1, 1), extend=False)
+VARY = (("outer_radius", 1.2, 1.3), ("length", 0.95, 1.05))
+
+
+@pytest.fixture(scope="module")
+def small_map():
+    return mode_map(TUBE, "stretch", VARY, side="compression", points=2, options=NEAR, certify=2)
+
+
+def test_contour_follows_a_circle_and_a_sine_to_the_edge():
+    def circle(u):
+        return (u[0] - 0.5) ** 2 + (u[1] - 0.4) ** 2 - 0.09
+
+    tr = trace_contour(circle, (0.8, 0.4), (0.0, 1.0))
+    pts = np.array(tr.points)
+    assert tr.end == CLOSED and len(pts) > 20
+    assert np.abs(np.hypot(pts[:, 0] - 0.5, pts[:, 1] - 0.4) - 0.3).max() < 1e-13
+
+    def wave(u):
+        return u[1] - 0.3 - 0.2 * math.sin(6 * u[0])
+
+    tr = trace_contour(wave, (0.5, 0.3 + 0.2 * math.sin(3)), (1.0, 0.0))
+    pts = np.array(tr.points)
+    assert tr.end == EDGE and pts[-1, 0] == 1.0
+    assert abs(pts[-1, 1] - (0.3 + 0.2 * math.sin(6))) < 1e-13
+    assert max(abs(wave(p)) for p in pts) < 1e-13
+
+
+def _bessel_switch(y: float, a=(1, 1), b=(0, 1), lo=1.2, hi=1.3) -> float:
+    """The outer radius at length y where modes a and b buckle at the same stretch, from
+    the Bessel-function determinant alone."""
+
+    def gap(r):
+        return critical_stretch(*a, r, y) - critical_stretch(*b, r, y)
+
+    return brentq(gap, lo, hi, xtol=1e-14, rtol=1e-15)
+
+
+def test_map_has_one_boundary_certified(small_map):
+    (b,) = small_map.boundaries
+    assert {b.left, b.right} == {(1, 1), (0, 1)} and b.ends == ("edge", "edge")
+    assert b.certified and len(b.certificates) == 2
+    assert all(c.gap < 1e-8 for c in b.certificates)
+    for x, y, v in zip(b.x, b.y, b.value, strict=True):  # every point: both modes critical
+        at = TUBE.at("outer_radius", x).at("length", y)
+        for mode in ((1, 1), (0, 1)):
+            assert abs(critical_value(at, *mode, "stretch", side="compression").value - v) < 1e-8
+
+
+def test_traced_boundary_equals_the_bessel_switch(small_map):
+    """The exact route: at the ends on the box's edges and at an inner point, the outer
+    radius where the two Bessel determinants give the same stretch, to 1e-8."""
+    (b,) = small_map.boundaries
+    k = len(b.x) // 2
+    for i in (0, k, len(b.x) - 1):
+        assert abs(b.x[i] - _bessel_switch(b.y[i])) < 1e-8, (b.x[i], b.y[i])
+    assert b.y[0] in (0.95, 1.05) and b.y[-1] in (0.95, 1.05)
+
+
+def test_traced_boundary_equals_bisection_of_full_scans(small_map):
+    (b,) = small_map.boundaries
+    k = len(b.x) // 2
+    y = b.y[k]
+
+    def first(x):
+        at = TUBE.at("outer_radius", x).at("length", y)
+        c = scan_modes(at, "stretch", side="compression", options=NEAR).critical
+        return c.m, c.n
+
+    lo, hi = 1.2, 1.3
+    assert first(lo) == (1, 1) and first(hi) == (0, 1)
+    while hi - lo > 2e-9:
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if first(mid) == (1, 1) else (lo, mid)
+    assert abs(b.x[k] - 0.5 * (lo + hi)) < 1e-8
+
+
+def test_pattern_at_follows_the_traced_boundary(small_map):
+    (b,) = small_map.boundaries
+    k = len(b.x) // 2
+    for dx, mode in ((-1e-6, (1, 1)), (1e-6, (0, 1))):
+        assert small_map.pattern_at(b.x[k] + dx, b.y[k]) == mode
+    raster = small_map.raster(np.linspace(1.2, 1.3, 5), np.linspace(0.95, 1.05, 3))
+    assert raster.shape == (5, 3) and raster[0, 0] == (1, 1) and raster[-1, -1] == (0, 1)
+
+
+def test_map_records(small_map):
+    rec = json.loads(json.dumps(small_map.as_dict()))
+    assert rec["vary"] == [list(VARY[0]), list(VARY[1])]
+    (bd,) = rec["boundaries"]
+    assert sorted(bd["patterns"]) == [[0, 1], [1, 1]] and bd["certified"]
+    pytest.importorskip("xarray")
+    ds = small_map.to_xarray()
+    assert ds["boundary_x"].size == len(small_map.boundaries[0].x)
+    assert ds["m"].shape == (2, 2)
+
+
+@pytest.mark.parametrize(
+    "vary, words",
+    [
+        ((("outer_radius", 1.2, 1.3),), "give two \\(key, lo, hi\\)"),
+        ((("length", 1, 2), ("length", 1, 3)), "both 'length'"),
+        ((("outer_radius", 1.3, 1.2), ("length", 1, 2)), "need finite numbers lo < hi"),
+    ],
+)
+def test_bad_vary(vary, words):
+    with pytest.raises(ParameterError, match=words):
+        mode_map(TUBE, "stretch", vary, options=NEAR)
+
+
+@pytest.mark.slow
+def test_triple_point_three_modes_equal():
+    """Where (1, 2), (0, 2) and (1, 1) meet: the three critical values agree to 1e-8 by
+    full solves and by the Bessel determinants; the three boundaries end there."""
+    opts = ScanOptions((0, 1), (1, 2), extend=False)
+    mm = mode_map(
+        TUBE, "stretch", (("outer_radius", 1.34, 1.40), ("length", 2.3, 2.7)),
+        side="compression", points=2, options=opts, certify=1,
+    )  # fmt: skip
+    (tp,) = mm.triple_points
+    assert set(tp.patterns) == {(1, 2), (0, 2), (1, 1)} and tp.gap < 1e-8
+    at = TUBE.at("outer_radius", tp.x).at("length", tp.y)
+    vals = [critical_value(at, *m, "stretch", side="compression").value for m in tp.patterns]
+    exact = [critical_stretch(*m, tp.x, tp.y) for m in tp.patterns]
+    assert max(vals) - min(vals) < 1e-8 and max(exact) - min(exact) < 1e-8
+    ends = [b for b in mm.boundaries if "triple" in b.ends]
+    assert len(ends) == 3 and all(b.certified for b in mm.boundaries)
