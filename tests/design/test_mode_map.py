@@ -149,3 +149,70 @@ def test_triple_point_three_modes_equal():
     assert max(vals) - min(vals) < 1e-8 and max(exact) - min(exact) < 1e-8
     ends = [b for b in mm.boundaries if "triple" in b.ends]
     assert len(ends) == 3 and all(b.certified for b in mm.boundaries)
+
+
+def test_design_in_the_map_widest_margin(small_map):
+    from electrogrowth.design.prescribe_map import prescribe_map
+
+    d = prescribe_map(TUBE, (1, 1), small_map, options=NEAR)
+    assert d.status == "found" and d.mode == (1, 1) and d.next_mode == (0, 1)
+    assert d.region == small_map.boundaries
+
+    def margin(x, y):  # M = s (v_next - v) / |v|, s = -1 in compression, by direct solves
+        at = TUBE.at("outer_radius", x).at("length", y)
+        v, w = (critical_value(at, *m, "stretch", side="compression").value
+                for m in ((1, 1), (0, 1)))  # fmt: skip
+        return -(w - v) / abs(v)
+
+    assert d.margin > 0 and abs(d.margin - margin(d.x, d.y)) < 1e-10
+    for x, y in ((1.2, 0.95), (1.2, 1.0), (1.21, 1.05), (1.22, 1.02)):
+        assert margin(x, y) <= d.margin + 1e-9, (x, y)
+    # the distance to the region's boundary along the outer radius, from the Bessel switch
+    assert abs(d.to_boundary["outer_radius"] - (_bessel_switch(d.y) - d.x)) < 1e-8
+    v, w = d.value, d.next_value
+    expect = -(v * d.next_sensitivity["growth"] - w * d.sensitivity["growth"]) / v**2
+    assert d.margin_sensitivity["growth"] == pytest.approx(expect, rel=1e-12, abs=1e-14)
+
+
+def test_design_in_the_map_never_first(small_map):
+    from electrogrowth.design.prescribe_map import prescribe_map
+
+    d = prescribe_map(TUBE, (0, 2), small_map, options=NEAR)
+    assert d.status == "not_first" and d.margin < 0 and d.mode == (0, 2)
+    at = TUBE.at("outer_radius", d.x).at("length", d.y)
+    scan = scan_modes(at, "stretch", side="compression", options=NEAR).critical
+    assert d.next_mode == (scan.m, scan.n)
+    v = critical_value(at, 0, 2, "stretch", side="compression").value
+    assert d.margin == pytest.approx(-(scan.value - v) / abs(v), abs=1e-8)
+
+
+@pytest.mark.slow
+def test_cli_design_two_variables(capsys, tmp_path):
+    from electrogrowth.cli.app import main
+
+    args = ["design", "--solve-for", "stretch", "--side", "compression", "--target", "0", "1"]
+    args += ["--vary", "outer_radius", "1.2", "1.3", "--vary", "length", "0.95", "1.05"]
+    args += ["--points", "2", "--m-max", "1", "--n-max", "1", "--json", "--out", str(tmp_path)]
+    assert main(args) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["target"] == "(0, 1)" and out["status"] == "found"
+    assert out["best"]["mode"] == [0, 1] and out["best"]["margin"] > 0
+    assert out["vary"] == ["outer_radius", "length"]
+    assert any(sorted(b["patterns"]) == [[0, 1], [1, 1]] for b in out["region"])
+    assert all(b["certified"] for b in out["switches"])
+    assert {"outer_radius", "length"} <= set(out["sensitivity"]["value"])
+    kinds = sorted(p.rsplit(".", 1)[1] for p in out["files"])
+    assert kinds[:2] == ["csv", "nc"] or kinds[:2] == ["csv", "png"]
+
+
+def test_cli_design_two_variables_bad_input(capsys):
+    from electrogrowth.cli.app import main
+
+    args = ["design", "--solve-for", "stretch", "--target", "0", "1"]
+    assert main([*args, "--vary", "length", "1", "2", "--vary", "length", "1", "3"]) == 2
+    more = ["--vary", "outer_radius", "1.2", "1.3", "--vary", "length", "1", "2"]
+    assert main([*args, *more, "--vary", "voltage", "0", "1"]) == 2
+    assert main([*args, *more, "--points", "500"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 3 and all(e.startswith("electrogrowth: error:") for e in err)
+    assert "given twice" in err[0] and "once or twice" in err[1] and "at most 101" in err[2]

@@ -202,7 +202,9 @@ class ModeMap:
         lab = self.grid_labels()
         m = np.array([[v[0] if isinstance(v, tuple) else -1 for v in row] for row in lab], int)
         n = np.array([[v[1] if isinstance(v, tuple) else -1 for v in row] for row in lab], int)
-        kind = np.array([["bifurcation" if isinstance(v, tuple) else v for v in row] for row in lab])
+        kind = np.array(
+            [["bifurcation" if isinstance(v, tuple) else v for v in row] for row in lab]
+        )
         px, py, pv, pb = [], [], [], []
         for k, b in enumerate(self.boundaries):
             px += b.x

@@ -201,7 +201,11 @@ def follow(values: Values, p, q, start, tangent, candidates):
             if c in (p, q) or not valued(c):
                 continue
             w = values.value(c, u)
-            if w is not None and v is not None and values.sense * (w - v) < -AGREE * max(1, abs(v)):
+            if (
+                w is not None
+                and v is not None
+                and values.sense * (w - v) < -AGREE * max(1, abs(v))
+            ):
                 return c
         return None
 

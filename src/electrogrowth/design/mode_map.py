@@ -314,9 +314,7 @@ def mode_map(
     for k, c in enumerate(mapper.curves):
         mapper.say(f"certifying boundary {k + 1} of {len(mapper.curves)}")
         xy = np.array([values.xy(u) for u in c["u"]])
-        common = [
-            values.value(c["left"] if valued(c["left"]) else c["right"], u) for u in c["u"]
-        ]
+        common = [values.value(c["left"] if valued(c["left"]) else c["right"], u) for u in c["u"]]
         boundaries.append(
             Boundary(
                 c["left"], c["right"], tuple(xy[:, 0]), tuple(xy[:, 1]),
@@ -347,4 +345,3 @@ def mode_map(
         values.solves,
         time.perf_counter() - t0,
     )
-

@@ -102,4 +102,3 @@ def plot_map(result, *, pixels: int = 160) -> object:
     ax.set_title(f"first pattern (m, n) by critical {mmap.solve_for}", fontsize=9)
     ax.legend(fontsize=7, loc="best")
     return ax
-
