@@ -216,3 +216,19 @@ def test_cli_design_two_variables_bad_input(capsys):
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 3 and all(e.startswith("electrogrowth: error:") for e in err)
     assert "given twice" in err[0] and "once or twice" in err[1] and "at most 101" in err[2]
+
+
+@pytest.mark.slow
+def test_boundary_to_the_short_wave_limit():
+    """A thick tube under voltage: where the finite mode (0, 1) gives way to the exact
+    short-wave limit, the traced boundary's two values agree by full solves and scans."""
+    mm = mode_map(
+        TUBE, "voltage", (("outer_radius", 1.6, 2.6), ("growth", 1.0, 1.1)),
+        options=ScanOptions((0, 2), (1, 2), extend=False), points=2, certify=2,
+    )  # fmt: skip
+    (b,) = mm.boundaries
+    assert {b.left, b.right} == {(0, 1), "surface"} and b.ends == ("edge", "edge")
+    assert b.certified and all(c.gap < 1e-8 for c in b.certificates)
+    k = len(b.x) // 2
+    assert mm.pattern_at(b.x[k] - 1e-6, b.y[k]) == (0, 1)
+    assert mm.pattern_at(b.x[k] + 1e-6, b.y[k]) == "surface"

@@ -144,6 +144,9 @@ def trace_contour(
     h = policy.first
     while len(pts) < max_points:
         p = x + h * t
+        on_edge = min(x[0], x[1], 1 - x[0], 1 - x[1]) <= 1e-14
+        if not _inside(p) and len(pts) == 1 and on_edge:
+            return Trace(tuple(pts), EDGE)  # a start on the edge, heading out of the square
         if not _inside(p):
             try:
                 q = _exit(d, x, t, h)

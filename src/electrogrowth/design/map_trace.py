@@ -17,7 +17,9 @@ box's side) from a root on an edge of the coarse grid whose ends have P and Q fi
 each new point the patterns first at the nearby grid nodes are compared: where a third,
 C, comes first the curve has passed a triple point, located by Newton's method on
 (d_PQ, d_PC) = 0; where d_PQ jumps instead of vanishing (a pattern's first root appears or
-vanishes) the curve ends there ("jump"). docs/design.md.
+vanishes) the curve ends there ("jump"). A pattern more than 5% behind is compared only
+every third point (the certificates' full scans check what this could miss).
+docs/design.md.
 """
 
 from __future__ import annotations
@@ -41,6 +43,8 @@ BIG = 1e3  # d where a pattern does not come before the threshold (sign only)
 HINT = 0.02  # the bracket of a followed critical value: +- this times max(1, |v|)
 NEAR = 1.5  # candidates: the patterns of grid nodes within this many cells
 TRIPLE, JUMP = "triple", "jump"
+FAR = 0.05  # a pattern this far behind (relative) is compared again only ...
+RECHECK = 3  # ... every this many points of a curve
 
 
 def valued(label) -> bool:
@@ -192,20 +196,24 @@ def follow(values: Values, p, q, start, tangent, candidates):
     """Trace d_PQ = 0 from ``start`` along ``tangent``: (points, end, triple) with end EDGE,
     CLOSED, TRIPLE, JUMP or LOST and triple (labels, u, value) where it met a third pattern."""
     d = values.condition(p, q)
+    seen: dict = {}  # pattern -> (its relative lead over P and Q, the point it was checked)
+    count = [0]
 
     def stop(u):
         if not values.agree(p, q, u):
             return JUMP
+        count[0] += 1
         v = values.value(p, u) if valued(p) else values.value(q, u)
         for c in candidates(u):
-            if c in (p, q) or not valued(c):
+            if c in (p, q) or not valued(c) or v is None:
                 continue
+            lead, when = seen.get(c, (0.0, 0))
+            if lead > FAR and count[0] - when < RECHECK:
+                continue  # far behind a few points ago: checked again later
             w = values.value(c, u)
-            if (
-                w is not None
-                and v is not None
-                and values.sense * (w - v) < -AGREE * max(1, abs(v))
-            ):
+            lead = math.inf if w is None else values.sense * (w - v) / max(1.0, abs(v))
+            seen[c] = (lead, count[0])
+            if lead < -AGREE:
                 return c
         return None
 

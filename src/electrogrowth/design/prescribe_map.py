@@ -20,17 +20,16 @@ import math
 import numpy as np
 from scipy.optimize import minimize
 
-from ..bifurcation.critical import critical_value
 from ..bifurcation.scan import ScanOptions, scan_modes
 from ..errors import ElectrogrowthError
 from ..outcomes import Kind
 from .map_record import ModeMap, label_json
-from .map_trace import valued
+from .map_trace import Values, valued
 from .prescribe import FOUND, NOT_FIRST, NOT_REACHED, REFINE_ROUNDS
 from .sensitivity import sensitivities
 from .targets import Target, check_target
 
-RASTER = 9  # raster points per variable where the margin is first sampled
+RASTER = 7  # raster points per variable where the margin is first sampled
 XATOL = 1e-7  # Nelder-Mead's tolerance on the design, in units of the box's sides
 
 
@@ -95,28 +94,24 @@ class _Margins:
     def __init__(self, mmap: ModeMap, tube, options):
         self.map, self.tube, self.options = mmap, tube, options
         self.sense = -1.0 if mmap.side == "compression" else 1.0
-        self.cache: dict = {}
+        self.values = Values(tube, mmap.solve_for, mmap.keys, mmap.box, mmap.side, 1e-12)
 
     def xy(self, u):
-        (x0, x1), (y0, y1) = self.map.box
-        return x0 + u[0] * (x1 - x0), y0 + u[1] * (y1 - y0)
+        return self.values.xy(u)
 
     def at(self, u):
-        x, y = self.xy(u)
-        return self.tube.at(self.map.keys[0], x).at(self.map.keys[1], y)
+        return self.values.tube_at(u)
 
     def value(self, mode, u) -> float:
-        key = (mode, float(u[0]), float(u[1]))
-        if key not in self.cache:
-            v = self.sense * math.inf
-            if valued(mode) and isinstance(mode, tuple):
-                try:
-                    c = critical_value(self.at(u), *mode, self.map.solve_for, side=self.map.side)
-                    v = c.value if c.kind == Kind.BIFURCATION else v
-                except ElectrogrowthError:
-                    pass
-            self.cache[key] = v
-        return self.cache[key]
+        """The first critical value of ``mode`` at u (followed from its last value, as on a
+        traced boundary); +-inf where it does not come before the threshold."""
+        if not (valued(mode) and isinstance(mode, tuple)):
+            return self.sense * math.inf
+        try:
+            v = self.values.value(mode, u)
+        except ElectrogrowthError:
+            v = None
+        return self.sense * math.inf if v is None else v
 
     def margin(self, mode, others, u) -> tuple[float, object]:
         """(M, the next pattern) at u over the competitors ``others``."""
