@@ -30,7 +30,15 @@ import numpy as np
 
 from ..bifurcation.critical import critical_value
 from ..bifurcation.surface import short_wave_limit
-from ..continuation.contour import CLOSED, CONTOUR, EDGE, LOST, STOPPED, trace_contour
+from ..continuation.contour import (
+    CLOSED,
+    CONTOUR,
+    CONTOUR_STEPS,
+    EDGE,
+    LOST,
+    STOPPED,
+    trace_contour,
+)
 from ..continuation.events import brent
 from ..errors import ElectrogrowthError
 from ..outcomes import Kind
@@ -192,7 +200,7 @@ def edge_root(values: Values, p, q, a, b):
     return a + t * (b - a)
 
 
-def follow(values: Values, p, q, start, tangent, candidates):
+def follow(values: Values, p, q, start, tangent, candidates, policy=CONTOUR_STEPS):
     """Trace d_PQ = 0 from ``start`` along ``tangent``: (points, end, triple) with end EDGE,
     CLOSED, TRIPLE, JUMP or LOST and triple (labels, u, value) where it met a third pattern."""
     d = values.condition(p, q)
@@ -217,7 +225,7 @@ def follow(values: Values, p, q, start, tangent, candidates):
                 return c
         return None
 
-    tr = trace_contour(d, start, tangent, stop=stop)
+    tr = trace_contour(d, start, tangent, stop=stop, policy=policy)
     pts = [np.array(x) for x in tr.points]
     if tr.end != STOPPED:
         return pts, {EDGE: EDGE, CLOSED: CLOSED, LOST: LOST}[tr.end], None

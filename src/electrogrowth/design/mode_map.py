@@ -12,6 +12,7 @@ comes earlier); each triple point by the three critical values. docs/design.md.
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import math
 import time
@@ -20,6 +21,7 @@ import numpy as np
 
 from ..bifurcation.problem import as_problem
 from ..bifurcation.scan import ScanOptions, scan_modes
+from ..continuation.contour import CONTOUR_STEPS
 from ..errors import ElectrogrowthError, ParameterError
 from ..outcomes import Kind
 from .map_record import Boundary, Certificate, ModeMap, TriplePoint, label_json
@@ -83,8 +85,9 @@ def _crosses(poly, a, b) -> bool:
 class _Mapper:
     """The state of one map: the values, the grid's labels, the traced curves."""
 
-    def __init__(self, values: Values, grid_u, labels, options, progress):
+    def __init__(self, values: Values, grid_u, labels, options, progress, policy):
         self.values, self.grid_u, self.labels = values, grid_u, labels
+        self.policy = policy
         self.options, self.progress = options, progress
         self.found: set = set()  # set once the grid is scanned
         self.curves: list[dict] = []
@@ -144,9 +147,9 @@ class _Mapper:
 
     def _trace(self, p, q, left, start, t, start_end):
         self.say(f"tracing the boundary {label_json(p)} | {label_json(q)}")
-        fwd = follow(self.values, p, q, start, t, self.candidates)
+        fwd = follow(self.values, p, q, start, t, self.candidates, self.policy)
         if start_end is None:
-            back = follow(self.values, p, q, start, -t, self.candidates)
+            back = follow(self.values, p, q, start, -t, self.candidates, self.policy)
         else:
             back = ([np.asarray(start)], start_end, None)
         pts = [np.asarray(x) for x in back[0][::-1]]
@@ -234,6 +237,7 @@ def mode_map(
     points: int | tuple[int, int] = 5,
     certify: int = 3,
     rtol: float = 1e-12,
+    max_step: float = CONTOUR_STEPS.largest,
     progress=None,
 ) -> ModeMap:
     """The first pattern over two design variables, its boundaries traced as curves.
@@ -256,6 +260,10 @@ def mode_map(
         Points of each boundary checked by full solves and a full scan (0: none).
     rtol : float
         Accuracy of every critical value (default 1e-12).
+    max_step : float
+        The longest step along a boundary, as a fraction of the box's sides (default 0.08,
+        from 0.01 to 0.5): every traced point is a root whatever the step; longer steps
+        give fewer points (a coarser polyline between them) for boundaries that barely bend.
     progress : callable str -> None, optional
         Called with a line per stage (the grid's scans, each traced boundary).
 
@@ -286,6 +294,15 @@ def mode_map(
     nx, ny = check_points(points)
     if isinstance(certify, bool) or not isinstance(certify, int) or certify < 0:
         raise ParameterError(f"certify = {certify!r} is invalid; need an integer >= 0")
+    if (
+        isinstance(max_step, bool)
+        or not isinstance(max_step, (int, float))
+        or not (0.01 <= max_step <= 0.5)
+    ):
+        raise ParameterError(f"max_step = {max_step!r} is out of range; valid range: 0.01 to 0.5")
+    policy = dataclasses.replace(
+        CONTOUR_STEPS, largest=float(max_step), first=min(CONTOUR_STEPS.first, max_step)
+    )
     problem = as_problem(tube, solve_for, side=side, rtol=rtol, options=options)
     values = Values(
         problem.tube, problem.control, (vx[0], vy[0]), (vx[1:], vy[1:]), problem.side,
@@ -295,7 +312,7 @@ def mode_map(
     grid_u = np.stack(np.meshgrid(us, ws, indexing="ij"), axis=-1)
     labels = np.empty((nx, ny), object)
     crit = np.full((nx, ny), math.nan)
-    mapper = _Mapper(values, grid_u, labels, problem.options, progress)
+    mapper = _Mapper(values, grid_u, labels, problem.options, progress, policy)
     for i, j in itertools.product(range(nx), range(ny)):
         mapper.say(f"scan {i * ny + j + 1} of {nx * ny}")
         labels[i, j], crit[i, j] = mapper.scan_label(grid_u[i, j])

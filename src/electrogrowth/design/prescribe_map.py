@@ -221,9 +221,9 @@ def prescribe_map(
     inside = [(u, lab) for u, lab in inside if lab in goal]
     if inside:
         status = FOUND
-        found = {lab for row in mmap.labels for lab in row} | {
-            lab for b in mmap.boundaries for lab in (b.left, b.right)
-        }
+        found = {lab for b in region for lab in (b.left, b.right)}  # the region's neighbours
+        if not found:  # the target is first over the whole box: every other pattern
+            found = {lab for row in mmap.labels for lab in row}
         others = tuple(sorted(lab for lab in found if lab not in goal and isinstance(lab, tuple)))
         scored = [(margins.margin(lab, others, u)[0], tuple(u), lab) for u, lab in inside]
         _, u0, mode = max(scored)
