@@ -67,6 +67,7 @@ SLOW = {
     "Material(": "a new energy: its moduli are derived and compiled (11-33 s)",
     "--energy": "the same new energy, when the block above has not compiled it",
     "--solve-for pressure": "a layered scan for the pressure up to m = 16, n = 8 (30 s)",
+    "--vary length 0.95 1.05": "a mode map over two variables, boundaries traced (40 s)",
 }
 #: Commands not run at all, with the reason.
 SKIP = {
