@@ -40,6 +40,7 @@ from .sequence import check_vary
 
 CERTIFIED = 1e-8  # the two (three) critical values of a certified point agree to this
 MIN_NODES, MAX_NODES = 2, 101
+SPLITS = 8  # an edge split at a third pattern found by a scan, at most this deep
 ROUNDS = 3  # boundaries traced outwards from new triple points, at most this often
 
 
@@ -117,7 +118,7 @@ class _Mapper:
             {c["left"], c["right"]} == {p, q} and _crosses(c["u"], a, b) for c in self.curves
         )
 
-    def edge(self, p, q, a, b, depth: int = 2):
+    def edge(self, p, q, a, b, depth: int = SPLITS):
         """Seed and trace the P|Q boundary crossing the grid edge from a (P) to b (Q)."""
         if self.covered(p, q, a, b):
             return

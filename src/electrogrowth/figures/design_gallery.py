@@ -23,11 +23,12 @@ from .design import plot_map
 
 CONTROL = "growth[1].theta"
 FOLDS = (8, 12, 16)
-#: the full map: h from 0.05 to 0.13, mu_1/mu_2 from 5 to 20, every m from 6 to 18
-FULL_BOX = (("layers[1].thickness", 0.05, 0.13), ("layers[1].shear_modulus", 5.0, 20.0))
+#: the full map: the interface radius 1 + h from 1.05 to 1.13 (the outer radius kept at 2),
+#: mu_1/mu_2 from 5 to 20, every m from 6 to 18
+FULL_BOX = (("layers[1].outer_radius", 1.05, 1.13), ("layers[1].shear_modulus", 5.0, 20.0))
 FULL_OPTIONS = ScanOptions((6, 18), (1, 1), top=3)
 #: the quick map (tests): a small box across the 12 | 11 boundary near h = 0.1, mu = 10
-QUICK_BOX = (("layers[1].thickness", 0.09, 0.096), ("layers[1].shear_modulus", 9.5, 10.5))
+QUICK_BOX = (("layers[1].outer_radius", 1.09, 1.096), ("layers[1].shear_modulus", 9.5, 10.5))
 QUICK_OPTIONS = ScanOptions((11, 12), (1, 1), top=2, extend=False, surface=False)
 
 
@@ -57,7 +58,7 @@ def designed_folds(
     (quick: a small box near h = 0.1, mu = 10, designed for 12 folds). ``mmap``: a map
     already computed (the full one takes ~1 h on a busy two-core machine)."""
     box, options = (QUICK_BOX, QUICK_OPTIONS) if quick else (FULL_BOX, FULL_OPTIONS)
-    tube = gut_bilayer(box[0][1], box[1][1])
+    tube = gut_bilayer(box[0][1] - 1.0, box[1][1])
     if mmap is None:
         mmap = mode_map(
             tube, CONTROL, box, options=options, points=2 if quick else 4,
