@@ -232,3 +232,13 @@ def test_boundary_to_the_short_wave_limit():
     k = len(b.x) // 2
     assert mm.pattern_at(b.x[k] - 1e-6, b.y[k]) == (0, 1)
     assert mm.pattern_at(b.x[k] + 1e-6, b.y[k]) == "surface"
+
+
+@pytest.mark.parametrize(
+    "keyword, words",
+    [({"points": 1}, "points = \\(1, 1\\) is invalid"), ({"max_step": 0.9}, "max_step = 0.9 is out of range"),
+     ({"certify": -1}, "certify = -1 is invalid")],
+)  # fmt: skip
+def test_bad_options(keyword, words):
+    with pytest.raises(ParameterError, match=words):
+        mode_map(TUBE, "stretch", VARY, options=NEAR, **keyword)
