@@ -236,9 +236,12 @@ def test_boundary_to_the_short_wave_limit():
 
 @pytest.mark.parametrize(
     "keyword, words",
-    [({"points": 1}, "points = \\(1, 1\\) is invalid"), ({"max_step": 0.9}, "max_step = 0.9 is out of range"),
-     ({"certify": -1}, "certify = -1 is invalid")],
-)  # fmt: skip
+    [
+        ({"points": 1}, "points = \\(1, 1\\) is invalid"),
+        ({"max_step": 0.9}, "max_step = 0.9 is out of range"),
+        ({"certify": -1}, "certify = -1 is invalid"),
+    ],
+)
 def test_bad_options(keyword, words):
     with pytest.raises(ParameterError, match=words):
         mode_map(TUBE, "stretch", VARY, options=NEAR, **keyword)
