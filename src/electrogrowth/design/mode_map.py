@@ -48,7 +48,7 @@ def _label(res) -> object:
     c = res.critical
     if c.kind == Kind.BIFURCATION:
         return (int(c.m), int(c.n))
-    return SURFACE if c.kind == Kind.SURFACE else THRESHOLD
+    return {Kind.SURFACE: SURFACE, Kind.THRESHOLD: THRESHOLD}.get(c.kind, FAILED)
 
 
 def check_points(points) -> tuple[int, int]:
