@@ -188,7 +188,7 @@ def test_cli_design_json(capsys, tmp_path):
 @pytest.mark.parametrize(
     "extra, words",
     [
-        (["--vary", "length", "1", "2"], "two design variables are not supported yet"),
+        (["--vary", "length", "1", "2", "--vary", "voltage", "0", "1"], "once or twice"),
         (["--target-set", "prismatic"], "--target M N (repeatable) or --target-set"),
     ],
 )

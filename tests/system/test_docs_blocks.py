@@ -69,6 +69,7 @@ SLOW = {
     "postbuckle --tube": "a finite-element onset and branch (the fe extra; 40 s)",
     "postbuckle(tube": "a finite-element onset and branch (the fe extra; 40 s)",
     "--solve-for pressure": "a layered scan for the pressure up to m = 16, n = 8 (30 s)",
+    "--vary length 0.95 1.05": "a mode map over two variables, boundaries traced (40 s)",
 }
 #: Commands not run at all, with the reason.
 SKIP = {

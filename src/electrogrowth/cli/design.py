@@ -1,10 +1,14 @@
-"""``electrogrowth design``: which value of one design variable gives the target pattern,
-with the widest margin against the next pattern, and how sensitive that is.
+"""``electrogrowth design``: which value of one design variable (or pair of values of two)
+gives the target pattern, with the widest margin against the next pattern, and how
+sensitive that is.
 
 Registered in :data:`cli.COMMANDS` as ("...", configure_design, run_design). Prints the
-region, the switches, the best design and the sensitivities (``--json``: one JSON object);
-writes ``design_<target>_vs_<key>.csv`` (the first mode along the variable, switches
-located) and ``.png`` (the competing modes, the region shaded) into ``--out``.
+region, the switches (boundaries), the best design and the sensitivities (``--json``: one
+JSON object); writes ``design_<target>_vs_<key>.csv`` (the first mode along the variable,
+switches located) and ``.png`` (the competing modes, the region shaded) into ``--out``; for
+two variables ``design_<target>_<x>_<y>.csv`` (the traced boundaries' points), ``.png``
+(the map: regions labelled (m, n), boundaries, the target's region, the design) and ``.nc``
+(the map as netCDF, needs xarray).
 """
 
 from __future__ import annotations
@@ -30,6 +34,7 @@ from .progress import add_quiet_option
 from .tube_input import add_any_tube_options, control_of
 
 PLOT_POINTS = 25  # critical values of each competing mode drawn at this many designs
+MAP_NODES = 101  # grid points along each variable of a map, at most
 
 
 def configure_design(parser: argparse.ArgumentParser) -> None:
@@ -55,15 +60,17 @@ def configure_design(parser: argparse.ArgumentParser) -> None:
         required=True,
         metavar=("KEY", "LO", "HI"),
         help="the design variable and its range: outer_radius, length, growth, stretch or"
-        f" voltage; for a layered --tube any control or key ({KEYS_TEXT})",
+        f" voltage; for a layered --tube any control or key ({KEYS_TEXT}); give it twice"
+        " for a map over two variables",
     )
     what.add_argument(
         "--points",
         type=bounded_int(2, 2001),
-        default=9,
+        default=None,
         metavar="N",
         help="grid points from LO to HI scanned before the switches between them are"
-        " located (default 9)",
+        " located (default 9); with two variables, grid points along each (default 5, at"
+        " most 101), from which the boundaries are traced",
     )
     add_any_tube_options(parser, outer_radius=1.4)
     modes = parser.add_argument_group("modes u ~ cos(m theta) cos(n pi z / l)")
@@ -79,17 +86,21 @@ def configure_design(parser: argparse.ArgumentParser) -> None:
     add_quiet_option(parser)
 
 
-def _vary(args) -> tuple[str, float, float]:
-    if len(args.vary) > 1:
-        raise ParameterError("two design variables are not supported yet")
-    key, lo, hi = args.vary[0]
-    try:
-        lo, hi = finite_number(lo), finite_number(hi)
-    except argparse.ArgumentTypeError as exc:
-        raise ParameterError(f"--vary {key}: {exc}") from None
-    if not lo < hi:
-        raise ParameterError(f"--vary {key} {lo:g} {hi:g}: need LO < HI")
-    return key, lo, hi
+def _vary(args) -> list[tuple[str, float, float]]:
+    if len(args.vary) > 2:
+        raise ParameterError("give --vary once or twice (one or two design variables)")
+    out = []
+    for key, lo, hi in args.vary:
+        try:
+            lo, hi = finite_number(lo), finite_number(hi)
+        except argparse.ArgumentTypeError as exc:
+            raise ParameterError(f"--vary {key}: {exc}") from None
+        if not lo < hi:
+            raise ParameterError(f"--vary {key} {lo:g} {hi:g}: need LO < HI")
+        out.append((key, lo, hi))
+    if len(out) == 2 and out[0][0] == out[1][0]:
+        raise ParameterError(f"--vary {out[0][0]} is given twice; choose two variables")
+    return out
 
 
 def _target(args):
@@ -105,10 +116,18 @@ def run_design(args) -> int:
     from ..design import prescribe  # the numeric stack, after the options are checked
     from ..design.sequence import check_vary
 
-    vary, target = _vary(args), _target(args)
+    varies, target = _vary(args), _target(args)
     check_side_option(args)
     tube, solve_for = control_of(args)
-    check_vary(vary, tube, solve_for)  # the key and its range, before any work
+    for vary in varies:
+        check_vary(vary, tube, solve_for)  # the key and its range, before any work
+    if len(varies) == 2:
+        if args.points is not None and args.points > MAP_NODES:
+            raise ParameterError(
+                f"--points {args.points} is too many for a map; at most {MAP_NODES} a variable"
+            )
+        return _run_map(args, tube, solve_for, varies, target)
+    vary = varies[0]
     tube = tube.at(vary[0], vary[1])
     result = prescribe(
         tube,
@@ -117,7 +136,7 @@ def run_design(args) -> int:
         vary,
         side=args.side,
         options=scan_options_from_args(args),
-        points=args.points,
+        points=9 if args.points is None else args.points,
     )
     record = result.as_dict()
     if args.out is not None:
@@ -177,4 +196,110 @@ def summary(result) -> list[str]:
         dm = result.margin_sensitivity.get(p)
         extra = "" if dm is None else f", d(margin)/d{p} = {dm:.6g}"
         lines.append(f"  d{seq.solve_for}_cr/d{p} = {d:.6g}{extra}")
+    return lines
+
+
+def _run_map(args, tube, solve_for, varies, target) -> int:
+    import sys
+
+    from ..design.mode_map import mode_map
+    from ..design.prescribe_map import prescribe_map
+    from .progress import enabled
+
+    def say(text: str) -> None:
+        print(f"design: {text}", file=sys.stderr, flush=True)
+
+    options = scan_options_from_args(args)
+    tube = tube.at(varies[0][0], varies[0][1]).at(varies[1][0], varies[1][1])
+    mmap = mode_map(
+        tube, solve_for, tuple(varies), side=args.side, options=options,
+        points=5 if args.points is None else args.points,
+        progress=say if not args.json and enabled(args) else None,
+    )  # fmt: skip
+    result = prescribe_map(tube, target, mmap, options=options)
+    record = result.as_dict()
+    if args.out is not None:
+        record["files"] = [str(p) for p in _write_map(result, args.out)]
+    if args.json:
+        print(json.dumps(record))
+        return 0
+    print("\n".join(map_summary(result) + record.get("files", [])))
+    return 0
+
+
+def _write_map(result, out: Path) -> list[Path]:
+    from ..atomic import replaced
+    from ..figures.design import plot_map
+
+    mmap = result.map
+    out.mkdir(parents=True, exist_ok=True)
+    name = re.sub(r"[^A-Za-z0-9]+", "_", result.target).strip("_")
+    stem = f"design_{name}_{mmap.keys[0]}_{mmap.keys[1]}"
+    stem = re.sub(r"[^A-Za-z0-9_.]+", "_", stem)
+    csv = out / f"{stem}.csv"
+    with replaced(csv) as fh:
+        lines = [f"boundary,{mmap.keys[0]},{mmap.keys[1]},critical_{mmap.solve_for},left,right"]
+        for k, b in enumerate(mmap.boundaries):
+            sides = f"{_text(b.left)},{_text(b.right)}"
+            lines += [f"{k},{x!r},{y!r},{v!r},{sides}" for x, y, v in zip(b.x, b.y, b.value)]
+        fh.write("\n".join(lines) + "\n")
+    ax = plot_map(result)
+    png = out / f"{stem}.png"
+    ax.figure.savefig(png, dpi=200)
+    files = [csv, png]
+    try:
+        ds = mmap.to_xarray()
+    except ImportError:
+        return files
+    nc = out / f"{stem}.nc"
+    try:
+        ds.to_netcdf(nc)
+    except (ImportError, ValueError):
+        return files  # no netCDF engine installed
+    return files + [nc]
+
+
+def _text(label) -> str:
+    return f"({label[0]} {label[1]})" if isinstance(label, tuple) else str(label)
+
+
+def _name(label) -> str:
+    return f"({label[0]}, {label[1]})" if isinstance(label, tuple) else str(label)
+
+
+def map_summary(result) -> list[str]:
+    """Text lines of a two-variable design: the boundaries, triple points, the design."""
+    mmap = result.map
+    kx, ky = mmap.keys
+    side = f" ({mmap.side})" if mmap.side else ""
+    lines = [f"target {result.target}: critical {mmap.solve_for}{side} over {kx} and {ky}"]
+    for b in mmap.boundaries:
+        ok = "certified" if b.certified else "NOT certified"
+        lines.append(
+            f"  boundary {_name(b.left)} | {_name(b.right)}: {len(b.x)} points from"
+            f" ({b.x[0]:.8g}, {b.y[0]:.8g}) to ({b.x[-1]:.8g}, {b.y[-1]:.8g}), ends"
+            f" {b.ends[0]}/{b.ends[1]}, {ok}"
+        )
+    for t in mmap.triple_points:
+        modes = ", ".join(_name(p) for p in t.patterns)
+        lines.append(
+            f"  triple point {modes} at ({t.x:.10g}, {t.y:.10g}), {mmap.solve_for}_cr ="
+            f" {t.value:.10g}"
+        )
+    if result.status == "not_reached":
+        lines.append("  no target mode among the scanned modes: widen --m-max / --n-max")
+        return lines
+    best = "best design" if result.status == "found" else "never first; closest design"
+    lines.append(
+        f"  {best}: {kx} = {result.x:.10g}, {ky} = {result.y:.10g}, mode {result.mode} at"
+        f" {mmap.solve_for}_cr = {result.value:.10g}, margin {result.margin:.4g} to"
+        f" {_name(result.next_mode)} ({result.next_value:.10g})"
+    )
+    for k, d in result.to_boundary.items():
+        if d is not None:
+            lines.append(f"  distance to the region's boundary along {k}: {d:.6g}")
+    for p, d in sorted(result.sensitivity.items(), key=lambda kv: -abs(kv[1])):
+        dm = result.margin_sensitivity.get(p)
+        extra = "" if dm is None else f", d(margin)/d{p} = {dm:.6g}"
+        lines.append(f"  d{mmap.solve_for}_cr/d{p} = {d:.6g}{extra}")
     return lines

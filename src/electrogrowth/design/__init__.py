@@ -1,16 +1,27 @@
 """Which tube gives which pattern: the first mode along one design variable
-(:mod:`.sequence`), the region, widest-margin design and sensitivities of a target pattern
-(:mod:`.prescribe`, :mod:`.sensitivity`), the target patterns themselves (:mod:`.targets`).
+(:mod:`.sequence`) or over two (:mod:`.mode_map`, its boundaries traced in
+:mod:`.map_trace`, its record in :mod:`.map_record`), the region, widest-margin design and
+sensitivities of a target pattern (:mod:`.prescribe`, :mod:`.prescribe_map`,
+:mod:`.sensitivity`), the target patterns themselves (:mod:`.targets`).
 
 May import ``bifurcation``, ``incremental``, ``basestate``, ``model``, ``outcomes`` and
 ``errors``; only ``cli`` and the package's ``__init__`` import it.
 """
 
+from .map_record import Boundary, ModeMap, TriplePoint
+from .mode_map import mode_map
 from .prescribe import Design, prescribe
+from .prescribe_map import MapDesign, prescribe_map
 from .sensitivity import sensitivities
 from .sequence import Interval, ModeSequence, SequenceSwitch, mode_sequence
 
 __all__ = [
+    "Boundary",
+    "ModeMap",
+    "TriplePoint",
+    "mode_map",
+    "MapDesign",
+    "prescribe_map",
     "Design",
     "prescribe",
     "sensitivities",

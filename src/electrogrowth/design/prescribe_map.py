@@ -1,0 +1,277 @@
+"""Pattern prescription over two design variables: the target's region in a mode map, the
+design with the widest margin there, its sensitivities; or, where the target is never first
+in the box, the closest design and what beats it.
+
+The margin is that of one variable (prescribe.py, docs/design.md): at a design u = (x, y),
+M(u) = s (v_N(u) - v_T(u)) / |v_T(u)| with T the target mode and N the first non-target
+pattern after it. Its maximum over the region is found from a raster of the region (by the
+traced boundaries, no solves), refined by Nelder-Mead in the unit
+square from the best, each M from single-mode solves of T and its competitors; a scan at the
+optimum adds a competitor the set lacked, and the maximisation is repeated. Where the
+target is first nowhere, the closest design maximises M < 0 from the map's grid nodes (each
+scanned again for the modes ahead of the target), refined the same way.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+from scipy.optimize import minimize
+
+from ..bifurcation.scan import ScanOptions, scan_modes
+from ..errors import ElectrogrowthError
+from ..outcomes import Kind
+from .map_record import ModeMap, label_json
+from .map_trace import Values, valued
+from .prescribe import FOUND, NOT_FIRST, NOT_REACHED, REFINE_ROUNDS
+from .sensitivity import sensitivities
+from .targets import Target, check_target
+
+RASTER = 7  # raster points per variable where the margin is first sampled
+XATOL = 1e-7  # Nelder-Mead's tolerance on the design, in units of the box's sides
+
+
+@dataclasses.dataclass(frozen=True)
+class MapDesign:
+    """Result of :func:`prescribe_map`: ``region`` the traced boundaries with the target on
+    one side (polylines), the best (FOUND) or closest (NOT_FIRST) design (x, y), the target
+    mode there, its critical ``value``, the ``margin`` M and the ``next_mode`` (what beats
+    it, for NOT_FIRST) at ``next_value``; ``to_boundary``: the distance from the design to
+    the region's boundary along x and along y (None where no boundary crosses that line);
+    the sensitivities as in :class:`~.prescribe.Design`."""
+
+    target: str
+    status: str
+    keys: tuple[str, str]
+    region: tuple
+    x: float
+    y: float
+    mode: tuple[int, int] | None
+    value: float
+    margin: float
+    next_mode: object
+    next_value: float
+    to_boundary: dict
+    sensitivity: dict
+    next_sensitivity: dict
+    margin_sensitivity: dict
+    map: ModeMap
+    goal: Target | None = None  # the target as a set of modes (design/targets.py)
+
+    def as_dict(self) -> dict:
+        num = lambda v: v if v is not None and math.isfinite(v) else None  # noqa: E731
+        return {
+            "target": self.target,
+            "status": self.status,
+            "vary": list(self.keys),
+            "solve_for": self.map.solve_for,
+            "side": self.map.side,
+            "region": [b.as_dict() for b in self.region],
+            "switches": [b.as_dict() for b in self.map.boundaries],
+            "triple_points": [t.as_dict() for t in self.map.triple_points],
+            "best": {
+                "design": [num(self.x), num(self.y)],
+                "mode": None if self.mode is None else list(self.mode),
+                "value": num(self.value),
+                "margin": num(self.margin),
+                "next_mode": None if self.next_mode is None else label_json(self.next_mode),
+                "next_value": num(self.next_value),
+                "to_boundary": {k: num(v) for k, v in self.to_boundary.items()},
+            },
+            "sensitivity": {
+                "value": {p: num(d) for p, d in self.sensitivity.items()},
+                "next_value": {p: num(d) for p, d in self.next_sensitivity.items()},
+                "margin": {p: num(d) for p, d in self.margin_sensitivity.items()},
+            },
+        }
+
+
+class _Margins:
+    """Critical values of patterns at designs u (unit square), cached; the margin M(u)."""
+
+    def __init__(self, mmap: ModeMap, tube, options):
+        self.map, self.tube, self.options = mmap, tube, options
+        self.sense = -1.0 if mmap.side == "compression" else 1.0
+        self.values = Values(tube, mmap.solve_for, mmap.keys, mmap.box, mmap.side, 1e-12)
+
+    def xy(self, u):
+        return self.values.xy(u)
+
+    def at(self, u):
+        return self.values.tube_at(u)
+
+    def value(self, mode, u) -> float:
+        """The first critical value of ``mode`` at u (followed from its last value, as on a
+        traced boundary); +-inf where it does not come before the threshold."""
+        if not (valued(mode) and isinstance(mode, tuple)):
+            return self.sense * math.inf
+        try:
+            v = self.values.value(mode, u)
+        except ElectrogrowthError:
+            v = None
+        return self.sense * math.inf if v is None else v
+
+    def margin(self, mode, others, u) -> tuple[float, object]:
+        """(M, the next pattern) at u over the competitors ``others``."""
+        v = self.value(mode, u)
+        if not math.isfinite(v):
+            return -math.inf, None
+        if not others:
+            return math.inf, None
+        nxt = min(others, key=lambda o: self.sense * self.value(o, u))
+        return self.sense * (self.value(nxt, u) - v) / abs(v), nxt
+
+    def ranked(self, u) -> list:
+        """The modes a scan at u finds, in the order reached: [((m, n), value), ...]."""
+        opts = dataclasses.replace(self.options, top=max(self.options.top, 6))
+        try:
+            res = scan_modes(self.at(u), self.map.solve_for, side=self.map.side, options=opts)
+        except ElectrogrowthError:
+            return []
+        c = res.critical
+        out = [((c.m, c.n), c.value)] if c.kind == Kind.BIFURCATION else []
+        return out + [((r.m, r.n), r.value) for r in res.runners_up if r.family != "torsional"]
+
+
+def _maximise(margins: _Margins, mode, others, u0, goal):
+    """Nelder-Mead on -M in the unit square from u0; a competitor a scan at the optimum
+    finds ahead of (or next after) the target is added and the search repeated."""
+    u = np.asarray(u0, float)
+    for _ in range(REFINE_ROUNDS):
+
+        def neg(w, others=others):
+            w = np.clip(w, 0.0, 1.0)
+            return -margins.margin(mode, others, w)[0]
+
+        res = minimize(
+            neg, u, method="Nelder-Mead",
+            options={"xatol": XATOL, "fatol": 1e-13, "initial_simplex": _simplex(u)},
+        )  # fmt: skip
+        w = np.clip(res.x, 0.0, 1.0)
+        if -neg(w) >= -neg(u):
+            u = w
+        missing = set()
+        for m, _ in margins.ranked(u):
+            if m not in goal and m not in others:
+                missing.add(m)
+                if m != mode:
+                    break
+        if not missing:
+            break
+        others = tuple(sorted(set(others) | missing))
+    return u, others
+
+
+def _simplex(u, size: float = 0.05) -> np.ndarray:
+    """A starting simplex of side ``size`` at u, inside the unit square."""
+    dx = size if u[0] + size <= 1 else -size
+    dy = size if u[1] + size <= 1 else -size
+    return np.array([u, u + [dx, 0.0], u + [0.0, dy]])
+
+
+def _distances(mmap: ModeMap, region, x: float, y: float) -> dict:
+    """Distance from (x, y) to the region's boundary along x and along y."""
+    out = {}
+    for axis, name in ((0, mmap.keys[0]), (1, mmap.keys[1])):
+        best = None
+        for b in region:
+            pts = np.array([b.x, b.y]).T
+            for p, q in zip(pts[:-1], pts[1:], strict=True):
+                other = 1 - axis
+                c = (y, x)[axis]  # the fixed coordinate of the line
+                if (p[other] - c) * (q[other] - c) > 0 or p[other] == q[other]:
+                    continue
+                t = (c - p[other]) / (q[other] - p[other])
+                hit = p[axis] + t * (q[axis] - p[axis])
+                dist = abs(hit - (x, y)[axis])
+                best = dist if best is None else min(best, dist)
+        out[name] = best
+    return out
+
+
+def prescribe_map(
+    tube, target, mmap: ModeMap, *, options: ScanOptions = ScanOptions(), rtol: float = 1e-12
+) -> MapDesign:
+    """The design with the widest margin for ``target`` in a mode map (module docstring).
+
+    Parameters
+    ----------
+    tube : Tube
+        The tube the map was made of.
+    target : (m, n), list of (m, n), "axisymmetric", "prismatic" or callable
+        The pattern aimed at (design/targets.py).
+    mmap : ModeMap
+        The map (:func:`mode_map`) over the two design variables.
+    options : ScanOptions
+        The modes the scans at the designs examine (those of the map).
+
+    Returns
+    -------
+    MapDesign
+    """
+    goal = check_target(target)
+    margins = _Margins(mmap, tube, options)
+    region = tuple(b for b in mmap.boundaries if b.left in goal or b.right in goal)
+    us = np.linspace(0, 1, RASTER)
+    (x0, x1), (y0, y1) = mmap.box
+    raster = mmap.raster(x0 + us * (x1 - x0), y0 + us * (y1 - y0))
+    inside = [(np.array([us[i], us[j]]), raster[i, j]) for i, j in np.ndindex(raster.shape)]
+    inside = [(u, lab) for u, lab in inside if lab in goal]
+    if inside:
+        status = FOUND
+        found = {lab for b in region for lab in (b.left, b.right)}  # the region's neighbours
+        if not found:  # the target is first over the whole box: every other pattern
+            found = {lab for row in mmap.labels for lab in row}
+        others = tuple(sorted(lab for lab in found if lab not in goal and isinstance(lab, tuple)))
+        scored = [(margins.margin(lab, others, u)[0], tuple(u), lab) for u, lab in inside]
+        _, u0, mode = max(scored)
+    else:
+        status = NOT_FIRST
+        best = None
+        gx = (np.asarray(mmap.xs) - x0) / (x1 - x0)
+        gy = (np.asarray(mmap.ys) - y0) / (y1 - y0)
+        for i, j in np.ndindex(len(gx), len(gy)):  # the map's grid nodes, scanned again
+            u = np.array([gx[i], gy[j]])
+            ranked = margins.ranked(u)
+            for m in goal.modes:
+                if all(r[0] != m for r in ranked):
+                    ranked.append((m, margins.value(m, u)))
+            hits = [(m, v) for m, v in ranked if m in goal and math.isfinite(v)]
+            if not hits:
+                continue
+            m, v = min(hits, key=lambda h: margins.sense * h[1])
+            ahead = tuple(a for a, w in ranked if a not in goal and margins.sense * (w - v) < 0)
+            if ahead:
+                score = margins.margin(m, ahead, u)[0]
+                if best is None or score > best[0]:
+                    best = (score, tuple(u), m, ahead)
+        if best is None:
+            return _unreached(goal, mmap, region)
+        _, u0, mode, others = best
+    u, others = _maximise(margins, mode, others, u0, goal)
+    m_u, nxt = margins.margin(mode, others, u)
+    v = margins.value(mode, u)
+    v_next = margins.value(nxt, u) if nxt is not None else math.nan
+    at = margins.at(u)
+    sens = sensitivities(at, mode, mmap.solve_for, v, rtol=rtol)
+    sens_next, sens_margin = {}, {}
+    if nxt is not None and math.isfinite(v_next):
+        sens_next = sensitivities(at, nxt, mmap.solve_for, v_next, rtol=rtol)
+        scale = margins.sense * math.copysign(1.0, v) / v**2
+        sens_margin = {p: scale * (v * sens_next[p] - v_next * sens[p]) for p in sens}
+    x, y = margins.xy(u)
+    return MapDesign(
+        goal.name, status, mmap.keys, region, x, y, mode, v, m_u, nxt, v_next,
+        _distances(mmap, region, x, y) if status == FOUND else {},
+        sens, sens_next, sens_margin, mmap, goal,
+    )  # fmt: skip
+
+
+def _unreached(goal, mmap, region) -> MapDesign:
+    nan = math.nan
+    return MapDesign(
+        goal.name, NOT_REACHED, mmap.keys, region, nan, nan, None, nan, nan, None, nan, {},
+        {}, {}, {}, mmap, goal,
+    )  # fmt: skip
