@@ -34,6 +34,7 @@ _EXPORTS = {
     ".bifurcation.critical": ("CriticalPoint", "critical_value"),
     ".bifurcation.crease": ("CreaseOnset", "crease_onset"),
     ".bifurcation.verdict": ("Verdict",),
+    ".bifurcation.koiter": ("FilmOnHalfSpace", "KoiterResult", "koiter_coefficient"),
     ".bifurcation.curves": ("Curve", "critical_curve"),
     ".bifurcation.problem": ("Problem",),
     ".bifurcation.scan": ("ScanOptions", "ScanResult", "scan_modes"),
@@ -139,6 +140,9 @@ __all__ = [
     "CreaseOnset",
     "crease_onset",
     "Verdict",
+    "koiter_coefficient",
+    "KoiterResult",
+    "FilmOnHalfSpace",
     # design
     "ModeSequence",
     "mode_sequence",

@@ -37,6 +37,7 @@ from ..incremental.plane_forms import Forms, Segment, Space
 from ..incremental.polar_forms import PolarForms, rings
 from ..model.layers import Tube
 from .critical import critical_value
+from .verdict import Verdict
 
 #: The unknowns of the mode (harmonic 1) and of the second-order correction (0 and 2).
 MODE = ((0, 1), (1, 1), (2, 1))
@@ -457,3 +458,24 @@ def sign_change_ratio(lo: float = 1.5, hi: float = 2.0, *, xtol: float = 1e-7, *
     super/subcritical boundary), by Brent's method on the coefficient."""
     f = lambda r: _coefficient(FilmOnHalfSpace(r, **film))[0]  # noqa: E731
     return float(scipy.optimize.brentq(f, lo, hi, xtol=xtol))
+
+
+def with_branch(verdict: Verdict, tube: Tube, solve_for: str) -> tuple[Verdict, str | None]:
+    """``verdict`` with its slot ``branch``/``koiter`` filled from the amplitude equation of
+    its wrinkle, and None; or unchanged with the one-line reason it is not computed (no
+    wrinkle, or a case the expansion does not cover yet). The meaning gains what the
+    branch means for a user: folds that grow gradually, or a jump at onset."""
+    w = verdict.wrinkle
+    if w is None or w.m is None or w.n is None:
+        return verdict, "no wrinkle was found, so there is no amplitude equation"
+    try:
+        k = koiter_coefficient(tube, (int(w.m), int(w.n)), solve_for)
+    except (ParameterError, NoBifurcationFound, ConvergenceError) as exc:
+        return verdict, str(exc)
+    words = {
+        "supercritical": "supercritical: the folds grow gradually past onset",
+        "subcritical": "subcritical: the tube jumps to large folds at onset",
+    }
+    meaning = f"{verdict.meaning}; the wrinkle is {words[k.branch]}"
+    out = dataclasses.replace(verdict, branch=k.branch, koiter=k.coefficient, meaning=meaning)
+    return out, None

@@ -64,6 +64,15 @@ def configure_critical(parser: argparse.ArgumentParser) -> None:
         f" stderr, and exit status {INACCURATE_EXIT}",
     )
     parser.add_argument(
+        "--koiter",
+        action="store_true",
+        help="also solve the amplitude equation of the wrinkle at onset: supercritical"
+        " (folds grow gradually) or subcritical (a jump to large folds), with the Koiter"
+        " coefficient c_2 of control = c_cr + c_2 eps^2, eps the mode's peak radial"
+        " displacement over R_i (so far: prismatic modes (m, 0) of neo-Hookean tubes under a"
+        " growth control, no voltage or pressure; a few seconds)",
+    )
+    parser.add_argument(
         "--json",
         action="store_true",
         help="print one JSON object (solve_for, value, m, n, family, kind,"
@@ -112,6 +121,8 @@ def run_critical(args) -> int:
         crit, record = result.critical, result.as_dict()
         runners = record["runners_up"]
         warn(edge_warning(result))
+    if args.koiter:
+        record.update(_amplitude_equation(args, params, solve_for, crit))
     if args.certify and crit.kind in (Kind.BIFURCATION, Kind.SURFACE):
         # a scan: certify the choice of the mode as well
         record.update(_certify(params, crit, args, result if mode is None else None))
@@ -123,6 +134,18 @@ def run_critical(args) -> int:
     else:
         _print_text(record, runners, getattr(args, "scales", None))
     return _inaccurate_exit(crit, args)
+
+
+def _amplitude_equation(args, params, solve_for, crit) -> dict:
+    """The verdict's ``branch``, ``koiter`` and ``meaning`` from the amplitude equation, or
+    ``branch_note``: why it is not computed."""
+    from ..bifurcation.koiter import with_branch  # scipy's dense algebra: only when asked
+
+    with stage(args, "solving the amplitude equation at onset", tick=True):
+        verdict, note = with_branch(crit.verdict, params, solve_for)
+    if note is not None:
+        return {"branch_note": note}
+    return {"branch": verdict.branch, "koiter": verdict.koiter, "meaning": verdict.meaning}
 
 
 def _inaccurate_exit(crit, args) -> int:
@@ -323,6 +346,14 @@ def _rival_lines(rec: dict, name: str) -> list[str]:
         )
     if t is not None and rec["kind"] != Kind.THRESHOLD:
         lines.append(f"  axisymmetric state lost ({t['detail']}): {name} = {t['value']:.10g}")
+    if rec.get("koiter") is not None:
+        lines.append(
+            f"  amplitude equation: {rec['branch']}, Koiter coefficient c_2 ="
+            f" {rec['koiter']:.6g} (on the branch the control is its critical value"
+            " + c_2 eps^2, eps = peak u_r / R_i)"
+        )
+    elif rec.get("branch_note"):
+        lines.append(f"  amplitude equation not computed: {rec['branch_note']}")
     if rec.get("meaning"):
         lines.append(f"  verdict: {rec['meaning']}")
     return lines

@@ -1,0 +1,37 @@
+"""`critical --koiter`: the amplitude equation's verdict in the JSON record and the text,
+equal to the library's expansion, and a one-line reason where it is not covered."""
+
+import json
+from pathlib import Path
+
+from electrogrowth.bifurcation.koiter import tube_expansion
+from electrogrowth.cli.app import main
+from electrogrowth.model.layers import Layer, Tube
+
+MUCOSA = [
+    "--tube",
+    str(Path(__file__).parents[2] / "examples" / "mucosa.toml"),
+    "--solve-for",
+    "growth",
+    "--layer",
+    "1",
+]
+MUCOSA += ["--component", "theta", "--mode", "12", "0", "--koiter"]
+
+
+def test_json_has_the_branch_and_the_coefficient(capsys):
+    assert main(["critical", *MUCOSA, "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    tube = Tube((Layer(1.1, shear_modulus=10.0), Layer(2.0)), stretch=1.0)
+    c2 = tube_expansion(tube, 12, "growth[1].theta").coefficient
+    assert rec["branch"] == "supercritical"
+    assert abs(rec["koiter"] - c2) < 1e-9 * abs(c2)
+    assert "grow gradually" in rec["meaning"]
+
+
+def test_a_case_not_covered_says_why_in_one_line(capsys):
+    args = ["critical", "--solve-for", "growth", "--outer-radius", "1.4", "--voltage", "0.4"]
+    assert main([*args, "--mode", "0", "1", "--koiter", "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["branch"] is None and rec["koiter"] is None
+    assert "prismatic modes" in rec["branch_note"] and "\n" not in rec["branch_note"]
