@@ -281,8 +281,8 @@ def mode_map(
     >>> mm = mode_map(Tube.uniform(), "stretch", (("outer_radius", 1.2, 1.3),
     ...               ("length", 0.95, 1.05)), side="compression", points=2, certify=0,
     ...               options=ScanOptions((0, 1), (1, 1)))
-    >>> [(b.left, b.right) for b in mm.boundaries]
-    [((0, 1), (1, 1))]
+    >>> [(b.left, b.right) for b in mm.boundaries]  # scans widen past m = 1 where needed
+    [((1, 1), (0, 1)), ((2, 1), (1, 1))]
     """
     t0 = time.perf_counter()
     vx = check_vary(vary[0], tube, solve_for) if len(vary) == 2 else None
