@@ -45,7 +45,15 @@ def plot_design(result, values: dict, xs) -> object:
     if sw:
         ax.plot([s.x for s in sw], [s.value for s in sw], "ko", ms=3.5, label="switch")
     if math.isfinite(result.x):
-        ax.plot([result.x], [result.value], "r*", ms=9, label=f"design ({result.status})")
+        ax.plot(
+            [result.x],
+            [result.value],
+            "r*",
+            ms=9,
+            clip_on=False,
+            zorder=5,
+            label=f"design ({result.status})",
+        )
     ax.plot([], [], color="tab:green", alpha=0.3, lw=6, label=f"target {result.target} first")
     ax.ticklabel_format(useOffset=False)
     ax.set_xlabel(axis_label(seq.key))
@@ -91,7 +99,15 @@ def plot_map(result, *, pixels: int = 160) -> object:
         ax.plot([t.x for t in mmap.triple_points], [t.y for t in mmap.triple_points], "ko",
                 ms=4, label="triple point")  # fmt: skip
     if math.isfinite(result.x):
-        ax.plot([result.x], [result.y], "r*", ms=11, label=f"design ({result.status})")
+        ax.plot(
+            [result.x],
+            [result.y],
+            "r*",
+            ms=11,
+            clip_on=False,
+            zorder=5,
+            label=f"design ({result.status})",
+        )
     ax.plot([], [], "k-", lw=1.1, label="traced boundary")
     ax.fill([], [], facecolor="none", hatch="////", label=f"target {result.target} first")
     ax.set_xlim(x0, x1)
