@@ -171,3 +171,18 @@ def test_a_failed_crease_march_leaves_the_linear_result_standing(monkeypatch):
     assert v.kind == "bifurcation" and v.value == c.value and v.crease is None
     assert v.criterion.startswith("crease criterion not evaluated: the bracketed root")
     assert v.meaning.endswith("(crease not evaluated)")
+
+
+def test_a_crease_by_the_field_criterion_informs_but_never_comes_first():
+    """The field criterion is a bonded, unstretched film's (derivation-crease.md): for the
+    thick stretched tube under voltage it is reached at Vbar = 0.406, before the wrinkle at
+    0.4999; the wrinkle stays first and the meaning notes the field."""
+    w = Rival(Kind.BIFURCATION, 0.4999, m=30, n=0, family="prismatic")
+    c = Rival(Kind.CREASE, 0.406, 0.003, face="inner", trigger="field")
+    v = judge(None, wrinkle=w, crease=c, name="Vbar")
+    assert v.kind == "bifurcation" and v.value == 0.4999 and v.crease is c
+    assert "note: the inner face's field" in v.meaning and "next" not in v.meaning
+    alone = judge(None, crease=c, name="Vbar")
+    assert alone.kind == "none" and alone.crease is c and "0.406" in alone.meaning
+    axial = Rival(Kind.CREASE, 0.406, 0.003, face="inner", trigger="axial")
+    assert judge(None, wrinkle=w, crease=axial).kind == "crease"  # a mechanical one does

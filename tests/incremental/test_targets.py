@@ -307,7 +307,7 @@ def test_scan_finds_a_prismatic_critical_mode():
     assert c.value == pytest.approx(0.499891281791, abs=1e-11)
     assert [r.family for r in res.runners_up] == ["prismatic"] * 4
     assert {r.m for r in res.runners_up} == {28, 29, 31, 32}
-    rec = res.as_dict()  # its top is the verdict: the inner face's field reaches the crease
+    rec = res.as_dict()  # the field criterion's crease (at Vbar 0.406) informs, never first
     assert rec["wrinkle"]["family"] == rec["runners_up"][0]["family"] == "prismatic"
     one = critical_value(p, 30, 0, "voltage")  # the family's single-mode solver
     assert one.value == pytest.approx(c.value, abs=1e-13)

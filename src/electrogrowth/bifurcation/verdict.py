@@ -132,9 +132,13 @@ def judge(
     sense = -1.0 if side == "compression" else 1.0
     rivals = [r for r in (wrinkle, surface, threshold, crease) if r is not None]
     rivals = [r for r in rivals if math.isfinite(r.value)]
-    if not rivals:
-        return Verdict(Kind.NONE, math.nan, None, "no instability found in the searched range")
-    first = min(rivals, key=lambda r: sense * r.value)  # the first listed wins a tie
+    ranked = [r for r in rivals if not advisory(r)]
+    if not ranked:
+        note = "no instability found in the searched range"
+        if rivals:
+            note += f"; {_what(rivals[0])} at {name} = {rivals[0].value:.4g}"
+        return Verdict(Kind.NONE, math.nan, None, note, crease=crease, side=side)
+    first = min(ranked, key=lambda r: sense * r.value)  # the first listed wins a tie
     return Verdict(
         first.kind,
         first.value,
@@ -149,12 +153,22 @@ def judge(
     )
 
 
+def advisory(r: Rival) -> bool:
+    """A crease by the field criterion informs but never comes first: its value is that of
+    a bonded film that can neither thin nor stretch (derivation-crease.md), and the tube's
+    face does both under the voltage; a prestretched film creases at a markedly higher
+    field (Wang, Tahir, Zhang & Zhao, Soft Matter 7, 6583 (2011)), so it is an early bound."""
+    return r.kind == Kind.CREASE and r.trigger == "field"
+
+
 def _mode(r: Rival) -> str:
     return f"mode (m, n) = ({r.m}, {r.n})"
 
 
 def meaning(first: Rival, others: list[Rival], sense: float, name: str) -> str:
     """One line for a user: what they will see first and what it pre-empts."""
+    notes = "".join(f"; note: {_what(r)} at {name} = {r.value:.4g}" for r in others if advisory(r))
+    others = [r for r in others if not advisory(r)]
     nxt = min(others, key=lambda r: sense * r.value) if others else None
     after = "" if nxt is None else f"; next: {_what(nxt)} at {name} = {nxt.value:.4g}"
     close = ""
@@ -177,10 +191,15 @@ def meaning(first: Rival, others: list[Rival], sense: float, name: str) -> str:
             f"the axisymmetric state is lost ({first.detail or 'threshold'}) at {name} ="
             f" {first.value:.4g} before any wrinkle or crease"
         )
-    return head + after + close
+    return head + after + close + notes
 
 
 def _what(r: Rival) -> str:
+    if advisory(r):
+        return (
+            f"the {r.face} face's field reaches the electro-creasing field of a bonded,"
+            " unstretched film (an early bound for a crease)"
+        )
     if r.kind == Kind.CREASE:
         return f"a crease at the {r.face} face"
     if r.kind == Kind.BIFURCATION:

@@ -330,7 +330,7 @@ def _print_text(rec: dict, runners: list, scales=None) -> None:
 _TRIGGER = {
     "prismatic": "fold lines along the axis (hoop compression)",
     "axial": "rings (axial compression)",
-    "field": "driven by the electric field",
+    "field": "by the field criterion of a bonded, unstretched film (an early bound, not ranked)",
 }
 
 
