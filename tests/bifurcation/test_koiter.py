@@ -12,15 +12,14 @@ import numpy as np
 import pytest
 import scipy.optimize
 
-from electrogrowth.bifurcation.koiter import (
+from electrogrowth.bifurcation.koiter import koiter_coefficient, tube_expansion
+from electrogrowth.bifurcation.koiter_film import (
     MODE,
     FilmOnHalfSpace,
     critical_mode,
     critical_stretch,
     expansion,
-    koiter_coefficient,
     sign_change_ratio,
-    tube_expansion,
 )
 from electrogrowth.errors import NoBifurcationFound, ParameterError
 from electrogrowth.incremental.plane_forms import Forms, Segment, Space
@@ -369,7 +368,7 @@ def test_tube_branch_curvature_from_a_direct_nonlinear_solve():
     (harmonics 0-3, the control unknown, u_r of harmonic 1 prescribed at the mode's
     largest node): the same g_2 to 1e-6 (measured 8.8789471395 against 8.8789470543)."""
     from electrogrowth.basestate.tube import solve_base_state
-    from electrogrowth.bifurcation.koiter import _nearest_zero
+    from electrogrowth.bifurcation.koiter_film import _nearest_zero
     from electrogrowth.incremental.polar_forms import PolarForms, rings
 
     tube, m, N = _film_tube(0.1), 12, 16
