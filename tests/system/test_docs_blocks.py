@@ -83,6 +83,8 @@ QUOTED = {
     "g_cr = 1.26611156226": "c.value",
     "g_theta,cr = 2.0404425747": 'critical_value(tube, 12, 1, "growth[1].theta").value',
     "True: the same tube as a file": 'load_tube("examples/bilayer.toml") == tube',
+    "crease at lambda_z = 0.557861": "v.value if v.kind == 'crease' else None",
+    "c_2 = 6.18497": "k.coefficient",
 }
 QUOTE = re.compile(r"#[^\n]*?=\s*-?\d+\.\d{4,}|#\s*(?:True|False)\b")
 
