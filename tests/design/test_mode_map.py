@@ -17,7 +17,7 @@ from electrogrowth import ScanOptions, Tube, critical_value
 from electrogrowth.bifurcation.scan import scan_modes
 from electrogrowth.continuation.contour import CLOSED, EDGE, trace_contour
 from electrogrowth.design.mode_map import mode_map
-from electrogrowth.errors import ParameterError
+from electrogrowth.errors import ParameterError, UsageError
 
 from .wilkes import critical_stretch
 
@@ -213,9 +213,12 @@ def test_cli_design_two_variables_bad_input(capsys):
     more = ["--vary", "outer_radius", "1.2", "1.3", "--vary", "length", "1", "2"]
     assert main([*args, *more, "--vary", "voltage", "0", "1"]) == 2
     assert main([*args, *more, "--points", "500"]) == 2
+    assert main([*args, *more, "--workers", "0"]) == 2
+    assert main([*args, "--vary", "length", "1", "2", "--workers", "2"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 3 and all(e.startswith("electrogrowth: error:") for e in err)
+    assert len(err) == 5 and all(e.startswith("electrogrowth: error:") for e in err)
     assert "given twice" in err[0] and "once or twice" in err[1] and "at most 101" in err[2]
+    assert "--workers 0 is out of range" in err[3] and "give --vary twice" in err[4]
 
 
 @pytest.mark.slow
@@ -245,3 +248,24 @@ def test_boundary_to_the_short_wave_limit():
 def test_bad_options(keyword, words):
     with pytest.raises(ParameterError, match=words):
         mode_map(TUBE, "stretch", VARY, options=NEAR, **keyword)
+
+
+def test_a_pool_draws_the_same_map(small_map):
+    """Two worker processes scan the grid and certify the boundaries: the same map, to the
+    last bit (every task is a pure function of its inputs), the solves counted once."""
+    pooled = mode_map(
+        TUBE, "stretch", VARY, side="compression", points=2, options=NEAR, certify=2, workers=2
+    )
+    assert pooled.labels == small_map.labels
+    np.testing.assert_array_equal(pooled.values, small_map.values)
+    assert len(pooled.boundaries) == len(small_map.boundaries)
+    for a, b in zip(pooled.boundaries, small_map.boundaries, strict=True):
+        assert (a.left, a.right, a.x, a.y, a.ends) == (b.left, b.right, b.x, b.y, b.ends)
+        assert repr(a.certificates) == repr(b.certificates)  # NaN gaps compare by repr
+    assert pooled.solves == small_map.solves
+
+
+@pytest.mark.parametrize("workers", [0, -1, 2.0, True, 10_000])
+def test_bad_workers(workers):
+    with pytest.raises(UsageError, match="workers"):
+        mode_map(TUBE, "stretch", VARY, options=NEAR, workers=workers)

@@ -20,8 +20,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import ParameterError
+from ..errors import ParameterError, UsageError
 from ..model.layers import KEYS_TEXT
+from ..pool import check_workers, usable_cores
 from .options import (
     add_control_options,
     add_mode_range_options,
@@ -82,6 +83,21 @@ def configure_design(parser: argparse.ArgumentParser) -> None:
         metavar="DIR",
         help="directory for the CSV of the mode sequence and the PNG (none by default)",
     )
+    where = parser.add_argument_group(
+        "where a map's scans run (two variables: the grid's scans and the certificates)"
+    ).add_mutually_exclusive_group()
+    where.add_argument(
+        "--workers",
+        type=int,
+        metavar="N",
+        help="local worker processes (default: the usable cores; 1 computes in this"
+        " process); the map is the same for any N",
+    )
+    where.add_argument(
+        "--scheduler",
+        metavar="ADDRESS",
+        help="send them to an existing dask.distributed cluster, e.g. tcp://host:8786",
+    )
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     add_quiet_option(parser)
 
@@ -126,7 +142,14 @@ def run_design(args) -> int:
             raise ParameterError(
                 f"--points {args.points} is too many for a map; at most {MAP_NODES} a variable"
             )
+        if args.workers is not None:
+            check_workers(args.workers)
         return _run_map(args, tube, solve_for, varies, target)
+    if args.workers is not None or args.scheduler is not None:
+        raise UsageError(
+            "--workers and --scheduler run a map's scans: give --vary twice (one variable"
+            " is one sequence of scans, computed here)"
+        )
     vary = varies[0]
     tube = tube.at(vary[0], vary[1])
     result = prescribe(
@@ -214,6 +237,8 @@ def _run_map(args, tube, solve_for, varies, target) -> int:
     mmap = mode_map(
         tube, solve_for, tuple(varies), side=args.side, options=options,
         points=5 if args.points is None else args.points,
+        workers=usable_cores() if args.workers is None else args.workers,
+        scheduler=args.scheduler,
         progress=say if not args.json and enabled(args) else None,
     )  # fmt: skip
     result = prescribe_map(tube, target, mmap, options=options)

@@ -164,7 +164,7 @@ def run_gallery(args) -> int:
         raise ParameterError(
             f"gallery example {unknown[0]!r} is unknown; choose from {', '.join(GALLERY)}"
         )
-    from ..sweep.run import check_workers  # start-up speed: numba, --gallery only
+    from ..pool import check_workers
 
     check_workers(args.workers)
     out = args.out

@@ -10,8 +10,9 @@ from pathlib import Path
 
 from ..errors import ElectrogrowthError, UsageError
 from ..interrupts import Interrupted, interrupt_of
+from ..pool import check_workers
 from ..sweep.file import load_config
-from ..sweep.run import check_workers, compute_sweep
+from ..sweep.run import compute_sweep
 from .progress import enabled
 
 EXTRA = "pip install 'electrogrowth[sweep]'"

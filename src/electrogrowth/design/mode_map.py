@@ -20,15 +20,14 @@ import time
 import numpy as np
 
 from ..bifurcation.problem import as_problem
-from ..bifurcation.scan import ScanOptions, scan_modes
+from ..bifurcation.scan import ScanOptions
 from ..continuation.contour import CONTOUR_STEPS
-from ..errors import ElectrogrowthError, ParameterError
-from ..outcomes import Kind
-from .map_record import Boundary, Certificate, ModeMap, TriplePoint, label_json
+from ..errors import ParameterError
+from ..pool import check_workers, run_tasks
+from .map_checks import certificate, sampled, scan_label, scan_node
+from .map_record import Boundary, ModeMap, TriplePoint, label_json
 from .map_trace import (
     FAILED,
-    SURFACE,
-    THRESHOLD,
     TRIPLE,
     Values,
     edge_root,
@@ -38,17 +37,9 @@ from .map_trace import (
 )
 from .sequence import check_vary
 
-CERTIFIED = 1e-8  # the two (three) critical values of a certified point agree to this
 MIN_NODES, MAX_NODES = 2, 101
 SPLITS = 8  # an edge split at a third pattern found by a scan, at most this deep
 ROUNDS = 3  # boundaries traced outwards from new triple points, at most this often
-
-
-def _label(res) -> object:
-    c = res.critical
-    if c.kind == Kind.BIFURCATION:
-        return (int(c.m), int(c.n))
-    return {Kind.SURFACE: SURFACE, Kind.THRESHOLD: THRESHOLD}.get(c.kind, FAILED)
 
 
 def check_points(points) -> tuple[int, int]:
@@ -104,14 +95,7 @@ class _Mapper:
         return self.found
 
     def scan_label(self, u):
-        try:
-            res = scan_modes(
-                self.values.tube_at(u), self.values.solve_for, side=self.values.side,
-                options=self.options, rtol=self.values.rtol,
-            )  # fmt: skip
-        except ElectrogrowthError:
-            return FAILED, math.nan
-        return _label(res), res.critical.value
+        return scan_label(self.values, self.options, u)
 
     def covered(self, p, q, a, b) -> bool:
         return any(
@@ -203,29 +187,10 @@ class _Mapper:
         )
 
 
-def _certify(mapper: _Mapper, curve, count: int) -> tuple[Certificate, ...]:
-    values = mapper.values
-    p, q, pts = curve["left"], curve["right"], curve["u"]
-    out = []
-    for i in sorted(set(np.linspace(0, len(pts) - 1, count).round().astype(int))) if count else []:
-        u = pts[i]
-        gap = math.nan
-        v = None
-        if valued(p) and valued(q):
-            a, b = values.value(p, u, hinted=False), values.value(q, u, hinted=False)
-            if a is not None and b is not None:
-                gap, v = abs(a - b), a
-        else:
-            v = values.value(p if valued(p) else q, u, hinted=False)
-        first, w = mapper.scan_label(u)
-        ahead = (
-            values.sense * (w - v) if v is not None and math.isfinite(w) else math.nan
-        )  # < 0: the scan found something earlier
-        tol = CERTIFIED * max(1.0, abs(v)) if v is not None else CERTIFIED
-        ok = (math.isnan(gap) or gap <= tol) and (first in (p, q) or ahead >= -tol)
-        x, y = values.xy(u)
-        out.append(Certificate(x, y, gap, first, ahead, bool(ok)))
-    return tuple(out)
+def _run(fn, tasks, pool, name):
+    workers, scheduler = pool
+    lost = "; the map is not finished: run it again (fewer workers, or workers=1)"
+    return run_tasks(fn, tasks, workers=workers, scheduler=scheduler, name=name, lost=lost)
 
 
 def mode_map(
@@ -239,6 +204,8 @@ def mode_map(
     certify: int = 3,
     rtol: float = 1e-12,
     max_step: float = CONTOUR_STEPS.largest,
+    workers: int = 1,
+    scheduler: str | None = None,
     progress=None,
 ) -> ModeMap:
     """The first pattern over two design variables, its boundaries traced as curves.
@@ -265,6 +232,13 @@ def mode_map(
         The longest step along a boundary, as a fraction of the box's sides (default 0.08,
         from 0.01 to 0.5): every traced point is a root whatever the step; longer steps
         give fewer points (a coarser polyline between them) for boundaries that barely bend.
+    workers : int
+        Processes that scan the grid's nodes and certify the boundaries' points (default 1:
+        this process). The tracing itself runs here: each step needs the last. The map is
+        the same for any number of workers.
+    scheduler : str, optional
+        Address of a dask.distributed scheduler (``tcp://host:8786``) to send those scans
+        to instead (``workers`` is then ignored; the ``sweep`` extra).
     progress : callable str -> None, optional
         Called with a line per stage (the grid's scans, each traced boundary).
 
@@ -301,6 +275,9 @@ def mode_map(
         or not (0.01 <= max_step <= 0.5)
     ):
         raise ParameterError(f"max_step = {max_step!r} is out of range; valid range: 0.01 to 0.5")
+    check_workers(workers, "workers =")
+    pool = (workers, scheduler)
+    in_process = workers == 1 and scheduler is None
     policy = dataclasses.replace(
         CONTOUR_STEPS, largest=float(max_step), first=min(CONTOUR_STEPS.first, max_step)
     )
@@ -314,11 +291,13 @@ def mode_map(
     labels = np.empty((nx, ny), object)
     crit = np.full((nx, ny), math.nan)
     mapper = _Mapper(values, grid_u, labels, problem.options, progress, policy)
-    for i, j in itertools.product(range(nx), range(ny)):
-        mapper.say(f"scan {i * ny + j + 1} of {nx * ny}")
-        labels[i, j], crit[i, j] = mapper.scan_label(grid_u[i, j])
-        if valued(labels[i, j]) and math.isfinite(crit[i, j]):
-            values.cache[(labels[i, j], *map(float, grid_u[i, j]), True)] = crit[i, j]
+    nodes = list(itertools.product(range(nx), range(ny)))
+    tasks = [(values, problem.options, grid_u[ij]) for ij in nodes]
+    for done, (k, (label, value)) in enumerate(_run(scan_node, tasks, pool, "scan"), 1):
+        mapper.say(f"scan {done} of {nx * ny}")
+        labels[nodes[k]], crit[nodes[k]] = label, value
+        if valued(label) and math.isfinite(value):
+            values.cache[(label, *map(float, grid_u[nodes[k]]), True)] = value
     mapper.found = {lab for lab in labels.ravel() if lab != FAILED}
     edges = [((i, j), (i + 1, j)) for i in range(nx - 1) for j in range(ny)]
     edges += [((i, j), (i, j + 1)) for i in range(nx) for j in range(ny - 1)]
@@ -328,16 +307,25 @@ def mode_map(
             continue
         mapper.edge(p, q, grid_u[a], grid_u[b])
     mapper.from_triples()
+    where = [(k, i) for k, c in enumerate(mapper.curves) for i in sampled(c, certify)]
+    curves = mapper.curves
+    tasks = [(values, problem.options, curves[k]["left"], curves[k]["right"], curves[k]["u"][i])
+             for k, i in where]  # fmt: skip
+    certificates: list[list] = [[] for _ in mapper.curves]
+    for done, (t, (cert, solves)) in enumerate(_run(certificate, tasks, pool, "certify"), 1):
+        mapper.say(f"certifying point {done} of {len(tasks)}")
+        certificates[where[t][0]].append((where[t][1], cert))
+        if not in_process:  # a worker's solves, on a copy of values
+            values.solves += solves
     boundaries = []
     for k, c in enumerate(mapper.curves):
-        mapper.say(f"certifying boundary {k + 1} of {len(mapper.curves)}")
         xy = np.array([values.xy(u) for u in c["u"]])
         common = [values.value(c["left"] if valued(c["left"]) else c["right"], u) for u in c["u"]]
         boundaries.append(
             Boundary(
                 c["left"], c["right"], tuple(xy[:, 0]), tuple(xy[:, 1]),
                 tuple(math.nan if v is None else v for v in common), c["ends"],
-                _certify(mapper, c, certify),
+                tuple(cert for _, cert in sorted(certificates[k], key=lambda ic: ic[0])),
             )
         )  # fmt: skip
     triples = []
