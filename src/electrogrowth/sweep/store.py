@@ -261,7 +261,6 @@ class SweepStore:
             )
         }
 
-
     def verdicts(self) -> dict:
         """What comes first at the computed points ("first": verdict kind -> count) and, for
         a sweep asking for the amplitude equation, the branches ("branch": supercritical,
