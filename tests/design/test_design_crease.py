@@ -99,3 +99,25 @@ def test_text_says_it(creased, mixed):
     text = "\n".join(summary(mixed))
     assert "best design" in text and "may not be observed" not in text
     assert "branch not computed: mode = (0, 1)" in text
+
+
+def test_map_crease_first_everywhere():
+    """Two variables, the same tubes: every raster point of the target's region creases
+    first; the nearest design's margin is the gap to the closed-form crease, and the
+    verdict there is the crease."""
+    from electrogrowth.design.mode_map import mode_map
+    from electrogrowth.design.prescribe_map import prescribe_map
+
+    near = ScanOptions((0, 1), (1, 1), extend=False)
+    vary = (("outer_radius", 1.75, 2.0), ("length", 0.95, 1.05))
+    tube = Tube.uniform()
+    mm = mode_map(tube, "stretch", vary, side="compression", points=2, options=near, certify=2)
+    d = prescribe_map(tube, (0, 1), mm, options=near)
+    assert d.status == CREASE_FIRST and d.limited_by == "crease"
+    assert d.region_crease["crease_first"] == "all"
+    at = tube.at("outer_radius", d.x).at("length", d.y)
+    v = critical_value(at, 0, 1, "stretch", side="compression").value
+    assert d.crease_value == pytest.approx(CREASE, rel=1e-12)
+    assert d.margin == pytest.approx(-(CREASE - v) / v, rel=1e-8)
+    best = d.as_dict()["best"]
+    assert best["verdict"]["kind"] == "crease" and best["limited_by"] == "crease"

@@ -38,8 +38,8 @@ edge of the ranges; otherwise, at the ends and every CHECK_EVERY points the poin
 full scan. Switches are located and checked by scans as
 before, so the curve equals the curve of full scans. Last, at every row, where a free face
 creases along the same control and whether that comes before the wrinkle
-(bifurcation/curve_crease.py: the crease criterion's march, cheap next to a scan). The records (grid point, switch,
-curve and its CSV) are in bifurcation/curve_record.py.
+(bifurcation/curve_crease.py: the crease criterion's march, cheap next to a scan). The
+records (grid point, switch, curve and its CSV) are in bifurcation/curve_record.py.
 """
 
 from __future__ import annotations

@@ -8,8 +8,8 @@ every other kind that was found (``wrinkle``, ``surface``, ``crease``, ``thresho
 :class:`Rival` or None), and ``meaning``, one line for a user.
 
 ``branch`` ("supercritical" / "subcritical"), ``koiter`` (the coefficient of the
-amplitude equation) and ``koiter_error`` (its error estimate) are a slot for the weakly nonlinear expansion of the wrinkle: None
-until it is computed.
+amplitude equation) and ``koiter_error`` (its error estimate) are a slot for the weakly
+nonlinear expansion of the wrinkle: None until it is computed.
 """
 
 from __future__ import annotations

@@ -102,7 +102,8 @@ def configure_design(parser: argparse.ArgumentParser) -> None:
         "--koiter",
         action="store_true",
         help="also solve the amplitude equation of the chosen design's wrinkle: super- or"
-        " subcritical (as critical --koiter; one variable only; a few seconds)",
+        " subcritical (as critical --koiter; covered: prismatic modes of neo-Hookean tubes"
+        " in a growth control; a few seconds)",
     )
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     add_quiet_option(parser)
@@ -279,7 +280,7 @@ def _run_map(args, tube, solve_for, varies, target) -> int:
         scheduler=args.scheduler,
         progress=say if not args.json and enabled(args) else None,
     )  # fmt: skip
-    result = prescribe_map(tube, target, mmap, options=options)
+    result = prescribe_map(tube, target, mmap, options=options, koiter=args.koiter)
     record = result.as_dict()
     if args.out is not None:
         record["files"] = [str(p) for p in _write_map(result, args.out)]
@@ -352,12 +353,22 @@ def map_summary(result) -> list[str]:
     if result.status == "not_reached":
         lines.append("  no target mode among the scanned modes: widen --m-max / --n-max")
         return lines
-    best = "best design" if result.status == "found" else "never first; closest design"
+    rc = result.region_crease
+    if rc and rc["crease_first"] != "none":
+        first, points = rc["crease_first_points"]
+        lines.append(
+            f"  a face creases before the target at {first} of the {points} raster points"
+            " in its region"
+        )
+    best = BEST.get(result.status, "never first; closest design")
+    crease = result.limited_by == "crease"
     lines.append(
         f"  {best}: {kx} = {result.x:.10g}, {ky} = {result.y:.10g}, mode {result.mode} at"
         f" {mmap.solve_for}_cr = {result.value:.10g}, margin {result.margin:.4g} to"
-        f" {_name(result.next_mode)} ({result.next_value:.10g})"
+        f" {'the crease' if crease else _name(result.next_mode)}"
+        f" ({result.crease_value if crease else result.next_value:.10g})"
     )
+    lines += _verdict_lines(result.verdict)
     for k, d in result.to_boundary.items():
         if d is not None:
             lines.append(f"  distance to the region's boundary along {k}: {d:.6g}")

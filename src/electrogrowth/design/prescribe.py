@@ -124,7 +124,7 @@ class Design:
 class _Margins:
     """Critical values of single modes at designs x, cached, and the margin M(x)."""
 
-    def __init__(self, tube, solve_for, key, side):
+    def __init__(self, tube, solve_for, key, side) -> None:
         self.tube, self.solve_for, self.key, self.side = tube, solve_for, key, side
         self.sense = -1.0 if side == "compression" else 1.0
         self.cache: dict = {}

@@ -58,11 +58,12 @@ class PointResult(Outcome):
     comes first once a crease of a free face competes: ``verdict`` (its kind),
     ``verdict_value``, ``verdict_face``, the runner-ups ``wrinkle_value``,
     ``crease_value`` (``crease_face``, ``crease_trigger``, ``crease_error``: the
-    criterion's accuracy), ``threshold_value``, ``meaning``, and, where the spec asks for the amplitude
-    equation (``koiter``), ``branch`` ("supercritical" / "subcritical"; "" not computed),
-    ``koiter`` and ``koiter_error`` (NaN: not computed) and ``branch_note``: why there is
-    no branch (the case is not covered, or "amplitude equation failed: ..." where its
-    solve raised: the point keeps its status, the linear result stands). An :class:`~electrogrowth.outcomes.Outcome`:
+    criterion's accuracy), ``threshold_value``, ``meaning``, and, where the spec asks for
+    the amplitude equation (``koiter``), ``branch`` ("supercritical" / "subcritical"; ""
+    not computed), ``koiter`` and ``koiter_error`` (NaN: not computed) and
+    ``branch_note``: why there is no branch (the case is not covered, or "amplitude
+    equation failed: ..." where its solve raised: the point keeps its status, the linear
+    result stands). An :class:`~electrogrowth.outcomes.Outcome`:
     ``unwrap()`` raises the failure, ``outcome_dict()`` gives the shared fields.
     """
 
