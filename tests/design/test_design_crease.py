@@ -1,6 +1,6 @@
 """A crease before the wrinkle in a design: the paper's ungrown tubes, L = 1, in axial
 compression, target (0, 1) along Rbar_o. Their faces crease at the closed form lambda_z =
-2.4^(-2/3) (docs/derivation-crease.md), before the wrinkle (0, 1) from Rbar_o ~ 1.69 on:
+2.4^(-2/3) (docs/derivation-crease.md), before the wrinkle (0, 1) from Rbar_o = 1.6808 on:
 a range there has no design whose pattern is the wrinkle, and the result says so
 (status crease_first, M < 0 the gap to the crease) where the margin of the modes alone
 would report a design found with M > 0."""
