@@ -247,6 +247,11 @@ def verdict_variables(v, solve_for: str) -> dict:
             np.nan if v.koiter is None else float(v.koiter),
             text("Koiter coefficient (NaN: not computed)"),
         ),
+        "koiter_error": (
+            (),
+            np.nan if v.koiter_error is None else float(v.koiter_error),
+            text("the Koiter coefficient's change from a coarser mesh (NaN: not computed)"),
+        ),
     }
 
 
