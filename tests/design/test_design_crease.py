@@ -58,7 +58,16 @@ def test_crease_first_everywhere_is_not_a_design_found(creased):
     assert d.verdict["kind"] == "crease" and d.verdict["crease"]["face"] in ("inner", "outer")
     assert "may not be observed" in observable(d.verdict)
     assert all(r["crease_first"] == "all" for r in d.as_dict()["region"])
-    assert d.margin_sensitivity == {}  # the crease's are not computed
+    # the crease's sensitivities, by implicit differentiation of its onset condition: the
+    # crease is at lambda_z = g 2.4^(-2/3), whatever the radius or the length
+    cs = d.crease_sensitivity
+    assert cs["growth"] == pytest.approx(CREASE, rel=1e-9)
+    assert abs(cs["outer_radius"]) < 1e-9 and abs(cs["length"]) < 1e-9
+    # M = 1 - v_C / v: isotropic growth scales both values by g, so dM/dg = 0; along the
+    # radius only the wrinkle moves, dM/dR = v_C / v^2 dv/dR
+    dm = d.margin_sensitivity
+    assert abs(dm["growth"]) < 1e-8
+    assert dm["outer_radius"] == pytest.approx(CREASE / v**2 * d.sensitivity["outer_radius"])
 
 
 def test_a_mixed_range_keeps_the_wrinkle_first_design(mixed):

@@ -18,11 +18,13 @@ from __future__ import annotations
 
 import math
 
-from ..bifurcation.crease import crease_onset
+from ..basestate.tube import solve_base_state
+from ..bifurcation.crease import crease_margin, crease_onset, face_creases
 from ..bifurcation.scan import ScanOptions, scan_modes
 from ..bifurcation.verdict import advisory, crease_rival
-from ..errors import ElectrogrowthError
+from ..errors import ConvergenceError, ElectrogrowthError
 from ..interrupts import reraise_interrupt
+from .sensitivity import STEP, _derivative, key_value
 
 CREASE_FIRST = "crease_first"  # first among the wrinkles in its region, but a crease comes first
 
@@ -39,7 +41,7 @@ def crease_value(tube, solve_for: str, side, sense: float) -> float:
     return rival.value
 
 
-def crease_margin(v_target: float, v_crease: float, sense: float) -> float:
+def gap_to_crease(v_target: float, v_crease: float, sense: float) -> float:
     """M_crease (module docstring): inf where no crease is reached, -inf where the target
     is never reached."""
     if not math.isfinite(v_target):
@@ -47,6 +49,54 @@ def crease_margin(v_target: float, v_crease: float, sense: float) -> float:
     if not math.isfinite(v_crease):
         return math.inf
     return sense * (v_crease - v_target) / abs(v_target)
+
+
+def crease_sensitivities(tube, solve_for: str, value: float, keys, *, step: float = STEP):
+    """d(v_C)/dp of the crease value v_C for every key p: by implicit differentiation of
+    the onset condition h(v_C, p) = 0, h the drive of the creasing face's trigger minus 1
+    on the base state (crease.py), dv_C/dp = -h_p / h_v, both partials by the
+    Richardson-extrapolated differences of design/sensitivity.py (base states only, no
+    march). Raises ConvergenceError where h_v vanishes."""
+    onset = crease_margin_at(tube, solve_for, value)
+    face, trigger = onset.face, onset.trigger
+
+    def h(t, v: float) -> float:
+        state = solve_base_state(t.at(solve_for, v), rtol=1e-12)
+        return next(f for f in face_creases(state) if f.face == face).drives[trigger] - 1.0
+
+    h_v = _derivative(lambda v: h(tube, v), value, step * max(1.0, abs(value)))
+    if not math.isfinite(h_v) or h_v == 0.0:
+        raise ConvergenceError(f"the crease drive does not change with {solve_for} at {value:g}")
+    out = {}
+    for key in keys:
+        p = key_value(tube, key)
+        h_p = _derivative(lambda q, key=key: h(tube.at(key, q), value), p, step * max(1.0, abs(p)))
+        out[key] = -h_p / h_v
+    return out
+
+
+def crease_sensitivity(tube, solve_for: str, value: float, keys) -> dict:
+    """:func:`crease_sensitivities` where the crease is reached (value finite), else {}
+    (also where the onset condition does not determine it: h_v = 0)."""
+    if not math.isfinite(value):
+        return {}
+    try:
+        return crease_sensitivities(tube, solve_for, value, keys)
+    except ElectrogrowthError:
+        return {}
+
+
+def margin_sensitivity(sense: float, v: float, dv: dict, w: float, dw: dict) -> dict:
+    """dM/dp of M = s (w - v) / |v| = s sgn(v) (w / v - 1) from the sensitivities dv of
+    the target's value v and dw of the competitor's w (a mode or the crease):
+    dM/dp = s sgn(v) (v dw/dp - w dv/dp) / v^2."""
+    scale = sense * math.copysign(1.0, v) / v**2
+    return {p: scale * (v * dw[p] - w * dv[p]) for p in dv if p in dw}
+
+
+def crease_margin_at(tube, solve_for: str, value: float):
+    """The face nearest its crease onset at ``solve_for`` = value (a FaceCrease)."""
+    return crease_margin(solve_base_state(tube.at(solve_for, value), rtol=1e-12))
 
 
 def design_verdict(tube, solve_for: str, side, options: ScanOptions, *, koiter: bool) -> dict:

@@ -27,7 +27,8 @@ from ..bifurcation.critical import critical_value
 from ..bifurcation.scan import ScanOptions, scan_modes
 from ..errors import ElectrogrowthError
 from ..outcomes import Kind
-from .onset import CREASE_FIRST, crease_margin, crease_value, design_verdict, region_creases
+from . import onset
+from .onset import CREASE_FIRST, gap_to_crease
 from .sensitivity import sensitivities
 from .sequence import Interval, ModeSequence, check_vary, mode_sequence
 from .targets import Target, check_target
@@ -52,8 +53,9 @@ class Design:
     ``next_mode`` beats the target there. CREASE_FIRST: the target is first among the
     wrinkles in its region, but a free face creases before it at every design there; x is
     the design nearest to wrinkling first (M < 0, ``limited_by`` "crease").
-    ``crease_value`` is where a face creases at x (NaN: none), ``crease_margin`` the
-    relative gap to it, ``limited_by`` which competitor sets M ("mode" or "crease"),
+    ``crease_value`` is where a face creases at x (NaN: none; ``crease_sensitivity`` its
+    d/dp), ``crease_margin`` the relative gap to it (``margin_sensitivity`` is that of the
+    gap that sets M), ``limited_by`` which competitor sets M ("mode" or "crease"),
     ``verdict`` the verdict of a scan at x (design/onset.py :func:`design_verdict`) and
     ``region_crease`` how many of the curve's points in each interval of the region
     crease first. NOT_REACHED: no target mode was found among the
@@ -83,6 +85,7 @@ class Design:
     limited_by: str = ""
     verdict: dict = dataclasses.field(default_factory=dict)
     region_crease: tuple = ()
+    crease_sensitivity: dict = dataclasses.field(default_factory=dict)
 
     def as_dict(self) -> dict:
         num = lambda v: v if v is not None and math.isfinite(v) else None  # noqa: E731
@@ -114,6 +117,7 @@ class Design:
                 "value": {p: num(d) for p, d in self.sensitivity.items()},
                 "next_value": {p: num(d) for p, d in self.next_sensitivity.items()},
                 "margin": {p: num(d) for p, d in self.margin_sensitivity.items()},
+                "crease_value": {p: num(d) for p, d in self.crease_sensitivity.items()},
             },
         }
 
@@ -134,7 +138,7 @@ class _Margins:
         """Where a free face creases at x (sense * inf: none; design/onset.py)."""
         if x not in self.creases:
             at = self.tube.at(self.key, x)
-            self.creases[x] = crease_value(at, self.solve_for, self.side, self.sense)
+            self.creases[x] = onset.crease_value(at, self.solve_for, self.side, self.sense)
         return self.creases[x]
 
     def value(self, mode, x: float) -> float:
@@ -156,7 +160,7 @@ class _Margins:
 
     def best_margin(self, mode, others, x: float) -> tuple[float, tuple | None]:
         """(M, the next mode) at x over the competitors ``others`` and the crease."""
-        by_crease = crease_margin(self.value(mode, x), self.crease(x), self.sense)
+        by_crease = gap_to_crease(self.value(mode, x), self.crease(x), self.sense)
         if not others:
             return by_crease, None
         nxt = min(others, key=lambda o: self.sense * self.value(o, x))
@@ -243,16 +247,18 @@ def prescribe(
     sens = sensitivities(at, mode, sequence.solve_for, v, rtol=rtol)
     sens_next, sens_margin = {}, {}
     v_crease = margins.crease(x)
-    m_crease = crease_margin(v, v_crease, margins.sense)
+    m_crease = gap_to_crease(v, v_crease, margins.sense)
     by_modes = margins.margin(mode, x, v_next) if nxt is not None else math.inf
     limited = "crease" if m_crease < by_modes else "mode"
     if status == FOUND and m_x < 0:  # a crease before the target everywhere in its region
         status = CREASE_FIRST
     if nxt is not None and math.isfinite(v_next):
         sens_next = sensitivities(at, nxt, sequence.solve_for, v_next, rtol=rtol)
-        scale = margins.sense * math.copysign(1.0, v) / v**2  # dM = s sgn(v)(v dv_N - v_N dv)/v^2
-        if limited == "mode":  # the crease's sensitivities are not computed
-            sens_margin = {p: scale * (v * sens_next[p] - v_next * sens[p]) for p in sens}
+    sens_crease = onset.crease_sensitivity(at, sequence.solve_for, v_crease, tuple(sens))
+    if limited == "crease":  # M is the gap to the crease
+        sens_margin = onset.margin_sensitivity(margins.sense, v, sens, v_crease, sens_crease)
+    elif sens_next:
+        sens_margin = onset.margin_sensitivity(margins.sense, v, sens, v_next, sens_next)
     span = _span(region, x)
     ends = (
         []
@@ -279,8 +285,9 @@ def prescribe(
         v_crease if math.isfinite(v_crease) else math.nan,
         m_crease,
         limited,
-        design_verdict(at, sequence.solve_for, side, scan_opts, koiter=koiter),
-        tuple(region_creases(region, sequence.curve)),
+        onset.design_verdict(at, sequence.solve_for, side, scan_opts, koiter=koiter),
+        tuple(onset.region_creases(region, sequence.curve)),
+        sens_crease,
     )
 
 

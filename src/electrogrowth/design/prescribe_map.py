@@ -28,7 +28,14 @@ from ..errors import ElectrogrowthError
 from ..outcomes import Kind
 from .map_record import ModeMap, label_json
 from .map_trace import Values, valued
-from .onset import CREASE_FIRST, crease_margin, crease_value, design_verdict
+from .onset import (
+    CREASE_FIRST,
+    crease_sensitivity,
+    crease_value,
+    design_verdict,
+    gap_to_crease,
+    margin_sensitivity,
+)
 from .prescribe import FOUND, NOT_FIRST, NOT_REACHED, REFINE_ROUNDS
 from .sensitivity import sensitivities
 from .targets import Target, check_target
@@ -70,6 +77,7 @@ class MapDesign:
     limited_by: str = ""
     verdict: dict = dataclasses.field(default_factory=dict)
     region_crease: dict = dataclasses.field(default_factory=dict)
+    crease_sensitivity: dict = dataclasses.field(default_factory=dict)
 
     def as_dict(self) -> dict:
         num = lambda v: v if v is not None and math.isfinite(v) else None  # noqa: E731
@@ -100,6 +108,7 @@ class MapDesign:
                 "value": {p: num(d) for p, d in self.sensitivity.items()},
                 "next_value": {p: num(d) for p, d in self.next_sensitivity.items()},
                 "margin": {p: num(d) for p, d in self.margin_sensitivity.items()},
+                "crease_value": {p: num(d) for p, d in self.crease_sensitivity.items()},
             },
         }
 
@@ -143,7 +152,7 @@ class _Margins:
         v = self.value(mode, u)
         if not math.isfinite(v):
             return -math.inf, None
-        by_crease = crease_margin(v, self.crease(u), self.sense)
+        by_crease = gap_to_crease(v, self.crease(u), self.sense)
         if not others:
             return by_crease, None
         nxt = min(others, key=lambda o: self.sense * self.value(o, u))
@@ -297,16 +306,18 @@ def prescribe_map(
     sens = sensitivities(at, mode, mmap.solve_for, v, rtol=rtol)
     sens_next, sens_margin = {}, {}
     v_crease = margins.crease(u)
-    m_crease = crease_margin(v, v_crease, margins.sense)
+    m_crease = gap_to_crease(v, v_crease, margins.sense)
     by_modes = margins.sense * (v_next - v) / abs(v) if nxt is not None else math.inf
     limited = "crease" if m_crease < by_modes else "mode"
     if status == FOUND and m_u < 0:  # a crease before the target everywhere in its region
         status = CREASE_FIRST
     if nxt is not None and math.isfinite(v_next):
         sens_next = sensitivities(at, nxt, mmap.solve_for, v_next, rtol=rtol)
-        scale = margins.sense * math.copysign(1.0, v) / v**2
-        if limited == "mode":  # the crease's sensitivities are not computed
-            sens_margin = {p: scale * (v * sens_next[p] - v_next * sens[p]) for p in sens}
+    sens_crease = crease_sensitivity(at, mmap.solve_for, v_crease, tuple(sens))
+    if limited == "crease":  # M is the gap to the crease
+        sens_margin = margin_sensitivity(margins.sense, v, sens, v_crease, sens_crease)
+    elif sens_next:
+        sens_margin = margin_sensitivity(margins.sense, v, sens, v_next, sens_next)
     x, y = margins.xy(u)
     verdict = design_verdict(
         at,
@@ -320,7 +331,7 @@ def prescribe_map(
         _distances(mmap, region, x, y) if status != NOT_FIRST else {},
         sens, sens_next, sens_margin, mmap, goal,
         v_crease if math.isfinite(v_crease) else math.nan, m_crease, limited, verdict,
-        region_crease,
+        region_crease, sens_crease,
     )  # fmt: skip
 
 
