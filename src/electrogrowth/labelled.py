@@ -247,6 +247,11 @@ def verdict_variables(v, solve_for: str) -> dict:
             np.nan if v.koiter is None else float(v.koiter),
             text("Koiter coefficient (NaN: not computed)"),
         ),
+        "koiter_error": (
+            (),
+            np.nan if v.koiter_error is None else float(v.koiter_error),
+            text("the Koiter coefficient's change from a coarser mesh (NaN: not computed)"),
+        ),
     }
 
 
@@ -287,6 +292,32 @@ def _ends(curve) -> dict:
     }
 
 
+def _crease_points(curve) -> dict:
+    """The crease at each point of a curve (bifurcation/curve_crease.py)."""
+    c = curve.crease
+    value = {**_critical_attrs(curve.solve_for), "long_name": "where a free face creases"}
+    text = lambda what: {"units": "1", "long_name": what}  # noqa: E731
+    return {
+        "crease_value": ("point", np.asarray(c.value, float), value),
+        "crease_face": ("point", np.asarray(c.face, str), text("the face that creases")),
+        "crease_trigger": (
+            "point",
+            np.asarray(c.trigger, str),
+            text("prismatic | axial | field: what drives the crease"),
+        ),
+        "crease_error": (
+            "point",
+            np.asarray(c.error, float),
+            {**value, "long_name": "the crease value's spread over the criterion's accuracy"},
+        ),
+        "crease_first": (
+            "point",
+            np.asarray(c.first, int),
+            text("1: the crease comes before the critical value (the wrinkle)"),
+        ),
+    }
+
+
 def curve_dataset(curve):
     """A Curve along dimension point (a switch appears twice, at the same x: the end of one
     branch and the start of the next; x is the coordinate named after ``along``), its
@@ -307,6 +338,7 @@ def curve_dataset(curve):
                 {**_critical_attrs(curve.solve_for), "long_name": "exact short-wave limit"},
             ),
             "status": ("point", np.asarray(curve.status, str), _attrs("status")),
+            **_crease_points(curve),
             "switch_x": (
                 "switch",
                 np.array([s.x for s in curve.switches], float),

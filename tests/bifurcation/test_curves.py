@@ -87,6 +87,11 @@ def test_branches_csv_and_plot(thin_to_thick, tmp_path):
         "surface",
         "short_wave_limit",
         "status",
+        "crease_value",
+        "crease_face",
+        "crease_trigger",
+        "crease_error",
+        "crease_first",
     ]
     assert len(rows) == 1 + len(curve.x) and float(rows[1][1]) == curve.value[0]
     ax = plot_curve(curve)

@@ -16,6 +16,7 @@ from ..labelled import curve_dataset
 from ..model.layers import Tube
 from ..outcomes import NO_MODE, Kind, Outcome, Status, remedy, status_of, traceback_of
 from ..summary import curve_html
+from .curve_crease import CreaseAlong
 
 
 class Switch(NamedTuple):
@@ -123,7 +124,9 @@ class Curve:
     the accuracy asked even after refinement (``inaccurate`` marks those rows).
     ``surface`` marks the rows of the short-wave limit; ``short_wave_limit`` holds the limit
     where the scan computed it (NaN elsewhere). ``switches`` lists the crossings, ``ends``
-    the branch ends that were located.
+    the branch ends that were located. ``crease`` (bifurcation/curve_crease.py): per row,
+    where a free face creases along the same control and whether that comes first
+    (``crease.first``; not computed, all NaN, for an interrupted curve's points).
     """
 
     along: str
@@ -140,6 +143,11 @@ class Curve:
     surface: np.ndarray
     short_wave_limit: np.ndarray
     ends: tuple[Switch, ...] = ()
+    crease: CreaseAlong | None = None
+
+    def __post_init__(self):
+        if self.crease is None:
+            object.__setattr__(self, "crease", CreaseAlong.empty(len(self.x)))
 
     @property
     def inaccurate(self) -> np.ndarray:
@@ -173,7 +181,8 @@ class Curve:
 
     def to_csv(self, path: str | Path) -> Path:
         """Columns <along>, <solve_for>_cr, m, n, kind, surface (0/1), short_wave_limit,
-        status."""
+        status, and the crease (crease_value, crease_face, crease_trigger, crease_error,
+        crease_first 0/1)."""
         path = Path(path)
         with replaced(path, newline="") as fh:  # whole or not at all (atomic.py)
             w = csv.writer(fh)
@@ -187,17 +196,22 @@ class Curve:
                     "surface",
                     "short_wave_limit",
                     "status",
+                    *CREASE_COLUMNS,
                 ]
             )
-            for row in zip(
-                self.x,
-                self.value,
-                self.m,
-                self.n,
-                self.kind,
-                self.surface,
-                self.short_wave_limit,
-                self.status,
+            crease = self._crease_rows()
+            for row, more in zip(
+                zip(
+                    self.x,
+                    self.value,
+                    self.m,
+                    self.n,
+                    self.kind,
+                    self.surface,
+                    self.short_wave_limit,
+                    self.status,
+                ),
+                crease,
             ):
                 x, v, m, n, kind, surf, limit, status = row
                 w.writerow(
@@ -210,9 +224,18 @@ class Curve:
                         int(surf),
                         repr(float(limit)),
                         status,
+                        *more,
                     ]
                 )
         return path
+
+    def _crease_rows(self) -> list[tuple]:
+        c = self.crease
+        assert c is not None  # set in __post_init__
+        return [
+            (repr(float(v)), face, trigger, repr(float(e)), int(first))
+            for v, face, trigger, e, first in zip(c.value, c.face, c.trigger, c.error, c.first)
+        ]
 
     def as_dict(self) -> dict:
         """JSON-ready record (NaN -> None)."""
@@ -239,7 +262,20 @@ class Curve:
             "short_wave_limit": num(self.short_wave_limit),
             "switches": [_change_record(s) for s in self.switches],
             "ends": [_change_record(s) for s in self.ends],
+            **_crease_record(self.crease),
         }
+
+
+#: the crease's columns of a curve's table (CreaseAlong.columns)
+CREASE_COLUMNS = ("crease_value", "crease_face", "crease_trigger", "crease_error", "crease_first")
+
+
+def _crease_record(crease) -> dict:
+    """The crease's JSON columns (NaN -> None)."""
+    out = crease.columns()
+    for key in ("crease_value", "crease_error"):
+        out[key] = _finite_or_none(out[key])
+    return out
 
 
 def _change_record(s: Switch) -> dict:

@@ -36,8 +36,10 @@ stable side (its sign on the unloaded tube, loose targets, as in the scan's marc
 before it, no face is past its short-wave limit (for a mode), and the mode is not on the
 edge of the ranges; otherwise, at the ends and every CHECK_EVERY points the point is a
 full scan. Switches are located and checked by scans as
-before, so the curve equals the curve of full scans. The records (grid point, switch,
-curve and its CSV) are in bifurcation/curve_record.py.
+before, so the curve equals the curve of full scans. Last, at every row, where a free face
+creases along the same control and whether that comes before the wrinkle
+(bifurcation/curve_crease.py: the crease criterion's march, cheap next to a scan). The
+records (grid point, switch, curve and its CSV) are in bifurcation/curve_record.py.
 """
 
 from __future__ import annotations
@@ -53,6 +55,7 @@ from ..model.controls import SIDED, check_side
 from ..model.layers import KEYS_TEXT, Tube
 from ..outcomes import NO_MODE, Kind
 from .critical import critical_value
+from .curve_crease import crease_along
 from .curve_follow import CHECK_EVERY, _Follower
 from .curve_record import (
     Curve,
@@ -263,6 +266,8 @@ def critical_curve(
             params, solve_for, along, side, unit, solve=critical_value, limit=short_wave_limit
         )
         rows, switches = _located(points, loc, progress)
+        xs_rows, values = [r[0] for r in rows], [r[1] for r in rows]
+        crease = crease_along(params, solve_for, along, side, xs_rows, values)
     except (KeyboardInterrupt, Exception) as exc:  # an interrupt, maybe wrapped by the kernel:
         stop = interrupt_of(exc)  # hand back the finished grid points, switches not located
         if stop is None:
@@ -272,7 +277,7 @@ def critical_curve(
     finally:
         if bar is not None:
             bar.close()
-    return _curve(along, solve_for, side, params, rows, switches)
+    return _curve(along, solve_for, side, params, rows, switches, crease)
 
 
 def _located(points: list[CurvePoint], loc: _Locator, progress=None):
@@ -306,8 +311,9 @@ def _located(points: list[CurvePoint], loc: _Locator, progress=None):
     return rows, switches
 
 
-def _curve(along, solve_for, side, params, rows, switches) -> Curve:
-    """The Curve of table rows (as :func:`_row`) and switches (and ends)."""
+def _curve(along, solve_for, side, params, rows, switches, crease=None) -> Curve:
+    """The Curve of table rows (as :func:`_row`) and switches (and ends), with the crease
+    at each row (None: not computed)."""
     x, v, modes, kinds, status, surface, limit = zip(*rows) if rows else [()] * 7
     modes = np.array(modes, dtype=int).reshape(-1, 2)
     return Curve(
@@ -325,4 +331,5 @@ def _curve(along, solve_for, side, params, rows, switches) -> Curve:
         np.array(surface, dtype=bool),
         np.array(limit, dtype=float),
         tuple(s for s in switches if s.kind == Kind.END),
+        crease,
     )

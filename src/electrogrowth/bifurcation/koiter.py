@@ -218,10 +218,11 @@ def _tube_not_covered(tube: Tube) -> str:
 
 
 def with_branch(verdict: Verdict, tube: Tube, solve_for: str) -> tuple[Verdict, str | None]:
-    """``verdict`` with its slot ``branch``/``koiter`` filled from the amplitude equation of
-    its wrinkle, and None; or unchanged with the one-line reason it is not computed (no
-    wrinkle, or a case the expansion does not cover yet). The meaning gains what the
-    branch means for a user: folds that grow gradually, or a jump at onset."""
+    """``verdict`` with its slot ``branch``/``koiter``/``koiter_error`` filled from the
+    amplitude equation of its wrinkle, and None; or unchanged with the one-line reason it
+    is not computed (no wrinkle, or a case the expansion does not cover yet). The meaning
+    gains what the branch means for a user: folds that grow gradually, or a jump at
+    onset."""
     w = verdict.wrinkle
     if w is None or w.m is None or w.n is None:
         return verdict, "no wrinkle was found, so there is no amplitude equation"
@@ -234,5 +235,11 @@ def with_branch(verdict: Verdict, tube: Tube, solve_for: str) -> tuple[Verdict, 
         "subcritical": "subcritical: the tube jumps to large folds at onset",
     }
     meaning = f"{verdict.meaning}; the wrinkle is {words[k.branch]}"
-    out = dataclasses.replace(verdict, branch=k.branch, koiter=k.coefficient, meaning=meaning)
+    out = dataclasses.replace(
+        verdict,
+        branch=k.branch,
+        koiter=k.coefficient,
+        koiter_error=k.error_estimate,
+        meaning=meaning,
+    )
     return out, None

@@ -7,9 +7,9 @@ puts them on one footing: ``kind`` and ``value`` of the first reached, the runne
 every other kind that was found (``wrinkle``, ``surface``, ``crease``, ``threshold``: a
 :class:`Rival` or None), and ``meaning``, one line for a user.
 
-``branch`` ("supercritical" / "subcritical") and ``koiter`` (the coefficient of the
-amplitude equation) are a slot for the weakly nonlinear expansion of the wrinkle: None
-until it is computed.
+``branch`` ("supercritical" / "subcritical"), ``koiter`` (the coefficient of the
+amplitude equation) and ``koiter_error`` (its error estimate) are a slot for the weakly
+nonlinear expansion of the wrinkle: None until it is computed.
 """
 
 from __future__ import annotations
@@ -76,6 +76,7 @@ class Verdict:
     side: str | None = None  # "compression": the march decreases the control
     branch: str | None = None  # "supercritical" | "subcritical"; None: not computed
     koiter: float | None = None  # the Koiter coefficient; None: not computed
+    koiter_error: float | None = None  # its change from a coarser resolution
 
     @property
     def first(self) -> Rival | None:
@@ -103,6 +104,7 @@ class Verdict:
             "crease_criterion": self.criterion,
             "branch": self.branch,
             "koiter": self.koiter,
+            "koiter_error": self.koiter_error,
         }
 
 

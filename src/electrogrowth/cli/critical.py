@@ -145,7 +145,12 @@ def _amplitude_equation(args, params, solve_for, crit) -> dict:
         verdict, note = with_branch(crit.verdict, params, solve_for)
     if note is not None:
         return {"branch_note": note}
-    return {"branch": verdict.branch, "koiter": verdict.koiter, "meaning": verdict.meaning}
+    return {
+        "branch": verdict.branch,
+        "koiter": verdict.koiter,
+        "koiter_error": verdict.koiter_error,
+        "meaning": verdict.meaning,
+    }
 
 
 def _inaccurate_exit(crit, args) -> int:

@@ -224,10 +224,38 @@ def summary(curve) -> list[str]:
             f" {curve.solve_for}_cr = {e.value:.12g}; then "
             + (after or f"{_mode(e.mode_after)} from {e.value_after:.12g}")
         )
+    lines.append(crease_line(curve))
     failed = [i for i, k in enumerate(curve.kind) if k in (Status.FAILED, Status.ERROR)]
     for i in failed:
         lines.append(f"  failed at {curve.along} = {curve.x[i]:.10g}: {curve.status[i]}")
     return lines
+
+
+def crease_line(curve) -> str:
+    """One line: where along the curve a free face creases before the wrinkle (the crease
+    criterion at every point, bifurcation/curve_crease.py), or that it nowhere does."""
+    c = curve.crease
+    first = np.flatnonzero(c.first)
+    found = np.isfinite(c.value)
+    if not first.size:
+        where = (
+            f"; a face creases later, from {curve.solve_for} = {_range(c.value[found])}"
+            if found.any()
+            else ""
+        )
+        return f"  crease: no point creases before it wrinkles{where}"
+    xs = curve.x[first]
+    faces = ", ".join(sorted({f"{c.face[i]} face ({c.trigger[i]})" for i in first}))
+    return (
+        f"  crease first at {len(set(xs.tolist()))} of {len(set(curve.x.tolist()))} points,"
+        f" {curve.along} {_range(xs)}: the {faces} creases at {curve.solve_for} ="
+        f" {_range(c.value[first])} before the wrinkle (the pattern there is a crease)"
+    )
+
+
+def _range(values) -> str:
+    lo, hi = float(np.min(values)), float(np.max(values))
+    return f"{lo:.4g}" if f"{lo:.4g}" == f"{hi:.4g}" else f"{lo:.4g} .. {hi:.4g}"
 
 
 def _mode(mode) -> str:

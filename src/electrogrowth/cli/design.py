@@ -98,6 +98,13 @@ def configure_design(parser: argparse.ArgumentParser) -> None:
         metavar="ADDRESS",
         help="send them to an existing dask.distributed cluster, e.g. tcp://host:8786",
     )
+    parser.add_argument(
+        "--koiter",
+        action="store_true",
+        help="also solve the amplitude equation of the chosen design's wrinkle: super- or"
+        " subcritical (as critical --koiter; covered: prismatic modes of neo-Hookean tubes"
+        " in a growth control; a few seconds)",
+    )
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     add_quiet_option(parser)
 
@@ -160,6 +167,7 @@ def run_design(args) -> int:
         side=args.side,
         options=scan_options_from_args(args),
         points=9 if args.points is None else args.points,
+        koiter=args.koiter,
     )
     record = result.as_dict()
     if args.out is not None:
@@ -196,9 +204,12 @@ def summary(result) -> list[str]:
     seq = result.sequence
     side = f" ({seq.side})" if seq.side else ""
     lines = [f"target {result.target}: critical {seq.solve_for}{side} along {seq.key}"]
+    creases = dict(zip(result.region, result._crease_rows()))
     for iv in seq.intervals:
         what = f"mode {iv.mode}" if iv.kind == "bifurcation" else iv.kind
-        lines.append(f"  {seq.key} {iv.lo:.10g} .. {iv.hi:.10g}: {what}")
+        lines.append(
+            f"  {seq.key} {iv.lo:.10g} .. {iv.hi:.10g}: {what}{_creased(creases.get(iv))}"
+        )
     for s in seq.switches:
         lines.append(
             f"  {s.kind} at {seq.key} = {s.x:.12g}: {s.mode_before} -> {s.mode_after},"
@@ -207,12 +218,14 @@ def summary(result) -> list[str]:
     if result.status == "not_reached":
         lines.append("  no target mode among the scanned modes: widen --m-max / --n-max")
         return lines
-    best = "best design" if result.status == "found" else "never first; closest design"
+    best = BEST.get(result.status, "never first; closest design")
+    to = "the crease" if result.limited_by == "crease" else str(result.next_mode)
     lines.append(
         f"  {best}: {seq.key} = {result.x:.10g}, mode {result.mode} at {seq.solve_for}_cr ="
-        f" {result.value:.10g}, margin {result.margin:.4g} to {result.next_mode}"
-        f" ({result.next_value:.10g})"
+        f" {result.value:.10g}, margin {result.margin:.4g} to {to}"
+        f" ({result.crease_value if to == 'the crease' else result.next_value:.10g})"
     )
+    lines += _verdict_lines(result.verdict)
     if result.to_boundary is not None:
         lines.append(f"  distance to the region's boundary: {result.to_boundary:.6g}")
     for p, d in sorted(result.sensitivity.items(), key=lambda kv: -abs(kv[1])):
@@ -220,6 +233,32 @@ def summary(result) -> list[str]:
         extra = "" if dm is None else f", d(margin)/d{p} = {dm:.6g}"
         lines.append(f"  d{seq.solve_for}_cr/d{p} = {d:.6g}{extra}")
     return lines
+
+
+#: how the text names the design of each status
+BEST = {"found": "best design", "crease_first": "creases first everywhere; nearest design"}
+
+
+def _creased(crease: dict | None) -> str:
+    """What an interval of the region says of the crease ("" for none or not computed)."""
+    if not crease or crease.get("crease_first") in (None, "none"):
+        return ""
+    first, rows = crease["crease_first_points"]
+    return f" (a face creases first at {first} of its {rows} points)"
+
+
+def _verdict_lines(verdict: dict) -> list[str]:
+    """The chosen design's verdict in one line, and one more where its pattern may not be
+    observed (design/onset.py observable)."""
+    from ..design.onset import observable
+
+    if not verdict:
+        return []
+    lines = [f"  verdict at the design: {verdict['meaning']}"]
+    if verdict.get("branch_note") and verdict["branch_note"] != "not asked (--koiter)":
+        lines.append(f"  branch not computed: {verdict['branch_note']}")
+    warning = observable(verdict)
+    return lines + ([f"  {warning}"] if warning else [])
 
 
 def _run_map(args, tube, solve_for, varies, target) -> int:
@@ -241,7 +280,7 @@ def _run_map(args, tube, solve_for, varies, target) -> int:
         scheduler=args.scheduler,
         progress=say if not args.json and enabled(args) else None,
     )  # fmt: skip
-    result = prescribe_map(tube, target, mmap, options=options)
+    result = prescribe_map(tube, target, mmap, options=options, koiter=args.koiter)
     record = result.as_dict()
     if args.out is not None:
         record["files"] = [str(p) for p in _write_map(result, args.out)]
@@ -314,12 +353,22 @@ def map_summary(result) -> list[str]:
     if result.status == "not_reached":
         lines.append("  no target mode among the scanned modes: widen --m-max / --n-max")
         return lines
-    best = "best design" if result.status == "found" else "never first; closest design"
+    rc = result.region_crease
+    if rc and rc["crease_first"] != "none":
+        first, points = rc["crease_first_points"]
+        lines.append(
+            f"  a face creases before the target at {first} of the {points} raster points"
+            " in its region"
+        )
+    best = BEST.get(result.status, "never first; closest design")
+    crease = result.limited_by == "crease"
     lines.append(
         f"  {best}: {kx} = {result.x:.10g}, {ky} = {result.y:.10g}, mode {result.mode} at"
         f" {mmap.solve_for}_cr = {result.value:.10g}, margin {result.margin:.4g} to"
-        f" {_name(result.next_mode)} ({result.next_value:.10g})"
+        f" {'the crease' if crease else _name(result.next_mode)}"
+        f" ({result.crease_value if crease else result.next_value:.10g})"
     )
+    lines += _verdict_lines(result.verdict)
     for k, d in result.to_boundary.items():
         if d is not None:
             lines.append(f"  distance to the region's boundary along {k}: {d:.6g}")

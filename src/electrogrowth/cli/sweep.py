@@ -131,7 +131,9 @@ def _print_plan(config, out: Path) -> int:
         f"{config.size} points: {grid}; critical {config.solve_for}"
         f"{' (' + config.side + ')' if config.side else ''},"
         f" modes m {list(config.scan.m_range)}, n {list(config.scan.n_range)},"
-        f" rtol {config.rtol:g}; {len(blocks)} chunks of up to"
+        f" rtol {config.rtol:g}"
+        f"{', with the amplitude equation (koiter)' if config.koiter else ''};"
+        f" {len(blocks)} chunks of up to"
         f" {config.chunk} points; {out}: {state}"
     )
     return 0

@@ -10,9 +10,12 @@ outside the target set reached after T:
 s = +1 where the control grows from its stable start (growth, voltage, stretch in extension,
 inflating pressure) and -1 where it falls (stretch in compression, axial force): M > 0
 exactly where T comes first, and M is the fraction by which the control can overshoot v_T
-before N could also wrinkle. The best design maximises M over the target's region. Where no
-x in [lo, hi] makes the target first, the closest design maximises M < 0 (the smallest
-relative gap) and N is the mode that beats T there. docs/design.md.
+before N could also wrinkle. A crease of a free face is one more competitor (design/onset.py:
+M is also at most the relative gap to the crease), so a design where a face creases before
+T has M < 0. The best design maximises M over the target's region; where a crease comes
+first across the whole region it is the one nearest to wrinkling first (CREASE_FIRST).
+Where no x in [lo, hi] makes the target first, the closest design maximises M < 0 (the
+smallest relative gap) and N is the mode that beats T there. docs/design.md.
 """
 
 from __future__ import annotations
@@ -24,6 +27,8 @@ from ..bifurcation.critical import critical_value
 from ..bifurcation.scan import ScanOptions, scan_modes
 from ..errors import ElectrogrowthError
 from ..outcomes import Kind
+from . import onset
+from .onset import CREASE_FIRST, gap_to_crease
 from .sensitivity import sensitivities
 from .sequence import Interval, ModeSequence, check_vary, mode_sequence
 from .targets import Target, check_target
@@ -45,7 +50,15 @@ class Design:
     the nearest end of the region (its intervals joined where they touch) that is a located
     switch (None if both ends are the ends of the range). NOT_FIRST: no region; x is the
     closest design, M < 0, and
-    ``next_mode`` beats the target there. NOT_REACHED: no target mode was found among the
+    ``next_mode`` beats the target there. CREASE_FIRST: the target is first among the
+    wrinkles in its region, but a free face creases before it at every design there; x is
+    the design nearest to wrinkling first (M < 0, ``limited_by`` "crease").
+    ``crease_value`` is where a face creases at x (NaN: none; ``crease_sensitivity`` its
+    d/dp), ``crease_margin`` the relative gap to it (``margin_sensitivity`` is that of the
+    gap that sets M), ``limited_by`` which competitor sets M ("mode" or "crease"),
+    ``verdict`` the verdict of a scan at x (design/onset.py :func:`design_verdict`) and
+    ``region_crease`` how many of the curve's points in each interval of the region
+    crease first. NOT_REACHED: no target mode was found among the
     scanned modes (x and the values are NaN). ``sensitivity``: d(value)/dp of the target
     mode's critical value for every parameter p of the tube at x; ``margin_sensitivity``:
     dM/dp from the two modes' sensitivities; ``next_sensitivity``: those of the next mode.
@@ -67,6 +80,12 @@ class Design:
     next_sensitivity: dict
     margin_sensitivity: dict
     sequence: ModeSequence
+    crease_value: float = math.nan
+    crease_margin: float = math.nan
+    limited_by: str = ""
+    verdict: dict = dataclasses.field(default_factory=dict)
+    region_crease: tuple = ()
+    crease_sensitivity: dict = dataclasses.field(default_factory=dict)
 
     def as_dict(self) -> dict:
         num = lambda v: v if v is not None and math.isfinite(v) else None  # noqa: E731
@@ -76,7 +95,9 @@ class Design:
             "vary": self.key,
             "solve_for": self.solve_for,
             "side": self.sequence.side,
-            "region": [iv.as_dict() for iv in self.region],
+            "region": [
+                iv.as_dict() | crease for iv, crease in zip(self.region, self._crease_rows())
+            ],
             "switches": [s.as_dict() for s in self.sequence.switches],
             "sequence": [iv.as_dict() for iv in self.sequence.intervals],
             "best": {
@@ -87,22 +108,38 @@ class Design:
                 "next_mode": None if self.next_mode is None else list(self.next_mode),
                 "next_value": num(self.next_value),
                 "to_boundary": num(self.to_boundary),
+                "crease_value": num(self.crease_value),
+                "crease_margin": num(self.crease_margin),
+                "limited_by": self.limited_by or None,
+                "verdict": self.verdict or None,
             },
             "sensitivity": {
                 "value": {p: num(d) for p, d in self.sensitivity.items()},
                 "next_value": {p: num(d) for p, d in self.next_sensitivity.items()},
                 "margin": {p: num(d) for p, d in self.margin_sensitivity.items()},
+                "crease_value": {p: num(d) for p, d in self.crease_sensitivity.items()},
             },
         }
+
+    def _crease_rows(self) -> list[dict]:
+        return list(self.region_crease) or [{} for _ in self.region]
 
 
 class _Margins:
     """Critical values of single modes at designs x, cached, and the margin M(x)."""
 
-    def __init__(self, tube, solve_for, key, side):
+    def __init__(self, tube, solve_for, key, side) -> None:
         self.tube, self.solve_for, self.key, self.side = tube, solve_for, key, side
         self.sense = -1.0 if side == "compression" else 1.0
         self.cache: dict = {}
+        self.creases: dict = {}
+
+    def crease(self, x: float) -> float:
+        """Where a free face creases at x (sense * inf: none; design/onset.py)."""
+        if x not in self.creases:
+            at = self.tube.at(self.key, x)
+            self.creases[x] = onset.crease_value(at, self.solve_for, self.side, self.sense)
+        return self.creases[x]
 
     def value(self, mode, x: float) -> float:
         """The first critical value of ``mode`` at x; +-inf (never) if the threshold or no
@@ -122,11 +159,12 @@ class _Margins:
         return self.sense * (v_next - v) / abs(v) if math.isfinite(v) else -math.inf
 
     def best_margin(self, mode, others, x: float) -> tuple[float, tuple | None]:
-        """(M, the next mode) at x over the competitors ``others``."""
+        """(M, the next mode) at x over the competitors ``others`` and the crease."""
+        by_crease = gap_to_crease(self.value(mode, x), self.crease(x), self.sense)
         if not others:
-            return math.inf, None
+            return by_crease, None
         nxt = min(others, key=lambda o: self.sense * self.value(o, x))
-        return self.margin(mode, x, self.value(nxt, x)), nxt
+        return min(self.margin(mode, x, self.value(nxt, x)), by_crease), nxt
 
 
 def _ranked(res) -> list[tuple[tuple[int, int], float]]:
@@ -150,6 +188,7 @@ def prescribe(
     points: int = 9,
     rtol: float = 1e-12,
     sequence: ModeSequence | None = None,
+    koiter: bool = False,
 ) -> Design:
     """The design x in [lo, hi] with the widest margin M for the target pattern.
 
@@ -161,12 +200,16 @@ def prescribe(
         The pattern aimed at: a set of modes (a callable (m, n) -> bool).
     rtol : float
         Accuracy of the target evaluations behind the sensitivities.
+    koiter : bool
+        Also the amplitude equation of the chosen design's wrinkle (its branch, where
+        bifurcation/koiter.py covers it; several seconds).
 
     Returns
     -------
     Design
         The region, the best (or closest) design, its margin
-        M = s (v_next - v_target) / |v_target| (module docstring) and the sensitivities
+        M = s (v_next - v_target) / |v_target|, at most the gap to a crease (module
+        docstring), the verdict at the design, and the sensitivities
         dv/dp = -f_p / f_v of the target's critical value (design/sensitivity.py).
     """
     goal = check_target(target)
@@ -203,10 +246,19 @@ def prescribe(
     at = tube.at(key, x)
     sens = sensitivities(at, mode, sequence.solve_for, v, rtol=rtol)
     sens_next, sens_margin = {}, {}
+    v_crease = margins.crease(x)
+    m_crease = gap_to_crease(v, v_crease, margins.sense)
+    by_modes = margins.margin(mode, x, v_next) if nxt is not None else math.inf
+    limited = "crease" if m_crease < by_modes else "mode"
+    if status == FOUND and m_x < 0:  # a crease before the target everywhere in its region
+        status = CREASE_FIRST
     if nxt is not None and math.isfinite(v_next):
         sens_next = sensitivities(at, nxt, sequence.solve_for, v_next, rtol=rtol)
-        scale = margins.sense * math.copysign(1.0, v) / v**2  # dM = s sgn(v)(v dv_N - v_N dv)/v^2
-        sens_margin = {p: scale * (v * sens_next[p] - v_next * sens[p]) for p in sens}
+    sens_crease = onset.crease_sensitivity(at, sequence.solve_for, v_crease, tuple(sens))
+    if limited == "crease":  # M is the gap to the crease
+        sens_margin = onset.margin_sensitivity(margins.sense, v, sens, v_crease, sens_crease)
+    elif sens_next:
+        sens_margin = onset.margin_sensitivity(margins.sense, v, sens, v_next, sens_next)
     span = _span(region, x)
     ends = (
         []
@@ -230,6 +282,12 @@ def prescribe(
         sens_next,
         sens_margin,
         sequence,
+        v_crease if math.isfinite(v_crease) else math.nan,
+        m_crease,
+        limited,
+        onset.design_verdict(at, sequence.solve_for, side, scan_opts, koiter=koiter),
+        tuple(onset.region_creases(region, sequence.curve)),
+        sens_crease,
     )
 
 

@@ -9,7 +9,10 @@ traced boundaries, no solves), refined by Nelder-Mead in the unit
 square from the best, each M from single-mode solves of T and its competitors; a scan at the
 optimum adds a competitor the set lacked, and the maximisation is repeated. Where the
 target is first nowhere, the closest design maximises M < 0 from the map's grid nodes (each
-scanned again for the modes ahead of the target), refined the same way.
+scanned again for the modes ahead of the target), refined the same way. As along one
+variable, a crease of a free face is one more competitor (design/onset.py), so a design
+where a face creases first has M < 0, and where that holds at every raster point of the
+target's region the status is CREASE_FIRST.
 """
 
 from __future__ import annotations
@@ -25,6 +28,14 @@ from ..errors import ElectrogrowthError
 from ..outcomes import Kind
 from .map_record import ModeMap, label_json
 from .map_trace import Values, valued
+from .onset import (
+    CREASE_FIRST,
+    crease_sensitivity,
+    crease_value,
+    design_verdict,
+    gap_to_crease,
+    margin_sensitivity,
+)
 from .prescribe import FOUND, NOT_FIRST, NOT_REACHED, REFINE_ROUNDS
 from .sensitivity import sensitivities
 from .targets import Target, check_target
@@ -40,7 +51,9 @@ class MapDesign:
     mode there, its critical ``value``, the ``margin`` M and the ``next_mode`` (what beats
     it, for NOT_FIRST) at ``next_value``; ``to_boundary``: the distance from the design to
     the region's boundary along x and along y (None where no boundary crosses that line);
-    the sensitivities as in :class:`~.prescribe.Design`."""
+    the sensitivities as in :class:`~.prescribe.Design`; ``crease_value``,
+    ``crease_margin``, ``limited_by``, ``verdict`` as there, and ``region_crease``: how many
+    of the raster points in the target's region crease first."""
 
     target: str
     status: str
@@ -59,6 +72,12 @@ class MapDesign:
     margin_sensitivity: dict
     map: ModeMap
     goal: Target | None = None  # the target as a set of modes (design/targets.py)
+    crease_value: float = math.nan
+    crease_margin: float = math.nan
+    limited_by: str = ""
+    verdict: dict = dataclasses.field(default_factory=dict)
+    region_crease: dict = dataclasses.field(default_factory=dict)
+    crease_sensitivity: dict = dataclasses.field(default_factory=dict)
 
     def as_dict(self) -> dict:
         num = lambda v: v if v is not None and math.isfinite(v) else None  # noqa: E731
@@ -69,6 +88,7 @@ class MapDesign:
             "solve_for": self.map.solve_for,
             "side": self.map.side,
             "region": [b.as_dict() for b in self.region],
+            "region_crease": self.region_crease or None,
             "switches": [b.as_dict() for b in self.map.boundaries],
             "triple_points": [t.as_dict() for t in self.map.triple_points],
             "best": {
@@ -79,11 +99,16 @@ class MapDesign:
                 "next_mode": None if self.next_mode is None else label_json(self.next_mode),
                 "next_value": num(self.next_value),
                 "to_boundary": {k: num(v) for k, v in self.to_boundary.items()},
+                "crease_value": num(self.crease_value),
+                "crease_margin": num(self.crease_margin),
+                "limited_by": self.limited_by or None,
+                "verdict": self.verdict or None,
             },
             "sensitivity": {
                 "value": {p: num(d) for p, d in self.sensitivity.items()},
                 "next_value": {p: num(d) for p, d in self.next_sensitivity.items()},
                 "margin": {p: num(d) for p, d in self.margin_sensitivity.items()},
+                "crease_value": {p: num(d) for p, d in self.crease_sensitivity.items()},
             },
         }
 
@@ -95,6 +120,7 @@ class _Margins:
         self.map, self.tube, self.options = mmap, tube, options
         self.sense = -1.0 if mmap.side == "compression" else 1.0
         self.values = Values(tube, mmap.solve_for, mmap.keys, mmap.box, mmap.side, 1e-12)
+        self.creases: dict = {}
 
     def xy(self, u):
         return self.values.xy(u)
@@ -113,15 +139,24 @@ class _Margins:
             v = None
         return self.sense * math.inf if v is None else v
 
+    def crease(self, u) -> float:
+        """Where a free face creases at u (sense * inf: none; design/onset.py)."""
+        key = tuple(float(c) for c in u)
+        if key not in self.creases:
+            at = self.at(u)
+            self.creases[key] = crease_value(at, self.map.solve_for, self.map.side, self.sense)
+        return self.creases[key]
+
     def margin(self, mode, others, u) -> tuple[float, object]:
-        """(M, the next pattern) at u over the competitors ``others``."""
+        """(M, the next pattern) at u over the competitors ``others`` and the crease."""
         v = self.value(mode, u)
         if not math.isfinite(v):
             return -math.inf, None
+        by_crease = gap_to_crease(v, self.crease(u), self.sense)
         if not others:
-            return math.inf, None
+            return by_crease, None
         nxt = min(others, key=lambda o: self.sense * self.value(o, u))
-        return self.sense * (self.value(nxt, u) - v) / abs(v), nxt
+        return min(self.sense * (self.value(nxt, u) - v) / abs(v), by_crease), nxt
 
     def ranked(self, u) -> list:
         """The modes a scan at u finds, in the order reached: [((m, n), value), ...]."""
@@ -192,7 +227,13 @@ def _distances(mmap: ModeMap, region, x: float, y: float) -> dict:
 
 
 def prescribe_map(
-    tube, target, mmap: ModeMap, *, options: ScanOptions = ScanOptions(), rtol: float = 1e-12
+    tube,
+    target,
+    mmap: ModeMap,
+    *,
+    options: ScanOptions = ScanOptions(),
+    rtol: float = 1e-12,
+    koiter: bool = False,
 ) -> MapDesign:
     """The design with the widest margin for ``target`` in a mode map (module docstring).
 
@@ -206,6 +247,8 @@ def prescribe_map(
         The map (:func:`mode_map`) over the two design variables.
     options : ScanOptions
         The modes the scans at the designs examine (those of the map).
+    koiter : bool
+        Also the amplitude equation of the chosen design's wrinkle (its branch).
 
     Returns
     -------
@@ -227,6 +270,10 @@ def prescribe_map(
         others = tuple(sorted(lab for lab in found if lab not in goal and isinstance(lab, tuple)))
         scored = [(margins.margin(lab, others, u)[0], tuple(u), lab) for u, lab in inside]
         _, u0, mode = max(scored)
+        creased = sum(
+            margins.sense * (margins.crease(u) - margins.value(lab, u)) < 0 for u, lab in inside
+        )
+        region_crease = _region_crease(int(creased), len(inside))
     else:
         status = NOT_FIRST
         best = None
@@ -250,6 +297,7 @@ def prescribe_map(
         if best is None:
             return _unreached(goal, mmap, region)
         _, u0, mode, others = best
+        region_crease = {}
     u, others = _maximise(margins, mode, others, u0, goal)
     m_u, nxt = margins.margin(mode, others, u)
     v = margins.value(mode, u)
@@ -257,16 +305,40 @@ def prescribe_map(
     at = margins.at(u)
     sens = sensitivities(at, mode, mmap.solve_for, v, rtol=rtol)
     sens_next, sens_margin = {}, {}
+    v_crease = margins.crease(u)
+    m_crease = gap_to_crease(v, v_crease, margins.sense)
+    by_modes = margins.sense * (v_next - v) / abs(v) if nxt is not None else math.inf
+    limited = "crease" if m_crease < by_modes else "mode"
+    if status == FOUND and m_u < 0:  # a crease before the target everywhere in its region
+        status = CREASE_FIRST
     if nxt is not None and math.isfinite(v_next):
         sens_next = sensitivities(at, nxt, mmap.solve_for, v_next, rtol=rtol)
-        scale = margins.sense * math.copysign(1.0, v) / v**2
-        sens_margin = {p: scale * (v * sens_next[p] - v_next * sens[p]) for p in sens}
+    sens_crease = crease_sensitivity(at, mmap.solve_for, v_crease, tuple(sens))
+    if limited == "crease":  # M is the gap to the crease
+        sens_margin = margin_sensitivity(margins.sense, v, sens, v_crease, sens_crease)
+    elif sens_next:
+        sens_margin = margin_sensitivity(margins.sense, v, sens, v_next, sens_next)
     x, y = margins.xy(u)
+    verdict = design_verdict(
+        at,
+        mmap.solve_for,
+        mmap.side,
+        dataclasses.replace(options, top=max(options.top, 6)),
+        koiter=koiter,
+    )
     return MapDesign(
         goal.name, status, mmap.keys, region, x, y, mode, v, m_u, nxt, v_next,
-        _distances(mmap, region, x, y) if status == FOUND else {},
+        _distances(mmap, region, x, y) if status != NOT_FIRST else {},
         sens, sens_next, sens_margin, mmap, goal,
+        v_crease if math.isfinite(v_crease) else math.nan, m_crease, limited, verdict,
+        region_crease, sens_crease,
     )  # fmt: skip
+
+
+def _region_crease(creased: int, points: int) -> dict:
+    """How many of the raster points in the target's region crease first."""
+    which = "none" if creased == 0 else "all" if creased == points else "part"
+    return {"crease_first": which, "crease_first_points": [creased, points], "sampled": "raster"}
 
 
 def _unreached(goal, mmap, region) -> MapDesign:

@@ -7,6 +7,7 @@ the offending key (sweep/file.py adds the file and line). Read from a TOML file
     [solve]     for = "growth" | "stretch" | "voltage"       (required)
                 side = "compression" | "extension"           (stretch only)
                 rtol = 1e-12                                  (1e-14 .. 1e-4)
+                koiter = false   also the wrinkle's amplitude equation (growth controls)
     [modes]     m = [0, 12], n = [1, 30], extend = true, top = 5, surface = true,
                 prismatic = true, torsional = true            (every ScanOptions field)
     [material]  name = "neo-hookean" | "gent" | "mooney-rivlin", and its parameters;
@@ -46,7 +47,7 @@ import numpy as np
 from ..bifurcation.scan import ScanOptions
 from ..errors import ConfigError, ElectrogrowthError, ParameterError
 from ..incremental.accuracy import RTOL_RANGE
-from ..model.controls import SIDED, SIDES, TUBE_CONTROLS
+from ..model.controls import SIDED, SIDES, TUBE_CONTROLS, parse_control
 from ..model.energy_text import energy_material
 from ..model.layers import Tube
 from ..model.materials import BUILTIN, Material, material_by_name
@@ -106,6 +107,7 @@ class SweepConfig:
     chunk: int = 1
     tube: str | None = None  # the TOML text of a layered tube file, if the sweep has one
     energy: str = ""  # an energy as text (model/energy_text.py) in place of ``material``
+    koiter: bool = False  # also the amplitude equation of each point's wrinkle (branch)
 
     def __post_init__(self):
         _validate(self)
@@ -125,7 +127,7 @@ class SweepConfig:
     @property
     def spec(self) -> ScanSpec:
         """The options of every point's mode scan."""
-        return ScanSpec(self.solve_for, self.side, self.scan, self.rtol)
+        return ScanSpec(self.solve_for, self.side, self.scan, self.rtol, self.koiter)
 
     def build_material(self):
         if self.energy:
@@ -158,7 +160,12 @@ class SweepConfig:
     def to_dict(self) -> dict:
         """A JSON-ready dict (stored in the dataset attributes; see :meth:`from_dict`)."""
         return {
-            "solve": {"for": self.solve_for, "side": self.side, "rtol": self.rtol},
+            "solve": {
+                "for": self.solve_for,
+                "side": self.side,
+                "rtol": self.rtol,
+                **({"koiter": True} if self.koiter else {}),  # stores before it stay equal
+            },
             "modes": _modes_dict(self.scan),
             "material": (
                 {"energy": self.energy}
@@ -189,6 +196,7 @@ class SweepConfig:
             scan=_modes_options(d["modes"]),
             chunk=d["run"]["chunk"],
             tube=d["tube"]["text"] if "tube" in d else None,
+            koiter=d["solve"].get("koiter", False),  # a store written before it: not asked
         )
 
 
@@ -247,6 +255,7 @@ def _validate(c: SweepConfig) -> None:
     tube = _reference(c)
     keys = sweep_keys(c.tube, tube)
     _check_solve(c, tube, keys)
+    _check_koiter(c)
     _check_run(c)
     if not c.grid:
         what = f"at least one of {', '.join(keys)}" if keys else "a control or key of the tube"
@@ -306,6 +315,21 @@ def _check_solve(c: SweepConfig, tube: Tube, keys: tuple[str, ...] | None) -> No
         raise ConfigError(("solve", "for"), str(exc)) from None
     if name != c.solve_for:
         raise ConfigError(("solve", "for"), f"write it as {name!r}")
+
+
+def _check_koiter(c: SweepConfig) -> None:
+    """koiter = true asks for the amplitude equation, which covers growth controls only
+    (bifurcation/koiter.py): any other control would give no branch at any point."""
+    if not isinstance(c.koiter, bool):
+        raise ConfigError(
+            ("solve", "koiter"), f"expected a boolean, got {typename(c.koiter)} {shown(c.koiter)}"
+        )
+    if c.koiter and parse_control(c.solve_for).kind != "growth":
+        raise ConfigError(
+            ("solve", "koiter"),
+            f"the amplitude equation covers a growth control so far, not for = {c.solve_for!r};"
+            " remove koiter or solve for a growth",
+        )
 
 
 def _check_value(tube: Tube, name: str, value, where: tuple[str, ...]) -> None:

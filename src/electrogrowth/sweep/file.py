@@ -27,7 +27,7 @@ from .config import MODE_KEYS, SweepConfig, default_chunk, reference_tube, sweep
 #: table -> allowed keys (None: free keys, checked by the table's own rules; [fixed] and
 #: [grid] take the names of the sweep's tube, config.sweep_keys)
 TABLES = {
-    "solve": ("for", "side", "rtol", "layer", "component"),
+    "solve": ("for", "side", "rtol", "layer", "component", "koiter"),
     "modes": tuple(MODE_KEYS),
     "material": None,
     "fixed": None,
@@ -94,6 +94,7 @@ def _from_raw(raw: dict, base: Path = Path()) -> SweepConfig:
         scan=_scan_options(modes),
         chunk=chunk if chunk is not None else default_chunk(math.prod(len(v) for _, v in grid)),
         tube=text,
+        koiter=_bool(solve, ("solve",), "koiter") if "koiter" in solve else False,
     )
 
 

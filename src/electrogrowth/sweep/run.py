@@ -31,6 +31,7 @@ class SweepSummary:
     chunks_computed: int
     counts: dict
     seconds: float
+    verdicts: dict = dataclasses.field(default_factory=dict)  # SweepStore.verdicts()
 
     def text(self) -> str:
         c = self.counts
@@ -42,6 +43,11 @@ class SweepSummary:
         )
         if self.chunks_before:
             line += f" ({self.chunks_before} done before)"
+        for key, head in (("first", "what comes first"), ("branch", "branch")):
+            if self.verdicts.get(key):
+                line += f"; {head}: " + ", ".join(
+                    f"{v} {_plain(k)}" for k, v in self.verdicts[key].items()
+                )
         if c.get("error"):
             line += (
                 f"; {c['error']} points hit an internal error (a bug, see their"
@@ -124,7 +130,7 @@ def compute_sweep(
         finally:
             results.close()  # stops the workers now if we are interrupted
             bar.close()
-        counts = store.counts()
+        counts, verdicts = store.counts(), store.verdicts()
     return SweepSummary(
         Path(out),
         run,
@@ -133,7 +139,13 @@ def compute_sweep(
         len(tasks),
         counts,
         time.perf_counter() - start,
+        verdicts,
     )
+
+
+def _plain(kind: str) -> str:
+    """A verdict kind as the summary says it ("bifurcation": a smooth wrinkle)."""
+    return {"bifurcation": "wrinkle", "crease": "crease", "none": "nothing found"}.get(kind, kind)
 
 
 def _failed(point) -> bool:

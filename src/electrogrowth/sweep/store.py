@@ -37,7 +37,7 @@ import zarr
 from ..errors import SweepError
 from ..outcomes import Kind, Status
 from .config import SweepConfig, differences
-from .unit import ChunkResult
+from .unit import BRANCH_FAILED, ChunkResult
 
 #: Coordinate attributes of the tube parameters.
 LABELS = {
@@ -119,8 +119,25 @@ POINT_VARIABLES = {
     "crease_error": ("f8", math.nan, "the crease value's spread over the criterion's accuracy"),
     "threshold_value": ("f8", math.nan, "where the axisymmetric state is lost (NaN: not found)"),
     "meaning": (object, "", "the verdict in one line"),
-    "branch": (object, "", "supercritical | subcritical | '' (not computed)"),
-    "koiter": ("f8", math.nan, "the Koiter coefficient of the wrinkle (NaN: not computed)"),
+    "branch": (
+        object,
+        "",
+        "supercritical | subcritical: the wrinkle's branch by its amplitude equation"
+        " ([solve] koiter = true) | '' (not computed: see branch_note)",
+    ),
+    "koiter": (
+        "f8",
+        math.nan,
+        "the Koiter coefficient c_2 of control = c_cr + c_2 eps^2, eps = peak u_r / R_i"
+        " (NaN: not computed)",
+    ),
+    "koiter_error": ("f8", math.nan, "the Koiter coefficient's change from a coarser mesh"),
+    "branch_note": (
+        object,
+        "",
+        "why branch is empty: a case the amplitude equation does not cover, or"
+        " 'amplitude equation failed: ...' ('' where computed or not asked)",
+    ),
 }
 RUNNER_VARIABLES = {
     "runner_up_value": ("f8", math.nan, "critical value of the next modes, in order"),
@@ -243,6 +260,34 @@ class SweepStore:
                 "pending",
             )
         }
+
+    def verdicts(self) -> dict:
+        """What comes first at the computed points ("first": verdict kind -> count) and, for
+        a sweep asking for the amplitude equation, the branches ("branch": supercritical,
+        subcritical, "not covered", "failed" -> count); empty for what a store written
+        before these variables lacks."""
+        out: dict = {}
+        status = np.asarray(self.group["status"][...], dtype=object)
+        done = (status == Status.OK) | (status == Status.INACCURATE)
+        if "verdict" in self.group:
+            verdict = np.asarray(self.group["verdict"][...], dtype=object)[done]
+            out["first"] = _tally(v for v in verdict if v)
+        if self.config.koiter and "branch_note" in self.group:
+            branch = np.asarray(self.group["branch"][...], dtype=object)[done]
+            note = np.asarray(self.group["branch_note"][...], dtype=object)[done]
+            out["branch"] = _tally(
+                b or ("failed" if n.startswith(BRANCH_FAILED) else "not covered")
+                for b, n in zip(branch, note)
+            )
+        return out
+
+
+def _tally(values) -> dict:
+    """value -> count, in order of first appearance."""
+    out: dict = {}
+    for v in values:
+        out[str(v)] = out.get(str(v), 0) + 1
+    return out
 
 
 def open_store(out: str | Path, config: SweepConfig, *, source_text: str = "") -> SweepStore:

@@ -38,6 +38,7 @@ class ScanSpec:
     side: str | None = None
     options: ScanOptions = ScanOptions()
     rtol: float = 1e-12
+    koiter: bool = False  # also the amplitude equation of the wrinkle (bifurcation/koiter.py)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -57,8 +58,12 @@ class PointResult(Outcome):
     comes first once a crease of a free face competes: ``verdict`` (its kind),
     ``verdict_value``, ``verdict_face``, the runner-ups ``wrinkle_value``,
     ``crease_value`` (``crease_face``, ``crease_trigger``, ``crease_error``: the
-    criterion's accuracy), ``threshold_value``, ``meaning``, and the slot ``branch`` ("" not
-    computed) and ``koiter`` (NaN). An :class:`~electrogrowth.outcomes.Outcome`:
+    criterion's accuracy), ``threshold_value``, ``meaning``, and, where the spec asks for
+    the amplitude equation (``koiter``), ``branch`` ("supercritical" / "subcritical"; ""
+    not computed), ``koiter`` and ``koiter_error`` (NaN: not computed) and
+    ``branch_note``: why there is no branch (the case is not covered, or "amplitude
+    equation failed: ..." where its solve raised: the point keeps its status, the linear
+    result stands). An :class:`~electrogrowth.outcomes.Outcome`:
     ``unwrap()`` raises the failure, ``outcome_dict()`` gives the shared fields.
     """
 
@@ -86,6 +91,8 @@ class PointResult(Outcome):
     meaning: str = ""
     branch: str = ""
     koiter: float = math.nan
+    koiter_error: float = math.nan
+    branch_note: str = ""
 
 
 def compute_point(params: Tube, spec: ScanSpec) -> PointResult:
@@ -104,7 +111,11 @@ def compute_point(params: Tube, spec: ScanSpec) -> PointResult:
         res = scan_modes(
             params, spec.solve_for, side=spec.side, options=spec.options, rtol=spec.rtol
         )
-        verdict = verdict_fields(res.verdict)
+        verdict = res.verdict
+        note = ""
+        if spec.koiter:
+            verdict, note = branch_of(verdict, params, spec.solve_for)
+        fields = verdict_fields(verdict) | {"branch_note": note}
     except NoBifurcationFound as exc:
         return PointResult(Status.OK, kind=Kind.NONE, message=str(exc), seconds=took())
     except Exception as exc:  # noqa: BLE001 - failures are data
@@ -131,8 +142,25 @@ def compute_point(params: Tube, spec: ScanSpec) -> PointResult:
         runners_up=tuple((int(r.m), int(r.n), float(r.value)) for r in res.runners_up),
         message=_inaccurate_message(c, spec.rtol) if inaccurate else "",
         seconds=took(),
-        **verdict,
+        **fields,
     )
+
+
+#: how branch_note begins where the amplitude equation raised (store.py counts them)
+BRANCH_FAILED = "amplitude equation failed"
+
+
+def branch_of(verdict, params: Tube, solve_for: str):
+    """(verdict with its branch, "") where the amplitude equation covers the point, else
+    (verdict, why not); a failure of the expansion is data too: (verdict, its message)."""
+    from ..bifurcation.koiter import with_branch  # scipy's dense algebra: only when asked
+
+    try:
+        out, note = with_branch(verdict, params, solve_for)
+    except Exception as exc:  # noqa: BLE001 - failures are data; the linear result stands
+        reraise_interrupt(exc)
+        return verdict, f"{BRANCH_FAILED}: {type(exc).__name__}: {exc}"
+    return out, note or ""
 
 
 def verdict_fields(v) -> dict:
@@ -152,6 +180,7 @@ def verdict_fields(v) -> dict:
         "meaning": v.meaning,
         "branch": v.branch or "",
         "koiter": math.nan if v.koiter is None else float(v.koiter),
+        "koiter_error": math.nan if v.koiter_error is None else float(v.koiter_error),
     }
 
 

@@ -1,0 +1,151 @@
+"""What a design is seen to do at onset: the crease of a free face as a competitor of the
+target's wrinkle in the margin, and the verdict of the chosen design (docs/design.md,
+"A crease before the wrinkle").
+
+A crease that comes before the target mode pre-empts it: the face folds sharply before
+any smooth wrinkle, and the pattern aimed at is not what is seen. So the margin counts the
+crease as one more competitor, M = min(M_modes, M_crease) with
+
+    M_crease(x) = s (v_crease(x) - v_T(x)) / |v_T(x)|,
+
+negative where the crease comes first; the best design never prefers a crease-first
+design to one that wrinkles first, and where the crease comes first across the whole
+region the result says so (status CREASE_FIRST). As in the verdict (bifurcation/verdict.py)
+a crease by the field criterion, an early bound, is not counted.
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..basestate.tube import solve_base_state
+from ..bifurcation.crease import crease_margin, crease_onset, face_creases
+from ..bifurcation.scan import ScanOptions, scan_modes
+from ..bifurcation.verdict import advisory, crease_rival
+from ..errors import ConvergenceError, ElectrogrowthError
+from ..interrupts import reraise_interrupt
+from .sensitivity import STEP, _derivative, key_value
+
+CREASE_FIRST = "crease_first"  # first among the wrinkles in its region, but a crease comes first
+
+
+def crease_value(tube, solve_for: str, side, sense: float) -> float:
+    """Where a free face of ``tube`` creases along the control (a mechanical crease);
+    sense * inf where none is reached or the criterion cannot be evaluated."""
+    try:
+        rival = crease_rival(crease_onset(tube, solve_for, side=side))
+    except ElectrogrowthError:
+        return sense * math.inf
+    if rival is None or advisory(rival):
+        return sense * math.inf
+    return rival.value
+
+
+def gap_to_crease(v_target: float, v_crease: float, sense: float) -> float:
+    """M_crease (module docstring): inf where no crease is reached, -inf where the target
+    is never reached."""
+    if not math.isfinite(v_target):
+        return -math.inf
+    if not math.isfinite(v_crease):
+        return math.inf
+    return sense * (v_crease - v_target) / abs(v_target)
+
+
+def crease_sensitivities(tube, solve_for: str, value: float, keys, *, step: float = STEP):
+    """d(v_C)/dp of the crease value v_C for every key p: by implicit differentiation of
+    the onset condition h(v_C, p) = 0, h the drive of the creasing face's trigger minus 1
+    on the base state (crease.py), dv_C/dp = -h_p / h_v, both partials by the
+    Richardson-extrapolated differences of design/sensitivity.py (base states only, no
+    march). Raises ConvergenceError where h_v vanishes."""
+    onset = crease_margin_at(tube, solve_for, value)
+    face, trigger = onset.face, onset.trigger
+
+    def h(t, v: float) -> float:
+        state = solve_base_state(t.at(solve_for, v), rtol=1e-12)
+        return next(f for f in face_creases(state) if f.face == face).drives[trigger] - 1.0
+
+    h_v = _derivative(lambda v: h(tube, v), value, step * max(1.0, abs(value)))
+    if not math.isfinite(h_v) or h_v == 0.0:
+        raise ConvergenceError(f"the crease drive does not change with {solve_for} at {value:g}")
+    out = {}
+    for key in keys:
+        p = key_value(tube, key)
+        h_p = _derivative(lambda q, key=key: h(tube.at(key, q), value), p, step * max(1.0, abs(p)))
+        out[key] = -h_p / h_v
+    return out
+
+
+def crease_sensitivity(tube, solve_for: str, value: float, keys) -> dict:
+    """:func:`crease_sensitivities` where the crease is reached (value finite), else {}
+    (also where the onset condition does not determine it: h_v = 0)."""
+    if not math.isfinite(value):
+        return {}
+    try:
+        return crease_sensitivities(tube, solve_for, value, keys)
+    except ElectrogrowthError:
+        return {}
+
+
+def margin_sensitivity(sense: float, v: float, dv: dict, w: float, dw: dict) -> dict:
+    """dM/dp of M = s (w - v) / |v| = s sgn(v) (w / v - 1) from the sensitivities dv of
+    the target's value v and dw of the competitor's w (a mode or the crease):
+    dM/dp = s sgn(v) (v dw/dp - w dv/dp) / v^2."""
+    scale = sense * math.copysign(1.0, v) / v**2
+    return {p: scale * (v * dw[p] - w * dv[p]) for p in dv if p in dw}
+
+
+def crease_margin_at(tube, solve_for: str, value: float):
+    """The face nearest its crease onset at ``solve_for`` = value (a FaceCrease)."""
+    return crease_margin(solve_base_state(tube.at(solve_for, value), rtol=1e-12))
+
+
+def design_verdict(tube, solve_for: str, side, options: ScanOptions, *, koiter: bool) -> dict:
+    """The verdict of the chosen design (a scan there, as ``electrogrowth critical``):
+    ``kind``, ``value``, ``face``, ``meaning``, the crease (``crease``: value, face,
+    trigger, error_estimate, or None), ``wrinkle`` (its mode and value), and with
+    ``koiter`` the branch (``branch``, ``koiter``, ``koiter_error``; ``branch_note``: why
+    not). A scan that fails gives ``kind`` "" and the ``meaning`` of the failure."""
+    try:
+        verdict = scan_modes(tube, solve_for, side=side, options=options).verdict
+    except Exception as exc:  # noqa: BLE001 - the design stands; its verdict says why not
+        reraise_interrupt(exc)
+        return {"kind": "", "meaning": f"no verdict: {type(exc).__name__}: {exc}"}
+    note = "not asked (--koiter)"
+    if koiter:
+        from ..bifurcation.koiter import with_branch  # scipy's dense algebra: only when asked
+
+        verdict, why = with_branch(verdict, tube, solve_for)
+        note = why or ""
+    d = verdict.as_dict()
+    keep = ("kind", "value", "face", "meaning", "crease", "wrinkle", "branch", "koiter")
+    return {**{k: d[k] for k in keep}, "koiter_error": d["koiter_error"], "branch_note": note}
+
+
+def observable(verdict: dict) -> str:
+    """One line where the chosen design's pattern may not be what is seen: a crease first,
+    a subcritical wrinkle; "" otherwise."""
+    if verdict.get("kind") == "crease":
+        c = verdict["crease"]
+        return (
+            f"warning: at this design the {c['face']} face creases ({c['trigger']}) at"
+            f" {c['value']:.4g} before the wrinkle: the target pattern may not be observed"
+        )
+    if verdict.get("branch") == "subcritical":
+        return (
+            "warning: the wrinkle is subcritical at this design: the tube jumps to large folds"
+            " at onset, so the pattern may not be observed as a small wrinkle"
+        )
+    return ""
+
+
+def region_creases(region, curve) -> list[dict]:
+    """For each interval of the region: the curve's rows in it and how many of them
+    crease first ("none", "part" or "all" of them)."""
+    out = []
+    for iv in region:
+        inside = (curve.x >= iv.lo) & (curve.x <= iv.hi)
+        first = int(curve.crease.first[inside].sum())
+        rows = int(inside.sum())
+        which = "none" if first == 0 else "all" if first == rows else "part"
+        out.append({"crease_first": which, "crease_first_points": [first, rows]})
+    return out

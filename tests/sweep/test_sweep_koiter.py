@@ -1,0 +1,187 @@
+"""The amplitude equation in a sweep ([solve] koiter = true): the branch and the Koiter
+coefficient stored at every point it covers, equal to a direct ``koiter_coefficient``
+call; the reason where it does not cover the point; a failure of the expansion kept as
+data; the option validated; stores written before it still read and resume."""
+
+import json
+import math
+import shutil
+import warnings
+
+import numpy as np
+import pytest
+
+pytest.importorskip("xarray")
+pytest.importorskip("zarr")
+
+import zarr  # noqa: E402
+
+from electrogrowth.bifurcation import koiter as koiter_module  # noqa: E402
+from electrogrowth.bifurcation.koiter import koiter_coefficient  # noqa: E402
+from electrogrowth.errors import BaseStateError, ConfigError  # noqa: E402
+from electrogrowth.model.layers import Layer, Tube  # noqa: E402
+from electrogrowth.outcomes import Status  # noqa: E402
+from electrogrowth.sweep.config import SweepConfig  # noqa: E402
+from electrogrowth.sweep.file import parse_config  # noqa: E402
+from electrogrowth.sweep.run import compute_sweep  # noqa: E402
+from electrogrowth.sweep.store import POINT_VARIABLES, open_results  # noqa: E402
+from electrogrowth.sweep.unit import BRANCH_FAILED, compute_point  # noqa: E402
+
+#: tests/bifurcation/test_koiter.py's film tube: a film [1, 1.1] (mu 1, hoop growth) inside
+#: a substrate to 2 (mu 0.2); its mode (12, 0) is supercritical
+FILM = """\
+length = 1.0
+stretch = 1.0
+[[layers]]
+outer_radius = 1.1
+shear_modulus = 1.0
+growth = [1, 1.0, 1]
+[[layers]]
+outer_radius = 2.0
+shear_modulus = 0.2
+"""
+THETA = "growth[1].theta"
+SWEEP = f"""\
+[tube]
+file = "film.toml"
+[solve]
+for = "{THETA}"
+koiter = true
+[modes]
+m = [10, 14]
+n = [1, 2]
+[grid]
+voltage = [0.0, 0.05]
+"""
+PAPER = """\
+[solve]
+for = "growth"
+koiter = true
+[modes]
+m = [0, 3]
+n = [1, 3]
+extend = false
+[fixed]
+length = 1.0
+[grid]
+outer_radius = [1.5]
+"""
+
+
+def _film_tube() -> Tube:
+    return Tube(
+        [Layer(1.1, shear_modulus=1.0, growth=(1, 1.0, 1)), Layer(2.0, shear_modulus=0.2)],
+        length=1.0,
+        stretch=1.0,
+    )
+
+
+def _config(tmp_path, text=SWEEP) -> SweepConfig:
+    (tmp_path / "film.toml").write_text(FILM)
+    return parse_config(text, source=str(tmp_path / "s.toml"))
+
+
+def test_the_store_declares_the_branch_fields():
+    for name in ("branch", "koiter", "koiter_error", "branch_note"):
+        assert POINT_VARIABLES[name][2], name  # a description
+
+
+@pytest.mark.slow
+def test_sweep_coefficient_is_the_direct_one(tmp_path):
+    """Point 1 (no voltage) is covered: its branch and coefficient are koiter_coefficient's
+    on the same tube; point 2 (Vbar = 0.05) is not: "" with the reason; the summary counts
+    both. ~40 s."""
+    summary = compute_sweep(_config(tmp_path), tmp_path / "out.zarr", workers=1)
+    ds = open_results(tmp_path / "out.zarr")
+    m = int(ds["m"].values[0])
+    assert (m, int(ds["n"].values[0])) == (12, 0)
+    direct = koiter_coefficient(_film_tube(), (m, 0), THETA)
+    assert str(ds["branch"].values[0]) == direct.branch == "supercritical"
+    assert float(ds["koiter"].values[0]) == pytest.approx(direct.coefficient, rel=1e-12)
+    assert float(ds["koiter_error"].values[0]) == pytest.approx(direct.error_estimate, rel=1e-6)
+    assert str(ds["branch_note"].values[0]) == ""
+    assert "supercritical" in str(ds["meaning"].values[0])
+    assert str(ds["branch"].values[1]) == "" and math.isnan(float(ds["koiter"].values[1]))
+    assert "no voltage" in str(ds["branch_note"].values[1])
+    assert summary.verdicts["branch"] == {"supercritical": 1, "not covered": 1}
+    assert "branch: 1 supercritical, 1 not covered" in summary.text()
+
+
+def test_a_point_not_covered_says_why(tmp_path):
+    """The paper's tube in growth: its first wrinkle is not prismatic, so no branch, and
+    the reason; nothing else of the point changes."""
+    config = parse_config(PAPER, source=str(tmp_path / "s.toml"))
+    tube = config.points((slice(0, 1),))[0]
+    with_k = compute_point(tube, config.spec)
+    without = compute_point(tube, SweepConfig.from_dict(_without_koiter(config)).spec)
+    assert with_k.status == Status.OK and with_k.branch == "" and math.isnan(with_k.koiter)
+    assert "prismatic modes" in with_k.branch_note
+    assert without.branch_note == "" and with_k.value == without.value
+
+
+def test_a_failed_expansion_is_data(tmp_path, monkeypatch):
+    """An expansion that raises leaves the point's status and linear result; the failure is
+    in branch_note, and the summary counts it."""
+
+    def boom(*args, **kwargs):
+        raise BaseStateError("no base state at g = 9")
+
+    monkeypatch.setattr(koiter_module, "with_branch", boom)
+    config = parse_config(PAPER, source=str(tmp_path / "s.toml"))
+    point = compute_point(config.points((slice(0, 1),))[0], config.spec)
+    assert point.status == Status.OK and math.isfinite(point.value)
+    assert point.branch_note == f"{BRANCH_FAILED}: BaseStateError: no base state at g = 9"
+    summary = compute_sweep(config, tmp_path / "out.zarr", workers=1)
+    assert summary.verdicts["branch"] == {"failed": 1}
+    assert "branch: 1 failed" in summary.text()
+
+
+def _without_koiter(config: SweepConfig) -> dict:
+    d = config.to_dict()
+    d["solve"].pop("koiter")
+    return d
+
+
+@pytest.mark.parametrize(
+    ("line", "match"),
+    [
+        ("koiter = 1", r"solve.koiter: expected true or false, got an integer 1"),
+        ("koiter = true\nside = 'compression'", None),
+    ],
+)
+def test_koiter_option_is_validated(tmp_path, line, match):
+    text = PAPER.replace("koiter = true", line)
+    if match is None:  # a stretch control: the amplitude equation covers growth only
+        text = text.replace('for = "growth"', 'for = "stretch"')
+        match = r"solve.koiter: the amplitude equation covers a growth control so far"
+    with pytest.raises(ConfigError, match=match):
+        parse_config(text, source=str(tmp_path / "s.toml"))
+
+
+def test_koiter_is_stored_only_when_asked(tmp_path):
+    """A sweep without it normalises as stores written before it did (so they resume);
+    with it, the option round-trips through the stored JSON and counts on resume."""
+    asked = parse_config(PAPER, source=str(tmp_path / "s.toml"))
+    plain = parse_config(PAPER.replace("koiter = true\n", ""), source=str(tmp_path / "s.toml"))
+    assert "koiter" not in json.loads(plain.to_json())["solve"]
+    assert SweepConfig.from_dict(json.loads(asked.to_json())) == asked
+    assert asked.spec.koiter and not plain.spec.koiter
+
+
+def test_a_store_written_before_the_branch_fields_reads_and_resumes(tmp_path):
+    """A store lacking the arrays added with the option (branch_note, koiter_error) is
+    opened, resumed and summed up; the arrays it lacks are skipped, not invented."""
+    config = parse_config(PAPER.replace("koiter = true\n", ""), source=str(tmp_path / "s.toml"))
+    out = tmp_path / "old.zarr"
+    compute_sweep(config, out, workers=1)
+    for name in ("branch_note", "koiter_error"):
+        shutil.rmtree(out / name)
+    group = zarr.open_group(str(out), mode="r+")
+    group["run"][...] = np.zeros_like(group["run"][...])  # as if never computed: resume
+    with warnings.catch_warnings():  # "consolidated metadata is not in the v3 spec"
+        warnings.simplefilter("ignore", category=UserWarning)
+        zarr.consolidate_metadata(str(out))
+    summary = compute_sweep(config, out, workers=1)
+    ds = open_results(out)
+    assert "branch_note" not in ds and "koiter_error" not in ds
+    assert str(ds["status"].values[0]) == "ok" and "what comes first: 1 " in summary.text()
