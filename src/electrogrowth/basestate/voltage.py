@@ -27,8 +27,8 @@ import math
 
 import numpy as np
 from numpy.polynomial import chebyshev as cheb
-from scipy.optimize import brentq
 
+from ..brent import brentq
 from ..errors import BaseStateError, ConvergenceError
 from ..model.materials import Material
 

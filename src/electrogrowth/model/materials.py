@@ -45,7 +45,17 @@ if TYPE_CHECKING:
 
 #: Names this module lends from invariants.py (sympy symbols), imported when first asked for,
 #: so that a process with built-in energies alone never imports sympy.
-_SYMBOLIC = ("I1", "I2", "I4", "I5", "I6", "INVARIANTS", "_energy_derivatives")
+_SYMBOLIC: tuple[str, ...] = (
+    "I1",
+    "I2",
+    "I4",
+    "I5",
+    "I6",
+    "INVARIANTS",
+    "reference_moduli",
+    "_nonzero_at_witness",
+)
+_SYMBOLIC += ("_energy_value", "_energy_gradient", "_energy_derivatives")
 
 
 def __getattr__(name: str):
@@ -184,6 +194,7 @@ class Material:
         Omega(I1, I2, s I4, s I5, s I6) / mu with s = mu eps, mu and eps of the reference
         state (see ``check_units``); stresses are then in units of mu and D of sqrt(mu eps).
 
+        >>> from electrogrowth.model.materials import I1, I5
         >>> mat = Material.normalized("stiff", (I1 - 3) + I5 / 4)
         >>> mat.energy
         I1/2 + I5/2 - 3/2
