@@ -163,7 +163,7 @@ _PROBE = """
 import json, sys
 from electrogrowth.cli.app import main
 status = main(sys.argv[1:])
-print(json.dumps([status, "sympy" in sys.modules]))
+print(json.dumps([status, "sympy" in sys.modules, "scipy.optimize" in sys.modules]))
 """
 
 
@@ -184,11 +184,13 @@ print(json.dumps([status, "sympy" in sys.modules]))
 )  # fmt: skip
 def test_builtin_energies_never_import_sympy(argv, sympy):
     """A fresh process with built-in energies computes a critical value or a state without
-    sympy (0.5-0.6 s of its start); a user's energy text still goes through sympy."""
+    sympy (0.5-0.6 s of its start) and without scipy.optimize (electrogrowth.brent); a user's
+    energy text still goes through sympy."""
     done = subprocess.run(
         [sys.executable, "-c", _PROBE, *argv], capture_output=True, text=True, cwd=ROOT
     )
     assert done.returncode == 0, done.stderr
-    status, imported = json.loads(done.stdout.strip().splitlines()[-1])
+    status, imported, optimize = json.loads(done.stdout.strip().splitlines()[-1])
     assert status == 0
     assert imported is sympy
+    assert not optimize
