@@ -29,12 +29,11 @@ import functools
 import math
 
 import numpy as np
-import sympy as sp
 from numpy.polynomial import chebyshev as cheb
 
 from ..errors import ConvergenceError
 from ..model.layers import Layer, Tube
-from ..model.materials import INVARIANTS, MODULI_NAMES, Material, neo_hookean_moduli
+from ..model.materials import MODULI_NAMES, Material, neo_hookean_moduli
 from .voltage import energy_kind
 
 ORDERS = (8, 12, 16, 24, 32, 48, 64, 96, 128, 192, 256)  # Gauss-Legendre nodes per layer
@@ -51,9 +50,7 @@ def _gauss(n: int):
 @functools.lru_cache(maxsize=64)
 def numeric_energy(material: Material):
     """Numeric Omega(I1, ..., I6), or None for a polynomial energy (finite everywhere)."""
-    if material.energy.is_polynomial(*INVARIANTS):
-        return None
-    return sp.lambdify(INVARIANTS, material.energy, "numpy")
+    return material.omega()
 
 
 def chebyshev(f, a: float, b: float, tol: float, what: str, unit=1.0) -> np.ndarray:

@@ -26,12 +26,11 @@ import functools
 import math
 
 import numpy as np
-import sympy as sp
 from numpy.polynomial import chebyshev as cheb
-from scipy.optimize import brentq
 
+from ..brent import brentq
 from ..errors import BaseStateError, ConvergenceError
-from ..model.materials import I1, I5, INVARIANTS, Material
+from ..model.materials import Material
 
 GAUSS_ORDERS = (16, 24, 32, 48, 64, 96, 128, 192, 256, 384)  # Gauss-Legendre node counts tried
 _SCAN_RATIO, _SCAN_SPAN = 1.08, 1e3  # threshold scan: lambda_i0 1.08^k up to 1e3 lambda_i0
@@ -48,17 +47,13 @@ def _gauss(n: int):
 @functools.lru_cache(maxsize=64)
 def energy_kind(material: Material) -> str:
     """'neo-hookean', 'ideal' (W(I1, I2) + I5/2) or 'general', decided once per energy."""
-    if sp.expand(material.energy - (I1 - 3) / 2 - I5 / 2) == 0:
-        return "neo-hookean"
-    return "ideal" if material.is_ideal_dielectric() else "general"
+    return material.kind()
 
 
 @functools.lru_cache(maxsize=64)
 def _energy(material: Material):
     """Numeric Omega(I1, ..., I6), or None for a polynomial energy (finite everywhere)."""
-    if material.energy.is_polynomial(*INVARIANTS):
-        return None
-    return sp.lambdify(INVARIANTS, material.energy, "numpy")
+    return material.omega()
 
 
 @dataclasses.dataclass(frozen=True)

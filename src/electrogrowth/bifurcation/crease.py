@@ -29,12 +29,10 @@ import dataclasses
 import functools
 import math
 
-import sympy as sp
-
 from ..basestate.tube import solve_base_state
 from ..continuation.events import FULL, brent, threshold_between
 from ..errors import BaseStateError, ConvergenceError, ElectrogrowthError
-from ..model.invariants import I1, I2, I5
+from ..model.builtin_energies import BuiltinEnergy
 from ..model.layers import Tube
 from ..outcomes import Kind, Outcome, Status
 from .along import TubeAt
@@ -130,8 +128,14 @@ def ratio_is_exact(material) -> bool:
     """Is the neo-Hookean crease ratio exact for ``material``? For an ideal dielectric
     whose elastic energy is linear in I1 and I2 (neo-Hookean, Mooney-Rivlin): in the plane
     of a crease it is a neo-Hookean energy (docs/derivation-crease.md section 2)."""
+    if isinstance(material.definition, BuiltinEnergy):  # known without sympy
+        return material.definition.linear
     if not material.is_ideal_dielectric():
         return False
+    import sympy as sp
+
+    from ..model.invariants import I1, I2, I5
+
     elastic = sp.expand(material.energy - I5 / 2)
     if not elastic.free_symbols <= {I1, I2} or not elastic.is_polynomial(I1, I2):
         return False

@@ -18,7 +18,6 @@ import math
 from collections.abc import Callable
 
 import numpy as np
-from scipy.optimize import minimize_scalar
 
 from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError
@@ -128,6 +127,8 @@ def worst_direction(
     def one(x):
         v = sign * problem.target_scalar(x)
         return v if math.isfinite(v) else math.inf
+
+    from scipy.optimize import minimize_scalar  # 0.5 s of imports: only where it is used
 
     for i in minima:
         a, b = psi[max(i - 1, 0)], psi[min(i + 1, grid - 1)]

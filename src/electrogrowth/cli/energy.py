@@ -9,7 +9,6 @@ would be in the wrong units.
 from __future__ import annotations
 
 from ..errors import ParameterError
-from ..model.energy_text import energy_material
 from ..model.materials import Material
 
 
@@ -22,4 +21,6 @@ def energy_from_args(args) -> Material:
                 f"{flag} = {value:g} is a parameter of a built-in --material, not of --energy;"
                 " write it into the expression"
             )
+    from ..model.energy_text import energy_material  # sympy: only for a user's energy
+
     return energy_material(args.energy)

@@ -16,8 +16,8 @@ import math
 from collections.abc import Callable, Iterator
 
 import numpy as np
-from scipy.optimize import brentq, minimize_scalar
 
+from ..brent import brentq
 from ..errors import ConvergenceError
 
 #: a sample lower than this fraction of both neighbours may hide a dip below zero
@@ -53,6 +53,8 @@ def turned(previous, value, sense) -> bool:
 def dip_bracket(f, a: float, b: float) -> tuple[float, float] | None:
     """Does f (positive at a and b) dip to zero or below between them? (a, where it does)
     from a bounded minimisation, or None: the first root lies between them."""
+    from scipy.optimize import minimize_scalar  # 0.5 s of imports: only for a dip
+
     lo, hi = min(a, b), max(a, b)
     res = minimize_scalar(
         f, bounds=(lo, hi), method="bounded", options={"xatol": DIP_XATOL * max(1.0, abs(lo))}

@@ -42,8 +42,6 @@ import math
 from collections.abc import Callable
 
 import numpy as np
-import scipy.linalg
-import scipy.optimize
 
 from .._types import FloatArray
 from ..basestate.tube import solve_base_state
@@ -263,6 +261,8 @@ def collocation_target(
     pairs = check_pairs(pairs)
     M = collocation_matrix(state, m, n, nodes=nodes, pairs=pairs)
     sign, _ = np.linalg.slogdet(M)
+    import scipy.linalg  # the peer method alone needs it: not in every process
+
     s = scipy.linalg.svdvals(M, check_finite=False)
     s0 = stable_det_sign(pairs, nodes) if _layers(state) == 1 else 1.0
     return float(s0 * sign * s[-1] / s[0])
@@ -334,6 +334,8 @@ def critical_collocation(
             f"no sign change of the collocation target for {solve_for} in [{a}, {b}] "
             f"(mode m={m}, n={n}); widen or move the bracket"
         )
+    import scipy.optimize
+
     root, info = scipy.optimize.brentq(target, a, b, xtol=xtol, full_output=True)
     if not info.converged:
         raise ConvergenceError(

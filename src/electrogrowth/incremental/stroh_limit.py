@@ -54,7 +54,6 @@ import math
 
 import numpy as np
 import numpy.typing as npt
-import scipy.linalg
 
 from ..errors import ParameterError
 from ..model.materials import MODULI_INDEX
@@ -206,6 +205,8 @@ def decaying_solutions(N, face: str) -> tuple[FloatArray, FloatArray, float]:
     N = np.asarray(N, float)
     if not np.all(np.isfinite(N)):
         return np.full((8, 4), np.nan), np.full(4, np.nan), 0.0
+    import scipy.linalg  # the short-wave limit alone needs it: not in every process
+
     T, Z, sdim = scipy.linalg.schur(N, output="real", sort="lhp" if face == "inner" else "rhp")
     ev = _schur_eigenvalues(T)  # in Schur order: the decaying ones first
     margin = float(np.min(np.abs(ev.real)) / max(np.max(np.abs(ev)), 1e-300))

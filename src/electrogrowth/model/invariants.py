@@ -1,13 +1,15 @@
-"""The invariants of an isotropic electro-elastic energy and its derivatives in them.
+"""The invariants of an isotropic electro-elastic energy as sympy symbols, and what sympy does
+with a user's energy in them.
 
     I1 = tr C,  I2 = [(tr C)^2 - tr C^2] / 2,  I4 = D~.D~,  I5 = D~.C D~,  I6 = D~.C^2 D~
 
 (paper Sec. 2, eq. 8; C = F_e^T F_e, D~ the electric displacement in the virtual
-configuration) as sympy symbols, their values at principal stretches (l1, l2, l3) and a
-radial current displacement d, and an energy's first and second derivatives in them,
-lambdified once per energy and process (:class:`.materials.Material` reads them). Also the
-reference-state moduli mu and eps of an energy, and a cheap proof that an expression is not
-identically zero.
+configuration). An energy's first and second derivatives in them, lambdified once per energy
+and process (:class:`.materials.Material` reads them; built-in energies use generated code
+instead, model/builtin_energies.py), the checks of an energy (its symbols, mu = eps = 1 in the
+reference state), its rescaling to those units, its kind (neo-Hookean, ideal, general), and a
+cheap proof that an expression is not identically zero. Imported only for a user's energy
+or when a sympy expression is asked for: sympy costs a fresh process 0.5-0.6 s.
 """
 
 from __future__ import annotations
@@ -18,6 +20,9 @@ from collections.abc import Callable
 
 import numpy as np
 import sympy as sp
+
+from ..errors import MaterialError
+from .energy_grammar import parse_energy, shorten
 
 I1, I2, I4, I5, I6 = INVARIANTS = sp.symbols("I1 I2 I4 I5 I6", real=True)
 
@@ -37,9 +42,6 @@ def _energy_derivatives(energy: sp.Expr) -> Callable:
 def _energy_gradient(energy: sp.Expr) -> Callable:
     """Lambdify dOmega/dI_k alone: all that stress and field need (no Hessian)."""
     return sp.lambdify(INVARIANTS, [sp.diff(energy, s) for s in INVARIANTS], "numpy")
-
-
-_NO_HESSIAN = [0.0] * 25  # placeholder W for the forms that do not read it (stress, field)
 
 
 @functools.lru_cache(maxsize=64)
@@ -81,21 +83,83 @@ def _nonzero_at_witness(expr: sp.Expr) -> bool:
     return value.imag == 0 and math.isfinite(value.real) and abs(value.real) > 1e-12
 
 
-def _all_finite(values) -> bool:
-    """Every entry of every value finite (a lambdified function returns plain numbers for
-    constant derivatives, arrays for the others)."""
-    return all(
-        math.isfinite(v) if isinstance(v, (int, float)) else bool(np.isfinite(v).all())
-        for v in values
-    )
-
-
-def _invariants(l1, l2, l3, d):
-    dt2 = (d / l1) ** 2
+def numeric_forms(energy: sp.Expr) -> tuple[Callable, Callable, Callable]:
+    """(Omega, gradient, (gradient, Hessian)) of a sympy energy as numeric functions of the
+    invariants, each lambdified when first called (the Hessian only if needed)."""
     return (
-        l1**2 + l2**2 + l3**2,
-        (l1 * l2) ** 2 + (l2 * l3) ** 2 + (l3 * l1) ** 2,
-        dt2,
-        dt2 * l1**2,
-        dt2 * l1**4,
+        lambda *inv: _energy_value(energy)(*inv),
+        lambda *inv: _energy_gradient(energy)(*inv),
+        lambda *inv: _energy_derivatives(energy)(*inv),
     )
+
+
+def energy_kind(energy: sp.Expr) -> str:
+    """'neo-hookean', 'ideal' (W(I1, I2) + I5/2) or 'general'."""
+    if sp.expand(energy - (I1 - 3) / 2 - I5 / 2) == 0:
+        return "neo-hookean"
+    electric = {I4, I5, I6}
+    rest = energy - I5 / 2
+    # Cheap answers first (simplify takes up to a second per energy): sympy's automatic
+    # cancellation settles the built-in energies (simplify cannot add a symbol), and a
+    # derivative of rest in I4, I5 or I6 that is non-zero at one point proves that rest
+    # depends on the field (simplify cannot remove that symbol).
+    if not (rest.free_symbols & electric):
+        return "ideal"
+    if any(_nonzero_at_witness(rest.diff(s)) for s in (I4, I5, I6)):
+        return "general"
+    return "general" if sp.simplify(rest).free_symbols & electric else "ideal"
+
+
+def checked_energy(name: str, energy, check_units: bool) -> sp.Expr:
+    """The sympy expression of a Material's ``energy`` (an expression or its text), checked:
+    symbols and (check_units) mu = eps = 1 in the reference state; MaterialError if not."""
+    # Text is read by the whitelist grammar, never by sympify (data never executes);
+    # invariants are matched by name, so sp.Symbol("I1") works too.
+    names = {str(s): s for s in INVARIANTS}
+    if isinstance(energy, str):
+        expr = parse_energy(energy)
+    elif isinstance(energy, sp.Expr):
+        expr = energy
+    else:
+        raise MaterialError(
+            f"energy of {shorten(name)!r} is {type(energy).__name__}; give a sympy"
+            ' expression in I1, I2, I4, I5, I6 or its text, e.g. "(I1 - 3)/2 + I5/2"'
+        )
+    expr = expr.subs({s: names[str(s)] for s in expr.free_symbols if str(s) in names})
+    extra = expr.free_symbols - set(INVARIANTS)
+    if extra:
+        raise MaterialError(
+            f"energy of {shorten(name)!r} has unknown symbols {sorted(map(str, extra))};"
+            " use only I1, I2, I4, I5, I6 with parameters substituted"
+        )
+    if check_units:
+        mu, eps = reference_moduli(expr)
+        for what, value, why in (
+            ("shear modulus mu = 2 (dOmega/dI1 + dOmega/dI2)", mu, "stresses"),
+            ("permittivity eps = 1 / (2 (dOmega/dI4 + dOmega/dI5 + dOmega/dI6))", eps, "D"),
+        ):
+            if not abs(value - 1.0) <= 1e-12:
+                raise MaterialError(
+                    f"energy of {shorten(name)!r} has {what} = {value:.12g} in the"
+                    f" reference state, not 1: every result is in units mu = eps = 1, so {why}"
+                    " would be in the wrong units; rescale it, or build it with"
+                    " Material.normalized(name, energy)"
+                )
+    return expr
+
+
+def normalized_energy(name: str, raw: sp.Expr) -> sp.Expr:
+    """``raw`` rescaled to mu = eps = 1 (Material.normalized); MaterialError if its mu or
+    eps is not finite and positive."""
+    mu, eps = reference_moduli(raw)
+    for what, value in (("shear modulus", mu), ("permittivity", eps)):
+        if not (math.isfinite(value) and value > 0):
+            raise MaterialError(
+                f"energy of {shorten(name)!r} has {what} {value:.6g} in the reference state;"
+                " need a finite positive value to rescale to it"
+            )
+    at = {I1: 3, I2: 3, I4: 0, I5: 0, I6: 0}  # the same values, kept exact for sympy
+    mu = sp.nsimplify(2 * (sp.diff(raw, I1) + sp.diff(raw, I2)).subs(at))
+    s = mu / sp.nsimplify(2 * sum(sp.diff(raw, x) for x in (I4, I5, I6)).subs(at))
+    scaled = raw.subs({I4: s * I4, I5: s * I5, I6: s * I6}, simultaneous=True) / mu
+    return sp.expand(scaled) if raw.is_polynomial(*INVARIANTS) else scaled

@@ -32,29 +32,39 @@ import dataclasses
 import functools
 import math
 from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-import sympy as sp
 
 from ..errors import MaterialError, ParameterError
 from . import _chain_rule
-from .energy_grammar import parse_energy, shorten
-from .invariants import (
-    _NO_HESSIAN,
-    I1,
-    I2,
-    I4,
-    I5,
-    I6,
-    INVARIANTS,
-    _all_finite,
-    _energy_derivatives,
-    _energy_gradient,
-    _energy_value,
-    _invariants,
-    _nonzero_at_witness,
-    reference_moduli,
+from .builtin_energies import BuiltinEnergy
+
+if TYPE_CHECKING:
+    import sympy as sp
+
+#: Names this module lends from invariants.py (sympy symbols), imported when first asked for,
+#: so that a process with built-in energies alone never imports sympy.
+_SYMBOLIC: tuple[str, ...] = (
+    "I1",
+    "I2",
+    "I4",
+    "I5",
+    "I6",
+    "INVARIANTS",
+    "reference_moduli",
+    "_nonzero_at_witness",
 )
+_SYMBOLIC += ("_energy_value", "_energy_gradient", "_energy_derivatives")
+
+
+def __getattr__(name: str):
+    if name in _SYMBOLIC:
+        from . import invariants
+
+        return getattr(invariants, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
 
 #: Order of the moduli returned by :meth:`Material.moduli` (indices 1 = r, 2 = theta,
 #: 3 = z; ``G`` stands for Gamma_0). ``Apiqj`` multiplies L_jq = du_j/dx_q in the updated
@@ -87,7 +97,38 @@ MODULI_NAMES = (
 MODULI_INDEX = {name: i for i, name in enumerate(MODULI_NAMES)}
 
 
-@dataclasses.dataclass(frozen=True)
+def shorten(text: str) -> str:
+    """``text`` cut for an error message (energy_grammar.shorten, imported when needed)."""
+    from .energy_grammar import shorten
+
+    return shorten(text)
+
+
+_NO_HESSIAN = [0.0] * 25  # placeholder W for the forms that do not read it (stress, field)
+
+
+def _invariants(l1, l2, l3, d):
+    """(I1, I2, I4, I5, I6) at principal stretches (l1, l2, l3) and radial current d."""
+    dt2 = (d / l1) ** 2
+    return (
+        l1**2 + l2**2 + l3**2,
+        (l1 * l2) ** 2 + (l2 * l3) ** 2 + (l3 * l1) ** 2,
+        dt2,
+        dt2 * l1**2,
+        dt2 * l1**4,
+    )
+
+
+def _all_finite(values) -> bool:
+    """Every entry of every value finite (a numeric form returns plain numbers for
+    constant derivatives, arrays for the others)."""
+    return all(
+        math.isfinite(v) if isinstance(v, (int, float)) else bool(np.isfinite(v).all())
+        for v in values
+    )
+
+
+@dataclasses.dataclass(frozen=True, init=False)
 class Material:
     """An ideal or non-ideal isotropic incompressible electro-elastic material.
 
@@ -123,43 +164,29 @@ class Material:
     """
 
     name: str
-    energy: sp.Expr
-    check_units: bool = dataclasses.field(default=True, kw_only=True, compare=False, repr=False)
+    #: What the energy was built from: a sympy expression, or a BuiltinEnergy (evaluated by
+    #: generated code, its sympy expression built only when ``energy`` is asked for).
+    definition: Any = dataclasses.field(repr=False)
+    check_units: bool = dataclasses.field(default=True, compare=False, repr=False)
 
-    def __post_init__(self):
-        # Text is read by the whitelist grammar, never by sympify (data never executes);
-        # invariants are matched by name, so sp.Symbol("I1") works too.
-        names = {str(s): s for s in INVARIANTS}
-        if isinstance(self.energy, str):
-            expr = parse_energy(self.energy)
-        elif isinstance(self.energy, sp.Expr):
-            expr = self.energy
-        else:
-            raise MaterialError(
-                f"energy of {shorten(self.name)!r} is {type(self.energy).__name__}; give a sympy"
-                ' expression in I1, I2, I4, I5, I6 or its text, e.g. "(I1 - 3)/2 + I5/2"'
-            )
-        expr = expr.subs({s: names[str(s)] for s in expr.free_symbols if str(s) in names})
-        extra = expr.free_symbols - set(INVARIANTS)
-        if extra:
-            raise MaterialError(
-                f"energy of {shorten(self.name)!r} has unknown symbols {sorted(map(str, extra))};"
-                " use only I1, I2, I4, I5, I6 with parameters substituted"
-            )
-        object.__setattr__(self, "energy", expr)
-        if self.check_units:
-            mu, eps = reference_moduli(expr)
-            for what, value, why in (
-                ("shear modulus mu = 2 (dOmega/dI1 + dOmega/dI2)", mu, "stresses"),
-                ("permittivity eps = 1 / (2 (dOmega/dI4 + dOmega/dI5 + dOmega/dI6))", eps, "D"),
-            ):
-                if not abs(value - 1.0) <= 1e-12:
-                    raise MaterialError(
-                        f"energy of {shorten(self.name)!r} has {what} = {value:.12g} in the"
-                        f" reference state, not 1: every result is in units mu = eps = 1, so {why}"
-                        " would be in the wrong units; rescale it, or build it with"
-                        " Material.normalized(name, energy)"
-                    )
+    def __init__(self, name: str, energy, *, check_units: bool = True):
+        object.__setattr__(self, "name", name)
+        object.__setattr__(self, "check_units", check_units)
+        if not isinstance(energy, BuiltinEnergy):  # checked there, by sympy
+            from .invariants import checked_energy
+
+            energy = checked_energy(name, energy, check_units)
+        object.__setattr__(self, "definition", energy)
+
+    @property
+    def energy(self) -> sp.Expr:
+        """Omega as a sympy expression in I1, I2, I4, I5, I6 (imports sympy)."""
+        d = self.definition
+        return d.expression() if isinstance(d, BuiltinEnergy) else d
+
+    def __repr__(self) -> str:
+        d = self.definition
+        return f"Material(name={self.name!r}, energy={d if isinstance(d, BuiltinEnergy) else d})"
 
     @classmethod
     def normalized(cls, name: str, energy) -> Material:
@@ -167,37 +194,49 @@ class Material:
         Omega(I1, I2, s I4, s I5, s I6) / mu with s = mu eps, mu and eps of the reference
         state (see ``check_units``); stresses are then in units of mu and D of sqrt(mu eps).
 
+        >>> from electrogrowth.model.materials import I1, I5
         >>> mat = Material.normalized("stiff", (I1 - 3) + I5 / 4)
         >>> mat.energy
         I1/2 + I5/2 - 3/2
         """
-        raw = cls(name, energy, check_units=False).energy
-        mu, eps = reference_moduli(raw)
-        for what, value in (("shear modulus", mu), ("permittivity", eps)):
-            if not (math.isfinite(value) and value > 0):
-                raise MaterialError(
-                    f"energy of {shorten(name)!r} has {what} {value:.6g} in the reference state;"
-                    " need a finite positive value to rescale to it"
-                )
-        at = {I1: 3, I2: 3, I4: 0, I5: 0, I6: 0}  # the same values, kept exact for sympy
-        mu = sp.nsimplify(2 * (sp.diff(raw, I1) + sp.diff(raw, I2)).subs(at))
-        s = mu / sp.nsimplify(2 * sum(sp.diff(raw, x) for x in (I4, I5, I6)).subs(at))
-        scaled = raw.subs({I4: s * I4, I5: s * I5, I6: s * I6}, simultaneous=True) / mu
-        return cls(name, sp.expand(scaled) if raw.is_polynomial(*INVARIANTS) else scaled)
+        from .invariants import normalized_energy
+
+        return cls(name, normalized_energy(name, cls(name, energy, check_units=False).energy))
+
+    def numeric(self) -> tuple[Callable, Callable, Callable]:
+        """(Omega, its gradient, (gradient, Hessian)) in the invariants, as numeric functions
+        of (I1, I2, I4, I5, I6): generated code for a built-in energy, lambdified sympy
+        (once per energy and process) for any other."""
+        return _numeric(self.definition)
+
+    def kind(self) -> str:
+        """'neo-hookean' (Omega = (I1 - 3)/2 + I5/2), 'ideal' (W(I1, I2) + I5/2) or
+        'general'."""
+        return _kind(self.definition)
+
+    def omega(self) -> Callable | None:
+        """Numeric Omega(I1, ..., I6), or None for a polynomial energy (finite everywhere)."""
+        d = self.definition
+        if isinstance(d, BuiltinEnergy):
+            return None if d.polynomial else self.numeric()[0]
+        from .invariants import INVARIANTS
+
+        return None if d.is_polynomial(*INVARIANTS) else self.numeric()[0]
 
     def _derivs(self, l1, l2, l3, d, *, hessian: bool = True):
         l1, l2, l3, d = np.broadcast_arrays(*(np.asarray(x, float) for x in (l1, l2, l3, d)))
         inv = _invariants(l1, l2, l3, d)
+        value, gradient, derivatives = self.numeric()
         # Overflow is reported below as one ParameterError, not as NumPy warnings.
         with np.errstate(all="ignore"):
-            omega = np.asarray(self._evaluate(_energy_value, inv), dtype=float)
+            omega = np.asarray(self._evaluate(value, inv), dtype=float)
             if not _all_finite([omega]):
                 self._outside(inv, [omega], "energy")
             if not hessian:
-                w = self._evaluate(_energy_gradient, inv)
+                w = self._evaluate(gradient, inv)
                 W = []
             else:
-                w, W = self._evaluate(_energy_derivatives, inv)
+                w, W = self._evaluate(derivatives, inv)
                 W = [x for row in W for x in row]
         if not _all_finite(w) or not _all_finite(W):
             self._outside(inv, [*w, *W], "energy's derivatives")
@@ -207,11 +246,11 @@ class Material:
         W = [np.broadcast_to(np.asarray(x, float), l1.shape) for x in W]
         return (l1, l2, l3, d, w, W)
 
-    def _evaluate(self, lambdified, inv):
-        """A lambdified function of the energy at the invariants ``inv``; an integer too
+    def _evaluate(self, function, inv):
+        """A numeric function of the energy at the invariants ``inv``; an integer too
         large for a double in it is a ParameterError, not an OverflowError."""
         try:
-            return lambdified(self.energy)(*inv)
+            return function(*inv)
         except OverflowError:
             raise ParameterError(
                 f"the energy {shorten(self.name)!r} overflows a double at I1 = "
@@ -255,23 +294,34 @@ class Material:
 
     def is_ideal_dielectric(self) -> bool:
         """True when Omega = W(I1, I2) + I5 / 2 (E = D / eps, paper Sec. 3.1)."""
-        electric = {I4, I5, I6}
-        rest = self.energy - I5 / 2
-        # Cheap answers first (simplify takes up to a second per energy): sympy's automatic
-        # cancellation settles the built-in energies (simplify cannot add a symbol), and a
-        # derivative of rest in I4, I5 or I6 that is non-zero at one point proves that rest
-        # depends on the field (simplify cannot remove that symbol).
-        if not (rest.free_symbols & electric):
-            return True
-        if any(_nonzero_at_witness(rest.diff(s)) for s in (I4, I5, I6)):
-            return False
-        return not (sp.simplify(rest).free_symbols & electric)
+        return self.kind() != "general"
+
+
+@functools.lru_cache(maxsize=64)
+def _numeric(definition) -> tuple[Callable, Callable, Callable]:
+    if isinstance(definition, BuiltinEnergy):
+        forms = definition.numeric()
+        if forms is not None:
+            return forms
+        definition = definition.expression()
+    from .invariants import numeric_forms
+
+    return numeric_forms(definition)
+
+
+@functools.lru_cache(maxsize=64)
+def _kind(definition) -> str:
+    if isinstance(definition, BuiltinEnergy):
+        return definition.kind
+    from .invariants import energy_kind
+
+    return energy_kind(definition)
 
 
 @functools.lru_cache(maxsize=1)
 def neo_hookean() -> Material:
     """Ideal neo-Hookean dielectric, Omega = (I1 - 3)/2 + I5/2 (paper eq. neo-Hookean)."""
-    return Material("neo-hookean", (I1 - 3) / 2 + I5 / 2)
+    return Material("neo-hookean", BuiltinEnergy("neo-hookean"))
 
 
 def gent(jm: float = 97.2) -> Material:
@@ -282,8 +332,7 @@ def gent(jm: float = 97.2) -> Material:
     """
     if isinstance(jm, bool) or not isinstance(jm, (int, float)) or not np.isfinite(jm) or jm <= 0:
         raise ParameterError(f"Gent parameter jm = {jm!r} is invalid; need 0 < jm < inf")
-    jm = sp.nsimplify(jm) if float(jm).is_integer() else sp.Float(jm)
-    return Material(f"gent(jm={float(jm):g})", -jm / 2 * sp.log(1 - (I1 - 3) / jm) + I5 / 2)
+    return Material(f"gent(jm={float(jm):g})", BuiltinEnergy("gent", float(jm)))
 
 
 def mooney_rivlin(alpha: float = 0.5) -> Material:
@@ -293,9 +342,8 @@ def mooney_rivlin(alpha: float = 0.5) -> Material:
     """
     if isinstance(alpha, bool) or not isinstance(alpha, (int, float)) or not (0 < alpha <= 1):
         raise ParameterError(f"Mooney-Rivlin alpha = {alpha!r} is invalid; need 0 < alpha <= 1")
-    a = sp.Float(alpha)
     return Material(
-        f"mooney-rivlin(alpha={alpha:g})", (a * (I1 - 3) + (1 - a) * (I2 - 3)) / 2 + I5 / 2
+        f"mooney-rivlin(alpha={alpha:g})", BuiltinEnergy("mooney-rivlin", float(alpha))
     )
 
 
