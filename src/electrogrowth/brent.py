@@ -8,7 +8,8 @@ none of them. This is the same algorithm in Python, the same floating-point oper
 the same order, so a root is the same double after the same function calls
 (tests/test_brent.py compares the two on random equations); the errors are SciPy's too
 (ValueError without a sign change or at a NaN, RuntimeError after maxiter iterations), so
-callers see no difference.
+callers see no difference. Ported from SciPy's brentq.c (BSD 3-Clause licence, copyright
+the SciPy developers), which follows Brent's ALGOL procedure ``zero``.
 """
 
 from __future__ import annotations
