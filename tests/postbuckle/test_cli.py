@@ -1,8 +1,10 @@
-"""``electrogrowth postbuckle``: the JSON record, the files of --out, and the one-line
-message without the fe extra."""
+"""``electrogrowth postbuckle``: the JSON record, the files of --out (the cross-section's and
+the meridian's), and the one-line messages without the fe extra or for a mode no model
+covers."""
 
 import json
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -19,6 +21,7 @@ shear_modulus = 10.0
 [[layers]]
 outer_radius = 2.0
 """
+ROOT = Path(__file__).resolve().parents[2]
 ARGS = ["postbuckle", "--solve-for", "growth", "--layer", "1", "--component", "theta"]
 
 
@@ -56,3 +59,46 @@ def test_json_and_files_of_a_charged_pressurised_bilayer(tmp_path, capsys):
     assert branch["control"][0] < rec["onset_fe"] and branch["amplitude"][0] < 1e-3
     names = {p.name for p in (tmp_path / "out").iterdir()}
     assert {"branch.csv", "branch.png", "folding.png", "shape-0.vtu"} <= names
+
+
+RINGS = ["postbuckle", "--tube", "examples/mucosa-rings.toml", "--solve-for", "growth"]
+RINGS += ["--layer", "1", "--component", "z"]
+
+
+@pytest.mark.parametrize(
+    "mode, extra",
+    [(["0", "0"], []), (["3", "2"], []), (["1"], []), (["0", "5"], ["--hoop", "3"])],
+    ids=["breathing", "wrinkle", "m-1", "hoop-for-meridian"],
+)
+def test_a_mode_no_model_covers_is_one_line(capsys, monkeypatch, mode, extra):
+    pytest.importorskip("skfem")
+    monkeypatch.chdir(ROOT)
+    status = main([*RINGS, "--mode", *mode, *extra])
+    out, err = capsys.readouterr()
+    assert status == 2 and out == ""
+    assert len(err.strip().splitlines()) == 1
+
+
+@pytest.mark.slow
+def test_meridian_json_and_files(tmp_path, capsys, monkeypatch):
+    """The axisymmetric mode (0, 5) of examples/mucosa-rings.toml on 7 x 2 elements: the FE
+    onset within 2e-3 of the linear one (1.1e-3 measured), the perfect branch supercritical
+    and stable, the longitudinal section written."""
+    pytest.importorskip("skfem")
+    monkeypatch.chdir(ROOT)
+    argv = [*RINGS, "--mode", "0", "5", "--density", "5", "--axial", "2", "--points", "2"]
+    status = main([*argv, "--amplitude", "0.02", "--json", "--out", str(tmp_path / "out")])
+    out, err = capsys.readouterr()
+    assert status == 0, err
+    rec = json.loads(out)
+    assert (rec["m"], rec["n"]) == (0, 5)
+    assert abs(rec["onset_fe"] - rec["onset_linear"]) < 2e-3 * rec["onset_linear"]
+    assert rec["mesh"]["axial_elements"] == 2 and rec["mesh"]["window"] == "L/5"
+    assert rec["mesh"]["elements"] == (2 + 5) * 2
+    branch = rec["branch"]
+    assert branch["amplitude"] == pytest.approx([0.0, 0.01, 0.02])
+    assert rec["curvature"] > 0 and branch["control"][2] > branch["control"][1] > rec["onset_fe"]
+    assert all(v > 0 for v in branch["lowest_eigenvalue"][1:])
+    assert rec["ended"] is None
+    names = {p.name for p in (tmp_path / "out").iterdir()}
+    assert {"branch.csv", "branch.png", "folding.png", "shape-2.vtu"} <= names

@@ -1,5 +1,6 @@
-"""``electrogrowth postbuckle``: the post-buckled cross-section of a prismatic mode (m, 0) by
-finite elements, from the package's onset (the ``fe`` extra)."""
+"""``electrogrowth postbuckle``: the post-buckled cross-section of a prismatic mode (m, 0), or
+meridian of an axisymmetric mode (0, n), by finite elements, from the package's onset (the
+``fe`` extra)."""
 
 from __future__ import annotations
 
@@ -24,10 +25,12 @@ def configure_postbuckle(parser: argparse.ArgumentParser) -> None:
     mode = parser.add_argument_group("mode and branch")
     mode.add_argument(
         "--mode",
-        type=bounded_int(2, 200),
+        nargs="+",
+        type=bounded_int(0, 200),
         metavar="M",
-        help="the circumferential wavenumber m of the prismatic mode (m, 0) (default: the"
-        " critical prismatic mode of a scan)",
+        help="the mode: M (or M 0) the prismatic mode (m, 0), m >= 2, on the cross-section;"
+        " 0 N the axisymmetric mode (0, n), n >= 1, on the meridian (default: the critical"
+        " prismatic mode of a scan)",
     )
     mode.add_argument(
         "--amplitude",
@@ -35,8 +38,8 @@ def configure_postbuckle(parser: argparse.ArgumentParser) -> None:
         default=0.05,
         metavar="A",
         help="follow the branch up to this fold amplitude, units R_i: the inner (or, where"
-        " the mode is larger, the outer) face's cos(m theta) radial displacement (default"
-        " 0.05)",
+        " the mode is larger, the outer) face's cos(m theta) (axisymmetric: cos(k z))"
+        " radial displacement (default 0.05)",
     )
     mode.add_argument(
         "--points",
@@ -64,14 +67,23 @@ def configure_postbuckle(parser: argparse.ArgumentParser) -> None:
         "--hoop",
         type=bounded_int(1, 1000),
         metavar="N",
-        help="elements along the sector pi/m (default from --density, at least 4)",
+        help="prismatic modes: elements along the sector pi/m (default from --density, at"
+        " least 4)",
+    )
+    num.add_argument(
+        "--axial",
+        type=bounded_int(1, 1000),
+        metavar="N",
+        help="axisymmetric modes: elements along the window L/n, half an axial wavelength"
+        " (default from --density, at least 4)",
     )
     parser.add_argument("--json", action="store_true", help="print the result as JSON")
     parser.add_argument(
         "--out",
         metavar="DIR",
-        help="write branch.csv, branch.png, folding.png and the deformed ring of each branch"
-        " point as shape-K.vtu (VTK, needs meshio: the vtk extra) into DIR",
+        help="write branch.csv, branch.png, folding.png and the deformed ring (axisymmetric:"
+        " longitudinal section) of each branch point as shape-K.vtu (VTK, needs meshio: the"
+        " vtk extra) into DIR",
     )
     add_quiet_option(parser)
 
@@ -87,17 +99,21 @@ def run_postbuckle(args) -> int:
 
     check_side_option(args)
     tube, control = control_of(args)
-    m = args.mode if args.mode is not None else _critical_prismatic(tube, control, args)
+    if args.mode is not None:
+        m, n = _mode_of(args.mode)
+    else:
+        m, n = _critical_prismatic(tube, control, args), 0
     say = _say if enabled(args) else None
     try:
         result = postbuckle(
             tube,
-            m,
+            (m, n),
             control,
             amplitude=args.amplitude,
             points=args.points,
             density=args.density,
             hoop=args.hoop,
+            axial=args.axial,
             imperfection=args.imperfection,
             progress=say,
         )
@@ -118,7 +134,7 @@ def run_postbuckle(args) -> int:
         print(json.dumps(result.as_dict(), indent=2))
     else:
         print(
-            f"mode ({m}, 0), {control}: linear onset {result.onset_linear:.8g}, FE onset"
+            f"mode ({m}, {n}), {control}: linear onset {result.onset_linear:.8g}, FE onset"
             f" {result.onset_fe:.8g} (relative difference"
             f" {(result.onset_fe - result.onset_linear) / abs(result.onset_linear):.2e}),"
             f" mesh {result.mesh.elements} elements, {result.unknowns} unknowns"
@@ -134,6 +150,18 @@ def _say(text: str) -> None:
     print(f"electrogrowth: {text}", file=sys.stderr, flush=True)
 
 
+def _mode_of(values: list[int]) -> tuple[int, int]:
+    """(m, n) of --mode M or --mode M N, ParameterError unless a model covers it."""
+    m, n = (values[0], 0) if len(values) == 1 else (values[0], values[1])
+    if len(values) > 2 or not ((m >= 2 and n == 0) or (m == 0 and n >= 1)):
+        shown = " ".join(str(v) for v in values)
+        raise ParameterError(
+            f"--mode {shown} is out of range; valid: M or M 0 with M >= 2 (the cross-section),"
+            " 0 N with N >= 1 (the meridian)"
+        )
+    return m, n
+
+
 def _critical_prismatic(tube, control, args) -> int:
     from ..bifurcation.scan import scan_modes
 
@@ -147,13 +175,14 @@ def _critical_prismatic(tube, control, args) -> int:
     c = scan.critical
     raise ParameterError(
         f"the scan's critical mode is ({c.m}, {c.n}) and no prismatic mode (m, 0) is among"
-        " its runners-up; the cross-section model covers n = 0: give --mode M"
+        " its runners-up; give --mode M (the cross-section, (m, 0)) or --mode 0 N (the"
+        " meridian, (0, n))"
     )
 
 
 def _write(result, out: Path) -> None:
     from ..figures.postbuckle import plot_branch, plot_folding
-    from ..postbuckle.shape import ring
+    from ..postbuckle.shape import whole
 
     out.mkdir(parents=True, exist_ok=True)
     with open(out / "branch.csv", "w", newline="") as f:
@@ -176,8 +205,10 @@ def _write(result, out: Path) -> None:
     section = result.section
     for k, x in enumerate(result.states):
         section.set_tube(result.tube.at(result.solve_for, result.control[k]))
-        pts, cells, layer = ring(section, x)
-        points = np.vstack([pts, np.zeros(pts.shape[1])]).T
+        pts, cells, layer = whole(section, x)
+        zero = np.zeros(pts.shape[1])
+        # the ring in the plane z = 0; the longitudinal section in the plane y = 0
+        points = np.vstack([pts, zero] if result.n == 0 else [pts[0], zero, pts[1]]).T
         meshio.write(
             out / f"shape-{k}.vtu",
             meshio.Mesh(points, [("quad", cells)], cell_data={"layer": [layer + 1]}),

@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.collections import PolyCollection
 
-from ..postbuckle.shape import ring
+from ..postbuckle.shape import whole
 from .labels import axis_label
 from .style import new_figure, wrapped_title
 
@@ -41,27 +41,30 @@ def plot_branch(result):
         ls=":",
         label="onset + curvature a$^2$",
     )
-    ax.set_xlabel(f"fold amplitude a / $R_i$ ({result.face} face, cos m$\\theta$)", fontsize=8)
+    wave = "cos m$\\theta$" if result.n == 0 else "cos kz"
+    ax.set_xlabel(f"fold amplitude a / $R_i$ ({result.face} face, {wave})", fontsize=8)
     ax.set_ylabel(axis_label(result.solve_for), fontsize=8)
     ax.legend(fontsize=7, frameon=False)
-    wrapped_title(ax, f"post-buckled branch of mode (m, n) = ({result.m}, 0)")
+    wrapped_title(ax, f"post-buckled branch of mode (m, n) = ({result.m}, {result.n})")
     return fig
 
 
 def plot_folding(result, count: int = 5):
-    """A strip of ``count`` cross-sections along the branch (first to last point), each the
-    whole ring in its current shape; a Figure."""
+    """A strip of ``count`` shapes along the branch (first to last point), each the whole
+    ring (a prismatic mode) or the whole longitudinal section (an axisymmetric mode) in its
+    current shape; a Figure."""
     picks = np.unique(np.linspace(0, len(result.states) - 1, count).round().astype(int))
     fig, axes = new_figure(1.9 * len(picks), 2.3, 1, len(picks))
     section = result.section
-    extent = 0.0
+    extent = top = 0.0
     for ax, k in zip(axes[0], picks):
         section.set_tube(result.tube.at(result.solve_for, result.control[k]))
-        pts, cells, layer = ring(section, result.states[k])
+        pts, cells, layer = whole(section, result.states[k])
         polys = pts.T[cells]
         colours = [LAYER_COLOURS[i % len(LAYER_COLOURS)] for i in layer]
         ax.add_collection(PolyCollection(polys, facecolors=colours, edgecolors="none"))
         extent = max(extent, np.abs(pts).max())
+        top = max(top, pts[1].max())
         ax.set_aspect("equal")
         ax.set_xticks([])
         ax.set_yticks([])
@@ -71,6 +74,10 @@ def plot_folding(result, count: int = 5):
         )
     for ax in axes[0]:
         ax.set_xlim(-1.05 * extent, 1.05 * extent)
-        ax.set_ylim(-1.05 * extent, 1.05 * extent)
-    fig.suptitle(f"folding of mode (m, n) = ({result.m}, 0), current shapes", fontsize=8)
+        if result.n == 0:
+            ax.set_ylim(-1.05 * extent, 1.05 * extent)
+        else:  # the longitudinal section, z from 0 to the current length
+            ax.set_ylim(-0.02 * top, 1.02 * top)
+    what = "folding" if result.n == 0 else "wrinkling"
+    fig.suptitle(f"{what} of mode (m, n) = ({result.m}, {result.n}), current shapes", fontsize=8)
     return fig

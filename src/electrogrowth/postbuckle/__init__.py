@@ -1,7 +1,9 @@
-"""Beyond onset: the post-buckled cross-section of a tube by finite elements (the ``fe``
-extra, scikit-fem). The model (section.py: mesh, unknowns, energy; energy.py: the density and
-its derivatives), the unperturbed path (newton.py), the onset (onset.py), the branch
-(branch.py), the shapes (shape.py) and the entry point :func:`postbuckle` (api.py).
+"""Beyond onset: the post-buckled cross-section (prismatic modes (m, 0)) or meridian
+(axisymmetric modes (0, n)) of a tube by finite elements (the ``fe`` extra, scikit-fem). The
+models (wall.py: the mesh, unknowns and assembly they share; section.py and meridian.py:
+their kinematics and pressures; energy.py: the density and its derivatives), the
+unperturbed path (newton.py), the onset (onset.py), the branch (branch.py), the shapes
+(shape.py) and the entry point :func:`postbuckle` (api.py).
 
 Its names are imported on first use, so that the shapes and the figures of a result load
 without the finite-element library.

@@ -1,6 +1,7 @@
-"""The deformed cross-section: the sector's vertices moved, and the whole ring by reflecting
-the sector about its first ray and turning the pair by 2 pi / m (the symmetry it was solved
-with)."""
+"""The deformed wall: the cross-section's sector moved, and the whole ring by reflecting the
+sector about its first ray and turning the pair by 2 pi / m (the symmetry it was solved
+with); the meridian's window moved, and the tube's whole longitudinal section by reflecting
+it about its end planes."""
 
 from __future__ import annotations
 
@@ -55,3 +56,37 @@ def face_curve(section, x: np.ndarray, face: str) -> np.ndarray:
     curve = np.hstack(parts)
     # sector 0 starts at the reflected half (-pi/m .. 0): rotate so it starts at angle 0
     return np.hstack([curve, curve[:, :1]])
+
+
+def meridian_vertices(meridian, x: np.ndarray) -> np.ndarray:
+    """Current (r, z) of the meridian window's mesh vertices, shape (2, nvertices)."""
+    R, Z = meridian.mesh.p
+    uR = x[meridian.basis.nodal_dofs[0]]
+    uZ = x[meridian.basis.nodal_dofs[1]]
+    return np.array([R + uR, float(meridian.tube.stretch) * Z + uZ])
+
+
+def meridian_tube(meridian, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The tube's longitudinal section over its whole length: (points (2, n) as (x, z),
+    quadrilaterals (n_cells, 4), layer of each cell). The window is reflected about its end
+    planes n times along z (the symmetry it was solved with), and the meridian drawn on both
+    sides of the axis (x = +-r)."""
+    pts = meridian_vertices(meridian, x)
+    cells = meridian.mesh.t.T
+    height = float(meridian.tube.stretch) * meridian.extent
+    n = pts.shape[1]
+    all_pts, all_cells, layers = [], [], []
+    for j in range(meridian.n):
+        z = pts[1] if j % 2 == 0 else height - pts[1]
+        flip = j % 2  # a reflection reverses the cells' orientation
+        for side in (1.0, -1.0):
+            all_pts.append(np.array([side * pts[0], z + j * height]))
+            c = cells if (side > 0) != bool(flip) else cells[:, ::-1]
+            all_cells.append(c + n * (len(all_pts) - 1))
+            layers.append(meridian.layer_of)
+    return np.hstack(all_pts), np.vstack(all_cells), np.concatenate(layers)
+
+
+def whole(model, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The whole ring of a cross-section, or the whole longitudinal section of a meridian."""
+    return ring(model, x) if model.kind == "section" else meridian_tube(model, x)
