@@ -11,7 +11,8 @@ pytest.importorskip("zarr")
 
 from electrogrowth.sweep.file import parse_config  # noqa: E402
 from electrogrowth.sweep.run import compute_sweep  # noqa: E402
-from electrogrowth.sweep.store import POINT_VARIABLES, open_results  # noqa: E402
+from electrogrowth.sweep.schema import POINT_VARIABLES  # noqa: E402
+from electrogrowth.sweep.store import open_results  # noqa: E402
 
 SWEEP = """\
 [solve]

@@ -24,7 +24,8 @@ from electrogrowth.outcomes import Status  # noqa: E402
 from electrogrowth.sweep.config import SweepConfig  # noqa: E402
 from electrogrowth.sweep.file import parse_config  # noqa: E402
 from electrogrowth.sweep.run import compute_sweep  # noqa: E402
-from electrogrowth.sweep.store import POINT_VARIABLES, open_results  # noqa: E402
+from electrogrowth.sweep.schema import POINT_VARIABLES  # noqa: E402
+from electrogrowth.sweep.store import open_results  # noqa: E402
 from electrogrowth.sweep.unit import BRANCH_FAILED, compute_point  # noqa: E402
 
 #: tests/bifurcation/test_koiter.py's film tube: a film [1, 1.1] (mu 1, hoop growth) inside

@@ -1,0 +1,120 @@
+"""What a sweep's store holds: every variable of a grid point with its type, its value
+before the point is computed and its description (the attributes users read in the store),
+and the names and symbols of the swept parameters. store.py writes and reads them.
+"""
+
+from __future__ import annotations
+
+import math
+
+#: Coordinate attributes of the tube parameters.
+LABELS = {
+    "outer_radius": ("outer radius", "R̄ₒ = Rₒ/Rᵢ"),
+    "length": ("length", "L/Rᵢ"),
+    "growth": ("growth factor", "g"),
+    "stretch": ("axial stretch", "λ_z"),
+    "voltage": ("voltage", "V̄"),
+    "pressure": ("inner pressure", "P_i"),
+    "force": ("axial force", "F"),
+}
+
+
+def label(name: str) -> tuple[str, str]:
+    """(description, symbol) of a parameter; a layered tube's control or key as itself."""
+    return LABELS.get(name, (name, name))
+
+
+#: name -> (dtype, value before the point is computed, description)
+POINT_VARIABLES = {
+    "critical_value": (
+        "f8",
+        math.nan,
+        "critical value of the solved-for parameter: at the"
+        " bifurcation, or where the axisymmetric state is lost",
+    ),
+    "m": ("i4", -1, "circumferential wavenumber of the critical mode (-1: none)"),
+    "n": (
+        "i4",
+        -1,
+        "axial half-wavenumber of the critical mode, k = n pi / (lambda_z L) (-1: none)",
+    ),
+    "kind": (
+        object,
+        "",
+        "bifurcation | threshold (the axisymmetric state is lost first) |"
+        " surface (the short-wave limit m, n -> inf at a face comes first)"
+        " | none (no instability in the range)",
+    ),
+    "error_estimate": ("f8", math.nan, "|value - value at 100 times looser accuracy|"),
+    "surface_instability": (
+        "?",
+        False,
+        "the critical point is the short-wave (surface) limit m, n -> infinity at a face",
+    ),
+    "status": (
+        object,
+        "pending",
+        "ok | inaccurate (error estimate above the accuracy asked, see message) |"
+        " failed (see message) | error (a bug) | pending",
+    ),
+    "message": (
+        object,
+        "",
+        "why the point failed or is inaccurate, or why no instability was found",
+    ),
+    "remedy": (object, "", "what to try where the point failed"),
+    "seconds": ("f8", math.nan, "wall time of the point's mode scan"),
+    "verdict": (
+        object,
+        "",
+        "what comes first: bifurcation (a smooth wrinkle) | crease (a free face creases) |"
+        " surface | threshold | none",
+    ),
+    "verdict_value": ("f8", math.nan, "the value of the solved-for parameter where it comes"),
+    "verdict_face": (object, "", "the face of a crease or surface instability that comes first"),
+    "wrinkle_value": ("f8", math.nan, "the first wrinkle of the linear analysis (NaN: none)"),
+    "crease_value": (
+        "f8",
+        math.nan,
+        "where a free face reaches the crease onset (neo-Hookean criterion; NaN: not reached)",
+    ),
+    "crease_face": (object, "", "inner | outer: the face that creases first"),
+    "crease_trigger": (
+        object,
+        "",
+        "prismatic (hoop compression) | axial (axial compression) | field (electric field)",
+    ),
+    "crease_error": ("f8", math.nan, "the crease value's spread over the criterion's accuracy"),
+    "threshold_value": ("f8", math.nan, "where the axisymmetric state is lost (NaN: not found)"),
+    "meaning": (object, "", "the verdict in one line"),
+    "branch": (
+        object,
+        "",
+        "supercritical | subcritical: the wrinkle's branch by its amplitude equation"
+        " ([solve] koiter = true) | '' (not computed: see branch_note)",
+    ),
+    "koiter": (
+        "f8",
+        math.nan,
+        "the Koiter coefficient c_2 of control = c_cr + c_2 eps^2, eps = peak u_r / R_i"
+        " (NaN: not computed)",
+    ),
+    "koiter_error": ("f8", math.nan, "the Koiter coefficient's change from a coarser mesh"),
+    "branch_note": (
+        object,
+        "",
+        "why branch is empty: a case the amplitude equation does not cover, or"
+        " 'amplitude equation failed: ...' ('' where computed or not asked)",
+    ),
+}
+RUNNER_VARIABLES = {
+    "runner_up_value": ("f8", math.nan, "critical value of the next modes, in order"),
+    "runner_up_m": ("i4", -1, "m of the next modes"),
+    "runner_up_n": ("i4", -1, "n of the next modes"),
+}
+MARK = (
+    "run",
+    "i2",
+    0,
+    "completion mark: number of the run that computed the point (0: not yet computed)",
+)
