@@ -23,11 +23,11 @@ from __future__ import annotations
 import dataclasses
 import math
 
-from ..bifurcation.critical import critical_value
 from ..bifurcation.scan import ScanOptions, scan_modes
 from ..errors import ElectrogrowthError
 from ..outcomes import Kind
 from . import onset
+from .margins import Margins
 from .onset import CREASE_FIRST, gap_to_crease
 from .sensitivity import sensitivities
 from .sequence import Interval, ModeSequence, check_vary, mode_sequence
@@ -125,48 +125,6 @@ class Design:
         return list(self.region_crease) or [{} for _ in self.region]
 
 
-class _Margins:
-    """Critical values of single modes at designs x, cached, and the margin M(x)."""
-
-    def __init__(self, tube, solve_for, key, side) -> None:
-        self.tube, self.solve_for, self.key, self.side = tube, solve_for, key, side
-        self.sense = -1.0 if side == "compression" else 1.0
-        self.cache: dict = {}
-        self.creases: dict = {}
-
-    def crease(self, x: float) -> float:
-        """Where a free face creases at x (sense * inf: none; design/onset.py)."""
-        if x not in self.creases:
-            at = self.tube.at(self.key, x)
-            self.creases[x] = onset.crease_value(at, self.solve_for, self.side, self.sense)
-        return self.creases[x]
-
-    def value(self, mode, x: float) -> float:
-        """The first critical value of ``mode`` at x; +-inf (never) if the threshold or no
-        bifurcation comes first."""
-        if (mode, x) not in self.cache:
-            try:
-                at = self.tube.at(self.key, x)
-                c = critical_value(at, mode[0], mode[1], self.solve_for, side=self.side)
-                v = c.value if c.kind == Kind.BIFURCATION else self.sense * math.inf
-            except ElectrogrowthError:
-                v = self.sense * math.inf
-            self.cache[mode, x] = v
-        return self.cache[mode, x]
-
-    def margin(self, mode, x: float, v_next: float) -> float:
-        v = self.value(mode, x)
-        return self.sense * (v_next - v) / abs(v) if math.isfinite(v) else -math.inf
-
-    def best_margin(self, mode, others, x: float) -> tuple[float, tuple | None]:
-        """(M, the next mode) at x over the competitors ``others`` and the crease."""
-        by_crease = gap_to_crease(self.value(mode, x), self.crease(x), self.sense)
-        if not others:
-            return by_crease, None
-        nxt = min(others, key=lambda o: self.sense * self.value(o, x))
-        return min(self.margin(mode, x, self.value(nxt, x)), by_crease), nxt
-
-
 def _ranked(res) -> list[tuple[tuple[int, int], float]]:
     """The modes of a scan in the order they are reached: [((m, n), value), ...]."""
     out = []
@@ -219,7 +177,7 @@ def prescribe(
     if sequence is None:
         sequence = mode_sequence(tube, solve_for, vary, side=side, options=options, points=points)
     side = sequence.side
-    margins = _Margins(tube, sequence.solve_for, key, side)
+    margins = Margins(tube, sequence.solve_for, key, side)
     scan_opts = dataclasses.replace(options, top=max(options.top, 6))
 
     def scan(x):  # the modes in the order reached; none where the scan fails
@@ -311,7 +269,7 @@ def _unreached(goal: Target, key, sequence, region) -> Design:
     )  # fmt: skip
 
 
-def _best_in_region(region, grid, goal: Target, margins: _Margins, scan):
+def _best_in_region(region, grid, goal: Target, margins: Margins, scan):
     """(x, target mode, competitors) of the widest margin over the region's intervals."""
     best = None
     for iv in region:
@@ -338,7 +296,7 @@ def _best_in_region(region, grid, goal: Target, margins: _Margins, scan):
     return None if best is None else best[1:]
 
 
-def _closest(grid, goal: Target, margins: _Margins, scan, lo, hi):
+def _closest(grid, goal: Target, margins: Margins, scan, lo, hi):
     """(x, target mode, competitors ahead of it) where the best target mode comes closest
     to first: M < 0 maximised."""
     scored = []
@@ -381,7 +339,7 @@ def _competitors(mode, ranked, goal: Target) -> list:
     return out
 
 
-def _refine(mode, others, a, b, x0, goal: Target, margins: _Margins, scan):
+def _refine(mode, others, a, b, x0, goal: Target, margins: Margins, scan):
     """Maximise M over [a, b] by bounded Brent from the grid's best x0; a competitor that a
     scan at the optimum finds but ``others`` lacks is added and the maximisation repeated."""
     from scipy.optimize import minimize_scalar
