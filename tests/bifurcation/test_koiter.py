@@ -287,8 +287,8 @@ def test_uncovered_cases_raise_one_line():
         koiter_coefficient("film")
     with pytest.raises(ParameterError, match="prismatic modes"):
         koiter_coefficient(Tube.uniform(1.5, 1.0, 1.0, 1.0, 0.0))
-    with pytest.raises(ParameterError, match="prismatic modes"):
-        koiter_coefficient(Tube.uniform(1.5, 1.0, 1.0, 1.0, 0.0), mode=(0, 1), control="growth")
+    with pytest.raises(ParameterError, match="axisymmetric modes"):
+        koiter_coefficient(Tube.uniform(1.5, 1.0, 1.0, 1.0, 0.0), mode=(2, 1), control="growth")
     with pytest.raises(ParameterError, match="only a growth control"):
         koiter_coefficient(Tube.uniform(1.5, 1.0, 1.0, 1.0, 0.0), mode=(4, 0), control="voltage")
     with pytest.raises(ParameterError, match="no voltage"):

@@ -34,4 +34,4 @@ def test_a_case_not_covered_says_why_in_one_line(capsys):
     assert main([*args, "--mode", "0", "1", "--koiter", "--json"]) == 0
     rec = json.loads(capsys.readouterr().out)
     assert rec["branch"] is None and rec["koiter"] is None
-    assert "prismatic modes" in rec["branch_note"] and "\n" not in rec["branch_note"]
+    assert "no voltage" in rec["branch_note"] and "\n" not in rec["branch_note"]
