@@ -216,3 +216,17 @@ def test_thin_film_tube_tends_to_the_flat_coefficient():
         values.append(e.coefficient / (K * e.inner_face) ** 2)
     assert values[0] > values[1] > -flat.coefficient
     assert 2 * values[1] - values[0] == pytest.approx(-flat.coefficient, rel=2e-3)
+
+
+@pytest.mark.slow
+def test_coefficient_converges_spectrally():
+    """g_2 of mode (0, 3) at 12, 16, 24 and 32 points a segment: each change smaller than
+    the last, down to the floor of the finite-difference A' (measured 15.26130949,
+    15.261320096, 15.2613201556, 15.2613201582)."""
+    values = [
+        axisymmetric_expansion(_film_tube(0.1), 3, AXIAL, nodes=N).coefficient
+        for N in (12, 16, 24, 32)
+    ]
+    steps = np.abs(np.diff(values))
+    assert steps[0] > steps[1] > steps[2]
+    assert values[3] == pytest.approx(values[2], rel=1e-9)

@@ -3,10 +3,11 @@ branch is super- or subcritical (docs/derivation-koiter.md).
 
 Covered so far: the flat film on a half-space (koiter_film.py: both incompressible
 neo-Hookean, plane strain, uniaxial compression of the film alone or of the whole bilayer),
-the limit of a thin stiff film on a thick tube; and a tube's prismatic modes (m, 0)
-(neo-Hookean layers, constant growth, axial stretch prescribed, no voltage or pressure) in a
-growth control, c = c_c + c_2 eps^2 with eps = max |u_r| / R_i, supercritical when c_2 > 0.
-Other cases raise a one-line :class:`~electrogrowth.errors.ParameterError`.
+the limit of a thin stiff film on a thick tube; and a tube's prismatic modes (m, 0) and
+axisymmetric modes (0, n) (koiter_tube.py: neo-Hookean layers, constant growth, axial
+stretch prescribed, no voltage or pressure) in a growth control, c = c_c + c_2 eps^2 with
+eps = max |u_r| / R_i, supercritical when c_2 > 0. Wrinkles (m, n) with m, n >= 1 and
+other cases raise a one-line :class:`~electrogrowth.errors.ParameterError`.
 """
 
 from __future__ import annotations
@@ -75,15 +76,20 @@ def koiter_coefficient(problem, mode=None, control: str = "stretch") -> KoiterRe
     from the mode phi, the second-order correction psi (harmonics 0 and 2) of
     A(c_c) psi = -C[phi, phi, .] / 2 and
 
-        c_2 = 2 A(c_c)[psi, psi] / A'(c_c)[phi, phi].
+        c_2 = (2 A(c_c)[psi, psi] - 4 E4(phi)) / A'(c_c)[phi, phi],
+
+    E4 the quartic part of the energy (non-zero only for the axisymmetric family, whose
+    incompressibility constraint is cubic in the displacement).
 
     Parameters
     ----------
     problem : FilmOnHalfSpace or Tube
         A flat film on a half-space, or a tube (neo-Hookean layers with constant growth,
-        the axial stretch prescribed, no voltage or pressure: its prismatic modes).
-    mode : None or (m, 0)
-        The film: None (K_c maximises lambda_c). A tube: the prismatic mode (m, 0), m >= 2.
+        the axial stretch prescribed, no voltage or pressure).
+    mode : None or (m, 0) or (0, n)
+        The film: None (K_c maximises lambda_c). A tube: a prismatic mode (m, 0), m >= 2,
+        or an axisymmetric mode (0, n), n >= 1 (axial wavenumber n pi / L in the
+        reference length).
     control : str
         The film: "stretch", the compressive stretch lambda. A tube: a growth control
         ("growth", "growth[K]", "growth[K].theta", ...).
@@ -108,7 +114,7 @@ def koiter_coefficient(problem, mode=None, control: str = "stretch") -> KoiterRe
     if not isinstance(problem, FilmOnHalfSpace):
         raise ParameterError(
             f"the amplitude equation covers a flat film on a half-space (FilmOnHalfSpace) "
-            f"and a tube's prismatic modes so far, not {type(problem).__name__}"
+            f"and a tube's prismatic and axisymmetric modes so far, not {type(problem).__name__}"
         )
     if mode is not None or control != "stretch":
         raise ParameterError(
