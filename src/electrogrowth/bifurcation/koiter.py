@@ -5,9 +5,9 @@ Covered so far: the flat film on a half-space (koiter_film.py: both incompressib
 neo-Hookean, plane strain, uniaxial compression of the film alone or of the whole bilayer),
 the limit of a thin stiff film on a thick tube; and a tube's prismatic modes (m, 0) and
 axisymmetric modes (0, n) (koiter_tube.py: neo-Hookean layers, constant growth, axial
-stretch prescribed, no voltage or pressure) in a growth control, c = c_c + c_2 eps^2 with
-eps = max |u_r| / R_i, supercritical when c_2 > 0. Wrinkles (m, n) with m, n >= 1 and
-other cases raise a one-line :class:`~electrogrowth.errors.ParameterError`.
+stretch prescribed, no pressure; a radial voltage for the prismatic modes) in a growth
+control, c = c_c + c_2 eps^2 with eps = max |u_r| / R_i, supercritical when c_2 > 0.
+Wrinkles (m, n) with m, n >= 1 and other cases raise a one-line :class:`~electrogrowth.errors.ParameterError`.
 """
 
 from __future__ import annotations
@@ -78,14 +78,14 @@ def koiter_coefficient(problem, mode=None, control: str = "stretch") -> KoiterRe
 
         c_2 = (2 A(c_c)[psi, psi] - 4 E4(phi)) / A'(c_c)[phi, phi],
 
-    E4 the quartic part of the energy (non-zero only for the axisymmetric family, whose
-    incompressibility constraint is cubic in the displacement).
+    E4 the quartic part of the energy (non-zero for the axisymmetric family, whose
+    incompressibility constraint is cubic in the displacement, and under a voltage).
 
     Parameters
     ----------
     problem : FilmOnHalfSpace or Tube
         A flat film on a half-space, or a tube (neo-Hookean layers with constant growth,
-        the axial stretch prescribed, no voltage or pressure).
+        the axial stretch prescribed, no pressure; a voltage for prismatic modes only).
     mode : None or (m, 0) or (0, n)
         The film: None (K_c maximises lambda_c). A tube: a prismatic mode (m, 0), m >= 2,
         or an axisymmetric mode (0, n), n >= 1 (axial wavenumber n pi / L in the
@@ -137,7 +137,7 @@ def _tube_result(tube: Tube, mode, control: str) -> KoiterResult:
     family = _tube_family(mode)
     if not (isinstance(control, str) and control.startswith("growth")):
         raise ParameterError(f"control = {control!r}: only a growth control is covered so far")
-    why = _tube_not_covered(tube)
+    why = _tube_not_covered(tube, family)
     if why:
         raise ParameterError(f"the tube's amplitude equation needs {why}")
     solve = tube_expansion if family == "prismatic" else axisymmetric_expansion
@@ -170,12 +170,16 @@ def _tube_family(mode) -> str:
     )
 
 
-def _tube_not_covered(tube: Tube) -> str:
+def _tube_not_covered(tube: Tube, family: str) -> str:
     """What the tube lacks for the expansion, in words ("" when covered)."""
     if tube.stretch is None:
         return "the axial stretch prescribed (not the axial force)"
-    if tube.voltage != 0 or tube.inner_pressure != 0 or tube.outer_pressure != 0:
-        return "no voltage and no pressure"
+    if tube.inner_pressure != 0 or tube.outer_pressure != 0:
+        return "no pressure"
+    if tube.voltage != 0 and family != "prismatic":
+        return (
+            "no voltage for the axisymmetric family (the voltage is covered for prismatic modes)"
+        )
     for ply in tube.layers:
         if ply.graded:
             return "constant growth in every layer"

@@ -16,6 +16,7 @@ import numpy as np
 
 from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError
+from ..incremental.dielectric_forms import DielectricForms
 from ..incremental.meridian_forms import MeridianForms
 from ..incremental.polar_forms import PolarForms, rings
 from ..model.layers import Tube
@@ -48,21 +49,28 @@ def control_derivative(stiffness, c: float):
 
 def singular_point(stiffness, start: float, what: str):
     """(c, phi): Newton's method on the eigenvalue of A(c) nearest zero, from ``start``,
-    with the symmetric eigenvalue derivative phi^T A' phi."""
-    c, phi = start, None
+    with the symmetric eigenvalue derivative phi^T A' phi; converged at a step below
+    1e-12 |c|, or below 1e-9 |c| once the steps stop shrinking (the rounding floor of the
+    eigenvalue, ~1e-11 |c| for a tube under a voltage)."""
+    c, phi, last = start, None, np.inf
     for _ in range(20):
         sigma, phi = _nearest_zero(stiffness(c), phi)
         step = sigma / (phi @ control_derivative(stiffness, c) @ phi)
         c -= step
-        if abs(step) < 1e-12 * max(1.0, abs(c)):
+        scale = max(1.0, abs(c))
+        if abs(step) < 1e-12 * scale or (abs(step) < 1e-9 * scale and abs(step) > last / 2):
             return c, _nearest_zero(stiffness(c), phi)[1]
+        last = abs(step)
     raise ConvergenceError(f"the critical {what} did not converge")
 
 
 def tube_expansion(tube: Tube, m: int, control: str, *, nodes: int = 24) -> TubeExpansion:
     """The Koiter coefficient of the prismatic mode (m, 0) of a neo-Hookean tube at fixed
     axial stretch, in a growth control: the forms of incremental/polar_forms.py (no
-    quartic term), the correction at harmonics 0 and 2m."""
+    quartic term), the correction at harmonics 0 and 2m; under a voltage
+    :func:`dielectric_expansion`."""
+    if tube.voltage != 0:
+        return dielectric_expansion(tube, m, control, nodes=nodes)
     first = PolarForms.build(rings(tube, m, nodes), m, MODE)
     second = PolarForms.build(rings(tube, m, nodes), m, SECOND)
 
@@ -94,18 +102,36 @@ def axisymmetric_expansion(tube: Tube, n: int, control: str, *, nodes: int = 24)
     cut = rings(tube, max(K, 1.0), nodes)
     first = MeridianForms.build(cut, K, MODE)
     second = MeridianForms.build(cut, K, SECOND)
-
-    def A(c, form=first):
-        return form.stiffness(solve_base_state(tube.at(control, c)))
-
     start = critical_value(tube, 0, n, control, rtol=1e-12).value
-    c, phi = singular_point(A, start, f"{control} of mode (0, {n})")
+    return _expand(tube, control, first, second, start, f"{control} of mode (0, {n})")
+
+
+def dielectric_expansion(tube: Tube, m: int, control: str, *, nodes: int = 24) -> TubeExpansion:
+    """The Koiter coefficient of the prismatic mode (m, 0) of a tube of ideal neo-Hookean
+    dielectrics under its radial voltage, in a growth control: the forms of
+    incremental/dielectric_forms.py (the potential phi an extra field, a quartic term)."""
+    cut = rings(tube, m, nodes)
+    first = DielectricForms.build(cut, m, MODE + ((3, 1),))
+    second = DielectricForms.build(cut, m, SECOND + ((3, 0), (3, 2)))
+    start = critical_value(tube, m, 0, control, rtol=1e-12).value
+    return _expand(tube, control, first, second, start, f"{control} of mode ({m}, 0)")
+
+
+def _expand(tube, control, first, second, start, what) -> TubeExpansion:
+    """c_2 = (2 A[psi, psi] - 4 E4(phi)) / A'[phi, phi] on monomial forms: the critical
+    value refined where A(c) is singular, the mode scaled to max |u_r| = 1, the correction
+    A psi = -C[phi, phi, .] / 2 = -grad E3(phi) on ``second``'s harmonics."""
+
+    def A(c):
+        return first.stiffness(solve_base_state(tube.at(control, c)))
+
+    c, phi = singular_point(A, start, what)
     phi = phi / first.peak_radial(phi, first.slices[0])[1]
     state = solve_base_state(tube.at(control, c))
     f1 = first.fields(phi)
     L = second.lagrangian(state)
     A2 = second.hessian(L[2])
-    psi = np.linalg.solve(A2, -second.gradient(L[3], f1))  # -C[phi, phi, .] / 2
+    psi = np.linalg.solve(A2, -second.gradient(L[3], f1))
     quartic = first.energy(L[4], f1)  # E4(phi) = D[phi, phi, phi, phi] / 24
     c2 = (2 * (psi @ A2 @ psi) - 4 * quartic) / (phi @ control_derivative(A, c) @ phi)
     return TubeExpansion(float(c), float(c2), float(start), float(phi[first.slices[0]][0]))

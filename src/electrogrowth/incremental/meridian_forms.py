@@ -21,12 +21,12 @@ of each ring, c on the interior nodes, as in polar_forms.py.
 from __future__ import annotations
 
 import dataclasses
-import itertools
 
 import numpy as np
 
 from .._types import FloatArray
 from ..errors import ParameterError
+from .monomial_forms import MonomialForms
 from .plane_forms import _segment_maps
 from .polar_forms import Ring, _Seg, peak_on_rings
 
@@ -35,7 +35,7 @@ FIELDS = ("rR", "rZ", "zR", "zZ", "tT", "q")
 
 
 @dataclasses.dataclass
-class MeridianForms:
+class MeridianForms(MonomialForms):
     """The maps from the unknowns of ``harmonics`` ((field, j): 0 = a, 1 = b, 2 = c) to the
     local fields at the quadrature points, for the reference axial wavenumber K.
     ``z_points`` equispaced points per period integrate trigonometric polynomials of
@@ -154,34 +154,6 @@ class MeridianForms:
             + times("q", times("tT", cof_m(-one))),
             4: times("q", times("tT", det_m(-one))),
         }
-
-    def fields(self, v: FloatArray) -> dict:
-        return {k: M @ v for k, M in self.maps.items()}
-
-    def energy(self, monomials, f: dict) -> float:
-        """The integral of the monomials at the local fields ``f``."""
-        return float(
-            sum(self.weight @ (k * np.prod([f[x] for x in xs], axis=0)) for k, xs in monomials)
-        )
-
-    def gradient(self, monomials, f: dict) -> FloatArray:
-        """The derivative of ``energy`` with respect to the unknowns, at the fields ``f``."""
-        out = np.zeros(self.size)
-        for k, xs in monomials:
-            for i in range(len(xs)):
-                rest = np.prod([f[x] for j, x in enumerate(xs) if j != i], axis=0)
-                out += self.maps[xs[i]].T @ (self.weight * k * rest)
-        return out
-
-    def hessian(self, monomials, f: dict | None = None) -> FloatArray:
-        """The second derivative of ``energy`` (for quadratic monomials ``f`` is unused)."""
-        H = np.zeros((self.size, self.size))
-        for k, xs in monomials:
-            for i, j in itertools.permutations(range(len(xs)), 2):
-                rest = [f[x] for n, x in enumerate(xs) if n not in (i, j)] if f else []
-                w = self.weight * k * (np.prod(rest, axis=0) if rest else 1.0)
-                H += self.maps[xs[i]].T @ (w[:, None] * self.maps[xs[j]])
-        return H
 
     def stiffness(self, state) -> FloatArray:
         """A = the Hessian of the quadratic part E2 at the state."""
