@@ -7,7 +7,8 @@ the limit of a thin stiff film on a thick tube; and a tube's prismatic modes (m,
 axisymmetric modes (0, n) (koiter_tube.py: neo-Hookean layers, constant growth, axial
 stretch prescribed, no pressure; a radial voltage for the prismatic modes) in a growth
 control, c = c_c + c_2 eps^2 with eps = max |u_r| / R_i, supercritical when c_2 > 0.
-Wrinkles (m, n) with m, n >= 1 and other cases raise a one-line :class:`~electrogrowth.errors.ParameterError`.
+Wrinkles (m, n) with m, n >= 1 and other cases raise a one-line
+:class:`~electrogrowth.errors.ParameterError`.
 """
 
 from __future__ import annotations
