@@ -4,7 +4,7 @@ equal to the library's expansion, and a one-line reason where it is not covered.
 import json
 from pathlib import Path
 
-from electrogrowth.bifurcation.koiter import tube_expansion
+from electrogrowth.bifurcation.koiter import axisymmetric_expansion, tube_expansion
 from electrogrowth.cli.app import main
 from electrogrowth.model.layers import Layer, Tube
 
@@ -34,4 +34,33 @@ def test_a_case_not_covered_says_why_in_one_line(capsys):
     assert main([*args, "--mode", "0", "1", "--koiter", "--json"]) == 0
     rec = json.loads(capsys.readouterr().out)
     assert rec["branch"] is None and rec["koiter"] is None
-    assert "prismatic modes" in rec["branch_note"] and "\n" not in rec["branch_note"]
+    assert "no voltage" in rec["branch_note"] and "\n" not in rec["branch_note"]
+
+
+AXIAL_FILM = """
+stretch = 1.0
+length = 1.0
+
+[[layers]]
+outer_radius = 1.1
+shear_modulus = 1.0
+
+[[layers]]
+outer_radius = 2.0
+shear_modulus = 0.2
+"""
+
+
+def test_axisymmetric_mode_has_its_branch(tmp_path, capsys):
+    """Mode (0, 3) of a film growing axially: the record carries the library's expansion
+    of the axisymmetric family (bifurcation/koiter_tube.py), supercritical."""
+    path = tmp_path / "film.toml"
+    path.write_text(AXIAL_FILM)
+    args = ["critical", "--tube", str(path), "--solve-for", "growth", "--layer", "1"]
+    args += ["--component", "z", "--mode", "0", "3", "--koiter", "--json"]
+    assert main(args) == 0
+    rec = json.loads(capsys.readouterr().out)
+    tube = Tube((Layer(1.1, shear_modulus=1.0), Layer(2.0, shear_modulus=0.2)), stretch=1.0)
+    c2 = axisymmetric_expansion(tube, 3, "growth[1].z").coefficient
+    assert rec["branch"] == "supercritical" and (rec["m"], rec["n"]) == (0, 3)
+    assert abs(rec["koiter"] - c2) < 1e-9 * abs(c2)

@@ -3,31 +3,32 @@ branch is super- or subcritical (docs/derivation-koiter.md).
 
 Covered so far: the flat film on a half-space (koiter_film.py: both incompressible
 neo-Hookean, plane strain, uniaxial compression of the film alone or of the whole bilayer),
-the limit of a thin stiff film on a thick tube; and a tube's prismatic modes (m, 0)
-(neo-Hookean layers, constant growth, axial stretch prescribed, no voltage or pressure) in a
-growth control, c = c_c + c_2 eps^2 with eps = max |u_r| / R_i, supercritical when c_2 > 0.
-Other cases raise a one-line :class:`~electrogrowth.errors.ParameterError`.
+the limit of a thin stiff film on a thick tube; and a tube's prismatic modes (m, 0) and
+axisymmetric modes (0, n) (koiter_tube.py: neo-Hookean layers, constant growth, axial
+stretch prescribed, no pressure; a radial voltage for the prismatic modes) in a growth
+control, c = c_c + c_2 eps^2 with eps = max |u_r| / R_i, supercritical when c_2 > 0.
+Wrinkles (m, n) with m, n >= 1 and other cases raise a one-line
+:class:`~electrogrowth.errors.ParameterError`.
 """
 
 from __future__ import annotations
 
 import dataclasses
 
-import numpy as np
-
-from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
-from ..incremental.polar_forms import PolarForms, rings
 from ..model.layers import Tube
-from .critical import critical_value
 from .koiter_film import (
-    MODE,
     FilmOnHalfSpace,
     _coefficient,
-    _nearest_zero,
     critical_mode,
     expansion,
     sign_change_ratio,
+)
+from .koiter_tube import (
+    TubeExpansion,
+    axial_wavenumber,
+    axisymmetric_expansion,
+    tube_expansion,
 )
 from .verdict import Verdict
 
@@ -35,6 +36,7 @@ __all__ = [
     "FilmOnHalfSpace",
     "KoiterResult",
     "TubeExpansion",
+    "axisymmetric_expansion",
     "critical_mode",
     "expansion",
     "koiter_coefficient",
@@ -42,9 +44,6 @@ __all__ = [
     "tube_expansion",
     "with_branch",
 ]
-
-#: In a tube the even field is u_r (cos), the odd one u_theta (sin).
-POLAR_SECOND = ((0, 0), (0, 2), (1, 2), (2, 0), (2, 2))
 
 
 @dataclasses.dataclass(frozen=True)
@@ -54,7 +53,8 @@ class KoiterResult:
     Flat film: c = lambda, the compressive stretch; eps = K_c w (w the amplitude of the
     vertical displacement of the free face, K_c the reference wavenumber, both in film
     thicknesses); ``wavenumber`` K_c. Tube: c the growth control; eps = max_R |u_r| / R_i
-    of the mode (R_i = 1, the undeformed inner radius); ``wavenumber`` m.
+    of the mode (R_i = 1, the undeformed inner radius); ``wavenumber`` m of a prismatic
+    mode (m, 0), the reference axial wavenumber K = n pi / L of an axisymmetric one (0, n).
     ``branch`` is "supercritical" when the branch exists beyond onset, in the direction
     the control moves to reach it (lambda_2 < 0 for the compressive stretch, > 0 for
     growth), else "subcritical"; ``error_estimate`` the change of the coefficient from a
@@ -71,71 +71,26 @@ class KoiterResult:
         return dataclasses.asdict(self)
 
 
-@dataclasses.dataclass(frozen=True)
-class TubeExpansion:
-    """The expansion of a tube's prismatic mode (m, 0) in a growth control c:
-    c = c_c + coefficient eps^2, eps = max_R |u_r| / R_i of the mode (R_i = 1)."""
-
-    control_value: float
-    coefficient: float
-    impedance_value: float
-    inner_face: float  # u_r of the mode at R_i over its peak
-
-
-def tube_expansion(tube: Tube, m: int, control: str, *, nodes: int = 24) -> TubeExpansion:
-    """The Koiter coefficient of the prismatic mode (m, 0) of a neo-Hookean tube at fixed
-    axial stretch, in a growth control (docs/derivation-koiter.md): the critical value from
-    the package's impedance route, refined where A(c) of incremental/polar_forms.py is
-    singular (Newton on its eigenvalue nearest zero, dA/dc by central differences of the
-    base state), the mode, the correction at harmonics 0 and 2m, and
-    c_2 = 2 A[psi, psi] / A'[phi, phi]."""
-    first = PolarForms.build(rings(tube, m, nodes), m, MODE)
-    second = PolarForms.build(rings(tube, m, nodes), m, POLAR_SECOND)
-
-    def A(form, c):
-        return form.stiffness(solve_base_state(tube.at(control, c)))
-
-    def dA(form, c):  # central differences, Richardson-extrapolated: error O(h^4)
-        h = 2e-3 * max(1.0, abs(c))
-        d = [(A(form, c + s) - A(form, c - s)) / (2 * s) for s in (h, h / 2)]
-        return (4 * d[1] - d[0]) / 3
-
-    start = critical_value(tube, m, 0, control, rtol=1e-12).value
-    c, phi = start, None
-    for _ in range(20):
-        sigma, phi = _nearest_zero(A(first, c), phi)
-        step = sigma / (phi @ dA(first, c) @ phi)
-        c -= step
-        if abs(step) < 1e-12 * max(1.0, abs(c)):
-            break
-    else:
-        raise ConvergenceError(f"the critical {control} of mode ({m}, 0) did not converge")
-    sigma, phi = _nearest_zero(A(first, c), phi)
-    phi = phi / first.peak_radial(phi, first.slices[0])[1]  # eps = max |u_r| / R_i
-    inner_face = float(phi[first.slices[0]][0])
-    state = solve_base_state(tube.at(control, c))
-    f1 = first.fields(phi)
-    A2 = second.stiffness(state)
-    psi = np.linalg.solve(A2, -0.5 * second.cubic_gradient(f1, f1, state.stretch))
-    c2 = 2 * (psi @ A2 @ psi) / (phi @ dA(first, c) @ phi)
-    return TubeExpansion(float(c), float(c2), float(start), inner_face)
-
-
 def koiter_coefficient(problem, mode=None, control: str = "stretch") -> KoiterResult:
     """The Koiter coefficient of a critical mode (docs/derivation-koiter.md): the control
     on the bifurcated branch is c = c_c + c_2 eps^2 (``KoiterResult`` says which eps),
     from the mode phi, the second-order correction psi (harmonics 0 and 2) of
     A(c_c) psi = -C[phi, phi, .] / 2 and
 
-        c_2 = 2 A(c_c)[psi, psi] / A'(c_c)[phi, phi].
+        c_2 = (2 A(c_c)[psi, psi] - 4 E4(phi)) / A'(c_c)[phi, phi],
+
+    E4 the quartic part of the energy (non-zero for the axisymmetric family, whose
+    incompressibility constraint is cubic in the displacement, and under a voltage).
 
     Parameters
     ----------
     problem : FilmOnHalfSpace or Tube
         A flat film on a half-space, or a tube (neo-Hookean layers with constant growth,
-        the axial stretch prescribed, no voltage or pressure: its prismatic modes).
-    mode : None or (m, 0)
-        The film: None (K_c maximises lambda_c). A tube: the prismatic mode (m, 0), m >= 2.
+        the axial stretch prescribed, no pressure; a voltage for prismatic modes only).
+    mode : None or (m, 0) or (0, n)
+        The film: None (K_c maximises lambda_c). A tube: a prismatic mode (m, 0), m >= 2,
+        or an axisymmetric mode (0, n), n >= 1 (axial wavenumber n pi / L in the
+        reference length).
     control : str
         The film: "stretch", the compressive stretch lambda. A tube: a growth control
         ("growth", "growth[K]", "growth[K].theta", ...).
@@ -160,7 +115,7 @@ def koiter_coefficient(problem, mode=None, control: str = "stretch") -> KoiterRe
     if not isinstance(problem, FilmOnHalfSpace):
         raise ParameterError(
             f"the amplitude equation covers a flat film on a half-space (FilmOnHalfSpace) "
-            f"and a tube's prismatic modes so far, not {type(problem).__name__}"
+            f"and a tube's prismatic and axisymmetric modes so far, not {type(problem).__name__}"
         )
     if mode is not None or control != "stretch":
         raise ParameterError(
@@ -180,35 +135,52 @@ def koiter_coefficient(problem, mode=None, control: str = "stretch") -> KoiterRe
 
 def _tube_result(tube: Tube, mode, control: str) -> KoiterResult:
     """The tube's case of :func:`koiter_coefficient`, with its one-line refusals."""
-    if not (isinstance(mode, tuple) and len(mode) == 2 and mode[1] == 0 and mode[0] >= 2):
-        raise ParameterError(
-            f"mode = {mode!r}: the tube's amplitude equation covers prismatic modes (m, 0), "
-            "m >= 2, so far (not the axisymmetric family or wrinkles)"
-        )
+    family = _tube_family(mode)
     if not (isinstance(control, str) and control.startswith("growth")):
         raise ParameterError(f"control = {control!r}: only a growth control is covered so far")
-    why = _tube_not_covered(tube)
+    why = _tube_not_covered(tube, family)
     if why:
         raise ParameterError(f"the tube's amplitude equation needs {why}")
-    m = int(mode[0])
-    fine = tube_expansion(tube, m, control, nodes=24)
-    coarse = tube_expansion(tube, m, control, nodes=18)
+    solve = tube_expansion if family == "prismatic" else axisymmetric_expansion
+    number = int(mode[0] if family == "prismatic" else mode[1])
+    wavenumber = float(number) if family == "prismatic" else axial_wavenumber(tube, number)
+    fine = solve(tube, number, control, nodes=24)
+    coarse = solve(tube, number, control, nodes=18)
     return KoiterResult(
         coefficient=fine.coefficient,
         critical_value=fine.control_value,
-        wavenumber=float(m),
+        wavenumber=wavenumber,
         branch="supercritical" if fine.coefficient > 0 else "subcritical",
         error_estimate=abs(fine.coefficient - coarse.coefficient),
         normalisation="eps = max_R |u_r| / R_i of the mode (R_i = 1)",
     )
 
 
-def _tube_not_covered(tube: Tube) -> str:
+def _tube_family(mode) -> str:
+    """ "prismatic" for (m, 0), m >= 2, "axisymmetric" for (0, n), n >= 1, else the one-line
+    ParameterError naming what is covered."""
+    if isinstance(mode, tuple) and len(mode) == 2:
+        m, n = mode
+        if n == 0 and m >= 2:
+            return "prismatic"
+        if m == 0 and n >= 1:
+            return "axisymmetric"
+    raise ParameterError(
+        f"mode = {mode!r}: the tube's amplitude equation covers prismatic modes (m, 0), "
+        "m >= 2, and axisymmetric modes (0, n), n >= 1, so far (not wrinkles (m, n))"
+    )
+
+
+def _tube_not_covered(tube: Tube, family: str) -> str:
     """What the tube lacks for the expansion, in words ("" when covered)."""
     if tube.stretch is None:
         return "the axial stretch prescribed (not the axial force)"
-    if tube.voltage != 0 or tube.inner_pressure != 0 or tube.outer_pressure != 0:
-        return "no voltage and no pressure"
+    if tube.inner_pressure != 0 or tube.outer_pressure != 0:
+        return "no pressure"
+    if tube.voltage != 0 and family != "prismatic":
+        return (
+            "no voltage for the axisymmetric family (the voltage is covered for prismatic modes)"
+        )
     for ply in tube.layers:
         if ply.graded:
             return "constant growth in every layer"

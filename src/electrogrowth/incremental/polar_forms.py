@@ -48,9 +48,10 @@ class Ring:
     nodes: int = 24
 
 
-def rings(tube, m: int, nodes: int = 24) -> tuple[Ring, ...]:
+def rings(tube, m: float, nodes: int = 24) -> tuple[Ring, ...]:
     """Each layer cut at 3 / m, 12 / m and 30 / m from its faces where it is thick enough (a
-    mode of number m decays like (R / R_face)^(+-m) away from a face)."""
+    mode of number m decays like (R / R_face)^(+-m) away from a face; an axial wave of
+    reference wavenumber K like exp(-K |R - R_face|): m = K)."""
     out = []
     radii = tube.radii
     for k in range(len(radii) - 1):
@@ -185,26 +186,8 @@ class PolarForms:
         return A
 
     def peak_radial(self, v: FloatArray, field_slice: slice) -> tuple[float, float]:
-        """(R, a(R)) where |a| of the displacement values ``v[field_slice]`` is largest: on
-        a dense grid of each ring, then a parabola through the best three points."""
-        a_nodes, at, best = v[field_slice], 0, (0.0, 0.0)
-        for r in self.rings:
-            t = np.cos(np.pi * np.arange(r.nodes) / (r.nodes - 1))[::-1]
-            dense = np.linspace(-1.0, 1.0, 2001)
-            vals = _barycentric(t, dense) @ a_nodes[at : at + r.nodes]
-            i = int(np.argmax(np.abs(vals)))
-            if 0 < i < len(dense) - 1:  # vertex of the parabola through i - 1, i, i + 1
-                y0, y1, y2 = vals[i - 1 : i + 2]
-                den = y0 - 2 * y1 + y2
-                shift = 0.5 * (y0 - y2) / den if den else 0.0
-                peak = y1 - 0.25 * (y0 - y2) * shift
-                xi = dense[i] + shift * (dense[1] - dense[0])
-            else:
-                peak, xi = vals[i], dense[i]
-            if abs(peak) > abs(best[1]):
-                best = (r.inner + 0.5 * (xi + 1) * (r.outer - r.inner), float(peak))
-            at += r.nodes - 1
-        return best
+        """(R, a(R)) where |a| of the displacement values ``v[field_slice]`` is largest."""
+        return peak_on_rings(self.rings, v[field_slice])
 
     def fields(self, v: FloatArray) -> dict:
         return {k: M @ v for k, M in self.maps.items()}
@@ -231,6 +214,29 @@ class PolarForms:
         L -= fa["rT"][:, None] * M["tR"] + fa["tR"][:, None] * M["rT"]
         T = M["q"].T @ (w[:, None] * L)
         return -(H + T + T.T)
+
+
+def peak_on_rings(rings_, a_nodes: FloatArray) -> tuple[float, float]:
+    """(R, a(R)) where |a| of the nodal values ``a_nodes`` (continuous across ``rings_``) is
+    largest: on a dense grid of each ring, then a parabola through the best three points."""
+    at, best = 0, (0.0, 0.0)
+    for r in rings_:
+        t = np.cos(np.pi * np.arange(r.nodes) / (r.nodes - 1))[::-1]
+        dense = np.linspace(-1.0, 1.0, 2001)
+        vals = _barycentric(t, dense) @ a_nodes[at : at + r.nodes]
+        i = int(np.argmax(np.abs(vals)))
+        if 0 < i < len(dense) - 1:  # vertex of the parabola through i - 1, i, i + 1
+            y0, y1, y2 = vals[i - 1 : i + 2]
+            den = y0 - 2 * y1 + y2
+            shift = 0.5 * (y0 - y2) / den if den else 0.0
+            peak = y1 - 0.25 * (y0 - y2) * shift
+            xi = dense[i] + shift * (dense[1] - dense[0])
+        else:
+            peak, xi = vals[i], dense[i]
+        if abs(peak) > abs(best[1]):
+            best = (r.inner + 0.5 * (xi + 1) * (r.outer - r.inner), float(peak))
+        at += r.nodes - 1
+    return best
 
 
 @dataclasses.dataclass(frozen=True)

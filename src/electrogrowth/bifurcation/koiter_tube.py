@@ -1,0 +1,137 @@
+"""The Koiter coefficient of a tube's mode in a growth control (docs/derivation-koiter.md):
+the prismatic family (m, 0) on the polar forms, the axisymmetric family (0, n) on the
+meridian forms; both refine the package's critical value where the discrete energy's
+A(c) is singular, then solve for the second-order correction and
+
+    c_2 = (2 A[psi, psi] - 4 E4(phi)) / A'[phi, phi],
+
+E4 the quartic part of the energy (zero for the plane forms), eps = max |u_r| / R_i."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+
+from ..basestate.tube import solve_base_state
+from ..errors import ConvergenceError
+from ..incremental.dielectric_forms import DielectricForms
+from ..incremental.meridian_forms import MeridianForms
+from ..incremental.polar_forms import PolarForms, rings
+from ..model.layers import Tube
+from .critical import critical_value
+from .koiter_film import MODE, _nearest_zero
+
+#: The correction's harmonics 0 and 2: the even field (u_r), the pressure, and the odd
+#: field at harmonic 2 (the odd field of harmonic 0 is a rigid motion, or no field at all).
+SECOND = ((0, 0), (0, 2), (1, 2), (2, 0), (2, 2))
+
+
+@dataclasses.dataclass(frozen=True)
+class TubeExpansion:
+    """The expansion of a tube's mode in a growth control c: c = c_c + coefficient eps^2,
+    eps = max_R |u_r| / R_i of the mode (R_i = 1)."""
+
+    control_value: float
+    coefficient: float
+    impedance_value: float
+    inner_face: float  # u_r of the mode at R_i over its peak
+
+
+def control_derivative(stiffness, c: float):
+    """dA/dc by central differences of base states, Richardson-extrapolated (error O(h^4)):
+    the control enters both the state and the growth."""
+    h = 2e-3 * max(1.0, abs(c))
+    d = [(stiffness(c + s) - stiffness(c - s)) / (2 * s) for s in (h, h / 2)]
+    return (4 * d[1] - d[0]) / 3
+
+
+def singular_point(stiffness, start: float, what: str):
+    """(c, phi): Newton's method on the eigenvalue of A(c) nearest zero, from ``start``,
+    with the symmetric eigenvalue derivative phi^T A' phi; converged at a step below
+    1e-12 |c|, or below 1e-9 |c| once the steps stop shrinking (the rounding floor of the
+    eigenvalue, ~1e-11 |c| for a tube under a voltage)."""
+    c, phi, last = start, None, np.inf
+    for _ in range(20):
+        sigma, phi = _nearest_zero(stiffness(c), phi)
+        step = sigma / (phi @ control_derivative(stiffness, c) @ phi)
+        c -= step
+        scale = max(1.0, abs(c))
+        if abs(step) < 1e-12 * scale or (abs(step) < 1e-9 * scale and abs(step) > last / 2):
+            return c, _nearest_zero(stiffness(c), phi)[1]
+        last = abs(step)
+    raise ConvergenceError(f"the critical {what} did not converge")
+
+
+def tube_expansion(tube: Tube, m: int, control: str, *, nodes: int = 24) -> TubeExpansion:
+    """The Koiter coefficient of the prismatic mode (m, 0) of a neo-Hookean tube at fixed
+    axial stretch, in a growth control: the forms of incremental/polar_forms.py (no
+    quartic term), the correction at harmonics 0 and 2m; under a voltage
+    :func:`dielectric_expansion`."""
+    if tube.voltage != 0:
+        return dielectric_expansion(tube, m, control, nodes=nodes)
+    first = PolarForms.build(rings(tube, m, nodes), m, MODE)
+    second = PolarForms.build(rings(tube, m, nodes), m, SECOND)
+
+    def A(c, form=first):
+        return form.stiffness(solve_base_state(tube.at(control, c)))
+
+    start = critical_value(tube, m, 0, control, rtol=1e-12).value
+    c, phi = singular_point(A, start, f"{control} of mode ({m}, 0)")
+    phi = phi / first.peak_radial(phi, first.slices[0])[1]  # eps = max |u_r| / R_i
+    state = solve_base_state(tube.at(control, c))
+    f1 = first.fields(phi)
+    A2 = second.stiffness(state)
+    psi = np.linalg.solve(A2, -0.5 * second.cubic_gradient(f1, f1, state.stretch))
+    c2 = 2 * (psi @ A2 @ psi) / (phi @ control_derivative(A, c) @ phi)
+    return TubeExpansion(float(c), float(c2), float(start), float(phi[first.slices[0]][0]))
+
+
+def axial_wavenumber(tube: Tube, n: int) -> float:
+    """K = n pi / L in the reference Z: the package's k = n pi / (lambda_z L) times
+    lambda_z (incremental/targets.wavenumber)."""
+    return n * math.pi / tube.length
+
+
+def axisymmetric_expansion(tube: Tube, n: int, control: str, *, nodes: int = 24) -> TubeExpansion:
+    """The Koiter coefficient of the axisymmetric mode (0, n) of a neo-Hookean tube at
+    fixed axial stretch, in a growth control: the forms of incremental/meridian_forms.py,
+    the correction at harmonics 0 and 2 (of K Z), and the quartic term of the constraint."""
+    K = axial_wavenumber(tube, n)
+    cut = rings(tube, max(K, 1.0), nodes)
+    first = MeridianForms.build(cut, K, MODE)
+    second = MeridianForms.build(cut, K, SECOND)
+    start = critical_value(tube, 0, n, control, rtol=1e-12).value
+    return _expand(tube, control, first, second, start, f"{control} of mode (0, {n})")
+
+
+def dielectric_expansion(tube: Tube, m: int, control: str, *, nodes: int = 24) -> TubeExpansion:
+    """The Koiter coefficient of the prismatic mode (m, 0) of a tube of ideal neo-Hookean
+    dielectrics under its radial voltage, in a growth control: the forms of
+    incremental/dielectric_forms.py (the potential phi an extra field, a quartic term)."""
+    cut = rings(tube, m, nodes)
+    first = DielectricForms.build(cut, m, MODE + ((3, 1),))
+    second = DielectricForms.build(cut, m, SECOND + ((3, 0), (3, 2)))
+    start = critical_value(tube, m, 0, control, rtol=1e-12).value
+    return _expand(tube, control, first, second, start, f"{control} of mode ({m}, 0)")
+
+
+def _expand(tube, control, first, second, start, what) -> TubeExpansion:
+    """c_2 = (2 A[psi, psi] - 4 E4(phi)) / A'[phi, phi] on monomial forms: the critical
+    value refined where A(c) is singular, the mode scaled to max |u_r| = 1, the correction
+    A psi = -C[phi, phi, .] / 2 = -grad E3(phi) on ``second``'s harmonics."""
+
+    def A(c):
+        return first.stiffness(solve_base_state(tube.at(control, c)))
+
+    c, phi = singular_point(A, start, what)
+    phi = phi / first.peak_radial(phi, first.slices[0])[1]
+    state = solve_base_state(tube.at(control, c))
+    f1 = first.fields(phi)
+    L = second.lagrangian(state)
+    A2 = second.hessian(L[2])
+    psi = np.linalg.solve(A2, -second.gradient(L[3], f1))
+    quartic = first.energy(L[4], f1)  # E4(phi) = D[phi, phi, phi, phi] / 24
+    c2 = (2 * (psi @ A2 @ psi) - 4 * quartic) / (phi @ control_derivative(A, c) @ phi)
+    return TubeExpansion(float(c), float(c2), float(start), float(phi[first.slices[0]][0]))

@@ -1,0 +1,159 @@
+"""The energy of a layered, growing tube of ideal neo-Hookean dielectrics under a radial
+voltage, in plane deformations (r, theta) at fixed axial stretch, expanded about its
+axisymmetric state: the forms of the prismatic modes (m, 0) with the electric potential as
+an extra field (docs/derivation-koiter.md, "The radial voltage").
+
+In terms of the nominal field E~ = -Grad phi, the energy of a layer per reference volume
+(Legendre transform of Omega = mu_k (I1 - 3) / 2 + I5 / (2 eps_k) in the displacement) is
+J_g mu_k / 2 |F F_g^-1|^2 - eps_k J / 2 E~ . C^-1 E~, and J C^-1 = cof(F)^T cof(F) / J. On
+the constraint J = J_g, and with F = diag(F_2, lambda_z), E~_Z = 0,
+
+    L = J_g mu_k / 2 |F F_g^-1|^2 - eps_k lambda_z^2 / (2 J_g) |cof(F_2) E~|^2
+        - (p~0 + q)(lambda_z det F_2 - J_g),
+
+a polynomial of degree four in (G, grad phi): cof(F_2) is linear in G. Replacing J by J_g
+changes the multiplier: p~0 = p0 - eps_k |e|^2 (p0 the state's, e the current field).
+Harmonics of m Theta: U_r, q and phi ~ cos, U_theta ~ sin; phi on the Lobatto nodes,
+zero on the electrodes (the inner and outer faces of the wall).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+
+from .._types import FloatArray
+from ..errors import ParameterError
+from .monomial_forms import MonomialForms, by_degree, product
+from .plane_forms import _segment_maps
+from .polar_forms import Ring, _Seg, peak_on_rings
+
+
+@dataclasses.dataclass
+class DielectricForms(MonomialForms):
+    """The maps from the unknowns of ``harmonics`` ((field, j): 0 = U_r, 1 = U_theta,
+    2 = q, 3 = phi) to the local fields G, q and E~ - E~_0 at the quadrature points."""
+
+    rings: tuple[Ring, ...]
+    m: int
+    harmonics: tuple[tuple[int, int], ...]
+    maps: dict
+    R: FloatArray
+    weight: FloatArray
+    layer: np.ndarray
+    slices: list
+    size: int
+
+    @classmethod
+    def build(cls, rings_, m: int, harmonics, *, theta_points: int = 8) -> DielectricForms:
+        """``theta_points`` equispaced points a period integrate trigonometric polynomials
+        of degree below it exactly (8: the quartic term of the first harmonic)."""
+        if m < 2:
+            raise ParameterError(f"m = {m}: prismatic modes need m >= 2")
+        theta = 2 * np.pi * np.arange(theta_points) / (theta_points * m)
+        per = [_segment_maps(_Seg(r.inner, r.outer, r.nodes), max(2 * r.nodes, 8)) for r in rings_]
+        nR = sum(len(p[0]) for p in per)
+        n_disp = sum(r.nodes - 1 for r in rings_) + 1
+        n_pres = sum(r.nodes - 2 for r in rings_)
+        V, D, P = np.zeros((nR, n_disp)), np.zeros((nR, n_disp)), np.zeros((nR, n_pres))
+        row, col_d, col_p = 0, 0, 0
+        for r, (Y, _w, Pm, PD, Pi) in zip(rings_, per):
+            rows = slice(row, row + len(Y))
+            V[rows, col_d : col_d + r.nodes] = Pm
+            D[rows, col_d : col_d + r.nodes] = PD
+            P[rows, col_p : col_p + r.nodes - 2] = Pi
+            row, col_d, col_p = row + len(Y), col_d + r.nodes - 1, col_p + r.nodes - 2
+        R = np.concatenate([p[0] for p in per])
+        wR = np.concatenate([p[1] for p in per]) * R
+        layer = np.concatenate([np.full(len(p[0]), r.layer) for r, p in zip(rings_, per)])
+        sizes = {0: n_disp, 1: n_disp, 2: n_pres, 3: n_disp - 2}
+        slices, at = [], 0
+        for field, _j in harmonics:
+            slices.append(slice(at, at + sizes[field]))
+            at += sizes[field]
+        maps = {
+            k: np.zeros((theta_points * nR, at)) for k in ("rR", "rT", "tR", "tT", "q", "ER", "ET")
+        }
+        inv = (1.0 / R)[:, None]
+        for (field, j), sl in zip(harmonics, slices):
+            n = j * m
+            c, s = np.cos(n * theta)[:, None], np.sin(n * theta)[:, None]
+            if field == 0:  # U_r = a cos
+                maps["rR"][:, sl] += np.kron(c, D)
+                maps["rT"][:, sl] += np.kron(-n * s, inv * V)
+                maps["tT"][:, sl] += np.kron(c, inv * V)
+            elif field == 1:  # U_th = b sin
+                maps["rT"][:, sl] += np.kron(-s, inv * V)
+                maps["tR"][:, sl] += np.kron(s, D)
+                maps["tT"][:, sl] += np.kron(n * c, inv * V)
+            elif field == 2:
+                maps["q"][:, sl] += np.kron(c, P)
+            else:  # phi = e cos, zero on the electrodes: E~_R = -e' cos, E~_T = n e / R sin
+                maps["ER"][:, sl] += np.kron(-c, D[:, 1:-1])
+                maps["ET"][:, sl] += np.kron(n * s, inv * V[:, 1:-1])
+        weight = np.tile(wR, theta_points) / theta_points
+        tiled = np.tile(R, theta_points), np.tile(layer, theta_points)
+        return cls(
+            tuple(rings_), m, tuple(harmonics), maps, tiled[0], weight, tiled[1], slices, at
+        )
+
+    def coefficients(self, state) -> dict:
+        """The base state at the quadrature points: J_g mu_k / g_r^2, / g_t^2, p~0, t0 = r / R,
+        s0 = r', E~_0 = s0 e_r, eps_k lambda_z^2 / J_g, J_g, lambda_z."""
+        keys = ("cr", "ct", "p0", "t0", "s0", "E0", "ce", "J")
+        out = {k: np.zeros_like(self.R) for k in keys}
+        lz = state.stretch
+        for k, ply in enumerate(state.tube.layers):
+            sel = self.layer == k
+            if not sel.any():
+                continue
+            if ply.graded:
+                raise ParameterError("graded growth is not covered by the amplitude equation yet")
+            gr, gt, gz = ply.growth
+            J, mu, eps, R = gr * gt * gz, ply.shear_modulus, ply.permittivity, self.R[sel]
+            r, e = state.radius(R), state.electric_field(R)
+            out["cr"][sel], out["ct"][sel], out["J"][sel] = J * mu / gr**2, J * mu / gt**2, J
+            out["p0"][sel] = state.pressure(R) - eps * e**2
+            out["t0"][sel], out["s0"][sel] = r / R, J * R / (lz * r)
+            out["E0"][sel], out["ce"][sel] = J * R / (lz * r) * e, eps * lz**2 / J
+        out["lz"] = np.full_like(self.R, lz)
+        return out
+
+    def lagrangian(self, state) -> dict[int, list]:
+        """The monomials of L order by order in (G, q, E~ - E~_0), orders 1 to 4."""
+        c = self.coefficients(state)
+        lz = c["lz"]
+        a = {(): c["s0"], ("rR",): 1.0}  # F_2 = [[a, b], [cc, d]]
+        b, cc, d = {("rT",): 1.0}, {("tR",): 1.0}, {(): c["t0"], ("tT",): 1.0}
+        ER, ET = {(): c["E0"], ("ER",): 1.0}, {("ET",): 1.0}
+        v1 = _sum(product(d, ER), product(cc, ET), -1.0)  # cof(F_2) E~
+        v2 = _sum(product(a, ET), product(b, ER), -1.0)
+        det = _sum(product(a, d), product(b, cc), -1.0)
+        energy = [
+            (c["cr"] / 2, product(a, a)),
+            (c["cr"] / 2, product(cc, cc)),
+            (c["ct"] / 2, product(b, b)),
+            (c["ct"] / 2, product(d, d)),
+            (-c["ce"] / 2, product(v1, v1)),
+            (-c["ce"] / 2, product(v2, v2)),
+            (-c["p0"] * lz, det),
+            (-lz, product({("q",): 1.0}, det)),
+            (c["J"], {("q",): 1.0}),
+        ]
+        out = by_degree(*energy)
+        out.pop(0, None)  # the base energy
+        return out
+
+    def stiffness(self, state) -> FloatArray:
+        return self.hessian(self.lagrangian(state)[2])
+
+    def peak_radial(self, v: FloatArray, field_slice: slice) -> tuple[float, float]:
+        return peak_on_rings(self.rings, v[field_slice])
+
+
+def _sum(p1: dict, p2: dict, s2: float) -> dict:
+    out = dict(p1)
+    for k, c in p2.items():
+        out[k] = out.get(k, 0.0) + s2 * c
+    return out

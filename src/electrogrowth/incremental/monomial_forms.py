@@ -1,0 +1,75 @@
+"""One engine for energies that are polynomials in local fields (the gradient of the
+displacement, the pressure increment, the potential's gradient): a polynomial is a list of
+monomials (coefficient at the quadrature points, field names); the discrete forms map the
+unknowns to each field at the quadrature points (``maps``) and integrate with ``weight``.
+Used by meridian_forms.py and dielectric_forms.py (docs/derivation-koiter.md)."""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+
+from .._types import FloatArray
+
+
+def product(*factors: dict) -> dict:
+    """The product of polynomials given as {sorted field names: coefficient}."""
+    out: dict = {(): 1.0}
+    for factor in factors:
+        nxt: dict = {}
+        for (k1, c1), (k2, c2) in itertools.product(out.items(), factor.items()):
+            key = tuple(sorted(k1 + k2))
+            nxt[key] = nxt.get(key, 0.0) + c1 * c2
+        out = nxt
+    return out
+
+
+def by_degree(*terms: tuple[float | FloatArray, dict]) -> dict[int, list]:
+    """sum of coefficient * polynomial, split by degree into monomial lists."""
+    total: dict = {}
+    for scale, poly in terms:
+        for key, c in poly.items():
+            total[key] = total.get(key, 0.0) + scale * c
+    out: dict[int, list] = {}
+    for key, c in total.items():
+        out.setdefault(len(key), []).append((c, key))
+    return out
+
+
+class MonomialForms:
+    """Integral, gradient and Hessian of monomial lists on ``maps`` (field -> matrix from
+    the unknowns to the field at the quadrature points), ``weight`` and ``size``."""
+
+    maps: dict
+    weight: FloatArray
+    size: int
+
+    def fields(self, v: FloatArray) -> dict:
+        return {k: M @ v for k, M in self.maps.items()}
+
+    def energy(self, monomials, f: dict) -> float:
+        """The integral of the monomials at the local fields ``f``."""
+        return float(
+            sum(self.weight @ (k * np.prod([f[x] for x in xs], axis=0)) for k, xs in monomials)
+        )
+
+    def gradient(self, monomials, f: dict) -> FloatArray:
+        """The derivative of ``energy`` with respect to the unknowns, at the fields ``f``."""
+        out = np.zeros(self.size)
+        for k, xs in monomials:
+            for i in range(len(xs)):
+                rest = [f[x] for j, x in enumerate(xs) if j != i]
+                value = np.prod(rest, axis=0) if rest else 1.0
+                out += self.maps[xs[i]].T @ (self.weight * k * value)
+        return out
+
+    def hessian(self, monomials, f: dict | None = None) -> FloatArray:
+        """The second derivative of ``energy`` (for quadratic monomials ``f`` is unused)."""
+        H = np.zeros((self.size, self.size))
+        for k, xs in monomials:
+            for i, j in itertools.permutations(range(len(xs)), 2):
+                rest = [f[x] for n, x in enumerate(xs) if n not in (i, j)] if f else []
+                w = self.weight * k * (np.prod(rest, axis=0) if rest else 1.0)
+                H += self.maps[xs[i]].T @ (w[:, None] * self.maps[xs[j]])
+        return H
