@@ -329,6 +329,17 @@ class UniformState:
             return neo_hookean_moduli(*stretches, d)
         return self.tube.material.moduli(*stretches, d)
 
+    def table_fields(self, R) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(r, moduli, p) at R from one evaluation of the kinematics: the same arrays as
+        :meth:`radius`, :meth:`moduli` and :meth:`pressure` (the Chebyshev table's input,
+        incremental/radial_table.py, built at every step of a march)."""
+        R, r, stretches, d = self._local(R)
+        if self._sigma is None:
+            moduli = neo_hookean_moduli(*stretches, d)
+        else:
+            moduli = self.tube.material.moduli(*stretches, d)
+        return r, moduli, self._tau(stretches, d)[0] - self._sigma_rr(R, r)
+
     def as_dict(self) -> dict:
         """The JSON record of the state (inf -> null): geometry, charge, threshold, axial
         force and the extremes of the three principal Cauchy stresses over 401 points of
