@@ -231,3 +231,14 @@ def test_secant_estimate_equals_the_windows_and_bounds_the_error(case, monkeypat
     resolution = 4e-15 * max(1.0, abs(new.value))
     assert abs(new.error_estimate - old.error_estimate) <= 1e-3 * old.error_estimate + resolution
     assert new.error_estimate >= abs(new.value - reference.value)
+
+
+def test_collocation_estimate_bounds_its_noise_floor():
+    """At rtol 1e-8 collocation's fine and coarse targets are the same 40-node determinant,
+    flat at rounding level over ~1e-10 around its root: the windows' Brent put the coarse root
+    9e-14 from the value (two roots of one function), below the true error (2e-13, against
+    the impedance root at rtol 1e-14); the secant reads the target's value there against its
+    slope, and its estimate bounds the error."""
+    got = critical_value(PARAMS, 0, 1, "growth", method="collocation", rtol=1e-8)
+    reference = critical_value(PARAMS, 0, 1, "growth", rtol=1e-14)
+    assert got.error_estimate >= abs(got.value - reference.value)
