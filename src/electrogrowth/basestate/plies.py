@@ -35,6 +35,7 @@ from numpy.polynomial import chebyshev as cheb
 from ..errors import ConvergenceError
 from ..model.layers import Layer, Tube
 from ..model.materials import INVARIANTS, MODULI_NAMES, Material, neo_hookean_moduli
+from .clenshaw import ChebyshevSeries
 from .voltage import energy_kind
 
 ORDERS = (8, 12, 16, 24, 32, 48, 64, 96, 128, 192, 256)  # Gauss-Legendre nodes per layer
@@ -106,7 +107,7 @@ class Ply:
                     1e-14,
                     "graded growth",
                 )
-                integral = cheb.Chebyshev(coef, domain=[a, b]).integ(lbnd=a)
+                integral = ChebyshevSeries(coef, domain=[a, b]).integ(lbnd=a)
                 dG = float(integral(b))
             else:
                 dG = math.prod(layer.growth) * (b * b - a * a) / 2.0

@@ -32,6 +32,7 @@ from ..labelled import base_state_dataset
 from ..model.layers import Tube
 from ..model.materials import neo_hookean_moduli
 from ..summary import base_state_html
+from .clenshaw import ChebyshevSeries
 from .closed_form_fields import nh_fields
 from .voltage import (
     GAUSS_ORDERS,
@@ -152,7 +153,7 @@ class UniformState:
                 break
         else:
             raise ConvergenceError(f"base-state profile not resolved to rtol = {rtol}")
-        sigma = cheb.Chebyshev(coef[:, 0], domain=[1.0, Ro]).integ(lbnd=1.0)
+        sigma = ChebyshevSeries(coef[:, 0], domain=[1.0, Ro]).integ(lbnd=1.0)
         weights = np.zeros(coef.shape[0])  # int_1^Ro T_k = (Ro - 1) / (1 - k^2), k even
         weights[::2] = (Ro - 1.0) / (1.0 - np.arange(0, coef.shape[0], 2) ** 2)
         scale, force, volt = weights @ coef[:, 1:]

@@ -1,0 +1,54 @@
+"""NumPy's Chebyshev series, evaluated at arrays by a compiled Clenshaw recurrence.
+
+The base states keep sigma_rr (and the layered state its antiderivatives) as
+``numpy.polynomial.Chebyshev`` series, and a march evaluates them at the Chebyshev table's
+radii at every step: NumPy's ``chebval`` runs the recurrence as one array operation per
+coefficient (~40 us for 33 coefficients at 17 radii, a tenth of a layered critical value).
+:class:`ChebyshevSeries` is that class with ``__call__`` compiled for one-dimensional float
+arrays: the same mapping of the domain (NumPy's own), then per point the same recurrence,
+
+    c0, c1 = c[-2], c[-1];  c0, c1 = c[-i] - c1, c0 + 2 x c1  (i = 3 .. len(c));  c0 + c1 x,
+
+the same operations in the same order without fused multiply-adds, so the values equal
+NumPy's bit for bit (tests/basestate/test_clenshaw.py). Anything else (scalars, other
+shapes, short series) is NumPy's own evaluation.
+"""
+
+from __future__ import annotations
+
+import numba as nb
+import numpy as np
+from numpy.polynomial import chebyshev as cheb
+from numpy.polynomial import polyutils as pu
+
+
+@nb.njit(cache=True)
+def clenshaw(x, c):
+    """sum_k c[k] T_k(x) at each point of the 1-d array x (len(c) >= 3), as numpy's chebval."""
+    n, size = x.shape[0], c.shape[0]
+    out = np.empty(n)
+    for j in range(n):
+        x2 = 2 * x[j]
+        c0, c1 = c[size - 2], c[size - 1]
+        for i in range(3, size + 1):
+            tmp = c0
+            c0 = c[size - i] - c1
+            c1 = tmp + c1 * x2
+        out[j] = c0 + c1 * x[j]
+    return out
+
+
+class ChebyshevSeries(cheb.Chebyshev):
+    """``numpy.polynomial.Chebyshev`` whose values at 1-d float arrays are compiled."""
+
+    def __call__(self, arg):
+        if (
+            isinstance(arg, np.ndarray)
+            and arg.ndim == 1
+            and arg.dtype == np.float64
+            and self.coef.dtype == np.float64
+            and self.coef.ndim == 1
+            and len(self.coef) >= 3
+        ):
+            return clenshaw(pu.mapdomain(arg, self.domain, self.window), self.coef)
+        return super().__call__(arg)
