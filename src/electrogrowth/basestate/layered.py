@@ -25,7 +25,7 @@ from ..errors import BaseStateError, ConvergenceError, ParameterError
 from ..labelled import layered_state_dataset
 from ..model.layers import Layer, Tube
 from .branches import Branch, Threshold, clean, prepare, solve_on, threshold
-from .clenshaw import ChebyshevSeries
+from .chebyshev_series import ChebyshevSeries
 from .plies import ORDERS, Wall, chebyshev
 from .warm import continued
 

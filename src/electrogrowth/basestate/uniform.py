@@ -32,7 +32,7 @@ from ..labelled import base_state_dataset
 from ..model.layers import Tube
 from ..model.materials import neo_hookean_moduli
 from ..summary import base_state_html
-from .clenshaw import ChebyshevSeries
+from .chebyshev_series import ChebyshevSeries, chebinterpolate
 from .closed_form_fields import nh_fields
 from .voltage import (
     GAUSS_ORDERS,
@@ -148,7 +148,7 @@ class UniformState:
             )
 
         for deg in (32, 64, 128, 256, 512):
-            coef = cheb.chebinterpolate(integrands, deg)
+            coef = chebinterpolate(integrands, deg)
             if np.all(abs(coef[-4:]).max(0) <= 0.01 * rtol * np.maximum(abs(coef).max(0), 1.0)):
                 break
         else:

@@ -1,4 +1,4 @@
-"""NumPy's Chebyshev series, evaluated at arrays by a compiled Clenshaw recurrence.
+"""The base states' Chebyshev series: interpolated and evaluated as NumPy does, faster.
 
 The base states keep sigma_rr (and the layered state its antiderivatives) as
 ``numpy.polynomial.Chebyshev`` series, and a march evaluates them at the Chebyshev table's
@@ -10,11 +10,17 @@ arrays: the same mapping of the domain (NumPy's own), then per point the same re
     c0, c1 = c[-2], c[-1];  c0, c1 = c[-i] - c1, c0 + 2 x c1  (i = 3 .. len(c));  c0 + c1 x,
 
 the same operations in the same order without fused multiply-adds, so the values equal
-NumPy's bit for bit (tests/basestate/test_clenshaw.py). Anything else (scalars, other
+NumPy's bit for bit (tests/basestate/test_chebyshev_series.py). Anything else (scalars, other
 shapes, short series) is NumPy's own evaluation.
+
+:func:`chebinterpolate` is NumPy's, with the nodes and the Vandermonde matrix of each degree
+remembered instead of rebuilt at every call (a base state interpolates three to six
+integrands; the same arrays, the same product, the same coefficients).
 """
 
 from __future__ import annotations
+
+import functools
 
 import numba as nb
 import numpy as np
@@ -52,3 +58,25 @@ class ChebyshevSeries(cheb.Chebyshev):
         ):
             return clenshaw(pu.mapdomain(arg, self.domain, self.window), self.coef)
         return super().__call__(arg)
+
+
+@functools.lru_cache(maxsize=16)
+def _nodes_and_vandermonde(deg: int) -> tuple[np.ndarray, np.ndarray]:
+    """NumPy's chebpts1(deg + 1) and chebvander there, read-only."""
+    x = cheb.chebpts1(deg + 1)
+    m = cheb.chebvander(x, deg)
+    x.setflags(write=False)
+    m.setflags(write=False)
+    return x, m
+
+
+def chebinterpolate(func, deg: int) -> np.ndarray:
+    """``numpy.polynomial.chebyshev.chebinterpolate(func, deg)``: the coefficients of the
+    interpolant of func (vectorised, values on the last axis) at the deg + 1 Chebyshev points
+    of the first kind, by the same arithmetic."""
+    order = deg + 1
+    x, m = _nodes_and_vandermonde(deg)
+    c = np.dot(m.T, func(x))
+    c[0] /= order
+    c[1:] /= 0.5 * order
+    return c

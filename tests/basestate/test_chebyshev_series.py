@@ -1,4 +1,4 @@
-"""The compiled Clenshaw recurrence equals NumPy's chebval bit for bit (basestate/clenshaw.py)."""
+"""The base states' Chebyshev series equal NumPy's bit for bit (basestate/chebyshev_series.py)."""
 
 from __future__ import annotations
 
@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from numpy.polynomial import chebyshev as cheb
 
-from electrogrowth.basestate.clenshaw import ChebyshevSeries
+from electrogrowth.basestate.chebyshev_series import ChebyshevSeries, chebinterpolate
 
 
 @pytest.mark.parametrize("seed", range(50))
@@ -25,3 +25,15 @@ def test_series_values_equal_numpys(seed):
     assert fast.integ(lbnd=lo)(x).tobytes() == slow.integ(lbnd=lo)(x).tobytes()
     assert isinstance(fast.integ(lbnd=lo), ChebyshevSeries)
     assert fast(float(x[0])) == slow(float(x[0]))  # a scalar: NumPy's own route
+
+
+@pytest.mark.parametrize("deg", [16, 32, 64, 128])
+def test_interpolation_equals_numpys(deg):
+    rng = np.random.default_rng(deg)
+    scales = rng.uniform(0.5, 5.0, size=4)
+
+    def f(x):
+        return np.stack([np.exp(s * x) * np.cos(3 * s * x) for s in scales], axis=-1)
+
+    assert chebinterpolate(f, deg).tobytes() == cheb.chebinterpolate(f, deg).tobytes()
+    assert chebinterpolate(np.sin, deg).tobytes() == cheb.chebinterpolate(np.sin, deg).tobytes()
