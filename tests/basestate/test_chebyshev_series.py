@@ -6,7 +6,12 @@ import numpy as np
 import pytest
 from numpy.polynomial import chebyshev as cheb
 
-from electrogrowth.basestate.chebyshev_series import ChebyshevSeries, chebinterpolate
+from electrogrowth.basestate import clenshaw_kernel  # loads numba: the compiled route
+from electrogrowth.basestate.chebyshev_series import ChebyshevSeries, _compiled, chebinterpolate
+
+
+def test_the_compiled_route_is_taken_once_numba_is_loaded():
+    assert _compiled() is clenshaw_kernel.clenshaw
 
 
 @pytest.mark.parametrize("seed", range(50))

@@ -11,7 +11,8 @@ arrays: the same mapping of the domain (NumPy's own), then per point the same re
 
 the same operations in the same order without fused multiply-adds, so the values equal
 NumPy's bit for bit (tests/basestate/test_chebyshev_series.py). Anything else (scalars, other
-shapes, short series) is NumPy's own evaluation.
+shapes, short series), and any evaluation before numba is loaded by the compiled kernels, is
+NumPy's own.
 
 :func:`chebinterpolate` is NumPy's, with the nodes and the Vandermonde matrix of each degree
 remembered instead of rebuilt at every call (a base state interpolates three to six
@@ -21,27 +22,11 @@ integrands; the same arrays, the same product, the same coefficients).
 from __future__ import annotations
 
 import functools
+import sys
 
-import numba as nb
 import numpy as np
 from numpy.polynomial import chebyshev as cheb
 from numpy.polynomial import polyutils as pu
-
-
-@nb.njit(cache=True)
-def clenshaw(x, c):
-    """sum_k c[k] T_k(x) at each point of the 1-d array x (len(c) >= 3), as numpy's chebval."""
-    n, size = x.shape[0], c.shape[0]
-    out = np.empty(n)
-    for j in range(n):
-        x2 = 2 * x[j]
-        c0, c1 = c[size - 2], c[size - 1]
-        for i in range(3, size + 1):
-            tmp = c0
-            c0 = c[size - i] - c1
-            c1 = tmp + c1 * x2
-        out[j] = c0 + c1 * x[j]
-    return out
 
 
 class ChebyshevSeries(cheb.Chebyshev):
@@ -56,8 +41,21 @@ class ChebyshevSeries(cheb.Chebyshev):
             and self.coef.ndim == 1
             and len(self.coef) >= 3
         ):
-            return clenshaw(pu.mapdomain(arg, self.domain, self.window), self.coef)
+            clenshaw = _compiled()
+            if clenshaw is not None:
+                return clenshaw(pu.mapdomain(arg, self.domain, self.window), self.coef)
         return super().__call__(arg)
+
+
+def _compiled():
+    """The compiled recurrence (clenshaw_kernel.py) once the compiled kernels have loaded
+    numba, else None: a base state alone (the ``state`` command) never imports numba, and
+    NumPy's evaluation gives the same bits."""
+    if "numba" not in sys.modules:
+        return None
+    from .clenshaw_kernel import clenshaw
+
+    return clenshaw
 
 
 @functools.lru_cache(maxsize=16)

@@ -33,7 +33,6 @@ from ..model.layers import Tube
 from ..model.materials import neo_hookean_moduli
 from ..summary import base_state_html
 from .chebyshev_series import ChebyshevSeries, chebinterpolate
-from .closed_form_fields import nh_fields
 from .voltage import (
     GAUSS_ORDERS,
     UniformWall,
@@ -341,6 +340,9 @@ class UniformState:
         :meth:`radius`, :meth:`moduli` and :meth:`pressure` (the Chebyshev table's input,
         incremental/radial_table.py, built at every step of a march)."""
         if self._sigma is None:  # the closed form, compiled; its NumPy twin: the three calls
+            # imported here: a base state alone (the ``state`` command) never loads numba
+            from .closed_form_fields import nh_fields
+
             R = self._inside(R)
             t = self.tube
             b = self._wall.b
