@@ -10,8 +10,9 @@ versions in one process, timed call by call, was tried first: the second package
 1.5x slower than alone, whichever it was, an artefact of sharing one process.) Numba compiles
 each copy once (its cache is keyed by the file's path).
 
-The points: the scans of ``make bench`` (bench.py CASES, full mode range), one critical mode
-of the paper's tube, one of a bilayer and a bilayer scan. Both versions must accept the
+The points: the scans of ``make bench`` (bench.py CASES, full mode range), two critical modes
+of the paper's tube (bench.py's warm mode among them), one of a bilayer, one of the mucosal
+bilayer (layered_bench.py's) and a bilayer scan. Both versions must accept the
 point; a point one of them cannot compute is listed, not timed. The table goes between the
 ``ab`` markers of BENCHMARKS.md.
 """
@@ -122,12 +123,24 @@ def points(eg, quick: bool) -> dict:
             t, c, side=s, options=full
         )
     paper = uniform(eg, outer_radius=1.4, voltage=0.4)
+    out["critical mode (0, 1), growth (bench.py's warm mode)"] = lambda: eg.critical_value(
+        paper, 0, 1, "growth"
+    )
     out["critical mode (2, 3), stretch in compression"] = lambda: eg.critical_value(
         paper, 2, 3, "stretch", side="compression"
     )
     bilayer = eg.Tube((eg.Layer(1.1, shear_modulus=10.0, growth=1.1), eg.Layer(2.0)), voltage=0.2)
     out["bilayer critical mode (4, 1), growth[1]"] = lambda: eg.critical_value(
         bilayer, 4, 1, "growth[1]"
+    )
+    mucosa = eg.Tube(
+        (eg.Layer(1.1, shear_modulus=10.0, growth=(1.0, 1.2, 1.0)), eg.Layer(2.0)),
+        length=3.0,
+        voltage=0.3,
+        inner_pressure=0.05,
+    )
+    out["mucosal bilayer critical mode (4, 1), growth[1].theta"] = lambda: eg.critical_value(
+        mucosa, 4, 1, "growth[1].theta"
     )
     few = eg.ScanOptions((0, 8), (1, 4), surface=False)
     out["bilayer scan m <= 8, n <= 4, growth[1]"] = lambda: eg.scan_modes(

@@ -164,3 +164,81 @@ def test_cli_layered_tube_line_shows_only_supported_digits(monkeypatch, capsys):
     assert main(argv + ["--layer", "1", "--component", "theta", "--mode", "12", "1"]) == 3
     out = capsys.readouterr().out
     assert "2.040442" not in out and "g [1, 2.0404, 1]" in out
+
+
+# -- the estimate by the secant (docs/derivation.md section 6) --------------------------------
+
+
+def _curved(root, calls):
+    """A signed target positive before ``root`` (growth rises from 1), curved, with an exact
+    difference root - x near the root (Sterbenz)."""
+
+    def g(x):
+        calls.append(x)
+        return (root - x) * (1.0 + 5.0 * (x - 1.0) ** 2)
+
+    return g
+
+
+@pytest.mark.parametrize("offset", [-4e-11, -1e-12, 3e-13, 2e-12, 5e-11])
+def test_secant_estimate_is_the_distance_to_the_root(offset):
+    """Past the root (interpolated, 2 evaluations) and before it (extrapolated and checked,
+    3 evaluations), on both senses of the path."""
+    for root, path in ((1.3, (1.0, 6.0)), (0.7, (1.0, 0.5))):
+        calls = []
+        sense = 1.0 if path[1] > path[0] else -1.0
+        value = root + sense * offset
+        g = _curved(root, calls) if sense > 0 else (lambda x, f=_curved(root, calls): -f(x))
+        est = critical._second_resolution(g, value, path)
+        assert est == pytest.approx(abs(value - root), rel=1e-4)
+        assert len(calls) == (2 if offset > 0 else 3)
+
+
+def test_secant_estimate_falls_back_without_a_sign_change():
+    """A target that only touches zero near the value (no root within the secant's step):
+    the windows' Brent decides, as before."""
+    calls = []
+
+    def g(x):
+        calls.append(x)
+        return (x - 1.3) ** 2 + 1e-20
+
+    assert critical._secant_estimate(g, 1.3 + 1e-9, (1.0, 6.0)) is None
+    est = critical._second_resolution(g, 1.3 + 1e-9, (1.0, 6.0))
+    assert est == pytest.approx(1e-6 * (1.3 + 1e-9) * 4**11, rel=1e-12)  # the widest window
+
+
+CASES = [
+    (PARAMS, 0, 1, "growth", None),
+    (PARAMS, 3, 1, "growth", None),
+    (PARAMS, 2, 3, "stretch", "compression"),
+    (Tube.uniform(outer_radius=1.4, length=1.0, growth=1.1), 0, 1, "voltage", None),
+    (Tube((Layer(1.2, growth=1.1), Layer(1.4, growth=1.1)), length=1.0), 0, 1, "voltage", None),
+]
+
+
+@pytest.mark.parametrize("case", CASES, ids=lambda c: f"{c[3]} {c[1:3]}")
+def test_secant_estimate_equals_the_windows_and_bounds_the_error(case, monkeypatch):
+    """The same value; the secant's estimate equals the windows' Brent one to the latter's
+    resolution (its root to 2e-15 max(1, |value|)); both bound the true error against a
+    reference at rtol 1e-14."""
+    tube, m, n, control, side = case
+    new = critical_value(tube, m, n, control, side=side)
+    reference = critical_value(tube, m, n, control, side=side, rtol=1e-14)
+    monkeypatch.setattr(critical, "_secant_estimate", lambda *args: None)
+    old = critical_value(tube, m, n, control, side=side)
+    assert new.value == old.value
+    resolution = 4e-15 * max(1.0, abs(new.value))
+    assert abs(new.error_estimate - old.error_estimate) <= 1e-3 * old.error_estimate + resolution
+    assert new.error_estimate >= abs(new.value - reference.value)
+
+
+def test_collocation_estimate_bounds_its_noise_floor():
+    """At rtol 1e-8 collocation's fine and coarse targets are the same 40-node determinant,
+    flat at rounding level over ~1e-10 around its root: the windows' Brent put the coarse root
+    9e-14 from the value (two roots of one function), below the true error (2e-13, against
+    the impedance root at rtol 1e-14); the secant reads the target's value there against its
+    slope, and its estimate bounds the error."""
+    got = critical_value(PARAMS, 0, 1, "growth", method="collocation", rtol=1e-8)
+    reference = critical_value(PARAMS, 0, 1, "growth", rtol=1e-14)
+    assert got.error_estimate >= abs(got.value - reference.value)

@@ -20,12 +20,12 @@ import dataclasses
 import math
 
 import numpy as np
-from numpy.polynomial import chebyshev as cheb
 
 from ..errors import BaseStateError, ConvergenceError, ParameterError
 from ..labelled import layered_state_dataset
 from ..model.layers import Layer, Tube
 from .branches import Branch, Threshold, clean, prepare, solve_on, threshold
+from .chebyshev_series import ChebyshevSeries
 from .plies import ORDERS, Wall, chebyshev
 from .warm import continued
 
@@ -249,7 +249,7 @@ class LayeredState:
             mu, eps = ply.layer.shear_modulus, ply.layer.permittivity
             unit = np.array([mu, mu, math.sqrt(mu / eps), mu])  # stress, field: the layer's
             coef = chebyshev(f, ply.a, ply.b, 0.01 * rtol, "base-state profile", unit)
-            antider = cheb.Chebyshev(coef[:, 0], domain=[ply.a, ply.b]).integ(lbnd=ply.a)
+            antider = ChebyshevSeries(coef[:, 0], domain=[ply.a, ply.b]).integ(lbnd=ply.a)
             weights = np.zeros(coef.shape[0])  # int_a^b T_k = (b - a) / (1 - k^2), k even
             weights[::2] = (ply.b - ply.a) / (1.0 - np.arange(0, coef.shape[0], 2) ** 2)
             totals += weights @ coef[:, 1:]

@@ -34,6 +34,7 @@ from numpy.polynomial import chebyshev as cheb
 from ..errors import ConvergenceError
 from ..model.layers import Layer, Tube
 from ..model.materials import MODULI_NAMES, Material, neo_hookean_moduli
+from .chebyshev_series import ChebyshevSeries, chebinterpolate
 from .voltage import energy_kind
 
 ORDERS = (8, 12, 16, 24, 32, 48, 64, 96, 128, 192, 256)  # Gauss-Legendre nodes per layer
@@ -64,7 +65,7 @@ def chebyshev(f, a: float, b: float, tol: float, what: str, unit=1.0) -> np.ndar
     its own noise nor against a constant that is rounding-small for a stiff layer."""
     last = None
     for deg in (16, 32, 64, 128, 256, 512):
-        coef = cheb.chebinterpolate(lambda x: f(a + 0.5 * (b - a) * (x + 1.0)), deg)
+        coef = chebinterpolate(lambda x: f(a + 0.5 * (b - a) * (x + 1.0)), deg)
         size = np.maximum(abs(coef).max(0), unit)
         tail = abs(coef[-3:]).max(0) / size
         if np.all(tail <= tol) or (
@@ -103,7 +104,7 @@ class Ply:
                     1e-14,
                     "graded growth",
                 )
-                integral = cheb.Chebyshev(coef, domain=[a, b]).integ(lbnd=a)
+                integral = ChebyshevSeries(coef, domain=[a, b]).integ(lbnd=a)
                 dG = float(integral(b))
             else:
                 dG = math.prod(layer.growth) * (b * b - a * a) / 2.0

@@ -32,6 +32,7 @@ from ..labelled import base_state_dataset
 from ..model.layers import Tube
 from ..model.materials import neo_hookean_moduli
 from ..summary import base_state_html
+from .chebyshev_series import ChebyshevSeries, chebinterpolate
 from .voltage import (
     GAUSS_ORDERS,
     UniformWall,
@@ -146,12 +147,12 @@ class UniformState:
             )
 
         for deg in (32, 64, 128, 256, 512):
-            coef = cheb.chebinterpolate(integrands, deg)
+            coef = chebinterpolate(integrands, deg)
             if np.all(abs(coef[-4:]).max(0) <= 0.01 * rtol * np.maximum(abs(coef).max(0), 1.0)):
                 break
         else:
             raise ConvergenceError(f"base-state profile not resolved to rtol = {rtol}")
-        sigma = cheb.Chebyshev(coef[:, 0], domain=[1.0, Ro]).integ(lbnd=1.0)
+        sigma = ChebyshevSeries(coef[:, 0], domain=[1.0, Ro]).integ(lbnd=1.0)
         weights = np.zeros(coef.shape[0])  # int_1^Ro T_k = (Ro - 1) / (1 - k^2), k even
         weights[::2] = (Ro - 1.0) / (1.0 - np.arange(0, coef.shape[0], 2) ** 2)
         scale, force, volt = weights @ coef[:, 1:]
@@ -213,10 +214,15 @@ class UniformState:
             None,
         )
 
-    def _local(self, R):
+    def _inside(self, R) -> np.ndarray:
+        """R as a float array, or ParameterError if it leaves the wall."""
         R = np.asarray(R, float)
         if np.any((R < 1.0 - 1e-12) | (R > self.tube.outer_radius * (1.0 + 1e-12))):
             raise ParameterError(f"R outside the wall [1, {self.tube.outer_radius:g}]")
+        return R
+
+    def _local(self, R):
+        R = self._inside(R)
         r, stretches, _ = self._wall.kinematics(self.lambda_i, R)
         return R, r, stretches, self.charge / r
 
@@ -328,6 +334,27 @@ class UniformState:
         if self._sigma is None:
             return neo_hookean_moduli(*stretches, d)
         return self.tube.material.moduli(*stretches, d)
+
+    def table_fields(self, R) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(r, moduli, p) at the radii R (1-d) in one evaluation: the same arrays as
+        :meth:`radius`, :meth:`moduli` and :meth:`pressure` (the Chebyshev table's input,
+        incremental/radial_table.py, built at every step of a march)."""
+        if self._sigma is None:  # the closed form, compiled; its NumPy twin: the three calls
+            # imported here: a base state alone (the ``state`` command) never loads numba
+            from .closed_form_fields import nh_fields
+
+            R = self._inside(R)
+            t = self.tube
+            b = self._wall.b
+            return nh_fields(
+                R, self.r_i, b, t.growth, t.stretch, self.charge, t.outer_radius, self.r_o
+            )
+        R, r, stretches, d = self._local(R)
+        return (
+            r,
+            self.tube.material.moduli(*stretches, d),
+            self._tau(stretches, d)[0] - self._sigma_rr(R, r),
+        )
 
     def as_dict(self) -> dict:
         """The JSON record of the state (inf -> null): geometry, charge, threshold, axial

@@ -125,6 +125,21 @@ def brent(f, a: float, b: float, tol: Tolerance = FULL, *, ref=None, named: bool
         raise ConvergenceError(f"the bracketed root solve failed on [{a}, {b}]: {exc}") from None
 
 
+class Remembered:
+    """f, remembering its values at the points already asked: a root finder handed a
+    bracket whose ends were just evaluated (to check it) does not pay them again. The values
+    are f's own, so the root is the same to the last bit."""
+
+    def __init__(self, f: Callable[[float], float]):
+        self.f, self.seen = f, {}
+
+    def __call__(self, x: float) -> float:
+        x = float(x)
+        if x not in self.seen:
+            self.seen[x] = self.f(x)
+        return self.seen[x]
+
+
 # -- bisection ------------------------------------------------------------------------------
 
 #: the edge of a path's states (where its base state is lost), and a pack of roots
@@ -245,7 +260,7 @@ def first_roots(
 
     def finish(k):
         i, l, h = cand[k], lo[k], hi[k]
-        f = lambda y: fine(y, i)  # noqa: E731
+        f = Remembered(lambda y: fine(y, i))  # brentq evaluates the ends l, h again
         if f(h) > 0:  # fine and loose disagree at h: fall back to the whole step
             if f(x) > 0:
                 return

@@ -38,13 +38,23 @@ class EventWatch:
         self.alive = np.ones(n, bool)
         self.due = np.full(n, x0)
         self.x0 = x0
+        self._distance = None  # root_distance() of the current samples, once computed
 
     @property
     def xa(self):
         return self.x[0]
 
     def root_distance(self):
-        """Extrapolated distance from the newest sample to the zero (inf if receding)."""
+        """Extrapolated distance from the newest sample to the zero (inf if receding);
+        computed once per set of samples (each step asks which functions are due and how
+        far the nearest zero is)."""
+        if self._distance is None:
+            self._distance = self._extrapolate()
+            self._distance.setflags(write=False)
+        return self._distance
+
+    def _extrapolate(self):
+        """:meth:`root_distance` from the samples."""
         (xa, xb, xc), (ga, gb, gc) = self.x, self.g
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             slope = (ga - gb) / (xa - xb)
@@ -64,6 +74,7 @@ class EventWatch:
         return self.alive & ((self.sense * (x - self.due) >= 0) | (reach >= self.root_distance()))
 
     def record(self, idx, x, g):
+        self._distance = None  # new samples, new extrapolation
         self.x[:, idx] = np.vstack([np.full(idx.size, x), self.x[0, idx], self.x[1, idx]])
         self.g[:, idx] = np.vstack([g, self.g[0, idx], self.g[1, idx]])
         wait = np.minimum(0.5 * self.root_distance()[idx], MAX_WAIT * self.scale)

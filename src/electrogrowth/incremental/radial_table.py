@@ -40,6 +40,7 @@ import numpy as np
 
 from ..errors import ConvergenceError
 from ..model.materials import MODULI_NAMES
+from .table_chop import chop_and_merge
 
 N_MODULI = len(MODULI_NAMES)
 #: rows of ``fmap`` after the 23 moduli: p, r and w = (dr/dR) / r
@@ -89,13 +90,22 @@ class TableStack(NamedTuple):
     n_segments: np.ndarray
 
 
+@functools.lru_cache(maxsize=16)
+def _chebyshev_points(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """(x, basis): the n Chebyshev points of the first kind, cos(pi (k + 1/2) / n), and the
+    DCT-II matrix cos(j theta_k) (coefficient index j, node index k), read-only."""
+    k = np.arange(n)
+    theta = np.pi * (k + 0.5) / n
+    x, basis = np.cos(np.pi * (k + 0.5) / n), np.cos(np.outer(k, theta))
+    x.setflags(write=False)
+    basis.setflags(write=False)
+    return x, basis
+
+
 def _cheb_coefficients(values: np.ndarray) -> np.ndarray:
     """Coefficients from values at the Chebyshev points of the first kind (DCT-II)."""
     n = values.shape[0]
-    k = np.arange(n)
-    theta = np.pi * (k + 0.5) / n
-    basis = np.cos(np.outer(k, theta))  # (coef index, node index)
-    c = basis @ values * (2.0 / n)
+    c = _chebyshev_points(n)[1] @ values * (2.0 / n)
     c[0] *= 0.5
     return c
 
@@ -130,11 +140,14 @@ def _segments(state, mu: float, eps: float):
     unit = mu == 1.0 and eps == 1.0  # the reference modulus and permittivity: no division
 
     layered = hasattr(state, "layer_fields")  # a LayeredState: one layer's fields at once
+    uniform = hasattr(state, "table_fields")  # a UniformState: the same, one call
 
     def values(R, k, layer):
         if layered:  # r, the moduli and p from one evaluation of the layer's fields
             f = state.layer_fields(R, k, moduli=True)
             r, moduli, p = f["r"], f["moduli"], f["tau1"] - f["sigma_rr"]
+        elif uniform:
+            r, moduli, p = state.table_fields(R)
         else:
             r, moduli, p = state.radius(R), state.moduli(R), state.pressure(R)
         # J = det F_g: a constant layer's product once (the same floating-point product)
@@ -150,16 +163,14 @@ def _segments(state, mu: float, eps: float):
 
 
 def _segment_table(a, b, values, tol, max_nodes):
-    """(chopped distinct coefficient rows, fmap) of one segment."""
+    """(chopped distinct coefficient rows, fmap) of one segment (the chopping and merging
+    compiled: table_chop.py)."""
     n = 17
     while True:
-        k = np.arange(n)
-        x = np.cos(np.pi * (k + 0.5) / n)
+        x = _chebyshev_points(n)[0]
         vals = values(0.5 * (a + b) + 0.5 * (b - a) * x)
-        coef = _cheb_coefficients(vals).T  # (26, n)
-        scale = np.maximum(np.abs(vals).max(axis=0), 1e-300)
-        small = np.abs(coef) <= tol * scale[:, None] * 8
-        tail_ok = small[:, -3:].all()
+        coef = _cheb_coefficients(vals)  # (n, 26)
+        tail_ok, rows, fmap = chop_and_merge(coef, vals, tol)
         if tail_ok or n >= max_nodes:
             break
         n = 2 * n - 1
@@ -168,10 +179,20 @@ def _segment_table(a, b, values, tol, max_nodes):
             f"base state not resolved by {max_nodes} Chebyshev points on R in"
             f" [{a:g}, {b:g}]; the wall is too thick or strained for the table"
         )
+    return rows, fmap
+
+
+def _chop_numpy(coef, vals, tol):
+    """The slow twin of table_chop.chop_and_merge, in NumPy: (tail_ok, rows, fmap)."""
+    coef = coef.T  # (26, n)
+    n = coef.shape[1]
+    scale = np.maximum(np.abs(vals).max(axis=0), 1e-300)
+    small = np.abs(coef) <= tol * scale[:, None] * 8
+    tail_ok = bool(small[:, -3:].all())
     # significant coefficients: n minus the trailing run of small ones (at least 1)
     degree = np.maximum(n - np.argmax(~small[:, ::-1], axis=1) * (~small).any(axis=1), 1)
     degree[~(~small).any(axis=1)] = 1
-    return _dedupe(coef, degree)
+    return (tail_ok, *_dedupe(coef, degree))
 
 
 def _dedupe(coef, degree):

@@ -182,15 +182,17 @@ def row_family(row) -> Family:
     return natural_family(row[0], row[1])
 
 
+#: the family codes, read once (mode_pairs runs at every evaluation of a march)
+_PRISMATIC, _TORSIONAL = Family.PRISMATIC.code, Family.TORSIONAL.code
+
+
 def mode_pairs(modes: np.ndarray) -> np.ndarray:
     """The Stroh pairs kept by each row of ``modes`` (int64 bitmasks)."""
     code = mode_families(modes)
-    wrinkle = np.where(modes[:, 0] == 0, ALL_PAIRS & ~U_TH, ALL_PAIRS)
-    return np.select(
-        [code == Family.PRISMATIC.code, code == Family.TORSIONAL.code],
-        [ALL_PAIRS & ~U_Z, U_TH],
-        wrinkle,
-    ).astype(np.int64)
+    pairs = np.where(modes[:, 0] == 0, ALL_PAIRS & ~U_TH, ALL_PAIRS).astype(np.int64)
+    pairs[code == _PRISMATIC] = ALL_PAIRS & ~U_Z
+    pairs[code == _TORSIONAL] = U_TH
+    return pairs
 
 
 def with_family(m: int, n: int, family: str) -> np.ndarray:
