@@ -35,8 +35,9 @@ for s in seq.switches:
 
 # %%
 # The first pattern's critical hoop growth along the voltage, each branch labelled (m, n),
-# the switches as dots. The voltage delays the folds (g_theta,cr rises) and makes them
-# finer: the fold number steps up by one at each switch.
+# the switches as dots; the lines join the computed points (the grid voltages and the
+# switches). The voltage delays the folds (g_theta,cr rises) and makes them finer: the
+# fold number steps up by one at each switch.
 #
 # What the literature says: for a dielectric film bonded to a substrate under a field
 # alone, the film's thickness, modulus and surface energy set whether it creases or

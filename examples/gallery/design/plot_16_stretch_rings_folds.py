@@ -34,7 +34,10 @@ for s in seq.switches:
 
 # %%
 # Compressed axially the stiff layer forms rings, (0, 2); released, it forms longitudinal
-# folds, (11, 0), with a window of axially modulated folds between. The last switch sits
+# folds, (11, 0), with a window of axially modulated folds (9, 1) between, and near
+# lambda_z = 0.959 two slivers, (1, 2) and (8, 1), each narrower than 1e-3 (see the
+# intervals printed above; their labels overlap in the plot). The lines join the computed
+# points: the grid values and the located switches. The last switch sits
 # at g_theta,cr = 1.7120162..., the critical growth of the (11, 0) folds at lambda_z = 1:
 # for neo-Hookean layers growing in the hoop direction the plane-strain problem at any
 # lambda_z is the one at lambda_z = 1 rescaled (docs/patterns.md), so the prismatic branch is

@@ -124,7 +124,7 @@ def plot_map(result, *, pixels: int = 160, ax=None) -> object:
     ax.ticklabel_format(useOffset=False)
     ax.set_xlabel(axis_label(mmap.keys[0]))
     ax.set_ylabel(axis_label(mmap.keys[1]))
-    ax.set_title(f"first pattern (m, n) by critical {mmap.solve_for}", fontsize=9)
+    ax.set_title(f"first pattern (m, n) by critical {symbol_text(mmap.solve_for)}", fontsize=9)
     ax.legend(fontsize=7, loc="best")
     return ax
 
