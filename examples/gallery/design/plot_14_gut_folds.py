@@ -15,8 +15,8 @@ M = (g_N - g_T) / g_T against the next pattern N.
 What was coarsened, and what is stored: the map covers R_1 in [1.065, 1.14] and
 mu_1/mu_2 in [5, 30] from a 3 x 3 grid of scans, modes m = 4 .. 18 with n = 0 and 1,
 boundary steps up to half the box (each traced point is still a root to 1e-13), two
-certified points a boundary. Even so it took 36 minutes to trace, and each design
-several minutes more, on a shared two-core machine: far beyond a page's minute. So the map
+certified points a boundary. Even so it took 36 minutes to trace, and each design 25 to
+40 minutes more, on a shared two-core machine under load: far beyond a page's minute. So the map
 and the three designs are read from ``gut_folds.json``, written by
 ``tools/gut_fold_designs.py``; this page checks each design again by a full scan at it.
 """
