@@ -67,8 +67,11 @@ sphinx_gallery_conf = {
     "examples_dirs": str(HERE.parent / "examples" / "gallery"),
     "gallery_dirs": "gallery",
     "filename_pattern": r"plot_",
-    # Subsections are the subfolders (each with its README.txt), in alphabetical order:
-    # basics, layered, sweeps (and design).
+    # Subsections are the subfolders (each with its README.txt), in the order of the
+    # pipeline: one tube, layered tubes, sweeps, then the inverse question (design).
+    "subsection_order": [  # paths relative to this directory, as sphinx-gallery wants
+        f"../examples/gallery/{s}" for s in ("basics", "layered", "sweeps", "design")
+    ],
     "within_subsection_order": "FileNameSortKey",
     "image_scrapers": ("gallery_scraper.scraper",),
     "remove_config_comments": True,

@@ -31,6 +31,6 @@ def test_gut_bilayer_designed_for_12_folds():
     d = res.designs[12]
     assert d.status == "found" and d.mode[0] == 12 and d.margin > 0
     # thicker or stiffer inner layers fold into fewer folds (the region of 12 is on the
-    # thin, soft side of the boundary): the published trend (docs/design-gallery.md)
+    # thin, soft side of the boundary): the published trend (docs/design.md)
     assert res.map.pattern_at(1.09, 9.5) == (12, 0)
     assert res.map.pattern_at(1.096, 10.5) == (11, 0)

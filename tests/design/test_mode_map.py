@@ -203,6 +203,11 @@ def test_cli_design_two_variables(capsys, tmp_path):
     assert {"outer_radius", "length"} <= set(out["sensitivity"]["value"])
     kinds = sorted(p.rsplit(".", 1)[1] for p in out["files"])
     assert kinds[:2] == ["csv", "nc"] or kinds[:2] == ["csv", "png"]
+    from matplotlib.image import imread
+
+    (png,) = [p for p in out["files"] if p.endswith(".png")]
+    height, width = imread(png).shape[:2]
+    assert width > 2 * height  # the map and, beside it, the design's tube in 3D
 
 
 def test_cli_design_two_variables_bad_input(capsys):

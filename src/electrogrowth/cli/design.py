@@ -7,7 +7,8 @@ region, the switches (boundaries), the best design and the sensitivities (``--js
 JSON object); writes ``design_<target>_vs_<key>.csv`` (the first mode along the variable,
 switches located) and ``.png`` (the competing modes, the region shaded) into ``--out``; for
 two variables ``design_<target>_<x>_<y>.csv`` (the traced boundaries' points), ``.png``
-(the map: regions labelled (m, n), boundaries, the target's region, the design) and ``.nc``
+(the map: regions labelled (m, n), boundaries, the target's region, the design; beside it
+the design's wrinkled tube in 3D) and ``.nc``
 (the map as netCDF, needs xarray).
 """
 
@@ -283,7 +284,7 @@ def _run_map(args, tube, solve_for, varies, target) -> int:
     result = prescribe_map(tube, target, mmap, options=options, koiter=args.koiter)
     record = result.as_dict()
     if args.out is not None:
-        record["files"] = [str(p) for p in _write_map(result, args.out)]
+        record["files"] = [str(p) for p in _write_map(result, args.out, tube)]
     if args.json:
         print(json.dumps(record))
         return 0
@@ -291,9 +292,9 @@ def _run_map(args, tube, solve_for, varies, target) -> int:
     return 0
 
 
-def _write_map(result, out: Path) -> list[Path]:
+def _write_map(result, out: Path, tube) -> list[Path]:
     from ..atomic import replaced
-    from ..figures.design import plot_map
+    from ..figures.design import plot_map_pattern
 
     mmap = result.map
     out.mkdir(parents=True, exist_ok=True)
@@ -307,9 +308,8 @@ def _write_map(result, out: Path) -> list[Path]:
             sides = f"{_text(b.left)},{_text(b.right)}"
             lines += [f"{k},{x!r},{y!r},{v!r},{sides}" for x, y, v in zip(b.x, b.y, b.value)]
         fh.write("\n".join(lines) + "\n")
-    ax = plot_map(result)
     png = out / f"{stem}.png"
-    ax.figure.savefig(png, dpi=200)
+    plot_map_pattern(result, tube).savefig(png, dpi=200)  # the map and the design in 3D
     files = [csv, png]
     try:
         ds = mmap.to_xarray()

@@ -19,6 +19,20 @@ def _num(v):
     return v if v is not None and math.isfinite(v) else None
 
 
+def label_of(value):
+    """The inverse of :func:`label_json`: (m, n) from [m, n], else the kind as text."""
+    if isinstance(value, list) and len(value) == 2 and all(isinstance(v, int) for v in value):
+        return (value[0], value[1])
+    if isinstance(value, str):
+        return value
+    raise ValueError(f"pattern {value!r} is invalid; need [m, n] or a kind")
+
+
+def _float(v) -> float:
+    """A stored number: None (written for NaN or infinity) reads back as NaN."""
+    return math.nan if v is None else float(v)
+
+
 @dataclasses.dataclass(frozen=True)
 class Certificate:
     """A traced point checked: ``gap`` = |v_P - v_Q| by full solves (NaN against the
@@ -93,6 +107,32 @@ class TriplePoint:
             "value": self.value,
             "gap": _num(self.gap),
         }
+
+
+def _boundary_of(b: dict) -> Boundary:
+    certificates = tuple(
+        Certificate(
+            float(c["x"]),
+            float(c["y"]),
+            _float(c["gap"]),
+            label_of(c["first"]),
+            _float(c["ahead"]),
+            bool(c["ok"]),
+        )
+        for c in b["certificates"]
+    )
+    left, right = (label_of(p) for p in b["patterns"])
+    xs, ys, values = (
+        tuple(map(f, b[k])) for f, k in ((float, "x"), (float, "y"), (_float, "value"))
+    )
+    return Boundary(
+        left, right, xs, ys, values, (str(b["ends"][0]), str(b["ends"][1])), certificates
+    )
+
+
+def _triple_of(t: dict) -> TriplePoint:
+    patterns = tuple(map(label_of, t["patterns"]))
+    return TriplePoint(patterns, float(t["x"]), float(t["y"]), float(t["value"]), _float(t["gap"]))
 
 
 @dataclasses.dataclass(frozen=True)
@@ -174,6 +214,28 @@ class ModeMap:
         for b in self.boundaries:
             found |= {b.left, b.right}
         return sorted(found, key=lambda lab: (not isinstance(lab, tuple), str(lab)))
+
+    @classmethod
+    def from_dict(cls, record: dict) -> ModeMap:
+        """The map written by :meth:`as_dict` (e.g. read back from JSON): a map traced once
+        and stored can be drawn, queried and designed in again without tracing it anew.
+        Only plain numbers, lists and texts are read (no code); a malformed record raises
+        ValueError."""
+        try:
+            (kx, *bx), (ky, *by) = record["vary"]
+            grid = record["grid"]
+            boundaries = tuple(_boundary_of(b) for b in record["boundaries"])
+            triples = tuple(_triple_of(t) for t in record["triple_points"])
+            return cls(
+                (str(kx), str(ky)), (tuple(map(float, bx)), tuple(map(float, by))),
+                str(record["solve_for"]), record["side"],
+                tuple(map(float, grid["x"])), tuple(map(float, grid["y"])),
+                tuple(tuple(map(label_of, row)) for row in grid["pattern"]),
+                np.array([[_float(v) for v in row] for row in grid["value"]]),
+                boundaries, triples, int(record["solves"]), float(record["seconds"]),
+            )  # fmt: skip
+        except (KeyError, TypeError, ValueError) as exc:
+            raise ValueError(f"not a stored mode map: {exc}") from None
 
     def as_dict(self) -> dict:
         return {

@@ -26,7 +26,7 @@ from scipy.optimize import minimize
 from ..bifurcation.scan import ScanOptions, scan_modes
 from ..errors import ElectrogrowthError
 from ..outcomes import Kind
-from .map_record import ModeMap, label_json
+from .map_record import ModeMap, label_json, label_of
 from .map_trace import Values, valued
 from .onset import (
     CREASE_FIRST,
@@ -111,6 +111,30 @@ class MapDesign:
                 "crease_value": {p: num(d) for p, d in self.crease_sensitivity.items()},
             },
         }
+
+
+def stored_design(record: dict, mmap: ModeMap, target) -> MapDesign:
+    """The design written by :meth:`MapDesign.as_dict`, in the map ``mmap`` it was found in
+    (:meth:`ModeMap.from_dict`), for ``target`` (as given to :func:`prescribe_map`: a
+    predicate cannot be stored). The region is taken again from the map's boundaries with
+    a target pattern on one side. A malformed record raises ValueError."""
+    goal = check_target(target)
+    try:
+        best, sens = record["best"], record["sensitivity"]
+        num = lambda v: math.nan if v is None else float(v)  # noqa: E731
+        table = lambda d: {str(k): num(v) for k, v in d.items()}  # noqa: E731
+        mode = None if best["mode"] is None else (int(best["mode"][0]), int(best["mode"][1]))
+        nxt = None if best["next_mode"] is None else label_of(best["next_mode"])
+        x, y = (num(v) for v in best["design"])
+        return MapDesign(
+            str(record["target"]), str(record["status"]), mmap.keys,
+            tuple(b for b in mmap.boundaries if b.left in goal or b.right in goal),
+            x, y, mode, num(best["value"]), num(best["margin"]), nxt, num(best["next_value"]),
+            {str(k): None if v is None else float(v) for k, v in best["to_boundary"].items()},
+            table(sens["value"]), table(sens["next_value"]), table(sens["margin"]), mmap, goal,
+        )  # fmt: skip
+    except (KeyError, TypeError, ValueError, IndexError) as exc:
+        raise ValueError(f"not a stored design: {exc}") from None
 
 
 class _Margins:

@@ -1,4 +1,4 @@
-"""The gallery of designed tubes (docs/design-gallery.md): a gut-like bilayer designed for
+"""The gallery of designed tubes (docs/design.md): a gut-like bilayer designed for
 8, 12 and 16 folds over the thickness and the modulus ratio of its growing inner layer.
 
 The tube is the mucosal bilayer of the patterns gallery (figures/gallery.py ``bilayer``):
@@ -16,17 +16,18 @@ import dataclasses
 from ..bifurcation.options import ScanOptions
 from ..design.map_record import ModeMap
 from ..design.mode_map import mode_map
-from ..design.prescribe_map import MapDesign, prescribe_map
+from ..design.prescribe_map import MapDesign, prescribe_map, stored_design
 from ..design.targets import Target
 from ..model.layers import Layer, Tube
 from .design import plot_map
 
 CONTROL = "growth[1].theta"
 FOLDS = (8, 12, 16)
-#: the full map: the interface radius 1 + h from 1.05 to 1.13 (the outer radius kept at 2),
-#: mu_1/mu_2 from 5 to 20, every m from 6 to 18
-FULL_BOX = (("layers[1].outer_radius", 1.05, 1.13), ("layers[1].shear_modulus", 5.0, 20.0))
-FULL_OPTIONS = ScanOptions((6, 18), (1, 1), top=3)
+#: the full map: the interface radius 1 + h from 1.065 to 1.14 (the outer radius kept at
+#: 2), mu_1/mu_2 from 5 to 30, every m from 4 to 18 with n = 0 (prismatic) and n = 1
+FULL_BOX = (("layers[1].outer_radius", 1.065, 1.14), ("layers[1].shear_modulus", 5.0, 30.0))
+FULL_OPTIONS = ScanOptions((4, 18), (1, 1), top=3, extend=False, surface=False)
+FULL_POINTS, FULL_CERTIFY, FULL_STEP = 3, 2, 0.5  # grid nodes a variable, checks, max step
 #: the quick map (tests): a small box across the 12 | 11 boundary near h = 0.1, mu = 10
 QUICK_BOX = (("layers[1].outer_radius", 1.09, 1.096), ("layers[1].shear_modulus", 9.5, 10.5))
 QUICK_OPTIONS = ScanOptions((11, 12), (1, 1), top=2, extend=False, surface=False)
@@ -60,20 +61,89 @@ def designed_folds(
     box, options = (QUICK_BOX, QUICK_OPTIONS) if quick else (FULL_BOX, FULL_OPTIONS)
     tube = gut_bilayer(box[0][1] - 1.0, box[1][1])
     if mmap is None:
+        steps = {} if quick else {"max_step": FULL_STEP}
         mmap = mode_map(
-            tube, CONTROL, box, options=options, points=2 if quick else 4,
-            certify=1 if quick else 2, progress=progress,
+            tube, CONTROL, box, options=options, points=2 if quick else FULL_POINTS,
+            certify=1 if quick else FULL_CERTIFY, progress=progress, **steps,
         )  # fmt: skip
     designs = {
         m: prescribe_map(tube, folds(m), mmap, options=options)
         for m in ((12,) if quick else FOLDS)
     }
-    first = designs[12]
-    ax = plot_map(first)
+    return FoldDesigns(mmap, designs, draw_folds(designs))
+
+
+def draw_folds(designs: dict) -> object:
+    """The map of the design for 12 folds (hatched, red star), the other designs found as
+    blue stars."""
+    ax = plot_map(designs[12] if 12 in designs else next(iter(designs.values())))
+    mark_designs(ax, designs)
+    return ax
+
+
+def mark_designs(ax, designs: dict) -> None:
+    """The designs other than the one for 12 folds (the map's own red star) as blue stars
+    labelled with their fold number (open stars: the closest design of a target never
+    first)."""
     for m, d in designs.items():
-        if m != 12 and d.status == "found":
-            ax.plot([d.x], [d.y], "*", color="tab:blue", ms=10)
-            ax.annotate(f"{m} folds", (d.x, d.y), xytext=(4, 4), textcoords="offset points",
-                        fontsize=7, color="tab:blue")  # fmt: skip
+        if m != 12 and d.status in ("found", "not_first"):
+            face = "tab:blue" if d.status == "found" else "none"
+            ax.plot([d.x], [d.y], "*", mfc=face, mec="tab:blue", ms=10, clip_on=False)
+            word = "" if d.status == "found" else " (closest)"
+            ax.annotate(f"{m} folds{word}", (d.x, d.y), xytext=(4, 4),
+                        textcoords="offset points", fontsize=7, color="tab:blue")  # fmt: skip
     ax.set_title("gut-like bilayer: first folds (m, n) by critical hoop growth", fontsize=8)
-    return FoldDesigns(mmap, designs, ax)
+
+
+def write_fold_designs(path, *, progress=None) -> FoldDesigns:
+    """Trace the full map, design it for 8, 12 and 16 folds and write both as JSON to
+    ``path`` (the map's :meth:`~ModeMap.as_dict`, each design's ``as_dict`` by fold
+    number, the seconds each took): the input of the gallery's page, which cannot afford
+    the tracing (tools/gut_fold_designs.py)."""
+    import time
+
+    start = time.perf_counter()
+    tube = gut_bilayer(FULL_BOX[0][1] - 1.0, FULL_BOX[1][1])
+    mmap = mode_map(
+        tube, CONTROL, FULL_BOX, options=FULL_OPTIONS, points=FULL_POINTS,
+        certify=FULL_CERTIFY, max_step=FULL_STEP, progress=progress,
+    )  # fmt: skip
+    return design_and_write(path, mmap, time.perf_counter() - start, progress)
+
+
+def design_and_write(path, mmap: ModeMap, map_seconds: float, progress=None) -> FoldDesigns:
+    """Design the traced full map ``mmap`` for 8, 12 and 16 folds and write map and designs
+    to ``path`` (:func:`write_fold_designs`)."""
+    import json
+    import time
+    from pathlib import Path
+
+    tube = gut_bilayer(FULL_BOX[0][1] - 1.0, FULL_BOX[1][1])
+    designs, seconds = {}, {"map": map_seconds}
+    for m in FOLDS:
+        if progress is not None:
+            progress(f"designing for {m} folds")
+        start = time.perf_counter()
+        designs[m] = prescribe_map(tube, folds(m), mmap, options=FULL_OPTIONS)
+        seconds[f"{m} folds"] = time.perf_counter() - start
+    record = {
+        "tube": "gut_bilayer (figures/design_gallery.py)",
+        "control": CONTROL,
+        "map": mmap.as_dict(),
+        "designs": {str(m): d.as_dict() for m, d in designs.items()},
+        "seconds": seconds,
+    }
+    Path(path).write_text(json.dumps(record, indent=1) + "\n", encoding="utf-8")
+    return FoldDesigns(mmap, designs, draw_folds(designs))
+
+
+def read_fold_designs(path) -> tuple[FoldDesigns, dict]:
+    """The map and designs written by :func:`write_fold_designs` (no solves), and the
+    seconds each took."""
+    import json
+    from pathlib import Path
+
+    record = json.loads(Path(path).read_text(encoding="utf-8"))
+    mmap = ModeMap.from_dict(record["map"])
+    designs = {int(m): stored_design(d, mmap, folds(int(m))) for m, d in record["designs"].items()}
+    return FoldDesigns(mmap, designs, draw_folds(designs)), record["seconds"]

@@ -233,11 +233,6 @@ def render_pattern(
     matplotlib.figure.Figure
     """
     surf = wall_surface(shape, amplitude=amplitude, n_theta=n_theta, n_z=n_z)
-    peak = float(np.abs(surf.u_r).max()) or 1.0
-    norm, cmap = Normalize(-peak, peak), mpl.colormaps["RdBu_r"]
-    elev, azim = 28.0, -60.0
-    half = 1.02 * float(max(np.abs(surf.x).max(), np.abs(surf.y).max()))
-    height = float(np.ptp(surf.z))
     side = 4.7  # inches: the square 3D axes
     title = (
         wrap(describe(shape), side / 0.84 - 0.2, 8) + f"\nwrinkle amplitude {amplitude:g} $R_i$"
@@ -246,15 +241,7 @@ def render_pattern(
     with mpl.rc_context(STYLE):
         fig = Figure(figsize=(side / 0.84, side))
         ax = fig.add_axes((0.0, 0.0, 0.84, 1.0), projection="3d")
-        rgb = cmap(norm(surf.u_r))
-        rgb[..., :3] *= _lighting(surf, elev, azim)[..., None]
-        ax.add_collection3d(_cells(surf, rgb))
-        ax.set(
-            xlim=(-half, half), ylim=(-half, half), zlim=(float(surf.z.min()), float(surf.z.max()))
-        )
-        ax.view_init(elev=elev, azim=azim)
-        ax.set_axis_off()
-        ax.set_box_aspect((2 * half, 2 * half, height))
+        norm, cmap = draw_wall(ax, surf)
         _fit(fig, ax, surf, side, top)
         H = fig.get_size_inches()[1]
         cax = fig.add_axes((0.86, 0.5 * (1 - top / H) - 0.3, 0.025, 0.6))
@@ -271,6 +258,22 @@ def render_pattern(
         Path(path).parent.mkdir(parents=True, exist_ok=True)
         fig.savefig(path, dpi=dpi)
     return fig
+
+
+def draw_wall(ax, surf: Surface, *, elev: float = 28.0, azim: float = -60.0):
+    """Draw the closed wall ``surf`` (shapes.wall.wall_surface) on the 3D axes ``ax``,
+    shaded and coloured by u_r, with equal axes; return (norm, cmap) for a colour bar."""
+    peak = float(np.abs(surf.u_r).max()) or 1.0
+    norm, cmap = Normalize(-peak, peak), mpl.colormaps["RdBu_r"]
+    half = 1.02 * float(max(np.abs(surf.x).max(), np.abs(surf.y).max()))
+    rgb = cmap(norm(surf.u_r))
+    rgb[..., :3] *= _lighting(surf, elev, azim)[..., None]
+    ax.add_collection3d(_cells(surf, rgb))
+    ax.set(xlim=(-half, half), ylim=(-half, half), zlim=(float(surf.z.min()), float(surf.z.max())))
+    ax.view_init(elev=elev, azim=azim)
+    ax.set_axis_off()
+    ax.set_box_aspect((2 * half, 2 * half, float(np.ptp(surf.z))))
+    return norm, cmap
 
 
 def _fit(fig, ax, surf: Surface, side: float, top: float) -> None:
