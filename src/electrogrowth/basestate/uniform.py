@@ -32,6 +32,7 @@ from ..labelled import base_state_dataset
 from ..model.layers import Tube
 from ..model.materials import neo_hookean_moduli
 from ..summary import base_state_html
+from . import neo_hookean
 from .chebyshev_series import ChebyshevSeries, chebinterpolate
 from .voltage import (
     GAUSS_ORDERS,
@@ -39,7 +40,6 @@ from .voltage import (
     cell_root,
     energy_kind,
     nh_lambda_i,
-    nh_traction,
     threshold_info,
 )
 
@@ -179,40 +179,12 @@ class UniformState:
 
     @classmethod
     def _neo_hookean(cls, tube, wall, lam, info) -> UniformState:
-        """Closed forms at lambda_i = lam: c from (V), N from (NH-4), and as quadrature_error
-        the traction residual M - c^2 Delta / (2 r_i^2 r_o^2) of (*), M = (g / lz) m by (NH-6),
-        over max(1, (g / lz) ln Rbar_o)."""
-        Ro, g, lz = tube.outer_radius, tube.growth, tube.stretch
-        b, x = wall.b, lam * lam
-        delta = b * (Ro**2 - 1.0)  # r_o^2 - r_i^2
-        s = 0.5 * math.log1p(delta / x)  # ln(r_o / r_i)
-        c = tube.voltage * (Ro - 1.0) / s
-        residual = g / lz * nh_traction(b / x, Ro**2 - 1.0) - 0.5 * c * c * delta / (
-            x * (x + delta)
-        )
-        a = x - b  # A = r^2 - b R^2
-        force = math.pi * (
-            lz**2 * delta / g**2
-            - c * c * s
-            - g**4 / lz**2 * (0.5 * (Ro**2 - 1.0) - a / b * s)
-            - b / g**2 * (a * math.log(Ro) + 0.5 * delta)
-        )
-        r_o = math.sqrt(x + delta)
+        """The closed forms at lambda_i = lam (neo_hookean.py)."""
+        c, r_o, force, error = neo_hookean.state_at(tube, wall.b, lam)
         return cls(
-            tube,
-            lam,
-            r_o / Ro,
-            lam,
-            r_o,
-            c,
-            info.value,
-            info.kind,
-            force,
-            abs(residual) / max(1.0, g / lz * math.log(Ro)),
-            float(info.lambda_i),
-            wall,
-            None,
-        )
+            tube, lam, r_o / tube.outer_radius, lam, r_o, c, info.value, info.kind, force,
+            error, float(info.lambda_i), wall, None,
+        )  # fmt: skip
 
     def _inside(self, R) -> np.ndarray:
         """R as a float array, or ParameterError if it leaves the wall."""
@@ -234,20 +206,10 @@ class UniformState:
         return np.array([l1**2 + d**2, l2**2, l3**2])
 
     def _sigma_rr(self, R, r) -> np.ndarray:
-        """sigma_rr; neo-Hookean (NH-1) with rho = (R^2 - 1) / (Rbar_o^2 - 1):
-        (g / 2 lz) [log1p((R^2 - 1) A / r^2) - log1p(kappa_o) (r_o / r)^2 rho],
-        A = r_i^2 - b, kappa_o = (Rbar_o^2 - 1) A / r_o^2: exactly 0 at R = 1 and at Vbar = 0."""
+        """sigma_rr: the quadrature's antiderivative, or the closed form (NH-1)."""
         if self._sigma is not None:
             return self._sigma(R)
-        p = self.tube
-        a, ro2, k = self.r_i**2 - self._wall.b, self.r_o**2, p.outer_radius**2 - 1.0
-        R2m1 = R**2 - 1.0
-        return (
-            0.5
-            * p.growth
-            / p.stretch
-            * (np.log1p(R2m1 * a / r**2) - math.log1p(k * a / ro2) * ro2 / r**2 * R2m1 / k)
-        )
+        return neo_hookean.sigma_rr(self.tube, self._wall.b, self.r_i, self.r_o, R, r)
 
     # -- the State protocol (_types.State): one layer, so ``side`` changes nothing ------------
 
