@@ -117,7 +117,8 @@ def stored_design(record: dict, mmap: ModeMap, target) -> MapDesign:
     """The design written by :meth:`MapDesign.as_dict`, in the map ``mmap`` it was found in
     (:meth:`ModeMap.from_dict`), for ``target`` (as given to :func:`prescribe_map`: a
     predicate cannot be stored). The region is taken again from the map's boundaries with
-    a target pattern on one side. A malformed record raises ValueError."""
+    a target pattern on one side; the crease's fields are read where the record has them
+    (a record written before them has none). A malformed record raises ValueError."""
     goal = check_target(target)
     try:
         best, sens = record["best"], record["sensitivity"]
@@ -132,6 +133,9 @@ def stored_design(record: dict, mmap: ModeMap, target) -> MapDesign:
             x, y, mode, num(best["value"]), num(best["margin"]), nxt, num(best["next_value"]),
             {str(k): None if v is None else float(v) for k, v in best["to_boundary"].items()},
             table(sens["value"]), table(sens["next_value"]), table(sens["margin"]), mmap, goal,
+            num(best.get("crease_value")), num(best.get("crease_margin")),
+            best.get("limited_by") or "", dict(best.get("verdict") or {}),
+            dict(record.get("region_crease") or {}), table(sens.get("crease_value", {})),
         )  # fmt: skip
     except (KeyError, TypeError, ValueError, IndexError) as exc:
         raise ValueError(f"not a stored design: {exc}") from None
