@@ -78,8 +78,6 @@ class TubeAt:
         """``solve_base_state(self(x), rtol=rtol)``, started from the nearest state this path
         has solved (the same root: basestate/warm.py)."""
         tube = self(x)
-        if tube.is_uniform:
-            return solve_base_state(tube, rtol=rtol)
         x = float(x)
         near, guess = self.neighbours.nearest(x, rtol)
         state = solve_base_state(tube, rtol=rtol, near=near, guess=guess)
