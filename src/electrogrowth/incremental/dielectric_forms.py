@@ -26,8 +26,7 @@ import numpy as np
 from .._types import FloatArray
 from ..errors import ParameterError
 from .monomial_forms import MonomialForms, by_degree, product
-from .plane_forms import _segment_maps
-from .polar_forms import Ring, _Seg, peak_on_rings
+from .polar_forms import Ring, peak_on_rings, radial_maps
 
 
 @dataclasses.dataclass
@@ -52,21 +51,8 @@ class DielectricForms(MonomialForms):
         if m < 2:
             raise ParameterError(f"m = {m}: prismatic modes need m >= 2")
         theta = 2 * np.pi * np.arange(theta_points) / (theta_points * m)
-        per = [_segment_maps(_Seg(r.inner, r.outer, r.nodes), max(2 * r.nodes, 8)) for r in rings_]
-        nR = sum(len(p[0]) for p in per)
-        n_disp = sum(r.nodes - 1 for r in rings_) + 1
-        n_pres = sum(r.nodes - 2 for r in rings_)
-        V, D, P = np.zeros((nR, n_disp)), np.zeros((nR, n_disp)), np.zeros((nR, n_pres))
-        row, col_d, col_p = 0, 0, 0
-        for r, (Y, _w, Pm, PD, Pi) in zip(rings_, per):
-            rows = slice(row, row + len(Y))
-            V[rows, col_d : col_d + r.nodes] = Pm
-            D[rows, col_d : col_d + r.nodes] = PD
-            P[rows, col_p : col_p + r.nodes - 2] = Pi
-            row, col_d, col_p = row + len(Y), col_d + r.nodes - 1, col_p + r.nodes - 2
-        R = np.concatenate([p[0] for p in per])
-        wR = np.concatenate([p[1] for p in per]) * R
-        layer = np.concatenate([np.full(len(p[0]), r.layer) for r, p in zip(rings_, per)])
+        R, wR, layer, V, D, P = radial_maps(rings_)
+        nR, n_disp, n_pres = len(R), V.shape[1], P.shape[1]
         sizes = {0: n_disp, 1: n_disp, 2: n_pres, 3: n_disp - 2}
         slices, at = [], 0
         for field, _j in harmonics:

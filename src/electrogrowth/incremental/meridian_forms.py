@@ -27,8 +27,7 @@ import numpy as np
 from .._types import FloatArray
 from ..errors import ParameterError
 from .monomial_forms import MonomialForms
-from .plane_forms import _segment_maps
-from .polar_forms import Ring, _Seg, peak_on_rings
+from .polar_forms import Ring, peak_on_rings, radial_maps
 
 #: the local fields of the energy: the displacement gradient and the pressure increment
 FIELDS = ("rR", "rZ", "zR", "zZ", "tT", "q")
@@ -58,21 +57,8 @@ class MeridianForms(MonomialForms):
         if (1, 0) in harmonics:
             raise ParameterError("U_z = b_0 sin(0) is no field: leave (1, 0) out")
         Z = 2 * np.pi * np.arange(z_points) / (z_points * K)  # one period
-        per = [_segment_maps(_Seg(r.inner, r.outer, r.nodes), max(2 * r.nodes, 8)) for r in rings_]
-        nR = sum(len(p[0]) for p in per)
-        n_disp = sum(r.nodes - 1 for r in rings_) + 1
-        n_pres = sum(r.nodes - 2 for r in rings_)
-        V, D, P = np.zeros((nR, n_disp)), np.zeros((nR, n_disp)), np.zeros((nR, n_pres))
-        row, col_d, col_p = 0, 0, 0
-        for r, (Y, _w, Pm, PD, Pi) in zip(rings_, per):
-            rows = slice(row, row + len(Y))
-            V[rows, col_d : col_d + r.nodes] = Pm
-            D[rows, col_d : col_d + r.nodes] = PD
-            P[rows, col_p : col_p + r.nodes - 2] = Pi
-            row, col_d, col_p = row + len(Y), col_d + r.nodes - 1, col_p + r.nodes - 2
-        R = np.concatenate([p[0] for p in per])
-        wR = np.concatenate([p[1] for p in per]) * R
-        layer = np.concatenate([np.full(len(p[0]), r.layer) for r, p in zip(rings_, per)])
+        R, wR, layer, V, D, P = radial_maps(rings_)
+        nR, n_disp, n_pres = len(R), V.shape[1], P.shape[1]
         slices, at = [], 0
         for field, _j in harmonics:
             size = n_pres if field == 2 else n_disp

@@ -69,6 +69,30 @@ def rings(tube, m: float, nodes: int = 24) -> tuple[Ring, ...]:
     return tuple(out)
 
 
+def radial_maps(rings_: tuple[Ring, ...]):
+    """The rings' quadrature points R, their weights times R, their layer, and the maps from
+    the nodal values to a displacement (V) and its R-derivative (D) at them (continuous
+    across the rings: neighbours share the interface node) and to a pressure (P, its own
+    interior nodes per ring): the radial half of every tube form (this module's, the
+    meridian's, the dielectric one)."""
+    per = [_segment_maps(_Seg(r.inner, r.outer, r.nodes), max(2 * r.nodes, 8)) for r in rings_]
+    nR = sum(len(p[0]) for p in per)
+    n_disp = sum(r.nodes - 1 for r in rings_) + 1
+    n_pres = sum(r.nodes - 2 for r in rings_)
+    V, D, P = np.zeros((nR, n_disp)), np.zeros((nR, n_disp)), np.zeros((nR, n_pres))
+    row, col_d, col_p = 0, 0, 0
+    for r, (Y, _w, Pm, PD, Pi) in zip(rings_, per):
+        rows = slice(row, row + len(Y))
+        V[rows, col_d : col_d + r.nodes] = Pm
+        D[rows, col_d : col_d + r.nodes] = PD
+        P[rows, col_p : col_p + r.nodes - 2] = Pi
+        row, col_d, col_p = row + len(Y), col_d + r.nodes - 1, col_p + r.nodes - 2
+    R = np.concatenate([p[0] for p in per])
+    wR = np.concatenate([p[1] for p in per]) * R
+    layer = np.concatenate([np.full(len(p[0]), r.layer) for r, p in zip(rings_, per)])
+    return R, wR, layer, V, D, P
+
+
 @dataclasses.dataclass
 class PolarForms:
     """The maps from the unknowns of ``harmonics`` ((field, j): 0 = a, 1 = b, 2 = c) to the
@@ -89,23 +113,8 @@ class PolarForms:
         if m < 2:
             raise ParameterError(f"m = {m}: prismatic modes need m >= 2")
         theta = 2 * np.pi * np.arange(_THETA_POINTS) / (_THETA_POINTS * m)  # one period
-        per = [_segment_maps(_Seg(r.inner, r.outer, r.nodes), max(2 * r.nodes, 8)) for r in rings_]
-        nR = sum(len(p[0]) for p in per)
-        n_disp = sum(r.nodes - 1 for r in rings_) + 1
-        n_pres = sum(r.nodes - 2 for r in rings_)
-        V, D, P = np.zeros((nR, n_disp)), np.zeros((nR, n_disp)), np.zeros((nR, n_pres))
-        row, col_d, col_p = 0, 0, 0
-        for r, (Y, _w, Pm, PD, Pi) in zip(rings_, per):
-            rows = slice(row, row + len(Y))
-            V[rows, col_d : col_d + r.nodes] = Pm
-            D[rows, col_d : col_d + r.nodes] = PD
-            P[rows, col_p : col_p + r.nodes - 2] = Pi
-            row += len(Y)
-            col_d += r.nodes - 1
-            col_p += r.nodes - 2
-        R = np.concatenate([p[0] for p in per])
-        wR = np.concatenate([p[1] for p in per]) * R
-        layer = np.concatenate([np.full(len(p[0]), r.layer) for r, p in zip(rings_, per)])
+        R, wR, layer, V, D, P = radial_maps(rings_)
+        nR, n_disp, n_pres = len(R), V.shape[1], P.shape[1]
         slices, at = [], 0
         for field, _j in harmonics:
             size = n_pres if field == 2 else n_disp
