@@ -25,19 +25,44 @@ SRC = Path(__file__).resolve().parents[1] / "src"
 #: each finished point of a curve, when a scan starts.
 LAUNCHER = """\
 import pathlib
+import time
 from electrogrowth.cli import app, critical, curve
+
+def point_done(n):
+    pathlib.Path("mark").write_text("point")
+    time.sleep(0.05)  # 60 points last at least 3 s, however fast the machine
 
 def marking(compute):
     def run(*args, **kwargs):
         if "progress" in kwargs:
-            kwargs["progress"] = lambda n: pathlib.Path("mark").write_text("point")
-        else:
-            pathlib.Path("mark").write_text("scan")
+            kwargs["progress"] = point_done
+            return compute(*args, **kwargs)
+        pathlib.Path("mark").write_text("scan")
+        for _ in range(20):  # a scan lasts a fraction of a second: keep the signal inside one
+            compute(*args, **kwargs)
         return compute(*args, **kwargs)
     return run
 
 curve.critical_curve = marking(curve.critical_curve)
 critical.scan_modes = marking(critical.scan_modes)
+raise SystemExit(app.main())
+"""
+#: The sweep's launcher paces the chunks after the first (one second each) so that a fast
+#: machine cannot finish the whole sweep between the first saved chunk and the signal.
+SWEEP_LAUNCHER = """\
+import time
+from electrogrowth.cli import app
+from electrogrowth.sweep import run
+
+computed = []
+
+def paced(task, *args, **kwargs):
+    if computed:
+        time.sleep(1.0)
+    computed.append(task)
+    return compute(task, *args, **kwargs)
+
+compute, run.compute_chunk = run.compute_chunk, paced
 raise SystemExit(app.main())
 """
 STOPS_WITHIN = 10.0  # seconds from the signal to the exit (~1.5 s measured on a busy machine)
@@ -56,11 +81,11 @@ def _wrapped_interrupt() -> SystemError:
         return exc
 
 
-def _interrupt(tmp_path, sig, *argv, ready=None, timeout=300):
+def _interrupt(tmp_path, sig, *argv, ready=None, timeout=300, launcher=LAUNCHER):
     """Run the command, send ``sig`` once ``ready()`` (default: the launcher's mark exists);
     check the exit and return stderr."""
     ready = ready or (tmp_path / "mark").exists
-    (tmp_path / "launch.py").write_text(LAUNCHER)
+    (tmp_path / "launch.py").write_text(launcher)
     env = {
         **os.environ,
         "PYTHONPATH": os.pathsep.join(filter(None, [str(SRC), os.environ.get("PYTHONPATH")])),
@@ -134,6 +159,7 @@ def test_interrupted_sweep_keeps_its_chunks(tmp_path):
         signal.SIGINT,
         *"sweep s.toml --workers 1 --quiet".split(),
         ready=lambda: marks.exists() and any(p.is_file() for p in marks.rglob("*")),
+        launcher=SWEEP_LAUNCHER,
     )
     assert "interrupted; the finished chunks are saved in s.zarr" in err
     done = int((open_results(tmp_path / "s.zarr")["run"] > 0).sum())
