@@ -31,9 +31,11 @@ from electrogrowth.bifurcation.crease_interface import (
     interfacial_biot_ratio,
 )
 from electrogrowth.bifurcation.curve_crease import crease_along
+from electrogrowth.bifurcation.verdict import crease_rival, judge
 from electrogrowth.cli.app import main
 from electrogrowth.design.onset import crease_sensitivities, crease_value
 from electrogrowth.model.layers import Layer, Tube
+from electrogrowth.sweep.unit import verdict_fields
 
 #: a homogeneous layer growing axially at fixed length creases where
 #: lambda_r / lambda_z = g^(3/2) = 2.4 (test_crease.py, the free faces' closed form)
@@ -215,3 +217,13 @@ def test_the_designs_crease_value_and_its_sensitivity_see_the_interface():
     down = crease_onset(tube.at(key, 0.05 - h), "growth[2].z").value
     assert d == pytest.approx((up - down) / (2 * h), rel=1e-4)
     assert d < 0  # a stiffer neighbour holds the layer: its face compresses sooner
+
+
+def test_a_sweep_point_stores_the_interface_crease():
+    """sweep/unit.py's verdict fields, from the verdict of the interface crease."""
+    onset = crease_onset(sandwich(0.01), "growth[2].z")
+    fields = verdict_fields(judge(None, crease=crease_rival(onset), name="g"))
+    assert fields["verdict"] == "crease" and fields["crease_face"] == onset.face
+    assert fields["crease_value"] == onset.value and fields["crease_trigger"] == "axial"
+    assert fields["crease_error"] == onset.error_estimate
+    assert fields["meaning"].startswith(f"the tube creases at {onset.label} (sharp folds")
