@@ -295,7 +295,7 @@ def _ends(curve) -> dict:
 def _crease_points(curve) -> dict:
     """The crease at each point of a curve (bifurcation/curve_crease.py)."""
     c = curve.crease
-    value = {**_critical_attrs(curve.solve_for), "long_name": "where a free face creases"}
+    value = {**_critical_attrs(curve.solve_for), "long_name": "where a face creases"}
     text = lambda what: {"units": "1", "long_name": what}  # noqa: E731
     return {
         "crease_value": ("point", np.asarray(c.value, float), value),

@@ -1,4 +1,4 @@
-"""The crease competitor: where a free face of the tube reaches the onset of creasing.
+"""The crease competitor: where a face of the tube reaches the onset of creasing.
 
 A crease is a sharp self-contacting fold of a free surface, a nonlinear instability with no
 length scale that no linear (wrinkling) analysis finds. Having no length, its onset is
@@ -15,7 +15,10 @@ decided by the local state at the surface (docs/derivation-crease.md):
   E sqrt(eps / mu) = CREASE_FIELD = 1.03 (Wang, Zhang & Zhao 2011, a film bonded to a rigid
   electrode, no prestretch). The two are separate limits: their interaction (a field on a
   compressed or stretched face) is not known in closed form, and a face creases here when
-  either is reached.
+  either is reached;
+* at a bonded interface whose neighbour is much softer (crease_interface.py): the free
+  face's ratio on the stiffer layer's face, which folds into that layer; the neighbour
+  delays the onset, by an amount the error estimate carries.
 
 For energies other than the neo-Hookean the neo-Hookean criterion is applied and the
 result says so (``criterion``). The onset is the first root of the crease margin along the
@@ -36,6 +39,7 @@ from ..model.builtin_energies import BuiltinEnergy
 from ..model.layers import Tube
 from ..outcomes import Kind, Outcome, Status
 from .along import TubeAt
+from .crease_interface import SOFT_NEIGHBOUR, interfaces, interfacial_biot_ratio, label
 from .march import control_path
 from .problem import Problem, as_problem
 from .surface import ray_limit
@@ -56,7 +60,8 @@ CREASE_FIELD_ACCURACY = 0.01
 #: the march's first, smallest and largest step, fractions of the control's scale: each
 #: next step is half the secant's distance to the onset, within these bounds
 STEP, STEP_MIN, STEP_MAX = 0.02, 0.002, 0.1
-#: the faces that may crease: free (an interface is bonded and is left out)
+#: the free faces, which may always crease; an interface may where its neighbour is much
+#: softer (crease_interface.interfaces)
 FACES = ("inner", "outer")
 
 
@@ -72,14 +77,17 @@ def onset_strain(ratio: float = CREASE_RATIO) -> float:
 
 @dataclasses.dataclass(frozen=True)
 class FaceCrease:
-    """How close one free face is to creasing: the ratios lambda_r / lambda_theta
+    """How close one face is to creasing: the ratios lambda_r / lambda_theta
     (prismatic crease, fold lines along z) and lambda_r / lambda_z (axial crease, rings),
-    and the field E sqrt(eps_k / mu_k) of the face's layer."""
+    and the field E sqrt(eps_k / mu_k) of the face's layer. At an interface ("interface-K")
+    the stretches are the stiffer layer's, the field 0 (no electrode) and ``neighbour``
+    the soft neighbour's modulus as a fraction of that layer's (0: a free face)."""
 
     face: str
     hoop: float
     axial: float
     field: float
+    neighbour: float = 0.0
 
     @property
     def drives(self) -> dict[str, float]:
@@ -103,7 +111,8 @@ class FaceCrease:
 
 
 def face_creases(state) -> tuple[FaceCrease, ...]:
-    """The inner and outer face of a base state (any tube: the State protocol)."""
+    """The inner and outer face of a base state (any tube: the State protocol), then every
+    interface bonded to a much softer layer (crease_interface.interfaces)."""
     tube = state.tube
     out = []
     for face, R, layer in (
@@ -115,7 +124,17 @@ def face_creases(state) -> tuple[FaceCrease, ...]:
         e = float(state.electric_field(R, side=side))
         scale = math.sqrt(layer.permittivity / layer.shear_modulus)
         out.append(FaceCrease(face, l1 / l2, l1 / l3, e * scale))
+    for i in interfaces(tube):
+        l1, l2, l3 = (float(v) for v in state.elastic_stretches(i.radius, side=i.side))
+        out.append(FaceCrease(i.name, l1 / l2, l1 / l3, 0.0, i.neighbour))
     return tuple(out)
+
+
+def neighbour_delay(neighbour: float) -> float:
+    """How much a bonded neighbour ``neighbour`` times as stiff delays the linear analogue
+    of the crease, Biot's interfacial wrinkle: its ratio over BIOT_RATIO, minus 1 (0 for a
+    free face, neighbour = 0; crease_interface.interfacial_biot_ratio)."""
+    return 0.0 if neighbour <= 0.0 else interfacial_biot_ratio(neighbour) / BIOT_RATIO - 1.0
 
 
 def crease_margin(state) -> FaceCrease:
@@ -161,7 +180,14 @@ def criterion_text(tube: Tube) -> str:
     """Which criterion is applied to the tube's face layers, in words; for an energy it is
     not exact for, how far that energy's own Biot ratio is from neo-Hookean's."""
     faces = (tube.layers[0].material, tube.layers[-1].material)
+    faces += tuple(tube.layers[i.layer - 1].material for i in interfaces(tube))
     base = f"neo-Hookean crease ratio {CREASE_RATIO:g}, electro-crease field {CREASE_FIELD:g}"
+    bonded = [i.label for i in interfaces(tube)]
+    if bonded:
+        base += (
+            f"; {'; '.join(bonded)}: the free face's ratio, its neighbour at most"
+            f" {SOFT_NEIGHBOUR:g} times as stiff (an early bound)"
+        )
     other = sorted({m for m in faces if not ratio_is_exact(m)}, key=lambda m: m.name)
     if not other:
         return base
@@ -187,8 +213,10 @@ class CreaseOnset(Outcome):
     ``trigger``: "prismatic", "axial" or "field") or NONE (no crease before the end of the
     path or before the axisymmetric state is lost at ``threshold``). ``error_estimate`` is
     the change of the value over the criterion's accuracy (CREASE_RATIO_ACCURACY,
-    CREASE_FIELD_ACCURACY), linearised; ``criterion`` says which criterion was applied.
-    ``threshold`` is where the march lost the axisymmetric state (NaN if it did not)."""
+    CREASE_FIELD_ACCURACY; at an interface plus the neighbour's delay), linearised;
+    ``criterion`` says which criterion was applied, ``label`` the face in words ("inner
+    face", "interface 1|2 (R = 1.5), layer 1 folds"). ``threshold`` is where the march lost
+    the axisymmetric state (NaN if it did not)."""
 
     solve_for: str
     value: float
@@ -200,6 +228,7 @@ class CreaseOnset(Outcome):
     params: Tube
     criterion: str
     threshold: float = math.nan
+    label: str | None = None
     status: Status = Status.OK
     message: str = ""
     remedy: str = ""
@@ -210,6 +239,7 @@ class CreaseOnset(Outcome):
             "kind": str(self.kind),
             "value": fin(self.value),
             "face": self.face,
+            "label": self.label,
             "trigger": self.trigger,
             "error_estimate": fin(self.error_estimate),
             "criterion": self.criterion,
@@ -223,12 +253,13 @@ def crease_onset(
     side: str | None = None,
     rtol: float | None = None,
 ) -> CreaseOnset:
-    """The control value at which a free face of the tube first reaches the crease onset.
+    """The control value at which a face of the tube first reaches the crease onset.
 
     The control ``solve_for`` (any of model/controls.py KINDS) is marched from its stable
     start along the base-state path, as for a critical value; the crease margin of the
     inner and outer face (:func:`crease_margin`) is followed and its first root found by
-    Brent's method.
+    Brent's method. A layered tube's interfaces bonded to a much softer layer count as
+    faces too (crease_interface.py).
 
     Parameters
     ----------
@@ -259,8 +290,19 @@ def crease_onset(
 
     def result(value, kind, face=None, trigger=None, error=math.nan, threshold=math.nan):
         params_at = tube.at(control, value) if math.isfinite(value) else tube
+        where = None if face is None else label(tube, face)
         return CreaseOnset(
-            control, value, kind, face, trigger, error, side, params_at, criterion, threshold
+            control,
+            value,
+            kind,
+            face,
+            trigger,
+            error,
+            side,
+            params_at,
+            criterion,
+            threshold,
+            where,
         )
 
     x, h = start, margin(start)
@@ -301,14 +343,15 @@ def _solves(state):
 
 
 def _criterion_error(margin, value: float, x_before: float, face: FaceCrease) -> float:
-    """How far the onset moves over the criterion's accuracy: d(drive) = accuracy / onset,
-    divided by the slope of the margin at the root (a secant over 1e-4 of the last step,
-    on the side the march came from, where the state exists)."""
+    """How far the onset moves over the criterion's accuracy: d(drive) = accuracy / onset
+    (at an interface plus the neighbour's delay, :func:`neighbour_delay`), divided by the
+    slope of the margin at the root (a secant over 1e-4 of the last step, on the side the
+    march came from, where the state exists)."""
     near = value + 1e-4 * (x_before - value)
     slope = (margin(value) - margin(near)) / (value - near)
     rel = (
         CREASE_FIELD_ACCURACY / CREASE_FIELD
         if face.trigger == "field"
-        else CREASE_RATIO_ACCURACY / CREASE_RATIO
+        else CREASE_RATIO_ACCURACY / CREASE_RATIO + neighbour_delay(face.neighbour)
     )
     return abs(rel / slope) if slope != 0 else math.inf

@@ -1,4 +1,4 @@
-"""The crease along a critical curve: at every row, where a free face creases along the same
+"""The crease along a critical curve: at every row, where a face creases along the same
 control (crease.py's criterion) and whether that comes before the row's critical value.
 
 The crease onset depends on the tube at the row's abscissa only, not on the mode, so it is
@@ -25,7 +25,7 @@ from .verdict import advisory, crease_rival
 
 @dataclasses.dataclass(frozen=True)
 class CreaseAlong:
-    """Per row of a curve: ``value`` where a free face creases (NaN: not reached, or the
+    """Per row of a curve: ``value`` where a face creases (NaN: not reached, or the
     criterion could not be evaluated: ``note``), its ``face``, ``trigger`` ("prismatic",
     "axial", "field"; "" none) and ``error`` (the criterion's accuracy in the control), and
     ``first``: the crease comes before the row's critical value."""

@@ -2,7 +2,8 @@
 
 The linear analysis (critical.py, scan.py) finds the first wrinkle (kind BIFURCATION), the
 short-wave surface limit (SURFACE) or the loss of the axisymmetric state (THRESHOLD); the
-crease criterion (crease.py) finds where a free face creases (CREASE). A :class:`Verdict`
+crease criterion (crease.py) finds where a face creases (CREASE: a free
+face, or an interface bonded to a much softer layer). A :class:`Verdict`
 puts them on one footing: ``kind`` and ``value`` of the first reached, the runner-up of
 every other kind that was found (``wrinkle``, ``surface``, ``crease``, ``threshold``: a
 :class:`Rival` or None), and ``meaning``, one line for a user.
@@ -39,8 +40,9 @@ def _fin(v):
 @dataclasses.dataclass(frozen=True)
 class Rival:
     """One kind of instability at its value: a wrinkle (``m``, ``n``, ``family``), a
-    surface or crease (``face``; a crease's ``trigger``: prismatic, axial or field) or the
-    threshold (``detail``: what is lost)."""
+    surface or crease (``face``; a crease's ``trigger``: prismatic, axial or field; at an
+    interface ``detail`` says which, and which layer folds) or the threshold (``detail``:
+    what is lost)."""
 
     kind: str
     value: float
@@ -179,8 +181,8 @@ def meaning(first: Rival, others: list[Rival], sense: float, name: str) -> str:
             close = " (within the crease criterion's accuracy of it: too close to call)"
     if first.kind == Kind.CREASE:
         head = (
-            f"the {first.face} face creases (sharp folds, {_trigger(first.trigger)}) at"
-            f" {name} = {first.value:.4g} before any smooth wrinkle"
+            f"{creases(first.face, first.detail)} (sharp folds, {_trigger(first.trigger)})"
+            f" at {name} = {first.value:.4g} before any smooth wrinkle"
         )
     elif first.kind == Kind.BIFURCATION:
         head = f"the tube wrinkles smoothly in {_mode(first)} at {name} = {first.value:.4g}"
@@ -203,12 +205,26 @@ def _what(r: Rival) -> str:
             " unstretched film (an early bound for a crease)"
         )
     if r.kind == Kind.CREASE:
-        return f"a crease at the {r.face} face"
+        return f"a crease at {crease_where(r.face, r.detail)}"
     if r.kind == Kind.BIFURCATION:
         return f"the wrinkle {_mode(r)}"
     if r.kind == Kind.SURFACE:
         return f"short-wave wrinkles at the {r.face} face"
     return "the loss of the axisymmetric state"
+
+
+def crease_where(face: str | None, detail: str | None = None) -> str:
+    """Where a crease forms, in words: "the inner face", "the outer face", or at an
+    interface its ``detail`` ("interface 1|2 (R = 1.5), layer 1 folds")."""
+    if face is not None and face.startswith("interface") and detail:
+        return detail
+    return f"the {face} face"
+
+
+def creases(face: str | None, detail: str | None = None) -> str:
+    """ "the inner face creases" or "the tube creases at interface 1|2 (...)"."""
+    where = crease_where(face, detail)
+    return f"{where} creases" if where.startswith("the ") else f"the tube creases at {where}"
 
 
 def _trigger(trigger: str | None) -> str:
@@ -223,8 +239,14 @@ def crease_rival(onset) -> Rival | None:
     """A :class:`~.crease.CreaseOnset` as a rival (None where no crease was reached)."""
     if onset is None or onset.kind != Kind.CREASE:
         return None
+    at_interface = onset.face is not None and onset.face.startswith("interface")
     return Rival(
-        Kind.CREASE, onset.value, onset.error_estimate, face=onset.face, trigger=onset.trigger
+        Kind.CREASE,
+        onset.value,
+        onset.error_estimate,
+        face=onset.face,
+        trigger=onset.trigger,
+        detail=onset.label if at_interface else None,  # a free face names itself
     )
 
 

@@ -10,6 +10,7 @@ import math
 from ..bifurcation.certify import CERTIFY_RTOL, certify
 from ..bifurcation.critical import CERTIFIED, critical_value
 from ..bifurcation.scan import scan_modes
+from ..bifurcation.verdict import crease_where
 from ..bifurcation.verdict import record as verdict_record
 from ..errors import ParameterError
 from ..incremental.accuracy import check_rtol
@@ -269,7 +270,8 @@ def _print_text(rec: dict, runners: list, scales=None) -> None:
     if rec["kind"] == Kind.CREASE:
         head = (
             f"{name} = {value}  (accuracy of the crease criterion {rec['error_estimate']:.1e})"
-            f"   crease at the {rec['face']} face, {_TRIGGER.get(rec['crease']['trigger'], '')}"
+            f"   crease at {crease_where(rec['face'], rec['crease'].get('detail'))},"
+            f" {_TRIGGER.get(rec['crease']['trigger'], '')}"
         )
     elif rec["kind"] == Kind.THRESHOLD:
         head = (
@@ -345,7 +347,8 @@ def _rival_lines(rec: dict, name: str) -> list[str]:
     c, t = rec.get("crease"), rec.get("threshold")
     if c is not None and rec["kind"] != Kind.CREASE:
         lines.append(
-            f"  crease: {c['face']} face, {_TRIGGER.get(c['trigger'], '')}   {name} ="
+            f"  crease: {crease_where(c['face'], c.get('detail'))},"
+            f" {_TRIGGER.get(c['trigger'], '')}   {name} ="
             f" {supported(c['value'], c['error_estimate'])}"
             f" (accuracy of the criterion {c['error_estimate']:.1e})"
         )

@@ -24,7 +24,7 @@ class Margins:
         self.creases: dict = {}
 
     def crease(self, x: float) -> float:
-        """Where a free face creases at x (sense * inf: none; design/onset.py)."""
+        """Where a face creases at x (sense * inf: none; design/onset.py)."""
         if x not in self.creases:
             at = self.tube.at(self.key, x)
             self.creases[x] = onset.crease_value(at, self.solve_for, self.side, self.sense)

@@ -1,4 +1,4 @@
-"""What a design is seen to do at onset: the crease of a free face as a competitor of the
+"""What a design is seen to do at onset: the crease of a face as a competitor of the
 target's wrinkle in the margin, and the verdict of the chosen design (docs/design.md,
 "A crease before the wrinkle").
 
@@ -21,7 +21,7 @@ import math
 from ..basestate.tube import solve_base_state
 from ..bifurcation.crease import crease_margin, crease_onset, face_creases
 from ..bifurcation.scan import ScanOptions, scan_modes
-from ..bifurcation.verdict import advisory, crease_rival
+from ..bifurcation.verdict import advisory, crease_rival, creases
 from ..errors import ConvergenceError, ElectrogrowthError
 from ..interrupts import reraise_interrupt
 from .sensitivity import STEP, _derivative, key_value
@@ -30,7 +30,7 @@ CREASE_FIRST = "crease_first"  # first among the wrinkles in its region, but a c
 
 
 def crease_value(tube, solve_for: str, side, sense: float) -> float:
-    """Where a free face of ``tube`` creases along the control (a mechanical crease);
+    """Where a face of ``tube`` creases along the control (a mechanical crease);
     sense * inf where none is reached or the criterion cannot be evaluated."""
     try:
         rival = crease_rival(crease_onset(tube, solve_for, side=side))
@@ -62,7 +62,10 @@ def crease_sensitivities(tube, solve_for: str, value: float, keys, *, step: floa
 
     def h(t, v: float) -> float:
         state = solve_base_state(t.at(solve_for, v), rtol=1e-12)
-        return next(f for f in face_creases(state) if f.face == face).drives[trigger] - 1.0
+        f = next((f for f in face_creases(state) if f.face == face), None)
+        if f is None:  # an interface that stops being a candidate (its neighbour stiffened)
+            raise ConvergenceError(f"the {face} is no crease candidate at {solve_for} = {v:g}")
+        return f.drives[trigger] - 1.0
 
     h_v = _derivative(lambda v: h(tube, v), value, step * max(1.0, abs(value)))
     if not math.isfinite(h_v) or h_v == 0.0:
@@ -127,7 +130,7 @@ def observable(verdict: dict) -> str:
     if verdict.get("kind") == "crease":
         c = verdict["crease"]
         return (
-            f"warning: at this design the {c['face']} face creases ({c['trigger']}) at"
+            f"warning: at this design {creases(c['face'], c.get('detail'))} ({c['trigger']}) at"
             f" {c['value']:.4g} before the wrinkle: the target pattern may not be observed"
         )
     if verdict.get("branch") == "subcritical":

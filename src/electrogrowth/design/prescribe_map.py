@@ -168,7 +168,7 @@ class _Margins:
         return self.sense * math.inf if v is None else v
 
     def crease(self, u) -> float:
-        """Where a free face creases at u (sense * inf: none; design/onset.py)."""
+        """Where a face creases at u (sense * inf: none; design/onset.py)."""
         key = tuple(float(c) for c in u)
         if key not in self.creases:
             at = self.at(u)

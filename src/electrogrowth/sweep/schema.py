@@ -67,7 +67,8 @@ POINT_VARIABLES = {
     "verdict": (
         object,
         "",
-        "what comes first: bifurcation (a smooth wrinkle) | crease (a free face creases) |"
+        "what comes first: bifurcation (a smooth wrinkle) | crease (a free face, or an"
+        " interface bonded to a much softer layer, creases) |"
         " surface | threshold | none",
     ),
     "verdict_value": ("f8", math.nan, "the value of the solved-for parameter where it comes"),
@@ -76,9 +77,14 @@ POINT_VARIABLES = {
     "crease_value": (
         "f8",
         math.nan,
-        "where a free face reaches the crease onset (neo-Hookean criterion; NaN: not reached)",
+        "where a face (free, or an interface bonded to a much softer layer) reaches the crease"
+        " onset (neo-Hookean criterion; NaN: not reached)",
     ),
-    "crease_face": (object, "", "inner | outer: the face that creases first"),
+    "crease_face": (
+        object,
+        "",
+        "inner | outer | interface-K (between layers K and K + 1): the face that creases first",
+    ),
     "crease_trigger": (
         object,
         "",

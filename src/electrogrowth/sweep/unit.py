@@ -55,7 +55,7 @@ class PointResult(Outcome):
     ``runners_up`` holds (m, n, value) of the next modes to bifurcate; (m, n) is NO_MODE
     where no mode is critical. ``kind`` and ``value`` are the linear result's (a wrinkle,
     the short-wave limit or the threshold); the verdict (bifurcation/verdict.py) says what
-    comes first once a crease of a free face competes: ``verdict`` (its kind),
+    comes first once a crease of a face competes: ``verdict`` (its kind),
     ``verdict_value``, ``verdict_face``, the runner-ups ``wrinkle_value``,
     ``crease_value`` (``crease_face``, ``crease_trigger``, ``crease_error``: the
     criterion's accuracy), ``threshold_value``, ``meaning``, and, where the spec asks for
