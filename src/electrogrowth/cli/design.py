@@ -85,7 +85,8 @@ def configure_design(parser: argparse.ArgumentParser) -> None:
         help="directory for the CSV of the mode sequence and the PNG (none by default)",
     )
     where = parser.add_argument_group(
-        "where a map's scans run (two variables: the grid's scans and the certificates)"
+        "where a map is computed (two variables: the grid's scans, the boundaries traced from"
+        " different seeds, the certificates)"
     ).add_mutually_exclusive_group()
     where.add_argument(
         "--workers",
@@ -155,7 +156,7 @@ def run_design(args) -> int:
         return _run_map(args, tube, solve_for, varies, target)
     if args.workers is not None or args.scheduler is not None:
         raise UsageError(
-            "--workers and --scheduler run a map's scans: give --vary twice (one variable"
+            "--workers and --scheduler run a map's tasks: give --vary twice (one variable"
             " is one sequence of scans, computed here)"
         )
     vary = varies[0]
