@@ -25,6 +25,7 @@ from ..errors import ParameterError, UsageError
 from ..model.layers import KEYS_TEXT
 from ..pool import check_workers, usable_cores
 from .options import (
+    SHORT_WAVES,
     add_control_options,
     add_mode_range_options,
     bounded_int,
@@ -40,15 +41,18 @@ MAP_NODES = 101  # grid points along each variable of a map, at most
 
 
 def configure_design(parser: argparse.ArgumentParser) -> None:
+    from ..bifurcation.options import M_CAP, N_CAP  # the package's mode range
+
     what = parser.add_argument_group("what to design")
     add_control_options(what)
     what.add_argument(
         "--target",
         nargs=2,
         action="append",
-        type=bounded_int(0, 320),
+        type=bounded_int(0, min(M_CAP, N_CAP), SHORT_WAVES),
         metavar=("M", "N"),
-        help="the pattern wanted: mode (m, n) = (M, N) (repeat for a set of modes)",
+        help="the pattern wanted: mode (m, n) = (M, N), each from 0 to"
+        f" {min(M_CAP, N_CAP)} (repeat for a set of modes)",
     )
     what.add_argument(
         "--target-set",
