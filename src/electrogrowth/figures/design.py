@@ -215,10 +215,10 @@ def place_labels(ax, labels, *, avoid=()) -> list:
                 chosen = (ann, box)
                 break
             ann.remove()
-        if chosen is None:
-            chosen = (ax.annotate(text, **{"ha": "center", "va": "center", "fontsize": 8,
-                                           **candidates[0]}), None)  # fmt: skip
-            chosen = (chosen[0], _text_box(chosen[0], renderer))
+        if chosen is None:  # nowhere free: the first place
+            ann = ax.annotate(text, **{"ha": "center", "va": "center", "fontsize": 8,
+                                       **candidates[0]})  # fmt: skip
+            chosen = (ann, _text_box(ann, renderer))
         taken.append(chosen[1])
         placed.append(chosen[0])
     return placed
