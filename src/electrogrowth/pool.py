@@ -52,13 +52,15 @@ def run_tasks(
     name: str = "task",
     keys: Sequence | None = None,
     lost: str = "",
+    processes=None,
 ) -> Iterator[tuple[int, object]]:
     """Yield ``(i, fn(tasks[i]))`` for every task, in completion order.
 
     ``fn`` must be a picklable module-level function of one argument when ``workers`` > 1
     or a ``scheduler`` is given. ``keys`` name the tasks on a cluster (default: their
     indices); ``lost`` is added to the one-line error when a worker dies (what was kept,
-    how to go on).
+    how to go on). ``processes`` is a pool from :func:`local_processes` to run them on
+    (``workers`` > 1), kept for the next call instead of started again.
     """
     if not tasks:
         return
@@ -68,7 +70,36 @@ def run_tasks(
         for i, task in enumerate(tasks):
             yield i, fn(task)
     else:
-        yield from _on_process_pool(fn, tasks, workers, lost)
+        yield from _on_process_pool(fn, tasks, workers, lost, processes)
+
+
+def _start(workers: int):
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    return ProcessPoolExecutor(
+        workers,
+        mp_context=multiprocessing.get_context("spawn"),
+        initializer=_exit_with_parent,
+        initargs=(os.getpid(),),
+    )
+
+
+@contextlib.contextmanager
+def local_processes(workers: int, scheduler: str | None = None):
+    """A local process pool shared by the ``run_tasks`` calls of one job (its workers
+    import the package once, not once a call): None for one worker or a cluster. An
+    exception ends the workers at once."""
+    if workers <= 1 or scheduler is not None:
+        yield None
+        return
+    pool = _start(workers)
+    try:
+        yield pool
+    except BaseException:
+        _stop(pool)
+        raise
+    pool.shutdown()
 
 
 def _exit_with_parent(parent: int) -> None:
@@ -92,17 +123,11 @@ def _exit_with_parent(parent: int) -> None:
     threading.Thread(target=watch, name="exit-with-parent", daemon=True).start()
 
 
-def _on_process_pool(fn, tasks, workers, lost):
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor, as_completed
+def _on_process_pool(fn, tasks, workers, lost, shared=None):
+    from concurrent.futures import as_completed
     from concurrent.futures.process import BrokenProcessPool
 
-    pool = ProcessPoolExecutor(
-        min(workers, len(tasks)),
-        mp_context=multiprocessing.get_context("spawn"),
-        initializer=_exit_with_parent,
-        initargs=(os.getpid(),),
-    )
+    pool = shared if shared is not None else _start(min(workers, len(tasks)))
     try:
         futures = {pool.submit(fn, task): i for i, task in enumerate(tasks)}
         for future in as_completed(futures):
@@ -113,7 +138,8 @@ def _on_process_pool(fn, tasks, workers, lost):
     except BaseException:  # interrupted (or the consumer stopped): don't wait for workers
         _stop(pool)
         raise
-    pool.shutdown()
+    if shared is None:
+        pool.shutdown()
 
 
 def _stop(pool) -> None:

@@ -16,6 +16,7 @@ from scipy.optimize import brentq
 from electrogrowth import ScanOptions, Tube, critical_value
 from electrogrowth.bifurcation.scan import scan_modes
 from electrogrowth.continuation.contour import CLOSED, EDGE, trace_contour
+from electrogrowth.design.map_boundaries import _in_order
 from electrogrowth.design.mode_map import mode_map
 from electrogrowth.errors import ParameterError, UsageError
 
@@ -255,19 +256,62 @@ def test_bad_options(keyword, words):
         mode_map(TUBE, "stretch", VARY, options=NEAR, **keyword)
 
 
-def test_a_pool_draws_the_same_map(small_map):
-    """Two worker processes scan the grid and certify the boundaries: the same map, to the
-    last bit (every task is a pure function of its inputs), the solves counted once."""
-    pooled = mode_map(
-        TUBE, "stretch", VARY, side="compression", points=2, options=NEAR, certify=2, workers=2
-    )
-    assert pooled.labels == small_map.labels
-    np.testing.assert_array_equal(pooled.values, small_map.values)
-    assert len(pooled.boundaries) == len(small_map.boundaries)
-    for a, b in zip(pooled.boundaries, small_map.boundaries, strict=True):
-        assert (a.left, a.right, a.x, a.y, a.ends) == (b.left, b.right, b.x, b.y, b.ends)
-        assert repr(a.certificates) == repr(b.certificates)  # NaN gaps compare by repr
-    assert pooled.solves == small_map.solves
+def _same_map(a, b):
+    """Two maps equal to the last bit but for the time they took (NaN gaps compare by
+    their JSON text)."""
+    da, db = a.as_dict(), b.as_dict()
+    da.pop("seconds"), db.pop("seconds")
+    assert json.dumps(da, sort_keys=True) == json.dumps(db, sort_keys=True)
+    np.testing.assert_array_equal(a.values, b.values)
+
+
+def test_a_pool_draws_the_same_map():
+    """Two worker processes scan the grid, trace the two boundaries (seeds of different
+    pattern pairs: one batch) and certify them: the same map, to the last bit (every task is
+    a pure function of its inputs), the solves counted once."""
+    args = (TUBE, "stretch", (("outer_radius", 1.2, 1.3), ("length", 0.95, 1.05)))
+    kw = {"side": "compression", "points": 2, "certify": 1, "options": ScanOptions((0, 1), (1, 1))}
+    serial, pooled = mode_map(*args, **kw), mode_map(*args, **kw, workers=2)
+    assert len(serial.boundaries) == 2
+    _same_map(serial, pooled)
+
+
+@pytest.mark.slow
+def test_a_pool_draws_the_same_triple_point():
+    """The map of test_triple_point_three_modes_equal on two workers: the boundaries from
+    the grid's edges, then the one leaving the triple point, all the same to the last bit."""
+    args = (TUBE, "stretch", (("outer_radius", 1.34, 1.40), ("length", 2.3, 2.7)))
+    kw = {"side": "compression", "points": 2, "certify": 1,
+          "options": ScanOptions((0, 1), (1, 2), extend=False)}  # fmt: skip
+    serial, pooled = mode_map(*args, **kw), mode_map(*args, **kw, workers=2)
+    assert len(serial.triple_points) == 1 and len(serial.boundaries) == 3
+    _same_map(serial, pooled)
+
+
+@pytest.mark.parametrize("width", [1, 2, 3, 5])
+def test_seeds_kept_in_order_whatever_ran_ahead(width):
+    """The merge of design/map_boundaries.py on a model: seed k, once kept, covers seed
+    k + 3 of the same pair (k % 2); tasks run in batches of ``width`` and come back in
+    reverse. The kept seeds are those of the serial order for every width; the tasks run
+    ahead and found covered are the only extra work."""
+    seeds = list(range(12))
+    kept: list[int] = []
+    calls: list[int] = []
+
+    def run(fn, tasks):
+        calls.extend(seed for _, seed in tasks)
+        return reversed([(k, fn(task)) for k, task in enumerate(tasks)])
+
+    def skip(seed):
+        return any(seed == k + 3 for k in kept)
+
+    order = _in_order(lambda task: task[1] * 10, None, seeds, lambda s: s % 2, skip, run, width)
+    for seed, piece in order:
+        assert piece == seed * 10
+        kept.append(seed)
+    assert kept == [0, 1, 2, 6, 7, 8]
+    assert set(kept) <= set(calls) and len(calls) == len(set(calls))
+    assert width > 1 or calls == kept
 
 
 @pytest.mark.parametrize("workers", [0, -1, 2.0, True, 10_000])

@@ -261,3 +261,21 @@ def test_a_wider_map_every_switch_agrees_with_collocation():
                 for d in (-1e-9, 1e-9)
             )
             assert below * above < 0, (s, mode)
+
+
+def test_cli_design_target_takes_the_package_mode_range(capsys):
+    """--target M N accepts every mode the scans reach (bifurcation.options M_CAP, N_CAP),
+    and names that range when a number is beyond it."""
+    from electrogrowth.bifurcation.options import M_CAP, N_CAP
+    from electrogrowth.cli.app import build_parser
+
+    base = ["design", "--solve-for", "stretch", "--vary", "outer_radius", "1.2", "1.3"]
+    top = min(M_CAP, N_CAP)
+    args = build_parser("design").parse_args([*base, "--target", str(top), "0"])
+    assert args.target == [[top, 0]]
+    for bad in ([str(top + 1), "0"], ["0", str(top + 1)], ["-1", "0"]):
+        assert main([*base, "--target", *bad]) == 2
+        err = capsys.readouterr().err.strip()
+        assert err.startswith("electrogrowth: error:") and "\n" not in err
+        assert f"is not a whole number from 0 to {top}" in err
+        assert "short-wave limit" in err

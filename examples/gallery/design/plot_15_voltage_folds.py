@@ -13,9 +13,8 @@ the switches between them, each the root of v_A(Vbar) = v_B(Vbar) for two fixed 
 
 Coarsened for the page: 3 grid voltages on [0, 0.4] and modes m = 9 .. 15 with n = 0
 (prismatic folds) and n = 1 only (the full scans of the patterns gallery, m from 0 and n
-to 16, find the same (11, 0) at Vbar = 0 and (13, 0) at 0.4). The growth-voltage map over a
-second variable was not affordable: one traced boundary of this bilayer takes 0.5 to 5
-minutes on a shared two-core machine.
+to 16, find the same (11, 0) at Vbar = 0 and (13, 0) at 0.4). The page "Growth-voltage
+map" draws this bilayer's map over a wider voltage range.
 """
 
 from electrogrowth import ScanOptions, mode_sequence

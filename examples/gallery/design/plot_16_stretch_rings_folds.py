@@ -16,6 +16,7 @@ intervals between grid points are found by splitting the brackets, not by more p
 """
 
 from electrogrowth import ScanOptions, mode_sequence
+from electrogrowth.figures.design import label_branches
 from electrogrowth.figures.design_gallery import gut_bilayer
 from electrogrowth.figures.plots import plot_curve
 
@@ -36,12 +37,13 @@ for s in seq.switches:
 # Compressed axially the stiff layer forms rings, (0, 2); released, it forms longitudinal
 # folds, (11, 0), with a window of axially modulated folds (9, 1) between, and near
 # lambda_z = 0.959 two slivers, (1, 2) and (8, 1), each narrower than 1e-3 (see the
-# intervals printed above; their labels overlap in the plot). The lines join the computed
-# points: the grid values and the located switches. The last switch sits
-# at g_theta,cr = 1.7120162..., the critical growth of the (11, 0) folds at lambda_z = 1:
-# for neo-Hookean layers growing in the hoop direction the plane-strain problem at any
-# lambda_z is the one at lambda_z = 1 rescaled (docs/patterns.md), so the prismatic branch is
-# flat in lambda_z and the axial compression only lowers the competitors.
+# intervals printed above; their labels are set apart, each with a line to its branch).
+# The lines join the computed points: the grid values and the located switches. The last
+# switch sits at g_theta,cr = 1.7120162..., the critical growth of the (11, 0) folds at
+# lambda_z = 1: for neo-Hookean layers growing in the hoop direction the plane-strain
+# problem at any lambda_z is the one at lambda_z = 1 rescaled (docs/patterns.md), so the
+# prismatic branch is flat in lambda_z and the axial compression only lowers the
+# competitors.
 #
 # The trend met: in the chick and human gut, the growing lining first folds into
 # longitudinal ridges when the circular smooth muscle restricts its circumferential
@@ -50,6 +52,7 @@ for s in seq.switches:
 # modulated patterns when the axial compression is added. The comparison is qualitative:
 # a linear onset in a short (L = 1) tube, not their finite-element growth model, and the
 # (m, 1) mode is one axial half-wave, not a zigzag.
-ax = plot_curve(seq.curve)
+ax = plot_curve(seq.curve, annotate=False)
+_ = label_branches(ax, seq.curve)  # the slivers' labels set apart, each pointing at its branch
 ax.set_title("gut-like bilayer along the axial stretch: first pattern (m, n)", fontsize=9)
 fig = ax.figure

@@ -25,6 +25,7 @@ from ..errors import ParameterError, UsageError
 from ..model.layers import KEYS_TEXT
 from ..pool import check_workers, usable_cores
 from .options import (
+    SHORT_WAVES,
     add_control_options,
     add_mode_range_options,
     bounded_int,
@@ -40,15 +41,18 @@ MAP_NODES = 101  # grid points along each variable of a map, at most
 
 
 def configure_design(parser: argparse.ArgumentParser) -> None:
+    from ..bifurcation.options import M_CAP, N_CAP  # the package's mode range
+
     what = parser.add_argument_group("what to design")
     add_control_options(what)
     what.add_argument(
         "--target",
         nargs=2,
         action="append",
-        type=bounded_int(0, 320),
+        type=bounded_int(0, min(M_CAP, N_CAP), SHORT_WAVES),
         metavar=("M", "N"),
-        help="the pattern wanted: mode (m, n) = (M, N) (repeat for a set of modes)",
+        help="the pattern wanted: mode (m, n) = (M, N), each from 0 to"
+        f" {min(M_CAP, N_CAP)} (repeat for a set of modes)",
     )
     what.add_argument(
         "--target-set",
@@ -85,7 +89,8 @@ def configure_design(parser: argparse.ArgumentParser) -> None:
         help="directory for the CSV of the mode sequence and the PNG (none by default)",
     )
     where = parser.add_argument_group(
-        "where a map's scans run (two variables: the grid's scans and the certificates)"
+        "where a map is computed (two variables: the grid's scans, the boundaries traced from"
+        " different seeds, the certificates)"
     ).add_mutually_exclusive_group()
     where.add_argument(
         "--workers",
@@ -155,7 +160,7 @@ def run_design(args) -> int:
         return _run_map(args, tube, solve_for, varies, target)
     if args.workers is not None or args.scheduler is not None:
         raise UsageError(
-            "--workers and --scheduler run a map's scans: give --vary twice (one variable"
+            "--workers and --scheduler run a map's tasks: give --vary twice (one variable"
             " is one sequence of scans, computed here)"
         )
     vary = varies[0]

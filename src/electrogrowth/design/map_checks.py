@@ -45,9 +45,10 @@ def scan_node(task):
 
 def certificate(task) -> tuple[Certificate, int]:
     """One boundary point checked by full solves and a full scan (a pool's task: values,
-    options, the patterns P and Q on either side, u), and the solves it took."""
+    options, the patterns P and Q on either side, u), and the solves it took (on a fresh
+    copy of the values: the same here and in a worker)."""
     values, options, p, q, u = task
-    before = values.solves
+    values = values.fresh()
     gap = math.nan
     v = None
     if valued(p) and valued(q):
@@ -63,7 +64,7 @@ def certificate(task) -> tuple[Certificate, int]:
     tol = CERTIFIED * max(1.0, abs(v)) if v is not None else CERTIFIED
     ok = (math.isnan(gap) or gap <= tol) and (first in (p, q) or ahead >= -tol)
     x, y = values.xy(u)
-    return Certificate(x, y, gap, first, ahead, bool(ok)), values.solves - before
+    return Certificate(x, y, gap, first, ahead, bool(ok)), values.solves
 
 
 def sampled(curve, count: int) -> list[int]:

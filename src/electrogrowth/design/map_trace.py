@@ -72,6 +72,14 @@ class Values:
         self.hint: dict = {}
         self.solves = 0
 
+    def fresh(self) -> Values:
+        """A copy knowing what this one has solved (for a map: the grid's values), with no
+        brackets carried over and no solves counted: a task's start, the same in this
+        process and in a worker that unpickled it."""
+        copy = Values(self.tube, self.solve_for, self.keys, self.box, self.side, self.rtol)
+        copy.cache = dict(self.cache)
+        return copy
+
     def xy(self, u) -> tuple[float, float]:
         (x0, x1), (y0, y1) = self.box
         return x0 + float(u[0]) * (x1 - x0), y0 + float(u[1]) * (y1 - y0)

@@ -4,7 +4,8 @@
 pattern that comes first there), then traces every boundary between two patterns as a
 curve of the two-pattern condition d_PQ(x, y) = 0 (design/map_trace.py), seeded from the
 grid edges whose ends have different patterns, and locates the triple points where the
-traced curves meet a third pattern. The boundaries are not interpolated from the grid: each
+traced curves meet a third pattern (design/map_boundaries.py: each seed's trace a task of a
+pool). The boundaries are not interpolated from the grid: each
 point is a root of d_PQ to 1e-13 of the box. Each boundary is certified at a sample of
 its points by full solves (the two critical values agree) and a full scan (no scanned mode
 comes earlier); each triple point by the three critical values. docs/design.md.
@@ -13,6 +14,7 @@ comes earlier); each triple point by the three critical values. docs/design.md.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import itertools
 import math
 import time
@@ -23,23 +25,14 @@ from ..bifurcation.problem import as_problem
 from ..bifurcation.scan import ScanOptions
 from ..continuation.contour import CONTOUR_STEPS
 from ..errors import ParameterError
-from ..pool import check_workers, run_tasks
-from .map_checks import certificate, sampled, scan_label, scan_node
-from .map_record import Boundary, ModeMap, TriplePoint, label_json
-from .map_trace import (
-    FAILED,
-    TRIPLE,
-    Values,
-    edge_root,
-    follow,
-    gradient,
-    valued,
-)
+from ..pool import check_workers, local_processes, run_tasks
+from .map_boundaries import trace_boundaries
+from .map_checks import certificate, sampled, scan_node
+from .map_record import Boundary, ModeMap, TriplePoint
+from .map_trace import FAILED, Values, valued
 from .sequence import check_vary
 
 MIN_NODES, MAX_NODES = 2, 101
-SPLITS = 8  # an edge split at a third pattern found by a scan, at most this deep
-ROUNDS = 3  # boundaries traced outwards from new triple points, at most this often
 
 
 def check_points(points) -> tuple[int, int]:
@@ -59,138 +52,13 @@ def check_points(points) -> tuple[int, int]:
     return int(points[0]), int(points[1])
 
 
-def _crosses(poly, a, b) -> bool:
-    """Does the polyline (array k x 2) meet the segment ab (endpoints included)?"""
-    a, b = np.asarray(a), np.asarray(b)
-    for p, q in itertools.pairwise(poly):
-
-        def orient(u, v, w):
-            return (v[0] - u[0]) * (w[1] - u[1]) - (v[1] - u[1]) * (w[0] - u[0])
-
-        o1, o2 = orient(p, q, a), orient(p, q, b)
-        o3, o4 = orient(a, b, p), orient(a, b, q)
-        if o1 * o2 <= 0 and o3 * o4 <= 0 and (o1, o2, o3, o4) != (0, 0, 0, 0):
-            return True
-    return False
-
-
-class _Mapper:
-    """The state of one map: the values, the grid's labels, the traced curves."""
-
-    def __init__(self, values: Values, grid_u, labels, options, progress, policy):
-        self.values, self.grid_u, self.labels = values, grid_u, labels
-        self.policy = policy
-        self.options, self.progress = options, progress
-        self.found: set = set()  # set once the grid is scanned
-        self.curves: list[dict] = []
-        self.triples: list[tuple] = []
-
-    def say(self, text: str):
-        if self.progress is not None:
-            self.progress(text)
-
-    def candidates(self, u):
-        """The patterns a traced point is checked against: every pattern of the grid, and
-        those found first by a scan where no grid node has them (``extra``)."""
-        return self.found
-
-    def scan_label(self, u):
-        return scan_label(self.values, self.options, u)
-
-    def covered(self, p, q, a, b) -> bool:
-        return any(
-            {c["left"], c["right"]} == {p, q} and _crosses(c["u"], a, b) for c in self.curves
-        )
-
-    def edge(self, p, q, a, b, depth: int = SPLITS):
-        """Seed and trace the P|Q boundary crossing the grid edge from a (P) to b (Q)."""
-        if self.covered(p, q, a, b):
-            return
-        r = edge_root(self.values, p, q, a, b)
-        crossing = r is not None
-        if r is None:  # no crossing of d_PQ: a third pattern between, found by a scan
-            if depth <= 0:
-                return
-            r = 0.5 * (np.asarray(a) + np.asarray(b))
-        first, _ = self.scan_label(r)  # the root checked by a scan: a third pattern splits
-        if first not in (p, q):
-            if first != FAILED and depth > 0:
-                self.found.add(first)
-                self.edge(p, first, a, r, depth - 1)
-                self.edge(first, q, r, b, depth - 1)
-            return
-        if not crossing or not self.values.agree(p, q, r):
-            return  # a jump of one pattern's first critical value, not a crossing
-        ab = np.asarray(b, float) - np.asarray(a, float)
-        if valued(p) and valued(q):
-            g = gradient(self.values.condition(p, q), r)
-            t = np.array([-g[1], g[0]]) / math.hypot(*g)
-        else:
-            t = np.array([-ab[1], ab[0]]) / math.hypot(*ab)
-        left = p if np.dot(np.asarray(a) - r, [-t[1], t[0]]) > 0 else q
-        self._trace(p, q, left, r, t, None)
-
-    def _trace(self, p, q, left, start, t, start_end):
-        self.say(f"tracing the boundary {label_json(p)} | {label_json(q)}")
-        fwd = follow(self.values, p, q, start, t, self.candidates, self.policy)
-        if start_end is None:
-            back = follow(self.values, p, q, start, -t, self.candidates, self.policy)
-        else:
-            back = ([np.asarray(start)], start_end, None)
-        pts = [np.asarray(x) for x in back[0][::-1]]
-        for x in fwd[0][1:]:
-            if np.linalg.norm(np.asarray(x) - pts[-1]) > 1e-14:
-                pts.append(np.asarray(x))
-        while len(pts) > 1 and np.linalg.norm(pts[1] - pts[0]) <= 1e-14:
-            pts.pop(0)  # an exit at the seed itself (a seed on the box's edge)
-        self.curves.append(
-            {"left": left, "right": q if left == p else p, "u": np.array(pts),
-             "ends": (back[1], fwd[1])}
-        )  # fmt: skip
-        for found in (back[2], fwd[2]):
-            if found is not None:
-                self._add_triple(*found)
-
-    def _add_triple(self, labels, u, v):
-        for lab, w, _ in self.triples:
-            if set(lab) == set(labels) and np.linalg.norm(w - u) < 1e-6:
-                return
-        self.triples.append((labels, np.asarray(u), v))
-
-    def from_triples(self):
-        """Trace the boundaries leaving each triple point that no curve reached yet."""
-        done = 0
-        for _ in range(ROUNDS):
-            todo = self.triples[done:]
-            done = len(self.triples)
-            if not todo:
-                return
-            for labels, u, _ in todo:
-                for a, b in itertools.combinations(labels, 2):
-                    c = next(lab for lab in labels if lab not in (a, b))
-                    if self._reached(a, b, u):
-                        continue
-                    d = self.values.condition(a, b)
-                    g = gradient(d, u)
-                    t = np.array([-g[1], g[0]]) / math.hypot(*g)
-                    probe = np.clip(u + 1e-3 * t, 0, 1)
-                    if self.values.condition(a, c)(probe) > 0:  # c first that way
-                        t = -t
-                    left = b if np.dot(g, [-t[1], t[0]]) > 0 else a
-                    self._trace(a, b, left, u, t, TRIPLE)
-
-    def _reached(self, a, b, u) -> bool:
-        return any(
-            {c["left"], c["right"]} == {a, b}
-            and min(np.linalg.norm(c["u"][0] - u), np.linalg.norm(c["u"][-1] - u)) < 1e-7
-            for c in self.curves
-        )
-
-
 def _run(fn, tasks, pool, name):
-    workers, scheduler = pool
+    workers, scheduler, processes = pool
     lost = "; the map is not finished: run it again (fewer workers, or workers=1)"
-    return run_tasks(fn, tasks, workers=workers, scheduler=scheduler, name=name, lost=lost)
+    return run_tasks(
+        fn, tasks, workers=workers, scheduler=scheduler, name=name, lost=lost,
+        processes=processes,
+    )  # fmt: skip
 
 
 def mode_map(
@@ -233,11 +101,13 @@ def mode_map(
         from 0.01 to 0.5): every traced point is a root whatever the step; longer steps
         give fewer points (a coarser polyline between them) for boundaries that barely bend.
     workers : int
-        Processes that scan the grid's nodes and certify the boundaries' points (default 1:
-        this process). The tracing itself runs here: each step needs the last. The map is
-        the same for any number of workers.
+        Processes that scan the grid's nodes, trace the boundaries from different seeds
+        (each trace is serial: each step needs the last) and certify the boundaries' points
+        (default 1: this process). The map is the same, to the last bit, for any number of
+        workers (design/map_boundaries.py); ``solves`` counts the work the map needed, not
+        traces run ahead and found redundant.
     scheduler : str, optional
-        Address of a dask.distributed scheduler (``tcp://host:8786``) to send those scans
+        Address of a dask.distributed scheduler (``tcp://host:8786``) to send those tasks
         to instead (``workers`` is then ignored; the ``sweep`` extra).
     progress : callable str -> None, optional
         Called with a line per stage (the grid's scans, each traced boundary).
@@ -276,8 +146,6 @@ def mode_map(
     ):
         raise ParameterError(f"max_step = {max_step!r} is out of range; valid range: 0.01 to 0.5")
     check_workers(workers, "workers =")
-    pool = (workers, scheduler)
-    in_process = workers == 1 and scheduler is None
     policy = dataclasses.replace(
         CONTOUR_STEPS, largest=float(max_step), first=min(CONTOUR_STEPS.first, max_step)
     )
@@ -287,49 +155,19 @@ def mode_map(
         problem.rtol,
     )  # fmt: skip
     us, ws = np.linspace(0, 1, nx), np.linspace(0, 1, ny)
-    grid_u = np.stack(np.meshgrid(us, ws, indexing="ij"), axis=-1)
-    labels = np.empty((nx, ny), object)
-    crit = np.full((nx, ny), math.nan)
-    mapper = _Mapper(values, grid_u, labels, problem.options, progress, policy)
-    nodes = list(itertools.product(range(nx), range(ny)))
-    tasks = [(values, problem.options, grid_u[ij]) for ij in nodes]
-    for done, (k, (label, value)) in enumerate(_run(scan_node, tasks, pool, "scan"), 1):
-        mapper.say(f"scan {done} of {nx * ny}")
-        labels[nodes[k]], crit[nodes[k]] = label, value
-        if valued(label) and math.isfinite(value):
-            values.cache[(label, *map(float, grid_u[nodes[k]]), True)] = value
-    mapper.found = {lab for lab in labels.ravel() if lab != FAILED}
-    edges = [((i, j), (i + 1, j)) for i in range(nx - 1) for j in range(ny)]
-    edges += [((i, j), (i, j + 1)) for i in range(nx) for j in range(ny - 1)]
-    for a, b in edges:
-        p, q = labels[a], labels[b]
-        if p == q or FAILED in (p, q) or not (valued(p) or valued(q)):
-            continue
-        mapper.edge(p, q, grid_u[a], grid_u[b])
-    mapper.from_triples()
-    where = [(k, i) for k, c in enumerate(mapper.curves) for i in sampled(c, certify)]
-    curves = mapper.curves
-    tasks = [(values, problem.options, curves[k]["left"], curves[k]["right"], curves[k]["u"][i])
-             for k, i in where]  # fmt: skip
-    certificates: list[list] = [[] for _ in mapper.curves]
-    for done, (t, (cert, solves)) in enumerate(_run(certificate, tasks, pool, "certify"), 1):
-        mapper.say(f"certifying point {done} of {len(tasks)}")
-        certificates[where[t][0]].append((where[t][1], cert))
-        if not in_process:  # a worker's solves, on a copy of values
-            values.solves += solves
-    boundaries = []
-    for k, c in enumerate(mapper.curves):
-        xy = np.array([values.xy(u) for u in c["u"]])
-        common = [values.value(c["left"] if valued(c["left"]) else c["right"], u) for u in c["u"]]
-        boundaries.append(
-            Boundary(
-                c["left"], c["right"], tuple(xy[:, 0]), tuple(xy[:, 1]),
-                tuple(math.nan if v is None else v for v in common), c["ends"],
-                tuple(cert for _, cert in sorted(certificates[k], key=lambda ic: ic[0])),
-            )
+    say = progress if progress is not None else (lambda text: None)
+    with local_processes(workers, scheduler) as processes:
+        run = functools.partial(_run, pool=(workers, scheduler, processes))
+        labels, crit, seeds = _grid(values, problem.options, us, ws, run, say)
+        width = workers if scheduler is None else len(seeds) or 1  # a cluster: all at once
+        curves, found_triples, _, traced = trace_boundaries(
+            values, sorted({lab for lab in labels.ravel() if lab != FAILED}, key=str),
+            problem.options, policy, seeds, functools.partial(run, name="trace"), width, say,
         )  # fmt: skip
+        values.solves += traced
+        boundaries = _certified(values, problem.options, curves, certify, run, say)
     triples = []
-    for labs, u, v in mapper.triples:
+    for labs, u, v in found_triples:
         vals = [values.value(lab, u, hinted=False) for lab in labs]
         gap = (
             max(abs(a - b) for a, b in itertools.combinations(vals, 2))
@@ -351,3 +189,52 @@ def mode_map(
         values.solves,
         time.perf_counter() - t0,
     )
+
+
+def _grid(values, options, us, ws, run, say):
+    """The coarse map: the pattern first at each node and its value (kept in the values'
+    cache), and the seeds (p, q, a, b) of its edges whose ends differ, in a fixed order."""
+    nx, ny = len(us), len(ws)
+    grid_u = np.stack(np.meshgrid(us, ws, indexing="ij"), axis=-1)
+    labels = np.empty((nx, ny), object)
+    crit = np.full((nx, ny), math.nan)
+    nodes = list(itertools.product(range(nx), range(ny)))
+    tasks = [(values, options, grid_u[ij]) for ij in nodes]
+    for done, (k, (label, value)) in enumerate(run(scan_node, tasks, name="scan"), 1):
+        say(f"scan {done} of {nx * ny}")
+        labels[nodes[k]], crit[nodes[k]] = label, value
+        if valued(label) and math.isfinite(value):
+            values.cache[(label, *map(float, grid_u[nodes[k]]), True)] = value
+    edges = [((i, j), (i + 1, j)) for i in range(nx - 1) for j in range(ny)]
+    edges += [((i, j), (i, j + 1)) for i in range(nx) for j in range(ny - 1)]
+    seeds = [
+        (labels[a], labels[b], tuple(grid_u[a]), tuple(grid_u[b]))
+        for a, b in edges
+        if labels[a] != labels[b]
+        and FAILED not in (labels[a], labels[b])
+        and (valued(labels[a]) or valued(labels[b]))
+    ]
+    return labels, crit, seeds
+
+
+def _certified(values, options, curves, certify, run, say) -> list[Boundary]:
+    """The traced curves as boundaries, ``certify`` points of each checked (a pool's
+    tasks: full solves and a full scan)."""
+    where = [(k, i) for k, c in enumerate(curves) for i in sampled(c, certify)]
+    tasks = [(values, options, curves[k]["left"], curves[k]["right"], curves[k]["u"][i])
+             for k, i in where]  # fmt: skip
+    certificates: list[list] = [[] for _ in curves]
+    for done, (t, (cert, count)) in enumerate(run(certificate, tasks, name="certify"), 1):
+        say(f"certifying point {done} of {len(tasks)}")
+        certificates[where[t][0]].append((where[t][1], cert))
+        values.solves += count
+    boundaries = []
+    for k, c in enumerate(curves):
+        xy = np.array([values.xy(u) for u in c["u"]])
+        boundaries.append(
+            Boundary(
+                c["left"], c["right"], tuple(xy[:, 0]), tuple(xy[:, 1]), c["value"], c["ends"],
+                tuple(cert for _, cert in sorted(certificates[k], key=lambda ic: ic[0])),
+            )
+        )  # fmt: skip
+    return boundaries

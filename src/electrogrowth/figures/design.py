@@ -19,6 +19,9 @@ from .labels import axis_label, symbol_text
 from .plots import draw_wall
 from .style import STYLE
 
+#: heights tried for a region's label, as fractions of the way from the curve to the top
+LIFTS = (0.45, 0.25, 0.7, 0.15, 0.85, 0.35, 0.6)
+
 
 def plot_design(result, values: dict, xs) -> object:
     """Axes of a new figure: each mode's critical value (``values``: (m, n) -> array over
@@ -169,3 +172,141 @@ def plot_map_pattern(result, tube, *, amplitude: float = 0.08, pixels: int = 160
             fontsize=8,
         )
     return fig
+
+
+def _text_box(text, renderer):
+    """The box of a text or an annotation's text, without its arrow, where it is drawn."""
+    from matplotlib.text import Text
+
+    if hasattr(text, "update_positions"):
+        text.update_positions(renderer)
+    return Text.get_window_extent(text, renderer)
+
+
+def place_labels(ax, labels, *, avoid=()) -> list:
+    """Annotate ``ax`` with each label at the first of its candidate places whose box
+    lies inside the axes and overlaps no label placed before it (nor the ``ax.texts``
+    already there); the first candidate if none does. ``labels``: [(text, [annotate
+    keyword dicts, each with ``xy`` and optionally ``xytext``/``textcoords``,
+    ``rotation``, ...])]; ``avoid``: points (x, y) in data coordinates no label may cover
+    (markers). The boxes are measured after a layout pass. Returns the annotations."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.transforms import Bbox
+
+    fig = ax.figure
+    if not hasattr(fig.canvas, "get_renderer"):
+        FigureCanvasAgg(fig)
+    fig.draw_without_rendering()
+    renderer = fig.canvas.get_renderer()
+    taken = [_text_box(t, renderer) for t in ax.texts]
+    for x, y in avoid:  # a marker: a box of 3 points around it
+        px, py = ax.transData.transform((x, y))
+        r = 3 * fig.dpi / 72
+        taken.append(Bbox.from_extents(px - r, py - r, px + r, py + r))
+    frame = ax.get_window_extent(renderer)
+    placed = []
+    for text, candidates in labels:
+        chosen = None
+        for kw in candidates:
+            ann = ax.annotate(text, **{"ha": "center", "va": "center", "fontsize": 8, **kw})
+            box = _text_box(ann, renderer).expanded(1.1, 1.15)
+            inside = frame.x0 <= box.x0 and box.x1 <= frame.x1 and frame.y0 <= box.y0
+            if inside and box.y1 <= frame.y1 and not any(box.overlaps(t) for t in taken):
+                chosen = (ann, box)
+                break
+            ann.remove()
+        if chosen is None:  # nowhere free: the first place
+            ann = ax.annotate(text, **{"ha": "center", "va": "center", "fontsize": 8,
+                                       **candidates[0]})  # fmt: skip
+            chosen = (ann, _text_box(ann, renderer))
+        taken.append(chosen[1])
+        placed.append(chosen[0])
+    return placed
+
+
+def plot_growth_voltage(gv, *, ax=None, top: float | None = None) -> object:
+    """The growth-voltage map (design/growth_voltage.py) on ``ax`` (default: a new
+    figure's): the onset curve g_cr(Vbar) in black, below it the unwrinkled tube, above it
+    one coloured region per first mode, labelled (m, n), bounded by the switch voltages
+    (dotted, each switch a dot with its Vbar). ``top``: the growth at the top of the axes
+    (default: 40 % of the curve's range above its highest point). Returns the axes."""
+    if ax is None:
+        with mpl.rc_context(STYLE):
+            ax = Figure(figsize=(5.2, 3.8), layout="constrained").subplots()
+    onset = np.array([g for r in gv.regions for g in r.growth], float)
+    g0, g1 = float(np.nanmin(onset)), float(np.nanmax(onset))
+    top = g1 + 0.4 * max(g1 - g0, 1e-3) if top is None else top
+    bottom = g0 - 0.25 * max(g1 - g0, 1e-3)
+    modes = sorted({r.mode for r in gv.regions if r.kind == Kind.BIFURCATION})
+    colours = mpl.colormaps["Pastel1"].colors[:8]  # the ninth is the grey of "no wrinkle"
+    narrow = 0.1 * (gv.hi - gv.lo)  # a strip narrower than this: its label stands upright
+    labels = []
+    for r in gv.regions:
+        v, g = np.asarray(r.voltage), np.asarray(r.growth)
+        ok = np.isfinite(g)
+        if r.kind != Kind.BIFURCATION or not ok.any():
+            continue
+        ax.fill_between(v[ok], g[ok], top, color=colours[modes.index(r.mode) % 8], lw=0)
+        ax.plot(v[ok], g[ok], "k-", lw=1.6)
+        mid = 0.5 * (r.lo + r.hi)
+        y = float(np.interp(mid, v[ok], g[ok]))
+        spots = [{"xy": (mid, y + f * (top - y)), "rotation": 90 if r.hi - r.lo < narrow else 0}
+                 for f in LIFTS]  # fmt: skip
+        labels.append((_name(r.mode), spots))
+    curve = sorted((v, g) for r in gv.regions for v, g in zip(r.voltage, r.growth, strict=True))
+    v, g = np.array(curve).T
+    ok = np.isfinite(g)
+    ax.fill_between(v[ok], bottom, g[ok], color="0.92", lw=0)  # one piece: no seams
+    groups: list[list] = []  # switches within 2 % of the range share one label
+    for s in (s for s in gv.switches if s.kind == "switch"):
+        ax.plot([s.x, s.x], [s.value, top], "k:", lw=0.9)
+        ax.plot([s.x], [s.value], "ko", ms=3.5)
+        if groups and s.x - groups[-1][-1].x < 0.02 * (gv.hi - gv.lo):
+            groups[-1].append(s)
+        else:
+            groups.append([s])
+    for group in groups:
+        s = group[0]
+        spots = [{"xy": (s.x, s.value), "xytext": (dx, dy), "textcoords": "offset points",
+                  "fontsize": 7, "ha": "left" if dx > 0 else "right"}
+                 for dy in (-10, -20, -30, -40, -50) for dx in (4, -4)]  # fmt: skip
+        labels.append((r"$\bar V$ = " + ", ".join(f"{w.x:.4f}" for w in group), spots))
+    ax.text(0.03, 0.04, "no wrinkle (axisymmetric)", transform=ax.transAxes, fontsize=7,
+            color="0.3")  # fmt: skip
+    ax.set_xlim(gv.lo, gv.hi)
+    ax.set_ylim(bottom, top)
+    ax.set_xlabel(axis_label("voltage"))
+    ax.set_ylabel(axis_label(gv.growth))
+    ax.set_title("first wrinkle (m, n) above the onset growth, by voltage", fontsize=9)
+    place_labels(ax, labels, avoid=[(s.x, s.value) for s in gv.switches if s.kind == "switch"])
+    return ax
+
+
+#: where a branch's label may go, in points from its middle (the nearest first)
+BRANCH_SPOTS = ((0, 7), (0, -9), (-16, 10), (16, -12), (-26, 18), (26, -20), (-38, 26),
+                (38, -28), (-50, 34), (50, -36))  # fmt: skip
+
+
+def label_branches(ax, curve, *, color: str = "k") -> list:
+    """Label each branch of a critical curve (``plot_curve(..., annotate=False)``) with its
+    mode (m, n) near its middle, no two labels overlapping (:func:`place_labels`); a label
+    moved away from its branch points at it with a thin line. Returns the annotations."""
+    labels = []
+    for (m, n), rows in curve.branches():
+        x, v = curve.x[rows], curve.value[rows]
+        if (m, n) == (-1, -1) and not curve.surface[rows].all():
+            continue  # the threshold: the dashed line, not a mode
+        order = np.argsort(x, kind="stable")  # the middle of the branch along x
+        xm = 0.5 * (x.min() + x.max())
+        vm = float(np.interp(xm, x[order], v[order]))
+        text = "m, n → ∞" if curve.surface[rows].all() else f"({m}, {n})"
+        spots = [
+            {"xy": (xm, vm), "xytext": d, "textcoords": "offset points", "fontsize": 7,
+             "color": color,
+             **({"arrowprops": {"arrowstyle": "-", "lw": 0.5, "color": color}}
+                if abs(d[0]) > 0 else {})}
+            for d in BRANCH_SPOTS
+        ]  # fmt: skip
+        labels.append((text, spots))
+    marks = [(s.x, s.value) for s in curve.switches + curve.ends]
+    return place_labels(ax, labels, avoid=[p for p in marks if math.isfinite(p[1])])
