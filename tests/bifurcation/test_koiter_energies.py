@@ -141,14 +141,16 @@ def test_mooney_rivlin_at_fixed_axial_stretch_is_a_stiffer_neo_hookean():
 
 def test_gent_tends_to_neo_hookean_like_one_over_jm():
     """c_2(J_m) - c_2(neo-Hookean) ~ k / J_m: J_m times the difference is the same at
-    J_m = 400 and 800 up to O(1 / J_m) (and the difference is well above the 1e-9 floor)."""
+    J_m = 400 and 800 up to O(1 / J_m) (measured -17.40, -17.28, -17.23, -17.20 at J_m =
+    200, 400, 800, 1600: the O(1 / J_m^2) part halving), the difference 4e-3 of c_2, far
+    above the 1e-9 floor."""
     tube = _film_tube(HOOP, stretch=1.1)
     nh = tube_expansion(tube, 12, THETA, nodes=12).coefficient
     diff = []
     for jm in (400.0, 800.0):
         c2 = tube_expansion(_film_tube(HOOP, gent(jm), stretch=1.1), 12, THETA, nodes=12)
         diff.append(jm * (c2.coefficient - nh))
-    assert abs(diff[0]) > 1e-4 * abs(nh) * 1e2  # |c_2 - nh| > 1e-4 |nh| at J_m = 400
+    assert abs(diff[0]) / 400 > 1e-3 * abs(nh)
     assert diff[1] == pytest.approx(diff[0], rel=4e-2)
 
 
@@ -173,15 +175,30 @@ def test_a_non_ideal_dielectric_under_a_voltage_is_refused_in_one_line():
     assert "\n" not in str(info.value)
 
 
-@pytest.mark.slow
 def test_coefficient_converges_spectrally():
-    """c_2 of a Gent tube's mode (12, 0) at 10, 14, 20 and 28 points a segment: each change
-    smaller than the last, the finest two equal to 1e-8."""
+    """c_2 of a Gent tube's mode (12, 0) (J_m = 5) at 8, 10, 12 and 14 points a segment:
+    each change at least 4 times smaller than the last, geometrically (measured 1.6023308,
+    1.6049758, 1.6051997, 1.6052297: steps 2.6e-3, 2.2e-4, 3.0e-5; then 1.6052310364 at 20
+    and 1.6052310389 at 28, the door's fine-vs-coarse error_estimate its last step)."""
     tube = _film_tube(HOOP, gent(5.0), stretch=1.1)
-    values = [tube_expansion(tube, 12, THETA, nodes=N).coefficient for N in (10, 14, 20, 28)]
+    values = [tube_expansion(tube, 12, THETA, nodes=N).coefficient for N in (8, 10, 12, 14)]
     steps = np.abs(np.diff(values))
-    assert steps[0] > steps[1] > steps[2]
-    assert values[3] == pytest.approx(values[2], rel=1e-8)
+    assert steps[1] < steps[0] / 4 and steps[2] < steps[1] / 4
+
+
+@pytest.mark.slow
+def test_door_on_a_gent_tube():
+    """koiter_coefficient on the Gent tube (24 against 18 points a segment): supercritical,
+    its error estimate small, and 32 points within the floor of a base state solved
+    numerically to rtol 1e-12 (not in closed form as a neo-Hookean one): the coefficient
+    jitters by ~1e-8 between 20, 24, 28 and 32 points (measured 1.6052310364, ...435,
+    ...389, ...289), which the fine-vs-coarse estimate (5.9e-9 here) can understate."""
+    tube = _film_tube(HOOP, gent(5.0), stretch=1.1)
+    r = koiter_coefficient(tube, (12, 0), THETA)
+    finer = tube_expansion(tube, 12, THETA, nodes=32).coefficient
+    assert r.branch == "supercritical"
+    assert r.error_estimate < 1e-7 * abs(r.coefficient)
+    assert finer == pytest.approx(r.coefficient, rel=2e-8)
 
 
 # ---- a second route: Newton on the full nonlinear equations ---------------------------
@@ -327,18 +344,20 @@ def _newton_curvature(tube, family, number, control, expansion, *, nodes=12):
 @pytest.mark.parametrize(
     "family, material",
     [
-        ("prismatic", mooney_rivlin(0.4)),
+        pytest.param("prismatic", mooney_rivlin(0.4), marks=pytest.mark.slow),
         ("prismatic", gent(4.0)),
         ("axisymmetric", mooney_rivlin(0.4)),
-        ("axisymmetric", gent(4.0)),
+        pytest.param("axisymmetric", gent(4.0), marks=pytest.mark.slow),
     ],
     ids=["prismatic-mooney-rivlin", "prismatic-gent", "axisymmetric-mooney-rivlin", "axisymmetric-gent"],
 )
 def test_branch_curvature_from_a_direct_nonlinear_solve(family, material):
     """The expansion's c_2 (the strain energy to fourth order from W's Taylor series)
     against Newton's method on the full equations (W's first derivatives only, at the full
-    F): the same curvature to 1e-6. lambda_z = 1.1 with g_z = 1 (prismatic: not plane
-    elastic strain, so Mooney-Rivlin differs from neo-Hookean)."""
+    F): the same curvature to 1e-6, lambda_z = 1.1 with g_z = 1. Measured (expansion,
+    Newton): prismatic Mooney-Rivlin 9.7667724806 / 9.7667721240, Gent -6.6008540169 /
+    -6.6008535210 (subcritical: J_m = 4 stiffens the film's hoop compression), axisymmetric
+    Mooney-Rivlin 14.8692067512 / 14.8692066864, Gent 16.5278447944 / 16.5278446745."""
     if family == "prismatic":
         tube = _film_tube(HOOP, material, stretch=1.1)
         e = tube_expansion(tube, 12, THETA, nodes=12)
