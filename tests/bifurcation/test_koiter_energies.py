@@ -24,6 +24,7 @@ from electrogrowth.bifurcation.koiter_tube import (
     tube_expansion,
 )
 from electrogrowth.errors import ParameterError
+from electrogrowth.incremental.dielectric_forms import DielectricForms
 from electrogrowth.incremental.meridian_forms import MeridianForms
 from electrogrowth.incremental.polar_forms import PolarForms, rings
 from electrogrowth.model.energy_text import energy_material
@@ -70,6 +71,19 @@ def test_neo_hookean_stiffness_is_the_hand_written_one():
         state = solve_base_state(_film_tube(HOOP, material, stretch=1.1).at(THETA, 1.5))
         first = forms.gradient(forms.lagrangian(state)[1], zero)
         assert np.abs(first).max() < 1e-13
+
+
+def test_base_state_is_stationary_under_a_voltage_for_any_ideal_dielectric():
+    """The dielectric forms' first variation vanishes for Mooney-Rivlin and Gent layers
+    under Vbar = 0.3 (permittivities 2, 0.5): the multiplier p~0 = p0 - eps_k e^2 does not
+    depend on W, and W's first order agrees with the package's stress."""
+    harmonics = SECOND + ((3, 0),) + MODE + ((3, 1),)
+    for material in (mooney_rivlin(0.6), gent(4.0)):
+        tube = _film_tube(HOOP, material, stretch=1.1, voltage=0.3, eps=(2.0, 0.5))
+        forms = DielectricForms.build(rings(tube, 12, 12), 12, harmonics)
+        state = solve_base_state(tube.at(THETA, 1.5))
+        zero = {k: np.zeros_like(forms.R) for k in forms.maps}
+        assert np.abs(forms.gradient(forms.lagrangian(state)[1], zero)).max() < 1e-13
 
 
 @pytest.mark.parametrize(
