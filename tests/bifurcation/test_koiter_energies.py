@@ -27,8 +27,8 @@ from electrogrowth.errors import ParameterError
 from electrogrowth.incremental.dielectric_forms import DielectricForms
 from electrogrowth.incremental.meridian_forms import MeridianForms
 from electrogrowth.incremental.polar_forms import PolarForms, rings
-from electrogrowth.model.energy_text import energy_material
 from electrogrowth.model.energy_taylor import strain_derivatives
+from electrogrowth.model.energy_text import energy_material
 from electrogrowth.model.layer import Layer
 from electrogrowth.model.layers import Tube
 from electrogrowth.model.materials import gent, mooney_rivlin, neo_hookean
@@ -256,9 +256,7 @@ def _local_gradient(base, layers, layer, entries, f):
         sel = layer == k
         w = ply.material.numeric()[1](I1[sel], I2[sel], zero[sel], zero[sel], zero[sel])
         W1[sel], W2[sel] = w[0], w[1]
-    dW = 2 * W1[:, None, None] * Fe + 2 * W2[:, None, None] * (
-        I1[:, None, None] * Fe - Fe @ C
-    )
+    dW = 2 * W1[:, None, None] * Fe + 2 * W2[:, None, None] * (I1[:, None, None] * Fe - Fe @ C)
     det = np.linalg.det(F)
     cof = det[:, None, None] * np.transpose(np.linalg.inv(F), (0, 2, 1))
     P = base["p0"] + f["q"]
@@ -282,7 +280,9 @@ class _Full:
         base = _base(forms, state)
         out = np.zeros(forms.size)
         for v, sign in ((w, 1.0), (np.zeros_like(w), -1.0)):
-            grad = _local_gradient(base, self.tube.layers, forms.layer, self.entries, forms.fields(v))
+            grad = _local_gradient(
+                base, self.tube.layers, forms.layer, self.entries, forms.fields(v)
+            )
             for k, g in grad.items():
                 out += sign * (self.sparse[k].T @ (forms.weight * g))
         return out
@@ -363,7 +363,12 @@ def _newton_curvature(tube, family, number, control, expansion, *, nodes=12):
         ("axisymmetric", mooney_rivlin(0.4)),
         pytest.param("axisymmetric", gent(4.0), marks=pytest.mark.slow),
     ],
-    ids=["prismatic-mooney-rivlin", "prismatic-gent", "axisymmetric-mooney-rivlin", "axisymmetric-gent"],
+    ids=[
+        "prismatic-mooney-rivlin",
+        "prismatic-gent",
+        "axisymmetric-mooney-rivlin",
+        "axisymmetric-gent",
+    ],
 )
 def test_branch_curvature_from_a_direct_nonlinear_solve(family, material):
     """The expansion's c_2 (the strain energy to fourth order from W's Taylor series)

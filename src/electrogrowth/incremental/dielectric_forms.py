@@ -13,7 +13,8 @@ the constraint J = J_g, and with F = diag(F_2, lambda_z), E~_Z = 0,
 
 the strain energy to fourth order in G (strain_energy_forms.py; quadratic for neo-Hookean
 layers) and the rest a polynomial of degree four in (G, grad phi): cof(F_2) is linear in
-G. Replacing J by J_g changes the multiplier: p~0 = p0 - eps_k |e|^2 (p0 the state's, e the current field).
+G. Replacing J by J_g changes the multiplier: p~0 = p0 - eps_k |e|^2 (p0 the state's, e
+the current field).
 Harmonics of m Theta: U_r, q and phi ~ cos, U_theta ~ sin; phi on the Lobatto nodes,
 zero on the electrodes (the inner and outer faces of the wall).
 """
