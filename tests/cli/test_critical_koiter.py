@@ -4,6 +4,8 @@ equal to the library's expansion, and a one-line reason where it is not covered.
 import json
 from pathlib import Path
 
+import pytest
+
 from electrogrowth.bifurcation.koiter import axisymmetric_expansion, tube_expansion
 from electrogrowth.cli.app import main
 from electrogrowth.model.layers import Layer, Tube
@@ -64,3 +66,23 @@ def test_axisymmetric_mode_has_its_branch(tmp_path, capsys):
     c2 = axisymmetric_expansion(tube, 3, "growth[1].z").coefficient
     assert rec["branch"] == "supercritical" and (rec["m"], rec["n"]) == (0, 3)
     assert abs(rec["koiter"] - c2) < 1e-9 * abs(c2)
+
+
+@pytest.mark.slow
+def test_mooney_rivlin_and_gent_have_their_branch(capsys):
+    """--material mooney-rivlin / gent: the record carries the library's expansion of the
+    critical mode (0, 1) of the paper's tube (any strain energy, docs/derivation-koiter.md
+    "Any strain energy"), supercritical."""
+    from electrogrowth.model.materials import gent, mooney_rivlin
+
+    base = ["critical", "--solve-for", "growth", "--outer-radius", "1.4", "--stretch", "1.1"]
+    for flags, material in (
+        (["--material", "mooney-rivlin", "--alpha", "0.7"], mooney_rivlin(0.7)),
+        (["--material", "gent", "--jm", "5"], gent(5.0)),
+    ):
+        assert main([*base, *flags, "--koiter", "--json"]) == 0
+        rec = json.loads(capsys.readouterr().out)
+        assert (rec["m"], rec["n"]) == (0, 1) and rec["branch"] == "supercritical"
+        tube = Tube.uniform(1.4, stretch=1.1, material=material)
+        c2 = axisymmetric_expansion(tube, 1, "growth").coefficient
+        assert abs(rec["koiter"] - c2) < 1e-9 * abs(c2)

@@ -4,9 +4,10 @@ branch is super- or subcritical (docs/derivation-koiter.md).
 Covered so far: the flat film on a half-space (koiter_film.py: both incompressible
 neo-Hookean, plane strain, uniaxial compression of the film alone or of the whole bilayer),
 the limit of a thin stiff film on a thick tube; and a tube's prismatic modes (m, 0) and
-axisymmetric modes (0, n) (koiter_tube.py: neo-Hookean layers, constant growth, axial
-stretch prescribed, no pressure; a radial voltage for the prismatic modes) in a growth
-control, c = c_c + c_2 eps^2 with eps = max |u_r| / R_i, supercritical when c_2 > 0.
+axisymmetric modes (0, n) (koiter_tube.py: layers of any strain energy, constant growth,
+axial stretch prescribed, no pressure; a radial voltage for the prismatic modes, on ideal
+dielectrics) in a growth control, c = c_c + c_2 eps^2 with eps = max |u_r| / R_i,
+supercritical when c_2 > 0.
 Wrinkles (m, n) with m, n >= 1 and other cases raise a one-line
 :class:`~electrogrowth.errors.ParameterError`.
 """
@@ -85,8 +86,9 @@ def koiter_coefficient(problem, mode=None, control: str = "stretch") -> KoiterRe
     Parameters
     ----------
     problem : FilmOnHalfSpace or Tube
-        A flat film on a half-space, or a tube (neo-Hookean layers with constant growth,
-        the axial stretch prescribed, no pressure; a voltage for prismatic modes only).
+        A flat film on a half-space, or a tube (layers of any strain energy with constant
+        growth, the axial stretch prescribed, no pressure; a voltage for prismatic modes
+        only, on ideal dielectrics).
     mode : None or (m, 0) or (0, n)
         The film: None (K_c maximises lambda_c). A tube: a prismatic mode (m, 0), m >= 2,
         or an axisymmetric mode (0, n), n >= 1 (axial wavenumber n pi / L in the
@@ -184,8 +186,21 @@ def _tube_not_covered(tube: Tube, family: str) -> str:
     for ply in tube.layers:
         if ply.graded:
             return "constant growth in every layer"
-        if ply.material.name != "neo-hookean":
-            return f"neo-Hookean layers (not {ply.material.name})"
+    return _energy_not_covered(tube)
+
+
+def _energy_not_covered(tube: Tube) -> str:
+    """Any strain energy is covered (its derivatives to fourth order); under a voltage
+    only an ideal dielectric's, Omega = W(I1, I2) + I5 / 2, whose electric part is the
+    one the dielectric forms hold."""
+    if tube.voltage == 0:
+        return ""
+    for ply in tube.layers:
+        if not ply.material.is_ideal_dielectric():
+            return (
+                "ideal dielectric layers under a voltage, Omega = W(I1, I2) + I5/2 "
+                f"(not {ply.material.name})"
+            )
     return ""
 
 

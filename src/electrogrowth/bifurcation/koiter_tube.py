@@ -65,27 +65,17 @@ def singular_point(stiffness, start: float, what: str):
 
 
 def tube_expansion(tube: Tube, m: int, control: str, *, nodes: int = 24) -> TubeExpansion:
-    """The Koiter coefficient of the prismatic mode (m, 0) of a neo-Hookean tube at fixed
-    axial stretch, in a growth control: the forms of incremental/polar_forms.py (no
-    quartic term), the correction at harmonics 0 and 2m; under a voltage
+    """The Koiter coefficient of the prismatic mode (m, 0) of a tube at fixed axial
+    stretch, in a growth control: the forms of incremental/polar_forms.py (any strain
+    energy, to fourth order), the correction at harmonics 0 and 2m; under a voltage
     :func:`dielectric_expansion`."""
     if tube.voltage != 0:
         return dielectric_expansion(tube, m, control, nodes=nodes)
-    first = PolarForms.build(rings(tube, m, nodes), m, MODE)
-    second = PolarForms.build(rings(tube, m, nodes), m, SECOND)
-
-    def A(c, form=first):
-        return form.stiffness(solve_base_state(tube.at(control, c)))
-
+    cut = rings(tube, m, nodes)
+    first = PolarForms.build(cut, m, MODE)
+    second = PolarForms.build(cut, m, SECOND)
     start = critical_value(tube, m, 0, control, rtol=1e-12).value
-    c, phi = singular_point(A, start, f"{control} of mode ({m}, 0)")
-    phi = phi / first.peak_radial(phi, first.slices[0])[1]  # eps = max |u_r| / R_i
-    state = solve_base_state(tube.at(control, c))
-    f1 = first.fields(phi)
-    A2 = second.stiffness(state)
-    psi = np.linalg.solve(A2, -0.5 * second.cubic_gradient(f1, f1, state.stretch))
-    c2 = 2 * (psi @ A2 @ psi) / (phi @ control_derivative(A, c) @ phi)
-    return TubeExpansion(float(c), float(c2), float(start), float(phi[first.slices[0]][0]))
+    return _expand(tube, control, first, second, start, f"{control} of mode ({m}, 0)")
 
 
 def axial_wavenumber(tube: Tube, n: int) -> float:

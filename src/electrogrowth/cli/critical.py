@@ -70,8 +70,9 @@ def configure_critical(parser: argparse.ArgumentParser) -> None:
         help="also solve the amplitude equation of the wrinkle at onset: supercritical"
         " (folds grow gradually) or subcritical (a jump to large folds), with the Koiter"
         " coefficient c_2 of control = c_cr + c_2 eps^2, eps the mode's peak radial"
-        " displacement over R_i (so far: prismatic modes (m, 0) of neo-Hookean tubes under a"
-        " growth control, no voltage or pressure; a few seconds)",
+        " displacement over R_i (so far: prismatic modes (m, 0), under a voltage too, and"
+        " axisymmetric modes (0, n) of tubes of any energy (ideal dielectrics under a"
+        " voltage) in a growth control, no pressure; a few seconds)",
     )
     parser.add_argument(
         "--json",

@@ -1,18 +1,20 @@
-"""The energy of a layered, growing tube of ideal neo-Hookean dielectrics under a radial
-voltage, in plane deformations (r, theta) at fixed axial stretch, expanded about its
-axisymmetric state: the forms of the prismatic modes (m, 0) with the electric potential as
-an extra field (docs/derivation-koiter.md, "The radial voltage").
+"""The energy of a layered, growing tube of ideal dielectrics under a radial voltage, in
+plane deformations (r, theta) at fixed axial stretch, expanded about its axisymmetric
+state: the forms of the prismatic modes (m, 0) with the electric potential as an extra
+field (docs/derivation-koiter.md, "The radial voltage").
 
 In terms of the nominal field E~ = -Grad phi, the energy of a layer per reference volume
-(Legendre transform of Omega = mu_k (I1 - 3) / 2 + I5 / (2 eps_k) in the displacement) is
-J_g mu_k / 2 |F F_g^-1|^2 - eps_k J / 2 E~ . C^-1 E~, and J C^-1 = cof(F)^T cof(F) / J. On
+(Legendre transform of Omega = mu_k W(I1, I2) + I5 / (2 eps_k) in the displacement) is
+J_g mu_k W(F F_g^-1) - eps_k J / 2 E~ . C^-1 E~, and J C^-1 = cof(F)^T cof(F) / J. On
 the constraint J = J_g, and with F = diag(F_2, lambda_z), E~_Z = 0,
 
-    L = J_g mu_k / 2 |F F_g^-1|^2 - eps_k lambda_z^2 / (2 J_g) |cof(F_2) E~|^2
+    L = J_g mu_k W(F F_g^-1) - eps_k lambda_z^2 / (2 J_g) |cof(F_2) E~|^2
         - (p~0 + q)(lambda_z det F_2 - J_g),
 
-a polynomial of degree four in (G, grad phi): cof(F_2) is linear in G. Replacing J by J_g
-changes the multiplier: p~0 = p0 - eps_k |e|^2 (p0 the state's, e the current field).
+the strain energy to fourth order in G (strain_energy_forms.py; quadratic for neo-Hookean
+layers) and the rest a polynomial of degree four in (G, grad phi): cof(F_2) is linear in
+G. Replacing J by J_g changes the multiplier: p~0 = p0 - eps_k |e|^2 (p0 the state's, e
+the current field).
 Harmonics of m Theta: U_r, q and phi ~ cos, U_theta ~ sin; phi on the Lobatto nodes,
 zero on the electrodes (the inner and outer faces of the wall).
 """
@@ -27,6 +29,7 @@ from .._types import FloatArray
 from ..errors import ParameterError
 from .monomial_forms import MonomialForms, by_degree, product
 from .polar_forms import Ring, peak_on_rings, radial_maps
+from .strain_energy_forms import strain_energy
 
 
 @dataclasses.dataclass
@@ -117,10 +120,6 @@ class DielectricForms(MonomialForms):
         v2 = _sum(product(a, ET), product(b, ER), -1.0)
         det = _sum(product(a, d), product(b, cc), -1.0)
         energy = [
-            (c["cr"] / 2, product(a, a)),
-            (c["cr"] / 2, product(cc, cc)),
-            (c["ct"] / 2, product(b, b)),
-            (c["ct"] / 2, product(d, d)),
             (-c["ce"] / 2, product(v1, v1)),
             (-c["ce"] / 2, product(v2, v2)),
             (-c["p0"] * lz, det),
@@ -129,6 +128,9 @@ class DielectricForms(MonomialForms):
         ]
         out = by_degree(*energy)
         out.pop(0, None)  # the base energy
+        F = {(0, 0): a, (0, 1): b, (1, 0): cc, (1, 1): d, (2, 2): {(): lz}}
+        for order, monomials in strain_energy(self, state, F).items():
+            out[order] = out.get(order, []) + monomials
         return out
 
     def stiffness(self, state) -> FloatArray:

@@ -1,4 +1,4 @@
-"""The energy of a layered, growing neo-Hookean tube in axisymmetric deformations (r, z)
+"""The energy of a layered, growing tube in axisymmetric deformations (r, z)
 at fixed axial stretch, expanded about its axisymmetric state: the forms A, C and the
 quartic term that the Koiter coefficient of the axisymmetric modes (0, n) needs
 (docs/derivation-koiter.md, "The tube's axisymmetric family").
@@ -9,9 +9,10 @@ base state r0(R), z = lambda_z Z gives the deformation gradient, exactly,
     F = [[r0' + G_rR, G_rZ], [G_zR, lambda_z + G_zZ]]  (meridian)  and  F_tT = t0 + G_tT,
 
 G_rR = U_r,R, G_rZ = U_r,Z, G_zR = U_z,R, G_zZ = U_z,Z, G_tT = U_r / R, t0 = r0 / R. The
-energy J_g mu_k / 2 |F F_g^-1|^2 is quadratic in G; the constraint det F = F_tT det F_m is
-cubic, so the Lagrangian L = W - (p0 + q)(det F - J_g) is a polynomial of degree four in
-(G, q), written below as its monomials order by order (``lagrangian``). Harmonics of
+energy J_g mu_k W(F F_g^-1) is taken to fourth order in G (strain_energy_forms.py; for
+neo-Hookean layers J_g mu_k / 2 |F F_g^-1|^2, quadratic); the constraint det F = F_tT
+det F_m is cubic, so the Lagrangian L = W - (p0 + q)(det F - J_g) to fourth order is a
+polynomial in (G, q), written below as its monomials order by order (``lagrangian``). Harmonics of
 K Z, K = n pi / L (the package's k = n pi / (lambda_z L) in the current length): U_r =
 a_j cos(j K Z), U_z = b_j sin(j K Z) (zero at the sliding ends Z = 0, L: no mean axial
 strain, the axial stretch being prescribed), q = c_j cos(j K Z); a, b on the Lobatto nodes
@@ -28,6 +29,7 @@ from .._types import FloatArray
 from ..errors import ParameterError
 from .monomial_forms import MonomialForms
 from .polar_forms import Ring, peak_on_rings, radial_maps
+from .strain_energy_forms import strain_energy
 
 #: the local fields of the energy: the displacement gradient and the pressure increment
 FIELDS = ("rR", "rZ", "zR", "zZ", "tT", "q")
@@ -112,7 +114,7 @@ class MeridianForms(MonomialForms):
         """The monomials (coefficient, fields) of L = W - (p0 + q)(det F - J_g) order by
         order in (G, q): det F = (t0 + G_tT)(s0 lz + lz G_rR + s0 G_zZ + det G_m)."""
         c = self.coefficients(state)
-        cr, cz, ct, p0, t0, s0, lz = (c[k] for k in ("cr", "cz", "ct", "p0", "t0", "s0", "lz"))
+        p0, t0, s0, lz = (c[k] for k in ("p0", "t0", "s0", "lz"))
 
         def det_m(coeff):  # coeff * det G_m = coeff (G_rR G_zZ - G_rZ G_zR)
             return [(coeff, ("rR", "zZ")), (-coeff, ("rZ", "zR"))]
@@ -124,14 +126,9 @@ class MeridianForms(MonomialForms):
             return [(k, (field, *f)) for k, f in monomials]
 
         one = np.ones_like(p0)
-        return {
-            1: [(cr * s0, ("rR",)), (cz * lz, ("zZ",)), (ct * t0, ("tT",))]
-            + cof_m(-p0 * t0)
-            + [(-p0 * s0 * lz, ("tT",))],
-            2: [(cr / 2, (f, f)) for f in ("rR", "zR")]
-            + [(cz / 2, (f, f)) for f in ("rZ", "zZ")]
-            + [(ct / 2, ("tT", "tT"))]
-            + det_m(-p0 * t0)
+        constraint = {
+            1: cof_m(-p0 * t0) + [(-p0 * s0 * lz, ("tT",))],
+            2: det_m(-p0 * t0)
             + times("tT", cof_m(-p0))
             + times("q", cof_m(-t0))
             + [(-s0 * lz, ("q", "tT"))],
@@ -140,6 +137,19 @@ class MeridianForms(MonomialForms):
             + times("q", times("tT", cof_m(-one))),
             4: times("q", times("tT", det_m(-one))),
         }
+        return _with_strain_energy(constraint, self.strain_energy(state, c))
+
+    def strain_energy(self, state, c: dict) -> dict[int, list]:
+        """The monomials of J_g mu_k W(F F_g^-1) (strain_energy_forms.py), F = [[r0' + G_rR,
+        G_rZ], [G_zR, lambda_z + G_zZ]] in the meridian and r0 / R + G_tT in the hoop."""
+        F = {
+            (0, 0): {(): c["s0"], ("rR",): 1.0},
+            (0, 2): {("rZ",): 1.0},
+            (2, 0): {("zR",): 1.0},
+            (2, 2): {(): c["lz"], ("zZ",): 1.0},
+            (1, 1): {(): c["t0"], ("tT",): 1.0},
+        }
+        return strain_energy(self, state, F)
 
     def stiffness(self, state) -> FloatArray:
         """A = the Hessian of the quadratic part E2 at the state."""
@@ -148,3 +158,8 @@ class MeridianForms(MonomialForms):
     def peak_radial(self, v: FloatArray, field_slice: slice) -> tuple[float, float]:
         """(R, a(R)) where |a| of ``v[field_slice]`` is largest (polar_forms.peak_on_rings)."""
         return peak_on_rings(self.rings, v[field_slice])
+
+
+def _with_strain_energy(constraint: dict[int, list], energy: dict[int, list]) -> dict:
+    """The Lagrangian's monomials: the constraint's and the strain energy's, order by order."""
+    return {k: constraint.get(k, []) + energy.get(k, []) for k in sorted({*constraint, *energy})}

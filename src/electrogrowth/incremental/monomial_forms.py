@@ -65,11 +65,18 @@ class MonomialForms:
         return out
 
     def hessian(self, monomials, f: dict | None = None) -> FloatArray:
-        """The second derivative of ``energy`` (for quadratic monomials ``f`` is unused)."""
-        H = np.zeros((self.size, self.size))
+        """The second derivative of ``energy`` (for quadratic monomials ``f`` is unused).
+        The weights of each pair of fields are summed first, so that each pair costs one
+        product of maps (the energy of a general material has many monomials per pair)."""
+        pairs: dict = {}
         for k, xs in monomials:
-            for i, j in itertools.permutations(range(len(xs)), 2):
+            for i, j in itertools.combinations(range(len(xs)), 2):
                 rest = [f[x] for n, x in enumerate(xs) if n not in (i, j)] if f else []
                 w = self.weight * k * (np.prod(rest, axis=0) if rest else 1.0)
-                H += self.maps[xs[i]].T @ (w[:, None] * self.maps[xs[j]])
+                key = tuple(sorted((xs[i], xs[j])))
+                pairs[key] = pairs.get(key, 0.0) + w
+        H = np.zeros((self.size, self.size))
+        for (a, b), w in pairs.items():
+            M = self.maps[a].T @ (w[:, None] * self.maps[b])
+            H += M + M.T  # the pair (a, b) and (b, a)
         return H

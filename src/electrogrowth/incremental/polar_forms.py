@@ -1,7 +1,9 @@
-"""The energy of a layered, growing neo-Hookean tube in plane deformations (r, theta) at
-fixed axial stretch, expanded about its axisymmetric state: the quadratic form A and the
-cubic form C of the prismatic modes (n = 0) that the Koiter coefficient needs
-(docs/derivation-koiter.md, "The tube's prismatic family").
+"""The energy of a layered, growing tube in plane deformations (r, theta) at fixed axial
+stretch, expanded about its axisymmetric state: the forms of the prismatic modes (n = 0)
+that the Koiter coefficient needs (docs/derivation-koiter.md, "The tube's prismatic
+family"), for any strain energy (``lagrangian``, via strain_energy_forms.py), and written
+out by hand for neo-Hookean layers (``neo_hookean_stiffness``, ``cubic_gradient``: the
+slow twin the tests compare with).
 
 A displacement u = U_r e_r + U_th e_th from the base state r(R) (reference polar
 coordinates R, Theta; physical components) has the in-plane gradient G = F - F0,
@@ -32,7 +34,9 @@ import numpy as np
 
 from .._types import FloatArray
 from ..errors import ParameterError
+from .monomial_forms import MonomialForms, by_degree
 from .plane_forms import _barycentric, _segment_maps
+from .strain_energy_forms import strain_energy, times
 
 _THETA_POINTS = 8
 
@@ -94,9 +98,11 @@ def radial_maps(rings_: tuple[Ring, ...]):
 
 
 @dataclasses.dataclass
-class PolarForms:
+class PolarForms(MonomialForms):
     """The maps from the unknowns of ``harmonics`` ((field, j): 0 = a, 1 = b, 2 = c) to the
-    gradient and pressure at the quadrature points, for mode number m."""
+    gradient and pressure at the quadrature points, for mode number m. ``theta_points``
+    equispaced points a period integrate trigonometric polynomials of degree below it
+    exactly (8: the quartic term of the first harmonic)."""
 
     rings: tuple[Ring, ...]
     m: int
@@ -109,10 +115,12 @@ class PolarForms:
     size: int
 
     @classmethod
-    def build(cls, rings_: tuple[Ring, ...], m: int, harmonics) -> PolarForms:
+    def build(
+        cls, rings_: tuple[Ring, ...], m: int, harmonics, *, theta_points: int = _THETA_POINTS
+    ) -> PolarForms:
         if m < 2:
             raise ParameterError(f"m = {m}: prismatic modes need m >= 2")
-        theta = 2 * np.pi * np.arange(_THETA_POINTS) / (_THETA_POINTS * m)  # one period
+        theta = 2 * np.pi * np.arange(theta_points) / (theta_points * m)  # one period
         R, wR, layer, V, D, P = radial_maps(rings_)
         nR, n_disp, n_pres = len(R), V.shape[1], P.shape[1]
         slices, at = [], 0
@@ -120,7 +128,7 @@ class PolarForms:
             size = n_pres if field == 2 else n_disp
             slices.append(slice(at, at + size))
             at += size
-        npts = _THETA_POINTS * nR
+        npts = theta_points * nR
         maps = {k: np.zeros((npts, at)) for k in ("rR", "rT", "tR", "tT", "q")}
         inv = (1.0 / R)[:, None]
         for (field, j), sl in zip(harmonics, slices):
@@ -136,25 +144,18 @@ class PolarForms:
                 maps["tT"][:, sl] += np.kron(n * c, inv * V)
             else:
                 maps["q"][:, sl] += np.kron(c, P)
-        weight = np.tile(wR, _THETA_POINTS) / _THETA_POINTS
+        weight = np.tile(wR, theta_points) / theta_points
+        tiled = np.tile(R, theta_points), np.tile(layer, theta_points)
         return cls(
-            rings_,
-            m,
-            tuple(harmonics),
-            maps,
-            np.tile(R, _THETA_POINTS),
-            weight,
-            np.tile(layer, _THETA_POINTS),
-            slices,
-            at,
+            tuple(rings_), m, tuple(harmonics), maps, tiled[0], weight, tiled[1], slices, at
         )
 
     def coefficients(self, state) -> dict:
         """The base state at the quadrature points: J_g mu_k / g_r^2, J_g mu_k / g_t^2, p0,
-        lambda_z, r / R, r' (= J_g R / (lambda_z r))."""
+        lambda_z, r / R, r' (= J_g R / (lambda_z r)), J_g."""
         tube = state.tube
         lz = state.stretch
-        out = {k: np.zeros_like(self.R) for k in ("cr", "ct", "p0", "cofR", "cofT")}
+        out = {k: np.zeros_like(self.R) for k in ("cr", "ct", "p0", "cofR", "cofT", "J")}
         for k, ply in enumerate(tube.layers):
             sel = self.layer == k
             if not sel.any():
@@ -166,6 +167,7 @@ class PolarForms:
             R = self.R[sel]
             r = state.radius(R)
             mu = ply.shear_modulus
+            out["J"][sel] = J
             out["cr"][sel] = J * mu / gr**2
             out["ct"][sel] = J * mu / gt**2
             out["p0"][sel] = state.pressure(R)
@@ -174,8 +176,36 @@ class PolarForms:
         out["lz"] = lz
         return out
 
+    def lagrangian(self, state) -> dict[int, list]:
+        """The monomials of L = J_g mu_k W(F F_g^-1) - (p0 + q)(lambda_z det F_2 - J_g)
+        order by order (1 to 4) in (G, q), F = [[r' + G_rR, G_rT], [G_tR, r / R + G_tT]]
+        in the plane and F_zZ = lambda_z."""
+        c = self.coefficients(state)
+        lz = c["lz"]
+        F = {
+            (0, 0): {(): c["cofT"], ("rR",): 1.0},
+            (0, 1): {("rT",): 1.0},
+            (1, 0): {("tR",): 1.0},
+            (1, 1): {(): c["cofR"], ("tT",): 1.0},
+            (2, 2): {(): np.full_like(self.R, lz)},
+        }
+        det = times(F[0, 0], F[1, 1])
+        for k, v in times(F[0, 1], F[1, 0]).items():
+            det[k] = det.get(k, 0.0) - v
+        J = {(): c["J"]}
+        out = by_degree(
+            (-lz, times({(): c["p0"], ("q",): 1.0}, det)), (1.0, times({("q",): 1.0}, J))
+        )
+        out.pop(0, None)
+        energy = strain_energy(self, state, F)
+        return {k: out.get(k, []) + energy.get(k, []) for k in range(1, 5)}
+
     def stiffness(self, state) -> FloatArray:
-        """A = the Hessian of E2 at the state."""
+        """A = the Hessian of the quadratic part of ``lagrangian`` at the state."""
+        return self.hessian(self.lagrangian(state)[2])
+
+    def neo_hookean_stiffness(self, state) -> FloatArray:
+        """A = the Hessian of E2 at the state, written out for neo-Hookean layers."""
         c = self.coefficients(state)
         lz = c["lz"]
         terms = [
@@ -197,9 +227,6 @@ class PolarForms:
     def peak_radial(self, v: FloatArray, field_slice: slice) -> tuple[float, float]:
         """(R, a(R)) where |a| of the displacement values ``v[field_slice]`` is largest."""
         return peak_on_rings(self.rings, v[field_slice])
-
-    def fields(self, v: FloatArray) -> dict:
-        return {k: M @ v for k, M in self.maps.items()}
 
     def cubic_gradient(self, fa: dict, fb: dict, lz: float) -> FloatArray:
         """C[a, b, .] for E3 = -lambda_z int q det G (as plane_forms.Forms.cubic_gradient)."""
