@@ -32,7 +32,7 @@ from ..basestate.tube import solve_base_state
 from ..continuation.events import LATER, brent, crossed, dip_bracket, dipped, first_roots
 from ..continuation.events import threshold_between as _lost_between
 from ..continuation.path import ControlPath, Stepper, StepPolicy
-from ..continuation.predict import EventWatch
+from ..continuation.predict import MAX_WAIT, EventWatch
 from ..errors import BaseStateError, NoBifurcationFound, ParameterError
 from ..incremental.targets import natural_family, row_family
 from ..model.controls import KINDS
@@ -40,8 +40,15 @@ from ..model.layers import Tube
 from .along import Signed, Solves, TubeAt, VoltageMargin
 from .along import voltage_threshold as _voltage_threshold
 
-#: the mode march's step control: 0.4 % of the scale doubling up to 5 %, not below 1e-4
-MODE_STEPS = StepPolicy(smallest=1e-4)
+#: the mode march's step control: 0.4 % of the scale doubling up to MAX_WAIT (a mode is
+#: sampled at least that often), not below 1e-4, ending at most LATE after the next mode
+#: falls due; a step is dropped where lambda_i jumps from its linear prediction by 5 %, and
+#: none is proposed over which that prediction moves it by more than 8 % (a layered state is
+#: continued from its neighbour only within 10 %: basestate/warm.py)
+MODE_STEPS = StepPolicy(smallest=1e-4, largest=MAX_WAIT, predict_monitor=True, max_change=0.08)
+#: a mode is sampled at most this far (times the scale) after it falls due: the largest
+#: step of the march when it did not end steps at due modes
+LATE = 0.05
 
 #: targets(state, modes (k, 2) or (k, 3) array) -> (k,) array of target values
 Targets = Callable[[object, np.ndarray], np.ndarray]
@@ -137,7 +144,8 @@ def first_bifurcations(
     while watch.alive.any():
         done = step.at_end() or len(found) >= top
         if not done:
-            x = step.propose()
+            due = watch.next_due(step.x)
+            x = step.propose(None if due is None else due + sense * LATE * path.scale)
             try:
                 state = at.state(x)
             except BaseStateError:
@@ -157,7 +165,8 @@ def first_bifurcations(
         if idx.size:
             g = sref[idx] * targets(state, modes[idx])
             found += _advance(watch, idx, x, g, signed, signed_fine, top)
-        step.accept(x, state.lambda_i, MODE_STEPS.limit(watch.distance(), path.scale))
+        reach = watch.reach(MODE_STEPS.safety, MODE_STEPS.smallest * path.scale)
+        step.accept(x, state.lambda_i, reach / path.scale)
     found.sort(key=lambda mv: sense * mv.value)
     if not found and threshold is None:
         thr = _voltage_threshold(params) if solve_for == "voltage" else math.inf
