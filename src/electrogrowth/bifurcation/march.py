@@ -187,7 +187,16 @@ def _advance(watch, idx, x, g, signed: Signed, signed_fine: Signed, need=None) -
     js = np.nonzero(hit)[0]
     if js.size:  # bisected together from where each mode was last seen
         cand = idx[js]
-        roots = first_roots(signed, signed_fine.one, cand, watch.xa[cand], x, watch.x0, need)
+        roots = first_roots(
+            signed,
+            signed_fine.one,
+            cand,
+            watch.xa[cand],
+            x,
+            watch.x0,
+            need,
+            values=(watch.g[0, cand], g[js]),
+        )
         for j, root in zip(js, roots):
             if root is None:  # the loose sign was wrong: the mode is not past a root yet
                 hit[j] = False
