@@ -40,14 +40,19 @@ from ..model.layers import Tube
 from .along import Signed, Solves, TubeAt, VoltageMargin
 from .along import voltage_threshold as _voltage_threshold
 
-#: the mode march's step control: 0.4 % of the scale doubling up to MAX_WAIT (a mode is
-#: sampled at least that often), not below 1e-4, ending at most LATE after the next mode
-#: falls due; a step is dropped where lambda_i jumps from its linear prediction by 5 %, and
-#: none is proposed over which that prediction moves it by more than 8 % (a layered state is
-#: continued from its neighbour only within 10 %: basestate/warm.py)
-MODE_STEPS = StepPolicy(smallest=1e-4, largest=MAX_WAIT, predict_monitor=True, max_change=0.08)
+#: the mode march's step control: 0.4 % of the scale doubling up to 5 %, not below 1e-4
+MODE_STEPS = StepPolicy(smallest=1e-4)
+#: the march of a single mode (critical_value): its states cost as much as its one target,
+#: so none is solved for nothing. Steps double up to MAX_WAIT (the mode is sampled at least
+#: that often) but end at most LATE after the mode falls due; lambda_i is predicted from the
+#: last step, a jump is a bend of 5 % away from that prediction, and no step is proposed
+#: over which the prediction moves lambda_i by more than 8 % (a layered state is continued
+#: from its neighbour within 10 %: basestate/warm.py). Not for a scan: near the voltage
+#: threshold, where hundreds of modes cross at once, the longer steps of a runaway lambda_i
+#: widen the brackets that the scan bisects (1.5x its evaluations in a thick tube)
+ONE_MODE_STEPS = StepPolicy(smallest=1e-4, largest=MAX_WAIT, predict_monitor=True, max_change=0.08)
 #: a mode is sampled at most this far (times the scale) after it falls due: the largest
-#: step of the march when it did not end steps at due modes
+#: step of MODE_STEPS, with which the march samples every mode due at its next step
 LATE = 0.05
 
 #: targets(state, modes (k, 2) or (k, 3) array) -> (k,) array of target values
@@ -108,13 +113,15 @@ def first_bifurcations(
     top: int = 1,
     brent_targets: Targets | None = None,
     stable_signs: np.ndarray | None = None,
+    steps: StepPolicy = MODE_STEPS,
 ) -> MarchResult:
     """Critical values of the first ``top`` modes of ``modes`` reached by the march.
 
     ``targets`` is used for signs along the march (it may be loose); ``brent_targets``
     (default ``targets``) for the final roots. ``stable_signs``, the signs of the targets
     on the unloaded tube, are computed unless given (they depend only on the material,
-    Rbar_o, L and the modes, so a curve or sweep can reuse them).
+    Rbar_o, L and the modes, so a curve or sweep can reuse them). ``steps``: the step
+    control (ONE_MODE_STEPS for a single mode).
     """
     at = TubeAt(params, solve_for)
     if stable_signs is None:
@@ -139,7 +146,7 @@ def first_bifurcations(
     signed_fine = Signed(at, brent_targets or targets, modes, sref)
 
     watch = EventWatch(x0, g0, sense, path.scale)
-    step = Stepper(path, MODE_STEPS, state.lambda_i)
+    step = Stepper(path, steps, state.lambda_i)
     found, threshold = [], None
     while watch.alive.any():
         done = step.at_end() or len(found) >= top
@@ -165,7 +172,7 @@ def first_bifurcations(
         if idx.size:
             g = sref[idx] * targets(state, modes[idx])
             found += _advance(watch, idx, x, g, signed, signed_fine, top)
-        reach = watch.reach(MODE_STEPS.safety, MODE_STEPS.smallest * path.scale)
+        reach = watch.reach(steps.safety, steps.smallest * path.scale)
         step.accept(x, state.lambda_i, reach / path.scale)
     found.sort(key=lambda mv: sense * mv.value)
     if not found and threshold is None:
