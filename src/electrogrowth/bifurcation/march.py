@@ -8,13 +8,16 @@ target keeps that sign until the mode's first bifurcation.
 The control parameter x moves from its start in steps that grow geometrically (0.4 % of
 the scale, doubling up to 5 %) but never beyond 0.7 of the distance at which the linear
 extrapolation of any mode's target reaches zero (a mode can be unstable only in a narrow
-window, which a long step would jump over), and shrink when the inner stretch lambda_i
-changes by more than 5 % in one step: near the voltage threshold
-lambda_i runs away and modes can lose and regain stability within a tiny interval. When
+window, which a long step would jump over; once that zero's prediction has settled below the
+finest step, one step goes just past it: docs/derivation.md section 7), and shrink when the
+inner stretch lambda_i changes by more than 5 % in one step: near the voltage threshold
+lambda_i runs away and modes can lose and regain stability within a tiny interval (a single
+mode's march, ONE_MODE_STEPS, predicts lambda_i instead and solves no state it drops). When
 the base state is lost between two steps the threshold is located exactly and approached
 with shrinking steps. Modes that change sign in a step are narrowed by a shared bisection
 and finished with Brent's method; a mode whose target dips towards zero between steps
-without crossing is examined by a bounded minimisation. The stepping, the prediction and
+without crossing is examined by a bounded minimisation; a single crossing is finished near
+its loose root. The stepping, the prediction and
 the location are the continuation engine's (continuation/: MODE_STEPS, EventWatch,
 first_roots); the march says what a state, a mode and a lost state are.
 """

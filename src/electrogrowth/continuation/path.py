@@ -10,7 +10,9 @@ of the path's scale and at most double (``growth``) up to ``largest``, never bey
 ``safety`` of the distance at which the march's predictor (continuation.predict) expects
 the next event, and never below ``smallest`` (1e-4 for the mode march, 1e-6 for the
 short-wave march). A step is halved when the monitored unknown (lambda_i, the inner
-stretch) changes by more than ``max_jump``: near the voltage threshold lambda_i runs away
+stretch) changes by more than ``max_jump`` (with ``predict_monitor``: bends that far away from
+its linear prediction, and a step is proposed only as far as the prediction moves it by
+``max_change``): near the voltage threshold lambda_i runs away
 and modes lose and regain stability within a tiny interval. When the state is lost between
 two steps the threshold is located (continuation.events.threshold_between) and approached
 with shrinking steps; a wall thinned to a film (lambda_i grown ``film``-fold) is at it.
