@@ -4,6 +4,7 @@ TubeParameters a deprecated factory of it."""
 import pytest
 
 from electrogrowth import Layer, Tube
+from electrogrowth.errors import ParameterError
 
 
 def test_the_former_tube_type_is_a_deprecated_factory_of_the_uniform_tube():
@@ -20,3 +21,15 @@ def test_the_former_tube_type_is_a_deprecated_factory_of_the_uniform_tube():
         0.3,
     )
     assert not Tube((Layer(2.0, shear_modulus=2.0),)).is_uniform  # a modulus: not the paper's
+
+
+@pytest.mark.parametrize("growth", [1.0, 1.37, 2.5])
+def test_the_uniform_tube_builds_the_layer_a_checked_one_is(growth):
+    """Tube.uniform builds its layer without Layer's checks (its numbers are checked as the
+    paper's): the same layer, equal and hashed alike, at every value a march sets."""
+    tube = Tube.uniform(outer_radius=1.4, voltage=0.4).at("growth", growth)
+    checked = Layer(1.4, growth=growth)
+    assert tube.layers[0] == checked and hash(tube.layers[0]) == hash(checked)
+    assert tube == Tube((checked,), voltage=0.4) and tube.is_uniform
+    with pytest.raises(ParameterError, match="growth factor g"):
+        tube.at("growth", 200.0)

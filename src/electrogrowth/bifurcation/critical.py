@@ -45,7 +45,7 @@ from ..model.layers import Tube
 from ..outcomes import Kind, Outcome, Status
 from ..summary import critical_html
 from .along import SignedMode, TubeAt
-from .march import control_path, first_bifurcations
+from .march import ONE_MODE_STEPS, control_path, first_bifurcations
 from .problem import Problem, as_problem
 from .verdict import Verdict, verdict_of
 
@@ -220,7 +220,9 @@ def _solve(params, m, n, solve_for, fam, side, method, rtol, bracket) -> Critica
     else:
         loose = targets_for(method, acc.march_signs)
         try:
-            res = first_bifurcations(params, solve_for, side, mode, loose, brent_targets=fine)
+            res = first_bifurcations(
+                params, solve_for, side, mode, loose, brent_targets=fine, steps=ONE_MODE_STEPS
+            )
         except NoBifurcationFound as exc:
             exc.remedy = no_bifurcation_remedy(solve_for, mode=(m, n))
             if fam is not Family.TORSIONAL:

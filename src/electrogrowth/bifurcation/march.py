@@ -8,13 +8,16 @@ target keeps that sign until the mode's first bifurcation.
 The control parameter x moves from its start in steps that grow geometrically (0.4 % of
 the scale, doubling up to 5 %) but never beyond 0.7 of the distance at which the linear
 extrapolation of any mode's target reaches zero (a mode can be unstable only in a narrow
-window, which a long step would jump over), and shrink when the inner stretch lambda_i
-changes by more than 5 % in one step: near the voltage threshold
-lambda_i runs away and modes can lose and regain stability within a tiny interval. When
+window, which a long step would jump over; once that zero's prediction has settled below the
+finest step, one step goes just past it: docs/derivation.md section 7), and shrink when the
+inner stretch lambda_i changes by more than 5 % in one step: near the voltage threshold
+lambda_i runs away and modes can lose and regain stability within a tiny interval (a single
+mode's march, ONE_MODE_STEPS, predicts lambda_i instead and solves no state it drops). When
 the base state is lost between two steps the threshold is located exactly and approached
 with shrinking steps. Modes that change sign in a step are narrowed by a shared bisection
 and finished with Brent's method; a mode whose target dips towards zero between steps
-without crossing is examined by a bounded minimisation. The stepping, the prediction and
+without crossing is examined by a bounded minimisation; a single crossing is finished near
+its loose root. The stepping, the prediction and
 the location are the continuation engine's (continuation/: MODE_STEPS, EventWatch,
 first_roots); the march says what a state, a mode and a lost state are.
 """
@@ -32,7 +35,7 @@ from ..basestate.tube import solve_base_state
 from ..continuation.events import LATER, brent, crossed, dip_bracket, dipped, first_roots
 from ..continuation.events import threshold_between as _lost_between
 from ..continuation.path import ControlPath, Stepper, StepPolicy
-from ..continuation.predict import EventWatch
+from ..continuation.predict import MAX_WAIT, EventWatch
 from ..errors import BaseStateError, NoBifurcationFound, ParameterError
 from ..incremental.targets import natural_family, row_family
 from ..model.controls import KINDS
@@ -42,6 +45,18 @@ from .along import voltage_threshold as _voltage_threshold
 
 #: the mode march's step control: 0.4 % of the scale doubling up to 5 %, not below 1e-4
 MODE_STEPS = StepPolicy(smallest=1e-4)
+#: the march of a single mode (critical_value): its states cost as much as its one target,
+#: so none is solved for nothing. Steps double up to MAX_WAIT (the mode is sampled at least
+#: that often) but end at most LATE after the mode falls due; lambda_i is predicted from the
+#: last step, a jump is a bend of 5 % away from that prediction, and no step is proposed
+#: over which the prediction moves lambda_i by more than 8 % (a layered state is continued
+#: from its neighbour within 10 %: basestate/warm.py). Not for a scan: near the voltage
+#: threshold, where hundreds of modes cross at once, the longer steps of a runaway lambda_i
+#: widen the brackets that the scan bisects (1.5x its evaluations in a thick tube)
+ONE_MODE_STEPS = StepPolicy(smallest=1e-4, largest=MAX_WAIT, predict_monitor=True, max_change=0.08)
+#: a mode is sampled at most this far (times the scale) after it falls due: the largest
+#: step of MODE_STEPS, with which the march samples every mode due at its next step
+LATE = 0.05
 
 #: targets(state, modes (k, 2) or (k, 3) array) -> (k,) array of target values
 Targets = Callable[[object, np.ndarray], np.ndarray]
@@ -101,13 +116,15 @@ def first_bifurcations(
     top: int = 1,
     brent_targets: Targets | None = None,
     stable_signs: np.ndarray | None = None,
+    steps: StepPolicy = MODE_STEPS,
 ) -> MarchResult:
     """Critical values of the first ``top`` modes of ``modes`` reached by the march.
 
     ``targets`` is used for signs along the march (it may be loose); ``brent_targets``
     (default ``targets``) for the final roots. ``stable_signs``, the signs of the targets
     on the unloaded tube, are computed unless given (they depend only on the material,
-    Rbar_o, L and the modes, so a curve or sweep can reuse them).
+    Rbar_o, L and the modes, so a curve or sweep can reuse them). ``steps``: the step
+    control (ONE_MODE_STEPS for a single mode).
     """
     at = TubeAt(params, solve_for)
     if stable_signs is None:
@@ -132,12 +149,13 @@ def first_bifurcations(
     signed_fine = Signed(at, brent_targets or targets, modes, sref)
 
     watch = EventWatch(x0, g0, sense, path.scale)
-    step = Stepper(path, MODE_STEPS, state.lambda_i)
+    step = Stepper(path, steps, state.lambda_i)
     found, threshold = [], None
     while watch.alive.any():
         done = step.at_end() or len(found) >= top
         if not done:
-            x = step.propose()
+            due = watch.next_due(step.x)
+            x = step.propose(None if due is None else due + sense * LATE * path.scale)
             try:
                 state = at.state(x)
             except BaseStateError:
@@ -157,7 +175,8 @@ def first_bifurcations(
         if idx.size:
             g = sref[idx] * targets(state, modes[idx])
             found += _advance(watch, idx, x, g, signed, signed_fine, top)
-        step.accept(x, state.lambda_i, MODE_STEPS.limit(watch.distance(), path.scale))
+        reach = watch.reach(steps.safety, steps.smallest * path.scale)
+        step.accept(x, state.lambda_i, reach / path.scale)
     found.sort(key=lambda mv: sense * mv.value)
     if not found and threshold is None:
         thr = _voltage_threshold(params) if solve_for == "voltage" else math.inf
@@ -178,7 +197,16 @@ def _advance(watch, idx, x, g, signed: Signed, signed_fine: Signed, need=None) -
     js = np.nonzero(hit)[0]
     if js.size:  # bisected together from where each mode was last seen
         cand = idx[js]
-        roots = first_roots(signed, signed_fine.one, cand, watch.xa[cand], x, watch.x0, need)
+        roots = first_roots(
+            signed,
+            signed_fine.one,
+            cand,
+            watch.xa[cand],
+            x,
+            watch.x0,
+            need,
+            values=(watch.g[0, cand], g[js]),
+        )
         for j, root in zip(js, roots):
             if root is None:  # the loose sign was wrong: the mode is not past a root yet
                 hit[j] = False

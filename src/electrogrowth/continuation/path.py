@@ -10,7 +10,9 @@ of the path's scale and at most double (``growth``) up to ``largest``, never bey
 ``safety`` of the distance at which the march's predictor (continuation.predict) expects
 the next event, and never below ``smallest`` (1e-4 for the mode march, 1e-6 for the
 short-wave march). A step is halved when the monitored unknown (lambda_i, the inner
-stretch) changes by more than ``max_jump``: near the voltage threshold lambda_i runs away
+stretch) changes by more than ``max_jump`` (with ``predict_monitor``: bends that far away from
+its linear prediction, and a step is proposed only as far as the prediction moves it by
+``max_change``): near the voltage threshold lambda_i runs away
 and modes lose and regain stability within a tiny interval. When the state is lost between
 two steps the threshold is located (continuation.events.threshold_between) and approached
 with shrinking steps; a wall thinned to a film (lambda_i grown ``film``-fold) is at it.
@@ -83,6 +85,14 @@ class StepPolicy:
     film: float = 50.0  # lambda_i grown this much: the wall is a film, at its threshold
     #: the state solver failed (not lost): retry shorter until the step is this small
     unresolved_floor: float = 1e-5
+    #: predict the monitor linearly from the last accepted step: a jump is then a change
+    #: ``max_jump`` away from that prediction (a runaway bends the monitor; a steady change
+    #: does not), and no step is proposed over which the prediction changes the monitor by
+    #: more than ``max_change`` (relative). Without it a jump is any change beyond
+    #: ``max_jump``: a monitor growing steadily with the control limits every step, and a
+    #: step doubles until it is dropped (its state solved for nothing), then halves.
+    predict_monitor: bool = False
+    max_change: float = math.inf
 
     def __post_init__(self):
         if not 0 < self.smallest <= self.first <= self.largest:
@@ -109,15 +119,28 @@ class Stepper:
         self.x, self.end = path.start, path.end
         self.step = policy.first
         self.monitor0 = self.monitor = monitor0
+        self.rate = 0.0  # d monitor / dx over the last accepted step (0: none yet)
+        self.taken = self.step  # the step of the last proposal (a cap may shorten it)
+        self.proposed = self.x  # the last proposal
 
     def at_end(self) -> bool:
         """Has the march reached the end of its path?"""
         return (self.end - self.x) * self.sense <= 0
 
-    def propose(self) -> float:
-        """The next control value: one step on, not beyond the end."""
-        sense = self.sense
-        return min(self.x + sense * self.step * self.scale, self.end, key=lambda v: sense * v)
+    def propose(self, until: float | None = None) -> float:
+        """The next control value: one step on, not beyond the end, nor beyond ``until``
+        (where the caller next needs a state; a step still covers ``smallest``), nor where
+        the monitor is predicted to jump (``jump_foresight``)."""
+        sense, p = self.sense, self.policy
+        step = self.step
+        if until is not None:
+            step = min(step, max(sense * (until - self.x) / self.scale, p.smallest))
+        if p.predict_monitor and self.rate != 0.0:
+            room = p.max_change * abs(self.monitor / self.rate) / self.scale
+            step = min(step, max(room, p.jump_floor))
+        self.taken = step
+        self.proposed = min(self.x + sense * step * self.scale, self.end, key=lambda v: sense * v)
+        return self.proposed
 
     def lost(self, threshold: float) -> bool:
         """The state was lost within the step, at ``threshold``: the path ends just before
@@ -135,11 +158,15 @@ class Stepper:
         return True
 
     def jumped(self, monitor: float) -> bool:
-        """Did the monitored unknown change by more than ``max_jump``? Then the step is
-        shortened and the proposal should be dropped (True)."""
+        """Did the monitored unknown at the proposal jump (change by more than ``max_jump``,
+        from its linear prediction with ``predict_monitor``)? Then the step is shortened and
+        the proposal should be dropped (True)."""
         p = self.policy
-        if abs(monitor / self.monitor - 1) > p.max_jump and self.step > p.jump_floor:
-            self.step /= p.jump_shrink
+        expected = self.monitor
+        if p.predict_monitor:
+            expected += self.rate * (self.proposed - self.x)
+        if abs(monitor / expected - 1) > p.max_jump and self.step > p.jump_floor:
+            self.step = min(self.step, self.taken) / p.jump_shrink
             return True
         return False
 
@@ -151,6 +178,8 @@ class Stepper:
         """Move to x; with a predictor's ``limit``, choose the next step."""
         if limit is not None:
             self.step = self.policy.next(self.step, limit)
+        if x != self.x:
+            self.rate = (monitor - self.monitor) / (x - self.x)
         self.x, self.monitor = x, monitor
 
 

@@ -16,6 +16,12 @@ import numpy as np
 
 #: an event function is sampled at least every MAX_WAIT of the path's scale
 MAX_WAIT = 0.25
+#: a zero is trusted where its prediction moved by at most TRUST of the distance to it, and
+#: of the finest step, between the last two samples; a step may then go OVERSHOOT of that
+#: distance (or twice the move, if more; never more than the finest step) beyond it, to
+#: bracket the zero instead of creeping up on it
+TRUST = 0.25
+OVERSHOOT = 0.1
 
 
 class EventWatch:
@@ -37,6 +43,7 @@ class EventWatch:
         self.x[0], self.g[0] = x0, g0
         self.alive = np.ones(n, bool)
         self.due = np.full(n, x0)
+        self.moved = np.full(n, np.inf)  # how far the predicted zero moved at the last sample
         self.x0 = x0
         self._distance = None  # root_distance() of the current samples, once computed
 
@@ -74,11 +81,41 @@ class EventWatch:
         return self.alive & ((self.sense * (x - self.due) >= 0) | (reach >= self.root_distance()))
 
     def record(self, idx, x, g):
+        before = self.x[0, idx] + self.sense * self.root_distance()[idx]  # the zero predicted
         self._distance = None  # new samples, new extrapolation
         self.x[:, idx] = np.vstack([np.full(idx.size, x), self.x[0, idx], self.x[1, idx]])
         self.g[:, idx] = np.vstack([g, self.g[0, idx], self.g[1, idx]])
-        wait = np.minimum(0.5 * self.root_distance()[idx], MAX_WAIT * self.scale)
+        dist = self.root_distance()[idx]
+        with np.errstate(invalid="ignore"):
+            self.moved[idx] = np.abs(x + self.sense * dist - before)  # inf - inf: NaN
+        wait = np.minimum(0.5 * dist, MAX_WAIT * self.scale)
         self.due[idx] = x + self.sense * wait
+
+    def reach(self, safety: float, finest: float) -> float:
+        """How far the next step may go: ``safety`` of the distance to the nearest predicted
+        zero, or just beyond a trusted zero (TRUST, OVERSHOOT), the least over the live
+        functions (inf if none). ``finest`` is the march's smallest step (absolute): a
+        function creeping up on its zero by ``safety`` ends with steps of that size, and a
+        window in which it dips below zero and returns is seen if it is wider. So is it
+        here: the zero is trusted only once its prediction has settled to TRUST of
+        ``finest``, and the step ends at most ``finest`` beyond it."""
+        live = self.alive
+        dist, moved = self.root_distance()[live], self.moved[live]
+        if not dist.size:
+            return np.inf
+        with np.errstate(invalid="ignore"):
+            trusted = moved <= TRUST * np.minimum(dist, finest)
+        past = np.minimum(np.maximum(2.0 * moved, OVERSHOOT * dist), finest)
+        return float(np.where(trusted, dist + past, safety * dist).min())
+
+    def next_due(self, x) -> float | None:
+        """The nearest point beyond x where a live function falls due (None if none is
+        ahead): a step that ends before it samples nothing (:meth:`needs`)."""
+        ahead = self.alive & (self.sense * (self.due - x) > 0)
+        if not ahead.any():
+            return None
+        due = self.due[ahead]
+        return float(due.min() if self.sense > 0 else due.max())
 
     def distance(self) -> float:
         """The smallest extrapolated distance to a zero of a live function (inf if none)."""

@@ -176,9 +176,19 @@ class Tube:
         material = neo_hookean() if material is None else material
         if not isinstance(material, Material):
             raise ParameterError(f"material = {material!r} is not a Material")
-        layer = Layer(float(outer_radius), material, growth=float(growth))
-        # every number is checked above and the layer by itself: the rest of Tube's checks
-        # hold by construction, so a march setting g at every step pays for them once
+        # every number is checked above, the layer's too (1 < Rbar_o, g in the supported box,
+        # unit modulus and permittivity): the rest of Layer's and Tube's checks hold by
+        # construction, so a march setting g at every step pays for them once
+        layer = object.__new__(Layer)
+        g = float(growth)
+        for name, value in (
+            ("outer_radius", float(outer_radius)),
+            ("material", material),
+            ("shear_modulus", 1.0),
+            ("permittivity", 1.0),
+            ("growth", (g, g, g)),
+        ):
+            object.__setattr__(layer, name, value)
         tube = object.__new__(cls)
         fields = dict(_UNLOADED, layers=(layer,), length=float(length), stretch=float(stretch))
         fields["voltage"] = float(voltage)
