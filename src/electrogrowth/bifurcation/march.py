@@ -35,7 +35,7 @@ from ..basestate.tube import solve_base_state
 from ..continuation.events import LATER, brent, crossed, dip_bracket, dipped, first_roots
 from ..continuation.events import threshold_between as _lost_between
 from ..continuation.path import ControlPath, Stepper, StepPolicy
-from ..continuation.predict import MAX_WAIT, EventWatch
+from ..continuation.predict import EventWatch
 from ..errors import BaseStateError, NoBifurcationFound, ParameterError
 from ..incremental.targets import natural_family, row_family
 from ..model.controls import KINDS
@@ -45,15 +45,15 @@ from .along import voltage_threshold as _voltage_threshold
 
 #: the mode march's step control: 0.4 % of the scale doubling up to 5 %, not below 1e-4
 MODE_STEPS = StepPolicy(smallest=1e-4)
-#: the march of a single mode (critical_value): its states cost as much as its one target,
-#: so none is solved for nothing. Steps double up to MAX_WAIT (the mode is sampled at least
-#: that often) but end at most LATE after the mode falls due; lambda_i is predicted from the
-#: last step, a jump is a bend of 5 % away from that prediction, and no step is proposed
-#: over which the prediction moves lambda_i by more than 8 % (a layered state is continued
-#: from its neighbour within 10 %: basestate/warm.py). Not for a scan: near the voltage
-#: threshold, where hundreds of modes cross at once, the longer steps of a runaway lambda_i
-#: widen the brackets that the scan bisects (1.5x its evaluations in a thick tube)
-ONE_MODE_STEPS = StepPolicy(smallest=1e-4, largest=MAX_WAIT, predict_monitor=True, max_change=0.08)
+#: the march of a single mode (critical_value): lambda_i is predicted from the last step, a
+#: jump is a bend of 5 % away from that prediction, and no step is proposed over which the
+#: prediction moves lambda_i by more than 8 % (a layered state is continued from its
+#: neighbour within 10 %: basestate/warm.py), so no state is solved for nothing. Steps stay
+#: at most 5 % of the scale, as in a scan: a mode's target can dip below zero over a short
+#: window that its prediction does not see coming (a three-layer tube's (0, 1) is unstable
+#: for 6 % of its growth only), and longer steps jumped it (tests/bifurcation/
+#: test_crease_interface.py's sandwich)
+ONE_MODE_STEPS = StepPolicy(smallest=1e-4, predict_monitor=True, max_change=0.08)
 #: a mode is sampled at most this far (times the scale) after it falls due: the largest
 #: step of MODE_STEPS, with which the march samples every mode due at its next step
 LATE = 0.05
