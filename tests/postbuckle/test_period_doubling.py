@@ -63,3 +63,24 @@ def test_no_period_doubling_of_the_bilayer_up_to_a_tenth():
     assert res.control[-1] == pytest.approx(1.79358, abs=1e-5)
     assert np.all(res.eigenvalue[1:] > 0.3) and np.all(res.subharmonic < 1e-9)
     assert res.secondary == ()
+
+
+def test_whole_ring_and_tube_from_a_longer_window():
+    """The sector 2 pi / 12 is reflected and turned 6 times (not 12): the undeformed ring
+    has the cells of pi / 12's, and its points fill the whole circle; the meridian's window
+    2 L / 4 is reflected twice along the tube, to its whole length."""
+    from electrogrowth.postbuckle.meridian import Meridian
+    from electrogrowth.postbuckle.section import MeshSize, Section
+    from electrogrowth.postbuckle.shape import face_curve, meridian_tube, ring
+
+    one = Section(BILAYER, M, MeshSize((2, 2), 3))
+    two = Section(BILAYER, M, MeshSize((2, 2), 6), periods=2)
+    cells = [ring(s, np.zeros(s.basis.N))[1].shape[0] for s in (one, two)]
+    assert cells[0] == cells[1] == 2 * M * 4 * 3
+    curve = face_curve(two, np.zeros(two.basis.N), "inner")
+    angles = np.unwrap(np.arctan2(curve[1], curve[0]))
+    assert abs(angles[-1] - angles[0]) == pytest.approx(2 * np.pi)
+    tube = Tube((Layer(1.1, shear_modulus=10.0), Layer(2.0)), stretch=1.0, length=2.0)
+    window = Meridian(tube, 4, MeshSize((2, 2), 4), periods=2)
+    pts, cells, _ = meridian_tube(window, np.zeros(window.basis.N))
+    assert pts[1].max() == pytest.approx(2.0) and cells.shape[0] == 2 * 2 * 4 * 4
