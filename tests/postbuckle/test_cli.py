@@ -67,8 +67,15 @@ RINGS += ["--layer", "1", "--component", "z"]
 
 @pytest.mark.parametrize(
     "mode, extra",
-    [(["0", "0"], []), (["3", "2"], []), (["1"], []), (["0", "5"], ["--hoop", "3"])],
-    ids=["breathing", "wrinkle", "m-1", "hoop-for-meridian"],
+    [
+        (["0", "0"], []),
+        (["3", "2"], []),
+        (["1"], []),
+        (["0", "5"], ["--hoop", "3"]),
+        (["0", "5"], ["--periods", "2"]),
+        (["12"], ["--periods", "0"]),
+    ],
+    ids=["breathing", "wrinkle", "m-1", "hoop-for-meridian", "periods-not-divisor", "periods-0"],
 )
 def test_a_mode_no_model_covers_is_one_line(capsys, monkeypatch, mode, extra):
     pytest.importorskip("skfem")

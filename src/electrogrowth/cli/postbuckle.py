@@ -55,6 +55,15 @@ def configure_postbuckle(parser: argparse.ArgumentParser) -> None:
         help="a load imperfection in the shape of the critical mode, units mu (default 0: the"
         " perfect bifurcated branch)",
     )
+    mode.add_argument(
+        "--periods",
+        type=bounded_int(1, 100),
+        default=1,
+        metavar="K",
+        help="compute on K half wavelengths of the mode (the sector K pi/m; the window K L/n),"
+        " K a divisor of m (of n): K = 2 holds the subharmonic m/2, so period doubling can"
+        " appear (default 1: the mode's own family alone)",
+    )
     num = parser.add_argument_group("mesh")
     num.add_argument(
         "--density",
@@ -67,15 +76,15 @@ def configure_postbuckle(parser: argparse.ArgumentParser) -> None:
         "--hoop",
         type=bounded_int(1, 1000),
         metavar="N",
-        help="prismatic modes: elements along the sector pi/m (default from --density, at"
-        " least 4)",
+        help="prismatic modes: elements along each pi/m of the sector (default from"
+        " --density, at least 4)",
     )
     num.add_argument(
         "--axial",
         type=bounded_int(1, 1000),
         metavar="N",
-        help="axisymmetric modes: elements along the window L/n, half an axial wavelength"
-        " (default from --density, at least 4)",
+        help="axisymmetric modes: elements along each L/n of the window, half an axial"
+        " wavelength (default from --density, at least 4)",
     )
     parser.add_argument("--json", action="store_true", help="print the result as JSON")
     parser.add_argument(
@@ -115,6 +124,8 @@ def run_postbuckle(args) -> int:
             hoop=args.hoop,
             axial=args.axial,
             imperfection=args.imperfection,
+            periods=args.periods,
+            side=args.side,
             progress=say,
         )
     except Interrupted as stop:  # keep the finished branch points
@@ -140,9 +151,18 @@ def run_postbuckle(args) -> int:
             f" mesh {result.mesh.elements} elements, {result.unknowns} unknowns"
         )
         print(f"initial curvature d({control})/d(a^2) = {result.curvature:.6g}")
-        print("amplitude  control  energy  lowest_eigenvalue")
-        for a, c, e, v in zip(result.amplitude, result.control, result.energy, result.eigenvalue):
-            print(f"{a:.6g}  {c:.10g}  {e:.10g}  {v:.4g}")
+        print("amplitude  control  energy  lowest_eigenvalue  lowest_mode")
+        rows = zip(
+            result.amplitude, result.control, result.energy, result.eigenvalue, result.lowest_mode
+        )
+        for a, c, e, v, kind in rows:
+            print(f"{a:.6g}  {c:.10g}  {e:.10g}  {v:.4g}  {kind}")
+        for s in result.secondary:
+            how = "located" if s.located else "interpolated"
+            print(
+                f"secondary ({s.kind}): the lowest eigenvalue changes sign at amplitude"
+                f" {s.amplitude:.6g}, {control} = {s.control:.10g} ({how})"
+            )
     return 0
 
 
@@ -187,9 +207,13 @@ def _write(result, out: Path) -> None:
     out.mkdir(parents=True, exist_ok=True)
     with open(out / "branch.csv", "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["amplitude", result.solve_for, "energy", "lowest_eigenvalue"])
-        for row in zip(result.amplitude, result.control, result.energy, result.eigenvalue):
-            w.writerow([repr(float(v)) for v in row])
+        w.writerow(
+            ["amplitude", result.solve_for, "energy", "lowest_eigenvalue", "lowest_mode"]
+            + ["subharmonic_fraction"]
+        )
+        numbers = zip(result.amplitude, result.control, result.energy, result.eigenvalue)
+        for row, kind, sub in zip(numbers, result.lowest_mode, result.subharmonic):
+            w.writerow([repr(float(v)) for v in row] + [kind or "", repr(float(sub))])
     plot_branch(result).savefig(out / "branch.png", dpi=150)
     plot_folding(result).savefig(out / "folding.png", dpi=150)
     try:

@@ -15,112 +15,17 @@ from ..bifurcation.critical import critical_value
 from ..errors import NoBifurcationFound, ParameterError
 from ..interrupts import Interrupted
 from ..model.layers import Tube
-from .branch import AmplitudeBranch, BranchPoint, amplitude_vector
+from .branch import AmplitudeBranch, BranchPoint, amplitude_vector, with_stability
 from .meridian import Meridian, meridian_size, window
 from .newton import newton
-from .onset import fe_onset, lowest_eigenvalue, start_value
-from .section import MeshSize, Section, mesh_size
+from .onset import fe_onset, start_value
+from .result import PostbuckleResult
+from .section import Section, mesh_size
+from .stability import secondaries
+from .wall import check_periods
 
 #: the amplitudes of the branch's curvature estimate, units R_i (Richardson on a and 2a)
 CURVATURE_AMPLITUDE = 1e-3
-
-
-@dataclasses.dataclass(frozen=True)
-class PostbuckleResult:
-    """The post-buckled branch of mode (m, 0) (cross-section) or (0, n) (meridian).
-
-    ``onset_linear`` the package's critical value, ``onset_fe`` the sign change of the FE
-    tangent's lowest eigenvalue on the unperturbed path; ``control``, ``amplitude``,
-    ``energy`` the branch (amplitude a: the cos(m Theta) radial displacement of ``face``,
-    the face where the critical mode is larger, units R_i; for the meridian the cos(k z)
-    radial displacement; energy: the whole tube's per unit reference length (the ring's;
-    the meridian's averaged over a wavelength), units mu R_i^2), ``curvature``
-    d(control) / d(a^2) at onset on the perfect branch; ``imperfection`` the load
-    imperfection's size (0: the perfect bifurcated branch); ``eigenvalue`` the lowest
-    eigenvalue of the tangent at fixed control at each point (< 0: unstable; NaN at the
-    onset itself); ``ended`` why the branch stopped short of the amplitude asked ("" if it
-    did not); ``states`` the unknowns of each point, ``section`` the FE model (for shapes
-    and VTK)."""
-
-    tube: Tube
-    solve_for: str
-    m: int
-    onset_linear: float
-    onset_fe: float
-    mesh: MeshSize
-    unknowns: int
-    control: np.ndarray
-    amplitude: np.ndarray
-    energy: np.ndarray
-    curvature: float
-    imperfection: float
-    eigenvalue: np.ndarray
-    states: tuple = dataclasses.field(repr=False, compare=False)
-    section: object = dataclasses.field(repr=False, compare=False)
-    ended: str = ""
-    face: str = "inner"
-    n: int = 0
-
-    @property
-    def mode(self) -> tuple[int, int]:
-        return (self.m, self.n)
-
-    def _mesh_record(self) -> dict:
-        along = (
-            {"hoop_elements": self.mesh.hoop, "sector": f"pi/{self.m}"}
-            if self.n == 0
-            else {"axial_elements": self.mesh.hoop, "window": f"L/{self.n}"}
-        )
-        return {
-            "radial_elements": list(self.mesh.radial),
-            **along,
-            "elements": self.mesh.elements,
-            "unknowns": self.unknowns,
-        }
-
-    def as_dict(self) -> dict:
-        """The JSON record."""
-        return {
-            "solve_for": self.solve_for,
-            "m": self.m,
-            "n": self.n,
-            "onset_linear": self.onset_linear,
-            "onset_fe": self.onset_fe,
-            "onset_relative_difference": (self.onset_fe - self.onset_linear)
-            / abs(self.onset_linear),
-            "curvature": self.curvature,
-            "amplitude_face": self.face,
-            "imperfection": self.imperfection,
-            "mesh": self._mesh_record(),
-            "branch": {
-                "control": self.control.tolist(),
-                "amplitude": self.amplitude.tolist(),
-                "energy": self.energy.tolist(),
-                "lowest_eigenvalue": [None if np.isnan(v) else v for v in self.eigenvalue],
-            },
-            "ended": self.ended or None,
-            "tube": self.tube.record(),
-        }
-
-    def to_xarray(self):
-        """The branch as an ``xarray.Dataset`` on dimension ``point``."""
-        import xarray as xr
-
-        return xr.Dataset(
-            {
-                "control": ("point", self.control, {"long_name": self.solve_for}),
-                "energy": ("point", self.energy, {"units": "mu R_i^2"}),
-                "lowest_eigenvalue": ("point", self.eigenvalue, {"units": "mu / R_i^2"}),
-            },
-            coords={"amplitude": ("point", self.amplitude, {"units": "R_i"})},
-            attrs={
-                "m": self.m,
-                "n": self.n,
-                "onset_linear": self.onset_linear,
-                "onset_fe": self.onset_fe,
-                "curvature": self.curvature,
-            },
-        )
 
 
 def postbuckle(
@@ -134,6 +39,8 @@ def postbuckle(
     hoop: int | None = None,
     axial: int | None = None,
     imperfection: float = 0.0,
+    periods: int = 1,
+    side: str | None = None,
     progress: Callable[[str], None] | None = None,
 ) -> PostbuckleResult:
     """The post-buckled branch of ``mode`` of ``tube`` along ``solve_for``: a prismatic mode
@@ -148,16 +55,29 @@ def postbuckle(
     times the FE critical mode, with a load imperfection ``imperfection`` mu M z in the
     shape of that mode (0: the perfect branch).
 
+    Each point's stability is the lowest eigenvalue of the tangent at fixed control and the
+    pattern of its eigenvector; where the eigenvalue changes sign on the branch, Brent's
+    method on the amplitude locates a ``secondary`` point. A model of one half wavelength
+    holds the mode's own family alone; ``periods`` = k computes on k half wavelengths
+    (the sector k pi / m, the window k L / n), which also holds the patterns of k
+    wavelengths' period: k = 2 lets period doubling appear.
+
     Parameters
     ----------
     density : float
         Elements per unit reference length across the wall (at least 2 per layer).
     hoop : int, optional
-        Prismatic modes: elements along the sector pi / m (default from ``density``, at
-        least 4).
+        Prismatic modes: elements along each pi / m of the sector (default from
+        ``density``, at least 4).
     axial : int, optional
-        Axisymmetric modes: elements along the window L / n, half an axial wavelength
-        (default from ``density``, at least 4).
+        Axisymmetric modes: elements along each L / n of the window, half an axial
+        wavelength (default from ``density``, at least 4).
+    periods : int
+        Half wavelengths of the mode in the sector or window, a divisor of m (of n).
+    side : {"compression", "extension"}, optional
+        The pressure control's direction (:func:`~electrogrowth.bifurcation.critical
+        .critical_value`): the default inflates, ``"compression"`` lowers the inner
+        pressure below the outer (collapse under an external pressure).
 
     Returns
     -------
@@ -184,10 +104,10 @@ def postbuckle(
     control = str(tube.check_control(solve_for))
     start_value(tube, control)  # a control the model follows
     # refuses what the model does not cover, before solving
-    section, size = _model(tube, m, n, density, hoop, axial)
-    say(f"linear onset of mode ({m}, {n}) and of its multiples")
-    linear = critical_value(tube, m, n, control).value
-    _check_first_in_window(tube, m, n, control, linear)
+    section, size = _model(tube, m, n, density, hoop, axial, periods)
+    say(f"linear onset of mode ({m}, {n}) and of the modes its {_where(m, n, periods)} holds")
+    linear = critical_value(tube, m, n, control, side=side).value
+    _check_first_in_window(tube, m, n, control, linear, periods, side)
     say(f"finite-element onset on {size.elements} elements ({section.free.size} unknowns)")
     onset = fe_onset(section, tube, control, linear)
     say("initial curvature of the branch")
@@ -207,8 +127,7 @@ def postbuckle(
         section.set_tube(tube.at(control, c0))
         x0, _ = newton(section, onset.x)
         x0 = _with_imperfection(section, x0, force)
-        first = BranchPoint(c0, float(a @ x0), section.energy(x0), x0)
-        first.eigenvalue = lowest_eigenvalue(section, x0)
+        first = with_stability(section, BranchPoint(c0, float(a @ x0), section.energy(x0), x0))
         head, follow_from = [first], first
         amps = amps[amps > first.amplitude]
     else:
@@ -225,7 +144,10 @@ def postbuckle(
         )
     except Interrupted as stop:  # the finished points, as a result
         raise Interrupted(stop.signum, str(stop), partial=record(head + stop.partial)) from None
-    return dataclasses.replace(record(pts), ended=branch.ended)
+    # the onset itself (eigenvalue zero to its tolerance, either sign) is no sign change
+    say("the lowest eigenvalue's sign changes on the branch")
+    found = secondaries(branch, pts if imperfection > 0 else pts[1:])
+    return dataclasses.replace(record(pts), ended=branch.ended, secondary=found)
 
 
 def initial_curvature(section, tube: Tube, control: str, onset):
@@ -239,7 +161,7 @@ def initial_curvature(section, tube: Tube, control: str, onset):
     direction = onset.mode / (faces[face] @ onset.mode)
     perfect = AmplitudeBranch(section, tube, control, face=face)
     start = BranchPoint(onset.value, 0.0, section.energy(onset.x), onset.x)
-    start.eigenvalue = lowest_eigenvalue(section, onset.x)  # zero to the onset's tolerance
+    with_stability(section, start)  # eigenvalue zero to the onset's tolerance
     near = perfect.follow(
         start, [CURVATURE_AMPLITUDE, 2 * CURVATURE_AMPLITUDE], direction=direction
     )
@@ -259,38 +181,51 @@ def _mode(mode) -> tuple[int, int]:
     )
 
 
-def _model(tube, m, n, density, hoop, axial):
-    """The finite-element model of mode (m, n) and its mesh size."""
+def _model(tube, m, n, density, hoop, axial, periods):
+    """The finite-element model of mode (m, n) on ``periods`` half wavelengths and its mesh
+    size."""
+    if n == 0:
+        check_periods(periods, m, "m", largest=m // 2)
+    else:
+        check_periods(periods, n, "n")
     if n == 0:
         if axial is not None:
             raise ParameterError("axial counts elements along the meridian: give hoop for (m, 0)")
-        size = mesh_size(tube, m, density, hoop=hoop)
-        return Section(tube, m, size), size
+        size = mesh_size(tube, m, density, hoop=hoop, periods=periods)
+        return Section(tube, m, size, periods=periods), size
     if hoop is not None:
         raise ParameterError("hoop counts elements along the sector: give axial for (0, n)")
-    size = meridian_size(tube, n, density, axial=axial)
-    return Meridian(tube, n, size), size
+    size = meridian_size(tube, n, density, axial=axial, periods=periods)
+    return Meridian(tube, n, size, periods=periods), size
 
 
-#: the multiples j m, or j n (j = 2 .. MULTIPLES), checked to come after the mode
+def _where(m, n, periods) -> str:
+    k = "" if periods == 1 else str(periods)
+    return f"sector {k}pi/{m}" if n == 0 else f"window {k}L/{n}"
+
+
+#: the modes j m / k, or j n / k (j = 1 .. k MULTIPLES but k), checked to come after the mode
 MULTIPLES = 3
 
 
-def _check_first_in_window(tube, m, n, control, linear):
-    """ParameterError if a mode (j m, j n), which the sector pi / m (the window L / n) holds
-    too, comes before (m, n) on the path from the start value: the FE onset and branch
-    would be of that mode."""
+def _check_first_in_window(tube, m, n, control, linear, periods=1, side=None):
+    """ParameterError if a mode (j m / k, j n / k), which the sector k pi / m (the window
+    k L / n) holds too, comes before (m, n) on the path from the start value: the FE onset
+    and branch would be of that mode."""
     start = start_value(tube, control)
-    where = f"the sector pi/{m}" if n == 0 else f"the window L/{n}"
-    for j in range(2, MULTIPLES + 1):
+    where = f"the {_where(m, n, periods)}"
+    for j in range(1, periods * MULTIPLES + 1):
+        if j == periods:
+            continue
+        mj, nj = j * m // periods, j * n // periods
         try:
-            other = critical_value(tube, j * m, j * n, control).value
+            other = critical_value(tube, mj, nj, control, side=side).value
         except NoBifurcationFound:
             continue
         if abs(other - start) < abs(linear - start):
-            ask = j * m if n == 0 else f"0 {j * n}"
+            ask = mj if n == 0 else f"0 {nj}"
             raise ParameterError(
-                f"mode ({j * m}, {j * n}) comes before ({m}, {n}) ({control} = {other:.8g}"
+                f"mode ({mj}, {nj}) comes before ({m}, {n}) ({control} = {other:.8g}"
                 f" against {linear:.8g}); {where} holds both and would follow it: ask for"
                 f" mode {ask}"
             )
@@ -302,9 +237,10 @@ def _with_face(record, face, imperfection, pts):
 
 def _record(tube, control, mode, linear, onset, size, section, curvature, pts):
     m, n = mode
-    # the whole tube per unit reference length: the ring is 2 m sectors; the meridian's
-    # energy is per radian of a window L / n
-    full = 2 * m if n == 0 else 2 * math.pi / window(tube, n)
+    k = section.periods
+    # the whole tube per unit reference length: the ring is 2 m / k sectors; the
+    # meridian's energy is per radian of a window k L / n
+    full = 2 * m / k if n == 0 else 2 * math.pi / (k * window(tube, n))
     return PostbuckleResult(
         tube=tube,
         solve_for=control,
@@ -322,6 +258,9 @@ def _record(tube, control, mode, linear, onset, size, section, curvature, pts):
         imperfection=0.0,
         states=tuple(p.x for p in pts),
         section=section,
+        periods=k,
+        subharmonic=np.array([p.subharmonic for p in pts]),
+        pattern=np.array([p.pattern for p in pts], dtype=int),
     )
 
 

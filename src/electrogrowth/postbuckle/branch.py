@@ -2,7 +2,9 @@
 
 The amplitude a = (u_R(1, 0) - u_R(1, pi / m)) / 2, half the difference of the inner face's
 radial displacement at the two rays (the coefficient of cos(m Theta) up to third-order
-harmonics), is prescribed and the control is an unknown: each point solves
+harmonics; in a sector of k half wavelengths the mean of the k half wavelengths' values,
+the same number on a branch of the mode's own period), is prescribed and the control is
+an unknown: each point solves
 
     residual(x; c) - xi f = 0,   a(x) = a_k
 
@@ -29,6 +31,7 @@ from ..errors import ConvergenceError, ParameterError
 from ..interrupts import Interrupted
 from .newton import MAX_ITERATIONS, RESIDUAL_TOL, fe_error
 from .onset import lowest_eigenvalue
+from .stability import classify
 
 #: relative step of the central difference dR/dc
 DC = 1e-6
@@ -46,15 +49,31 @@ class BranchPoint:
     x: np.ndarray
     #: the lowest eigenvalue of the tangent at fixed control (< 0: unstable), when computed
     eigenvalue: float = float("nan")
+    #: its eigenvector's fraction outside the mode's family, and the period of its pattern
+    #: in wavelengths of the mode (1: the mode's family; 2: period doubling; 0: not computed)
+    subharmonic: float = float("nan")
+    pattern: int = 0
+
+
+def with_stability(section, point: BranchPoint) -> BranchPoint:
+    """``point`` with its lowest eigenvalue and the pattern of its eigenvector."""
+    point.eigenvalue, z = lowest_eigenvalue(section, point.x, vector=True)
+    point.subharmonic, point.pattern = classify(section, z)
+    return point
 
 
 def amplitude_vector(section, face: str = "inner") -> np.ndarray:
     """The functional a(x) = a . x: half the difference of ``face``'s radial displacement at
-    the two rays."""
-    dofs, theta = section.face_dofs(face)
+    the two ends of a half wavelength (Y = j h and (j + 1) h, h = extent / periods), with
+    the sign (-1)^j, averaged over the half wavelengths j of the sector."""
+    dofs, y = section.face_dofs(face)
+    k = section.periods
+    ends = [int(np.argmin(np.abs(y - j * section.extent / k))) for j in range(k + 1)]
     a = np.zeros(section.basis.N)
-    a[dofs[0]] += 0.5
-    a[dofs[-1]] -= 0.5
+    for j in range(k):
+        sign = 0.5 * (-1) ** j / k
+        a[dofs[ends[j]]] += sign
+        a[dofs[ends[j + 1]]] -= sign
     return a
 
 
@@ -142,7 +161,7 @@ class AmplitudeBranch:
                 continue
             point = BranchPoint(c, targets.pop(), self.section.energy(x), x)
             if self.eigenvalues:
-                point.eigenvalue = lowest_eigenvalue(self.section, x)
+                with_stability(self.section, point)
             points.append(point)
 
     def follow(

@@ -29,7 +29,7 @@ from skfem import BilinearForm, Functional, LinearForm, asm
 from ..errors import ParameterError
 from ..model.layers import Tube
 from .energy import cauchy_stress, hoop_stress
-from .wall import MeshSize, Wall, energy_forms, pressure_field, radial_counts
+from .wall import MeshSize, Wall, check_periods, energy_forms, pressure_field, radial_counts
 
 
 def _avec(u, p0, p1, p2, phi, w):
@@ -82,29 +82,33 @@ def window(tube: Tube, n: int) -> float:
     return tube.length / n
 
 
-def meridian_size(tube: Tube, n: int, density: float, *, axial: int | None = None) -> MeshSize:
+def meridian_size(
+    tube: Tube, n: int, density: float, *, axial: int | None = None, periods: int = 1
+) -> MeshSize:
     """A mesh of about ``density`` elements per unit reference length across the wall (at
-    least 2 per layer), and along the window ``axial`` elements (default: as many per unit
-    length, at least 4)."""
+    least 2 per layer), and ``axial`` elements along each L / n of the window (default: as
+    many per unit length, at least 4), ``periods`` times that in all."""
     if axial is None:
         axial = max(4, math.ceil(density * window(tube, n)))
-    return MeshSize(radial_counts(tube, density), int(axial))
+    return MeshSize(radial_counts(tube, density), int(axial) * periods)
 
 
 class Meridian(Wall):
-    """The meridian window of ``tube`` for mode (0, ``n``): mesh, bases, constraints and the
-    energy's residual and tangent at a vector of unknowns ``x`` (the tube's loads as given;
-    :meth:`set_tube` swaps the tube). ``size.hoop`` counts the elements along the window."""
+    """The meridian window k L / n (k = ``periods`` divides n) of ``tube`` for mode
+    (0, ``n``): mesh, bases, constraints and the energy's residual and tangent at a vector
+    of unknowns ``x`` (the tube's loads as given; :meth:`set_tube` swaps the tube).
+    ``size.hoop`` counts the elements along the window."""
 
     kind = "meridian"
     kinematics = staticmethod(_avec)
     forms = energy_forms(_avec)
 
-    def __init__(self, tube: Tube, n: int, size: MeshSize):
+    def __init__(self, tube: Tube, n: int, size: MeshSize, *, periods: int = 1):
         if n < 1:
             raise ParameterError(f"n = {n} is out of range; valid range: n >= 1")
-        self.n = n
-        super().__init__(tube, size, window(tube, n))
+        check_periods(periods, n, "n")
+        self.n, self.periods = n, periods
+        super().__init__(tube, size, periods * window(tube, n))
         self.axial_fixed = self.end_fixed
 
     def set_tube(self, tube: Tube) -> None:

@@ -114,7 +114,7 @@ def fe_onset(
     while lam > 0:
         # the secant's zero, 1 % of the span past it, at most 10 % of the span ahead
         zero = c - lam * (c - c_prev) / (lam - lam_prev) if lam != lam_prev else c + span
-        ahead = np.clip(zero + 0.01 * span - c, 0.002 * span, 0.1 * span)
+        ahead = np.clip(zero + 0.01 * span - c, *sorted((0.002 * span, 0.1 * span)))
         c_prev, lam_prev = c, lam
         c = c + float(ahead)
         if abs(c - start) > 2 * abs(span):

@@ -2,16 +2,19 @@
 coordinates (R, Theta), its kinematics, parameters and follower pressures (the mesh, the
 unknowns and the assembly: wall.py).
 
-The mesh is the rectangle [1, R_N] x [0, pi / m] of (R, Theta). The position is
+The mesh is the rectangle [1, R_N] x [0, k pi / m] of (R, Theta), k = ``periods`` half
+wavelengths of mode m (1 by default). The position is
 x = (R + u_R) e_R(Theta) + u_Theta e_Theta(Theta), so
 
     F = [[1 + u_R,R, (u_R,Theta - u_Theta) / R], [u_Theta,R, 1 + (u_R + u_Theta,Theta) / R]],
 
-F_zz = lambda_z. Symmetry: u_Theta = 0 on the rays Theta = 0 and Theta = pi / m (the sector
-then holds the modes cos(j m Theta), j = 0, 1, 2, ...: other modes, period doubling
-included, are suppressed). Follower pressures through the potential
--P_i lambda_z A_i + P_o lambda_z A_o, A the area the face encloses in the sector,
-A = 1/2 int x cross x_Theta dTheta.
+F_zz = lambda_z. Symmetry: u_Theta = 0 on the rays Theta = 0 and Theta = k pi / m (the
+sector then holds the modes cos(j m Theta / k), j = 0, 1, 2, ...: for k = 1 the mode's
+family cos(j m Theta) alone, period doubling suppressed; for k = 2 also the subharmonics
+cos((2 j + 1) m Theta / 2), period doubling; k must divide m for them to close around the
+ring, and m / k >= 2: the half ring k = m holds the rigid translation cos(Theta)).
+Follower pressures through the potential -P_i lambda_z A_i + P_o lambda_z A_o, A the area
+the face encloses in the sector, A = 1/2 int x cross x_Theta dTheta.
 """
 
 from __future__ import annotations
@@ -25,7 +28,15 @@ from skfem import BilinearForm, Functional, LinearForm, asm
 from ..errors import ParameterError
 from ..model.layers import Tube
 from .energy import cauchy_stress
-from .wall import INTORDER, MeshSize, Wall, energy_forms, pressure_field, radial_counts
+from .wall import (
+    INTORDER,
+    MeshSize,
+    Wall,
+    check_periods,
+    energy_forms,
+    pressure_field,
+    radial_counts,
+)
 
 
 def _avec(u, p0, p1, p2, phi, w):
@@ -86,30 +97,35 @@ def _face_tangent(du, dp0, dp1, dp2, dphi, v, q0, q1, q2, psi, w):
     return w["load"] * 0.5 * sum(h * a[i] * b[j] for i, j, h in _ENCLOSED_HESSIAN)
 
 
-def mesh_size(tube: Tube, m: int, density: float, *, hoop: int | None = None) -> MeshSize:
+def mesh_size(
+    tube: Tube, m: int, density: float, *, hoop: int | None = None, periods: int = 1
+) -> MeshSize:
     """A mesh of about ``density`` elements per unit reference length across the wall (at
-    least 2 per layer), and along the sector ``hoop`` elements (default: as many per unit
-    arc length at R = 1 as across, at least 4)."""
+    least 2 per layer), and ``hoop`` elements along each pi / m of the sector (default: as
+    many per unit arc length at R = 1 as across, at least 4), ``periods`` times that in all:
+    the sector k pi / m is the mesh of pi / m mirrored k - 1 times."""
     if hoop is None:
         hoop = max(4, math.ceil(density * math.pi / m))
-    return MeshSize(radial_counts(tube, density), int(hoop))
+    return MeshSize(radial_counts(tube, density), int(hoop) * periods)
 
 
 class Section(Wall):
-    """The cross-section sector of ``tube`` for mode ``m``: mesh, bases, constraints and the
-    energy's residual and tangent at a vector of unknowns ``x`` (the tube's loads as given;
-    :meth:`set_tube` swaps the tube). The energy is the sector's per unit reference length
-    along the axis."""
+    """The cross-section sector k pi / m (k = ``periods`` divides m) of ``tube`` for mode
+    ``m``: mesh, bases, constraints and the energy's residual and tangent at a vector of
+    unknowns ``x`` (the tube's loads as given; :meth:`set_tube` swaps the tube). The energy
+    is the sector's per unit reference length along the axis."""
 
     kind = "section"
     kinematics = staticmethod(_avec)
     forms = energy_forms(_avec)
 
-    def __init__(self, tube: Tube, m: int, size: MeshSize):
+    def __init__(self, tube: Tube, m: int, size: MeshSize, *, periods: int = 1):
         if m < 1:
             raise ParameterError(f"m = {m} is out of range; valid range: m >= 1")
-        self.m = m
-        self.sector = math.pi / m
+        # k = m would be the half ring, which holds the rigid translation cos(Theta)
+        check_periods(periods, m, "m", largest=m // 2)
+        self.m, self.periods = m, periods
+        self.sector = periods * math.pi / m
         super().__init__(tube, size, self.sector)
         self.hoop_fixed = self.end_fixed
 

@@ -1,7 +1,7 @@
 """The deformed wall: the cross-section's sector moved, and the whole ring by reflecting the
-sector about its first ray and turning the pair by 2 pi / m (the symmetry it was solved
-with); the meridian's window moved, and the tube's whole longitudinal section by reflecting
-it about its end planes."""
+sector k pi / m about its first ray and turning the pair by 2 k pi / m (the symmetry it was
+solved with, k = ``periods``); the meridian's window moved, and the tube's whole
+longitudinal section by reflecting it about its end planes."""
 
 from __future__ import annotations
 
@@ -21,8 +21,8 @@ def deformed_vertices(section, x: np.ndarray) -> np.ndarray:
 
 def ring(section, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The whole ring: (points (2, n), quadrilaterals (n_cells, 4), layer of each cell), the
-    sector reflected and turned 2 m times (vertices on the rays repeated)."""
-    m = section.m
+    sector reflected and turned 2 m / k times (vertices on the rays repeated)."""
+    m = section.m // section.periods
     pts = deformed_vertices(section, x)
     cells = section.mesh.t.T
     mirror = np.array([pts[0], -pts[1]])
@@ -45,7 +45,7 @@ def face_curve(section, x: np.ndarray, face: str) -> np.ndarray:
     verts = np.nonzero(np.isclose(section.mesh.p[0], R))[0]
     verts = verts[np.argsort(section.mesh.p[1, verts])]
     pts = deformed_vertices(section, x)[:, verts]
-    m = section.m
+    m = section.m // section.periods
     parts = []
     for k in range(m):
         a = 2 * math.pi * k / m
@@ -69,14 +69,14 @@ def meridian_vertices(meridian, x: np.ndarray) -> np.ndarray:
 def meridian_tube(meridian, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The tube's longitudinal section over its whole length: (points (2, n) as (x, z),
     quadrilaterals (n_cells, 4), layer of each cell). The window is reflected about its end
-    planes n times along z (the symmetry it was solved with), and the meridian drawn on both
+    planes n / k times along z (the symmetry it was solved with), and the meridian drawn on both
     sides of the axis (x = +-r)."""
     pts = meridian_vertices(meridian, x)
     cells = meridian.mesh.t.T
     height = float(meridian.tube.stretch) * meridian.extent
     n = pts.shape[1]
     all_pts, all_cells, layers = [], [], []
-    for j in range(meridian.n):
+    for j in range(meridian.n // meridian.periods):
         z = pts[1] if j % 2 == 0 else height - pts[1]
         flip = j % 2  # a reflection reverses the cells' orientation
         for side in (1.0, -1.0):

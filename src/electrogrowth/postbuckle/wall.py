@@ -131,6 +131,20 @@ def check_supported(tube: Tube, model: str) -> None:
         )
 
 
+def check_periods(periods, count: int, name: str, largest: int | None = None) -> None:
+    """ParameterError unless ``periods`` (half wavelengths of the mode in the sector or
+    window) divides the mode number ``count`` (the patterns the model then holds repeat a
+    whole number of times around the ring, along the tube) and is at most ``largest``."""
+    top = count if largest is None else max(1, largest)
+    ok = isinstance(periods, int) and not isinstance(periods, bool) and 1 <= periods <= top
+    if not (ok and count % periods == 0):
+        divisors = ", ".join(str(d) for d in range(1, top + 1) if count % d == 0)
+        raise ParameterError(
+            f"periods = {periods!r} is out of range for {name} = {count}; valid: a divisor"
+            f" of {count} ({divisors})"
+        )
+
+
 class Wall:
     """The mesh, bases, constraints and energy of the rectangle [1, R_N] x [0, ``extent``]
     of ``tube``'s wall; a model (subclass) sets ``kind``, :meth:`kinematics` and ``forms``
@@ -140,6 +154,8 @@ class Wall:
 
     kind = ""
     forms: tuple = ()
+    #: half wavelengths of the mode in the sector or window (set by the model)
+    periods = 1
 
     @staticmethod
     def kinematics(u, p0, p1, p2, phi, w) -> tuple:
@@ -308,4 +324,11 @@ class Wall:
         return self.basis.nodal_dofs[0, verts], self.mesh.p[1, verts]
 
 
-__all__ = ["MeshSize", "Wall", "check_supported", "energy_forms", "radial_counts"]
+__all__ = [
+    "MeshSize",
+    "Wall",
+    "check_periods",
+    "check_supported",
+    "energy_forms",
+    "radial_counts",
+]
