@@ -17,6 +17,8 @@ import dataclasses
 
 from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
 from ..model.layers import Tube
+from .koiter_controls import branch as branch_of
+from .koiter_controls import check_control
 from .koiter_film import (
     FilmOnHalfSpace,
     _coefficient,
@@ -52,7 +54,7 @@ class KoiterResult:
 
     Flat film: c = lambda, the compressive stretch; eps = K_c w (w the amplitude of the
     vertical displacement of the free face, K_c the reference wavenumber, both in film
-    thicknesses); ``wavenumber`` K_c. Tube: c the growth control; eps = max_R |u_r| / R_i
+    thicknesses); ``wavenumber`` K_c. Tube: c the control; eps = max_R |u_r| / R_i
     of the mode (R_i = 1, the undeformed inner radius); ``wavenumber`` m of a prismatic
     mode (m, 0), the reference axial wavenumber K = n pi / L of an axisymmetric one (0, n).
     ``branch`` is "supercritical" when the branch exists beyond onset, in the direction
@@ -71,7 +73,9 @@ class KoiterResult:
         return dataclasses.asdict(self)
 
 
-def koiter_coefficient(problem, mode=None, control: str = "stretch") -> KoiterResult:
+def koiter_coefficient(
+    problem, mode=None, control: str = "stretch", *, side: str | None = None
+) -> KoiterResult:
     """The Koiter coefficient of a critical mode (docs/derivation-koiter.md): the control
     on the bifurcated branch is c = c_c + c_2 eps^2 (``KoiterResult`` says which eps),
     from the mode phi, the second-order correction psi (harmonics 0 and 2) of
@@ -93,7 +97,11 @@ def koiter_coefficient(problem, mode=None, control: str = "stretch") -> KoiterRe
         reference length).
     control : str
         The film: "stretch", the compressive stretch lambda. A tube: a growth control
-        ("growth", "growth[K]", "growth[K].theta", ...).
+        ("growth", "growth[K]", "growth[K].theta", ...), "voltage" (prismatic modes) or
+        "stretch" (bifurcation/koiter_controls.py lists what each family covers).
+    side : None or "compression" or "extension"
+        A tube's sided control (the stretch): the side its critical value is sought on and
+        the branch's direction (default the control's own, model/controls.py).
 
     Returns
     -------
@@ -111,7 +119,7 @@ def koiter_coefficient(problem, mode=None, control: str = "stretch") -> KoiterRe
     'supercritical'
     """
     if isinstance(problem, Tube):
-        return _tube_result(problem, mode, control)
+        return _tube_result(problem, mode, control, side)
     if not isinstance(problem, FilmOnHalfSpace):
         raise ParameterError(
             f"the amplitude equation covers a flat film on a half-space (FilmOnHalfSpace) "
@@ -133,24 +141,23 @@ def koiter_coefficient(problem, mode=None, control: str = "stretch") -> KoiterRe
     )
 
 
-def _tube_result(tube: Tube, mode, control: str) -> KoiterResult:
+def _tube_result(tube: Tube, mode, control: str, side: str | None = None) -> KoiterResult:
     """The tube's case of :func:`koiter_coefficient`, with its one-line refusals."""
     family = _tube_family(mode)
-    if not (isinstance(control, str) and control.startswith("growth")):
-        raise ParameterError(f"control = {control!r}: only a growth control is covered so far")
+    check_control(family, control)
     why = _tube_not_covered(tube, family)
     if why:
         raise ParameterError(f"the tube's amplitude equation needs {why}")
     solve = tube_expansion if family == "prismatic" else axisymmetric_expansion
     number = int(mode[0] if family == "prismatic" else mode[1])
     wavenumber = float(number) if family == "prismatic" else axial_wavenumber(tube, number)
-    fine = solve(tube, number, control, nodes=24)
-    coarse = solve(tube, number, control, nodes=18)
+    fine = solve(tube, number, control, nodes=24, side=side)
+    coarse = solve(tube, number, control, nodes=18, side=side)
     return KoiterResult(
         coefficient=fine.coefficient,
         critical_value=fine.control_value,
         wavenumber=wavenumber,
-        branch="supercritical" if fine.coefficient > 0 else "subcritical",
+        branch=branch_of(fine.coefficient, control, side),
         error_estimate=abs(fine.coefficient - coarse.coefficient),
         normalisation="eps = max_R |u_r| / R_i of the mode (R_i = 1)",
     )
@@ -189,7 +196,9 @@ def _tube_not_covered(tube: Tube, family: str) -> str:
     return ""
 
 
-def with_branch(verdict: Verdict, tube: Tube, solve_for: str) -> tuple[Verdict, str | None]:
+def with_branch(
+    verdict: Verdict, tube: Tube, solve_for: str, side: str | None = None
+) -> tuple[Verdict, str | None]:
     """``verdict`` with its slot ``branch``/``koiter``/``koiter_error`` filled from the
     amplitude equation of its wrinkle, and None; or unchanged with the one-line reason it
     is not computed (no wrinkle, or a case the expansion does not cover yet). The meaning
@@ -199,7 +208,7 @@ def with_branch(verdict: Verdict, tube: Tube, solve_for: str) -> tuple[Verdict, 
     if w is None or w.m is None or w.n is None:
         return verdict, "no wrinkle was found, so there is no amplitude equation"
     try:
-        k = koiter_coefficient(tube, (int(w.m), int(w.n)), solve_for)
+        k = koiter_coefficient(tube, (int(w.m), int(w.n)), solve_for, side=side)
     except (ParameterError, NoBifurcationFound, ConvergenceError) as exc:
         return verdict, str(exc)
     words = {

@@ -15,11 +15,12 @@ import math
 import numpy as np
 
 from ..basestate.tube import solve_base_state
-from ..errors import ConvergenceError
+from ..errors import ConvergenceError, NoBifurcationFound
 from ..incremental.dielectric_forms import DielectricForms
 from ..incremental.meridian_forms import MeridianForms
 from ..incremental.polar_forms import PolarForms, rings
 from ..model.layers import Tube
+from ..outcomes import Kind
 from .critical import critical_value
 from .koiter_film import MODE, _nearest_zero
 
@@ -64,20 +65,22 @@ def singular_point(stiffness, start: float, what: str):
     raise ConvergenceError(f"the critical {what} did not converge")
 
 
-def tube_expansion(tube: Tube, m: int, control: str, *, nodes: int = 24) -> TubeExpansion:
+def tube_expansion(
+    tube: Tube, m: int, control: str, *, nodes: int = 24, side: str | None = None
+) -> TubeExpansion:
     """The Koiter coefficient of the prismatic mode (m, 0) of a neo-Hookean tube at fixed
     axial stretch, in a growth control: the forms of incremental/polar_forms.py (no
     quartic term), the correction at harmonics 0 and 2m; under a voltage
     :func:`dielectric_expansion`."""
-    if tube.voltage != 0:
-        return dielectric_expansion(tube, m, control, nodes=nodes)
+    if tube.voltage != 0 or control == "voltage":
+        return dielectric_expansion(tube, m, control, nodes=nodes, side=side)
     first = PolarForms.build(rings(tube, m, nodes), m, MODE)
     second = PolarForms.build(rings(tube, m, nodes), m, SECOND)
 
     def A(c, form=first):
         return form.stiffness(solve_base_state(tube.at(control, c)))
 
-    start = critical_value(tube, m, 0, control, rtol=1e-12).value
+    start = onset_value(tube, (m, 0), control, side)
     c, phi = singular_point(A, start, f"{control} of mode ({m}, 0)")
     phi = phi / first.peak_radial(phi, first.slices[0])[1]  # eps = max |u_r| / R_i
     state = solve_base_state(tube.at(control, c))
@@ -88,13 +91,27 @@ def tube_expansion(tube: Tube, m: int, control: str, *, nodes: int = 24) -> Tube
     return TubeExpansion(float(c), float(c2), float(start), float(phi[first.slices[0]][0]))
 
 
+def onset_value(tube: Tube, mode: tuple[int, int], control: str, side: str | None) -> float:
+    """The package's critical value of ``control`` for ``mode`` (the impedance route, rtol
+    1e-12), where the expansion starts; NoBifurcationFound when the axisymmetric state is
+    lost first (a voltage's threshold)."""
+    point = critical_value(tube, *mode, control, side=side, rtol=1e-12)
+    if point.kind != Kind.BIFURCATION:
+        raise NoBifurcationFound(
+            f"mode {mode}: no bifurcation in {control} ({point.kind} at {point.value:.6g} first)"
+        )
+    return point.value
+
+
 def axial_wavenumber(tube: Tube, n: int) -> float:
     """K = n pi / L in the reference Z: the package's k = n pi / (lambda_z L) times
     lambda_z (incremental/targets.wavenumber)."""
     return n * math.pi / tube.length
 
 
-def axisymmetric_expansion(tube: Tube, n: int, control: str, *, nodes: int = 24) -> TubeExpansion:
+def axisymmetric_expansion(
+    tube: Tube, n: int, control: str, *, nodes: int = 24, side: str | None = None
+) -> TubeExpansion:
     """The Koiter coefficient of the axisymmetric mode (0, n) of a neo-Hookean tube at
     fixed axial stretch, in a growth control: the forms of incremental/meridian_forms.py,
     the correction at harmonics 0 and 2 (of K Z), and the quartic term of the constraint."""
@@ -102,18 +119,20 @@ def axisymmetric_expansion(tube: Tube, n: int, control: str, *, nodes: int = 24)
     cut = rings(tube, max(K, 1.0), nodes)
     first = MeridianForms.build(cut, K, MODE)
     second = MeridianForms.build(cut, K, SECOND)
-    start = critical_value(tube, 0, n, control, rtol=1e-12).value
+    start = onset_value(tube, (0, n), control, side)
     return _expand(tube, control, first, second, start, f"{control} of mode (0, {n})")
 
 
-def dielectric_expansion(tube: Tube, m: int, control: str, *, nodes: int = 24) -> TubeExpansion:
+def dielectric_expansion(
+    tube: Tube, m: int, control: str, *, nodes: int = 24, side: str | None = None
+) -> TubeExpansion:
     """The Koiter coefficient of the prismatic mode (m, 0) of a tube of ideal neo-Hookean
     dielectrics under its radial voltage, in a growth control: the forms of
     incremental/dielectric_forms.py (the potential phi an extra field, a quartic term)."""
     cut = rings(tube, m, nodes)
     first = DielectricForms.build(cut, m, MODE + ((3, 1),))
     second = DielectricForms.build(cut, m, SECOND + ((3, 0), (3, 2)))
-    start = critical_value(tube, m, 0, control, rtol=1e-12).value
+    start = onset_value(tube, (m, 0), control, side)
     return _expand(tube, control, first, second, start, f"{control} of mode ({m}, 0)")
 
 

@@ -69,8 +69,9 @@ def configure_critical(parser: argparse.ArgumentParser) -> None:
         help="also solve the amplitude equation of the wrinkle at onset: supercritical"
         " (folds grow gradually) or subcritical (a jump to large folds), with the Koiter"
         " coefficient c_2 of control = c_cr + c_2 eps^2, eps the mode's peak radial"
-        " displacement over R_i (so far: prismatic modes (m, 0) of neo-Hookean tubes under a"
-        " growth control, no voltage or pressure; a few seconds)",
+        " displacement over R_i (so far: prismatic modes (m, 0) and rings (0, n) of"
+        " neo-Hookean tubes at a prescribed axial stretch, for a growth, the stretch or the"
+        " voltage (prismatic modes); a few seconds)",
     )
     parser.add_argument(
         "--json",
@@ -142,7 +143,7 @@ def _amplitude_equation(args, params, solve_for, crit) -> dict:
     from ..bifurcation.koiter import with_branch  # scipy's dense algebra: only when asked
 
     with stage(args, "solving the amplitude equation at onset", tick=True):
-        verdict, note = with_branch(crit.verdict, params, solve_for)
+        verdict, note = with_branch(crit.verdict, params, solve_for, args.side)
     if note is not None:
         return {"branch_note": note}
     return {
