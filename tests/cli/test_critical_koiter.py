@@ -64,3 +64,36 @@ def test_axisymmetric_mode_has_its_branch(tmp_path, capsys):
     c2 = axisymmetric_expansion(tube, 3, "growth[1].z").coefficient
     assert rec["branch"] == "supercritical" and (rec["m"], rec["n"]) == (0, 3)
     assert abs(rec["koiter"] - c2) < 1e-9 * abs(c2)
+
+
+CHARGED_FILM = """
+stretch = 1.0
+length = 1.0
+
+[[layers]]
+outer_radius = 1.1
+shear_modulus = 1.0
+growth = [1, 1.5, 1]
+permittivity = 2.0
+
+[[layers]]
+outer_radius = 2.0
+shear_modulus = 0.2
+permittivity = 0.5
+"""
+
+
+def test_voltage_control_has_its_branch(tmp_path, capsys):
+    """`--solve-for voltage --koiter`: the critical voltage's branch (the voltage the
+    control, bifurcation/koiter_controls.py) is the library's expansion, supercritical."""
+    path = tmp_path / "film.toml"
+    path.write_text(CHARGED_FILM)
+    args = ["critical", "--tube", str(path), "--solve-for", "voltage"]
+    assert main([*args, "--mode", "12", "0", "--koiter", "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    layers = (
+        Layer(1.1, shear_modulus=1.0, growth=(1, 1.5, 1), permittivity=2.0),
+        Layer(2.0, shear_modulus=0.2, permittivity=0.5),
+    )
+    c2 = tube_expansion(Tube(layers, stretch=1.0), 12, "voltage").coefficient
+    assert rec["branch"] == "supercritical" and abs(rec["koiter"] - c2) < 1e-9 * abs(c2)

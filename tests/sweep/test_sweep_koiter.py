@@ -153,10 +153,10 @@ def test_koiter_option_is_validated(tmp_path):
 
 def test_koiter_refuses_a_control_it_does_not_cover(tmp_path):
     """The axial force (the stretch then an unknown of the base state) is not covered;
-    the stretch, the voltage and a growth are."""
+    a growth, the pressure, the stretch and the voltage are."""
     (tmp_path / "film.toml").write_text(FILM.replace("stretch = 1.0", "axial_force = 0.0"))
     text = SWEEP.replace(f'for = "{THETA}"', 'for = "force"').replace("voltage", "length")
-    match = r"solve.koiter: the amplitude equation covers growth, stretch, voltage so far"
+    match = r"solve.koiter: the amplitude equation covers growth, pressure, stretch, voltage so"
     with pytest.raises(ConfigError, match=match):
         parse_config(text.replace("0.0, 0.05", "1.0, 2.0"), source=str(tmp_path / "s.toml"))
     stretch = PAPER.replace('for = "growth"', 'for = "stretch"\nside = "compression"')

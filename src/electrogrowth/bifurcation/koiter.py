@@ -5,8 +5,10 @@ Covered so far: the flat film on a half-space (koiter_film.py: both incompressib
 neo-Hookean, plane strain, uniaxial compression of the film alone or of the whole bilayer),
 the limit of a thin stiff film on a thick tube; and a tube's prismatic modes (m, 0) and
 axisymmetric modes (0, n) (koiter_tube.py: neo-Hookean layers, constant growth, axial
-stretch prescribed, no pressure; a radial voltage for the prismatic modes) in a growth
-control, c = c_c + c_2 eps^2 with eps = max |u_r| / R_i, supercritical when c_2 > 0.
+stretch prescribed; a radial voltage for the prismatic modes; follower pressures on the
+faces, koiter_loads.py) in a growth control, the voltage (prismatic), the axial stretch
+or the inner pressure (koiter_controls.py): c = c_c + c_2 eps^2 with eps = max |u_r| / R_i,
+supercritical when c_2 has the sign of the control's direction (> 0 for a growth).
 Wrinkles (m, n) with m, n >= 1 and other cases raise a one-line
 :class:`~electrogrowth.errors.ParameterError`.
 """
@@ -26,6 +28,7 @@ from .koiter_film import (
     expansion,
     sign_change_ratio,
 )
+from .koiter_loads import loaded_expansion
 from .koiter_tube import (
     TubeExpansion,
     axial_wavenumber,
@@ -90,15 +93,16 @@ def koiter_coefficient(
     ----------
     problem : FilmOnHalfSpace or Tube
         A flat film on a half-space, or a tube (neo-Hookean layers with constant growth,
-        the axial stretch prescribed, no pressure; a voltage for prismatic modes only).
+        the axial stretch prescribed; follower pressures on the faces; a voltage for
+        prismatic modes only).
     mode : None or (m, 0) or (0, n)
         The film: None (K_c maximises lambda_c). A tube: a prismatic mode (m, 0), m >= 2,
         or an axisymmetric mode (0, n), n >= 1 (axial wavenumber n pi / L in the
         reference length).
     control : str
         The film: "stretch", the compressive stretch lambda. A tube: a growth control
-        ("growth", "growth[K]", "growth[K].theta", ...), "voltage" (prismatic modes) or
-        "stretch" (bifurcation/koiter_controls.py lists what each family covers).
+        ("growth", "growth[K]", "growth[K].theta", ...), "voltage" (prismatic modes),
+        "stretch" or "pressure" (koiter_controls.py lists what each family covers).
     side : None or "compression" or "extension"
         A tube's sided control (the stretch): the side its critical value is sought on and
         the branch's direction (default the control's own, model/controls.py).
@@ -148,11 +152,9 @@ def _tube_result(tube: Tube, mode, control: str, side: str | None = None) -> Koi
     why = _tube_not_covered(tube, family)
     if why:
         raise ParameterError(f"the tube's amplitude equation needs {why}")
-    solve = tube_expansion if family == "prismatic" else axisymmetric_expansion
     number = int(mode[0] if family == "prismatic" else mode[1])
     wavenumber = float(number) if family == "prismatic" else axial_wavenumber(tube, number)
-    fine = solve(tube, number, control, nodes=24, side=side)
-    coarse = solve(tube, number, control, nodes=18, side=side)
+    fine, coarse = (_expansion(tube, mode, control, nodes, side) for nodes in (24, 18))
     return KoiterResult(
         coefficient=fine.coefficient,
         critical_value=fine.control_value,
@@ -161,6 +163,16 @@ def _tube_result(tube: Tube, mode, control: str, side: str | None = None) -> Koi
         error_estimate=abs(fine.coefficient - coarse.coefficient),
         normalisation="eps = max_R |u_r| / R_i of the mode (R_i = 1)",
     )
+
+
+def _expansion(tube: Tube, mode, control: str, nodes: int, side: str | None) -> TubeExpansion:
+    """The expansion of ``mode``: with the faces' load when the tube is pressurised or the
+    pressure is the control (koiter_loads.py), else the wall's alone (koiter_tube.py)."""
+    if tube.inner_pressure != 0 or tube.outer_pressure != 0 or control == "pressure":
+        return loaded_expansion(tube, mode, control, nodes=nodes, side=side)
+    if mode[1] == 0:
+        return tube_expansion(tube, mode[0], control, nodes=nodes, side=side)
+    return axisymmetric_expansion(tube, mode[1], control, nodes=nodes, side=side)
 
 
 def _tube_family(mode) -> str:
@@ -182,8 +194,6 @@ def _tube_not_covered(tube: Tube, family: str) -> str:
     """What the tube lacks for the expansion, in words ("" when covered)."""
     if tube.stretch is None:
         return "the axial stretch prescribed (not the axial force)"
-    if tube.inner_pressure != 0 or tube.outer_pressure != 0:
-        return "no pressure"
     if tube.voltage != 0 and family != "prismatic":
         return (
             "no voltage for the axisymmetric family (the voltage is covered for prismatic modes)"

@@ -1,5 +1,5 @@
 """Which controls the tube's amplitude equation covers, and which way each moves
-(docs/derivation-koiter.md, "Other controls").
+(docs/derivation-koiter.md, "Other controls" and "Pressures on the faces").
 
 The expansion c = c_c + c_2 eps^2 holds for any control c that the base state follows
 smoothly: the energy is expanded about the base state at c, so A(c), and through it A'(c),
@@ -16,8 +16,8 @@ from ..model.controls import check_side, parse_control
 
 #: the kinds of control each family's expansion covers
 COVERED = {
-    "prismatic": ("growth", "voltage", "stretch"),
-    "axisymmetric": ("growth", "stretch"),
+    "prismatic": ("growth", "voltage", "stretch", "pressure"),
+    "axisymmetric": ("growth", "stretch", "pressure"),
 }
 
 

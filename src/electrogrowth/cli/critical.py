@@ -70,8 +70,9 @@ def configure_critical(parser: argparse.ArgumentParser) -> None:
         " (folds grow gradually) or subcritical (a jump to large folds), with the Koiter"
         " coefficient c_2 of control = c_cr + c_2 eps^2, eps the mode's peak radial"
         " displacement over R_i (so far: prismatic modes (m, 0) and rings (0, n) of"
-        " neo-Hookean tubes at a prescribed axial stretch, for a growth, the stretch or the"
-        " voltage (prismatic modes); a few seconds)",
+        " neo-Hookean tubes at a prescribed axial stretch, pressures on the faces allowed,"
+        " for a growth, the stretch, the pressure or the voltage (prismatic modes); a few"
+        " seconds)",
     )
     parser.add_argument(
         "--json",

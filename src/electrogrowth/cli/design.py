@@ -104,7 +104,8 @@ def configure_design(parser: argparse.ArgumentParser) -> None:
         action="store_true",
         help="also solve the amplitude equation of the chosen design's wrinkle: super- or"
         " subcritical (as critical --koiter; covered: prismatic modes and rings of"
-        " neo-Hookean tubes in a growth, stretch or voltage control; a few seconds)",
+        " neo-Hookean tubes in a growth, stretch, pressure or voltage control; a few"
+        " seconds)",
     )
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     add_quiet_option(parser)

@@ -7,7 +7,7 @@ the offending key (sweep/file.py adds the file and line). Read from a TOML file
     [solve]     for = "growth" | "stretch" | "voltage"       (required)
                 side = "compression" | "extension"           (stretch only)
                 rtol = 1e-12                                  (1e-14 .. 1e-4)
-                koiter = false   also the wrinkle's amplitude equation (growth, voltage, stretch)
+                koiter = false   also the wrinkle's amplitude equation (not for the force)
     [modes]     m = [0, 12], n = [1, 30], extend = true, top = 5, surface = true,
                 prismatic = true, torsional = true            (every ScanOptions field)
     [material]  name = "neo-hookean" | "gent" | "mooney-rivlin", and its parameters;
