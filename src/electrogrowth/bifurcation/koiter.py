@@ -5,9 +5,9 @@ Covered so far: the flat film on a half-space (koiter_film.py: both incompressib
 neo-Hookean, plane strain, uniaxial compression of the film alone or of the whole bilayer),
 the limit of a thin stiff film on a thick tube; and a tube's prismatic modes (m, 0) and
 axisymmetric modes (0, n) (koiter_tube.py: neo-Hookean layers, constant growth, axial
-stretch prescribed; a radial voltage for the prismatic modes; follower pressures on the
-faces, koiter_loads.py) in a growth control, the voltage (prismatic), the axial stretch
-or the inner pressure (koiter_controls.py): c = c_c + c_2 eps^2 with eps = max |u_r| / R_i,
+stretch prescribed; a radial voltage; follower pressures on the faces, koiter_loads.py)
+in a growth control, the voltage, the axial stretch or the inner pressure
+(koiter_controls.py): c = c_c + c_2 eps^2 with eps = max |u_r| / R_i,
 supercritical when c_2 has the sign of the control's direction (> 0 for a growth).
 Wrinkles (m, n) with m, n >= 1 and other cases raise a one-line
 :class:`~electrogrowth.errors.ParameterError`.
@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import dataclasses
 
-from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
+from ..errors import BaseStateError, ConvergenceError, NoBifurcationFound, ParameterError
 from ..model.layers import Tube
 from .koiter_controls import branch as branch_of
 from .koiter_controls import check_control
@@ -93,16 +93,15 @@ def koiter_coefficient(
     ----------
     problem : FilmOnHalfSpace or Tube
         A flat film on a half-space, or a tube (neo-Hookean layers with constant growth,
-        the axial stretch prescribed; follower pressures on the faces; a voltage for
-        prismatic modes only).
+        the axial stretch prescribed; follower pressures on the faces; a radial voltage).
     mode : None or (m, 0) or (0, n)
         The film: None (K_c maximises lambda_c). A tube: a prismatic mode (m, 0), m >= 2,
         or an axisymmetric mode (0, n), n >= 1 (axial wavenumber n pi / L in the
         reference length).
     control : str
         The film: "stretch", the compressive stretch lambda. A tube: a growth control
-        ("growth", "growth[K]", "growth[K].theta", ...), "voltage" (prismatic modes),
-        "stretch" or "pressure" (koiter_controls.py lists what each family covers).
+        ("growth", "growth[K]", "growth[K].theta", ...), "voltage", "stretch" or
+        "pressure" (koiter_controls.py lists what each family covers).
     side : None or "compression" or "extension"
         A tube's sided control (the stretch): the side its critical value is sought on and
         the branch's direction (default the control's own, model/controls.py).
@@ -168,7 +167,9 @@ def _tube_result(tube: Tube, mode, control: str, side: str | None = None) -> Koi
 def _expansion(tube: Tube, mode, control: str, nodes: int, side: str | None) -> TubeExpansion:
     """The expansion of ``mode``: with the faces' load when the tube is pressurised or the
     pressure is the control (koiter_loads.py), else the wall's alone (koiter_tube.py)."""
-    if tube.inner_pressure != 0 or tube.outer_pressure != 0 or control == "pressure":
+    loaded = tube.inner_pressure != 0 or tube.outer_pressure != 0 or control == "pressure"
+    charged = mode[1] != 0 and (tube.voltage != 0 or control == "voltage")
+    if loaded or charged:  # the axisymmetric family's potential lives there too
         return loaded_expansion(tube, mode, control, nodes=nodes, side=side)
     if mode[1] == 0:
         return tube_expansion(tube, mode[0], control, nodes=nodes, side=side)
@@ -194,10 +195,6 @@ def _tube_not_covered(tube: Tube, family: str) -> str:
     """What the tube lacks for the expansion, in words ("" when covered)."""
     if tube.stretch is None:
         return "the axial stretch prescribed (not the axial force)"
-    if tube.voltage != 0 and family != "prismatic":
-        return (
-            "no voltage for the axisymmetric family (the voltage is covered for prismatic modes)"
-        )
     for ply in tube.layers:
         if ply.graded:
             return "constant growth in every layer"
@@ -219,7 +216,7 @@ def with_branch(
         return verdict, "no wrinkle was found, so there is no amplitude equation"
     try:
         k = koiter_coefficient(tube, (int(w.m), int(w.n)), solve_for, side=side)
-    except (ParameterError, NoBifurcationFound, ConvergenceError) as exc:
+    except (ParameterError, NoBifurcationFound, ConvergenceError, BaseStateError) as exc:
         return verdict, str(exc)
     words = {
         "supercritical": "supercritical: the folds grow gradually past onset",

@@ -17,7 +17,7 @@ from ..model.controls import check_side, parse_control
 #: the kinds of control each family's expansion covers
 COVERED = {
     "prismatic": ("growth", "voltage", "stretch", "pressure"),
-    "axisymmetric": ("growth", "stretch", "pressure"),
+    "axisymmetric": ("growth", "voltage", "stretch", "pressure"),
 }
 
 

@@ -1,6 +1,8 @@
 """The Koiter coefficient of a tube's mode under follower pressures on its faces, as loads
 or the inner pressure as the control (docs/derivation-koiter.md, "Pressures on the
-faces"): the wall's forms (polar, dielectric under a voltage, meridian) plus the load's
+faces"), and of the axisymmetric modes under a radial voltage ("The radial voltage,
+axisymmetric family"): the wall's forms (polar, meridian, with the potential under a
+voltage) plus the load's
 potential (incremental/pressure_forms.py), in the expansion of koiter_tube.py,
 
     c_2 = (2 A[psi, psi] - 4 E4(phi)) / A'[phi, phi],   A psi = -grad E3(phi),
@@ -15,6 +17,7 @@ import numpy as np
 
 from ..basestate.tube import solve_base_state
 from ..incremental.dielectric_forms import DielectricForms
+from ..incremental.meridian_dielectric_forms import MeridianDielectricForms
 from ..incremental.meridian_forms import MeridianForms
 from ..incremental.polar_forms import PolarForms, rings
 from ..incremental.pressure_forms import FaceForms
@@ -74,7 +77,13 @@ def energies(tube: Tube, mode, control: str, nodes: int) -> tuple[LoadedEnergy, 
     else:
         K = axial_wavenumber(tube, n)
         cut = rings(tube, max(K, 1.0), nodes)
-        walls = (MeridianForms.build(cut, K, MODE), MeridianForms.build(cut, K, SECOND))
+        if tube.voltage != 0 or control == "voltage":
+            walls = (
+                MeridianDielectricForms.build(cut, K, MODE + ((3, 1),)),
+                MeridianDielectricForms.build(cut, K, SECOND + ((3, 0), (3, 2))),
+            )
+        else:
+            walls = (MeridianForms.build(cut, K, MODE), MeridianForms.build(cut, K, SECOND))
         family, wavenumber = "axisymmetric", K
     first, second = (LoadedEnergy(w, FaceForms.build(w, family, wavenumber)) for w in walls)
     return first, second

@@ -71,7 +71,7 @@ def configure_critical(parser: argparse.ArgumentParser) -> None:
         " coefficient c_2 of control = c_cr + c_2 eps^2, eps the mode's peak radial"
         " displacement over R_i (so far: prismatic modes (m, 0) and rings (0, n) of"
         " neo-Hookean tubes at a prescribed axial stretch, pressures on the faces allowed,"
-        " for a growth, the stretch, the pressure or the voltage (prismatic modes); a few"
+        " for a growth, the stretch, the pressure or the voltage; a few"
         " seconds)",
     )
     parser.add_argument(
