@@ -75,7 +75,7 @@ def test_no_voltage_is_the_meridian_coefficient():
     assert charged.coefficient == pytest.approx(plain.coefficient, rel=1e-9)
 
 
-@pytest.mark.slow  # four resolutions of each case: ~20 s a case alone, 80 s under load
+@pytest.mark.slow  # four resolutions of each case: 80-90 s measured on a loaded machine
 @pytest.mark.parametrize("name", CASES)
 def test_coefficient_converges_in_the_nodes(name):
     """12, 16, 20 and 24 points a segment: down to a floor of 1e-8 relative by 20."""

@@ -114,7 +114,7 @@ def test_singular_at_the_package_critical_value(name):
     assert e.control_value == pytest.approx(e.impedance_value, abs=1e-11, rel=1e-11)
 
 
-@pytest.mark.slow  # four resolutions of each case: ~20 s a case alone, 80 s under load
+@pytest.mark.slow  # four resolutions of each case: 80-90 s measured on a loaded machine
 @pytest.mark.parametrize("name", CASES)
 def test_coefficient_converges_in_the_nodes(name):
     """12, 16, 20, 24 points a segment: geometric down to a floor of ~1e-8 relative (the
