@@ -235,7 +235,7 @@ def test_door_and_branch_direction():
     r = koiter_coefficient(tube, mode, control, side=side)
     assert r.coefficient > 0 and r.branch == "supercritical"
     with pytest.raises(ParameterError, match="axisymmetric family's amplitude equation covers"):
-        koiter_coefficient(_tube((1, 1, 1.2)), (0, 3), "voltage")
+        koiter_coefficient(_tube((1, 1, 1.2)), (0, 3), "force")
     with pytest.raises(ParameterError, match="covers growth, voltage, stretch"):
         koiter_coefficient(_tube((1, 1.5, 1)), (12, 0), "force")
 
