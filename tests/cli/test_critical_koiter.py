@@ -33,10 +33,10 @@ def test_json_has_the_branch_and_the_coefficient(capsys):
 
 def test_a_case_not_covered_says_why_in_one_line(capsys):
     args = ["critical", "--solve-for", "growth", "--outer-radius", "1.4", "--voltage", "0.4"]
-    assert main([*args, "--mode", "0", "1", "--koiter", "--json"]) == 0
+    assert main([*args, "--mode", "1", "1", "--koiter", "--json"]) == 0
     rec = json.loads(capsys.readouterr().out)
     assert rec["branch"] is None and rec["koiter"] is None
-    assert "no voltage" in rec["branch_note"] and "\n" not in rec["branch_note"]
+    assert "not wrinkles (m, n)" in rec["branch_note"] and "\n" not in rec["branch_note"]
 
 
 AXIAL_FILM = """
@@ -86,3 +86,36 @@ def test_mooney_rivlin_and_gent_have_their_branch(capsys):
         tube = Tube.uniform(1.4, stretch=1.1, material=material)
         c2 = axisymmetric_expansion(tube, 1, "growth").coefficient
         assert abs(rec["koiter"] - c2) < 1e-9 * abs(c2)
+
+
+CHARGED_FILM = """
+stretch = 1.0
+length = 1.0
+
+[[layers]]
+outer_radius = 1.1
+shear_modulus = 1.0
+growth = [1, 1.5, 1]
+permittivity = 2.0
+
+[[layers]]
+outer_radius = 2.0
+shear_modulus = 0.2
+permittivity = 0.5
+"""
+
+
+def test_voltage_control_has_its_branch(tmp_path, capsys):
+    """`--solve-for voltage --koiter`: the critical voltage's branch (the voltage the
+    control, bifurcation/koiter_controls.py) is the library's expansion, supercritical."""
+    path = tmp_path / "film.toml"
+    path.write_text(CHARGED_FILM)
+    args = ["critical", "--tube", str(path), "--solve-for", "voltage"]
+    assert main([*args, "--mode", "12", "0", "--koiter", "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    layers = (
+        Layer(1.1, shear_modulus=1.0, growth=(1, 1.5, 1), permittivity=2.0),
+        Layer(2.0, shear_modulus=0.2, permittivity=0.5),
+    )
+    c2 = tube_expansion(Tube(layers, stretch=1.0), 12, "voltage").coefficient
+    assert rec["branch"] == "supercritical" and abs(rec["koiter"] - c2) < 1e-9 * abs(c2)

@@ -5,9 +5,10 @@ Covered so far: the flat film on a half-space (koiter_film.py: both incompressib
 neo-Hookean, plane strain, uniaxial compression of the film alone or of the whole bilayer),
 the limit of a thin stiff film on a thick tube; and a tube's prismatic modes (m, 0) and
 axisymmetric modes (0, n) (koiter_tube.py: layers of any strain energy, constant growth,
-axial stretch prescribed, no pressure; a radial voltage for the prismatic modes, on ideal
-dielectrics) in a growth control, c = c_c + c_2 eps^2 with eps = max |u_r| / R_i,
-supercritical when c_2 > 0.
+axial stretch prescribed; a radial voltage on ideal dielectrics; follower pressures on the
+faces, koiter_loads.py) in a growth control, the voltage, the axial stretch or the inner
+pressure (koiter_controls.py): c = c_c + c_2 eps^2 with eps = max |u_r| / R_i,
+supercritical when c_2 has the sign of the control's direction (> 0 for a growth).
 Wrinkles (m, n) with m, n >= 1 and other cases raise a one-line
 :class:`~electrogrowth.errors.ParameterError`.
 """
@@ -16,8 +17,10 @@ from __future__ import annotations
 
 import dataclasses
 
-from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
+from ..errors import BaseStateError, ConvergenceError, NoBifurcationFound, ParameterError
 from ..model.layers import Tube
+from .koiter_controls import branch as branch_of
+from .koiter_controls import check_control
 from .koiter_film import (
     FilmOnHalfSpace,
     _coefficient,
@@ -25,6 +28,7 @@ from .koiter_film import (
     expansion,
     sign_change_ratio,
 )
+from .koiter_loads import loaded_expansion
 from .koiter_tube import (
     TubeExpansion,
     axial_wavenumber,
@@ -53,7 +57,7 @@ class KoiterResult:
 
     Flat film: c = lambda, the compressive stretch; eps = K_c w (w the amplitude of the
     vertical displacement of the free face, K_c the reference wavenumber, both in film
-    thicknesses); ``wavenumber`` K_c. Tube: c the growth control; eps = max_R |u_r| / R_i
+    thicknesses); ``wavenumber`` K_c. Tube: c the control; eps = max_R |u_r| / R_i
     of the mode (R_i = 1, the undeformed inner radius); ``wavenumber`` m of a prismatic
     mode (m, 0), the reference axial wavenumber K = n pi / L of an axisymmetric one (0, n).
     ``branch`` is "supercritical" when the branch exists beyond onset, in the direction
@@ -72,7 +76,9 @@ class KoiterResult:
         return dataclasses.asdict(self)
 
 
-def koiter_coefficient(problem, mode=None, control: str = "stretch") -> KoiterResult:
+def koiter_coefficient(
+    problem, mode=None, control: str = "stretch", *, side: str | None = None
+) -> KoiterResult:
     """The Koiter coefficient of a critical mode (docs/derivation-koiter.md): the control
     on the bifurcated branch is c = c_c + c_2 eps^2 (``KoiterResult`` says which eps),
     from the mode phi, the second-order correction psi (harmonics 0 and 2) of
@@ -87,15 +93,19 @@ def koiter_coefficient(problem, mode=None, control: str = "stretch") -> KoiterRe
     ----------
     problem : FilmOnHalfSpace or Tube
         A flat film on a half-space, or a tube (layers of any strain energy with constant
-        growth, the axial stretch prescribed, no pressure; a voltage for prismatic modes
-        only, on ideal dielectrics).
+        growth, the axial stretch prescribed; follower pressures on the faces; a radial
+        voltage on ideal dielectrics).
     mode : None or (m, 0) or (0, n)
         The film: None (K_c maximises lambda_c). A tube: a prismatic mode (m, 0), m >= 2,
         or an axisymmetric mode (0, n), n >= 1 (axial wavenumber n pi / L in the
         reference length).
     control : str
         The film: "stretch", the compressive stretch lambda. A tube: a growth control
-        ("growth", "growth[K]", "growth[K].theta", ...).
+        ("growth", "growth[K]", "growth[K].theta", ...), "voltage", "stretch" or
+        "pressure" (koiter_controls.py lists what each family covers).
+    side : None or "compression" or "extension"
+        A tube's sided control (the stretch): the side its critical value is sought on and
+        the branch's direction (default the control's own, model/controls.py).
 
     Returns
     -------
@@ -113,7 +123,7 @@ def koiter_coefficient(problem, mode=None, control: str = "stretch") -> KoiterRe
     'supercritical'
     """
     if isinstance(problem, Tube):
-        return _tube_result(problem, mode, control)
+        return _tube_result(problem, mode, control, side)
     if not isinstance(problem, FilmOnHalfSpace):
         raise ParameterError(
             f"the amplitude equation covers a flat film on a half-space (FilmOnHalfSpace) "
@@ -135,27 +145,36 @@ def koiter_coefficient(problem, mode=None, control: str = "stretch") -> KoiterRe
     )
 
 
-def _tube_result(tube: Tube, mode, control: str) -> KoiterResult:
+def _tube_result(tube: Tube, mode, control: str, side: str | None = None) -> KoiterResult:
     """The tube's case of :func:`koiter_coefficient`, with its one-line refusals."""
     family = _tube_family(mode)
-    if not (isinstance(control, str) and control.startswith("growth")):
-        raise ParameterError(f"control = {control!r}: only a growth control is covered so far")
-    why = _tube_not_covered(tube, family)
+    check_control(family, control)
+    why = _tube_not_covered(tube, family, control)
     if why:
         raise ParameterError(f"the tube's amplitude equation needs {why}")
-    solve = tube_expansion if family == "prismatic" else axisymmetric_expansion
     number = int(mode[0] if family == "prismatic" else mode[1])
     wavenumber = float(number) if family == "prismatic" else axial_wavenumber(tube, number)
-    fine = solve(tube, number, control, nodes=24)
-    coarse = solve(tube, number, control, nodes=18)
+    fine, coarse = (_expansion(tube, mode, control, nodes, side) for nodes in (24, 18))
     return KoiterResult(
         coefficient=fine.coefficient,
         critical_value=fine.control_value,
         wavenumber=wavenumber,
-        branch="supercritical" if fine.coefficient > 0 else "subcritical",
+        branch=branch_of(fine.coefficient, control, side),
         error_estimate=abs(fine.coefficient - coarse.coefficient),
         normalisation="eps = max_R |u_r| / R_i of the mode (R_i = 1)",
     )
+
+
+def _expansion(tube: Tube, mode, control: str, nodes: int, side: str | None) -> TubeExpansion:
+    """The expansion of ``mode``: with the faces' load when the tube is pressurised or the
+    pressure is the control (koiter_loads.py), else the wall's alone (koiter_tube.py)."""
+    loaded = tube.inner_pressure != 0 or tube.outer_pressure != 0 or control == "pressure"
+    charged = mode[1] != 0 and (tube.voltage != 0 or control == "voltage")
+    if loaded or charged:  # the axisymmetric family's potential lives there too
+        return loaded_expansion(tube, mode, control, nodes=nodes, side=side)
+    if mode[1] == 0:
+        return tube_expansion(tube, mode[0], control, nodes=nodes, side=side)
+    return axisymmetric_expansion(tube, mode[1], control, nodes=nodes, side=side)
 
 
 def _tube_family(mode) -> str:
@@ -173,27 +192,21 @@ def _tube_family(mode) -> str:
     )
 
 
-def _tube_not_covered(tube: Tube, family: str) -> str:
+def _tube_not_covered(tube: Tube, family: str, control: str) -> str:
     """What the tube lacks for the expansion, in words ("" when covered)."""
     if tube.stretch is None:
         return "the axial stretch prescribed (not the axial force)"
-    if tube.inner_pressure != 0 or tube.outer_pressure != 0:
-        return "no pressure"
-    if tube.voltage != 0 and family != "prismatic":
-        return (
-            "no voltage for the axisymmetric family (the voltage is covered for prismatic modes)"
-        )
     for ply in tube.layers:
         if ply.graded:
             return "constant growth in every layer"
-    return _energy_not_covered(tube)
+    return _energy_not_covered(tube, control)
 
 
-def _energy_not_covered(tube: Tube) -> str:
+def _energy_not_covered(tube: Tube, control: str) -> str:
     """Any strain energy is covered (its derivatives to fourth order); under a voltage
     only an ideal dielectric's, Omega = W(I1, I2) + I5 / 2, whose electric part is the
     one the dielectric forms hold."""
-    if tube.voltage == 0:
+    if tube.voltage == 0 and control != "voltage":
         return ""
     for ply in tube.layers:
         if not ply.material.is_ideal_dielectric():
@@ -204,7 +217,9 @@ def _energy_not_covered(tube: Tube) -> str:
     return ""
 
 
-def with_branch(verdict: Verdict, tube: Tube, solve_for: str) -> tuple[Verdict, str | None]:
+def with_branch(
+    verdict: Verdict, tube: Tube, solve_for: str, side: str | None = None
+) -> tuple[Verdict, str | None]:
     """``verdict`` with its slot ``branch``/``koiter``/``koiter_error`` filled from the
     amplitude equation of its wrinkle, and None; or unchanged with the one-line reason it
     is not computed (no wrinkle, or a case the expansion does not cover yet). The meaning
@@ -214,8 +229,8 @@ def with_branch(verdict: Verdict, tube: Tube, solve_for: str) -> tuple[Verdict, 
     if w is None or w.m is None or w.n is None:
         return verdict, "no wrinkle was found, so there is no amplitude equation"
     try:
-        k = koiter_coefficient(tube, (int(w.m), int(w.n)), solve_for)
-    except (ParameterError, NoBifurcationFound, ConvergenceError) as exc:
+        k = koiter_coefficient(tube, (int(w.m), int(w.n)), solve_for, side=side)
+    except (ParameterError, NoBifurcationFound, ConvergenceError, BaseStateError) as exc:
         return verdict, str(exc)
     words = {
         "supercritical": "supercritical: the folds grow gradually past onset",

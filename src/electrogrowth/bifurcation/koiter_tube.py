@@ -1,11 +1,11 @@
-"""The Koiter coefficient of a tube's mode in a growth control (docs/derivation-koiter.md):
+"""The Koiter coefficient of a tube's mode in a control (docs/derivation-koiter.md):
 the prismatic family (m, 0) on the polar forms, the axisymmetric family (0, n) on the
 meridian forms; both refine the package's critical value where the discrete energy's
 A(c) is singular, then solve for the second-order correction and
 
     c_2 = (2 A[psi, psi] - 4 E4(phi)) / A'[phi, phi],
 
-E4 the quartic part of the energy (zero for the plane forms), eps = max |u_r| / R_i."""
+E4 the quartic part of the energy, eps = max |u_r| / R_i."""
 
 from __future__ import annotations
 
@@ -15,11 +15,12 @@ import math
 import numpy as np
 
 from ..basestate.tube import solve_base_state
-from ..errors import ConvergenceError
+from ..errors import ConvergenceError, NoBifurcationFound
 from ..incremental.dielectric_forms import DielectricForms
 from ..incremental.meridian_forms import MeridianForms
 from ..incremental.polar_forms import PolarForms, rings
 from ..model.layers import Tube
+from ..outcomes import Kind
 from .critical import critical_value
 from .koiter_film import MODE, _nearest_zero
 
@@ -64,18 +65,33 @@ def singular_point(stiffness, start: float, what: str):
     raise ConvergenceError(f"the critical {what} did not converge")
 
 
-def tube_expansion(tube: Tube, m: int, control: str, *, nodes: int = 24) -> TubeExpansion:
+def tube_expansion(
+    tube: Tube, m: int, control: str, *, nodes: int = 24, side: str | None = None
+) -> TubeExpansion:
     """The Koiter coefficient of the prismatic mode (m, 0) of a tube at fixed axial
-    stretch, in a growth control: the forms of incremental/polar_forms.py (any strain
-    energy, to fourth order), the correction at harmonics 0 and 2m; under a voltage
+    stretch, in any control that moves its base state: the forms of
+    incremental/polar_forms.py (any strain energy, to fourth order), the correction at
+    harmonics 0 and 2m; under a voltage (or in the voltage control)
     :func:`dielectric_expansion`."""
-    if tube.voltage != 0:
-        return dielectric_expansion(tube, m, control, nodes=nodes)
+    if tube.voltage != 0 or control == "voltage":
+        return dielectric_expansion(tube, m, control, nodes=nodes, side=side)
     cut = rings(tube, m, nodes)
     first = PolarForms.build(cut, m, MODE)
     second = PolarForms.build(cut, m, SECOND)
-    start = critical_value(tube, m, 0, control, rtol=1e-12).value
+    start = onset_value(tube, (m, 0), control, side)
     return _expand(tube, control, first, second, start, f"{control} of mode ({m}, 0)")
+
+
+def onset_value(tube: Tube, mode: tuple[int, int], control: str, side: str | None) -> float:
+    """The package's critical value of ``control`` for ``mode`` (the impedance route, rtol
+    1e-12), where the expansion starts; NoBifurcationFound when the axisymmetric state is
+    lost first (a voltage's threshold)."""
+    point = critical_value(tube, *mode, control, side=side, rtol=1e-12)
+    if point.kind != Kind.BIFURCATION:
+        raise NoBifurcationFound(
+            f"mode {mode}: no bifurcation in {control} ({point.kind} at {point.value:.6g} first)"
+        )
+    return point.value
 
 
 def axial_wavenumber(tube: Tube, n: int) -> float:
@@ -84,26 +100,31 @@ def axial_wavenumber(tube: Tube, n: int) -> float:
     return n * math.pi / tube.length
 
 
-def axisymmetric_expansion(tube: Tube, n: int, control: str, *, nodes: int = 24) -> TubeExpansion:
-    """The Koiter coefficient of the axisymmetric mode (0, n) of a neo-Hookean tube at
-    fixed axial stretch, in a growth control: the forms of incremental/meridian_forms.py,
+def axisymmetric_expansion(
+    tube: Tube, n: int, control: str, *, nodes: int = 24, side: str | None = None
+) -> TubeExpansion:
+    """The Koiter coefficient of the axisymmetric mode (0, n) of a tube at fixed axial
+    stretch, in any control that moves its base state: the forms of
+    incremental/meridian_forms.py (any strain energy),
     the correction at harmonics 0 and 2 (of K Z), and the quartic term of the constraint."""
     K = axial_wavenumber(tube, n)
     cut = rings(tube, max(K, 1.0), nodes)
     first = MeridianForms.build(cut, K, MODE)
     second = MeridianForms.build(cut, K, SECOND)
-    start = critical_value(tube, 0, n, control, rtol=1e-12).value
+    start = onset_value(tube, (0, n), control, side)
     return _expand(tube, control, first, second, start, f"{control} of mode (0, {n})")
 
 
-def dielectric_expansion(tube: Tube, m: int, control: str, *, nodes: int = 24) -> TubeExpansion:
-    """The Koiter coefficient of the prismatic mode (m, 0) of a tube of ideal neo-Hookean
-    dielectrics under its radial voltage, in a growth control: the forms of
+def dielectric_expansion(
+    tube: Tube, m: int, control: str, *, nodes: int = 24, side: str | None = None
+) -> TubeExpansion:
+    """The Koiter coefficient of the prismatic mode (m, 0) of a tube of ideal dielectrics
+    under its radial voltage, in any control: the forms of
     incremental/dielectric_forms.py (the potential phi an extra field, a quartic term)."""
     cut = rings(tube, m, nodes)
     first = DielectricForms.build(cut, m, MODE + ((3, 1),))
     second = DielectricForms.build(cut, m, SECOND + ((3, 0), (3, 2)))
-    start = critical_value(tube, m, 0, control, rtol=1e-12).value
+    start = onset_value(tube, (m, 0), control, side)
     return _expand(tube, control, first, second, start, f"{control} of mode ({m}, 0)")
 
 

@@ -70,9 +70,10 @@ def configure_critical(parser: argparse.ArgumentParser) -> None:
         help="also solve the amplitude equation of the wrinkle at onset: supercritical"
         " (folds grow gradually) or subcritical (a jump to large folds), with the Koiter"
         " coefficient c_2 of control = c_cr + c_2 eps^2, eps the mode's peak radial"
-        " displacement over R_i (so far: prismatic modes (m, 0), under a voltage too, and"
-        " axisymmetric modes (0, n) of tubes of any energy (ideal dielectrics under a"
-        " voltage) in a growth control, no pressure; a few seconds)",
+        " displacement over R_i (so far: prismatic modes (m, 0) and rings (0, n) of"
+        " tubes of any energy (ideal dielectrics under a voltage) at a prescribed axial"
+        " stretch, pressures on the faces allowed, for a growth, the stretch, the pressure"
+        " or the voltage; a few seconds)",
     )
     parser.add_argument(
         "--json",
@@ -144,7 +145,7 @@ def _amplitude_equation(args, params, solve_for, crit) -> dict:
     from ..bifurcation.koiter import with_branch  # scipy's dense algebra: only when asked
 
     with stage(args, "solving the amplitude equation at onset", tick=True):
-        verdict, note = with_branch(crit.verdict, params, solve_for)
+        verdict, note = with_branch(crit.verdict, params, solve_for, args.side)
     if note is not None:
         return {"branch_note": note}
     return {

@@ -117,7 +117,7 @@ def design_verdict(tube, solve_for: str, side, options: ScanOptions, *, koiter: 
     if koiter:
         from ..bifurcation.koiter import with_branch  # scipy's dense algebra: only when asked
 
-        verdict, why = with_branch(verdict, tube, solve_for)
+        verdict, why = with_branch(verdict, tube, solve_for, side)
         note = why or ""
     d = verdict.as_dict()
     keep = ("kind", "value", "face", "meaning", "crease", "wrinkle", "branch", "koiter")

@@ -7,7 +7,7 @@ the offending key (sweep/file.py adds the file and line). Read from a TOML file
     [solve]     for = "growth" | "stretch" | "voltage"       (required)
                 side = "compression" | "extension"           (stretch only)
                 rtol = 1e-12                                  (1e-14 .. 1e-4)
-                koiter = false   also the wrinkle's amplitude equation (growth controls)
+                koiter = false   also the wrinkle's amplitude equation (not for the force)
     [modes]     m = [0, 12], n = [1, 30], extend = true, top = 5, surface = true,
                 prismatic = true, torsional = true            (every ScanOptions field)
     [material]  name = "neo-hookean" | "gent" | "mooney-rivlin", and its parameters;
@@ -44,6 +44,7 @@ from typing import Any
 
 import numpy as np
 
+from ..bifurcation.koiter_controls import COVERED as KOITER_COVERED
 from ..bifurcation.scan import ScanOptions
 from ..errors import ConfigError, ElectrogrowthError, ParameterError
 from ..incremental.accuracy import RTOL_RANGE
@@ -318,17 +319,18 @@ def _check_solve(c: SweepConfig, tube: Tube, keys: tuple[str, ...] | None) -> No
 
 
 def _check_koiter(c: SweepConfig) -> None:
-    """koiter = true asks for the amplitude equation, which covers growth controls only
-    (bifurcation/koiter.py): any other control would give no branch at any point."""
+    """koiter = true asks for the amplitude equation, which covers some controls only
+    (bifurcation/koiter_controls.py): any other control would give no branch at any point."""
     if not isinstance(c.koiter, bool):
         raise ConfigError(
             ("solve", "koiter"), f"expected a boolean, got {typename(c.koiter)} {shown(c.koiter)}"
         )
-    if c.koiter and parse_control(c.solve_for).kind != "growth":
+    covered = sorted({kind for kinds in KOITER_COVERED.values() for kind in kinds})
+    if c.koiter and parse_control(c.solve_for).kind not in covered:
         raise ConfigError(
             ("solve", "koiter"),
-            f"the amplitude equation covers a growth control so far, not for = {c.solve_for!r};"
-            " remove koiter or solve for a growth",
+            f"the amplitude equation covers {', '.join(covered)} so far, not for ="
+            f" {c.solve_for!r}; remove koiter or solve for one of those",
         )
 
 

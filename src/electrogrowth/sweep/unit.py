@@ -114,7 +114,7 @@ def compute_point(params: Tube, spec: ScanSpec) -> PointResult:
         verdict = res.verdict
         note = ""
         if spec.koiter:
-            verdict, note = branch_of(verdict, params, spec.solve_for)
+            verdict, note = branch_of(verdict, params, spec.solve_for, spec.side)
         fields = verdict_fields(verdict) | {"branch_note": note}
     except NoBifurcationFound as exc:
         return PointResult(Status.OK, kind=Kind.NONE, message=str(exc), seconds=took())
@@ -150,13 +150,13 @@ def compute_point(params: Tube, spec: ScanSpec) -> PointResult:
 BRANCH_FAILED = "amplitude equation failed"
 
 
-def branch_of(verdict, params: Tube, solve_for: str):
+def branch_of(verdict, params: Tube, solve_for: str, side: str | None = None):
     """(verdict with its branch, "") where the amplitude equation covers the point, else
     (verdict, why not); a failure of the expansion is data too: (verdict, its message)."""
     from ..bifurcation.koiter import with_branch  # scipy's dense algebra: only when asked
 
     try:
-        out, note = with_branch(verdict, params, solve_for)
+        out, note = with_branch(verdict, params, solve_for, side)
     except Exception as exc:  # noqa: BLE001 - failures are data; the linear result stands
         reraise_interrupt(exc)
         return verdict, f"{BRANCH_FAILED}: {type(exc).__name__}: {exc}"

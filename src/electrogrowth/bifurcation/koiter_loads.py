@@ -1,0 +1,107 @@
+"""The Koiter coefficient of a tube's mode under follower pressures on its faces, as loads
+or the inner pressure as the control (docs/derivation-koiter.md, "Pressures on the
+faces"), and of the axisymmetric modes under a radial voltage ("The radial voltage,
+axisymmetric family"): the wall's forms (polar, meridian, with the potential under a
+voltage) plus the load's
+potential (incremental/pressure_forms.py), in the expansion of koiter_tube.py,
+
+    c_2 = (2 A[psi, psi] - 4 E4(phi)) / A'[phi, phi],   A psi = -grad E3(phi),
+
+A, E3 the wall's and the load's together (the load has no quartic part)."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+
+from ..basestate.tube import solve_base_state
+from ..incremental.dielectric_forms import DielectricForms
+from ..incremental.meridian_dielectric_forms import MeridianDielectricForms
+from ..incremental.meridian_forms import MeridianForms
+from ..incremental.polar_forms import PolarForms, rings
+from ..incremental.pressure_forms import FaceForms
+from ..model.layers import Tube
+from .koiter_film import MODE
+from .koiter_tube import (
+    SECOND,
+    TubeExpansion,
+    axial_wavenumber,
+    control_derivative,
+    onset_value,
+    singular_point,
+)
+
+
+@dataclasses.dataclass
+class LoadedEnergy:
+    """The wall's forms on some harmonics with the faces' load on the same unknowns."""
+
+    wall: object
+    face: FaceForms
+
+    def stiffness(self, state):
+        """A: the wall's Hessian plus the load's."""
+        load = self.face.hessian(self.face.potential(state)[2])
+        return self.wall.hessian(self.wall.lagrangian(state)[2]) + load
+
+    def third(self, state, phi_fields: dict, phi_face: dict):
+        """grad E3 at the mode (= C[phi, phi, .] / 2), the wall's and the load's."""
+        load = self.face.gradient(self.face.potential(state)[3], phi_face)
+        return self.wall.gradient(self.wall.lagrangian(state)[3], phi_fields) + load
+
+    def quartic(self, state, phi_fields: dict) -> float:
+        """E4 at the mode (the wall's: the load has none)."""
+        return self.wall.energy(self.wall.lagrangian(state)[4], phi_fields)
+
+
+def energies(tube: Tube, mode, control: str, nodes: int) -> tuple[LoadedEnergy, LoadedEnergy]:
+    """The mode's and the correction's loaded energies of ``mode`` ((m, 0) or (0, n))."""
+    m, n = mode
+    if n == 0:
+        cut = rings(tube, m, nodes)
+        if tube.voltage != 0 or control == "voltage":
+            walls = (
+                DielectricForms.build(cut, m, MODE + ((3, 1),)),
+                DielectricForms.build(cut, m, SECOND + ((3, 0), (3, 2))),
+            )
+        else:
+            walls = (PolarForms.build(cut, m, MODE), PolarForms.build(cut, m, SECOND))
+        family, wavenumber = "prismatic", float(m)
+    else:
+        K = axial_wavenumber(tube, n)
+        cut = rings(tube, max(K, 1.0), nodes)
+        if tube.voltage != 0 or control == "voltage":
+            walls = (
+                MeridianDielectricForms.build(cut, K, MODE + ((3, 1),)),
+                MeridianDielectricForms.build(cut, K, SECOND + ((3, 0), (3, 2))),
+            )
+        else:
+            walls = (MeridianForms.build(cut, K, MODE), MeridianForms.build(cut, K, SECOND))
+        family, wavenumber = "axisymmetric", K
+    first, second = (LoadedEnergy(w, FaceForms.build(w, family, wavenumber)) for w in walls)
+    return first, second
+
+
+def loaded_expansion(
+    tube: Tube, mode, control: str, *, nodes: int = 24, side: str | None = None
+) -> TubeExpansion:
+    """The expansion of ``mode`` in ``control`` with the tube's face pressures (and the
+    inner pressure itself when ``control`` is "pressure"): at zero pressures the wall's own
+    coefficient (koiter_tube.py)."""
+    first, second = energies(tube, mode, control, nodes)
+
+    def A(c):
+        return first.stiffness(solve_base_state(tube.at(control, c)))
+
+    start = onset_value(tube, mode, control, side)
+    c, phi = singular_point(A, start, f"{control} of mode {mode}")
+    phi = phi / first.wall.peak_radial(phi, first.wall.slices[0])[1]  # max |u_r| = R_i
+    state = solve_base_state(tube.at(control, c))
+    f1, face1 = first.wall.fields(phi), first.face.fields(phi)
+    A2 = second.stiffness(state)
+    psi = np.linalg.solve(A2, -second.third(state, f1, face1))
+    quartic = first.quartic(state, f1)
+    c2 = (2 * (psi @ A2 @ psi) - 4 * quartic) / (phi @ control_derivative(A, c) @ phi)
+    inner = float(phi[first.wall.slices[0]][0])
+    return TubeExpansion(float(c), float(c2), float(start), inner)

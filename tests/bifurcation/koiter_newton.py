@@ -1,0 +1,37 @@
+"""Newton's method on a tube's full discrete equations along the bifurcated branch, the
+control unknown: the second route to the Koiter coefficient shared by the tests of the
+tube's amplitude equation in other controls and under pressures."""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+def branch_curvature(c_c, mode_vector, node, residual, jacobian, eps_values):
+    """(c(eps) - c_c) / eps^2 for each eps: Newton on residual(c, w) = 0 with the
+    unknown ``node`` (u_r of harmonic 1 where the mode, ``mode_vector`` in the full
+    unknowns, is largest) prescribed to eps times the mode's value, from w = eps mode,
+    c = c_c."""
+    out = []
+    for eps in eps_values:
+        w, c, size = eps * mode_vector, c_c, len(mode_vector)
+        for _ in range(30):
+            h = 1e-3 * max(1.0, abs(c))
+            J = np.zeros((size + 1, size + 1))
+            J[:size, :size] = jacobian(c, w)
+            J[:size, size] = (residual(c + h, w) - residual(c - h, w)) / (2 * h)
+            J[size, node] = 1.0
+            rhs = np.concatenate([residual(c, w), [w[node] - eps * mode_vector[node]]])
+            step = np.linalg.solve(J, rhs)
+            w, c = w - step[:size], c - step[size]
+            if abs(step[size]) < 1e-14:
+                break
+        out.append((c - c_c) / eps**2)
+    return out
+
+
+def richardson(D):
+    """The eps -> 0 limit of D(eps) = c_2 + c_4 eps^2 + c_6 eps^4 at eps, 2 eps, 4 eps (or
+    of c_2 + c_4 eps^2 from two values)."""
+    R1 = [(4 * D[i] - D[i + 1]) / 3 for i in range(len(D) - 1)]
+    return R1[0] if len(R1) == 1 else (16 * R1[0] - R1[1]) / 15
