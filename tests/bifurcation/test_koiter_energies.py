@@ -153,6 +153,41 @@ def test_mooney_rivlin_at_fixed_axial_stretch_is_a_stiffer_neo_hookean():
     assert abs(plain.coefficient - nh.coefficient) > 1e-2 * abs(nh.coefficient)
 
 
+def test_the_identity_holds_under_pressures_and_in_the_voltage_control():
+    """The same identity through the loaded expansion (follower pressures on both faces,
+    koiter_loads.py) and the voltage as the control (dielectric forms): a Mooney-Rivlin film
+    and its neo-Hookean twin have one energy on the constraint, so one branch; at a = 1.3
+    under P_i = 0.02, P_o = 0.05, and at a = 1 (where the twin's modulus is 1) in the
+    voltage, to the same floor as above."""
+    from electrogrowth.bifurcation.koiter_loads import loaded_expansion
+
+    def tube(film, **extra):
+        return Tube(
+            [Layer(1.1, growth=HOOP, **film), Layer(2.0, shear_modulus=0.2)],
+            length=1.0,
+            stretch=1.3,
+            **extra,
+        )
+
+    loads = {"inner_pressure": 0.02, "outer_pressure": 0.05}
+    mr = loaded_expansion(tube({"material": mooney_rivlin(0.3)}, **loads), (12, 0), THETA)
+    nh = loaded_expansion(tube({"shear_modulus": 0.3 + 0.7 * 1.3**2}, **loads), (12, 0), THETA)
+    assert mr.control_value == pytest.approx(nh.control_value, rel=1e-10)
+    assert mr.coefficient == pytest.approx(nh.coefficient, rel=3e-9)
+
+    def charged(film):
+        layers = [
+            Layer(1.1, growth=(1, 1.5, 1), permittivity=2.0, **film),
+            Layer(2.0, shear_modulus=0.2, permittivity=0.5),
+        ]
+        return Tube(layers, length=1.0, stretch=1.0)
+
+    mr = tube_expansion(charged({"material": mooney_rivlin(0.3)}), 12, "voltage", nodes=20)
+    nh = tube_expansion(charged({}), 12, "voltage", nodes=20)
+    assert mr.control_value == pytest.approx(nh.control_value, rel=1e-10)
+    assert mr.coefficient == pytest.approx(nh.coefficient, rel=3e-9)
+
+
 def test_gent_tends_to_neo_hookean_like_one_over_jm():
     """c_2(J_m) - c_2(neo-Hookean) ~ k / J_m: J_m times the difference is the same at
     J_m = 400 and 800 up to O(1 / J_m) (measured -17.40, -17.28, -17.23, -17.20 at J_m =
