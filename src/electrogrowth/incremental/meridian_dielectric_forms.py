@@ -5,8 +5,9 @@ as an extra field (docs/derivation-koiter.md, "The radial voltage, axisymmetric 
 
 As in dielectric_forms.py, the energy with the nominal field E~ = -Grad phi is
 J_g mu_k W(F F_g^-1) - eps_k / (2 J) |cof(F) E~|^2 (any W: strain_energy_forms.py),
-written on the constraint (J -> J_g, the multiplier p~0 = p0 - eps_k e^2). For F = F_m (+) F_tT (the meridian block
-and the hoop stretch) and E~ = (E~_R, E~_Z, 0), cof(F) E~ = F_tT cof(F_m) E~_m, so
+written on the constraint (J -> J_g, the multiplier p~0 = p0 - eps_k e^2). For
+F = F_m (+) F_tT (the meridian block and the hoop stretch) and E~ = (E~_R, E~_Z, 0),
+cof(F) E~ = F_tT cof(F_m) E~_m, so
 
     L = W - eps_k / (2 J_g) F_tT^2 |cof(F_m) E~|^2 - (p~0 + q)(F_tT det F_m - J_g),
 
