@@ -23,9 +23,13 @@ from electrogrowth.sweep import unit
 SRC = Path(__file__).resolve().parents[1] / "src"
 #: Runs the command line, with a file "mark" written once the work is under way: after
 #: each finished point of a curve, when a scan starts.
+#: Both launchers first let SIGINT interrupt, as at a terminal: a process started from a
+#: background job inherits SIGINT ignored, and the package respects an ignored SIGINT.
 LAUNCHER = """\
 import pathlib
+import signal
 import time
+signal.signal(signal.SIGINT, signal.default_int_handler)
 from electrogrowth.cli import app, critical, curve
 
 def point_done(n):
@@ -50,7 +54,9 @@ raise SystemExit(app.main())
 #: The sweep's launcher paces the chunks after the first (one second each) so that a fast
 #: machine cannot finish the whole sweep between the first saved chunk and the signal.
 SWEEP_LAUNCHER = """\
+import signal
 import time
+signal.signal(signal.SIGINT, signal.default_int_handler)
 from electrogrowth.cli import app
 from electrogrowth.sweep import run
 
@@ -256,7 +262,16 @@ def test_ctrl_c_while_the_command_line_loads_is_one_line(monkeypatch, capsys):
     assert capsys.readouterr().err == "electrogrowth: interrupted\n"
 
 
-def test_a_signal_in_a_finaliser_interrupts_the_code_after_it(capsys):
+@pytest.fixture
+def sigint_interrupts():
+    """SIGINT interrupts, as at a terminal: a test run started as a background job inherits
+    it ignored, and the package respects an ignored SIGINT."""
+    before = signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
+    signal.signal(signal.SIGINT, before)
+
+
+def test_a_signal_in_a_finaliser_interrupts_the_code_after_it(capsys, sigint_interrupts):
     """A signal handled inside a __del__ (llvmlite's, while numba compiles: seen once in a
     fresh CI run) raises where Python can only print it; it is delivered again, so the
     block is interrupted all the same and nothing is printed."""
