@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 
 from ..incremental.polar_forms import rings
+from ..incremental.wall_dielectric_forms import WallDielectricForms
 from ..incremental.wall_forms import WallForms
 from ..model.layers import Tube
 from .koiter_tube import TubeExpansion, axial_wavenumber, expand, onset_value
@@ -37,23 +38,33 @@ SECOND = (
 )
 
 
-def wall_forms(tube: Tube, mode: tuple[int, int], harmonics, nodes: int, **kw) -> WallForms:
+#: the potential's harmonics under a voltage: the mode's and the correction's
+POTENTIAL = ((4, 1, 1),), ((4, 0, 0), (4, 2, 0), (4, 0, 2), (4, 2, 2))
+
+
+def wall_forms(
+    tube: Tube, mode: tuple[int, int], harmonics, nodes: int, *, charged=False, **kw
+) -> WallForms:
     """The forms of ``harmonics`` for the wrinkle ``mode`` = (m, n): K = n pi / L, the rings
     cut for a decay rate hypot(m, K) (as the prismatic and axisymmetric families at n = 0
-    and m = 0)."""
+    and m = 0); with the potential's energy when ``charged``."""
     m, n = mode
     K = axial_wavenumber(tube, n) if n else 0.0
     cut = rings(tube, max(math.hypot(m, K), 1.0), nodes)
-    return WallForms.build(cut, m, K, harmonics, **kw)
+    kind = WallDielectricForms if charged else WallForms
+    return kind.build(cut, m, K, harmonics, **kw)
 
 
 def wrinkle_expansion(
     tube: Tube, mode: tuple[int, int], control: str, *, nodes: int = 24, side: str | None = None
 ) -> TubeExpansion:
-    """The Koiter coefficient of the wrinkle ``mode`` = (m, n) of an uncharged,
-    unpressurised tube at fixed axial stretch, in a control that moves its base state
-    (a growth, the stretch)."""
-    first = wall_forms(tube, mode, MODE, nodes)
-    second = wall_forms(tube, mode, SECOND, nodes)
+    """The Koiter coefficient of the wrinkle ``mode`` = (m, n) of an unpressurised tube at
+    fixed axial stretch, in a control that moves its base state (a growth, the stretch,
+    the voltage); under a voltage (or in the voltage control) with the potential, the
+    layers ideal dielectrics."""
+    charged = tube.voltage != 0 or control == "voltage"
+    extra = POTENTIAL if charged else ((), ())
+    first = wall_forms(tube, mode, MODE + extra[0], nodes, charged=charged)
+    second = wall_forms(tube, mode, SECOND + extra[1], nodes, charged=charged)
     start = onset_value(tube, mode, control, side)
     return expand(tube, control, first, second, start, f"{control} of mode {mode}")

@@ -56,8 +56,9 @@ ENTRIES = {
     "zZ": (2, 2),
 }
 
-#: the fields of the Lagrangian: the gradient's entries and the pressure increment
-FIELDS = (*ENTRIES, "q")
+#: the fields of the Lagrangian: the gradient's entries, the pressure increment and the
+#: increment of the nominal field E~ = -Grad phi (the potential's, field 4, when present)
+FIELDS = (*ENTRIES, "q", "ER", "ET", "EZ")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -71,7 +72,8 @@ class Block:
 
 @dataclasses.dataclass
 class WallForms:
-    """The maps of ``harmonics`` ((field, j, l): field 0 = a, 1 = b, 2 = c, 3 = d) to the
+    """The maps of ``harmonics`` ((field, j, l): field 0 = a, 1 = b, 2 = c, 3 = d, 4 = e the
+    potential, wall_dielectric_forms.py) to the
     local fields, mode numbers m (around) and K (the reference axial wavenumber), and the
     integral, gradient and Hessian of monomial lists (monomial_forms.py's interface, the
     fields (angles, radii) arrays, the coefficients (radii,) arrays)."""
@@ -102,7 +104,7 @@ class WallForms:
         R, wR, layer, V, D, P = radial_maps(rings_)
         slices, at = [], 0
         for field, _j, _l in harmonics:
-            size = P.shape[1] if field == 3 else V.shape[1]
+            size = {3: P.shape[1], 4: V.shape[1] - 2}.get(field, V.shape[1])
             slices.append(slice(at, at + size))
             at += size
         blocks: dict = {k: [] for k in FIELDS}
@@ -118,21 +120,17 @@ class WallForms:
     def lagrangian(self, state) -> dict[int, list]:
         """The monomials of L = J_g mu_k W(F F_g^-1) - (p0 + q)(det F - J_g) order by order
         (1 to 4) in (G, q), their coefficients at the radial points."""
-        c = coefficient_arrays(self, state)
-        diagonal = {(0, 0): c["cofT"], (1, 1): c["cofR"], (2, 2): np.full_like(self.R, c["lz"])}
-        F = {}
-        for name, key in ENTRIES.items():
-            F[key] = {(name,): 1.0}
-            if key in diagonal:
-                F[key][()] = diagonal[key]
-        det: dict = {}
-        for perm, sign in _PERMUTATIONS:
-            term = times(times(F[0, perm[0]], F[1, perm[1]]), F[2, perm[2]])
-            for k, v in term.items():
-                det[k] = det.get(k, 0.0) + sign * v
+        return self.with_constraint(state, coefficient_arrays(self, state))
+
+    def with_constraint(self, state, c: dict, *extra) -> dict[int, list]:
+        """The strain energy and the constraint with the multiplier ``c["p0"]``, plus the
+        ``extra`` terms (scale, polynomial), order by order (1 to 4)."""
+        F = deformation(c, self.R)
+        det = determinant(F)
         out = by_degree(
             (-1.0, times({(): c["p0"], ("q",): 1.0}, det)),
             (1.0, times({("q",): 1.0}, {(): c["J"]})),
+            *extra,
         )
         energy = strain_energy(self, state, F)
         return {k: out.get(k, []) + energy.get(k, []) for k in range(1, 5)}
@@ -223,6 +221,28 @@ _PERMUTATIONS = (
 )
 
 
+def deformation(c: dict, R: FloatArray) -> dict:
+    """F = F0 + G entry by entry ({(i, J): polynomial}), F0 = diag(r0', r0 / R, lambda_z)
+    from the base state's ``c`` (polar_forms.coefficient_arrays)."""
+    diagonal = {(0, 0): c["cofT"], (1, 1): c["cofR"], (2, 2): np.full_like(R, c["lz"])}
+    F = {}
+    for name, key in ENTRIES.items():
+        F[key] = {(name,): 1.0}
+        if key in diagonal:
+            F[key][()] = diagonal[key]
+    return F
+
+
+def determinant(F: dict) -> dict:
+    """det F as a polynomial (cubic in the fields)."""
+    det: dict = {}
+    for perm, sign in _PERMUTATIONS:
+        term = times(times(F[0, perm[0]], F[1, perm[1]]), F[2, perm[2]])
+        for k, v in term.items():
+            det[k] = det.get(k, 0.0) + sign * v
+    return det
+
+
 def _period(number: float, points: int) -> FloatArray:
     """Equispaced points of one period 2 pi / number; one point when the direction has no
     wave (number 0: every harmonic is constant there)."""
@@ -252,4 +272,11 @@ def _derivatives(field, nt, nz, T, Z, R, V, D, P):
         ]
     if field == 2:  # U_z = c cos sin
         return [("zR", ct * sz, D), ("zT", st * sz, -nt * inv * V), ("zZ", ct * cz, nz * V)]
+    if field == 4:  # phi = e cos cos, zero on the electrodes (the faces): E~ = -Grad phi
+        E = V[:, 1:-1]
+        return [
+            ("ER", ct * cz, -D[:, 1:-1]),
+            ("ET", st * cz, nt * inv * E),
+            ("EZ", ct * sz, nz * E),
+        ]
     return [("q", ct * cz, P)]
