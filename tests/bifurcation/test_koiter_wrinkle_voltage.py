@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 from electrogrowth.basestate.tube import solve_base_state
+from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.bifurcation.koiter import koiter_coefficient
 from electrogrowth.bifurcation.koiter_tube import SECOND as PLANE_SECOND
 from electrogrowth.bifurcation.koiter_tube import axial_wavenumber, expand, onset_value
@@ -135,3 +136,21 @@ def test_without_a_voltage_the_potential_decouples():
 def test_a_face_pressure_is_refused_for_a_wrinkle_in_one_line():
     with pytest.raises(ParameterError, match="unpressurised faces for a wrinkle"):
         koiter_coefficient(dataclasses.replace(_tube(0.1), outer_pressure=0.01), (4, 1), THETA)
+
+
+def test_two_controls_through_one_onset_point():
+    """At the onset of (4, 1) in the voltage (hoop growth 1.6), V_2 = -g_2 dV_c/dg
+    (docs/derivation-koiter.md, "Two controls through one onset point"), the slope from
+    the package's critical voltages at g +- h, h = 0.01, 0.005, Richardson-extrapolated:
+    measured 21.6079234827 against V_2 = 21.6079236244 (6.6e-9). This checks A'(Vbar) of
+    the charged forms against the package's independent critical curve."""
+    ev = wrinkle_expansion(_tube(0.0, growth=(1, 1.6, 1)), (4, 1), "voltage", nodes=16)
+    eg = wrinkle_expansion(_tube(ev.control_value), (4, 1), THETA, nodes=16)
+    assert eg.control_value == pytest.approx(1.6, rel=1e-10)
+
+    def critical_voltage(g):
+        return critical_value(_tube(0.0, growth=(1, g, 1)), 4, 1, "voltage", rtol=1e-12).value
+
+    d = [(critical_voltage(1.6 + h) - critical_voltage(1.6 - h)) / (2 * h) for h in (0.01, 0.005)]
+    slope = (4 * d[1] - d[0]) / 3
+    assert -eg.coefficient * slope == pytest.approx(ev.coefficient, rel=1e-7)
