@@ -7,9 +7,8 @@ the limit of a thin stiff film on a thick tube; and a tube's prismatic modes (m,
 axisymmetric modes (0, n) (koiter_tube.py: layers of any strain energy, constant growth,
 axial stretch prescribed; a radial voltage on ideal dielectrics; follower pressures on the
 faces, koiter_loads.py) in a growth control, the voltage, the axial stretch or the inner
-pressure (koiter_controls.py), and the wrinkles (m, n), m, n >= 1, of unpressurised
-tubes (a voltage on ideal dielectrics) in a growth, the voltage or the stretch
-(koiter_wall.py): c = c_c + c_2 eps^2 with
+pressure (koiter_controls.py), and the wrinkles (m, n), m, n >= 1, of the same tubes in
+the same controls (koiter_wall.py): c = c_c + c_2 eps^2 with
 eps = max |u_r| / R_i, supercritical when c_2 has the sign of the control's direction
 (> 0 for a growth). Other cases raise a one-line
 :class:`~electrogrowth.errors.ParameterError`.
@@ -102,7 +101,7 @@ def koiter_coefficient(
     mode : None or (m, 0) or (0, n) or (m, n)
         The film: None (K_c maximises lambda_c). A tube: a prismatic mode (m, 0), m >= 2,
         an axisymmetric mode (0, n), n >= 1 (axial wavenumber n pi / L in the
-        reference length), or a wrinkle (m, n), m, n >= 1 (unpressurised faces).
+        reference length), or a wrinkle (m, n), m, n >= 1.
     control : str
         The film: "stretch", the compressive stretch lambda. A tube: a growth control
         ("growth", "growth[K]", "growth[K].theta", ...), "voltage", "stretch" or
@@ -174,9 +173,9 @@ def _tube_result(tube: Tube, mode, control: str, side: str | None = None) -> Koi
 def _expansion(tube: Tube, mode, control: str, nodes: int, side: str | None) -> TubeExpansion:
     """The expansion of ``mode``: with the faces' load when the tube is pressurised or the
     pressure is the control (koiter_loads.py), else the wall's alone (koiter_tube.py)."""
-    if mode[0] != 0 and mode[1] != 0:  # unpressurised (_tube_not_covered)
-        return wrinkle_expansion(tube, mode, control, nodes=nodes, side=side)
     loaded = tube.inner_pressure != 0 or tube.outer_pressure != 0 or control == "pressure"
+    if mode[0] != 0 and mode[1] != 0 and not loaded:  # an unloaded wrinkle, charged or not
+        return wrinkle_expansion(tube, mode, control, nodes=nodes, side=side)
     charged = mode[1] != 0 and (tube.voltage != 0 or control == "voltage")
     if loaded or charged:  # the axisymmetric family's potential lives there too
         return loaded_expansion(tube, mode, control, nodes=nodes, side=side)
@@ -206,11 +205,6 @@ def _tube_not_covered(tube: Tube, family: str, control: str) -> str:
     """What the tube lacks for the expansion, in words ("" when covered)."""
     if tube.stretch is None:
         return "the axial stretch prescribed (not the axial force)"
-    if family == "wrinkle" and (tube.inner_pressure or tube.outer_pressure):
-        return (
-            "unpressurised faces for a wrinkle (m, n), m, n >= 1 "
-            "(pressures are covered for the modes (m, 0) and (0, n))"
-        )
     for ply in tube.layers:
         if ply.graded:
             return "constant growth in every layer"

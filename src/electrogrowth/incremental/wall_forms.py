@@ -98,9 +98,7 @@ class WallForms:
         for field, j, l in harmonics:
             if (field == 1 and j * m == 0) or (field == 2 and l * K == 0):
                 raise ParameterError(f"harmonic {(field, j, l)} is sin(0): no field")
-        theta = _period(m, angular_points)
-        Z = _period(K, angular_points)
-        T, Zg = (x.ravel() for x in np.meshgrid(theta, Z, indexing="ij"))
+        T, Zg = angular_grid(m, K, angular_points)
         R, wR, layer, V, D, P = radial_maps(rings_)
         slices, at = [], 0
         for field, _j, _l in harmonics:
@@ -241,6 +239,13 @@ def determinant(F: dict) -> dict:
         for k, v in term.items():
             det[k] = det.get(k, 0.0) + sign * v
     return det
+
+
+def angular_grid(m: float, K: float, points: int) -> tuple[FloatArray, FloatArray]:
+    """(Theta, Z) of the tensor grid of ``points`` a period in each direction, flattened."""
+    theta, Z = _period(m, points), _period(K, points)
+    T, Zg = np.meshgrid(theta, Z, indexing="ij")
+    return T.ravel(), Zg.ravel()
 
 
 def _period(number: float, points: int) -> FloatArray:
