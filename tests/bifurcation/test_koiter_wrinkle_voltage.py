@@ -7,8 +7,6 @@ voltage the potential decouples."""
 
 from __future__ import annotations
 
-import dataclasses
-
 import numpy as np
 import pytest
 
@@ -24,7 +22,6 @@ from electrogrowth.bifurcation.koiter_wall import (
     wall_forms,
     wrinkle_expansion,
 )
-from electrogrowth.errors import ParameterError
 from electrogrowth.incremental.dielectric_forms import DielectricForms
 from electrogrowth.incremental.meridian_dielectric_forms import MeridianDielectricForms
 from electrogrowth.incremental.polar_forms import rings
@@ -131,11 +128,6 @@ def test_without_a_voltage_the_potential_decouples():
     r = koiter_coefficient(_tube(0.2), (4, 1), THETA)
     assert r.error_estimate < 1e-6 * abs(r.coefficient)
     assert r.branch == ("supercritical" if r.coefficient > 0 else "subcritical")
-
-
-def test_a_face_pressure_is_refused_for_a_wrinkle_in_one_line():
-    with pytest.raises(ParameterError, match="unpressurised faces for a wrinkle"):
-        koiter_coefficient(dataclasses.replace(_tube(0.1), outer_pressure=0.01), (4, 1), THETA)
 
 
 def test_two_controls_through_one_onset_point():
