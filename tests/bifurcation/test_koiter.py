@@ -288,7 +288,7 @@ def test_uncovered_cases_raise_one_line():
     with pytest.raises(ParameterError, match="prismatic modes"):
         koiter_coefficient(Tube.uniform(1.5, 1.0, 1.0, 1.0, 0.0))
     with pytest.raises(ParameterError, match="axisymmetric modes"):
-        koiter_coefficient(Tube.uniform(1.5, 1.0, 1.0, 1.0, 0.0), mode=(2, 1), control="growth")
+        koiter_coefficient(Tube.uniform(1.5, 1.0, 1.0, 1.0, 0.0), mode=(1, 0), control="growth")
     with pytest.raises(ParameterError, match="covers growth, voltage, stretch, pressure"):
         koiter_coefficient(Tube.uniform(1.5, 1.0, 1.0, 1.0, 0.0), mode=(4, 0), control="force")
     with pytest.raises(ParameterError, match="axial stretch prescribed"):

@@ -7,9 +7,10 @@ the limit of a thin stiff film on a thick tube; and a tube's prismatic modes (m,
 axisymmetric modes (0, n) (koiter_tube.py: layers of any strain energy, constant growth,
 axial stretch prescribed; a radial voltage on ideal dielectrics; follower pressures on the
 faces, koiter_loads.py) in a growth control, the voltage, the axial stretch or the inner
-pressure (koiter_controls.py): c = c_c + c_2 eps^2 with eps = max |u_r| / R_i,
-supercritical when c_2 has the sign of the control's direction (> 0 for a growth).
-Wrinkles (m, n) with m, n >= 1 and other cases raise a one-line
+pressure (koiter_controls.py), and the wrinkles (m, n), m, n >= 1, of the same tubes in
+the same controls (koiter_wall.py): c = c_c + c_2 eps^2 with
+eps = max |u_r| / R_i, supercritical when c_2 has the sign of the control's direction
+(> 0 for a growth). Other cases raise a one-line
 :class:`~electrogrowth.errors.ParameterError`.
 """
 
@@ -35,6 +36,7 @@ from .koiter_tube import (
     axisymmetric_expansion,
     tube_expansion,
 )
+from .koiter_wall import wrinkle_expansion
 from .verdict import Verdict
 
 __all__ = [
@@ -59,8 +61,9 @@ class KoiterResult:
     vertical displacement of the free face, K_c the reference wavenumber, both in film
     thicknesses); ``wavenumber`` K_c. Tube: c the control; eps = max_R |u_r| / R_i
     of the mode (R_i = 1, the undeformed inner radius); ``wavenumber`` m of a prismatic
-    mode (m, 0), the reference axial wavenumber K = n pi / L of an axisymmetric one (0, n).
-    ``branch`` is "supercritical" when the branch exists beyond onset, in the direction
+    mode (m, 0), the reference axial wavenumber K = n pi / L of an axisymmetric one (0, n)
+    or of a wrinkle (m, n) (max |u_r| at cos(m Theta) cos(K Z) = 1). ``branch`` is
+    "supercritical" when the branch exists beyond onset, in the direction
     the control moves to reach it (lambda_2 < 0 for the compressive stretch, > 0 for
     growth), else "subcritical"; ``error_estimate`` the change of the coefficient from a
     resolution 3/4 as fine (spectral convergence: it bounds the error of the finer)."""
@@ -95,10 +98,10 @@ def koiter_coefficient(
         A flat film on a half-space, or a tube (layers of any strain energy with constant
         growth, the axial stretch prescribed; follower pressures on the faces; a radial
         voltage on ideal dielectrics).
-    mode : None or (m, 0) or (0, n)
+    mode : None or (m, 0) or (0, n) or (m, n)
         The film: None (K_c maximises lambda_c). A tube: a prismatic mode (m, 0), m >= 2,
-        or an axisymmetric mode (0, n), n >= 1 (axial wavenumber n pi / L in the
-        reference length).
+        an axisymmetric mode (0, n), n >= 1 (axial wavenumber n pi / L in the
+        reference length), or a wrinkle (m, n), m, n >= 1.
     control : str
         The film: "stretch", the compressive stretch lambda. A tube: a growth control
         ("growth", "growth[K]", "growth[K].theta", ...), "voltage", "stretch" or
@@ -152,8 +155,10 @@ def _tube_result(tube: Tube, mode, control: str, side: str | None = None) -> Koi
     why = _tube_not_covered(tube, family, control)
     if why:
         raise ParameterError(f"the tube's amplitude equation needs {why}")
-    number = int(mode[0] if family == "prismatic" else mode[1])
-    wavenumber = float(number) if family == "prismatic" else axial_wavenumber(tube, number)
+    if family == "prismatic":
+        wavenumber = float(mode[0])
+    else:  # the axial wavenumber K = n pi / L (a wrinkle's m is in its mode)
+        wavenumber = axial_wavenumber(tube, int(mode[1]))
     fine, coarse = (_expansion(tube, mode, control, nodes, side) for nodes in (24, 18))
     return KoiterResult(
         coefficient=fine.coefficient,
@@ -169,6 +174,8 @@ def _expansion(tube: Tube, mode, control: str, nodes: int, side: str | None) -> 
     """The expansion of ``mode``: with the faces' load when the tube is pressurised or the
     pressure is the control (koiter_loads.py), else the wall's alone (koiter_tube.py)."""
     loaded = tube.inner_pressure != 0 or tube.outer_pressure != 0 or control == "pressure"
+    if mode[0] != 0 and mode[1] != 0 and not loaded:  # an unloaded wrinkle, charged or not
+        return wrinkle_expansion(tube, mode, control, nodes=nodes, side=side)
     charged = mode[1] != 0 and (tube.voltage != 0 or control == "voltage")
     if loaded or charged:  # the axisymmetric family's potential lives there too
         return loaded_expansion(tube, mode, control, nodes=nodes, side=side)
@@ -178,17 +185,19 @@ def _expansion(tube: Tube, mode, control: str, nodes: int, side: str | None) -> 
 
 
 def _tube_family(mode) -> str:
-    """ "prismatic" for (m, 0), m >= 2, "axisymmetric" for (0, n), n >= 1, else the one-line
-    ParameterError naming what is covered."""
+    """ "prismatic" for (m, 0), m >= 2, "axisymmetric" for (0, n), n >= 1, "wrinkle" for
+    (m, n), m, n >= 1, else the one-line ParameterError naming what is covered."""
     if isinstance(mode, tuple) and len(mode) == 2:
         m, n = mode
         if n == 0 and m >= 2:
             return "prismatic"
         if m == 0 and n >= 1:
             return "axisymmetric"
+        if m >= 1 and n >= 1:
+            return "wrinkle"
     raise ParameterError(
         f"mode = {mode!r}: the tube's amplitude equation covers prismatic modes (m, 0), "
-        "m >= 2, and axisymmetric modes (0, n), n >= 1, so far (not wrinkles (m, n))"
+        "m >= 2, axisymmetric modes (0, n), n >= 1, and wrinkles (m, n), m, n >= 1"
     )
 
 

@@ -18,6 +18,7 @@ from ..model.controls import check_side, parse_control
 COVERED = {
     "prismatic": ("growth", "voltage", "stretch", "pressure"),
     "axisymmetric": ("growth", "voltage", "stretch", "pressure"),
+    "wrinkle": ("growth", "voltage", "stretch", "pressure"),
 }
 
 

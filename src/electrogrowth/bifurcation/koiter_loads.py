@@ -2,8 +2,8 @@
 or the inner pressure as the control (docs/derivation-koiter.md, "Pressures on the
 faces"), and of the axisymmetric modes under a radial voltage ("The radial voltage,
 axisymmetric family"): the wall's forms (polar, meridian, with the potential under a
-voltage) plus the load's
-potential (incremental/pressure_forms.py), in the expansion of koiter_tube.py,
+voltage; the wrinkles' 3D forms) plus the load's potential (incremental/pressure_forms.py,
+wall_pressure_forms.py for the wrinkles), in the expansion of koiter_tube.py,
 
     c_2 = (2 A[psi, psi] - 4 E4(phi)) / A'[phi, phi],   A psi = -grad E3(phi),
 
@@ -21,6 +21,7 @@ from ..incremental.meridian_dielectric_forms import MeridianDielectricForms
 from ..incremental.meridian_forms import MeridianForms
 from ..incremental.polar_forms import PolarForms, rings
 from ..incremental.pressure_forms import FaceForms
+from ..incremental.wall_pressure_forms import WallFaceForms
 from ..model.layers import Tube
 from .koiter_film import MODE
 from .koiter_tube import (
@@ -31,6 +32,9 @@ from .koiter_tube import (
     onset_value,
     singular_point,
 )
+from .koiter_wall import MODE as WALL_MODE
+from .koiter_wall import POTENTIAL, wall_forms
+from .koiter_wall import SECOND as WALL_SECOND
 
 
 @dataclasses.dataclass
@@ -38,7 +42,7 @@ class LoadedEnergy:
     """The wall's forms on some harmonics with the faces' load on the same unknowns."""
 
     wall: object
-    face: FaceForms
+    face: FaceForms | WallFaceForms
 
     def stiffness(self, state):
         """A: the wall's Hessian plus the load's."""
@@ -56,8 +60,16 @@ class LoadedEnergy:
 
 
 def energies(tube: Tube, mode, control: str, nodes: int) -> tuple[LoadedEnergy, LoadedEnergy]:
-    """The mode's and the correction's loaded energies of ``mode`` ((m, 0) or (0, n))."""
+    """The mode's and the correction's loaded energies of ``mode`` ((m, 0), (0, n) or a
+    wrinkle (m, n): koiter_wall.py's forms with incremental/wall_pressure_forms.py)."""
     m, n = mode
+    if m != 0 and n != 0:
+        charged = tube.voltage != 0 or control == "voltage"
+        extra = POTENTIAL if charged else ((), ())
+        harmonics = (WALL_MODE + extra[0], WALL_SECOND + extra[1])
+        walls = [wall_forms(tube, mode, h, nodes, charged=charged) for h in harmonics]
+        first, second = (LoadedEnergy(w, WallFaceForms.of(w)) for w in walls)
+        return first, second
     if n == 0:
         cut = rings(tube, m, nodes)
         if tube.voltage != 0 or control == "voltage":

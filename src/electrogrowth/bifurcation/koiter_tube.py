@@ -79,7 +79,7 @@ def tube_expansion(
     first = PolarForms.build(cut, m, MODE)
     second = PolarForms.build(cut, m, SECOND)
     start = onset_value(tube, (m, 0), control, side)
-    return _expand(tube, control, first, second, start, f"{control} of mode ({m}, 0)")
+    return expand(tube, control, first, second, start, f"{control} of mode ({m}, 0)")
 
 
 def onset_value(tube: Tube, mode: tuple[int, int], control: str, side: str | None) -> float:
@@ -112,7 +112,7 @@ def axisymmetric_expansion(
     first = MeridianForms.build(cut, K, MODE)
     second = MeridianForms.build(cut, K, SECOND)
     start = onset_value(tube, (0, n), control, side)
-    return _expand(tube, control, first, second, start, f"{control} of mode (0, {n})")
+    return expand(tube, control, first, second, start, f"{control} of mode (0, {n})")
 
 
 def dielectric_expansion(
@@ -125,10 +125,10 @@ def dielectric_expansion(
     first = DielectricForms.build(cut, m, MODE + ((3, 1),))
     second = DielectricForms.build(cut, m, SECOND + ((3, 0), (3, 2)))
     start = onset_value(tube, (m, 0), control, side)
-    return _expand(tube, control, first, second, start, f"{control} of mode ({m}, 0)")
+    return expand(tube, control, first, second, start, f"{control} of mode ({m}, 0)")
 
 
-def _expand(tube, control, first, second, start, what) -> TubeExpansion:
+def expand(tube, control, first, second, start, what) -> TubeExpansion:
     """c_2 = (2 A[psi, psi] - 4 E4(phi)) / A'[phi, phi] on monomial forms: the critical
     value refined where A(c) is singular, the mode scaled to max |u_r| = 1, the correction
     A psi = -C[phi, phi, .] / 2 = -grad E3(phi) on ``second``'s harmonics."""

@@ -151,30 +151,8 @@ class PolarForms(MonomialForms):
         )
 
     def coefficients(self, state) -> dict:
-        """The base state at the quadrature points: J_g mu_k / g_r^2, J_g mu_k / g_t^2, p0,
-        lambda_z, r / R, r' (= J_g R / (lambda_z r)), J_g."""
-        tube = state.tube
-        lz = state.stretch
-        out = {k: np.zeros_like(self.R) for k in ("cr", "ct", "p0", "cofR", "cofT", "J")}
-        for k, ply in enumerate(tube.layers):
-            sel = self.layer == k
-            if not sel.any():
-                continue
-            if ply.graded:
-                raise ParameterError("graded growth is not covered by the amplitude equation yet")
-            gr, gt, gz = ply.growth
-            J = gr * gt * gz
-            R = self.R[sel]
-            r = state.radius(R)
-            mu = ply.shear_modulus
-            out["J"][sel] = J
-            out["cr"][sel] = J * mu / gr**2
-            out["ct"][sel] = J * mu / gt**2
-            out["p0"][sel] = state.pressure(R)
-            out["cofR"][sel] = r / R  # cof(F0)_rR = F0_tT
-            out["cofT"][sel] = J * R / (lz * r)  # cof(F0)_tT = F0_rR = r'
-        out["lz"] = lz
-        return out
+        """The base state at the quadrature points (:func:`coefficient_arrays`)."""
+        return coefficient_arrays(self, state)
 
     def lagrangian(self, state) -> dict[int, list]:
         """The monomials of L = J_g mu_k W(F F_g^-1) - (p0 + q)(lambda_z det F_2 - J_g)
@@ -250,6 +228,34 @@ class PolarForms(MonomialForms):
         L -= fa["rT"][:, None] * M["tR"] + fa["tR"][:, None] * M["rT"]
         T = M["q"].T @ (w[:, None] * L)
         return -(H + T + T.T)
+
+
+def coefficient_arrays(forms, state) -> dict:
+    """The base state at the points ``forms.R`` (of the layers ``forms.layer``):
+    J_g mu_k / g_r^2, J_g mu_k / g_t^2, p0, lambda_z, r / R, r' (= J_g R / (lambda_z r)),
+    J_g."""
+    tube = state.tube
+    lz = state.stretch
+    out = {k: np.zeros_like(forms.R) for k in ("cr", "ct", "p0", "cofR", "cofT", "J")}
+    for k, ply in enumerate(tube.layers):
+        sel = forms.layer == k
+        if not sel.any():
+            continue
+        if ply.graded:
+            raise ParameterError("graded growth is not covered by the amplitude equation yet")
+        gr, gt, gz = ply.growth
+        J = gr * gt * gz
+        R = forms.R[sel]
+        r = state.radius(R)
+        mu = ply.shear_modulus
+        out["J"][sel] = J
+        out["cr"][sel] = J * mu / gr**2
+        out["ct"][sel] = J * mu / gt**2
+        out["p0"][sel] = state.pressure(R)
+        out["cofR"][sel] = r / R  # cof(F0)_rR = F0_tT
+        out["cofT"][sel] = J * R / (lz * r)  # cof(F0)_tT = F0_rR = r'
+    out["lz"] = lz
+    return out
 
 
 def peak_on_rings(rings_, a_nodes: FloatArray) -> tuple[float, float]:
