@@ -9,6 +9,7 @@ is the rule, with the true root computed without the fault.
 
 import dataclasses
 import json
+import math
 from pathlib import Path
 
 import pytest
@@ -242,3 +243,44 @@ def test_collocation_estimate_bounds_its_noise_floor():
     got = critical_value(PARAMS, 0, 1, "growth", method="collocation", rtol=1e-8)
     reference = critical_value(PARAMS, 0, 1, "growth", rtol=1e-14)
     assert got.error_estimate >= abs(got.value - reference.value)
+
+
+def test_secant_estimate_checks_its_straight_line():
+    """A target that turns from one plateau to the other within 1e-9 of its root, as a thin
+    stiff film's does: the secant alone would put the root h / 2 = 6.5e-7 away; the check
+    at the secant's root sends it to Brent's windows, which find the true distance."""
+    root, value = 1.3, 1.3 + 2e-12
+
+    def g(x):
+        return -5e-4 * math.tanh((x - root) / 1e-9)
+
+    assert critical._secant_estimate(g, value, (1.0, 6.0)) is None
+    est = critical._second_resolution(g, value, (1.0, 6.0))
+    assert est == pytest.approx(2e-12, rel=1e-2)
+
+
+def test_secant_estimate_keeps_a_straight_line_far_from_the_value():
+    """A straight target whose root lies 0.3 h back: the check at the secant's root passes
+    and the secant's distance stands (3 evaluations)."""
+    calls = []
+    h = 1e-6 * 1.3
+
+    def g(x):
+        calls.append(x)
+        return 1.3 - 0.3 * h - x
+
+    est = critical._second_resolution(g, 1.3, (1.0, 6.0))
+    assert est == pytest.approx(0.3 * h, rel=1e-6)
+    assert len(calls) == 3
+
+
+def test_a_stiff_thin_films_value_is_certified_and_its_estimate_bounds_its_error():
+    """A film 1e-3 thick and 10^4 times as stiff as its substrate, mode (40, 0): its target
+    is a step at the 1e-8 scale, which made the secant report 5.2e-7 and every such value
+    uncertified. Now the estimate bounds the distance to the value at rtol 1e-14 and is
+    certified."""
+    film = Tube((Layer(1.001, shear_modulus=1e4), Layer(3.0)), length=2.0, stretch=1.0)
+    ref = critical_value(film, 40, 0, "growth[1].theta", rtol=1e-14)
+    point = critical_value(film, 40, 0, "growth[1].theta")
+    assert point.status == "ok"
+    assert abs(point.value - ref.value) <= point.error_estimate <= 1e-10

@@ -348,7 +348,10 @@ def _secant_estimate(g, value: float, path: tuple[float, float]) -> float | None
     x_c to 2e-15 |value|). It is returned only when g changes sign between the value and the
     step back (the root is then interpolated) or between the value and twice the
     extrapolated distance beyond it (one more evaluation): a root of g lies there, as near as
-    the secant says. docs/derivation.md section 6."""
+    the secant says. Farther than STRAIGHT h from the value, one more evaluation at the
+    secant's root checks that g is a straight line over h: a stiff film's target turns
+    from one plateau to the other within 1e-8 of the root, where the secant would put the
+    root at h / 2. docs/derivation.md section 6."""
     lo, hi = min(path), max(path)
     sense = 1.0 if path[1] >= path[0] else -1.0
     h = SECANT_STEP * max(1.0, abs(value))
@@ -362,9 +365,17 @@ def _secant_estimate(g, value: float, path: tuple[float, float]) -> float | None
     if not (math.isfinite(g0) and math.isfinite(g1)) or g1 <= 0.0 or g1 == g0:
         return None
     d = h * g0 / (g1 - g0)  # the secant's root lies at value + sense d
-    if g0 < 0.0:  # bracketed by [back, value]: interpolated
-        return abs(d)
-    beyond = value + 2.0 * sense * d
-    if not (0.0 < d <= h and lo <= beyond <= hi) or g(beyond) >= 0.0:
-        return None
-    return d
+    if g0 >= 0.0:  # the root is beyond the value: it must be bracketed there
+        beyond = value + 2.0 * sense * d
+        if not (0.0 < d <= h and lo <= beyond <= hi) or g(beyond) >= 0.0:
+            return None
+    if abs(d) > STRAIGHT * h and abs(g(value + sense * d)) > STRAIGHT * max(abs(g0), g1):
+        return None  # not a straight line over h: a steep step (a stiff film's target)
+    return abs(d)
+
+
+#: The secant is taken on trust while the root lies within STRAIGHT h of the value (then g
+#: changes across h by ~1/STRAIGHT times its value there: a straight line, or the distance
+#: is overstated, never understated); farther, g at the secant's root must be below
+#: STRAIGHT times its values at the ends, else Brent's windows decide.
+STRAIGHT = 1e-3
