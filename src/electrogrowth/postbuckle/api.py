@@ -24,7 +24,7 @@ from .section import Section, mesh_size
 from .stability import secondaries
 from .wall import check_periods
 
-#: the amplitudes of the branch's curvature estimate, units R_i (Richardson on a and 2a)
+#: the smallest amplitude of the branch's curvature estimate, units R_i (points at a, 2a, 4a)
 CURVATURE_AMPLITUDE = 1e-3
 
 
@@ -152,21 +152,26 @@ def postbuckle(
 
 def initial_curvature(section, tube: Tube, control: str, onset):
     """d(control) / d(a^2) at ``onset`` (an :class:`~.onset.FEOnset` of ``section``) on the
-    perfect branch, Richardson-extrapolated from the amplitudes a = CURVATURE_AMPLITUDE and
-    twice that: (c(a) - c_c) / a^2 = c_2 + O(a^2). The amplitude is read on the face where
-    the critical mode is larger. Returns (the onset point, the two points, c_2, the face,
-    the mode scaled to unit amplitude)."""
+    perfect branch, from its points at a = CURVATURE_AMPLITUDE, 2a and 4a alone: with
+    c(a) = c_c + c_2 a^2 + c_4 a^4 + ..., the difference quotients
+    D_1 = (c(2a) - c(a)) / (3 a^2) = c_2 + 5 c_4 a^2 and
+    D_2 = (c(4a) - c(2a)) / (12 a^2) = c_2 + 20 c_4 a^2 give c_2 = (4 D_1 - D_2) / 3 + O(a^4).
+    The onset value c_c, Brent's zero of a Lanczos eigenvalue (to ~1e-9), does not enter:
+    (c(a) - c_c) / a^2 would multiply its error by 1 / a^2 = 1e6. The amplitude is read on
+    the face where the critical mode is larger. Returns (the onset point, the points at a
+    and 2a, c_2, the face, the mode scaled to unit amplitude)."""
     faces = {f: amplitude_vector(section, f) for f in ("inner", "outer")}
     face = max(faces, key=lambda f: abs(faces[f] @ onset.mode))
     direction = onset.mode / (faces[face] @ onset.mode)
     perfect = AmplitudeBranch(section, tube, control, face=face)
     start = BranchPoint(onset.value, 0.0, section.energy(onset.x), onset.x)
     with_stability(section, start)  # eigenvalue zero to the onset's tolerance
-    near = perfect.follow(
-        start, [CURVATURE_AMPLITUDE, 2 * CURVATURE_AMPLITUDE], direction=direction
-    )
-    q = [(p.control - onset.value) / p.amplitude**2 for p in near]
-    return start, near, (4 * q[0] - q[1]) / 3, face, direction
+    a = CURVATURE_AMPLITUDE
+    pts = perfect.follow(start, [a, 2 * a, 4 * a], direction=direction)
+    c = [p.control for p in pts]
+    d1 = (c[1] - c[0]) / (3 * a**2)
+    d2 = (c[2] - c[1]) / (12 * a**2)
+    return start, pts[:2], (4 * d1 - d2) / 3, face, direction
 
 
 def _mode(mode) -> tuple[int, int]:

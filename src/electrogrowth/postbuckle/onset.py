@@ -17,31 +17,91 @@ import numpy as np
 import scipy.optimize as so
 import scipy.sparse.linalg as spla
 
-from ..errors import NoBifurcationFound, ParameterError
+from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
 from ..model.layers import Tube
-from .newton import loaded, newton
+from .newton import fe_error, loaded, newton
 
-#: the shift of the shift-invert eigensolver, units mu: below the lowest eigenvalues met
-#: near onset, above the large negative ones a buckled state never reaches
+#: the first shift of the shift-invert eigensolver, units mu: below the lowest eigenvalues
+#: met near onset; lowered when the spectrum reaches below it (a branch past a secondary
+#: bifurcation, a stiff film whose eigenvalues scale with its modulus)
 SHIFT = -0.5
+#: a shift is lowered at most this many times
+MAX_SHIFTS = 12
+#: a lowered shift lies this fraction of the eigenvalue found below the last one
+MARGIN = 0.01
 
 
 def lowest_eigenvalue(section, x: np.ndarray, *, vector: bool = False):
     """The lowest eigenvalue of the tangent at ``x`` in the sector's subspace (and, with
-    ``vector``, its eigenvector on all unknowns, zero on the prescribed ones, mass-normalised)."""
+    ``vector``, its eigenvector on all unknowns, zero on the prescribed ones, mass-normalised).
+
+    Shift-invert Lanczos returns the eigenvalues nearest its shift, the lowest only when the
+    shift lies below the whole spectrum: an eigenvalue far below it (a branch well past a
+    period-doubling point: -100 mu and less for a stiff film) is farther from the shift than
+    the positive ones and is missed. The factorisation of K - shift M tells whether the
+    number of eigenvalues below the shift is odd (:func:`_odd_below`); then a second Lanczos
+    run on it asks for the most negative nu = 1 / (lambda - shift), which is that eigenvalue,
+    and the shift moves just below it, until none is below (an even number, two crossings
+    between the same branch points, would go unseen)."""
     f = section.free
     K = section.tangent(x)[f][:, f].tocsc()
     M = section.M[f][:, f].tocsc()
-    vals, vecs = spla.eigsh(K, k=2, M=M, sigma=SHIFT, which="LM")
+    massless = int(np.count_nonzero(abs(M).sum(axis=1) == 0))
+    shift = SHIFT
+    for _ in range(MAX_SHIFTS):
+        lu = spla.splu((K - shift * M).tocsc())
+        opinv = spla.LinearOperator(K.shape, matvec=lu.solve, dtype=float)
+        vals, vecs = spla.eigsh(K, k=2, M=M, sigma=shift, which="LM", OPinv=opinv)
+        if vals.min() < shift:
+            below = float(vals.min())
+        elif _odd_below(lu, massless):
+            below = float(spla.eigsh(K, k=1, M=M, sigma=shift, which="SA", OPinv=opinv)[0][0])
+        else:
+            break
+        # just below it (shift-invert's natural use, well conditioned); any eigenvalue
+        # still lower is asked for again
+        shift = below - MARGIN * max(1.0, abs(below))
+    else:
+        raise fe_error(
+            ConvergenceError,
+            f"the tangent's spectrum reaches below {shift:.3g} after {MAX_SHIFTS} lower shifts",
+        )
     i = int(np.argmin(vals))
     if not vector:
         return float(vals[i])
     # one step of the shift-invert iteration sets the pressure and potential parts, which
     # the Lanczos vectors leave undetermined where M is singular (purification)
-    v = spla.spsolve((K - SHIFT * M).tocsc(), M @ vecs[:, i])
+    v = lu.solve(M @ vecs[:, i])
     z = np.zeros(section.basis.N)
     z[f] = v / np.sqrt(v @ (M @ v))
     return float(vals[i]), z
+
+
+def _odd_below(lu, massless: int) -> bool:
+    """Whether an odd number of eigenvalues of K z = lambda M z lie below the shift of
+    ``lu``, the LU factors of K - shift M. Far below the spectrum that matrix has exactly
+    ``massless`` negative eigenvalues (the pressure's and potential's unknowns, which M
+    does not weigh: the constraint's Schur complement and the dielectric's maximum), so its
+    determinant has the sign (-1)^massless; each eigenvalue below the shift flips it
+    (Sylvester). The sign is read off the factors: the diagonal of U and the parities of
+    the row and column permutations (L has a unit diagonal)."""
+    negative = int(np.count_nonzero(lu.U.diagonal() < 0))
+    flips = negative + _odd_permutation(lu.perm_r) + _odd_permutation(lu.perm_c)
+    return (flips + massless) % 2 == 1
+
+
+def _odd_permutation(perm: np.ndarray) -> int:
+    """1 if ``perm`` is odd (its length minus its number of cycles is odd), else 0."""
+    seen = np.zeros(len(perm), dtype=bool)
+    cycles = 0
+    for start in range(len(perm)):
+        if not seen[start]:
+            cycles += 1
+            j = start
+            while not seen[j]:
+                seen[j] = True
+                j = perm[j]
+    return (len(perm) - cycles) % 2
 
 
 def start_value(tube: Tube, control: str) -> float:
