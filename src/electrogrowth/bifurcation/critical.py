@@ -27,11 +27,12 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
+from typing import TYPE_CHECKING
 
 from ..basestate.tube import solve_base_state
 from ..continuation.events import Remembered, brent, widening_windows
 from ..errors import ConvergenceError, NoBifurcationFound, Remedy
-from ..incremental.accuracy import RTOL_RANGE, STABLE_SIGN, Accuracy
+from ..incremental.accuracy import CERTIFIED, RTOL_RANGE, STABLE_SIGN, Accuracy
 from ..incremental.targets import (
     Family,
     check_method,
@@ -47,10 +48,10 @@ from ..summary import critical_html
 from .along import SignedMode, TubeAt
 from .march import ONE_MODE_STEPS, control_path, first_bifurcations
 from .problem import Problem, as_problem
-from .verdict import Verdict, verdict_of
 
-#: a value is certified when its error estimate is at most CERTIFIED rtol max(1, |value|)
-CERTIFIED = 1e4
+if TYPE_CHECKING:
+    from .verdict import Verdict
+
 #: an uncertified value is solved again at rtol / REFINE, down to the smallest rtol
 REFINE = 100.0
 
@@ -117,6 +118,8 @@ class CriticalPoint(Outcome):
     @functools.cached_property
     def verdict(self) -> Verdict:
         """What comes first: this linear result, a crease or the threshold (verdict.py)."""
+        from .verdict import verdict_of  # here: a critical value alone never loads the crease
+
         return verdict_of(self)
 
     def _repr_html_(self) -> str:

@@ -41,7 +41,6 @@ import numpy as np
 from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError, ParameterError
 from .accuracy import Accuracy
-from .collocation import collocation_target
 from .impedance import ALL_PAIRS, STATUS_TEXT, target_batch, target_serial
 from .radial_table import build_table, stack_tables
 
@@ -255,6 +254,9 @@ def _retry(state, modes, status, rtol, max_steps) -> np.ndarray:
 
 def collocation_targets(state, modes, *, nodes: int = 40) -> np.ndarray:
     """Collocation target f for the rows of ``modes``, one mode (and family) at a time."""
+    # imported here: the impedance kernel's evaluations (every march) do not load it
+    from .collocation import collocation_target
+
     modes = np.atleast_2d(np.asarray(modes, dtype=float))
     return np.array(
         [
