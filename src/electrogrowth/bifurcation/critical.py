@@ -29,6 +29,8 @@ import functools
 import math
 from typing import TYPE_CHECKING
 
+import numpy as np
+
 from ..basestate.tube import solve_base_state
 from ..continuation.events import Remembered, brent, widening_windows
 from ..errors import ConvergenceError, NoBifurcationFound, Remedy
@@ -224,7 +226,15 @@ def _solve(params, m, n, solve_for, fam, side, method, rtol, bracket) -> Critica
         loose = targets_for(method, acc.march_signs)
         try:
             res = first_bifurcations(
-                params, solve_for, side, mode, loose, brent_targets=fine, steps=ONE_MODE_STEPS
+                params,
+                solve_for,
+                side,
+                mode,
+                loose,
+                brent_targets=fine,
+                stable_signs=np.array([sref]),  # the sign read above, not read again
+                steps=ONE_MODE_STEPS,
+                at=at,  # the error estimate's first state is the value's, solved by the march
             )
         except NoBifurcationFound as exc:
             exc.remedy = no_bifurcation_remedy(solve_for, mode=(m, n))

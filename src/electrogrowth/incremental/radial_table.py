@@ -238,6 +238,16 @@ def build_table(state, *, tol: float = 1e-15, max_nodes: int = 129) -> RadialTab
 
 def stack_tables(tables: list[RadialTable]) -> TableStack:
     """Pad a list of tables into the one record the batch kernel takes."""
+    if len(tables) == 1:  # one state (a march's step): its arrays as they are, no padding
+        t = tables[0]
+        return TableStack(
+            coef=t.coef[None],
+            n_funcs=t.n_funcs[None],
+            fmap=t.fmap[None],
+            bounds=t.bounds[None],
+            face_pressure=t.face_pressure[None],
+            n_segments=np.array([t.coef.shape[0]], dtype=np.int64),
+        )
     L = max(t.coef.shape[0] for t in tables)
     F = max(t.coef.shape[1] for t in tables)
     C = max(t.coef.shape[2] for t in tables)
