@@ -142,6 +142,11 @@ def test_one_table_stack_is_the_padded_stack(states):
     field by field, in dtype and layout too (another layout would compile the kernel again)."""
     for state in states:
         table = radial_table.build_table(state, tol=1e-12)
+        rows = [table.coef[s, : table.n_funcs[s]] for s in range(table.coef.shape[0])]
+        padded_rows = np.zeros_like(table.coef)  # the padding by hand
+        for s, c in enumerate(rows):
+            padded_rows[s, : c.shape[0]] = c
+        assert _same(table.coef, padded_rows) and table.coef.flags.c_contiguous
         one = radial_table.stack_tables([table])
         padded = radial_table.stack_tables([table, table])
         for a, b in zip(one, padded):
