@@ -153,3 +153,10 @@ def test_one_table_stack_is_the_padded_stack(states):
             b = b[:1]
             assert a.dtype == b.dtype and a.shape == b.shape and _same(a, b)
             assert a.flags.c_contiguous and a.flags.writeable
+
+
+def test_the_families_pairs_are_the_kernels():
+    """modes.py (no kernel loaded) and the kernel mean the same bits by 'every pair'."""
+    from electrogrowth.incremental import impedance, modes
+
+    assert modes.ALL_PAIRS == impedance.ALL_PAIRS == ALL_PAIRS

@@ -132,3 +132,21 @@ def test_lazy_package_faces_keep_their_names():
     assert critical.critical_value is critical_value
     with pytest.raises(AttributeError, match="no_such_name"):
         bifurcation.no_such_name  # noqa: B018
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["critical", "--outer-radius", "-1", "--mode", "0", "1", "--solve-for", "growth"],
+        ["critical", "--outer-radius", "1.4", "--mode", "0", "-1", "--solve-for", "growth"],
+        ["critical", "--outer-radius", "1.4", "--solve-for", "growth", "--method", "fast"],
+    ],
+    ids=["bad-radius", "bad-mode", "bad-method"],
+)
+def test_a_bad_argument_is_named_before_the_solvers_load(argv):
+    # the options (modes, families, methods, scan caps) are read from incremental/modes.py
+    # and bifurcation/options.py, and cli/critical.py imports its solvers once the input
+    # is checked: a mistyped command answers without loading numba
+    status, imported = _imports(argv, ("numba", "scipy", "electrogrowth.bifurcation.critical"))
+    assert status == 2
+    assert imported == []

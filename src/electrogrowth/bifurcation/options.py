@@ -11,7 +11,7 @@ import dataclasses
 import numpy as np
 
 from ..errors import ParameterError
-from ..incremental.targets import MODE_MAX
+from ..incremental.modes import MODE_MAX
 
 #: The largest m and n of a scan: those of a mode (incremental.targets.MODE_MAX, set by
 #: the kernel's step budget); shorter waves tend to the exact short-wave limit.
