@@ -57,7 +57,7 @@ def bounded_int(lowest: int, highest: int, why: str = ""):
 
 
 #: Why the largest m and n a scan may start from, and of one --mode, are bifurcation.scan's
-#: M_CAP and N_CAP (the kernel's step budget, incremental.targets.MODE_MAX); shorter
+#: M_CAP and N_CAP (the kernel's step budget, incremental.modes.MODE_MAX); shorter
 #: waves tend to the exact short-wave (half-space) limit, which every scan computes.
 SHORT_WAVES = (
     "the kernel's step budget; shorter waves tend to the exact short-wave limit,"
@@ -336,7 +336,7 @@ def scan_options_from_args(args) -> ScanOptions:
 
 
 def add_method_option(group, help_text: str) -> None:
-    """--method: how the incremental problem is solved (incremental.targets.Method)."""
+    """--method: how the incremental problem is solved (incremental.modes.Method)."""
     from ..incremental.modes import METHODS  # start-up speed (see top)
 
     group.add_argument("--method", choices=METHODS, default=METHODS[0], help=help_text)
