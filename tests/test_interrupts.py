@@ -30,7 +30,8 @@ import pathlib
 import signal
 import time
 signal.signal(signal.SIGINT, signal.default_int_handler)
-from electrogrowth.cli import app, critical, curve
+from electrogrowth.bifurcation import scan
+from electrogrowth.cli import app, curve
 
 def point_done(n):
     pathlib.Path("mark").write_text("point")
@@ -48,7 +49,7 @@ def marking(compute):
     return run
 
 curve.critical_curve = marking(curve.critical_curve)
-critical.scan_modes = marking(critical.scan_modes)
+scan.scan_modes = marking(scan.scan_modes)  # `critical` reads it here when it runs
 raise SystemExit(app.main())
 """
 #: The sweep's launcher paces the chunks after the first (one second each) so that a fast

@@ -13,7 +13,7 @@ Plots live in :mod:`electrogrowth.figures`, sweeps in :mod:`electrogrowth.sweep`
 command line in :mod:`electrogrowth.cli`; docs/architecture.md maps every module.
 """
 
-import importlib
+from . import _lazy
 
 __version__ = "0.1.0"
 
@@ -80,18 +80,12 @@ _EXPORTS = {
     ".sweep.file": ("load_config",),
     ".sweep.run": ("compute_sweep",),
 }
-_MODULE_OF = {name: module for module, names in _EXPORTS.items() for name in names}
+_MODULE_OF = _lazy.module_of(_EXPORTS)
 
 
 def __getattr__(name: str):
     """Import a public name from its module on first use (then it is a plain attribute)."""
-    try:
-        module = _MODULE_OF[name]
-    except KeyError:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}") from None
-    value = getattr(importlib.import_module(module, __name__), name)
-    globals()[name] = value
-    return value
+    return _lazy.attribute(__name__, _MODULE_OF, name, globals())
 
 
 def __dir__() -> list[str]:

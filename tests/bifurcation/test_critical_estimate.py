@@ -81,12 +81,13 @@ ARGV += ["--voltage", "0.4", "--mode", "3", "1"]
 
 @pytest.fixture
 def inaccurate(monkeypatch):
-    import electrogrowth.cli.critical as cli
+    # the command imports its solver from this module when it runs (cli/critical.py)
+    import electrogrowth.bifurcation.critical as solver
 
     def fake(*args, **kwargs):
         return dataclasses.replace(TRUE, error_estimate=3e-4, status=Status.INACCURATE)
 
-    monkeypatch.setattr(cli, "critical_value", fake)
+    monkeypatch.setattr(solver, "critical_value", fake)
 
 
 def test_cli_exits_3_with_a_warning_for_an_inaccurate_value(inaccurate, capsys):
@@ -146,7 +147,8 @@ def test_soft_substrate_scan_is_not_killed_by_an_estimate():
 
 def test_cli_layered_tube_line_shows_only_supported_digits(monkeypatch, capsys):
     """The solved growth also appears in the tube's line (it printed all 17 digits)."""
-    import electrogrowth.cli.critical as cli
+    # the command imports its solver from this module when it runs (cli/critical.py)
+    import electrogrowth.bifurcation.critical as solver
     from electrogrowth.bifurcation.critical import CriticalPoint
     from electrogrowth.outcomes import Kind
 
@@ -159,7 +161,7 @@ def test_cli_layered_tube_line_shows_only_supported_digits(monkeypatch, capsys):
             status=Status.INACCURATE,
         )  # fmt: skip
 
-    monkeypatch.setattr(cli, "critical_value", fake)
+    monkeypatch.setattr(solver, "critical_value", fake)
     bilayer = str(Path(__file__).resolve().parents[2] / "examples" / "bilayer.toml")
     argv = ["critical", "--tube", bilayer, "--solve-for", "growth"]
     assert main(argv + ["--layer", "1", "--component", "theta", "--mode", "12", "1"]) == 3

@@ -135,3 +135,28 @@ def test_mode_pairs_as_before():
     natural = np.array([[0, 1], [3, 0], [2, 2], [0, 0]], dtype=float)
     assert mode_pairs(natural).tolist() == [ALL_PAIRS & ~U_TH, ALL_PAIRS & ~U_Z, ALL_PAIRS,
                                             ALL_PAIRS & ~U_Z]  # fmt: skip
+
+
+def test_one_table_stack_is_the_padded_stack(states):
+    """stack_tables of one table (its arrays as views) equals the padded stack of several,
+    field by field, in dtype and layout too (another layout would compile the kernel again)."""
+    for state in states:
+        table = radial_table.build_table(state, tol=1e-12)
+        rows = [table.coef[s, : table.n_funcs[s]] for s in range(table.coef.shape[0])]
+        padded_rows = np.zeros_like(table.coef)  # the padding by hand
+        for s, c in enumerate(rows):
+            padded_rows[s, : c.shape[0]] = c
+        assert _same(table.coef, padded_rows) and table.coef.flags.c_contiguous
+        one = radial_table.stack_tables([table])
+        padded = radial_table.stack_tables([table, table])
+        for a, b in zip(one, padded):
+            b = b[:1]
+            assert a.dtype == b.dtype and a.shape == b.shape and _same(a, b)
+            assert a.flags.c_contiguous and a.flags.writeable
+
+
+def test_the_families_pairs_are_the_kernels():
+    """modes.py (no kernel loaded) and the kernel mean the same bits by 'every pair'."""
+    from electrogrowth.incremental import impedance, modes
+
+    assert modes.ALL_PAIRS == impedance.ALL_PAIRS == ALL_PAIRS

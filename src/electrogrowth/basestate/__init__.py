@@ -7,18 +7,46 @@ response curves (:mod:`.layered`). Both states follow one protocol, ``_types.Sta
 May import ``model`` and ``errors``.
 """
 
-from .layered import (
-    LayeredState,
-    layered_threshold,
-    pressure_response,
-    solve_layered_state,
-    voltage_response,
-)
+from typing import TYPE_CHECKING
+
+from .. import _lazy
 from .tube import solve_base_state, threshold, voltage_curve, voltage_threshold
 from .uniform import UniformState
 
 #: The former name of :class:`UniformState` (kept for one release).
 BaseState = UniformState
+
+# The layered solver's names are imported on first use (PEP 562, _lazy.py): the paper's
+# tube does not need it.
+_MODULE_OF = _lazy.module_of(
+    {
+        ".layered": (
+            "LayeredState",
+            "layered_threshold",
+            "pressure_response",
+            "solve_layered_state",
+            "voltage_response",
+        )
+    }
+)
+
+if TYPE_CHECKING:  # the names as the type checker reads them
+    from .layered import (
+        LayeredState,
+        layered_threshold,
+        pressure_response,
+        solve_layered_state,
+        voltage_response,
+    )
+
+
+def __getattr__(name: str):
+    return _lazy.attribute(__name__, _MODULE_OF, name, globals())
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))
+
 
 __all__ = [
     "BaseState",

@@ -17,9 +17,11 @@ from .._types import State
 from ..errors import BaseStateError, ParameterError
 from ..model.layers import Tube
 from .branches import Threshold
-from .layered import LayeredState, layered_threshold, solve_layered_state
 from .uniform import solve_uniform
 from .voltage import UniformWall, nh_asymptote, nh_voltage, threshold_info
+
+# The layered solver (layered.py) is imported where a layered tube is met: the paper's tube
+# (closed forms, uniform.py) does not load it.
 
 __all__ = [
     "free_stretch",
@@ -86,6 +88,8 @@ def solve_base_state(
     """
     if tube.is_uniform:
         return solve_uniform(tube, rtol)
+    from .layered import LayeredState, solve_layered_state
+
     warm = near if isinstance(near, LayeredState) else None
     return solve_layered_state(tube, rtol=rtol, near=warm, guess=guess if warm else None)
 
@@ -109,6 +113,8 @@ def threshold(tube: Tube, control: str = "voltage", *, rtol: float = 1e-12) -> T
             tube.value_of("stretch"),
             info.error,
         )
+    from .layered import layered_threshold
+
     return layered_threshold(tube, control, rtol=rtol)
 
 
@@ -127,6 +133,8 @@ def free_stretch(tube: Tube, *, rtol: float = 1e-12) -> float:
         outer_pressure=0.0,
         closed_ends=False,
     )
+    from .layered import solve_layered_state
+
     return solve_layered_state(free, rtol=rtol).stretch
 
 

@@ -10,12 +10,38 @@ first (:mod:`.verdict`).
 May import ``incremental``, ``basestate``, ``model``, ``outcomes`` and ``errors``.
 """
 
-from .crease import CreaseOnset, crease_onset
-from .critical import CriticalPoint, critical_value, stable_sign
-from .curves import Curve, critical_curve
-from .problem import Problem
-from .scan import ScanOptions, ScanResult, scan_modes
-from .verdict import Verdict
+from typing import TYPE_CHECKING
+
+from .. import _lazy
+
+# Each name is imported on first use (PEP 562, _lazy.py): a critical value imports
+# critical.py and what it needs, not the crease, the curves or the scan.
+_EXPORTS = {
+    ".crease": ("CreaseOnset", "crease_onset"),
+    ".critical": ("CriticalPoint", "critical_value", "stable_sign"),
+    ".curves": ("Curve", "critical_curve"),
+    ".problem": ("Problem",),
+    ".scan": ("ScanOptions", "ScanResult", "scan_modes"),
+    ".verdict": ("Verdict",),
+}
+_MODULE_OF = _lazy.module_of(_EXPORTS)
+
+if TYPE_CHECKING:  # the names as the type checker reads them
+    from .crease import CreaseOnset, crease_onset
+    from .critical import CriticalPoint, critical_value, stable_sign
+    from .curves import Curve, critical_curve
+    from .problem import Problem
+    from .scan import ScanOptions, ScanResult, scan_modes
+    from .verdict import Verdict
+
+
+def __getattr__(name: str):
+    return _lazy.attribute(__name__, _MODULE_OF, name, globals())
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))
+
 
 __all__ = [
     "CriticalPoint",

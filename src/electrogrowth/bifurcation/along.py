@@ -54,6 +54,13 @@ class Neighbours:
         t = (x - x1) / (x1 - x2)
         return s1, (s1.r_i + t * (s1.r_i - s2.r_i), s1.stretch + t * (s1.stretch - s2.stretch))
 
+    def solved_at(self, x: float, rtol: float):
+        """The state solved at exactly x with ``rtol``, or None."""
+        for xs, r, state in self.states:
+            if xs == x and r == rtol:
+                return state
+        return None
+
     def keep(self, x: float, rtol: float, state) -> None:
         self.states.append((x, rtol, state))
         del self.states[: -self.KEEP]
@@ -80,6 +87,10 @@ class TubeAt:
         tube = self(x)
         x = float(x)
         near, guess = self.neighbours.nearest(x, rtol)
+        same = self.neighbours.solved_at(x, rtol)
+        if same is not None and tube.is_uniform:
+            return same  # solved here before (a value, then its error estimate): a uniform
+            # tube's state is a function of the tube alone, so this is the same state
         state = solve_base_state(tube, rtol=rtol, near=near, guess=guess)
         self.neighbours.keep(x, rtol, state)
         return state

@@ -23,6 +23,7 @@ import numpy as np
 
 from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError, ParameterError
+from ..incremental.accuracy import CERTIFY_RTOL
 from ..incremental.targets import collocation_stable_signs, collocation_targets, impedance_targets
 from ..outcomes import Kind
 from .critical import critical_value
@@ -31,7 +32,6 @@ from .problem import Problem
 from .scan import scan_grid
 from .surface import short_wave_limit
 
-CERTIFY_RTOL = 1e-8  # the two methods must agree this well for a certified value
 SURFACE_RTOL = 1e-14  # the half-space value is recomputed at this tolerance
 SIGN_RTOL = 1e-12  # the impedance kernel decides a layered mode's sign this tightly
 

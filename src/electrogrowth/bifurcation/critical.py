@@ -27,11 +27,14 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
+from typing import TYPE_CHECKING
+
+import numpy as np
 
 from ..basestate.tube import solve_base_state
 from ..continuation.events import Remembered, brent, widening_windows
 from ..errors import ConvergenceError, NoBifurcationFound, Remedy
-from ..incremental.accuracy import RTOL_RANGE, STABLE_SIGN, Accuracy
+from ..incremental.accuracy import CERTIFIED, RTOL_RANGE, STABLE_SIGN, Accuracy
 from ..incremental.targets import (
     Family,
     check_method,
@@ -47,10 +50,10 @@ from ..summary import critical_html
 from .along import SignedMode, TubeAt
 from .march import ONE_MODE_STEPS, control_path, first_bifurcations
 from .problem import Problem, as_problem
-from .verdict import Verdict, verdict_of
 
-#: a value is certified when its error estimate is at most CERTIFIED rtol max(1, |value|)
-CERTIFIED = 1e4
+if TYPE_CHECKING:
+    from .verdict import Verdict
+
 #: an uncertified value is solved again at rtol / REFINE, down to the smallest rtol
 REFINE = 100.0
 
@@ -117,6 +120,8 @@ class CriticalPoint(Outcome):
     @functools.cached_property
     def verdict(self) -> Verdict:
         """What comes first: this linear result, a crease or the threshold (verdict.py)."""
+        from .verdict import verdict_of  # here: a critical value alone never loads the crease
+
         return verdict_of(self)
 
     def _repr_html_(self) -> str:
@@ -221,7 +226,15 @@ def _solve(params, m, n, solve_for, fam, side, method, rtol, bracket) -> Critica
         loose = targets_for(method, acc.march_signs)
         try:
             res = first_bifurcations(
-                params, solve_for, side, mode, loose, brent_targets=fine, steps=ONE_MODE_STEPS
+                params,
+                solve_for,
+                side,
+                mode,
+                loose,
+                brent_targets=fine,
+                stable_signs=np.array([sref]),  # the sign read above, not read again
+                steps=ONE_MODE_STEPS,
+                at=at,  # the error estimate's first state is the value's, solved by the march
             )
         except NoBifurcationFound as exc:
             exc.remedy = no_bifurcation_remedy(solve_for, mode=(m, n))

@@ -117,6 +117,7 @@ def first_bifurcations(
     brent_targets: Targets | None = None,
     stable_signs: np.ndarray | None = None,
     steps: StepPolicy = MODE_STEPS,
+    at: TubeAt | None = None,
 ) -> MarchResult:
     """Critical values of the first ``top`` modes of ``modes`` reached by the march.
 
@@ -124,9 +125,10 @@ def first_bifurcations(
     (default ``targets``) for the final roots. ``stable_signs``, the signs of the targets
     on the unloaded tube, are computed unless given (they depend only on the material,
     Rbar_o, L and the modes, so a curve or sweep can reuse them). ``steps``: the step
-    control (ONE_MODE_STEPS for a single mode).
+    control (ONE_MODE_STEPS for a single mode). ``at``: the caller's TubeAt of (params,
+    solve_for), whose states the march then shares.
     """
-    at = TubeAt(params, solve_for)
+    at = TubeAt(params, solve_for) if at is None else at
     if stable_signs is None:
         stable_signs = unloaded_signs(params, modes, targets)
     sref = stable_signs

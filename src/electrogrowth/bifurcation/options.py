@@ -11,9 +11,9 @@ import dataclasses
 import numpy as np
 
 from ..errors import ParameterError
-from ..incremental.targets import MODE_MAX
+from ..incremental.modes import MODE_MAX
 
-#: The largest m and n of a scan: those of a mode (incremental.targets.MODE_MAX, set by
+#: The largest m and n of a scan: those of a mode (incremental.modes.MODE_MAX, set by
 #: the kernel's step budget); shorter waves tend to the exact short-wave limit.
 M_CAP = N_CAP = MODE_MAX
 #: Every m is scanned up to EVERY_M (the modes of small m are irregular); beyond it the

@@ -1,4 +1,8 @@
-"""``electrogrowth critical``: the critical growth factor, axial stretch or voltage."""
+"""``electrogrowth critical``: the critical growth factor, axial stretch or voltage.
+
+The solvers (numba's kernels, scipy) are imported by the functions that call them, once the
+input is checked: a bad argument is named without loading them.
+"""
 
 from __future__ import annotations
 
@@ -7,13 +11,8 @@ import contextlib
 import json
 import math
 
-from ..bifurcation.certify import CERTIFY_RTOL, certify
-from ..bifurcation.critical import CERTIFIED, critical_value
-from ..bifurcation.scan import scan_modes
-from ..bifurcation.verdict import crease_where
-from ..bifurcation.verdict import record as verdict_record
 from ..errors import ParameterError
-from ..incremental.accuracy import check_rtol
+from ..incremental.accuracy import CERTIFIED, CERTIFY_RTOL, check_rtol
 from ..model.controls import parse_control
 from ..outcomes import Kind, Status
 from .options import (
@@ -92,6 +91,10 @@ def run_critical(args) -> int:
     check_side_option(args)
     check_rtol(args.rtol, "--rtol")
     mode = mode_from_args(args)
+    from ..bifurcation.critical import critical_value
+    from ..bifurcation.scan import scan_modes
+    from ..bifurcation.verdict import record as verdict_record
+
     if mode is not None:
         m, n, family = mode
         slow = args.method == "collocation"  # tens of seconds: say what is going on
@@ -171,6 +174,8 @@ def _inaccurate_exit(crit, args) -> int:
 
 def _certify(params, crit, args, result=None) -> dict:
     """The certificate of ``crit`` (and of the scan ``result``'s choice of mode)."""
+    from ..bifurcation.certify import certify
+
     if crit.kind == Kind.SURFACE:
         with stage(args, "certifying the half-space value and the best finite mode", tick=True):
             return certify(params, crit, scan=result).as_dict()
@@ -267,6 +272,8 @@ def _growth_text(growth, rec: dict) -> str:
 
 
 def _print_text(rec: dict, runners: list, scales=None) -> None:
+    from ..bifurcation.verdict import crease_where
+
     name = value_name(rec["solve_for"])
     value = supported(rec["value"], rec["error_estimate"])  # the digits the estimate supports
     if rec["kind"] == Kind.CREASE:
@@ -345,6 +352,8 @@ _TRIGGER = {
 
 def _rival_lines(rec: dict, name: str) -> list[str]:
     """The runner-up crease and threshold, and the verdict in words."""
+    from ..bifurcation.verdict import crease_where
+
     lines = []
     c, t = rec.get("crease"), rec.get("threshold")
     if c is not None and rec["kind"] != Kind.CREASE:

@@ -14,13 +14,14 @@ from .energy import energy_from_args
 from .units import add_unit_options, number_or_quantity
 
 if TYPE_CHECKING:
-    from ..bifurcation.scan import ScanOptions
-    from ..incremental.targets import Family
+    from ..bifurcation.options import ScanOptions
+    from ..incremental.modes import Family
 
-# The mode, scan and method options import bifurcation.scan and incremental.targets inside
-# their functions (an exception to docs/architecture.md's rule, for start-up speed): those
-# modules import numba for the compiled kernels (~0.35 s of CPU per process), which `state`
-# and the tube options every command shares do not need.
+# The mode, scan and method options import bifurcation.options and incremental.modes inside
+# their functions (an exception to docs/architecture.md's rule, for start-up speed): `state`
+# and the tube options every command shares do not need them. Neither imports the compiled
+# kernels (numba, ~0.35 s of CPU per process), so a command's options are configured and a
+# bad argument named before any solver loads.
 
 
 def finite_number(text: str) -> float:
@@ -56,7 +57,7 @@ def bounded_int(lowest: int, highest: int, why: str = ""):
 
 
 #: Why the largest m and n a scan may start from, and of one --mode, are bifurcation.scan's
-#: M_CAP and N_CAP (the kernel's step budget, incremental.targets.MODE_MAX); shorter
+#: M_CAP and N_CAP (the kernel's step budget, incremental.modes.MODE_MAX); shorter
 #: waves tend to the exact short-wave (half-space) limit, which every scan computes.
 SHORT_WAVES = (
     "the kernel's step budget; shorter waves tend to the exact short-wave limit,"
@@ -249,7 +250,7 @@ MODE_COVERAGE = (
 def add_mode_range_options(group, *, top: bool = False) -> None:
     """--m-max and --n-max (and --top): the ScanOptions of a scan, defaults from it."""
     # start-up speed (see top)
-    from ..bifurcation.scan import EVERY_M, M_CAP, N_CAP, TOP_MAX, ScanOptions
+    from ..bifurcation.options import EVERY_M, M_CAP, N_CAP, TOP_MAX, ScanOptions
 
     default = ScanOptions()
     group.add_argument(
@@ -287,8 +288,8 @@ def add_mode_range_options(group, *, top: bool = False) -> None:
 
 def add_mode_option(group) -> None:
     """--mode M N and --family: one mode instead of a scan."""
-    from ..bifurcation.scan import N_CAP  # start-up speed (see top)
-    from ..incremental.targets import FAMILIES
+    from ..bifurcation.options import N_CAP  # start-up speed (see top)
+    from ..incremental.modes import FAMILIES
 
     group.add_argument(
         "--mode",
@@ -320,7 +321,7 @@ def mode_from_args(args) -> tuple[int, int, Family] | None:
                 f"--family {args.family} needs --mode M N (a scan covers every family)"
             )
         return None
-    from ..incremental.targets import check_mode  # start-up speed (see top)
+    from ..incremental.modes import check_mode  # start-up speed (see top)
 
     m, n = args.mode
     return m, n, check_mode(m, n, args.family)
@@ -328,14 +329,14 @@ def mode_from_args(args) -> tuple[int, int, Family] | None:
 
 def scan_options_from_args(args) -> ScanOptions:
     """The ScanOptions of --m-max, --n-max (and --top, where the command has it)."""
-    from ..bifurcation.scan import ScanOptions  # start-up speed (see top)
+    from ..bifurcation.options import ScanOptions  # start-up speed (see top)
 
     top = getattr(args, "top", ScanOptions().top)
     return ScanOptions(m_range=(0, args.m_max), n_range=(1, args.n_max), top=top)
 
 
 def add_method_option(group, help_text: str) -> None:
-    """--method: how the incremental problem is solved (incremental.targets.Method)."""
-    from ..incremental.targets import METHODS  # start-up speed (see top)
+    """--method: how the incremental problem is solved (incremental.modes.Method)."""
+    from ..incremental.modes import METHODS  # start-up speed (see top)
 
     group.add_argument("--method", choices=METHODS, default=METHODS[0], help=help_text)

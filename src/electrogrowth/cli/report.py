@@ -119,7 +119,7 @@ def edge_warning(result) -> str:
     edge of the final m or n range, else "" (the scan widens a range and searches m up to
     the cap; a mode on the edge may still hide a lower one beyond). At the cap itself
     raising --m-max / --n-max cannot help, and the warning says so."""
-    from ..bifurcation.scan import M_CAP, N_CAP  # start-up speed: `state` loads no kernel
+    from ..bifurcation.options import M_CAP, N_CAP  # start-up speed: `state` loads no kernel
 
     c = result.critical
     if c.kind != "bifurcation":

@@ -12,17 +12,48 @@ the accuracy policy (:mod:`.accuracy`) and the named targets ``ImpedanceTarget``
 May import ``basestate``, ``model`` and ``errors``.
 """
 
-from .accuracy import Accuracy
-from .targets import (
-    METHODS,
-    CollocationTarget,
-    Family,
-    ImpedanceTarget,
-    Method,
-    impedance_targets,
-    targets_for,
-    wavenumber,
-)
+from typing import TYPE_CHECKING
+
+from .. import _lazy
+
+# Each name is imported on first use (PEP 562, _lazy.py): the accuracy policy alone (the
+# command line's checks) does not load the compiled kernels.
+_EXPORTS = {
+    ".accuracy": ("Accuracy",),
+    ".targets": (
+        "METHODS",
+        "CollocationTarget",
+        "Family",
+        "ImpedanceTarget",
+        "Method",
+        "impedance_targets",
+        "targets_for",
+        "wavenumber",
+    ),
+}
+_MODULE_OF = _lazy.module_of(_EXPORTS)
+
+if TYPE_CHECKING:  # the names as the type checker reads them
+    from .accuracy import Accuracy
+    from .targets import (
+        METHODS,
+        CollocationTarget,
+        Family,
+        ImpedanceTarget,
+        Method,
+        impedance_targets,
+        targets_for,
+        wavenumber,
+    )
+
+
+def __getattr__(name: str):
+    return _lazy.attribute(__name__, _MODULE_OF, name, globals())
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))
+
 
 __all__ = [
     "Accuracy",

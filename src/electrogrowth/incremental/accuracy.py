@@ -18,6 +18,11 @@ name                   value                              why
 ``SCAN_STABLE_SIGNS``  1e-9                               signs of every mode on the unloaded tube
 ``runners_up``         max(rtol, 1e-9)                    the runners-up of a scan; the critical
                                                           mode is re-solved at ``fine``
+``CERTIFIED``          1e4                                a critical value is certified when its
+                                                          error estimate is at most
+                                                          CERTIFIED rtol max(1, |value|)
+``CERTIFY_RTOL``       1e-8                               the two methods of ``certify`` agree
+                                                          this well (relative)
 =====================  =================================  =========================================
 """
 
@@ -30,6 +35,11 @@ from ..errors import ParameterError
 STABLE_SIGN = 1e-10
 SCAN_SIGNS = 1e-5
 SCAN_STABLE_SIGNS = 1e-9
+#: a value is certified when its error estimate is at most CERTIFIED rtol max(1, |value|)
+#: (bifurcation/critical.py)
+CERTIFIED = 1e4
+#: the two methods must agree this well for a certified value (bifurcation/certify.py)
+CERTIFY_RTOL = 1e-8
 
 
 @dataclasses.dataclass(frozen=True)

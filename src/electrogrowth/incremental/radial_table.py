@@ -221,23 +221,40 @@ def build_table(state, *, tol: float = 1e-15, max_nodes: int = 129) -> RadialTab
     mu, eps = table_units(state)
     segments = _segments(state, mu, eps)
     parts = [_segment_table(a, b, f, tol, max_nodes) for a, b, f in segments]
-    F = max(c.shape[0] for c, _ in parts)
-    C = max(c.shape[1] for c, _ in parts)
-    coef = np.zeros((len(parts), F, C))
-    for s, (c, _) in enumerate(parts):
-        coef[s, : c.shape[0], : c.shape[1]] = c
     bounds = [segments[0][0]] + [b for _, b, _ in segments]
     return RadialTable(
-        coef,
+        _padded([c for c, _ in parts]),
         np.array([c.shape[0] for c, _ in parts], dtype=np.int64),
-        np.stack([fm for _, fm in parts]),
+        np.array([fm for _, fm in parts], dtype=np.int64),
         np.array(bounds, dtype=float),
         np.array(state.face_pressures, dtype=float) / mu,
     )
 
 
+def _padded(rows: list[np.ndarray]) -> np.ndarray:
+    """The (L, F, C) array of the segments' (F_s, C_s) coefficient rows, zero-padded."""
+    if len(rows) == 1:  # one layer (a march's every step): its rows, C-contiguous as the
+        return np.ascontiguousarray(rows[0], dtype=float)[None]  # padded copy would be
+    F = max(c.shape[0] for c in rows)
+    C = max(c.shape[1] for c in rows)
+    coef = np.zeros((len(rows), F, C))
+    for s, c in enumerate(rows):
+        coef[s, : c.shape[0], : c.shape[1]] = c
+    return coef
+
+
 def stack_tables(tables: list[RadialTable]) -> TableStack:
     """Pad a list of tables into the one record the batch kernel takes."""
+    if len(tables) == 1:  # one state (a march's step): its arrays as they are, no padding
+        t = tables[0]
+        return TableStack(
+            coef=t.coef[None],
+            n_funcs=t.n_funcs[None],
+            fmap=t.fmap[None],
+            bounds=t.bounds[None],
+            face_pressure=t.face_pressure[None],
+            n_segments=np.array([t.coef.shape[0]], dtype=np.int64),
+        )
     L = max(t.coef.shape[0] for t in tables)
     F = max(t.coef.shape[1] for t in tables)
     C = max(t.coef.shape[2] for t in tables)

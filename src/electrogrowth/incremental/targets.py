@@ -9,7 +9,8 @@ there, without poles:
 * ``Method.COLLOCATION``: Chebyshev collocation of the full incremental equations
   (collocation.py), one mode at a time.
 
-Every mode belongs to one :class:`Family` (docs/derivation-families.md):
+Every mode belongs to one :class:`Family` (defined in modes.py with the checks of a mode,
+which need no kernel; docs/derivation-families.md):
 
 * ``wrinkle``: the paper's ansatz (eq. incremental-solutions), m >= 0, n >= 1; at m = 0
   the axisymmetric modes (u_r, u_z, phi), the torsional factor excluded;
@@ -33,171 +34,40 @@ pickle and compare by value.
 from __future__ import annotations
 
 import dataclasses
-import enum
 import math
 
 import numpy as np
 
 from ..basestate.tube import solve_base_state
-from ..errors import ConvergenceError, ParameterError
+from ..errors import ConvergenceError
 from .accuracy import Accuracy
-from .collocation import collocation_target
-from .impedance import ALL_PAIRS, STATUS_TEXT, target_batch, target_serial
+from .impedance import STATUS_TEXT, target_batch, target_serial
+from .modes import ALL_PAIRS as ALL_PAIRS
+from .modes import FAMILIES as FAMILIES
+from .modes import METHODS as METHODS
+from .modes import MODE_MAX as MODE_MAX
+from .modes import PHI as PHI
+from .modes import U_R as U_R
+from .modes import U_TH as U_TH
+from .modes import U_Z as U_Z
+from .modes import Family as Family
+from .modes import Method as Method
+from .modes import check_family as check_family
+from .modes import check_method as check_method
+from .modes import check_mode as check_mode
+from .modes import mode_families as mode_families
+from .modes import mode_pairs as mode_pairs
+from .modes import natural_family as natural_family
+from .modes import row_family as row_family
+from .modes import with_family as with_family
 from .radial_table import build_table, stack_tables
 
-#: The largest m and n of a mode: the kernel's steps grow like the decay rate integrated
-#: through the wall, ~1.1 max(m ln(r_o / r_i), k (r_o - r_i)) at rtol 1e-12, so m = 2000
-#: keeps every Rbar_o <= 100 well inside the 20000-step budget (docs/derivation-film.md,
-#: "Large m"); shorter waves tend to the exact short-wave limit (bifurcation/surface.py).
-MODE_MAX = 2000
-
 PARALLEL_FROM = 16  # batches smaller than this run on one thread (thread launch costs more)
-
-#: Bits of the Stroh pairs (U_j, S_j): U_r / r Sigma_rr, U_th / r Sigma_rth,
-#: U_z / r Sigma_rz, r Delta_r / -Phi (collocation: U_r and P, U_th, U_z, Phi).
-U_R, U_TH, U_Z, PHI = 1, 2, 4, 8
-
-
-class Method(enum.StrEnum):
-    """How the incremental problem is solved: the one choice behind every ``method``."""
-
-    IMPEDANCE = "impedance"
-    COLLOCATION = "collocation"
-
-
-METHODS = tuple(m.value for m in Method)
-
-
-class Family(enum.StrEnum):
-    """A family of incremental modes (module docstring): the one name behind ``family``."""
-
-    WRINKLE = "wrinkle"  # the paper's ansatz, m >= 0, n >= 1 (m = 0: axisymmetric)
-    PRISMATIC = "prismatic"  # n = 0, m >= 2: plane strain, the in-plane part at k = 0
-    TORSIONAL = "torsional"  # m = 0, n >= 1: u_th = U_th(r) cos kz
-
-    @property
-    def code(self) -> int:
-        """The number standing for the family in a ``modes`` array (third column)."""
-        return _CODES[self]
-
-    def pairs(self, m: int) -> int:
-        """The Stroh pairs kept for mode number m (bitmask, see ``U_R`` ...)."""
-        if self is Family.PRISMATIC:
-            return ALL_PAIRS & ~U_Z
-        if self is Family.TORSIONAL:
-            return U_TH
-        return ALL_PAIRS if m != 0 else ALL_PAIRS & ~U_TH
-
-
-FAMILIES = tuple(f.value for f in Family)
-_CODES = {f: i for i, f in enumerate(Family)}
-_BY_CODE = tuple(Family)
-
-
-def check_method(method: str) -> Method:
-    """The Method named ``method``, or ParameterError listing the valid names."""
-    try:
-        return Method(method)
-    except ValueError:
-        raise ParameterError(f"method = {method!r} is unknown; choose one of {METHODS}") from None
-
-
-def check_family(family: str) -> Family:
-    """The Family named ``family``, or ParameterError listing the valid names."""
-    try:
-        return Family(family)
-    except ValueError:
-        raise ParameterError(f"family = {family!r} is unknown; choose one of {FAMILIES}") from None
-
-
-def natural_family(m: int, n: int) -> Family:
-    """The family of (m, n) when none is named: prismatic for n = 0, else wrinkle."""
-    return Family.PRISMATIC if n == 0 else Family.WRINKLE
 
 
 def wavenumber(params, n: float) -> float:
     """Axial wavenumber k = n pi / (lambda_z L) in the current configuration."""
     return n * math.pi / (params.stretch * params.length)
-
-
-def check_mode(m, n, family: str | None = None) -> Family:
-    """The family of mode (m, n) (``family``, or the natural one), or ParameterError.
-
-    Valid: wrinkle m >= 0, n >= 1; prismatic n = 0, m >= 2 ((0, 0) is the breathing mode,
-    the base state's own limit point; (1, 0) a rigid translation); torsional m = 0, n >= 1;
-    m, n <= MODE_MAX.
-
-    >>> check_mode(3, 0)
-    <Family.PRISMATIC: 'prismatic'>
-    """
-    whole = all(
-        not isinstance(x, bool)
-        and isinstance(x, (int, float, np.integer, np.floating))
-        and math.isfinite(x)
-        and int(x) == x
-        for x in (m, n)
-    )
-    if not whole or m < 0 or n < 0 or m > MODE_MAX or n > MODE_MAX:
-        raise ParameterError(
-            f"mode (m, n) = ({m}, {n}) is invalid; need integers 0 <= m <= {MODE_MAX},"
-            f" 0 <= n <= {MODE_MAX} (n = 0: prismatic, m >= 2; shorter waves tend to the"
-            " exact short-wave limit, which every scan computes)"
-        )
-    fam = natural_family(m, n) if family is None else check_family(family)
-    where = f"mode (m, n) = ({m:g}, {n:g})"
-    if fam is Family.WRINKLE and n < 1:
-        raise ParameterError(
-            f"{where} is not a wrinkle (n >= 1); n = 0 is the prismatic family (m >= 2)"
-        )
-    if fam is Family.PRISMATIC:
-        if n != 0:
-            raise ParameterError(f"{where} is not prismatic; prismatic modes have n = 0, m >= 2")
-        if m < 2:
-            why = (
-                "the breathing mode, the base state's own limit point"
-                if m == 0
-                else "a rigid translation of the cross-section"
-            )
-            raise ParameterError(
-                f"{where} is invalid: it is {why}; prismatic modes (n = 0) need m >= 2"
-            )
-    if fam is Family.TORSIONAL and (m != 0 or n < 1):
-        raise ParameterError(
-            f"{where} is invalid for the torsional family; torsional modes have m = 0, n >= 1"
-        )
-    return fam
-
-
-def mode_families(modes: np.ndarray) -> np.ndarray:
-    """Family codes of the rows of ``modes``: the third column, or the natural family."""
-    if modes.shape[1] > 2:
-        return modes[:, 2].astype(np.int64)
-    return np.where(modes[:, 1] == 0, Family.PRISMATIC.code, Family.WRINKLE.code)
-
-
-def row_family(row) -> Family:
-    """The Family of one row (m, n) or (m, n, code) of a ``modes`` array."""
-    if len(row) > 2:
-        return _BY_CODE[int(row[2])]
-    return natural_family(row[0], row[1])
-
-
-#: the family codes, read once (mode_pairs runs at every evaluation of a march)
-_PRISMATIC, _TORSIONAL = Family.PRISMATIC.code, Family.TORSIONAL.code
-
-
-def mode_pairs(modes: np.ndarray) -> np.ndarray:
-    """The Stroh pairs kept by each row of ``modes`` (int64 bitmasks)."""
-    code = mode_families(modes)
-    pairs = np.where(modes[:, 0] == 0, ALL_PAIRS & ~U_TH, ALL_PAIRS).astype(np.int64)
-    pairs[code == _PRISMATIC] = ALL_PAIRS & ~U_Z
-    pairs[code == _TORSIONAL] = U_TH
-    return pairs
-
-
-def with_family(m: int, n: int, family: str) -> np.ndarray:
-    """The one-row ``modes`` array of mode (m, n) of ``family``."""
-    return np.array([[m, n, Family(family).code]], dtype=float)
 
 
 def impedance_targets(state, modes, *, rtol: float = 1e-12, max_steps: int = 20000) -> np.ndarray:
@@ -255,6 +125,9 @@ def _retry(state, modes, status, rtol, max_steps) -> np.ndarray:
 
 def collocation_targets(state, modes, *, nodes: int = 40) -> np.ndarray:
     """Collocation target f for the rows of ``modes``, one mode (and family) at a time."""
+    # imported here: the impedance kernel's evaluations (every march) do not load it
+    from .collocation import collocation_target
+
     modes = np.atleast_2d(np.asarray(modes, dtype=float))
     return np.array(
         [
