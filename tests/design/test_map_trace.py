@@ -72,3 +72,22 @@ def test_a_pattern_only_a_scan_finds_is_met_first():
     )  # fmt: skip
     assert end == TRIPLE and labels == ("P", "Q", "D")
     assert abs(u[1] - 0.38) < 1e-12 and all(p[1] <= 0.38 + 1e-12 for p in pts)
+
+
+def test_a_mode_with_no_root_in_the_range_does_not_come():
+    """At the gut map's thick, stiff corner the prismatic (10, 0) has no critical hoop
+    growth in [1, 6] (its first root rises steeply and vanishes near R_1 = 1.125): the
+    map's value of that pattern is None (it does not come), not an error that stops the
+    trace, while a mode that does come is solved as before."""
+    from electrogrowth import critical_value
+    from electrogrowth.errors import NoBifurcationFound
+    from electrogrowth.figures.design_gallery import CONTROL, FULL_BOX, gut_bilayer
+
+    (kx, *bx), (ky, *by) = FULL_BOX
+    values = Values(gut_bilayer(), CONTROL, (kx, ky), (tuple(bx), tuple(by)), None, 1e-12)
+    corner = gut_bilayer().at(kx, bx[1]).at(ky, by[1])
+    with pytest.raises(NoBifurcationFound):
+        critical_value(corner, 10, 0, CONTROL)
+    assert values.value((10, 0), (1.0, 1.0), hinted=False) is None
+    v = values.value((2, 1), (1.0, 1.0), hinted=False)
+    assert v == pytest.approx(critical_value(corner, 2, 1, CONTROL).value, abs=1e-10)

@@ -49,7 +49,7 @@ from ..continuation.contour import (
     trace_contour,
 )
 from ..continuation.events import brent
-from ..errors import ElectrogrowthError
+from ..errors import ElectrogrowthError, NoBifurcationFound
 from ..outcomes import Kind
 
 SURFACE, THRESHOLD, FAILED = "surface", "threshold", "failed"
@@ -123,7 +123,10 @@ class Values:
             except ElectrogrowthError:
                 c = None
         if c is None:
-            c = critical_value(at, *label, self.solve_for, side=self.side, rtol=self.rtol)
+            try:
+                c = critical_value(at, *label, self.solve_for, side=self.side, rtol=self.rtol)
+            except NoBifurcationFound:
+                return None  # no root in the control's whole range: it does not come
         if c.kind != Kind.BIFURCATION:
             return None
         self.hint[label] = c.value
