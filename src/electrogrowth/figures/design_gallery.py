@@ -91,13 +91,24 @@ def mark_designs(ax, designs: dict) -> None:
     """The designs other than the one for 12 folds (the map's own red star) as blue stars
     labelled with their fold number (open stars: the closest design of a target never
     first)."""
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
     for m, d in designs.items():
         if m != 12 and d.status in ("found", "not_first"):
             face = "tab:blue" if d.status == "found" else "none"
             ax.plot([d.x], [d.y], "*", mfc=face, mec="tab:blue", ms=10, clip_on=False)
             word = "" if d.status == "found" else " (closest)"
-            ax.annotate(f"{m} folds{word}", (d.x, d.y), xytext=(4, 4),
-                        textcoords="offset points", fontsize=7, color="tab:blue")  # fmt: skip
+            # the text towards the box's inside, clear of the title; along the bottom edge
+            # (past the crowded labels of the thin, soft corner) for a design on it
+            dx = 16 if d.x < 0.5 * (x0 + x1) else -16
+            dy = 18 if d.y < 0.5 * (y0 + y1) else -18
+            if d.y - y0 < 0.02 * (y1 - y0):
+                dx, dy = 3.5 * dx, 4
+            ax.annotate(
+                f"{m} folds{word}", (d.x, d.y), xytext=(dx, dy), textcoords="offset points",
+                fontsize=7, color="tab:blue", ha="left" if dx > 0 else "right",
+                va="bottom" if dy > 0 else "top",
+                arrowprops={"arrowstyle": "-", "lw": 0.6, "color": "tab:blue"},
+            )  # fmt: skip
     ax.set_title("gut-like bilayer: first folds (m, n) by critical hoop growth", fontsize=8)
 
 
