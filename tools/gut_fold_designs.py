@@ -26,18 +26,22 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--map", type=pathlib.Path, help="a map already traced (JSON)")
     parser.add_argument("--out", type=pathlib.Path, default=OUT)
+    parser.add_argument("--map-out", type=pathlib.Path, help="also write the map alone here")
+    parser.add_argument("--workers", type=int, default=1, help="processes (default 1)")
     args = parser.parse_args(argv)
 
     def say(text: str) -> None:
         print(text, file=sys.stderr, flush=True)
 
     if args.map is None:
-        gallery.write_fold_designs(args.out, progress=say)
+        gallery.write_fold_designs(
+            args.out, progress=say, workers=args.workers, map_path=args.map_out
+        )
         return 0
     record = json.loads(args.map.read_text(encoding="utf-8"))
     record = record.get("map", record)
     mmap = ModeMap.from_dict(record)
-    gallery.design_and_write(args.out, mmap, float(record["seconds"]), say)
+    gallery.design_and_write(args.out, mmap, float(record["seconds"]), say, args.workers)
     return 0
 
 

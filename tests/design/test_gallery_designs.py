@@ -1,18 +1,22 @@
 """The design pages of the gallery (examples/gallery/design), each headline number by an
 independent route: the stored gut-fold designs by full scans and direct solves at the
-stored designs, the switches along the voltage and the axial stretch by a root-find on two
-single-mode critical values (not the sequence's own bracketing)."""
+stored designs, the stored map's triple points by full scans wider than the map's window
+and by a root-finder on two single-mode conditions, the switches along the voltage and the
+axial stretch by a root-find on two single-mode critical values (not the sequence's own
+bracketing)."""
 
 from __future__ import annotations
 
+import itertools
 import math
 import runpy
 from pathlib import Path
 
+import numpy as np
 import pytest
-from scipy.optimize import brentq
+from scipy.optimize import brentq, root
 
-from electrogrowth import critical_value, scan_modes
+from electrogrowth import ScanOptions, critical_value, scan_modes
 from electrogrowth.figures.design_gallery import (
     CONTROL,
     FOLDS,
@@ -23,6 +27,8 @@ from electrogrowth.figures.design_gallery import (
 
 DESIGN = Path(__file__).resolve().parents[2] / "examples" / "gallery" / "design"
 STORED = DESIGN / "gut_folds.json"
+#: wider than the map's window in m and n, with short waves and the short-wave limit
+WIDE = ScanOptions((0, 24), (1, 4), top=8)
 
 
 @pytest.fixture(scope="module")
@@ -92,6 +98,50 @@ def test_stored_design_by_a_full_scan_there(stored, m):
         # the scan's first mode comes no earlier (the closest design of 8 folds sits where
         # two modes beat it equally, (10, 0) and (6, 1): the scan may name either)
         assert scan.critical.value == pytest.approx(w, abs=1e-8)
+
+
+def _values(mmap, x, y, modes):
+    at = gut_bilayer().at(mmap.keys[0], x).at(mmap.keys[1], y)
+    return [critical_value(at, *mode, CONTROL).value for mode in modes]
+
+
+@pytest.mark.slow
+def test_stored_map_certified_and_its_triple_points_by_a_wide_scan(stored):
+    """Every boundary certified; at each triple point the three modes' critical growths,
+    solved afresh, agree to 1e-8, a full scan wider than the map's window finds nothing
+    earlier, and a boundary of each two of the three ends there."""
+    mmap = stored.map
+    assert mmap.triple_points and all(b.certified for b in mmap.boundaries)
+    for tp in mmap.triple_points:
+        v = _values(mmap, tp.x, tp.y, tp.patterns)
+        assert max(v) - min(v) < 1e-8 and v[0] == pytest.approx(tp.value, abs=1e-8)
+        at = gut_bilayer().at(mmap.keys[0], tp.x).at(mmap.keys[1], tp.y)
+        scan = scan_modes(at, CONTROL, options=WIDE)
+        assert scan.critical.value >= min(v) - 1e-8, (tp.patterns, scan.critical)
+        for a, b in itertools.combinations(tp.patterns, 2):
+            assert any(
+                {bd.left, bd.right} == {a, b}
+                and min(math.hypot(bd.x[k] - tp.x, bd.y[k] - tp.y) for k in (0, -1)) < 1e-9
+                for bd in mmap.boundaries
+            ), (tp.patterns, a, b)
+
+
+@pytest.mark.slow
+def test_stored_triple_points_by_newton_on_two_conditions(stored):
+    """Each triple point again, from a start 1e-3 of the box away, by scipy's root finder
+    on v_A - v_B = v_A - v_C = 0 (single-mode critical values only): the same point to
+    1e-8 of the box."""
+    mmap = stored.map
+    (x0, x1), (y0, y1) = mmap.box
+    for tp in mmap.triple_points:
+
+        def conditions(w, tp=tp):
+            v = _values(mmap, x0 + w[0] * (x1 - x0), y0 + w[1] * (y1 - y0), tp.patterns)
+            return [v[0] - v[1], v[0] - v[2]]
+
+        at = np.array([(tp.x - x0) / (x1 - x0), (tp.y - y0) / (y1 - y0)])
+        sol = root(conditions, at + [1e-3, -1e-3], method="hybr", options={"xtol": 1e-13})
+        assert sol.success and np.abs(sol.x - at).max() < 1e-8, (tp.patterns, sol.x - at)
 
 
 def _switch(tube, key, a, b, lo, hi):

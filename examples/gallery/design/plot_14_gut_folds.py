@@ -13,12 +13,15 @@ question is then asked for 8, 12 and 16 folds (any n): the design with the wides
 M = (g_N - g_T) / g_T against the next pattern N.
 
 What was coarsened, and what is stored: the map covers R_1 in [1.065, 1.14] and
-mu_1/mu_2 in [5, 30] from a 3 x 3 grid of scans, modes m = 4 .. 18 with n = 0 and 1,
-boundary steps up to half the box (each traced point is still a root to 1e-13), two
-certified points a boundary. Even so it took 36 minutes to trace, and each design 25 to
-40 minutes more, on a shared two-core machine under load: far beyond a page's minute. So the map
-and the three designs are read from ``gut_folds.json``, written by
-``tools/gut_fold_designs.py``; this page checks each design again by a full scan at it.
+mu_1/mu_2 in [5, 30] from a 5 x 5 grid of scans, modes m = 0 .. 18 with n = 0 and 1 (a
+window complete for this box: full scans with m to 24 and beyond and n to 30 at 81
+designs and on the boundaries find nothing else first, tools/gut_window_check.py),
+boundary steps up to half the box (each traced point is still a root to 1e-13), and every
+traced point certified. It took 13 minutes to trace and certify on two processes, and the
+three designs 23, 25 and 5 minutes more (two at a time), on a shared two-core machine
+under load: far beyond a page's minute. So the map and the three designs are read from
+``gut_folds.json``, written by ``tools/gut_fold_designs.py --workers 2``; this page checks
+each design again by a full scan at it.
 """
 
 import math
@@ -51,6 +54,11 @@ for b in mmap.boundaries:
         f"  {b.left} | {b.right}: (h, mu_1/mu_2) = ({h0:.4f}, {mu0:.2f}) to ({h1:.4f},"
         f" {mu1:.2f}), certified {b.certified}{slope}"
     )
+for t in mmap.triple_points:
+    print(
+        f"  triple point {' '.join(map(str, t.patterns))}: (h, mu_1/mu_2) = ({t.x - 1.0:.5f},"
+        f" {t.y:.4f}), g_theta,cr = {t.value:.8f}, the three apart by {t.gap:.0e}"
+    )
 for m, d in res.designs.items():
     h, mu = d.x - 1.0, d.y
     print(
@@ -81,16 +89,22 @@ for m, d in res.designs.items():
 #
 # Where it contradicts the simple trend: the fold number does not keep falling. Beyond 10
 # folds the thick, stiff mucosa folds first in modes with one axial half-wave and few
-# waves around, (m, 1), so 8 folds (or 9) are never first in this box and the design for 8
-# is only the closest one, beaten by the pattern named. A closed ring relieves its hoop
-# growth by expanding the soft substrate (docs/patterns.md), and the tube is short
-# (L = 1); a plane-strain film model keeps predicting fewer folds. Two limits of this map,
-# said plainly: its modes start at m = 4, and full scans from m = 0 in the thick, stiff
-# corner find (2, 1) and (3, 1), so the region labelled (4, 1) means "few waves, n = 1";
-# and where (10, 0), (11, 0) and the (m, 1) modes meet, near R_1 = 1.134,
-# mu_1/mu_2 = 12.2, three triple points lie within 0.005 of each other and the certificates
-# fail (a scan there finds (5, 1) up to 1 % earlier): that corner is not resolved at this
-# resolution. The boundaries of 12 and 16 folds are certified.
+# waves around, (6, 1) down to (2, 1) in the thick, stiff corner, so 8 folds (or 9) are
+# never first in this box and the design for 8 is only the closest one, beaten by the
+# pattern named. A closed ring relieves its hoop growth by expanding the soft substrate
+# (docs/patterns.md), and the tube is short (L = 1); a plane-strain film model keeps
+# predicting fewer folds.
+#
+# The corner where the prismatic folds give way (near R_1 = 1.134, mu_1/mu_2 = 12.3) is
+# resolved: two triple points, (11, 0) | (10, 0) | (5, 1) and (10, 0) | (6, 1) | (5, 1)
+# (printed above), joined by a short (10, 0) | (5, 1) boundary, each with its three
+# boundaries ending there, and every traced point of all 13 boundaries certified (two
+# critical values equal to 1e-8, a full scan of m = 0 .. 18, n = 0, 1 finding nothing
+# earlier). An earlier trace of this map (window m = 4 .. 18, a 3 x 3 grid) put three
+# triple points within 0.005 there and failed its certificates: a boundary step passed
+# two triple points at once and kept the later, and (5, 1) was not yet among the compared
+# modes; the tracer now keeps a triple point only where nothing comes earlier (a full scan
+# at it), else takes the step again shorter (docs/design.md).
 
 # %%
 # The map (left; hatched: the region of 12 folds, red star its design, blue stars the

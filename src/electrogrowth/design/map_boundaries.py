@@ -24,7 +24,7 @@ import math
 
 import numpy as np
 
-from .map_checks import scan_label
+from .map_checks import CERTIFIED, scan_label
 from .map_record import label_json
 from .map_trace import FAILED, TRIPLE, edge_root, follow, gradient, valued
 
@@ -95,6 +95,17 @@ class _Tracer:
     def candidates(self, u):
         return self.found
 
+    def check(self, u, v):
+        """A pattern a full scan finds earlier than v at the triple point u, else None; a
+        mode no task had seen joins the compared ones (the curve is taken again to it)."""
+        first, w = scan_label(self.values, self.options, u)
+        late = not (valued(first) and math.isfinite(w))
+        if late or self.values.sense * (w - v) >= -CERTIFIED * max(1.0, abs(v)):
+            return None
+        if first not in self.found:
+            self.found.append(first)
+        return first
+
     def piece(self, known) -> Piece:
         new = tuple(lab for lab in self.found if lab not in known)
         return Piece(tuple(self.curves), new, self.values.solves)
@@ -143,9 +154,9 @@ class _Tracer:
 
     def trace(self, p, q, left, start, t, start_end, seed):
         values = self.values
-        fwd = follow(values, p, q, start, t, self.candidates, self.policy)
+        fwd = follow(values, p, q, start, t, self.candidates, self.policy, self.check)
         if start_end is None:
-            back = follow(values, p, q, start, -t, self.candidates, self.policy)
+            back = follow(values, p, q, start, -t, self.candidates, self.policy, self.check)
         else:
             back = ([np.asarray(start)], start_end, None)
         pts = [np.asarray(x) for x in back[0][::-1]]

@@ -17,13 +17,22 @@ box's side) from a root on an edge of the coarse grid whose ends have P and Q fi
 each new point the patterns first at the nearby grid nodes are compared: where a third,
 C, comes first the curve has passed a triple point, located by Newton's method on
 (d_PQ, d_PC) = 0; where d_PQ jumps instead of vanishing (a pattern's first root appears or
-vanishes) the curve ends there ("jump"). A pattern more than 5% behind is compared only
-every third point (the certificates' full scans check what this could miss).
+vanishes) the curve ends there ("jump"). A pattern more than 5% behind is compared again
+only after three points or a move of 0.05 of the box's side, whichever comes first (a
+lead of 5% cannot close sooner where the critical values change by O(1) across the box).
+
+A triple point is accepted only if nothing comes earlier there: no compared pattern, and
+nothing a full scan finds (``check``; a mode no task had seen is added to the compared
+ones). Where something does, the curve met it first, before the point Newton found: the
+last step passed two events in one (triple points closer than a step), so the trace is
+taken again from the last point before the event with steps of a quarter of that one,
+until the triple point holds or the step is the smallest (then the curve ends "lost").
 docs/design.md.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -40,7 +49,7 @@ from ..continuation.contour import (
     trace_contour,
 )
 from ..continuation.events import brent
-from ..errors import ElectrogrowthError
+from ..errors import ElectrogrowthError, NoBifurcationFound
 from ..outcomes import Kind
 
 SURFACE, THRESHOLD, FAILED = "surface", "threshold", "failed"
@@ -52,7 +61,9 @@ HINT = 0.02  # the bracket of a followed critical value: +- this times max(1, |v
 NEAR = 1.5  # candidates: the patterns of grid nodes within this many cells
 TRIPLE, JUMP = "triple", "jump"
 FAR = 0.05  # a pattern this far behind (relative) is compared again only ...
-RECHECK = 3  # ... every this many points of a curve
+RECHECK = 3  # ... after this many points of a curve, or ...
+FAR_MOVE = 0.05  # ... after a move of this much of the box's side, whichever is first
+REFINE = 0.25  # a step that passed a triple point too far is taken again this much shorter
 
 
 def valued(label) -> bool:
@@ -112,7 +123,10 @@ class Values:
             except ElectrogrowthError:
                 c = None
         if c is None:
-            c = critical_value(at, *label, self.solve_for, side=self.side, rtol=self.rtol)
+            try:
+                c = critical_value(at, *label, self.solve_for, side=self.side, rtol=self.rtol)
+            except NoBifurcationFound:
+                return None  # no root in the control's whole range: it does not come
         if c.kind != Kind.BIFURCATION:
             return None
         self.hint[label] = c.value
@@ -208,9 +222,12 @@ def edge_root(values: Values, p, q, a, b):
     return a + t * (b - a)
 
 
-def follow(values: Values, p, q, start, tangent, candidates, policy=CONTOUR_STEPS):
+def follow(values: Values, p, q, start, tangent, candidates, policy=CONTOUR_STEPS, check=None):
     """Trace d_PQ = 0 from ``start`` along ``tangent``: (points, end, triple) with end EDGE,
-    CLOSED, TRIPLE, JUMP or LOST and triple (labels, u, value) where it met a third pattern."""
+    CLOSED, TRIPLE, JUMP or LOST and triple (labels, u, value) where it met a third pattern.
+
+    ``candidates(u)`` are the patterns compared at each point; ``check(u, v)``, if given,
+    names a pattern a full scan finds earlier than v at a triple point u (else None)."""
     d = values.condition(p, q)
     seen: dict = {}  # pattern -> (its relative lead over P and Q, the point it was checked)
     count = [0]
@@ -223,29 +240,58 @@ def follow(values: Values, p, q, start, tangent, candidates, policy=CONTOUR_STEP
         for c in candidates(u):
             if c in (p, q) or not valued(c) or v is None:
                 continue
-            lead, when = seen.get(c, (0.0, 0))
-            if lead > FAR and count[0] - when < RECHECK:
-                continue  # far behind a few points ago: checked again later
+            lead, when, where = seen.get(c, (0.0, 0, u))
+            near = np.linalg.norm(np.asarray(u) - where) < FAR_MOVE
+            if lead > FAR and count[0] - when < RECHECK and near:
+                continue  # far behind a few points ago and close by: checked again later
             w = values.value(c, u)
             lead = math.inf if w is None else values.sense * (w - v) / max(1.0, abs(v))
-            seen[c] = (lead, count[0])
+            seen[c] = (lead, count[0], np.asarray(u, float))
             if lead < -AGREE:
                 return c
         return None
 
-    tr = trace_contour(d, start, tangent, stop=stop, policy=policy)
-    pts = [np.array(x) for x in tr.points]
-    if tr.end != STOPPED:
-        return pts, {EDGE: EDGE, CLOSED: CLOSED, LOST: LOST}[tr.end], None
-    if tr.event == JUMP:
-        return pts, JUMP, None
-    c = tr.event
+    pts = [np.asarray(start, float)]
+    t = np.asarray(tangent, float)
+    while True:
+        tr = trace_contour(d, pts[-1], t, stop=stop, policy=policy)
+        pts = pts[:-1] + [np.array(x) for x in tr.points]
+        if tr.end != STOPPED:
+            return pts, {EDGE: EDGE, CLOSED: CLOSED, LOST: LOST}[tr.end], None
+        if tr.event == JUMP:
+            return pts, JUMP, None
+        last, past = pts[-1], np.asarray(tr.past)
+        found = _event(values, p, q, tr.event, last, past, candidates, check)
+        if found is not None:
+            u, v = found
+            return pts + [u], TRIPLE, ((p, q, tr.event), u, v)
+        step = float(np.linalg.norm(past - last))
+        if step <= 2 * policy.smallest:
+            return pts, LOST, None
+        short = max(REFINE * step, policy.smallest)  # again from the last point, shorter
+        policy = dataclasses.replace(policy, first=short, largest=short)
+        t = past - last
+
+
+def _event(values: Values, p, q, c, last, past, candidates, check):
+    """The triple point of P, Q and C between the last point and the one past the event,
+    (u, value), or None if Newton's method fails, lands off that step, or something comes
+    earlier there (the step passed another event first)."""
     dc = values.condition(p, c)
-    last, past = pts[-1], np.asarray(tr.past)
     g0, g1 = dc(last), dc(past)
     t = g0 / (g0 - g1) if g0 != g1 and math.isfinite(g0 - g1) else 0.5
     found = triple_point(values, p, q, c, last + min(max(t, 0.0), 1.0) * (past - last))
     if found is None:
-        return pts, LOST, None
+        return None
     u, v = found
-    return pts + [u], TRIPLE, ((p, q, c), u, v)
+    if np.linalg.norm(u - last) > 1.5 * np.linalg.norm(past - last):
+        return None  # a triple point elsewhere on the curves, not this step's event
+    tol = AGREE * max(1.0, abs(v))
+    for e in candidates(u):
+        if e not in (p, q, c) and valued(e):
+            w = values.value(e, u)
+            if w is not None and values.sense * (w - v) < -tol:
+                return None
+    if check is not None and check(u, v) is not None:
+        return None
+    return found

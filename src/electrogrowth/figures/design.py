@@ -76,6 +76,14 @@ def _name(label) -> str:
     return f"({label[0]}, {label[1]})" if isinstance(label, tuple) else str(label)
 
 
+def region_colours(count: int):
+    """A colour map of ``count`` pale colours, all different up to 15 (Pastel1 and Pastel2
+    without their greys; a map of patterns in (m, n) order gives neighbours different
+    colours), then repeating."""
+    pale = mpl.colormaps["Pastel1"].colors[:8] + mpl.colormaps["Pastel2"].colors[:7]
+    return mpl.colors.ListedColormap([pale[k % len(pale)] for k in range(max(count, 2))])
+
+
 def plot_map(result, *, pixels: int = 160, ax=None) -> object:
     """The mode map of a two-variable design (design/prescribe_map.py) on ``ax`` (default:
     a new figure's) with each region coloured and labelled (m, n) (the pattern of each
@@ -92,7 +100,7 @@ def plot_map(result, *, pixels: int = 160, ax=None) -> object:
     if ax is None:
         with mpl.rc_context(STYLE):
             ax = Figure(figsize=(5.4, 4.2), layout="constrained").subplots()
-    cmap = mpl.colormaps["Pastel1"].resampled(max(len(patterns), 2))
+    cmap = region_colours(len(patterns))
     ax.pcolormesh(xs, ys, codes.T, cmap=cmap, vmin=-0.5, vmax=len(patterns) - 0.5,
                   shading="nearest", rasterized=True)  # fmt: skip
     target = np.vectorize(lambda p: p in result.goal, otypes=[float])(raster)

@@ -14,6 +14,7 @@ from __future__ import annotations
 import dataclasses
 
 from ..bifurcation.options import ScanOptions
+from ..continuation.contour import MAX_POINTS
 from ..design.map_record import ModeMap
 from ..design.mode_map import mode_map
 from ..design.prescribe_map import MapDesign, prescribe_map, stored_design
@@ -24,10 +25,15 @@ from .design import plot_map
 CONTROL = "growth[1].theta"
 FOLDS = (8, 12, 16)
 #: the full map: the interface radius 1 + h from 1.065 to 1.14 (the outer radius kept at
-#: 2), mu_1/mu_2 from 5 to 30, every m from 4 to 18 with n = 0 (prismatic) and n = 1
+#: 2), mu_1/mu_2 from 5 to 30, every m from 0 to 18 with n = 0 (prismatic) and n = 1 (and
+#: the torsional (0, 1)). Complete for this box: full scans (m from 0 to 24 and beyond,
+#: n to 30, short waves, the short-wave limit) at 81 designs and on the boundaries find
+#: only these first (tools/gut_window_check.py, docs/design.md); (0, 1) .. (3, 1) are first
+#: in the thick, stiff corner, so the window starts at m = 0
 FULL_BOX = (("layers[1].outer_radius", 1.065, 1.14), ("layers[1].shear_modulus", 5.0, 30.0))
-FULL_OPTIONS = ScanOptions((4, 18), (1, 1), top=3, extend=False, surface=False)
-FULL_POINTS, FULL_CERTIFY, FULL_STEP = 3, 2, 0.5  # grid nodes a variable, checks, max step
+FULL_OPTIONS = ScanOptions((0, 18), (1, 1), top=3, extend=False, surface=False)
+#: grid nodes a variable, points certified a boundary (all: a curve has fewer), max step
+FULL_POINTS, FULL_CERTIFY, FULL_STEP = 5, MAX_POINTS, 0.5
 #: the quick map (tests): a small box across the 12 | 11 boundary near h = 0.1, mu = 10
 QUICK_BOX = (("layers[1].outer_radius", 1.09, 1.096), ("layers[1].shear_modulus", 9.5, 10.5))
 QUICK_OPTIONS = ScanOptions((11, 12), (1, 1), top=2, extend=False, surface=False)
@@ -85,47 +91,80 @@ def mark_designs(ax, designs: dict) -> None:
     """The designs other than the one for 12 folds (the map's own red star) as blue stars
     labelled with their fold number (open stars: the closest design of a target never
     first)."""
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
     for m, d in designs.items():
         if m != 12 and d.status in ("found", "not_first"):
             face = "tab:blue" if d.status == "found" else "none"
             ax.plot([d.x], [d.y], "*", mfc=face, mec="tab:blue", ms=10, clip_on=False)
             word = "" if d.status == "found" else " (closest)"
-            ax.annotate(f"{m} folds{word}", (d.x, d.y), xytext=(4, 4),
-                        textcoords="offset points", fontsize=7, color="tab:blue")  # fmt: skip
+            # the text towards the box's inside, clear of the title; along the bottom edge
+            # (past the crowded labels of the thin, soft corner) for a design on it
+            dx = 16 if d.x < 0.5 * (x0 + x1) else -16
+            dy = 18 if d.y < 0.5 * (y0 + y1) else -18
+            if d.y - y0 < 0.02 * (y1 - y0):
+                dx, dy = 3.5 * dx, 4
+            ax.annotate(
+                f"{m} folds{word}", (d.x, d.y), xytext=(dx, dy), textcoords="offset points",
+                fontsize=7, color="tab:blue", ha="left" if dx > 0 else "right",
+                va="bottom" if dy > 0 else "top",
+                arrowprops={"arrowstyle": "-", "lw": 0.6, "color": "tab:blue"},
+            )  # fmt: skip
     ax.set_title("gut-like bilayer: first folds (m, n) by critical hoop growth", fontsize=8)
 
 
-def write_fold_designs(path, *, progress=None) -> FoldDesigns:
+def write_fold_designs(path, *, progress=None, workers: int = 1, map_path=None) -> FoldDesigns:
     """Trace the full map, design it for 8, 12 and 16 folds and write both as JSON to
     ``path`` (the map's :meth:`~ModeMap.as_dict`, each design's ``as_dict`` by fold
     number, the seconds each took): the input of the gallery's page, which cannot afford
-    the tracing (tools/gut_fold_designs.py)."""
+    the tracing (tools/gut_fold_designs.py). ``workers`` processes trace and design;
+    ``map_path``: where the map alone is written as soon as it is traced."""
+    import json
     import time
+    from pathlib import Path
 
     start = time.perf_counter()
     tube = gut_bilayer(FULL_BOX[0][1] - 1.0, FULL_BOX[1][1])
     mmap = mode_map(
         tube, CONTROL, FULL_BOX, options=FULL_OPTIONS, points=FULL_POINTS,
-        certify=FULL_CERTIFY, max_step=FULL_STEP, progress=progress,
+        certify=FULL_CERTIFY, max_step=FULL_STEP, progress=progress, workers=workers,
     )  # fmt: skip
-    return design_and_write(path, mmap, time.perf_counter() - start, progress)
+    if map_path is not None:
+        Path(map_path).write_text(json.dumps(mmap.as_dict(), indent=1) + "\n", encoding="utf-8")
+    return design_and_write(path, mmap, time.perf_counter() - start, progress, workers)
 
 
-def design_and_write(path, mmap: ModeMap, map_seconds: float, progress=None) -> FoldDesigns:
-    """Design the traced full map ``mmap`` for 8, 12 and 16 folds and write map and designs
-    to ``path`` (:func:`write_fold_designs`)."""
-    import json
+def _design(task) -> tuple[dict, float]:
+    """One fold number's design in the map (a pool's task: m, the map): its record and
+    the seconds it took."""
     import time
+
+    m, mmap = task
+    start = time.perf_counter()
+    tube = gut_bilayer(FULL_BOX[0][1] - 1.0, FULL_BOX[1][1])
+    design = prescribe_map(tube, folds(m), mmap, options=FULL_OPTIONS)
+    return design.as_dict(), time.perf_counter() - start
+
+
+def design_and_write(
+    path, mmap: ModeMap, map_seconds: float, progress=None, workers: int = 1
+) -> FoldDesigns:
+    """Design the traced full map ``mmap`` for 8, 12 and 16 folds (``workers`` at once)
+    and write map and designs to ``path`` (:func:`write_fold_designs`)."""
+    import json
     from pathlib import Path
 
-    tube = gut_bilayer(FULL_BOX[0][1] - 1.0, FULL_BOX[1][1])
+    from ..pool import run_tasks
+
     designs, seconds = {}, {"map": map_seconds}
-    for m in FOLDS:
+    for k, (record, took) in run_tasks(
+        _design, [(m, mmap) for m in FOLDS], workers=workers, name="design"
+    ):
+        m = FOLDS[k]
         if progress is not None:
-            progress(f"designing for {m} folds")
-        start = time.perf_counter()
-        designs[m] = prescribe_map(tube, folds(m), mmap, options=FULL_OPTIONS)
-        seconds[f"{m} folds"] = time.perf_counter() - start
+            progress(f"designed for {m} folds in {took / 60:.0f} min")
+        designs[m] = stored_design(record, mmap, folds(m))
+        seconds[f"{m} folds"] = took
+    designs = {m: designs[m] for m in FOLDS}
     record = {
         "tube": "gut_bilayer (figures/design_gallery.py)",
         "control": CONTROL,

@@ -1,0 +1,93 @@
+"""The boundary tracer's triple points (src/electrogrowth/design/map_trace.py) on patterns
+whose critical values are known in closed form: a step long enough to pass two triple
+points at once, and a pattern only a full scan knows, must not hide the first one."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+from electrogrowth.continuation.contour import CONTOUR_STEPS
+from electrogrowth.design.map_trace import TRIPLE, Values, follow
+
+LONG = dataclasses.replace(CONTOUR_STEPS, largest=0.5)  # the gallery's longest step
+
+
+def _linear(a, b, c):
+    return lambda u: a + b * (u[0] - 0.5) + c * u[1]
+
+
+#: v_P = v_Q on the line u_0 = 1/2, at 2 - 0.1 u_1; C and D come first beyond u_1 = 0.4
+#: and 0.45 along it (v_C - v = 0.1 (0.4 - u_1) there), each off the line at another
+#: slope: the steps 0.02, 0.04, ... reach u_1 = 0.3, then 0.62, past both
+PATTERNS = {
+    "P": _linear(2.0, 1.0, -0.1),
+    "Q": _linear(2.0, -1.0, -0.1),
+    "C": _linear(2.0 + 0.1 * 0.4, 0.3, -0.2),
+    "D": _linear(2.0 + 0.1 * 0.45, -0.4, -0.2),
+}
+
+
+class Linear(Values):
+    """The patterns' critical values as the closed forms above (lower comes first)."""
+
+    def __init__(self, patterns):
+        super().__init__(None, "g", ("x", "y"), ((0.0, 1.0), (0.0, 1.0)), None, 1e-12)
+        self.patterns = patterns
+
+    def _solve(self, label, u, hinted):
+        return self.patterns[label](u)
+
+
+@pytest.mark.parametrize("order", [("C", "D"), ("D", "C")])
+def test_a_long_step_past_two_triple_points_stops_at_the_first(order):
+    values = Linear(PATTERNS)
+    pts, end, (labels, u, v) = follow(
+        values, "P", "Q", np.array([0.5, 0.0]), np.array([0.0, 1.0]), lambda u: order, LONG
+    )
+    assert end == TRIPLE and labels == ("P", "Q", "C")
+    assert abs(u[0] - 0.5) < 1e-12 and abs(u[1] - 0.4) < 1e-12 and abs(v - 1.96) < 1e-12
+    assert all(p[1] <= 0.4 + 1e-12 for p in pts)  # no point beyond it
+
+
+def test_a_pattern_only_a_scan_finds_is_met_first():
+    """D is not among the compared patterns; the scan at the triple point of C names it
+    (as the tracer's full scan does), and the curve is taken again to D's triple point."""
+
+    def scan(values, seen, u, v):
+        if values.value("D", u) >= v - 1e-9:
+            return None
+        if "D" not in seen:
+            seen.append("D")
+        return "D"
+
+    patterns = dict(PATTERNS, D=_linear(2.0 + 0.1 * 0.38, -0.4, -0.2))  # D first at 0.38
+    values = Linear(patterns)
+    seen = ["C"]
+    pts, end, (labels, u, v) = follow(
+        values, "P", "Q", np.array([0.5, 0.0]), np.array([0.0, 1.0]), lambda u: seen, LONG,
+        check=lambda u, v: scan(values, seen, u, v),
+    )  # fmt: skip
+    assert end == TRIPLE and labels == ("P", "Q", "D")
+    assert abs(u[1] - 0.38) < 1e-12 and all(p[1] <= 0.38 + 1e-12 for p in pts)
+
+
+def test_a_mode_with_no_root_in_the_range_does_not_come():
+    """At the gut map's thick, stiff corner the prismatic (10, 0) has no critical hoop
+    growth in [1, 6] (its first root rises steeply and vanishes near R_1 = 1.125): the
+    map's value of that pattern is None (it does not come), not an error that stops the
+    trace, while a mode that does come is solved as before."""
+    from electrogrowth import critical_value
+    from electrogrowth.errors import NoBifurcationFound
+    from electrogrowth.figures.design_gallery import CONTROL, FULL_BOX, gut_bilayer
+
+    (kx, *bx), (ky, *by) = FULL_BOX
+    values = Values(gut_bilayer(), CONTROL, (kx, ky), (tuple(bx), tuple(by)), None, 1e-12)
+    corner = gut_bilayer().at(kx, bx[1]).at(ky, by[1])
+    with pytest.raises(NoBifurcationFound):
+        critical_value(corner, 10, 0, CONTROL)
+    assert values.value((10, 0), (1.0, 1.0), hinted=False) is None
+    v = values.value((2, 1), (1.0, 1.0), hinted=False)
+    assert v == pytest.approx(critical_value(corner, 2, 1, CONTROL).value, abs=1e-10)
