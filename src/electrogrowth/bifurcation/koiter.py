@@ -203,8 +203,10 @@ def _tube_family(mode) -> str:
 
 def _tube_not_covered(tube: Tube, family: str, control: str) -> str:
     """What the tube lacks for the expansion, in words ("" when covered)."""
-    if tube.stretch is None:
-        return "the axial stretch prescribed (not the axial force)"
+    loaded = tube.voltage != 0 or tube.inner_pressure != 0 or tube.outer_pressure != 0
+    if tube.control == "force" and (loaded or control in ("voltage", "pressure")):
+        # the force's conjugate would carry the field's and the ends' pressure load too
+        return "the axial stretch prescribed under a voltage or a pressure (not the axial force)"
     for ply in tube.layers:
         if ply.graded:
             return "constant growth in every layer"
