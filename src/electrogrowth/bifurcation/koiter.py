@@ -5,12 +5,13 @@ Covered so far: the flat film on a half-space (koiter_film.py: both incompressib
 neo-Hookean, plane strain, uniaxial compression of the film alone or of the whole bilayer),
 the limit of a thin stiff film on a thick tube; and a tube's prismatic modes (m, 0) and
 axisymmetric modes (0, n) (koiter_tube.py: layers of any strain energy, constant growth,
-axial stretch prescribed; a radial voltage on ideal dielectrics; follower pressures on the
-faces, koiter_loads.py) in a growth control, the voltage, the axial stretch or the inner
-pressure (koiter_controls.py), and the wrinkles (m, n), m, n >= 1, of the same tubes in
-the same controls (koiter_wall.py): c = c_c + c_2 eps^2 with
-eps = max |u_r| / R_i, supercritical when c_2 has the sign of the control's direction
-(> 0 for a growth). Other cases raise a one-line
+axial stretch prescribed, or the axial force when unloaded, koiter_force.py; a radial
+voltage on ideal dielectrics; follower pressures on the faces, koiter_loads.py) in a
+growth control, the voltage, the axial stretch or the inner pressure
+(koiter_controls.py), and the wrinkles (m, n), m, n >= 1, of the same tubes in the same
+controls (koiter_wall.py): c = c_c + c_2 eps^2 with eps = max |u_r| / R_i, supercritical
+when c_2 has the sign of the control's direction (> 0 for a growth). Other cases raise a
+one-line
 :class:`~electrogrowth.errors.ParameterError`.
 """
 
@@ -96,8 +97,9 @@ def koiter_coefficient(
     ----------
     problem : FilmOnHalfSpace or Tube
         A flat film on a half-space, or a tube (layers of any strain energy with constant
-        growth, the axial stretch prescribed; follower pressures on the faces; a radial
-        voltage on ideal dielectrics).
+        growth, the axial stretch prescribed (or the axial force, without a voltage or a
+        pressure); follower pressures on the faces; a radial voltage on ideal
+        dielectrics).
     mode : None or (m, 0) or (0, n) or (m, n)
         The film: None (K_c maximises lambda_c). A tube: a prismatic mode (m, 0), m >= 2,
         an axisymmetric mode (0, n), n >= 1 (axial wavenumber n pi / L in the
