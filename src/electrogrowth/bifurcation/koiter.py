@@ -209,9 +209,6 @@ def _tube_not_covered(tube: Tube, family: str, control: str) -> str:
     if tube.control == "force" and (loaded or control in ("voltage", "pressure")):
         # the force's conjugate would carry the field's and the ends' pressure load too
         return "the axial stretch prescribed under a voltage or a pressure (not the axial force)"
-    for ply in tube.layers:
-        if ply.graded:
-            return "constant growth in every layer"
     return _energy_not_covered(tube, control)
 
 
