@@ -4,7 +4,7 @@ branch is super- or subcritical (docs/derivation-koiter.md).
 Covered so far: the flat film on a half-space (koiter_film.py: both incompressible
 neo-Hookean, plane strain, uniaxial compression of the film alone or of the whole bilayer),
 the limit of a thin stiff film on a thick tube; and a tube's prismatic modes (m, 0) and
-axisymmetric modes (0, n) (koiter_tube.py: layers of any strain energy, constant growth,
+axisymmetric modes (0, n) (koiter_tube.py: layers of any strain energy, growth constant or graded,
 axial stretch prescribed, or the axial force when unloaded, koiter_force.py; a radial
 voltage on ideal dielectrics; follower pressures on the faces, koiter_loads.py) in a
 growth control, the voltage, the axial stretch or the inner pressure
@@ -97,7 +97,7 @@ def koiter_coefficient(
     ----------
     problem : FilmOnHalfSpace or Tube
         A flat film on a half-space, or a tube (layers of any strain energy with constant
-        growth, the axial stretch prescribed (or the axial force, without a voltage or a
+        or graded growth, the axial stretch prescribed (or the axial force, without a voltage or a
         pressure); follower pressures on the faces; a radial voltage on ideal
         dielectrics).
     mode : None or (m, 0) or (0, n) or (m, n)
