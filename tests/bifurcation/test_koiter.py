@@ -291,9 +291,11 @@ def test_uncovered_cases_raise_one_line():
         koiter_coefficient(Tube.uniform(1.5, 1.0, 1.0, 1.0, 0.0), mode=(1, 0), control="growth")
     with pytest.raises(ParameterError, match="covers growth, voltage, stretch, pressure"):
         koiter_coefficient(Tube.uniform(1.5, 1.0, 1.0, 1.0, 0.0), mode=(4, 0), control="force")
-    with pytest.raises(ParameterError, match="axial stretch prescribed"):
+    with pytest.raises(ParameterError, match="axial stretch prescribed under a voltage"):
         koiter_coefficient(
-            dataclasses.replace(_film_tube(0.1), stretch=None, axial_force=0.0), (12, 0), THETA
+            dataclasses.replace(_film_tube(0.1), stretch=None, axial_force=0.0, voltage=0.1),
+            (12, 0),
+            THETA,
         )
     with pytest.raises(ParameterError, match="only the critical wrinkle"):
         koiter_coefficient(FilmOnHalfSpace(3.0, **FAST), mode=(4, 0))

@@ -172,7 +172,11 @@ def test_uncovered_wrinkles_are_refused_in_one_line():
     tube = _film_tube()
     cases = [
         (tube, (3, 1), "force"),
-        (dataclasses.replace(tube, stretch=None, axial_force=0.0), (3, 1), THETA),
+        (
+            dataclasses.replace(tube, stretch=None, axial_force=0.0, inner_pressure=0.1),
+            (3, 1),
+            THETA,
+        ),
         (tube, (1, 0), THETA),
     ]
     for t, mode, control in cases:

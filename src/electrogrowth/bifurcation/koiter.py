@@ -4,13 +4,14 @@ branch is super- or subcritical (docs/derivation-koiter.md).
 Covered so far: the flat film on a half-space (koiter_film.py: both incompressible
 neo-Hookean, plane strain, uniaxial compression of the film alone or of the whole bilayer),
 the limit of a thin stiff film on a thick tube; and a tube's prismatic modes (m, 0) and
-axisymmetric modes (0, n) (koiter_tube.py: layers of any strain energy, constant growth,
-axial stretch prescribed; a radial voltage on ideal dielectrics; follower pressures on the
-faces, koiter_loads.py) in a growth control, the voltage, the axial stretch or the inner
-pressure (koiter_controls.py), and the wrinkles (m, n), m, n >= 1, of the same tubes in
-the same controls (koiter_wall.py): c = c_c + c_2 eps^2 with
-eps = max |u_r| / R_i, supercritical when c_2 has the sign of the control's direction
-(> 0 for a growth). Other cases raise a one-line
+axisymmetric modes (0, n) (koiter_tube.py: layers of any strain energy, growth constant or graded,
+axial stretch prescribed, or the axial force when unloaded, koiter_force.py; a radial
+voltage on ideal dielectrics; follower pressures on the faces, koiter_loads.py) in a
+growth control, the voltage, the axial stretch or the inner pressure
+(koiter_controls.py), and the wrinkles (m, n), m, n >= 1, of the same tubes in the same
+controls (koiter_wall.py): c = c_c + c_2 eps^2 with eps = max |u_r| / R_i, supercritical
+when c_2 has the sign of the control's direction (> 0 for a growth). Other cases raise a
+one-line
 :class:`~electrogrowth.errors.ParameterError`.
 """
 
@@ -96,8 +97,9 @@ def koiter_coefficient(
     ----------
     problem : FilmOnHalfSpace or Tube
         A flat film on a half-space, or a tube (layers of any strain energy with constant
-        growth, the axial stretch prescribed; follower pressures on the faces; a radial
-        voltage on ideal dielectrics).
+        or graded growth, the axial stretch prescribed (or the axial force, without a voltage or a
+        pressure); follower pressures on the faces; a radial voltage on ideal
+        dielectrics).
     mode : None or (m, 0) or (0, n) or (m, n)
         The film: None (K_c maximises lambda_c). A tube: a prismatic mode (m, 0), m >= 2,
         an axisymmetric mode (0, n), n >= 1 (axial wavenumber n pi / L in the
@@ -203,11 +205,10 @@ def _tube_family(mode) -> str:
 
 def _tube_not_covered(tube: Tube, family: str, control: str) -> str:
     """What the tube lacks for the expansion, in words ("" when covered)."""
-    if tube.stretch is None:
-        return "the axial stretch prescribed (not the axial force)"
-    for ply in tube.layers:
-        if ply.graded:
-            return "constant growth in every layer"
+    loaded = tube.voltage != 0 or tube.inner_pressure != 0 or tube.outer_pressure != 0
+    if tube.control == "force" and (loaded or control in ("voltage", "pressure")):
+        # the force's conjugate would carry the field's and the ends' pressure load too
+        return "the axial stretch prescribed under a voltage or a pressure (not the axial force)"
     return _energy_not_covered(tube, control)
 
 

@@ -23,6 +23,7 @@ from ..model.layers import Tube
 from ..outcomes import Kind
 from .critical import critical_value
 from .koiter_film import MODE, _nearest_zero
+from .koiter_force import AxialFreedom, axial_freedom
 
 #: The correction's harmonics 0 and 2: the even field (u_r), the pressure, and the odd
 #: field at harmonic 2 (the odd field of harmonic 0 is a rigid motion, or no field at all).
@@ -38,6 +39,8 @@ class TubeExpansion:
     coefficient: float
     impedance_value: float
     inner_face: float  # u_r of the mode at R_i over its peak
+    numerator: float = math.nan  # 2 A[psi, psi] - 4 E4(phi) (+ a_z^2 / (2 k) at a force)
+    axial: AxialFreedom | None = None  # the force prescribed: lambda_z's freedom
 
 
 def control_derivative(stiffness, c: float):
@@ -144,5 +147,11 @@ def expand(tube, control, first, second, start, what) -> TubeExpansion:
     A2 = second.hessian(L[2])
     psi = np.linalg.solve(A2, -second.gradient(L[3], f1))
     quartic = first.energy(L[4], f1)  # E4(phi) = D[phi, phi, phi, phi] / 24
-    c2 = (2 * (psi @ A2 @ psi) - 4 * quartic) / (phi @ control_derivative(A, c) @ phi)
-    return TubeExpansion(float(c), float(c2), float(start), float(phi[first.slices[0]][0]))
+    numerator = 2 * (psi @ A2 @ psi) - 4 * quartic
+    axial = None
+    if tube.control == "force":  # the (0, 0) correction's freedom in lambda_z
+        axial = axial_freedom(tube, control, c, first.stiffness, phi)
+        numerator += axial.term
+    c2 = numerator / (phi @ control_derivative(A, c) @ phi)  # A' along the path (force or stretch)
+    inner = float(phi[first.slices[0]][0])
+    return TubeExpansion(float(c), float(c2), float(start), inner, float(numerator), axial)

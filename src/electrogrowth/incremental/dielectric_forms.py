@@ -97,10 +97,9 @@ class DielectricForms(MonomialForms):
             sel = self.layer == k
             if not sel.any():
                 continue
-            if ply.graded:
-                raise ParameterError("graded growth is not covered by the amplitude equation yet")
-            gr, gt, gz = ply.growth
-            J, mu, eps, R = gr * gt * gz, ply.shear_modulus, ply.permittivity, self.R[sel]
+            R = self.R[sel]
+            gr, gt, gz = ply.growth_at(R)  # graded growth: g(R) at the points
+            J, mu, eps = gr * gt * gz, ply.shear_modulus, ply.permittivity
             r, e = state.radius(R), state.electric_field(R)
             out["cr"][sel], out["ct"][sel], out["J"][sel] = J * mu / gr**2, J * mu / gt**2, J
             out["p0"][sel] = state.pressure(R) - eps * e**2

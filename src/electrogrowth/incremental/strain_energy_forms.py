@@ -87,10 +87,8 @@ def strain_energy(forms, state, F: dict) -> dict[int, list]:
     scale = np.zeros(forms.R.size)
     for k, ply in enumerate(state.tube.layers):
         sel = forms.layer == k
-        if ply.graded:
-            raise ParameterError("graded growth is not covered by the amplitude equation yet")
-        g[:, sel] = np.reshape(ply.growth, (3, 1))
-        scale[sel] = np.prod(ply.growth) * ply.shear_modulus
+        g[:, sel] = ply.growth_at(forms.R[sel])  # graded growth: g(R) at the points
+        scale[sel] = np.prod(g[:, sel], axis=0) * ply.shear_modulus
     Fe = {(i, J): {k: c / g[J] for k, c in p.items()} for (i, J), p in F.items()}
     I1, I2 = invariants(Fe)
     base = (np.broadcast_to(I1.get((), 0.0), forms.R.shape), I2.get((), 0.0))
