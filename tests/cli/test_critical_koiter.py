@@ -121,3 +121,13 @@ def test_voltage_control_has_its_branch(tmp_path, capsys):
     )
     c2 = tube_expansion(Tube(layers, stretch=1.0), 12, "voltage").coefficient
     assert rec["branch"] == "supercritical" and abs(rec["koiter"] - c2) < 1e-9 * abs(c2)
+
+
+def test_without_koiter_a_wrinkle_says_how_to_learn_its_branch(capsys):
+    """Every wrinkle's record speaks of its branch: without --koiter, how to get it."""
+    args = ["critical", "--solve-for", "growth", "--outer-radius", "1.4", "--voltage", "0.4"]
+    assert main([*args, "--mode", "0", "1", "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["branch"] is None and "--koiter" in rec["branch_note"]
+    assert main([*args, "--mode", "0", "1"]) == 0
+    assert "amplitude equation not computed: not asked: add --koiter" in capsys.readouterr().out

@@ -69,10 +69,10 @@ def configure_critical(parser: argparse.ArgumentParser) -> None:
         help="also solve the amplitude equation of the wrinkle at onset: supercritical"
         " (folds grow gradually) or subcritical (a jump to large folds), with the Koiter"
         " coefficient c_2 of control = c_cr + c_2 eps^2, eps the mode's peak radial"
-        " displacement over R_i (so far: prismatic modes (m, 0) and rings (0, n) of"
-        " tubes of any energy (ideal dielectrics under a voltage) at a prescribed axial"
-        " stretch, pressures on the faces allowed, for a growth, the stretch, the pressure"
-        " or the voltage; a few seconds)",
+        " displacement over R_i (every wrinkle (m, n), m >= 2 or n >= 1, of layered"
+        " tubes of any energy, graded growth included, for a growth, the stretch, the"
+        " pressure or the voltage; ideal dielectrics under a voltage; pressures on the"
+        " faces, or the axial force prescribed without them; one to five seconds)",
     )
     parser.add_argument(
         "--json",
@@ -129,6 +129,8 @@ def run_critical(args) -> int:
         warn(edge_warning(result))
     if args.koiter:
         record.update(_amplitude_equation(args, params, solve_for, crit))
+    elif record.get("wrinkle") is not None:  # say how to learn it, rather than nothing
+        record["branch_note"] = NOT_ASKED
     if args.certify and crit.kind in (Kind.BIFURCATION, Kind.SURFACE):
         # a scan: certify the choice of the mode as well
         record.update(_certify(params, crit, args, result if mode is None else None))
@@ -140,6 +142,10 @@ def run_critical(args) -> int:
     else:
         _print_text(record, runners, getattr(args, "scales", None))
     return _inaccurate_exit(crit, args)
+
+
+#: what a wrinkle's record says of its branch when --koiter was not given
+NOT_ASKED = "not asked: add --koiter for super- or subcritical (one to five seconds more)"
 
 
 def _amplitude_equation(args, params, solve_for, crit) -> dict:

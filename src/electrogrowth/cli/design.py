@@ -108,9 +108,8 @@ def configure_design(parser: argparse.ArgumentParser) -> None:
         "--koiter",
         action="store_true",
         help="also solve the amplitude equation of the chosen design's wrinkle: super- or"
-        " subcritical (as critical --koiter; covered: prismatic modes and rings of"
-        " tubes of any energy in a growth, stretch, pressure or voltage control; a few"
-        " seconds)",
+        " subcritical (as critical --koiter: every wrinkle (m, n) of tubes of any energy"
+        " in a growth, stretch, pressure or voltage control; one to five seconds)",
     )
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     add_quiet_option(parser)
