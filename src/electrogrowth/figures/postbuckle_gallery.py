@@ -146,6 +146,21 @@ def plot_case(record: dict):
     return fig
 
 
+def plot_strip(record: dict):
+    """The strip of stored shapes alone (docs/images/postbuckle-folding.png); a Figure."""
+    count = len(record["shapes"]["points"])
+    fig, axes = new_figure(1.9 * count, 2.5, 1, count)
+    _draw_strip(record, axes[0])
+    mesh = record["mesh"]
+    along = mesh.get("hoop_elements", mesh.get("axial_elements"))
+    fig.suptitle(
+        f"folding of mode (m, n) = ({record['m']}, {record['n']}), current shapes, on"
+        f" {tuple(mesh['radial_elements'])} x {along} elements",
+        fontsize=8,
+    )
+    return fig
+
+
 def _draw_strip(record, axes):
     branch = record["branch"]
     extent = top = 0.0
@@ -208,4 +223,4 @@ def _draw_branch(record, ax):
     ax.set_title(f"{what} of mode (m, n) = ({record['m']}, {record['n']})", fontsize=9)
 
 
-__all__ = ["CASES", "plot_case", "read_case", "whole_shape", "write_case"]
+__all__ = ["CASES", "plot_case", "plot_strip", "read_case", "whole_shape", "write_case"]
