@@ -48,7 +48,7 @@ for c, a, lam in zip(branch["control"], branch["amplitude"], branch["lowest_eige
 # (12, 0) (the impedance route, to 1e-9), and the FE onsets lie within 2e-4 of it. The
 # branch's initial curvature d g_theta / d a^2 (from branch points at a = 0.001, 0.002,
 # 0.004) against the Koiter coefficient of the amplitude equation, rescaled from the
-# mode's peak |u_r| to its inner-face value (the FE's amplitude).
+# mode's peak radial displacement to its inner-face value (the FE's amplitude).
 linear = critical_value(mucosa(), 12, 0, "growth[1].theta").value
 assert abs(linear - rec["onset_linear"]) <= 1e-9 * linear
 for onset in (rec["onset_fe"], coarse["onset_fe"]):

@@ -36,9 +36,10 @@ for c, a, lam in zip(branch["control"], branch["amplitude"], branch["lowest_eige
 # %%
 # Checked again here: the stored linear onset is the package's critical value of mode
 # (0, 1) to 1e-9, the FE onset within 1e-5 of it; the FE branch's initial curvature
-# d Vbar / d a^2 against the Koiter coefficient c_2 (eps the mode's peak |u_r| / R_i,
-# the FE's a its inner-face value: the same number where the mode peaks on the inner
-# face, the face the FE reads because the mode is larger there).
+# d Vbar / d a^2 against the Koiter coefficient c_2. Koiter's eps is the mode's peak
+# radial displacement over R_i, the FE's a its inner-face value: the same number here,
+# where the radial displacement is largest on the inner face and falls outward (the
+# stored shapes show it).
 linear = critical_value(dielectric(), 0, 1, "voltage").value
 assert abs(linear - rec["onset_linear"]) <= 1e-9 * linear
 assert abs(rec["onset_fe"] - linear) <= 1e-5 * linear
