@@ -68,9 +68,10 @@ sphinx_gallery_conf = {
     "gallery_dirs": "gallery",
     "filename_pattern": r"plot_",
     # Subsections are the subfolders (each with its README.txt), in the order of the
-    # pipeline: one tube, layered tubes, sweeps, then the inverse question (design).
+    # pipeline: one tube, layered tubes, sweeps, the inverse question (design), then past
+    # onset by finite elements (postbuckle).
     "subsection_order": [  # paths relative to this directory, as sphinx-gallery wants
-        f"../examples/gallery/{s}" for s in ("basics", "layered", "sweeps", "design")
+        f"../examples/gallery/{s}" for s in ("basics", "layered", "sweeps", "design", "postbuckle")
     ],
     "within_subsection_order": "FileNameSortKey",
     "image_scrapers": ("gallery_scraper.scraper",),

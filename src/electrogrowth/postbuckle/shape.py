@@ -22,19 +22,27 @@ def deformed_vertices(section, x: np.ndarray) -> np.ndarray:
 def ring(section, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The whole ring: (points (2, n), quadrilaterals (n_cells, 4), layer of each cell), the
     sector reflected and turned 2 m / k times (vertices on the rays repeated)."""
-    m = section.m // section.periods
-    pts = deformed_vertices(section, x)
-    cells = section.mesh.t.T
+    copies = section.m // section.periods
+    return ring_of_sector(
+        deformed_vertices(section, x), section.mesh.t.T, section.layer_of, copies
+    )
+
+
+def ring_of_sector(
+    pts: np.ndarray, cells: np.ndarray, layer_of: np.ndarray, copies: int
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`ring` from the sector's current vertices ``pts`` (2, n), its quadrilaterals and
+    their layers: the sector and its mirror image turned by 2 pi j / ``copies``."""
     mirror = np.array([pts[0], -pts[1]])
     all_pts, all_cells, layers = [], [], []
     n = pts.shape[1]
-    for k in range(m):
-        a = 2 * math.pi * k / m
+    for k in range(copies):
+        a = 2 * math.pi * k / copies
         rot = np.array([[math.cos(a), -math.sin(a)], [math.sin(a), math.cos(a)]])
         for j, (p, c) in enumerate(((pts, cells), (mirror, cells[:, ::-1]))):
             all_pts.append(rot @ p)
             all_cells.append(c + n * (2 * k + j))
-            layers.append(section.layer_of)
+            layers.append(layer_of)
     return np.hstack(all_pts), np.vstack(all_cells), np.concatenate(layers)
 
 
@@ -71,19 +79,28 @@ def meridian_tube(meridian, x: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.n
     quadrilaterals (n_cells, 4), layer of each cell). The window is reflected about its end
     planes n / k times along z (the symmetry it was solved with), and the meridian drawn on both
     sides of the axis (x = +-r)."""
-    pts = meridian_vertices(meridian, x)
-    cells = meridian.mesh.t.T
     height = float(meridian.tube.stretch) * meridian.extent
+    copies = meridian.n // meridian.periods
+    pts = meridian_vertices(meridian, x)
+    return tube_of_window(pts, meridian.mesh.t.T, meridian.layer_of, copies, height)
+
+
+def tube_of_window(
+    pts: np.ndarray, cells: np.ndarray, layer_of: np.ndarray, copies: int, height: float
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`meridian_tube` from the window's current (r, z) vertices ``pts``, its
+    quadrilaterals and their layers: ``copies`` windows of current ``height`` along z, every
+    other one reflected, each drawn on both sides of the axis."""
     n = pts.shape[1]
     all_pts, all_cells, layers = [], [], []
-    for j in range(meridian.n // meridian.periods):
+    for j in range(copies):
         z = pts[1] if j % 2 == 0 else height - pts[1]
         flip = j % 2  # a reflection reverses the cells' orientation
         for side in (1.0, -1.0):
             all_pts.append(np.array([side * pts[0], z + j * height]))
             c = cells if (side > 0) != bool(flip) else cells[:, ::-1]
             all_cells.append(c + n * (len(all_pts) - 1))
-            layers.append(meridian.layer_of)
+            layers.append(layer_of)
     return np.hstack(all_pts), np.vstack(all_cells), np.concatenate(layers)
 
 
