@@ -48,3 +48,17 @@ def test_voltage_onset_of_a_grown_bilayer():
     linear = critical_value(tube, 24, 0, "voltage").value
     onset = fe_onset(Section(tube, 24, MeshSize((2, 9), 4)), tube, "voltage", linear, xtol=1e-10)
     assert abs(onset.value - linear) < 2e-4 * linear
+
+
+def test_a_mesh_that_loses_stability_inside_the_wall_says_so():
+    """A dielectric tube (R = 1 to 1.5, mode (0, 1) at Vbar = 0.7541) on 10 elements a
+    wavelength: its tangent turns negative at Vbar = 0.7232 in modes of the elements' size
+    that leave the faces still (eigenvalues down to -233 at 0.7, dense). Once the lowest
+    eigenvalue was found below the shift (the period-doubling fix), that was reported as the
+    onset and the branch failed in a Newton step; now it is named, with the remedy."""
+    from electrogrowth.errors import ConvergenceError
+    from electrogrowth.postbuckle import postbuckle
+
+    with pytest.raises(ConvergenceError, match="leaves the faces still.*too coarse") as exc:
+        postbuckle(Tube.uniform(1.5, 1.0), (0, 1), "voltage", density=10, points=2)
+    assert "finer mesh" in exc.value.remedy.cli

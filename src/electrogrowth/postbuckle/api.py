@@ -12,12 +12,12 @@ from collections.abc import Callable
 import numpy as np
 
 from ..bifurcation.critical import critical_value
-from ..errors import NoBifurcationFound, ParameterError
+from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
 from ..interrupts import Interrupted
 from ..model.layers import Tube
 from .branch import AmplitudeBranch, BranchPoint, amplitude_vector, with_stability
 from .meridian import Meridian, meridian_size, window
-from .newton import newton
+from .newton import fe_error, newton
 from .onset import fe_onset, start_value
 from .result import PostbuckleResult
 from .section import Section, mesh_size
@@ -110,6 +110,7 @@ def postbuckle(
     _check_first_in_window(tube, m, n, control, linear, periods, side)
     say(f"finite-element onset on {size.elements} elements ({section.free.size} unknowns)")
     onset = fe_onset(section, tube, control, linear)
+    _check_onset_moves_faces(section, onset, linear, (m, n), control)
     say("initial curvature of the branch")
     start, near, curvature, face, direction = initial_curvature(section, tube, control, onset)
     a = amplitude_vector(section, face)
@@ -172,6 +173,26 @@ def initial_curvature(section, tube: Tube, control: str, onset):
     d1 = (c[1] - c[0]) / (3 * a**2)
     d2 = (c[2] - c[1]) / (12 * a**2)
     return start, pts[:2], (4 * d1 - d2) / 3, face, direction
+
+
+def _check_onset_moves_faces(section, onset, linear: float, mode, control: str) -> None:
+    """ConvergenceError unless the mesh's first instability moves the faces. A coarse mesh
+    of a charged tube can lose stability first in modes of its elements' size inside the
+    wall (a dielectric tube on 10 elements a wavelength: eigenvalues down to -233 at Vbar
+    0.7, its onset 0.7232 where the linear one is 0.7541), which no branch continues."""
+    faces = [abs(amplitude_vector(section, f) @ onset.mode) for f in ("inner", "outer")]
+    if max(faces) > FACE_SHARE * np.abs(onset.mode).max():
+        return
+    raise fe_error(
+        ConvergenceError,
+        f"on this mesh the tube loses stability first at {control} = {onset.value:.6g} in a"
+        f" mode of the elements' size that leaves the faces still, not in the mode {mode}"
+        f" (its linear onset {linear:.6g}): the mesh is too coarse here",
+    )
+
+
+#: an onset's mode moves the faces by at least this share of its largest entry
+FACE_SHARE = 1e-6
 
 
 def _mode(mode) -> tuple[int, int]:
