@@ -130,7 +130,7 @@ def run_critical(args) -> int:
     if args.koiter:
         record.update(_amplitude_equation(args, params, solve_for, crit))
     elif record.get("wrinkle") is not None:  # say how to learn it, rather than nothing
-        record["branch_note"] = NOT_ASKED
+        record["branch_note"] = "not asked: add --koiter for super- or subcritical (1-5 s)"
     if args.certify and crit.kind in (Kind.BIFURCATION, Kind.SURFACE):
         # a scan: certify the choice of the mode as well
         record.update(_certify(params, crit, args, result if mode is None else None))
@@ -142,10 +142,6 @@ def run_critical(args) -> int:
     else:
         _print_text(record, runners, getattr(args, "scales", None))
     return _inaccurate_exit(crit, args)
-
-
-#: what a wrinkle's record says of its branch when --koiter was not given
-NOT_ASKED = "not asked: add --koiter for super- or subcritical (one to five seconds more)"
 
 
 def _amplitude_equation(args, params, solve_for, crit) -> dict:
