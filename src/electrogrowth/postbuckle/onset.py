@@ -168,8 +168,9 @@ def fe_onset(
     (c_prev, lam_prev), (c, lam) = path[-2], path[-1]
     if lam <= 0:
         raise NoBifurcationFound(
-            f"the finite-element tube is already unstable at {control} = {c:.6g};"
-            " give a larger guess or more steps"
+            f"the finite-element tube is already unstable at {control} = {c:.6g}, 0.9 of"
+            " the way to the guessed onset (a guess past the onset, or a mesh unstable in"
+            " modes of its elements' size: give a smaller guess, more steps or a finer mesh)"
         )
     while lam > 0:
         # the secant's zero, 1 % of the span past it, at most 10 % of the span ahead
