@@ -68,15 +68,25 @@ class MonomialForms:
         """The second derivative of ``energy`` (for quadratic monomials ``f`` is unused).
         The weights of each pair of fields are summed first, so that each pair costs one
         product of maps (the energy of a general material has many monomials per pair)."""
-        pairs: dict = {}
-        for k, xs in monomials:
-            for i, j in itertools.combinations(range(len(xs)), 2):
-                rest = [f[x] for n, x in enumerate(xs) if n not in (i, j)] if f else []
-                w = self.weight * k * (np.prod(rest, axis=0) if rest else 1.0)
-                key = tuple(sorted((xs[i], xs[j])))
-                pairs[key] = pairs.get(key, 0.0) + w
+        pairs = pair_weights(monomials, self.weight, f)
         H = np.zeros((self.size, self.size))
         for (a, b), w in pairs.items():
             M = self.maps[a].T @ (w[:, None] * self.maps[b])
             H += M + M.T  # the pair (a, b) and (b, a)
         return H
+
+
+def pair_weights(monomials, weight, f: dict | None = None) -> dict:
+    """{(a, b): w}, a <= b: the weights at the quadrature points of the product of fields
+    a and b in the second derivative of the monomials' energy (each coefficient k times
+    the quadrature ``weight`` and the other fields' values ``f``; for quadratic monomials
+    ``f`` is unused), summed over the monomials, so that each pair costs one product of
+    maps (the energy of a general material has many monomials per pair)."""
+    pairs: dict = {}
+    for k, xs in monomials:
+        for i, j in itertools.combinations(range(len(xs)), 2):
+            rest = [f[x] for n, x in enumerate(xs) if n not in (i, j)] if f else []
+            w = weight * k * (np.prod(rest, axis=0) if rest else 1.0)
+            key = tuple(sorted((xs[i], xs[j])))
+            pairs[key] = pairs.get(key, 0.0) + w
+    return pairs

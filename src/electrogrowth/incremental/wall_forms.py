@@ -33,13 +33,12 @@ polar forms: the tests compare them.
 from __future__ import annotations
 
 import dataclasses
-import itertools
 
 import numpy as np
 
 from .._types import FloatArray
 from ..errors import ParameterError
-from .monomial_forms import by_degree
+from .monomial_forms import by_degree, pair_weights
 from .polar_forms import Ring, coefficient_arrays, peak_on_rings, radial_maps
 from .strain_energy_forms import strain_energy, times
 
@@ -184,14 +183,7 @@ class WallForms:
     def hessian(self, monomials, f: dict | None = None) -> FloatArray:
         """The second derivative of ``energy`` (for quadratic monomials ``f`` is unused),
         the weights of each pair of fields summed first."""
-        pairs: dict = {}
-        for k, xs in monomials:
-            for i, j in itertools.combinations(range(len(xs)), 2):
-                rest = [f[x] for n, x in enumerate(xs) if n not in (i, j)] if f else []
-                w = self.weight * k * (np.prod(rest, axis=0) if rest else 1.0)
-                key = tuple(sorted((xs[i], xs[j])))
-                pairs[key] = pairs.get(key, 0.0) + w
-        H = self.pair_matrices(pairs)
+        H = self.pair_matrices(pair_weights(monomials, self.weight, f))
         return H + H.T
 
     def pair_matrices(self, pairs: dict) -> FloatArray:
