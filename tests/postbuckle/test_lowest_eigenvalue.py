@@ -24,11 +24,17 @@ class _Saddle:
         self.b = rng.standard_normal(n)
         self.K = sps.bmat([[sps.csr_matrix(self.a), self.b[:, None]], [self.b[None, :], None]])
         self.M = sps.diags(np.r_[np.ones(n), 0.0]).tocsr()
-        self.free = np.arange(n + 1)
-        self.basis = type("Basis", (), {"N": n + 1})
+        self.multipliers = 1  # the Lagrange multiplier: negative far below the spectrum
 
     def tangent(self, x):
         return self.K.tocsr()
+
+    # every unknown free: the solvers' unknowns are x itself
+    def reduced(self, K):
+        return K.tocsc()
+
+    def expand(self, y):
+        return y
 
     def exact(self):
         """The condensed problem's eigenvalues and vectors, densely: the stiffness on the

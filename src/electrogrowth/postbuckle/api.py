@@ -108,7 +108,7 @@ def postbuckle(
     say(f"linear onset of mode ({m}, {n}) and of the modes its {_where(m, n, periods)} holds")
     linear = critical_value(tube, m, n, control, side=side).value
     _check_first_in_window(tube, m, n, control, linear, periods, side)
-    say(f"finite-element onset on {size.elements} elements ({section.free.size} unknowns)")
+    say(f"finite-element onset on {size.elements} elements ({section.unknowns} unknowns)")
     onset = fe_onset(section, tube, control, linear)
     _check_onset_moves_faces(section, onset, linear, (m, n), control)
     say("initial curvature of the branch")
@@ -120,8 +120,8 @@ def postbuckle(
     )
     record = functools.partial(_with_face, record, face, imperfection)
     if imperfection > 0:
-        force = np.zeros(section.basis.N)
-        force[section.free] = imperfection * (section.M @ direction)[section.free]
+        # on the displacements alone (M), zero where they are prescribed
+        force = section.with_fixed(imperfection * (section.M @ direction))
         branch = AmplitudeBranch(section, tube, control, force, eigenvalues=True, face=face)
         # the imperfect path from 90 % of the way to onset, in the amplitude
         c0 = onset.value - 0.1 * (onset.value - start_value(tube, control))
@@ -275,7 +275,7 @@ def _record(tube, control, mode, linear, onset, size, section, curvature, pts):
         onset_linear=float(linear),
         onset_fe=onset,
         mesh=size,
-        unknowns=int(section.free.size),
+        unknowns=section.unknowns,
         control=np.array([p.control for p in pts]),
         amplitude=np.array([p.amplitude for p in pts]),
         energy=full * np.array([p.energy for p in pts]),

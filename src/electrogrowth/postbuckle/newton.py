@@ -36,10 +36,9 @@ def newton(section, x: np.ndarray, *, tol: float = RESIDUAL_TOL) -> tuple[np.nda
     reset to the section's). Returns (x, iterations); ConvergenceError if it does not
     converge in MAX_ITERATIONS or the residual grows a thousandfold."""
     x = section.with_fixed(x)
-    f = section.free
     r0 = None
     for it in range(MAX_ITERATIONS + 1):
-        r = section.residual(x)[f]
+        r = section.restrict(section.residual(x))
         norm = np.abs(r).max()
         if not np.isfinite(norm):
             break
@@ -48,8 +47,7 @@ def newton(section, x: np.ndarray, *, tol: float = RESIDUAL_TOL) -> tuple[np.nda
         r0 = norm if r0 is None else r0
         if norm > 1e3 * max(r0, 1.0):
             break
-        K = section.tangent(x)[f][:, f].tocsc()
-        x[f] -= spla.spsolve(K, r)
+        x = x - section.expand(spla.spsolve(section.reduced(section.tangent(x)), r))
     raise fe_error(
         ConvergenceError,
         f"the finite-element equilibrium did not converge (residual {norm:.3g} after {it}"
@@ -58,7 +56,7 @@ def newton(section, x: np.ndarray, *, tol: float = RESIDUAL_TOL) -> tuple[np.nda
 
 
 def unloaded(section) -> np.ndarray:
-    """The unknowns of the undeformed, unloaded wall as Newton's start: u = 0, phi = 0 and
+    """The unknowns of the undeformed, unloaded wall as Newton's start: u = 0, A = 0 and
     p = mu_k (the neo-Hookean stress mu_k I balanced by the pressure)."""
     x = np.zeros(section.basis.N)
     x[section.pressure_dofs] = [section.tube.layers[k].shear_modulus for k in section.layer_of]
