@@ -94,7 +94,9 @@ def _prolongation(n: int, independent: np.ndarray, tied: np.ndarray) -> sps.csr_
     first of ``tied`` (one of ``independent``) at all of them; prescribed entries stay 0."""
     column = {int(d): j for j, d in enumerate(independent)}
     rows = np.concatenate([independent, tied[1:]])
-    cols = np.concatenate([np.arange(len(independent)), np.full(len(tied) - 1, column[int(tied[0])])])
+    cols = np.concatenate(
+        [np.arange(len(independent)), np.full(len(tied) - 1, column[int(tied[0])])]
+    )
     return sps.csr_matrix((np.ones(len(rows)), (rows, cols)), shape=(n, len(independent)))
 
 
