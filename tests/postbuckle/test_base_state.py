@@ -87,3 +87,26 @@ def test_charge_matches_the_package(model):
         errors.append(abs(wall.charge(x) / (wall.extent * tube.stretch) / charge - 1))
     assert errors[0] < 1e-5
     assert errors[1] < errors[0] / 10
+
+
+def test_the_path_in_the_invariant_fields_is_the_full_equilibrium():
+    """Newton on the fields independent of Theta (the unperturbed path's) lands on the full
+    model's equilibrium: the whole residual vanishes, and full Newton from there takes no
+    step; the columns are independent of Theta (u_Theta, D_Theta and the pressure's Theta
+    slope vanish on each)."""
+    from electrogrowth.postbuckle.newton import newton
+
+    section = Section(LOADED, 6, mesh_size(LOADED, 6, 4, hoop=3))
+    x = loaded(section, LOADED, steps=3)  # Newton in the invariant fields
+    assert np.abs(section.restrict(section.residual(x))).max() < 1e-10
+    y, steps = newton(section, x)
+    assert steps == 0 and np.array_equal(x, y)
+    B = section.invariant.toarray()
+    for column in B.T:
+        u, p0, p1, p2, A = section.basis.interpolate(column)
+        state = section.kinematics(u, p0, p1, p2, A, section._w)
+        assert np.abs(u[1]).max() == 0  # u_Theta
+        assert np.abs(state[1]).max() < 1e-12  # F_R_Theta = (u_R,Theta - u_Theta) / R
+        assert np.abs(state[5]).max() < 1e-12  # D_Theta = -A_R
+        assert np.abs(p2).max() == 0
+        assert np.ptp(state[4] * section.R) < 1e-12  # R D_R = A_Theta: one value

@@ -126,7 +126,7 @@ def postbuckle(
         # the imperfect path from 90 % of the way to onset, in the amplitude
         c0 = onset.value - 0.1 * (onset.value - start_value(tube, control))
         section.set_tube(tube.at(control, c0))
-        x0, _ = newton(section, onset.x)
+        x0, _ = newton(section, onset.x, invariant=True)
         x0 = _with_imperfection(section, x0, force)
         first = with_stability(section, BranchPoint(c0, float(a @ x0), section.energy(x0), x0))
         head, follow_from = [first], first

@@ -155,7 +155,7 @@ def fe_onset(
         near = min(states, key=lambda k: abs(k - c)) if states else None
         x0 = states[near][0] if near is not None else x
         section.set_tube(tube.at(control, c))
-        xc, _ = newton(section, x0)
+        xc, _ = newton(section, x0, invariant=True)
         lam = lowest_eigenvalue(section, xc)
         states[c] = (xc, lam)
         return lam
@@ -185,6 +185,6 @@ def fe_onset(
         path.append((float(c), lam))
     value = so.brentq(at, c_prev, c, xtol=xtol, rtol=4 * np.finfo(float).eps)
     section.set_tube(tube.at(control, value))
-    xv, _ = newton(section, states[min(states, key=lambda k: abs(k - value))][0])
+    xv, _ = newton(section, states[min(states, key=lambda k: abs(k - value))][0], invariant=True)
     _, mode = lowest_eigenvalue(section, xv, vector=True)
     return FEOnset(float(value), xv, mode, tuple(sorted(path)))

@@ -224,12 +224,42 @@ class Wall:
         self._w = _Where(self.basis.global_coordinates(), self.centres)
         self.M = asm(_mass, self.basis)
         # the constant part p0 of each element's pressure, in element order
-        p0 = set(self.basis.split_indices()[1].tolist())
-        self.pressure_dofs = np.array(
-            [next(d for d in col if d in p0) for col in self.basis.element_dofs.T]
-        )
+        self.pressure_dofs = self._element_dofs(1)
+        self.invariant = self._invariant_basis()
         self._tube: Tube | None = None
         self.set_tube(tube)
+
+    def _element_dofs(self, field: int) -> np.ndarray:
+        """The dof of the piecewise-constant ``field`` (1, 2, 3: p0, p1, p2) of each element."""
+        own = set(self.basis.split_indices()[field].tolist())
+        return np.array([next(d for d in col if d in own) for col in self.basis.element_dofs.T])
+
+    def _invariant_basis(self) -> sps.csr_matrix:
+        """The fields that do not depend on Y (the unperturbed, axisymmetric path), as the
+        columns of an N x n matrix: u_R(R) (one column per radius of a node), u_Y = 0, the
+        pressure's p0 and R-slope p1 of each row of elements (p2 = 0), and A = a Y / extent
+        (D = (a / (extent R), 0)). Newton on the path moves in this space only: the onset's
+        mode lies outside it, so the tangent's near-singularity at onset does not amplify
+        rounding along the mode."""
+        rows, cols, values = [], [], []
+
+        def add(dofs, groups, weights=None):
+            """One column per distinct value of ``groups``, ``weights`` (1) at ``dofs``."""
+            _, index = np.unique(np.round(groups, 10), return_inverse=True)
+            cols.append(index + (max(c.max() for c in cols) + 1 if cols else 0))
+            rows.append(dofs)
+            values.append(np.ones(len(dofs)) if weights is None else weights)
+
+        u_R = self.basis.get_dofs(elements=True).all("u^1^1")
+        add(u_R, self.basis.doflocs[0, u_R])
+        row = self.centres["Rc"][:, 0]
+        add(self.pressure_dofs, row)
+        add(self._element_dofs(2), row)
+        A = self.basis.get_dofs(elements=True).all("u^5")
+        add(A, np.zeros(len(A)), self.basis.doflocs[1, A] / self.extent)
+        n = max(c.max() for c in cols) + 1
+        data = (np.concatenate(values), (np.concatenate(rows), np.concatenate(cols)))
+        return sps.csr_matrix(data, shape=(self.basis.N, n))
 
     # -- the tube's numbers at the quadrature points ---------------------------------------
     def set_tube(self, tube: Tube) -> None:
