@@ -180,15 +180,18 @@ def _check_onset_pattern(section, onset, linear: float, mode, control: str) -> N
     the faces (:func:`~.stability.face_harmonic`: ``periods`` half wavelengths along the
     sector or window). A mesh too coarse along a face can lose stability first in a pattern
     of its elements' size, which the linear analysis puts later: the grown bilayer of
-    docs/postbuckling.md on 4 elements along pi / 24 in cos(96 Theta) at its outer face, at
-    Vbar = 1.1769, where the linear onset of (24, 0) is 1.1816 and of (96, 0) 1.1844."""
+    docs/postbuckling.md on 4 elements along pi / 24, in cos(96 Theta) at its outer face
+    between Vbar = 1.0 and 1.1, where the linear onset of (24, 0) is 1.1816 and of (96, 0)
+    1.1844. The sign change the onset's search then lands on need not be the first (an
+    even number of crossings goes unseen), so its pattern is the test, not its value."""
     i, share = face_harmonic(section, onset.mode)
     if share >= PATTERN_SHARE and i == section.periods:
         return
     if share == 0.0:
         what = "a mode of the elements' size that leaves the faces still"
     else:
-        what = f"a pattern of {i} half wavelengths along the {_where(*mode, section.periods)}"
+        where = _where(mode[0], mode[1], section.periods)
+        what = f"a pattern of {i} half wavelengths along the {where}"
     raise fe_error(
         ConvergenceError,
         f"on this mesh the tube loses stability first at {control} = {onset.value:.6g} in"
