@@ -24,11 +24,17 @@ class _Saddle:
         self.b = rng.standard_normal(n)
         self.K = sps.bmat([[sps.csr_matrix(self.a), self.b[:, None]], [self.b[None, :], None]])
         self.M = sps.diags(np.r_[np.ones(n), 0.0]).tocsr()
-        self.free = np.arange(n + 1)
-        self.basis = type("Basis", (), {"N": n + 1})
+        self.multipliers = 1  # the Lagrange multiplier: negative far below the spectrum
 
     def tangent(self, x):
         return self.K.tocsr()
+
+    # every unknown free: the solvers' unknowns are x itself
+    def reduced(self, K):
+        return K.tocsc()
+
+    def expand(self, y):
+        return y
 
     def exact(self):
         """The condensed problem's eigenvalues and vectors, densely: the stiffness on the
@@ -59,3 +65,28 @@ def test_a_positive_spectrum_is_unchanged():
     assert SHIFT < 0
     model = _Saddle(np.geomspace(1.0, 1e4, 150))
     assert lowest_eigenvalue(model, None) == pytest.approx(model.exact()[0][0], rel=1e-10)
+
+
+@pytest.mark.parametrize("voltage", [0.0, 1.0])
+def test_far_below_the_spectrum_only_the_pressure_is_negative(voltage):
+    """The determinant's sign far below the spectrum is (-1)^multipliers: the pressure's
+    unknowns are the tangent's only negative directions there. The stream function's
+    block, massless too, is positive: the dielectric energy is a minimum in D (with the
+    potential as the field it was a maximum, and negative). Dense, on a charged grown
+    bilayer."""
+    from electrogrowth.model.layers import Layer, Tube
+    from electrogrowth.postbuckle.newton import loaded
+    from electrogrowth.postbuckle.section import MeshSize, Section
+
+    tube = Tube(
+        (Layer(1.1, shear_modulus=10.0, growth=(1.0, 1.3, 1.0)), Layer(2.0)),
+        stretch=1.0,
+        voltage=voltage,
+    )
+    section = Section(tube, 12, MeshSize((2, 3), 4))
+    x = loaded(section, tube, steps=4)
+    K = section.reduced(section.tangent(x)).toarray()
+    M = section.reduced(section.M).toarray()
+    sigma = -1e3 * np.abs(K).max()
+    eig = np.linalg.eigvalsh(K - sigma * M)
+    assert np.count_nonzero(eig < 0) == section.multipliers

@@ -8,7 +8,7 @@ axisymmetric (m, n) = (0, 1) at Vbar = 0.7541 (``electrogrowth critical --solve-
 voltage --outer-radius 1.5``; next (1, 1) at 0.7585), and the amplitude equation calls it
 subcritical (``--koiter``: c_2 = -1.327, the control falling as the wrinkle grows). The
 finite-element model of the meridian (a window of half an axial wavelength, 8 x 16
-elements, 1967 unknowns) follows the ring's amplitude a (the cos(k Z) radial displacement
+elements, 2000 unknowns) follows the ring's amplitude a (the cos(k Z) radial displacement
 of the inner face) to a = 0.08 R_i.
 
 The branch took about a minute, so it is read from ``dielectric.json``, written by
@@ -52,15 +52,16 @@ assert abs(gap) < 0.01
 
 # %%
 # What it shows. Both say subcritical: the FE branch's voltage falls from its onset
-# 0.75410 (2e-6 above the linear value) as the rings deepen, to 0.7445 at a = 0.08, with
-# d Vbar / d a^2 = -1.330 at onset against Koiter's -1.327 (2e-3 apart). At fixed voltage
+# 0.754101 (3e-6 above the linear value) as the rings deepen, to 0.7447 at a = 0.08, with
+# d Vbar / d a^2 = -1.3297 at onset against Koiter's -1.3274 (2e-3 apart). At fixed voltage
 # every point is unstable: the lowest eigenvalue is -0.0084, -0.034, -0.076 at a = 0.01,
-# 0.02, 0.03, growing as a^2 (the ratios 1 : 4.01 : 9.08), as the energy of a subcritical
-# branch must. From a = 0.04 on, a much lower eigenvalue (-230 at 0.04, -12 and -234 at
-# 0.05 and 0.06, then -0.6 to -2.2) appears on and off; it is not explained yet (a mode
-# of the mesh's scale at the inner face, where the field is strongest, would fit: there
-# the field passes the electro-creasing estimate at Vbar = 0.737, below this onset), and
-# the branch is not followed past a = 0.08 (on this mesh Newton fails at a = 0.097).
-# So this tube does not fold gradually: at Vbar = 0.754 it snaps to large rings, or
-# creases first.
+# 0.02, 0.03, growing as a^2, as the energy of a subcritical branch must. At a = 0.04 and
+# 0.05 a much lower eigenvalue (-163, -439) shows a mode of the elements' size at the inner
+# face where the wall is thinnest (Z = 0), alternating node to node; on 24 elements a
+# wavelength it is there too, lower (-521 at a = 0.04). The lowest-eigenvalue search sees
+# such modes only while their number below its shift is odd, hence on and off. Whether it
+# is the start of an electro-crease at the thinnest spot or the mixed formulation's
+# artefact at a charged face is not settled (docs/postbuckling.md): the branch is shown to
+# a = 0.08 and read as a smooth one no further. So this tube does not fold gradually: at
+# Vbar = 0.754 it snaps to large rings, or creases first.
 fig = plot_case(rec)

@@ -115,5 +115,7 @@ def loaded_expansion(
     psi = np.linalg.solve(A2, -second.third(state, f1, face1))
     quartic = first.quartic(state, f1)
     c2 = (2 * (psi @ A2 @ psi) - 4 * quartic) / (phi @ control_derivative(A, c) @ phi)
-    inner = float(phi[first.wall.slices[0]][0])
-    return TubeExpansion(float(c), float(c2), float(start), inner)
+    radial = phi[first.wall.slices[0]]  # u_r on the rings, from R_i to R_N
+    return TubeExpansion(
+        float(c), float(c2), float(start), float(radial[0]), outer_face=float(radial[-1])
+    )

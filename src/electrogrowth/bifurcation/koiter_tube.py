@@ -41,6 +41,7 @@ class TubeExpansion:
     inner_face: float  # u_r of the mode at R_i over its peak
     numerator: float = math.nan  # 2 A[psi, psi] - 4 E4(phi) (+ a_z^2 / (2 k) at a force)
     axial: AxialFreedom | None = None  # the force prescribed: lambda_z's freedom
+    outer_face: float = math.nan  # u_r of the mode at R_N over its peak
 
 
 def control_derivative(stiffness, c: float):
@@ -153,5 +154,6 @@ def expand(tube, control, first, second, start, what) -> TubeExpansion:
         axial = axial_freedom(tube, control, c, first.stiffness, phi)
         numerator += axial.term
     c2 = numerator / (phi @ control_derivative(A, c) @ phi)  # A' along the path (force or stretch)
-    inner = float(phi[first.slices[0]][0])
-    return TubeExpansion(float(c), float(c2), float(start), inner, float(numerator), axial)
+    radial = phi[first.slices[0]]  # u_r on the rings, from R_i to R_N
+    inner, outer = float(radial[0]), float(radial[-1])
+    return TubeExpansion(float(c), float(c2), float(start), inner, float(numerator), axial, outer)

@@ -75,7 +75,7 @@ def write_case(name: str, path: Path, progress=None) -> dict:
         record["coarse_onset"] = {
             "radial_elements": list(size.radial),
             "hoop_elements": size.hoop,
-            "unknowns": int(section.free.size),
+            "unknowns": section.unknowns,
             "onset_fe": onset,
         }
     path.write_text(json.dumps(record, indent=1) + "\n", encoding="utf-8")

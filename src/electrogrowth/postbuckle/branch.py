@@ -99,20 +99,20 @@ class AmplitudeBranch:
         except ParameterError as exc:  # a Newton step left the control's range
             message = f"a Newton step left the control's range: {exc}"
             raise fe_error(ConvergenceError, message) from None
-        x = self.section.with_fixed(x)  # the potential moves with the voltage (its lift)
+        x = self.section.with_fixed(x)
         r = self.section.residual(x)
         if self.f is not None:
             r = r - self.f
-        return x, r
+        return x, self.section.restrict(r)
 
     def solve(self, x, c, amplitude: float) -> tuple[np.ndarray, float, int]:
         """The equilibrium at ``amplitude`` from the guess (x, c)."""
         s = self.section
-        free = s.free
+        a = s.restrict(self.a)  # the amplitude's row on the solvers' unknowns
         for it in range(MAX_ITERATIONS + 1):
             x, r = self._residual(x, c)
             g = self.a @ x - amplitude
-            norm = max(np.abs(r[free]).max(), abs(g))
+            norm = max(np.abs(r).max(), abs(g))
             if norm < RESIDUAL_TOL:
                 return x, c, it
             if not np.isfinite(norm):
@@ -120,15 +120,14 @@ class AmplitudeBranch:
             h = DC * max(1.0, abs(c))
             _, rp = self._residual(x, c + h)
             _, rm = self._residual(x, c - h)
-            dr = ((rp - rm) / (2 * h))[free]
+            dr = (rp - rm) / (2 * h)
             x, _ = self._residual(x, c)  # the section back at c (and its prescribed values)
-            K = s.tangent(x)[free][:, free]
+            K = s.reduced(s.tangent(x))
             A = sps.bmat(
-                [[K, sps.csc_matrix(dr[:, None])], [sps.csr_matrix(self.a[free][None, :]), None]]
+                [[K, sps.csc_matrix(dr[:, None])], [sps.csr_matrix(a[None, :]), None]]
             ).tocsc()
-            step = spla.spsolve(A, -np.concatenate([r[free], [g]]))
-            x = x.copy()
-            x[free] += step[:-1]
+            step = spla.spsolve(A, -np.concatenate([r, [g]]))
+            x = x + s.expand(step[:-1])
             c += step[-1]
         raise fe_error(
             ConvergenceError,

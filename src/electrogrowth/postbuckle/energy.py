@@ -5,18 +5,23 @@ Both models are a plane of the reference cylindrical frame with one stretch out 
 cross-section the plane (R, Theta) at the axial stretch lambda_z (a parameter), the
 meridian the plane (R, Z) with the hoop stretch s = r / R (a variable: it follows u_R).
 In the plane, the deformation gradient F (2x2, columns the two reference directions), the
-Lagrangian field Grad phi = (e_1, e_2) and the pressure p; out of it the stretch s. Per
-unit reference volume, for one layer (units mu = eps = R_i = 1, docs/postbuckling.md):
+Lagrangian electric displacement D = (d_1, d_2) (divergence-free: the models write it as the
+curl of a stream function) and the pressure p; out of it the stretch s. Per unit reference
+volume, for one layer (units mu = eps = R_i = 1, docs/postbuckling.md):
 
     psi = mu_k J_g / 2 (sum_ij F_ij^2 / g_j^2 + s^2 / g_3^2 - 3)   (neo-Hookean in F G^-1)
           - p (s det F - J_g)                                  (incompressible: det F_e = 1)
-          - eps_k / 2 s det F |F^-T Grad phi|^2                (ideal dielectric)
+          + |F D|^2 / (2 eps_k s det F)                         (ideal dielectric)
 
 with G = diag(g_1, g_2, g_3) (the growth along the plane's two directions and out of it),
-J_g = g_1 g_2 g_3. Its gradient gives the first Piola stress P = d psi / dF (and, for the
-meridian, the hoop stress d psi / ds), the constraint and Gauss's law; its Hessian the
-consistent tangent. Both are derived once by sympy and evaluated on arrays of quadrature
-points.
+J_g = g_1 g_2 g_3. The last term is the package's I5 / (2 eps_k) (d = F D / J): a minimum
+in D, so the whole energy is a minimum in (u, D) on the incompressible displacements, and
+a conforming discretisation cannot lose stability before the continuum does (the
+potential's form, a maximum in phi, can: docs/postbuckling.md, "Why the electric
+displacement"). Its gradient gives the first Piola stress P = d psi / dF (and, for the
+meridian, the hoop stress d psi / ds), the constraint and the Lagrangian field
+E = d psi / dD = -Grad phi; its Hessian the consistent tangent. Both are derived once by
+sympy and evaluated on arrays of quadrature points.
 """
 
 from __future__ import annotations
@@ -31,8 +36,8 @@ import sympy as sp
 #: parameter; growth (g_R, g_Theta) in the plane, g_z out of it), the meridian's the hoop
 #: stretch s (a variable; growth (g_R, g_Z) in the plane, g_Theta out of it)
 VARIABLES = {
-    "section": ("F11", "F12", "F21", "F22", "e1", "e2", "p"),
-    "meridian": ("F11", "F12", "F21", "F22", "e1", "e2", "p", "s"),
+    "section": ("F11", "F12", "F21", "F22", "d1", "d2", "p"),
+    "meridian": ("F11", "F12", "F21", "F22", "d1", "d2", "p", "s"),
 }
 PARAMETERS = {
     "section": ("mu", "eps", "lz", "gR", "gT", "gz"),
@@ -40,19 +45,19 @@ PARAMETERS = {
 }
 
 
-def plane_density(F, e, p, s, mu, eps, g):
-    """psi of the in-plane F = (F11, F12, F21, F22), field e = (e1, e2), pressure p,
-    out-of-plane stretch s and growth g = (g_1, g_2, g_3) (sympy expressions)."""
+def plane_density(F, d, p, s, mu, eps, g):
+    """psi of the in-plane F = (F11, F12, F21, F22), electric displacement d = (d1, d2),
+    pressure p, out-of-plane stretch s and growth g = (g_1, g_2, g_3) (sympy expressions)."""
     F11, F12, F21, F22 = F
-    e1, e2 = e
+    d1, d2 = d
     g1, g2, g3 = g
     Jg = g1 * g2 * g3
     det = F11 * F22 - F12 * F21
     i1e = (F11**2 + F21**2) / g1**2 + (F12**2 + F22**2) / g2**2 + s**2 / g3**2
-    # F^-T e = adj(F)^T e / det F, adj(F) = [[F22, -F12], [-F21, F11]]
-    E1 = (F22 * e1 - F21 * e2) / det
-    E2 = (-F12 * e1 + F11 * e2) / det
-    return mu * Jg / 2 * (i1e - 3) - p * (s * det - Jg) - eps / 2 * s * det * (E1**2 + E2**2)
+    # F D, the current displacement times J (D has no out-of-plane part)
+    FD1 = F11 * d1 + F12 * d2
+    FD2 = F21 * d1 + F22 * d2
+    return mu * Jg / 2 * (i1e - 3) - p * (s * det - Jg) + (FD1**2 + FD2**2) / (2 * eps * s * det)
 
 
 def density_expression(

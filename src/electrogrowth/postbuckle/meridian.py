@@ -32,9 +32,10 @@ from .energy import cauchy_stress, hoop_stress
 from .wall import MeshSize, Wall, check_periods, energy_forms, pressure_field, radial_counts
 
 
-def _avec(u, p0, p1, p2, phi, w):
-    """The 8 variables (in-plane F - diag(1, lambda_z) flattened, Grad phi, p, s - 1) linear
-    in one (trial or test) field."""
+def _avec(u, p0, p1, p2, A, w):
+    """The 8 variables (in-plane F - diag(1, lambda_z) flattened, D, p, s - 1) linear in one
+    (trial or test) field. The Lagrangian electric displacement D = (A_Z / R, -A_R / R) is
+    divergence-free, (R D_R)_R / R + (D_Z)_Z = 0, for every stream function A."""
     R = w.x[0]
     g = u.grad
     return (
@@ -42,8 +43,8 @@ def _avec(u, p0, p1, p2, phi, w):
         g[0, 1],
         g[1, 0],
         g[1, 1],
-        phi.grad[0],
-        phi.grad[1],
+        A.grad[1] / R,
+        -A.grad[0] / R,
         pressure_field(p0, p1, p2, w),
         u[0] / R,
     )
@@ -62,7 +63,7 @@ def _face_integral(w):
 
 
 @LinearForm
-def _face_residual(v, q0, q1, q2, psi, w):
+def _face_residual(v, q0, q1, q2, vA, w):
     r = w.x[0] + w["prev"][0]
     zz = w["lz"] + w["prev"].grad[1, 1]
     b = _face_vars(v)
@@ -70,7 +71,7 @@ def _face_residual(v, q0, q1, q2, psi, w):
 
 
 @BilinearForm
-def _face_tangent(du, dp0, dp1, dp2, dphi, v, q0, q1, q2, psi, w):
+def _face_tangent(du, dp0, dp1, dp2, dA, v, q0, q1, q2, vA, w):
     r = w.x[0] + w["prev"][0]
     zz = w["lz"] + w["prev"].grad[1, 1]
     a, b = _face_vars(du), _face_vars(v)

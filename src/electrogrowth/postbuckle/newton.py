@@ -31,15 +31,20 @@ RESIDUAL_TOL = 1e-10
 MAX_ITERATIONS = 25
 
 
-def newton(section, x: np.ndarray, *, tol: float = RESIDUAL_TOL) -> tuple[np.ndarray, int]:
+def newton(
+    section, x: np.ndarray, *, tol: float = RESIDUAL_TOL, invariant: bool = False
+) -> tuple[np.ndarray, int]:
     """Solve residual(x) = 0 on the free unknowns from ``x`` (its prescribed entries are
-    reset to the section's). Returns (x, iterations); ConvergenceError if it does not
-    converge in MAX_ITERATIONS or the residual grows a thousandfold."""
+    reset to the section's); with ``invariant``, on the fields independent of Y alone
+    (``section.invariant``: the unperturbed path from a state on it). Returns
+    (x, iterations); ConvergenceError if it does not converge in MAX_ITERATIONS or the
+    residual grows a thousandfold."""
     x = section.with_fixed(x)
-    f = section.free
+    if invariant:
+        return _newton_invariant(section, x, tol)
     r0 = None
     for it in range(MAX_ITERATIONS + 1):
-        r = section.residual(x)[f]
+        r = section.restrict(section.residual(x))
         norm = np.abs(r).max()
         if not np.isfinite(norm):
             break
@@ -48,8 +53,32 @@ def newton(section, x: np.ndarray, *, tol: float = RESIDUAL_TOL) -> tuple[np.nda
         r0 = norm if r0 is None else r0
         if norm > 1e3 * max(r0, 1.0):
             break
-        K = section.tangent(x)[f][:, f].tocsc()
-        x[f] -= spla.spsolve(K, r)
+        x = x - section.expand(spla.spsolve(section.reduced(section.tangent(x)), r))
+    raise fe_error(
+        ConvergenceError,
+        f"the finite-element equilibrium did not converge (residual {norm:.3g} after {it}"
+        " Newton steps)",
+    )
+
+
+def _newton_invariant(section, x: np.ndarray, tol: float) -> tuple[np.ndarray, int]:
+    """Newton with x moving in the columns B of ``section.invariant``: B^T K B dy = -B^T r.
+    Converged when the whole free residual is below ``tol`` (the state is then the full
+    model's equilibrium, not only the subspace's)."""
+    B = section.invariant
+    r0 = None
+    for it in range(MAX_ITERATIONS + 1):
+        r = section.residual(x)
+        norm = np.abs(section.restrict(r)).max()
+        if not np.isfinite(norm):
+            break
+        if norm < tol:
+            return x, it
+        r0 = norm if r0 is None else r0
+        if norm > 1e3 * max(r0, 1.0):
+            break
+        K = (B.T @ section.tangent(x) @ B).tocsc()
+        x = x - B @ spla.spsolve(K, B.T @ r)
     raise fe_error(
         ConvergenceError,
         f"the finite-element equilibrium did not converge (residual {norm:.3g} after {it}"
@@ -58,7 +87,7 @@ def newton(section, x: np.ndarray, *, tol: float = RESIDUAL_TOL) -> tuple[np.nda
 
 
 def unloaded(section) -> np.ndarray:
-    """The unknowns of the undeformed, unloaded wall as Newton's start: u = 0, phi = 0 and
+    """The unknowns of the undeformed, unloaded wall as Newton's start: u = 0, A = 0 and
     p = mu_k (the neo-Hookean stress mu_k I balanced by the pressure)."""
     x = np.zeros(section.basis.N)
     x[section.pressure_dofs] = [section.tube.layers[k].shear_modulus for k in section.layer_of]
@@ -88,6 +117,6 @@ def loaded(section, tube, *, steps: int = 5) -> np.ndarray:
         )
         section.set_tube(t)
         x = unloaded(section) if x is None else x
-        x, _ = newton(section, x)
+        x, _ = newton(section, x, invariant=True)
     assert x is not None  # the loop runs at least once
     return x

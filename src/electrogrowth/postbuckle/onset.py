@@ -1,12 +1,13 @@
 """Where the finite-element cross-section loses stability on its unperturbed path: the
 sign change of the lowest eigenvalue of the tangent stiffness restricted to the
-incompressible, charge-balanced displacements of the sector (the modes cos(j m Theta)).
+incompressible displacements of the sector (the modes cos(j m Theta)).
 
 The eigenproblem K z = lambda M z with M the L2 mass of the displacement alone: the
-pressure and potential rows of M vanish, so their directions have infinite eigenvalues, and
-the finite ones are those of the stiffness condensed onto the displacements that keep
-det F_e = 1 and Gauss's law (the second variation of the energy there). Solved by
-shift-invert Lanczos about a shift below the spectrum.
+pressure and stream-function rows of M vanish, so their directions have infinite
+eigenvalues, and the finite ones are those of the stiffness condensed onto the
+displacements that keep det F_e = 1, the electric displacement at its minimum (the second
+variation of the energy there). Solved by shift-invert Lanczos about a shift below the
+spectrum.
 """
 
 from __future__ import annotations
@@ -43,10 +44,8 @@ def lowest_eigenvalue(section, x: np.ndarray, *, vector: bool = False):
     run on it asks for the most negative nu = 1 / (lambda - shift), which is that eigenvalue,
     and the shift moves just below it, until none is below (an even number, two crossings
     between the same branch points, would go unseen)."""
-    f = section.free
-    K = section.tangent(x)[f][:, f].tocsc()
-    M = section.M[f][:, f].tocsc()
-    massless = int(np.count_nonzero(abs(M).sum(axis=1) == 0))
+    K = section.reduced(section.tangent(x))
+    M = section.reduced(section.M)
     shift = SHIFT
     for _ in range(MAX_SHIFTS):
         lu = spla.splu((K - shift * M).tocsc())
@@ -54,7 +53,7 @@ def lowest_eigenvalue(section, x: np.ndarray, *, vector: bool = False):
         vals, vecs = spla.eigsh(K, k=2, M=M, sigma=shift, which="LM", OPinv=opinv)
         if vals.min() < shift:
             below = float(vals.min())
-        elif _odd_below(lu, massless):
+        elif _odd_below(lu, section.multipliers):
             below = float(spla.eigsh(K, k=1, M=M, sigma=shift, which="SA", OPinv=opinv)[0][0])
         else:
             break
@@ -72,22 +71,22 @@ def lowest_eigenvalue(section, x: np.ndarray, *, vector: bool = False):
     # one step of the shift-invert iteration sets the pressure and potential parts, which
     # the Lanczos vectors leave undetermined where M is singular (purification)
     v = lu.solve(M @ vecs[:, i])
-    z = np.zeros(section.basis.N)
-    z[f] = v / np.sqrt(v @ (M @ v))
+    z = section.expand(v / np.sqrt(v @ (M @ v)))
     return float(vals[i]), z
 
 
-def _odd_below(lu, massless: int) -> bool:
+def _odd_below(lu, multipliers: int) -> bool:
     """Whether an odd number of eigenvalues of K z = lambda M z lie below the shift of
     ``lu``, the LU factors of K - shift M. Far below the spectrum that matrix has exactly
-    ``massless`` negative eigenvalues (the pressure's and potential's unknowns, which M
-    does not weigh: the constraint's Schur complement and the dielectric's maximum), so its
-    determinant has the sign (-1)^massless; each eigenvalue below the shift flips it
+    ``multipliers`` negative eigenvalues (the pressure's unknowns, which M does not weigh:
+    the constraint's Schur complement; the stream function's block, also massless, is
+    positive definite: the dielectric's energy is a minimum in D), so its determinant has
+    the sign (-1)^multipliers; each eigenvalue below the shift flips it
     (Sylvester). The sign is read off the factors: the diagonal of U and the parities of
     the row and column permutations (L has a unit diagonal)."""
     negative = int(np.count_nonzero(lu.U.diagonal() < 0))
     flips = negative + _odd_permutation(lu.perm_r) + _odd_permutation(lu.perm_c)
-    return (flips + massless) % 2 == 1
+    return (flips + multipliers) % 2 == 1
 
 
 def _odd_permutation(perm: np.ndarray) -> int:
@@ -156,7 +155,7 @@ def fe_onset(
         near = min(states, key=lambda k: abs(k - c)) if states else None
         x0 = states[near][0] if near is not None else x
         section.set_tube(tube.at(control, c))
-        xc, _ = newton(section, x0)
+        xc, _ = newton(section, x0, invariant=True)
         lam = lowest_eigenvalue(section, xc)
         states[c] = (xc, lam)
         return lam
@@ -186,6 +185,6 @@ def fe_onset(
         path.append((float(c), lam))
     value = so.brentq(at, c_prev, c, xtol=xtol, rtol=4 * np.finfo(float).eps)
     section.set_tube(tube.at(control, value))
-    xv, _ = newton(section, states[min(states, key=lambda k: abs(k - value))][0])
+    xv, _ = newton(section, states[min(states, key=lambda k: abs(k - value))][0], invariant=True)
     _, mode = lowest_eigenvalue(section, xv, vector=True)
     return FEOnset(float(value), xv, mode, tuple(sorted(path)))

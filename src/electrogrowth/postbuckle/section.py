@@ -39,8 +39,10 @@ from .wall import (
 )
 
 
-def _avec(u, p0, p1, p2, phi, w):
-    """The 7 variables (F - I flattened, Grad phi, p) linear in one (trial or test) field."""
+def _avec(u, p0, p1, p2, A, w):
+    """The 7 variables (F - I flattened, D, p) linear in one (trial or test) field. The
+    Lagrangian electric displacement D = (A_Theta / R, -A_R) is divergence-free,
+    (R D_R)_R / R + (D_Theta)_Theta / R = 0, for every stream function A."""
     R = w.x[0]
     g = u.grad
     return (
@@ -48,8 +50,8 @@ def _avec(u, p0, p1, p2, phi, w):
         (g[0, 1] - u[1]) / R,
         g[1, 0],
         (g[1, 1] + u[0]) / R,
-        phi.grad[0],
-        phi.grad[1] / R,
+        A.grad[1] / R,
+        -A.grad[0],
         pressure_field(p0, p1, p2, w),
     )
 
@@ -83,7 +85,7 @@ _ENCLOSED_HESSIAN = (
 
 
 @LinearForm
-def _face_residual(v, q0, q1, q2, psi, w):
+def _face_residual(v, q0, q1, q2, vA, w):
     R = w.x[0]
     g = _enclosed_gradient(_face_vars(w["prev"], R), R)
     b = _face_vars(v, R)
@@ -91,7 +93,7 @@ def _face_residual(v, q0, q1, q2, psi, w):
 
 
 @BilinearForm
-def _face_tangent(du, dp0, dp1, dp2, dphi, v, q0, q1, q2, psi, w):
+def _face_tangent(du, dp0, dp1, dp2, dA, v, q0, q1, q2, vA, w):
     a = _face_vars(du, w.x[0])
     b = _face_vars(v, w.x[0])
     return w["load"] * 0.5 * sum(h * a[i] * b[j] for i, j, h in _ENCLOSED_HESSIAN)

@@ -19,6 +19,7 @@ from __future__ import annotations
 import dataclasses
 
 import numpy as np
+import scipy.fft as sfft
 import scipy.optimize as so
 
 from ..errors import ConvergenceError
@@ -57,6 +58,27 @@ def outside_fraction(model, z: np.ndarray, period: int) -> float:
     projected = sum(np.roll(f, j * shift, axis=-1) for j in range(turns)) / turns
     norm = np.linalg.norm(f)
     return float(np.linalg.norm(f - projected) / norm) if norm > 0 else 0.0
+
+
+def face_harmonic(model, z: np.ndarray) -> tuple[int, float]:
+    """(i, share): the harmonic cos(i pi Y / extent) that carries most of the radial
+    displacement of ``z`` on the face where it is largest, and its share of that face's
+    squared amplitude (0 when ``z`` leaves both faces still). The onset of a Theta- (Z-)
+    invariant state on a uniform mesh has one harmonic alone, i = ``periods`` for the
+    mode itself (k half wavelengths in the sector)."""
+    best = (0, 0.0, 0.0)  # (i, share, norm)
+    for face in ("inner", "outer"):
+        dofs, _ = model.face_dofs(face)  # vertices, equally spaced along Y
+        # the cosine coefficients (DCT-I) and their shares of the trapezoidal squared norm
+        # (Parseval: the end terms weigh half)
+        c = sfft.dct(z[dofs], type=1)
+        energy = c * c
+        energy[[0, -1]] /= 2
+        norm = float(energy.sum())
+        if norm > best[2]:
+            i = int(np.argmax(energy))
+            best = (i, float(energy[i] / norm), norm)
+    return best[0], best[1]
 
 
 def classify(model, z: np.ndarray) -> tuple[float, int]:
@@ -129,4 +151,12 @@ def _locate(branch, p, q) -> Secondary:
     return Secondary(float(c), float(a), pattern_name(period), subharmonic, located)
 
 
-__all__ = ["PATTERNS", "Secondary", "classify", "outside_fraction", "pattern_name", "secondaries"]
+__all__ = [
+    "PATTERNS",
+    "Secondary",
+    "classify",
+    "face_harmonic",
+    "outside_fraction",
+    "pattern_name",
+    "secondaries",
+]

@@ -5,11 +5,18 @@ mixed unknowns, the constraints and the assembly of the energy's residual, tange
 
 Quadrilaterals with element edges on every layer interface, so the geometry is exact and
 each element lies in one layer. Unknowns: the displacement (u_R, u_Y) on Q2, the pressure p
-linear and discontinuous in each element (P1), the electric potential phi on Q2. The
-in-plane displacement u_Y vanishes on the ends Y = 0 and Y = extent (the symmetry planes of
-each model), the potential is V on R = 1 and 0 on R = R_N (electrodes). A model supplies
-its kinematics (the state variables linear in a field, :func:`energy_forms`), its
-parameters at the quadrature points and the potential of its follower pressures.
+linear and discontinuous in each element (P1), and the stream function A of the Lagrangian
+electric displacement on Q2 (D = curl A: Gauss's law holds identically; each model writes
+D from Grad A). The in-plane displacement u_Y vanishes on the ends Y = 0 and Y = extent
+(the symmetry planes of each model); no charge crosses them, so A is constant along each:
+0 on Y = 0 and the unknown a on Y = extent, a the free charge the inner electrode carries
+per unit of the model's measure (the flux of D through R = 1). The electrodes' potential
+difference V does the work V a: the energy is int psi - V a, a minimum in (u, A) on the
+incompressible displacements, and the electrodes' equipotentials are its natural
+conditions. The unknowns the solvers see are the entries of x that are not prescribed,
+with the tied values of A on Y = extent as one (:attr:`Wall.P`). A model supplies its
+kinematics (the state variables linear in a field, :func:`energy_forms`), its parameters at
+the quadrature points and the potential of its follower pressures.
 """
 
 from __future__ import annotations
@@ -18,6 +25,7 @@ import dataclasses
 import math
 
 import numpy as np
+import scipy.sparse as sps
 from skfem import (
     Basis,
     BilinearForm,
@@ -49,14 +57,14 @@ def pressure_field(p0, p1, p2, w):
 
 def energy_forms(avec):
     """The tangent (bilinear) and residual (linear) forms of int psi R dR dY for the
-    kinematics ``avec(u, p0, p1, p2, phi, w)``: the state variables' parts linear in one
+    kinematics ``avec(u, p0, p1, p2, A, w)``: the state variables' parts linear in one
     field. The weight R is the measure of both models (the sector's area element R dR dTheta
     per unit axial length, the meridian's volume element R dR dZ per radian)."""
 
     @BilinearForm
-    def tangent(du, dp0, dp1, dp2, dphi, v, q0, q1, q2, psi, w):
-        a = avec(du, dp0, dp1, dp2, dphi, w)
-        b = avec(v, q0, q1, q2, psi, w)
+    def tangent(du, dp0, dp1, dp2, dA, v, q0, q1, q2, vA, w):
+        a = avec(du, dp0, dp1, dp2, dA, w)
+        b = avec(v, q0, q1, q2, vA, w)
         H = w["H"]
         # one field per basis function: skip the variables it does not touch
         ia = [i for i in range(len(a)) if np.any(a[i])]
@@ -68,8 +76,8 @@ def energy_forms(avec):
         return out * w.x[0]
 
     @LinearForm
-    def residual(v, q0, q1, q2, psi, w):
-        b = avec(v, q0, q1, q2, psi, w)
+    def residual(v, q0, q1, q2, vA, w):
+        b = avec(v, q0, q1, q2, vA, w)
         g = w["G"]
         return sum(g[j] * b[j] for j in range(len(b)) if np.any(b[j])) * w.x[0]
 
@@ -77,8 +85,19 @@ def energy_forms(avec):
 
 
 @BilinearForm
-def _mass(du, dp0, dp1, dp2, dphi, v, q0, q1, q2, psi, w):
+def _mass(du, dp0, dp1, dp2, dA, v, q0, q1, q2, vA, w):
     return (du[0] * v[0] + du[1] * v[1]) * w.x[0]
+
+
+def _prolongation(n: int, independent: np.ndarray, tied: np.ndarray) -> sps.csr_matrix:
+    """The n x len(independent) matrix that puts each unknown at its entry of x and the
+    first of ``tied`` (one of ``independent``) at all of them; prescribed entries stay 0."""
+    column = {int(d): j for j, d in enumerate(independent)}
+    rows = np.concatenate([independent, tied[1:]])
+    cols = np.concatenate(
+        [np.arange(len(independent)), np.full(len(tied) - 1, column[int(tied[0])])]
+    )
+    return sps.csr_matrix((np.ones(len(rows)), (rows, cols)), shape=(n, len(independent)))
 
 
 @Functional
@@ -158,8 +177,8 @@ class Wall:
     periods = 1
 
     @staticmethod
-    def kinematics(u, p0, p1, p2, phi, w) -> tuple:
-        """The state variables' parts linear in one field (the model's F - I, Grad phi, p)."""
+    def kinematics(u, p0, p1, p2, A, w) -> tuple:
+        """The state variables' parts linear in one field (the model's F - I, D, p)."""
         raise NotImplementedError
 
     def __init__(self, tube: Tube, size: MeshSize, extent: float):
@@ -180,15 +199,16 @@ class Wall:
         for name, Rf in (("inner", 1.0), ("outer", R_N)):
             facets = self.mesh.facets_satisfying(lambda x, Rf=Rf: np.isclose(x[0], Rf))
             self.faces[name] = FacetBasis(self.mesh, elem, facets=facets, intorder=INTORDER)
-        on_ends = self.basis.get_dofs(lambda x: np.isclose(x[1], 0.0) | np.isclose(x[1], extent))
-        self.end_fixed = on_ends.all("u^2^1")
-        self.phi_inner = self.basis.get_dofs(lambda x: np.isclose(x[0], 1.0)).all("u^5")
-        self.phi_outer = self.basis.get_dofs(lambda x: np.isclose(x[0], R_N)).all("u^5")
-        self.phi_dofs = self.basis.get_dofs(elements=True).all("u^5")
-        R_phi = self.basis.doflocs[0, self.phi_dofs]
-        self.lift = np.log(radii[-1] / R_phi) / np.log(radii[-1])
-        self.fixed = np.unique(np.concatenate([self.end_fixed, self.phi_inner, self.phi_outer]))
-        self.free = np.setdiff1d(np.arange(self.basis.N), self.fixed)
+        on_start = self.basis.get_dofs(lambda x: np.isclose(x[1], 0.0))
+        on_end = self.basis.get_dofs(lambda x: np.isclose(x[1], extent))
+        self.end_fixed = np.union1d(on_start.all("u^2^1"), on_end.all("u^2^1"))
+        tied = on_end.all("u^5")
+        #: a, the inner electrode's charge: A on the end Y = extent (the rest of it tied)
+        self.charge_dof = int(tied[0])
+        self.fixed = np.unique(np.concatenate([self.end_fixed, on_start.all("u^5")]))
+        #: the entries of x the solvers' unknowns are, and P (N x unknowns): x = P x[independent]
+        self.independent = np.setdiff1d(np.arange(self.basis.N), np.union1d(self.fixed, tied[1:]))
+        self.P = _prolongation(self.basis.N, self.independent, tied)
         self.R = np.asarray(self.basis.global_coordinates())[0]
         mid = self.mesh.p[0, self.mesh.t].mean(axis=0)
         self.layer_of = np.searchsorted(np.asarray(radii[1:-1]), mid)
@@ -204,12 +224,42 @@ class Wall:
         self._w = _Where(self.basis.global_coordinates(), self.centres)
         self.M = asm(_mass, self.basis)
         # the constant part p0 of each element's pressure, in element order
-        p0 = set(self.basis.split_indices()[1].tolist())
-        self.pressure_dofs = np.array(
-            [next(d for d in col if d in p0) for col in self.basis.element_dofs.T]
-        )
+        self.pressure_dofs = self._element_dofs(1)
+        self.invariant = self._invariant_basis()
         self._tube: Tube | None = None
         self.set_tube(tube)
+
+    def _element_dofs(self, field: int) -> np.ndarray:
+        """The dof of the piecewise-constant ``field`` (1, 2, 3: p0, p1, p2) of each element."""
+        own = set(self.basis.split_indices()[field].tolist())
+        return np.array([next(d for d in col if d in own) for col in self.basis.element_dofs.T])
+
+    def _invariant_basis(self) -> sps.csr_matrix:
+        """The fields that do not depend on Y (the unperturbed, axisymmetric path), as the
+        columns of an N x n matrix: u_R(R) (one column per radius of a node), u_Y = 0, the
+        pressure's p0 and R-slope p1 of each row of elements (p2 = 0), and A = a Y / extent
+        (D = (a / (extent R), 0)). Newton on the path moves in this space only: the onset's
+        mode lies outside it, so the tangent's near-singularity at onset does not amplify
+        rounding along the mode."""
+        rows, cols, values = [], [], []
+
+        def add(dofs, groups, weights=None):
+            """One column per distinct value of ``groups``, ``weights`` (1) at ``dofs``."""
+            _, index = np.unique(np.round(groups, 10), return_inverse=True)
+            cols.append(index + (max(c.max() for c in cols) + 1 if cols else 0))
+            rows.append(dofs)
+            values.append(np.ones(len(dofs)) if weights is None else weights)
+
+        u_R = self.basis.get_dofs(elements=True).all("u^1^1")
+        add(u_R, self.basis.doflocs[0, u_R])
+        row = self.centres["Rc"][:, 0]
+        add(self.pressure_dofs, row)
+        add(self._element_dofs(2), row)
+        A = self.basis.get_dofs(elements=True).all("u^5")
+        add(A, np.zeros(len(A)), self.basis.doflocs[1, A] / self.extent)
+        n = max(c.max() for c in cols) + 1
+        data = (np.concatenate(values), (np.concatenate(rows), np.concatenate(cols)))
+        return sps.csr_matrix(data, shape=(self.basis.N, n))
 
     # -- the tube's numbers at the quadrature points ---------------------------------------
     def set_tube(self, tube: Tube) -> None:
@@ -241,31 +291,38 @@ class Wall:
         return self._tube
 
     # -- unknowns ---------------------------------------------------------------------------
-    def dirichlet(self) -> np.ndarray:
-        """The prescribed values (zero u_Y on the ends, the potentials)."""
-        x = np.zeros(self.basis.N)
-        x[self.phi_inner] = self.voltage
-        return x
+    @property
+    def unknowns(self) -> int:
+        """The number of unknowns the solvers see (the columns of :attr:`P`)."""
+        return self.P.shape[1]
+
+    @property
+    def multipliers(self) -> int:
+        """The number of unknowns without mass or stiffness of their own (the pressure's):
+        the tangent's negative directions far below its spectrum (onset.py)."""
+        return 3 * self.mesh.t.shape[1]
+
+    def restrict(self, r: np.ndarray) -> np.ndarray:
+        """P^T r: a residual on all entries of x as the solvers see it."""
+        return self.P.T @ r
+
+    def reduced(self, K):
+        """P^T K P: a matrix on all entries of x as the solvers see it (sparse CSC)."""
+        return (self.P.T @ K @ self.P).tocsc()
+
+    def expand(self, y: np.ndarray) -> np.ndarray:
+        """P y: an increment of the solvers' unknowns on all entries of x."""
+        return self.P @ y
 
     def with_fixed(self, x: np.ndarray) -> np.ndarray:
-        """``x`` with its prescribed entries set to the current tube's values. When the
-        voltage differs from the one ``x`` holds, the whole potential moves by the change
-        times the lift L = log(R_N / R) / log R_N (1 on the inner electrode, 0 on the outer),
-        not the electrodes' values alone (which would put the whole change into the first
-        element): the free unknowns are in effect phi - V L, so a change of the control
-        moves the state smoothly (Newton's start, and dR/dc of the branch)."""
-        x = x.copy()
-        change = self.voltage - x[self.phi_inner[0]]
-        if change:
-            x[self.phi_dofs] += change * self.lift
-        d = self.dirichlet()
-        x[self.fixed] = d[self.fixed]
-        return x
+        """``x`` with its prescribed entries zero (u_Y on the ends, A on Y = 0) and A on
+        Y = extent equal to the charge a (the voltage enters the energy, not x)."""
+        return self.P @ x[self.independent]
 
     def state(self, x: np.ndarray) -> np.ndarray:
         """The state variables at the quadrature points, shape (nv, ne, nq)."""
-        u, p0, p1, p2, phi = self.basis.interpolate(x)
-        s = np.array(self.kinematics(u, p0, p1, p2, phi, self._w))
+        u, p0, p1, p2, A = self.basis.interpolate(x)
+        s = np.array(self.kinematics(u, p0, p1, p2, A, self._w))
         for i, value in self._identity().items():
             s[i] += value
         return s
@@ -275,16 +332,17 @@ class Wall:
         gradient, _ = derivatives(self.kind)
         G = gradient(self.state(x), self.params)
         r = asm(self.forms[1], self.basis, G=G, **self.centres)
+        r[self.charge_dof] -= self.voltage
         for face, load in self._face_loads():
             r += self._face_residual(self.faces[face], x, load)
         return r
 
     def energy(self, x: np.ndarray) -> float:
-        """The total potential energy (a saddle in phi): int psi R dR dY plus the follower
-        pressures' potential."""
+        """The total potential energy: int psi R dR dY, the electrodes' work -V a and the
+        follower pressures' potential."""
         gradient, _ = derivatives(self.kind)
         psi = gradient.density(self.state(x), self.params)
-        total = float(asm(_integral, self.basis, f=psi))
+        total = float(asm(_integral, self.basis, f=psi)) - self.voltage * self.charge(x)
         for face, load in self._face_loads():
             total += self._face_energy(self.faces[face], x, load)
         return total
@@ -311,9 +369,15 @@ class Wall:
         raise NotImplementedError
 
     # -- read-outs -------------------------------------------------------------------------
+    def charge(self, x: np.ndarray) -> float:
+        """The charge a on the inner electrode, per unit of the model's measure (the flux of
+        the Lagrangian D through R = 1 over the rectangle's extent)."""
+        return float(x[self.charge_dof])
+
     def nodal(self, x: np.ndarray, name: str) -> np.ndarray:
-        """Nodal values of u_R, u_Y ('u_Theta' or 'u_Z') or phi at the mesh vertices."""
-        index = {"u_R": 0, "u_Theta": 1, "u_Z": 1, "phi": 2}[name]
+        """Nodal values of u_R, u_Y ('u_Theta' or 'u_Z') or A (the stream function of D)
+        at the mesh vertices."""
+        index = {"u_R": 0, "u_Theta": 1, "u_Z": 1, "A": 2}[name]
         return x[self.basis.nodal_dofs[index]]
 
     def face_dofs(self, face: str) -> tuple[np.ndarray, np.ndarray]:
