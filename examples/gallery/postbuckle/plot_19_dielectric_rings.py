@@ -55,13 +55,13 @@ assert abs(gap) < 0.01
 # 0.754101 (3e-6 above the linear value) as the rings deepen, to 0.7447 at a = 0.08, with
 # d Vbar / d a^2 = -1.3297 at onset against Koiter's -1.3274 (2e-3 apart). At fixed voltage
 # every point is unstable: the lowest eigenvalue is -0.0084, -0.034, -0.076 at a = 0.01,
-# 0.02, 0.03, growing as a^2, as the energy of a subcritical branch must. At a = 0.04 and
-# 0.05 a much lower eigenvalue (-163, -439) shows a mode of the elements' size at the inner
-# face where the wall is thinnest (Z = 0), alternating node to node; on 24 elements a
-# wavelength it is there too, lower (-521 at a = 0.04). The lowest-eigenvalue search sees
-# such modes only while their number below its shift is odd, hence on and off. Whether it
-# is the start of an electro-crease at the thinnest spot or the mixed formulation's
-# artefact at a charged face is not settled (docs/postbuckling.md): the branch is shown to
-# a = 0.08 and read as a smooth one no further. So this tube does not fold gradually: at
-# Vbar = 0.754 it snaps to large rings, or creases first.
+# 0.02, 0.03, growing as a^2, as the energy of a subcritical branch must. From a = 0.035 on
+# a much lower one takes over (-41 there, -163, -439, -770, -1193, -1655 at a = 0.04 to
+# 0.08): a mode of the elements' size at the inner face where the wall is thinnest (Z = 0),
+# alternating node to node. On 24 elements a wavelength it comes a little earlier (between
+# a = 0.030 and 0.0325) and lower (-521 at a = 0.04). Whether it is the start of an
+# electro-crease at the thinnest spot or the mixed formulation's artefact at a charged face
+# is not settled (docs/postbuckling.md): the branch is shown to a = 0.08 and read as a
+# smooth one no further. So this tube does not fold gradually: at Vbar = 0.754 it snaps to
+# large rings, or creases first.
 fig = plot_case(rec)

@@ -181,9 +181,7 @@ def _check_onset_pattern(section, onset, linear: float, mode, control: str) -> N
     sector or window). A mesh too coarse along a face can lose stability first in a pattern
     of its elements' size, which the linear analysis puts later: the grown bilayer of
     docs/postbuckling.md on 4 elements along pi / 24, in cos(96 Theta) at its outer face
-    between Vbar = 1.0 and 1.1, where the linear onset of (24, 0) is 1.1816 and of (96, 0)
-    1.1844. The sign change the onset's search then lands on need not be the first (an
-    even number of crossings goes unseen), so its pattern is the test, not its value."""
+    at Vbar = 1.0862, where the linear onset of (24, 0) is 1.1816 and of (96, 0) 1.1844."""
     i, share = face_harmonic(section, onset.mode)
     if share >= PATTERN_SHARE and i == section.periods:
         return

@@ -20,6 +20,7 @@ import scipy.sparse.linalg as spla
 
 from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
 from ..model.layers import Tube
+from .inertia import count_below, multiplier_mask
 from .newton import fe_error, loaded, newton
 
 #: the first shift of the shift-invert eigensolver, units mu: below the lowest eigenvalues
@@ -39,27 +40,27 @@ def lowest_eigenvalue(section, x: np.ndarray, *, vector: bool = False):
     Shift-invert Lanczos returns the eigenvalues nearest its shift, the lowest only when the
     shift lies below the whole spectrum: an eigenvalue far below it (a branch well past a
     period-doubling point: -100 mu and less for a stiff film) is farther from the shift than
-    the positive ones and is missed. The factorisation of K - shift M tells whether the
-    number of eigenvalues below the shift is odd (:func:`_odd_below`); then a second Lanczos
-    run on it asks for the most negative nu = 1 / (lambda - shift), which is that eigenvalue,
-    and the shift moves just below it, until none is below (an even number, two crossings
-    between the same branch points, would go unseen)."""
+    the positive ones and is missed. So the eigenvalues below the shift are counted first
+    (inertia.py, Sylvester); if there are any, a Lanczos run asks for that many most negative
+    nu = 1 / (lambda - shift), which are they, and the shift moves just below the lowest,
+    until none is below."""
     K = section.reduced(section.tangent(x))
     M = section.reduced(section.M)
+    multipliers = multiplier_mask(K, M)
     shift = SHIFT
     for _ in range(MAX_SHIFTS):
-        lu = spla.splu((K - shift * M).tocsc())
+        A = (K - shift * M).tocsc()
+        lu = spla.splu(A)
         opinv = spla.LinearOperator(K.shape, matvec=lu.solve, dtype=float)
-        vals, vecs = spla.eigsh(K, k=2, M=M, sigma=shift, which="LM", OPinv=opinv)
-        if vals.min() < shift:
-            below = float(vals.min())
-        elif _odd_below(lu, section.multipliers):
-            below = float(spla.eigsh(K, k=1, M=M, sigma=shift, which="SA", OPinv=opinv)[0][0])
-        else:
+        below = count_below(A, multipliers, lu)
+        if below == 0:
+            vals, vecs = spla.eigsh(K, k=2, M=M, sigma=shift, which="LM", OPinv=opinv)
             break
+        k = min(below, K.shape[0] - 2)
+        lowest = float(spla.eigsh(K, k=k, M=M, sigma=shift, which="SA", OPinv=opinv)[0].min())
         # just below it (shift-invert's natural use, well conditioned); any eigenvalue
-        # still lower is asked for again
-        shift = below - MARGIN * max(1.0, abs(below))
+        # still lower is counted and asked for again
+        shift = lowest - MARGIN * max(1.0, abs(lowest))
     else:
         raise fe_error(
             ConvergenceError,
@@ -68,39 +69,11 @@ def lowest_eigenvalue(section, x: np.ndarray, *, vector: bool = False):
     i = int(np.argmin(vals))
     if not vector:
         return float(vals[i])
-    # one step of the shift-invert iteration sets the pressure and potential parts, which
-    # the Lanczos vectors leave undetermined where M is singular (purification)
+    # one step of the shift-invert iteration sets the pressure and stream-function parts,
+    # which the Lanczos vectors leave undetermined where M is singular (purification)
     v = lu.solve(M @ vecs[:, i])
     z = section.expand(v / np.sqrt(v @ (M @ v)))
     return float(vals[i]), z
-
-
-def _odd_below(lu, multipliers: int) -> bool:
-    """Whether an odd number of eigenvalues of K z = lambda M z lie below the shift of
-    ``lu``, the LU factors of K - shift M. Far below the spectrum that matrix has exactly
-    ``multipliers`` negative eigenvalues (the pressure's unknowns, which M does not weigh:
-    the constraint's Schur complement; the stream function's block, also massless, is
-    positive definite: the dielectric's energy is a minimum in D), so its determinant has
-    the sign (-1)^multipliers; each eigenvalue below the shift flips it
-    (Sylvester). The sign is read off the factors: the diagonal of U and the parities of
-    the row and column permutations (L has a unit diagonal)."""
-    negative = int(np.count_nonzero(lu.U.diagonal() < 0))
-    flips = negative + _odd_permutation(lu.perm_r) + _odd_permutation(lu.perm_c)
-    return (flips + multipliers) % 2 == 1
-
-
-def _odd_permutation(perm: np.ndarray) -> int:
-    """1 if ``perm`` is odd (its length minus its number of cycles is odd), else 0."""
-    seen = np.zeros(len(perm), dtype=bool)
-    cycles = 0
-    for start in range(len(perm)):
-        if not seen[start]:
-            cycles += 1
-            j = start
-            while not seen[j]:
-                seen[j] = True
-                j = perm[j]
-    return (len(perm) - cycles) % 2
 
 
 def start_value(tube: Tube, control: str) -> float:

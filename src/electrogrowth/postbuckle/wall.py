@@ -296,12 +296,6 @@ class Wall:
         """The number of unknowns the solvers see (the columns of :attr:`P`)."""
         return self.P.shape[1]
 
-    @property
-    def multipliers(self) -> int:
-        """The number of unknowns without mass or stiffness of their own (the pressure's):
-        the tangent's negative directions far below its spectrum (onset.py)."""
-        return 3 * self.mesh.t.shape[1]
-
     def restrict(self, r: np.ndarray) -> np.ndarray:
         """P^T r: a residual on all entries of x as the solvers see it."""
         return self.P.T @ r
