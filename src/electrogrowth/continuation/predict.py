@@ -10,6 +10,7 @@ tangent predictor.
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Sequence
 
 import numpy as np
@@ -61,7 +62,15 @@ class EventWatch:
         return self._distance
 
     def _extrapolate(self):
-        """:meth:`root_distance` from the samples."""
+        """:meth:`root_distance` from the samples: compiled once numba is loaded (the same
+        bits, extrapolate_kernel.py), else :meth:`_extrapolate_numpy`."""
+        kernel = _compiled_distances()
+        if kernel is None:
+            return self._extrapolate_numpy()
+        return kernel(self.x, self.g, float(self.sense))
+
+    def _extrapolate_numpy(self):
+        """:meth:`root_distance` from the samples, in NumPy."""
         (xa, xb, xc), (ga, gb, gc) = self.x, self.g
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             slope = (ga - gb) / (xa - xb)
@@ -83,8 +92,10 @@ class EventWatch:
     def record(self, idx, x, g):
         before = self.x[0, idx] + self.sense * self.root_distance()[idx]  # the zero predicted
         self._distance = None  # new samples, new extrapolation
-        self.x[:, idx] = np.vstack([np.full(idx.size, x), self.x[0, idx], self.x[1, idx]])
-        self.g[:, idx] = np.vstack([g, self.g[0, idx], self.g[1, idx]])
+        for rows in (self.x, self.g):  # each sample one row older
+            rows[2, idx] = rows[1, idx]
+            rows[1, idx] = rows[0, idx]
+        self.x[0, idx], self.g[0, idx] = x, g
         dist = self.root_distance()[idx]
         with np.errstate(invalid="ignore"):
             self.moved[idx] = np.abs(x + self.sense * dist - before)  # inf - inf: NaN
@@ -121,6 +132,16 @@ class EventWatch:
         """The smallest extrapolated distance to a zero of a live function (inf if none)."""
         dist = self.root_distance()[self.alive]
         return dist.min() if dist.size else np.inf
+
+
+def _compiled_distances():
+    """extrapolate_kernel.root_distances once the compiled kernels have loaded numba, else
+    None: a path alone does not import it."""
+    if "numba" not in sys.modules:
+        return None
+    from .extrapolate_kernel import root_distances
+
+    return root_distances
 
 
 def secant_bracket(
