@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 
 from electrogrowth.continuation import watch_kernel
-from electrogrowth.continuation.watch_kernel import root_distances
 from electrogrowth.continuation.predict import EventWatch
+from electrogrowth.continuation.watch_kernel import root_distances
 
 
 def _watch(x, g, sense):
