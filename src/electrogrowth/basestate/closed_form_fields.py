@@ -65,36 +65,40 @@ def nh_table_block(R, r_i, b, growth, stretch, charge, outer_radius, r_o, J):
     rows of a radial table (incremental/radial_table.py), w = J R / (lambda_z r^2); the same
     bits as :func:`nh_fields` stacked with w in NumPy, in one compiled pass (the log1p of
     (NH-1) in NumPy, as there). ParameterError if a radius leaves the wall."""
-    block = _nh_block(R, r_i, b, growth, stretch, charge, outer_radius, r_o, J)
+    xy = np.empty((2, R.shape[0]))
+    block = _nh_block(R, r_i, b, growth, stretch, charge, outer_radius, r_o, J, xy)
     if block.shape[0] != R.shape[0]:
         raise ParameterError(f"R outside the wall [1, {outer_radius:g}]")
-    tau1, x, y = block[:, N_MODULI], block[:, _X], block[:, _Y]
-    block[:, N_MODULI] = tau1 - 0.5 * growth / stretch * (np.log1p(x) - y)
-    return np.ascontiguousarray(block[:, :_X])  # the table's 26 columns, as NumPy stacks them
-
-
-#: columns of _nh_block past the table's 26: x and y of (NH-1), for the log1p outside
-_X, _Y = N_MODULI + 3, N_MODULI + 4
+    _finish_p(block, np.log1p(xy[0]), xy[1], 0.5 * growth / stretch)
+    return block
 
 
 @nb.njit(cache=True)
-def _nh_block(R, r_i, b, growth, stretch, charge, outer_radius, r_o, J):
-    """The block of :func:`nh_table_block` with tau_1 in the column of p and x, y in two
-    more (one array out: each array returned costs a conversion); no rows at all if a radius
-    leaves the wall (UniformState._inside's bounds)."""
+def _nh_block(R, r_i, b, growth, stretch, charge, outer_radius, r_o, J, xy):
+    """The block of :func:`nh_table_block` with tau_1 in the column of p, and x, y of (NH-1)
+    into the rows of ``xy``; no rows at all if a radius leaves the wall
+    (UniformState._inside's bounds)."""
     n = R.shape[0]
     for j in range(n):
         if R[j] < 1.0 - 1e-12 or R[j] > outer_radius * (1.0 + 1e-12):
-            return np.zeros((0, _Y + 1))
-    block = np.zeros((n, _Y + 1))
+            return np.zeros((0, N_MODULI + 3))
+    block = np.zeros((n, N_MODULI + 3))
     a, ro2, k, tail, l3 = _nh_constants(r_i, b, growth, stretch, outer_radius, r_o)
     for j in range(n):
-        rj, block[j, N_MODULI], block[j, _X], block[j, _Y] = _nh_point(
+        rj, block[j, N_MODULI], xy[0, j], xy[1, j] = _nh_point(
             R[j], r_i, b, growth, l3, charge, a, ro2, k, tail, block[j]
         )
         block[j, N_MODULI + 1] = rj
         block[j, N_MODULI + 2] = J * R[j] / (stretch * rj * rj)  # NumPy's order of operations
     return block
+
+
+@nb.njit(cache=True)
+def _finish_p(block, log1p_x, y, c):
+    """p = tau_1 - c (log1p(x) - y) into the column of tau_1 (c = g / (2 lambda_z), as
+    NumPy's scalar-times-array order computes it)."""
+    for j in range(block.shape[0]):
+        block[j, N_MODULI] = block[j, N_MODULI] - c * (log1p_x[j] - y[j])
 
 
 @nb.njit(cache=True)

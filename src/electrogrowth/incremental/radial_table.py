@@ -40,7 +40,7 @@ import numpy as np
 
 from ..errors import ConvergenceError
 from ..model.materials import MODULI_NAMES
-from .table_chop import chop_and_merge
+from .table_chop import scale_chop_and_merge
 
 N_MODULI = len(MODULI_NAMES)
 #: rows of ``fmap`` after the 23 moduli: p, r and w = (dr/dR) / r
@@ -178,8 +178,7 @@ def _segment_table(a, b, values, tol, max_nodes):
     n = 17
     while True:
         vals = values(_nodes(a, b, n))
-        coef = _cheb_coefficients(vals)  # (n, 26)
-        tail_ok, rows, fmap = chop_and_merge(coef, vals, tol)
+        tail_ok, rows, fmap = _chop(vals, tol)
         if tail_ok or n >= max_nodes:
             break
         n = 2 * n - 1
@@ -189,6 +188,13 @@ def _segment_table(a, b, values, tol, max_nodes):
             f" [{a:g}, {b:g}]; the wall is too thick or strained for the table"
         )
     return rows, fmap
+
+
+def _chop(vals, tol):
+    """(tail_ok, rows, fmap) of the functions with values ``vals`` at the Chebyshev points:
+    the DCT's product in NumPy, its scaling (:func:`_cheb_coefficients`), the chopping and
+    the merging compiled (table_chop.py; its twin: :func:`_chop_numpy` of the coefficients)."""
+    return scale_chop_and_merge(_chebyshev_points(vals.shape[0])[1] @ vals, vals, tol)
 
 
 def _chop_numpy(coef, vals, tol):
