@@ -53,6 +53,19 @@ def test_chop_equals_numpy_on_random_coefficients(seed, n):
     assert _same(got[1], want[1]) and _same(got[2], want[2])
 
 
+@pytest.mark.parametrize("seed", range(20))
+@pytest.mark.parametrize("n", [17, 33, 65])
+def test_scaled_chop_equals_numpy(seed, n):
+    """The DCT's scaling inside the compiled chop is _cheb_coefficients' to the last bit."""
+    rng = np.random.default_rng(500 + seed)
+    _, values = _random_segment(rng, n)
+    tol = 10.0 ** rng.uniform(-16, -8)
+    got = radial_table._chop(values, tol)
+    want = radial_table._chop_numpy(radial_table._cheb_coefficients(values), values, tol)
+    assert got[0] == want[0]
+    assert _same(got[1], want[1]) and _same(got[2], want[2])
+
+
 def test_chop_equals_numpy_with_nan():
     rng = np.random.default_rng(7)
     coef, values = _random_segment(rng, 17)
@@ -96,7 +109,13 @@ def states():
 @pytest.mark.parametrize("tol", [1e-15, 1e-14, 1e-12, 1e-9])
 def test_build_table_equals_the_numpy_twin(states, tol, monkeypatch):
     compiled = [radial_table.build_table(s, tol=tol) for s in states]
-    monkeypatch.setattr(radial_table, "chop_and_merge", radial_table._chop_numpy)
+    monkeypatch.setattr(
+        radial_table,
+        "_chop",
+        lambda vals, tol: radial_table._chop_numpy(
+            radial_table._cheb_coefficients(vals), vals, tol
+        ),
+    )
     twin = [radial_table.build_table(s, tol=tol) for s in states]
     for a, b in zip(compiled, twin):
         assert all(_same(x, y) for x, y in zip(a, b))

@@ -318,6 +318,22 @@ class UniformState:
             self._tau(stretches, d)[0] - self._sigma_rr(R, r),
         )
 
+    def table_block(self, R, J: float) -> np.ndarray:
+        """The (n, 26) array [23 moduli, p, r, w] at the radii R (1-d), w = (dr/dR) / r =
+        J R / (lambda_z r^2) (J = det F_g): the rows of the Chebyshev table
+        (incremental/radial_table.py), the same bits as :meth:`table_fields` stacked with w
+        in NumPy; the closed form in one compiled pass."""
+        if self._sigma is None:
+            from .closed_form_fields import nh_table_block  # here: numba only for tables
+
+            t = self.tube
+            return nh_table_block(
+                R, self.r_i, self._wall.b, t.growth, t.stretch, self.charge, t.outer_radius,
+                self.r_o, J,
+            )  # fmt: skip
+        r, moduli, p = self.table_fields(R)
+        return np.column_stack([moduli, p, r, J * R / (self.stretch * r * r)])
+
     def as_dict(self) -> dict:
         """The JSON record of the state (inf -> null): geometry, charge, threshold, axial
         force and the extremes of the three principal Cauchy stresses over 401 points of

@@ -24,6 +24,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
+import sys
 
 import numpy as np
 from numpy.polynomial import chebyshev as cheb
@@ -359,7 +360,20 @@ def nh_lambda_i(outer_radius: float, growth: float, stretch: float, ratio: float
     if ratio == 0.0:
         return lam0
     k, target = outer_radius**2 - 1.0, ratio * ratio
-    y = brentq(
-        lambda y: nh_square(y, k) - target, 0.0, 1.0, xtol=1e-300, rtol=_RTOL_MIN, maxiter=500
-    )
+    root = _compiled_root()
+    y, ok = (math.nan, False) if root is None else root(k, target, 1e-300, _RTOL_MIN, 500)
+    if not ok:  # Python's brentq: before numba is loaded, and for its error where it fails
+        y = brentq(
+            lambda y: nh_square(y, k) - target, 0.0, 1.0, xtol=1e-300, rtol=_RTOL_MIN, maxiter=500
+        )
     return lam0 / math.sqrt(y)
+
+
+def _compiled_root():
+    """nh_root_kernel.nh_root (the same root, compiled) once the compiled kernels have
+    loaded numba, else None: a base state alone (the ``state`` command) never imports it."""
+    if "numba" not in sys.modules:
+        return None
+    from .nh_root_kernel import nh_root
+
+    return nh_root

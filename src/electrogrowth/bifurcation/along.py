@@ -86,12 +86,14 @@ class TubeAt:
         has solved (the same root: basestate/warm.py)."""
         tube = self(x)
         x = float(x)
-        near, guess = self.neighbours.nearest(x, rtol)
-        same = self.neighbours.solved_at(x, rtol)
-        if same is not None and tube.is_uniform:
-            return same  # solved here before (a value, then its error estimate): a uniform
-            # tube's state is a function of the tube alone, so this is the same state
-        state = solve_base_state(tube, rtol=rtol, near=near, guess=guess)
+        if tube.is_uniform:  # its state is a function of the tube alone: no neighbour needed
+            same = self.neighbours.solved_at(x, rtol)
+            if same is not None:
+                return same  # solved here before (a value, then its error estimate)
+            state = solve_base_state(tube, rtol=rtol)
+        else:
+            near, guess = self.neighbours.nearest(x, rtol)
+            state = solve_base_state(tube, rtol=rtol, near=near, guess=guess)
         self.neighbours.keep(x, rtol, state)
         return state
 

@@ -10,6 +10,7 @@ tangent predictor.
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Sequence
 
 import numpy as np
@@ -60,8 +61,19 @@ class EventWatch:
             self._distance.setflags(write=False)
         return self._distance
 
+    # Each question below is answered by watch_kernel.py once numba is loaded (the same
+    # bits: ~1 us against 5-45 us for NumPy's small-array operations), else by its
+    # ``*_numpy`` twin.
+
     def _extrapolate(self):
         """:meth:`root_distance` from the samples."""
+        kernel = _compiled()
+        if kernel is None:
+            return self._extrapolate_numpy()
+        return kernel.root_distances(self.x, self.g, float(self.sense))
+
+    def _extrapolate_numpy(self):
+        """:meth:`root_distance` from the samples, in NumPy."""
         (xa, xb, xc), (ga, gb, gc) = self.x, self.g
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             slope = (ga - gb) / (xa - xb)
@@ -77,14 +89,34 @@ class EventWatch:
 
     def needs(self, x):
         """Live functions to sample at x: due, or predicted to have reached zero by x."""
+        kernel = _compiled()
+        if kernel is None:
+            return self.needs_numpy(x)
+        dist = self.root_distance()
+        return kernel.needs(self.alive, self.due, dist, self.xa, float(x), float(self.sense))
+
+    def needs_numpy(self, x):
+        """:meth:`needs` in NumPy."""
         reach = self.sense * (x - self.xa)
         return self.alive & ((self.sense * (x - self.due) >= 0) | (reach >= self.root_distance()))
 
     def record(self, idx, x, g):
         before = self.x[0, idx] + self.sense * self.root_distance()[idx]  # the zero predicted
         self._distance = None  # new samples, new extrapolation
-        self.x[:, idx] = np.vstack([np.full(idx.size, x), self.x[0, idx], self.x[1, idx]])
-        self.g[:, idx] = np.vstack([g, self.g[0, idx], self.g[1, idx]])
+        for rows in (self.x, self.g):  # each sample one row older
+            rows[2, idx] = rows[1, idx]
+            rows[1, idx] = rows[0, idx]
+        self.x[0, idx], self.g[0, idx] = x, g
+        kernel = _compiled()
+        if kernel is None:
+            return self._settle_numpy(idx, x, before)
+        idx = np.asarray(idx, dtype=np.int64)
+        kernel.settle(idx, float(x), float(self.sense), before, self.root_distance(),
+                      self.moved, self.due, MAX_WAIT * self.scale)  # fmt: skip
+
+    def _settle_numpy(self, idx, x, before):
+        """The end of :meth:`record` in NumPy: how far each new sample moved its predicted
+        zero from ``before``, and when it falls due."""
         dist = self.root_distance()[idx]
         with np.errstate(invalid="ignore"):
             self.moved[idx] = np.abs(x + self.sense * dist - before)  # inf - inf: NaN
@@ -99,6 +131,14 @@ class EventWatch:
         window in which it dips below zero and returns is seen if it is wider. So is it
         here: the zero is trusted only once its prediction has settled to TRUST of
         ``finest``, and the step ends at most ``finest`` beyond it."""
+        kernel = _compiled()
+        if kernel is None:
+            return self.reach_numpy(safety, finest)
+        return kernel.reach(self.alive, self.root_distance(), self.moved, float(safety),
+                            float(finest), TRUST, OVERSHOOT)  # fmt: skip
+
+    def reach_numpy(self, safety: float, finest: float) -> float:
+        """:meth:`reach` in NumPy."""
         live = self.alive
         dist, moved = self.root_distance()[live], self.moved[live]
         if not dist.size:
@@ -111,6 +151,14 @@ class EventWatch:
     def next_due(self, x) -> float | None:
         """The nearest point beyond x where a live function falls due (None if none is
         ahead): a step that ends before it samples nothing (:meth:`needs`)."""
+        kernel = _compiled()
+        if kernel is None:
+            return self.next_due_numpy(x)
+        found, due = kernel.next_due(self.alive, self.due, float(x), float(self.sense))
+        return due if found else None
+
+    def next_due_numpy(self, x) -> float | None:
+        """:meth:`next_due` in NumPy."""
         ahead = self.alive & (self.sense * (self.due - x) > 0)
         if not ahead.any():
             return None
@@ -121,6 +169,16 @@ class EventWatch:
         """The smallest extrapolated distance to a zero of a live function (inf if none)."""
         dist = self.root_distance()[self.alive]
         return dist.min() if dist.size else np.inf
+
+
+def _compiled():
+    """The module watch_kernel once the compiled kernels have loaded numba, else None: a
+    path alone does not import it."""
+    if "numba" not in sys.modules:
+        return None
+    from . import watch_kernel
+
+    return watch_kernel
 
 
 def secant_bracket(

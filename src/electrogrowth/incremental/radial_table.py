@@ -40,7 +40,7 @@ import numpy as np
 
 from ..errors import ConvergenceError
 from ..model.materials import MODULI_NAMES
-from .table_chop import chop_and_merge
+from .table_chop import scale_chop_and_merge
 
 N_MODULI = len(MODULI_NAMES)
 #: rows of ``fmap`` after the 23 moduli: p, r and w = (dr/dR) / r
@@ -102,6 +102,15 @@ def _chebyshev_points(n: int) -> tuple[np.ndarray, np.ndarray]:
     return x, basis
 
 
+@functools.lru_cache(maxsize=64)
+def _nodes(a: float, b: float, n: int) -> np.ndarray:
+    """The n Chebyshev points of the first kind mapped onto R in [a, b], read-only: a march
+    tabulates the same wall at every step."""
+    R = 0.5 * (a + b) + 0.5 * (b - a) * _chebyshev_points(n)[0]
+    R.setflags(write=False)
+    return R
+
+
 def _cheb_coefficients(values: np.ndarray) -> np.ndarray:
     """Coefficients from values at the Chebyshev points of the first kind (DCT-II)."""
     n = values.shape[0]
@@ -140,20 +149,21 @@ def _segments(state, mu: float, eps: float):
     unit = mu == 1.0 and eps == 1.0  # the reference modulus and permittivity: no division
 
     layered = hasattr(state, "layer_fields")  # a LayeredState: one layer's fields at once
-    uniform = hasattr(state, "table_fields")  # a UniformState: the same, one call
+    uniform = hasattr(state, "table_block")  # a UniformState: the whole block, one call
 
     def values(R, k, layer):
-        if layered:  # r, the moduli and p from one evaluation of the layer's fields
-            f = state.layer_fields(R, k, moduli=True)
-            r, moduli, p = f["r"], f["moduli"], f["tau1"] - f["sigma_rr"]
-        elif uniform:
-            r, moduli, p = state.table_fields(R)
-        else:
-            r, moduli, p = state.radius(R), state.moduli(R), state.pressure(R)
         # J = det F_g: a constant layer's product once (the same floating-point product)
         J = np.prod(layer.growth_at(R), axis=0) if layer.graded else math.prod(layer.growth)
-        w = J * R / (state.stretch * r * r)
-        out = np.column_stack([moduli, p, r, w])
+        if uniform:  # compiled for the closed form (basestate/closed_form_fields.py)
+            out = state.table_block(R, J)
+        else:
+            if layered:  # r, the moduli and p from one evaluation of the layer's fields
+                f = state.layer_fields(R, k, moduli=True)
+                r, moduli, p = f["r"], f["moduli"], f["tau1"] - f["sigma_rr"]
+            else:
+                r, moduli, p = state.radius(R), state.moduli(R), state.pressure(R)
+            w = J * R / (state.stretch * r * r)
+            out = np.column_stack([moduli, p, r, w])
         return out if unit else out / units
 
     return [
@@ -167,10 +177,8 @@ def _segment_table(a, b, values, tol, max_nodes):
     compiled: table_chop.py)."""
     n = 17
     while True:
-        x = _chebyshev_points(n)[0]
-        vals = values(0.5 * (a + b) + 0.5 * (b - a) * x)
-        coef = _cheb_coefficients(vals)  # (n, 26)
-        tail_ok, rows, fmap = chop_and_merge(coef, vals, tol)
+        vals = values(_nodes(a, b, n))
+        tail_ok, rows, fmap = _chop(vals, tol)
         if tail_ok or n >= max_nodes:
             break
         n = 2 * n - 1
@@ -180,6 +188,13 @@ def _segment_table(a, b, values, tol, max_nodes):
             f" [{a:g}, {b:g}]; the wall is too thick or strained for the table"
         )
     return rows, fmap
+
+
+def _chop(vals, tol):
+    """(tail_ok, rows, fmap) of the functions with values ``vals`` at the Chebyshev points:
+    the DCT's product in NumPy, its scaling (:func:`_cheb_coefficients`), the chopping and
+    the merging compiled (table_chop.py; its twin: :func:`_chop_numpy` of the coefficients)."""
+    return scale_chop_and_merge(_chebyshev_points(vals.shape[0])[1] @ vals, vals, tol)
 
 
 def _chop_numpy(coef, vals, tol):

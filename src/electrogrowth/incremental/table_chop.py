@@ -92,3 +92,18 @@ def chop_and_merge(coef, values, tol):
         for j in range(width):
             rows[d, j] = coef[j, g] * (1.0 if j < degree[g] else 0.0)
     return tail_ok, rows, fmap
+
+
+@nb.njit(cache=True)
+def scale_chop_and_merge(product, values, tol):
+    """:func:`chop_and_merge` of the coefficients c = product 2 / n, c[0] halved (n rows),
+    product = DCT-II matrix @ values: radial_table._cheb_coefficients' scaling, the same
+    floating-point operations, in the compiled pass (``product`` is overwritten with c)."""
+    n = product.shape[0]
+    scale = 2.0 / n
+    for j in range(n):
+        for f in range(product.shape[1]):
+            product[j, f] = product[j, f] * scale
+    for f in range(product.shape[1]):
+        product[0, f] = product[0, f] * 0.5
+    return chop_and_merge(product, values, tol)

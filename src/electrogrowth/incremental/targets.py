@@ -34,6 +34,7 @@ pickle and compare by value.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 
 import numpy as np
@@ -41,7 +42,8 @@ import numpy as np
 from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError
 from .accuracy import Accuracy
-from .impedance import STATUS_TEXT, target_batch, target_serial
+from .impedance import STATUS_TEXT, target_serial
+from .mode_rows import rows_parallel, rows_serial
 from .modes import ALL_PAIRS as ALL_PAIRS
 from .modes import FAMILIES as FAMILIES
 from .modes import METHODS as METHODS
@@ -72,19 +74,22 @@ def wavenumber(params, n: float) -> float:
 
 def impedance_targets(state, modes, *, rtol: float = 1e-12, max_steps: int = 20000) -> np.ndarray:
     """Kernel target f for many modes (rows (m, n) or (m, n, code)) on one base state."""
-    modes = np.atleast_2d(np.asarray(modes, dtype=float))
-    tables = stack_tables([build_table(state, tol=Accuracy(rtol).table)])
-    count = modes.shape[0]
-    k = modes[:, 1] * math.pi / state.current_length
-    m = np.ascontiguousarray(modes[:, 0])
-    kernel = target_batch if count >= PARALLEL_FROM else target_serial
-    f, status, _ = kernel(
-        m, k, mode_pairs(modes), np.zeros(count, dtype=np.int64), tables, rtol, max_steps
-    )
-    bad = status != 0
-    if bad.any():
+    modes = np.asarray(modes, dtype=float, order="C")
+    if modes.ndim == 1:  # one row
+        modes = modes[None]
+    tables = stack_tables([build_table(state, tol=_table_tol(rtol))])
+    kernel = rows_parallel if modes.shape[0] >= PARALLEL_FROM else rows_serial
+    f, status = kernel(modes, state.current_length, tables, rtol, max_steps)
+    if status.any():
+        bad = status != 0
         f[bad] = _retry(state, modes[bad], status[bad], rtol, max_steps)
     return f
+
+
+@functools.lru_cache(maxsize=32)
+def _table_tol(rtol: float) -> float:
+    """Accuracy(rtol).table, remembered: a march asks at every evaluation."""
+    return Accuracy(rtol).table
 
 
 RETRY_TIGHTER = (1e-2, 1e-4)  # a failed mode is integrated again at rtol times these
