@@ -35,37 +35,14 @@ def newton(
     section, x: np.ndarray, *, tol: float = RESIDUAL_TOL, invariant: bool = False
 ) -> tuple[np.ndarray, int]:
     """Solve residual(x) = 0 on the free unknowns from ``x`` (its prescribed entries are
-    reset to the section's); with ``invariant``, on the fields independent of Y alone
-    (``section.invariant``: the unperturbed path from a state on it). Returns
+    reset to the section's). Each step moves x in the columns B of ``section.P`` (all the
+    unknowns) or, with ``invariant``, of ``section.invariant`` (the fields independent of Y:
+    the unperturbed path from a state on it): B^T K B dy = -B^T r. Converged when the whole
+    free residual is below ``tol`` (then the full model's equilibrium either way). Returns
     (x, iterations); ConvergenceError if it does not converge in MAX_ITERATIONS or the
     residual grows a thousandfold."""
     x = section.with_fixed(x)
-    if invariant:
-        return _newton_invariant(section, x, tol)
-    r0 = None
-    for it in range(MAX_ITERATIONS + 1):
-        r = section.restrict(section.residual(x))
-        norm = np.abs(r).max()
-        if not np.isfinite(norm):
-            break
-        if norm < tol:
-            return x, it
-        r0 = norm if r0 is None else r0
-        if norm > 1e3 * max(r0, 1.0):
-            break
-        x = x - section.expand(spla.spsolve(section.reduced(section.tangent(x)), r))
-    raise fe_error(
-        ConvergenceError,
-        f"the finite-element equilibrium did not converge (residual {norm:.3g} after {it}"
-        " Newton steps)",
-    )
-
-
-def _newton_invariant(section, x: np.ndarray, tol: float) -> tuple[np.ndarray, int]:
-    """Newton with x moving in the columns B of ``section.invariant``: B^T K B dy = -B^T r.
-    Converged when the whole free residual is below ``tol`` (the state is then the full
-    model's equilibrium, not only the subspace's)."""
-    B = section.invariant
+    B = section.invariant if invariant else section.P
     r0 = None
     for it in range(MAX_ITERATIONS + 1):
         r = section.residual(x)
