@@ -105,6 +105,8 @@ def test_meridian_json_and_files(tmp_path, capsys, monkeypatch):
     branch = rec["branch"]
     assert branch["amplitude"] == pytest.approx([0.0, 0.01, 0.02])
     assert rec["curvature"] > 0 and branch["control"][2] > branch["control"][1] > rec["onset_fe"]
+    # the scales a = 1e-3 and 1e-4 agree (the larger kept): the difference is its error
+    assert 0 <= rec["curvature_error"] < 1e-2 * rec["curvature"]
     assert all(v > 0 for v in branch["lowest_eigenvalue"][1:])
     assert rec["ended"] is None
     names = {p.name for p in (tmp_path / "out").iterdir()}

@@ -97,6 +97,7 @@ def fe_onset_and_curvature(k: int):
     linear = critical_value(BILAYER, 0, N, CONTROL).value
     onset = fe_onset(mer, BILAYER, CONTROL, linear)
     _, _, curvature, face, _ = initial_curvature(mer, BILAYER, CONTROL, onset)
+    curvature = curvature.value
     assert face == "inner"
     return (onset.value - linear) / linear, curvature
 

@@ -150,7 +150,10 @@ def run_postbuckle(args) -> int:
             f" {(result.onset_fe - result.onset_linear) / abs(result.onset_linear):.2e}),"
             f" mesh {result.mesh.elements} elements, {result.unknowns} unknowns"
         )
-        print(f"initial curvature d({control})/d(a^2) = {result.curvature:.6g}")
+        print(
+            f"initial curvature d({control})/d(a^2) = {result.curvature:.6g} (it changed by"
+            f" {result.curvature_error:.2g} from amplitudes ten times larger)"
+        )
         print("amplitude  control  energy  lowest_eigenvalue  lowest_mode")
         rows = zip(
             result.amplitude, result.control, result.energy, result.eigenvalue, result.lowest_mode

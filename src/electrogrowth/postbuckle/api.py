@@ -24,9 +24,6 @@ from .section import Section, mesh_size
 from .stability import face_harmonic, secondaries
 from .wall import check_periods
 
-#: the smallest amplitude of the branch's curvature estimate, units R_i (points at a, 2a, 4a)
-CURVATURE_AMPLITUDE = 1e-3
-
 
 def postbuckle(
     tube: Tube,
@@ -151,28 +148,62 @@ def postbuckle(
     return dataclasses.replace(record(pts), ended=branch.ended, secondary=found)
 
 
+@dataclasses.dataclass(frozen=True)
+class Curvature:
+    """d(control) / d(a^2) at onset: ``value`` from the perfect branch's points at
+    ``amplitude``, 2 and 4 times it; ``error`` its change from the scale ten times larger
+    (NaN when only one scale was taken)."""
+
+    value: float
+    error: float
+    amplitude: float
+
+
 def initial_curvature(section, tube: Tube, control: str, onset):
     """d(control) / d(a^2) at ``onset`` (an :class:`~.onset.FEOnset` of ``section``) on the
-    perfect branch, from its points at a = CURVATURE_AMPLITUDE, 2a and 4a alone: with
+    perfect branch, from its points at a, 2a and 4a alone: with
     c(a) = c_c + c_2 a^2 + c_4 a^4 + ..., the difference quotients
     D_1 = (c(2a) - c(a)) / (3 a^2) = c_2 + 5 c_4 a^2 and
     D_2 = (c(4a) - c(2a)) / (12 a^2) = c_2 + 20 c_4 a^2 give c_2 = (4 D_1 - D_2) / 3 + O(a^4).
     The onset value c_c, Brent's zero of a Lanczos eigenvalue (to ~1e-9), does not enter:
-    (c(a) - c_c) / a^2 would multiply its error by 1 / a^2 = 1e6. The amplitude is read on
-    the face where the critical mode is larger. Returns (the onset point, the points at a
-    and 2a, c_2, the face, the mode scaled to unit amplitude)."""
+    (c(a) - c_c) / a^2 would multiply its error by 1 / a^2 = 1e6. The amplitude scale starts
+    at CURVATURE_AMPLITUDE and is cut tenfold until two scales agree to CURVATURE_RTOL (at
+    most CURVATURE_SCALES scales); the larger of the two is kept. Where other modes lie
+    close to the critical one, a^2 terms are not yet dominant at a = 1e-3 (the charged
+    bilayer of docs/postbuckling.md: -13100 there, -481.0 at 1e-4, -481.3 at 1e-5). The
+    amplitude is read on the face where the critical mode is larger. Returns (the onset
+    point, the points at a and 2a, the :class:`Curvature`, the face, the mode scaled to
+    unit amplitude)."""
     faces = {f: amplitude_vector(section, f) for f in ("inner", "outer")}
     face = max(faces, key=lambda f: abs(faces[f] @ onset.mode))
     direction = onset.mode / (faces[face] @ onset.mode)
     perfect = AmplitudeBranch(section, tube, control, face=face)
     start = BranchPoint(onset.value, 0.0, section.energy(onset.x), onset.x)
     with_stability(section, start)  # eigenvalue zero to the onset's tolerance
-    a = CURVATURE_AMPLITUDE
-    pts = perfect.follow(start, [a, 2 * a, 4 * a], direction=direction)
-    c = [p.control for p in pts]
-    d1 = (c[1] - c[0]) / (3 * a**2)
-    d2 = (c[2] - c[1]) / (12 * a**2)
-    return start, pts[:2], (4 * d1 - d2) / 3, face, direction
+    a, previous, error = CURVATURE_AMPLITUDE, math.nan, math.nan
+    near: list[BranchPoint] = []
+    for _ in range(CURVATURE_SCALES):
+        pts = perfect.follow(start, [a, 2 * a, 4 * a], direction=direction)
+        c = [p.control for p in pts]
+        value = (4 * (c[1] - c[0]) / (3 * a**2) - (c[2] - c[1]) / (12 * a**2)) / 3
+        error = abs(value - previous)
+        if error <= CURVATURE_RTOL * abs(value):
+            # the larger scale's: its a^4 term is bounded by the agreement, and its
+            # differences of branch points carry a hundredth of the smaller one's rounding
+            value, a = previous, a * 10
+            pts = near
+            break
+        previous, near, a = value, pts, a / 10
+    else:
+        a *= 10  # the last scale taken
+    return start, pts[:2], Curvature(value, error, a), face, direction
+
+
+#: the curvature's amplitude scales: the first, the agreement asked of two scales a tenth
+#: apart, and how many scales at most
+CURVATURE_AMPLITUDE = 1e-3
+CURVATURE_RTOL = 1e-2
+CURVATURE_SCALES = 3
 
 
 def _check_onset_pattern(section, onset, linear: float, mode, control: str) -> None:
@@ -288,7 +319,8 @@ def _record(tube, control, mode, linear, onset, size, section, curvature, pts):
         amplitude=np.array([p.amplitude for p in pts]),
         energy=full * np.array([p.energy for p in pts]),
         eigenvalue=np.array([p.eigenvalue for p in pts]),
-        curvature=float(curvature),
+        curvature=float(curvature.value),
+        curvature_error=float(curvature.error),
         imperfection=0.0,
         states=tuple(p.x for p in pts),
         section=section,

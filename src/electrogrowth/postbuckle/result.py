@@ -4,6 +4,7 @@ as an ``xarray.Dataset``."""
 from __future__ import annotations
 
 import dataclasses
+import math
 
 import numpy as np
 
@@ -22,7 +23,8 @@ class PostbuckleResult:
     the face where the critical mode is larger, units R_i; for the meridian the cos(k z)
     radial displacement; energy: the whole tube's per unit reference length (the ring's;
     the meridian's averaged over a wavelength), units mu R_i^2), ``curvature``
-    d(control) / d(a^2) at onset on the perfect branch; ``imperfection`` the load
+    d(control) / d(a^2) at onset on the perfect branch and ``curvature_error`` its change
+    between the last two amplitude scales (api.initial_curvature); ``imperfection`` the load
     imperfection's size (0: the perfect bifurcated branch); ``eigenvalue`` the lowest
     eigenvalue of the tangent at fixed control at each point (< 0: unstable; NaN at the
     onset itself), ``subharmonic`` its eigenvector's fraction outside the mode's family and
@@ -55,6 +57,7 @@ class PostbuckleResult:
     subharmonic: np.ndarray = dataclasses.field(default_factory=lambda: np.zeros(0))
     pattern: np.ndarray = dataclasses.field(default_factory=lambda: np.zeros(0, int))
     secondary: tuple[Secondary, ...] = ()
+    curvature_error: float = math.nan
 
     @property
     def lowest_mode(self) -> list[str | None]:
@@ -90,6 +93,7 @@ class PostbuckleResult:
             "onset_relative_difference": (self.onset_fe - self.onset_linear)
             / abs(self.onset_linear),
             "curvature": self.curvature,
+            "curvature_error": self.curvature_error,
             "amplitude_face": self.face,
             "imperfection": self.imperfection,
             "periods": self.periods,
@@ -126,6 +130,7 @@ class PostbuckleResult:
                 "onset_linear": self.onset_linear,
                 "onset_fe": self.onset_fe,
                 "curvature": self.curvature,
+                "curvature_error": self.curvature_error,
                 "periods": self.periods,
             },
         )
