@@ -6,6 +6,22 @@ from __future__ import annotations
 
 import numpy as np
 
+from electrogrowth.bifurcation.koiter_film import _nearest_zero
+
+
+def mode_in_full(first, stiffness, one, size: int):
+    """(mode, node): the critical mode of the one-harmonic forms ``first`` (the null vector
+    of ``stiffness``, scaled to a unit peak |u_r|) placed in harmonic 1 of each field of the
+    full unknowns (``one``: harmonic -> slice, ``size`` of them), and the full index of its
+    largest u_r (the unknown Newton prescribes)."""
+    phi = _nearest_zero(stiffness)[1]
+    phi = phi / first.peak_radial(phi, first.slices[0])[1]
+    mode = np.zeros(size)
+    for f, sl in zip(range(3), first.slices):
+        mode[one[(f, 1)]] = phi[sl]
+    node = one[(0, 1)].start + int(np.argmax(np.abs(phi[first.slices[0]])))
+    return mode, node
+
 
 def branch_curvature(c_c, mode_vector, node, residual, jacobian, eps_values):
     """(c(eps) - c_c) / eps^2 for each eps: Newton on residual(c, w) = 0 with the

@@ -24,6 +24,7 @@ from electrogrowth.incremental.meridian_forms import MeridianForms
 from electrogrowth.incremental.polar_forms import rings
 from electrogrowth.model.layer import Layer
 from electrogrowth.model.layers import Tube
+from tests.bifurcation.koiter_newton import mode_in_full
 
 AXIAL = "growth[1].z"
 
@@ -159,16 +160,12 @@ def test_branch_curvature_from_a_direct_nonlinear_solve():
     full = _forms(tube, n, harmonics, N, z_points=16)
     first = _forms(tube, n, MODE, N)
     one = dict(zip(harmonics, full.slices))
-    phi = _nearest_zero(first.stiffness(solve_base_state(tube.at(AXIAL, e.control_value))))[1]
-    phi = phi / first.peak_radial(phi, first.slices[0])[1]
-    a = phi[first.slices[0]]
-    idx = int(np.argmax(np.abs(a)))
-    node = one[(0, 1)].start + idx
+    mode, node = mode_in_full(
+        first, first.stiffness(solve_base_state(tube.at(AXIAL, e.control_value))), one, full.size
+    )
 
     def branch(eps):
-        w = np.zeros(full.size)
-        for f, sl in zip(range(3), first.slices):
-            w[one[(f, 1)]] = eps * phi[sl]
+        w = eps * mode
         c, size = e.control_value, full.size
         for _ in range(30):
             state = solve_base_state(tube.at(AXIAL, c))
@@ -178,7 +175,7 @@ def test_branch_curvature_from_a_direct_nonlinear_solve():
             J[:size, :size] = _jacobian(full, state, w)
             J[:size, size] = (_residual(full, up, w) - _residual(full, down, w)) / (2 * h)
             J[size, node] = 1.0
-            rhs = np.concatenate([_residual(full, state, w), [w[node] - eps * a[idx]]])
+            rhs = np.concatenate([_residual(full, state, w), [w[node] - eps * mode[node]]])
             step = np.linalg.solve(J, rhs)
             w, c = w - step[:size], c - step[size]
             if abs(step[size]) < 1e-14:

@@ -15,7 +15,7 @@ import scipy.sparse as sps
 
 from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.bifurcation.koiter import koiter_coefficient
-from electrogrowth.bifurcation.koiter_film import MODE, _nearest_zero
+from electrogrowth.bifurcation.koiter_film import MODE
 from electrogrowth.bifurcation.koiter_tube import (
     SECOND,
     axial_wavenumber,
@@ -32,6 +32,7 @@ from electrogrowth.model.energy_text import energy_material
 from electrogrowth.model.layer import Layer
 from electrogrowth.model.layers import Tube
 from electrogrowth.model.materials import gent, mooney_rivlin, neo_hookean
+from tests.bifurcation.koiter_newton import mode_in_full
 
 THETA, AXIAL = "growth[1].theta", "growth[1].z"
 
@@ -363,16 +364,12 @@ def _newton_curvature(tube, family, number, control, expansion, *, nodes=12):
         first = MeridianForms.build(cut, K, MODE)
     eq = _Full(full, tube, control, family)
     one = dict(zip(harmonics, full.slices))
-    phi = _nearest_zero(first.stiffness(solve_base_state(tube.at(control, expansion))))[1]
-    phi = phi / first.peak_radial(phi, first.slices[0])[1]
-    a = phi[first.slices[0]]
-    idx = int(np.argmax(np.abs(a)))
-    node = one[(0, 1)].start + idx
+    mode, node = mode_in_full(
+        first, first.stiffness(solve_base_state(tube.at(control, expansion))), one, full.size
+    )
 
     def branch(eps):
-        w = np.zeros(full.size)
-        for f, sl in zip(range(3), first.slices):
-            w[one[(f, 1)]] = eps * phi[sl]
+        w = eps * mode
         c, size = expansion, full.size
         J = np.zeros((size + 1, size + 1))
         J[:size, :size] = eq.jacobian(c, w)
@@ -380,7 +377,7 @@ def _newton_curvature(tube, family, number, control, expansion, *, nodes=12):
         for _ in range(40):
             h = 1e-3 * c
             J[:size, size] = (eq.residual(c + h, w) - eq.residual(c - h, w)) / (2 * h)
-            rhs = np.concatenate([eq.residual(c, w), [w[node] - eps * a[idx]]])
+            rhs = np.concatenate([eq.residual(c, w), [w[node] - eps * mode[node]]])
             step = np.linalg.solve(J, rhs)
             w, c = w - step[:size], c - step[size]
             if abs(step[size]) < 1e-14:

@@ -14,12 +14,13 @@ import pytest
 
 from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.bifurcation.koiter import koiter_coefficient
-from electrogrowth.bifurcation.koiter_film import MODE, _nearest_zero
+from electrogrowth.bifurcation.koiter_film import MODE
 from electrogrowth.bifurcation.koiter_tube import axisymmetric_expansion, tube_expansion
 from electrogrowth.bifurcation.koiter_wall import wrinkle_expansion
 from electrogrowth.errors import ParameterError
 from electrogrowth.model.layer import Layer
 from electrogrowth.model.layers import Tube
+from tests.bifurcation.koiter_newton import mode_in_full
 from tests.bifurcation.test_koiter_axisymmetric import _film_tube, _forms, _jacobian, _residual
 
 AXIAL, THETA = "growth[1].z", "growth[1].theta"
@@ -123,16 +124,10 @@ def test_branch_curvature_with_the_stretch_free(axisymmetric_pair):
         return (4 * d[1] - d[0]) / 3
 
     target = force(gc, 1.0, np.zeros(full.size))
-    phi = _nearest_zero(first.stiffness(state(gc, 1.0)))[1]
-    phi = phi / first.peak_radial(phi, first.slices[0])[1]
-    a = phi[first.slices[0]]
-    idx = int(np.argmax(np.abs(a)))
-    node = one[(0, 1)].start + idx
+    mode, node = mode_in_full(first, first.stiffness(state(gc, 1.0)), one, full.size)
 
     def branch(eps):
-        w = np.zeros(full.size)
-        for f, sl in zip(range(3), first.slices):
-            w[one[(f, 1)]] = eps * phi[sl]
+        w = eps * mode
         c, lz, size, h = gc, 1.0, full.size, 1e-3
         for _ in range(60):
             J = np.zeros((size + 2, size + 2))
@@ -150,7 +145,7 @@ def test_branch_curvature_with_the_stretch_free(axisymmetric_pair):
             J[size + 1, size] = (force(c + h, lz, w) - f0) / h  # a chord: the limit is exact
             J[size + 1, size + 1] = (force(c, lz + h, w) - f0) / h
             rhs = np.concatenate(
-                [_residual(full, state(c, lz), w), [w[node] - eps * a[idx], f0 - target]]
+                [_residual(full, state(c, lz), w), [w[node] - eps * mode[node], f0 - target]]
             )
             step = np.linalg.solve(J, rhs)
             w, c, lz = w - step[:size], c - step[size], lz - step[size + 1]
