@@ -53,3 +53,61 @@ def test_neighbours_are_not_shipped():
     assert len(at.neighbours.states) == 2
     copy = pickle.loads(pickle.dumps(at))
     assert copy == at and copy.neighbours.states == []
+
+
+#: the bilayer of benchmarks/layered_bench.py under force control: its critical voltage lies
+#: 6e-7 below the limit point of the voltage branch, where r_i moves like a square root
+FORCE = Tube(
+    (Layer(1.1, shear_modulus=10.0, growth=(1.0, 1.2, 1.0)), Layer(2.0)),
+    length=3.0,
+    axial_force=0.0,
+    voltage=0.2,
+    closed_ends=True,
+    inner_pressure=0.03,
+)
+
+
+def test_a_march_to_a_limit_point_continues_its_states(monkeypatch):
+    """Next to the limit point the state nearest in Vbar may be the limit point itself,
+    whose Jacobian is singular: Newton's start is then the line through it and the nearest
+    state at another Vbar (the same state solved twice is one neighbour, not a line), and a
+    state solved before at the same Vbar is reused. Only the limit point itself is walked
+    (it was 5 states of 45), and the value is the cold march's (every state walked)."""
+    walked = []
+    continued = layered.continued
+
+    def counting(tube, near, rtol, guess=None):
+        out = continued(tube, near, rtol, guess)
+        walked.extend([tube.voltage] if out is None else [])
+        return out
+
+    monkeypatch.setattr(layered, "continued", counting)
+    warm = critical_value(FORCE, 0, 1, "voltage")
+    assert len(walked) <= 1
+    monkeypatch.setattr(layered, "continued", lambda *args: None)  # every state walked
+    cold = critical_value(FORCE, 0, 1, "voltage")
+    assert warm.value == pytest.approx(cold.value, rel=1e-12, abs=0)
+
+
+def test_neighbours_line_through_two_distinct_points():
+    """The same state kept twice (two rtols' neighbours, or a revisit) leaves the guess to
+    the next distinct control value; one distinct value gives no line."""
+    at = TubeAt(MUCOSA, "voltage")
+    s1, s2 = at.state(0.30), at.state(0.32)
+    at.neighbours.keep(0.32, 1e-12, s2)
+    near, guess = at.neighbours.nearest(0.33, 1e-12)
+    assert near is s2
+    t = (0.33 - 0.32) / (0.32 - 0.30)
+    assert guess == pytest.approx((s2.r_i + t * (s2.r_i - s1.r_i), s2.stretch), rel=1e-15)
+    lone = TubeAt(MUCOSA, "voltage")
+    lone.neighbours.keep(0.3, 1e-12, s1)
+    lone.neighbours.keep(0.3, 1e-12, s1)
+    assert lone.neighbours.nearest(0.31, 1e-12) == (s1, None)
+    assert at.state(0.32) is s2  # solved here before: the same state, no Newton step
+
+
+def test_one_preparation_however_nodes_is_passed():
+    from electrogrowth.basestate.branches import prepare
+
+    key = Tube((Layer(1.1, shear_modulus=10.0), Layer(2.0)), length=3.0)
+    assert prepare(key, 1e-12) is prepare(key, 1e-12, None)

@@ -416,10 +416,17 @@ class _Prepared:
         return threshold(self.branch, *self.loaded, "voltage", target=vbar * vbar)
 
 
-@functools.lru_cache(maxsize=256)
 def prepare(tube: Tube, rtol: float, nodes: int | None = None) -> _Prepared:
-    """Everything but the voltage (tube.voltage is 0 here): cached per tube and rtol. The
-    voltage branch's threshold is walked when first asked for (``_Prepared.voltage``)."""
+    """Everything but the voltage (tube.voltage is 0 here): cached per tube, rtol and nodes
+    (one cache key however ``nodes`` is passed: a state at the voltage threshold then reads
+    the threshold the march's path walked instead of walking it again). The voltage
+    branch's threshold is walked when first asked for (``_Prepared.voltage``)."""
+    return _prepared(tube, rtol, nodes)
+
+
+@functools.lru_cache(maxsize=256)
+def _prepared(tube: Tube, rtol: float, nodes: int | None) -> _Prepared:
+    """:func:`prepare`, cached."""
     plies = Ply.stack(tube)
     wall = Wall.build(tube, nodes or choose_nodes(tube, rtol, plies), plies)
     x0, lz0 = _start(wall)

@@ -48,9 +48,10 @@ class Neighbours:
         if not known:
             return None, None
         s1, x1 = self.states[-known[0][1]][2], known[0][2]
-        if len(known) < 2 or known[1][2] == x1:
+        other = [(k, xs) for _, k, xs in known if xs != x1]  # a line needs two points
+        if not other:
             return s1, None
-        s2, x2 = self.states[-known[1][1]][2], known[1][2]
+        s2, x2 = self.states[-other[0][0]][2], other[0][1]
         t = (x - x1) / (x1 - x2)
         return s1, (s1.r_i + t * (s1.r_i - s2.r_i), s1.stretch + t * (s1.stretch - s2.stretch))
 
@@ -86,10 +87,10 @@ class TubeAt:
         has solved (the same root: basestate/warm.py)."""
         tube = self(x)
         x = float(x)
+        same = self.neighbours.solved_at(x, rtol)
+        if same is not None:
+            return same  # solved here before (a value, then its error estimate)
         if tube.is_uniform:  # its state is a function of the tube alone: no neighbour needed
-            same = self.neighbours.solved_at(x, rtol)
-            if same is not None:
-                return same  # solved here before (a value, then its error estimate)
             state = solve_base_state(tube, rtol=rtol)
         else:
             near, guess = self.neighbours.nearest(x, rtol)
