@@ -25,3 +25,21 @@ TUBES = {
         voltage=0.1,
     ),
 }
+
+#: the mucosal bilayer of benchmarks/layered_bench.py (mu 10 on 1, hoop growth, P_i 0.05)
+MUCOSA = Tube(
+    (Layer(1.1, shear_modulus=10.0, growth=(1.0, 1.2, 1.0)), Layer(2.0)),
+    length=3.0,
+    voltage=0.3,
+    inner_pressure=0.05,
+)
+#: its force-controlled twin (free closed ends, P_i 0.03): the critical voltage of (0, 1) lies
+#: 6e-7 below the limit point of the voltage branch, where r_i moves like a square root
+FORCE_BILAYER = Tube(
+    (Layer(1.1, shear_modulus=10.0, growth=(1.0, 1.2, 1.0)), Layer(2.0)),
+    length=3.0,
+    axial_force=0.0,
+    voltage=0.2,
+    closed_ends=True,
+    inner_pressure=0.03,
+)

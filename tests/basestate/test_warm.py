@@ -16,21 +16,9 @@ from electrogrowth.basestate.layered import solve_layered_state
 from electrogrowth.errors import BaseStateError
 from electrogrowth.model.layers import Layer, Tube
 from electrogrowth.model.materials import gent, mooney_rivlin
+from tests.tubes import FORCE_BILAYER as FORCE
+from tests.tubes import MUCOSA
 
-MUCOSA = Tube(
-    (Layer(1.1, shear_modulus=10.0, growth=(1.0, 1.2, 1.0)), Layer(2.0)),
-    length=3.0,
-    voltage=0.3,
-    inner_pressure=0.05,
-)
-FORCE = Tube(
-    (Layer(1.1, shear_modulus=10.0, growth=(1.0, 1.2, 1.0)), Layer(2.0)),
-    length=3.0,
-    axial_force=0.0,
-    voltage=0.2,
-    closed_ends=True,
-    inner_pressure=0.03,
-)
 STACK = Tube(
     (
         Layer(1.05, shear_modulus=20.0, growth=(1.0, 1.15, 1.0)),

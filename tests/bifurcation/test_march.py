@@ -15,15 +15,11 @@ from electrogrowth.basestate import layered
 from electrogrowth.bifurcation.along import TubeAt
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.model.layers import Layer, Tube
+from tests.tubes import FORCE_BILAYER as FORCE
+from tests.tubes import MUCOSA
 
 UNIFORM = Tube.uniform(1.4, 1.0, growth=1.1)
 SPLIT = Tube((Layer(1.2, growth=1.1), Layer(1.4, growth=1.1)), length=1.0)
-MUCOSA = Tube(
-    (Layer(1.1, shear_modulus=10.0, growth=(1.0, 1.2, 1.0)), Layer(2.0)),
-    length=3.0,
-    voltage=0.3,
-    inner_pressure=0.05,
-)
 
 
 @pytest.mark.parametrize(
@@ -53,18 +49,6 @@ def test_neighbours_are_not_shipped():
     assert len(at.neighbours.states) == 2
     copy = pickle.loads(pickle.dumps(at))
     assert copy == at and copy.neighbours.states == []
-
-
-#: the bilayer of benchmarks/layered_bench.py under force control: its critical voltage lies
-#: 6e-7 below the limit point of the voltage branch, where r_i moves like a square root
-FORCE = Tube(
-    (Layer(1.1, shear_modulus=10.0, growth=(1.0, 1.2, 1.0)), Layer(2.0)),
-    length=3.0,
-    axial_force=0.0,
-    voltage=0.2,
-    closed_ends=True,
-    inner_pressure=0.03,
-)
 
 
 def test_a_march_to_a_limit_point_continues_its_states(monkeypatch):
