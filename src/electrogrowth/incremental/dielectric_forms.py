@@ -28,7 +28,7 @@ import numpy as np
 from .._types import FloatArray
 from ..errors import ParameterError
 from .monomial_forms import MonomialForms, by_degree, product
-from .polar_forms import Ring, peak_on_rings, radial_maps
+from .polar_forms import Ring, peak_on_rings, radial_maps, unknown_slices
 from .strain_energy_forms import strain_energy
 
 
@@ -56,11 +56,8 @@ class DielectricForms(MonomialForms):
         theta = 2 * np.pi * np.arange(theta_points) / (theta_points * m)
         R, wR, layer, V, D, P = radial_maps(rings_)
         nR, n_disp, n_pres = len(R), V.shape[1], P.shape[1]
-        sizes = {0: n_disp, 1: n_disp, 2: n_pres, 3: n_disp - 2}
-        slices, at = [], 0
-        for field, _j in harmonics:
-            slices.append(slice(at, at + sizes[field]))
-            at += sizes[field]
+        sizes = {0: n_disp, 1: n_disp, 2: n_pres, 3: n_disp - 2}  # phi: interior nodes
+        slices, at = unknown_slices([f for f, _ in harmonics], sizes)
         maps = {
             k: np.zeros((theta_points * nR, at)) for k in ("rR", "rT", "tR", "tT", "q", "ER", "ET")
         }

@@ -25,7 +25,7 @@ from ..errors import ParameterError
 from .dielectric_forms import _sum
 from .meridian_forms import MeridianForms
 from .monomial_forms import by_degree, product
-from .polar_forms import radial_maps
+from .polar_forms import radial_maps, unknown_slices
 
 FIELDS = ("rR", "rZ", "zR", "zZ", "tT", "q", "ER", "EZ")
 
@@ -44,11 +44,8 @@ class MeridianDielectricForms(MeridianForms):
         Z = 2 * np.pi * np.arange(z_points) / (z_points * K)
         R, wR, layer, V, D, P = radial_maps(rings_)
         nR, n_disp, n_pres = len(R), V.shape[1], P.shape[1]
-        sizes = {0: n_disp, 1: n_disp, 2: n_pres, 3: n_disp - 2}
-        slices, at = [], 0
-        for field, _j in harmonics:
-            slices.append(slice(at, at + sizes[field]))
-            at += sizes[field]
+        sizes = {0: n_disp, 1: n_disp, 2: n_pres, 3: n_disp - 2}  # phi: interior nodes
+        slices, at = unknown_slices([f for f, _ in harmonics], sizes)
         maps = {k: np.zeros((z_points * nR, at)) for k in FIELDS}
         for (field, j), sl in zip(harmonics, slices):
             k = j * K

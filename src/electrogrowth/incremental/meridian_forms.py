@@ -28,7 +28,7 @@ import numpy as np
 from .._types import FloatArray
 from ..errors import ParameterError
 from .monomial_forms import MonomialForms
-from .polar_forms import Ring, peak_on_rings, radial_maps
+from .polar_forms import Ring, peak_on_rings, radial_maps, unknown_slices
 from .strain_energy_forms import strain_energy
 
 #: the local fields of the energy: the displacement gradient and the pressure increment
@@ -61,11 +61,7 @@ class MeridianForms(MonomialForms):
         Z = 2 * np.pi * np.arange(z_points) / (z_points * K)  # one period
         R, wR, layer, V, D, P = radial_maps(rings_)
         nR, n_disp, n_pres = len(R), V.shape[1], P.shape[1]
-        slices, at = [], 0
-        for field, _j in harmonics:
-            size = n_pres if field == 2 else n_disp
-            slices.append(slice(at, at + size))
-            at += size
+        slices, at = unknown_slices([f for f, _ in harmonics], {0: n_disp, 1: n_disp, 2: n_pres})
         maps = {k: np.zeros((z_points * nR, at)) for k in FIELDS}
         for (field, j), sl in zip(harmonics, slices):
             k = j * K

@@ -97,6 +97,17 @@ def radial_maps(rings_: tuple[Ring, ...]):
     return R, wR, layer, V, D, P
 
 
+def unknown_slices(fields, sizes: dict) -> tuple[list[slice], int]:
+    """The unknowns of a list of harmonics, one after the other: the slice of each (its
+    field's ``sizes[field]`` values: radial nodes of a displacement, of a pressure, the
+    interior nodes of a potential) and their total."""
+    slices, at = [], 0
+    for field in fields:
+        slices.append(slice(at, at + sizes[field]))
+        at += sizes[field]
+    return slices, at
+
+
 @dataclasses.dataclass
 class PolarForms(MonomialForms):
     """The maps from the unknowns of ``harmonics`` ((field, j): 0 = a, 1 = b, 2 = c) to the
@@ -123,11 +134,7 @@ class PolarForms(MonomialForms):
         theta = 2 * np.pi * np.arange(theta_points) / (theta_points * m)  # one period
         R, wR, layer, V, D, P = radial_maps(rings_)
         nR, n_disp, n_pres = len(R), V.shape[1], P.shape[1]
-        slices, at = [], 0
-        for field, _j in harmonics:
-            size = n_pres if field == 2 else n_disp
-            slices.append(slice(at, at + size))
-            at += size
+        slices, at = unknown_slices([f for f, _ in harmonics], {0: n_disp, 1: n_disp, 2: n_pres})
         npts = theta_points * nR
         maps = {k: np.zeros((npts, at)) for k in ("rR", "rT", "tR", "tT", "q")}
         inv = (1.0 / R)[:, None]

@@ -39,7 +39,7 @@ import numpy as np
 from .._types import FloatArray
 from ..errors import ParameterError
 from .monomial_forms import by_degree, pair_weights
-from .polar_forms import Ring, coefficient_arrays, peak_on_rings, radial_maps
+from .polar_forms import Ring, coefficient_arrays, peak_on_rings, radial_maps, unknown_slices
 from .strain_energy_forms import strain_energy, times
 
 #: the gradient's entries (i, J), i in (r, theta, z) = (0, 1, 2), J in (R, Theta, Z)
@@ -99,11 +99,9 @@ class WallForms:
                 raise ParameterError(f"harmonic {(field, j, l)} is sin(0): no field")
         T, Zg = angular_grid(m, K, angular_points)
         R, wR, layer, V, D, P = radial_maps(rings_)
-        slices, at = [], 0
-        for field, _j, _l in harmonics:
-            size = {3: P.shape[1], 4: V.shape[1] - 2}.get(field, V.shape[1])
-            slices.append(slice(at, at + size))
-            at += size
+        nV, nP = V.shape[1], P.shape[1]
+        sizes = {0: nV, 1: nV, 2: nV, 3: nP, 4: nV - 2}  # phi: interior nodes
+        slices, at = unknown_slices([h[0] for h in harmonics], sizes)
         blocks: dict = {k: [] for k in FIELDS}
         for (field, j, l), part in zip(harmonics, slices):
             for name, angular, radial in _derivatives(field, j * m, l * K, T, Zg, R, V, D, P):
