@@ -29,7 +29,7 @@ from ..outcomes import Kind
 from . import onset
 from .margins import Margins
 from .onset import CREASE_FIRST, gap_to_crease
-from .sensitivity import sensitivities
+from .sensitivity import sensitivities, sensitivity_json
 from .sequence import Interval, ModeSequence, check_vary, mode_sequence
 from .targets import Target, check_target
 
@@ -113,12 +113,7 @@ class Design:
                 "limited_by": self.limited_by or None,
                 "verdict": self.verdict or None,
             },
-            "sensitivity": {
-                "value": {p: num(d) for p, d in self.sensitivity.items()},
-                "next_value": {p: num(d) for p, d in self.next_sensitivity.items()},
-                "margin": {p: num(d) for p, d in self.margin_sensitivity.items()},
-                "crease_value": {p: num(d) for p, d in self.crease_sensitivity.items()},
-            },
+            "sensitivity": sensitivity_json(self),
         }
 
     def _crease_rows(self) -> list[dict]:

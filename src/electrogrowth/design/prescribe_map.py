@@ -37,7 +37,7 @@ from .onset import (
     margin_sensitivity,
 )
 from .prescribe import FOUND, NOT_FIRST, NOT_REACHED, REFINE_ROUNDS
-from .sensitivity import sensitivities
+from .sensitivity import sensitivities, sensitivity_json
 from .targets import Target, check_target
 
 RASTER = 7  # raster points per variable where the margin is first sampled
@@ -104,12 +104,7 @@ class MapDesign:
                 "limited_by": self.limited_by or None,
                 "verdict": self.verdict or None,
             },
-            "sensitivity": {
-                "value": {p: num(d) for p, d in self.sensitivity.items()},
-                "next_value": {p: num(d) for p, d in self.next_sensitivity.items()},
-                "margin": {p: num(d) for p, d in self.margin_sensitivity.items()},
-                "crease_value": {p: num(d) for p, d in self.crease_sensitivity.items()},
-            },
+            "sensitivity": sensitivity_json(self),
         }
 
 

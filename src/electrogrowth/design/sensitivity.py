@@ -118,3 +118,19 @@ def sensitivities(
         f_p = _derivative(lambda q, key=key: f(tube.at(key, q), value), p, step * max(1.0, abs(p)))
         out[key] = -f_p / f_v
     return out
+
+
+def sensitivity_json(outcome) -> dict:
+    """The four sensitivities of a prescription's best design (``sensitivity``,
+    ``next_sensitivity``, ``margin_sensitivity``, ``crease_sensitivity``: d/dp by parameter
+    key) as JSON, a derivative that could not be formed as null."""
+
+    def num(v):
+        return v if v is not None and math.isfinite(v) else None
+
+    fields = {"value": "sensitivity", "next_value": "next_sensitivity",
+              "margin": "margin_sensitivity", "crease_value": "crease_sensitivity"}  # fmt: skip
+    return {
+        name: {p: num(d) for p, d in getattr(outcome, attr).items()}
+        for name, attr in fields.items()
+    }
