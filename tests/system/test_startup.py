@@ -79,6 +79,7 @@ UNUSED_BY_ONE_VALUE = (
     "electrogrowth.bifurcation.surface",
     "electrogrowth.bifurcation.certify",
     "electrogrowth.basestate.layered",
+    "electrogrowth.basestate.layered_state",
     "electrogrowth.incremental.collocation",
     "electrogrowth.design",
     "electrogrowth.postbuckle",

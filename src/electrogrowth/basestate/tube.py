@@ -75,7 +75,7 @@ def solve_base_state(
     -------
     State
         A :class:`~electrogrowth.basestate.uniform.UniformState` for a uniform tube, else a
-        :class:`~electrogrowth.basestate.layered.LayeredState`: the same protocol.
+        :class:`~electrogrowth.basestate.layered_state.LayeredState`: the same protocol.
 
     Raises
     ------
@@ -88,7 +88,8 @@ def solve_base_state(
     """
     if tube.is_uniform:
         return solve_uniform(tube, rtol)
-    from .layered import LayeredState, solve_layered_state
+    from .layered import solve_layered_state
+    from .layered_state import LayeredState
 
     warm = near if isinstance(near, LayeredState) else None
     return solve_layered_state(tube, rtol=rtol, near=warm, guess=guess if warm else None)
