@@ -4,11 +4,11 @@ prescribed axial stretch or axial force (derivations in docs/derivation-layered.
 The entry points: :func:`solve_layered_state`, :func:`layered_threshold` and the response
 curves :func:`voltage_response`, :func:`pressure_response`. One state of the wall (kinematics,
 the equilibrium (*) T = P_i - P_o, the Gauss-Legendre integrals) is in :mod:`.plies`; the
-loading branches from the unloaded state and their thresholds are in :mod:`.branches`. A load
-beyond its branch's threshold raises BaseStateError. The solved state, :class:`LayeredState`
-(re-exported here), is in :mod:`.layered_state`: it is re-integrated there by an independent
-Chebyshev quadrature per layer, and solved again with more nodes when that disagrees (its
-``quadrature_error``).
+loading branches are in :mod:`.branches`, followed from the unloaded state to their
+thresholds in :mod:`.thresholds`. A load beyond its branch's threshold raises BaseStateError.
+The solved state, :class:`LayeredState` (re-exported here), is in :mod:`.layered_state`: it is
+re-integrated there by an independent Chebyshev quadrature per layer, and solved again with
+more nodes when that disagrees (its ``quadrature_error``).
 """
 
 from __future__ import annotations
@@ -20,9 +20,10 @@ import numpy as np
 
 from ..errors import BaseStateError, ConvergenceError, ParameterError
 from ..model.layers import Tube
-from .branches import Branch, Threshold, clean, prepare, solve_on, threshold
+from .branches import Branch, clean
 from .layered_state import LayeredState
 from .plies import ORDERS
+from .thresholds import Threshold, prepare, solve_on, threshold
 from .warm import continued
 
 __all__ = [

@@ -66,7 +66,7 @@ class LayeredState:
 
     @property
     def threshold_kind(self) -> str:
-        """limit point, asymptote, locking or none (basestate/branches.py Threshold)."""
+        """limit point, asymptote, locking or none (basestate/thresholds.py Threshold)."""
         return self._prep.voltage.kind
 
     @property
