@@ -75,6 +75,8 @@ UNUSED_BY_ONE_VALUE = (
     "electrogrowth.bifurcation.crease",
     "electrogrowth.bifurcation.verdict",
     "electrogrowth.bifurcation.scan",
+    "electrogrowth.bifurcation.scan_grid",
+    "electrogrowth.bifurcation.scan_record",
     "electrogrowth.bifurcation.curves",
     "electrogrowth.bifurcation.surface",
     "electrogrowth.bifurcation.certify",
