@@ -49,7 +49,8 @@ import numpy as np
 from electrogrowth import Tube
 from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.bifurcation.critical import critical_value
-from electrogrowth.bifurcation.scan import ScanOptions, scan_grid, scan_modes
+from electrogrowth.bifurcation.scan import ScanOptions, scan_modes
+from electrogrowth.bifurcation.scan_grid import scan_grid
 from electrogrowth.bifurcation.surface import short_wave_limit
 from electrogrowth.incremental import targets as targets_module
 from electrogrowth.incremental.targets import collocation_targets

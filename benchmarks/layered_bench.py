@@ -29,7 +29,8 @@ import numpy as np
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.bifurcation.march import first_bifurcations, unloaded_signs
 from electrogrowth.bifurcation.problem import as_problem
-from electrogrowth.bifurcation.scan import scan_grid, scan_modes
+from electrogrowth.bifurcation.scan import scan_modes
+from electrogrowth.bifurcation.scan_grid import scan_grid
 from electrogrowth.incremental.accuracy import SCAN_SIGNS, SCAN_STABLE_SIGNS
 from electrogrowth.incremental.targets import (
     CollocationTarget,

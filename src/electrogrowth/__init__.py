@@ -21,12 +21,8 @@ __version__ = "0.1.0"
 # `import electrogrowth` (and with it `electrogrowth --help` and `--version`) does not pay
 # for numba, sympy and scipy until a computation needs them.
 _EXPORTS = {
-    ".basestate.layered": (
-        "LayeredState",
-        "layered_threshold",
-        "pressure_response",
-        "voltage_response",
-    ),
+    ".basestate.layered": ("layered_threshold", "pressure_response", "voltage_response"),
+    ".basestate.layered_state": ("LayeredState",),
     ".basestate.tube": ("solve_base_state", "threshold", "voltage_curve", "voltage_threshold"),
     ".basestate.uniform": ("UniformState",),
     ".basestate": ("BaseState",),
@@ -37,7 +33,8 @@ _EXPORTS = {
     ".bifurcation.koiter": ("FilmOnHalfSpace", "KoiterResult", "koiter_coefficient"),
     ".bifurcation.curves": ("Curve", "critical_curve"),
     ".bifurcation.problem": ("Problem",),
-    ".bifurcation.scan": ("ScanOptions", "ScanResult", "scan_modes"),
+    ".bifurcation.scan": ("ScanOptions", "scan_modes"),
+    ".bifurcation.scan_record": ("ScanResult",),
     ".design.prescribe": ("Design", "prescribe"),
     ".design.mode_map": ("mode_map",),
     ".design.map_record": ("ModeMap",),

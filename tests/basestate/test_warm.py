@@ -1,7 +1,7 @@
 """A layered state continued from its neighbour (basestate/warm.py) is the walk's state.
 
 The independent route is the cold solve: the walk from the unloaded tube along the loading
-branches and Brent's method (basestate/branches.py). Along a march of each control, every
+branches and Brent's method (basestate/thresholds.py). Along a march of each control, every
 continued state must be the cold state to 1e-12, and the continuation must really be taken
 (not its fallback); past a threshold it must refuse, so the cold solve raises.
 """

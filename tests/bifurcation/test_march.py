@@ -91,7 +91,7 @@ def test_neighbours_line_through_two_distinct_points():
 
 
 def test_one_preparation_however_nodes_is_passed():
-    from electrogrowth.basestate.branches import prepare
+    from electrogrowth.basestate.thresholds import prepare
 
     key = Tube((Layer(1.1, shear_modulus=10.0), Layer(2.0)), length=3.0)
     assert prepare(key, 1e-12) is prepare(key, 1e-12, None)

@@ -18,7 +18,8 @@ import pytest
 from electrogrowth import Layer, ScanOptions, Tube, critical_value, scan_modes, solve_base_state
 from electrogrowth.bifurcation.march import ModeValue
 from electrogrowth.bifurcation.msearch import geometric_samples, refine_samples, search_m
-from electrogrowth.bifurcation.scan import EVERY_M, M_CAP, N_CAP, ScanResult
+from electrogrowth.bifurcation.scan import EVERY_M, M_CAP, N_CAP
+from electrogrowth.bifurcation.scan_record import ScanResult
 from electrogrowth.cli.report import edge_warning
 from electrogrowth.errors import ParameterError
 from electrogrowth.incremental.impedance import target_serial

@@ -9,14 +9,8 @@ import pytest
 from electrogrowth import ParameterError, Tube
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.bifurcation.march import unloaded_signs
-from electrogrowth.bifurcation.scan import (
-    M_CAP,
-    ScanOptions,
-    mode_grid,
-    scan_grid,
-    scan_modes,
-    stable_signs,
-)
+from electrogrowth.bifurcation.scan import M_CAP, ScanOptions, scan_modes
+from electrogrowth.bifurcation.scan_grid import mode_grid, scan_grid, stable_signs
 from electrogrowth.bifurcation.surface import short_wave_limit
 from electrogrowth.errors import NoBifurcationFound
 from electrogrowth.incremental.targets import impedance_targets

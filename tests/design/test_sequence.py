@@ -13,7 +13,8 @@ import pytest
 
 from electrogrowth import Layer, ScanOptions, Tube, critical_value, gent
 from electrogrowth.basestate.tube import solve_base_state
-from electrogrowth.bifurcation.scan import scan_grid, scan_modes, stable_signs
+from electrogrowth.bifurcation.scan import scan_modes
+from electrogrowth.bifurcation.scan_grid import scan_grid, stable_signs
 from electrogrowth.cli.app import main
 from electrogrowth.design import mode_sequence, prescribe
 from electrogrowth.design.sensitivity import key_value, sensitivities

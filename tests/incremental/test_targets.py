@@ -18,7 +18,8 @@ from scipy.special import iv, kv
 from electrogrowth import ParameterError, Tube
 from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.bifurcation.critical import critical_value
-from electrogrowth.bifurcation.scan import ScanOptions, scan_grid, scan_modes
+from electrogrowth.bifurcation.scan import ScanOptions, scan_modes
+from electrogrowth.bifurcation.scan_grid import scan_grid
 from electrogrowth.cli.app import main
 from electrogrowth.errors import NoBifurcationFound
 from electrogrowth.incremental.collocation import (

@@ -2,7 +2,8 @@
 ``threshold``), the paper's uniform tube in closed form (:mod:`.uniform`, with the voltage
 curve Vbar(lambda_i) and its threshold in :mod:`.voltage`, package-internal), and a layered
 tube with anisotropic or graded growth, pressures and axial force, with its thresholds and
-response curves (:mod:`.layered`). Both states follow one protocol, ``_types.State``.
+response curves (:mod:`.layered`) and its solved state (:mod:`.layered_state`). Both states
+follow one protocol, ``_types.State``.
 
 May import ``model`` and ``errors``.
 """
@@ -21,23 +22,23 @@ BaseState = UniformState
 _MODULE_OF = _lazy.module_of(
     {
         ".layered": (
-            "LayeredState",
             "layered_threshold",
             "pressure_response",
             "solve_layered_state",
             "voltage_response",
-        )
+        ),
+        ".layered_state": ("LayeredState",),
     }
 )
 
 if TYPE_CHECKING:  # the names as the type checker reads them
     from .layered import (
-        LayeredState,
         layered_threshold,
         pressure_response,
         solve_layered_state,
         voltage_response,
     )
+    from .layered_state import LayeredState
 
 
 def __getattr__(name: str):

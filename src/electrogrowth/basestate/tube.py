@@ -16,7 +16,7 @@ import numpy as np
 from .._types import State
 from ..errors import BaseStateError, ParameterError
 from ..model.layers import Tube
-from .branches import Threshold
+from .thresholds import Threshold
 from .uniform import solve_uniform
 from .voltage import UniformWall, nh_asymptote, nh_voltage, threshold_info
 
@@ -75,7 +75,7 @@ def solve_base_state(
     -------
     State
         A :class:`~electrogrowth.basestate.uniform.UniformState` for a uniform tube, else a
-        :class:`~electrogrowth.basestate.layered.LayeredState`: the same protocol.
+        :class:`~electrogrowth.basestate.layered_state.LayeredState`: the same protocol.
 
     Raises
     ------
@@ -88,7 +88,8 @@ def solve_base_state(
     """
     if tube.is_uniform:
         return solve_uniform(tube, rtol)
-    from .layered import LayeredState, solve_layered_state
+    from .layered import solve_layered_state
+    from .layered_state import LayeredState
 
     warm = near if isinstance(near, LayeredState) else None
     return solve_layered_state(tube, rtol=rtol, near=warm, guess=guess if warm else None)
@@ -97,7 +98,7 @@ def solve_base_state(
 def threshold(tube: Tube, control: str = "voltage", *, rtol: float = 1e-12) -> Threshold:
     """Where the axisymmetric branch of ``control`` ("voltage": Vbar at the tube's pressures;
     "pressure": the inner pressure P_i) is lost, followed from its start (see
-    :class:`~electrogrowth.basestate.branches.Threshold`).
+    :class:`~electrogrowth.basestate.thresholds.Threshold`).
 
     >>> t = threshold(Tube.uniform(outer_radius=2.0, growth=1.1))
     >>> round(t.value, 6), t.kind

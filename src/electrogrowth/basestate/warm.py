@@ -42,8 +42,9 @@ import math
 import numpy as np
 
 from ..model.layers import Tube
-from .branches import Branch, prepare
+from .branches import Branch
 from .plies import Wall
+from .thresholds import prepare
 
 #: Newton iterations before the warm start gives up
 MAX_ITER = 12

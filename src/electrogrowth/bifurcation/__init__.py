@@ -2,8 +2,9 @@
 tube to the first sign change of the targets (:mod:`.march`), one mode's critical value
 (:mod:`.critical`) of a :class:`~.problem.Problem` (tube, control, side, accuracy, scan
 options; its targets and march functions are named objects, :mod:`.along`), the scan over
-all modes (:mod:`.scan`), critical curves with located mode switches (:mod:`.curves`) and
-the exact short-wave limit (:mod:`.surface`, its worst wave direction at a state in
+all modes (:mod:`.scan`; the modes of its batch in :mod:`.scan_grid`, its result in
+:mod:`.scan_record`), critical curves with located mode switches (:mod:`.curves`) and the
+exact short-wave limit (:mod:`.surface`, its worst wave direction at a state in
 :mod:`.directions`), the crease competitor (:mod:`.crease`) and the verdict of what comes
 first (:mod:`.verdict`).
 
@@ -21,7 +22,8 @@ _EXPORTS = {
     ".critical": ("CriticalPoint", "critical_value", "stable_sign"),
     ".curves": ("Curve", "critical_curve"),
     ".problem": ("Problem",),
-    ".scan": ("ScanOptions", "ScanResult", "scan_modes"),
+    ".scan": ("ScanOptions", "scan_modes"),
+    ".scan_record": ("ScanResult",),
     ".verdict": ("Verdict",),
 }
 _MODULE_OF = _lazy.module_of(_EXPORTS)
@@ -31,7 +33,8 @@ if TYPE_CHECKING:  # the names as the type checker reads them
     from .critical import CriticalPoint, critical_value, stable_sign
     from .curves import Curve, critical_curve
     from .problem import Problem
-    from .scan import ScanOptions, ScanResult, scan_modes
+    from .scan import ScanOptions, scan_modes
+    from .scan_record import ScanResult
     from .verdict import Verdict
 
 

@@ -29,7 +29,7 @@ from ..outcomes import Kind
 from .critical import critical_value
 from .march import control_path
 from .problem import Problem
-from .scan import scan_grid
+from .scan_grid import scan_grid
 from .surface import short_wave_limit
 
 SURFACE_RTOL = 1e-14  # the half-space value is recomputed at this tolerance

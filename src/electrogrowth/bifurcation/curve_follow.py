@@ -27,7 +27,8 @@ from ..model.layers import Tube
 from ..outcomes import NO_MODE, Kind
 from .curve_record import CurvePoint, _accuracy, _failed_point, _scan_point
 from .directions import past_surface
-from .scan import ScanOptions, scan_grid, stable_signs
+from .scan import ScanOptions
+from .scan_grid import scan_grid, stable_signs
 
 CHECK_EVERY = 8  # when following modes, a full scan at least every this many points
 

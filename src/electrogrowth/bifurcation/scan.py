@@ -4,7 +4,9 @@ The modes of every family (incremental.targets.Family) are in one batch: the pap
 wrinkles (m, n), n >= 1 (axisymmetric at m = 0, the torsion excluded); the prismatic
 modes (m, 0), m >= 2, plane-strain wrinkles (ScanOptions.prismatic); the torsional modes
 (0, n), u_th = U(r) cos kz (ScanOptions.torsional). A row of the batch is (m, n, family
-code); the kernel keeps each family's own block of the Stroh system.
+code); the kernel keeps each family's own block of the Stroh system. The batch's rows and
+their signs on the unloaded tube are in :mod:`.scan_grid`; the result, :class:`ScanResult`
+(re-exported here), in :mod:`.scan_record`.
 
 The scan is organised around the batch kernel. The base state does not depend on the
 mode, so the march (march.py) evaluates every mode at once on one base state per step
@@ -28,27 +30,22 @@ with the face and the wave direction) and the best finite mode is the first runn
 from __future__ import annotations
 
 import dataclasses
-import functools
-
-import numpy as np
 
 from ..errors import NoBifurcationFound
-from ..incremental.accuracy import SCAN_SIGNS, SCAN_STABLE_SIGNS, Accuracy
+from ..incremental.accuracy import SCAN_SIGNS, Accuracy
 from ..incremental.targets import Family, ImpedanceTarget
-from ..labelled import scan_dataset
 from ..model.layers import Tube
 from ..outcomes import NO_MODE, Kind
-from ..summary import scan_html
 from .critical import CriticalPoint, critical_value, no_bifurcation_remedy
 from .directions import past_surface
-from .march import SIGN_TUBE, ModeValue, first_bifurcations, unloaded_signs
+from .march import ModeValue, first_bifurcations
 from .msearch import search_m
 from .options import EVERY_M, M_CAP, N_CAP, ScanOptions
 from .options import TOP_MAX as TOP_MAX  # re-exported: the CLI checks --top against it
 from .problem import Problem, as_problem
+from .scan_grid import scan_grid, stable_signs
+from .scan_record import ScanResult
 from .surface import short_wave_limit
-from .verdict import Verdict, verdict_of
-from .verdict import record as verdict_record
 
 # widen a range mode by mode at most this often (m up to EVERY_M, n up to N_CAP); an m
 # optimum still on its edge is then searched for up to M_CAP (msearch.py)
@@ -69,70 +66,6 @@ def _surface_point(limit, side) -> CriticalPoint:
         face=limit.face,
         psi=limit.psi,
     )
-
-
-@dataclasses.dataclass(frozen=True)
-class ScanResult:
-    """Result of :func:`scan_modes`: the critical point and the next modes after it.
-
-    ``critical`` is the first linear instability (a wrinkle, the short-wave limit or the
-    threshold); ``verdict`` (computed when first read) what comes first of it and a crease
-    of a free face (bifurcation/crease.py), with the runner-up of each kind. ``as_dict``
-    (the JSON of ``electrogrowth critical``) gives the verdict's kind and value at the top.
-    """
-
-    critical: CriticalPoint
-    runners_up: tuple[ModeValue, ...]
-    m_range: tuple[int, int]
-    n_range: tuple[int, int]
-    surface_instability: bool = False  # the critical point is the short-wave limit
-    short_wave_limit: float | None = None  # the exact limit m, k -> inf, where computed
-    short_wave_error: float | None = None
-
-    @functools.cached_property
-    def verdict(self) -> Verdict:
-        """What comes first: the linear result, a crease or the threshold (verdict.py)."""
-        c, runners = self.critical, self.runners_up
-        finite = runners[0] if self.surface_instability and runners else None
-        swl = self.short_wave_limit
-        short = None if swl is None or self.surface_instability else (swl, self.short_wave_error)
-        return verdict_of(c, finite=finite, short_wave=short)
-
-    def as_dict(self) -> dict:
-        out = self.critical.as_dict()
-        out["runners_up"] = [dataclasses.asdict(r) for r in self.runners_up]
-        out["m_range"], out["n_range"] = list(self.m_range), list(self.n_range)
-        out["surface_instability"] = self.surface_instability
-        out["short_wave_limit"] = self.short_wave_limit
-        out["short_wave_error"] = self.short_wave_error
-        return verdict_record(out, self.verdict, self.critical)
-
-    def to_xarray(self):
-        """The critical point and the runners-up as an ``xarray.Dataset`` on dimension rank
-        (0 = critical), units and descriptions in attributes (labelled.py; needs xarray)."""
-        return scan_dataset(self)
-
-    def _repr_html_(self) -> str:
-        return scan_html(self)
-
-
-def mode_grid(m_range, n_range) -> np.ndarray:
-    """All (m, n) pairs, rows, as floats (the paper's ansatz: the wrinkle family)."""
-    m, n = np.meshgrid(
-        np.arange(m_range[0], m_range[1] + 1), np.arange(n_range[0], n_range[1] + 1), indexing="ij"
-    )
-    return np.stack([m.ravel(), n.ravel()], axis=1).astype(float)
-
-
-def family_rows(m_values, n_values, prismatic: bool, torsional: bool) -> np.ndarray:
-    """Rows (m, n, family code) of the prismatic modes (m, 0), m >= 2 of ``m_values``, and
-    the torsional modes (0, n), n of ``n_values`` (when 0 is among ``m_values``)."""
-    rows = []
-    if prismatic:
-        rows += [(m, 0, Family.PRISMATIC.code) for m in m_values if m >= 2]
-    if torsional and 0 in m_values:
-        rows += [(0, n, Family.TORSIONAL.code) for n in n_values]
-    return np.array(rows, float).reshape(-1, 3)
 
 
 def scan_modes(
@@ -289,37 +222,6 @@ def _searched(params, solve_for, side, result: ScanResult, options: ScanOptions,
     return ScanResult(crit, tuple(runners), m_range, result.n_range), at_top
 
 
-def scan_grid(
-    m_range, n_range, probes: bool, families: tuple[bool, bool] = (False, False)
-) -> np.ndarray:
-    """Rows (m, n, family code): the (m, n) rectangle of wrinkles, the prismatic and
-    torsional rows of the ranges (``families`` = (prismatic, torsional), see
-    :func:`family_rows`), plus a few short waves beyond them when ``probes``.
-
-    The critical value need not be monotone in m or n: at Rbar_o = 1.4, Vbar = 0.4 in
-    extension it rises from m = 0 to m = 12 and then falls towards an inner-face short
-    wave as m grows. Probes at 2 and 4 times the range catch such optima (for the
-    prismatic and torsional families too).
-    """
-    (m0, m1), (n0, n1) = m_range, n_range
-    wrinkle = mode_grid(m_range, n_range)
-    grid = [
-        np.column_stack([wrinkle, np.full(len(wrinkle), Family.WRINKLE.code)]),
-        family_rows(range(m0, m1 + 1), range(n0, n1 + 1), *families),
-    ]
-    if probes:
-        ms = sorted({min(2 * m1 + 1, M_CAP), min(4 * m1 + 3, M_CAP)} - set(range(m0, m1 + 1)))
-        ns = sorted({min(2 * n1, N_CAP), min(4 * n1, N_CAP)} - set(range(n0, n1 + 1)))
-        extra = [(m, n, Family.WRINKLE.code) for m in ms for n in (n0, n0 + 1)]
-        extra += [(m, n, Family.WRINKLE.code) for n in ns for m in (m0, m0 + 1)]
-        grid += [
-            np.array(extra, float).reshape(-1, 3),
-            family_rows(ms, ns, *families),
-            family_rows([0] if m0 == 0 else [], ns, False, families[1]),
-        ]
-    return np.vstack(grid)
-
-
 def _with_short_waves(
     params, solve_for, side, result: ScanResult, top: int, rtol: float, at_cap: bool, limit=None
 ) -> ScanResult:
@@ -395,16 +297,3 @@ def _finished(params, solve_for, side, rtol, best: ModeValue) -> CriticalPoint:
         rtol=rtol,
         bracket=(best.value - w, best.value + w),
     )
-
-
-@functools.lru_cache(maxsize=64)
-def stable_signs(m_range, n_range, probes, families) -> np.ndarray:
-    """Signs of the kernel targets of :func:`scan_grid` on the unloaded tube, shared by
-    every scan, curve and sweep of any tube (one layer or layered, any energy, radius and
-    length): the unloaded incremental problem of a stress-free tube is strongly elliptic
-    with no non-trivial solution, so no target vanishes along a path of unloaded tubes
-    joining two of them and none changes sign (tests/bifurcation/test_scan.py checks it
-    across radii, lengths, energies and layered tubes)."""
-    modes = scan_grid(m_range, n_range, probes, families)
-    targets = ImpedanceTarget(SCAN_STABLE_SIGNS)
-    return unloaded_signs(SIGN_TUBE, modes, targets)

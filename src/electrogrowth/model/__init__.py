@@ -1,9 +1,9 @@
 """What a tube is: one type, :class:`Tube` (:mod:`.layers`: a stack of bonded layers and its
-loads; ``Tube.uniform`` the paper's tube), its layers (:mod:`.layer`), the keys and the
-controls a computation may vary (:mod:`.keys`, :mod:`.controls`), the TOML tube file
-(:mod:`.tube_file`), the supported box (:mod:`.params`) and the energy (:mod:`.materials`:
-the invariants, stresses, field and the 23 updated moduli of any energy
-Omega(I1, I2, I4, I5, I6)).
+loads; ``Tube.uniform`` the paper's tube; its checks in :mod:`.tube_checks`), its layers
+(:mod:`.layer`), the keys and the controls a computation may vary (:mod:`.keys`,
+:mod:`.controls`), the TOML tube file (:mod:`.tube_file`), the supported box (:mod:`.params`)
+and the energy (:mod:`.materials`: the invariants, stresses, field and the 23 updated moduli
+of any energy Omega(I1, I2, I4, I5, I6)).
 
 Physics only, pure functions and frozen dataclasses. The bottom of the ladder: imports
 nothing of the package but ``errors``.

@@ -8,6 +8,9 @@ faces; follower pressures P_i on the inner face (P_i > 0 pushes it outward) and 
 outer face (P_o > 0 pushes it inward); and either the total axial stretch lambda_z (growth
 included) or the axial force at the ends, besides the pressure on closed ends, in which case
 lambda_z is solved for. Derivations: docs/derivation-layered.md.
+
+A tube checks itself when built: its fields, the supported box and a control named for it
+are checked in :mod:`.tube_checks`.
 """
 
 from __future__ import annotations
@@ -16,14 +19,13 @@ import dataclasses
 import functools
 import warnings
 
-import numpy as np
-
 from ..errors import ParameterError
 from .controls import KINDS, Control, parse_control
 from .keys import KEYS_TEXT, key_value, with_key
-from .layer import Growth, Layer, LinearGrowth, _number
+from .layer import Growth, Layer, LinearGrowth
 from .materials import Material, neo_hookean
-from .params import SUPPORTED, SUPPORTED_WHY, check_uniform
+from .params import check_uniform
+from .tube_checks import check_supported, checked_control, checked_fields
 
 __all__ = [
     "Growth",
@@ -87,72 +89,10 @@ class Tube:
     closed_ends: bool = False
 
     def __post_init__(self):
-        fix = lambda f, v: object.__setattr__(self, f, v)  # noqa: E731
-        layers = self.layers
-        if isinstance(layers, Layer):
-            layers = (layers,)
-        if not isinstance(layers, (list, tuple)) or not layers:
-            raise ParameterError(f"layers = {layers!r} is invalid; give at least one Layer")
-        inner = 1.0
-        for k, layer in enumerate(layers):
-            if not isinstance(layer, Layer):  # named layers[K], K = 1 innermost, as in Tube.at
-                raise ParameterError(f"layers[{k + 1}] = {layer!r} is not a Layer")
-            if not layer.outer_radius > inner:
-                raise ParameterError(
-                    f"layers[{k + 1}].outer_radius = {layer.outer_radius:g} is out of range;"
-                    f" valid range: > {inner:g}, the layer's inner radius (layers are listed"
-                    " from R = 1 outward, radii increasing; layers[1] is the innermost)"
-                )
-            if layer.graded:
-                layer.growth_at(np.linspace(inner, layer.outer_radius, 17))
-            inner = layer.outer_radius
-        fix("layers", tuple(layers))
-        fix("length", _number("length", self.length, "0 < L < inf", lambda v: v > 0))
-        if self.axial_force is None:
-            stretch = 1.0 if self.stretch is None else self.stretch
-            fix("stretch", _number("stretch", stretch, "0 < lambda_z < inf", lambda v: v > 0))
-        elif self.stretch is not None:
-            raise ParameterError(
-                f"stretch = {self.stretch!r} and axial_force = {self.axial_force!r} are both"
-                " given; prescribe one of them"
-            )
-        else:
-            fix("axial_force", _number("axial_force", self.axial_force, "finite", lambda v: True))
-        if not isinstance(self.closed_ends, bool):
-            raise ParameterError(f"closed_ends = {self.closed_ends!r} is not true or false")
-        fix("voltage", _number("voltage", self.voltage, "0 <= Vbar < threshold", lambda v: v >= 0))
-        for f in ("inner_pressure", "outer_pressure"):
-            fix(f, _number(f, getattr(self, f), "finite (units mu)", lambda v: True))
-        self._check_supported()
-
-    def _check_supported(self) -> None:
-        """The box in which every solver is supported (params.SUPPORTED), in the paper's
-        symbols for the paper's tube, per layer otherwise."""
-        if self.is_uniform:
-            check_uniform(self.outer_radius, self.length, self.growth, self.stretch, self.voltage)
-            return
-        ro_max, l_lo, l_hi, _, _, e_lo, e_hi = SUPPORTED
-        checks = [
-            ("outer_radius", self.outer_radius, 1.0, ro_max),
-            ("length", self.length, l_lo, l_hi),
-        ]
-        if self.stretch is not None:
-            checks += [
-                (
-                    f"layers[{k}]: elastic axial stretch lambda_z / g_z",
-                    self.stretch / la.growth[2],
-                    e_lo,
-                    e_hi,
-                )
-                for k, la in enumerate(self.layers, 1)
-                if not la.graded
-            ]
-        for name, value, lo, hi in checks:
-            if not lo <= value <= hi:
-                raise ParameterError(
-                    f"{name} = {value:.6g} is outside the supported range {lo:g} to {hi:g}:"
-                    f" {SUPPORTED_WHY}"
-                )
+        # checked and normalised (model/tube_checks.py), then set on the frozen instance
+        for name, value in checked_fields(self).items():
+            object.__setattr__(self, name, value)
+        check_supported(self)
 
     @classmethod
     def uniform(
@@ -251,38 +191,7 @@ class Tube:
         """The Control named by ``solve_for`` (model/controls.py), checked against this tube:
         the layer exists (and is named when there are several), its growth is not graded,
         and the stretch or the force is the prescribed one."""
-        c = parse_control(solve_for)
-        n = len(self.layers)
-        if c.kind == "growth":
-            if c.layer is None and n > 1:
-                raise ParameterError(
-                    f"solve_for = growth needs a layer for a tube of {n} layers; name one of"
-                    f" 1..{n} (--layer K, or growth[K])"
-                )
-            layer = 1 if c.layer is None else c.layer
-            if not 1 <= layer <= n:
-                raise ParameterError(
-                    f"layer = {layer} does not exist; this tube has layers 1..{n} (1 innermost)"
-                )
-            if self.layers[layer - 1].graded:
-                raise ParameterError(
-                    f"layer {layer} has graded growth, which is not a single control"
-                    " parameter; give it constant growth to solve for it"
-                )
-            return Control("growth", layer if n > 1 or c.layer else None, c.components)
-        if c.kind in ("stretch", "force") and self.control != c.kind:
-            remedy = {
-                "force": "prescribe an axial force (axial_force in the tube file,"
-                " --axial-force F) to solve for it",
-                "stretch": "prescribe the stretch instead (stretch in the tube file,"
-                " --stretch) to solve for it",
-            }[c.kind]
-            have = "an axial force" if self.control == "force" else "the axial stretch"
-            raise ParameterError(
-                f"solve_for = {c.kind} is not a control of this tube, which prescribes"
-                f" {have}; {remedy}"
-            )
-        return c
+        return checked_control(self, solve_for)
 
     def at(self, name, value: float) -> Tube:
         """This tube with ``name`` set to ``value``: a control (model/controls.py: growth[K],

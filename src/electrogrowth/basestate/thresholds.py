@@ -1,0 +1,279 @@
+"""Following a loading branch of a layered tube from its start, and where it is lost
+(docs/derivation-layered.md; the branches' states at given r_i: :mod:`.branches`).
+
+A branch is walked in r_i from its start on a geometric grid (``BRANCH_STEPS``) and its
+threshold (:class:`Threshold`) is where it is lost: a limit point (first maximum of the
+load, located on a Chebyshev interpolant), an asymptote (Richardson extrapolation of the
+load as lambda_i -> inf), locking (the energy ends, located by bisection) or none. A load is
+solved for on the walked branch by Brent's method in its bracketing cell
+(:func:`solve_on`). A tube is prepared once (:func:`prepare`, cached): its unloaded state
+(V = 0, P_i = P_o), the pressure stage to its P_i at V = 0, and the voltage branch from
+there, whose threshold is walked when first asked for. A load beyond the branch's threshold
+raises BaseStateError.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import math
+
+import numpy as np
+from numpy.polynomial import chebyshev as cheb
+
+from ..continuation.events import BRANCH, LOCK, bisect, brent, reached, turned
+from ..continuation.path import GeometricGrid
+from ..errors import BaseStateError, ConvergenceError
+from ..model.layers import Tube
+from .branches import Branch, clean
+from .plies import Ply, Wall, choose_nodes, numeric_energy, start_guess
+
+#: branch scans: r_start 1.08^k up to 1e3 r_start, eight points evaluated at a time
+BRANCH_STEPS = GeometricGrid(ratio=1.08, span=1e3, batch=8)
+
+
+# -- following a branch, its threshold ----------------------------------------------------------
+
+
+@dataclasses.dataclass(frozen=True)
+class Threshold:
+    """Where the axisymmetric branch from the unloaded state is lost.
+
+    control: "voltage" (value in Vbar) or "pressure" (value = P_i); kind: "limit point" (first
+    maximum of the load along the branch, a snap-through), "asymptote" (the load tends to
+    ``value`` as lambda_i -> inf), "locking" (the energy ends at lambda_i, the load unbounded
+    before it, value = inf) or "none" (the load rises without bound, value = inf); lambda_i and
+    stretch (lambda_z) at the threshold (inf / the last scanned lambda_z for an asymptote).
+    """
+
+    control: str
+    value: float
+    kind: str
+    lambda_i: float
+    stretch: float
+    error: float = 0.0
+    # the scanned branch from its start (r_i, lambda_z, analytic load): brackets for solves
+    grid: tuple = dataclasses.field(default=(), repr=False, compare=False)
+
+
+def _walk(branch: Branch, x0: float, lz0: float, *, sign: int = 1, target=None):
+    """Follow the branch from r_i = x0 on x0 1.08^(sign k) up to a factor 1e3; returns arrays
+    (r_i, lambda_z, analytic load) from x0 and why it stopped: "target" (sign (load - target)
+    >= 0), "peak" (the load turned back), "lock" (an energy ended: last entry NaN) or "end"."""
+    first = clean(branch.at([x0], lz0))
+    xs, lzs, loads = [x0], [lz0], [float(branch.value(first)[0])]
+    for x in BRANCH_STEPS.batches(x0, sign):
+        pt = clean(branch.at(x, lzs[-1]))
+        for xj, lj, vj in zip(x, pt["stretch"], branch.value(pt)):
+            xs.append(float(xj)), lzs.append(float(lj)), loads.append(float(vj))
+            if not np.isfinite(vj):
+                if all(numeric_energy(p.layer.material) is None for p in branch.wall.plies):
+                    raise ConvergenceError(
+                        f"no lambda_z balances the axial force at lambda_i = {xj:.12g}"
+                    )
+                return np.array(xs), np.array(lzs), np.array(loads), "lock"
+            if target is not None and reached(vj, target, sign):
+                return np.array(xs), np.array(lzs), np.array(loads), "target"
+            if turned(loads[-2], vj, sign):
+                return np.array(xs), np.array(lzs), np.array(loads), "peak"
+    return np.array(xs), np.array(lzs), np.array(loads), "end"
+
+
+def _guess(xs, lzs):
+    """lambda_z guesses at new r_i by interpolation of a scanned branch (log-linear)."""
+    good = np.isfinite(lzs)
+    order = np.argsort(xs[good])
+    return lambda x: np.interp(np.log(x), np.log(xs[good][order]), lzs[good][order])
+
+
+def threshold(
+    branch: Branch, x0: float, lz0: float, control: str, *, sign: int = 1, target=None
+) -> Threshold:
+    """Scan the branch from its start (r_i rising for sign = 1, falling for -1); classify and
+    locate where it is lost. With a target (analytic load) the scan stops once it is crossed:
+    kind "" (not lost before it), value nan, the grid brackets the target."""
+    xs, lzs, loads, stop = _walk(branch, x0, lz0, sign=sign, target=target)
+    guess = _guess(xs, lzs)
+    out = lambda v: math.sqrt(v) if control == "voltage" else v  # noqa: E731
+    if stop == "target":
+        return Threshold(control, math.nan, "", math.nan, math.nan, 0.0, (xs, lzs, loads))
+    if stop == "peak":
+        j = len(xs) - 2  # the extreme load scanned
+        a, b = sorted((xs[max(j - 1, 0)], xs[j + 1]))
+
+        def f(x):
+            return sign * branch.value(clean(branch.at(x, guess(x))))
+
+        poly = cheb.Chebyshev.interpolate(f, 24, domain=[a, b])
+        crit = [x.real for x in poly.deriv().roots() if abs(x.imag) < 1e-9 and a <= x.real <= b]
+        if not crit:
+            raise ConvergenceError(
+                f"limit point of the {control} not located in [{a:.6g}, {b:.6g}]"
+            )
+        top = max(crit, key=poly)
+        pt = clean(branch.at([top], guess(top)))
+        value = float(branch.value(pt)[0])
+        keep = sign * (top - xs) > 0
+        grid = (
+            np.append(xs[keep], top),
+            np.append(lzs[keep], pt["stretch"][0]),
+            np.append(loads[keep], value),
+        )
+        return Threshold(
+            control,
+            out(value),
+            "limit point",
+            float(top),
+            float(pt["stretch"][0]),
+            abs(sign * float(poly(top)) - value),
+            grid,
+        )
+    if stop == "lock":
+
+        def finite(x):
+            return bool(np.isfinite(branch.value(clean(branch.at([x], guess(x))))[0]))
+
+        a, _ = bisect(finite, xs[-2], xs[-1], LOCK, near_bad=True)  # the energy's domain ends
+        grid = (xs[:-1], lzs[:-1], loads[:-1])
+        return Threshold(control, sign * math.inf, "locking", float(a), float(guess(a)), 0.0, grid)
+    grid = (xs, lzs, loads)
+    if sign < 0:
+        return Threshold(control, -math.inf, "none", 0.0, float(lzs[-1]), 0.0, grid)
+    # Richardson: load = L_inf + a x^p + ..., x = lambda_i^-2, the order p measured
+    far = x0 * 100.0 * 2.0 ** np.arange(5)
+    pt = clean(branch.at(far, guess(far[0])))
+    t = np.array([out(v) if np.isfinite(v) else np.nan for v in branch.value(pt)])
+    d = np.diff(t)
+    if not (np.all(np.isfinite(t)) and np.all(d > 0) and d[-2] > d[-1]):
+        return Threshold(control, math.inf, "none", math.inf, float(lzs[-1]), 0.0, grid)
+    p = math.log(d[-2] / d[-1], 4.0)
+    p = round(p) if abs(p - round(p)) < 0.05 else p
+    for j in range(3):
+        prev, t = t[-1], t[1:] + (t[1:] - t[:-1]) / (4.0 ** (p + j) - 1.0)
+    return Threshold(
+        control,
+        float(t[-1]),
+        "asymptote",
+        math.inf,
+        float(pt["stretch"][-1]),
+        abs(float(t[-1]) - prev),
+        grid,
+    )
+
+
+def solve_on(branch: Branch, grid, target: float, thr: Threshold | None, what: str):
+    """r_i, lambda_z on the scanned branch where the analytic load reaches target (brentq in
+    the bracketing cell; beyond the scan, a geometric tail towards the asymptote or lock)."""
+    xs, lzs, loads = grid
+    sign = 1 if target >= loads[0] else -1
+    k = np.flatnonzero(sign * (loads - target) >= 0)
+    if not k.size and thr is not None:
+        far = thr.lambda_i
+        tail = (
+            xs[-1] * 4.0 ** (sign * np.arange(1, 21))
+            if not 0 < far < math.inf
+            else far - (far - xs[-1]) * 4.0 ** -np.arange(1, 21)
+        )
+        pt = clean(branch.at(tail, lzs[-1]))
+        xs, lzs = np.append(xs[-1], tail), np.append(lzs[-1], pt["stretch"])
+        loads = np.append(loads[-1], branch.value(pt))
+        k = np.flatnonzero(sign * (loads - target) >= 0)
+    if not k.size:
+        if thr is not None and thr.kind == "locking":
+            raise BaseStateError(
+                f"{what} lies too close to the locking stretch lambda_i = {thr.lambda_i:.12g} of"
+                " this tube to be resolved (the load is unbounded only at the lock itself)"
+            )
+        raise BaseStateError(f"{what} is within rounding of the threshold of its branch")
+    a, b = xs[k[0] - 1], xs[k[0]]
+    guess = _guess(xs[k[0] - 1 : k[0] + 1], lzs[k[0] - 1 : k[0] + 1])
+
+    def f(x):
+        return float(branch.value(clean(branch.at([x], guess(x))))[0]) - target
+
+    x = brent(f, *sorted((a, b)), BRANCH, named=False)
+    return x, float(clean(branch.at([x], guess(x)))["stretch"][0])
+
+
+# -- preparation: the unloaded start, the pressure stage, the voltage branch -------------------
+
+
+def _start(wall: Wall) -> tuple[float, float]:
+    """The unloaded state (V = 0, P_i = P_o): the root of T(r_i) = 0, bracketed outward from
+    the guess, under force control with lambda_z balancing the axial force at each r_i."""
+    branch = Branch(wall, "pressure", vbar=0.0)
+    xg, lg = start_guess(wall)
+    P_o = wall.tube.outer_pressure
+
+    def f(x):
+        pt = clean(branch.at([x], lg))
+        return float(pt["P_i"][0] - P_o), float(pt["stretch"][0])
+
+    f0, _ = f(xg)
+    if f0 == 0:
+        return xg, f(xg)[1]
+    step, last, f_last = 1.1, xg, f0
+    for _ in range(200):
+        nxt = last / step if f_last > 0 else last * step
+        fn, _ = f(nxt)
+        if not np.isfinite(fn):
+            break
+        if np.sign(fn) != np.sign(f_last):
+            x = brent(lambda x: f(x)[0], *sorted((last, nxt)), BRANCH, named=False)
+            return x, f(x)[1]
+        last, f_last = nxt, fn
+    raise BaseStateError("no unloaded state (V = 0, P_i = P_o) found for this tube")
+
+
+@dataclasses.dataclass(frozen=True)
+class _Prepared:
+    wall: Wall
+    start: tuple[float, float]  # unloaded (V = 0, P_i = P_o)
+    loaded: tuple[float, float]  # the tube's pressures at V = 0
+
+    @property
+    def branch(self) -> Branch:
+        """The voltage branch at the tube's pressures."""
+        tube = self.wall.tube
+        return Branch(self.wall, "voltage", dp=tube.inner_pressure - tube.outer_pressure)
+
+    @functools.cached_property
+    def voltage(self) -> Threshold:
+        """The threshold of the voltage branch from ``loaded`` (walked once, when asked)."""
+        return threshold(self.branch, *self.loaded, "voltage")
+
+    def voltage_to(self, vbar: float) -> Threshold:
+        """The voltage branch walked only as far as Vbar (kind "": reached first, the grid
+        brackets it), or the threshold met before it; the whole walk when it is known."""
+        if "voltage" in self.__dict__:
+            return self.voltage
+        return threshold(self.branch, *self.loaded, "voltage", target=vbar * vbar)
+
+
+def prepare(tube: Tube, rtol: float, nodes: int | None = None) -> _Prepared:
+    """Everything but the voltage (tube.voltage is 0 here): cached per tube, rtol and nodes
+    (one cache key however ``nodes`` is passed: a state at the voltage threshold then reads
+    the threshold the march's path walked instead of walking it again). The voltage
+    branch's threshold is walked when first asked for (``_Prepared.voltage``)."""
+    return _prepared(tube, rtol, nodes)
+
+
+@functools.lru_cache(maxsize=256)
+def _prepared(tube: Tube, rtol: float, nodes: int | None) -> _Prepared:
+    """:func:`prepare`, cached."""
+    plies = Ply.stack(tube)
+    wall = Wall.build(tube, nodes or choose_nodes(tube, rtol, plies), plies)
+    x0, lz0 = _start(wall)
+    dp = tube.inner_pressure - tube.outer_pressure
+    loaded = (x0, lz0)
+    if dp != 0:
+        branch = Branch(wall, "pressure", vbar=0.0)
+        target, sign = tube.inner_pressure, (1 if dp > 0 else -1)
+        thr = threshold(branch, x0, lz0, "pressure", sign=sign, target=target)
+        if thr.kind and not sign * (thr.value - target) > 0:
+            raise BaseStateError(
+                f"inner pressure P_i = {target:.12g} is at or beyond the pressure threshold"
+                f" P_i = {thr.value:.12g} ({thr.kind}) of this tube; no axisymmetric state"
+            )
+        loaded = solve_on(branch, thr.grid, target, thr if thr.kind else None, "P_i")
+    return _Prepared(wall, (x0, lz0), loaded)
