@@ -217,7 +217,12 @@ def _start(wall: Wall) -> tuple[float, float]:
         nxt = last / step if f_last > 0 else last * step
         fn, _ = f(nxt)
         if not np.isfinite(fn):
-            break
+            # past the edge of the states (a Gent layer's lock): the root may lie between
+            # the last state and that edge, in a window narrower than the step
+            if step - 1.0 < 1e-12:
+                break
+            step = math.sqrt(step)
+            continue
         if np.sign(fn) != np.sign(f_last):
             x = brent(lambda x: f(x)[0], *sorted((last, nxt)), BRANCH, named=False)
             return x, f(x)[1]
