@@ -126,13 +126,16 @@ def test_mooney_rivlin_in_plane_elastic_strain_is_neo_hookean(voltage):
     the neo-Hookean c_2 alone moves by 2.4e-9 over those points and the base states' rtol
     (1e-12, 1e-14), and its last digits depend on the states a process solved before (the
     march continues from them): 6.2e-11 at 24 points in one earlier run, 1.0e-9 in a fresh
-    process. Both cases are therefore tested to that floor, 3e-9 (under a voltage measured
-    1.1e-9)."""
+    process. Without voltage the identity is tested to that floor, 3e-9. Under the voltage
+    both states are solved numerically and the floor is higher: 1.1e-9 in one run, 5.1e-9
+    in another (6.7602536394 against 6.7602536052, after the base-state and bifurcation
+    suites), so 1e-8. A derivative from states solved alike (one start for the four) would
+    lower both floors; not built."""
     nh = _film_tube(HOOP, voltage=voltage)
     mr = _film_tube(HOOP, mooney_rivlin(0.3), voltage=voltage)
     a = tube_expansion(nh, 12, THETA, nodes=24).coefficient
     b = tube_expansion(mr, 12, THETA, nodes=24).coefficient
-    assert b == pytest.approx(a, rel=3e-9)
+    assert b == pytest.approx(a, rel=3e-9 if voltage == 0 else 1e-8)
 
 
 def test_mooney_rivlin_at_fixed_axial_stretch_is_a_stiffer_neo_hookean():
