@@ -43,3 +43,21 @@ def test_no_threshold_where_the_state_exists():
     # is wrong
     crit = critical_value(film_on_gent(1.0), 30, 0, "growth[1].theta")
     assert crit.kind != "threshold" or crit.value > 1.97
+
+
+@pytest.mark.parametrize(
+    ("g_z", "radii"),
+    [
+        # independent quadrature (as above); the film's I1 - 3 is at most 0.83 and 0.93 of jm = 1
+        (1.7, (1.1674290804458525, 1.2398147675643523, 2.5854672030158588)),
+        (1.8, (1.2637133769078053, 1.3347177600435713, 2.6322939613530494)),
+    ],
+)
+def test_gent_film_growing_axially_short_of_its_lock(g_z, radii):
+    # at g_z = 1.7 the unloaded-state search raised a bare ValueError from brentq ("The
+    # function value at x=1.0068... is NaN") through solve_base_state (on the command line:
+    # "internal error", exit 1); at 1.8 it said no unloaded state exists
+    tube = Tube((Layer(1.05, material=gent(1.0), growth=(1.0, 1.0, g_z)), Layer(2.5)))
+    state = solve_base_state(tube)
+    got = (state.r_i, state.interface_radii[0], state.r_o)
+    assert got == pytest.approx(radii, rel=1e-9)

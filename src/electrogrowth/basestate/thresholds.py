@@ -203,13 +203,20 @@ def _start(wall: Wall) -> tuple[float, float]:
     the guess, under force control with lambda_z balancing the axial force at each r_i."""
     branch = Branch(wall, "pressure", vbar=0.0)
     xg, lg = start_guess(wall)
-    P_o = wall.tube.outer_pressure
+    start, P_o = xg, wall.tube.outer_pressure
 
     def f(x):
         pt = clean(branch.at([x], lg))
         return float(pt["P_i"][0] - P_o), float(pt["stretch"][0])
 
     f0, _ = f(xg)
+    for j in range(1, 41):  # a guess past a Gent layer's lock: the nearest finite state
+        if np.isfinite(f0):
+            break
+        xg = start * 1.1 ** (j // 2 + 1) if j % 2 else start / 1.1 ** (j // 2)
+        f0, _ = f(xg)
+    if not np.isfinite(f0):
+        raise BaseStateError("no unloaded state (V = 0, P_i = P_o) found for this tube")
     if f0 == 0:
         return xg, f(xg)[1]
     step, last, f_last = 1.1, xg, f0
