@@ -7,28 +7,33 @@ before that, at Vbar = 0.146609015590: an independent solver (radial equilibrium
 ideal dielectric by quadrature, Dorfmann-Ogden incremental equations in principal-stretch
 moduli, shooting with Godunov orthonormalisation; it reproduces the paper's g_cr =
 1.26611156226 of Tube.uniform(1.4, voltage=0.4)) puts its root at 0.14660901559012715, and
-the package agrees to 1e-13 when given the bracket (0.12, 0.15). Without the bracket it
-raised ConvergenceError("base-state profile on [1.02, 3.6] not resolved by Chebyshev degree
-512"); scan_modes on this tube failed the same way.
+the package agrees to 1e-13 when given the bracket (0.12, 0.15).
+
+Found by probing: without the bracket the march stepped past the root (the mode's target,
+far from zero at the start, is sampled rarely) towards states next to the lock that no
+rule resolves, and the ConvergenceError ended it ("base-state profile on [1.02, 3.6] not
+resolved by Chebyshev degree 512"); scan_modes failed the same way. The march now takes its
+last look at the last state it can resolve (bisected back from the first it cannot).
 """
 
 import pytest
 
-from electrogrowth import Layer, Tube, critical_value, gent
-from electrogrowth.errors import ConvergenceError
+from electrogrowth import Layer, Tube, critical_value, gent, scan_modes
 
 FILM_ON_GENT = Tube((Layer(1.02), Layer(3.6, shear_modulus=0.01, material=gent(27.0))), length=3.6)
 
 
-@pytest.mark.xfail(
-    raises=ConvergenceError,
-    strict=True,
-    reason=(
-        "open: the march's path reaches the Gent lock, whose state it cannot resolve, and "
-        "the error ends it before the bifurcation at 0.1466 is located (found by probing)"
-    ),
-)
 def test_wrinkle_before_the_lock_is_found():
     crit = critical_value(FILM_ON_GENT, 11, 0, "voltage")
     assert crit.kind == "bifurcation"
     assert crit.value == pytest.approx(0.14660901559012715, rel=1e-9)
+
+
+def test_scan_before_the_lock_finds_the_first_wrinkle():
+    # the scan's first mode is its own critical value (collocation: 0.14412589737602, to
+    # 5e-10 by its estimate), below (11, 0)'s
+    crit = scan_modes(FILM_ON_GENT, "voltage").critical
+    assert (crit.m, crit.n, crit.kind) == (4, 0, "bifurcation")
+    assert crit.value == pytest.approx(critical_value(FILM_ON_GENT, 4, 0, "voltage").value)
+    assert crit.value == pytest.approx(0.1441258973760241, rel=1e-9)
+    assert crit.value < 0.14660901559012715

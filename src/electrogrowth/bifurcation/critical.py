@@ -190,6 +190,8 @@ def critical_value(
     problem = as_problem(params, solve_for, side=side, rtol=rtol)
     params, solve_for, side, rtol = problem.tube, problem.control, problem.side, problem.rtol
     point = _solve(params, m, n, solve_for, fam, side, method, rtol, bracket)
+    if point.kind == Kind.THRESHOLD:  # not an integration error: a tighter rtol cannot help
+        return threshold_status(point, rtol)
     tight = rtol
     while not _certified(point, rtol) and tight / REFINE >= RTOL_RANGE[0] * (1 - 1e-9):
         tight /= REFINE
@@ -207,9 +209,21 @@ def critical_value(
 
 def _certified(point: CriticalPoint, rtol: float) -> bool:
     """Is the error estimate of ``point`` within CERTIFIED rtol max(1, |value|)?"""
-    if point.kind != Kind.BIFURCATION:
-        return True
     return point.error_estimate <= CERTIFIED * rtol * max(1.0, abs(point.value))
+
+
+def threshold_status(point: CriticalPoint, rtol: float) -> CriticalPoint:
+    """A threshold as it is, or INACCURATE where the loss of the state is only bracketed:
+    the states just short of it (next to a Gent lock) are not resolved."""
+    if _certified(point, rtol):
+        return point
+    return dataclasses.replace(
+        point,
+        status=Status.INACCURATE,
+        message=f"the axisymmetric state is lost within +-{point.error_estimate:.1e} of this"
+        " value: the states just short of it (next to a locking stretch) are not resolved",
+        # no remedy: the states' own tolerance is fixed (1e-12), the profile's degree capped
+    )
 
 
 def _solve(params, m, n, solve_for, fam, side, method, rtol, bracket) -> CriticalPoint:
@@ -253,7 +267,7 @@ def _solve(params, m, n, solve_for, fam, side, method, rtol, bracket) -> Critica
                 int(m),
                 int(n),
                 Kind.THRESHOLD,
-                0.0,
+                res.threshold_error,
                 method,
                 side,
                 params.at(solve_for, res.threshold),

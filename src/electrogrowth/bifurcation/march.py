@@ -32,15 +32,24 @@ import numpy as np
 
 from ..basestate import tube as door
 from ..basestate.tube import solve_base_state
-from ..continuation.events import LATER, brent, crossed, dip_bracket, dipped, first_roots
+from ..continuation.events import (
+    EDGE,
+    LATER,
+    bisect,
+    brent,
+    crossed,
+    dip_bracket,
+    dipped,
+    first_roots,
+)
 from ..continuation.events import threshold_between as _lost_between
 from ..continuation.path import ControlPath, Stepper, StepPolicy
 from ..continuation.predict import EventWatch
-from ..errors import BaseStateError, NoBifurcationFound, ParameterError
+from ..errors import BaseStateError, ConvergenceError, NoBifurcationFound, ParameterError
 from ..incremental.targets import natural_family, row_family
 from ..model.controls import KINDS
 from ..model.layers import Tube
-from .along import Signed, Solves, TubeAt, VoltageMargin
+from .along import Signed, TubeAt, VoltageMargin
 from .along import voltage_threshold as _voltage_threshold
 
 #: the mode march's step control: 0.4 % of the scale doubling up to 5 %, not below 1e-4
@@ -86,6 +95,7 @@ def _mode_value(modes, i, value) -> ModeValue:
 class MarchResult:
     found: list  # ModeValue, in the order reached
     threshold: float | None  # where the axisymmetric state is lost, if reached first
+    threshold_error: float = 0.0  # its error estimate (unresolved states next to a lock)
 
 
 def control_path(tube: Tube, solve_for: str, side: str | None):
@@ -104,6 +114,11 @@ def unloaded_signs(params, modes: np.ndarray, targets: Targets) -> np.ndarray:
     """Signs of the targets on the unloaded tube (``params.reference()``: g = 1,
     lambda_z = 1, no voltage or pressure)."""
     return np.sign(targets(solve_base_state(params.reference()), modes))
+
+
+#: halvings of the gap back to the modes' last samples where states past the path's end
+#: are unresolvable: the last look lands within 2^-12 of that gap of the resolvable edge
+RETREAT_ROUNDS = 12
 
 
 def first_bifurcations(
@@ -152,34 +167,46 @@ def first_bifurcations(
 
     watch = EventWatch(x0, g0, sense, path.scale)
     step = Stepper(path, steps, state.lambda_i)
-    found, threshold = [], None
+    found, threshold, threshold_error, unresolved = [], None, 0.0, None
     while watch.alive.any():
-        done = step.at_end() or len(found) >= top
+        done = step.at_end() or len(found) >= top or unresolved is not None
         if not done:
             due = watch.next_due(step.x)
             x = step.propose(None if due is None else due + sense * LATE * path.scale)
             try:
-                state = at.state(x)
-            except BaseStateError:
-                threshold = _threshold_between(at, params, step.x, x)
-                step.lost(threshold)
+                try:
+                    state = at.state(x)
+                except BaseStateError:
+                    threshold, threshold_error, edge = _threshold_between(at, params, step.x, x)
+                    step.lost(edge)
+                    continue
+            except ConvergenceError as err:
+                # states past step.x cannot be resolved (next to a Gent lock): the modes
+                # that bifurcate before step.x are still found, exactly, by the last look
+                unresolved, threshold = err, None
                 continue
             if step.jumped(state.lambda_i):
                 continue
             done = step.film(state.lambda_i)  # the wall is a film: at the threshold
         if done:  # a last look at every mode not seen at step.x: nothing left behind
-            x = step.x
-            idx = np.nonzero(watch.alive & (watch.xa != x))[0]
+            idx = np.nonzero(watch.alive & (watch.xa != step.x))[0]
             if idx.size:
-                found += _advance(watch, idx, x, signed(x, idx), signed, signed_fine, top)
+                x, g = _last_look(signed, watch, idx, step.x, unresolved is not None)
+                found += _advance(watch, idx, x, g, signed, signed_fine, top)
             break
         idx = np.nonzero(watch.needs(x))[0]
         if idx.size:
-            g = sref[idx] * targets(state, modes[idx])
+            try:
+                g = sref[idx] * targets(state, modes[idx])
+            except ConvergenceError as err:  # the state solves, its tables do not
+                unresolved, threshold = err, None
+                continue
             found += _advance(watch, idx, x, g, signed, signed_fine, top)
         reach = watch.reach(steps.safety, steps.smallest * path.scale)
         step.accept(x, state.lambda_i, reach / path.scale)
     found.sort(key=lambda mv: sense * mv.value)
+    if not found and unresolved is not None:
+        raise unresolved
     if not found and threshold is None:
         thr = _voltage_threshold(params) if solve_for == "voltage" else math.inf
         if math.isfinite(thr):
@@ -188,7 +215,29 @@ def first_bifurcations(
             raise NoBifurcationFound(
                 f"no mode bifurcates for {solve_for} between {x0:g} and {step.end:g}"
             )
-    return MarchResult(found[:top], threshold)
+    return MarchResult(found[:top], threshold, threshold_error)
+
+
+def _last_look(signed: Signed, watch, idx, x: float, retreat: bool):
+    """(x, the signed targets of the modes ``idx`` at x). With ``retreat`` (states past the
+    path's last one were unresolvable, next to a lock) and targets that do not resolve at x
+    either, the x where they still do, bisected (RETREAT_ROUNDS) back towards the modes'
+    last samples: a mode that bifurcates before it is found exactly, one after is not."""
+    try:
+        return x, signed(x, idx)
+    except ConvergenceError:
+        if not retreat:
+            raise
+    last = watch.xa[idx]
+    good, bad = last[np.argmax(watch.sense * last)], x
+    g = watch.g[0, idx]  # at good, unless a bisection point resolves
+    for _ in range(RETREAT_ROUNDS):
+        mid = 0.5 * (good + bad)
+        try:
+            good, g = mid, signed(mid, idx)
+        except ConvergenceError:
+            bad = mid
+    return good, g
 
 
 def _advance(watch, idx, x, g, signed: Signed, signed_fine: Signed, need=None) -> list:
@@ -229,9 +278,32 @@ def _advance(watch, idx, x, g, signed: Signed, signed_fine: Signed, need=None) -
     return found
 
 
-def _threshold_between(at, params, x_ok, x_bad) -> float:
-    """Parameter value where the base state is lost between x_ok and x_bad: where the
-    voltage threshold falls to the applied voltage if that brackets it, else the edge of the
-    states that solve (whichever of the tube's loads reaches its threshold), bisected."""
-    margin = VoltageMargin(at, params.voltage) if params.voltage > 0 else None
-    return _lost_between(x_ok, x_bad, margin=margin, exists=Solves(at), tolerate=(ValueError,))
+def _threshold_between(at, params, x_ok, x_bad) -> tuple[float, float, float]:
+    """Where the base state is lost between x_ok and x_bad: (value, its error estimate, the
+    last x the march may step to). Where the voltage threshold falls to the applied voltage
+    if that brackets it, else the edge of the states that solve (whichever of the tube's
+    loads reaches its threshold), bisected. Next to a Gent lock the states short of the
+    loss may not resolve: the loss is then bracketed by the last resolved state and the
+    first lost one (unresolved states exist), and reported as their midpoint, +- half."""
+    if params.voltage > 0:
+        margin = VoltageMargin(at, params.voltage)
+        x = _lost_between(x_ok, x_bad, margin=margin, tolerate=(ValueError,))
+        if x is not None:
+            return x, 0.0, x
+    ok, bad = bisect(lambda x: _fate(at, x) == "solved", x_ok, x_bad, EDGE)
+    if _fate(at, bad) != "unresolved":
+        return ok, 0.0, ok
+    _, lost = bisect(lambda x: _fate(at, x) != "lost", bad, x_bad, EDGE)
+    return 0.5 * (ok + lost), 0.5 * abs(lost - ok), ok
+
+
+def _fate(at: TubeAt, x: float) -> str:
+    """The base state at x: "solved", "lost" (BaseStateError) or "unresolved" (it exists,
+    but its profile is not resolved: ConvergenceError)."""
+    try:
+        solve_base_state(at(x))  # from cold, as every bisection of a loss
+    except BaseStateError:
+        return "lost"
+    except ConvergenceError:
+        return "unresolved"
+    return "solved"

@@ -221,7 +221,7 @@ def _dedupe(coef, degree):
     return coef[first, : degs.max()] * (np.arange(degs.max()) < degs[:, None]), fmap
 
 
-def build_table(state, *, tol: float = 1e-15, max_nodes: int = 129) -> RadialTable:
+def build_table(state, *, tol: float = 1e-15, max_nodes: int = 1025) -> RadialTable:
     """Tabulate a base state (a UniformState or a LayeredState), segment by
     segment.
 
