@@ -70,7 +70,9 @@ class CriticalPoint(Outcome):
     NO_MODE unless the kind is BIFURCATION; ``as_dict`` gives null there. ``status`` is
     OK, or INACCURATE when the error estimate exceeds the accuracy asked even after
     refinement (module docstring): the value then has only the digits the estimate supports;
-    ``message`` then says by how much and ``remedy`` what to try. An
+    ``message`` then says by how much and ``remedy`` what to try. A threshold's estimate is
+    0, or half the bracket of the loss where the states just short of it are not resolved
+    (next to a Gent lock; then INACCURATE without refinement). An
     :class:`~electrogrowth.outcomes.Outcome` (``unwrap``, ``outcome_dict``).
 
     ``verdict`` (computed when first read: it marches the crease criterion along the same
