@@ -225,18 +225,20 @@ def _last_look(signed: Signed, watch, idx, x: float, retreat: bool):
     last samples: a mode that bifurcates before it is found exactly, one after is not."""
     try:
         return x, signed(x, idx)
-    except ConvergenceError:
+    except ConvergenceError as err:
         if not retreat:
             raise
+        unresolved = err
     last = watch.xa[idx]
-    good, bad = last[np.argmax(watch.sense * last)], x
-    g = watch.g[0, idx]  # at good, unless a bisection point resolves
+    good, bad, g = last[np.argmax(watch.sense * last)], x, None
     for _ in range(RETREAT_ROUNDS):
         mid = 0.5 * (good + bad)
         try:
             good, g = mid, signed(mid, idx)
         except ConvergenceError:
             bad = mid
+    if g is None:  # the modes were last seen at different x: none is known at one x
+        raise unresolved
     return good, g
 
 
