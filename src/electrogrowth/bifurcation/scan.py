@@ -36,7 +36,7 @@ from ..incremental.accuracy import SCAN_SIGNS, Accuracy
 from ..incremental.targets import Family, ImpedanceTarget
 from ..model.layers import Tube
 from ..outcomes import NO_MODE, Kind
-from .critical import CriticalPoint, critical_value, no_bifurcation_remedy, threshold_status
+from .critical import CriticalPoint, critical_value, no_bifurcation_remedy
 from .directions import past_surface
 from .march import ModeValue, first_bifurcations
 from .msearch import search_m
@@ -272,12 +272,11 @@ def _scan_once(
             res.threshold,
             *NO_MODE,
             Kind.THRESHOLD,
-            res.threshold_error,
+            0.0,
             "impedance",
             side,
             params.at(solve_for, res.threshold),
         )
-        crit = threshold_status(crit, rtol)
         return ScanResult(crit, (), m_range, n_range)
     crit = _finished(params, solve_for, side, rtol, found[0])
     return ScanResult(crit, tuple(found[1:top]), m_range, n_range)

@@ -294,9 +294,7 @@ def threshold_rival(critical, onset) -> Rival | None:
     the crease march met (None: not reached)."""
     kind = parse_control(critical.solve_for).kind
     if critical.kind == Kind.THRESHOLD:
-        return Rival(
-            Kind.THRESHOLD, critical.value, critical.error_estimate, detail=f"{kind} threshold"
-        )
+        return Rival(Kind.THRESHOLD, critical.value, 0.0, detail=f"{kind} threshold")
     if kind == "voltage" or (kind == "pressure" and critical.side != "compression"):
         t = threshold(critical.params, kind)
         if math.isfinite(t.value):

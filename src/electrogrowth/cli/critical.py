@@ -166,15 +166,10 @@ def _inaccurate_exit(crit, args) -> int:
     --accept-inaccurate)."""
     if crit.status != Status.INACCURATE:
         return 0
-    why = (
-        crit.message  # a threshold's bracket: no second solve
-        if crit.kind == Kind.THRESHOLD
-        else f"its error estimate {crit.error_estimate:.1e} remained above {CERTIFIED:g} rtol"
-        " |value| at rtol / 100"
-    )
     warn(
-        f"{crit.solve_for} = {crit.value:.6g} is not certified to rtol = {args.rtol:g}: {why}"
-        " (only the digits it supports are printed)"
+        f"{crit.solve_for} = {crit.value:.6g} is not certified to rtol = {args.rtol:g}: its"
+        f" error estimate {crit.error_estimate:.1e} remained above {CERTIFIED:g} rtol |value|"
+        " at rtol / 100 (only the digits it supports are printed)"
     )
     return 0 if args.accept_inaccurate else INACCURATE_EXIT
 
