@@ -38,6 +38,8 @@ differentiation), nodal_law.py (the law at the nodes), collocation_impedance.py 
 
 from __future__ import annotations
 
+import contextlib
+import functools
 import math
 from collections.abc import Callable
 
@@ -259,13 +261,36 @@ def collocation_target(
     Parameters are those of :func:`collocation_matrix`.
     """
     pairs = check_pairs(pairs)
-    M = collocation_matrix(state, m, n, nodes=nodes, pairs=pairs)
-    sign, _ = np.linalg.slogdet(M)
-    import scipy.linalg  # the peer method alone needs it: not in every process
-
-    s = scipy.linalg.svdvals(M, check_finite=False)
+    with one_blas_thread() as linalg:
+        M = collocation_matrix(state, m, n, nodes=nodes, pairs=pairs)
+        sign, _ = np.linalg.slogdet(M)
+        s = linalg.svdvals(M, check_finite=False)
     s0 = stable_det_sign(pairs, nodes) if _layers(state) == 1 else 1.0
     return float(s0 * sign * s[-1] / s[0])
+
+
+@contextlib.contextmanager
+def one_blas_thread():
+    """Run the dense algebra of one evaluation with BLAS on one thread; yields scipy.linalg.
+
+    Its matrices (a few hundred rows) gain little from BLAS threads on an idle machine,
+    and lose 15-50x on a busy one, where OpenBLAS's threads spin against other processes
+    (measured at load ~3.5 on 2 cores: 0.23-0.83 s per evaluation at 24-56 nodes against
+    13-17 ms on one thread; docs/collocation.md). scipy.linalg and threadpoolctl are
+    imported here: the peer method alone needs them, not every process."""
+    import scipy.linalg
+
+    with _blas_controller().limit(limits=1, user_api="blas"):
+        yield scipy.linalg
+
+
+@functools.cache
+def _blas_controller():
+    """The BLAS libraries of this process, found once (after scipy.linalg has loaded its
+    own OpenBLAS, besides NumPy's)."""
+    from threadpoolctl import ThreadpoolController
+
+    return ThreadpoolController()
 
 
 def critical_collocation(
