@@ -381,11 +381,13 @@ def mode_shape_collocation(
     singular value, so it is meaningful only where the target is (close to) zero. With
     ``pairs`` (a family's block) the left-out unknowns are exactly zero.
     """
-    M = collocation_matrix(state, m, n, nodes=nodes, pairs=pairs)
+    with one_blas_thread():
+        M = collocation_matrix(state, m, n, nodes=nodes, pairs=pairs)
+        null = np.linalg.svd(M)[2][-1]
     nn, layers = int(nodes), _layers(state)
     width = 5 * nn - 2
     v = np.zeros(width * layers)
-    v[_block_indices(nn, check_pairs(pairs), layers)[1]] = np.linalg.svd(M)[2][-1]
+    v[_block_indices(nn, check_pairs(pairs), layers)[1]] = null
     grids = [_layer_grid(state, k, n, nn) for k in range(layers)]
     cols = _layout(nn)
     pieces = []
