@@ -179,11 +179,13 @@ def solve_on(branch: Branch, grid, target: float, thr: Threshold | None, what: s
         loads = np.append(loads[-1], branch.value(pt))
         k = np.flatnonzero(sign * (loads - target) >= 0)
     if not k.size:
-        if thr is not None and thr.kind == "locking":
-            raise BaseStateError(
+        if thr is not None and thr.kind == "locking":  # the state exists: not a loss
+            err = ConvergenceError(
                 f"{what} lies too close to the locking stretch lambda_i = {thr.lambda_i:.12g} of"
                 " this tube to be resolved (the load is unbounded only at the lock itself)"
             )
+            err.remedy = ""  # neither a looser rtol nor collocation resolves it
+            raise err
         raise BaseStateError(f"{what} is within rounding of the threshold of its branch")
     a, b = xs[k[0] - 1], xs[k[0]]
     guess = _guess(xs[k[0] - 1 : k[0] + 1], lzs[k[0] - 1 : k[0] + 1])

@@ -95,6 +95,23 @@ def solve_uniform(tube: Tube, rtol: float) -> UniformState:
     raise ConvergenceError(f"base state at Vbar = {target:.12g} not resolved to rtol = {rtol}")
 
 
+#: the rounding floor of the integrands' trailing coefficients, relative to _tail_scale;
+#: above it, a tail that no longer falls from degree 256 to 512 is rounding noise too (a Gent
+#: layer near its lock amplifies the rounding of I1 by 1 / (1 - (I1 - 3) / jm))
+_NOISE = 1e3 * np.finfo(float).eps
+
+
+def _tail_scale(coef) -> np.ndarray:
+    """What the trailing Chebyshev coefficients of the four integrands of
+    :meth:`UniformState._build` are measured against where they stall: the stress scale
+    (|tau_1| + |tau_2|) for the stress differences, whose cancellation in a near-homogeneous
+    state (a tube compressed towards a Gent lock: stresses ~4e4, differences ~1e-12) leaves
+    the rounding noise of the stresses, not of their difference; max(|V|, 1) for the field."""
+    mag = abs(coef).max(0)
+    stress = max(mag[1], 1.0)
+    return np.array([stress, stress, max(mag[2], stress), max(mag[3], 1.0)])
+
+
 @dataclasses.dataclass(frozen=True)
 class UniformState:
     """The solved base state; methods take the reference radius R in [1, Rbar_o] (vectorised).
@@ -146,12 +163,15 @@ class UniformState:
                 axis=-1,
             )
 
+        tails = []
         for deg in (32, 64, 128, 256, 512):
             coef = chebinterpolate(integrands, deg)
             if np.all(abs(coef[-4:]).max(0) <= 0.01 * rtol * np.maximum(abs(coef).max(0), 1.0)):
                 break
-        else:
-            raise ConvergenceError(f"base-state profile not resolved to rtol = {rtol}")
+            tails.append(abs(coef[-4:]).max(0) / _tail_scale(coef))
+        else:  # resolved down to the rounding of the stresses? (the residuals below judge)
+            if not np.all((tails[-1] <= _NOISE) | (tails[-1] >= 0.1 * tails[-2])):
+                raise ConvergenceError(f"base-state profile not resolved to rtol = {rtol}")
         sigma = ChebyshevSeries(coef[:, 0], domain=[1.0, Ro]).integ(lbnd=1.0)
         weights = np.zeros(coef.shape[0])  # int_1^Ro T_k = (Ro - 1) / (1 - k^2), k even
         weights[::2] = (Ro - 1.0) / (1.0 - np.arange(0, coef.shape[0], 2) ** 2)

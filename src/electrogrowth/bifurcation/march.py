@@ -34,6 +34,7 @@ from ..basestate import tube as door
 from ..basestate.tube import solve_base_state
 from ..continuation.events import (
     EDGE,
+    FULL,
     LATER,
     bisect,
     brent,
@@ -176,12 +177,11 @@ def first_bifurcations(
             x = step.propose(None if due is None else due + sense * LATE * path.scale)
             try:
                 state = at.state(x)
-            except BaseStateError:
-                threshold, edge, unresolved = _threshold_between(at, params, step.x, x)
+            except (BaseStateError, ConvergenceError):  # lost, or unresolved next to a lock
+                value, edge, pending = _threshold_between(at, params, step.x, x)
+                if value is not None or threshold is None:  # an established loss stays
+                    threshold, unresolved = value, pending
                 step.lost(edge)
-                continue
-            except ConvergenceError as err:
-                unresolved, stop = err, True
                 continue
             if step.jumped(state.lambda_i):
                 continue
@@ -190,7 +190,7 @@ def first_bifurcations(
             x = step.x
             idx = np.nonzero(watch.alive & (watch.xa != x))[0]
             if idx.size:
-                x, g = _last_look(signed, watch, idx, x, unresolved is not None)
+                x, g = _last_look(signed, watch, idx, x)
                 found += _advance(watch, idx, x, g, signed, signed_fine, top)
             break
         idx = np.nonzero(watch.needs(x))[0]
@@ -222,16 +222,16 @@ def first_bifurcations(
     return MarchResult(found[:top], threshold)
 
 
-def _last_look(signed: Signed, watch, idx, x: float, retreat: bool):
-    """(x, the signed targets of the modes ``idx`` at x). With ``retreat`` (states past the
-    path's last one were unresolvable, next to a lock) and targets that do not resolve at x
-    either, the x where they still do, bisected (RETREAT_ROUNDS) back towards the modes'
-    last samples: a mode that bifurcates before it is found exactly, one after is not."""
+def _last_look(signed: Signed, watch, idx, x: float):
+    """(x, the signed targets of the modes ``idx`` at x), or, where the targets do not
+    resolve at x (the path's end next to a lock, whose moduli carry the rounding of I1
+    times 1 / (1 - (I1 - 3) / jm)^2), at the x where they still do, bisected
+    (RETREAT_ROUNDS) back towards the modes' last samples: a mode that bifurcates before it
+    is found exactly; one in the last 2^-12 of that gap, where no target is computable,
+    is not."""
     try:
         return x, signed(x, idx)
     except ConvergenceError as err:
-        if not retreat:
-            raise
         unresolved = err
     last = watch.xa[idx]
     good, bad, g = last[np.argmax(watch.sense * last)], x, None
@@ -285,25 +285,33 @@ def _advance(watch, idx, x, g, signed: Signed, signed_fine: Signed, need=None) -
 
 
 def _threshold_between(at, params, x_ok, x_bad):
-    """Where the base state is lost between x_ok and x_bad: (value, the last x the march
-    may step to, None). Where the voltage threshold falls to the applied voltage if that
-    brackets it, else the edge of the states that solve (whichever of the tube's loads
-    reaches its threshold), bisected.
+    """Where the base state is lost between x_ok and x_bad (no state, or none resolved, at
+    x_bad): (value, the last x the march may step to, None). Where the voltage threshold
+    falls to the applied voltage if that brackets it, else the edge of the states that
+    solve (whichever of the tube's loads reaches its threshold), bisected.
 
-    Next to a locking stretch the states short of the edge may exist and yet not resolve
-    (their profile needs more than the largest Chebyshev degree): the edge is then not a
-    loss that is established (a stiffening layer's state usually goes on, closer and closer
-    to its lock), and the answer is (None, the last resolved x, the error to raise if no
-    mode bifurcates before it)."""
+    Next to a locking stretch the states past the edge may exist and yet not resolve
+    (their profile needs more than the largest Chebyshev degree, or the load is unbounded
+    only at the lock): the edge is then not a loss that is established (a stiffening
+    layer's state goes on, closer and closer to its lock), and the answer is (None, the
+    last resolved x, the error to raise if no mode bifurcates before it)."""
     if params.voltage > 0:
         margin = VoltageMargin(at, params.voltage)
-        x = _lost_between(x_ok, x_bad, margin=margin, tolerate=(ValueError,))
+        # no sign change (ValueError), or no voltage branch to read at x_bad: bisect instead
+        x = _lost_between(
+            x_ok, x_bad, margin=margin, tolerate=(ValueError, BaseStateError, ConvergenceError)
+        )
         if x is not None:
             return x, x, None
+    if _fate(at, x_bad) == "solved":  # the failure was the march's alone: no edge here
+        return None, x_ok, ConvergenceError(f"the state at {x_bad:.12g} solves only from cold")
     ok, bad = bisect(lambda x: _fate(at, x) == "solved", x_ok, x_bad, EDGE)
     if _fate(at, bad) != "unresolved":
         return ok, ok, None
     _, lost = bisect(lambda x: _fate(at, x) != "lost", bad, x_bad, EDGE)
+    lock = _kinematic_lock(at, ok, lost)
+    if lock is not None:  # past it no state can exist: the loss is established, exactly
+        return lock, ok, None
     unresolved = ConvergenceError(
         f"the states from {bad:.12g} are not resolved (a layer next to its locking stretch),"
         f" and the state search fails from {lost:.12g}: whether the state is lost there is"
@@ -311,6 +319,31 @@ def _threshold_between(at, params, x_ok, x_bad):
     )
     unresolved.remedy = ""  # neither a looser rtol (the states' is fixed) nor collocation
     return None, ok, unresolved
+
+
+def _kinematic_lock(at: TubeAt, a: float, b: float) -> float | None:
+    """Where the axial stretch alone locks a Gent layer, if that is between a and b: the
+    root of lambda_e^2 + 2 / lambda_e - 3 = jm, lambda_e = lambda_z / g_z its elastic axial
+    stretch (I1 >= lambda_e^2 + 2 / lambda_e, with equality for equal in-plane stretches,
+    so no state exists past it). None under force control or where no such root lies in
+    [a, b] (a lock approached under a load is approached, not reached: no loss)."""
+
+    def excess(x) -> float:
+        tube = at(x)
+        worst = -math.inf
+        for layer in tube.layers:
+            energy = layer.material.definition  # a BuiltinEnergy, or an expression
+            if getattr(energy, "family", None) == "gent" and not layer.graded:
+                le = tube.stretch / layer.growth[2]
+                worst = max(worst, le * le + 2.0 / le - 3.0 - energy.parameter)
+        return worst
+
+    if at(a).axial_force is not None:
+        return None
+    fa, fb = excess(a), excess(b)
+    if not (math.isfinite(fa) and fa < 0.0 <= fb):
+        return None
+    return float(brent(excess, *sorted((a, b)), FULL))
 
 
 def _fate(at: TubeAt, x: float) -> str:
