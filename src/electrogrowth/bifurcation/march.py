@@ -62,8 +62,14 @@ MODE_STEPS = StepPolicy(smallest=1e-4)
 #: at most 5 % of the scale, as in a scan: a mode's target can dip below zero over a short
 #: window that its prediction does not see coming (a three-layer tube's (0, 1) is unstable
 #: for 6 % of its growth only), and longer steps jumped it (tests/bifurcation/
-#: test_crease_interface.py's sandwich)
-ONE_MODE_STEPS = StepPolicy(smallest=1e-4, predict_monitor=True, max_change=0.08)
+#: test_crease_interface.py's sandwich). The mode is sampled at every step (ONE_MODE_WAIT, the
+#: largest step), not only every 0.25 of the scale as a scan's many modes are: a film-lined
+#: tube's target dips below zero over 7 % of lambda_z between two samples 0.25 apart
+#: (tests/bifurcation/test_march_steep_root.py)
+ONE_MODE_WAIT = 0.05
+ONE_MODE_STEPS = StepPolicy(
+    smallest=1e-4, predict_monitor=True, max_change=0.08, max_wait=ONE_MODE_WAIT
+)
 #: a mode is sampled at most this far (times the scale) after it falls due: the largest
 #: step of MODE_STEPS, with which the march samples every mode due at its next step
 LATE = 0.05
@@ -165,7 +171,7 @@ def first_bifurcations(
     signed = Signed(at, targets, modes, sref)
     signed_fine = Signed(at, brent_targets or targets, modes, sref)
 
-    watch = EventWatch(x0, g0, sense, path.scale)
+    watch = EventWatch(x0, g0, sense, path.scale, steps.max_wait)
     step = Stepper(path, steps, state.lambda_i)
     # unresolved: the error to raise if no mode is found (states past the path's end exist
     # but do not resolve, next to a lock); stop: it ended the path at step.x

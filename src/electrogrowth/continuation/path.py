@@ -93,6 +93,9 @@ class StepPolicy:
     #: step doubles until it is dropped (its state solved for nothing), then halves.
     predict_monitor: bool = False
     max_change: float = math.inf
+    #: an event function is sampled at least this often (times the scale): see
+    #: predict.EventWatch; a window of instability narrower than it may be missed
+    max_wait: float = 0.25
 
     def __post_init__(self):
         if not 0 < self.smallest <= self.first <= self.largest:

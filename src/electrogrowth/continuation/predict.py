@@ -36,9 +36,10 @@ class EventWatch:
     functions far from zero cost a few evaluations, not one per step.
     """
 
-    def __init__(self, x0, g0, sense, scale):
+    def __init__(self, x0, g0, sense, scale, max_wait: float = MAX_WAIT):
         n = g0.size
         self.sense, self.scale = sense, scale
+        self.wait = max_wait * scale  # the longest a function goes unsampled
         self.x = np.full((3, n), np.nan)  # rows: newest, previous, oldest
         self.g = np.full((3, n), np.nan)
         self.x[0], self.g[0] = x0, g0
@@ -112,7 +113,7 @@ class EventWatch:
             return self._settle_numpy(idx, x, before)
         idx = np.asarray(idx, dtype=np.int64)
         kernel.settle(idx, float(x), float(self.sense), before, self.root_distance(),
-                      self.moved, self.due, MAX_WAIT * self.scale)  # fmt: skip
+                      self.moved, self.due, self.wait)  # fmt: skip
 
     def _settle_numpy(self, idx, x, before):
         """The end of :meth:`record` in NumPy: how far each new sample moved its predicted
@@ -120,7 +121,7 @@ class EventWatch:
         dist = self.root_distance()[idx]
         with np.errstate(invalid="ignore"):
             self.moved[idx] = np.abs(x + self.sense * dist - before)  # inf - inf: NaN
-        wait = np.minimum(0.5 * dist, MAX_WAIT * self.scale)
+        wait = np.minimum(0.5 * dist, self.wait)
         self.due[idx] = x + self.sense * wait
 
     def reach(self, safety: float, finest: float) -> float:
