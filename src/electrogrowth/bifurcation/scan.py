@@ -143,7 +143,9 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
         nonlocal limit
         if not options.surface or c.kind != Kind.BIFURCATION:
             return False
-        limit = limit or short_wave_limit(params, solve_for, side=side, rtol=rtol)
+        # only as far as the finite mode: past it the march may meet a lock it cannot
+        # resolve (a Gent core under a folding film), and the answer is no longer asked
+        limit = limit or short_wave_limit(params, solve_for, side=side, rtol=rtol, until=c.value)
         return limit.kind == Kind.SURFACE and (limit.value - c.value) * sense < 0
 
     def search(result, m_top=M_CAP):

@@ -139,8 +139,9 @@ def _check(params, solve_for, side, faces, rtol) -> tuple[str, str | None, tuple
 # -- the march ------------------------------------------------------------------------------
 
 
-def _locate(params, solve_for, side, h: Callable, rtol: float, h_march=None):
-    """March to the first zero of h; returns (kind, value, bracket or None).
+def _locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, until=None):
+    """March to the first zero of h (not past ``until``, if given); returns (kind, value,
+    bracket or None).
 
     h_march (default h) is used for the steps: it may be cheaper where h is far from 0
     but must agree with h wherever either is <= MARCH_REFINE."""
@@ -148,6 +149,11 @@ def _locate(params, solve_for, side, h: Callable, rtol: float, h_march=None):
     at = TubeAt(params, solve_for, as_float=True)
     state_at = StateAt(at, rtol)
     path = ControlPath(*control_path(params, solve_for, side))
+    if until is not None and (until - path.start) * path.sense > 0:
+        path = dataclasses.replace(
+            path,
+            end=path.start + path.sense * min(abs(until - path.start), abs(path.end - path.start)),
+        )
     x0, scale = path.start, path.scale
     try:
         state = state_at(x0)
@@ -265,7 +271,7 @@ def _second_resolution(value_coarse, value: float) -> float:
     raise ConvergenceError(f"no root of the coarse half-space target near {value}")
 
 
-def _solve(params, solve_for, side, faces, rtol, direction) -> SurfaceLimit:
+def _solve(params, solve_for, side, faces, rtol, direction, until=None) -> SurfaceLimit:
     solve_for, side, faces = _check(params, solve_for, side, faces, rtol)
     signs = reference_signs(params)
     fine = Resolution(25, 1e-10, rtol)
@@ -274,7 +280,7 @@ def _solve(params, solve_for, side, faces, rtol, direction) -> SurfaceLimit:
     hm = sampler(faces, signs, fine, direction, refine_below=MARCH_REFINE)
     hc = sampler(faces, signs, coarse, direction)
     at = TubeAt(params, solve_for, as_float=True)
-    kind, value, bracket = _locate(params, solve_for, side, h, rtol, hm)
+    kind, value, bracket = _locate(params, solve_for, side, h, rtol, hm, until)
     if kind in (Kind.THRESHOLD, Kind.NONE):
         return SurfaceLimit(
             solve_for,
@@ -319,6 +325,7 @@ def short_wave_limit(
     faces=None,
     psi: float | None = None,
     rtol: float | None = None,
+    until: float | None = None,
 ) -> SurfaceLimit:
     """Critical value of ``solve_for`` for wrinkles of vanishing wavelength (m, k -> inf).
 
@@ -342,6 +349,9 @@ def short_wave_limit(
         the directional critical value, whose infimum over psi is the default result.
     rtol : float, optional
         Accuracy of the base state and of Brent's method (default 1e-12, 0 < rtol <= 1e-3).
+    until : float, optional
+        March only this far (a scan asks whether the limit comes before its best finite
+        mode): kind "none" when nothing is met before it.
 
     Returns
     -------
@@ -362,11 +372,11 @@ def short_wave_limit(
     elif rtol is None:
         rtol = DEFAULT_RTOL
     if psi is None:
-        return _solve(params, solve_for, side, faces, rtol, None)
+        return _solve(params, solve_for, side, faces, rtol, None, until)
     if isinstance(psi, bool) or not isinstance(psi, (int, float)) or not 0 <= psi <= HALF_PI:
         raise ParameterError(f"psi = {psi!r} is out of range; valid range: 0 <= psi <= pi/2")
     fixed = float(psi)
-    return _solve(params, solve_for, side, faces, rtol, FixedDirection(fixed))
+    return _solve(params, solve_for, side, faces, rtol, FixedDirection(fixed), until)
 
 
 def ray_limit(
