@@ -40,3 +40,18 @@ def test_energy_text_gives_the_builtin_outcome():
     for tube in (builtin, written):
         with pytest.raises(ConvergenceError, match="not established"):
             critical_value(tube, 3, 1, "pressure")
+
+
+@pytest.mark.parametrize("control", ["force", "pressure"])
+def test_load_scale_of_an_energy_text_in_other_units(control):
+    # found by probing: the load's scale was read off shear_modulus alone, so a layer whose
+    # text carries its stiffness (3 times Gent) got a force range 6x shorter than the same
+    # layer as a built-in energy with shear_modulus 3
+    from electrogrowth.bifurcation.march import control_path
+
+    text = Material("gent3", "3*(-45/2*log(1 - (I1 - 3)/45)) + I5/2", check_units=False)
+    builtin = Tube((Layer(1.4, gent(45.0), shear_modulus=3.0), Layer(2.2)), axial_force=0.0)
+    written = Tube((Layer(1.4, text), Layer(2.2)), axial_force=0.0)
+    assert control_path(written, control, None) == pytest.approx(
+        control_path(builtin, control, None), rel=1e-12
+    )
