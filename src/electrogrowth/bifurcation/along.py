@@ -20,7 +20,7 @@ from collections.abc import Callable
 import numpy as np
 
 from ..basestate.tube import solve_base_state, threshold
-from ..errors import BaseStateError
+from ..errors import BaseStateError, ConvergenceError
 from ..model.layers import Tube
 
 
@@ -89,14 +89,14 @@ class TubeAt:
         x = float(x)
         same = self.neighbours.solved_at(x, rtol)
         if same is not None:
-            return same  # solved here before (a value, then its error estimate)
+            return clear_of_lock(same)  # solved here before (a value, then its estimate)
         if tube.is_uniform:  # its state is a function of the tube alone: no neighbour needed
             state = solve_base_state(tube, rtol=rtol)
         else:
             near, guess = self.neighbours.nearest(x, rtol)
             state = solve_base_state(tube, rtol=rtol, near=near, guess=guess)
         self.neighbours.keep(x, rtol, state)
-        return state
+        return clear_of_lock(state)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -218,3 +218,43 @@ def solves(at, x, errors=(BaseStateError,), **options) -> bool:
     except errors:
         return False
     return True
+
+
+#: the closest a Gent layer may come to its lock, 1 - (I1 - 3) / jm, for its state to be
+#: used by a march: the incremental moduli grow like 1 / margin^2, and within ~1e-8 the
+#: kernel's target of a tube compressed to its lock fell from 8.9e-4 (margin 1e-6) to 6e-12,
+#: a root that is not there (tests/bifurcation/test_stretch_to_lock.py)
+LOCK_MARGIN = 1e-6
+
+
+def clear_of_lock(state):
+    """``state``, or ConvergenceError where a Gent layer is within LOCK_MARGIN of its lock:
+    the state exists, but a march cannot read its modes (it treats it as unresolved)."""
+    margin = lock_margin(state)
+    if margin < LOCK_MARGIN:
+        err = ConvergenceError(
+            f"a Gent layer is within {margin:.1e} of its lock (1 - (I1 - 3)/jm): its"
+            f" incremental moduli are beyond the kernel's range below {LOCK_MARGIN:g}"
+        )
+        err.remedy = ""
+        raise err
+    return state
+
+
+def lock_margin(state) -> float:
+    """The least 1 - (I1 - 3)/jm over the Gent layers of ``state`` (inf without one), at 9
+    Chebyshev points of each (its faces included: I1 is largest at a face where the hoop
+    stretch is monotone)."""
+    tube, worst = state.tube, math.inf
+    for layer, a, b in zip(tube.layers, tube.radii, tube.radii[1:]):
+        energy = layer.material.definition
+        if getattr(energy, "family", None) != "gent":
+            continue
+        R = 0.5 * (a + b) - 0.5 * (b - a) * np.cos(np.linspace(0.0, math.pi, 9))
+        g = np.asarray(layer.growth_at(R), float)
+        l_t = state.radius(R) / (R * g[1])
+        l_z = state.stretch / g[2]
+        l_r = 1.0 / (l_t * l_z)  # the elastic part is isochoric
+        i1 = l_r * l_r + l_t * l_t + l_z * l_z
+        worst = min(worst, float(np.min(1.0 - (i1 - 3.0) / energy.parameter)))
+    return worst

@@ -50,7 +50,7 @@ from ..errors import BaseStateError, ConvergenceError, NoBifurcationFound, Param
 from ..incremental.targets import natural_family, row_family
 from ..model.controls import KINDS
 from ..model.layers import Tube
-from .along import Signed, TubeAt, VoltageMargin
+from .along import Signed, TubeAt, VoltageMargin, clear_of_lock
 from .along import voltage_threshold as _voltage_threshold
 
 #: the mode march's step control: 0.4 % of the scale doubling up to 5 %, not below 1e-4
@@ -356,7 +356,7 @@ def _fate(at: TubeAt, x: float) -> str:
     """The base state at x: "solved", "lost" (BaseStateError) or "unresolved" (it exists,
     but its profile is not resolved: ConvergenceError)."""
     try:
-        solve_base_state(at(x))  # from cold, as every bisection of a loss
+        clear_of_lock(solve_base_state(at(x)))  # from cold, as every bisection of a loss
     except BaseStateError:
         return "lost"
     except ConvergenceError:
