@@ -11,8 +11,8 @@ Found by probing: the bare tube raised ConvergenceError ("base-state profile not
 the profile's tail test measured the stress difference, ~0 in a near-homogeneous state,
 against 1 while its rounding noise is that of the stresses, ~4e4 next to the lock); with a
 0.003-thick Gent film (mu 106) the march raised BaseStateError "no unloaded state found",
-from the voltage margin read past the lock (that tube wrinkles first, at 0.1109); under Vbar = 0.0268 the state at lambda_z = 0.09
-is refused (open, below).
+from the voltage margin read past the lock (that tube wrinkles first, at 0.1109); under
+Vbar = 0.0268 the state at lambda_z = 0.09 is refused (open, below).
 """
 
 import dataclasses
