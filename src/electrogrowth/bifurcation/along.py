@@ -227,12 +227,16 @@ def solves(at, x, errors=(BaseStateError,), **options) -> bool:
 LOCK_MARGIN = 1e-6
 
 
+class NearLock(ConvergenceError):
+    """A state within LOCK_MARGIN of a Gent lock: it exists, its modes are not read."""
+
+
 def clear_of_lock(state):
     """``state``, or ConvergenceError where a Gent layer is within LOCK_MARGIN of its lock:
     the state exists, but a march cannot read its modes (it treats it as unresolved)."""
     margin = lock_margin(state)
     if margin < LOCK_MARGIN:
-        err = ConvergenceError(
+        err = NearLock(
             f"a Gent layer is within {margin:.1e} of its lock (1 - (I1 - 3)/jm): its"
             f" incremental moduli are beyond the kernel's range below {LOCK_MARGIN:g}"
         )

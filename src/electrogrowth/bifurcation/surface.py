@@ -47,7 +47,7 @@ from ..incremental.halfspace import surfaces
 from ..model.controls import KINDS, check_side
 from ..model.layers import Tube
 from ..outcomes import Kind, Outcome, Status
-from .along import Elliptic, SampleValue, Solves, StateAt, TubeAt, VoltageMargin
+from .along import Elliptic, NearLock, SampleValue, Solves, StateAt, TubeAt, VoltageMargin
 from .along import voltage_threshold as _voltage_threshold
 from .directions import (
     HALF_PI,
@@ -181,7 +181,7 @@ def _locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, unt
         x = step.propose()
         try:
             state = state_at(x)
-        except BaseStateError:
+        except (BaseStateError, NearLock):  # its half-spaces are read off the moduli too
             threshold = _threshold_between(at, params, x_prev, x, rtol)
             if step.lost(threshold):
                 break
