@@ -1,4 +1,4 @@
-"""The collocation's dense algebra runs with BLAS on one thread (collocation.one_blas_thread):
+"""The collocation's dense algebra runs with BLAS on one thread (dense_algebra.one_blas_thread):
 OpenBLAS's threads, spinning against other processes on a busy machine, made one evaluation
 15-50x slower; the value must not depend on it."""
 
@@ -12,7 +12,8 @@ from threadpoolctl import threadpool_info
 from electrogrowth import Tube
 from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.incremental import collocation
-from electrogrowth.incremental.collocation import collocation_target, one_blas_thread
+from electrogrowth.incremental.collocation import collocation_target
+from electrogrowth.incremental.dense_algebra import one_blas_thread
 
 
 def _blas_threads():

@@ -38,8 +38,6 @@ differentiation), nodal_law.py (the law at the nodes), collocation_impedance.py 
 
 from __future__ import annotations
 
-import contextlib
-import functools
 import math
 from collections.abc import Callable
 
@@ -59,6 +57,7 @@ from .collocation_layout import (
     check_pairs,
     stable_det_sign,
 )
+from .dense_algebra import equilibrated, one_blas_thread
 from .nodal_law import Operator, _fluxes_at, _Grid
 
 
@@ -268,53 +267,6 @@ def collocation_target(
         s = linalg.svdvals(M, check_finite=False)
     s0 = stable_det_sign(pairs, nodes) if _layers(state) == 1 else 1.0
     return float(s0 * sign * s[-1] / s[0])
-
-
-def equilibrated(M: np.ndarray, sweeps: int = 3) -> np.ndarray:
-    """D_r M D_c with positive diagonal D_r, D_c that bring every row's and column's largest
-    entry near 1 (alternating square-root scalings, ``sweeps`` times).
-
-    det keeps its sign and M is singular exactly where it was, so the target keeps its
-    roots; but sigma_min / sigma_max no longer carries the scaling of a thin, stiff layer,
-    whose rows (lengths in units of its own half-thickness, stresses of its modulus) are
-    1e5-1e6 times another layer's: a film 0.002 thick and 89 times as stiff made the ratio
-    1e-17 to 1e-21, rounding, and its sign flip with the node count; equilibrated, 1e-12
-    and a root within 1e-6 of the impedance method's (tests/bifurcation/
-    test_collocation_thin_film.py)."""
-    A = np.abs(M)
-    M = M.copy()
-    for _ in range(sweeps):
-        r = 1.0 / np.sqrt(np.maximum(A.max(axis=1), 1e-300))
-        A *= r[:, None]
-        M *= r[:, None]
-        c = 1.0 / np.sqrt(np.maximum(A.max(axis=0), 1e-300))
-        A *= c[None, :]
-        M *= c[None, :]
-    return M
-
-
-@contextlib.contextmanager
-def one_blas_thread():
-    """Run the dense algebra of one evaluation with BLAS on one thread; yields scipy.linalg.
-
-    Its matrices (a few hundred rows) gain little from BLAS threads on an idle machine,
-    and lose 15-50x on a busy one, where OpenBLAS's threads spin against other processes
-    (measured at load ~3.5 on 2 cores: 0.23-0.83 s per evaluation at 24-56 nodes against
-    13-17 ms on one thread; docs/collocation.md). scipy.linalg and threadpoolctl are
-    imported here: the peer method alone needs them, not every process."""
-    import scipy.linalg
-
-    with _blas_controller().limit(limits=1, user_api="blas"):
-        yield scipy.linalg
-
-
-@functools.cache
-def _blas_controller():
-    """The BLAS libraries of this process, found once (after scipy.linalg has loaded its
-    own OpenBLAS, besides NumPy's)."""
-    from threadpoolctl import ThreadpoolController
-
-    return ThreadpoolController()
 
 
 def critical_collocation(
