@@ -310,7 +310,14 @@ def _threshold_between(at, params, x_ok, x_bad):
         if x is not None:
             return x, x, None
     if _fate(at, x_bad) == "solved":  # the failure was the march's alone: no edge here
-        return None, x_ok, ConvergenceError(f"the state at {x_bad:.12g} solves only from cold")
+        return (
+            None,
+            x_ok,
+            ConvergenceError(
+                f"the base state at {x_bad:.12g} was not resolved continued from its neighbour"
+                " (it solves from cold)"
+            ),
+        )
     ok, bad = bisect(lambda x: _fate(at, x) == "solved", x_ok, x_bad, EDGE)
     if _fate(at, bad) != "unresolved":
         return ok, ok, None
@@ -318,13 +325,17 @@ def _threshold_between(at, params, x_ok, x_bad):
     lock = _kinematic_lock(at, ok, lost)
     if lock is not None:  # past it no state can exist: the loss is established, exactly
         return lock, ok, None
+    near = "a layer next to its locking stretch?" if _has_gent(at(x_ok)) else "why is not known"
     unresolved = ConvergenceError(
-        f"the states from {bad:.12g} are not resolved (a layer next to its locking stretch),"
-        f" and the state search fails from {lost:.12g}: whether the state is lost there is"
-        " not established"
+        f"the states from {bad:.12g} are not resolved ({near}), and the state search fails"
+        f" from {lost:.12g}: whether the state is lost there is not established"
     )
     unresolved.remedy = ""  # neither a looser rtol (the states' is fixed) nor collocation
     return None, ok, unresolved
+
+
+def _has_gent(tube: Tube) -> bool:
+    return any(getattr(x.material.definition, "family", None) == "gent" for x in tube.layers)
 
 
 def _kinematic_lock(at: TubeAt, a: float, b: float) -> float | None:
