@@ -93,6 +93,13 @@ class ConvergenceError(ElectrogrowthError, RuntimeError):
     )
 
 
+#: what to do where a Gent layer's states next to its lock cannot be resolved (they exist)
+NEAR_LOCK = Remedy(
+    "the states there are next to a Gent layer's lock, where no wrinkle is computable: ask"
+    " for less load, or give the layer a larger jm"
+)
+
+
 class NoBifurcationFound(ElectrogrowthError, RuntimeError):
     """No bifurcation of the requested kind lies in the searched range."""
 

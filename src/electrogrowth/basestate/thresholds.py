@@ -23,7 +23,7 @@ from numpy.polynomial import chebyshev as cheb
 
 from ..continuation.events import BRANCH, LOCK, bisect, brent, reached, turned
 from ..continuation.path import GeometricGrid
-from ..errors import BaseStateError, ConvergenceError
+from ..errors import NEAR_LOCK, BaseStateError, ConvergenceError
 from ..model.layers import Tube
 from .branches import Branch, clean
 from .plies import Ply, Wall, choose_nodes, numeric_energy, start_guess
@@ -184,7 +184,7 @@ def solve_on(branch: Branch, grid, target: float, thr: Threshold | None, what: s
                 f"{what} lies too close to the locking stretch lambda_i = {thr.lambda_i:.12g} of"
                 " this tube to be resolved (the load is unbounded only at the lock itself)"
             )
-            err.remedy = ""  # neither a looser rtol nor collocation resolves it
+            err.remedy = NEAR_LOCK  # neither a looser rtol nor collocation resolves it
             raise err
         raise BaseStateError(f"{what} is within rounding of the threshold of its branch")
     a, b = xs[k[0] - 1], xs[k[0]]

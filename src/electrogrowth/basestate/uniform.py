@@ -88,7 +88,10 @@ def solve_uniform(tube: Tube, rtol: float) -> UniformState:
     a, b = grid[k[0] - 1], grid[k[0]]
     for n in GAUSS_ORDERS[GAUSS_ORDERS.index(wall.nodes) :]:
         wall = dataclasses.replace(wall, nodes=n)
-        lam = cell_root(lambda x, t=wall: np.sign(v := t.voltage(x)) * v**2 - target**2, a, b)
+        signed = lambda x, t=wall: np.sign(v := t.voltage(x)) * v**2 - target**2  # noqa: E731
+        if n != info.nodes and not signed(np.array([a]))[0] * signed(np.array([b]))[0] <= 0:
+            break  # the cell of the scanned rule brackets no root of this one: not resolved
+        lam = cell_root(signed, a, b)
         state = UniformState._build(tube, wall, lam, info, rtol)
         if state.quadrature_error <= max(rtol, 1e-14):
             return state

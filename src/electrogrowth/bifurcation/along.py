@@ -20,7 +20,7 @@ from collections.abc import Callable
 import numpy as np
 
 from ..basestate.tube import solve_base_state, threshold
-from ..errors import BaseStateError, ConvergenceError
+from ..errors import NEAR_LOCK, BaseStateError, ConvergenceError
 from ..model.layers import Tube
 
 
@@ -240,7 +240,7 @@ def clear_of_lock(state):
             f"a Gent layer is within {margin:.1e} of its lock (1 - (I1 - 3)/jm): its"
             f" incremental moduli are beyond the kernel's range below {LOCK_MARGIN:g}"
         )
-        err.remedy = ""
+        err.remedy = NEAR_LOCK
         raise err
     return state
 

@@ -46,7 +46,13 @@ from ..continuation.events import (
 from ..continuation.events import threshold_between as _lost_between
 from ..continuation.path import ControlPath, Stepper, StepPolicy
 from ..continuation.predict import EventWatch
-from ..errors import BaseStateError, ConvergenceError, NoBifurcationFound, ParameterError
+from ..errors import (
+    NEAR_LOCK,
+    BaseStateError,
+    ConvergenceError,
+    NoBifurcationFound,
+    ParameterError,
+)
 from ..incremental.targets import natural_family, row_family
 from ..model.controls import KINDS
 from ..model.layers import Tube
@@ -325,12 +331,14 @@ def _threshold_between(at, params, x_ok, x_bad):
     lock = _kinematic_lock(at, ok, lost)
     if lock is not None:  # past it no state can exist: the loss is established, exactly
         return lock, ok, None
-    near = "a layer next to its locking stretch?" if _has_gent(at(x_ok)) else "why is not known"
+    gent = _has_gent(at(x_ok))
+    near = "a layer next to its locking stretch?" if gent else "why is not known"
     unresolved = ConvergenceError(
         f"the states from {bad:.12g} are not resolved ({near}), and the state search fails"
         f" from {lost:.12g}: whether the state is lost there is not established"
     )
-    unresolved.remedy = ""  # neither a looser rtol (the states' is fixed) nor collocation
+    if gent:  # neither a looser rtol (the states' is fixed) nor collocation helps there
+        unresolved.remedy = NEAR_LOCK
     return None, ok, unresolved
 
 
