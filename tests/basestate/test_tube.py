@@ -17,7 +17,7 @@ import sympy as sp
 from scipy.integrate import quad
 from scipy.optimize import brentq, minimize_scalar
 
-from electrogrowth.basestate import voltage as _voltage
+from electrogrowth.basestate import neo_hookean
 from electrogrowth.basestate import voltage as tube
 from electrogrowth.basestate.tube import (
     neo_hookean_asymptote,
@@ -461,7 +461,7 @@ def test_closed_form_voltage_rises_strictly_to_the_asymptote():
     y = (lambda_i0 / lambda_i)^2 from 1 (y = 0) to 0 (y = 1), and m = lambda_z M / g falls
     strictly in y on (0, 100]: one lambda_i0, and one lambda_i per Vbar (proof in the docs)."""
     square, traction = (
-        np.vectorize(f, otypes=[float]) for f in (_voltage.nh_square, _voltage.nh_traction)
+        np.vectorize(f, otypes=[float]) for f in (neo_hookean.nh_square, neo_hookean.nh_traction)
     )
     y = np.geomspace(1e-4, 1.0, 1500)
     for k in np.geomspace(1e-2, 1e3, 30):  # k = Rbar_o^2 - 1

@@ -1,11 +1,11 @@
-"""The root of (NH-6) for lambda_i, compiled (used by voltage.nh_lambda_i once numba is
+"""The root of (NH-6) for lambda_i, compiled (used by neo_hookean.nh_lambda_i once numba is
 loaded: importing a base state alone must not import it).
 
 Every base state of the paper's tube solves (NH-6), (Vbar / Vbar_inf)^2 = ratio^2 in
 y = (lambda_i0 / lambda_i)^2, by Brent's method: ~8 evaluations, ~8 us in Python, a tenth of
 the Python left in a warm critical value (a march solves ~20 states). Here the same
 iteration runs in one compiled call: :func:`nh_root` is brent.brentq operation for operation
-(itself SciPy's brentq.c) on voltage.nh_square, with the same C library's log1p and sinh, so
+(itself SciPy's brentq.c) on neo_hookean.nh_square, with the same C library's log1p and sinh, so
 the root is the same double (tests/basestate/test_nh_root_kernel.py, on random tubes).
 """
 
@@ -18,7 +18,7 @@ import numba as nb
 
 @nb.njit(cache=True)
 def _nh_square(y, k):
-    """voltage.nh_square (with nh_traction), the same operations in the same order."""
+    """neo_hookean.nh_square (with nh_traction), the same operations in the same order."""
     kappa = k * (1.0 - y) / (1.0 + k * y)
     traction = 0.5 * (math.log1p(kappa) + y * kappa)
     s = 0.5 * math.log1p(k * y)

@@ -16,9 +16,10 @@ import numpy as np
 from .._types import State
 from ..errors import BaseStateError, ParameterError
 from ..model.layers import Tube
+from .neo_hookean import nh_asymptote, nh_voltage
 from .thresholds import Threshold
 from .uniform import solve_uniform
-from .voltage import UniformWall, nh_asymptote, nh_voltage, threshold_info
+from .voltage import UniformWall, threshold_info
 
 # The layered solver (layered.py) is imported where a layered tube is met: the paper's tube
 # (closed forms, uniform.py) does not load it.

@@ -39,7 +39,6 @@ from .voltage import (
     UniformWall,
     cell_root,
     energy_kind,
-    nh_lambda_i,
     threshold_info,
 )
 
@@ -66,7 +65,8 @@ def solve_uniform(tube: Tube, rtol: float) -> UniformState:
                 f" {info.value:.12g}; no base state resolved"
             )
         wall = UniformWall(tube.material, Ro, g, lz)
-        return UniformState._neo_hookean(tube, wall, nh_lambda_i(Ro, g, lz, ratio), info)
+        lam = neo_hookean.nh_lambda_i(Ro, g, lz, ratio)
+        return UniformState._neo_hookean(tube, wall, lam, info)
     wall = UniformWall(tube.material, Ro, g, lz, info.nodes)
     if target == 0:
         return UniformState._build(tube, wall, info.lambda_i0, info, rtol)
@@ -149,7 +149,7 @@ class UniformState:
         and of V = int E_r dr: a second quadrature, independent of the Gauss one that fixed
         lambda_i and c, whose residuals sigma_rr(Rbar_o) and V - Vbar (Rbar_o - 1) give
         quadrature_error."""
-        c = float(wall.charge_and_voltage(lam)[0][0]) if tube.voltage > 0 else 0.0
+        c = wall.charge_at(lam, tube.voltage) if tube.voltage > 0 else 0.0
         Ro, mat = tube.outer_radius, tube.material
 
         def integrands(x):

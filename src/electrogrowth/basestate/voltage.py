@@ -24,19 +24,18 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
-import sys
 
 import numpy as np
 from numpy.polynomial import chebyshev as cheb
 
 from ..brent import brentq
-from ..errors import BaseStateError, ConvergenceError
+from ..errors import BaseStateError, ConvergenceError, ParameterError
 from ..model.materials import Material
+from .neo_hookean import nh_asymptote
 
 GAUSS_ORDERS = (16, 24, 32, 48, 64, 96, 128, 192, 256, 384)  # Gauss-Legendre node counts tried
 _SCAN_RATIO, _SCAN_SPAN = 1.08, 1e3  # threshold scan: lambda_i0 1.08^k up to 1e3 lambda_i0
 _QUIET = dict(invalid="ignore", divide="ignore", over="ignore")
-_RTOL_MIN = 4.0 * np.finfo(float).eps  # brentq's smallest rtol
 _PROBE_MARGIN = 1.1  # node-count probes stay 10 % inside the energy's domain (_nodes)
 
 
@@ -139,24 +138,70 @@ class UniformWall:
                 up = m0 >= 0  # else below lambda_i0: NaN
                 ok[ok] = up
                 c[ok] = np.sqrt(self._solve_q(lam[up], m0[up], q[up], rtol))
-                r, stretches, d, wdr = self._quadrature(lam[up], c[ok] ** 2)
+                ok &= np.isfinite(c)  # else no charge balances the traction: NaN
+                r, stretches, d, wdr = self._quadrature(lam_i[ok], c[ok] ** 2)
                 v[ok] = (self.material.electric_field(*stretches, d) * wdr).sum(-1)
         return c, v / (self.outer_radius - 1.0)
 
     def voltage(self, lam_i) -> np.ndarray:
         return self.charge_and_voltage(lam_i)[1]
 
+    def charge_at(self, lam_i: float, vbar: float) -> float:
+        """The charge c giving the voltage Vbar at the solved lambda_i: from the voltage, not
+        from (*). Near lambda_i0 the traction's mechanical part (*) is a difference of
+        stresses that cancel, so c from (*) carries their rounding relative to
+        lambda_i - lambda_i0 (a Gent tube at 1.3e-6 of it, next to its lock: 2e-10), while
+        V = c int dr / r (ideal dielectrics) is well conditioned; a general energy's V(c) is
+        monotone, solved by secant steps from c of (*)."""
+        c0 = float(self.charge_and_voltage(lam_i)[0][0])
+        delta = self.b * (self.outer_radius**2 - 1.0)
+        target = vbar * (self.outer_radius - 1.0)
+        if energy_kind(self.material) != "general":
+            return target / (0.5 * math.log1p(delta / lam_i**2))
+        return _secant(lambda c: self._voltage_of_charge(lam_i, c) - target, c0)
+
+    def _voltage_of_charge(self, lam_i: float, c: float) -> float:
+        """V = int E_r dr at lambda_i and charge c (a general energy's field)."""
+        _, stretches, d, wdr = self._quadrature(np.array([lam_i]), c * c)
+        return float((self.material.electric_field(*stretches, d) * wdr).sum(-1)[0])
+
+    def _hoop_or_nan(self, lam_i, q):
+        """hoop(lam_i, q)[0], NaN where the energy is not finite: a charge past what the
+        energy allows is no state (an electro-mechanical coupling that stiffens with I1 may
+        need a charge without bound as lambda_i nears the end of the branch), not the user's
+        input."""
+        try:
+            return self.hoop(lam_i, q)[0]
+        except ParameterError:
+            out = np.full(np.shape(lam_i), np.nan)
+            for j, (lam, qj) in enumerate(zip(lam_i, np.broadcast_to(q, np.shape(lam_i)))):
+                try:
+                    out[j] = self.hoop(np.array([lam]), qj)[0][0]
+                except ParameterError:
+                    pass
+            return out
+
     def _solve_q(self, lam_i, f_lo, q_hi, rtol):
-        """Illinois (modified regula falsi) for hoop(lam_i, q) = 0 in q = c^2, given f(0) >= 0."""
+        """q = c^2 solving hoop(lam_i, q) = 0, given f(0) >= 0: q doubled until f <= 0, then
+        Illinois; NaN where no charge within the energy's domain balances the traction."""
         q_lo, q_hi = np.zeros_like(q_hi), np.maximum(q_hi, 1e-300)
-        f_hi = self.hoop(lam_i, q_hi)[0]
+        f_hi = self._hoop_or_nan(lam_i, q_hi)
         for _ in range(200):  # expand until f(q_hi) <= 0
             up = f_hi > 0
             if not up.any():
                 break
             q_lo, f_lo = np.where(up, q_hi, q_lo), np.where(up, f_hi, f_lo)
             q_hi = np.where(up, 2.0 * q_hi, q_hi)
-            f_hi = self.hoop(lam_i, q_hi)[0]
+            f_hi = self._hoop_or_nan(lam_i, q_hi)
+        q, live = np.full(q_hi.shape, np.nan), f_hi <= 0
+        if live.any():
+            q[live] = self._illinois(
+                lam_i[live], q_lo[live], f_lo[live], q_hi[live], f_hi[live], rtol
+            )
+        return q
+
+    def _illinois(self, lam_i, q_lo, f_lo, q_hi, f_hi, rtol):
+        """Illinois (modified regula falsi) for hoop(lam_i, q) = 0 on [q_lo, q_hi]."""
         side = np.zeros(q_hi.shape, int)
         for _ in range(100):
             q = np.where(f_hi == f_lo, q_hi, (q_lo * f_hi - q_hi * f_lo) / (f_hi - f_lo))
@@ -171,6 +216,21 @@ class UniformWall:
             q_lo, f_lo = np.where(hi, q_lo, q), np.where(hi, f_lo, f)
             side = np.where(hi, 1, -1)
         raise ConvergenceError(f"charge c not converged at lambda_i = {lam_i[~done][0]!r}")
+
+
+def _secant(f, x0: float) -> float:
+    """The root of a monotone f near x0 by secant steps, to rounding (x0 if f does not
+    change: a step that would not move it)."""
+    x1 = x0 * (1.0 + 1e-7) if x0 else 1e-7
+    f0, f1 = f(x0), f(x1)
+    for _ in range(30):
+        if f1 == f0:
+            break
+        x0, x1, f0 = x1, x1 - f1 * (x1 - x0) / (f1 - f0), f1
+        f1 = f(x1)
+        if abs(x1 - x0) <= 4.0 * np.finfo(float).eps * abs(x1):
+            break
+    return x1
 
 
 @dataclasses.dataclass(frozen=True)
@@ -267,11 +327,12 @@ def _threshold(material, outer_radius, growth, stretch, rtol) -> _Threshold:
     if not rises.all():
         raise ConvergenceError(f"Vbar(lambda_i) does not rise from lambda_i0 = {lam0:.12g}")
     out = dict(lambda_i0=lam0, error=0.0, nodes=nodes, grid=lam[:end], values=v[:end])
-    if end < v.size:  # the energy ends (e.g. Gent): locate the locking stretch
+    if end < v.size:  # the branch ends: Gent's locking stretch, or where the charge
+        # that balances the traction leaves the energy's domain (a coupling stiffening with I1)
         a, b = lam[end - 1], lam[end]
-        while b - a > 1e-14 * b:  # 64-section of the domain's edge
+        while b - a > 1e-14 * b:  # 64-section of the branch's end
             x = np.linspace(a, b, 65)
-            j = np.argmin(tube.in_domain(x)) - 1
+            j = np.argmin(np.isfinite(tube.voltage(x))) - 1
             a, b = x[j], x[j + 1]
         return _Threshold(value=math.inf, kind="none", lambda_i=a, **out)
     # Richardson: Vbar = V_inf + a x^p + b x^(p+1) + ..., x = lambda_i^-2 (p = 2 for nH, MR)
@@ -316,64 +377,3 @@ def _limit_point(tube: UniformWall, lam0: float, lam: np.ndarray, v: np.ndarray)
 
 def threshold_info(params, rtol: float = 1e-12) -> _Threshold:
     return _threshold(params.material, params.outer_radius, params.growth, params.stretch, rtol)
-
-
-# -- the ideal neo-Hookean tube in closed form (docs eqs. NH-3, NH-5, NH-6) --------------------
-
-
-def nh_asymptote(outer_radius: float, growth: float, stretch: float) -> float:
-    """Vbar_inf = g^2 / (lambda_z (Rbar_o - 1)) sqrt((Rbar_o^2 - 1) ln(Rbar_o) / 2)   (NH-5)."""
-    Ro = outer_radius
-    return growth**2 / (stretch * (Ro - 1.0)) * math.sqrt((Ro**2 - 1.0) * math.log(Ro) / 2.0)
-
-
-def nh_traction(y: float, k: float) -> float:
-    """m = (lambda_z / g) M = ln(lambda_i / lambda_o) + b (lambda_o^-2 - lambda_i^-2) / 2 of (NH-6)
-    at y = (lambda_i0 / lambda_i)^2 >= 0, k = Rbar_o^2 - 1: [log1p(kappa) + y kappa] / 2, free of
-    cancellation, exactly 0 at y = 1 (lambda_i0) and strictly decreasing in y."""
-    kappa = k * (1.0 - y) / (1.0 + k * y)  # (lambda_i / lambda_o)^2 - 1
-    return 0.5 * (math.log1p(kappa) + y * kappa)
-
-
-def nh_square(y: float, k: float) -> float:
-    """(Vbar / Vbar_inf)^2 = (s / sinh s)^2 m / ln Rbar_o of (NH-6), signed like m (negative
-    below lambda_i0), analytic in y, exactly 1 at y = 0; s = log1p(k y) / 2 = ln(r_o / r_i)."""
-    s = 0.5 * math.log1p(k * y)
-    damp = s / math.sinh(s) if s > 0.0 else 1.0
-    return 2.0 * nh_traction(y, k) / math.log1p(k) * damp * damp
-
-
-def nh_voltage(outer_radius: float, growth: float, stretch: float, lam_i) -> np.ndarray:
-    """Vbar(lambda_i) by (NH-6), vectorised; signed (negative below lambda_i0)."""
-    y = (growth**3 / stretch) / np.asarray(lam_i, float) ** 2
-    ratio = np.vectorize(nh_square, otypes=[float])(y, outer_radius**2 - 1.0)
-    return nh_asymptote(outer_radius, growth, stretch) * np.sign(ratio) * np.sqrt(abs(ratio))
-
-
-def nh_lambda_i(outer_radius: float, growth: float, stretch: float, ratio: float) -> float:
-    """lambda_i with Vbar = ratio Vbar_inf, 0 <= ratio < 1. (NH-6) falls strictly from 1 at y = 0
-    to 0 at y = 1 (docs), so brentq on [0, 1] holds the one root, to 4e-16 relative in y. The
-    result is backward stable (Vbar(lambda_i) = Vbar to rounding); near the asymptote lambda_i
-    is ill-conditioned (relative condition number ~ 1 / (4 (1 - ratio))), where (NH-6) is flat
-    at rounding level and brentq falls back to bisection: up to ~120 iterations, hence maxiter."""
-    lam0 = math.sqrt(growth**3 / stretch)
-    if ratio == 0.0:
-        return lam0
-    k, target = outer_radius**2 - 1.0, ratio * ratio
-    root = _compiled_root()
-    y, ok = (math.nan, False) if root is None else root(k, target, 1e-300, _RTOL_MIN, 500)
-    if not ok:  # Python's brentq: before numba is loaded, and for its error where it fails
-        y = brentq(
-            lambda y: nh_square(y, k) - target, 0.0, 1.0, xtol=1e-300, rtol=_RTOL_MIN, maxiter=500
-        )
-    return lam0 / math.sqrt(y)
-
-
-def _compiled_root():
-    """nh_root_kernel.nh_root (the same root, compiled) once the compiled kernels have
-    loaded numba, else None: a base state alone (the ``state`` command) never imports it."""
-    if "numba" not in sys.modules:
-        return None
-    from .nh_root_kernel import nh_root
-
-    return nh_root
