@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from electrogrowth import Tube, solve_base_state
+from electrogrowth import Layer, Tube, solve_base_state
 from electrogrowth.cli.app import main
 from electrogrowth.model.energy_text import energy_material
 
@@ -71,3 +71,14 @@ def test_the_branch_ends_inside_the_domain():
 def test_command_line_state(capsys):
     code = main(["state", "--energy", TEXT, "--voltage", "0.3", "--outer-radius", "1.6"])
     assert code == 0, capsys.readouterr().err
+
+
+@pytest.mark.filterwarnings("error::RuntimeWarning")
+@pytest.mark.parametrize("voltage", [0.3, 3.0])
+def test_split_into_two_identical_layers(voltage):
+    # the layered solver's charge search meets the same end of the branch (quietly: its
+    # probes past it are NaN, not warnings)
+    split = Tube((Layer(1.3, MATERIAL), Layer(1.6, MATERIAL)), length=1.0, voltage=voltage)
+    whole = Tube.uniform(1.6, 1.0, material=MATERIAL, voltage=voltage)
+    a, b = solve_base_state(split), solve_base_state(whole)
+    assert a.lambda_i == pytest.approx(b.lambda_i, rel=1e-13)

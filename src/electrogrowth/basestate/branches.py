@@ -85,8 +85,9 @@ class Branch:
             if up.any():
                 ri, l, f0u = r_i[up], lz[up], f0[up]
 
-                def f(q):
-                    T, s, _, _ = wall.integrals(ri, l, np.sqrt(q))
+                def f(q):  # q NaN where no charge balances the traction: no state there
+                    with np.errstate(invalid="ignore"):
+                        T, s, _, _ = wall.integrals(ri, l, np.sqrt(q))
                     return T - self.dp, s
 
                 hi = 2.0 * f0u / Q[up]
@@ -98,7 +99,8 @@ class Branch:
                     hi = np.where(more, 2.0 * hi, hi)
                     fhi = f(hi)[0]
                 q[up] = illinois(f, np.zeros_like(hi), hi, f0u, fhi)
-            return np.where(np.isfinite(M), np.sqrt(q), np.nan)
+            with np.errstate(invalid="ignore"):
+                return np.where(np.isfinite(M), np.sqrt(q), np.nan)
         target = self.vbar * thick
         if target == 0:
             return np.where(np.isfinite(M), 0.0, np.nan)
