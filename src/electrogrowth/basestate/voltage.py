@@ -330,9 +330,12 @@ def _threshold(material, outer_radius, growth, stretch, rtol) -> _Threshold:
     if end < v.size:  # the branch ends: Gent's locking stretch, or where the charge
         # that balances the traction leaves the energy's domain (a coupling stiffening with I1)
         a, b = lam[end - 1], lam[end]
+        exists = tube.in_domain  # the energy's edge (cheap), else the charge's
+        if exists(np.array([b]))[0]:
+            exists = lambda x: np.isfinite(tube.voltage(x))  # noqa: E731
         while b - a > 1e-14 * b:  # 64-section of the branch's end
             x = np.linspace(a, b, 65)
-            j = np.argmin(np.isfinite(tube.voltage(x))) - 1
+            j = np.argmin(exists(x)) - 1
             a, b = x[j], x[j + 1]
         return _Threshold(value=math.inf, kind="none", lambda_i=a, **out)
     # Richardson: Vbar = V_inf + a x^p + b x^(p+1) + ..., x = lambda_i^-2 (p = 2 for nH, MR)
