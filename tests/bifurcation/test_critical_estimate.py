@@ -47,25 +47,38 @@ def faulty_targets(windows):
     return targets_for
 
 
+@pytest.fixture
+def faults(monkeypatch):
+    """faults(windows): the targets of critical_value with the sign faults of ``windows``
+    (the second resolution of rtol is the target at 100 rtol, as for the impedance kernel)."""
+
+    def inject(windows):
+        faulty = faulty_targets(windows)
+        monkeypatch.setattr(critical, "targets_for", faulty)
+        monkeypatch.setattr(critical, "coarse_targets_for", lambda m, r: faulty(m, 100.0 * r))
+
+    return inject
+
+
 def test_true_root_is_outside_the_fault_windows():
     assert TRUE.status == Status.OK and TRUE.value > 1.3 + 0.1
 
 
-def test_a_wrong_root_is_refined_at_a_tighter_rtol(monkeypatch):
+def test_a_wrong_root_is_refined_at_a_tighter_rtol(faults):
     """The march's signs and the fine target see a spurious sign change, the coarse one does
     not: the estimate (the distance to the coarse root) is large, so the value is solved
     again at 1e-14, which finds the true root (whose coarse root, at 1e-12, agrees)."""
-    monkeypatch.setattr(critical, "targets_for", faulty_targets(MARCH | FINE))
+    faults(MARCH | FINE)
     cp = critical_value(PARAMS, *MODE, "growth")
     assert cp.status == Status.OK
     assert cp.value == pytest.approx(TRUE.value, rel=1e-11)
 
 
-def test_a_value_that_stays_wrong_is_flagged(monkeypatch):
+def test_a_value_that_stays_wrong_is_flagged(faults):
     """Every tolerance but the coarse one sees a spurious root, each elsewhere: the refined
     value is spurious too, and returned with status INACCURATE and an estimate beyond the
     accuracy asked."""
-    monkeypatch.setattr(critical, "targets_for", faulty_targets(MARCH | FINE | TIGHT))
+    faults(MARCH | FINE | TIGHT)
     cp = critical_value(PARAMS, *MODE, "growth")
     assert cp.value == pytest.approx(1.06, abs=1e-9)
     assert cp.status == Status.INACCURATE

@@ -37,8 +37,10 @@ from ..errors import ConvergenceError, NoBifurcationFound, Remedy
 from ..incremental.accuracy import CERTIFIED, RTOL_RANGE, STABLE_SIGN, Accuracy
 from ..incremental.targets import (
     Family,
+    Method,
     check_method,
     check_mode,
+    coarse_targets_for,
     natural_family,
     targets_for,
     with_family,
@@ -216,7 +218,7 @@ def _solve(params, m, n, solve_for, fam, side, method, rtol, bracket) -> Critica
     """One solve of :func:`critical_value` at ``rtol`` (checked arguments)."""
     mode = with_family(m, n, fam)
     acc = Accuracy(rtol)
-    fine, coarse = targets_for(method, acc.fine), targets_for(method, acc.coarse)
+    fine, coarse = targets_for(method, acc.fine), coarse_targets_for(method, acc.fine)
     sref = stable_sign(m, n, params, method, family=fam)
     at = TubeAt(params, solve_for)
     g = SignedMode(at, fine, mode, sref)  # the target along the control, stable > 0
@@ -260,15 +262,19 @@ def _solve(params, m, n, solve_for, fam, side, method, rtol, bracket) -> Critica
                 family=fam,
             )
         value = res.found[0].value
+    path = control_path(params, solve_for, side)[:2]
+    estimate = _second_resolution(SignedMode(at, coarse, mode, sref), value, path)
+    if check_method(method) is Method.COLLOCATION:
+        # two resolutions of collocation share its determinant's rounding, flat over ~1e-10
+        # about the root: its own secant there is how far the value may be from that root
+        estimate = max(estimate, _secant_estimate(Remembered(g), value, path) or 0.0)
     return CriticalPoint(
         solve_for,
         value,
         int(m),
         int(n),
         Kind.BIFURCATION,
-        _second_resolution(
-            SignedMode(at, coarse, mode, sref), value, control_path(params, solve_for, side)[:2]
-        ),
+        estimate,
         method,
         side,
         params.at(solve_for, value),

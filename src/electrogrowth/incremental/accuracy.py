@@ -8,10 +8,13 @@ name                   value                              why
 =====================  =================================  =========================================
 ``fine``               rtol                               the kernel's local tolerance at the root
 ``coarse``             100 rtol                           a second resolution: the error estimate
+                                                          (collocation: 3/4 of the fine nodes,
+                                                          targets.coarser)
 ``march_signs``        max(rtol, 1e-8)                    one mode's march only needs signs
 ``table``              min(1e-9, max(1e-15, 1e-4 rtol))   Chebyshev tables a little finer than the
                                                           integration, never below round-off
-``collocation_nodes``  40 if rtol >= 1e-11 else 56        the spectral method's resolution
+``collocation_nodes``  40 (rtol >= 1e-11), 56 (>= 1e-13),  the spectral method's resolution
+                       else 72                            (more where a mode needs them)
 ``STABLE_SIGN``        1e-10                              sign of one mode on the unloaded tube
 ``SCAN_SIGNS``         1e-5                               signs of every mode along a scan's march
                                                           (no sign error seen at 1e-4)
@@ -66,7 +69,8 @@ class Accuracy:
 
     @property
     def collocation_nodes(self) -> int:
-        return 40 if self.rtol >= 1e-11 else 56
+        # rtol / 100, the critical value's refinement, must refine collocation too
+        return 40 if self.rtol >= 1e-11 else 56 if self.rtol >= 1e-13 else 72
 
     @property
     def runners_up(self) -> float:

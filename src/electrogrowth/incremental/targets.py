@@ -172,23 +172,26 @@ class ImpedanceTarget:
 @dataclasses.dataclass(frozen=True)
 class CollocationTarget:
     """The collocation target f(state, modes), mode by mode, at Accuracy(rtol)'s nodes or
-    more for a mode whose decay through the wall needs them (:func:`resolving_nodes`)."""
+    more for a mode whose decay through the wall needs them (:func:`resolving_nodes`);
+    ``coarse``: at 3/4 of those nodes (:func:`coarse_targets_for`)."""
 
     rtol: float = 1e-12
+    coarse: bool = False
 
     def __call__(self, state, modes) -> np.ndarray:
-        nodes = Accuracy(self.rtol).collocation_nodes
         modes = np.atleast_2d(np.asarray(modes, dtype=float))
         return np.array(
             [
-                collocation_targets(state, row[None], nodes=max(nodes, self._nodes(state, row)))[0]
+                collocation_targets(state, row[None], nodes=self._nodes(state, row))[0]
                 for row in modes
             ]
         )
 
     def _nodes(self, state, row) -> int:
         """The nodes resolving the mode of ``row`` (m, n[, code]) at this rtol."""
-        return resolving_nodes(state, row[0], row[1], self.rtol)
+        nodes = Accuracy(self.rtol).collocation_nodes
+        nodes = max(nodes, resolving_nodes(state, row[0], row[1], self.rtol))
+        return 3 * nodes // 4 if self.coarse else nodes
 
 
 #: targets(state, modes (k, 2) or (k, 3) array) -> (k,) array of target values
@@ -201,6 +204,17 @@ def targets_for(method: str, rtol: float) -> Target:
     if check_method(method) is Method.IMPEDANCE:
         return ImpedanceTarget(rtol)
     return CollocationTarget(rtol)
+
+
+def coarse_targets_for(method: str, rtol: float) -> Target:
+    """The second resolution of ``targets_for(method, rtol)``, whose root's distance from that
+    target's root is the error estimate of a critical value: the impedance kernel at 100 rtol,
+    collocation at 3/4 of its nodes. Collocation at 100 rtol could take the same nodes (the
+    floor of Accuracy.collocation_nodes or a mode's resolving nodes): the "error estimate" of
+    a film 1e4 times as stiff was then Brent's tolerance, 2e-10 for a value 2e-6 off, OK."""
+    if check_method(method) is Method.IMPEDANCE:
+        return ImpedanceTarget(100.0 * rtol)
+    return CollocationTarget(rtol, coarse=True)
 
 
 def collocation_stable_signs(tube, modes) -> np.ndarray:
