@@ -161,3 +161,16 @@ def test_scales_force_and_given_length():
     assert s.given_length == 0.0  # none given
     _, scales = tube_from_quantities("2 mm", "2.8 mm", shear_modulus="100 kPa", length="1 cm")
     assert scales.given_length == pytest.approx(0.01, rel=1e-15)
+
+
+def test_physical_line_breaks_between_entries_only():
+    from electrogrowth.cli.report import physical_line
+
+    physical = {f"quantity_{k}": [12345.6789 * k, "kPa"] for k in range(1, 9)}
+    lines = physical_line(physical)
+    assert len(lines) > 1 and all(len(line) <= 95 for line in lines)
+    entries = ", ".join(line.strip() for line in lines).removeprefix("in physical units: ")
+    # each "name = value unit" whole on one line, the entries in order
+    assert entries.replace(",,", ",").split(", ") == [
+        f"quantity_{k} = {12345.6789 * k:.6g} kPa" for k in range(1, 9)
+    ]

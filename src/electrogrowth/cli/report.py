@@ -109,9 +109,11 @@ def physical_line(physical: dict) -> list[str]:
     """One text line of a :func:`physical_record` (none when it is empty)."""
     if not physical:
         return []
-    parts = [f"{key} = {value:.6g} {unit}" for key, (value, unit) in physical.items()]
+    # no-break spaces inside "name = value unit": a line break falls between the entries
+    parts = [f"{key}\xa0=\xa0{value:.6g}\xa0{unit}" for key, (value, unit) in physical.items()]
     text = "in physical units: " + ", ".join(parts)
-    return textwrap.wrap(text, 95, initial_indent="  ", subsequent_indent="    ")
+    lines = textwrap.wrap(text, 95, initial_indent="  ", subsequent_indent="    ")
+    return [line.replace("\xa0", " ") for line in lines]
 
 
 def edge_warning(result) -> str:
