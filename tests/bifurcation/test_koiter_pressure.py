@@ -27,6 +27,7 @@ from electrogrowth.bifurcation.koiter_tube import (
     axisymmetric_expansion,
     tube_expansion,
 )
+from electrogrowth.errors import ParameterError
 from electrogrowth.incremental.dielectric_forms import DielectricForms
 from electrogrowth.incremental.meridian_forms import MeridianForms
 from electrogrowth.incremental.polar_forms import rings
@@ -139,6 +140,19 @@ def test_no_pressure_is_the_wall_coefficient(family):
     else:
         wall = axisymmetric_expansion(tube, mode[1], control, nodes=16)
     assert loaded.coefficient == pytest.approx(wall.coefficient, rel=1e-12)
+
+
+@pytest.mark.parametrize("family", ["prismatic", "axisymmetric"])
+def test_the_wall_expansion_refuses_face_pressures(family):
+    """koiter_tube's forms are the wall's alone: with a face pressure they would give the
+    coefficient of another load (found by probing: 4.801 at P = 0.1 on both faces, where the
+    loaded expansion gives the unpressurised 4.386)."""
+    tube, mode, control, _, _ = CASES[f"load-{family}"]
+    with pytest.raises(ParameterError, match="leaves out the face pressures"):
+        if mode[1] == 0:
+            tube_expansion(tube, mode[0], control, nodes=12)
+        else:
+            axisymmetric_expansion(tube, mode[1], control, nodes=12)
 
 
 @pytest.mark.parametrize("family", ["prismatic", "axisymmetric"])

@@ -15,7 +15,7 @@ import math
 import numpy as np
 
 from ..basestate.tube import solve_base_state
-from ..errors import ConvergenceError, NoBifurcationFound
+from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
 from ..incremental.dielectric_forms import DielectricForms
 from ..incremental.meridian_forms import MeridianForms
 from ..incremental.polar_forms import PolarForms, rings
@@ -135,7 +135,17 @@ def dielectric_expansion(
 def expand(tube, control, first, second, start, what) -> TubeExpansion:
     """c_2 = (2 A[psi, psi] - 4 E4(phi)) / A'[phi, phi] on monomial forms: the critical
     value refined where A(c) is singular, the mode scaled to max |u_r| = 1, the correction
-    A psi = -C[phi, phi, .] / 2 = -grad E3(phi) on ``second``'s harmonics."""
+    A psi = -C[phi, phi, .] / 2 = -grad E3(phi) on ``second``'s harmonics.
+
+    The forms are the wall's alone: a face pressure (a follower load) would be left out,
+    so a pressurised tube or the pressure control is refused here (koiter_loads.py holds
+    their expansion; koiter.koiter_coefficient picks it)."""
+    if tube.inner_pressure != 0 or tube.outer_pressure != 0 or control == "pressure":
+        raise ParameterError(
+            f"the expansion of the wall alone leaves out the face pressures (P_i ="
+            f" {tube.inner_pressure:g}, P_o = {tube.outer_pressure:g}, control {control}):"
+            " use koiter_coefficient, which includes them"
+        )
 
     def A(c):
         return first.stiffness(solve_base_state(tube.at(control, c)))
