@@ -217,7 +217,7 @@ def test_search_logic_on_a_synthetic_row(monkeypatch, centre):
     best inside a bracket or at either end): the exhaustive minimum over [64, 2000]."""
     from electrogrowth.bifurcation import msearch
 
-    def first(params, solve_for, side, rows, rtol, ms, only=None):
+    def first(params, solve_for, side, rows, rtol, ms, only=None, **kw):
         ordered = sorted(ms, key=lambda m: (m - centre) ** 2)
         return [ModeValue(m, 0, 1 + (m - centre) ** 2) for m in ordered[:3]]
 
@@ -225,3 +225,26 @@ def test_search_logic_on_a_synthetic_row(monkeypatch, centre):
     found = search_m(None, THETA, None, PRISMATIC, 64, 2000, RTOL)
     exact = min(range(64, 2001), key=lambda m: (m - centre) ** 2)
     assert found.best.m == exact and found.at_cap == (exact == 2000)
+
+
+@pytest.mark.parametrize("centre", [240.3, 365.4, 1999.2])
+@pytest.mark.parametrize("top", [1, 5])
+def test_search_along_n_and_its_neighbours(monkeypatch, centre, top):
+    """The same search along n (rows of fixed m), and the top - 1 integers either side of
+    the best all marched: the runners-up are the true neighbours, not the bracket's samples."""
+    from electrogrowth.bifurcation import msearch
+
+    marched = []
+
+    def first(params, solve_for, side, rows, rtol, ks, only=None, *, axis="m", top=3):
+        assert axis == "n"
+        marched.extend(ks)
+        ordered = sorted(ks, key=lambda n: (n - centre) ** 2)
+        return [ModeValue(0, n, 1 + (n - centre) ** 2) for n in ordered[:top]]
+
+    monkeypatch.setattr(msearch, "_first", first)
+    found = msearch.search_n(None, THETA, None, [(0, 1)], 240, 2000, RTOL, top)
+    ranked = sorted(range(240, 2001), key=lambda n: (n - centre) ** 2)
+    assert found.best.n == ranked[0] and found.at_cap == (ranked[0] == 2000)
+    assert [v.n for v in found.found[:top]] == ranked[:top]
+    assert len(marched) < 60  # coarse-to-fine, not every n

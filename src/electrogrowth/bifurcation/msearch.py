@@ -1,4 +1,4 @@
-"""The best circumferential wavenumber m beyond the every-m scan: a coarse-to-fine search.
+"""The best wavenumber m (or n) beyond the mode-by-mode scan: a coarse-to-fine search.
 
 A thin stiff film on a soft wall folds at a finite m of tens to hundreds (a flat film's
 wavelength 2 pi R / m ~ 2 pi h (mu_f / 3 mu_s)^(1/3), docs/derivation-film.md), far beyond
@@ -18,6 +18,11 @@ roots that decide are finished at the scan's own rtol, so neighbouring m (whose 
 values differ by ~ (g - 1) / m^2 near the minimum) are ordered correctly. Small m, where
 modes are irregular (the value jumps between neighbours and families), stay with the
 every-m scan of scan.py.
+
+The same search runs along n (:func:`search_n`, rows of fixed m): a long tube lined with a
+film that grows isotropically folds into rings (0, n) of the flat film's wavelength, n ~
+hundreds, beyond the n range's doublings. The integers next to the best are all marched
+(``top - 1`` either side), so the runners-up of a searched optimum are its true neighbours.
 """
 
 from __future__ import annotations
@@ -65,17 +70,31 @@ def refine_samples(lo: int, hi: int) -> list[int]:
 
 
 def search_m(
-    params, solve_for: str, side, rows, m_edge: int, m_cap: int, rtol: float
+    params, solve_for: str, side, rows, edge: int, cap: int, rtol: float, top: int = 1
 ) -> SearchResult:
-    """The best m in [m_edge, m_cap] of the family rows ``rows`` ((n, family code) pairs),
-    by geometric sampling and refinement (module docstring); NoBifurcationFound if none of
-    the samples bifurcates before the end of the march."""
-    march = functools.partial(_first, params, solve_for, side, rows, rtol)
-    samples = geometric_samples(m_edge, m_cap)
+    """The best m in [edge, cap] of the family rows ``rows`` ((n, family code) pairs),
+    by geometric sampling and refinement (module docstring), with the ``top - 1`` integers
+    either side of it marched too; NoBifurcationFound if none of the samples bifurcates
+    before the end of the march."""
+    return _search(params, solve_for, side, rows, (edge, cap), rtol, top, "m")
+
+
+def search_n(
+    params, solve_for: str, side, rows, edge: int, cap: int, rtol: float, top: int = 1
+) -> SearchResult:
+    """:func:`search_m` along n: the best n in [edge, cap] of the rows ``rows`` ((m, family
+    code) pairs)."""
+    return _search(params, solve_for, side, rows, (edge, cap), rtol, top, "n")
+
+
+def _search(params, solve_for, side, rows, span, rtol, top, axis) -> SearchResult:
+    edge, cap = span
+    march = functools.partial(_first, params, solve_for, side, rows, rtol, axis=axis)
+    samples = geometric_samples(edge, cap)
     seen = list(march(samples))
     best = seen[0]
-    row = [(best.n, _code(best))]
-    lo, hi = _neighbours(samples, best.m)
+    row = [(_fixed(best, axis), _code(best))]
+    lo, hi = _neighbours(samples, _index(best, axis))
     while hi - lo > 1:  # (at the cap too: the minimum may lie just below it)
         inner = refine_samples(lo, hi)
         complete = len(inner) == hi - lo - 1  # every integer of the bracket is marched
@@ -86,18 +105,39 @@ def search_m(
         seen += got
         if _earlier(got[0], best, side):
             best = got[0]
-        lo, hi = _neighbours([lo, *inner, best.m, hi], best.m)
+        lo, hi = _neighbours([lo, *inner, _index(best, axis), hi], _index(best, axis))
         if complete:
             break
+    seen += _neighbourhood(march, row, seen, best, span, top, axis)
     key = {(v.m, v.n, v.family): v for v in seen}
     ordered = sorted(key.values(), key=lambda v: _sense(side) * v.value)
-    return SearchResult(best, tuple(ordered), best.m == m_cap)
+    return SearchResult(best, tuple(ordered), _index(best, axis) == cap)
 
 
-def _first(params, solve_for, side, rows, rtol, ms, only=None) -> list[ModeValue]:
-    """The first modes to bifurcate among m in ``ms`` of the rows (``only`` rows instead,
-    if given), finished at ``rtol``; NoBifurcationFound if none does."""
-    modes = np.array([(m, n, code) for m in ms for n, code in (only or rows)], float)
+def _neighbourhood(march, row, seen, best, span, top, axis) -> list[ModeValue]:
+    """The integers within top - 1 of the best on its row that the refinement skipped (a
+    bracket's samples are spaced), marched so that the runners-up are the next modes."""
+    at = _index(best, axis)
+    done = {_index(v, axis) for v in seen if (_fixed(v, axis), _code(v)) == row[0]}
+    near = range(max(span[0], at - top + 1), min(span[1], at + top - 1) + 1)
+    todo = [k for k in near if k not in done]
+    if not todo:
+        return []
+    try:
+        return list(march(todo, row, top=len(todo)))
+    except NoBifurcationFound:
+        return []
+
+
+def _first(params, solve_for, side, rows, rtol, ks, only=None, *, axis="m", top=3):
+    """The first ``top`` modes to bifurcate among index k in ``ks`` (m or n, ``axis``) of the
+    rows (``only`` rows instead, if given), finished at ``rtol``; NoBifurcationFound if none
+    does."""
+    pairs = only or rows
+    if axis == "m":
+        modes = np.array([(k, n, code) for k in ks for n, code in pairs], float)
+    else:
+        modes = np.array([(m, k, code) for k in ks for m, code in pairs], float)
     loose = ImpedanceTarget(SCAN_SIGNS)
     fine = ImpedanceTarget(rtol)
     stable = ImpedanceTarget(SCAN_STABLE_SIGNS)
@@ -107,12 +147,12 @@ def _first(params, solve_for, side, rows, rtol, ms, only=None) -> list[ModeValue
         side,
         modes,
         loose,
-        top=3,
+        top=top,
         brent_targets=fine,
         stable_signs=_stable(modes, stable),
     )
     if not res.found:
-        raise NoBifurcationFound(f"no mode with m in {ms[0]}..{ms[-1]} bifurcates")
+        raise NoBifurcationFound(f"no mode with {axis} in {ks[0]}..{ks[-1]} bifurcates")
     return res.found
 
 
@@ -122,6 +162,16 @@ def _stable(modes, targets):
 
 def _code(v: ModeValue) -> int:
     return Family(v.family).code
+
+
+def _index(v: ModeValue, axis: str) -> int:
+    """The searched wavenumber of v: m or n."""
+    return v.m if axis == "m" else v.n
+
+
+def _fixed(v: ModeValue, axis: str) -> int:
+    """The wavenumber of v's row, fixed in the search: n or m."""
+    return v.n if axis == "m" else v.m
 
 
 def _neighbours(ms, m) -> tuple[int, int]:

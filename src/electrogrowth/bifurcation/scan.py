@@ -39,7 +39,7 @@ from ..outcomes import NO_MODE, Kind
 from .critical import CriticalPoint, critical_value, no_bifurcation_remedy
 from .directions import past_surface
 from .march import ModeValue, first_bifurcations
-from .msearch import search_m
+from .msearch import search_m, search_n
 from .options import EVERY_M, M_CAP, N_CAP, ScanOptions
 from .options import TOP_MAX as TOP_MAX  # re-exported: the CLI checks --top against it
 from .problem import Problem, as_problem
@@ -148,8 +148,17 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
         limit = limit or short_wave_limit(params, solve_for, side=side, rtol=rtol, until=c.value)
         return limit.kind == Kind.SURFACE and (limit.value - c.value) * sense < 0
 
-    def search(result, m_top=M_CAP):
-        return _searched(params, solve_for, side, result, options, rtol, m_top)
+    def search(result, m_top=M_CAP, axis="m"):
+        return _searched(params, solve_for, side, result, options, rtol, m_top, axis)
+
+    def search_beyond(result, beyond):
+        """Searched along n, then m, from the edges the doublings left the optimum on."""
+        at_n = at_m = False
+        if beyond["n"]:
+            result, at_n = search(result, N_CAP, "n")
+        if beyond["m"]:
+            result, at_m = search(result)
+        return result, at_n or at_m
 
     while True:
         families = (options.prismatic, options.torsional)
@@ -175,13 +184,16 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
             "m": edge["m"] and m_range[1] < EVERY_M and grown["m"] < DOUBLINGS,
             "n": edge["n"] and n_range[1] < N_CAP and grown["n"] < DOUBLINGS,
         }
-        beyond = extend and edge["m"] and not grow["m"] and m_range[1] < M_CAP
-        if not extend or not (any(grow.values()) or beyond):
+        beyond = {
+            "m": extend and edge["m"] and not grow["m"] and m_range[1] < M_CAP,
+            "n": extend and edge["n"] and not grow["n"] and n_range[1] < N_CAP,
+        }
+        if not extend or not (any(grow.values()) or any(beyond.values())):
             break
         if limit_first(c):
             return result, True, limit
-        if not any(grow.values()):  # only m is on its edge, past the every-m scan
-            return (*search(result), limit)
+        if not any(grow.values()):  # on an edge the doublings cannot widen: searched
+            return (*search_beyond(result, beyond), limit)
         if grow["m"]:
             m_range, grown["m"] = (m_range[0], min(2 * m_range[1] + 1, EVERY_M)), grown["m"] + 1
         if grow["n"]:
@@ -194,21 +206,33 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
     return result, at_cap, limit
 
 
-def _searched(params, solve_for, side, result: ScanResult, options: ScanOptions, rtol, m_top: int):
-    """``result`` merged with the coarse-to-fine search (msearch.py) of m from the scanned
-    edge up to ``m_top`` along the critical mode's family row, the prismatic row and the
-    wrinkles of the smallest n: the earlier of the two is the critical mode, the others
-    the runners-up; and whether the critical m is ``m_top`` (the edge of the search)."""
+def _searched(
+    params, solve_for, side, result: ScanResult, options: ScanOptions, rtol, top: int, axis="m"
+):
+    """``result`` merged with the coarse-to-fine search (msearch.py) of m (or n, ``axis``)
+    from the scanned edge up to ``top`` along the critical mode's family row and, for m, the
+    prismatic row and the wrinkles of the smallest n, for n, the modes of the smallest m
+    (axisymmetric rings at m = 0): the earlier of the two is the critical mode, the others
+    the runners-up; and whether the critical index is ``top`` (the edge of the search)."""
     c, sense = result.critical, -1.0 if side == "compression" else 1.0
-    rows = {(max(options.n_range[0], 1), Family.WRINKLE.code)}
-    if options.prismatic:
-        rows.add((0, Family.PRISMATIC.code))
-    if c.kind == Kind.BIFURCATION:
-        rows.add((c.n, Family(c.family).code))
+    if axis == "m":
+        rows = {(max(options.n_range[0], 1), Family.WRINKLE.code)}
+        if options.prismatic:
+            rows.add((0, Family.PRISMATIC.code))
+        if c.kind == Kind.BIFURCATION:
+            rows.add((c.n, Family(c.family).code))
+        searcher, edge = search_m, result.m_range[1]
+    else:
+        rows = {(options.m_range[0], Family.WRINKLE.code)}
+        if c.kind == Kind.BIFURCATION:
+            rows.add((c.m, Family(c.family).code))
+        searcher, edge = search_n, result.n_range[1]
+    ranges = {"m": result.m_range, "n": result.n_range}
+    ranges[axis] = (ranges[axis][0], top)
     try:
-        found = search_m(params, solve_for, side, sorted(rows), result.m_range[1], m_top, rtol)
-    except NoBifurcationFound:  # no m beyond the scan bifurcates first: the scan stands
-        return dataclasses.replace(result, m_range=(result.m_range[0], m_top)), False
+        found = searcher(params, solve_for, side, sorted(rows), edge, top, rtol, options.top)
+    except NoBifurcationFound:  # no mode beyond the scan bifurcates first: the scan stands
+        return dataclasses.replace(result, m_range=ranges["m"], n_range=ranges["n"]), False
     best, others = found.best, {(v.m, v.n, v.family): v for v in found.found}
     others.update({(v.m, v.n, v.family): v for v in result.runners_up})
     if c.kind == Kind.BIFURCATION:
@@ -219,9 +243,8 @@ def _searched(params, solve_for, side, result: ScanResult, options: ScanOptions,
         crit = _finished(params, solve_for, side, rtol, best)
     others.pop((crit.m, crit.n, crit.family), None)
     runners = sorted(others.values(), key=lambda v: sense * v.value)[: options.top - 1]
-    m_range = (result.m_range[0], m_top)
-    at_top = crit.kind == Kind.BIFURCATION and crit.m == m_top
-    return ScanResult(crit, tuple(runners), m_range, result.n_range), at_top
+    at_top = crit.kind == Kind.BIFURCATION and getattr(crit, axis) == top
+    return ScanResult(crit, tuple(runners), ranges["m"], ranges["n"]), at_top
 
 
 def _with_short_waves(

@@ -1,0 +1,32 @@
+"""A scan of a long tube lined with a thin stiff film that grows isotropically must not stop
+on the edge of its n range with a mode far later than the first.
+
+A neo-Hookean film [1, 1.0026] with shear modulus 8000 on a neo-Hookean substrate to
+Rbar_o = 2.7 (modulus 1), L = 30, lambda_z = 1, the film grows isotropically. The film is
+compressed along theta and z alike, and folds into axisymmetric rings of the flat film's
+wavelength: (0, n) with n near 38 L / pi = 363. Single modes (impedance, estimates 1e-13):
+(0, 363) 1.00257005, (0, 365) 1.00256996, (0, 366) 1.00257001; at L = 10 the scan
+itself finds (0, 122) at 1.00257001, the same ring wavelength.
+
+Found by probing: ``scan_modes(tube, "growth[1]")`` with the default options returned
+(12, 240) at g_cr = 1.00308214 with status OK, n_range (1, 240) and no warning: the n
+range was widened at most twice (30 -> probes -> 240), then the edge mode was reported
+although the growth strain g - 1 of the true first mode is 17 % lower. (The CLI prints an
+edge warning; the Python result says nothing.) A narrower start, n_range (1, 4), stopped
+the same way at (12, 32) for L = 3.8. Now an optimum left on the n edge by the doublings
+is searched coarse-to-fine along n (msearch.search_n), as m is beyond 64. About 15 s.
+"""
+
+import pytest
+
+from electrogrowth import Layer, Tube, critical_value, scan_modes
+
+LONG_FILM = Tube((Layer(1.0026, shear_modulus=8000.0), Layer(2.7)), length=30.0, stretch=1.0)
+
+
+@pytest.mark.slow
+def test_scan_finds_the_rings_of_a_long_film_lined_tube():
+    ring = critical_value(LONG_FILM, 0, 365, "growth[1]")
+    assert ring.value == pytest.approx(1.00256996, abs=1e-8)
+    scan = scan_modes(LONG_FILM, "growth[1]")
+    assert scan.critical.value <= ring.value + 1e-9
