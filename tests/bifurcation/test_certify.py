@@ -163,3 +163,23 @@ def test_the_cli_prints_what_a_surface_result_certified(capsys):
     out = capsys.readouterr().out
     assert "  certified: half-space value recomputed at rtol 1e-14" in out
     assert "the best finite mode (0, 24)" in out and "certified by collocation" in out
+
+
+def test_a_judge_that_missed_its_own_accuracy_says_so(monkeypatch):
+    """A disagreement where the second method returned INACCURATE names that method as the
+    one that could not resolve the mode, instead of only refusing the first."""
+    from electrogrowth.bifurcation import certify as certify_module
+    from electrogrowth.outcomes import Status
+
+    crit = critical_value(P, 0, 1, "growth")
+    real = certify_module.critical_value
+
+    def unresolved(*args, **kwargs):
+        c = real(*args, **kwargs)
+        return dataclasses.replace(
+            c, value=c.value * (1 + 1e-6), error_estimate=3e-6, status=Status.INACCURATE
+        )
+
+    monkeypatch.setattr(certify_module, "critical_value", unresolved)
+    with pytest.raises(ConvergenceError, match="collocation did not resolve this mode"):
+        certify(P, crit)

@@ -25,7 +25,7 @@ from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError, ParameterError
 from ..incremental.accuracy import CERTIFY_RTOL
 from ..incremental.targets import collocation_stable_signs, collocation_targets, impedance_targets
-from ..outcomes import Kind
+from ..outcomes import Kind, Status
 from .critical import critical_value
 from .march import control_path
 from .problem import Problem
@@ -149,10 +149,17 @@ def _other_method(params, crit, mode, value, error, rtol, method=None):
     )
     diff = abs(check.value - value) / abs(value)
     if diff > rtol:
+        # which one is off: the judge that did not meet its own accuracy says so
+        unresolved = (
+            f"; {other} did not resolve this mode to its tolerance (its own error estimate"
+            f" {check.error_estimate:.1e}), so it cannot judge {method} here"
+            if check.status is Status.INACCURATE
+            else ""
+        )
         raise ConvergenceError(
             f"not certified: {method} gives {value:.12g},"
             f" {other} gives {check.value:.12g} (relative difference"
-            f" {diff:.2e} > {rtol:g})"
+            f" {diff:.2e} > {rtol:g}){unresolved}"
         )
     return other, check.value, diff
 

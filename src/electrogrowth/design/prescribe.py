@@ -23,7 +23,7 @@ from __future__ import annotations
 import dataclasses
 import math
 
-from ..bifurcation.scan import ScanOptions, scan_modes
+from ..bifurcation.scan import TOP_MAX, ScanOptions, scan_modes
 from ..errors import ElectrogrowthError
 from ..outcomes import Kind
 from . import onset
@@ -38,6 +38,7 @@ NOT_FIRST = "not_first"  # never first in [lo, hi]: the closest design (M < 0)
 NOT_REACHED = "not_reached"  # no target mode among the modes scanned anywhere
 REFINE_ROUNDS = 3  # a competitor missed by the refinement is added, at most this often
 XTOL = 1e-9  # relative accuracy of the best design
+AHEAD = 6  # competitors ahead of the closest design's target mode that are kept
 
 
 @dataclasses.dataclass(frozen=True)
@@ -175,9 +176,10 @@ def prescribe(
     margins = Margins(tube, sequence.solve_for, key, side)
     scan_opts = dataclasses.replace(options, top=max(options.top, 6))
 
-    def scan(x):  # the modes in the order reached; none where the scan fails
+    def scan(x, top=None):  # the modes in the order reached; none where the scan fails
+        opts = scan_opts if top is None else dataclasses.replace(scan_opts, top=top)
         try:
-            res = scan_modes(tube.at(key, x), sequence.solve_for, side=side, options=scan_opts)
+            res = scan_modes(tube.at(key, x), sequence.solve_for, side=side, options=opts)
         except ElectrogrowthError:
             return []
         return _ranked(res)
@@ -301,10 +303,15 @@ def _closest(grid, goal: Target, margins: Margins, scan, lo, hi):
             if all(r[0] != mode for r in ranked) and math.isfinite(margins.value(mode, x)):
                 ranked.append((mode, margins.value(mode, x)))
         hits = [(mode, v) for mode, v in ranked if mode in goal]
+        if not hits and not goal.modes:  # a set's modes all come later: ranked further
+            ranked = scan(x, TOP_MAX)
+            hits = [(mode, v) for mode, v in ranked if mode in goal]
         if not hits:
             continue
         mode, v = min(hits, key=lambda h: margins.sense * h[1])
+        # the earliest competitors decide M < 0 (the first of them alone, the rest for _refine)
         ahead = tuple(m for m, w in ranked if m not in goal and margins.sense * (w - v) < 0)
+        ahead = ahead[:AHEAD]
         if ahead:
             scored.append((margins.best_margin(mode, ahead, x)[0], x, mode, ahead))
     if not scored:
