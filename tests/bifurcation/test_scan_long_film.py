@@ -30,3 +30,24 @@ def test_scan_finds_the_rings_of_a_long_film_lined_tube():
     assert ring.value == pytest.approx(1.00256996, abs=1e-8)
     scan = scan_modes(LONG_FILM, "growth[1]")
     assert scan.critical.value <= ring.value + 1e-9
+
+
+RINGED = Tube(
+    (Layer(1 + 0.001321202236311313, shear_modulus=2838.0775441531555), Layer(2.7009307115081107)),
+    length=12.0,
+    stretch=1.0,
+)
+
+
+@pytest.mark.slow
+def test_scan_finds_the_rings_of_a_long_film_lined_tube_under_axial_compression():
+    """The same under axial compression: a film 0.00132 thick, 2838 times stiffer, on a
+    substrate to 2.70, L = 12 (at L = 2.99 the scan finds the rings (0, 76) at
+    lambda_z = 0.99639111). Found by probing: the scan returned (0, 240) at 0.99617301, on
+    the edge of its n range, while (0, 306) buckles at 0.99639115, first (the strain
+    1 - lambda_z 6 % too large). About 15 s."""
+    ring = critical_value(RINGED, 0, 306, "stretch")
+    assert ring.value == pytest.approx(0.99639115, abs=1e-8)
+    scan = scan_modes(RINGED, "stretch")
+    assert (scan.critical.m, scan.critical.n) == (0, 306)
+    assert scan.critical.value == pytest.approx(ring.value, rel=1e-11)
