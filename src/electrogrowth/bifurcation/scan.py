@@ -31,15 +31,18 @@ from __future__ import annotations
 
 import dataclasses
 
-from ..errors import NoBifurcationFound
-from ..incremental.accuracy import SCAN_SIGNS, Accuracy
+import numpy as np
+
+from ..basestate.tube import solve_base_state
+from ..errors import ElectrogrowthError, NoBifurcationFound
+from ..incremental.accuracy import SCAN_SIGNS, SCAN_STABLE_SIGNS, Accuracy
 from ..incremental.targets import Family, ImpedanceTarget
 from ..model.layers import Tube
 from ..outcomes import NO_MODE, Kind
 from .critical import CriticalPoint, critical_value, no_bifurcation_remedy
 from .directions import past_surface
-from .march import ModeValue, first_bifurcations
-from .msearch import search_m, search_n
+from .march import SIGN_TUBE, ModeValue, first_bifurcations, unloaded_signs
+from .msearch import geometric_samples, search_m, search_n
 from .options import EVERY_M, M_CAP, N_CAP, ScanOptions
 from .options import TOP_MAX as TOP_MAX  # re-exported: the CLI checks --top against it
 from .problem import Problem, as_problem
@@ -148,6 +151,15 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
         limit = limit or short_wave_limit(params, solve_for, side=side, rtol=rtol, until=c.value)
         return limit.kind == Kind.SURFACE and (limit.value - c.value) * sense < 0
 
+    def limit_stands(result) -> tuple[ScanResult, bool]:
+        """The limit comes before the scanned modes; so it stands unless folds beyond the
+        scan (up to M_CAP) are unstable at it: a film folding beyond the scanned m lies
+        below its face's limit, then searched."""
+        assert limit is not None  # limit_first computed it
+        if not folds_before(params, solve_for, limit.value, options, m_range[1]):
+            return result, True
+        return search(result)
+
     def search(result, m_top=M_CAP, axis="m"):
         return _searched(params, solve_for, side, result, options, rtol, m_top, axis)
 
@@ -166,7 +178,7 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
         c = result.critical
         if probes and c.kind == Kind.BIFURCATION and (c.m > m_range[1] or c.n > n_range[1]):
             if limit_first(c):
-                return result, True, limit
+                return (*limit_stands(result), limit)
             if c.m > max(m_range[1], EVERY_M):  # a probe beyond the every-m scan wins
                 return (*search(result), limit)
             # a probe beyond the range wins: the optimum is a short wave, widen to it once
@@ -191,7 +203,7 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
         if not extend or not (any(grow.values()) or any(beyond.values())):
             break
         if limit_first(c):
-            return result, True, limit
+            return (*limit_stands(result), limit)
         if not any(grow.values()):  # on an edge the doublings cannot widen: searched
             return (*search_beyond(result, beyond), limit)
         if grow["m"]:
@@ -204,6 +216,24 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
         c = result.critical
         at_cap = m_cap or (extend and c.kind == Kind.BIFURCATION and c.n == n_range[1])
     return result, at_cap, limit
+
+
+def folds_before(params, solve_for, value, options: ScanOptions, m_edge: int) -> bool:
+    """Is a fold beyond the scanned m unstable at ``value`` (the short-wave limit)? Geometric
+    samples of m (msearch's) from the scan's edge to M_CAP on the prismatic row and the
+    wrinkles of the smallest n, their targets at that one state against their signs on the
+    unloaded tube (one batch each)."""
+    rows = [(max(options.n_range[0], 1), Family.WRINKLE.code)]
+    if options.prismatic:
+        rows.append((0, Family.PRISMATIC.code))
+    ms = geometric_samples(max(m_edge, EVERY_M), M_CAP)
+    modes = np.array([(m, n, code) for m in ms for n, code in rows], float)
+    targets = ImpedanceTarget(SCAN_STABLE_SIGNS)
+    try:
+        now = targets(solve_base_state(params.at(solve_for, value)), modes)
+    except ElectrogrowthError:  # the state at the limit is unresolved: the limit stands
+        return False
+    return bool(np.any(np.sign(now) != unloaded_signs(SIGN_TUBE, modes, targets)))
 
 
 def _searched(

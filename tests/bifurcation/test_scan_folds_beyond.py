@@ -1,0 +1,33 @@
+"""A scan must not report the exact short-wave limit as the first instability while a
+finite mode within the supported range comes much earlier.
+
+A neo-Hookean film [1, 1.0003] with shear modulus 3 on a neo-Hookean substrate to
+Rbar_o = 1.5 (modulus 1), L = 2, hoop growth of the film. The film folds at a finite
+wavelength near m ~ 1 / (h (3 / 3)^(1/3)) = 3300, beyond the cap m = 2000, so the supported
+modes fall towards the cap: (1998, 0) 1.30679977, (1999, 0) 1.30673526, (2000, 0)
+1.30667084 (impedance, single modes). The short-wave limit of the film's free face is
+g_theta = 1.84731269, far later.
+
+Found by probing: ``scan_modes`` returned kind "surface" at 1.84731269 (the inner face)
+with m_range (0, 12): the modes scanned mode by mode (the best, (1, 120) at 2.4499, a
+probe of short axial waves) all come after the limit, and the scan takes the limit for
+the infimum without searching m beyond 64, although a thin film's folds lie below the
+limit at a finite wavelength (the runs with the fold inside the range, m = 640 ... 1567,
+search and find it). Expected: (2000, 0) at the cap, about 1.30667, with the limit a
+runner-up. Now, where the limit comes before the scanned modes, the folds beyond the scan
+(geometric samples of m up to 2000) are read at the limit's state, and searched if one is
+unstable there. About 7 s.
+"""
+
+from electrogrowth import Layer, Tube, critical_value, scan_modes
+from electrogrowth.cli.report import edge_warning
+
+FILM = Tube((Layer(1.0003, shear_modulus=3.0), Layer(1.5)), length=2.0, stretch=1.0)
+
+
+def test_scan_prefers_the_capped_fold_to_a_later_short_wave_limit():
+    cap = critical_value(FILM, 2000, 0, "growth[1].theta")
+    scan = scan_modes(FILM, "growth[1].theta")
+    assert scan.critical.value <= cap.value + 1e-9
+    assert (scan.critical.kind, scan.critical.m, scan.critical.n) == ("bifurcation", 2000, 0)
+    assert edge_warning(scan)  # the fold lies beyond the cap: said
