@@ -299,3 +299,22 @@ def test_a_stiff_thin_films_value_is_certified_and_its_estimate_bounds_its_error
     point = critical_value(film, 40, 0, "growth[1].theta")
     assert point.status == "ok"
     assert abs(point.value - ref.value) <= point.error_estimate <= 1e-10
+
+
+def test_cli_a_refused_certificate_prints_the_value_and_exits_3(monkeypatch, capsys):
+    """--certify refusing a value is not bad input (exit 2): the value is printed with the
+    reason it is not certified, a warning, and exit status 3 (0 with --accept-inaccurate)."""
+    import electrogrowth.bifurcation.certify as certifier
+    from electrogrowth.errors import ConvergenceError
+
+    def refuse(*args, **kwargs):
+        raise ConvergenceError("not certified: impedance gives 1.2, collocation gives 1.3")
+
+    monkeypatch.setattr(certifier, "certify", refuse)
+    assert main(ARGV + ["--certify"]) == 3
+    out, err = capsys.readouterr()
+    assert out.startswith("g_cr = ") and "NOT certified: impedance gives 1.2" in out
+    assert err.startswith("electrogrowth: warning: not certified") and err.count("\n") == 1
+    assert main(ARGV + ["--certify", "--accept-inaccurate", "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["certified"] is False and rec["certification"].startswith("impedance gives")

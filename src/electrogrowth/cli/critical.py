@@ -11,7 +11,7 @@ import contextlib
 import json
 import math
 
-from ..errors import ParameterError
+from ..errors import ConvergenceError, ParameterError
 from ..incremental.accuracy import CERTIFIED, CERTIFY_RTOL, check_rtol
 from ..model.controls import parse_control
 from ..outcomes import Kind, Status
@@ -61,7 +61,7 @@ def configure_critical(parser: argparse.ArgumentParser) -> None:
         help="exit 0 even when the critical value is not certified to --rtol (its error"
         f" estimate exceeds {CERTIFIED:g} rtol |value| after a solve at rtol / 100); without"
         " it such a value is printed with the digits its estimate supports, a warning on"
-        f" stderr, and exit status {INACCURATE_EXIT}",
+        f" stderr, and exit status {INACCURATE_EXIT}; likewise a value --certify refuses",
     )
     parser.add_argument(
         "--koiter",
@@ -133,7 +133,14 @@ def run_critical(args) -> int:
         record["branch_note"] = "not asked: add --koiter for super- or subcritical (1-5 s)"
     if args.certify and crit.kind in (Kind.BIFURCATION, Kind.SURFACE):
         # a scan: certify the choice of the mode as well
-        record.update(_certify(params, crit, args, result if mode is None else None))
+        try:
+            record.update(_certify(params, crit, args, result if mode is None else None))
+        except ConvergenceError as exc:  # the value is printed, said uncertified: exit 3
+            why = " ".join(str(exc).split())
+            if not why.startswith("not certified: "):
+                raise
+            record.update(certified=False, certification=why.removeprefix("not certified: "))
+            warn(f"{why}; the value is printed as found")
     if getattr(args, "scales", None) is not None:
         errors = {record.get("solve_for"): record.get("error_estimate")}
         record["physical"] = physical_record(record, args.scales, errors)
@@ -141,6 +148,8 @@ def run_critical(args) -> int:
         print(json.dumps(record))
     else:
         _print_text(record, runners, getattr(args, "scales", None))
+    if record.get("certified") is False:  # --certify refused it (the text says why)
+        return 0 if args.accept_inaccurate else INACCURATE_EXIT
     return _inaccurate_exit(crit, args)
 
 
