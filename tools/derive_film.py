@@ -75,7 +75,8 @@ def target(lam_, kh, ratio):
 
 def critical_stretch(kh, ratio):
     """The largest lam < 1 at which mode k h bifurcates (the first as lam falls from 1)."""
-    grid = [1 - 0.005 * i for i in range(1, 199)]
+    # finer next to 1: a stiff film's root lies there (1 - 1.1e-3 at mu_f / mu_s = 1e4)
+    grid = [1 - 1e-4 * 2**j for j in range(6)] + [1 - 0.005 * i for i in range(1, 199)]
     prev = target(grid[0], kh, ratio)
     for a, b in zip(grid, grid[1:]):
         cur = target(b, kh, ratio)
