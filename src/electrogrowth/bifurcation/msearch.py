@@ -22,7 +22,8 @@ every-m scan of scan.py.
 The same search runs along n (:func:`search_n`, rows of fixed m): a long tube lined with a
 film that grows isotropically folds into rings (0, n) of the flat film's wavelength, n ~
 hundreds, beyond the n range's doublings. The integers next to the best are all marched
-(``top - 1`` either side), so the runners-up of a searched optimum are its true neighbours.
+(``top - 1`` either side, at most NEIGHBOURS), so the runners-up of a searched optimum are
+its true neighbours.
 """
 
 from __future__ import annotations
@@ -39,6 +40,7 @@ from .march import SIGN_TUBE, ModeValue, first_bifurcations, unloaded_signs
 
 RATIO = 1.25  # geometric sampling: m_cap / m_edge = 2000 / 64 takes 16 samples
 SPLIT = 8  # interior samples of a refining march
+NEIGHBOURS = 8  # integers either side of the best marched for the runners-up (at most)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -117,9 +119,9 @@ def _search(params, solve_for, side, rows, span, rtol, top, axis) -> SearchResul
 def _neighbourhood(march, row, seen, best, span, top, axis) -> list[ModeValue]:
     """The integers within top - 1 of the best on its row that the refinement skipped (a
     bracket's samples are spaced), marched so that the runners-up are the next modes."""
-    at = _index(best, axis)
+    at, wide = _index(best, axis), min(top - 1, NEIGHBOURS)
     done = {_index(v, axis) for v in seen if (_fixed(v, axis), _code(v)) == row[0]}
-    near = range(max(span[0], at - top + 1), min(span[1], at + top - 1) + 1)
+    near = range(max(span[0], at - wide), min(span[1], at + wide) + 1)
     todo = [k for k in near if k not in done]
     if not todo:
         return []

@@ -233,7 +233,8 @@ def folds_before(params, solve_for, value, options: ScanOptions, m_edge: int) ->
         now = targets(solve_base_state(params.at(solve_for, value)), modes)
     except ElectrogrowthError:  # the state at the limit is unresolved: the limit stands
         return False
-    return bool(np.any(np.sign(now) != unloaded_signs(SIGN_TUBE, modes, targets)))
+    turned = np.isfinite(now) & (np.sign(now) != unloaded_signs(SIGN_TUBE, modes, targets))
+    return bool(np.any(turned))
 
 
 def _searched(
