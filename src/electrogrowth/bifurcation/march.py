@@ -71,7 +71,7 @@ MODE_STEPS = StepPolicy(smallest=1e-4)
 #: test_crease_interface.py's sandwich). The mode is sampled at every step (ONE_MODE_WAIT, the
 #: largest step), not only every 0.25 of the scale as a scan's many modes are: a film-lined
 #: tube's target dips below zero over 7 % of lambda_z between two samples 0.25 apart
-#: (tests/bifurcation/test_march_steep_root.py)
+#: (tests/bifurcation/test_march_first_root.py)
 ONE_MODE_WAIT = 0.05
 ONE_MODE_STEPS = StepPolicy(
     smallest=1e-4, predict_monitor=True, max_change=0.08, max_wait=ONE_MODE_WAIT
