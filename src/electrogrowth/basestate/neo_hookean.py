@@ -103,9 +103,14 @@ def nh_lambda_i(outer_radius: float, growth: float, stretch: float, ratio: float
 
 def _compiled_root():
     """nh_root_kernel.nh_root (the same root, compiled) once the compiled kernels have
-    loaded numba, else None: a base state alone (the ``state`` command) never imports it."""
-    if "numba" not in sys.modules:
-        return None
-    from .nh_root_kernel import nh_root
+    loaded numba, else None: a base state alone (the ``state`` command) never imports it.
+    Remembered once loaded: a march asks at every state."""
+    global _NH_ROOT
+    if _NH_ROOT is None and "numba" in sys.modules:
+        from .nh_root_kernel import nh_root
 
-    return nh_root
+        _NH_ROOT = nh_root
+    return _NH_ROOT
+
+
+_NH_ROOT = None

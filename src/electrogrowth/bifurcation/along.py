@@ -14,6 +14,7 @@ they replace computed.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 from collections.abc import Callable
 
@@ -85,18 +86,25 @@ class TubeAt:
     def state(self, x, rtol: float = 1e-12):
         """``solve_base_state(self(x), rtol=rtol)``, started from the nearest state this path
         has solved (the same root: basestate/warm.py)."""
-        tube = self(x)
         x = float(x)
-        same = self.neighbours.solved_at(x, rtol)
-        if same is not None:
-            return clear_of_lock(same)  # solved here before (a value, then its estimate)
-        if tube.is_uniform:  # its state is a function of the tube alone: no neighbour needed
-            state = solve_base_state(tube, rtol=rtol)
-        else:
-            near, guess = self.neighbours.nearest(x, rtol)
-            state = solve_base_state(tube, rtol=rtol, near=near, guess=guess)
-        self.neighbours.keep(x, rtol, state)
-        return clear_of_lock(state)
+        state = self.neighbours.solved_at(x, rtol)  # solved here before (a value, then its
+        if state is None:  # estimate), or solved now
+            tube = self(x)
+            if tube.is_uniform:  # a function of the tube alone: no neighbour needed
+                state = solve_base_state(tube, rtol=rtol)
+            else:
+                near, guess = self.neighbours.nearest(x, rtol)
+                state = solve_base_state(tube, rtol=rtol, near=near, guess=guess)
+            self.neighbours.keep(x, rtol, state)
+        return clear_of_lock(state) if self.locks else state
+
+    @functools.cached_property
+    def locks(self) -> bool:
+        """Has the tube a Gent layer, whose lock the states may come near (clear_of_lock)?"""
+        return any(
+            getattr(layer.material.definition, "family", None) == "gent"
+            for layer in self.tube.layers
+        )
 
 
 @dataclasses.dataclass(frozen=True)

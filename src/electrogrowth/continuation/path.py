@@ -104,7 +104,8 @@ class StepPolicy:
     def next(self, step: float, limit: float) -> float:
         """The step after an accepted one: ``limit`` (a predictor's, relative to the scale)
         clipped to [smallest, min(growth step, largest)]."""
-        return float(np.clip(limit, self.smallest, min(self.growth * step, self.largest)))
+        # np.clip's minimum(maximum(...)) in plain floats (NaN stays NaN): one per step
+        return float(min(max(limit, self.smallest), min(self.growth * step, self.largest)))
 
     def limit(self, distance: float, scale: float) -> float:
         """The step limit ``safety`` of a predicted distance to the next event."""

@@ -102,18 +102,26 @@ class EventWatch:
         return self.alive & ((self.sense * (x - self.due) >= 0) | (reach >= self.root_distance()))
 
     def record(self, idx, x, g):
+        """New samples g of the functions ``idx`` at x: each one's samples one row older,
+        its zero extrapolated again, how far that moved and when it falls due."""
+        kernel = _compiled()
+        if kernel is None:
+            return self._record_numpy(idx, x, g)
+        dist = kernel.record(np.asarray(idx, dtype=np.int64), float(x),
+                             np.asarray(g, dtype=float), self.x, self.g, float(self.sense),
+                             self.root_distance(), self.moved, self.due, self.wait)  # fmt: skip
+        dist.setflags(write=False)
+        self._distance = dist
+
+    def _record_numpy(self, idx, x, g):
+        """:meth:`record` in NumPy."""
         before = self.x[0, idx] + self.sense * self.root_distance()[idx]  # the zero predicted
         self._distance = None  # new samples, new extrapolation
         for rows in (self.x, self.g):  # each sample one row older
             rows[2, idx] = rows[1, idx]
             rows[1, idx] = rows[0, idx]
         self.x[0, idx], self.g[0, idx] = x, g
-        kernel = _compiled()
-        if kernel is None:
-            return self._settle_numpy(idx, x, before)
-        idx = np.asarray(idx, dtype=np.int64)
-        kernel.settle(idx, float(x), float(self.sense), before, self.root_distance(),
-                      self.moved, self.due, self.wait)  # fmt: skip
+        self._settle_numpy(idx, x, before)
 
     def _settle_numpy(self, idx, x, before):
         """The end of :meth:`record` in NumPy: how far each new sample moved its predicted
@@ -174,12 +182,16 @@ class EventWatch:
 
 def _compiled():
     """The module watch_kernel once the compiled kernels have loaded numba, else None: a
-    path alone does not import it."""
-    if "numba" not in sys.modules:
-        return None
-    from . import watch_kernel
+    path alone does not import it. Remembered once loaded: every step asks several times."""
+    global _WATCH_KERNEL
+    if _WATCH_KERNEL is None and "numba" in sys.modules:
+        from . import watch_kernel
 
-    return watch_kernel
+        _WATCH_KERNEL = watch_kernel
+    return _WATCH_KERNEL
+
+
+_WATCH_KERNEL = None
 
 
 def secant_bracket(

@@ -95,6 +95,23 @@ def settle(idx, x, sense, before, dist, moved, due, cap):
         due[j] = x + sense * _minimum(0.5 * dist[j], cap)
 
 
+@nb.njit(cache=True, error_model="numpy")
+def record(idx, x, g, xs, gs, sense, dist, moved, due, cap):
+    """EventWatch.record of the samples g at x of the functions ``idx`` into the (3, n)
+    samples xs, gs (newest first), whose distances to their zeros are ``dist``: the new
+    distances, after :func:`settle`."""
+    before = np.empty(idx.shape[0])
+    for i in range(idx.shape[0]):
+        j = idx[i]
+        before[i] = xs[0, j] + sense * dist[j]  # the zero predicted before the sample
+        xs[2, j], gs[2, j] = xs[1, j], gs[1, j]
+        xs[1, j], gs[1, j] = xs[0, j], gs[0, j]
+        xs[0, j], gs[0, j] = x, g[i]
+    new = root_distances(xs, gs, sense)
+    settle(idx, x, sense, before, new, moved, due, cap)
+    return new
+
+
 @nb.njit(cache=True)
 def _maximum(a, b):
     """np.maximum of two floats: a NaN wins."""

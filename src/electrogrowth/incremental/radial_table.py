@@ -247,6 +247,8 @@ def build_table(state, *, tol: float = 1e-15, max_nodes: int = 1025) -> RadialTa
     ConvergenceError
         If ``max_nodes`` Chebyshev points do not resolve a segment.
     """
+    if hasattr(state, "table_block"):  # the paper's tube: one segment, unit moduli
+        return _uniform_table(state, tol, max_nodes)
     mu, eps = table_units(state)
     segments = _segments(state, mu, eps)
     parts = [_segment_table(a, b, f, tol, max_nodes) for a, b, f in segments]
@@ -258,6 +260,23 @@ def build_table(state, *, tol: float = 1e-15, max_nodes: int = 1025) -> RadialTa
         np.array(bounds, dtype=float),
         np.array(state.face_pressures, dtype=float) / mu,
     )
+
+
+def _uniform_table(state, tol: float, max_nodes: int) -> RadialTable:
+    """:func:`build_table` of a UniformState (one layer of unit modulus and permittivity,
+    unloaded faces): the same table, without the general path's bookkeeping (a march builds
+    one at every evaluation)."""
+    tube = state.tube
+    J = math.prod(tube.layers[0].growth)  # as _segments' values: the same product
+    b = tube.outer_radius
+    rows, fmap = _segment_table(1.0, b, lambda R: state.table_block(R, J), tol, max_nodes)
+    return RadialTable(
+        np.ascontiguousarray(rows)[None],
+        np.array([rows.shape[0]], dtype=np.int64),
+        fmap[None],
+        np.array([1.0, b]),
+        np.zeros(2),  # unloaded faces; writeable, as every table's (a read-only array is
+    )  # another type to the kernel, which would compile again)
 
 
 def _padded(rows: list[np.ndarray]) -> np.ndarray:

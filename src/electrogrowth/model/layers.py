@@ -24,7 +24,7 @@ from .controls import KINDS, Control, parse_control
 from .keys import KEYS_TEXT, key_value, with_key
 from .layer import Growth, Layer, LinearGrowth
 from .materials import Material, neo_hookean
-from .params import check_uniform
+from .params import check_uniform, check_uniform_number
 from .tube_checks import check_supported, checked_control, checked_fields
 
 __all__ = [
@@ -113,6 +113,11 @@ class Tube:
         (1.2, 'neo-hookean', 1.5)
         """
         check_uniform(outer_radius, length, growth, stretch, voltage)
+        return cls._built(outer_radius, length, growth, stretch, voltage, material)
+
+    @classmethod
+    def _built(cls, outer_radius, length, growth, stretch, voltage, material) -> Tube:
+        """Tube.uniform of checked numbers."""
         material = neo_hookean() if material is None else material
         if not isinstance(material, Material):
             raise ParameterError(f"material = {material!r} is not a Material")
@@ -147,7 +152,8 @@ class Tube:
             voltage=self.voltage,
         )
         five[name] = value
-        return Tube.uniform(**five, material=self.layers[0].material)
+        check_uniform_number(name, five)
+        return Tube._built(**five, material=self.layers[0].material)
 
     @functools.cached_property
     def is_uniform(self) -> bool:
@@ -255,6 +261,11 @@ class Tube:
     def reference(self) -> Tube:
         """The unloaded, ungrown tube (stress free, stable in every mode): growth 1 in every
         layer, no voltage or pressure, lambda_z = 1."""
+        return self._reference
+
+    @functools.cached_property
+    def _reference(self) -> Tube:
+        """:meth:`reference`, built once: every critical value reads its stable signs there."""
         layers = tuple(dataclasses.replace(layer, growth=1.0) for layer in self.layers)
         return Tube(layers, length=self.length)
 

@@ -12,7 +12,7 @@ from ..errors import ParameterError
 from .controls import SIDES, check_side  # noqa: F401  (the sides live with the controls)
 
 
-def _check(name: str, value: float, valid: str, ok) -> None:
+def _check(name: str, valid: str, ok, value: float) -> None:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise ParameterError(f"{name} = {value!r} is not a number; valid range: {valid}")
     if not math.isfinite(value) or not ok(value):
@@ -32,23 +32,62 @@ SUPPORTED_WHY = (
 def check_uniform(outer_radius, length, growth, stretch, voltage) -> None:
     """Check the five numbers of the paper's tube (:meth:`model.layers.Tube.uniform`) against
     their physical ranges and the supported box, naming each in the paper's symbols."""
-    (ro_max, l_lo, l_hi, g_lo, g_hi, e_lo, e_hi) = SUPPORTED
-    _check("outer radius Rbar_o", outer_radius, f"1 < Rbar_o <= {ro_max:g}", lambda v: 1 < v)
-    _check("length L", length, f"{l_lo:g} <= L <= {l_hi:g}", lambda v: v > 0)
-    _check("growth factor g", growth, f"{g_lo:g} <= g <= {g_hi:g}", lambda v: v > 0)
-    _check("axial stretch lambda_z", stretch, "0 < lambda_z < inf", lambda v: v > 0)
-    _check("voltage Vbar", voltage, "0 <= Vbar < threshold", lambda v: v >= 0)
-    for name, value, lo, hi in (
-        ("outer radius Rbar_o", outer_radius, 1.0, ro_max),
-        ("length L", length, l_lo, l_hi),
-        ("growth factor g", growth, g_lo, g_hi),
-        ("elastic axial stretch lambda_z / g", stretch / growth, e_lo, e_hi),
-    ):
-        if not value <= hi or not lo <= value:
-            raise ParameterError(
-                f"{name} = {value:.6g} is outside the supported range {lo:g} to {hi:g}:"
-                f" {SUPPORTED_WHY}"
-            )
+    five = dict(
+        outer_radius=outer_radius, length=length, growth=growth, stretch=stretch, voltage=voltage
+    )
+    for name, value in five.items():
+        _physical(name, value)
+    for name, value in five.items():
+        _supported(name, value)
+    _elastic_stretch(five)
+
+
+def check_uniform_number(name: str, five: dict) -> None:
+    """Check the number ``name`` of the paper's tube's ``five`` (Tube.uniform's keywords),
+    the others being checked: a march that sets one number of a tube checks that one alone
+    (and the elastic stretch lambda_z / g, if it is the growth or the stretch)."""
+    _physical(name, five[name])
+    _supported(name, five[name])
+    if name in ("growth", "stretch"):
+        _elastic_stretch(five)
+
+
+def _physical(name: str, value) -> None:
+    _check(*_UNIFORM_CHECKS[name], value)
+
+
+def _supported(name: str, value: float) -> None:
+    if name in _UNIFORM_BOX:
+        _check_box(_UNIFORM_CHECKS[name][0], value, *_UNIFORM_BOX[name])
+
+
+def _elastic_stretch(five: dict) -> None:
+    lo, hi = SUPPORTED[5:7]
+    _check_box("elastic axial stretch lambda_z / g", five["stretch"] / five["growth"], lo, hi)
+
+
+def _check_box(symbol: str, value: float, lo: float, hi: float) -> None:
+    if not value <= hi or not lo <= value:
+        raise ParameterError(
+            f"{symbol} = {value:.6g} is outside the supported range {lo:g} to {hi:g}:"
+            f" {SUPPORTED_WHY}"
+        )
+
+
+#: each of the five numbers: (symbol, valid range, physical check)
+_UNIFORM_CHECKS = {
+    "outer_radius": ("outer radius Rbar_o", f"1 < Rbar_o <= {SUPPORTED[0]:g}", lambda v: 1 < v),
+    "length": ("length L", f"{SUPPORTED[1]:g} <= L <= {SUPPORTED[2]:g}", lambda v: v > 0),
+    "growth": ("growth factor g", f"{SUPPORTED[3]:g} <= g <= {SUPPORTED[4]:g}", lambda v: v > 0),
+    "stretch": ("axial stretch lambda_z", "0 < lambda_z < inf", lambda v: v > 0),
+    "voltage": ("voltage Vbar", "0 <= Vbar < threshold", lambda v: v >= 0),
+}
+#: the supported box of the numbers that have one (SUPPORTED)
+_UNIFORM_BOX = {
+    "outer_radius": (1.0, SUPPORTED[0]),
+    "length": SUPPORTED[1:3],
+    "growth": SUPPORTED[3:5],
+}
 
 
 #: The control parameters of the paper's tube (Tube.uniform); a layered tube adds pressure
