@@ -325,13 +325,10 @@ class UniformState:
         :meth:`radius`, :meth:`moduli` and :meth:`pressure` (the Chebyshev table's input,
         incremental/radial_table.py, built at every step of a march)."""
         if self._sigma is None:  # the closed form, compiled; its NumPy twin: the three calls
-            # imported here: a base state alone (the ``state`` command) never loads numba
-            from .closed_form_fields import nh_fields
-
             R = self._inside(R)
             t = self.tube
             b = self._wall.b
-            return nh_fields(
+            return _closed_form_fields().nh_fields(
                 R, self.r_i, b, t.growth, t.stretch, self.charge, t.outer_radius, self.r_o
             )
         R, r, stretches, d = self._local(R)
@@ -347,10 +344,8 @@ class UniformState:
         (incremental/radial_table.py), the same bits as :meth:`table_fields` stacked with w
         in NumPy; the closed form in one compiled pass."""
         if self._sigma is None:
-            from .closed_form_fields import nh_table_block  # here: numba only for tables
-
             t = self.tube
-            return nh_table_block(
+            return _closed_form_fields().nh_table_block(
                 R, self.r_i, self._wall.b, t.growth, t.stretch, self.charge, t.outer_radius,
                 self.r_o, J,
             )  # fmt: skip
@@ -411,3 +406,18 @@ class UniformState:
             "D_r": self.displacement(R),
             "E_r": self.electric_field(R),
         }
+
+
+def _closed_form_fields():
+    """The module closed_form_fields, imported at the first table (numba only for tables:
+    a base state alone, the ``state`` command, never loads it) and remembered (a march
+    builds a table at every evaluation)."""
+    global _CLOSED_FORM_FIELDS
+    if _CLOSED_FORM_FIELDS is None:
+        from . import closed_form_fields
+
+        _CLOSED_FORM_FIELDS = closed_form_fields
+    return _CLOSED_FORM_FIELDS
+
+
+_CLOSED_FORM_FIELDS = None

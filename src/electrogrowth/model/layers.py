@@ -137,6 +137,7 @@ class Tube:
         tube = object.__new__(cls)
         fields = dict(_UNLOADED, layers=(layer,), length=float(length), stretch=float(stretch))
         fields["voltage"] = float(voltage)
+        fields["is_uniform"] = True  # by construction: the cached property, known already
         for name, value in fields.items():
             object.__setattr__(tube, name, value)
         return tube
