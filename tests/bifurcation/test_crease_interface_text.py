@@ -1,0 +1,58 @@
+"""A layer written as an energy text that carries its own modulus is the same layer as the
+built-in energy with that shear modulus, for the crease at an interface too.
+
+README: ``check_units=False`` keeps a deliberately scaled energy, "a layer written with its
+own moduli"; "0.001*((I1 - 3)/2) + I5/2" is a neo-Hookean layer a thousand times softer,
+as ``Layer(..., shear_modulus=0.001)`` is (the loads' scale already reads the modulus off the
+energy: model/controls.py ``initial_modulus``, tests/bifurcation/test_pressure_to_lock.py).
+
+The tube is the thick stiff layer between two much softer ones of
+test_crease_interface.py (``THICK``, L = 0.5), its middle layer growing axially: its
+interfaces crease at g_z = 2.4^(2/3) (docs/derivation-crease.md section 8) before the
+axisymmetric wrinkle (0, 1) at 2.2343.
+
+Found by probing: with the soft layers written as energy texts the base state and the
+wrinkle are the built-in tube's (g_z,cr of (0, 1) equal to 1e-15), but the crease rule
+reads the modulus ratio off ``Layer.shear_modulus`` alone (crease_interface.interfaces:
+1 / 1, no candidate), so ``crease_onset`` is "none", the criterion names no interface and
+the verdict is the wrinkle (0, 1) at 2.234 instead of the interface crease at 1.792.
+"""
+
+import pytest
+
+from electrogrowth import Layer, Material, Tube, crease_onset, critical_value
+
+SOFT_TEXT = Material("soft", "0.001*((I1 - 3)/2) + I5/2", check_units=False)
+BUILTIN = Tube(
+    (Layer(1.2, shear_modulus=0.001), Layer(3.0), Layer(3.2, shear_modulus=0.001)),
+    stretch=1.0,
+    length=0.5,
+)
+WRITTEN = Tube(
+    (Layer(1.2, material=SOFT_TEXT), Layer(3.0), Layer(3.2, material=SOFT_TEXT)),
+    stretch=1.0,
+    length=0.5,
+)
+
+
+def test_the_written_soft_layers_are_the_builtin_ones():
+    built = critical_value(BUILTIN, 0, 1, "growth[2].z")
+    written = critical_value(WRITTEN, 0, 1, "growth[2].z")
+    assert written.value == pytest.approx(built.value, rel=1e-10)
+
+
+def test_the_interface_creases_with_written_soft_layers_too():
+    built = crease_onset(BUILTIN, "growth[2].z")
+    written = crease_onset(WRITTEN, "growth[2].z")
+    assert built.kind == "crease" and built.face in ("interface-1", "interface-2")
+    assert written.kind == built.kind and written.face == built.face
+    assert written.value == pytest.approx(built.value, rel=1e-10)
+    assert written.error_estimate == pytest.approx(built.error_estimate, rel=1e-6)
+
+
+def test_the_verdict_does_not_depend_on_how_the_modulus_is_written():
+    built = critical_value(BUILTIN, 0, 1, "growth[2].z").verdict
+    written = critical_value(WRITTEN, 0, 1, "growth[2].z").verdict
+    assert built.kind == "crease"
+    assert written.kind == built.kind and written.face == built.face
+    assert written.value == pytest.approx(built.value, rel=1e-10)
