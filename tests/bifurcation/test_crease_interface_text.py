@@ -1,5 +1,6 @@
 """A layer written as an energy text that carries its own modulus is the same layer as the
-built-in energy with that shear modulus, for the crease at an interface too.
+built-in energy with that shear modulus, for the crease at an interface and for the
+field of electro-creasing too.
 
 README: ``check_units=False`` keeps a deliberately scaled energy, "a layer written with its
 own moduli"; "0.001*((I1 - 3)/2) + I5/2" is a neo-Hookean layer a thousand times softer,
@@ -56,3 +57,21 @@ def test_the_verdict_does_not_depend_on_how_the_modulus_is_written():
     assert built.kind == "crease"
     assert written.kind == built.kind and written.face == built.face
     assert written.value == pytest.approx(built.value, rel=1e-10)
+
+
+def test_the_electro_crease_field_reads_the_modulus_off_the_energy_too():
+    """The field drive E sqrt(eps_k / mu_k) of a face: a one-layer tube ten times as stiff,
+    written as a text or as shear_modulus = 10, is one tube (the wrinkle (0, 1) under the
+    voltage agrees to 1e-13). Found by probing: the field crease of the text was at
+    Vbar = 0.7122 against 2.1483, the field scaled by the layer's shear_modulus (1) instead
+    of its energy's modulus (10)."""
+    stiff = Material("stiff10", "10*((I1 - 3)/2) + I5/2", check_units=False)
+    built = Tube((Layer(2.0, shear_modulus=10.0),), stretch=1.0, length=1.0)
+    written = Tube((Layer(2.0, material=stiff),), stretch=1.0, length=1.0)
+    assert critical_value(written, 0, 1, "voltage").value == pytest.approx(
+        critical_value(built, 0, 1, "voltage").value, rel=1e-10
+    )
+    b, w = crease_onset(built, "voltage"), crease_onset(written, "voltage")
+    assert b.kind == "crease" and b.trigger == "field"
+    assert (w.kind, w.face, w.trigger) == (b.kind, b.face, b.trigger)
+    assert w.value == pytest.approx(b.value, rel=1e-10)
