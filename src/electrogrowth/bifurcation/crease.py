@@ -79,9 +79,10 @@ def onset_strain(ratio: float = CREASE_RATIO) -> float:
 class FaceCrease:
     """How close one face is to creasing: the ratios lambda_r / lambda_theta
     (prismatic crease, fold lines along z) and lambda_r / lambda_z (axial crease, rings),
-    and the field E sqrt(eps_k / mu_k) of the face's layer. At an interface ("interface-K")
-    the stretches are the stiffer layer's, the field 0 (no electrode) and ``neighbour``
-    the soft neighbour's modulus as a fraction of that layer's (0: a free face)."""
+    and the field E sqrt(eps_k / mu_k) of the face's layer (its small-strain moduli,
+    Layer.initial_moduli). At an interface ("interface-K") the stretches are the stiffer
+    layer's, the field 0 (no electrode) and ``neighbour`` the soft neighbour's modulus as a
+    fraction of that layer's (0: a free face)."""
 
     face: str
     hoop: float
@@ -122,7 +123,8 @@ def face_creases(state) -> tuple[FaceCrease, ...]:
         side = "outer" if face == "inner" else "inner"  # the wall's own layer at the face
         l1, l2, l3 = (float(v) for v in state.elastic_stretches(R, side=side))
         e = float(state.electric_field(R, side=side))
-        scale = math.sqrt(layer.permittivity / layer.shear_modulus)
+        mu, eps = layer.initial_moduli  # the energy's own moduli too (a text may carry them)
+        scale = math.sqrt(eps / mu)
         out.append(FaceCrease(face, l1 / l2, l1 / l3, e * scale))
     for i in interfaces(tube):
         l1, l2, l3 = (float(v) for v in state.elastic_stretches(i.radius, side=i.side))
