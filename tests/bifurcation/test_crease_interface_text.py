@@ -19,9 +19,12 @@ reads the modulus ratio off ``Layer.shear_modulus`` alone (crease_interface.inte
 the verdict is the wrinkle (0, 1) at 2.234 instead of the interface crease at 1.792.
 """
 
+import math
+
 import pytest
 
 from electrogrowth import Layer, Material, Tube, crease_onset, critical_value
+from electrogrowth.bifurcation.crease import criterion_text
 
 SOFT_TEXT = Material("soft", "0.001*((I1 - 3)/2) + I5/2", check_units=False)
 BUILTIN = Tube(
@@ -75,3 +78,41 @@ def test_the_electro_crease_field_reads_the_modulus_off_the_energy_too():
     assert b.kind == "crease" and b.trigger == "field"
     assert (w.kind, w.face, w.trigger) == (b.kind, b.face, b.trigger)
     assert w.value == pytest.approx(b.value, rel=1e-10)
+
+
+def test_the_interface_crease_of_the_written_tube_is_the_closed_form():
+    """Independently of the built-in tube: the middle layer grows axially in a tube held at
+    stretch 1, so its elastic stretches at the interface are (g^(1/2), g^(1/2), 1/g) and the
+    axial ratio reaches 2.4 at g_z = 2.4^(2/3) (docs/derivation-crease.md section 8), within
+    the criterion's error estimate."""
+    written = crease_onset(WRITTEN, "growth[2].z")
+    assert written.value == pytest.approx(2.4 ** (2 / 3), abs=written.error_estimate)
+
+
+def test_the_field_crease_of_a_written_modulus_scales_as_its_square_root():
+    """Independently of the built-in layer: the field enters through V sqrt(eps_k / mu_k)
+    only (the tube is uniform: the modulus and permittivity scale out of its state), so the
+    field crease of a layer ten times as stiff is sqrt(10) times the unit layer's Vbar."""
+    stiff = Material("stiff10", "10*((I1 - 3)/2) + I5/2", check_units=False)
+    unit = crease_onset(Tube((Layer(2.0),), stretch=1.0, length=1.0), "voltage")
+    written = crease_onset(Tube((Layer(2.0, material=stiff),), stretch=1.0, length=1.0), "voltage")
+    assert written.trigger == unit.trigger == "field"
+    assert written.value == pytest.approx(math.sqrt(10.0) * unit.value, rel=1e-10)
+
+
+def test_a_written_permittivity_is_the_builtin_permittivity_for_the_field_crease():
+    """ "(I1 - 3)/2 + 3*I5/2" is a neo-Hookean layer of permittivity 1/3 (eps = 1 / (2
+    Omega_5)), as Layer(..., permittivity=1/3) is: the same field crease, at sqrt(3) times
+    the unit layer's Vbar, and the same criterion (exact for both: an ideal dielectric of
+    any permittivity). Found with the fix: 0.7068 against 1.1767, and the text's criterion
+    said "not that energy's own onset"."""
+    low = Material("eps1/3", "(I1 - 3)/2 + 3*I5/2", check_units=False)
+    built = Tube((Layer(2.0, permittivity=1 / 3),), stretch=1.0, length=1.0)
+    written = Tube((Layer(2.0, material=low),), stretch=1.0, length=1.0)
+    unit = crease_onset(Tube((Layer(2.0),), stretch=1.0, length=1.0), "voltage")
+    b, w = crease_onset(built, "voltage"), crease_onset(written, "voltage")
+    assert (b.kind, b.face, b.trigger) == ("crease", "inner", "field")
+    assert (w.kind, w.face, w.trigger) == (b.kind, b.face, b.trigger)
+    assert w.value == pytest.approx(b.value, rel=1e-10)
+    assert w.value == pytest.approx(math.sqrt(3.0) * unit.value, rel=1e-10)
+    assert criterion_text(written) == criterion_text(built)
