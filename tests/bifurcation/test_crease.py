@@ -30,7 +30,7 @@ from electrogrowth.bifurcation.crease import (
 from electrogrowth.bifurcation.surface import short_wave_limit
 from electrogrowth.model.layer import Layer
 from electrogrowth.model.layers import Tube as LayeredTube
-from electrogrowth.model.materials import gent, mooney_rivlin, neo_hookean
+from electrogrowth.model.materials import Material, gent, mooney_rivlin, neo_hookean
 
 
 def test_the_ratio_gives_the_published_onset_strain():
@@ -136,3 +136,20 @@ def test_energies_linear_in_i1_and_i2_have_biots_ratio_along_the_axis():
     assert biot_ratio(mooney_rivlin(0.3)) == pytest.approx(BIOT_RATIO, rel=1e-12)
     assert BIOT_RATIO < biot_ratio(gent(97.2)) < 1.02 * BIOT_RATIO
     assert biot_ratio(gent(5.0)) == math.inf
+
+
+def test_the_criterion_is_exact_for_a_linear_energy_of_any_modulus_and_permittivity():
+    """W(I1, I2) + c I5, linear in I1 and I2, is a neo-Hookean (Mooney-Rivlin) ideal
+    dielectric whatever its moduli (check_units=False keeps them); anything else in the
+    field (I4, I6, I5 squared, I5 times I1) or in the strain (Gent, I1 squared) is not."""
+    exact = ("(I1 - 3)/2 + 3*I5/2", "10*((I1 - 3)/2) + I5/2", "0.3*(I1 - 3) + 0.2*(I2 - 3) + I5")
+    other = (
+        "(I1 - 3)/2 + I5/2 + I6/10",
+        "(I1 - 3)/2 + I5/2 + I4/5",
+        "(I1 - 3)/2 + I5/2 + I5**2/10",
+        "(I1 - 3)/2 + I5/2 + (I1 - 3)*I5/10",
+        "(I1 - 3)/2 + (I1 - 3)**2/10 + I5/2",
+        "(I1 - 3)/2 + exp(I5)/2 - 1/2",
+    )
+    assert all(ratio_is_exact(Material(t, t, check_units=False)) for t in exact)
+    assert not any(ratio_is_exact(Material(t, t, check_units=False)) for t in other)

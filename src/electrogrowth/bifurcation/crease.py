@@ -79,9 +79,10 @@ def onset_strain(ratio: float = CREASE_RATIO) -> float:
 class FaceCrease:
     """How close one face is to creasing: the ratios lambda_r / lambda_theta
     (prismatic crease, fold lines along z) and lambda_r / lambda_z (axial crease, rings),
-    and the field E sqrt(eps_k / mu_k) of the face's layer. At an interface ("interface-K")
-    the stretches are the stiffer layer's, the field 0 (no electrode) and ``neighbour``
-    the soft neighbour's modulus as a fraction of that layer's (0: a free face)."""
+    and the field E sqrt(eps_k / mu_k) of the face's layer (its small-strain moduli,
+    Layer.initial_moduli). At an interface ("interface-K") the stretches are the stiffer
+    layer's, the field 0 (no electrode) and ``neighbour`` the soft neighbour's modulus as a
+    fraction of that layer's (0: a free face)."""
 
     face: str
     hoop: float
@@ -122,7 +123,8 @@ def face_creases(state) -> tuple[FaceCrease, ...]:
         side = "outer" if face == "inner" else "inner"  # the wall's own layer at the face
         l1, l2, l3 = (float(v) for v in state.elastic_stretches(R, side=side))
         e = float(state.electric_field(R, side=side))
-        scale = math.sqrt(layer.permittivity / layer.shear_modulus)
+        mu, eps = layer.initial_moduli  # the energy's own moduli too (a text may carry them)
+        scale = math.sqrt(eps / mu)
         out.append(FaceCrease(face, l1 / l2, l1 / l3, e * scale))
     for i in interfaces(tube):
         l1, l2, l3 = (float(v) for v in state.elastic_stretches(i.radius, side=i.side))
@@ -145,17 +147,24 @@ def crease_margin(state) -> FaceCrease:
 @functools.lru_cache(maxsize=64)
 def ratio_is_exact(material) -> bool:
     """Is the neo-Hookean crease ratio exact for ``material``? For an ideal dielectric
-    whose elastic energy is linear in I1 and I2 (neo-Hookean, Mooney-Rivlin): in the plane
-    of a crease it is a neo-Hookean energy (docs/derivation-crease.md section 2)."""
+    (of any permittivity) whose elastic energy is linear in I1 and I2 (neo-Hookean,
+    Mooney-Rivlin, of any modulus): in the plane of a crease it is a neo-Hookean energy
+    (docs/derivation-crease.md section 2)."""
     if isinstance(material.definition, BuiltinEnergy):  # known without sympy
         return material.definition.linear
-    if not material.is_ideal_dielectric():
-        return False
     import sympy as sp
 
-    from ..model.invariants import I1, I2, I5
+    from ..model.invariants import I1, I2, I4, I5, I6
 
-    elastic = sp.expand(material.energy - I5 / 2)
+    # W(I1, I2) + c I5 for any constant c: an ideal dielectric of any permittivity (a text
+    # with its own, check_units=False, "(I1 - 3)/2 + 3*I5/2", is one too)
+    energy = sp.expand(material.energy)
+    elastic = energy.subs({I4: 0, I5: 0, I6: 0})
+    electric = sp.expand(energy - elastic)
+    if electric.free_symbols != {I5} or not electric.is_polynomial(I5):
+        return False
+    if sp.Poly(electric, I5).degree() != 1:
+        return False
     if not elastic.free_symbols <= {I1, I2} or not elastic.is_polynomial(I1, I2):
         return False
     return sp.Poly(elastic, I1, I2).total_degree() <= 1

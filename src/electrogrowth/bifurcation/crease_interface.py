@@ -8,7 +8,8 @@ the face of the stiffer layer is a free face. Between the two no onset criterion
 published. The package takes the limit as far as it is near:
 
 * an interface is a crease candidate only where the softer of its two layers has at most
-  SOFT_NEIGHBOUR (0.1) times the shear modulus of the stiffer one ("bonded to a much
+  SOFT_NEIGHBOUR (0.1) times the small-strain shear modulus of the stiffer one (the
+  layer's shear_modulus times its energy's own, Layer.initial_moduli) ("bonded to a much
   softer layer");
 * the face of the *stiffer* layer creases, folding into the stiffer layer (the soft
   neighbour is drawn into the fold); the soft layer's face is bonded to a body that is at
@@ -69,14 +70,17 @@ class Interface:
 
 def interfaces(tube: Tube) -> tuple[Interface, ...]:
     """The interfaces of ``tube`` that may crease: those whose softer layer has at most
-    SOFT_NEIGHBOUR times the stiffer one's shear modulus (none for a uniform tube)."""
+    SOFT_NEIGHBOUR times the stiffer one's small-strain shear modulus (none for a uniform
+    tube). The modulus is ``Layer.initial_moduli``'s, shear_modulus times the energy's own:
+    an energy text carrying its modulus (check_units=False) is the built-in layer with it."""
     out = []
     for k in range(1, len(tube.layers)):
         below, above = tube.layers[k - 1], tube.layers[k]
-        if below.shear_modulus >= above.shear_modulus:
-            layer, side, ratio = k, "inner", above.shear_modulus / below.shear_modulus
+        mu_below, mu_above = below.initial_moduli[0], above.initial_moduli[0]
+        if mu_below >= mu_above:
+            layer, side, ratio = k, "inner", mu_above / mu_below
         else:
-            layer, side, ratio = k + 1, "outer", below.shear_modulus / above.shear_modulus
+            layer, side, ratio = k + 1, "outer", mu_below / mu_above
         if ratio <= SOFT_NEIGHBOUR:
             out.append(Interface(k, float(below.outer_radius), layer, side, ratio))
     return tuple(out)

@@ -27,7 +27,6 @@ entry (and its physics in basestate/ and incremental/).
 from __future__ import annotations
 
 import dataclasses
-import functools
 import math
 import re
 from collections.abc import Callable
@@ -67,26 +66,18 @@ class ControlKind:
 
 def _wall_sum(tube, term) -> float:
     return sum(
-        layer.shear_modulus * initial_modulus(layer.material) * term(a, b)
+        layer.initial_moduli[0] * term(a, b)
         for layer, a, b in zip(tube.layers, tube.radii, tube.radii[1:])
     )
 
 
-@functools.lru_cache(maxsize=256)
 def initial_modulus(material) -> float:
     """The small-strain shear modulus of a material's energy, in units of its layer's
-    ``shear_modulus``: 1 for the built-in energies; an energy text need not be in those
-    units (check_units=False: "3*(-45/2*log(1 - (I1 - 3)/45)) + I5/2" is a Gent layer three
-    times as stiff), and a load's scale read off ``shear_modulus`` alone then cut its
-    march's range 6x short. 1 where the energy has no finite positive modulus there."""
-    from .builtin_energies import BuiltinEnergy
-
-    if isinstance(material.definition, BuiltinEnergy):
-        return 1.0
-    from .invariants import reference_moduli
-
-    mu = reference_moduli(material.energy)[0]
-    return mu if math.isfinite(mu) and mu > 0 else 1.0
+    ``shear_modulus`` (:meth:`Material.initial_moduli`): 1 for the built-in energies; an
+    energy text need not be in those units (check_units=False: "3*(-45/2*log(1 - (I1 -
+    3)/45)) + I5/2" is a Gent layer three times as stiff), and a load's scale read off
+    ``shear_modulus`` alone then cut its march's range 6x short."""
+    return material.initial_moduli()[0]
 
 
 def _growth_path(tube, up, base):

@@ -123,6 +123,17 @@ class Layer:
             fix("growth", _triple("growth", self.growth))
 
     @property
+    def initial_moduli(self) -> tuple[float, float]:
+        """(mu, eps): the layer's small-strain shear modulus and permittivity in the tube's
+        units, ``shear_modulus`` and ``permittivity`` times its energy's own
+        (:meth:`Material.initial_moduli`). The one reading of a layer's stiffness and
+        permittivity wherever a rule or a scale needs them (the crease criteria, a load's
+        march): a layer written as an energy text carrying its moduli (check_units=False)
+        is then the built-in layer with those moduli."""
+        mu, eps = self.material.initial_moduli()
+        return self.shear_modulus * mu, self.permittivity * eps
+
+    @property
     def graded(self) -> bool:
         """True when the growth is a function of R."""
         return callable(self.growth)

@@ -296,6 +296,16 @@ class Material:
         """True when Omega = W(I1, I2) + I5 / 2 (E = D / eps, paper Sec. 3.1)."""
         return self.kind() != "general"
 
+    def initial_moduli(self) -> tuple[float, float]:
+        """(mu, eps): the small-strain shear modulus 2 (Omega_1 + Omega_2) and small-field
+        permittivity 1 / (2 (Omega_4 + Omega_5 + Omega_6)) of the energy in the reference
+        state, in units of its layer's ``shear_modulus`` and ``permittivity``. (1, 1) for
+        the built-in energies and (to 1e-12) every energy that passes ``check_units``; one kept
+        with ``check_units=False`` may carry its own ("10*((I1 - 3)/2) + I5/2" is a layer
+        ten times as stiff). Either is 1 where the energy has no finite positive value
+        there (nothing better to scale by)."""
+        return _initial_moduli(self.definition)
+
 
 @functools.lru_cache(maxsize=64)
 def _numeric(definition) -> tuple[Callable, Callable, Callable]:
@@ -307,6 +317,17 @@ def _numeric(definition) -> tuple[Callable, Callable, Callable]:
     from .invariants import numeric_forms
 
     return numeric_forms(definition)
+
+
+@functools.lru_cache(maxsize=64)
+def _initial_moduli(definition) -> tuple[float, float]:
+    if isinstance(definition, BuiltinEnergy):  # in units mu = eps = 1, known without sympy
+        return 1.0, 1.0
+    from .invariants import reference_moduli
+
+    mu, eps = reference_moduli(definition)
+    usable = lambda x: float(x) if math.isfinite(x) and x > 0 else 1.0  # noqa: E731
+    return usable(mu), usable(eps)
 
 
 @functools.lru_cache(maxsize=64)
