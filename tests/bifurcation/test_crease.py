@@ -153,3 +153,31 @@ def test_the_criterion_is_exact_for_a_linear_energy_of_any_modulus_and_permittiv
     )
     assert all(ratio_is_exact(Material(t, t, check_units=False)) for t in exact)
     assert not any(ratio_is_exact(Material(t, t, check_units=False)) for t in other)
+
+
+def test_a_gent_crease_carries_its_energys_distance_from_neo_hookean():
+    """The neo-Hookean criterion applied to a Gent face is off by about as much as Gent's own
+    Biot ratio is from neo-Hookean's (docs/derivation-crease.md section 2): its error estimate
+    carries that shift (+5.7 % at J_m = 20), not the criterion's published digits alone; a
+    Gent solid with no Biot wrinkle (J_m = 3) may not crease at all, and says so."""
+    from electrogrowth.bifurcation.crease import (
+        BIOT_RATIO,
+        CREASE_RATIO,
+        CREASE_RATIO_ACCURACY,
+        biot_ratio,
+    )
+    from electrogrowth.outcomes import Status
+
+    onset = lambda material: crease_onset(  # noqa: E731
+        Tube.uniform(2.0, length=1.0, material=material), "stretch", side="compression"
+    )
+    nh, g20, g3 = onset(None), onset(gent(20.0)), onset(gent(3.0))
+    # a homogeneous compression: the same stretches, the same onset and margin slope
+    assert g20.value == pytest.approx(nh.value, rel=1e-14)
+    digits = CREASE_RATIO_ACCURACY / CREASE_RATIO
+    shift = biot_ratio(gent(20.0)) / BIOT_RATIO - 1.0
+    assert 0.05 < shift < 0.06
+    assert g20.error_estimate / nh.error_estimate == pytest.approx((shift + digits) / digits)
+    assert (nh.status, g20.status) == (Status.OK, Status.OK)
+    assert g3.error_estimate == math.inf and g3.status == Status.INACCURATE
+    assert "may not crease" in g3.message

@@ -176,8 +176,10 @@ def meaning(first: Rival, others: list[Rival], sense: float, name: str) -> str:
     nxt = min(others, key=lambda r: sense * r.value) if others else None
     after = "" if nxt is None else f"; next: {_what(nxt)} at {name} = {nxt.value:.4g}"
     close = ""
-    if first.kind == Kind.CREASE and nxt is not None and first.error_estimate is not None:
-        if abs(nxt.value - first.value) <= first.error_estimate:
+    if first.kind == Kind.CREASE and first.error_estimate is not None:
+        if math.isinf(first.error_estimate):  # crease.energy_shift: no Biot ratio
+            close = " (a neo-Hookean criterion this energy may never reach: it may not crease)"
+        elif nxt is not None and abs(nxt.value - first.value) <= first.error_estimate:
             close = " (within the crease criterion's accuracy of it: too close to call)"
     if first.kind == Kind.CREASE:
         head = (
