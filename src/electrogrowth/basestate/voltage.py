@@ -125,10 +125,15 @@ class UniformWall:
         lam_i = np.atleast_1d(np.asarray(lam_i, float))
         c, v = np.full_like(lam_i, np.nan), np.full_like(lam_i, np.nan)
         ok = self.in_domain(lam_i)
-        lam = lam_i[ok]
         delta = self.b * (self.outer_radius**2 - 1.0)  # r_o^2 - r_i^2, exact
         with np.errstate(**_QUIET):
-            m0, scale = self.hoop(lam, 0.0)
+            m0, scale = self.hoop(lam_i[ok], 0.0)
+            # the stresses overflow before the energy does (an exponential energy's
+            # stresses ~ I1 exp(k I1)): no state is computed there, and an infinite scale
+            # would zero M below, a false Vbar = 0 that ends the branch in a false peak
+            finite = np.isfinite(scale)
+            ok[ok] = finite
+            lam, m0, scale = lam_i[ok], m0[finite], scale[finite]
             m0 = np.where(abs(m0) <= 1e-13 * scale, 0.0, m0)
             q = 2.0 * m0 * lam**2 * (lam**2 + delta) / delta
             if energy_kind(self.material) != "general":
