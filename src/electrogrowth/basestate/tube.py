@@ -42,8 +42,10 @@ def voltage_threshold(params: Tube) -> tuple[float, str, float]:
     (Vbar_threshold, kind, lambda_i) : tuple[float, str, float]
         kind "asymptote": Vbar -> Vbar_threshold as lambda_i -> inf (lambda_i = inf);
         "limit point": first local maximum of Vbar(lambda_i), a snap-through; "none": Vbar
-        rises without bound (Vbar_threshold = inf), lambda_i = the locking stretch of the
-        energy (e.g. Gent) or inf. ``params.voltage`` is ignored.
+        rises without bound (Vbar_threshold = inf), lambda_i = where the branch ends: the
+        locking stretch of the energy (e.g. Gent), where no charge balances the traction, or
+        where the stresses exceed the largest double (an exponential energy), else inf.
+        ``params.voltage`` is ignored.
 
     >>> round(voltage_threshold(Tube.uniform(outer_radius=2.0, growth=1.1))[0], 6)
     1.233797
@@ -181,6 +183,7 @@ def voltage_curve(params: Tube, lambda_i) -> np.ndarray:
     if not np.all(np.isfinite(v)):
         raise BaseStateError(
             f"energy of {params.material.name} undefined at lambda_i ="
-            f" {lam.ravel()[~np.isfinite(v)][0]:.12g} (beyond locking)"
+            f" {lam.ravel()[~np.isfinite(v)][0]:.12g} (beyond locking, or its stresses"
+            " past the largest double)"
         )
     return np.maximum(v, 0.0).reshape(lam.shape)

@@ -36,6 +36,7 @@ from . import neo_hookean
 from .chebyshev_series import ChebyshevSeries, chebinterpolate
 from .voltage import (
     GAUSS_ORDERS,
+    STRESS_NOISE,
     UniformWall,
     cell_root,
     energy_kind,
@@ -98,10 +99,10 @@ def solve_uniform(tube: Tube, rtol: float) -> UniformState:
     raise ConvergenceError(f"base state at Vbar = {target:.12g} not resolved to rtol = {rtol}")
 
 
-#: the rounding floor of the integrands' trailing coefficients, relative to _tail_scale;
-#: above it, a tail that no longer falls from degree 256 to 512 is rounding noise too (a Gent
-#: layer near its lock amplifies the rounding of I1 by 1 / (1 - (I1 - 3) / jm))
-_NOISE = 1e3 * np.finfo(float).eps
+#: the rounding floor of the integrands' trailing coefficients, relative to _tail_scale
+#: (voltage.STRESS_NOISE); above it, a tail that no longer falls from degree 256 to 512 is
+#: rounding noise too
+_NOISE = STRESS_NOISE
 
 
 def _tail_scale(coef) -> np.ndarray:

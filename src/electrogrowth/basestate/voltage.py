@@ -37,6 +37,10 @@ GAUSS_ORDERS = (16, 24, 32, 48, 64, 96, 128, 192, 256, 384)  # Gauss-Legendre no
 _SCAN_RATIO, _SCAN_SPAN = 1.08, 1e3  # threshold scan: lambda_i0 1.08^k up to 1e3 lambda_i0
 _QUIET = dict(invalid="ignore", divide="ignore", over="ignore")
 _PROBE_MARGIN = 1.1  # node-count probes stay 10 % inside the energy's domain (_nodes)
+#: the rounding floor of a stress integral relative to its stress scale (|tau_1| + |tau_2|):
+#: below it, rules that agree are resolved (a Gent layer near its lock amplifies the
+#: rounding of I1 by 1 / (1 - (I1 - 3) / jm), an exponential energy by its exponent)
+STRESS_NOISE = 1e3 * np.finfo(float).eps
 
 
 @functools.cache
@@ -125,10 +129,15 @@ class UniformWall:
         lam_i = np.atleast_1d(np.asarray(lam_i, float))
         c, v = np.full_like(lam_i, np.nan), np.full_like(lam_i, np.nan)
         ok = self.in_domain(lam_i)
-        lam = lam_i[ok]
         delta = self.b * (self.outer_radius**2 - 1.0)  # r_o^2 - r_i^2, exact
         with np.errstate(**_QUIET):
-            m0, scale = self.hoop(lam, 0.0)
+            m0, scale = self.hoop(lam_i[ok], 0.0)
+            # the stresses overflow before the energy does (an exponential energy's
+            # stresses ~ I1 exp(k I1)): no state is computed there, and an infinite scale
+            # would zero M below, a false Vbar = 0 that ends the branch in a false peak
+            finite = np.isfinite(scale)
+            ok[ok] = finite
+            lam, m0, scale = lam_i[ok], m0[finite], scale[finite]
             m0 = np.where(abs(m0) <= 1e-13 * scale, 0.0, m0)
             q = 2.0 * m0 * lam**2 * (lam**2 + delta) / delta
             if energy_kind(self.material) != "general":
@@ -268,17 +277,30 @@ def _nodes(tube: UniformWall, lam: np.ndarray, rtol: float) -> int:
     are left out: near a locking stretch (Gent) the stress has a pole just outside the inner
     face, which no Gauss rule in R resolves, and evaluating it there loses digits to
     cancellation in 1 - (I1 - 3) / Jm. The rule is only a start: the solved state raises the
-    count until its own independent quadrature meets rtol (solve_base_state)."""
+    count until its own independent quadrature meets rtol (solve_base_state).
+
+    Where no rule meets that at every probe, each probe takes its first rule that agrees
+    with the next to rtol or to the stresses' rounding (STRESS_NOISE: an exponential
+    energy's stresses at 3 lambda_i0 carry the rounding of exp(I1 / 2), ~1e-13 of their
+    scale, above 1e-2 rtol), and a probe no rule resolves is left out, as in the layered
+    choice (plies.choose_nodes); the probe nearest the state must be resolved."""
     lam = lam[tube.in_domain(lam * _PROBE_MARGIN)]
+    gaps = []  # (n, |M_n - M_next| / scale) at each probe
     for start in range(0, len(GAUSS_ORDERS) - 1, 3):
         orders = GAUSS_ORDERS[start : start + 4]
         hoops = tube.hoops(lam, 0.0, orders)
         for n, (a, s), (b, _) in zip(orders, hoops, hoops[1:]):
             if np.all(abs(a - b) <= 0.01 * rtol * s):
                 return n
-    raise ConvergenceError(
-        f"quadrature not converged to rtol = {rtol} with {GAUSS_ORDERS[-1]} nodes"
-    )
+            gaps.append((n, abs(a - b) / s))
+    first = np.zeros(lam.shape, int)  # each probe's first rule agreeing to rounding
+    for n, gap in reversed(gaps):
+        first = np.where(gap <= max(0.01 * rtol, STRESS_NOISE), n, first)
+    if not first[0]:
+        raise ConvergenceError(
+            f"quadrature not converged to rtol = {rtol} with {GAUSS_ORDERS[-1]} nodes"
+        )
+    return int(first.max())
 
 
 def cell_root(f, a: float, b: float) -> float:

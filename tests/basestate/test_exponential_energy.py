@@ -1,0 +1,81 @@
+"""An uncharged tube of an exponentially stiffening energy (Fung type, an energy text of the
+grammar's ``exp``) has its homogeneous state at every axial stretch, and the commands that
+need it do not crash.
+
+Omega = exp((I1 - 3)/2) - 1 + I5/2 has mu = eps = 1 in the reference state. An ungrown,
+uncharged tube at the axial stretch lambda_z is homogeneous: lambda_r = lambda_theta =
+lambda_z^(-1/2) through the wall, lambda_i = lambda_z^(-1/2), whatever the energy.
+
+Found by probing: ``solve_base_state`` of that tube at lambda_z = 0.245 raised numpy's
+LinAlgError ("Array must not contain infs or NaNs", from the voltage threshold's limit-point
+search, basestate/voltage.py ``_limit_point``: the tube carries no voltage), and at
+lambda_z <= 0.215 ConvergenceError "quadrature not converged"; the voltage threshold scans
+Vbar(lambda_i) far beyond the state asked for, where exp(I1 / 2) overflows. Through the crease
+criterion's Biot ratio (its half-space march runs to lambda_z = 0.05) the verdict of a
+(0, 1) wrinkle crashed too: ``electrogrowth critical ... --energy "(exp(0.5*(I1-3))-1) + I5/2"
+--mode 0 1`` printed "internal error: LinAlgError" and no value, exit status 1, while the
+value itself is fine (lambda_z,cr = 0.418141270798; collocation agrees to 3e-13).
+
+The same with a milder exponent, Omega = (exp(0.2 (I1 - 3)) - 1) / 0.4 + I5/2, at ordinary
+strains: ``solve_base_state(Tube.uniform(1.4, growth=g, material=...))`` raised LinAlgError
+at g = 1.18, 1.38, 1.88, 2.98, ... (sporadic points of a 0.02 grid), where the same tube cut
+into two identical layers (the layered solver) gives its state (lambda_i = 1.2818080979616
+at g = 1.18), and ``critical_value(tube, 3, 1, "growth")`` crashed with it (either method).
+"""
+
+import json
+import warnings
+
+import pytest
+
+from electrogrowth import Layer, Material, Tube, critical_value, solve_base_state
+from electrogrowth.cli.app import main
+
+FUNG_TEXT = "(exp(0.5*(I1-3))-1) + I5/2"
+FUNG = Material("fung", FUNG_TEXT)
+MILD = Material("fung-0.2", "(exp(0.2*(I1-3))-1)/0.4 + I5/2")
+
+
+@pytest.mark.parametrize("stretch", [0.3, 0.245, 0.21])
+def test_homogeneous_state_of_an_exponential_energy(stretch):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        state = solve_base_state(Tube.uniform(2.0, 1.0, stretch=stretch, material=FUNG))
+    assert state.lambda_i == pytest.approx(stretch**-0.5, rel=1e-10)
+
+
+def test_verdict_of_an_exponential_energy_does_not_crash(capsys):
+    tube = Tube.uniform(2.2, 1.5, material=FUNG)
+    crit = critical_value(tube, 0, 1, "stretch", side="compression")
+    assert crit.value == pytest.approx(0.418141270798, rel=1e-9)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        verdict = crit.verdict
+    assert verdict.wrinkle is not None and verdict.wrinkle.value == crit.value
+    args = ["critical", "--solve-for", "stretch", "--side", "compression"]
+    args += ["--outer-radius", "2.2", "--length", "1.5", "--energy", FUNG_TEXT]
+    assert main([*args, "--mode", "0", "1", "--json", "--quiet"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["value"] == pytest.approx(crit.value, rel=1e-10)
+
+
+@pytest.mark.parametrize("growth", [1.18, 1.38])
+def test_grown_state_of_a_mild_exponential_energy_equals_two_identical_layers(growth):
+    split = Tube(
+        (Layer(1.2, material=MILD, growth=growth), Layer(1.4, material=MILD, growth=growth)),
+        stretch=1.0,
+    )
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        uniform = solve_base_state(Tube.uniform(1.4, growth=growth, material=MILD))
+    assert uniform.lambda_i == pytest.approx(solve_base_state(split).lambda_i, rel=1e-10)
+
+
+def test_critical_growth_of_a_mild_exponential_energy():
+    tube = Tube.uniform(1.4, material=MILD)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        imp = critical_value(tube, 3, 1, "growth")
+        col = critical_value(tube, 3, 1, "growth", method="collocation")
+    assert imp.status == "ok"
+    assert col.value == pytest.approx(imp.value, rel=1e-8)
