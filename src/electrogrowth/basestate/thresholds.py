@@ -21,7 +21,7 @@ import math
 import numpy as np
 from numpy.polynomial import chebyshev as cheb
 
-from ..continuation.events import BRANCH, LOCK, bisect, brent, reached, turned
+from ..continuation.events import BRANCH, LOCK, Remembered, bisect, brent, reached, turned
 from ..continuation.path import GeometricGrid
 from ..errors import NEAR_LOCK, BaseStateError, ConvergenceError
 from ..model.layers import Tube
@@ -190,9 +190,16 @@ def solve_on(branch: Branch, grid, target: float, thr: Threshold | None, what: s
     a, b = xs[k[0] - 1], xs[k[0]]
     guess = _guess(xs[k[0] - 1 : k[0] + 1], lzs[k[0] - 1 : k[0] + 1])
 
-    def f(x):
+    def load(x):
         return float(branch.value(clean(branch.at([x], guess(x))))[0]) - target
 
+    f = Remembered(load)  # Brent evaluates the checked ends again
+    if f(a) * f(b) > 0:  # the scan's sign change was its rounding: next to the threshold
+        near = "" if thr is None else f" {thr.value:.12g}"
+        raise BaseStateError(
+            f"{what} = {target:.12g} is within the accuracy of the threshold{near} of its"
+            " branch (the load does not reach it in the scan's cell)"
+        )
     x = brent(f, *sorted((a, b)), BRANCH, named=False)
     return x, float(clean(branch.at([x], guess(x)))["stretch"][0])
 
