@@ -22,7 +22,7 @@ from collections.abc import Callable
 import numpy as np
 
 from ..basestate.tube import solve_base_state, threshold
-from ..errors import NEAR_LOCK, BaseStateError, ConvergenceError
+from ..errors import NEAR_LOCK, ConvergenceError
 from ..model.builtin_energies import BuiltinEnergy
 from ..model.layers import Tube
 
@@ -198,33 +198,9 @@ class VoltageMargin:
         return voltage_threshold(self.at(x)) - self.voltage
 
 
-@dataclasses.dataclass(frozen=True)
-class Solves:
-    """Does the base state at x solve? False on one of ``errors`` (the state is lost);
-    ``rtol`` is handed to solve_base_state when given."""
-
-    at: TubeAt
-    errors: tuple[type[BaseException], ...] = (BaseStateError,)
-    rtol: float | None = None
-
-    def __call__(self, x) -> bool:
-        options = {} if self.rtol is None else {"rtol": self.rtol}
-        return solves(self.at, x, self.errors, **options)
-
-
 def voltage_threshold(tube) -> float:
     """The voltage threshold of ``tube`` (inf where a stiffening energy has none)."""
     return threshold(tube, "voltage").value
-
-
-def solves(at, x, errors=(BaseStateError,), **options) -> bool:
-    """Does the base state at ``at(x)`` solve (``options`` to solve_base_state)? False on
-    one of ``errors``: the state is lost."""
-    try:
-        solve_base_state(at(x), **options)
-    except errors:
-        return False
-    return True
 
 
 #: the closest a Gent layer may come to its lock, 1 - (I1 - 3) / jm, for its state to be
