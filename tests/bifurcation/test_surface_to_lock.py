@@ -28,6 +28,8 @@ import pytest
 from scipy.optimize import brentq
 
 from electrogrowth import Material, Tube, gent
+from electrogrowth.bifurcation.along import TubeAt
+from electrogrowth.bifurcation.state_loss import threshold_between
 from electrogrowth.bifurcation.surface import short_wave_limit
 
 
@@ -56,3 +58,17 @@ def test_short_wave_limit_ends_at_the_lock(material, jm, outer_radius, psi):
     assert s.kind == "threshold"
     assert s.value == pytest.approx(lock(jm), rel=1e-8)
     assert math.isfinite(s.error_estimate)
+
+
+@pytest.mark.parametrize("material", [gent(4.0), GENT4_TEXT])
+@pytest.mark.parametrize("landing", [-1e-3, 3e-7])
+def test_loss_located_at_the_lock_wherever_the_step_lands(material, landing):
+    # a march's step past the lock (-1e-3), or into the last LOCK_MARGIN before it (3e-7:
+    # a state that exists and is not read): either way the loss is the lock, to rounding
+    tube = Tube.uniform(3.0, 1.0, material=material)
+    at = TubeAt(tube, "stretch", as_float=True)
+    x_lock = lock(4.0)
+    value, edge, pending = threshold_between(at, tube, x_lock * 1.001, x_lock * (1 + landing))
+    assert pending is None
+    assert value == pytest.approx(x_lock, rel=1e-13)
+    assert x_lock < edge < x_lock * (1 + 1e-6)  # the last state read: clear of the lock
