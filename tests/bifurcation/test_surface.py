@@ -17,7 +17,7 @@ import pytest
 from scipy.optimize import brentq
 
 from electrogrowth.basestate.tube import solve_base_state
-from electrogrowth.bifurcation import directions, surface
+from electrogrowth.bifurcation import directions, surface_march
 from electrogrowth.bifurcation.surface import SurfaceLimit, ray_limit, short_wave_limit
 from electrogrowth.errors import ParameterError
 from electrogrowth.incremental.halfspace import (
@@ -189,7 +189,7 @@ def test_ellipticity_loss_is_detected():
         g = state.tube.growth
         return directions.Sample(math.nan if g > 1.7 else 2.0 - g, "inner", 0.5)
 
-    kind, value, bracket = surface._locate(Tube.uniform(), "growth", None, fake, 1e-12)
+    kind, value, bracket = surface_march.locate(Tube.uniform(), "growth", None, fake, 1e-12)
     assert kind == "ellipticity" and abs(value - 1.7) < 1e-11 and bracket is None
 
 
@@ -617,10 +617,10 @@ def test_threshold_none_and_errors():
         return directions.Sample(1.0, "inner", 0.0)
 
     params = Tube.uniform(outer_radius=1.4, voltage=0.4)
-    kind, value, _ = surface._locate(params, "stretch", "extension", stable, 1e-12)
+    kind, value, _ = surface_march.locate(params, "stretch", "extension", stable, 1e-12)
     assert kind == "threshold"
     assert abs(value - math.sqrt(0.96 * math.log(1.4) / 2) / (0.4 * 0.4)) < 1e-10
-    kind, value, _ = surface._locate(
+    kind, value, _ = surface_march.locate(
         Tube.uniform(outer_radius=2.0), "voltage", None, stable, 1e-12
     )
     assert kind == "threshold" and abs(value - 1.019667) < 1e-6

@@ -3,12 +3,13 @@
 A march (march.py, surface.py) asks questions of the tube at a control value x: the tube
 there (:class:`TubeAt`), its base state (:class:`StateAt`), the targets of some modes with
 their stable signs applied (:class:`Signed`, positive until a mode's first bifurcation),
-how far the applied voltage is from its threshold (:class:`VoltageMargin`), whether the
-state still exists (:class:`Solves`). Each is a small frozen dataclass with ``__call__``,
+how far the applied voltage is from its threshold (:class:`VoltageMargin`). Each is a small
+frozen dataclass with ``__call__``,
 so a reader following a control from the CLI or ``critical_value`` sees what is evaluated
 (the target's class names the kernel: incremental.targets.ImpedanceTarget or
 CollocationTarget) and a process pool can ship it. They compute exactly what the lambdas
-they replace computed.
+they replace computed. Whether a state lies too near a lock for its modes to be read is
+:func:`clear_of_lock`; where a march's state is lost, state_loss.py.
 """
 
 from __future__ import annotations
@@ -21,7 +22,8 @@ from collections.abc import Callable
 import numpy as np
 
 from ..basestate.tube import solve_base_state, threshold
-from ..errors import NEAR_LOCK, BaseStateError, ConvergenceError
+from ..errors import NEAR_LOCK, ConvergenceError
+from ..model.builtin_energies import BuiltinEnergy
 from ..model.layers import Tube
 
 
@@ -100,11 +102,8 @@ class TubeAt:
 
     @functools.cached_property
     def locks(self) -> bool:
-        """Has the tube a Gent layer, whose lock the states may come near (clear_of_lock)?"""
-        return any(
-            getattr(layer.material.definition, "family", None) == "gent"
-            for layer in self.tube.layers
-        )
+        """Has the tube a layer whose lock the states may come near (clear_of_lock)?"""
+        return has_lock(self.tube)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -199,74 +198,103 @@ class VoltageMargin:
         return voltage_threshold(self.at(x)) - self.voltage
 
 
-@dataclasses.dataclass(frozen=True)
-class Solves:
-    """Does the base state at x solve? False on one of ``errors`` (the state is lost);
-    ``rtol`` is handed to solve_base_state when given."""
-
-    at: TubeAt
-    errors: tuple[type[BaseException], ...] = (BaseStateError,)
-    rtol: float | None = None
-
-    def __call__(self, x) -> bool:
-        options = {} if self.rtol is None else {"rtol": self.rtol}
-        return solves(self.at, x, self.errors, **options)
-
-
 def voltage_threshold(tube) -> float:
     """The voltage threshold of ``tube`` (inf where a stiffening energy has none)."""
     return threshold(tube, "voltage").value
 
 
-def solves(at, x, errors=(BaseStateError,), **options) -> bool:
-    """Does the base state at ``at(x)`` solve (``options`` to solve_base_state)? False on
-    one of ``errors``: the state is lost."""
-    try:
-        solve_base_state(at(x), **options)
-    except errors:
-        return False
-    return True
-
-
 #: the closest a Gent layer may come to its lock, 1 - (I1 - 3) / jm, for its state to be
 #: used by a march: the incremental moduli grow like 1 / margin^2, and within ~1e-8 the
 #: kernel's target of a tube compressed to its lock fell from 8.9e-4 (margin 1e-6) to 6e-12,
-#: a root that is not there (tests/bifurcation/test_stretch_to_lock.py)
+#: a root that is not there (tests/bifurcation/test_stretch_to_lock.py). An energy text
+#: with a lock is held as far from the edge of its finite values: finite at I1 - 3 and
+#: I2 - 3 scaled by 1 / (1 - LOCK_MARGIN), the same test for Gent's energy written as text
+#: (whose half-space target turned NaN, "not elliptic", within 1e-9 of its lock)
 LOCK_MARGIN = 1e-6
 
 
 class NearLock(ConvergenceError):
-    """A state within LOCK_MARGIN of a Gent lock: it exists, its modes are not read."""
+    """A state within LOCK_MARGIN of a lock: it exists, its modes are not read."""
 
 
 def clear_of_lock(state):
-    """``state``, or ConvergenceError where a Gent layer is within LOCK_MARGIN of its lock:
-    the state exists, but a march cannot read its modes (it treats it as unresolved)."""
+    """``state``, or ConvergenceError where a layer is within LOCK_MARGIN of its lock (a
+    Gent layer's 1 - (I1 - 3)/jm, an energy text's edge): the state exists, but a march
+    cannot read its modes (it treats it as unresolved)."""
     margin = lock_margin(state)
     if margin < LOCK_MARGIN:
-        err = NearLock(
-            f"a Gent layer is within {margin:.1e} of its lock (1 - (I1 - 3)/jm): its"
-            f" incremental moduli are beyond the kernel's range below {LOCK_MARGIN:g}"
-        )
-        err.remedy = NEAR_LOCK
-        raise err
-    return state
+        what = f"a Gent layer is within {margin:.1e} of its lock (1 - (I1 - 3)/jm)"
+    elif not clear_of_domain_edge(state):
+        what = f"a layer's energy is not finite {LOCK_MARGIN:g} (relative) further from I1 = 3"
+    else:
+        return state
+    err = NearLock(
+        f"{what}: its incremental moduli are beyond the kernel's range below {LOCK_MARGIN:g}"
+    )
+    err.remedy = NEAR_LOCK
+    raise err
+
+
+def has_lock(tube) -> bool:
+    """Has the tube a Gent layer, or one whose energy (a text) is not finite everywhere?"""
+    return any(
+        getattr(layer.material.definition, "family", None) == "gent"
+        or bounded_energy(layer) is not None
+        for layer in tube.layers
+    )
+
+
+def bounded_energy(layer) -> Callable | None:
+    """Numeric Omega(I1, ..., I6) of a layer's energy text that is not a polynomial (one that
+    may end, as Gent's written as text), else None (a built-in energy: Gent's lock is
+    known in closed form)."""
+    if isinstance(layer.material.definition, BuiltinEnergy):
+        return None
+    return layer.material.omega()
+
+
+def _invariants_at(state, layer, a: float, b: float) -> tuple[np.ndarray, np.ndarray]:
+    """(I1, I2) of the elastic stretches of ``layer`` (on [a, b]) at 9 Chebyshev points
+    (its faces included: I1 is largest at a face where the hoop stretch is monotone)."""
+    R = 0.5 * (a + b) - 0.5 * (b - a) * np.cos(np.linspace(0.0, math.pi, 9))
+    g = np.asarray(layer.growth_at(R), float)
+    l_t = state.radius(R) / (R * g[1])
+    l_z = state.stretch / g[2]
+    l_r = 1.0 / (l_t * l_z)  # the elastic part is isochoric
+    squares = (l_r * l_r, l_t * l_t, l_z * l_z)
+    i2 = squares[0] * squares[1] + squares[1] * squares[2] + squares[2] * squares[0]
+    return sum(squares), i2
 
 
 def lock_margin(state) -> float:
     """The least 1 - (I1 - 3)/jm over the Gent layers of ``state`` (inf without one), at 9
-    Chebyshev points of each (its faces included: I1 is largest at a face where the hoop
-    stretch is monotone)."""
+    Chebyshev points of each."""
     tube, worst = state.tube, math.inf
     for layer, a, b in zip(tube.layers, tube.radii, tube.radii[1:]):
         energy = layer.material.definition
         if getattr(energy, "family", None) != "gent":
             continue
-        R = 0.5 * (a + b) - 0.5 * (b - a) * np.cos(np.linspace(0.0, math.pi, 9))
-        g = np.asarray(layer.growth_at(R), float)
-        l_t = state.radius(R) / (R * g[1])
-        l_z = state.stretch / g[2]
-        l_r = 1.0 / (l_t * l_z)  # the elastic part is isochoric
-        i1 = l_r * l_r + l_t * l_t + l_z * l_z
+        i1, _ = _invariants_at(state, layer, a, b)
         worst = min(worst, float(np.min(1.0 - (i1 - 3.0) / energy.parameter)))
     return worst
+
+
+def clear_of_domain_edge(state, margin: float = LOCK_MARGIN) -> bool:
+    """Is every energy text of ``state`` finite (with no field) at its layer's I1 - 3 and
+    I2 - 3 scaled by 1 / (1 - margin), at 9 Chebyshev points of each (for Gent's energy,
+    1 - (I1 - 3)/jm > margin)?"""
+    tube = state.tube
+    for layer, a, b in zip(tube.layers, tube.radii, tube.radii[1:]):
+        omega = bounded_energy(layer)
+        if omega is None:
+            continue
+        i1, i2 = _invariants_at(state, layer, a, b)
+        stretched = (3.0 + (i1 - 3.0) / (1.0 - margin), 3.0 + (i2 - 3.0) / (1.0 - margin))
+        with np.errstate(all="ignore"):
+            try:
+                w = np.asarray(omega(*stretched, 0.0, 0.0, 0.0), float)
+            except (ArithmeticError, ValueError):
+                return False
+        if not np.all(np.isfinite(w)):
+            return False
+    return True

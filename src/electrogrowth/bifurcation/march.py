@@ -33,31 +33,22 @@ import numpy as np
 from ..basestate import tube as door
 from ..basestate.tube import solve_base_state
 from ..continuation.events import (
-    EDGE,
-    FULL,
     LATER,
-    bisect,
     brent,
     crossed,
     dip_bracket,
     dipped,
     first_roots,
 )
-from ..continuation.events import threshold_between as _lost_between
 from ..continuation.path import ControlPath, Stepper, StepPolicy
 from ..continuation.predict import EventWatch
-from ..errors import (
-    NEAR_LOCK,
-    BaseStateError,
-    ConvergenceError,
-    NoBifurcationFound,
-    ParameterError,
-)
+from ..errors import BaseStateError, ConvergenceError, NoBifurcationFound, ParameterError
 from ..incremental.targets import natural_family, row_family
 from ..model.controls import KINDS
 from ..model.layers import Tube
-from .along import Signed, TubeAt, VoltageMargin, clear_of_lock
+from .along import Signed, TubeAt
 from .along import voltage_threshold as _voltage_threshold
+from .state_loss import threshold_between as _threshold_between
 
 #: the mode march's step control: 0.4 % of the scale doubling up to 5 %, not below 1e-4
 MODE_STEPS = StepPolicy(smallest=1e-4)
@@ -294,90 +285,3 @@ def _advance(watch, idx, x, g, signed: Signed, signed_fine: Signed, need=None) -
     watch.alive[idx[hit]] = False
     watch.record(idx[~hit], x, g[~hit])
     return found
-
-
-def _threshold_between(at, params, x_ok, x_bad):
-    """Where the base state is lost between x_ok and x_bad (no state, or none resolved, at
-    x_bad): (value, the last x the march may step to, None). Where the voltage threshold
-    falls to the applied voltage if that brackets it, else the edge of the states that
-    solve (whichever of the tube's loads reaches its threshold), bisected.
-
-    Next to a locking stretch the states past the edge may exist and yet not resolve
-    (their profile needs more than the largest Chebyshev degree, or the load is unbounded
-    only at the lock): the edge is then not a loss that is established (a stiffening
-    layer's state goes on, closer and closer to its lock), and the answer is (None, the
-    last resolved x, the error to raise if no mode bifurcates before it)."""
-    if params.voltage > 0:
-        margin = VoltageMargin(at, params.voltage)
-        # no sign change (ValueError), or no voltage branch to read at x_bad: bisect instead
-        x = _lost_between(
-            x_ok, x_bad, margin=margin, tolerate=(ValueError, BaseStateError, ConvergenceError)
-        )
-        if x is not None:
-            return x, x, None
-    if _fate(at, x_bad) == "solved":  # the failure was the march's alone: no edge here
-        return (
-            None,
-            x_ok,
-            ConvergenceError(
-                f"the base state at {x_bad:.12g} was not resolved continued from its neighbour"
-                " (it solves from cold)"
-            ),
-        )
-    ok, bad = bisect(lambda x: _fate(at, x) == "solved", x_ok, x_bad, EDGE)
-    if _fate(at, bad) != "unresolved":
-        return ok, ok, None
-    _, lost = bisect(lambda x: _fate(at, x) != "lost", bad, x_bad, EDGE)
-    lock = _kinematic_lock(at, ok, lost)
-    if lock is not None:  # past it no state can exist: the loss is established, exactly
-        return lock, ok, None
-    gent = _has_gent(at(x_ok))
-    near = "a layer next to its locking stretch?" if gent else "why is not known"
-    unresolved = ConvergenceError(
-        f"the states from {bad:.12g} are not resolved ({near}), and the state search fails"
-        f" from {lost:.12g}: whether the state is lost there is not established"
-    )
-    if gent:  # neither a looser rtol (the states' is fixed) nor collocation helps there
-        unresolved.remedy = NEAR_LOCK
-    return None, ok, unresolved
-
-
-def _has_gent(tube: Tube) -> bool:
-    return any(getattr(x.material.definition, "family", None) == "gent" for x in tube.layers)
-
-
-def _kinematic_lock(at: TubeAt, a: float, b: float) -> float | None:
-    """Where the axial stretch alone locks a Gent layer, if that is between a and b: the
-    root of lambda_e^2 + 2 / lambda_e - 3 = jm, lambda_e = lambda_z / g_z its elastic axial
-    stretch (I1 >= lambda_e^2 + 2 / lambda_e, with equality for equal in-plane stretches,
-    so no state exists past it). None under force control or where no such root lies in
-    [a, b] (a lock approached under a load is approached, not reached: no loss)."""
-
-    def excess(x) -> float:
-        tube = at(x)
-        worst = -math.inf
-        for layer in tube.layers:
-            energy = layer.material.definition  # a BuiltinEnergy, or an expression
-            if getattr(energy, "family", None) == "gent" and not layer.graded:
-                le = tube.stretch / layer.growth[2]
-                worst = max(worst, le * le + 2.0 / le - 3.0 - energy.parameter)
-        return worst
-
-    if at(a).axial_force is not None:
-        return None
-    fa, fb = excess(a), excess(b)
-    if not (math.isfinite(fa) and fa < 0.0 <= fb):
-        return None
-    return float(brent(excess, *sorted((a, b)), FULL))
-
-
-def _fate(at: TubeAt, x: float) -> str:
-    """The base state at x: "solved", "lost" (BaseStateError) or "unresolved" (it exists,
-    but its profile is not resolved: ConvergenceError)."""
-    try:
-        clear_of_lock(solve_base_state(at(x)))  # from cold, as every bisection of a loss
-    except BaseStateError:
-        return "lost"
-    except ConvergenceError:
-        return "unresolved"
-    return "solved"

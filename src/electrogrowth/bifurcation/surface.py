@@ -21,15 +21,17 @@ continuous functions), so once the march brackets its first sign change Brent's 
 converges to rounding level; f near an interior minimiser is quadratic in psi, so the
 psi-accuracy ~1e-10 costs nothing in the value.
 
-The march (steps of 0.4 % of the scale doubling up to 5 %, limited by 0.7 of the linear
-extrapolation of h to zero; the psi minimum refined only where the grid minimum is below
-MARCH_REFINE; a bounded minimisation where h dips between samples) reports kind
-"threshold" if the base state is lost first (the voltage threshold falls to the applied
-voltage, or a locking stretch: a state the base-state solver cannot resolve counts as
-lost), and kind "ellipticity" if the half-space stops being strongly elliptic first (then
-there is no decaying split to impose the face conditions on; the value is where that
-happens). The error estimate is the distance to the root found at a second, coarser
-resolution (psi grid 13 instead of 25, psi tolerance 1e-7, base state at 100 rtol).
+The march (surface_march.py: steps of 0.4 % of the scale doubling up to 5 %, limited by 0.7
+of the linear extrapolation of h to zero; the psi minimum refined only where the grid
+minimum is below MARCH_REFINE; a bounded minimisation where h dips between samples) reports
+kind "threshold" if the base state is lost first, located as the mode march locates it
+(state_loss.py: the voltage threshold falls to the applied voltage, the state search fails,
+or a layer locks kinematically; a state that exists but does not resolve, or lies within
+along.LOCK_MARGIN of a lock, is no loss, and where nothing else is established the march
+raises ConvergenceError), and kind "ellipticity" if the half-space stops being strongly
+elliptic first (then there is no decaying split to impose the face conditions on; the value
+is where that happens). The error estimate is the distance to the root found at a second,
+coarser resolution (psi grid 13 instead of 25, psi tolerance 1e-7, base state at 100 rtol).
 Derivation and measured numbers: docs/derivation-surface.md.
 """
 
@@ -37,18 +39,15 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Callable
 
 from ..basestate.tube import solve_base_state
 from ..continuation import events
-from ..continuation.path import ControlPath, Stepper, StepPolicy
 from ..errors import BaseStateError, ConvergenceError, ParameterError
 from ..incremental.halfspace import surfaces
 from ..model.controls import KINDS, check_side
 from ..model.layers import Tube
 from ..outcomes import Kind, Outcome, Status
-from .along import Elliptic, NearLock, SampleValue, Solves, StateAt, TubeAt, VoltageMargin
-from .along import voltage_threshold as _voltage_threshold
+from .along import SampleValue, StateAt, TubeAt
 from .directions import (
     HALF_PI,
     MARCH_REFINE,
@@ -58,12 +57,8 @@ from .directions import (
     reference_signs,
     sampler,
 )
-from .march import control_path
 from .problem import DEFAULT_RTOL, Problem, as_problem
-
-#: the short-wave march's step control: as the mode march's, but down to 1e-6 of the scale
-#: (h is one continuous function: its zero may be approached closer)
-SURFACE_STEPS = StepPolicy(smallest=1e-6)
+from .surface_march import locate
 
 
 @dataclasses.dataclass(frozen=True)
@@ -136,126 +131,6 @@ def _check(params, solve_for, side, faces, rtol) -> tuple[str, str | None, tuple
     return solve_for, side, faces
 
 
-# -- the march ------------------------------------------------------------------------------
-
-
-def _locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, until=None):
-    """March to the first zero of h (not past ``until``, if given); returns (kind, value,
-    bracket or None).
-
-    h_march (default h) is used for the steps: it may be cheaper where h is far from 0
-    but must agree with h wherever either is <= MARCH_REFINE."""
-    fine_h, h = h, (h_march or h)
-    at = TubeAt(params, solve_for, as_float=True)
-    state_at = StateAt(at, rtol)
-    path = ControlPath(*control_path(params, solve_for, side))
-    if until is not None and (until - path.start) * path.sense > 0:
-        path = dataclasses.replace(
-            path,
-            end=path.start + path.sense * min(abs(until - path.start), abs(path.end - path.start)),
-        )
-    x0, scale = path.start, path.scale
-    try:
-        state = state_at(x0)
-    except BaseStateError as exc:
-        raise ParameterError(
-            f"no base state at the start of the march, {solve_for} = {x0:g}: {exc}"
-        ) from None
-    s0 = h(state)
-    if math.isnan(s0.value):
-        raise ParameterError(
-            f"the half-space at the {s0.face} face is not strongly "
-            f"elliptic at {solve_for} = {x0:g}; start from a stable state"
-        )
-    if s0.value <= 0:
-        raise ParameterError(
-            f"the {s0.face} face is already unstable (psi = {s0.psi:.6g})"
-            f" at {solve_for} = {x0:g}; start from a stable state"
-        )
-    value_of, fine_of = SampleValue(h, state_at), SampleValue(fine_h, state_at)
-    xs, hs = [x0], [s0.value]
-    step = Stepper(path, SURFACE_STEPS, state.lambda_i)
-    threshold = None
-    while not step.at_end():
-        x_prev = step.x
-        x = step.propose()
-        try:
-            state = state_at(x)
-        except (BaseStateError, NearLock):  # its half-spaces are read off the moduli too
-            threshold = _threshold_between(at, params, x_prev, x, rtol)
-            if step.lost(threshold):
-                break
-            continue
-        except ConvergenceError as exc:  # the base-state solver failed here: step shorter
-            if not step.unresolved():
-                raise ConvergenceError(
-                    f"base state not resolved at {solve_for} = {x:.12g}"
-                    f" while marching from {x0:g} (no surface instability"
-                    f" before it): {exc}"
-                ) from None
-            continue
-        if step.jumped(state.lambda_i):
-            continue
-        s = h(state)
-        if math.isnan(s.value):  # ellipticity lost in (x_prev, x]
-            elliptic = Elliptic(value_of)
-            edge = events.Tolerance(1e-13 * scale, maxiter=60, scale="absolute")
-            lo, hi = events.bisect(elliptic, x_prev, x, edge)
-            if fine_of(lo) <= 0:  # a surface instability just before
-                return Kind.SURFACE, None, _bracket(xs, lo, fine_of)
-            return Kind.ELLIPTICITY, 0.5 * (lo + hi), None
-        if s.value <= 0:
-            return Kind.SURFACE, None, _bracket(xs, x, fine_of)
-        if len(hs) >= 2 and events.dipped(hs[-2], hs[-1], s.value):  # a dip between samples?
-            dip = events.dip_bracket(value_of, xs[-2], x)
-            if dip is not None:
-                return Kind.SURFACE, None, _bracket(xs[:-1], float(dip[1]), fine_of)
-        xs.append(x)
-        hs.append(s.value)
-        if step.film(state.lambda_i):  # the wall is a film: at the threshold
-            step.accept(x, state.lambda_i)
-            if solve_for != "voltage" and threshold is None:
-                threshold = _threshold_between(at, params, x, step.end, rtol, exists=False)
-            break
-        slope = (hs[-1] - hs[-2]) / (xs[-1] - xs[-2]) * path.sense
-        limit = SURFACE_STEPS.safety * hs[-1] / -slope / scale if slope < 0 else math.inf
-        step.accept(x, state.lambda_i, limit)
-    if threshold is None and solve_for == "voltage":
-        thr = _voltage_threshold(params)
-        threshold = thr if math.isfinite(thr) else None
-    if threshold is not None:
-        return Kind.THRESHOLD, threshold, None
-    return Kind.NONE, math.nan, None
-
-
-def _bracket(xs, x_bad, value_of) -> tuple[float, float]:
-    """(x_ok, x_bad) with the fine h > 0 at x_ok: the newest sample where it is (the
-    march start always is)."""
-    for x in reversed(xs):
-        if value_of(x) > 0:
-            return x, x_bad
-        x_bad = x
-    raise ConvergenceError("the half-space target is not positive at the start")
-
-
-def _threshold_between(at, params, x_ok, x_bad, rtol, exists: bool = True) -> float | None:
-    """Control value between x_ok and x_bad where the base state ceases to exist: where the
-    voltage threshold falls to the applied voltage if that brackets it, else (e.g. a
-    locking stretch of a stiffening energy) by bisection on the existence of the state
-    (a state the base-state solver cannot resolve counts as lost; the first lost value).
-    With exists=False (x_bad not known to be lost) only the voltage threshold is tried,
-    None if it does not fall to the applied voltage before x_bad."""
-    lost = (BaseStateError, ConvergenceError)
-    return events.threshold_between(
-        x_ok,
-        x_bad,
-        margin=VoltageMargin(at, params.voltage) if params.voltage > 0 else None,
-        exists=Solves(at, lost, rtol) if exists else None,
-        tolerate=(ValueError, *lost),
-        last="bad",
-    )
-
-
 def _second_resolution(value_coarse, value: float) -> float:
     """|root of the coarser h near value - value| (NaN if the base state is lost before
     the coarse target changes sign: a surface instability at the threshold itself)."""
@@ -280,7 +155,7 @@ def _solve(params, solve_for, side, faces, rtol, direction, until=None) -> Surfa
     hm = sampler(faces, signs, fine, direction, refine_below=MARCH_REFINE)
     hc = sampler(faces, signs, coarse, direction)
     at = TubeAt(params, solve_for, as_float=True)
-    kind, value, bracket = _locate(params, solve_for, side, h, rtol, hm, until)
+    kind, value, bracket = locate(params, solve_for, side, h, rtol, hm, until)
     if kind in (Kind.THRESHOLD, Kind.NONE):
         return SurfaceLimit(
             solve_for,

@@ -1,0 +1,168 @@
+"""Where a march's base state is lost: the voltage threshold, the edge of the states, a lock.
+
+Shared by the mode march (march.py) and the short-wave march (surface.py): when a march's
+state fails at x_bad after one at x_ok, :func:`threshold_between` says where the state ends
+between them, and whether that end is established.
+
+A state that is lost (the state search fails: BaseStateError) right after one that solves
+ends the path there. A state that exists but does not resolve (ConvergenceError: its profile
+needs more than the largest Chebyshev degree, or it lies within LOCK_MARGIN of a lock,
+along.clear_of_lock) ends nothing by itself: a stiffening layer's state goes on, closer and
+closer to its lock (docs/reliability.md). The loss there is established only kinematically:
+with the axial stretch prescribed, every state has I1 >= lambda_e^2 + 2 / lambda_e and
+I2 >= 2 lambda_e + 1 / lambda_e^2 (lambda_e = lambda_z / g_z, the elastic axial stretch;
+equality for equal in-plane stretches), so past the lambda_e where the energy at those least
+invariants stops being finite no state can exist. For Gent's energy that is the root of
+lambda_e^2 + 2 / lambda_e - 3 = jm; for an energy text, whose domain is taken to be bounded
+in I1 and I2 from above (Gent's, Gent-Gent's), the edge of its finite values, bisected.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..basestate.tube import solve_base_state
+from ..continuation.events import EDGE, FULL, LOCK, bisect, brent
+from ..continuation.events import threshold_between as _lost_between
+from ..errors import NEAR_LOCK, BaseStateError, ConvergenceError, ParameterError
+from ..model.layers import Tube
+from .along import TubeAt, VoltageMargin, bounded_energy, clear_of_lock, has_lock
+
+
+def threshold_between(at: TubeAt, params: Tube, x_ok: float, x_bad: float, rtol=1e-12):
+    """Where the base state is lost between x_ok and x_bad (no state, or none resolved, at
+    x_bad): (value, the last x the march may step to, None). Where the voltage threshold
+    falls to the applied voltage if that brackets it, else the edge of the states that
+    solve at ``rtol`` (whichever of the tube's loads reaches its threshold), bisected.
+
+    Next to a locking stretch the states past the edge may exist and yet not resolve: the
+    edge is then a loss only where a layer locks kinematically before the first state that
+    is lost (or, where x_bad is not lost, within one more step of x_bad: the march came
+    within LOCK_MARGIN of the lock), and the value is that lock. Else the answer is (None,
+    the last resolved x, the error to raise if nothing is found before it)."""
+    if params.voltage > 0:
+        margin = VoltageMargin(at, params.voltage)
+        # no sign change (ValueError), or no voltage branch to read at x_bad: bisect instead
+        x = _lost_between(
+            x_ok, x_bad, margin=margin, tolerate=(ValueError, BaseStateError, ConvergenceError)
+        )
+        if x is not None:
+            return x, x, None
+    fate_bad = _fate(at, x_bad, rtol)
+    if fate_bad == "solved":  # the failure was the march's alone: no edge here
+        return (
+            None,
+            x_ok,
+            ConvergenceError(
+                f"the base state at {x_bad:.12g} was not resolved continued from its neighbour"
+                " (it solves from cold)"
+            ),
+        )
+    ok, bad = bisect(lambda x: _fate(at, x, rtol) == "solved", x_ok, x_bad, EDGE)
+    if _fate(at, bad, rtol) != "unresolved":
+        return ok, ok, None
+    beyond = x_bad if fate_bad == "lost" else _lost_past_lock(at, x_ok, x_bad, rtol)
+    lost_from = ""
+    if beyond is not None:
+        _, lost = bisect(lambda x: _fate(at, x, rtol) != "lost", bad, beyond, EDGE)
+        lock = kinematic_lock(at, ok, lost)
+        if lock is not None:  # past it no state can exist: the loss is established, exactly
+            return lock, ok, None
+        lost_from = f", and the state search fails from {lost:.12g}"
+    locks = has_lock(at(x_ok))
+    near = "a layer next to its locking stretch?" if locks else "why is not known"
+    unresolved = ConvergenceError(
+        f"the states from {bad:.12g} are not resolved ({near}){lost_from}: whether the"
+        " state is lost there is not established"
+    )
+    if locks:  # neither a looser rtol (the states' is fixed) nor collocation helps there
+        unresolved.remedy = NEAR_LOCK
+    return None, ok, unresolved
+
+
+def _lost_past_lock(at: TubeAt, x_ok: float, x_bad: float, rtol: float) -> float | None:
+    """x_bad unresolved but not lost: a point one more step (x_bad - x_ok) on, if a layer
+    locks kinematically before it and no state is found there (else None)."""
+    ahead = x_bad + (x_bad - x_ok)
+    try:
+        if kinematic_lock(at, x_bad, ahead) is None or _fate(at, ahead, rtol) != "lost":
+            return None
+    except ParameterError:  # one more step leaves the control's range
+        return None
+    return ahead
+
+
+def kinematic_lock(at: TubeAt, a: float, b: float) -> float | None:
+    """Where the axial stretch alone locks a layer, if that is between a and b (the first
+    such x from a, over the layers: module docstring). None under force control or where
+    no layer locks in [a, b] (a lock approached under a load is approached, not reached:
+    no loss)."""
+    if at(a).axial_force is not None:
+        return None
+    locks = [x for x in (_gent_lock(at, a, b), _domain_lock(at, a, b)) if x is not None]
+    return min(locks, key=lambda x: abs(x - a)) if locks else None
+
+
+def _gent_lock(at: TubeAt, a: float, b: float) -> float | None:
+    """The root of lambda_e^2 + 2 / lambda_e - 3 = jm of the first Gent layer to lock
+    between a and b, by Brent."""
+
+    def excess(x) -> float:
+        tube = at(x)
+        worst = -math.inf
+        for layer in tube.layers:
+            energy = layer.material.definition  # a BuiltinEnergy, or an expression
+            if getattr(energy, "family", None) == "gent" and not layer.graded:
+                le = tube.stretch / layer.growth[2]
+                worst = max(worst, le * le + 2.0 / le - 3.0 - energy.parameter)
+        return worst
+
+    fa, fb = excess(a), excess(b)
+    if not (math.isfinite(fa) and fa < 0.0 <= fb):
+        return None
+    return float(brent(excess, *sorted((a, b)), FULL))
+
+
+def _domain_lock(at: TubeAt, a: float, b: float) -> float | None:
+    """The last x (from a) where every energy text is finite at the least invariants of its
+    elastic axial stretch, if it stops being so before b: bisected to 1e-14 relative."""
+
+    def admissible(x) -> bool:
+        tube = at(x)
+        for layer in tube.layers:
+            omega = bounded_energy(layer)
+            if omega is not None and not layer.graded:
+                le = tube.stretch / layer.growth[2]
+                if not _finite(omega, le * le + 2.0 / le, 2.0 * le + 1.0 / (le * le)):
+                    return False
+        return True
+
+    if not any(bounded_energy(layer) for layer in at(a).layers):
+        return None
+    if not admissible(a) or admissible(b):
+        return None
+    return bisect(admissible, a, b, LOCK)[0]
+
+
+def _finite(omega, i1: float, i2: float) -> bool:
+    """Is the energy finite at (I1, I2) with no field (I4 = I5 = I6 = 0)?"""
+    with np.errstate(all="ignore"):
+        try:
+            return math.isfinite(float(omega(i1, i2, 0.0, 0.0, 0.0)))
+        except (ArithmeticError, ValueError):
+            return False
+
+
+def _fate(at: TubeAt, x: float, rtol: float = 1e-12) -> str:
+    """The base state at x: "solved", "lost" (BaseStateError) or "unresolved" (it exists,
+    but its profile is not resolved, or it lies within LOCK_MARGIN of a lock:
+    ConvergenceError)."""
+    try:
+        clear_of_lock(solve_base_state(at(x), rtol=rtol))  # from cold, as every bisection
+    except BaseStateError:
+        return "lost"
+    except ConvergenceError:
+        return "unresolved"
+    return "solved"

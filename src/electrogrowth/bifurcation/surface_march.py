@@ -1,0 +1,144 @@
+"""The short-wave march: the control from its stable start to the first zero of the
+half-space target h (surface.py), or to the loss of the state or of strong ellipticity.
+
+Steps of 0.4 % of the scale doubling up to 5 %, limited by 0.7 of the linear extrapolation of
+h to zero (SURFACE_STEPS); a bounded minimisation where h dips between samples. Where the
+state fails, the loss is located as the mode march locates it (state_loss.py): the voltage
+threshold, the state search failing, or a kinematic lock; a state that exists but does not
+resolve, or lies within along.LOCK_MARGIN of a lock, is no loss. Where h turns NaN the
+half-space has stopped being strongly elliptic: that edge is bisected.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Callable
+
+from ..continuation import events
+from ..continuation.path import ControlPath, Stepper, StepPolicy
+from ..errors import BaseStateError, ConvergenceError, ParameterError
+from ..outcomes import Kind
+from .along import Elliptic, NearLock, SampleValue, StateAt, TubeAt, VoltageMargin
+from .along import voltage_threshold as _voltage_threshold
+from .march import control_path
+from .state_loss import threshold_between
+
+#: the short-wave march's step control: as the mode march's, but down to 1e-6 of the scale
+#: (h is one continuous function: its zero may be approached closer)
+SURFACE_STEPS = StepPolicy(smallest=1e-6)
+
+
+def locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, until=None):
+    """March to the first zero of h (not past ``until``, if given); returns (kind, value,
+    bracket or None).
+
+    h_march (default h) is used for the steps: it may be cheaper where h is far from 0
+    but must agree with h wherever either is <= MARCH_REFINE."""
+    fine_h, h = h, (h_march or h)
+    at = TubeAt(params, solve_for, as_float=True)
+    state_at = StateAt(at, rtol)
+    path = ControlPath(*control_path(params, solve_for, side))
+    if until is not None and (until - path.start) * path.sense > 0:
+        path = dataclasses.replace(
+            path,
+            end=path.start + path.sense * min(abs(until - path.start), abs(path.end - path.start)),
+        )
+    x0, scale = path.start, path.scale
+    try:
+        state = state_at(x0)
+    except BaseStateError as exc:
+        raise ParameterError(
+            f"no base state at the start of the march, {solve_for} = {x0:g}: {exc}"
+        ) from None
+    s0 = h(state)
+    if math.isnan(s0.value):
+        raise ParameterError(
+            f"the half-space at the {s0.face} face is not strongly "
+            f"elliptic at {solve_for} = {x0:g}; start from a stable state"
+        )
+    if s0.value <= 0:
+        raise ParameterError(
+            f"the {s0.face} face is already unstable (psi = {s0.psi:.6g})"
+            f" at {solve_for} = {x0:g}; start from a stable state"
+        )
+    value_of, fine_of = SampleValue(h, state_at), SampleValue(fine_h, state_at)
+    xs, hs = [x0], [s0.value]
+    step = Stepper(path, SURFACE_STEPS, state.lambda_i)
+    # unresolved: the error to raise if nothing is found (states past the path's end exist
+    # but do not resolve, next to a lock: state_loss.threshold_between)
+    threshold, unresolved = None, None
+    while not step.at_end():
+        x_prev = step.x
+        x = step.propose()
+        try:
+            state = state_at(x)
+        except (BaseStateError, ConvergenceError) as exc:  # lost, or unresolved
+            if _retry(exc) and step.unresolved():
+                continue  # the solver failed here, not next to a lock: step shorter first
+            value, edge, pending = threshold_between(at, params, x_prev, x, rtol)
+            if value is not None or threshold is None:  # an established loss stays
+                threshold, unresolved = value, pending
+            if step.lost(edge):
+                break
+            continue
+        if step.jumped(state.lambda_i):
+            continue
+        s = h(state)
+        if math.isnan(s.value):  # ellipticity lost in (x_prev, x]
+            elliptic = Elliptic(value_of)
+            edge = events.Tolerance(1e-13 * scale, maxiter=60, scale="absolute")
+            lo, hi = events.bisect(elliptic, x_prev, x, edge)
+            if fine_of(lo) <= 0:  # a surface instability just before
+                return Kind.SURFACE, None, _bracket(xs, lo, fine_of)
+            return Kind.ELLIPTICITY, 0.5 * (lo + hi), None
+        if s.value <= 0:
+            return Kind.SURFACE, None, _bracket(xs, x, fine_of)
+        if len(hs) >= 2 and events.dipped(hs[-2], hs[-1], s.value):  # a dip between samples?
+            dip = events.dip_bracket(value_of, xs[-2], x)
+            if dip is not None:
+                return Kind.SURFACE, None, _bracket(xs[:-1], float(dip[1]), fine_of)
+        xs.append(x)
+        hs.append(s.value)
+        if step.film(state.lambda_i):  # the wall is a film: at the threshold
+            step.accept(x, state.lambda_i)
+            if solve_for != "voltage" and threshold is None and params.voltage > 0:
+                threshold = events.threshold_between(
+                    x,
+                    step.end,
+                    margin=VoltageMargin(at, params.voltage),
+                    tolerate=(ValueError, BaseStateError, ConvergenceError),
+                )
+            break
+        slope = (hs[-1] - hs[-2]) / (xs[-1] - xs[-2]) * path.sense
+        limit = SURFACE_STEPS.safety * hs[-1] / -slope / scale if slope < 0 else math.inf
+        step.accept(x, state.lambda_i, limit)
+    if threshold is None and unresolved is not None:  # neither a loss nor a root established
+        err = ConvergenceError(
+            f"no surface instability for {solve_for} from {x0:.12g} up to {step.x:.12g}, and"
+            f" the base states past it are not resolved: {unresolved.args[0]}"
+        )
+        err.remedy = unresolved.remedy
+        raise err from unresolved
+    if threshold is None and solve_for == "voltage":
+        thr = _voltage_threshold(params)
+        threshold = thr if math.isfinite(thr) else None
+    if threshold is not None:
+        return Kind.THRESHOLD, threshold, None
+    return Kind.NONE, math.nan, None
+
+
+def _retry(exc: Exception) -> bool:
+    """Is ``exc`` a failure of the state solver that a shorter step may avoid (not a loss of
+    the state, nor a state next to a lock)?"""
+    return isinstance(exc, ConvergenceError) and not isinstance(exc, NearLock)
+
+
+def _bracket(xs, x_bad, value_of) -> tuple[float, float]:
+    """(x_ok, x_bad) with the fine h > 0 at x_ok: the newest sample where it is (the
+    march start always is)."""
+    for x in reversed(xs):
+        if value_of(x) > 0:
+            return x, x_bad
+        x_bad = x
+    raise ConvergenceError("the half-space target is not positive at the start")
