@@ -10,7 +10,7 @@ ten times further, and the only located switch is at 1.2843."""
 
 from __future__ import annotations
 
-from electrogrowth import ScanOptions, Tube, prescribe
+from electrogrowth import ScanOptions, Tube, critical_value, prescribe, scan_modes
 
 GROWN = Tube.uniform(1.3, 1.0, growth=1.1)
 OPTIONS = ScanOptions((0, 8), (1, 4))
@@ -25,4 +25,25 @@ def test_to_boundary_is_measured_to_a_located_switch_not_to_a_grid_point():
     assert any(abs(abs(d.x - xs) - d.to_boundary) < 1e-9 for xs in switches), (
         f"to_boundary = {d.to_boundary} from x = {d.x}, but the located switches are at"
         f" {switches}: it was measured to the grid point {d.region[0].lo}"
+    )
+
+
+def test_the_widest_margin_is_not_cut_off_at_the_grid_point_after_a_failed_scan():
+    """With 13 points the (2, 1) interval is found, from the grid point 1.1875 next to the
+    failed first point; but the tube is stable at zero voltage, with (2, 1) first, down to
+    Rbar_o ~ 1.163 (where g = 1.1 is its critical growth), and its margin grows as its
+    critical voltage falls: at Rbar_o = 1.17, M = (v_(1,1) - v_(2,1)) / v_(2,1) = 0.82,
+    seven times the reported widest margin (0.111, at the grid point itself)."""
+    d = prescribe(
+        GROWN, "voltage", (2, 1), ("outer_radius", 1.15, 1.6), points=13, options=OPTIONS
+    )
+    assert d.status == "found" and d.mode == (2, 1)
+    at = GROWN.at("outer_radius", 1.17)
+    first = scan_modes(at, "voltage", options=OPTIONS).critical
+    assert (first.m, first.n) == (2, 1)  # the target is first there
+    v_t = critical_value(at, 2, 1, "voltage").value
+    v_n = min(critical_value(at, *mode, "voltage").value for mode in ((1, 1), (0, 1), (3, 1)))
+    margin = (v_n - v_t) / abs(v_t)
+    assert d.margin >= margin - 1e-9, (
+        f"the widest margin reported is {d.margin} at x = {d.x}; at x = 1.17 it is {margin}"
     )
