@@ -225,11 +225,9 @@ def summary(result) -> list[str]:
         lines.append("  no target mode among the scanned modes: widen --m-max / --n-max")
         return lines
     best = BEST.get(result.status, "never first; closest design")
-    to = "the crease" if result.limited_by == "crease" else str(result.next_mode)
     lines.append(
         f"  {best}: {seq.key} = {result.x:.10g}, mode {result.mode} at {seq.solve_for}_cr ="
-        f" {result.value:.10g}, margin {result.margin:.4g} to {to}"
-        f" ({result.crease_value if to == 'the crease' else result.next_value:.10g})"
+        f" {result.value:.10g}, margin {result.margin:.4g} to {_limit(result)}"
     )
     lines += _verdict_lines(result.verdict)
     if result.to_boundary is not None:
@@ -251,6 +249,15 @@ def _creased(crease: dict | None) -> str:
         return ""
     first, rows = crease["crease_first_points"]
     return f" (a face creases first at {first} of its {rows} points)"
+
+
+def _limit(result) -> str:
+    """What sets a one-variable design's margin, with its value."""
+    if result.limited_by == "crease":
+        return f"the crease ({result.crease_value:.10g})"
+    if result.limited_by == "no design":  # the room below the target over the room above
+        return f"the end of the valid range (next {result.next_mode} at {result.next_value:.10g})"
+    return f"{result.next_mode} ({result.next_value:.10g})"
 
 
 def _verdict_lines(verdict: dict) -> list[str]:

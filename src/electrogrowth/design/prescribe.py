@@ -25,7 +25,7 @@ import math
 
 from ..bifurcation.scan import TOP_MAX, ScanOptions, scan_modes
 from ..errors import ElectrogrowthError
-from ..outcomes import Kind
+from ..outcomes import Kind, Status
 from . import onset
 from .margins import Margins
 from .onset import CREASE_FIRST, gap_to_crease
@@ -39,6 +39,7 @@ NOT_REACHED = "not_reached"  # no target mode among the modes scanned anywhere
 REFINE_ROUNDS = 3  # a competitor missed by the refinement is added, at most this often
 XTOL = 1e-9  # relative accuracy of the best design
 AHEAD = 6  # competitors ahead of the closest design's target mode that are kept
+NO_DESIGN = "no design"  # limited_by: the gap to a located end of the valid range
 
 
 @dataclasses.dataclass(frozen=True)
@@ -188,14 +189,17 @@ def prescribe(
         iv for iv in sequence.intervals if iv.kind == Kind.BIFURCATION and iv.mode in goal
     )
     grid = sorted(set(float(x) for x in sequence.curve.x))
+    edges = no_design_ends(sequence)
     if region:
-        status, best = FOUND, _best_in_region(region, grid, goal, margins, scan)
+        status, best = FOUND, _best_in_region(region, grid, goal, margins, scan, edges)
     else:
         status, best = NOT_FIRST, _closest(grid, goal, margins, scan, lo, hi)
     if best is None:
         return _unreached(goal, key, sequence, region)
     x, mode, others = best
-    m_x, nxt = margins.best_margin(mode, others, x)
+    span = _span(region, x)
+    edge = _touches(span, edges)
+    m_x, nxt = margins.best_margin(mode, others, x, edge)
     v = margins.value(mode, x)
     v_next = margins.value(nxt, x) if nxt is not None else math.nan
     at = tube.at(key, x)
@@ -205,6 +209,8 @@ def prescribe(
     m_crease = gap_to_crease(v, v_crease, margins.sense)
     by_modes = margins.margin(mode, x, v_next) if nxt is not None else math.inf
     limited = "crease" if m_crease < by_modes else "mode"
+    if edge and margins.to_no_design(mode, x, min(by_modes, m_crease)) == m_x:
+        limited = NO_DESIGN  # the room below the target, to the end of the valid range
     if status == FOUND and m_x < 0:  # a crease before the target everywhere in its region
         status = CREASE_FIRST
     if nxt is not None and math.isfinite(v_next):
@@ -212,9 +218,10 @@ def prescribe(
     sens_crease = onset.crease_sensitivity(at, sequence.solve_for, v_crease, tuple(sens))
     if limited == "crease":  # M is the gap to the crease
         sens_margin = onset.margin_sensitivity(margins.sense, v, sens, v_crease, sens_crease)
+    elif limited == NO_DESIGN:  # M_0 moves with the start v_0 too: not derived here
+        sens_margin = {}
     elif sens_next:
         sens_margin = onset.margin_sensitivity(margins.sense, v, sens, v_next, sens_next)
-    span = _span(region, x)
     ends = (
         []
         if span is None
@@ -246,6 +253,23 @@ def prescribe(
     )
 
 
+def no_design_ends(sequence: ModeSequence) -> frozenset:
+    """The located ends of the valid range: the ends of the intervals next to a failed
+    one (beyond them the tube is already unstable at the control's start, or has no
+    state: a switch to "no design")."""
+    ivs = sequence.intervals
+    out = set()
+    for a, b in zip(ivs, ivs[1:]):
+        if (a.kind == Status.FAILED) != (b.kind == Status.FAILED):
+            out.add(b.lo if a.kind == Status.FAILED else a.hi)
+    return frozenset(out)
+
+
+def _touches(span: Interval | None, ends) -> bool:
+    """Does the joined interval ``span`` end at a located end of the valid range?"""
+    return span is not None and (span.lo in ends or span.hi in ends)
+
+
 def _span(region, x: float) -> Interval | None:
     """The region's intervals joined where they touch (a set's modes side by side), the one
     holding x."""
@@ -266,10 +290,12 @@ def _unreached(goal: Target, key, sequence, region) -> Design:
     )  # fmt: skip
 
 
-def _best_in_region(region, grid, goal: Target, margins: Margins, scan):
-    """(x, target mode, competitors) of the widest margin over the region's intervals."""
+def _best_in_region(region, grid, goal: Target, margins: Margins, scan, edges=frozenset()):
+    """(x, target mode, competitors) of the widest margin over the region's intervals (in
+    a span that ends at a located end of the valid range, ``edges``, M counts its gap)."""
     best = None
     for iv in region:
+        edge = _touches(_span(region, 0.5 * (iv.lo + iv.hi)), edges)
         inside = [x for x in grid if iv.lo < x < iv.hi] + [0.5 * (iv.lo + iv.hi)]
         if iv.lo_edge:
             inside.append(iv.lo)
@@ -282,12 +308,12 @@ def _best_in_region(region, grid, goal: Target, margins: Margins, scan):
         others = tuple(sorted(found))
         if not others:
             continue
-        scores = [margins.best_margin(iv.mode, others, x)[0] for x in inside]
+        scores = [margins.best_margin(iv.mode, others, x, edge)[0] for x in inside]
         i = max(range(len(inside)), key=scores.__getitem__)
         a = inside[i - 1] if i > 0 else iv.lo
         b = inside[i + 1] if i + 1 < len(inside) else iv.hi
-        x, others = _refine(iv.mode, others, a, b, inside[i], goal, margins, scan)
-        score = margins.best_margin(iv.mode, others, x)[0]
+        x, others = _refine(iv.mode, others, a, b, inside[i], goal, margins, scan, edge)
+        score = margins.best_margin(iv.mode, others, x, edge)[0]
         if best is None or score > best[0]:
             best = (score, x, iv.mode, others)
     return None if best is None else best[1:]
@@ -341,21 +367,22 @@ def _competitors(mode, ranked, goal: Target) -> list:
     return out
 
 
-def _refine(mode, others, a, b, x0, goal: Target, margins: Margins, scan):
+def _refine(mode, others, a, b, x0, goal: Target, margins: Margins, scan, edge=False):
     """Maximise M over [a, b] by bounded Brent from the grid's best x0; a competitor that a
-    scan at the optimum finds but ``others`` lacks is added and the maximisation repeated."""
+    scan at the optimum finds but ``others`` lacks is added and the maximisation repeated
+    (``edge``: M counts the gap to a located end of the valid range)."""
     from scipy.optimize import minimize_scalar
 
     x = x0
     for _ in range(REFINE_ROUNDS):
         if b > a:
             res = minimize_scalar(
-                lambda t, others=others: -margins.best_margin(mode, others, t)[0],
+                lambda t, others=others: -margins.best_margin(mode, others, t, edge)[0],
                 bounds=(a, b),
                 method="bounded",
                 options={"xatol": XTOL * max(1.0, abs(x0))},
             )
-            better = -res.fun >= margins.best_margin(mode, others, x0)[0]
+            better = -res.fun >= margins.best_margin(mode, others, x0, edge)[0]
             x = float(res.x) if better else x0
         missing = [m for m in _competitors(mode, scan(x), goal) if m not in others]
         if not missing:
