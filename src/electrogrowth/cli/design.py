@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import re
 from pathlib import Path
 
@@ -217,9 +218,10 @@ def summary(result) -> list[str]:
             f"  {seq.key} {iv.lo:.10g} .. {iv.hi:.10g}: {what}{_creased(creases.get(iv))}"
         )
     for s in seq.switches:
+        value = s.value if math.isfinite(s.value) else s.value_after  # NaN: from no mode
         lines.append(
             f"  {s.kind} at {seq.key} = {s.x:.12g}: {s.mode_before} -> {s.mode_after},"
-            f" {seq.solve_for}_cr = {s.value:.12g}"
+            f" {seq.solve_for}_cr = {value:.12g}"
         )
     if result.status == "not_reached":
         lines.append("  no target mode among the scanned modes: widen --m-max / --n-max")

@@ -15,7 +15,11 @@ M is also at most the relative gap to the crease), so a design where a face crea
 T has M < 0. The best design maximises M over the target's region; where a crease comes
 first across the whole region it is the one nearest to wrinkling first (CREASE_FIRST).
 Where no x in [lo, hi] makes the target first, the closest design maximises M < 0 (the
-smallest relative gap) and N is the mode that beats T there. docs/design.md.
+smallest relative gap) and N is the mode that beats T there. In a span of the region that
+ends at a located end of the valid range (next to a failed scan: the tube is already
+unstable at the control's start beyond it), v_T falls to the start there and M alone grows
+without bound, so the room below the target counts too (design/margins.py: M_0 = (v_T -
+v_0) / (v_N - v_T), ``limited_by`` NO_DESIGN). docs/design.md.
 """
 
 from __future__ import annotations
@@ -25,12 +29,12 @@ import math
 
 from ..bifurcation.scan import TOP_MAX, ScanOptions, scan_modes
 from ..errors import ElectrogrowthError
-from ..outcomes import Kind, Status
+from ..outcomes import Kind
 from . import onset
 from .margins import Margins
 from .onset import CREASE_FIRST, gap_to_crease
 from .sensitivity import sensitivities, sensitivity_json
-from .sequence import Interval, ModeSequence, check_vary, mode_sequence
+from .sequence import Interval, ModeSequence, check_vary, mode_sequence, no_design_ends
 from .targets import Target, check_target
 
 FOUND = "found"  # the target comes first in its region; the best design has M > 0
@@ -50,14 +54,17 @@ class Design:
     intervals where the target is first), ``mode`` is critical there at ``value`` and
     ``next_mode`` comes next at ``next_value``; ``to_boundary`` is the distance from x to
     the nearest end of the region (its intervals joined where they touch) that is a located
-    switch (None if both ends are the ends of the range). NOT_FIRST: no region; x is the
+    switch or a located end of the valid range, next to a failed scan (None if both ends are
+    the ends of the range). NOT_FIRST: no region; x is the
     closest design, M < 0, and
     ``next_mode`` beats the target there. CREASE_FIRST: the target is first among the
     wrinkles in its region, but a free face creases before it at every design there; x is
     the design nearest to wrinkling first (M < 0, ``limited_by`` "crease").
     ``crease_value`` is where a face creases at x (NaN: none; ``crease_sensitivity`` its
     d/dp), ``crease_margin`` the relative gap to it (``margin_sensitivity`` is that of the
-    gap that sets M), ``limited_by`` which competitor sets M ("mode" or "crease"),
+    gap that sets M; empty for "no design"), ``limited_by`` which competitor sets M
+    ("mode", "crease", or "no design": the room below the target, next to a located end of
+    the valid range),
     ``verdict`` the verdict of a scan at x (design/onset.py :func:`design_verdict`) and
     ``region_crease`` how many of the curve's points in each interval of the region
     crease first. NOT_REACHED: no target mode was found among the
@@ -251,18 +258,6 @@ def prescribe(
         tuple(onset.region_creases(region, sequence.curve)),
         sens_crease,
     )
-
-
-def no_design_ends(sequence: ModeSequence) -> frozenset:
-    """The located ends of the valid range: the ends of the intervals next to a failed
-    one (beyond them the tube is already unstable at the control's start, or has no
-    state: a switch to "no design")."""
-    ivs = sequence.intervals
-    out = set()
-    for a, b in zip(ivs, ivs[1:]):
-        if (a.kind == Status.FAILED) != (b.kind == Status.FAILED):
-            out.add(b.lo if a.kind == Status.FAILED else a.hi)
-    return frozenset(out)
 
 
 def _touches(span: Interval | None, ends) -> bool:

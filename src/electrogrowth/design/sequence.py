@@ -272,6 +272,18 @@ def from_curve(curve: Curve, key: str, lo: float, hi: float) -> ModeSequence:
     return ModeSequence(key, lo, hi, curve.solve_for, curve.side, intervals, switches, curve)
 
 
+def no_design_ends(sequence: ModeSequence) -> frozenset:
+    """The located ends of the valid range: the ends of the intervals next to a failed
+    one (beyond them the tube is already unstable at the control's start, or has no
+    state: a switch to "no design")."""
+    ivs = sequence.intervals
+    out = set()
+    for a, b in zip(ivs, ivs[1:]):
+        if (a.kind == Status.FAILED) != (b.kind == Status.FAILED):
+            out.add(b.lo if a.kind == Status.FAILED else a.hi)
+    return frozenset(out)
+
+
 def mode_values(tube, solve_for: str, key: str, modes, xs, *, side: str | None = None) -> dict:
     """{(m, n): array of the first critical value of that mode at each ``key`` = x of
     ``xs``} (NaN where the mode does not wrinkle before the threshold, or fails): the
