@@ -7,6 +7,12 @@ mode and the threshold: bisection (continuation.events.bisect, MODE_EDGE) on whe
 mode still bifurcates before the threshold. A located switch is checked by a scan there;
 a third mode found first splits the interval. If a single-mode solve fails, the switch is
 bisected with scans, to a relative 1e-7 only.
+
+Between a grid point whose scan failed (the tube already unstable at the control's start,
+no base state, ...) and one whose scan succeeded, on request (``critical_curve(...,
+edges=True)``, the design's mode sequence): the end of the valid range, by bisection on
+"the scan succeeds" to the switches' tolerance (SWITCH), kept as an "end" from or to no
+mode; then the switches between that end and the valid grid point, as above.
 """
 
 from __future__ import annotations
@@ -17,6 +23,9 @@ from ..continuation.events import MODE_EDGE, SWITCH, bisect, brent
 from ..errors import ElectrogrowthError
 from ..outcomes import NO_MODE, Kind
 from .curve_record import CurvePoint, Switch, _change_kind, _failed, _row
+
+#: the value recorded on the failed side of a located edge of the valid range
+NO_VALUE = math.nan
 
 
 class _Locator:
@@ -94,6 +103,32 @@ class _Locator:
             (x, v_after, b.mode, kind, "", b.surface, math.nan),
         ]
         return rows, [Switch(x, v_before, a.mode, b.mode, v_after, kind)]
+
+    def edge(self, a: CurvePoint, b: CurvePoint, depth: int):
+        """Rows and changes strictly between neighbours a and b of which exactly one
+        failed: the last failed and the first valid scan of a bisection on "the scan
+        succeeds" (SWITCH's tolerance), the "end" between them (at the valid one, NaN on
+        the failed side) and the switches from there to the valid grid point."""
+        good, bad = (b, a) if _failed(a) else (a, b)
+        scanned = {good.x: good, bad.x: bad}
+
+        def succeeds(x):
+            scanned[x] = self.unit(x)
+            return not _failed(scanned[x])
+
+        x_good, x_bad = bisect(succeeds, good.x, bad.x, SWITCH)
+        end, last_failed = scanned[x_good], scanned[x_bad]
+        rows, switches = [], []
+        if end is not good and end.mode != good.mode:
+            rows, switches = self.between(*((end, good) if good is b else (good, end)), depth)
+        inner = [_row(p) for p in (last_failed, end) if p is not bad and p is not good]
+        if good is b:  # failed before, valid after: the valid range starts at x_good
+            rows = inner + rows
+            change = Switch(x_good, NO_VALUE, NO_MODE, end.mode, end.value, Kind.END)
+        else:
+            rows = rows + inner[::-1]
+            change = Switch(x_good, end.value, end.mode, NO_MODE, NO_VALUE, Kind.END)
+        return rows, sorted(switches + [change], key=lambda s: (b.x - a.x) * s.x)
 
     def _split(self, a, mid, b, depth):
         """Locate the switches on both sides of a scanned point ``mid`` (kept as a row)."""

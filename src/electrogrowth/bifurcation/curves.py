@@ -23,9 +23,11 @@ split at it and both halves are located again. If a single-mode solve fails (e.g
 kernel cannot integrate a high mode next to the threshold), the switch is bisected with
 scans instead, to a relative 1e-7 only. A point whose scan fails (e.g. the tube is
 already unstable at the start of the march) is kept as kind "failed" with its message (kind
-"error": an unexpected exception, a bug). An interrupt (Ctrl-C, SIGTERM) is never a failed
-point: it ends the curve with :class:`~electrogrowth.interrupts.Interrupted`, whose
-``partial`` holds the grid points computed before it.
+"error": an unexpected exception, a bug); with ``edges=True`` (the design's mode sequence)
+the end of the valid range next to it is located too, by bisection on "the scan
+succeeds", and kept as an "end" to or from no mode. An interrupt (Ctrl-C, SIGTERM) is
+never a failed point: it ends the curve with :class:`~electrogrowth.interrupts.Interrupted`,
+whose ``partial`` holds the grid points computed before it.
 
 By continuation (``follow``, the default with the builtin ``map``), the grid points between
 full scans are not scanned: the last scan's critical mode and runners-up are followed
@@ -116,6 +118,8 @@ def _progress_bar(total: int, desc: str, unit: str = "pt"):
 
 def _critical_text(pt: CurvePoint) -> str:
     """What is critical at a grid point, in a progress message."""
+    if _failed(pt):
+        return "a failed scan"
     if pt.kind == Kind.SURFACE:
         return "the short-wave limit"
     return "the threshold" if pt.mode == NO_MODE else str(pt.mode)
@@ -152,6 +156,7 @@ def critical_curve(
     progress: bool | Callable[[int], object] | None = None,
     mapper: Callable = map,
     follow: bool = True,
+    edges: bool = False,
 ) -> Curve:
     """Critical ``solve_for`` as ``along`` runs over ``values``, switches located.
 
@@ -187,6 +192,12 @@ def critical_curve(
         critical mode and its runners-up from point to point, with full scans only where
         the check fails, at the ends and every CHECK_EVERY points (module docstring);
         False: a full scan at every point.
+    edges : bool
+        Also locate, between a failed grid point and a valid neighbour, where the scans
+        start to succeed (bisection to the switches' tolerance, some 40 scans per edge):
+        an "end" in ``Curve.ends`` whose failed side has mode (-1, -1) and value NaN, with
+        the last failed and the first valid scan as rows. False (default): the valid range
+        ends at the grid point.
 
     Returns
     -------
@@ -265,7 +276,7 @@ def critical_curve(
         loc = _Locator(
             params, solve_for, along, side, unit, solve=critical_value, limit=short_wave_limit
         )
-        rows, switches = _located(points, loc, progress)
+        rows, switches = _located(points, loc, progress, edges)
         xs_rows, values = [r[0] for r in rows], [r[1] for r in rows]
         crease = crease_along(params, solve_for, along, side, xs_rows, values)
     except (KeyboardInterrupt, Exception) as exc:  # an interrupt, maybe wrapped by the kernel:
@@ -280,22 +291,32 @@ def critical_curve(
     return _curve(along, solve_for, side, params, rows, switches, crease)
 
 
-def _located(points: list[CurvePoint], loc: _Locator, progress=None):
-    """The rows of the grid points with the located switches between them, and the
-    switches (a progress bar of its own when ``progress`` is True)."""
+def _edge(prev: CurvePoint, pt: CurvePoint) -> bool:
+    """One of two neighbouring grid points failed, the other not: an end of the valid
+    range to locate (with ``edges``)."""
+    return _failed(prev) != _failed(pt)
+
+
+def _located(points: list[CurvePoint], loc: _Locator, progress=None, edges: bool = False):
+    """The rows of the grid points with the located switches between them (and, with
+    ``edges``, the ends of the valid range next to failed points), and the switches (a
+    progress bar of its own when ``progress`` is True)."""
     rows, switches = [], []
-    located = sum(map(_changes, points[:-1], points[1:]))
+    pairs = list(zip(points[:-1], points[1:]))
+    located = sum(_changes(a, b) or (edges and _edge(a, b)) for a, b in pairs)
     bar = None
     if progress is True and located:  # locating can take far longer than the grid
         bar = _progress_bar(located, "locating mode switches", "switch")
     try:
         for i, pt in enumerate(points):
             prev = points[i - 1] if i else None
-            if prev is not None and _changes(prev, pt):
+            edge = edges and prev is not None and _edge(prev, pt)
+            if prev is not None and (_changes(prev, pt) or edge):
                 if bar is not None:
                     bar.set_postfix_str(f"between {_critical_text(prev)} and {_critical_text(pt)}")
                 try:
-                    new_rows, new_switches = loc.between(prev, pt, MAX_SPLITS)
+                    locate = loc.edge if edge else loc.between
+                    new_rows, new_switches = locate(prev, pt, MAX_SPLITS)
                 except Exception as exc:  # noqa: BLE001 -- keep the grid points
                     reraise_interrupt(exc)
                     new_rows, new_switches = [], []

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import re
 from pathlib import Path
 
@@ -217,19 +218,18 @@ def summary(result) -> list[str]:
             f"  {seq.key} {iv.lo:.10g} .. {iv.hi:.10g}: {what}{_creased(creases.get(iv))}"
         )
     for s in seq.switches:
+        value = s.value if math.isfinite(s.value) else s.value_after  # NaN: from no mode
         lines.append(
             f"  {s.kind} at {seq.key} = {s.x:.12g}: {s.mode_before} -> {s.mode_after},"
-            f" {seq.solve_for}_cr = {s.value:.12g}"
+            f" {seq.solve_for}_cr = {value:.12g}"
         )
     if result.status == "not_reached":
         lines.append("  no target mode among the scanned modes: widen --m-max / --n-max")
         return lines
     best = BEST.get(result.status, "never first; closest design")
-    to = "the crease" if result.limited_by == "crease" else str(result.next_mode)
     lines.append(
         f"  {best}: {seq.key} = {result.x:.10g}, mode {result.mode} at {seq.solve_for}_cr ="
-        f" {result.value:.10g}, margin {result.margin:.4g} to {to}"
-        f" ({result.crease_value if to == 'the crease' else result.next_value:.10g})"
+        f" {result.value:.10g}, margin {result.margin:.4g} to {_limit(result)}"
     )
     lines += _verdict_lines(result.verdict)
     if result.to_boundary is not None:
@@ -251,6 +251,15 @@ def _creased(crease: dict | None) -> str:
         return ""
     first, rows = crease["crease_first_points"]
     return f" (a face creases first at {first} of its {rows} points)"
+
+
+def _limit(result) -> str:
+    """What sets a one-variable design's margin, with its value."""
+    if result.limited_by == "crease":
+        return f"the crease ({result.crease_value:.10g})"
+    if result.limited_by == "no design":  # the room below the target over the room above
+        return f"the end of the valid range (next {result.next_mode} at {result.next_value:.10g})"
+    return f"{result.next_mode} ({result.next_value:.10g})"
 
 
 def _verdict_lines(verdict: dict) -> list[str]:

@@ -15,7 +15,11 @@ M is also at most the relative gap to the crease), so a design where a face crea
 T has M < 0. The best design maximises M over the target's region; where a crease comes
 first across the whole region it is the one nearest to wrinkling first (CREASE_FIRST).
 Where no x in [lo, hi] makes the target first, the closest design maximises M < 0 (the
-smallest relative gap) and N is the mode that beats T there. docs/design.md.
+smallest relative gap) and N is the mode that beats T there. In a span of the region that
+ends at a located end of the valid range (next to a failed scan: the tube is already
+unstable at the control's start beyond it), v_T falls to the start there and M alone grows
+without bound, so the room below the target counts too (design/margins.py: M_0 = (v_T -
+v_0) / (v_N - v_T), ``limited_by`` NO_DESIGN). docs/design.md.
 """
 
 from __future__ import annotations
@@ -30,7 +34,7 @@ from . import onset
 from .margins import Margins
 from .onset import CREASE_FIRST, gap_to_crease
 from .sensitivity import sensitivities, sensitivity_json
-from .sequence import Interval, ModeSequence, check_vary, mode_sequence
+from .sequence import Interval, ModeSequence, check_vary, mode_sequence, no_design_ends
 from .targets import Target, check_target
 
 FOUND = "found"  # the target comes first in its region; the best design has M > 0
@@ -39,6 +43,7 @@ NOT_REACHED = "not_reached"  # no target mode among the modes scanned anywhere
 REFINE_ROUNDS = 3  # a competitor missed by the refinement is added, at most this often
 XTOL = 1e-9  # relative accuracy of the best design
 AHEAD = 6  # competitors ahead of the closest design's target mode that are kept
+NO_DESIGN = "no design"  # limited_by: the gap to a located end of the valid range
 
 
 @dataclasses.dataclass(frozen=True)
@@ -49,14 +54,17 @@ class Design:
     intervals where the target is first), ``mode`` is critical there at ``value`` and
     ``next_mode`` comes next at ``next_value``; ``to_boundary`` is the distance from x to
     the nearest end of the region (its intervals joined where they touch) that is a located
-    switch (None if both ends are the ends of the range). NOT_FIRST: no region; x is the
+    switch or a located end of the valid range, next to a failed scan (None if both ends are
+    the ends of the range). NOT_FIRST: no region; x is the
     closest design, M < 0, and
     ``next_mode`` beats the target there. CREASE_FIRST: the target is first among the
     wrinkles in its region, but a free face creases before it at every design there; x is
     the design nearest to wrinkling first (M < 0, ``limited_by`` "crease").
     ``crease_value`` is where a face creases at x (NaN: none; ``crease_sensitivity`` its
     d/dp), ``crease_margin`` the relative gap to it (``margin_sensitivity`` is that of the
-    gap that sets M), ``limited_by`` which competitor sets M ("mode" or "crease"),
+    gap that sets M; empty for "no design"), ``limited_by`` which competitor sets M
+    ("mode", "crease", or "no design": the room below the target, next to a located end of
+    the valid range),
     ``verdict`` the verdict of a scan at x (design/onset.py :func:`design_verdict`) and
     ``region_crease`` how many of the curve's points in each interval of the region
     crease first. NOT_REACHED: no target mode was found among the
@@ -188,14 +196,17 @@ def prescribe(
         iv for iv in sequence.intervals if iv.kind == Kind.BIFURCATION and iv.mode in goal
     )
     grid = sorted(set(float(x) for x in sequence.curve.x))
+    edges = no_design_ends(sequence)
     if region:
-        status, best = FOUND, _best_in_region(region, grid, goal, margins, scan)
+        status, best = FOUND, _best_in_region(region, grid, goal, margins, scan, edges)
     else:
         status, best = NOT_FIRST, _closest(grid, goal, margins, scan, lo, hi)
     if best is None:
         return _unreached(goal, key, sequence, region)
     x, mode, others = best
-    m_x, nxt = margins.best_margin(mode, others, x)
+    span = _span(region, x)
+    edge = _touches(span, edges)
+    m_x, nxt = margins.best_margin(mode, others, x, edge)
     v = margins.value(mode, x)
     v_next = margins.value(nxt, x) if nxt is not None else math.nan
     at = tube.at(key, x)
@@ -205,6 +216,8 @@ def prescribe(
     m_crease = gap_to_crease(v, v_crease, margins.sense)
     by_modes = margins.margin(mode, x, v_next) if nxt is not None else math.inf
     limited = "crease" if m_crease < by_modes else "mode"
+    if edge and margins.to_no_design(mode, x, min(by_modes, m_crease)) == m_x:
+        limited = NO_DESIGN  # the room below the target, to the end of the valid range
     if status == FOUND and m_x < 0:  # a crease before the target everywhere in its region
         status = CREASE_FIRST
     if nxt is not None and math.isfinite(v_next):
@@ -212,9 +225,10 @@ def prescribe(
     sens_crease = onset.crease_sensitivity(at, sequence.solve_for, v_crease, tuple(sens))
     if limited == "crease":  # M is the gap to the crease
         sens_margin = onset.margin_sensitivity(margins.sense, v, sens, v_crease, sens_crease)
+    elif limited == NO_DESIGN:  # M_0 moves with the start v_0 too: not derived here
+        sens_margin = {}
     elif sens_next:
         sens_margin = onset.margin_sensitivity(margins.sense, v, sens, v_next, sens_next)
-    span = _span(region, x)
     ends = (
         []
         if span is None
@@ -246,6 +260,11 @@ def prescribe(
     )
 
 
+def _touches(span: Interval | None, ends) -> bool:
+    """Does the joined interval ``span`` end at a located end of the valid range?"""
+    return span is not None and (span.lo in ends or span.hi in ends)
+
+
 def _span(region, x: float) -> Interval | None:
     """The region's intervals joined where they touch (a set's modes side by side), the one
     holding x."""
@@ -266,10 +285,12 @@ def _unreached(goal: Target, key, sequence, region) -> Design:
     )  # fmt: skip
 
 
-def _best_in_region(region, grid, goal: Target, margins: Margins, scan):
-    """(x, target mode, competitors) of the widest margin over the region's intervals."""
+def _best_in_region(region, grid, goal: Target, margins: Margins, scan, edges=frozenset()):
+    """(x, target mode, competitors) of the widest margin over the region's intervals (in
+    a span that ends at a located end of the valid range, ``edges``, M counts its gap)."""
     best = None
     for iv in region:
+        edge = _touches(_span(region, 0.5 * (iv.lo + iv.hi)), edges)
         inside = [x for x in grid if iv.lo < x < iv.hi] + [0.5 * (iv.lo + iv.hi)]
         if iv.lo_edge:
             inside.append(iv.lo)
@@ -282,12 +303,12 @@ def _best_in_region(region, grid, goal: Target, margins: Margins, scan):
         others = tuple(sorted(found))
         if not others:
             continue
-        scores = [margins.best_margin(iv.mode, others, x)[0] for x in inside]
+        scores = [margins.best_margin(iv.mode, others, x, edge)[0] for x in inside]
         i = max(range(len(inside)), key=scores.__getitem__)
         a = inside[i - 1] if i > 0 else iv.lo
         b = inside[i + 1] if i + 1 < len(inside) else iv.hi
-        x, others = _refine(iv.mode, others, a, b, inside[i], goal, margins, scan)
-        score = margins.best_margin(iv.mode, others, x)[0]
+        x, others = _refine(iv.mode, others, a, b, inside[i], goal, margins, scan, edge)
+        score = margins.best_margin(iv.mode, others, x, edge)[0]
         if best is None or score > best[0]:
             best = (score, x, iv.mode, others)
     return None if best is None else best[1:]
@@ -341,21 +362,22 @@ def _competitors(mode, ranked, goal: Target) -> list:
     return out
 
 
-def _refine(mode, others, a, b, x0, goal: Target, margins: Margins, scan):
+def _refine(mode, others, a, b, x0, goal: Target, margins: Margins, scan, edge=False):
     """Maximise M over [a, b] by bounded Brent from the grid's best x0; a competitor that a
-    scan at the optimum finds but ``others`` lacks is added and the maximisation repeated."""
+    scan at the optimum finds but ``others`` lacks is added and the maximisation repeated
+    (``edge``: M counts the gap to a located end of the valid range)."""
     from scipy.optimize import minimize_scalar
 
     x = x0
     for _ in range(REFINE_ROUNDS):
         if b > a:
             res = minimize_scalar(
-                lambda t, others=others: -margins.best_margin(mode, others, t)[0],
+                lambda t, others=others: -margins.best_margin(mode, others, t, edge)[0],
                 bounds=(a, b),
                 method="bounded",
                 options={"xatol": XTOL * max(1.0, abs(x0))},
             )
-            better = -res.fun >= margins.best_margin(mode, others, x0)[0]
+            better = -res.fun >= margins.best_margin(mode, others, x0, edge)[0]
             x = float(res.x) if better else x0
         missing = [m for m in _competitors(mode, scan(x), goal) if m not in others]
         if not missing:

@@ -6,7 +6,11 @@ each with the pattern that comes first there: a mode (m, n), the exact short-wav
 ("surface") or the loss of the axisymmetric state ("threshold"). The switch between two
 intervals is the curve's own location (bifurcation/curves.py): Brent's method on the
 two-mode condition s (v_A(x) - v_B(x)) = 0, each v the critical value of one fixed mode, to
-an x tolerance of 1e-13 relative; it is not computed a second time here.
+an x tolerance of 1e-13 relative; it is not computed a second time here. Where a grid
+point's scan fails (the tube already unstable at the control's start, no state) next to
+one that succeeds, the curve also locates the end of the valid range (``edges=True``:
+bisection on "the scan succeeds" to the same tolerance), an "end" to or from no mode, so
+an interval next to a failed one is not cut at the grid point.
 """
 
 from __future__ import annotations
@@ -30,8 +34,9 @@ class Interval:
     """``key`` in [lo, hi] (in the order of the grid, lo < hi) has ``mode`` (m, n) first,
     kind "bifurcation"; or kind "surface" (the short-wave limit), "threshold" (no mode
     before the axisymmetric state is lost) or "failed" (mode (-1, -1)). ``lo_edge`` and
-    ``hi_edge`` say whether an end is the end of the searched range (else a located switch,
-    or, after a failed point, a grid point)."""
+    ``hi_edge`` say whether an end is the end of the searched range (else a located switch:
+    next to a failed interval, the located end of the valid range, a switch to "no
+    design")."""
 
     lo: float
     hi: float
@@ -212,6 +217,8 @@ def mode_sequence(
     points : int
         Grid points, evenly spaced on [lo, hi], scanned (or followed) before the switches
         between them are located; an interval narrower than the spacing can be missed.
+        Next to a grid point whose scan fails, the end of the valid range is located (an
+        "end" switch to or from no mode, mode (-1, -1)).
 
     Returns
     -------
@@ -228,7 +235,9 @@ def mode_sequence(
     key, lo, hi = check_vary(vary, tube, solve_for)
     points = check_points(points)
     xs = np.linspace(lo, hi, points)
-    curve = critical_curve(tube, solve_for, key, xs, side=side, options=options, progress=progress)
+    curve = critical_curve(
+        tube, solve_for, key, xs, side=side, options=options, progress=progress, edges=True
+    )
     return from_curve(curve, key, lo, hi)
 
 
@@ -261,6 +270,18 @@ def from_curve(curve: Curve, key: str, lo: float, hi: float) -> ModeSequence:
         for s in changes
     )
     return ModeSequence(key, lo, hi, curve.solve_for, curve.side, intervals, switches, curve)
+
+
+def no_design_ends(sequence: ModeSequence) -> frozenset:
+    """The located ends of the valid range: the ends of the intervals next to a failed
+    one (beyond them the tube is already unstable at the control's start, or has no
+    state: a switch to "no design")."""
+    ivs = sequence.intervals
+    out = set()
+    for a, b in zip(ivs, ivs[1:]):
+        if (a.kind == Status.FAILED) != (b.kind == Status.FAILED):
+            out.add(b.lo if a.kind == Status.FAILED else a.hi)
+    return frozenset(out)
 
 
 def mode_values(tube, solve_for: str, key: str, modes, xs, *, side: str | None = None) -> dict:
