@@ -192,10 +192,16 @@ def test_a_legal_energy_that_overflows_is_one_error_and_no_warning(recwarn):
 
 
 def test_cli_overflowing_energy_prints_no_warning(capsys):
-    argv = ["state", "--outer-radius", "1.4", "--growth", "3", "--energy"]
-    assert main([*argv, f"{NH} + exp((I1 - 3)**3) - 1"]) == 2
+    """At g = 7 the homogeneous state has I1 - 3 = 11.0, where exp((I1 - 3)^3) overflows:
+    no state, one line, no warning. (At g = 3, I1 - 3 = 3.1 and the energy exp(30) is
+    finite: that state exists and is printed, lambda_i = sqrt(g^3 / lambda_z).)"""
+    argv = ["state", "--outer-radius", "1.4", "--energy", f"{NH} + exp((I1 - 3)**3) - 1"]
+    assert main([*argv, "--growth", "7"]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "Warning" not in err, err
+    assert main([*argv, "--growth", "3", "--json"]) == 0
+    out, err = capsys.readouterr()
+    assert json.loads(out)["lambda_i"] == pytest.approx(27**0.5, rel=1e-12) and not err
 
 
 # -- the property: random legal expressions ----------------------------------------------
