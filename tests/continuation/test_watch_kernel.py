@@ -115,3 +115,20 @@ def test_the_kernel_is_used_once_numba_is_loaded():
     from electrogrowth.continuation import predict
 
     assert predict._compiled() is watch_kernel
+
+
+def test_record_takes_a_mask_and_one_value_for_all(monkeypatch):
+    """EventWatch.record, a public method, takes what NumPy indexing takes: a boolean mask
+    of the functions and one value for all of them, compiled as in NumPy, to the last bit."""
+    rng = np.random.default_rng(7)
+    compiled = _random_watch(rng, 5, 1.0)
+    twin = _watch(compiled.x.copy(), compiled.g.copy(), 1.0)
+    for name in ("alive", "moved", "due"):
+        setattr(twin, name, getattr(compiled, name).copy())
+    mask = np.array([True, False, True, True, False])
+    compiled.record(mask, 1.2, 0.25)
+    monkeypatch.setattr("electrogrowth.continuation.predict._compiled", lambda: None)
+    twin.record(mask, 1.2, 0.25)
+    for name in ("x", "g", "moved", "due"):
+        assert getattr(compiled, name).tobytes() == getattr(twin, name).tobytes(), name
+    assert compiled.x[0].tolist() == [1.2, compiled.x[0, 1], 1.2, 1.2, compiled.x[0, 4]]

@@ -102,13 +102,16 @@ class EventWatch:
         return self.alive & ((self.sense * (x - self.due) >= 0) | (reach >= self.root_distance()))
 
     def record(self, idx, x, g):
-        """New samples g of the functions ``idx`` at x: each one's samples one row older,
-        its zero extrapolated again, how far that moved and when it falls due."""
+        """New samples g (one per function, or one for all) of the functions ``idx`` (their
+        indices, or a mask) at x: each one's samples one row older, its zero extrapolated
+        again, how far that moved and when it falls due."""
         kernel = _compiled()
         if kernel is None:
             return self._record_numpy(idx, x, g)
-        dist = kernel.record(np.asarray(idx, dtype=np.int64), float(x),
-                             np.asarray(g, dtype=float), self.x, self.g, float(self.sense),
+        idx = np.asarray(idx)
+        idx = np.flatnonzero(idx) if idx.dtype == bool else idx.astype(np.int64, copy=False)
+        g = np.broadcast_to(np.asarray(g, dtype=float), idx.shape).copy()  # the kernel's type
+        dist = kernel.record(idx, float(x), g, self.x, self.g, float(self.sense),
                              self.root_distance(), self.moved, self.due, self.wait)  # fmt: skip
         dist.setflags(write=False)
         self._distance = dist
