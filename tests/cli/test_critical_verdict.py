@@ -79,3 +79,18 @@ def test_bad_input_is_one_line_and_exit_2(capsys, extra):
     assert main(COMPRESSED[:-4] + extra) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith("electrogrowth: error:")
+
+
+def test_a_crease_the_criterion_cannot_establish_prints_no_digits_it_lacks(capsys):
+    """A Gent tube with no Biot ratio (J_m 3): its crease onset's estimate is infinite (null
+    in the record, crease.energy_shift); the text prints three digits and says why, where
+    it used to end in an internal error formatting the null estimate."""
+    argv = ["critical", "--outer-radius", "2", "--solve-for", "stretch", "--side"]
+    argv += ["compression", "--material", "gent", "--jm", "3", "--mode", "0", "1"]
+    assert main(argv) == 0
+    out, err = capsys.readouterr()
+    (line,) = [x for x in out.splitlines() if x.strip().startswith("crease:")]
+    assert f"= {CREASE:.3g}  (neo-Hookean criterion, not established" in line, line
+    assert "may not crease" in out and "internal error" not in err
+    rec = _json(capsys, argv)
+    assert rec["crease"]["error_estimate"] is None

@@ -289,7 +289,7 @@ def _print_text(rec: dict, runners: list, scales=None) -> None:
     value = supported(rec["value"], rec["error_estimate"])  # the digits the estimate supports
     if rec["kind"] == Kind.CREASE:
         head = (
-            f"{name} = {value}  (accuracy of the crease criterion {rec['error_estimate']:.1e})"
+            f"{name} = {_crease_value(rec['value'], rec['error_estimate'])}"
             f"   crease at {crease_where(rec['face'], rec['crease'].get('detail'))},"
             f" {_TRIGGER.get(rec['crease']['trigger'], '')}"
         )
@@ -358,6 +358,15 @@ _TRIGGER = {
 }
 
 
+def _crease_value(value: float, estimate: float | None) -> str:
+    """A crease onset with the digits its criterion supports; an estimate that is not finite
+    (null in the record: an energy with no Biot ratio, crease.energy_shift) supports none
+    of the criterion's digits."""
+    if estimate is None:
+        return f"{value:.3g}  (neo-Hookean criterion, not established for this energy)"
+    return f"{supported(value, estimate)}  (accuracy of the crease criterion {estimate:.1e})"
+
+
 def _rival_lines(rec: dict, name: str) -> list[str]:
     """The runner-up crease and threshold, and the verdict in words."""
     from ..bifurcation.verdict import crease_where
@@ -368,8 +377,7 @@ def _rival_lines(rec: dict, name: str) -> list[str]:
         lines.append(
             f"  crease: {crease_where(c['face'], c.get('detail'))},"
             f" {_TRIGGER.get(c['trigger'], '')}   {name} ="
-            f" {supported(c['value'], c['error_estimate'])}"
-            f" (accuracy of the criterion {c['error_estimate']:.1e})"
+            f" {_crease_value(c['value'], c['error_estimate'])}"
         )
     if t is not None and rec["kind"] != Kind.THRESHOLD:
         lines.append(f"  axisymmetric state lost ({t['detail']}): {name} = {t['value']:.10g}")
