@@ -35,7 +35,6 @@ def test_matrix_sign_of_a_known_spectrum():
     Z, Zi = Q.copy(), np.empty((8, 8))
     assert matrix_sign(Z, Zi)
     np.testing.assert_allclose(Z, V @ np.diag(np.sign(nu)) @ np.linalg.inv(V), atol=1e-10)
-    assert attraction_rate(Q) == pytest.approx(2 * 0.3, rel=1e-10)
     P = np.empty((8, 8))
     assert growing_projector(Q, P, Zi)
     np.testing.assert_allclose(P @ P, P, atol=1e-10)
@@ -43,13 +42,81 @@ def test_matrix_sign_of_a_known_spectrum():
     assert np.trace(P) == pytest.approx(4.0)
 
 
-def test_a_spectrum_on_the_imaginary_axis_has_no_sign():
-    Q = np.zeros((8, 8))
-    Q[0, 1], Q[1, 0] = 1.0, -1.0  # eigenvalues +-i
-    for j in range(2, 8):
-        Q[j, j] = 1.0 if j % 2 else -1.0
-    assert attraction_rate(Q) == 0.0
-    assert not matrix_sign(Q.copy(), np.empty((8, 8)))
+def _hamiltonian(N, seed, Q0=None):
+    """A Hamiltonian 8x8 matrix with the eigenvalues of N and their negatives:
+    Q0 = diag(N, -N^T) (or the Hamiltonian ``Q0`` given) under the symplectic similarity
+    [[I, 0], [W, I]] [[I, V], [0, I]] (W, V symmetric)."""
+    rng = np.random.default_rng(seed)
+    W, V = (rng.standard_normal((4, 4)) for _ in range(2))
+    T = np.block([[np.eye(4), np.zeros((4, 4))], [W + W.T, np.eye(4)]])
+    T = T @ np.block([[np.eye(4), V + V.T], [np.zeros((4, 4)), np.eye(4)]])
+    if Q0 is None:
+        Q0 = np.block([[N, np.zeros((4, 4))], [np.zeros((4, 4)), -N.T]])
+    return T @ Q0 @ np.linalg.inv(T)
+
+
+def _spectrum(real, pair=None):
+    """A real 4x4 matrix with eigenvalues ``real`` and, optionally, a +- i b = ``pair``."""
+    N = np.diag(np.asarray(real, dtype=float))
+    if pair is not None:
+        a, b = pair
+        N = np.zeros((4, 4))
+        N[:2, :2] = [[a, b], [-b, a]]
+        N[2, 2], N[3, 3] = real
+    rng = np.random.default_rng(9)
+    V = np.eye(4) + 0.3 * rng.standard_normal((4, 4))
+    return V @ N @ np.linalg.inv(V)
+
+
+@pytest.mark.parametrize(
+    ("N", "rate"),
+    [
+        (_spectrum([0.3, 2.0, 3.5, 7.0]), 0.6),
+        (_spectrum([-0.3, 2.0, 3.5, 7.0]), 0.6),  # the pairs' signs do not matter
+        (_spectrum([2.0, 5.0], pair=(0.4, 1.5)), 0.8),  # a complex pair 0.4 +- 1.5 i
+        (_spectrum([60.0, 60.1, 60.2, 60.25]), 120.0),  # a short wave's cluster
+    ],
+    ids=["real", "signs", "complex-pair", "cluster"],
+)
+def test_attraction_rate_of_a_known_hamiltonian_spectrum(N, rate):
+    """The quartic in nu^2 (attraction_rate) against the spectrum it was built with."""
+    Q = _hamiltonian(N, seed=4)
+    assert attraction_rate(Q) == pytest.approx(rate, rel=1e-9, abs=1e-7)
+
+
+def test_a_spectrum_on_the_imaginary_axis_attracts_at_rate_zero():
+    """One pair +-i (the pair (U_0, S_0) oscillates, as where strong ellipticity is lost):
+    mu = -1 is a simple root of the quartic and Re sqrt(mu) vanishes to rounding."""
+    Q0 = np.diag([0.0, 1.0, 2.0, 3.0, 0.0, -1.0, -2.0, -3.0])
+    Q0[0, 4], Q0[4, 0] = 1.0, -1.0
+    assert attraction_rate(_hamiltonian(None, seed=4, Q0=Q0)) <= 1e-12
+    assert not matrix_sign(Q0.copy(), np.empty((8, 8)))
+
+
+def test_attraction_rate_of_stroh_matrices_is_that_of_their_eigenvalues():
+    """On the frozen Stroh matrices a scan meets (long and short waves, m up to 2000, a
+    thick charged tube and a stiff-on-soft bilayer) the quartic agrees with the
+    eigenvalues of Q itself; it loses digits only where the mu nearly coincide."""
+    from electrogrowth.incremental.impedance import _frozen, impedance_scale
+    from electrogrowth.incremental.riccati_step import _new_work
+
+    film = Tube((Layer(1.02, growth=(1.0, 1.03, 1.0), shear_modulus=50.0), Layer(2.0)),
+                length=1.0, stretch=1.0, voltage=0.1)  # fmt: skip
+    worst = 0.0
+    for tube in (Tube.uniform(2.0, 1.0, growth=2.0, voltage=0.3), film):
+        table = build_table(solve_base_state(tube))
+        work = _new_work(table)
+        for seg in range(table.coef.shape[0]):
+            a, b = table.bounds[seg], table.bounds[seg + 1]
+            for m, n in [(0, 1), (2, 0), (1, 12), (30, 40), (300, 0), (0, 200), (2000, 3)]:
+                k = n * math.pi
+                s = impedance_scale(float(m), k, b)
+                for R in (a, 0.5 * (a + b), b):
+                    Q = np.empty((8, 8))
+                    _frozen(R, float(m), k, s, table, seg, work, Q)
+                    exact = 2 * np.abs(np.linalg.eigvals(Q).real).min()
+                    worst = max(worst, abs(attraction_rate(Q) - exact) / exact)
+    assert worst <= 1e-6
 
 
 def test_dominant_impedance_is_the_graph_of_the_growing_subspace():
