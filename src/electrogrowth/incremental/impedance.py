@@ -48,7 +48,7 @@ import numpy as np
 from .charts import SWITCH, chart_setup, chart_target, determinant, hat_basis, switch_chart
 from .dominant import attraction_rate, dominant_impedance, growing_projector, split_orientation
 from .radial_table import RadialTable
-from .riccati_step import _EXPONENT, _NS, _base_at, _error, _new_work, _rhs, _step
+from .riccati_step import _EXPONENT, _NS, _base_at, _error, _new_work, _rhs, _step, next_slope
 from .stroh import stroh_matrix
 
 #: every pair (U_j, S_j) kept: the paper's ansatz
@@ -305,6 +305,7 @@ def integrate_one(m, k, keep, table, rtol, max_steps, forget=True):
                     for j in range(4):
                         z[i, j] = 0.5 * (znew[i, j] + znew[j, i])
                 h *= min(10.0, 0.9 * err**_EXPONENT) if err > 0.0 else 10.0
+                same = not last  # R is the step's end R + h, where its last stage was
                 if np.max(np.abs(z)) > SWITCH:
                     zn, Jn, sgn = switch_chart(z, J)
                     if Jn < 0:
@@ -314,7 +315,11 @@ def integrate_one(m, k, keep, table, rtol, max_steps, forget=True):
                         J = Jn
                         orient *= sgn
                         chart_setup(J, s, keep, work.perm, work.mult)
-                _rhs(R, z, m, k, table, seg, work, K[0])
+                        same = False  # the blocks there were in the old chart
+                if same:
+                    next_slope(z, work, K[0])
+                else:
+                    _rhs(R, z, m, k, table, seg, work, K[0])
             else:
                 h *= max(0.2, 0.9 * err**_EXPONENT)
     P_o = table.face_pressure[1]
