@@ -15,10 +15,18 @@ $(VENV)/.installed: pyproject.toml
 	@echo "electrogrowth: installing the package and its tools into $(VENV) (1-3 min)"
 	$(BIN)/python -m pip install -q --upgrade pip
 	$(BIN)/python -m pip install -q -e '.[test,lint,vtk,sweep,units,fe]'
-	@# compile the numba kernels now (cache=True keeps them), not at a user's first call.
-	@# They do not depend on the energy: gent, mooney-rivlin and --energy load this cache
-	@# (NUMBA_DEBUG_CACHE=1), and an energy's own derivatives take ~0.1 s per process.
-	@echo "electrogrowth: compiling the numerical kernels (once; kept in the cache)"
+	touch $@
+
+# The compiled kernels. numba keys a cached kernel on its own file only: a kernel whose
+# callee (in another file) changed would keep running the callee's old code. So a change
+# to any module that compiles drops the whole cache, and the kernels are compiled again
+# now (cache=True keeps them), not at a user's first call. They do not depend on the
+# energy: gent, mooney-rivlin and --energy load this cache (NUMBA_DEBUG_CACHE=1), and an
+# energy's own derivatives take ~0.1 s per process.
+KERNEL_SOURCES := $(shell grep -rl --include='*.py' 'import numba' src)
+$(VENV)/.kernels: $(KERNEL_SOURCES) | $(VENV)/.installed
+	find src -name '*.nbi' -delete -o -name '*.nbc' -delete
+	@echo "electrogrowth: compiling the numerical kernels (once per change; kept in the cache)"
 	$(BIN)/electrogrowth critical --solve-for growth --outer-radius 1.4 --length 1 \
 		--voltage 0.4 > /dev/null
 	touch $@
@@ -29,10 +37,10 @@ $(VENV)/.installed-%: $(VENV)/.installed
 	$(BIN)/python -m pip install -q -e '.[test,$*]'
 	touch $@
 
-install: $(VENV)/.installed
+install: $(VENV)/.kernels
 
 # The lint and format checks first (seconds), then the tests and every docstring example.
-test: lint
+test: lint $(VENV)/.kernels
 	$(BIN)/python -m pytest -q
 
 # Exit status 5 (no test selected) is not a failure while no test is marked slow.
@@ -48,10 +56,10 @@ format: $(VENV)/.installed
 	$(BIN)/ruff check --fix src tests benchmarks tools examples docs/conf.py docs/_ext
 	$(BIN)/ruff format src tests benchmarks tools examples docs/conf.py docs/_ext
 
-test-slow: $(VENV)/.installed
+test-slow: $(VENV)/.kernels
 	$(BIN)/python -m pytest -q -m slow || [ $$? -eq 5 ]
 
-demo: $(VENV)/.installed
+demo: $(VENV)/.kernels
 	$(BIN)/electrogrowth demo --out $(OUT)
 	@echo ""
 	@echo "The command is $(BIN)/electrogrowth. To type just 'electrogrowth' in this shell:"
@@ -60,15 +68,15 @@ demo: $(VENV)/.installed
 
 # The suite (benchmarks/bench.py): tables into BENCHMARKS.md, benchmarks/results.json.
 # About an hour on the 2-core machine; make bench BENCH_ARGS=--quick checks that it runs.
-bench: $(VENV)/.installed
+bench: $(VENV)/.kernels
 	$(BIN)/python benchmarks/bench.py $(BENCH_ARGS)
 
 # This checkout against BASE (a git revision) on the same points, in alternating fresh
 # processes: make bench-ab BASE=<revision>. About 40 minutes; BENCH_ARGS=--quick to check it runs.
-bench-ab: $(VENV)/.installed
+bench-ab: $(VENV)/.kernels
 	$(BIN)/python benchmarks/ab.py $(BASE) $(BENCH_ARGS)
 
-figures: $(VENV)/.installed
+figures: $(VENV)/.kernels
 	$(BIN)/electrogrowth reproduce --out $(OUT)/figures
 
 # The documentation site in docs/_build/html (Sphinx, the gallery runs every example; the
