@@ -136,6 +136,23 @@ def growing_projector(Q, P, Zi) -> bool:
 
 
 @nb.njit(cache=True)
+def hold_left_out(P, keep) -> None:
+    """P <- the projector of a mode family's block (bit j of ``keep`` set: pair j kept).
+
+    A family leaves pairs out because they decouple (their entries in Q carry a factor
+    k r = 0 or m = 0), so Q and its sign are block-diagonal. A left-out pair is carried
+    unchanged on its constant subspace U_j = S~_j (z~_jj = 1, impedance._start), which is
+    not W+: its block of P becomes the projector on that line, [[1, 1], [1, 1]] / 2, so
+    the carried basis lies in the new range there exactly (no remnant), its U row gives
+    det A the factor 1, and the dominant impedance keeps z~_jj = 1, z~_ji = 0."""
+    for j in range(4):
+        if not (keep >> j) & 1:
+            for a in range(8):
+                P[j, a] = P[4 + j, a] = P[a, j] = P[a, 4 + j] = 0.0
+            P[j, j] = P[j, 4 + j] = P[4 + j, j] = P[4 + j, 4 + j] = 0.5
+
+
+@nb.njit(cache=True)
 def dominant_impedance(P, z) -> bool:
     """z <- z+, the graph of W+ = range P over U (S = z+ U, hat coordinates): P [I; 0]
     spans W+ because W- is a graph over U too."""

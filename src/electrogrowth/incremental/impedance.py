@@ -46,7 +46,13 @@ import numba as nb
 import numpy as np
 
 from .charts import SWITCH, chart_setup, chart_target, determinant, hat_basis, switch_chart
-from .dominant import attraction_rate, dominant_impedance, growing_projector, split_orientation
+from .dominant import (
+    attraction_rate,
+    dominant_impedance,
+    growing_projector,
+    hold_left_out,
+    split_orientation,
+)
 from .radial_table import RadialTable
 from .riccati_step import _EXPONENT, _NS, _base_at, _error, _new_work, _rhs, _step, next_slope
 from .stroh import stroh_matrix
@@ -199,7 +205,7 @@ def _forget_plan(R_a, m, k, s, table, seg, rtol, work):
 
 
 @nb.njit(cache=True)
-def _forget_check(R, z, J, R_s, m, k, s, table, seg, work):
+def _forget_check(R, z, J, R_s, m, k, s, keep, table, seg, work):
     """At R, is the carried subspace z~ (chart J) inside the dominant one W+ up to
     REMNANT_MAX? Returns (remnant, sign of det A, z+(R_s)) (dominant.py): the carried
     subspace is X = X+ + X-, X+ = [I; z+] A, and remnant = ||X- A^-1||; inf if the
@@ -211,11 +217,15 @@ def _forget_check(R, z, J, R_s, m, k, s, table, seg, work):
     _frozen(R, m, k, s, table, seg, work, Q)
     if not growing_projector(Q, P, Zi):
         return np.inf, 0.0, zs
+    hold_left_out(P, keep)
     sign_a, remnant = split_orientation(P, hat_basis(z, J), s)
     if not remnant <= REMNANT_MAX:
         return remnant, sign_a, zs
     _frozen(R_s, m, k, s, table, seg, work, Q)
-    if not (growing_projector(Q, P, Zi) and dominant_impedance(P, zs)):
+    if not growing_projector(Q, P, Zi):
+        return np.inf, 0.0, zs
+    hold_left_out(P, keep)
+    if not dominant_impedance(P, zs):
         return np.inf, 0.0, zs
     for i in range(4):  # symmetric up to rounding (W+ is Lagrangian)
         for j in range(i + 1, 4):
@@ -236,7 +246,8 @@ def integrate_one(m, k, keep, table, rtol, max_steps, forget=True):
     ending above LEAP is rejected: it jumped a pole of the chart).
     With ``forget`` (default) and rtol >= FORGET_RTOL, a stiff short wave restarts the
     outer segment near the outer face from the dominant subspace once the carried one
-    lies in it (:func:`_forget_plan`, :func:`_forget_check`); False integrates every wall.
+    lies in it (:func:`_forget_plan`, :func:`_forget_check`; a family's left-out pairs
+    stay on their constant line, dominant.hold_left_out); False integrates every wall.
     Returns (f, z~, J, status, steps): the target of the kept block, the impedance in
     chart J at R_N, the chart, a status code (OK, MAX_STEPS, STEP_UNDERFLOW, NO_CHART;
     f is NaN unless OK) and the steps tried.
@@ -260,7 +271,7 @@ def integrate_one(m, k, keep, table, rtol, max_steps, forget=True):
     znew = np.empty((4, 4))
     h = (RN - R0) / (4.0 + s)
     steps = 0
-    plan = forget and keep == ALL_PAIRS and rtol >= FORGET_RTOL
+    plan = forget and rtol >= FORGET_RTOL
     R_s, rate, check, checks = -1.0, 0.0, np.inf, 0
     for seg in range(L):
         R, end = table.bounds[seg], table.bounds[seg + 1]
@@ -273,7 +284,7 @@ def integrate_one(m, k, keep, table, rtol, max_steps, forget=True):
                     check = R + BURN_NATS / rate
             if R >= check and checks < MAX_CHECKS:  # forget the inner face? (dominant.py)
                 checks += 1
-                remnant, sign_a, zs = _forget_check(R, z, J, R_s, m, k, s, table, seg, work)
+                remnant, sign_a, zs = _forget_check(R, z, J, R_s, m, k, s, keep, table, seg, work)
                 check = R + np.log(max(remnant, 1.0) / (0.1 * REMNANT_MAX)) / rate
                 if remnant <= REMNANT_MAX and sign_a != 0.0:
                     R, z, J, orient, check = R_s, zs, 0, orient * sign_a, np.inf
