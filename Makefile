@@ -18,12 +18,12 @@ $(VENV)/.installed: pyproject.toml
 	touch $@
 
 # The compiled kernels. numba keys a cached kernel on its own file only: a kernel whose
-# callee (in another file) changed would keep running the callee's old code. So a change
-# to any module that compiles drops the whole cache, and the kernels are compiled again
-# now (cache=True keeps them), not at a user's first call. They do not depend on the
-# energy: gent, mooney-rivlin and --energy load this cache (NUMBA_DEBUG_CACHE=1), and an
-# energy's own derivatives take ~0.1 s per process.
-KERNEL_SOURCES := $(shell grep -rl --include='*.py' 'import numba' src)
+# callee, or a constant it reads (another file's tableau or index map), changed would keep
+# running the old code. So a change to any source file drops the whole cache, and the
+# kernels are compiled again now (cache=True keeps them), not at a user's first call. They
+# do not depend on the energy: gent, mooney-rivlin and --energy load this cache
+# (NUMBA_DEBUG_CACHE=1), and an energy's own derivatives take ~0.1 s per process.
+KERNEL_SOURCES := $(shell find src -name '*.py')
 $(VENV)/.kernels: $(KERNEL_SOURCES) | $(VENV)/.installed
 	find src -name '*.nbi' -delete -o -name '*.nbc' -delete
 	@echo "electrogrowth: compiling the numerical kernels (once per change; kept in the cache)"
