@@ -134,13 +134,16 @@ def test_dominant_impedance_is_the_graph_of_the_growing_subspace():
 
 
 def _targets(state, modes, rtol):
+    """(whole wall at 1e-12, short-wave start, whole wall) at ``rtol`` and the two step
+    counts, for rows (m, n) of the paper's block or (m, n, kept pairs) of a family's."""
     table = build_table(state)
     out = []
-    for m, n in modes:
+    for m, n, *family in modes:
+        keep = family[0] if family else ALL_PAIRS
         k = n * math.pi / state.current_length
-        full = integrate_one(float(m), k, ALL_PAIRS, table, 1e-12, 200000, False)
-        short = integrate_one(float(m), k, ALL_PAIRS, table, rtol, 200000, True)
-        plain = integrate_one(float(m), k, ALL_PAIRS, table, rtol, 200000, False)
+        full = integrate_one(float(m), k, keep, table, 1e-12, 400000, False)
+        short = integrate_one(float(m), k, keep, table, rtol, 400000, True)
+        plain = integrate_one(float(m), k, keep, table, rtol, 400000, False)
         assert full[3] == short[3] == plain[3] == 0
         out.append((full[0], short[0], plain[0], short[4], plain[4]))
     return np.array(out)
@@ -180,21 +183,6 @@ def test_short_wave_start_in_the_outer_layer_of_a_pressurised_bilayer():
     assert t[:, 3].sum() < t[:, 4].sum()
 
 
-def _family_targets(state, rows, rtol):
-    """(whole wall at 1e-12, short-wave start, whole wall) at ``rtol`` and the two step
-    counts, for rows (m, n, kept pairs)."""
-    table = build_table(state)
-    out = []
-    for m, n, keep in rows:
-        k = n * math.pi / state.current_length
-        full = integrate_one(float(m), k, keep, table, 1e-12, 400000, False)
-        short = integrate_one(float(m), k, keep, table, rtol, 400000, True)
-        plain = integrate_one(float(m), k, keep, table, rtol, 400000, False)
-        assert full[3] == short[3] == plain[3] == 0
-        out.append((full[0], short[0], plain[0], short[4], plain[4]))
-    return np.array(out)
-
-
 #: the families' blocks (incremental/modes.py): axisymmetric wrinkles (0, n) without the
 #: torsion pair, prismatic modes (m, 0) without the axial one, torsional modes (0, n) alone
 M0, PRISMATIC, TORSION = 0b1101, 0b1011, 0b0010
@@ -220,7 +208,7 @@ def test_short_wave_start_of_a_family_keeps_every_target_and_its_sign(params, rt
     constant line (dominant.hold_left_out): the same signs as the whole wall at 1e-12,
     errors no larger than the whole wall's at the same rtol (which, for these stiff
     blocks, may be far from rtol: 60x for (0, 160) at 1e-5), and fewer steps."""
-    t = _family_targets(solve_base_state(params), FAMILY_ROWS, rtol)
+    t = _targets(solve_base_state(params), FAMILY_ROWS, rtol)
     full, short, plain = t[:, 0], t[:, 1], t[:, 2]
     assert np.all(np.sign(short) == np.sign(full))
     assert np.all(np.abs(short - full) <= 10 * np.abs(plain - full) + 10 * rtol * np.abs(full))
