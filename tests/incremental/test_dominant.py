@@ -97,8 +97,9 @@ def test_attraction_rate_of_stroh_matrices_is_that_of_their_eigenvalues():
     """On the frozen Stroh matrices a scan meets (long and short waves, m up to 2000, a
     thick charged tube and a stiff-on-soft bilayer) the quartic agrees with the
     eigenvalues of Q itself; it loses digits only where the mu nearly coincide."""
-    from electrogrowth.incremental.impedance import _frozen, impedance_scale
+    from electrogrowth.incremental.impedance import impedance_scale
     from electrogrowth.incremental.riccati_step import _new_work
+    from electrogrowth.incremental.short_wave_start import frozen_matrix
 
     film = Tube((Layer(1.02, growth=(1.0, 1.03, 1.0), shear_modulus=50.0), Layer(2.0)),
                 length=1.0, stretch=1.0, voltage=0.1)  # fmt: skip
@@ -113,7 +114,7 @@ def test_attraction_rate_of_stroh_matrices_is_that_of_their_eigenvalues():
                 s = impedance_scale(float(m), k, b)
                 for R in (a, 0.5 * (a + b), b):
                     Q = np.empty((8, 8))
-                    _frozen(R, float(m), k, s, table, seg, work, Q)
+                    frozen_matrix(R, float(m), k, s, table, seg, work, Q)
                     exact = 2 * np.abs(np.linalg.eigvals(Q).real).min()
                     worst = max(worst, abs(attraction_rate(Q) - exact) / exact)
     assert worst <= 1e-6

@@ -29,7 +29,7 @@ A short wave's Riccati equation is stiff (its subspace is attracted to the domin
 a rate ~ 2 |(m, k r)|), so for loose tolerances (the signs of a march) the kernel may stop
 integrating the last segment once the carried subspace lies in the dominant subspace of the
 frozen Stroh system, and restart near the outer face from it, keeping the orientation
-(:func:`_forget_plan`, :func:`_forget_check`, dominant.py, docs/derivation-dominant.md).
+(short_wave_start.py, dominant.py, docs/derivation-dominant.md).
 Roots are always integrated through the whole wall.
 
 Every member of a batch also says which of the four pairs (U_j, S_j) its mode family keeps
@@ -46,32 +46,20 @@ import numba as nb
 import numpy as np
 
 from .charts import SWITCH, chart_setup, chart_target, determinant, hat_basis, switch_chart
-from .dominant import (
-    attraction_rate,
-    dominant_impedance,
-    growing_projector,
-    hold_left_out,
-    split_orientation,
-)
 from .radial_table import RadialTable
 from .riccati_step import _EXPONENT, _NS, _base_at, _error, _new_work, _rhs, _step, next_slope
-from .stroh import stroh_matrix
+from .short_wave_start import (
+    BURN_NATS,
+    FORGET_RTOL,
+    MAX_CHECKS,
+    PLAN_STEPS,
+    REMNANT_MAX,
+    forget_check,
+    forget_plan,
+)
 
 #: every pair (U_j, S_j) kept: the paper's ansatz
 ALL_PAIRS = 0b1111
-
-#: A short wave starts near the outer face from the dominant subspace (dominant.py) only
-#: for loose tolerances (the signs of a march): the roots are always integrated through
-#: the whole wall. FORGET_MARGIN / rtol bounds the remnant of what was skipped.
-FORGET_RTOL, FORGET_MARGIN, FORGET_SAFETY = 1e-9, 10.0, 1.5
-#: the carried subspace may be replaced once it is within REMNANT_MAX of the dominant one
-#: (then sign det A is that of a matrix within 0.1 of I); it is integrated exactly until
-#: then, first over BURN_NATS / rate, then for as long as the remnant says.
-REMNANT_MAX, BURN_NATS, MAX_CHECKS = 0.1, 5.0, 3
-#: ... and only tried for an integration still PLAN_STEPS steps from the outer face after
-#: its first steps (the eigenvalues cost a few steps; a wall crossed in 20 steps gains
-#: nothing)
-PLAN_STEPS = 30.0
 
 #: an accepted step may not end with an entry of z~ above LEAP: such a step went through (or
 #: next to) a pole of its chart, where the error estimate, relative to |z~|, accepts anything
@@ -161,79 +149,6 @@ def _radii(table, work):
 
 
 @nb.njit(cache=True)
-def _frozen(R, m, k, s, table, seg, work, Q):
-    """Q = w G~ at R: the Stroh matrix with the moduli frozen there, in hat coordinates
-    (chart {}, S scaled by s, all pairs), so that d(eta~)/dR = Q eta~."""
-    p, r, w = _base_at(R, table, seg, work.vals, work.mod)
-    stroh_matrix(work.mod, p, m, k * r, work.G)
-    for a in range(8):
-        for b in range(8):
-            v = w * work.G[a, b]
-            if a < 4 and b >= 4:
-                v *= s
-            elif a >= 4 and b < 4:
-                v /= s
-            Q[a, b] = v
-
-
-@nb.njit(cache=True)
-def _forget_plan(R_a, m, k, s, table, seg, rtol, work):
-    """(R_s, rate): where a short wave's integration of the last segment [R_a, R_b] may
-    restart from the dominant subspace (dominant.py), and the smallest attraction rate
-    seen on [R_a, R_b]; R_s = -1 if that saves nothing (a long wave, a wall attracting
-    slowly or not strongly elliptic). Between R_s and R_b any error of the restart decays
-    by (FORGET_MARGIN / rtol)^FORGET_SAFETY at the smallest rate."""
-    R_b = table.bounds[seg + 1]
-    nats = np.log(FORGET_MARGIN / rtol)
-    Q = np.empty((8, 8))
-    _frozen(R_b, m, k, s, table, seg, work, Q)
-    # |det Q| is the product of the 8 |nu|, so 2 |det Q|^(1/8) bounds the rate from above:
-    # a wall too thin even for it is refused without the eigenvalues (~25 us an evaluation)
-    bound = 2.0 * abs(determinant(Q)) ** 0.125
-    if not R_b - R_a >= 3.0 * FORGET_SAFETY * nats / bound:
-        return -1.0, 0.0
-    rate = attraction_rate(Q)
-    if not rate > 0.0 or R_b - R_a < 3.0 * FORGET_SAFETY * nats / rate:
-        return -1.0, 0.0
-    for R in (R_a, 0.5 * (R_a + R_b)):
-        _frozen(R, m, k, s, table, seg, work, Q)
-        rate = min(rate, attraction_rate(Q))
-    R_s = R_b - FORGET_SAFETY * nats / max(rate, 1e-300)
-    if not R_s > R_a + 2.0 * BURN_NATS / max(rate, 1e-300):
-        return -1.0, 0.0
-    return R_s, rate
-
-
-@nb.njit(cache=True)
-def _forget_check(R, z, J, R_s, m, k, s, keep, table, seg, work):
-    """At R, is the carried subspace z~ (chart J) inside the dominant one W+ up to
-    REMNANT_MAX? Returns (remnant, sign of det A, z+(R_s)) (dominant.py): the carried
-    subspace is X = X+ + X-, X+ = [I; z+] A, and remnant = ||X- A^-1||; inf if the
-    split or z+(R_s) cannot be formed."""
-    Q = np.empty((8, 8))
-    P = np.empty((8, 8))
-    Zi = np.empty((8, 8))
-    zs = np.empty((4, 4))
-    _frozen(R, m, k, s, table, seg, work, Q)
-    if not growing_projector(Q, P, Zi):
-        return np.inf, 0.0, zs
-    hold_left_out(P, keep)
-    sign_a, remnant = split_orientation(P, hat_basis(z, J), s)
-    if not remnant <= REMNANT_MAX:
-        return remnant, sign_a, zs
-    _frozen(R_s, m, k, s, table, seg, work, Q)
-    if not growing_projector(Q, P, Zi):
-        return np.inf, 0.0, zs
-    hold_left_out(P, keep)
-    if not dominant_impedance(P, zs):
-        return np.inf, 0.0, zs
-    for i in range(4):  # symmetric up to rounding (W+ is Lagrangian)
-        for j in range(i + 1, 4):
-            zs[i, j] = zs[j, i] = 0.5 * (zs[i, j] + zs[j, i])
-    return remnant, sign_a, zs
-
-
-@nb.njit(cache=True)
 def integrate_one(m, k, keep, table, rtol, max_steps, forget=True):
     """Integrate mode (m, k) through the wall of ``table`` (a RadialTable).
 
@@ -246,8 +161,8 @@ def integrate_one(m, k, keep, table, rtol, max_steps, forget=True):
     ending above LEAP is rejected: it jumped a pole of the chart).
     With ``forget`` (default) and rtol >= FORGET_RTOL, a stiff short wave restarts the
     outer segment near the outer face from the dominant subspace once the carried one
-    lies in it (:func:`_forget_plan`, :func:`_forget_check`; a family's left-out pairs
-    stay on their constant line, dominant.hold_left_out); False integrates every wall.
+    lies in it (short_wave_start.py; a family's left-out pairs stay on their constant
+    line, dominant.hold_left_out); False integrates every wall.
     Returns (f, z~, J, status, steps): the target of the kept block, the impedance in
     chart J at R_N, the chart, a status code (OK, MAX_STEPS, STEP_UNDERFLOW, NO_CHART;
     f is NaN unless OK) and the steps tried.
@@ -279,12 +194,12 @@ def integrate_one(m, k, keep, table, rtol, max_steps, forget=True):
         while R < end:
             if plan and seg == L - 1 and steps >= 3 and end - R > PLAN_STEPS * h:
                 plan = False  # a long integration ahead: is this a stiff short wave?
-                R_s, rate = _forget_plan(R, m, k, s, table, seg, rtol, work)
+                R_s, rate = forget_plan(R, m, k, s, table, seg, rtol, work)
                 if R_s > 0.0:
                     check = R + BURN_NATS / rate
             if R >= check and checks < MAX_CHECKS:  # forget the inner face? (dominant.py)
                 checks += 1
-                remnant, sign_a, zs = _forget_check(R, z, J, R_s, m, k, s, keep, table, seg, work)
+                remnant, sign_a, zs = forget_check(R, z, J, R_s, m, k, s, keep, table, seg, work)
                 check = R + np.log(max(remnant, 1.0) / (0.1 * REMNANT_MAX)) / rate
                 if remnant <= REMNANT_MAX and sign_a != 0.0:
                     R, z, J, orient, check = R_s, zs, 0, orient * sign_a, np.inf
