@@ -94,3 +94,21 @@ def test_a_crease_the_criterion_cannot_establish_prints_no_digits_it_lacks(capsy
     assert "may not crease" in out and "internal error" not in err
     rec = _json(capsys, argv)
     assert rec["crease"]["error_estimate"] is None
+
+
+def test_a_surface_result_names_its_best_finite_mode_once(capsys):
+    """The best finite mode of a surface result heads its runners-up in the record; the
+    text shows it on the wrinkle line and lists the next ones after it, not it again."""
+    argv = ["critical", "--outer-radius", "2", "--length", "1", "--solve-for", "voltage"]
+    rec = _json(capsys, argv)
+    assert rec["kind"] == "surface"
+    w = rec["wrinkle"]
+    assert {k: rec["runners_up"][0][k] for k in ("m", "n", "value")} == {
+        k: w[k] for k in ("m", "n", "value")
+    }
+    assert main(argv) == 0
+    lines = capsys.readouterr().out.splitlines()
+    best = f"(m, n) = ({w['m']}, {w['n']})"
+    assert any(line.startswith("  wrinkle (linear analysis): " + best) for line in lines)
+    nxt = [line for line in lines if line.startswith("  next: ")]
+    assert len(nxt) == len(rec["runners_up"]) - 1 and not any(best in line for line in nxt)

@@ -342,7 +342,10 @@ def _print_text(rec: dict, runners: list, scales=None) -> None:
             f"  short-wave (surface) limit m, n -> infinity: {name} ="
             f" {rec['short_wave_limit']:.12g} (after this mode)"
         )
+    shown = None if w is None or rec["kind"] == Kind.BIFURCATION else w
     for r in runners:
+        if shown is not None and all(r[k] == shown[k] for k in ("m", "n", "family", "value")):
+            continue  # a surface result's best finite mode heads its runners-up: shown above
         lines.append(
             f"  next: (m, n) = ({r['m']}, {r['n']}){_family_note(r.get('family'))}"
             f"   {name} = {r['value']:.10g}"
