@@ -11,7 +11,7 @@ from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.incremental.targets import resolving_nodes, targets_for
 from electrogrowth.model.layers import Tube
-from electrogrowth.model.materials import mooney_rivlin
+from electrogrowth.model.materials import gent, mooney_rivlin
 
 
 @pytest.mark.parametrize("q", [10.0, 100.0, 347.0, 1000.0])
@@ -46,3 +46,30 @@ def test_mooney_rivlin_short_wave_roots_agree():
         for g in (root - 1e-8, root + 1e-8)
     )
     assert below * above < 0
+
+
+def test_nodes_resolve_the_moduli_next_to_a_lock():
+    """A Gent tube whose inner face is 0.2 % short of its lock (drawn by the slow property
+    test): its moduli are steep, the mode (5, 5) is not (its decay asks for 11 nodes). At
+    the default 40-72 nodes collocation put the voltage root 1.3e-4 to 3.4e-3 high; with
+    the nodes the moduli need (221 at 1e-12) its target changes sign within 1e-9 of the
+    impedance kernel's root, whose tables resolve the moduli."""
+    g = 1.7917252832408428
+    params = Tube.uniform(
+        outer_radius=1.5410808488080756,
+        length=1.5410808488080756,
+        stretch=2.7611935203276876,
+        voltage=1.3169698150196,
+        growth=g,
+        material=gent(2.559),
+    )
+    root = critical_value(params, 5, 5, "voltage", bracket=(3.1358, 3.136)).value
+    assert root == pytest.approx(3.135888372183, abs=1e-9)  # its error estimate: 5e-10
+    state = solve_base_state(params.at("voltage", root))
+    assert resolving_nodes(state, 5, 5, 1e-12) >= 200
+    f = targets_for("collocation", 1e-12)
+    below, above = (
+        f(solve_base_state(params.at("voltage", v)), [[5, 5]])[0]
+        for v in (root - 3e-9, root + 3e-9)
+    )
+    assert below > 0 > above

@@ -143,18 +143,28 @@ def collocation_targets(state, modes, *, nodes: int = 40) -> np.ndarray:
 
 
 def resolving_nodes(state, m: float, n: float, rtol: float) -> int:
-    """Collocation nodes that resolve mode (m, n) through the wall to ``rtol``.
+    """Collocation nodes (per layer) that resolve mode (m, n) through the wall to ``rtol``:
+    enough for the mode's decay and for the base state's moduli, whichever needs more.
 
-    A mode varies through the wall like exp(-q x), x from 0 to 1 across it, with
-    q = max(k (r_o - r_i), m ln(r_o / r_i)) (k = n pi / l); the Chebyshev coefficients of
-    exp(-q (x + 1) / 2) fall like exp(-N^2 / q), so N = sqrt(q ln(1 / rtol)) + 4 nodes
-    resolve it (the 4 cover the prefactor: q = 10 ... 1000, rtol = 1e-12, 1e-8). Measured
-    (Mooney-Rivlin alpha 0.7, Rbar_o = 3.765, L = 0.337, mode (0, 4), q = 347): the root is
-    off by 1.4e-4 at 56 nodes, 3.4e-7 at 72, 2.3e-10 at 88, below 1e-12 at 104 (here: 102).
+    * The decay. A mode varies through the wall like exp(-q x), x from 0 to 1 across it,
+      with q = max(k (r_o - r_i), m ln(r_o / r_i)) (k = n pi / l); the Chebyshev
+      coefficients of exp(-q (x + 1) / 2) fall like exp(-N^2 / q), so N = sqrt(q ln(1 /
+      rtol)) + 4 nodes resolve it (the 4 cover the prefactor: q = 10 ... 1000, rtol = 1e-12,
+      1e-8). Measured (Mooney-Rivlin alpha 0.7, Rbar_o = 3.765, L = 0.337, mode (0, 4),
+      q = 347): the root is off by 1.4e-4 at 56 nodes, 3.4e-7 at 72, 2.3e-10 at 88, below
+      1e-12 at 104 (here: 102).
+    * The moduli. Collocation samples the equations' coefficients at its nodes, so it is no
+      better than their interpolation: N is at least the Chebyshev coefficients a layer's
+      moduli need to fall below ``rtol`` (radial_table.build_table). Next to a lock they
+      are steep for a long wave too: a Gent tube (J_m 2.559, Rbar_o = L = 1.541, growth
+      1.792, lambda_z 2.761, mode (5, 5)) whose inner face is 0.2 % short of its lock needs
+      221 at 1e-12 (the decay: 11); its voltage root by collocation is off by 3.4e-3 at 40
+      nodes, 9.3e-9 at 180, 1.1e-10 at 221, against the impedance kernel's 3.135888372183.
     """
     k = n * math.pi / state.current_length
     q = max(k * (state.r_o - state.r_i), m * math.log(state.r_o / state.r_i))
-    return math.ceil(math.sqrt(q * math.log(1.0 / rtol))) + 4
+    decay = math.ceil(math.sqrt(q * math.log(1.0 / rtol))) + 4
+    return max(decay, build_table(state, tol=max(rtol, 1e-15)).coef.shape[2])
 
 
 @dataclasses.dataclass(frozen=True)
@@ -172,7 +182,8 @@ class ImpedanceTarget:
 @dataclasses.dataclass(frozen=True)
 class CollocationTarget:
     """The collocation target f(state, modes), mode by mode, at Accuracy(rtol)'s nodes or
-    more for a mode whose decay through the wall needs them (:func:`resolving_nodes`);
+    more for a mode whose decay through the wall or whose base state's moduli need them
+    (:func:`resolving_nodes`);
     ``coarse``: at 3/4 of those nodes (:func:`coarse_targets_for`)."""
 
     rtol: float = 1e-12
