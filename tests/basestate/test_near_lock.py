@@ -44,7 +44,10 @@ def test_no_threshold_where_the_state_exists():
     reached = float(err.value.args[0].split(" up to ")[1].split(",")[0])
     assert 1.97 < reached < 2.0098
     assert "not established" in str(err.value)
-    solve_base_state(film_on_gent(reached - 1e-10))  # the last resolved state (12 digits)
+    # a state just short of the edge is resolved: within ~5e-9 of it, whether a state's
+    # profile resolves by degree 4096 turns on its last digits (cold solves on a grid of
+    # step 1e-10 there alternate), so a warm and a cold state of one g can differ
+    solve_base_state(film_on_gent(reached - 1e-8))
 
 
 @pytest.mark.parametrize(

@@ -8,6 +8,8 @@ continued state must be the cold state to 1e-12, and the continuation must reall
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import pytest
 
@@ -100,3 +102,19 @@ def test_another_tube_is_not_a_neighbour():
     other = Tube((Layer(1.1, growth=1.1), Layer(1.5), Layer(2.0)), voltage=0.3)
     assert warm.continued(other, near, 1e-12) is None
     _close(solve_layered_state(other, near=near), solve_layered_state(other))
+
+
+@pytest.mark.parametrize("tube", [MUCOSA, FORCE, dataclasses.replace(FORCE, closed_ends=False)])
+def test_ideal_load_rate_is_the_finite_difference_direction(tube):
+    """warm._ideal_load_rate (d(P_i - P_o, N_applied) / d Vbar up to a positive factor) has
+    the direction of a central difference of the pressure branch in Vbar."""
+    state = solve_layered_state(tube)
+    wall, x, lz, v = state._wall, state.r_i, state.stretch, tube.voltage
+    rate = warm._ideal_load_rate(wall, tube, x, lz)
+    h = 1e-5 * v
+    pts = [warm.Branch(wall, "pressure", vbar=v + s * h).point([x], [lz]) for s in (1, -1)]
+    fd = np.array([(p["dp"][0], p["end_force"][0]) for p in pts])
+    fd = (fd[0] - fd[1]) / (2 * h)
+    assert np.dot(rate, fd) > 0
+    cos = np.dot(rate, fd) / (np.linalg.norm(rate) * np.linalg.norm(fd))
+    assert cos == pytest.approx(1.0, abs=1e-9)

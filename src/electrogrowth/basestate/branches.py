@@ -26,19 +26,21 @@ from .plies import Wall, illinois
 class Branch:
     """States parametrised by r_i: on the voltage branch (P_i - P_o = dp fixed) (*) fixes c and
     the load is Vbar; on the pressure branch (Vbar = vbar fixed) the voltage fixes c and the load
-    is P_i = P_o + T. The outer pressure is the tube's throughout."""
+    is P_i = P_o + T. The outer pressure is the tube's throughout. ``compiled``: the wall's
+    integrals by the compiled closed form where it has one (plies.Wall.integrals)."""
 
     wall: Wall
     load: str  # "voltage" or "pressure"
     dp: float = 0.0
     vbar: float = 0.0
+    compiled: bool = False
 
     def point(self, r_i, lz) -> dict:
         wall, tube = self.wall, self.wall.tube
         r_i, lz = np.broadcast_arrays(np.asarray(r_i, float), np.asarray(lz, float))
         thick = tube.outer_radius - 1.0
         if wall.ideal:
-            M, scale, _, Nm = wall.integrals(r_i, lz, 0.0)
+            M, scale, _, Nm = wall.integrals(r_i, lz, 0.0, self.compiled)
             Q, Lam = wall.electric(r_i, lz)
             if self.load == "voltage":
                 q = (M - self.dp) / Q  # signed c^2: analytic through the branch's start
@@ -50,7 +52,7 @@ class Branch:
             V, N = c * Lam, Nm - math.pi * q * Lam
         else:
             c = self._charge(r_i, lz)
-            T, scale, V, N = wall.integrals(r_i, lz, c)
+            T, scale, V, N = wall.integrals(r_i, lz, c, self.compiled)
             dp = T if self.load == "pressure" else np.where(np.isfinite(T), self.dp, np.nan)
         P_o = tube.outer_pressure
         P_i = P_o + dp
@@ -76,7 +78,7 @@ class Branch:
         """c for a general energy: (*) = dp in q = c^2 (0 where the unloaded T < dp), or
         V(c) = Vbar (R_N - 1) on the pressure branch."""
         wall, thick = self.wall, self.wall.tube.outer_radius - 1.0
-        M, scale, _, _ = wall.integrals(r_i, lz, 0.0)
+        M, scale, _, _ = wall.integrals(r_i, lz, 0.0, self.compiled)
         Q, Lam = wall.electric(r_i, lz)
         if self.load == "voltage":
             f0 = M - self.dp
@@ -87,7 +89,7 @@ class Branch:
 
                 def f(q):  # q NaN where no charge balances the traction: no state there
                     with np.errstate(invalid="ignore"):
-                        T, s, _, _ = wall.integrals(ri, l, np.sqrt(q))
+                        T, s, _, _ = wall.integrals(ri, l, np.sqrt(q), self.compiled)
                     return T - self.dp, s
 
                 hi = 2.0 * f0u / Q[up]
@@ -106,7 +108,7 @@ class Branch:
             return np.where(np.isfinite(M), 0.0, np.nan)
 
         def g(c):
-            return wall.integrals(r_i, lz, c)[2] - target, target
+            return wall.integrals(r_i, lz, c, self.compiled)[2] - target, target
 
         hi = 1.5 * target / Lam
         ghi = g(hi)[0]

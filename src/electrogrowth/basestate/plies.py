@@ -108,8 +108,8 @@ class Ply:
                 )
                 integral = ChebyshevSeries(coef, domain=[a, b]).integ(lbnd=a)
                 dG = float(integral(b))
-            else:
-                dG = math.prod(layer.growth) * (b * b - a * a) / 2.0
+            else:  # (b - a) (b + a): no cancellation for a thin layer
+                dG = math.prod(layer.growth) * (b - a) * (b + a) / 2.0
             plies.append(cls(layer, a, b, G0, integral))
             G0 += dG
         return tuple(plies)
@@ -125,7 +125,7 @@ class Ply:
     def G(self, R):
         """G(R) = int_1^R J R' dR' (closed form for constant growth)."""
         if self.graded_integral is None:
-            return self.G0 + math.prod(self.layer.growth) * (R * R - self.a * self.a) / 2.0
+            return self.G0 + math.prod(self.layer.growth) * (R - self.a) * (R + self.a) / 2.0
         return self.G0 + self.graded_integral(R)
 
     def kinematics(self, R, g, G, r_i, lz, c):
@@ -207,6 +207,19 @@ class Wall:
     def faces_G(self) -> np.ndarray:
         return np.array([p.G0 for p in self.plies] + [self.plies[-1].G1])
 
+    @functools.cached_property
+    def layer_G(self) -> np.ndarray:
+        """G_k - G_{k-1} per layer, not as a difference of the sums faces_G (which loses the
+        digits of a thin layer outside a thick one)."""
+        return np.array(
+            [
+                math.prod(p.layer.growth) * (p.b - p.a) * (p.b + p.a) / 2.0
+                if p.graded_integral is None
+                else float(p.graded_integral(p.b))
+                for p in self.plies
+            ]
+        )
+
     def radii2(self, r_i, lz):
         """r^2 at every face and interface, shape S + (N + 1,)."""
         return np.asarray(r_i)[..., None] ** 2 + 2.0 * self.faces_G / np.asarray(lz)[..., None]
@@ -215,20 +228,60 @@ class Wall:
         """Q = int dr / (eps r^3) and Lambda = int dr / (eps r) in closed form, per layer from
         r^2 at its faces and r_b^2 - r_a^2 = 2 (G_b - G_a) / lambda_z (no subtraction)."""
         r2 = self.radii2(r_i, lz)
-        dr2 = 2.0 * np.diff(self.faces_G) / np.asarray(lz)[..., None]
+        dr2 = 2.0 * self.layer_G / np.asarray(lz)[..., None]
         inv_eps = np.array([1.0 / p.layer.permittivity for p in self.plies])
         Q = (inv_eps * dr2 / (2.0 * r2[..., :-1] * r2[..., 1:])).sum(-1)
         Lam = (inv_eps * 0.5 * np.log1p(dr2 / r2[..., :-1])).sum(-1)
         return Q, Lam
 
-    def integrals(self, r_i, lz, c):
+    @functools.cached_property
+    def closed_form(self) -> np.ndarray:
+        """Per ply: are its integrals elementary (neo-Hookean, constant growth)?"""
+        return np.array([p.kind == "neo-hookean" and not p.layer.graded for p in self.plies])
+
+    def _closed_form_integrals(self, r_i, lz, c, out) -> None:
+        """Add the closed-form plies' (T, scale, V, N_int) to ``out`` (neo_hookean_wall.py)."""
+        # here: only a march's continuation, which has loaded numba for its modes anyway
+        from .neo_hookean_wall import ply_integrals
+
+        r2 = self.radii2(r_i, lz).reshape(-1, len(self.plies) + 1)
+        lz, c = np.ravel(lz), np.ravel(c)
+        flat = out.reshape(4, -1)  # a view: out is C-contiguous
+        for k in np.flatnonzero(self.closed_form):
+            ply = self.plies[k]
+            layer = ply.layer
+            ply_integrals(
+                np.ascontiguousarray(r2[:, k]),
+                lz,
+                c,
+                ply.a,
+                ply.b,
+                np.asarray(layer.growth, float),
+                layer.shear_modulus,
+                layer.permittivity,
+                flat,
+            )
+
+    def integrals(self, r_i, lz, c, compiled: bool = False):
         """(T, scale, V, Nint): T = int (tau_2 - tau_1) dr / r, scale = int (|tau_1| + |tau_2|)
         dr / r, V = int E_r dr, Nint = pi int (2 tau_3 - tau_1 - tau_2) r dr; NaN where an
-        energy is not finite (faces included)."""
+        energy is not finite (faces included).
+
+        By the Gauss rule, or with ``compiled`` by the closed form (neo_hookean_wall.py) for
+        the neo-Hookean plies of constant growth: ~2 us a ply against ~50 us, for a march's
+        continuation (warm.py), where the compiled kernels are loaded anyway; a cold solve
+        keeps the Gauss rule and does not load numba (a `state` command, issue 25). The two
+        agree to ~1e-14 of the stress scale (tests/basestate/test_neo_hookean_wall.py), as a
+        continued and a cold state do anyway (two Newton starts of one root)."""
         r_i, lz, c = (np.asarray(v, float)[..., None] for v in np.broadcast_arrays(r_i, lz, c))
         out = np.zeros((4,) + r_i.shape[:-1])
         bad = np.zeros(r_i.shape[:-1], bool)
-        for ply, (R, w, g, J, G) in zip(self.plies, self.grids):
+        closed = self.closed_form if compiled else np.zeros(len(self.plies), bool)
+        if closed.any():
+            self._closed_form_integrals(r_i[..., 0], lz[..., 0], c[..., 0], out)
+        for ply, (R, w, g, J, G), skip in zip(self.plies, self.grids, closed):
+            if skip:
+                continue
             r, r2, (l1, l2, l3), d = ply.kinematics(R, g, G, r_i, lz, c)
             ok = ply.finite(l1, l2, l3, d).all(-1)
             if not ok.all():

@@ -90,7 +90,7 @@ def continued(tube: Tube, near, rtol: float, guess=None):
     else:
         key = dataclasses.replace(tube, voltage=0.0)
         wall, prep = Wall.build(key, near._wall.nodes), LazyPrepared(key, rtol)
-    branch = Branch(wall, "pressure", vbar=tube.voltage)
+    branch = Branch(wall, "pressure", vbar=tube.voltage, compiled=True)
     force = tube.control == "force"
     dp = tube.inner_pressure - tube.outer_pressure
     for start in ([] if guess is None else [guess]) + [(near.r_i, near.stretch)]:
@@ -166,10 +166,13 @@ def _rising(wall: Wall, tube: Tube, u, F, J, dp: float, force: bool) -> bool:
         lz_x = -J[1, 0] / J[1, 1]
         return bool(J[0, 0] + J[0, 1] * lz_x > 0)
     # the voltage branch at fixed P_i - P_o: F(r_i, lambda_z, Vbar) = const along it
-    hv = _H * vbar
     lz = u[1] if force else tube.stretch
-    up = Branch(wall, "pressure", vbar=vbar + hv).point([u[0]], [lz])
-    F_v = (np.array([up["dp"][0] - dp, up["residual"][0]])[: len(u)] - F) / hv
+    if wall.ideal:
+        F_v = _ideal_load_rate(wall, tube, u[0], lz)[: len(u)]
+    else:
+        hv = _H * vbar
+        up = Branch(wall, "pressure", vbar=vbar + hv, compiled=True).point([u[0]], [lz])
+        F_v = (np.array([up["dp"][0] - dp, up["residual"][0]])[: len(u)] - F) / hv
     if not force:
         return bool(-J[0, 0] / F_v[0] > 0)
     A = np.array([[J[0, 1], F_v[0]], [J[1, 1], F_v[1]]])
@@ -178,3 +181,14 @@ def _rising(wall: Wall, tube: Tube, u, F, J, dp: float, force: bool) -> bool:
     except np.linalg.LinAlgError:
         return False
     return bool(v_x > 0 and math.isfinite(v_x))
+
+
+def _ideal_load_rate(wall: Wall, tube: Tube, r_i: float, lz: float) -> np.ndarray:
+    """d(P_i - P_o, N_applied) / d Vbar at fixed (r_i, lambda_z) for ideal dielectrics, up to a
+    positive factor (only its direction is used). On the pressure branch c = Vbar (R_N - 1) /
+    Lambda, so d(c^2) / d Vbar = 2 c^2 / Vbar, and P_i - P_o = M - c^2 Q, N = N_m - pi c^2
+    Lambda + pi (P_i r_i^2 - P_o r_o^2), the end load dropped from N_applied for closed ends:
+    the rate is -(2 c^2 / Vbar) (Q, pi (Lambda + [open ends] r_i^2 Q))."""
+    Q, Lam = (float(v[0]) for v in wall.electric(np.array([r_i]), np.array([lz])))
+    open_ends = 0.0 if tube.closed_ends else 1.0
+    return -np.array([Q, math.pi * (Lam + open_ends * r_i * r_i * Q)])
