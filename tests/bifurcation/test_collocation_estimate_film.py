@@ -55,8 +55,11 @@ def test_collocation_estimate_covers_its_rounding_on_a_stiff_film(film):
     nodes, but collocation's roots scatter by rounding: 40 nodes +3e-9, 56 -3.1e-8, 72
     +4e-9, 96 -9.6e-9, 128 +2e-9 (relative, from the impedance value). Found by probing:
     ``method="collocation"`` returned 1.1581993081 (+1.9e-8) with an estimate of 1.0e-9
-    and status OK. Now -2.1e-8 with an estimate of 2.2e-8, INACCURATE; with the film's
-    radius an ulp away -1.9e-9, estimate 6.6e-10, OK (within 1e4 rtol). About 3 s each."""
+    and status OK. The roots move with the base state's last digits too: after G(R) took
+    (R - a)(R + a), the second radius gave +1.9e-8 with an estimate of 2e-10, OK, again. Now
+    the estimate includes the target's measured rounding floor (error_estimate.py
+    ``collocation_floor``): +1.3e-8 and -1.2e-8 with estimates 3.0e-7 and 3.4e-7,
+    INACCURATE. About 7 s each."""
     material = Material("txt", TEXT)
     noisy = Tube(
         (

@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 
 from electrogrowth import Tube
-from electrogrowth.bifurcation import critical
+from electrogrowth.bifurcation import critical, error_estimate
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.cli.app import main
 from electrogrowth.model.layers import Layer
@@ -137,13 +137,13 @@ def test_second_resolution_never_leaves_the_path():
         seen.append(x)
         return 1.0
 
-    est = critical._second_resolution(g, 1.1, (1.0, 6.0))
+    est = error_estimate.second_resolution(g, 1.1, (1.0, 6.0))
     assert min(seen) >= 1.0 and max(seen) <= 6.0
     assert est == pytest.approx(1.1e-6 * 4**11, rel=1e-12)
 
 
 def test_second_resolution_finds_the_coarse_root_inside_the_path():
-    est = critical._second_resolution(lambda x: x - 1.3, 1.2999, (1.0, 6.0))
+    est = error_estimate.second_resolution(lambda x: x - 1.3, 1.2999, (1.0, 6.0))
     assert est == pytest.approx(1e-4, rel=1e-9)
 
 
@@ -205,7 +205,7 @@ def test_secant_estimate_is_the_distance_to_the_root(offset):
         sense = 1.0 if path[1] > path[0] else -1.0
         value = root + sense * offset
         g = _curved(root, calls) if sense > 0 else (lambda x, f=_curved(root, calls): -f(x))
-        est = critical._second_resolution(g, value, path)
+        est = error_estimate.second_resolution(g, value, path)
         assert est == pytest.approx(abs(value - root), rel=1e-4)
         assert len(calls) == (2 if offset > 0 else 3)
 
@@ -219,8 +219,8 @@ def test_secant_estimate_falls_back_without_a_sign_change():
         calls.append(x)
         return (x - 1.3) ** 2 + 1e-20
 
-    assert critical._secant_estimate(g, 1.3 + 1e-9, (1.0, 6.0)) is None
-    est = critical._second_resolution(g, 1.3 + 1e-9, (1.0, 6.0))
+    assert error_estimate.secant_estimate(g, 1.3 + 1e-9, (1.0, 6.0)) is None
+    est = error_estimate.second_resolution(g, 1.3 + 1e-9, (1.0, 6.0))
     assert est == pytest.approx(1e-6 * (1.3 + 1e-9) * 4**11, rel=1e-12)  # the widest window
 
 
@@ -241,7 +241,7 @@ def test_secant_estimate_equals_the_windows_and_bounds_the_error(case, monkeypat
     tube, m, n, control, side = case
     new = critical_value(tube, m, n, control, side=side)
     reference = critical_value(tube, m, n, control, side=side, rtol=1e-14)
-    monkeypatch.setattr(critical, "_secant_estimate", lambda *args: None)
+    monkeypatch.setattr(error_estimate, "secant_estimate", lambda *args: None)
     old = critical_value(tube, m, n, control, side=side)
     assert new.value == old.value
     resolution = 4e-15 * max(1.0, abs(new.value))
@@ -269,8 +269,8 @@ def test_secant_estimate_checks_its_straight_line():
     def g(x):
         return -5e-4 * math.tanh((x - root) / 1e-9)
 
-    assert critical._secant_estimate(g, value, (1.0, 6.0)) is None
-    est = critical._second_resolution(g, value, (1.0, 6.0))
+    assert error_estimate.secant_estimate(g, value, (1.0, 6.0)) is None
+    est = error_estimate.second_resolution(g, value, (1.0, 6.0))
     assert est == pytest.approx(2e-12, rel=1e-2)
 
 
@@ -284,7 +284,7 @@ def test_secant_estimate_keeps_a_straight_line_far_from_the_value():
         calls.append(x)
         return 1.3 - 0.3 * h - x
 
-    est = critical._second_resolution(g, 1.3, (1.0, 6.0))
+    est = error_estimate.second_resolution(g, 1.3, (1.0, 6.0))
     assert est == pytest.approx(0.3 * h, rel=1e-6)
     assert len(calls) == 3
 
@@ -318,3 +318,17 @@ def test_cli_a_refused_certificate_prints_the_value_and_exits_3(monkeypatch, cap
     assert main(ARGV + ["--certify", "--accept-inaccurate", "--json"]) == 0
     rec = json.loads(capsys.readouterr().out)
     assert rec["certified"] is False and rec["certification"].startswith("impedance gives")
+
+
+def test_collocation_floor_is_the_rounding_noise_over_the_slope():
+    """A straight target g = 1e-3 (1.3 - x) with noise of amplitude 1e-12 (made up: a
+    deterministic hash of x): the floor is at least the noise over the slope (1e-9) and at
+    most a few times it; without noise it is the secant's distance."""
+
+    def noisy(x):
+        return 1e-3 * (1.3 - x) + 1e-12 * math.sin(1e15 * x)
+
+    est = error_estimate.collocation_floor(noisy, 1.3, (1.0, 6.0))
+    assert 1e-10 <= est <= 4e-9
+    clean = error_estimate.collocation_floor(lambda x: 1e-3 * (1.3 - x), 1.3 + 2e-11, (1.0, 6.0))
+    assert clean == pytest.approx(2e-11, rel=1e-3)

@@ -32,7 +32,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..basestate.tube import solve_base_state
-from ..continuation.events import Remembered, brent, widening_windows
+from ..continuation.events import Remembered, brent
 from ..errors import ConvergenceError, NoBifurcationFound, Remedy
 from ..incremental.accuracy import CERTIFIED, RTOL_RANGE, STABLE_SIGN, Accuracy
 from ..incremental.targets import (
@@ -50,6 +50,7 @@ from ..model.layers import Tube
 from ..outcomes import Kind, Outcome, Status
 from ..summary import critical_html
 from .along import SignedMode, TubeAt
+from .error_estimate import collocation_floor, second_resolution
 from .march import ONE_MODE_STEPS, control_path, first_bifurcations
 from .problem import Problem, as_problem
 
@@ -263,11 +264,9 @@ def _solve(params, m, n, solve_for, fam, side, method, rtol, bracket) -> Critica
             )
         value = res.found[0].value
     path = control_path(params, solve_for, side)[:2]
-    estimate = _second_resolution(SignedMode(at, coarse, mode, sref), value, path)
+    estimate = second_resolution(SignedMode(at, coarse, mode, sref), value, path)
     if check_method(method) is Method.COLLOCATION:
-        # two resolutions of collocation share its determinant's rounding, flat over ~1e-10
-        # about the root: its own secant there is how far the value may be from that root
-        estimate = max(estimate, _secant_estimate(Remembered(g), value, path) or 0.0)
+        estimate = max(estimate, collocation_floor(Remembered(g), value, path))
     return CriticalPoint(
         solve_for,
         value,
@@ -328,73 +327,3 @@ def _stable_sign(reference: Tube, m: int, n: int, fam: Family, method: str) -> f
             f"target undefined on the unloaded tube for mode ({m}, {n}) ({fam})"
         )
     return math.copysign(1.0, f)
-
-
-def _second_resolution(g_coarse, value: float, path: tuple[float, float]) -> float:
-    """|root of the 100x looser target - value|: the error estimate of the value.
-
-    First by the secant (:func:`_secant_estimate`, 2-3 evaluations), which stands only on a
-    sign change it has seen; otherwise the root is searched in widening windows around the
-    value, clipped to the march's ``path`` (start, end): the probes stay in the control's
-    domain (a window of +-4.2 put a growth at -0.16), and a root before the start is not
-    this one. Without a root in the widest window the estimate is that window's half-width
-    (the looser root is at least that far): an uncertified value, not a failure."""
-    g_coarse = Remembered(g_coarse)  # Brent evaluates a window's ends again
-    fast = _secant_estimate(g_coarse, value, path)
-    if fast is not None:
-        return fast
-    bounds = (min(path), max(path))
-    windows = list(widening_windows(value, SECANT_STEP * max(1.0, abs(value)), 12, bounds=bounds))
-    for lo, hi, _ in windows:
-        if lo < hi and g_coarse(lo) * g_coarse(hi) < 0:
-            return abs(brent(g_coarse, lo, hi) - value)
-    return windows[-1][2]  # the widest window's half-width
-
-
-#: the secant's step back towards the path's start, and the first window's half-width,
-#: relative to max(1, |value|)
-SECANT_STEP = 1e-6
-
-
-def _secant_estimate(g, value: float, path: tuple[float, float]) -> float | None:
-    """The distance from ``value`` to the root of g (positive at the path's start) by the
-    secant through g at the value and a step SECANT_STEP max(1, |value|) = h back towards
-    the start, or None where the secant is not backed by a sign change within h.
-
-    The root x_c of g is |value - x_c| = d ~ 1e-11 from the value (the two targets are 100x
-    apart in accuracy), where g is a straight line to O(d h g''/g'): the secant's distance
-    equals the root's to ~1e-4 relative, the digits an error estimate has (Brent located
-    x_c to 2e-15 |value|). It is returned only when g changes sign between the value and the
-    step back (the root is then interpolated) or between the value and twice the
-    extrapolated distance beyond it (one more evaluation): a root of g lies there, as near as
-    the secant says. Farther than STRAIGHT h from the value, one more evaluation at the
-    secant's root checks that g is a straight line over h: a stiff film's target turns
-    from one plateau to the other within 1e-8 of the root, where the secant would put the
-    root at h / 2. docs/derivation.md section 6."""
-    lo, hi = min(path), max(path)
-    sense = 1.0 if path[1] >= path[0] else -1.0
-    h = SECANT_STEP * max(1.0, abs(value))
-    back = value - sense * h
-    if not lo <= back <= hi:
-        return None
-    g0 = g(value)
-    if g0 == 0.0:
-        return 0.0
-    g1 = g(back)
-    if not (math.isfinite(g0) and math.isfinite(g1)) or g1 <= 0.0 or g1 == g0:
-        return None
-    d = h * g0 / (g1 - g0)  # the secant's root lies at value + sense d
-    if g0 >= 0.0:  # the root is beyond the value: it must be bracketed there
-        beyond = value + 2.0 * sense * d
-        if not (0.0 < d <= h and lo <= beyond <= hi) or g(beyond) >= 0.0:
-            return None
-    if abs(d) > STRAIGHT * h and abs(g(value + sense * d)) > STRAIGHT * max(abs(g0), g1):
-        return None  # not a straight line over h: a steep step (a stiff film's target)
-    return abs(d)
-
-
-#: The secant is taken on trust while the root lies within STRAIGHT h of the value (then g
-#: changes across h by ~1/STRAIGHT times its value there: a straight line, or the distance
-#: is overstated, never understated); farther, g at the secant's root must be below
-#: STRAIGHT times its values at the ends, else Brent's windows decide.
-STRAIGHT = 1e-3
