@@ -64,7 +64,7 @@ def solve_layered_state(tube: Tube, *, rtol: float = 1e-12, near=None, guess=Non
     """
     if near is not None and (warm := continued(tube, near, rtol, guess)) is not None:
         _, wall, prep, x, lz, c = warm
-        state = LayeredState._build(tube, wall, prep, x, lz, c, rtol)
+        state = LayeredState._build(tube, wall, prep, x, lz, c, rtol, compiled=True)
         if state.quadrature_error <= max(rtol, 1e-14):
             return state
     key = dataclasses.replace(tube, voltage=0.0)

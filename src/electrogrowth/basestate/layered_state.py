@@ -75,12 +75,30 @@ class LayeredState:
         return self._prep.voltage.lambda_i
 
     @classmethod
-    def _build(cls, tube, wall, prep, x, lz, c, rtol) -> LayeredState:
+    def _build(cls, tube, wall, prep, x, lz, c, rtol, compiled: bool = False) -> LayeredState:
         """Chebyshev interpolants per layer (degree doubled until the tail < 1e-2 rtol) of the
         integrands of sigma_rr, its scale, V and Nint: a quadrature independent of the Gauss one
-        that fixed (r_i, c, lambda_z)."""
+        that fixed (r_i, c, lambda_z). With ``compiled`` (a march's continued state, whose
+        Newton solve used them too) the closed forms of its neo-Hookean layers of constant
+        growth instead (neo_hookean_wall.py): sigma_rr through such a layer is
+        :class:`~.neo_hookean_wall.TractionProfile`, and the residuals below check Newton's
+        convergence."""
         sigma, s_a, totals = [], -tube.inner_pressure, np.zeros(3)
-        for ply in wall.plies:
+        r2 = wall.radii2(x, lz)
+        for k, ply in enumerate(wall.plies):
+            if compiled and wall.closed_form[k]:
+                from .neo_hookean_wall import TractionProfile  # numba: loaded by the march
+
+                layer = ply.layer
+                prof = TractionProfile(
+                    float(r2[k]), float(lz), float(c), ply.a, tuple(layer.growth),
+                    layer.shear_modulus, layer.permittivity,
+                )  # fmt: skip
+                T, *rest = prof.profile(np.array([ply.b]))[:, 0]
+                totals += rest
+                sigma.append((prof, s_a))
+                s_a = s_a + float(T)
+                continue
 
             def f(R, ply=ply):
                 g = ply.layer.growth_at(R)
@@ -107,7 +125,6 @@ class LayeredState:
             sigma.append((antider, s_a))
             s_a = s_a + float(antider(ply.b))
         scale, volt, nint = totals
-        r2 = wall.radii2(x, lz)
         r = np.sqrt(r2)
         P_i, P_o = tube.inner_pressure, tube.outer_pressure
         ends = math.pi * (P_i * r2[0] - P_o * r2[-1])
