@@ -107,12 +107,17 @@ class Ply:
                     "graded growth",
                 )
                 integral = ChebyshevSeries(coef, domain=[a, b]).integ(lbnd=a)
-                dG = float(integral(b))
-            else:  # (b - a) (b + a): no cancellation for a thin layer
-                dG = math.prod(layer.growth) * (b - a) * (b + a) / 2.0
             plies.append(cls(layer, a, b, G0, integral))
-            G0 += dG
+            G0 += plies[-1].dG
         return tuple(plies)
+
+    @property
+    def dG(self) -> float:
+        """G(b) - G(a), not as a difference of the sums G (which loses the digits of a thin
+        layer outside a thick one): J (b - a) (b + a) / 2 for constant growth."""
+        if self.graded_integral is None:
+            return math.prod(self.layer.growth) * (self.b - self.a) * (self.b + self.a) / 2.0
+        return float(self.graded_integral(self.b))
 
     @property
     def kind(self) -> str:
@@ -209,16 +214,8 @@ class Wall:
 
     @functools.cached_property
     def layer_G(self) -> np.ndarray:
-        """G_k - G_{k-1} per layer, not as a difference of the sums faces_G (which loses the
-        digits of a thin layer outside a thick one)."""
-        return np.array(
-            [
-                math.prod(p.layer.growth) * (p.b - p.a) * (p.b + p.a) / 2.0
-                if p.graded_integral is None
-                else float(p.graded_integral(p.b))
-                for p in self.plies
-            ]
-        )
+        """G_k - G_{k-1} per layer (Ply.dG)."""
+        return np.array([p.dG for p in self.plies])
 
     def radii2(self, r_i, lz):
         """r^2 at every face and interface, shape S + (N + 1,)."""
