@@ -25,7 +25,7 @@ from ..figures.plots import plot_mode_shape, render_pattern
 from ..incremental.targets import Family
 from ..shapes.mode_shape import mode_shape
 from ..shapes.wall import export_vtk
-from .critical import tube_line, value_name
+from .critical_text import tube_line, value_name
 from .options import (
     MODE_COVERAGE,
     add_control_options,
