@@ -29,6 +29,8 @@ $(VENV)/.kernels: $(KERNEL_SOURCES) | $(VENV)/.installed
 	@echo "electrogrowth: compiling the numerical kernels (once per change; kept in the cache)"
 	$(BIN)/electrogrowth critical --solve-for growth --outer-radius 1.4 --length 1 \
 		--voltage 0.4 > /dev/null
+	$(BIN)/electrogrowth critical --tube examples/bilayer.toml --solve-for voltage \
+		--mode 0 1 > /dev/null
 	touch $@
 
 # The heavier optional extras (sweep = xarray/zarr/dask, vtk = meshio), on demand.
