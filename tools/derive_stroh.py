@@ -1,7 +1,7 @@
 """Derive the 8x8 Stroh matrix of the electro-elastic tube with sympy (dev tool).
 
 Run ``PYTHONPATH=src .venv/bin/python tools/derive_stroh.py`` to print the entries of G for
-generic moduli (the 23 symbols of ``materials.MODULI_NAMES``, plus p, m, k, r) and for the
+generic moduli (the 23 symbols of ``moduli.MODULI_NAMES``, plus p, m, k, r) and for the
 ideal neo-Hookean dielectric. The package does not import this file; the tests load it to
 compare ``electrogrowth.incremental.stroh`` with the derivation. The maths is in
 docs/derivation-stroh.md.
@@ -30,10 +30,10 @@ import sys
 import sympy as sp
 
 try:
-    from electrogrowth.model.materials import MODULI_NAMES
+    from electrogrowth.model.moduli import MODULI_NAMES
 except ImportError:  # pragma: no cover - run without PYTHONPATH=src
     sys.path.insert(0, "src")
-    from electrogrowth.model.materials import MODULI_NAMES
+    from electrogrowth.model.moduli import MODULI_NAMES
 
 #: Signs of the electric entries of the Stroh vector: eta = [U_r, U_th, U_z, S1 r Delta_r,
 #: r Sigma_rr, r Sigma_rth, r Sigma_rz, S2 Phi]. S1 * S2 = -1 makes G Hamiltonian.
@@ -200,7 +200,7 @@ def derive(s1: int = S1, s2: int = S2):
 
 
 def neo_hookean_substitution(l1, l2, l3, d):
-    """Moduli of the ideal neo-Hookean dielectric (materials.neo_hookean_moduli), symbolic."""
+    """Moduli of the ideal neo-Hookean dielectric (moduli.neo_hookean_moduli), symbolic."""
     b1, b2, b3 = l1**2, l2**2, l3**2
     val = dict.fromkeys(MODULI_NAMES, 0)
     val.update(

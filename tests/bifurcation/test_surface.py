@@ -38,7 +38,8 @@ from electrogrowth.incremental.stroh_limit import (
     neo_hookean_secular,
 )
 from electrogrowth.model.layers import Layer, Tube
-from electrogrowth.model.materials import MODULI_INDEX, gent, mooney_rivlin, neo_hookean_moduli
+from electrogrowth.model.materials import gent, mooney_rivlin
+from electrogrowth.model.moduli import MODULI_INDEX, neo_hookean_moduli
 from tests.tubes import TUBES
 
 try:

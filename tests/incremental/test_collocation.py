@@ -26,12 +26,12 @@ from electrogrowth.model.materials import (
     I4,
     I5,
     I6,
-    MODULI_INDEX,
     Material,
     gent,
     mooney_rivlin,
     neo_hookean,
 )
+from electrogrowth.model.moduli import MODULI_INDEX
 
 HALF_SPACE = 0.443745615894947  # lambda_z with lambda_z^{3/2} = root of x^3 + x^2 + 3x - 1
 

@@ -19,13 +19,11 @@ from electrogrowth.incremental.stroh import (
     stroh_matrix_py,
 )
 from electrogrowth.model.materials import (
-    MODULI_INDEX,
-    MODULI_NAMES,
     gent,
     mooney_rivlin,
     neo_hookean,
-    neo_hookean_moduli,
 )
+from electrogrowth.model.moduli import MODULI_INDEX, MODULI_NAMES, neo_hookean_moduli
 
 MATERIALS = {
     "neo-hookean": neo_hookean(),

@@ -16,7 +16,8 @@ from electrogrowth.incremental import radial_table
 from electrogrowth.incremental.table_chop import chop_and_merge
 from electrogrowth.incremental.targets import ALL_PAIRS, U_TH, U_Z, Family, mode_pairs
 from electrogrowth.model.layers import Layer, Tube
-from electrogrowth.model.materials import gent, neo_hookean_moduli
+from electrogrowth.model.materials import gent
+from electrogrowth.model.moduli import neo_hookean_moduli
 
 
 def _same(a, b) -> bool:

@@ -34,15 +34,13 @@ from electrogrowth.model.materials import (
     I5,
     I6,
     INVARIANTS,
-    MODULI_INDEX,
-    MODULI_NAMES,
     Material,
     gent,
     material_by_name,
     mooney_rivlin,
     neo_hookean,
-    neo_hookean_moduli,
 )
+from electrogrowth.model.moduli import MODULI_INDEX, MODULI_NAMES, neo_hookean_moduli
 
 R = sp.Rational
 

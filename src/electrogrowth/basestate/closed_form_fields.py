@@ -6,7 +6,7 @@ closed forms (docs/derivation-base-state.md), which NumPy evaluates in ~30 small
 operations (30 us, a tenth of a warm critical value); here one loop (~2 us).
 
 :func:`nh_fields` is a transcription of the NumPy route (UniformState._local, ``_tau``,
-``_sigma_rr`` and materials.neo_hookean_moduli): the same operations in the same order, each
+``_sigma_rr`` and moduli.neo_hookean_moduli): the same operations in the same order, each
 correctly rounded or the same C library's log1p, so the arrays equal the slow twin's bit for
 bit (tests/basestate/test_closed_form_fields.py, on random states). :func:`nh_table_block`
 writes the table's whole block (the moduli, p, r and w = (dr/dR) / r) in the same pass: the
@@ -21,7 +21,7 @@ import numba as nb
 import numpy as np
 
 from ..errors import ParameterError
-from ..model.materials import MODULI_INDEX
+from ..model.moduli import MODULI_INDEX
 
 _B1 = np.array([MODULI_INDEX[n] for n in ("A1111", "A1212", "A1313")])  # b1 + d^2
 _B2 = np.array([MODULI_INDEX[n] for n in ("A2121", "A2222", "A2323")])  # b2

@@ -271,7 +271,7 @@ class LayeredState:
         return f["tau1"] - f["sigma_rr"]
 
     def moduli(self, R, *, side: str = "outer") -> np.ndarray:
-        """Updated moduli (materials.MODULI_NAMES order) with the layer's scaling (A mu_k,
+        """Updated moduli (moduli.MODULI_NAMES order) with the layer's scaling (A mu_k,
         Gamma sqrt(mu_k / eps_k), K / eps_k), shape R.shape + (23,)."""
         return self._fields(R, side, moduli=True)["moduli"]
 

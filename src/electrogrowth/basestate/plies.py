@@ -33,7 +33,8 @@ from numpy.polynomial import chebyshev as cheb
 
 from ..errors import ConvergenceError
 from ..model.layers import Layer, Tube
-from ..model.materials import MODULI_NAMES, Material, neo_hookean_moduli
+from ..model.materials import Material
+from ..model.moduli import MODULI_NAMES, neo_hookean_moduli
 from .chebyshev_series import ChebyshevSeries, chebinterpolate
 from .voltage import energy_kind
 

@@ -13,7 +13,7 @@ through-wall profile of the solved state, sigma_rr(R) = int_{r_i}^{r} (tau_2 - t
 
 Two routes. The ideal neo-Hookean dielectric (the paper's material) is solved in closed form:
 lambda_i by brentq on (NH-6), sigma_rr by (NH-1), N by (NH-4), moduli by
-``materials.neo_hookean_moduli``. Every other energy takes the generic route: Gauss-Legendre
+``moduli.neo_hookean_moduli``. Every other energy takes the generic route: Gauss-Legendre
 quadratures, a scanned threshold, and sigma_rr as a Chebyshev antiderivative, exact to
 quadrature accuracy at any R; it is also the reference the closed form is tested against.
 Derivation, closed forms and the paper's typos: docs/derivation-base-state.md.
@@ -30,7 +30,7 @@ from numpy.polynomial import chebyshev as cheb
 from ..errors import BaseStateError, ConvergenceError, ParameterError
 from ..labelled import base_state_dataset
 from ..model.layers import Tube
-from ..model.materials import neo_hookean_moduli
+from ..model.moduli import neo_hookean_moduli
 from ..summary import base_state_html
 from . import neo_hookean
 from .chebyshev_series import ChebyshevSeries, chebinterpolate
@@ -315,7 +315,7 @@ class UniformState:
         return self._tau(stretches, d)[0] - self._sigma_rr(R, r)
 
     def moduli(self, R, *, side: str = "outer") -> np.ndarray:
-        """Updated moduli (materials.MODULI_NAMES order), shape R.shape + (23,)."""
+        """Updated moduli (moduli.MODULI_NAMES order), shape R.shape + (23,)."""
         _, _, stretches, d = self._local(R)
         if self._sigma is None:
             return neo_hookean_moduli(*stretches, d)

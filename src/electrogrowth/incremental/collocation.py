@@ -47,7 +47,7 @@ from .._types import FloatArray
 from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
 from ..model.layers import Tube
-from ..model.materials import MODULI_INDEX
+from ..model.moduli import MODULI_INDEX
 from .chebyshev import chebyshev_lobatto, interior_interpolation
 from .collocation_layout import (
     _FIELDS,

@@ -14,7 +14,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .._types import FloatArray
-from ..model.materials import MODULI_INDEX
+from ..model.moduli import MODULI_INDEX
 from .chebyshev import interior_interpolation
 from .collocation_layout import _layout
 

@@ -39,7 +39,7 @@ from typing import NamedTuple
 import numpy as np
 
 from ..errors import ConvergenceError
-from ..model.materials import MODULI_NAMES
+from ..model.moduli import MODULI_NAMES
 from .table_chop import scale_chop_and_merge
 
 N_MODULI = len(MODULI_NAMES)

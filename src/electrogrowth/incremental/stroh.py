@@ -41,9 +41,9 @@ import numba
 import numpy as np
 import numpy.typing as npt
 
-from ..model.materials import MODULI_INDEX
+from ..model.moduli import MODULI_INDEX
 
-#: A 1-D array of the 23 updated moduli in ``materials.MODULI_NAMES`` order.
+#: A 1-D array of the 23 updated moduli in ``moduli.MODULI_NAMES`` order.
 Moduli = npt.NDArray[np.float64]
 #: The 8x8 Stroh matrix G, or one of its 4x4 blocks.
 StrohMatrix = npt.NDArray[np.float64]
@@ -86,7 +86,7 @@ def stroh_matrix(mod, p, m, kr, out):
     Parameters
     ----------
     mod : (23,) float array
-        Updated moduli A, Gamma, K at radius r, order ``materials.MODULI_NAMES``
+        Updated moduli A, Gamma, K at radius r, order ``moduli.MODULI_NAMES``
         (units mu = eps = 1).
     p : float
         Base-state Lagrange multiplier p(r) (units mu).
@@ -194,7 +194,7 @@ def stroh_blocks(
     Examples
     --------
     >>> import numpy as np
-    >>> from electrogrowth.model.materials import neo_hookean_moduli
+    >>> from electrogrowth.model.moduli import neo_hookean_moduli
     >>> G1, G2, G3, G4 = stroh_blocks(neo_hookean_moduli(1.0, 1.0, 1.0, 0.5), 1.0, 2, 0.5)
     >>> bool(np.allclose(G4, -G1.T) and np.allclose(G2, G2.T) and np.allclose(G3, G3.T))
     True
@@ -209,7 +209,7 @@ def neo_hookean_stroh_matrix(
 ) -> StrohMatrix:
     """Closed-form G for the ideal neo-Hookean dielectric (paper Sec. 4.2, App. B).
 
-    Moduli of ``materials.neo_hookean_moduli``: A_1a1a = A1111 = l1^2 + d^2,
+    Moduli of ``moduli.neo_hookean_moduli``: A_1a1a = A1111 = l1^2 + d^2,
     A_2a2a = l2^2, A_3a3a = l3^2, Gamma111 = 2 d, Gamma122 = Gamma133 = d, K = I. Then
     gamma_12 = gamma_13 = l1^2 and s = sigma_rr = l1^2 + d^2 - p. A plain function used to
     test :func:`stroh_matrix`; ``d`` is the current radial displacement D_r.

@@ -56,7 +56,7 @@ import numpy as np
 import numpy.typing as npt
 
 from ..errors import ParameterError
-from ..model.materials import MODULI_INDEX
+from ..model.moduli import MODULI_INDEX
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -169,7 +169,7 @@ def limit_matrix(mod, p, psi) -> FloatArray:
     Parameters
     ----------
     mod : (..., 23) array
-        Updated moduli at the face (order ``materials.MODULI_NAMES``).
+        Updated moduli at the face (order ``moduli.MODULI_NAMES``).
     p : float or array
         Lagrange multiplier at the face.
     psi : float or array
@@ -181,7 +181,7 @@ def limit_matrix(mod, p, psi) -> FloatArray:
 
     Examples
     --------
-    >>> from electrogrowth.model.materials import neo_hookean_moduli
+    >>> from electrogrowth.model.moduli import neo_hookean_moduli
     >>> N = limit_matrix(neo_hookean_moduli(1.0, 1.0, 1.0, 0.0), 1.0, 0.3)
     >>> bool(np.allclose(np.sort(np.linalg.eigvals(N).real), [-1] * 4 + [1] * 4, atol=1e-6))
     True

@@ -18,7 +18,7 @@ from .._types import FloatArray, State
 from ..incremental.collocation import mode_shape_collocation
 from ..incremental.impedance import ALL_PAIRS
 from ..incremental.stroh import stroh_matrix
-from ..model.materials import MODULI_INDEX
+from ..model.moduli import MODULI_INDEX
 
 
 def collocation_shape(
