@@ -14,9 +14,10 @@ r_a^2), y = ln(b / a), dr2 = r_b^2 - r_a^2, h2 = b^2 - a^2,
     int l1^2 r dr     = g_theta^2 g_z^2 / (2 lambda_z^2) (h2 - A x / B),
     int l3^2 r dr     = (lambda_z / g_z)^2 dr2 / 2,             int d^2 r dr = c^2 x / 2,
 
-so that T = sum mu_k (int l2^2 - int l1^2) - c^2 Q_k, its scale mu_k (int l2^2 + int l1^2) +
-c^2 Q_k, V = sum c x / (2 eps_k) and N_int = pi sum mu_k (2 int l3^2 - int l1^2 - int l2^2)
-r dr - c^2 x / (2 eps_k). The Gauss rule of plies.py computes the same four numbers by
+so that, summed over the layers, T = mu_k (int l2^2 - int l1^2) dr / r - c^2 Q_k, its scale
+mu_k (int l2^2 + int l1^2) dr / r + c^2 Q_k (Q_k = dr2 / (2 eps_k r_a^2 r_b^2)), V = c x /
+(2 eps_k) and N_int = pi [mu_k (2 int l3^2 - int l1^2 - int l2^2) r dr - c^2 x / (2 eps_k)].
+The Gauss rule of plies.py computes the same four numbers by
 quadrature; for these layers it is only exact to its rule's error and costs ~100 us per call
 in NumPy against ~2 us here (a march solves its layered state by Newton at every step).
 No subtraction of nearly equal numbers: dr2 = B (b - a) (b + a), x = log1p(dr2 / r_a^2),
