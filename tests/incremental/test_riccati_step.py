@@ -20,20 +20,22 @@ from electrogrowth.incremental.riccati_step import _new_work, _rhs, _step, next_
 from electrogrowth.model.layers import Layer
 
 
-def _plain_step(R, h, z, m, k, table, seg, work, K):
-    """The step stage by stage through ``_rhs``, the sums in the kernel's order."""
+def _plain_step(R, h, z, m, k, table, seg, work, K, rate0):
+    """The step stage by stage through ``_rhs``, the sums in the kernel's order; and the
+    step's increment of log|det U~| from the stages' rates, by the weights B."""
     K = K.copy()
+    rates = [rate0]
     for st in range(1, N_STAGES):
         acc = np.zeros((4, 4))
         for q in range(st):
             acc = acc + A[st, q] * K[q]
-        _rhs(R + C[st] * h, z + h * acc, m, k, table, seg, work, K[st])
+        rates.append(_rhs(R + C[st] * h, z + h * acc, m, k, table, seg, work, K[st]))
     acc = np.zeros((4, 4))
     for q in range(N_STAGES):
         acc = acc + B[q] * K[q]
     znew = z + h * acc
     _rhs(R + h, znew, m, k, table, seg, work, K[N_STAGES])
-    return znew, K
+    return znew, K, h * float(np.dot(B, rates))
 
 
 def _tables():
@@ -58,14 +60,18 @@ def test_a_step_is_the_plain_route_to_the_bit(chart):
                 z = z + z.T
                 R, h = a + 0.1 * (b - a), 0.37 * (b - a)
                 K = np.empty((N_STAGES + 1, 4, 4))
-                _rhs(R, z, m, k, table, seg, work, K[0])
-                want_z, want_K = _plain_step(R, h, z, m, k, table, seg, work, K)
+                rate0 = _rhs(R, z, m, k, table, seg, work, K[0])
+                want_z, want_K, want_grow = _plain_step(R, h, z, m, k, table, seg, work, K, rate0)
                 znew = np.empty((4, 4))
-                _step(R, h, z, m, k, table, seg, work, K, np.empty((4, 4)), znew)
+                grow = _step(R, h, z, m, k, table, seg, work, K, np.empty((4, 4)), znew, rate0)
                 np.testing.assert_array_equal(znew, want_z)
                 np.testing.assert_array_equal(K, want_K)
-                # the next step's first slope from the blocks the last stage left
+                # the same stage rates, summed in another order
+                tol = 1e-13 * abs(h * rate0)
+                np.testing.assert_allclose(grow, want_grow, rtol=1e-13, atol=tol)
+                # the next step's first slope (and rate) from the blocks the last stage left
                 got, want = np.empty((4, 4)), np.empty((4, 4))
-                next_slope(znew, work, got)
-                _rhs(R + h, znew, m, k, table, seg, work, want)
+                got_rate = next_slope(znew, work, got)
+                want_rate = _rhs(R + h, znew, m, k, table, seg, work, want)
                 np.testing.assert_array_equal(got, want)
+                np.testing.assert_array_equal(got_rate, want_rate)

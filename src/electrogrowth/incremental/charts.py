@@ -170,11 +170,15 @@ def hat_basis(z, J):
 
 @nb.njit(cache=True)
 def switch_chart(z, J):
-    """Best chart for the subspace z~ (chart J); returns (z_new, J_new, sign of det W1)."""
+    """Best chart for the subspace z~ (chart J); returns (z_new, J_new, det W1).
+
+    W1 is the new chart's U-block of the basis P_J^T [I; z~], so det W1 is the factor by
+    which det U~ changes at the switch: its sign the orientation's, its size part of the
+    carried basis' growth (impedance.integrate_one's log_norm)."""
     X = hat_basis(z, J)
     perm = np.empty(8, np.int64)
     sign = np.empty(8)
-    best, bestJ, bestsgn = np.inf, -1, 1.0
+    best, bestJ, bestd = np.inf, -1, 1.0
     zbest = np.zeros((4, 4))
     for Jn in range(16):
         chart_perm(Jn, perm, sign)
@@ -192,9 +196,9 @@ def switch_chart(z, J):
             continue
         size = np.max(np.abs(zn))
         if size < best:
-            best, bestJ, bestsgn = size, Jn, np.sign(d)
+            best, bestJ, bestd = size, Jn, d
             zbest[:, :] = zn
-    return zbest, bestJ, bestsgn
+    return zbest, bestJ, bestd
 
 
 @nb.njit(cache=True)

@@ -163,9 +163,12 @@ def integrate_one(m, k, keep, table, rtol, max_steps, forget=True):
     outer segment near the outer face from the dominant subspace once the carried one
     lies in it (short_wave_start.py; a family's left-out pairs stay on their constant
     line, dominant.hold_left_out); False integrates every wall.
-    Returns (f, z~, J, status, steps): the target of the kept block, the impedance in
-    chart J at R_N, the chart, a status code (OK, MAX_STEPS, STEP_UNDERFLOW, NO_CHART;
-    f is NaN unless OK) and the steps tried.
+    Returns (f, z~, J, status, steps, log_norm): the target of the kept block, the
+    impedance in chart J at R_N, the chart, a status code (OK, MAX_STEPS, STEP_UNDERFLOW,
+    NO_CHART; f is NaN unless OK), the steps tried, and log sqrt(det(M^T M)) of the basis
+    M carried from the inner face (U~ = I there), which f divides out: f exp(log_norm) is
+    det(M2) of that basis, an analytic function of the parameters (NaN where the outer
+    segment was restarted from the dominant subspace: that forgets M's size).
     """
     L = table.coef.shape[0]
     R0, RN = table.bounds[0], table.bounds[L]
@@ -174,12 +177,13 @@ def integrate_one(m, k, keep, table, rtol, max_steps, forget=True):
     s = impedance_scale(m, k, r_o)
     z, factor = _start(keep)
     z += face_impedance(table.face_pressure[0], m, k * r_i, keep, s)
-    J, orient = 0, 1.0
+    J, orient, log_det = 0, 1.0, 0.0  # log_det: log|det U~| of the carried basis
     if np.max(np.abs(z)) > SWITCH:
-        zn, J, orient = switch_chart(z, 0)
+        zn, J, d = switch_chart(z, 0)
         if J < 0:
-            return np.nan, z, 0, NO_CHART, 0
+            return np.nan, z, 0, NO_CHART, 0, np.nan
         z[:, :] = zn
+        orient, log_det = np.sign(d), np.log(abs(d))
     chart_setup(J, s, keep, work.perm, work.mult)
     K = np.empty((_NS + 1, 4, 4))
     ztmp = np.empty((4, 4))
@@ -190,7 +194,7 @@ def integrate_one(m, k, keep, table, rtol, max_steps, forget=True):
     R_s, rate, check, checks = -1.0, 0.0, np.inf, 0
     for seg in range(L):
         R, end = table.bounds[seg], table.bounds[seg + 1]
-        _rhs(R, z, m, k, table, seg, work, K[0])
+        rate = _rhs(R, z, m, k, table, seg, work, K[0])
         while R < end:
             if plan and seg == L - 1 and steps >= 3 and end - R > PLAN_STEPS * h:
                 plan = False  # a long integration ahead: is this a stiff short wave?
@@ -203,56 +207,60 @@ def integrate_one(m, k, keep, table, rtol, max_steps, forget=True):
                 check = R + np.log(max(remnant, 1.0) / (0.1 * REMNANT_MAX)) / rate
                 if remnant <= REMNANT_MAX and sign_a != 0.0:
                     R, z, J, orient, check = R_s, zs, 0, orient * sign_a, np.inf
+                    log_det = np.nan  # the restarted basis has forgotten the carried one's size
                     if np.max(np.abs(z)) > SWITCH:
-                        zn, J, sgn = switch_chart(z, 0)
+                        zn, J, d = switch_chart(z, 0)
                         if J < 0:
-                            return np.nan, z, 0, NO_CHART, steps
-                        z, orient = zn, orient * sgn
+                            return np.nan, z, 0, NO_CHART, steps, np.nan
+                        z, orient = zn, orient * np.sign(d)
                     chart_setup(J, s, keep, work.perm, work.mult)
-                    _rhs(R, z, m, k, table, seg, work, K[0])
+                    rate = _rhs(R, z, m, k, table, seg, work, K[0])
                     h = min(h, end - R)
                 if not (np.isfinite(check) and check < R_s):
                     check = np.inf
             if steps >= max_steps:
-                return np.nan, z, J, MAX_STEPS, steps
+                return np.nan, z, J, MAX_STEPS, steps, np.nan
             if h < 1e-14 * (RN - R0):
-                return np.nan, z, J, STEP_UNDERFLOW, steps
+                return np.nan, z, J, STEP_UNDERFLOW, steps, np.nan
             last = R + h >= end
             if last:
                 h = end - R
-            _step(R, h, z, m, k, table, seg, work, K, ztmp, znew)
+            grow = _step(R, h, z, m, k, table, seg, work, K, ztmp, znew, rate)
             err = _error(h, z, znew, K, rtol)
             steps += 1
             if err <= 1.0 and not np.max(np.abs(znew)) <= LEAP:
                 err = 1e6  # past a pole of the chart: shrink the step (LEAP)
             if err <= 1.0:
                 R = end if last else R + h
+                log_det += grow
                 for i in range(4):
                     for j in range(4):
                         z[i, j] = 0.5 * (znew[i, j] + znew[j, i])
                 h *= min(10.0, 0.9 * err**_EXPONENT) if err > 0.0 else 10.0
                 same = not last  # R is the step's end R + h, where its last stage was
                 if np.max(np.abs(z)) > SWITCH:
-                    zn, Jn, sgn = switch_chart(z, J)
+                    zn, Jn, d = switch_chart(z, J)
                     if Jn < 0:
-                        return np.nan, z, J, NO_CHART, steps
+                        return np.nan, z, J, NO_CHART, steps, np.nan
                     if Jn != J:
                         z[:, :] = zn
                         J = Jn
-                        orient *= sgn
+                        orient *= np.sign(d)
+                        log_det += np.log(abs(d))  # U~ of the new chart: W1 U~
                         chart_setup(J, s, keep, work.perm, work.mult)
                         same = False  # the blocks there were in the old chart
                 if same:
-                    next_slope(z, work, K[0])
+                    rate = next_slope(z, work, K[0])
                 else:
-                    _rhs(R, z, m, k, table, seg, work, K[0])
+                    rate = _rhs(R, z, m, k, table, seg, work, K[0])
             else:
                 h *= max(0.2, 0.9 * err**_EXPONENT)
+    log_norm = log_det + 0.5 * np.log(determinant(np.eye(4) + z.T @ z)) - np.log(factor)
     P_o = table.face_pressure[1]
     if P_o == 0.0:
-        return factor * chart_target(z, J, orient), z, J, OK, steps
+        return factor * chart_target(z, J, orient), z, J, OK, steps, log_norm
     zp = face_impedance(P_o, m, k * r_o, keep, s)
-    return factor * pressure_target(z, J, orient, zp), z, J, OK, steps
+    return factor * pressure_target(z, J, orient, zp), z, J, OK, steps, log_norm
 
 
 @nb.njit(cache=True)
@@ -277,8 +285,8 @@ def integrate_fixed(m, k, keep, table, n_steps):
         h = (b - a) / n_steps
         for n in range(n_steps):
             R = a + n * h
-            _rhs(R, z, m, k, table, seg, work, K[0])
-            _step(R, h, z, m, k, table, seg, work, K, ztmp, znew)
+            rate = _rhs(R, z, m, k, table, seg, work, K[0])
+            _step(R, h, z, m, k, table, seg, work, K, ztmp, znew, rate)
             for i in range(4):
                 for j in range(4):
                     z[i, j] = 0.5 * (znew[i, j] + znew[j, i])
@@ -302,7 +310,7 @@ def _member_table(tables, t):
 def _target_member(b, m, k, keep, table_index, tables, rtol, max_steps, f, status, steps):
     """Member b of a batch: target, status and steps into f[b], status[b], steps[b]."""
     table = _member_table(tables, table_index[b])
-    f[b], _, _, status[b], steps[b] = integrate_one(m[b], k[b], keep[b], table, rtol, max_steps)
+    f[b], _, _, status[b], steps[b], _ = integrate_one(m[b], k[b], keep[b], table, rtol, max_steps)
 
 
 @nb.njit(parallel=True, cache=True)
@@ -328,3 +336,19 @@ def target_serial(m, k, keep, table_index, tables, rtol, max_steps):
     for b in range(n):
         _target_member(b, m, k, keep, table_index, tables, rtol, max_steps, f, status, steps)
     return f, status, steps
+
+
+@nb.njit(cache=True)
+def determinant_serial(m, k, keep, tables, rtol, max_steps):
+    """(f, log_norm, status) of modes (m[b], k[b], keep[b]) on table 0 of ``tables``, every
+    wall integrated (no restart from the dominant subspace, which forgets log_norm): the
+    target and the log of what it divides out (:func:`integrate_one`), so that
+    f exp(log_norm) is det(M2), analytic in the parameters, for a root's refinement."""
+    n = m.shape[0]
+    f, log_norm, status = np.empty(n), np.empty(n), np.empty(n, np.int64)
+    table = _member_table(tables, 0)
+    for b in range(n):
+        f[b], _, _, status[b], _, log_norm[b] = integrate_one(
+            m[b], k[b], keep[b], table, rtol, max_steps, False
+        )
+    return f, log_norm, status

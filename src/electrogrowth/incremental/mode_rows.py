@@ -43,7 +43,7 @@ def row_pairs(modes, b) -> int:
 def _row_target(modes, b, length, tables, rtol, max_steps, f, status):
     """Row b on table 0 of ``tables``: its target and status into f[b], status[b]."""
     k = modes[b, 1] * math.pi / length  # NumPy's modes[:, 1] * math.pi / length
-    f[b], _, _, status[b], _ = integrate_one(
+    f[b], _, _, status[b], _, _ = integrate_one(
         modes[b, 0], k, row_pairs(modes, b), _member_table(tables, 0), rtol, max_steps
     )
 

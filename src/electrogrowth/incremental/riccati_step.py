@@ -78,6 +78,7 @@ class _Work(NamedTuple):
     stage_vals: np.ndarray  # (F, 11) the table's functions there, ...
     stage_Gt: np.ndarray  # (12, 8, 8) ... the blocks G~ ...
     stage_w: np.ndarray  # (12,) ... and w
+    stage_rate: np.ndarray  # (12,) d log det U~ / dR at the stages of a step
 
 
 @nb.njit(cache=True)
@@ -94,6 +95,7 @@ def _new_work(table):
         np.empty(_NS - 1),
         np.empty((F, _NS - 1)),
         np.empty((_NS, 8, 8)),
+        np.empty(_NS),
         np.empty(_NS),
     )
 
@@ -127,10 +129,11 @@ def _base_at(R, table, seg, vals, mod):
 
 @nb.njit(cache=True, inline="always")
 def _rhs(R, z, m, k, table, seg, work, out):
-    """dz~/dR = w (G3 - z G1 - (z G1)^T - z G2 z), using G4 = -G1^T (G Hamiltonian)."""
+    """dz~/dR = w (G3 - z G1 - (z G1)^T - z G2 z), using G4 = -G1^T (G Hamiltonian);
+    returns d log|det U~| / dR there (:func:`_riccati`)."""
     p, r, w = _base_at(R, table, seg, work.vals, work.mod)
     _blocks(work.mod, p, m, k * r, work, work.Gt)
-    _riccati(z, work.Gt, w, work.P, out)
+    return _riccati(z, work.Gt, w, work.P, out)
 
 
 @nb.njit(cache=True, inline="always")
@@ -160,7 +163,11 @@ def _blocks(mod, p, m, kr, work, Gt):
 
 @nb.njit(cache=True, inline="always")
 def _riccati(z, Gt, w, P, out):
-    """out <- w (G~3 - z G~1 - (z G~1)^T - z G~2 z) from the blocks ``Gt`` (P scratch)."""
+    """out <- w (G~3 - z G~1 - (z G~1)^T - z G~2 z) from the blocks ``Gt`` (P scratch).
+
+    Returns w tr(G~1 + G~2 z~), the rate of log|det U~| of the carried basis [U~; z~ U~]
+    (dU~/dR = w (G~1 + G~2 z~) U~): its integral through the wall is the size of the
+    solutions that the Riccati form divides out (impedance.integrate_one's log_norm)."""
     for i in range(4):
         for j in range(4):
             a1 = 0.0
@@ -177,6 +184,10 @@ def _riccati(z, Gt, w, P, out):
                 acc -= P[i, 4 + q] * z[q, j]
             out[i, j] = w * acc
             out[j, i] = w * acc
+    rate = 0.0
+    for i in range(4):
+        rate += Gt[i, i] + P[i, 4 + i]
+    return w * rate
 
 
 @nb.njit(cache=True)
@@ -246,13 +257,19 @@ def _clenshaw_eleven(c, x, out):
 
 
 @nb.njit(cache=True)
-def _step(R, h, z, m, k, table, seg, work, K, ztmp, znew):
-    """One DOP853 step of size h from (R, z), given K[0] = dz~/dR there.
+def _step(R, h, z, m, k, table, seg, work, K, ztmp, znew, rate0):
+    """One DOP853 step of size h from (R, z), given K[0] = dz~/dR there and ``rate0``, the
+    rate of log|det U~| there (:func:`_riccati`).
 
     Writes the 8th-order solution at R + h into ``znew`` and the stages into K[1..12],
     K[12] = dz~/dR at (R + h, znew) being the last one of the error estimate. The base
-    state at R + h stays in work.stage_Gt[11] (see :func:`next_slope`).
+    state at R + h stays in work.stage_Gt[11] (see :func:`next_slope`). Returns the
+    step's increment of log|det U~|, by the same 8th-order weights (the rate depends on
+    z~ alone, so this is DOP853 on the system augmented by log|det U~|; its error is not
+    controlled: it only scales the target, never moves its zeros).
     """
+    rate = work.stage_rate
+    rate[0] = rate0
     _stage_blocks(R, h, m, k, table, seg, work)
     for st in range(1, _NS):
         for i in range(4):
@@ -264,7 +281,7 @@ def _step(R, h, z, m, k, table, seg, work, K, ztmp, znew):
                         break
                     acc += _A[st, q] * K[q, i, j]
                 ztmp[i, j] = z[i, j] + h * acc
-        _riccati(ztmp, work.stage_Gt[st], work.stage_w[st], work.P, K[st])
+        rate[st] = _riccati(ztmp, work.stage_Gt[st], work.stage_w[st], work.P, K[st])
     for i in range(4):
         for j in range(4):
             acc = 0.0
@@ -275,13 +292,21 @@ def _step(R, h, z, m, k, table, seg, work, K, ztmp, znew):
                 acc += _B[q] * K[q, i, j]
             znew[i, j] = z[i, j] + h * acc
     _riccati(znew, work.stage_Gt[_NS - 1], work.stage_w[_NS - 1], work.P, K[_NS])
+    grow = 0.0
+    for t in range(_NS):
+        q = _BQ[t]
+        if q < 0:
+            break
+        grow += _B[q] * rate[q]
+    return h * grow
 
 
 @nb.njit(cache=True)
 def next_slope(z, work, out):
     """out <- dz~/dR at the end R + h of the step just taken, from the base state its last
-    stage left (the same bits as :func:`_rhs` there, if the chart has not changed since)."""
-    _riccati(z, work.stage_Gt[_NS - 1], work.stage_w[_NS - 1], work.P, out)
+    stage left (the same bits as :func:`_rhs` there, if the chart has not changed since);
+    returns the rate of log|det U~| there."""
+    return _riccati(z, work.stage_Gt[_NS - 1], work.stage_w[_NS - 1], work.P, out)
 
 
 @nb.njit(cache=True)
