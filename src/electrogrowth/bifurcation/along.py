@@ -165,6 +165,48 @@ class SignedMode:
         return self.sign * float(self.target(self.at.state(x), self.mode)[0])
 
 
+#: det(M2) is scaled by exp(-log_norm) at a root's first sample; the exponent of its other
+#: samples is held within +-MAX_EXPONENT (float64 overflows at 709)
+MAX_EXPONENT = 600.0
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class RootRows:
+    """The rows of :class:`Signed`, as a root is refined on them: for the impedance kernel,
+    det(M2) of the basis carried from the inner face (incremental.targets.analytic_parts),
+    analytic in x with the signs and zeros of f, where f itself may be a step of constant
+    size (a mode living at the inner face); in units of its size at the row's first sample,
+    so that it stays representable. Other targets (collocation's) as they are."""
+
+    at: TubeAt
+    target: Callable
+    modes: np.ndarray
+    signs: np.ndarray
+    scale: dict = dataclasses.field(default_factory=dict)  # row -> log_norm at its first sample
+
+    def one(self, x, i) -> float:
+        """Signed det(M2) of row i at x, in units of its first sample's size."""
+        parts = getattr(self.target, "parts", None)
+        if parts is None:
+            return float(self.signs[i] * self.target(self.at.state(x), self.modes[[i]])[0])
+        f, log_norm = (float(v[0]) for v in parts(self.at.state(x), self.modes[[i]]))
+        if not math.isfinite(log_norm):  # the kernel failed there: f, from its fallback
+            return float(self.signs[i] * f)
+        ref = self.scale.setdefault(i, log_norm)
+        exponent = min(max(log_norm - ref, -MAX_EXPONENT), MAX_EXPONENT)
+        return float(self.signs[i] * f * math.exp(exponent))
+
+    def row(self, i: int) -> SignedRow:
+        """Row i alone, a function of x."""
+        return SignedRow(self, i)
+
+
+def root_mode(at: TubeAt, target: Callable, mode: np.ndarray, sign: float) -> SignedRow:
+    """One mode (a one-row ``mode`` array) along the path, as its root is refined
+    (:class:`RootRows`), stable > 0."""
+    return RootRows(at, target, mode, np.array([sign])).row(0)
+
+
 @dataclasses.dataclass(frozen=True)
 class SampleValue:
     """The value of a half-space sampler h (directions.Sampler) at the state at x."""

@@ -49,7 +49,7 @@ from ..model.controls import check_side
 from ..model.layers import Tube
 from ..outcomes import Kind, Outcome, Status
 from ..summary import critical_html
-from .along import SignedMode, TubeAt
+from .along import TubeAt, root_mode
 from .error_estimate import collocation_floor, second_resolution
 from .march import ONE_MODE_STEPS, control_path, first_bifurcations
 from .problem import Problem, as_problem
@@ -222,7 +222,7 @@ def _solve(params, m, n, solve_for, fam, side, method, rtol, bracket) -> Critica
     fine, coarse = targets_for(method, acc.fine), coarse_targets_for(method, acc.fine)
     sref = stable_sign(m, n, params, method, family=fam)
     at = TubeAt(params, solve_for)
-    g = SignedMode(at, fine, mode, sref)  # the target along the control, stable > 0
+    g = root_mode(at, fine, mode, sref)  # along the control, stable > 0
     if bracket is not None and g(bracket[0]) * g(bracket[1]) < 0:
         value = brent(g, *bracket)
     else:
@@ -264,7 +264,7 @@ def _solve(params, m, n, solve_for, fam, side, method, rtol, bracket) -> Critica
             )
         value = res.found[0].value
     path = control_path(params, solve_for, side)[:2]
-    estimate = second_resolution(SignedMode(at, coarse, mode, sref), value, path)
+    estimate = second_resolution(root_mode(at, coarse, mode, sref), value, path)
     if check_method(method) is Method.COLLOCATION:
         estimate = max(estimate, collocation_floor(Remembered(g), value, path))
     return CriticalPoint(

@@ -46,7 +46,7 @@ from ..errors import BaseStateError, ConvergenceError, NoBifurcationFound, Param
 from ..incremental.targets import natural_family, row_family
 from ..model.controls import KINDS
 from ..model.layers import Tube
-from .along import Signed, TubeAt
+from .along import RootRows, Signed, TubeAt
 from .along import voltage_threshold as _voltage_threshold
 from .state_loss import threshold_between as _threshold_between
 
@@ -167,6 +167,9 @@ def first_bifurcations(
         )
     signed = Signed(at, targets, modes, sref)
     signed_fine = Signed(at, brent_targets or targets, modes, sref)
+    # roots are refined on the analytic det(M2), which a secant step follows where the
+    # bounded target is a step (a mode living at the inner face: incremental/targets.py)
+    signed_root = RootRows(at, brent_targets or targets, modes, sref)
 
     watch = EventWatch(x0, g0, sense, path.scale, steps.max_wait)
     step = Stepper(path, steps, state.lambda_i)
@@ -194,7 +197,7 @@ def first_bifurcations(
             idx = np.nonzero(watch.alive & (watch.xa != x))[0]
             if idx.size:
                 x, g = _last_look(signed, watch, idx, x)
-                found += _advance(watch, idx, x, g, signed, signed_fine, top)
+                found += _advance(watch, idx, x, g, signed, signed_fine, signed_root, top)
             break
         idx = np.nonzero(watch.needs(x))[0]
         if idx.size:
@@ -203,7 +206,7 @@ def first_bifurcations(
             except ConvergenceError as err:  # the state solves, its tables do not
                 unresolved, stop = err, True
                 continue
-            found += _advance(watch, idx, x, g, signed, signed_fine, top)
+            found += _advance(watch, idx, x, g, signed, signed_fine, signed_root, top)
         reach = watch.reach(steps.safety, steps.smallest * path.scale)
         step.accept(x, state.lambda_i, reach / path.scale)
     found.sort(key=lambda mv: sense * mv.value)
@@ -249,9 +252,12 @@ def _last_look(signed: Signed, watch, idx, x: float):
     return good, g
 
 
-def _advance(watch, idx, x, g, signed: Signed, signed_fine: Signed, need=None) -> list:
+def _advance(
+    watch, idx, x, g, signed: Signed, signed_fine: Signed, signed_root: RootRows, need=None
+) -> list:
     """Record the samples at x; roots of the modes that changed sign or dipped to zero
-    (of those that changed sign, the first ``need``, see events.first_roots)."""
+    (of those that changed sign, the first ``need``, see events.first_roots). A dip is
+    looked for on the bounded ``signed_fine``, roots are refined on ``signed_root``."""
     found, modes = [], signed.modes
     hit = crossed(g)
     js = np.nonzero(hit)[0]
@@ -259,7 +265,7 @@ def _advance(watch, idx, x, g, signed: Signed, signed_fine: Signed, need=None) -
         cand = idx[js]
         roots = first_roots(
             signed,
-            signed_fine.one,
+            signed_root.one,
             cand,
             watch.xa[cand],
             x,
@@ -280,7 +286,7 @@ def _advance(watch, idx, x, g, signed: Signed, signed_fine: Signed, need=None) -
         i = idx[j]
         bracket = dip_bracket(signed_fine.row(i), watch.x[1, i], x)
         if bracket is not None:
-            found.append(_mode_value(modes, i, brent(signed_fine.row(i), *bracket)))
+            found.append(_mode_value(modes, i, brent(signed_root.row(i), *bracket)))
             hit[j] = True
     watch.alive[idx[hit]] = False
     watch.record(idx[~hit], x, g[~hit])

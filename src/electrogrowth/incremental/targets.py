@@ -42,7 +42,7 @@ import numpy as np
 from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError
 from .accuracy import Accuracy
-from .impedance import STATUS_TEXT, target_serial
+from .impedance import STATUS_TEXT, determinant_serial, target_serial
 from .mode_rows import rows_parallel, rows_serial
 from .modes import ALL_PAIRS as ALL_PAIRS
 from .modes import FAMILIES as FAMILIES
@@ -90,6 +90,33 @@ def impedance_targets(state, modes, *, rtol: float = 1e-12, max_steps: int = 200
 def _table_tol(rtol: float) -> float:
     """Accuracy(rtol).table, remembered: a march asks at every evaluation."""
     return Accuracy(rtol).table
+
+
+def analytic_parts(state, modes, *, rtol: float = 1e-12, max_steps: int = 20000):
+    """(f, log_norm) for many modes (rows (m, n) or (m, n, code)): the kernel's target and
+    the log of the size of the basis M = [M1; M2] carried from the inner face, which f
+    divides out (impedance.integrate_one): f exp(log_norm) is det(M2).
+
+    Near a root of a mode that lives at the inner face M's size holds the factor that
+    crosses zero, and f is a step of constant size (a film's prismatic target: +-7.3e-10
+    from 1e-2 to 1e-10 of its root), which Brent's method can only bisect. det(M2) is
+    analytic in the parameters, with the same signs and zeros: roots are refined on it
+    (bifurcation/along.py, :class:`~electrogrowth.bifurcation.along.RootRows`). Every wall
+    is integrated (no short-wave restart: it forgets M's size). Where the kernel fails, f
+    comes from :func:`impedance_targets` (its retries) and log_norm is NaN."""
+    modes = np.asarray(modes, dtype=float, order="C")
+    if modes.ndim == 1:
+        modes = modes[None]
+    tables = stack_tables([build_table(state, tol=_table_tol(rtol))])
+    k = modes[:, 1] * math.pi / state.current_length
+    f, log_norm, status = determinant_serial(
+        np.ascontiguousarray(modes[:, 0]), k, mode_pairs(modes), tables, rtol, max_steps
+    )
+    bad = status != 0
+    if bad.any():
+        f[bad] = impedance_targets(state, modes[bad], rtol=rtol, max_steps=max_steps)
+        log_norm[bad] = np.nan
+    return f, log_norm
 
 
 RETRY_TIGHTER = (1e-2, 1e-4)  # a failed mode is integrated again at rtol times these
@@ -197,6 +224,10 @@ class ImpedanceTarget:
 
     def __call__(self, state, modes) -> np.ndarray:
         return impedance_targets(state, modes, rtol=self.rtol, max_steps=self.max_steps)
+
+    def parts(self, state, modes) -> tuple[np.ndarray, np.ndarray]:
+        """(f, log_norm): f and the log of what it divides out (:func:`analytic_parts`)."""
+        return analytic_parts(state, modes, rtol=self.rtol, max_steps=self.max_steps)
 
 
 @dataclasses.dataclass(frozen=True)
