@@ -132,6 +132,30 @@ def test_first_roots_of_many_events_at_once():
     assert min(finished) == pytest.approx(0.35, rel=1e-15)
 
 
+@pytest.mark.parametrize(
+    ("spread", "x", "most"), [((0.05, 0.95), 1.0, 2.1), ((0.02, 0.03), 0.15, 5.7)]
+)
+def test_a_pack_is_found_before_its_brackets_are_narrowed(spread, x, most):
+    """300 candidates crossing in one step (roots spread over the step, or a cluster at its
+    start, as a film's folds): the first three roots exactly, in at most ``most`` loose
+    samples a candidate. The pack is bisected first (each sample only where a candidate's
+    bracket holds it), and the shared rounds then narrow its few members alone: 604 and 1652
+    samples, against 1180 and 3147 when the shared rounds came first, over all 300."""
+    c = np.random.default_rng(1).uniform(*spread, 300)
+    samples = []
+
+    def signed(y, idx):
+        samples.append(len(idx))
+        return c[idx] - y
+
+    out = first_roots(
+        signed, lambda y, i: float(c[i] - y), np.arange(c.size), np.zeros(c.size), x, 0.0, need=3
+    )
+    got = sorted(r for r in out if r is not LATER)
+    assert got[:3] == pytest.approx(sorted(c)[:3], rel=1e-15)
+    assert sum(samples) <= most * c.size
+
+
 # -- steps ------------------------------------------------------------------------------------
 
 

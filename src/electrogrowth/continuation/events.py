@@ -252,18 +252,18 @@ def first_roots(
         near = _near_root(signed, fine, int(cand[0]), float(xa[0]), x, values)
         if near is not None:
             return [near]
-    sense = 1.0 if x > xa[0] else -1.0
     lo, hi = np.array(xa, float), np.full(cand.size, x, float)
-    a, b = lo[np.argmin(sense * lo)], x
+    out: list = [None] * cand.size
+    keep = np.arange(cand.size)
+    if need is not None and cand.size > need + 2:
+        keep = _pack(signed, cand, lo, hi, x, need)
+        for k in set(range(cand.size)) - set(keep.tolist()):
+            out[k] = LATER
+    a, b = lo[keep][np.argmin(sense_of(x, xa) * lo[keep])], x
     for _ in range(SHARED_ROUNDS):  # bisect towards the earliest root; the others on the way
         c = 0.5 * (a + b)
-        inside = (c - lo) * (c - hi) < 0
-        g = signed(c, cand[inside])
-        neg = np.zeros(cand.size, bool)
-        neg[inside] = g <= 0
-        hi[neg], lo[inside & ~neg] = c, c
+        neg = _narrow(signed, cand, keep, lo, hi, c)
         a, b = (a, c) if neg.any() else (c, b)
-    out: list = [None] * cand.size
 
     def finish(k):
         i, l, h = cand[k], lo[k], hi[k]
@@ -276,25 +276,51 @@ def first_roots(
             l = xa[k] if f(xa[k]) > 0 else x0  # the candidate is positive at the start
         out[k] = brent(f, *sorted((l, h)))
 
-    keep = np.arange(cand.size)
-    if need is not None and cand.size > need + 2:
-        # a pack: the first x (shared loose bisection) where at least ``need`` candidates
-        # are past zero; only those can hold the first ``need`` roots
-        a, b = lo[np.argmin(sense * lo)], x
-        for _ in range(PACK_ROUNDS):
-            c = 0.5 * (a + b)
-            inside = keep[signed(c, cand[keep]) <= 0]
-            if inside.size >= need:
-                keep, b = inside, c
-            else:
-                a = c
-            if keep.size <= need + 2 or abs(b - a) <= EDGE.at(b):
-                break
-        for k in set(range(cand.size)) - set(keep.tolist()):
-            out[k] = LATER
     for k in keep:
         finish(k)
     return out
+
+
+def sense_of(x: float, xa: np.ndarray) -> float:
+    """+1 if the march went up from its samples ``xa`` to x, else -1."""
+    return 1.0 if x > xa[0] else -1.0
+
+
+def _narrow(signed, cand, among, lo, hi, c) -> np.ndarray:
+    """Sample the candidates ``among`` whose bracket [lo, hi] holds c there, and narrow
+    their brackets to the side of c where they change sign; returns which (of all) are
+    past zero at c."""
+    inside = among[(c - lo[among]) * (c - hi[among]) < 0]
+    neg = np.zeros(cand.size, bool)
+    neg[inside] = signed(c, cand[inside]) <= 0
+    hi[neg] = c
+    pos = np.zeros(cand.size, bool)
+    pos[inside] = ~neg[inside]
+    lo[pos] = c
+    return neg
+
+
+def _pack(signed, cand, lo, hi, x: float, need: int) -> np.ndarray:
+    """A pack of candidates (near a short-wave limit hundreds of modes cross within one
+    step): the first x (shared loose bisection) where at least ``need`` are past zero;
+    only those can hold the first ``need`` roots. Returns their indices; every sample
+    narrows the brackets [lo, hi] it falls in. Done before the shared rounds of
+    :func:`first_roots`, which then sample the pack alone (a thin film's 1936 candidates
+    cost 11,000 loose evaluations when every round sampled all of them)."""
+    keep = np.arange(cand.size)
+    sense = sense_of(x, lo)
+    a, b = lo[np.argmin(sense * lo)], x
+    for _ in range(PACK_ROUNDS):
+        c = 0.5 * (a + b)
+        neg = _narrow(signed, cand, keep, lo, hi, c)
+        past = keep[neg[keep] | (sense * (hi[keep] - c) <= 0)]  # past zero at c
+        if past.size >= need:
+            keep, b = past, c
+        else:
+            a = c
+        if keep.size <= need + 2 or abs(b - a) <= EDGE.at(b):
+            break
+    return keep
 
 
 #: the loose root of a single candidate, to this (not to full precision: it only places
