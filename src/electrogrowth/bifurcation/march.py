@@ -136,6 +136,7 @@ def first_bifurcations(
     stable_signs: np.ndarray | None = None,
     steps: StepPolicy = MODE_STEPS,
     at: TubeAt | None = None,
+    until: float | None = None,
 ) -> MarchResult:
     """Critical values of the first ``top`` modes of ``modes`` reached by the march.
 
@@ -144,13 +145,19 @@ def first_bifurcations(
     on the unloaded tube, are computed unless given (they depend only on the material,
     Rbar_o, L and the modes, so a curve or sweep can reuse them). ``steps``: the step
     control (ONE_MODE_STEPS for a single mode). ``at``: the caller's TubeAt of (params,
-    solve_for), whose states the march then shares.
+    solve_for), whose states the march then shares. ``until``: the march ends there if its
+    path reaches it (roots beyond it are not wanted: a widened scan's new modes matter only
+    before the top values the scan already has); reaching it with no root found returns an
+    empty result, not an error.
     """
     at = TubeAt(params, solve_for) if at is None else at
     if stable_signs is None:
         stable_signs = unloaded_signs(params, modes, targets)
     sref = stable_signs
     path = ControlPath(*control_path(params, solve_for, side))
+    cut = until is not None and path.sense * (path.end - until) > 0
+    if cut:
+        path = dataclasses.replace(path, end=until)
     x0, sense = path.start, path.sense
     state = at.state(x0)
     g0 = sref * targets(state, modes)
@@ -217,6 +224,8 @@ def first_bifurcations(
         )
         err.remedy = unresolved.remedy if isinstance(unresolved, ConvergenceError) else ""
         raise err from unresolved
+    if not found and threshold is None and cut:
+        return MarchResult([], None)  # none before ``until``
     if not found and threshold is None:
         thr = _voltage_threshold(params) if solve_for == "voltage" else math.inf
         if math.isfinite(thr):

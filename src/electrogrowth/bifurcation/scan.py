@@ -41,7 +41,7 @@ from ..model.layers import Tube
 from ..outcomes import NO_MODE, Kind
 from .critical import CriticalPoint, critical_value, no_bifurcation_remedy
 from .directions import past_surface
-from .march import SIGN_TUBE, ModeValue, first_bifurcations, unloaded_signs
+from .march import SIGN_TUBE, ModeValue, control_path, first_bifurcations, unloaded_signs
 from .msearch import geometric_samples, search_m, search_n
 from .options import EVERY_M, M_CAP, N_CAP, ScanOptions
 from .options import TOP_MAX as TOP_MAX  # re-exported: the CLI checks --top against it
@@ -172,9 +172,13 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
             result, at_m = search(result)
         return result, at_n or at_m
 
+    known = None  # the last grid scanned and its result
     while True:
         families = (options.prismatic, options.torsional)
-        result = _scan_once(params, solve_for, side, m_range, n_range, top, rtol, probes, families)
+        result = _scan_once(
+            params, solve_for, side, m_range, n_range, top, rtol, probes, families, known
+        )
+        known = (scan_grid(m_range, n_range, probes, families), result)
         c = result.critical
         if probes and c.kind == Kind.BIFURCATION and (c.m > m_range[1] or c.n > n_range[1]):
             if limit_first(c):
@@ -306,22 +310,32 @@ def _with_short_waves(
 
 
 def _scan_once(
-    params, solve_for, side, m_range, n_range, top, rtol, probes, families
+    params, solve_for, side, m_range, n_range, top, rtol, probes, families, known=None
 ) -> ScanResult:
+    """The scan of the grid of these ranges (scan_grid.scan_grid). ``known``: (the grid, the
+    result) of an earlier scan of the same tube whose grid this one widens; its modes are
+    not marched again (:func:`_reused`)."""
     modes = scan_grid(m_range, n_range, probes, families)
-    loose = ImpedanceTarget(SCAN_SIGNS)
-    fine = ImpedanceTarget(Accuracy(rtol).runners_up)
+    signs = stable_signs(m_range, n_range, probes, families)
+    reuse = _reused(modes, known, top)
+    march = modes if reuse is None else modes[reuse[0]]
     res = first_bifurcations(
         params,
         solve_for,
         side,
-        modes,
-        loose,
+        march,
+        ImpedanceTarget(SCAN_SIGNS),
         top=top,
-        brent_targets=fine,
-        stable_signs=stable_signs(m_range, n_range, probes, families),
+        brent_targets=ImpedanceTarget(Accuracy(rtol).runners_up),
+        stable_signs=signs if reuse is None else signs[reuse[0]],
+        until=None if reuse is None else reuse[2],
     )
     found = res.found
+    if reuse is not None:
+        old, best = reuse[1], known[1].critical
+        found = sorted(old + found, key=lambda mv: _sense(side, params, solve_for) * mv.value)
+        if found and (found[0].m, found[0].n, found[0].family) == (best.m, best.n, best.family):
+            return ScanResult(best, tuple(found[1:top]), m_range, n_range)
     if not found:  # the march stops at the threshold, so found modes come before it
         crit = CriticalPoint(
             solve_for,
@@ -336,6 +350,51 @@ def _scan_once(
         return ScanResult(crit, (), m_range, n_range)
     crit = _finished(params, solve_for, side, rtol, found[0])
     return ScanResult(crit, tuple(found[1:top]), m_range, n_range)
+
+
+def _reused(modes, known, top):
+    """What an earlier scan's result ``known`` = (its grid, its ScanResult) leaves to do on
+    the wider grid ``modes``: (the rows to march, the modes it found that are rows of this
+    grid, the value the march may stop at), or None (march every row).
+
+    The earlier march found the first ``top`` roots of its modes, up to the top-th value v:
+    every mode of both grids that bifurcates before v is among them, so only the new rows
+    are marched, and only up to v; merged, the two lists hold every root of this grid
+    before v. That is exact only while the kept list is whole: when a found mode is not a
+    row here (a probe beyond the new ranges), the roots of the old rows after v would be
+    missing, and the whole grid is marched again. So also when the earlier scan found no
+    mode (a threshold) or fewer than ``top`` (its march already went to the end: then v is
+    the end and the new rows are marched all the way)."""
+    if known is None:
+        return None
+    grid, result = known
+    c = result.critical
+    if c.kind != Kind.BIFURCATION or result.surface_instability:
+        return None
+    old = [ModeValue(c.m, c.n, c.value, c.family), *result.runners_up]
+    rows = {_row_key(r) for r in modes}
+    if any(_mode_key(mv) not in rows for mv in old):
+        return None
+    seen = {_row_key(r) for r in grid}
+    new = np.array([_row_key(r) not in seen for r in modes])
+    until = old[-1].value if len(old) >= top else None
+    return new, old, until
+
+
+def _row_key(row) -> tuple:
+    """A grid row (m, n, family code) as a hashable key."""
+    return int(row[0]), int(row[1]), int(row[2])
+
+
+def _mode_key(mv: ModeValue) -> tuple:
+    """The grid row key of a found mode."""
+    return mv.m, mv.n, Family(mv.family).code
+
+
+def _sense(side, params, solve_for) -> float:
+    """+1 if the scan's control rises along its path, else -1."""
+    start, end, _ = control_path(params, solve_for, side)
+    return 1.0 if end > start else -1.0
 
 
 def _finished(params, solve_for, side, rtol, best: ModeValue) -> CriticalPoint:
