@@ -18,7 +18,7 @@ from electrogrowth import (
     scan_modes,
     solve_base_state,
 )
-from electrogrowth.bifurcation.along import SignedMode, TubeAt
+from electrogrowth.bifurcation.along import TubeAt, root_mode
 from electrogrowth.bifurcation.surface import short_wave_limit
 from electrogrowth.incremental.targets import (
     CollocationTarget,
@@ -83,7 +83,7 @@ def test_targets_pickle_and_round_trip(target):
 
 def test_a_signed_march_function_pickles_and_round_trips():
     mode = with_family(1, 1, "wrinkle")
-    f = SignedMode(TubeAt(TUBE, "stretch"), ImpedanceTarget(1e-10), mode, -1.0)
+    f = root_mode(TubeAt(TUBE, "stretch"), ImpedanceTarget(1e-10), mode, -1.0)
     back = pickle.loads(pickle.dumps(f))
     assert back(0.9) == f(0.9)
     problem = Problem(TUBE, "growth")

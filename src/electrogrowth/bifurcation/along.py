@@ -151,20 +151,6 @@ class SignedRow:
         return self.signed.one(x, self.i)
 
 
-@dataclasses.dataclass(frozen=True, eq=False)
-class SignedMode:
-    """The target of one mode (a one-row ``mode`` array) along the path, times its stable
-    ``sign`` (a float): positive until the mode's first bifurcation."""
-
-    at: TubeAt
-    target: Callable
-    mode: np.ndarray
-    sign: float
-
-    def __call__(self, x) -> float:
-        return self.sign * float(self.target(self.at.state(x), self.mode)[0])
-
-
 #: det(M2) is scaled by exp(-log_norm) at a root's first sample; the exponent of its other
 #: samples is held within +-MAX_EXPONENT (float64 overflows at 709)
 MAX_EXPONENT = 600.0
