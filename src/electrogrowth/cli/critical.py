@@ -116,13 +116,15 @@ def run_critical(args) -> int:
                 "a mode scan uses --method impedance; give --mode M N for"
                 " collocation (or use --certify)"
             )
-        result = scan_modes(
-            params,
-            solve_for,
-            side=args.side,
-            options=scan_options_from_args(args),
-            rtol=args.rtol,
-        )
+        # a thin film's scan searches its folds up to m, n = 2000: tens of seconds
+        with stage(args, "scanning the modes (m, n) for the first bifurcation", tick=True):
+            result = scan_modes(
+                params,
+                solve_for,
+                side=args.side,
+                options=scan_options_from_args(args),
+                rtol=args.rtol,
+            )
         crit, record = result.critical, result.as_dict()
         runners = record["runners_up"]
         warn(edge_warning(result))
