@@ -2,8 +2,8 @@
 
 The earlier march found the first ``top`` roots of its grid: every mode of both grids that
 bifurcates before the top-th of them is among those, so the wider grid's new rows are
-marched alone and only that far (scan._reused). The merged result must be the one a march
-of the whole wider grid gives: the same modes in the same order and the same values.
+marched alone and only that far (grid_scan.reused). The merged result must be the one a
+march of the whole wider grid gives: the same modes in the same order and the same values.
 """
 
 from __future__ import annotations
@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from electrogrowth import Layer, Tube
-from electrogrowth.bifurcation import scan
+from electrogrowth.bifurcation import grid_scan
 from electrogrowth.bifurcation.scan_grid import scan_grid
 
 #: a film 0.02 thick, 50 times stiffer than its substrate: folds at m = 23, beyond the
@@ -24,7 +24,7 @@ N_RANGE = (1, 30)
 
 
 def _scan(m_top, known=None):
-    return scan._scan_once(
+    return grid_scan.scan_once(
         FILM, CONTROL, None, (0, m_top), N_RANGE, 5, 1e-12, False, FAMILIES, known
     )
 
@@ -53,13 +53,13 @@ def wide():
 
 def test_a_new_best_mode_is_found_among_the_new_rows(narrow, wide, monkeypatch):
     marched = []
-    march = scan.first_bifurcations
+    march = grid_scan.first_bifurcations
 
     def counted(params, solve_for, side, modes, targets, **kw):
         marched.append((len(modes), kw["until"]))
         return march(params, solve_for, side, modes, targets, **kw)
 
-    monkeypatch.setattr(scan, "first_bifurcations", counted)
+    monkeypatch.setattr(grid_scan, "first_bifurcations", counted)
     reused = _scan(25, (scan_grid((0, 12), N_RANGE, False, FAMILIES), narrow))
     assert (narrow.critical.m, wide.critical.m) == (12, 23)  # the best moved to a new row
     _same(_listed(reused), _listed(wide))
@@ -80,4 +80,5 @@ def test_nothing_is_reused_when_a_found_mode_is_not_a_row_of_the_new_grid(narrow
     """A found mode outside the new grid (as a probe beyond the new ranges would be): the
     old rows' roots after the top-th value are not known, so the whole grid is marched."""
     probed = scan_grid((0, 12), N_RANGE, True, FAMILIES)
-    assert scan._reused(scan_grid((0, 6), N_RANGE, False, FAMILIES), (probed, narrow), 5) is None
+    smaller = scan_grid((0, 6), N_RANGE, False, FAMILIES)
+    assert grid_scan.reused(smaller, (probed, narrow), 5) is None

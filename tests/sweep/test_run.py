@@ -255,10 +255,10 @@ def test_inaccurate_point_is_stored_as_inaccurate(tmp_path, monkeypatch):
     message; it is counted apart, and is no failure."""
     import dataclasses
 
-    from electrogrowth.bifurcation import scan
+    from electrogrowth.bifurcation import grid_scan
     from electrogrowth.outcomes import Status
 
-    real = scan.critical_value
+    real = grid_scan.critical_value
 
     def flagged(params, *args, **kwargs):
         c = real(params, *args, **kwargs)
@@ -266,7 +266,7 @@ def test_inaccurate_point_is_stored_as_inaccurate(tmp_path, monkeypatch):
             dataclasses.replace(c, status=Status.INACCURATE) if params.outer_radius == 1.4 else c
         )
 
-    monkeypatch.setattr(scan, "critical_value", flagged)
+    monkeypatch.setattr(grid_scan, "critical_value", flagged)
     text = TINY.replace("stretch = [1.0, 1.2, 1.4]", "stretch = [1.0]")
     text = text.replace("outer_radius = [1.4, 1.5, 1.6]", "outer_radius = [1.4, 1.5]")
     summary = compute_sweep(parse_config(text), tmp_path / "i.zarr", workers=1, progress=False)

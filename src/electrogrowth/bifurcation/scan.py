@@ -31,22 +31,20 @@ from __future__ import annotations
 
 import dataclasses
 
-import numpy as np
-
-from ..basestate.tube import solve_base_state
-from ..errors import ElectrogrowthError, NoBifurcationFound
-from ..incremental.accuracy import SCAN_SIGNS, SCAN_STABLE_SIGNS, Accuracy
-from ..incremental.targets import Family, ImpedanceTarget
+from ..errors import ConvergenceError, NoBifurcationFound
+from ..incremental.targets import Family
 from ..model.layers import Tube
 from ..outcomes import NO_MODE, Kind
-from .critical import CriticalPoint, critical_value, no_bifurcation_remedy
+from .beyond import unstable_beyond
+from .critical import CriticalPoint, no_bifurcation_remedy
 from .directions import past_surface
-from .march import SIGN_TUBE, ModeValue, control_path, first_bifurcations, unloaded_signs
-from .msearch import geometric_samples, search_m, search_n
+from .grid_scan import finished, scan_once
+from .march import ModeValue
+from .msearch import search_m, search_n
 from .options import EVERY_M, M_CAP, N_CAP, ScanOptions
 from .options import TOP_MAX as TOP_MAX  # re-exported: the CLI checks --top against it
 from .problem import Problem, as_problem
-from .scan_grid import scan_grid, stable_signs
+from .scan_grid import scan_grid
 from .scan_record import ScanResult
 from .surface import short_wave_limit
 
@@ -107,6 +105,9 @@ def scan_modes(
     options, rtol = problem.options, problem.rtol
     try:
         result, at_cap, limit = _widened_scan(params, solve_for, side, options, rtol)
+        if options.extend:
+            found = _beyond_searched(params, solve_for, side, result, options, rtol, at_cap, limit)
+            result, at_cap = found
     except NoBifurcationFound as exc:
         exc.remedy = no_bifurcation_remedy(solve_for)  # not the remedy of one mode's solve
         if not options.surface:
@@ -156,7 +157,10 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
         scan (up to M_CAP) are unstable at it: a film folding beyond the scanned m lies
         below its face's limit, then searched."""
         assert limit is not None  # limit_first computed it
-        if not folds_before(params, solve_for, limit.value, options, m_range[1]):
+        beyond = unstable_beyond(
+            params, solve_for, limit.value, m_range, n_range, options.prismatic, ("m",)
+        )
+        if not beyond["m"]:
             return result, True
         return search(result)
 
@@ -175,7 +179,7 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
     known = None  # the last grid scanned and its result
     while True:
         families = (options.prismatic, options.torsional)
-        result = _scan_once(
+        result = scan_once(
             params, solve_for, side, m_range, n_range, top, rtol, probes, families, known
         )
         known = (scan_grid(m_range, n_range, probes, families), result)
@@ -222,23 +226,53 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
     return result, at_cap, limit
 
 
-def folds_before(params, solve_for, value, options: ScanOptions, m_edge: int) -> bool:
-    """Is a fold beyond the scanned m unstable at ``value`` (the short-wave limit)? Geometric
-    samples of m (msearch's) from the scan's edge to M_CAP on the prismatic row and the
-    wrinkles of the smallest n, their targets at that one state against their signs on the
-    unloaded tube (one batch each)."""
-    rows = [(max(options.n_range[0], 1), Family.WRINKLE.code)]
-    if options.prismatic:
-        rows.append((0, Family.PRISMATIC.code))
-    ms = geometric_samples(max(m_edge, EVERY_M), M_CAP)
-    modes = np.array([(m, n, code) for m in ms for n, code in rows], float)
-    targets = ImpedanceTarget(SCAN_STABLE_SIGNS)
-    try:
-        now = targets(solve_base_state(params.at(solve_for, value)), modes)
-    except ElectrogrowthError:  # the state at the limit is unresolved: the limit stands
-        return False
-    turned = np.isfinite(now) & (np.sign(now) != unloaded_signs(SIGN_TUBE, modes, targets))
-    return bool(np.any(turned))
+def _beyond_searched(params, solve_for, side, result, options, rtol, at_cap, limit):
+    """``result``, searched along each axis where a mode beyond its ranges is past its root
+    at the critical value or, for a layered tube, at the last runner-up's value (beyond.py):
+    a thin film's folds at m or n in the hundreds, which neither an edge nor a probe pointed
+    to, come before a low mode of the whole tube (Euler buckling, a collapse). And whether
+    the search ended at its cap. Where the search for runners-up runs into states that do
+    not resolve (next to a lock), the list stands as scanned; for the critical mode that is
+    an error (:func:`_beyond_value` says when the check applies)."""
+    for runner in (False, True):
+        value = _beyond_value(params, side, result, options, limit, runner)
+        if value is None:
+            break
+        turned = unstable_beyond(
+            params, solve_for, value, result.m_range, result.n_range, options.prismatic
+        )
+        for axis, cap in (("n", N_CAP), ("m", M_CAP)):
+            if not turned[axis]:
+                continue
+            try:
+                result, top = _searched(params, solve_for, side, result, options, rtol, cap, axis)
+            except ConvergenceError:
+                if not runner:
+                    raise
+                continue
+            at_cap = at_cap or top
+    return result, at_cap
+
+
+def _beyond_value(params, side, result, options, limit, runner: bool) -> float | None:
+    """The value at which modes beyond the ranges are read: the critical value, or (
+    ``runner``) the last runner-up's; None where that check does not apply.
+
+    Not for the runners-up of a uniform tube: its modes beyond the ranges tend to its faces'
+    short-wave limits, which the scan computes when they matter (its runners-up are those of
+    its grid; the search would only list short waves approaching the limit), nor when the
+    march ended short of ``top`` modes. Not when the short-wave limit comes first (``limit``
+    if computed, or a face already past its half-space instability): every short wave is
+    then unstable at the finite value, and the limit, its folds checked, is the result."""
+    c, runners = result.critical, result.runners_up
+    if runner and (params.is_uniform or not runners or len(runners) < options.top - 1):
+        return None
+    if c.kind != Kind.BIFURCATION or past_surface(c.params):
+        return None
+    sense = -1.0 if side == "compression" else 1.0
+    if limit is not None and limit.kind == Kind.SURFACE and (limit.value - c.value) * sense < 0:
+        return None
+    return runners[-1].value if runner else c.value
 
 
 def _searched(
@@ -275,7 +309,7 @@ def _searched(
     if c.kind == Kind.BIFURCATION and sense * c.value <= sense * best.value:
         crit = c
     else:
-        crit = _finished(params, solve_for, side, rtol, best)
+        crit = finished(params, solve_for, side, rtol, best)
     others.pop((crit.m, crit.n, crit.family), None)
     runners = sorted(others.values(), key=lambda v: sense * v.value)[: options.top - 1]
     at_top = crit.kind == Kind.BIFURCATION and getattr(crit, axis) == top
@@ -306,109 +340,4 @@ def _with_short_waves(
         critical=crit,
         surface_instability=True,
         runners_up=(finite + result.runners_up)[: top - 1],
-    )
-
-
-def _scan_once(
-    params, solve_for, side, m_range, n_range, top, rtol, probes, families, known=None
-) -> ScanResult:
-    """The scan of the grid of these ranges (scan_grid.scan_grid). ``known``: (the grid, the
-    result) of an earlier scan of the same tube whose grid this one widens; its modes are
-    not marched again (:func:`_reused`)."""
-    modes = scan_grid(m_range, n_range, probes, families)
-    signs = stable_signs(m_range, n_range, probes, families)
-    reuse = _reused(modes, known, top)
-    march = modes if reuse is None else modes[reuse[0]]
-    res = first_bifurcations(
-        params,
-        solve_for,
-        side,
-        march,
-        ImpedanceTarget(SCAN_SIGNS),
-        top=top,
-        brent_targets=ImpedanceTarget(Accuracy(rtol).runners_up),
-        stable_signs=signs if reuse is None else signs[reuse[0]],
-        until=None if reuse is None else reuse[2],
-    )
-    found = res.found
-    if reuse is not None:
-        old, best = reuse[1], known[1].critical
-        found = sorted(old + found, key=lambda mv: _sense(side, params, solve_for) * mv.value)
-        if found and (found[0].m, found[0].n, found[0].family) == (best.m, best.n, best.family):
-            return ScanResult(best, tuple(found[1:top]), m_range, n_range)
-    if not found:  # the march stops at the threshold, so found modes come before it
-        crit = CriticalPoint(
-            solve_for,
-            res.threshold,
-            *NO_MODE,
-            Kind.THRESHOLD,
-            0.0,
-            "impedance",
-            side,
-            params.at(solve_for, res.threshold),
-        )
-        return ScanResult(crit, (), m_range, n_range)
-    crit = _finished(params, solve_for, side, rtol, found[0])
-    return ScanResult(crit, tuple(found[1:top]), m_range, n_range)
-
-
-def _reused(modes, known, top):
-    """What an earlier scan's result ``known`` = (its grid, its ScanResult) leaves to do on
-    the wider grid ``modes``: (the rows to march, the modes it found that are rows of this
-    grid, the value the march may stop at), or None (march every row).
-
-    The earlier march found the first ``top`` roots of its modes, up to the top-th value v:
-    every mode of both grids that bifurcates before v is among them, so only the new rows
-    are marched, and only up to v; merged, the two lists hold every root of this grid
-    before v. That is exact only while the kept list is whole: when a found mode is not a
-    row here (a probe beyond the new ranges), the roots of the old rows after v would be
-    missing, and the whole grid is marched again. So also when the earlier scan found no
-    mode (a threshold) or fewer than ``top`` (its march already went to the end: then v is
-    the end and the new rows are marched all the way)."""
-    if known is None:
-        return None
-    grid, result = known
-    c = result.critical
-    if c.kind != Kind.BIFURCATION or result.surface_instability:
-        return None
-    old = [ModeValue(c.m, c.n, c.value, c.family), *result.runners_up]
-    rows = {_row_key(r) for r in modes}
-    if any(_mode_key(mv) not in rows for mv in old):
-        return None
-    seen = {_row_key(r) for r in grid}
-    new = np.array([_row_key(r) not in seen for r in modes])
-    until = old[-1].value if len(old) >= top else None
-    return new, old, until
-
-
-def _row_key(row) -> tuple:
-    """A grid row (m, n, family code) as a hashable key."""
-    return int(row[0]), int(row[1]), int(row[2])
-
-
-def _mode_key(mv: ModeValue) -> tuple:
-    """The grid row key of a found mode."""
-    return mv.m, mv.n, Family(mv.family).code
-
-
-def _sense(side, params, solve_for) -> float:
-    """+1 if the scan's control rises along its path, else -1."""
-    start, end, _ = control_path(params, solve_for, side)
-    return 1.0 if end > start else -1.0
-
-
-def _finished(params, solve_for, side, rtol, best: ModeValue) -> CriticalPoint:
-    """The critical point of the mode ``best`` (its value from a march), solved at ``rtol``
-    in a narrow bracket around that value, which is relative: a small value's bracket must
-    stay on its side of 0."""
-    w = 1e-7 * abs(best.value)
-    return critical_value(
-        params,
-        best.m,
-        best.n,
-        solve_for,
-        family=best.family,
-        side=side,
-        rtol=rtol,
-        bracket=(best.value - w, best.value + w),
     )

@@ -1,0 +1,85 @@
+"""Modes beyond a scan's ranges: is one of them unstable at a given value?
+
+A scan marches every mode of its ranges (m <= 12, n <= 30 by default, widened while the
+best sits on an edge or a short-wave probe wins), but a thin stiff film folds at m or n in
+the hundreds to thousands (the flat film's wavelength, docs/derivation-film.md), far from
+the ranges and their probes. When a low mode of the whole tube comes after the film's
+folds but before the probes (Euler buckling (1, 1) of a long tube, the collapse (2, 0)
+under an external pressure), nothing in the ranges points beyond them. So the scan asks
+here, at the value it is about to report: along each axis, geometric samples (msearch's,
+ratio 1.25) from the edge of the range to the cap, on the rows where a film's folds lie
+
+* along m: the prismatic modes (m, 0) and the wrinkles (m, n_lo) of the smallest n;
+* along n: the rings (m_lo, n) of the smallest m (axisymmetric at m = 0) and (m_lo + 1, n);
+
+their targets at that one state against their signs on the unloaded tube, where every
+mode is stable (docs/derivation.md section 3). A sample past its root starts the search
+of that axis (msearch.py). One base state and a batch of ~60 loose modes (~30 ms); it
+reads a band of unstable folds, which near a film's optimum spans many samples, not a
+single mode unstable alone between two samples.
+"""
+
+from __future__ import annotations
+
+import functools
+
+import numpy as np
+
+from ..basestate.tube import solve_base_state
+from ..errors import ElectrogrowthError
+from ..incremental.accuracy import SCAN_STABLE_SIGNS
+from ..incremental.targets import Family, ImpedanceTarget
+from .march import SIGN_TUBE, unloaded_signs
+from .msearch import geometric_samples
+from .options import M_CAP, N_CAP
+
+
+def beyond_rows(m_range, n_range, prismatic: bool, axis: str) -> np.ndarray:
+    """Rows (m, n, family code) sampled beyond the ranges along ``axis`` (module docstring);
+    empty when that range already reaches its cap."""
+    (m_lo, m_hi), (n_lo, n_hi) = m_range, n_range
+    _wrinkle, _prismatic = Family.WRINKLE.code, Family.PRISMATIC.code
+    if axis == "m":
+        if m_hi >= M_CAP:
+            return np.zeros((0, 3))
+        rows = [(max(n_lo, 1), _wrinkle)] + ([(0, _prismatic)] if prismatic else [])
+        ms = geometric_samples(m_hi + 1, M_CAP)
+        return np.array([(m, n, code) for m in ms for n, code in rows], float)
+    if n_hi >= N_CAP:
+        return np.zeros((0, 3))
+    ns = geometric_samples(max(n_hi + 1, 1), N_CAP)
+    return np.array([(m, n, _wrinkle) for n in ns for m in (m_lo, m_lo + 1)], float)
+
+
+@functools.lru_cache(maxsize=64)
+def _stable(rows: bytes, count: int) -> np.ndarray:
+    """The signs of the rows (their float64 bytes, ``count`` of them) on the unloaded tube,
+    remembered: they are the same for every tube (scan_grid.stable_signs)."""
+    modes = np.frombuffer(rows, dtype=float).reshape(count, 3)
+    return unloaded_signs(SIGN_TUBE, modes, ImpedanceTarget(SCAN_STABLE_SIGNS))
+
+
+def unstable_beyond(
+    params, solve_for: str, value: float, m_range, n_range, prismatic: bool, axes=("m", "n")
+) -> dict[str, bool]:
+    """For each axis of ``axes``: is a sampled mode beyond the ranges past its root at
+    ``value`` (its target's sign there against the unloaded tube's)? False where the state
+    at ``value`` does not resolve (no evidence either way: the result stands)."""
+    rows = {axis: beyond_rows(m_range, n_range, prismatic, axis) for axis in axes}
+    modes = np.vstack([rows[axis] for axis in axes])
+    out = dict.fromkeys(axes, False)
+    if not modes.shape[0]:
+        return out
+    try:
+        state = solve_base_state(params.at(solve_for, value))
+        now = ImpedanceTarget(SCAN_STABLE_SIGNS)(state, modes)
+    except ElectrogrowthError:
+        return out
+    stable = _stable(np.ascontiguousarray(modes).tobytes(), modes.shape[0])
+    turned = np.isfinite(now) & (np.sign(now) != stable)
+    start = 0
+    for axis in axes:
+        stop = start + rows[axis].shape[0]
+        out[axis] = bool(turned[start:stop].any())
+        start = stop
+    return out
