@@ -65,6 +65,12 @@ def test_brentq_is_scipys_to_the_bit(rng, tol):
         (lambda x: 1e-200 * x, -1.0, 2.0),  # f(a) f(b) underflows to -0
         (lambda x: x, 0.0, 1.0),  # a root at an end
         (lambda x: x - 1, 0.0, 1.0),
+        # a zero denominator in the interpolation (products of values near 1e-200 underflow,
+        # or two equal values of a clipped function), which C divides into inf or NaN and
+        # then bisects (the port raised ZeroDivisionError)
+        (lambda x: 1e-200 * (x**3 - 0.2), 0.0, 1.0),
+        (lambda x: 1e-150 * math.tanh(30 * (x - 0.61)), 0.0, 1.0),
+        (lambda x: min(max(x - 0.3, -0.01), 0.01), 0.0, 1.0),
     ],
 )
 def test_brentq_edges_are_scipys(f, a, b):

@@ -62,11 +62,11 @@ def brentq(
             return xcur
         if abs(spre) > delta and abs(fcur) < abs(fpre):
             if xpre == xblk:  # interpolate
-                stry = -fcur * (xcur - xpre) / (fcur - fpre)
+                stry = _quotient(-fcur * (xcur - xpre), fcur - fpre)
             else:  # extrapolate
                 dpre = (fpre - fcur) / (xpre - xcur)
                 dblk = (fblk - fcur) / (xblk - xcur)
-                stry = -fcur * (fblk * dblk - fpre * dpre) / (dblk * dpre * (fblk - fpre))
+                stry = _quotient(-fcur * (fblk * dblk - fpre * dpre), dblk * dpre * (fblk - fpre))
             if 2 * abs(stry) < min(abs(spre), 3 * abs(sbis) - delta):  # good short step
                 spre, scur = scur, stry
             else:
@@ -77,6 +77,19 @@ def brentq(
         xcur += scur if abs(scur) > delta else (delta if sbis > 0 else -delta)
         fcur = _value(f, xcur)
     raise RuntimeError(f"Failed to converge after {maxiter} iterations.")
+
+
+def _quotient(num: float, den: float) -> float:
+    """num / den as C divides doubles: a zero denominator gives inf or NaN (0 / 0), not an
+    exception, so the step below is not taken and Brent's method bisects (two equal values
+    of f, as on a plateau of a clipped function)."""
+    if den == 0.0:
+        return (
+            math.nan
+            if num == 0.0 or math.isnan(num)
+            else math.copysign(math.inf, num) * math.copysign(1.0, den)
+        )
+    return num / den
 
 
 def _negative(x: float) -> bool:
