@@ -10,7 +10,7 @@ secant's distance to the root of the 1e-12 target (error_estimate.secant_estimat
 trust up to STRAIGHT h = 1e-9 max(1, |value|) (a steep film target overstates it), while the
 certified bound at rtol 1e-14 is 1e4 rtol = 1e-10: below the secant's own floor, so no
 refinement is possible (the range ends at 1e-14) and an accurate value is marked inaccurate.
-Seen on 2 of 36 probed points at rtol 1e-14 (the other: a force-controlled three-layer tube,
+Seen on 3 of 83 probed points at rtol 1e-14 (another: a force-controlled three-layer tube,
 F_cr = -16605.929479242, estimate 2.9e-6 against the bound 1.7e-6), never at 1e-12. ~10 s.
 """
 
