@@ -41,7 +41,8 @@ import numpy as np
 
 from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError
-from .accuracy import Accuracy
+from ..model.layers import Tube
+from .accuracy import STABLE_SIGN, Accuracy
 from .impedance import STATUS_TEXT, determinant_serial, target_serial
 from .mode_rows import rows_parallel, rows_serial
 from .modes import ALL_PAIRS as ALL_PAIRS
@@ -120,6 +121,10 @@ def analytic_parts(state, modes, *, rtol: float = 1e-12, max_steps: int = 20000)
 
 
 RETRY_TIGHTER = (1e-2, 1e-4)  # a failed mode is integrated again at rtol times these
+#: and with this many times the steps each time: a tolerance already at the floor (1e-14)
+#: cannot tighten, and a short wave of a film-lined tube that ran out of steps there fell
+#: back to collocation at ~230 nodes a layer, 30-46 s an evaluation
+RETRY_BUDGET = 5
 #: of a larger batch of failed modes, these are retried first at each tighter tolerance;
 #: when every one fails again, the rest go to collocation at once
 RETRY_SAMPLE = 4
@@ -136,21 +141,26 @@ def _retry(state, modes, status, rtol, max_steps) -> np.ndarray:
     the kernel at any tolerance (next to a Gent lock, whose moduli grow like 1 / margin^2,
     all 396 modes of a scan underflowed again at both, 42 s), and the others skip it."""
     f = np.full(modes.shape[0], np.nan)
+    budget = max_steps
     for factor in RETRY_TIGHTER:
         todo = np.flatnonzero(np.isnan(f))
         tight = max(rtol * factor, 1e-14)
+        budget *= RETRY_BUDGET
         tables = stack_tables([build_table(state, tol=Accuracy(tight).table)])
         first, rest = todo[:RETRY_SAMPLE], todo[RETRY_SAMPLE:]
-        f[first] = _serial(state, modes[first], tables, tight, max_steps)
+        f[first] = _serial(state, modes[first], tables, tight, budget)
         if rest.size and np.isnan(f[first]).all():
             break
-        f[rest] = _serial(state, modes[rest], tables, tight, max_steps)
+        f[rest] = _serial(state, modes[rest], tables, tight, budget)
         if not np.isnan(f).any():
             return f
     colloc = CollocationTarget(rtol)
     for i in np.flatnonzero(np.isnan(f)):
+        row = modes[i : i + 1]
         try:
-            f[i] = colloc(state, modes[i : i + 1])[0]
+            nodes = colloc._nodes(state, row[0])
+            value = collocation_targets(state, row, nodes=nodes)[0]
+            f[i] = value * _kernel_sign(state, row, nodes)
         except (ArithmeticError, ValueError, np.linalg.LinAlgError):
             pass
         if not np.isfinite(f[i]):
@@ -160,6 +170,25 @@ def _retry(state, modes, status, rtol, max_steps) -> np.ndarray:
                 " also at tighter tolerances and by collocation"
             )
     return f
+
+
+#: an unloaded tube, stable in every mode, where the kernel's sign of a mode is read: the
+#: same on every unloaded tube (docs/derivation.md section 3; bifurcation.march.SIGN_TUBE)
+_SIGN_TUBE = Tube.uniform(outer_radius=1.4, length=1.0)
+
+
+def _kernel_sign(state, row, nodes: int) -> float:
+    """The factor that gives collocation's target at ``nodes`` the kernel's sign for the
+    mode ``row``: the kernel's sign on an unloaded tube times collocation's on this tube's
+    unloaded state, both stable. Collocation's sign there is +1 for one layer (normalised,
+    collocation.stable_det_sign) but mode by mode for a layered tube, and the kernel's is
+    mode by mode: without it a failed integration's fallback flipped the sign of (0, 3) and
+    (5, 0) of an unloaded bilayer, a sign change where nothing bifurcates."""
+    kernel = np.sign(impedance_targets(solve_base_state(_SIGN_TUBE), row, rtol=STABLE_SIGN)[0])
+    if len(state.tube.layers) == 1:
+        return float(kernel)
+    unloaded = solve_base_state(state.tube.reference())
+    return float(kernel * np.sign(collocation_targets(unloaded, row, nodes=nodes)[0]))
 
 
 def _serial(state, modes, tables, rtol, max_steps) -> np.ndarray:
