@@ -136,7 +136,14 @@ class LayeredState:
             abs(volt / thick - tube.voltage) / max(1.0, tube.voltage),
         ]
         if tube.control == "force":
-            errors.append(abs(applied - tube.axial_force) / max(1.0, abs(nint), abs(ends)))
+            # the wall's axial stress scale: scale is int (|tau_rr| + |tau_tt|) dr / r, and
+            # a stress uniform in r carries pi (r_o^2 - r_i^2) / ln(r_o / r_i) times that in
+            # int tau 2 pi r dr. At free ends N_int is ~0 while its integrand is ~mu times
+            # the wall's area: measured against |N_int|, a stiff core's rounding (1000 : 1)
+            # refused every node count
+            area = math.pi * (r2[-1] - r2[0]) / (0.5 * math.log(r2[-1] / r2[0]))
+            axial = max(1.0, abs(nint), abs(ends), abs(scale) * area)
+            errors.append(abs(applied - tube.axial_force) / axial)
         return cls(
             tube,
             float(x),
