@@ -36,6 +36,7 @@ from ..continuation.events import Remembered, brent
 from ..errors import ConvergenceError, NoBifurcationFound, Remedy
 from ..incremental.accuracy import CERTIFIED, RTOL_RANGE, STABLE_SIGN, Accuracy
 from ..incremental.targets import (
+    CollocationTarget,
     Family,
     Method,
     check_method,
@@ -192,6 +193,10 @@ def critical_value(
     fam = check_mode(m, n, family)
     problem = as_problem(params, solve_for, side=side, rtol=rtol)
     params, solve_for, side, rtol = problem.tube, problem.control, problem.side, problem.rtol
+    if bracket is None and check_method(method) is Method.COLLOCATION and not params.is_uniform:
+        kernel, bracket = _kernel_bracket(params, m, n, solve_for, fam, side, rtol)
+        if bracket is None:
+            return kernel  # the state is lost first (a base-state property: any method)
     point = _solve(params, m, n, solve_for, fam, side, method, rtol, bracket)
     tight = rtol
     while not _certified(point, rtol) and tight / REFINE >= RTOL_RANGE[0] * (1 - 1e-9):
@@ -205,6 +210,38 @@ def critical_value(
         message=f"error estimate {point.error_estimate:.1e} exceeds {CERTIFIED:g} rtol"
         f" max(1, |value|) (rtol = {rtol:g}) even at rtol / {REFINE:g}",
         remedy=ConvergenceError.remedy,
+    )
+
+
+#: relative half-widths tried around the kernel's root for layered collocation's bracket
+KERNEL_BRACKETS = (1e-7, 1e-5, 1e-3)
+
+
+def _kernel_bracket(params, m, n, solve_for, fam, side, rtol):
+    """(the kernel's point, a bracket around its root where collocation changes sign), or
+    (the kernel's point, None) where the state is lost first.
+
+    Collocation with one domain per layer has sign changes of its own, where no method
+    bifurcates (docs/derivation-layered-modes.md L.3: mode (0, 8) of a three-layer tube at
+    g = 2.033, which the kernel and the shooting twin do not see; a collapse pressure of
+    -222.57 against their -3030.66). So on a layered tube it does not march: it solves the
+    root the kernel's march found, in a bracket of 1e-7 to 1e-3 of it, and says so if it has
+    none there (ConvergenceError)."""
+    kernel = _solve(params, m, n, solve_for, fam, side, "impedance", rtol, None)
+    if kernel.kind != Kind.BIFURCATION:
+        return kernel, None
+    colloc, v = CollocationTarget(rtol), kernel.value
+    mode = with_family(m, n, fam)
+    for width in KERNEL_BRACKETS:
+        w = width * max(abs(v), 1e-300)  # relative: a small value's bracket keeps its side
+        ends = [colloc(solve_base_state(params.at(solve_for, x)), mode)[0] for x in (v - w, v + w)]
+        if ends[0] * ends[1] < 0:
+            return kernel, (v - w, v + w)
+    raise ConvergenceError(
+        f"collocation finds no root of mode ({m}, {n}) within {KERNEL_BRACKETS[-1]:g} of the"
+        f" impedance kernel's {solve_for} = {v:.12g} on this layered tube (its determinant has"
+        " sign changes of its own: docs/derivation-layered-modes.md L.3); use the impedance"
+        " method, or give collocation a bracket"
     )
 
 
