@@ -110,10 +110,10 @@ class KernelCounter:
 
     def __enter__(self):
         # rows_*: a target evaluation's modes (incremental/mode_rows.py); target_serial: the
-        # retries of failed members; determinant_serial: a root's refinement on det(M2)
+        # retries of failed members; rows_determinant: a root's refinement on det(M2)
         # (incremental/targets.py). All take (batch, ..., tables, rtol, max_steps) with the
         # batch's length first.
-        for name in ("rows_parallel", "rows_serial", "target_serial", "determinant_serial"):
+        for name in ("rows_parallel", "rows_serial", "target_serial", "rows_determinant"):
             kernel = getattr(targets_module, name)
             self.saved[name] = kernel
 

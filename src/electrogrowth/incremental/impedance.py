@@ -336,19 +336,3 @@ def target_serial(m, k, keep, table_index, tables, rtol, max_steps):
     for b in range(n):
         _target_member(b, m, k, keep, table_index, tables, rtol, max_steps, f, status, steps)
     return f, status, steps
-
-
-@nb.njit(cache=True)
-def determinant_serial(m, k, keep, tables, rtol, max_steps):
-    """(f, log_norm, status) of modes (m[b], k[b], keep[b]) on table 0 of ``tables``, every
-    wall integrated (no restart from the dominant subspace, which forgets log_norm): the
-    target and the log of what it divides out (:func:`integrate_one`), so that
-    f exp(log_norm) is det(M2), analytic in the parameters, for a root's refinement."""
-    n = m.shape[0]
-    f, log_norm, status = np.empty(n), np.empty(n), np.empty(n, np.int64)
-    table = _member_table(tables, 0)
-    for b in range(n):
-        f[b], _, _, status[b], _, log_norm[b] = integrate_one(
-            m[b], k[b], keep[b], table, rtol, max_steps, False
-        )
-    return f, log_norm, status

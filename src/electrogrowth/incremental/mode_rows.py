@@ -67,3 +67,20 @@ def rows_parallel(modes, length, tables, rtol, max_steps):
     for b in nb.prange(n):
         _row_target(modes, b, length, tables, rtol, max_steps, f, status)
     return f, status
+
+
+@nb.njit(cache=True)
+def rows_determinant(modes, length, tables, rtol, max_steps):
+    """(f, log_norm, status) of every row of ``modes`` on the one state of ``tables``, every
+    wall integrated (no short-wave restart, which forgets log_norm; impedance.integrate_one),
+    row by row as :func:`rows_serial`:
+    f exp(log_norm) is det(M2), what a root is refined on."""
+    n = modes.shape[0]
+    f, log_norm, status = np.empty(n), np.empty(n), np.empty(n, np.int64)
+    table = _member_table(tables, 0)
+    for b in range(n):
+        k = modes[b, 1] * math.pi / length
+        f[b], _, _, status[b], _, log_norm[b] = integrate_one(
+            modes[b, 0], k, row_pairs(modes, b), table, rtol, max_steps, False
+        )
+    return f, log_norm, status

@@ -43,8 +43,8 @@ from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError
 from ..model.layers import Tube
 from .accuracy import STABLE_SIGN, Accuracy
-from .impedance import STATUS_TEXT, determinant_serial, target_serial
-from .mode_rows import rows_parallel, rows_serial
+from .impedance import STATUS_TEXT, target_serial
+from .mode_rows import rows_determinant, rows_parallel, rows_serial
 from .modes import ALL_PAIRS as ALL_PAIRS
 from .modes import FAMILIES as FAMILIES
 from .modes import METHODS as METHODS
@@ -109,10 +109,7 @@ def analytic_parts(state, modes, *, rtol: float = 1e-12, max_steps: int = 20000)
     if modes.ndim == 1:
         modes = modes[None]
     tables = stack_tables([build_table(state, tol=_table_tol(rtol))])
-    k = modes[:, 1] * math.pi / state.current_length
-    f, log_norm, status = determinant_serial(
-        np.ascontiguousarray(modes[:, 0]), k, mode_pairs(modes), tables, rtol, max_steps
-    )
+    f, log_norm, status = rows_determinant(modes, state.current_length, tables, rtol, max_steps)
     bad = status != 0
     if bad.any():
         f[bad] = impedance_targets(state, modes[bad], rtol=rtol, max_steps=max_steps)
