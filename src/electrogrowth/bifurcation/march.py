@@ -43,6 +43,7 @@ from ..continuation.events import (
 from ..continuation.path import ControlPath, Stepper, StepPolicy
 from ..continuation.predict import EventWatch
 from ..errors import BaseStateError, ConvergenceError, NoBifurcationFound, ParameterError
+from ..incremental.targets import SIGN_TUBE as SIGN_TUBE  # re-exported: its grids' signs
 from ..incremental.targets import natural_family, row_family
 from ..model.controls import KINDS
 from ..model.layers import Tube
@@ -106,11 +107,6 @@ def control_path(tube: Tube, solve_for: str, side: str | None):
     (model/controls.py KINDS) on this tube, read off the base-state door."""
     kind = tube.check_control(solve_for).kind
     return KINDS[kind].path(tube, side == "extension", door)
-
-
-#: The tube on which the stable signs of a mode grid are read: they are the same on every
-#: unloaded tube (docs/derivation.md section 3), so one evaluation serves every scan.
-SIGN_TUBE = Tube.uniform(outer_radius=1.4, length=1.0)
 
 
 def unloaded_signs(params, modes: np.ndarray, targets: Targets) -> np.ndarray:

@@ -169,9 +169,10 @@ def _retry(state, modes, status, rtol, max_steps) -> np.ndarray:
     return f
 
 
-#: an unloaded tube, stable in every mode, where the kernel's sign of a mode is read: the
-#: same on every unloaded tube (docs/derivation.md section 3; bifurcation.march.SIGN_TUBE)
-_SIGN_TUBE = Tube.uniform(outer_radius=1.4, length=1.0)
+#: The tube on which the kernel's stable signs of modes are read: they are the same on
+#: every unloaded tube (docs/derivation.md section 3), so one evaluation serves every scan
+#: and every fallback (bifurcation/march.py re-exports it).
+SIGN_TUBE = Tube.uniform(outer_radius=1.4, length=1.0)
 
 
 def _kernel_sign(state, row, nodes: int) -> float:
@@ -181,7 +182,7 @@ def _kernel_sign(state, row, nodes: int) -> float:
     collocation.stable_det_sign) but mode by mode for a layered tube, and the kernel's is
     mode by mode: without it a failed integration's fallback flipped the sign of (0, 3) and
     (5, 0) of an unloaded bilayer, a sign change where nothing bifurcates."""
-    kernel = np.sign(impedance_targets(solve_base_state(_SIGN_TUBE), row, rtol=STABLE_SIGN)[0])
+    kernel = np.sign(impedance_targets(solve_base_state(SIGN_TUBE), row, rtol=STABLE_SIGN)[0])
     if len(state.tube.layers) == 1:
         return float(kernel)
     unloaded = solve_base_state(state.tube.reference())
