@@ -15,7 +15,7 @@ from ..incremental.accuracy import SCAN_SIGNS, Accuracy
 from ..incremental.targets import Family, ImpedanceTarget
 from ..outcomes import NO_MODE, Kind
 from .critical import CriticalPoint, critical_value
-from .march import ModeValue, control_path, first_bifurcations
+from .march import ModeValue, first_bifurcations
 from .scan_grid import scan_grid, stable_signs
 from .scan_record import ScanResult
 
@@ -44,7 +44,8 @@ def scan_once(
     found = res.found
     if reuse is not None:
         old, best = reuse[1], known[1].critical
-        found = sorted(old + found, key=lambda mv: _sense(side, params, solve_for) * mv.value)
+        sense = -1.0 if side == "compression" else 1.0  # the march's direction
+        found = sorted(old + found, key=lambda mv: sense * mv.value)
         if found and (found[0].m, found[0].n, found[0].family) == (best.m, best.n, best.family):
             return ScanResult(best, tuple(found[1:top]), m_range, n_range)
     if not found:  # the march stops at the threshold, so found modes come before it
@@ -100,12 +101,6 @@ def _row_key(row) -> tuple:
 def _mode_key(mv: ModeValue) -> tuple:
     """The grid row key of a found mode."""
     return mv.m, mv.n, Family(mv.family).code
-
-
-def _sense(side, params, solve_for) -> float:
-    """+1 if the scan's control rises along its path, else -1."""
-    start, end, _ = control_path(params, solve_for, side)
-    return 1.0 if end > start else -1.0
 
 
 def finished(params, solve_for, side, rtol, best: ModeValue) -> CriticalPoint:
