@@ -17,9 +17,14 @@ search and find it). Expected: (2000, 0) at the cap, about 1.30667, with the lim
 runner-up. Now, where the limit comes before the scanned modes, the folds beyond the scan
 (geometric samples of m up to 2000) are read at the limit's state, and searched if one is
 unstable there. About 7 s.
+
+Found by probing (2026-12-05): the result at the cap had status OK in Python, although
+the true first fold (near m = 3300) comes before it; only the CLI warned. Now its status
+is INACCURATE with a message saying why, and the CLI exits 3 with one warning.
 """
 
 from electrogrowth import Layer, Tube, critical_value, scan_modes
+from electrogrowth.cli.app import main
 from electrogrowth.cli.report import edge_warning
 
 FILM = Tube((Layer(1.0003, shear_modulus=3.0), Layer(1.5)), length=2.0, stretch=1.0)
@@ -30,4 +35,30 @@ def test_scan_prefers_the_capped_fold_to_a_later_short_wave_limit():
     scan = scan_modes(FILM, "growth[1].theta")
     assert scan.critical.value <= cap.value + 1e-9
     assert (scan.critical.kind, scan.critical.m, scan.critical.n) == ("bifurcation", 2000, 0)
-    assert edge_warning(scan)  # the fold lies beyond the cap: said
+    assert scan.critical.status == "inaccurate"  # the fold lies beyond the cap: said
+    assert "(2000, 0) sits at the largest m = 2000" in scan.critical.message
+    assert "1.84731" in scan.critical.message  # the limit, later
+    assert edge_warning(scan) == ""  # the status says it, not a second warning
+
+
+def test_the_cli_exits_3_at_the_cap_with_one_warning(tmp_path, capsys):
+    tube = tmp_path / "film.toml"
+    tube.write_text(
+        "length = 2.0\nstretch = 1.0\n[[layers]]\nouter_radius = 1.0003\n"
+        "shear_modulus = 3.0\n[[layers]]\nouter_radius = 1.5\n"
+    )
+    args = [
+        "critical",
+        "--tube",
+        str(tube),
+        "--solve-for",
+        "growth",
+        "--layer",
+        "1",
+        "--component",
+        "theta",
+    ]
+    assert main(args + ["--quiet"]) == 3
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "not certified: the critical mode (2000, 0)" in err[0]
+    assert main(args + ["--quiet", "--accept-inaccurate", "--json"]) == 0

@@ -34,7 +34,7 @@ import dataclasses
 from ..errors import ConvergenceError, NoBifurcationFound
 from ..incremental.targets import Family
 from ..model.layers import Tube
-from ..outcomes import NO_MODE, Kind
+from ..outcomes import NO_MODE, Kind, Status
 from .beyond import unstable_beyond
 from .critical import CriticalPoint, no_bifurcation_remedy
 from .directions import past_surface
@@ -119,9 +119,39 @@ def scan_modes(
         return ScanResult(
             crit, (), options.m_range, options.n_range, True, limit.value, limit.error_estimate
         )
-    if not options.surface:
+    if options.surface:
+        result = _with_short_waves(
+            params, solve_for, side, result, options.top, rtol, at_cap, limit
+        )
+    return _capped(result)
+
+
+def _capped(result: ScanResult) -> ScanResult:
+    """``result``, its critical point INACCURATE where the mode sits at M_CAP or N_CAP:
+    the scan cannot look beyond, and a film too thin for the cap folds there with a lower
+    value (a film 2e-4 thick, 10 times stiffer, under hoop growth: (2000, 0) at 1.13838
+    while its flat film's folds are near m = 3300). The value is that mode's, exact; it
+    is the tube's critical value only if no mode beyond the cap comes first."""
+    c = result.critical
+    over = [
+        f"{name} = {cap}"
+        for name, value, cap in (("m", c.m, M_CAP), ("n", c.n, N_CAP))
+        if value >= cap
+    ]
+    if c.kind != Kind.BIFURCATION or not over or c.status != Status.OK:
         return result
-    return _with_short_waves(params, solve_for, side, result, options.top, rtol, at_cap, limit)
+    message = (
+        f"the critical mode ({c.m}, {c.n}) sits at the largest {' and '.join(over)} supported:"
+        " a mode beyond it may bifurcate first"
+    )
+    if result.short_wave_limit is not None:  # computed, and later (else it is the result)
+        message += f" (the exact short-wave limit comes later, at {result.short_wave_limit:.6g})"
+    remedy = (
+        "the folds are shorter than the scan resolves: a film this thin is its flat"
+        " film-on-substrate limit (docs/derivation-film.md)"
+    )
+    crit = dataclasses.replace(c, status=Status.INACCURATE, message=message, remedy=remedy)
+    return dataclasses.replace(result, critical=crit)
 
 
 def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):

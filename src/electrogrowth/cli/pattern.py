@@ -23,6 +23,7 @@ from ..bifurcation.scan import scan_modes
 from ..errors import MissingDependencyError, ParameterError
 from ..figures.plots import plot_mode_shape, render_pattern
 from ..incremental.targets import Family
+from ..outcomes import Status
 from ..shapes.mode_shape import mode_shape
 from ..shapes.wall import export_vtk
 from .critical_text import tube_line, value_name
@@ -137,6 +138,7 @@ def run_pattern(args) -> int:
             scan = scan_modes(params, solve_for, side=args.side, options=options)
         crit = scan.critical
         warn(edge_warning(scan))
+        warn(crit.message if crit.status == Status.INACCURATE else "")  # the cap, an estimate
         if crit.family == Family.TORSIONAL:
             _check_torsional_outputs(args)
     with stage(args, f"mode shape of ({crit.m}, {crit.n}) through the wall"):

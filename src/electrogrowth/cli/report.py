@@ -120,7 +120,8 @@ def edge_warning(result) -> str:
     """A one-line warning when the critical mode of a scan (a ScanResult) sits on the upper
     edge of the final m or n range, else "" (the scan widens a range and searches m up to
     the cap; a mode on the edge may still hide a lower one beyond). At the cap itself
-    raising --m-max / --n-max cannot help, and the warning says so."""
+    raising --m-max / --n-max cannot help, and the warning says so, unless the scan's
+    status (INACCURATE at the cap, bifurcation/scan.py) says it already."""
     from ..bifurcation.options import M_CAP, N_CAP  # start-up speed: `state` loads no kernel
 
     c = result.critical
@@ -131,6 +132,8 @@ def edge_warning(result) -> str:
         ("m", c.m, result.m_range[1], M_CAP),
         ("n", c.n, result.n_range[1], N_CAP),
     ):
+        if value >= cap and c.status == "inaccurate":  # said by the status's own message
+            continue
         if value == top:
             (capped if value >= cap else edges).append(
                 f"{name} = {value} is the largest {name} scanned"
