@@ -318,12 +318,12 @@ def _searched(
         rows = {(max(options.n_range[0], 1), Family.WRINKLE.code)}
         if options.prismatic:
             rows.add((0, Family.PRISMATIC.code))
-        if c.kind == Kind.BIFURCATION:
+        if c.kind == Kind.BIFURCATION and c.family != Family.TORSIONAL:  # torsion: m = 0
             rows.add((c.n, Family(c.family).code))
         searcher, edge = search_m, result.m_range[1]
     else:
         rows = {(options.m_range[0], Family.WRINKLE.code)}
-        if c.kind == Kind.BIFURCATION:
+        if c.kind == Kind.BIFURCATION and c.family != Family.PRISMATIC:  # prismatic: n = 0
             rows.add((c.m, Family(c.family).code))
         searcher, edge = search_n, result.n_range[1]
     ranges = {"m": result.m_range, "n": result.n_range}
