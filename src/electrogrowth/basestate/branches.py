@@ -36,6 +36,12 @@ class Branch:
     compiled: bool = False
 
     def point(self, r_i, lz) -> dict:
+        # an energy's own finite range (a Fung exponential, a Gent lock) ends in inf or
+        # NaN, which marks the point as no state: not a numpy warning to the user
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            return self._point(r_i, lz)
+
+    def _point(self, r_i, lz) -> dict:
         wall, tube = self.wall, self.wall.tube
         r_i, lz = np.broadcast_arrays(np.asarray(r_i, float), np.asarray(lz, float))
         thick = tube.outer_radius - 1.0
@@ -166,8 +172,11 @@ class Branch:
                     ends[sense] = None
                     continue
                 hn = h(nxt)
-                if not np.isfinite(hn):
+                if not np.isfinite(hn):  # past the states at this r_i (a Gent layer's lock)
                     ends[sense] = None
+                    bracket = _short_of_edge(h, last, hl, nxt)
+                    if bracket is not None:
+                        return brent(h, *sorted(bracket), BRANCH_STRETCH, named=False)
                 elif np.sign(hn) != np.sign(hl):
                     return brent(h, *sorted((last, nxt)), BRANCH_STRETCH, named=False)
                 else:
@@ -176,6 +185,26 @@ class Branch:
                 break
             step *= 1.5
         return math.nan
+
+
+def _short_of_edge(h, last: float, h_last: float, edge: float):
+    """A bracket of a root of h between ``last`` (h finite) and ``edge`` (not), or None: the
+    gap halved (geometrically) towards the edge of the finite values. A root next to a
+    lock lies in a window narrower than the bracketing's steps (a guess within 1e-13 of
+    the root, its h of the wrong sign by rounding, stepped 2 % into the lock on one side
+    and away from the root on the other: no lambda_z, and a state reported lost)."""
+    for _ in range(60):
+        mid = math.sqrt(last * edge)
+        if abs(mid - last) <= 1e-15 * last:
+            return None
+        hm = h(mid)
+        if not np.isfinite(hm):
+            edge = mid
+        elif np.sign(hm) != np.sign(h_last):
+            return last, mid
+        else:
+            last, h_last = mid, hm
+    return None
 
 
 def _nan_where(mask) -> dict:

@@ -73,6 +73,11 @@ def solve_layered_state(tube: Tube, *, rtol: float = 1e-12, near=None, guess=Non
         prep = prepare(key, rtol, nodes)
         if tube.voltage == 0:
             x, lz = prep.loaded
+        elif not math.isfinite(tube.voltage * tube.voltage):
+            raise BaseStateError(
+                f"Vbar = {tube.voltage:.12g} is beyond every state of this tube (Vbar^2"
+                " overflows); no axisymmetric state"
+            )
         else:  # the branch is walked only up to Vbar unless its threshold is known already
             thr = prep.voltage_to(tube.voltage)
             if thr.kind and not tube.voltage < thr.value:
@@ -83,7 +88,7 @@ def solve_layered_state(tube: Tube, *, rtol: float = 1e-12, near=None, guess=Non
             x, lz = solve_on(
                 prep.branch,
                 thr.grid,
-                tube.voltage**2,
+                tube.voltage * tube.voltage,
                 thr if thr.kind else None,
                 f"Vbar = {tube.voltage}",
             )

@@ -363,11 +363,19 @@ def choose_nodes(tube: Tube, rtol: float, plies) -> int:
 
 def start_guess(wall: Wall) -> tuple[float, float]:
     """The homogeneous-growth guess: r_i^2 = 2 G(R_N) / (lambda_z (R_N^2 - 1)), lambda_z the
-    area-weighted mean g_z (under force control) or the prescribed stretch."""
+    prescribed stretch or, under force control, the stretch at which the layers' small-strain
+    axial forces mu A (lambda_z / g_z - 1) (A the grown section) cancel: a stiff skin's g_z
+    sets it (an area-weighted mean put a skin 1000 times as stiff growing to g_z = 2.1 on a
+    soft Gent layer at 1.08, from which no free state was found: the layer's lock lies
+    between)."""
     tube = wall.tube
     if tube.control == "stretch":
         lz = tube.stretch
     else:
-        num = sum((w * g[2] * R).sum() for R, w, g, _, _ in wall.grids)
-        lz = num / (0.5 * (tube.outer_radius**2 - 1.0))
+        weights = [
+            ply.layer.shear_modulus * w * R * g[0] * g[1]
+            for ply, (R, w, g, _, _) in zip(wall.plies, wall.grids)
+        ]
+        num = sum(a.sum() for a in weights)
+        lz = num / sum((a / g[2]).sum() for a, (_, _, g, _, _) in zip(weights, wall.grids))
     return math.sqrt(2.0 * wall.faces_G[-1] / (lz * (tube.outer_radius**2 - 1.0))), lz

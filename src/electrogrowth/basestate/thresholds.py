@@ -207,16 +207,23 @@ def solve_on(branch: Branch, grid, target: float, thr: Threshold | None, what: s
 # -- preparation: the unloaded start, the pressure stage, the voltage branch -------------------
 
 
-def _start(wall: Wall) -> tuple[float, float]:
-    """The unloaded state (V = 0, P_i = P_o): the root of T(r_i) = 0, bracketed outward from
-    the guess, under force control with lambda_z balancing the axial force at each r_i."""
+def _start(wall: Wall, P_i: float | None = None) -> tuple[float, float]:
+    """The unloaded state (V = 0, P_i = P_o), or the state at V = 0 and the inner pressure
+    ``P_i``: the root of P_i(r_i) - P_i, bracketed outward from the guess, under force
+    control with lambda_z balancing the axial force at each r_i, continued from the last
+    r_i where it did (from the guess itself, a soft Gent layer's lock can lie between: no
+    lambda_z found, and a state that exists reported lost)."""
     branch = Branch(wall, "pressure", vbar=0.0)
     xg, lg = start_guess(wall)
-    start, P_o = xg, wall.tube.outer_pressure
+    start, last_lz = xg, [lg]
+    P_o = wall.tube.outer_pressure if P_i is None else P_i
 
     def f(x):
-        pt = clean(branch.at([x], lg))
-        return float(pt["P_i"][0] - P_o), float(pt["stretch"][0])
+        pt = clean(branch.at([x], last_lz[0]))
+        lz = float(pt["stretch"][0])
+        if math.isfinite(lz):
+            last_lz[0] = lz
+        return float(pt["P_i"][0] - P_o), lz
 
     f0, _ = f(xg)
     for j in range(1, 41):  # a guess past a Gent layer's lock: the nearest finite state
@@ -240,7 +247,10 @@ def _start(wall: Wall) -> tuple[float, float]:
             step = math.sqrt(step)
             continue
         if np.sign(fn) != np.sign(f_last):
-            x = brent(lambda x: f(x)[0], *sorted((last, nxt)), BRANCH, named=False)
+            try:
+                x = brent(lambda x: f(x)[0], *sorted((last, nxt)), BRANCH, named=False)
+            except ValueError:  # a state inside the bracket past a layer's lock
+                break
             return x, f(x)[1]
         last, f_last = nxt, fn
     raise BaseStateError("no unloaded state (V = 0, P_i = P_o) found for this tube")
@@ -284,8 +294,16 @@ def _prepared(tube: Tube, rtol: float, nodes: int | None) -> _Prepared:
     """:func:`prepare`, cached."""
     plies = Ply.stack(tube)
     wall = Wall.build(tube, nodes or choose_nodes(tube, rtol, plies), plies)
-    x0, lz0 = _start(wall)
     dp = tube.inner_pressure - tube.outer_pressure
+    try:
+        x0, lz0 = _start(wall)
+    except BaseStateError:
+        if dp == 0:
+            raise
+        # a Gent core locked when unloaded that its inner pressure holds open: the loaded
+        # state found directly (no pressure branch walked to it, so no threshold on it)
+        loaded = _start(wall, tube.inner_pressure)
+        return _Prepared(wall, loaded, loaded)
     loaded = (x0, lz0)
     if dp != 0:
         branch = Branch(wall, "pressure", vbar=0.0)

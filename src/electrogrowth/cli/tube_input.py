@@ -151,7 +151,7 @@ def control_of(args) -> tuple[Tube, str]:
             raise ParameterError(
                 f"--layer / --component apply to --solve-for growth, not {args.solve_for}"
             )
-        name = str(params.check_control(f"growth[{args.layer or 1}]"))
+        name = str(params.check_control(f"growth[{1 if args.layer is None else args.layer}]"))
         if args.component is not None:
             name += "." + args.component
     return params, str(params.check_control(name))
