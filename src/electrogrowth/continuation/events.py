@@ -278,7 +278,40 @@ def first_roots(
 
     for k in keep:
         finish(k)
+    _later_before(signed, fine, cand, (xa, x, x0), lo, hi, out, need, finish)
     return out
+
+
+#: a LATER candidate whose loose signed value at the need-th root is below this is asked
+#: again with the fine target there (a loose value, rtol 1e-5, is off by far less)
+LATER_DOUBT = 1e-3
+
+
+def _later_before(signed, fine, cand, where, lo, hi, out, need, finish) -> None:
+    """Finish the LATER candidates whose fine value is past zero at the need-th root found
+    (at x if fewer were found): the pack was chosen by loose signs, which cannot order
+    roots closer than their error (a film's folds 1e-8 apart: the scan reported (70, 1)
+    while (70, 0) comes 2.5e-5 earlier, probe round 6b). One candidate positive there has
+    its root after it: LATER stands. Every LATER candidate is read loosely there, one
+    sample each: its loose bracket says nothing (a film's (70, 0), its fine root before
+    the need-th, had its loose bracket 1 % of the path past it). ``where``: (the samples
+    xa, the step's end x, the path's start x0)."""
+    later = [k for k, r in enumerate(out) if r is LATER]
+    if not later:
+        return
+    xa, x, _ = where
+    sense = sense_of(x, xa)
+    roots = sorted((r for r in out if isinstance(r, float)), key=lambda r: sense * r)
+    at = roots[need - 1] if len(roots) >= need else x
+    loose = signed(at, cand[later])
+    for k, v in zip(later, loose):
+        if not v <= LATER_DOUBT or fine(at, int(cand[k])) > 0:
+            continue
+        out[k] = None
+        if sense * (lo[k] - at) >= 0:  # its bracket was narrowed past ``at`` by loose signs
+            lo[k] = xa[k]
+        hi[k] = at
+        finish(k)
 
 
 def sense_of(x: float, xa: np.ndarray) -> float:
