@@ -9,7 +9,9 @@ under an external pressure), nothing in the ranges points beyond them. So the sc
 here, at the value it is about to report: along each axis, geometric samples (msearch's,
 ratio 1.25) from the edge of the range to the cap, on the rows where a film's folds lie
 
-* along m: the prismatic modes (m, 0) and the wrinkles (m, n_lo) of the smallest n;
+* along m: the prismatic modes (m, 0) and the wrinkles (m, n_lo) of the smallest n, every
+  m up to EVERY_M = 64 (a skin's folds (35, 0) 2.6e-4 before its rings, unstable between
+  the samples m = 29 and 37 only, were missed: probe round 6b);
 * along n: the rings (m_lo, n) of the smallest m (axisymmetric at m = 0) and (m_lo + 1, n);
 
 their targets at that one state against their signs on the unloaded tube, where every
@@ -31,7 +33,7 @@ from ..incremental.accuracy import SCAN_STABLE_SIGNS
 from ..incremental.targets import Family, ImpedanceTarget
 from .march import SIGN_TUBE, unloaded_signs
 from .msearch import geometric_samples
-from .options import M_CAP, N_CAP
+from .options import EVERY_M, M_CAP, N_CAP
 
 
 def beyond_rows(m_range, n_range, prismatic: bool, axis: str) -> np.ndarray:
@@ -43,7 +45,9 @@ def beyond_rows(m_range, n_range, prismatic: bool, axis: str) -> np.ndarray:
         if m_hi >= M_CAP:
             return np.zeros((0, 3))
         rows = [(max(n_lo, 1), _wrinkle)] + ([(0, _prismatic)] if prismatic else [])
-        ms = geometric_samples(m_hi + 1, M_CAP)
+        # every m up to EVERY_M (the scan's own rule: small m are irregular), then samples
+        every = list(range(m_hi + 1, min(EVERY_M, M_CAP) + 1))
+        ms = every + geometric_samples(max(m_hi + 1, EVERY_M + 1), M_CAP)
         return np.array([(m, n, code) for m in ms for n, code in rows], float)
     if n_hi >= N_CAP:
         return np.zeros((0, 3))

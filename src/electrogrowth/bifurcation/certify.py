@@ -120,13 +120,11 @@ def certify(
     mode = (crit.m, crit.n, crit.family)
     other, value, diff = _other_method(params, crit, mode, crit.value, crit.error_estimate, rtol)
     families = (True, True) if options is None else (options.prismatic, options.torsional)
-    checked = None if scan is None else _certify_choice(params, crit, scan, families, progress)
+    checked = None
+    if scan is not None:
+        checked = _certify_choice(params, crit, scan, families, progress, abs(value - crit.value))
     message = f"certified by {other}: {value:.12g} (relative difference {diff:.1e})"
     return Certificate(True, other, value, diff, checked, message)
-
-
-def _window(crit) -> float:
-    return max(1e-6 * abs(crit.value), 10 * crit.error_estimate)
 
 
 def _other_method(params, crit, mode, value, error, rtol, method=None):
@@ -164,12 +162,23 @@ def _other_method(params, crit, mode, value, error, rtol, method=None):
     return other, check.value, diff
 
 
-def _certify_choice(params, crit, scan, families, progress) -> int:
+#: the choice is read this many times the two methods' disagreement (or the error
+#: estimate) before the critical value: there collocation puts the critical mode itself on
+#: its stable side, and a mode whose root lies between is seen
+CHOICE_MARGIN = 10.0
+
+
+def _certify_choice(params, crit, scan, families, progress, disagreement: float) -> int:
     """The number of scanned modes found stable just before the critical value; raises
-    ConvergenceError naming a mode already unstable there."""
+    ConvergenceError naming a mode already unstable there. Just before: CHOICE_MARGIN times
+    the larger of the two methods' ``disagreement`` about the critical mode and its error
+    estimate (not 1e-6 of the value, the window of the value's own check: a film's modes lie
+    1e-7 to 1e-8 apart, and a ring 7e-8 before the critical one was certified stable, probe
+    round 6b); a mode collocation calls unstable there is asked again of the impedance."""
     start, end, _ = control_path(params, crit.solve_for, crit.side)
     sense = 1.0 if end > start else -1.0
-    before = crit.value - sense * _window(crit)
+    gap = max(disagreement, crit.error_estimate, 1e-13 * max(1.0, abs(crit.value)))
+    before = crit.value - sense * CHOICE_MARGIN * gap
     modes = scan_grid(scan.m_range, scan.n_range, False, families)
     state = solve_base_state(params.at(crit.solve_for, before))
     f = _one_by_one(CollocationRow(state), modes, progress)

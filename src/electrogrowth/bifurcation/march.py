@@ -72,6 +72,12 @@ ONE_MODE_STEPS = StepPolicy(
 #: step of MODE_STEPS, with which the march samples every mode due at its next step
 LATE = 0.05
 
+#: a march cut at ``until`` goes this far past it (times the scale): its modes' loose roots
+#: (rtol 1e-5) lie up to ~1e-5 of the scale from their fine ones, and a film's modes next to
+#: the cut, their fine roots before it, were lost (probe round 6b: (0, 132) 1.22227257 of a
+#: skin, cut at 1.22227273)
+UNTIL_MARGIN = 1e-3
+
 #: targets(state, modes (k, 2) or (k, 3) array) -> (k,) array of target values
 Targets = Callable[[object, np.ndarray], np.ndarray]
 
@@ -151,6 +157,8 @@ def first_bifurcations(
         stable_signs = unloaded_signs(params, modes, targets)
     sref = stable_signs
     path = ControlPath(*control_path(params, solve_for, side))
+    if until is not None:  # a margin past it: a loose root there may be a fine one before
+        until += path.sense * UNTIL_MARGIN * path.scale
     cut = until is not None and path.sense * (path.end - until) > 0
     if cut:
         path = dataclasses.replace(path, end=until)
