@@ -25,6 +25,9 @@ TUBE = Tube((Layer(1.1), Layer(2.0)))
     [
         ("layers[1].thickness", -0.05, "layers[1].thickness = -0.05", "> 0"),
         ("layers[2].thickness", 0.0, "layers[2].thickness = 0.0", "> 0"),
+        # below the spacing of floating-point radii at R = 1.1 (probe round 6b: the error
+        # named layers[2].outer_radius = 1.1, which the user never gave)
+        ("layers[2].thickness", 1e-17, "layers[2].thickness = 1e-17", ">= 2e-16"),
         ("layers[1].outer_radius", 2.25, "layers[1].outer_radius = 2.25", "1 < R < 2"),
         ("layers[2].outer_radius", 0.5, "layers[2].outer_radius = 0.5", "> 1.1"),
         ("layers[2].shear_modulus", -1.0, "layers[2].shear_modulus = -1.0", "0 < value"),

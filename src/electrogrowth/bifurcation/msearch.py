@@ -110,23 +110,25 @@ def _search(params, solve_for, side, rows, span, rtol, top, axis) -> SearchResul
         lo, hi = _neighbours([lo, *inner, _index(best, axis), hi], _index(best, axis))
         if complete:
             break
-    seen += _neighbourhood(march, row, seen, best, span, top, axis)
+    seen += _neighbourhood(march, rows, seen, best, span, top, axis)
     key = {(v.m, v.n, v.family): v for v in seen}
     ordered = sorted(key.values(), key=lambda v: _sense(side) * v.value)
     return SearchResult(best, tuple(ordered), _index(best, axis) == cap)
 
 
-def _neighbourhood(march, row, seen, best, span, top, axis) -> list[ModeValue]:
-    """The integers within top - 1 of the best on its row that the refinement skipped (a
-    bracket's samples are spaced), marched so that the runners-up are the next modes."""
+def _neighbourhood(march, rows, seen, best, span, top, axis) -> list[ModeValue]:
+    """The integers within top - 1 of the best that the refinement skipped (a bracket's
+    samples are spaced, and it followed the best's row alone), marched on every row so
+    that the runners-up are the next modes (a film's (115, 1) comes before (117, 0) of the
+    best's row, probe round 6b)."""
     at, wide = _index(best, axis), min(top - 1, NEIGHBOURS)
-    done = {_index(v, axis) for v in seen if (_fixed(v, axis), _code(v)) == row[0]}
+    done = {(_index(v, axis), _fixed(v, axis), _code(v)) for v in seen}
     near = range(max(span[0], at - wide), min(span[1], at + wide) + 1)
-    todo = [k for k in near if k not in done]
+    todo = [k for k in near if any((k, *row) not in done for row in rows)]
     if not todo:
         return []
     try:
-        return list(march(todo, row, top=len(todo)))
+        return list(march(todo, top=top))
     except NoBifurcationFound:
         return []
 

@@ -299,7 +299,10 @@ def _best_in_region(region, grid, goal: Target, margins: Margins, scan, edges=fr
         inside = sorted(set(inside))
         found = set()
         for x in inside:
-            found |= set(_competitors(iv.mode, scan(x), goal))
+            comps = _competitors(iv.mode, scan(x), goal)
+            if not comps and not goal.modes:  # a set's first modes are all its own: further
+                comps = _competitors(iv.mode, scan(x, TOP_MAX), goal)
+            found |= set(comps)
         others = tuple(sorted(found))
         if not others:
             continue

@@ -7,6 +7,7 @@ import dataclasses
 from collections.abc import Callable
 
 from ..errors import ParameterError
+from ..incremental.modes import MODE_MAX
 
 #: the named sets of modes: m = 0 (axisymmetric), n = 0 (prismatic)
 NAMED_SETS = {
@@ -24,6 +25,10 @@ def _mode(value) -> tuple[int, int]:
     if not ok:
         raise ParameterError(
             f"target mode {value!r} is invalid; give (m, n) with integers m >= 0, n >= 0"
+        )
+    if max(value) > MODE_MAX:  # as the command line: no scan reaches it
+        raise ParameterError(
+            f"target mode {tuple(value)!r} is out of range; m and n go from 0 to {MODE_MAX}"
         )
     return int(value[0]), int(value[1])
 

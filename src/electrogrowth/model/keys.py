@@ -69,8 +69,11 @@ def key_value(tube, name) -> float | None:
 def _check_key(name: str, value: float, field: str, radii: tuple[float, ...], k: int) -> None:
     """Refuse a value of the key ``name`` (layers[K].field) in its own terms: the layer
     would otherwise report a radius the user never gave (a thickness moves the radii)."""
-    if field == "thickness":
-        _number(name, value, "> 0", lambda v: v > 0)
+    if field == "thickness":  # and a radius distinct from the inner one in floating point
+        inner = radii[k - 1]
+        least = f">= {math.ulp(inner):.1g} (distinct radii next to R = {inner:g})"
+        valid = least if value > 0 else "> 0"
+        _number(name, value, valid, lambda v: v > 0 and inner + v > inner)
     elif field == "outer_radius":
         inner = radii[k - 1]
         outer = radii[k + 1] if k + 1 < len(radii) else math.inf
