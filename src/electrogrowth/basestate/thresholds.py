@@ -215,15 +215,19 @@ def _start(wall: Wall, P_i: float | None = None) -> tuple[float, float]:
     lambda_z found, and a state that exists reported lost)."""
     branch = Branch(wall, "pressure", vbar=0.0)
     xg, lg = start_guess(wall)
-    start, last_lz = xg, [lg]
+    start, last_lz, seen = xg, [lg], {}
     P_o = wall.tube.outer_pressure if P_i is None else P_i
 
     def f(x):
-        pt = clean(branch.at([x], last_lz[0]))
-        lz = float(pt["stretch"][0])
-        if math.isfinite(lz):
-            last_lz[0] = lz
-        return float(pt["P_i"][0] - P_o), lz
+        # remembered: continued lambda_z moves the rounding of a value at the same r_i, and
+        # Brent must see the signs that bracketed it (a root at the guess, f = -1e-16)
+        if x not in seen:
+            pt = clean(branch.at([x], last_lz[0]))
+            lz = float(pt["stretch"][0])
+            if math.isfinite(lz):
+                last_lz[0] = lz
+            seen[x] = float(pt["P_i"][0] - P_o), lz
+        return seen[x]
 
     f0, _ = f(xg)
     for j in range(1, 41):  # a guess past a Gent layer's lock: the nearest finite state
