@@ -285,6 +285,7 @@ def _advance(
             watch.x0,
             need,
             values=(watch.g[0, cand], g[js]),
+            fine_many=signed_fine,
         )
         for j, root in zip(js, roots):
             if root is None:  # the loose sign was wrong: the mode is not past a root yet

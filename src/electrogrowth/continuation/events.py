@@ -233,10 +233,13 @@ def first_roots(
     x0: float,
     need: int | None = None,
     values: tuple[np.ndarray, np.ndarray] | None = None,
+    fine_many: Callable[[float, np.ndarray], np.ndarray] | None = None,
 ) -> list:
     """Roots of the candidates ``cand``, which changed sign between xa (each its own last
     sample) and x by the loose ``signed(x, cand)``; ``fine(x, i)`` is the accurate signed
     value of candidate i. ``values``: the loose values at xa and at x, if known.
+    ``fine_many(x, cand)``: the accurate signs of many candidates at once (a batch), if
+    given, for the check of the LATER ones.
 
     A single candidate with its ``values`` is finished by :func:`_near_root`.
 
@@ -278,7 +281,9 @@ def first_roots(
 
     for k in keep:
         finish(k)
-    _later_before(signed, fine, cand, (xa, x, x0), lo, hi, out, need, finish)
+    if fine_many is None:
+        fine_many = lambda y, idx: np.array([fine(y, int(i)) for i in idx])  # noqa: E731
+    _later_before(signed, fine_many, cand, (xa, x), lo, hi, out, need, finish)
     return out
 
 
@@ -287,7 +292,7 @@ def first_roots(
 LATER_DOUBT = 1e-3
 
 
-def _later_before(signed, fine, cand, where, lo, hi, out, need, finish) -> None:
+def _later_before(signed, fine_many, cand, where, lo, hi, out, need, finish) -> None:
     """Finish the LATER candidates whose fine value is past zero at the need-th root found
     (at x if fewer were found): the pack was chosen by loose signs, which cannot order
     roots closer than their error (a film's folds 1e-8 apart: the scan reported (70, 1)
@@ -295,18 +300,20 @@ def _later_before(signed, fine, cand, where, lo, hi, out, need, finish) -> None:
     its root after it: LATER stands. Every LATER candidate is read loosely there, one
     sample each: its loose bracket says nothing (a film's (70, 0), its fine root before
     the need-th, had its loose bracket 1 % of the path past it). ``where``: (the samples
-    xa, the step's end x, the path's start x0)."""
+    xa, the step's end x)."""
     later = [k for k, r in enumerate(out) if r is LATER]
     if not later:
         return
-    xa, x, _ = where
+    xa, x = where
     sense = sense_of(x, xa)
     roots = sorted((r for r in out if isinstance(r, float)), key=lambda r: sense * r)
     at = roots[need - 1] if len(roots) >= need else x
     loose = signed(at, cand[later])
-    for k, v in zip(later, loose):
-        if not v <= LATER_DOUBT or fine(at, int(cand[k])) > 0:
-            continue
+    doubt = [k for k, v in zip(later, loose) if v <= LATER_DOUBT]
+    if not doubt:
+        return
+    past = np.asarray(fine_many(at, cand[doubt])) <= 0  # near a short wave: hundreds
+    for k in np.asarray(doubt)[past]:
         out[k] = None
         if sense * (lo[k] - at) >= 0:  # its bracket was narrowed past ``at`` by loose signs
             lo[k] = xa[k]
