@@ -82,3 +82,34 @@ def test_nothing_is_reused_when_a_found_mode_is_not_a_row_of_the_new_grid(narrow
     probed = scan_grid((0, 12), N_RANGE, True, FAMILIES)
     smaller = scan_grid((0, 6), N_RANGE, False, FAMILIES)
     assert grid_scan.reused(smaller, (probed, narrow), 5) is None
+
+
+def test_a_cut_march_whose_margin_does_not_resolve_ends_empty(monkeypatch):
+    """A march cut at ``until`` goes UNTIL_MARGIN past it (march.py); where the states of
+    that margin do not resolve (the tube next to a lock), the march resolved up to
+    ``until`` and found nothing there: an empty result, not the ConvergenceError of a march
+    that could not reach its end. Here no state beyond g_theta = 1.0004 resolves, from a
+    neighbour or from cold."""
+    from electrogrowth.bifurcation import along, state_loss
+    from electrogrowth.bifurcation.march import UNTIL_MARGIN, first_bifurcations
+    from electrogrowth.errors import ConvergenceError
+    from electrogrowth.incremental.accuracy import SCAN_SIGNS
+    from electrogrowth.incremental.targets import ImpedanceTarget
+
+    def locked(solve):
+        def state(tube, *args, **kwargs):
+            if tube.layers[0].growth[1] > 1.0004:
+                raise ConvergenceError("not resolved next to the lock")
+            return solve(tube, *args, **kwargs)
+
+        return state
+
+    monkeypatch.setattr(along, "solve_base_state", locked(along.solve_base_state))
+    monkeypatch.setattr(state_loss, "solve_base_state", locked(state_loss.solve_base_state))
+    modes = np.array([(0, 1, 0), (2, 1, 0)], float)
+    loose = ImpedanceTarget(SCAN_SIGNS)
+    assert UNTIL_MARGIN > 1e-4  # the margin reaches past 1.0004 (scale 1)
+    res = first_bifurcations(FILM, CONTROL, None, modes, loose, top=2, until=1.0003)
+    assert res.found == [] and res.threshold is None
+    with pytest.raises(ConvergenceError):  # not resolved before ``until``: said
+        first_bifurcations(FILM, CONTROL, None, modes, loose, top=2, until=1.0005)

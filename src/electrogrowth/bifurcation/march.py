@@ -157,6 +157,7 @@ def first_bifurcations(
         stable_signs = unloaded_signs(params, modes, targets)
     sref = stable_signs
     path = ControlPath(*control_path(params, solve_for, side))
+    asked = until
     if until is not None:  # a margin past it: a loose root there may be a fine one before
         until += path.sense * UNTIL_MARGIN * path.scale
     cut = until is not None and path.sense * (path.end - until) > 0
@@ -221,6 +222,8 @@ def first_bifurcations(
         reach = watch.reach(steps.safety, steps.smallest * path.scale)
         step.accept(x, state.lambda_i, reach / path.scale)
     found.sort(key=lambda mv: sense * mv.value)
+    if not found and cut and unresolved is not None and sense * (x - asked) >= 0:
+        return MarchResult([], None)  # resolved up to ``until``: only its margin was not
     if not found and unresolved is not None:  # neither a loss nor a wrinkle is established
         err = ConvergenceError(
             f"no mode bifurcates for {solve_for} from {x0:.12g} up to {x:.12g}, and the base"
