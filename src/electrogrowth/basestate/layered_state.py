@@ -141,7 +141,11 @@ class LayeredState:
             # int tau 2 pi r dr. At free ends N_int is ~0 while its integrand is ~mu times
             # the wall's area: measured against |N_int|, a stiff core's rounding (1000 : 1)
             # refused every node count
-            area = math.pi * (r2[-1] - r2[0]) / (0.5 * math.log(r2[-1] / r2[0]))
+            # (its limit 2 pi r^2 where the wall is thin against r: an inflated tube next to
+            # its asymptote, r_i ~ 1e9, where the quotient was 0 / 0 and numpy warned)
+            d, r2_i = float(r2[-1] - r2[0]), float(r2[0])
+            half_log = 0.5 * math.log1p(d / r2_i)
+            area = math.pi * d / half_log if half_log > 0 else 2.0 * math.pi * r2_i
             axial = max(1.0, abs(nint), abs(ends), abs(scale) * area)
             errors.append(abs(applied - tube.axial_force) / axial)
         return cls(
