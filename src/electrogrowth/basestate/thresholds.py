@@ -216,7 +216,10 @@ def _start(wall: Wall, P_i: float | None = None) -> tuple[float, float]:
     branch = Branch(wall, "pressure", vbar=0.0)
     xg, lg = start_guess(wall)
     start, last_lz, seen = xg, [lg], {}
-    P_o = wall.tube.outer_pressure if P_i is None else P_i
+    target = wall.tube.outer_pressure if P_i is None else P_i
+    which = (
+        "unloaded state (V = 0, P_i = P_o)" if P_i is None else f"state at V = 0, P_i = {P_i:g}"
+    )
 
     def f(x):
         # remembered: continued lambda_z moves the rounding of a value at the same r_i, and
@@ -226,7 +229,7 @@ def _start(wall: Wall, P_i: float | None = None) -> tuple[float, float]:
             lz = float(pt["stretch"][0])
             if math.isfinite(lz):
                 last_lz[0] = lz
-            seen[x] = float(pt["P_i"][0] - P_o), lz
+            seen[x] = float(pt["P_i"][0] - target), lz
         return seen[x]
 
     f0, _ = f(xg)
@@ -236,7 +239,7 @@ def _start(wall: Wall, P_i: float | None = None) -> tuple[float, float]:
         xg = start * 1.1 ** (j // 2 + 1) if j % 2 else start / 1.1 ** (j // 2)
         f0, _ = f(xg)
     if not np.isfinite(f0):
-        raise BaseStateError("no unloaded state (V = 0, P_i = P_o) found for this tube")
+        raise BaseStateError(f"no {which} found for this tube")
     if f0 == 0:
         return xg, f(xg)[1]
     step, last, f_last = 1.1, xg, f0
@@ -257,7 +260,7 @@ def _start(wall: Wall, P_i: float | None = None) -> tuple[float, float]:
                 break
             return x, f(x)[1]
         last, f_last = nxt, fn
-    raise BaseStateError("no unloaded state (V = 0, P_i = P_o) found for this tube")
+    raise BaseStateError(f"no {which} found for this tube")
 
 
 @dataclasses.dataclass(frozen=True)
