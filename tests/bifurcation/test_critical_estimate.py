@@ -19,6 +19,7 @@ from electrogrowth.bifurcation import critical, error_estimate
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.cli.app import main
 from electrogrowth.model.layers import Layer
+from electrogrowth.model.materials import mooney_rivlin
 from electrogrowth.outcomes import Status
 
 PARAMS = Tube.uniform(outer_radius=1.4, length=1.0, voltage=0.4)
@@ -199,7 +200,7 @@ def _curved(root, calls):
 @pytest.mark.parametrize("offset", [-4e-11, -1e-12, 3e-13, 2e-12, 5e-11])
 def test_secant_estimate_is_the_distance_to_the_root(offset):
     """Past the root (interpolated, 2 evaluations) and before it (extrapolated and checked,
-    3 evaluations), on both senses of the path."""
+    3 evaluations), on both senses of the path; then two reads of the rounding noise."""
     for root, path in ((1.3, (1.0, 6.0)), (0.7, (1.0, 0.5))):
         calls = []
         sense = 1.0 if path[1] > path[0] else -1.0
@@ -207,7 +208,7 @@ def test_secant_estimate_is_the_distance_to_the_root(offset):
         g = _curved(root, calls) if sense > 0 else (lambda x, f=_curved(root, calls): -f(x))
         est = error_estimate.second_resolution(g, value, path)
         assert est == pytest.approx(abs(value - root), rel=1e-4)
-        assert len(calls) == (2 if offset > 0 else 3)
+        assert len(calls) == (2 if offset > 0 else 3) + len(error_estimate.NOISE_OFFSETS)
 
 
 def test_secant_estimate_falls_back_without_a_sign_change():
@@ -286,7 +287,7 @@ def test_secant_estimate_keeps_a_straight_line_far_from_the_value():
 
     est = error_estimate.second_resolution(g, 1.3, (1.0, 6.0))
     assert est == pytest.approx(0.3 * h, rel=1e-6)
-    assert len(calls) == 3
+    assert len(calls) == 3 + len(error_estimate.NOISE_OFFSETS)
 
 
 def test_a_stiff_thin_films_value_is_certified_and_its_estimate_bounds_its_error():
@@ -332,3 +333,42 @@ def test_collocation_floor_is_the_rounding_noise_over_the_slope():
     assert 1e-10 <= est <= 4e-9
     clean = error_estimate.collocation_floor(lambda x: 1e-3 * (1.3 - x), 1.3 + 2e-11, (1.0, 6.0))
     assert clean == pytest.approx(2e-11, rel=1e-3)
+
+
+def test_the_second_resolution_is_at_least_its_rounding_noise_over_the_slope():
+    """A straight coarse target 1e-5 (1.3 - x) with noise of amplitude 1e-16 (a deterministic
+    hash of x - 1.3) that vanishes at the value 1.3: the secant alone says 0, while the root
+    is known only to the noise over the slope, read 1.3e-12 on either side."""
+
+    def noise(x):
+        return 1e-16 * math.sin(1e15 * (x - 1.3))
+
+    est = error_estimate.second_resolution(lambda x: 1e-5 * (1.3 - x) + noise(x), 1.3, (1.0, 6.0))
+    read = max(abs(noise(1.3 + t)) for t in (-1.3e-12, 1.3e-12)) / 1e-5
+    assert read > 1e-12
+    assert est == pytest.approx(read, rel=1e-3)
+
+
+@pytest.mark.parametrize(
+    "layers",
+    [
+        (Layer(1.5),),
+        (
+            Layer(1.3, shear_modulus=3.0),
+            Layer(1.5, shear_modulus=0.3, material=mooney_rivlin(0.5)),
+        ),
+    ],
+    ids=["one layer", "bilayer"],
+)
+def test_a_small_critical_force_is_within_its_estimates(layers):
+    """Euler buckling (1, 1) of a tube 200 long under force control (probe round 6a): the
+    target is ~1e-15 over the window with rounding noise ~5e-16 on a slope of ~7e-6, so the
+    critical force (-2.4e-3, -3.6e-3) is known to ~5e-11 whatever rtol. Solved at four rtol,
+    any two values lie within the sum of their estimates (they did not: values 6.0e-11 apart
+    with estimates of 9.5e-12 and 3.1e-11; one layer 3.0e-11 against 2.1e-11)."""
+    tube = Tube(layers, length=200.0, axial_force=0.0)
+    pts = [critical_value(tube, 1, 1, "force", rtol=r) for r in (1e-11, 1e-12, 1e-13, 1e-14)]
+    assert all(p.status == Status.OK for p in pts)
+    for a in pts:
+        for b in pts:
+            assert abs(a.value - b.value) <= a.error_estimate + b.error_estimate

@@ -1,6 +1,7 @@
 """The error estimate of a critical value (bifurcation/critical.py): the distance from the
-value to the root of the same mode's target at a second resolution, and for collocation
-the floor its determinant's rounding puts under any root it finds.
+value to the root of the same mode's target at a second resolution, and at least the floor
+the target's rounding puts under any root (measured at the value: collocation's dense
+determinant with the fine target, the kernel's with the second resolution's).
 """
 
 from __future__ import annotations
@@ -18,11 +19,17 @@ def second_resolution(g_coarse, value: float, path: tuple[float, float]) -> floa
     value, clipped to the march's ``path`` (start, end): the probes stay in the control's
     domain (a window of +-4.2 put a growth at -0.16), and a root before the start is not
     this one. Without a root in the widest window the estimate is that window's half-width
-    (the looser root is at least that far): an uncertified value, not a failure."""
+    (the looser root is at least that far): an uncertified value, not a failure.
+
+    The secant's distance is at least the second resolution's rounding noise over its slope
+    (:func:`rounding_floor`, two more evaluations): a long tube's Euler mode (L = 200, a
+    critical force -3.6e-3) has a target of ~1e-15 over the window, rounding noise of 5e-16
+    and a slope of 7e-6, so its roots are known to ~7e-11 while a single secant sampled that
+    noise once (2e-12 to 5e-11 at four rtol)."""
     g_coarse = Remembered(g_coarse)  # Brent evaluates a window's ends again
     fast = secant_estimate(g_coarse, value, path)
     if fast is not None:
-        return fast
+        return max(fast, rounding_floor(g_coarse, value, path, NOISE_OFFSETS))
     bounds = (min(path), max(path))
     windows = list(widening_windows(value, SECANT_STEP * max(1.0, abs(value)), 12, bounds=bounds))
     for lo, hi, _ in windows:
@@ -83,34 +90,41 @@ STRAIGHT = 1e-3
 def collocation_floor(g, value: float, path: tuple[float, float]) -> float:
     """How far collocation's own root may be from ``value``: the larger of its secant's
     distance (:func:`secant_estimate`: two resolutions share the determinant's rounding,
-    flat over ~1e-10 about the root) and its rounding noise over the slope there.
-
-    The noise is measured, not modelled: g at ROUNDING_OFFSETS max(1, |value|) about the
-    value, where g is a straight line to ~1e-18, departs from the secant's line by its
-    rounding alone; the largest departure over |g'| is a distance within which the root is
-    not known. A film 0.005 thick and 4425 times stiffer (mode (16, 0)) has departures of
-    1e-16 on a slope of 6e-10 at 56 nodes: 2e-7, where its roots scatter by 2e-8 with the
-    node count and the base state's last digits, and the two resolutions had agreed to 2e-10
-    (docs/derivation.md section 6). For a well-conditioned target the floor is ~1e-13."""
+    flat over ~1e-10 about the root) and its rounding noise (:func:`rounding_floor`) at
+    ROUNDING_OFFSETS. A film 0.005 thick and 4425 times stiffer (mode (16, 0)) has
+    departures of 1e-16 on a slope of 6e-10 at 56 nodes: 2e-7, where its roots scatter by
+    2e-8 with the node count and the base state's last digits, and the two resolutions had
+    agreed to 2e-10 (docs/derivation.md section 6)."""
     secant = secant_estimate(g, value, path) or 0.0
+    return max(secant, rounding_floor(g, value, path, ROUNDING_OFFSETS))
+
+
+def rounding_floor(g, value: float, path: tuple[float, float], offsets) -> float:
+    """The distance within which a root of g is not known for its rounding: the largest
+    departure of g at ``offsets`` max(1, |value|) about the value (where the true g is a
+    straight line to ~1e-18) from the line through g at the value with the slope of the
+    secant back SECANT_STEP max(1, |value|) towards the path's start, over that slope. For a
+    well-conditioned target the floor is ~1e-15; 0 where the line is not available."""
     lo, hi = min(path), max(path)
-    h = SECANT_STEP * max(1.0, abs(value))
+    scale = max(1.0, abs(value))
+    h = SECANT_STEP * scale
     sense = 1.0 if path[1] >= path[0] else -1.0
     back = value - sense * h
     if not lo <= back <= hi:
-        return secant
+        return 0.0
     g0, g1 = g(value), g(back)
     slope = (g0 - g1) / (sense * h)
     if not (math.isfinite(slope) and slope != 0.0):
-        return secant
-    scale = max(1.0, abs(value))
+        return 0.0
     departure = 0.0
-    for t in ROUNDING_OFFSETS:
+    for t in offsets:
         x = value + t * scale
         if lo <= x <= hi:
             departure = max(departure, abs(g(x) - g0 - slope * (x - value)))
-    return max(secant, departure / abs(slope))
+    return departure / abs(slope) if math.isfinite(departure) else 0.0
 
 
 #: offsets (relative to max(1, |value|)) at which collocation's rounding noise is read
 ROUNDING_OFFSETS = (-2e-12, -1e-12, 1e-12, 2e-12)
+#: ... and the second resolution's (two reads: they are paid by every critical value)
+NOISE_OFFSETS = (-1e-12, 1e-12)
