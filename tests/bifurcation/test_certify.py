@@ -9,6 +9,7 @@ import dataclasses
 import json
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from electrogrowth import (
@@ -183,3 +184,20 @@ def test_a_judge_that_missed_its_own_accuracy_says_so(monkeypatch):
     monkeypatch.setattr(certify_module, "critical_value", unresolved)
     with pytest.raises(ConvergenceError, match="collocation did not resolve this mode"):
         certify(P, crit)
+
+
+def test_the_kernel_signs_of_the_choice_are_its_tight_signs_next_to_a_root():
+    """The choice reads every scanned mode's sign at 1e-9 and 1e-7, and at 1e-12 where those
+    do not agree: next to the root of (3, 1) (from 1e-3 to 1e-11 before and after it) the
+    signs are those at 1e-12, and they change at the root."""
+    from electrogrowth import solve_base_state
+    from electrogrowth.incremental.targets import impedance_targets
+
+    crit = critical_value(P, 3, 1, "growth")
+    rows = np.array([[3, 1], [2, 1], [0, 1], [5, 0]], dtype=float)
+    for d in (-1e-3, -1e-7, -1e-9, -1e-11, 1e-11, 1e-9, 1e-7, 1e-3):
+        state = solve_base_state(P.at("growth", crit.value + d))
+        signs = certify_module.kernel_signs(state, rows)
+        tight = np.sign(impedance_targets(state, rows, rtol=certify_module.SIGN_RTOL))
+        np.testing.assert_array_equal(signs, tight)
+        assert signs[0] == (1.0 if d < 0 else -1.0)  # stable before the root, not after

@@ -10,12 +10,12 @@ import time
 import numpy as np
 
 from electrogrowth import ScanOptions, Tube, solve_base_state
-from electrogrowth.bifurcation.certify import _one_by_one
+from electrogrowth.bifurcation import certify
 from electrogrowth.bifurcation.curves import critical_curve
 from electrogrowth.cli.app import main
 from electrogrowth.cli.critical import _Progress
 from electrogrowth.cli.progress import stage
-from electrogrowth.incremental.targets import collocation_targets
+from electrogrowth.incremental.targets import impedance_targets
 
 SWITCHING = dict(side="compression", options=ScanOptions((0, 2), (1, 2)))  # (1, 1) -> (0, 1)
 
@@ -77,16 +77,21 @@ def test_figure_commands_name_their_stages_on_a_terminal(tmp_path, capsys, monke
 
 def test_certify_counts_the_modes_it_checks_and_changes_no_value(capsys, monkeypatch):
     monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
+    monkeypatch.setattr(certify, "BATCH", 2)  # two batches: 2 of 3 done, then 3
     state = solve_base_state(Tube.uniform(1.4, 1.0, growth=1.2, voltage=0.4))
     modes = np.array([[0, 1], [2, 1], [3, 0]], dtype=float)
     progress = _Progress(argparse.Namespace(quiet=False))
-    f = _one_by_one(lambda row: collocation_targets(state, row)[0], modes, progress)
+    f = certify._in_batches(lambda rows: impedance_targets(state, rows), modes, progress)
     progress.close()
-    np.testing.assert_array_equal(f, collocation_targets(state, modes))  # one at a time
+    np.testing.assert_array_equal(f, impedance_targets(state, modes))  # in batches
     err = capsys.readouterr().err
     assert "certifying: every scanned mode stable before it" in err and "3/3" in err
+    reports = []
+    record = lambda done, total: reports.append((done, total))  # noqa: E731
+    certify._in_batches(lambda rows: impedance_targets(state, rows), modes, record)
+    assert reports == [(2, 3), (3, 3)]
     quiet = _Progress(argparse.Namespace(quiet=True))
-    _one_by_one(lambda row: collocation_targets(state, row)[0], modes, quiet)
+    certify._in_batches(lambda rows: impedance_targets(state, rows), modes, quiet)
     quiet.close()
     assert capsys.readouterr().err == ""
 

@@ -224,7 +224,7 @@ class _Progress:
                 self.args, total, "certifying: every scanned mode stable before it", "mode"
             )
         if self.bar is not None:
-            self.bar.update(1)
+            self.bar.update(done - self.bar.n)  # the modes of the last batch
 
     def close(self) -> None:
         if self.bar is not None:
