@@ -24,7 +24,7 @@ _EXPORTS = {
     ".basestate.layered": ("layered_threshold", "pressure_response", "voltage_response"),
     ".basestate.layered_state": ("LayeredState",),
     ".basestate.tube": ("solve_base_state", "threshold", "voltage_curve", "voltage_threshold"),
-    ".basestate.uniform": ("UniformState",),
+    ".basestate.uniform_state": ("UniformState",),
     ".basestate": ("BaseState",),
     ".bifurcation.certify": ("Certificate", "certify"),
     ".bifurcation.critical": ("CriticalPoint", "critical_value"),

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 
 from .. import _lazy
 from .tube import solve_base_state, threshold, voltage_curve, voltage_threshold
-from .uniform import UniformState
+from .uniform_state import UniformState
 
 #: The former name of :class:`UniformState` (kept for one release).
 BaseState = UniformState

@@ -77,7 +77,7 @@ def solve_base_state(
     Returns
     -------
     State
-        A :class:`~electrogrowth.basestate.uniform.UniformState` for a uniform tube, else a
+        A :class:`~electrogrowth.basestate.uniform_state.UniformState` for a uniform tube, else a
         :class:`~electrogrowth.basestate.layered_state.LayeredState`: the same protocol.
 
     Raises
