@@ -24,7 +24,7 @@ from ..bifurcation.scan import ScanOptions, scan_modes
 from ..bifurcation.verdict import advisory, crease_rival, creases
 from ..errors import ConvergenceError, ElectrogrowthError
 from ..interrupts import reraise_interrupt
-from .sensitivity import STEP, _derivative, key_value
+from .sensitivity import STEP, _derivative, key_value, relative_step
 
 CREASE_FIRST = "crease_first"  # first among the wrinkles in its region, but a crease comes first
 
@@ -67,13 +67,13 @@ def crease_sensitivities(tube, solve_for: str, value: float, keys, *, step: floa
             raise ConvergenceError(f"the {face} is no crease candidate at {solve_for} = {v:g}")
         return f.drives[trigger] - 1.0
 
-    h_v = _derivative(lambda v: h(tube, v), value, step * max(1.0, abs(value)))
+    h_v = _derivative(lambda v: h(tube, v), value, relative_step(value, step))
     if not math.isfinite(h_v) or h_v == 0.0:
         raise ConvergenceError(f"the crease drive does not change with {solve_for} at {value:g}")
     out = {}
     for key in keys:
         p = key_value(tube, key)
-        h_p = _derivative(lambda q, key=key: h(tube.at(key, q), value), p, step * max(1.0, abs(p)))
+        h_p = _derivative(lambda q, key=key: h(tube.at(key, q), value), p, relative_step(p, step))
         out[key] = -h_p / h_v
     return out
 

@@ -1,30 +1,44 @@
 """Sensitivity of one mode's critical value to every parameter of the tube.
 
-At the critical value v of mode (m, n) the pole-free target of the incremental problem
-vanishes, f(v, p) = 0 (incremental/targets.py: the function critical_value root-solves),
-with p any other parameter of the tube. Where f_v = df/dv != 0 the implicit function theorem
-gives a smooth v(p) with f(v(p), p) = 0, and differentiating that identity,
+At the critical value v of mode (m, n) the incremental problem is singular: with p any
+other parameter of the tube, D(v, p) = 0 for D = det(M2) of the basis carried from the inner
+face (incremental.targets.analytic_parts), analytic in both, with the roots and signs of the
+kernel's target f. Where D_v = dD/dv != 0 the implicit function theorem gives a smooth v(p)
+with D(v(p), p) = 0, and differentiating that identity,
 
-    f_v dv/dp + f_p = 0,   so   dv/dp = -f_p / f_v.
+    D_v dv/dp + D_p = 0,   so   dv/dp = -D_p / D_v.
 
-Both partials are central differences of f (target evaluations only, no root solve) at
-an absolute step h = 1e-4 max(1, |p|) and h / 2, combined by Richardson extrapolation,
-(4 D(h/2) - D(h)) / 3, which cancels the O(h^2) error of the central difference D: the
-targets of thick layered tubes at high m are strongly curved in p, where D(h) alone is off
-by ~1e-4 at h = 1e-4. Where p cannot be moved both ways (a bound of its range) a one-sided
-second-order difference is used.
-docs/design.md derives it and tests/design/test_sequence.py compares it with
-finite differences of full critical_value solves.
+D, not f: f = D / |M| divides out the size of the basis, and for a mode living at the inner
+face (a stiff inner film's folds, its rings) that size holds the factor that crosses zero,
+so f is a step of constant size about the root (+-1.9e-10 for a film 0.008 thick, 100 times
+as stiff as its substrate) and -f_p / f_v came out near v itself (1.074 for 6.349, probe
+round 7b). Where the kernel fails and D is not available, f is differentiated (its
+fallback's target, the same roots).
+
+Both partials are central differences at a step h = 1e-4 |p| (1e-4 at p = 0) and h / 2,
+combined by Richardson extrapolation, (4 D(h/2) - D(h)) / 3, which cancels the O(h^2) error
+of the central difference: the targets of thick layered tubes at high m are strongly curved
+in p, where D(h) alone is off by ~1e-4 at h = 1e-4. The step is relative: the absolute
+1e-4 max(1, |p|) of before was 10 % of a film 0.001 thick. Where p cannot be moved both ways
+(a bound of its range) a one-sided second-order difference is used.
+docs/design.md derives it and tests/design/test_sequence.py and
+tests/design/test_sensitivity_inner_film.py compare it with finite differences of full
+critical_value solves.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
+import numpy as np
+
 from ..basestate.tube import solve_base_state
+from ..bifurcation.along import MAX_EXPONENT
 from ..bifurcation.critical import control_name
 from ..errors import ConvergenceError, ParameterError
 from ..incremental.accuracy import Accuracy
+from ..incremental.radial_table import layer_units
 from ..incremental.targets import check_mode, targets_for, with_family
 from ..model.layers import Tube
 
@@ -49,19 +63,13 @@ def key_value(tube: Tube, key: str) -> float:
 
 
 def _derivative(f, x: float, h: float) -> float:
-    """df/dx by a central difference, or a one-sided second-order one where x - h or x + h
-    is out of the parameter's range."""
+    """df/dx by a central difference, or a one-sided one (:func:`_one_sided`) where x - h or
+    x + h is out of the parameter's range."""
     try:  # Richardson: (4 D(h/2) - D(h)) / 3 cancels the h^2 term of the central D(h)
         near, far = f(x + h / 2) - f(x - h / 2), f(x + h) - f(x - h)
         return (8 * near - far) / (6 * h)
     except ParameterError:
-        pass
-    for s in (1.0, -1.0):
-        try:
-            return s * (-3 * f(x) + 4 * f(x + s * h) - f(x + 2 * s * h)) / (2 * h)
-        except ParameterError:
-            continue
-    raise ParameterError(f"cannot vary the parameter at {x:g} by {h:g} either way")
+        return _one_sided(f, x, h)
 
 
 def sensitivities(
@@ -91,33 +99,100 @@ def sensitivities(
     Returns
     -------
     dict
-        key -> dv/dp = -f_p / f_v (module docstring).
+        key -> dv/dp = -D_p / D_v (module docstring).
 
     Raises
     ------
     ConvergenceError
-        If f_v vanishes (a fold of the mode's branch: v(p) is not differentiable there).
+        If D_v vanishes (a fold of the mode's branch: v(p) is not differentiable there).
     """
     solve_for = control_name(tube, solve_for)
     fam = check_mode(*mode, family)
-    modes = with_family(*mode, fam)
-    targets = targets_for("impedance", Accuracy(rtol).fine)
+    target = Determinant(targets_for("impedance", Accuracy(rtol).fine), with_family(*mode, fam))
+    try:
+        return _implicit(target, tube, solve_for, value, keys, step)
+    except _NoDeterminant:
+        return _implicit(target.plain, tube, solve_for, value, keys, step)
+
+
+def _implicit(target, tube, solve_for, value, keys, step) -> dict[str, float]:
+    """dv/dp = -D_p / D_v of ``target`` (a function of a tube) for every key (module
+    docstring)."""
 
     def f(t, v: float) -> float:
-        return float(targets(solve_base_state(t.at(solve_for, v)), modes)[0])
+        return target(t.at(solve_for, v))
 
-    f_v = _derivative(lambda v: f(tube, v), value, step * max(1.0, abs(value)))
+    f_v = _derivative(lambda v: f(tube, v), value, relative_step(value, step))
     if not math.isfinite(f_v) or f_v == 0.0:
         raise ConvergenceError(
-            f"df/d{solve_for} vanishes at {solve_for} = {value:g} for mode {tuple(mode)}: a"
-            " fold of the branch, where the critical value is not differentiable"
+            f"dD/d{solve_for} vanishes at {solve_for} = {value:g}: a fold of the mode's"
+            " branch, where the critical value is not differentiable"
         )
     out = {}
     for key in parameter_keys(tube, solve_for) if keys is None else keys:
         p = key_value(tube, key)
-        f_p = _derivative(lambda q, key=key: f(tube.at(key, q), value), p, step * max(1.0, abs(p)))
+        h = relative_step(p, step)
+        f_key = lambda q, key=key: f(tube.at(key, q), value)  # noqa: E731
+        f_p = _one_sided(f_key, p, h) if _units_bend(tube, key, p, h) else _derivative(f_key, p, h)
         out[key] = -f_p / f_v
     return out
+
+
+def _units_bend(tube, key: str, p: float, h: float) -> bool:
+    """Do the kernel's table units (radial_table.layer_units) bend between p - h and p + h?
+    D is in those units, a power of them: at a bend (a layer's modulus of 1 where it is the
+    smallest or largest) its central difference takes the average of the two sides' powers,
+    off by h / 2 relative (5e-5 for a substrate of modulus 1 under a film of 10)."""
+    try:
+        u = np.array([layer_units(tube.at(key, q).layers) for q in (p - h, p, p + h)])
+    except ParameterError:
+        return False  # the central difference is not taken there anyway
+    return bool(np.any(abs(u[0] - 2.0 * u[1] + u[2]) > 1e-12 * abs(u).max(0)))
+
+
+def _one_sided(f, x: float, h: float) -> float:
+    """df/dx from one side (the upper one, else the lower), second order, Richardson
+    extrapolated: (4 D(h/2) - D(h)) / 3 cancels the h^2 term of D(h) = s (-3 f(x) +
+    4 f(x + s h) - f(x + 2 s h)) / (2 h)."""
+    for s in (1.0, -1.0):
+        try:
+            f0, f1, f2, f4 = (f(x + s * t * h) for t in (0.0, 0.5, 1.0, 2.0))
+        except ParameterError:
+            continue
+        near, far = s * (-3 * f0 + 4 * f1 - f2) / h, s * (-3 * f0 + 4 * f2 - f4) / (2 * h)
+        return (4 * near - far) / 3
+    raise ParameterError(f"cannot vary the parameter at {x:g} by {h:g} either way")
+
+
+def relative_step(x: float, step: float = STEP) -> float:
+    """The difference step for a parameter at x: step |x|, or step at x = 0."""
+    return step * abs(x) if x != 0.0 else step
+
+
+class _NoDeterminant(Exception):
+    """The kernel failed at a tube: D is not available there (only its fallback's f)."""
+
+
+@dataclasses.dataclass
+class Determinant:
+    """D = det(M2) of one mode as a function of the tube, in units of its size at the first
+    tube asked (one scale for every partial: their ratio is what is wanted; that keeps it
+    representable); ``plain``: the kernel's f instead."""
+
+    targets: object
+    modes: np.ndarray
+    ref: float | None = None
+
+    def __call__(self, tube) -> float:
+        f, log_norm = (float(v[0]) for v in self.targets.parts(solve_base_state(tube), self.modes))
+        if not math.isfinite(log_norm):
+            raise _NoDeterminant
+        if self.ref is None:
+            self.ref = log_norm
+        return f * math.exp(min(max(log_norm - self.ref, -MAX_EXPONENT), MAX_EXPONENT))
+
+    def plain(self, tube) -> float:
+        return float(self.targets(solve_base_state(tube), self.modes)[0])
 
 
 def sensitivity_json(outcome) -> dict:

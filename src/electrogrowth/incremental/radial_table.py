@@ -122,7 +122,13 @@ def _cheb_coefficients(values: np.ndarray) -> np.ndarray:
 def table_units(state) -> tuple[float, float]:
     """(mu_ref, eps_ref) of the table of ``state``: 1 where the layers' shear moduli
     (permittivities) straddle 1, else the one nearest to 1 (one layer: its own)."""
-    layers = state.tube.layers
+    return layer_units(state.tube.layers)
+
+
+def layer_units(layers) -> tuple[float, float]:
+    """:func:`table_units` of a tube with these ``layers`` (a piecewise linear function of
+    the moduli, bent where the smallest or largest crosses 1: the kernel's det(M2) carries
+    a power of them, design/sensitivity.py differentiates across no bend)."""
     mu = [layer.shear_modulus for layer in layers]
     eps = [layer.permittivity for layer in layers]
     # clip(1, lo, hi) in plain floats: a table is built at every step of a march
