@@ -28,6 +28,7 @@ import dataclasses
 import math
 
 from ..bifurcation.scan import TOP_MAX, ScanOptions, scan_modes
+from ..bifurcation.scan_grid import scan_grid
 from ..errors import ElectrogrowthError
 from ..outcomes import Kind
 from . import onset
@@ -43,6 +44,7 @@ NOT_REACHED = "not_reached"  # no target mode among the modes scanned anywhere
 REFINE_ROUNDS = 3  # a competitor missed by the refinement is added, at most this often
 XTOL = 1e-9  # relative accuracy of the best design
 AHEAD = 6  # competitors ahead of the closest design's target mode that are kept
+MEMBERS_MAX = 256  # a set's members solved directly when none is among a scan's first ones
 NO_DESIGN = "no design"  # limited_by: the gap to a located end of the valid range
 
 
@@ -200,7 +202,8 @@ def prescribe(
     if region:
         status, best = FOUND, _best_in_region(region, grid, goal, margins, scan, edges)
     else:
-        status, best = NOT_FIRST, _closest(grid, goal, margins, scan, lo, hi)
+        members = set_members(goal, options)
+        status, best = NOT_FIRST, _closest(grid, goal, margins, scan, members)
     if best is None:
         return _unreached(goal, key, sequence, region)
     x, mode, others = best
@@ -317,9 +320,11 @@ def _best_in_region(region, grid, goal: Target, margins: Margins, scan, edges=fr
     return None if best is None else best[1:]
 
 
-def _closest(grid, goal: Target, margins: Margins, scan, lo, hi):
+def _closest(grid, goal: Target, margins: Margins, scan, members):
     """(x, target mode, competitors ahead of it) where the best target mode comes closest
-    to first: M < 0 maximised."""
+    to first: M < 0 maximised. A set none of whose modes is among a scan's first TOP_MAX
+    (a film's 64 x 31 folds and wrinkles before its first ring) is ranked by solving its
+    scanned ``members`` directly (:func:`set_members`)."""
     scored = []
     for x in grid:
         ranked = scan(x)
@@ -330,6 +335,9 @@ def _closest(grid, goal: Target, margins: Margins, scan, lo, hi):
         if not hits and not goal.modes:  # a set's modes all come later: ranked further
             ranked = scan(x, TOP_MAX)
             hits = [(mode, v) for mode, v in ranked if mode in goal]
+            if not hits:  # ... past the first TOP_MAX: its members solved directly
+                solved = [(mode, margins.value(mode, x)) for mode in members]
+                hits = [(mode, v) for mode, v in solved if math.isfinite(v)]
         if not hits:
             continue
         mode, v = min(hits, key=lambda h: margins.sense * h[1])
@@ -350,6 +358,17 @@ def _closest(grid, goal: Target, margins: Margins, scan, lo, hi):
         b, others = scored[j + 1][1], others | set(scored[j + 1][3])
     x, others = _refine(mode, tuple(sorted(others)), a, b, x0, goal, margins, scan)
     return x, mode, others
+
+
+def set_members(goal: Target, options: ScanOptions) -> tuple:
+    """The modes of a set ``goal`` (not a list) among those a scan with ``options`` covers,
+    or none when they are more than MEMBERS_MAX (solved one by one at each design)."""
+    if goal.modes:
+        return ()
+    families = (options.prismatic, options.torsional)
+    rows = scan_grid(options.m_range, options.n_range, False, families)
+    found = tuple(dict.fromkeys((int(m), int(n)) for m, n, _ in rows if (m, n) in goal))
+    return found if len(found) <= MEMBERS_MAX else ()
 
 
 def _competitors(mode, ranked, goal: Target) -> list:
