@@ -194,10 +194,22 @@ def test_cli_text_summary(tmp_path, capsys):
         "--out",
         str(tmp_path),
     )
-    assert run_curve(args) == 0
-    out = capsys.readouterr().out
+    assert run_curve(args) == 2  # every point failed: written, but no result (as a sweep)
+    out, err = capsys.readouterr()
     assert "critical growth along stretch" in out and "Vbar = 0.6" in out
     assert "failed at stretch = 1.6" in out and "already unstable" in out
+    assert err.count("\n") == 1 and "every point of the curve failed (2)" in err
+    assert (tmp_path / "curve_growth_vs_stretch.csv").exists()
+
+
+def test_cli_a_curve_with_a_failed_point_exits_0(tmp_path, capsys):
+    args = _args(
+        "--solve-for", "growth", "--along", "stretch", "--from", "1.0", "--to", "1.6",
+        "--points", "2", "--voltage", "0.6", "--out", str(tmp_path),
+    )  # fmt: skip
+    assert run_curve(args) == 0
+    out, err = capsys.readouterr()
+    assert "failed at stretch = 1.6" in out and "every point" not in err
 
 
 def test_cli_help_speaks_the_papers_terms():

@@ -6,13 +6,15 @@ Registered in :data:`cli.COMMANDS` as ("...", configure_curve, run_curve). Write
 located) go to stderr when it is a terminal. Points whose critical value is not certified
 to the accuracy asked (status "inaccurate" in the CSV and JSON) get one warning line on
 stderr; the exit status stays 0 (unlike ``critical``): the curve is written, each such row
-marked.
+marked. A curve whose every point failed is written too, and exits 2 with one line naming
+the first failure (as a sweep does).
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -136,9 +138,29 @@ def run_curve(args) -> int:
     warn(_inaccurate_text(curve))
     if args.json:
         print(json.dumps({**curve.as_dict(), "csv": str(csv), "png": str(png)}))
+    else:
+        print("\n".join(summary(curve) + [str(csv), str(png)]))
+    return _all_failed(curve)
+
+
+def _failed(curve) -> list[int]:
+    """The rows of ``curve`` whose point failed."""
+    return [i for i, k in enumerate(curve.kind) if k in (Status.FAILED, Status.ERROR)]
+
+
+def _all_failed(curve) -> int:
+    """0, or 2 with one line naming the first failure when every point failed (as a sweep
+    does): a written curve of failures is no result."""
+    failed = _failed(curve)
+    if not failed or len(failed) < len(curve.kind):
         return 0
-    print("\n".join(summary(curve) + [str(csv), str(png)]))
-    return 0
+    first = " ".join(str(curve.status[failed[0]]).split())
+    print(
+        f"electrogrowth: error: every point of the curve failed ({len(failed)}); the first:"
+        f" {first}",
+        file=sys.stderr,
+    )
+    return 2
 
 
 def _inaccurate_text(curve) -> str:
@@ -225,8 +247,7 @@ def summary(curve) -> list[str]:
             + (after or f"{_mode(e.mode_after)} from {e.value_after:.12g}")
         )
     lines.append(crease_line(curve))
-    failed = [i for i, k in enumerate(curve.kind) if k in (Status.FAILED, Status.ERROR)]
-    for i in failed:
+    for i in _failed(curve):
         lines.append(f"  failed at {curve.along} = {curve.x[i]:.10g}: {curve.status[i]}")
     return lines
 
