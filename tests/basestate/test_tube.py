@@ -305,7 +305,7 @@ def test_gent_voltage_rises_without_bound_to_the_locking_stretch(jm):
     """Stiffening removes the neo-Hookean asymptote: no limit point, Vbar -> inf at locking."""
     p = params(2.0, 1.1, 1.0, 0.0, gent(jm))
     thr, kind, lam_lock = voltage_threshold(p)
-    assert kind == "none" and thr == math.inf
+    assert kind == "locking" and thr == math.inf
     l2, l3 = lam_lock / 1.1, 1.0 / 1.1  # locking: I1 = 3 + jm on the inner face
     assert l2**2 + l3**2 + 1 / (l2 * l3) ** 2 == pytest.approx(3 + jm, rel=1e-12)
     lam = np.linspace(solve_base_state(p).lambda_i * 1.001, lam_lock * (1 - 1e-6), 300)
@@ -547,12 +547,23 @@ def test_docstring_examples():
 
 @pytest.mark.slow
 def test_gent_has_no_limit_point_over_a_parameter_grid():
-    """docs/derivation-base-state.md Sec. 6: 72 cases, always 'none' at the locking stretch."""
+    """docs/derivation-base-state.md Sec. 6: 72 cases, always 'locking' at the locking stretch."""
     for jm in (20.0, 97.2, 500.0):
         for Ro in (1.1, 1.5, 2.0, 4.0):
             for lz in (0.8, 1.0, 1.5):
                 for g in (1.0, 1.2):
                     thr, kind, lam = voltage_threshold(params(Ro, g, lz, 0.0, gent(jm)))
                     l2, l3 = lam / g, lz / g
-                    assert kind == "none" and thr == math.inf
+                    assert kind == "locking" and thr == math.inf
                     assert l2**2 + l3**2 + 1 / (l2 * l3) ** 2 == pytest.approx(3 + jm, rel=1e-9)
+
+
+def test_a_gent_tube_has_one_threshold_kind_however_entered():
+    """Probe round 7a: 'none' for Tube.uniform(2, gent(5)), 'locking' for the same tube as
+    two identical layers (lambda_i 2.618034 both)."""
+    from electrogrowth import Layer, Tube, threshold
+
+    one = threshold(Tube.uniform(2.0, material=gent(5.0)), "voltage")
+    two = threshold(Tube((Layer(1.5, material=gent(5.0)), Layer(2.0, material=gent(5.0)))))
+    assert one.kind == two.kind == "locking" and one.value == two.value == math.inf
+    assert one.lambda_i == pytest.approx(two.lambda_i, rel=1e-12)

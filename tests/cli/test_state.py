@@ -61,7 +61,7 @@ def test_gent_material_and_its_parameter(capsys):
         Tube.uniform(outer_radius=2.0, growth=1.1, voltage=1.0, material=gent(50))
     )
     assert status == 0 and rec["lambda_i"] == state.lambda_i
-    assert rec["threshold_kind"] == "none" and rec["voltage_threshold"] is None
+    assert rec["threshold_kind"] == "locking" and rec["voltage_threshold"] is None
     assert rec["material"] == "gent(jm=50)"
 
 

@@ -41,10 +41,12 @@ def voltage_threshold(params: Tube) -> tuple[float, str, float]:
     -------
     (Vbar_threshold, kind, lambda_i) : tuple[float, str, float]
         kind "asymptote": Vbar -> Vbar_threshold as lambda_i -> inf (lambda_i = inf);
-        "limit point": first local maximum of Vbar(lambda_i), a snap-through; "none": Vbar
-        rises without bound (Vbar_threshold = inf), lambda_i = where the branch ends: the
-        locking stretch of the energy (e.g. Gent), where no charge balances the traction, or
-        where the stresses exceed the largest double (an exponential energy), else inf.
+        "limit point": first local maximum of Vbar(lambda_i), a snap-through; "locking":
+        Vbar rises without bound (Vbar_threshold = inf) up to where the branch ends, lambda_i:
+        the locking stretch of the energy (e.g. Gent), where no charge balances the traction,
+        or where the stresses exceed the largest double (an exponential energy); "none": Vbar
+        rises without bound as lambda_i -> inf (lambda_i = inf). The kinds of a layered
+        tube's :class:`~electrogrowth.basestate.thresholds.Threshold`.
         ``params.voltage`` is ignored.
 
     >>> round(voltage_threshold(Tube.uniform(outer_radius=2.0, growth=1.1))[0], 6)

@@ -246,8 +246,8 @@ def _secant(f, x0: float) -> float:
 class _Threshold:
     lambda_i0: float  # purely mechanical state, Vbar = 0
     value: float  # Vbar threshold (inf if none)
-    kind: str  # "asymptote", "limit point" or "none"
-    lambda_i: float  # lambda_i at the threshold (inf: asymptote; locking stretch: "none")
+    kind: str  # "asymptote", "limit point", "locking" or "none" (as a layered Threshold)
+    lambda_i: float  # lambda_i at the threshold (inf: asymptote; the branch's end: "locking")
     error: float  # estimated absolute error of value
     nodes: int  # Gauss-Legendre nodes meeting rtol (0: neo-Hookean closed form, no quadrature)
     grid: np.ndarray  # lambda_i on the monotone branch, from lambda_i0 ...
@@ -322,7 +322,7 @@ def cell_root(f, a: float, b: float) -> float:
 @functools.lru_cache(maxsize=4096)
 def _threshold(material, outer_radius, growth, stretch, rtol) -> _Threshold:
     """Scan Vbar(lambda_i) geometrically from lambda_i0 for the first local maximum; without one,
-    Vbar -> inf at a locking stretch ("none"), or the asymptote (neo-Hookean closed form, else
+    Vbar -> inf at a locking stretch ("locking"), or the asymptote (neo-Hookean closed form, else
     Richardson extrapolation in x = lambda_i^-2, whose order is measured)."""
     if energy_kind(material) == "neo-hookean":  # (NH-5, NH-6): nothing to scan
         lam0 = math.sqrt(growth**3 / stretch)
@@ -359,7 +359,7 @@ def _threshold(material, outer_radius, growth, stretch, rtol) -> _Threshold:
             x = np.linspace(a, b, 65)
             j = np.argmin(exists(x)) - 1
             a, b = x[j], x[j + 1]
-        return _Threshold(value=math.inf, kind="none", lambda_i=a, **out)
+        return _Threshold(value=math.inf, kind="locking", lambda_i=a, **out)
     # Richardson: Vbar = V_inf + a x^p + b x^(p+1) + ..., x = lambda_i^-2 (p = 2 for nH, MR)
     t = tube.voltage(100.0 * lam0 * 2.0 ** np.arange(5))  # x shrinks 4x per step
     d = np.diff(t)
