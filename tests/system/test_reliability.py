@@ -21,7 +21,7 @@ def test_gent_node_count_is_found_near_the_locking_stretch(growth):
     """Was: "quadrature not converged to rtol = 1e-12 with 384 nodes" where the probe
     3 lambda_i0 fell just inside Gent's locking stretch (Jm = 10, Rbar_o = 1.4)."""
     info = voltage._threshold(gent(10), 1.4, float(growth), 1.0, 1e-12)
-    assert info.kind == "none" and info.nodes <= 64
+    assert info.kind == "locking" and info.nodes <= 64
 
 
 def test_failed_mode_is_retried_not_fatal():

@@ -301,6 +301,9 @@ class UniformState:
                 float(self.voltage_threshold) if math.isfinite(self.voltage_threshold) else None
             ),
             "threshold_kind": self.threshold_kind,
+            "threshold_lambda_i": (
+                float(self.threshold_lambda_i) if math.isfinite(self.threshold_lambda_i) else None
+            ),
             "axial_force": self.axial_force,
         }
         for key in ("sigma_rr", "sigma_tt", "sigma_zz"):

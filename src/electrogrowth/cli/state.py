@@ -71,7 +71,6 @@ def _print_one_layer(params, rec: dict, as_json: bool) -> int:
     if as_json:
         print(json.dumps(rec))
         return 0
-    thr = rec["voltage_threshold"]
     lines = [
         f"base state: {rec['material']}, Rbar_o = {params.outer_radius:g}, g = {params.growth:g},"
         f" lambda_z = {params.stretch:g}, {voltage_text(params.voltage, params.outer_radius)}",
@@ -79,8 +78,7 @@ def _print_one_layer(params, rec: dict, as_json: bool) -> int:
         f"  lambda_o = r_o / R_o         {rec['lambda_o']:.12g}",
         f"  r_i, r_o                     {rec['r_i']:.12g}, {rec['r_o']:.12g}",
         f"  charge c (D_r = c / r)       {rec['charge']:.12g}",
-        f"  Vbar threshold               {'none (unbounded)' if thr is None else f'{thr:.12g}'}"
-        f" ({rec['threshold_kind']})",
+        f"  Vbar threshold               {_threshold_text(rec)}",
         f"  axial force N / (mu R_i^2)   {rec['axial_force']:.12g}",
     ]
     _stress_lines(lines, rec)
