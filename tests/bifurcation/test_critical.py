@@ -6,7 +6,7 @@ import math
 import pytest
 from scipy.optimize import brentq
 
-from electrogrowth import NoBifurcationFound, ParameterError, Tube
+from electrogrowth import NoBifurcationFound, ParameterError, Tube, crease_onset, scan_modes
 from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.bifurcation.critical import critical_value, stable_sign
 from electrogrowth.incremental.targets import impedance_targets
@@ -84,6 +84,22 @@ def test_bad_mode_and_unknown_control():
         critical_value(p, 0, 1, "temperature")
     with pytest.raises(ParameterError, match="side"):
         critical_value(p, 0, 1, "stretch", side="sideways")
+
+
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda t: critical_value(t, 1, 1, "growth", side="compression"),
+        lambda t: scan_modes(t, "voltage", side="compression"),
+        lambda t: crease_onset(t, "growth", side="extension"),
+    ],
+    ids=["critical_value", "scan_modes", "crease_onset"],
+)
+def test_a_side_for_growth_or_voltage_is_refused(call):
+    # it was ignored (growth (1, 1) 1.3168 for a "compression"); the command line refuses
+    # --side for these controls (probe 7a, D4)
+    with pytest.raises(ParameterError, match="applies only to stretch, pressure or force"):
+        call(Tube.uniform(1.4))
 
 
 def test_already_unstable_start_is_an_error():

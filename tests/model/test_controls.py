@@ -42,6 +42,17 @@ def test_default_sides_and_refusals():
         check_side("stretch", "sideways")
 
 
+@pytest.mark.parametrize("control", ["growth", "growth[2].theta", "voltage"])
+def test_a_side_of_a_control_that_only_increases_is_refused(control):
+    # as the command line refuses --side; it was ignored, and the increase returned for a
+    # "compression" (probe 7a, D4)
+    with pytest.raises(ParameterError) as err:
+        check_side(control, "compression")
+    message = str(err.value)
+    assert "\n" not in message and "'compression'" in message and control in message
+    assert "stretch, pressure or force" in message
+
+
 def test_the_march_path_is_the_kinds_path_on_the_door():
     t = Tube.uniform(1.4, growth=1.2, voltage=0.2)
     assert control_path(t, "stretch", "compression") == (1.2, 0.06, 1.2)  # lambda_z = g, free

@@ -310,3 +310,4 @@ def test_a_tube_sweep_takes_the_same_path():
     file_tube = load_tube(BILAYER).at("voltage", 0.1)
     assert tubes == [file_tube.at("layers[1].shear_modulus", mu) for mu in (5.0, 20.0)]
     assert SweepConfig.from_dict(json.loads(c.to_json())) == c
+    assert c.side == "compression" and c.spec.side is None  # the scan refuses it for growth

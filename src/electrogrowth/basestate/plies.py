@@ -143,9 +143,12 @@ class Ply:
         return r, r2, (1.0 / (l2 * l3), l2, l3), c / r
 
     def finite(self, l1, l2, l3, d):
-        """Where the energy is finite (False beyond a locking stretch)."""
+        """Where the energy is finite (False beyond a locking stretch, and where the state
+        itself is not: no charge balances the traction past another layer's lock, c NaN)."""
+        state = np.isfinite(l1) & np.isfinite(l2) & np.isfinite(l3) & np.isfinite(d)
         if (energy := numeric_energy(self.layer.material)) is None:
-            return np.ones(l1.shape, bool)
+            # finite everywhere: only a NaN state is not (it must not reach the stress)
+            return np.broadcast_to(state, l1.shape)
         dt2 = (d / (l1 * math.sqrt(self.layer.shear_modulus * self.layer.permittivity))) ** 2
         with np.errstate(**_QUIET):
             w = energy(
@@ -155,7 +158,7 @@ class Ply:
                 dt2 * l1**2,
                 dt2 * l1**4,
             )
-        return np.isfinite(np.broadcast_to(w, l1.shape))
+        return np.isfinite(np.broadcast_to(w, l1.shape)) & state
 
     def stress(self, l1, l2, l3, d):
         """tau_i = mu_k tau^_i(l, d / s_k), shape (3,) + l1.shape (Maxwell part included)."""

@@ -3,7 +3,7 @@
 A march (march.py, surface.py) asks questions of the tube at a control value x: the tube
 there (:class:`TubeAt`), its base state (:class:`StateAt`), the targets of some modes with
 their stable signs applied (:class:`Signed`, positive until a mode's first bifurcation),
-how far the applied voltage is from its threshold (:class:`VoltageMargin`). Each is a small
+how far the loads held fixed are from their thresholds (:class:`LoadMargin`). Each is a small
 frozen dataclass with ``__call__``,
 so a reader following a control from the CLI or ``critical_value`` sees what is evaluated
 (the target's class names the kernel: incremental.targets.ImpedanceTarget or
@@ -215,15 +215,25 @@ class Elliptic:
 
 
 @dataclasses.dataclass(frozen=True)
-class VoltageMargin:
-    """The voltage threshold of the tube at x minus the applied ``voltage``: it falls to 0
-    where the state is lost."""
+class LoadMargin:
+    """The least, over the ``loads`` (name, applied value) held fixed along the path, of
+    the threshold of the tube at x minus the applied value: it falls to 0 where the state is
+    lost. A state is reached by the pressure stage at no voltage, then the voltage branch
+    (basestate/thresholds.prepare): "pressure" is that stage's inflation threshold,
+    "voltage" the voltage branch's at the tube's pressures."""
 
     at: TubeAt
-    voltage: float
+    loads: tuple[tuple[str, float], ...]
 
     def __call__(self, x) -> float:
-        return voltage_threshold(self.at(x)) - self.voltage
+        tube = self.at(x)
+        return min(_load_threshold(tube, name) - applied for name, applied in self.loads)
+
+
+def _load_threshold(tube: Tube, name: str) -> float:
+    if name == "voltage":
+        return voltage_threshold(tube)
+    return threshold(dataclasses.replace(tube, voltage=0.0), "pressure").value
 
 
 def voltage_threshold(tube) -> float:

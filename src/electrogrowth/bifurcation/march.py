@@ -25,7 +25,6 @@ first_roots); the march says what a state, a mode and a lost state are.
 from __future__ import annotations
 
 import dataclasses
-import math
 from collections.abc import Callable
 
 import numpy as np
@@ -48,7 +47,7 @@ from ..incremental.targets import natural_family, row_family
 from ..model.controls import KINDS
 from ..model.layers import Tube
 from .along import RootRows, Signed, TubeAt
-from .along import voltage_threshold as _voltage_threshold
+from .state_loss import loss_at_end
 from .state_loss import threshold_between as _threshold_between
 
 #: the mode march's step control: 0.4 % of the scale doubling up to 5 %, not below 1e-4
@@ -186,8 +185,9 @@ def first_bifurcations(
     watch = EventWatch(x0, g0, sense, path.scale, steps.max_wait)
     step = Stepper(path, steps, state.lambda_i)
     # unresolved: the error to raise if no mode is found (states past the path's end exist
-    # but do not resolve, next to a lock); stop: it ended the path at step.x
-    found, threshold, unresolved, stop = [], None, None, False
+    # but do not resolve, next to a lock); stop: it ended the path at step.x; film: the wall
+    # became a film there (its state runs to an asymptote)
+    found, threshold, unresolved, stop, film = [], None, None, False, False
     while watch.alive.any():
         done = step.at_end() or len(found) >= top or stop
         if not done:
@@ -203,7 +203,7 @@ def first_bifurcations(
                 continue
             if step.jumped(state.lambda_i):
                 continue
-            done = step.film(state.lambda_i)  # the wall is a film: at the threshold
+            done = film = step.film(state.lambda_i)  # the wall is a film: at the threshold
         if done:  # a last look at every mode not seen at step.x: nothing left behind
             x = step.x
             idx = np.nonzero(watch.alive & (watch.xa != x))[0]
@@ -233,13 +233,12 @@ def first_bifurcations(
         raise err from unresolved
     if not found and threshold is None and cut:
         return MarchResult([], None)  # none before ``until``
-    if not found and threshold is None:
-        thr = _voltage_threshold(params) if solve_for == "voltage" else math.inf
-        if math.isfinite(thr):
-            threshold = thr
-        else:
+    if not found and threshold is None:  # lost at the path's end, or past its film?
+        threshold = loss_at_end(at, params, solve_for, side, step.x, step.end, film)
+        if threshold is None:
+            last = step.x if film else step.end
             raise NoBifurcationFound(
-                f"no mode bifurcates for {solve_for} between {x0:g} and {step.end:g}"
+                f"no mode bifurcates for {solve_for} between {x0:g} and {last:g}"
             )
     return MarchResult(found[:top], threshold)
 

@@ -1,8 +1,12 @@
-"""Where a march's base state is lost: the voltage threshold, the edge of the states, a lock.
+"""Where a march's base state is lost: a load's threshold, the edge of the states, a lock.
 
-Shared by the mode march (march.py) and the short-wave march (surface.py): when a march's
-state fails at x_bad after one at x_ok, :func:`threshold_between` says where the state ends
-between them, and whether that end is established.
+Shared by the mode march (march.py) and the short-wave march (surface_march.py): when a
+march's state fails at x_bad after one at x_ok, :func:`threshold_between` says where the state
+ends between them, and whether that end is established. A march that loses no state on its
+way is lost at its end (:func:`loss_at_end`): a path that ends at the control's own threshold
+(:func:`own_threshold`: the voltage's, an inflation's pressure) ends there, and a wall thinned
+to a film runs to an asymptote, where the threshold of a load held fixed falls to that load
+(:func:`held_loads`: the inflation threshold of a tube pulled at a fixed inner pressure).
 
 A state that is lost (the state search fails: BaseStateError) right after one that solves
 ends the path there. A state that exists but does not resolve (ConvergenceError: its profile
@@ -23,31 +27,86 @@ import math
 
 import numpy as np
 
-from ..basestate.tube import solve_base_state
-from ..continuation.events import EDGE, FULL, LOCK, bisect, brent
+from ..basestate.thresholds import Threshold
+from ..basestate.tube import solve_base_state, threshold
+from ..continuation.events import EDGE, FULL, LOCK, THRESHOLD, bisect, brent
 from ..continuation.events import threshold_between as _lost_between
 from ..errors import NEAR_LOCK, BaseStateError, ConvergenceError, ParameterError
+from ..model.controls import parse_control
 from ..model.layers import Tube
-from .along import TubeAt, VoltageMargin, bounded_energy, clear_of_lock, has_lock
+from .along import LoadMargin, TubeAt, bounded_energy, clear_of_lock, has_lock
+
+#: what a margin's evaluation may raise where it cannot be read (no state to start from)
+_UNREADABLE = (ValueError, BaseStateError, ConvergenceError)
+
+
+def own_threshold(params: Tube, solve_for: str, side: str | None) -> Threshold | None:
+    """The threshold of the control's own branch, where its march's path ends
+    (model/controls.py): the voltage's, or the pressure's of an inflation (side not
+    "compression"); None for any other control."""
+    kind = parse_control(solve_for).kind
+    if kind == "voltage" or (kind == "pressure" and side != "compression"):
+        return threshold(params, kind)
+    return None
+
+
+def held_loads(at: TubeAt, params: Tube, solve_for: str) -> LoadMargin | None:
+    """The margin of the loads the path holds fixed, the control aside: the voltage where
+    Vbar > 0, the inner pressure where it inflates (P_i > P_o); None where neither is."""
+    kind = parse_control(solve_for).kind
+    loads = []
+    if params.voltage > 0 and kind != "voltage":
+        loads.append(("voltage", params.voltage))
+    if params.inner_pressure > params.outer_pressure and kind != "pressure":
+        loads.append(("pressure", params.inner_pressure))
+    return LoadMargin(at, tuple(loads)) if loads else None
+
+
+def loss_at_end(
+    at: TubeAt, params: Tube, solve_for: str, side: str | None, x: float, end: float, film: bool
+) -> float | None:
+    """Where the state is lost when a march lost none on its way and stopped at x: the
+    control's own threshold (its path ends there); else, where the wall became a film
+    (``film``), the first root past x of the held loads' margin, bracketed in steps that
+    double from 1e-6 of the distance to ``end`` (the asymptote lies close past a film); None
+    where neither is established."""
+    own = own_threshold(params, solve_for, side)
+    if own is not None:
+        return own.value if math.isfinite(own.value) else None
+    margin = held_loads(at, params, solve_for) if film else None
+    if margin is None:
+        return None
+    try:
+        lo, m_lo = x, margin(x)
+        if not m_lo > 0:
+            return None
+        for k in range(21):
+            hi = x + (end - x) * min(1e-6 * 2.0**k, 1.0)
+            m_hi = margin(hi)
+            if m_hi <= 0:
+                return brent(margin, *sorted((lo, hi)), THRESHOLD, named=False)
+            lo = hi
+    except _UNREADABLE:
+        return None
+    return None
 
 
 def threshold_between(at: TubeAt, params: Tube, x_ok: float, x_bad: float, rtol=1e-12):
     """Where the base state is lost between x_ok and x_bad (no state, or none resolved, at
     x_bad): (value, the last x the march may step to, None). Where the voltage threshold
-    falls to the applied voltage if that brackets it, else the edge of the states that
-    solve at ``rtol`` (whichever of the tube's loads reaches its threshold), bisected.
+    falls to the applied voltage, or the inflation threshold to the inner pressure, if that
+    brackets it (:func:`held_loads`), else the edge of the states that solve at ``rtol``
+    (whichever of the tube's loads reaches its threshold), bisected.
 
     Next to a locking stretch the states past the edge may exist and yet not resolve: the
     edge is then a loss only where a layer locks kinematically before the first state that
     is lost (or, where x_bad is not lost, within one more step of x_bad: the march came
     within LOCK_MARGIN of the lock), and the value is that lock. Else the answer is (None,
     the last resolved x, the error to raise if nothing is found before it)."""
-    if params.voltage > 0:
-        margin = VoltageMargin(at, params.voltage)
-        # no sign change (ValueError), or no voltage branch to read at x_bad: bisect instead
-        x = _lost_between(
-            x_ok, x_bad, margin=margin, tolerate=(ValueError, BaseStateError, ConvergenceError)
-        )
+    margin = held_loads(at, params, at.control)
+    if margin is not None:
+        # no sign change (ValueError), or no branch to read at x_bad: bisect instead
+        x = _lost_between(x_ok, x_bad, margin=margin, tolerate=_UNREADABLE)
         if x is not None:
             return x, x, None
     fate_bad = _fate(at, x_bad, rtol)

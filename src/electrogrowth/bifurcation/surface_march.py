@@ -3,8 +3,9 @@ half-space target h (surface.py), or to the loss of the state or of strong ellip
 
 Steps of 0.4 % of the scale doubling up to 5 %, limited by 0.7 of the linear extrapolation of
 h to zero (SURFACE_STEPS); a bounded minimisation where h dips between samples. Where the
-state fails, the loss is located as the mode march locates it (state_loss.py): the voltage
-threshold, the state search failing, or a kinematic lock; a state that exists but does not
+state fails, the loss is located as the mode march locates it (state_loss.py): a held load's
+threshold, the state search failing, or a kinematic lock, and at the path's end or past a
+film, the control's own threshold or a held load's; a state that exists but does not
 resolve, or lies within along.LOCK_MARGIN of a lock, is no loss. Where h turns NaN the
 half-space has stopped being strongly elliptic: that edge is bisected.
 """
@@ -19,10 +20,9 @@ from ..continuation import events
 from ..continuation.path import ControlPath, Stepper, StepPolicy
 from ..errors import BaseStateError, ConvergenceError, ParameterError
 from ..outcomes import Kind
-from .along import Elliptic, NearLock, SampleValue, StateAt, TubeAt, VoltageMargin
-from .along import voltage_threshold as _voltage_threshold
+from .along import Elliptic, NearLock, SampleValue, StateAt, TubeAt
 from .march import control_path
-from .state_loss import threshold_between
+from .state_loss import loss_at_end, threshold_between
 
 #: the short-wave march's step control: as the mode march's, but down to 1e-6 of the scale
 #: (h is one continuous function: its zero may be approached closer)
@@ -67,7 +67,7 @@ def locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, unti
     step = Stepper(path, SURFACE_STEPS, state.lambda_i)
     # unresolved: the error to raise if nothing is found (states past the path's end exist
     # but do not resolve, next to a lock: state_loss.threshold_between)
-    threshold, unresolved = None, None
+    threshold, unresolved, film = None, None, False
     while not step.at_end():
         x_prev = step.x
         x = step.propose()
@@ -102,13 +102,7 @@ def locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, unti
         hs.append(s.value)
         if step.film(state.lambda_i):  # the wall is a film: at the threshold
             step.accept(x, state.lambda_i)
-            if solve_for != "voltage" and threshold is None and params.voltage > 0:
-                threshold = events.threshold_between(
-                    x,
-                    step.end,
-                    margin=VoltageMargin(at, params.voltage),
-                    tolerate=(ValueError, BaseStateError, ConvergenceError),
-                )
+            film = True
             break
         slope = (hs[-1] - hs[-2]) / (xs[-1] - xs[-2]) * path.sense
         limit = SURFACE_STEPS.safety * hs[-1] / -slope / scale if slope < 0 else math.inf
@@ -120,9 +114,8 @@ def locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, unti
         )
         err.remedy = unresolved.remedy
         raise err from unresolved
-    if threshold is None and solve_for == "voltage":
-        thr = _voltage_threshold(params)
-        threshold = thr if math.isfinite(thr) else None
+    if threshold is None:  # lost at the path's end, or past its film?
+        threshold = loss_at_end(at, params, solve_for, side, step.x, step.end, film)
     if threshold is not None:
         return Kind.THRESHOLD, threshold, None
     return Kind.NONE, math.nan, None

@@ -18,11 +18,11 @@ from __future__ import annotations
 import dataclasses
 import math
 
-from ..basestate.tube import threshold
 from ..errors import ElectrogrowthError
 from ..model.controls import parse_control
 from ..outcomes import Kind
 from .crease import crease_onset
+from .state_loss import own_threshold
 
 #: the kinds a verdict compares, and the record key of each one's runner-up
 RIVALS = {
@@ -297,8 +297,8 @@ def threshold_rival(critical, onset) -> Rival | None:
     kind = parse_control(critical.solve_for).kind
     if critical.kind == Kind.THRESHOLD:
         return Rival(Kind.THRESHOLD, critical.value, 0.0, detail=f"{kind} threshold")
-    if kind == "voltage" or (kind == "pressure" and critical.side != "compression"):
-        t = threshold(critical.params, kind)
+    t = own_threshold(critical.params, critical.solve_for, critical.side)
+    if t is not None:
         if math.isfinite(t.value):
             return Rival(Kind.THRESHOLD, t.value, t.error, detail=f"{kind} {t.kind}")
         return None

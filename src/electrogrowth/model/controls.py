@@ -179,10 +179,17 @@ SIDED = tuple(name for name, k in KINDS.items() if k.sided)
 
 def check_side(solve_for, side: str | None) -> str | None:
     """Validate ``side``; the control's default side when it has one (stretch and force
-    compress, a pressure inflates), None for a control that only increases."""
+    compress, a pressure inflates), None for a control that only increases, for which a
+    side is refused (ParameterError, as the command line refuses --side): it would be
+    ignored, and a caller asking for a growth's "compression" would get its increase."""
     if side is not None and side not in SIDES:
         raise ParameterError(f"side = {side!r} is unknown; choose compression or extension")
     kind = KINDS.get(str(solve_for).split("[")[0].split(".")[0])
+    if side is not None and kind is not None and not kind.sided:
+        raise ParameterError(
+            f"side = {side!r} applies only to {', '.join(SIDED[:-1])} or {SIDED[-1]},"
+            f" not {solve_for}"
+        )
     return side or (kind.default_side if kind is not None else None)
 
 

@@ -127,8 +127,11 @@ class SweepConfig:
 
     @property
     def spec(self) -> ScanSpec:
-        """The options of every point's mode scan."""
-        return ScanSpec(self.solve_for, self.side, self.scan, self.rtol, self.koiter)
+        """The options of every point's mode scan. A side of a control that has none (a
+        tube file's sweep accepts one, for the stores written so far) is left out: the scan
+        refuses it (model/controls.check_side), and it never changed a point."""
+        side = self.side if parse_control(self.solve_for).kind in SIDED else None
+        return ScanSpec(self.solve_for, side, self.scan, self.rtol, self.koiter)
 
     def build_material(self):
         if self.energy:
