@@ -181,3 +181,21 @@ def test_a_gent_crease_carries_its_energys_distance_from_neo_hookean():
     assert (nh.status, g20.status) == (Status.OK, Status.OK)
     assert g3.error_estimate == math.inf and g3.status == Status.INACCURATE
     assert "may not crease" in g3.message
+
+
+def test_a_tie_goes_to_the_face_whose_criterion_is_exact():
+    """An ungrown Gent core in a neo-Hookean sheath compressed axially: both faces reach the
+    crease ratio at once (lambda_z = 0.5578607917, ratio 2.4 through the whole wall). The
+    Gent face "may not crease" (no Biot ratio), the neo-Hookean one creases there: the onset
+    is the outer face's, status ok (it reported the inner face, INACCURATE, probe 7a)."""
+    from electrogrowth import Layer
+    from electrogrowth.model.materials import gent
+
+    tube = Tube((Layer(1.5, material=gent(3.0)), Layer(2.5, shear_modulus=0.3)), length=0.5)
+    c = crease_onset(tube, "stretch", side="compression")
+    assert c.face == "outer" and c.status == "ok" and math.isfinite(c.error_estimate)
+    margins = {
+        f.face: f.margin for f in face_creases(solve_base_state(tube.at("stretch", c.value)))
+    }
+    assert margins["inner"] == pytest.approx(margins["outer"], abs=1e-12)  # the tie
+    assert c.value == pytest.approx(1 / CREASE_RATIO ** (2 / 3), rel=1e-9)

@@ -335,7 +335,7 @@ def crease_onset(
             return result(math.nan, Kind.NONE, threshold=math.nan if lost is None else lost)
         if h_new >= 0:
             value = brent(margin, x, x_new, FULL)
-            f = crease_margin(state(value))
+            f = _creasing_face(tube, state(value))
             shift = energy_shift(tube, f.face)
             onset = result(
                 value, Kind.CREASE, f.face, f.trigger, _criterion_error(margin, value, x, f, shift)
@@ -348,6 +348,22 @@ def crease_onset(
         step = min(max(0.5 * ahead, STEP_MIN * scale), STEP_MAX * scale)
         x, h = x_new, h_new
     return result(math.nan, Kind.NONE)
+
+
+def _creasing_face(tube: Tube, state) -> FaceCrease:
+    """The face that creases at the onset: the nearest its onset (:func:`crease_margin`),
+    and of faces tied with it to rounding, the one whose criteria are the most exact
+    (:func:`energy_shift`): an axially compressed tube of a Gent core and a neo-Hookean
+    sheath reaches the ratio on both faces at once, where the Gent face "may not crease"
+    and the neo-Hookean one creases (probe round 7a)."""
+    faces = face_creases(state)
+    top = max(f.margin for f in faces)
+    tied = [f for f in faces if f.margin >= top - TIE]
+    return min(tied, key=lambda f: energy_shift(tube, f.face))
+
+
+#: margins this close to the largest are a tie (the margins are drives less 1)
+TIE = 1e-12
 
 
 def _solves(state):
