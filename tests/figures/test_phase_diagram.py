@@ -154,7 +154,12 @@ def test_plot_of_a_non_store_is_one_line(tmp_path, monkeypatch, capsys):
     )
     (tmp_path / "x.zarr").mkdir()
     assert cli.main(["plot", str(tmp_path / "x.zarr")]) == 2
-    assert "is not an electrogrowth sweep store" in capsys.readouterr().err
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "is not an electrogrowth sweep store" in err
+    # a reader's remedy, said once (it gave the sweep's advice, twice for an existing file)
+    assert err.count("(") == 1 and "written by electrogrowth sweep FILE --out STORE" in err
+    assert cli.main(["plot", str(tmp_path / "missing.zarr")]) == 2
+    assert "written by electrogrowth sweep" in capsys.readouterr().err
 
 
 def test_a_tube_unstable_from_the_start_is_labelled_so_not_failed():

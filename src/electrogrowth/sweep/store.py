@@ -34,7 +34,7 @@ import numpy as np
 import xarray as xr
 import zarr
 
-from ..errors import SweepError
+from ..errors import Remedy, SweepError
 from ..outcomes import Kind, Status
 from .config import SweepConfig, differences
 from .schema import MARK, POINT_VARIABLES, RUNNER_VARIABLES, label
@@ -205,11 +205,8 @@ def read_config(path: str | Path) -> SweepConfig:
         text = zarr.open_group(str(path), mode="r", zarr_format=3).attrs.get("sweep_config")
     except (zarr.errors.BaseZarrError, ValueError, OSError):
         text = None
-    if text is None:
-        raise SweepError(
-            f"{path} is not an electrogrowth sweep store"
-            f"{' (it exists: choose another --out)' if path.exists() else ''}"
-        )
+    if text is None:  # (the remedy, to write to another store, is SweepError's)
+        raise SweepError(f"{path} is not an electrogrowth sweep store")
     try:  # JSON, and a SweepConfig validates itself: its energy and tube texts are parsed
         return SweepConfig.from_dict(json.loads(text))  # by the whitelist grammars, never run
     except (KeyError, TypeError, ValueError, AttributeError, RecursionError) as exc:
@@ -228,10 +225,22 @@ def check_same_sweep(out: Path, config: SweepConfig) -> None:
         )
 
 
+#: what a reader of a path that holds no sweep store can do
+READ_REMEDY = Remedy(
+    "give a store written by electrogrowth sweep FILE --out STORE",
+    python="give a store written by compute_sweep(config, out=...)",
+)
+
+
 def open_results(path: str | Path) -> xr.Dataset:
     """The dataset of a sweep store, loaded into memory (points not yet computed have
-    status "pending" and NaN values)."""
-    read_config(path)
+    status "pending" and NaN values). A path that holds no store is refused with advice
+    for a reader (a sweep writing it gets SweepError's own)."""
+    try:
+        read_config(path)
+    except SweepError as exc:
+        exc.remedy = READ_REMEDY
+        raise
     try:
         with xr.open_zarr(str(path), chunks=None, zarr_format=3) as ds:
             return ds.load()
