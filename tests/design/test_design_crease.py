@@ -133,3 +133,19 @@ def test_map_crease_first_everywhere():
     assert d.margin == pytest.approx(-(CREASE - v) / v, rel=1e-8)
     best = d.as_dict()["best"]
     assert best["verdict"]["kind"] == "crease" and best["limited_by"] == "crease"
+
+
+def test_region_creases_counts_points_not_rows():
+    """A located switch is two rows of one x: an interval holding one grid point and two
+    switches said [0, 5] (probe round 7b); it is 3 points, the switch ends counted once."""
+    from types import SimpleNamespace
+
+    import numpy as np
+
+    from electrogrowth.design.onset import region_creases
+
+    x = np.array([0.0, 0.5, 0.5, 1.0, 1.5, 1.5, 2.0])
+    first = np.array([False, False, True, False, True, True, False])
+    curve = SimpleNamespace(x=x, crease=SimpleNamespace(first=first))
+    iv = SimpleNamespace(lo=0.5, hi=1.5)
+    assert region_creases([iv], curve) == [{"crease_first": "part", "crease_first_points": [2, 3]}]

@@ -18,6 +18,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from ..basestate.tube import solve_base_state
 from ..bifurcation.crease import crease_margin, crease_onset, face_creases
 from ..bifurcation.scan import ScanOptions, scan_modes
@@ -142,13 +144,16 @@ def observable(verdict: dict) -> str:
 
 
 def region_creases(region, curve) -> list[dict]:
-    """For each interval of the region: the curve's rows in it and how many of them
-    crease first ("none", "part" or "all" of them)."""
+    """For each interval of the region: the curve's points in it (its distinct x: a located
+    switch is two rows of one x) and how many of them crease first ("none", "part" or "all"
+    of them)."""
     out = []
     for iv in region:
         inside = (curve.x >= iv.lo) & (curve.x <= iv.hi)
-        first = int(curve.crease.first[inside].sum())
-        rows = int(inside.sum())
-        which = "none" if first == 0 else "all" if first == rows else "part"
-        out.append({"crease_first": which, "crease_first_points": [first, rows]})
+        xs, at = np.unique(curve.x[inside], return_inverse=True)
+        creased = np.zeros(len(xs), bool)
+        np.logical_or.at(creased, at, curve.crease.first[inside])
+        first, points = int(creased.sum()), len(xs)
+        which = "none" if first == 0 else "all" if first == points else "part"
+        out.append({"crease_first": which, "crease_first_points": [first, points]})
     return out
