@@ -203,3 +203,20 @@ def test_text_of_a_foreign_store_is_drawn_as_text_not_mathtext(store):
     fig = phase_diagram(ds, "stretch", "voltage")
     fig.savefig(io.BytesIO(), format="png")  # drawing is where mathtext would fail
     assert r"tampered \$\foo{ title" in fig.axes[0].get_title()
+
+
+def test_an_axis_over_decades_is_logarithmic(store):
+    """Moduli 1e-3 .. 1e-1 on a geometric grid were drawn on a linear axis, the low rows'
+    cells (and labels) collapsed together (probe round 7b): such an axis is logarithmic,
+    its cells' edges the geometric means of their neighbours."""
+    from electrogrowth.figures.phase_diagram import axis_edges, logarithmic
+
+    geometric = np.geomspace(1e-3, 1e-1, 5)
+    edges, log = axis_edges(geometric)
+    assert log and np.allclose(edges[1:-1], np.sqrt(geometric[1:] * geometric[:-1]), rtol=1e-12)
+    assert not logarithmic(np.linspace(1e-3, 1e-1, 5))  # even steps: linear
+    assert not logarithmic(np.geomspace(1.0, 10.0, 5))  # one decade: linear
+    assert not logarithmic(np.array([-1.0, 0.1, 10.0, 1000.0]))
+    ds = open_results(store).assign_coords(voltage=np.geomspace(1e-3, 1e-1, 3))
+    ax = phase_diagram(ds, "stretch", "voltage").axes[0]
+    assert ax.get_yscale() == "log" and ax.get_xscale() == "linear"

@@ -157,6 +157,28 @@ def cell_edges(centres) -> np.ndarray:
     return np.concatenate([[2 * c[0] - mid[0]], mid, [2 * c[-1] - mid[-1]]])
 
 
+def logarithmic(centres) -> bool:
+    """Is an axis of these grid values read on a log scale? Positive values spanning
+    LOG_SPAN or more whose steps grow (a geometric grid: moduli, thicknesses over decades);
+    on a linear axis the low rows' cells and labels collapse together."""
+    c = np.asarray(centres, dtype=float)
+    if c.size < 3 or not np.all(c > 0) or c[-1] < LOG_SPAN * c[0]:
+        return False
+    steps = np.diff(c)
+    return bool(steps[-1] > 2.0 * steps[0])
+
+
+#: the smallest ratio of an axis's largest to its smallest value read on a log scale
+LOG_SPAN = 100.0
+
+
+def axis_edges(centres) -> tuple[np.ndarray, bool]:
+    """(cell edges, log scale?) of an axis: midpoints in log x on a log axis."""
+    if logarithmic(centres):
+        return np.exp(cell_edges(np.log(np.asarray(centres, dtype=float)))), True
+    return cell_edges(centres), False
+
+
 def _plain(text) -> str:
     """A text read from a store, shown as it is: matplotlib would parse ``$...$`` in it as
     mathtext, and a store from someone else may hold any text (a malformed one ended the
@@ -198,7 +220,7 @@ def phase_diagram(ds, x: str, y: str, *, at: dict | None = None) -> Figure:
     """
     plane = select_plane(ds, x, y, at)
     xs, ys = plane[x].values, plane[y].values
-    xe, ye = cell_edges(xs), cell_edges(ys)
+    (xe, xlog), (ye, ylog) = axis_edges(xs), axis_edges(ys)
     labels = outcomes(plane)
     value = np.ma.masked_invalid(np.asarray(plane["critical_value"].values, dtype=float))
     fig = Figure(figsize=(7.5, 5.5), layout="constrained")
@@ -221,6 +243,8 @@ def phase_diagram(ds, x: str, y: str, *, at: dict | None = None) -> Figure:
             bbox={"boxstyle": "round,pad=0.2", "fc": "white", "ec": "none", "alpha": 0.75},
         )
     ax.set(
+        xscale="log" if xlog else "linear",
+        yscale="log" if ylog else "linear",
         xlim=(xe[0], xe[-1]),
         ylim=(ye[0], ye[-1]),
         xlabel=_axis_label(plane[x]),
@@ -261,7 +285,7 @@ def phase_diagram(ds, x: str, y: str, *, at: dict | None = None) -> Figure:
         fig.legend(
             handles=handles,
             loc="outside lower center",
-            ncols=len(handles),
+            ncols=min(len(handles), 2),  # three in a row were cut at the figure's sides
             fontsize=8,
             frameon=False,
         )
