@@ -173,6 +173,28 @@ def test_target_sets():
             check_target(bad)
 
 
+@pytest.mark.parametrize("target", [(1, 0), (0, 0), [(0, 1), (1, 0)]])
+def test_a_target_that_is_no_mode_is_refused(target):
+    # probe 7b D4: (1, 0), a rigid translation, and (0, 0) were accepted and reported
+    # not_reached with "widen --m-max / --n-max"
+    with pytest.raises(ParameterError, match=r"target mode \(m, n\) = \((1|0), 0\).*m >= 2"):
+        prescribe(TUBE, "stretch", target, VARY, side="compression", options=SMALL, points=2)
+
+
+def test_a_triple_is_no_list_of_modes():
+    with pytest.raises(ParameterError, match=r"target = \(0, 1, 2\) is invalid; give \(m, n\)"):
+        check_target((0, 1, 2))
+
+
+@pytest.mark.parametrize("mode", [("1", "0"), ("0", "0")])
+def test_cli_design_target_that_is_no_mode_exits_2(capsys, mode):
+    args = ["design", "--solve-for", "stretch", "--side", "compression", "--target", *mode]
+    args += ["--vary", "outer_radius", "1.2", "1.3", "--points", "2", "--m-max", "2"]
+    assert main([*args, "--n-max", "2"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "\n" not in err and f"({mode[0]}, 0)" in err and "m >= 2" in err
+
+
 def test_cli_design_json(capsys, tmp_path):
     args = ["design", "--solve-for", "stretch", "--side", "compression", "--target", "0", "1"]
     args += ["--vary", "outer_radius", "1.2", "1.3", "--points", "2", "--m-max", "2"]

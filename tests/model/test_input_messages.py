@@ -4,6 +4,7 @@ a growth component as g_theta (growth[K] is layer K's growth), a curve's --along
 (not as solve_for), and the remedy of "no mode bifurcates" in the terms of what was asked
 (no --m-max for one --mode, no --side for growth)."""
 
+import re
 import warnings
 from pathlib import Path
 
@@ -125,3 +126,48 @@ def test_floating_point_warnings_stay_off_stderr(monkeypatch, capsys):
         warnings.simplefilter("always")
         assert cli.main(["state"]) == 0
     assert shown == [] and capsys.readouterr().err == ""
+
+
+@pytest.mark.parametrize("field", ["shear_modulus", "permittivity"])
+@pytest.mark.parametrize("value", [1e-300, 1e-20, 1e-9, 1.1e8, 1e300])
+def test_a_layer_s_modulus_outside_the_supported_range_is_refused_in_one_line(field, value):
+    # probe 7b D5: a substrate 1e-300 as stiff ended in a ZeroDivisionError ("internal
+    # error"), 1e-20 and 1e-100 in spurious roots, a film 1e300 in numpy warnings
+    want = f"{field} = {value:.6g} is outside the supported range 1e-08 to 1e+08: "
+    with pytest.raises(ParameterError, match="^" + re.escape(want)):
+        Layer(3.0, **{field: value})
+    with pytest.raises(ParameterError, match="^" + re.escape(f"layers[2].{want}")):
+        TUBE.at(f"layers[2].{field}", value)
+
+
+def test_the_ends_of_the_modulus_range_are_accepted_and_their_ratio_is_bounded():
+    Tube((Layer(1.1, shear_modulus=1e8, permittivity=1e-8), Layer(2.0)))
+    Tube((Layer(1.1, shear_modulus=1e-8, permittivity=1e8), Layer(2.0)))
+    # a film 1e8 on a substrate 1e-8 is, to the wall's equations, a substrate 1e-16 as stiff
+    with pytest.raises(
+        ParameterError,
+        match=r"^layers\[1\]\.shear_modulus / layers\[2\]\.shear_modulus = 1e\+16 is"
+        r" outside the supported range 1 to 1e\+08: ",
+    ):
+        Tube((Layer(1.1, shear_modulus=1e8), Layer(2.0, shear_modulus=1e-8)))
+
+
+def test_a_denormal_substrate_modulus_is_refused_not_an_internal_error(tmp_path, capsys):
+    # probe 7b D5: accepted; critical_value raised ZeroDivisionError (CLI: internal error,
+    # exit 1)
+    text = BILAYER.read_text().replace(
+        "outer_radius = 2.0", "outer_radius = 2.0\nshear_modulus = 1e-300"
+    )
+    (tmp_path / "t.toml").write_text(text)
+    args = [
+        "critical",
+        "--tube",
+        str(tmp_path / "t.toml"),
+        "--solve-for",
+        "growth",
+        "--layer",
+        "1",
+    ]
+    assert cli.main([*args, "--component", "theta", "--mode", "33", "0"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "shear_modulus = 1e-300 is outside the supported" in err

@@ -294,6 +294,16 @@ def _bilayer(**changes) -> SweepConfig:
         ({"grid": (("length", (-1.0,)),)}, "grid.length: length = -1"),
         ({"grid": ()}, "grid: nothing to sweep; give a control or key of the tube in [grid]"),
         ({"tube": "[[layers]]\nouter_radius = 0.5\n"}, "tube.file: "),
+        # probe 7b D5: accepted; the point failed with "internal error: SystemError"
+        (
+            {"grid": (("layers[2].shear_modulus", (1e-300, 1.0)),)},
+            "grid.layers[2].shear_modulus: layers[2].shear_modulus = 1e-300 is outside the"
+            " supported range 1e-08 to 1e+08",
+        ),
+        (
+            {"grid": (("layers[1].permittivity", (1e9,)),)},
+            "layers[1].permittivity = 1e+09 is outside the supported range 1e-08 to 1e+08",
+        ),
     ],
 )
 def test_a_tube_sweep_in_python_is_refused_naming_the_key(changes, needle):

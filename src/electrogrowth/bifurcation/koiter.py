@@ -67,7 +67,8 @@ class KoiterResult:
     "supercritical" when the branch exists beyond onset, in the direction
     the control moves to reach it (lambda_2 < 0 for the compressive stretch, > 0 for
     growth), else "subcritical"; ``error_estimate`` the change of the coefficient from a
-    resolution 3/4 as fine (spectral convergence: it bounds the error of the finer)."""
+    resolution 3/4 as fine (spectral convergence: it bounds the error of the finer), for a
+    tube plus the change when the steps of A''s central differences are halved."""
 
     coefficient: float
     critical_value: float
@@ -167,7 +168,8 @@ def _tube_result(tube: Tube, mode, control: str, side: str | None = None) -> Koi
         critical_value=fine.control_value,
         wavenumber=wavenumber,
         branch=branch_of(fine.coefficient, control, side),
-        error_estimate=abs(fine.coefficient - coarse.coefficient),
+        # the discretisation's change, and A''s difference steps' (relative to the control)
+        error_estimate=abs(fine.coefficient - coarse.coefficient) + fine.derivative_error,
         normalisation="eps = max_R |u_r| / R_i of the mode (R_i = 1)",
     )
 

@@ -18,6 +18,7 @@ import math
 from ..basestate.tube import solve_base_state
 from ..errors import ParameterError
 from ..model.layers import Tube
+from .control_derivative import Reach, derivative
 
 
 @dataclasses.dataclass(frozen=True)
@@ -52,18 +53,12 @@ def axial_freedom(tube: Tube, control: str, c: float, stiffness, phi) -> AxialFr
     def state(value):
         return solve_base_state(twin.at("stretch", value))
 
-    slope = float(phi @ richardson(lambda v: stiffness(state(v)), lz) @ phi)
-    k = float(richardson(lambda v: state(v).axial_force, lz)) / (2 * math.pi)
+    where = Reach(lz, lo=0.0)  # lambda_z moves the state on its own scale, lz > 0
+    slope = float(phi @ derivative(lambda v: stiffness(state(v)), lz, where) @ phi)
+    k = float(derivative(lambda v: state(v).axial_force, lz, where)) / (2 * math.pi)
     if not k > 0:
         raise ParameterError(
             f"the axial stiffness dN/dlambda_z = {2 * math.pi * k:.6g} at lambda_z = {lz:.6g} "
             "is not positive: the state is not axially stable under its force"
         )
     return AxialFreedom(lz, slope, k)
-
-
-def richardson(f, x: float):
-    """df/dx by central differences at h and h / 2, Richardson-extrapolated (O(h^4))."""
-    h = 2e-3 * max(1.0, abs(x))
-    d = [(f(x + s) - f(x - s)) / (2 * s) for s in (h, h / 2)]
-    return (4 * d[1] - d[0]) / 3

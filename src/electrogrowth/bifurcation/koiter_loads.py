@@ -23,14 +23,15 @@ from ..incremental.polar_forms import PolarForms, rings
 from ..incremental.pressure_forms import FaceForms
 from ..incremental.wall_pressure_forms import WallFaceForms
 from ..model.layers import Tube
+from .control_derivative import reach
 from .koiter_film import MODE
 from .koiter_tube import (
     SECOND,
     TubeExpansion,
     axial_wavenumber,
-    control_derivative,
     onset_value,
     singular_point,
+    slope_ratio,
 )
 from .koiter_wall import MODE as WALL_MODE
 from .koiter_wall import POTENTIAL, wall_forms
@@ -107,15 +108,21 @@ def loaded_expansion(
         return first.stiffness(solve_base_state(tube.at(control, c)))
 
     start = onset_value(tube, mode, control, side)
-    c, phi = singular_point(A, start, f"{control} of mode {mode}")
+    where = reach(tube, control)
+    c, phi = singular_point(A, start, f"{control} of mode {mode}", where)
     phi = phi / first.wall.peak_radial(phi, first.wall.slices[0])[1]  # max |u_r| = R_i
     state = solve_base_state(tube.at(control, c))
     f1, face1 = first.wall.fields(phi), first.face.fields(phi)
     A2 = second.stiffness(state)
     psi = np.linalg.solve(A2, -second.third(state, f1, face1))
     quartic = first.quartic(state, f1)
-    c2 = (2 * (psi @ A2 @ psi) - 4 * quartic) / (phi @ control_derivative(A, c) @ phi)
+    c2, error = slope_ratio(2 * (psi @ A2 @ psi) - 4 * quartic, A, c, phi, where)
     radial = phi[first.wall.slices[0]]  # u_r on the rings, from R_i to R_N
     return TubeExpansion(
-        float(c), float(c2), float(start), float(radial[0]), outer_face=float(radial[-1])
+        float(c),
+        c2,
+        float(start),
+        float(radial[0]),
+        outer_face=float(radial[-1]),
+        derivative_error=error,
     )

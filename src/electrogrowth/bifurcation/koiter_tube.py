@@ -21,6 +21,7 @@ from ..incremental.meridian_forms import MeridianForms
 from ..incremental.polar_forms import PolarForms, rings
 from ..model.layers import Tube
 from ..outcomes import Kind
+from .control_derivative import Reach, derivative, derivative_and_change, reach
 from .critical import critical_value
 from .koiter_film import MODE, _nearest_zero
 from .koiter_force import AxialFreedom, axial_freedom
@@ -42,27 +43,21 @@ class TubeExpansion:
     numerator: float = math.nan  # 2 A[psi, psi] - 4 E4(phi) (+ a_z^2 / (2 k) at a force)
     axial: AxialFreedom | None = None  # the force prescribed: lambda_z's freedom
     outer_face: float = math.nan  # u_r of the mode at R_N over its peak
+    derivative_error: float = 0.0  # |c_2|'s change when A''s difference steps are halved
 
 
-def control_derivative(stiffness, c: float):
-    """dA/dc by central differences of base states, Richardson-extrapolated (error O(h^4)):
-    the control enters both the state and the growth."""
-    h = 2e-3 * max(1.0, abs(c))
-    d = [(stiffness(c + s) - stiffness(c - s)) / (2 * s) for s in (h, h / 2)]
-    return (4 * d[1] - d[0]) / 3
-
-
-def singular_point(stiffness, start: float, what: str):
+def singular_point(stiffness, start: float, what: str, where: Reach):
     """(c, phi): Newton's method on the eigenvalue of A(c) nearest zero, from ``start``,
     with the symmetric eigenvalue derivative phi^T A' phi; converged at a step below
-    1e-12 |c|, or below 1e-9 |c| once the steps stop shrinking (the rounding floor of the
-    eigenvalue, ~1e-11 |c| for a tube under a voltage)."""
+    1e-12 s, or below 1e-9 s once the steps stop shrinking (the rounding floor of the
+    eigenvalue, ~1e-11 s for a tube under a voltage), s = max(|c|, the control's scale):
+    a pressure's critical value may be ~0, and its scale is the tube's modulus, not 1."""
     c, phi, last = start, None, np.inf
     for _ in range(20):
         sigma, phi = _nearest_zero(stiffness(c), phi)
-        step = sigma / (phi @ control_derivative(stiffness, c) @ phi)
+        step = sigma / (phi @ derivative(stiffness, c, where) @ phi)
         c -= step
-        scale = max(1.0, abs(c))
+        scale = max(where.scale, abs(c))
         if abs(step) < 1e-12 * scale or (abs(step) < 1e-9 * scale and abs(step) > last / 2):
             return c, _nearest_zero(stiffness(c), phi)[1]
         last = abs(step)
@@ -150,7 +145,8 @@ def expand(tube, control, first, second, start, what) -> TubeExpansion:
     def A(c):
         return first.stiffness(solve_base_state(tube.at(control, c)))
 
-    c, phi = singular_point(A, start, what)
+    where = reach(tube, control)
+    c, phi = singular_point(A, start, what, where)
     phi = phi / first.peak_radial(phi, first.slices[0])[1]
     state = solve_base_state(tube.at(control, c))
     f1 = first.fields(phi)
@@ -163,7 +159,15 @@ def expand(tube, control, first, second, start, what) -> TubeExpansion:
     if tube.control == "force":  # the (0, 0) correction's freedom in lambda_z
         axial = axial_freedom(tube, control, c, first.stiffness, phi)
         numerator += axial.term
-    c2 = numerator / (phi @ control_derivative(A, c) @ phi)  # A' along the path (force or stretch)
+    c2, error = slope_ratio(numerator, A, c, phi, where)  # A' along the path (force or stretch)
     radial = phi[first.slices[0]]  # u_r on the rings, from R_i to R_N
     inner, outer = float(radial[0]), float(radial[-1])
-    return TubeExpansion(float(c), float(c2), float(start), inner, float(numerator), axial, outer)
+    return TubeExpansion(float(c), c2, float(start), inner, float(numerator), axial, outer, error)
+
+
+def slope_ratio(numerator: float, stiffness, c: float, phi, where: Reach) -> tuple[float, float]:
+    """(c_2, its change with the difference steps halved) = numerator / A'(c)[phi, phi]:
+    the truncation of A' enters c_2 relative, and is part of its error estimate."""
+    slope, change = (float(phi @ d @ phi) for d in derivative_and_change(stiffness, c, where))
+    c2 = numerator / slope
+    return float(c2), abs(c2 * change / slope)

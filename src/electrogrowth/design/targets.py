@@ -7,7 +7,7 @@ import dataclasses
 from collections.abc import Callable
 
 from ..errors import ParameterError
-from ..incremental.modes import MODE_MAX
+from ..incremental.modes import MODE_MAX, check_mode
 
 #: the named sets of modes: m = 0 (axisymmetric), n = 0 (prismatic)
 NAMED_SETS = {
@@ -30,6 +30,10 @@ def _mode(value) -> tuple[int, int]:
         raise ParameterError(
             f"target mode {tuple(value)!r} is out of range; m and n go from 0 to {MODE_MAX}"
         )
+    try:  # (1, 0), a rigid motion, and (0, 0) are no modes: no scan can ever reach them
+        check_mode(*value)
+    except ParameterError as exc:
+        raise ParameterError(f"target {exc}") from None
     return int(value[0]), int(value[1])
 
 
@@ -67,6 +71,11 @@ def check_target(target) -> Target:
     ):
         mode = _mode(target)
         return Target(f"({mode[0]}, {mode[1]})", lambda m, n: (m, n) == mode, (mode,))
+    if isinstance(target, tuple) and all(isinstance(v, int) for v in target):
+        # (0, 1, 2) is no list of modes ("target mode 0 is invalid" blamed one of its entries)
+        raise ParameterError(
+            f"target = {target!r} is invalid; give (m, n), two integers, or a list of modes"
+        )
     if isinstance(target, (tuple, list, set, frozenset)) and target:
         modes = tuple(sorted({_mode(t) for t in target}))
         text = "[" + ", ".join(f"({m}, {n})" for m, n in modes) + "]"

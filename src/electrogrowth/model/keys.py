@@ -10,7 +10,7 @@ import math
 import re
 
 from ..errors import ParameterError
-from .layer import _number
+from .layer import _number, modulus
 
 #: the keys of a tube that a curve or sweep may vary besides its controls (:meth:`Tube.at`)
 KEYS_TEXT = (
@@ -85,4 +85,4 @@ def _check_key(name: str, value: float, field: str, radii: tuple[float, ...], k:
             lambda v: inner < v < outer,
         )
     else:  # shear_modulus, permittivity
-        _number(name, value, "0 < value < inf", lambda v: v > 0)
+        modulus(name, value)

@@ -4,7 +4,7 @@ Units mu = eps = R_i = 1: a layer's shear modulus and permittivity are relative 
 reference values, its outer radius is in units of the inner radius of the whole tube. The
 layer grows by F_g = diag(g_r, g_theta, g_z): a scalar (isotropic, g I), three constants, or
 a function of R returning the triple (graded growth, e.g. :class:`LinearGrowth`), each entry
-inside the supported box (model/params.py).
+inside the supported box (model/params.py), as are the modulus and the permittivity.
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ import numpy as np
 
 from ..errors import ParameterError
 from .materials import Material, neo_hookean
-from .params import SUPPORTED, SUPPORTED_WHY
+from .params import MODULI, MODULI_WHY, SUPPORTED, SUPPORTED_WHY
 
 Growth = float | tuple[float, float, float] | Callable
 
@@ -56,6 +56,18 @@ def _growth(name: str, value, valid: str) -> float:
             f"{name} = {g:.6g} is outside the supported range {lo:g} to {hi:g}: {SUPPORTED_WHY}"
         )
     return g
+
+
+def modulus(name: str, value) -> float:
+    """A layer's shear modulus or permittivity > 0 inside the supported range (params.py):
+    1e-300 was accepted and failed as a ZeroDivisionError deep in a scan."""
+    v = _number(name, value, "0 < value < inf", lambda v: v > 0)
+    lo, hi = MODULI
+    if not lo <= v <= hi:
+        raise ParameterError(
+            f"{name} = {v:.6g} is outside the supported range {lo:g} to {hi:g}: {MODULI_WHY}"
+        )
+    return v
 
 
 @dataclasses.dataclass(frozen=True)
@@ -98,7 +110,9 @@ class Layer:
         The energy Omega(I1, I2, I4, I5, I6) in units of this layer's own shear modulus and
         permittivity (default the ideal neo-Hookean dielectric).
     shear_modulus, permittivity : float
-        mu_k / mu > 0 and eps_k / eps > 0 (default 1). The layer's energy is
+        mu_k / mu and eps_k / eps, each from 1e-8 to 1e8 (default 1; params.MODULI, and
+        the same range for the ratio of the largest to the smallest of a tube's layers).
+        The layer's energy is
         mu_k Omega(F, D / sqrt(mu_k eps_k)), i.e. mu_k W + I5 / (2 eps_k) for an ideal dielectric.
     growth : float, (g_r, g_theta, g_z) or callable
         F_g = diag(g_r, g_theta, g_z), entries > 0: a scalar g (isotropic), three constants,
@@ -118,7 +132,7 @@ class Layer:
         if not isinstance(self.material, Material):
             raise ParameterError(f"material = {self.material!r} is not a Material")
         for f in ("shear_modulus", "permittivity"):
-            fix(f, _number(f, getattr(self, f), "0 < value < inf", lambda v: v > 0))
+            fix(f, modulus(f, getattr(self, f)))
         if not callable(self.growth):
             fix("growth", _triple("growth", self.growth))
 

@@ -28,6 +28,16 @@ SUPPORTED_WHY = (
     " (a search would run for hours or lose all digits)"
 )
 
+#: The supported range of a layer's shear modulus and permittivity, relative to the
+#: reference (mu = eps = 1, the units of the pressures, forces and voltage), and of the
+#: ratio of the largest to the smallest over the layers.
+MODULI = (1e-8, 1e8)
+MODULI_WHY = (
+    "beyond it the pressures and voltages in units of the reference under- or overflow, or"
+    " the layers' stiffnesses differ so much that the wall's equations lose their digits"
+    " (a substrate 1e-20 as stiff gave spurious roots, 1e-300 a division by zero)"
+)
+
 
 def check_uniform(outer_radius, length, growth, stretch, voltage) -> None:
     """Check the five numbers of the paper's tube (:meth:`model.layers.Tube.uniform`) against

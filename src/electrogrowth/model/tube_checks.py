@@ -6,7 +6,8 @@ fields: at least one Layer, listed from R = 1 outward with outer radii increasin
 growth evaluated through its layer), the length and the stretch positive, the stretch or
 the axial force (not both), the voltage not negative, the pressures finite. The supported
 box (model/params.py): the paper's five numbers for the paper's tube, the outer radius, the
-length and every layer's elastic axial stretch otherwise. A control (model/controls.py) is
+length, every layer's elastic axial stretch and the ratios of the layers' moduli and
+permittivities otherwise. A control (model/controls.py) is
 one of this tube: its layer exists, is named when there are several, and has constant
 growth; the stretch or the force is the one the tube prescribes.
 """
@@ -18,7 +19,7 @@ import numpy as np
 from ..errors import ParameterError
 from .controls import Control, parse_control
 from .layer import Layer, _number
-from .params import SUPPORTED, SUPPORTED_WHY, check_uniform
+from .params import MODULI, MODULI_WHY, SUPPORTED, SUPPORTED_WHY, check_uniform
 
 
 def checked_fields(tube) -> dict:
@@ -91,6 +92,22 @@ def check_supported(tube) -> None:
                 f"{name} = {value:.6g} is outside the supported range {lo:g} to {hi:g}:"
                 f" {SUPPORTED_WHY}"
             )
+    for field in ("shear_modulus", "permittivity"):
+        _check_ratio(tube.layers, field)
+
+
+def _check_ratio(layers, field: str) -> None:
+    """The largest over the smallest ``field`` of the layers inside MODULI's upper bound:
+    each layer in range is not enough, as a film 1e8 on a substrate 1e-8 is, in the
+    wall's equations, a substrate 1e-16 as stiff as its film."""
+    values = [getattr(la, field) for la in layers]
+    hi, lo = max(values), min(values)
+    if hi / lo > MODULI[1]:
+        k, j = values.index(hi) + 1, values.index(lo) + 1
+        raise ParameterError(
+            f"layers[{k}].{field} / layers[{j}].{field} = {hi / lo:.6g} is outside the"
+            f" supported range 1 to {MODULI[1]:g}: {MODULI_WHY}"
+        )
 
 
 def checked_control(tube, solve_for) -> Control:
