@@ -39,7 +39,7 @@ from ..bifurcation.critical import control_name
 from ..errors import ConvergenceError, ParameterError
 from ..incremental.accuracy import Accuracy
 from ..incremental.radial_table import layer_units
-from ..incremental.targets import check_mode, targets_for, with_family
+from ..incremental.targets import ImpedanceTarget, check_mode, with_family
 from ..model.layers import Tube
 
 STEP = 1e-4
@@ -108,7 +108,7 @@ def sensitivities(
     """
     solve_for = control_name(tube, solve_for)
     fam = check_mode(*mode, family)
-    target = Determinant(targets_for("impedance", Accuracy(rtol).fine), with_family(*mode, fam))
+    target = Determinant(ImpedanceTarget(Accuracy(rtol).fine), with_family(*mode, fam))
     try:
         return _implicit(target, tube, solve_for, value, keys, step)
     except _NoDeterminant:
@@ -179,7 +179,7 @@ class Determinant:
     tube asked (one scale for every partial: their ratio is what is wanted; that keeps it
     representable); ``plain``: the kernel's f instead."""
 
-    targets: object
+    targets: ImpedanceTarget
     modes: np.ndarray
     ref: float | None = None
 
