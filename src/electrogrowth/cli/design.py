@@ -134,7 +134,12 @@ def _vary(args) -> list[tuple[str, float, float]]:
 
 
 def _target(args):
-    if (args.target is None) == (args.target_set is None):
+    if args.target is not None and args.target_set is not None:
+        raise ParameterError(
+            f"--target and --target-set {args.target_set} are both given; give one of them"
+            " (--target M N, repeatable, for listed modes)"
+        )
+    if args.target is None and args.target_set is None:
         raise ParameterError("give the pattern wanted: --target M N (repeatable) or --target-set")
     if args.target_set is not None:
         return args.target_set
