@@ -195,15 +195,6 @@ def test_cli_design_target_that_is_no_mode_exits_2(capsys, mode):
     assert "\n" not in err and f"({mode[0]}, 0)" in err and "m >= 2" in err
 
 
-def test_cli_design_target_and_target_set_together_are_named(capsys):
-    """Both given was refused as "give the pattern wanted" (probe round 7b)."""
-    args = ["design", "--solve-for", "stretch", "--side", "compression", "--target", "0", "1"]
-    args += ["--target-set", "axisymmetric", "--vary", "outer_radius", "1.2", "1.3"]
-    assert main(args) == 2
-    err = capsys.readouterr().err.strip()
-    assert "\n" not in err and "--target and --target-set axisymmetric are both given" in err
-
-
 def test_cli_design_json(capsys, tmp_path):
     args = ["design", "--solve-for", "stretch", "--side", "compression", "--target", "0", "1"]
     args += ["--vary", "outer_radius", "1.2", "1.3", "--points", "2", "--m-max", "2"]
@@ -223,7 +214,7 @@ def test_cli_design_json(capsys, tmp_path):
     "extra, words",
     [
         (["--vary", "length", "1", "2", "--vary", "voltage", "0", "1"], "once or twice"),
-        (["--target-set", "prismatic"], "--target M N (repeatable) or --target-set"),
+        (["--target-set", "prismatic"], "--target and --target-set prismatic are both given"),
     ],
 )
 def test_cli_design_bad_input(capsys, extra, words):

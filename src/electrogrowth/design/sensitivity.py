@@ -20,7 +20,8 @@ combined by Richardson extrapolation, (4 D(h/2) - D(h)) / 3, which cancels the O
 of the central difference: the targets of thick layered tubes at high m are strongly curved
 in p, where D(h) alone is off by ~1e-4 at h = 1e-4. The step is relative: the absolute
 1e-4 max(1, |p|) of before was 10 % of a film 0.001 thick. Where p cannot be moved both ways
-(a bound of its range) a one-sided second-order difference is used.
+(a bound of its range), or where the kernel's unit modulus bends between p - h and p + h
+(:func:`_units_bend`), a one-sided second-order difference is used, Richardson-extrapolated.
 docs/design.md derives it and tests/design/test_sequence.py and
 tests/design/test_sensitivity_inner_film.py compare it with finite differences of full
 critical_value solves.
@@ -110,12 +111,12 @@ def sensitivities(
     fam = check_mode(*mode, family)
     target = Determinant(ImpedanceTarget(Accuracy(rtol).fine), with_family(*mode, fam))
     try:
-        return _implicit(target, tube, solve_for, value, keys, step)
+        return _implicit(target, tube, solve_for, value, keys, step, mode)
     except _NoDeterminant:
-        return _implicit(target.plain, tube, solve_for, value, keys, step)
+        return _implicit(target.plain, tube, solve_for, value, keys, step, mode)
 
 
-def _implicit(target, tube, solve_for, value, keys, step) -> dict[str, float]:
+def _implicit(target, tube, solve_for, value, keys, step, mode) -> dict[str, float]:
     """dv/dp = -D_p / D_v of ``target`` (a function of a tube) for every key (module
     docstring)."""
 
@@ -125,8 +126,8 @@ def _implicit(target, tube, solve_for, value, keys, step) -> dict[str, float]:
     f_v = _derivative(lambda v: f(tube, v), value, relative_step(value, step))
     if not math.isfinite(f_v) or f_v == 0.0:
         raise ConvergenceError(
-            f"dD/d{solve_for} vanishes at {solve_for} = {value:g}: a fold of the mode's"
-            " branch, where the critical value is not differentiable"
+            f"dD/d{solve_for} vanishes at {solve_for} = {value:g} for mode {tuple(mode)}: a"
+            " fold of the branch, where the critical value is not differentiable"
         )
     out = {}
     for key in parameter_keys(tube, solve_for) if keys is None else keys:
