@@ -145,12 +145,13 @@ def test_unreadable_file_is_one_line(sweep, tmp_path, capsys):
         (("modes", "top"), 6),
         (("modes", "m"), 7),
         (("absent",), None),
+        (("grid", "layers[2].shear_modulus"), 5),  # a quoted key keeps its dot (was: 3)
     ],
 )
 def test_line_of_follows_tables_and_inline_tables(key, line):
     text = (
         "fixed.length = 0\n# comment\n[grid]\nstretch = {start = 1, stop = 2, num = 0}\n"
-        '\n[ modes ]\n"m" = [0, 1]\n'
+        '"layers[2].shear_modulus" = [0.1, 1]\n[ modes ]\n"m" = [0, 1]\n'
     )
     assert line_of(text, key) == line
 

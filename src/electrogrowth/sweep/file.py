@@ -292,8 +292,12 @@ _KEY = re.compile(
 )
 
 
+_PART = re.compile(r"""[A-Za-z0-9_-]+|"[^"]*"|'[^']*'""")
+
+
 def _split_key(text: str) -> tuple[str, ...]:
-    return tuple(p.strip().strip("\"'") for p in text.split("."))
+    """The parts of a dotted TOML key; a quoted part keeps its dots ("layers[2].mu")."""
+    return tuple(p.strip("\"'") for p in _PART.findall(text))
 
 
 def line_of(text: str, key: tuple[str, ...]) -> int | None:
