@@ -14,7 +14,7 @@ part of a scan). Derivation and checks: docs/derivation-dominant.md.
 
 Only the orientation of the subspace is not forgotten: the target is
 det(M2) / sqrt(det M^T M) of the *oriented* basis carried from the inner face. Write the
-incoming basis (in hat coordinates, at the start R_a of the outer segment) X = X+ + X-
+incoming basis (in hat coordinates, at the start R_a of a segment) X = X+ + X-
 with X+- = P+- X, P+ = (I + sign Q) / 2 the spectral projector. W+ is a graph over U
 (strong ellipticity: no growing solution has U = 0 and S != 0 on a face, the argument of
 halfspace.py), so X+ = [I; z+] A with A the U rows of X+. Carried outward, [I; z+(R)] E(R)
@@ -180,3 +180,49 @@ def split_orientation(P, X, s):
         C[3, b] /= s
         C[7, b] *= s
     return (1.0 if d > 0.0 else -1.0), np.max(np.abs(C))
+
+
+@nb.njit(cache=True)
+def split_sizes(P, X, s):
+    """(sign det A, log|det A|, rho) for the incoming basis X (8, 4), A the U rows of
+    X+ = P X: rho = max |B X- B_U^-1| / max |B_U A B_U^-1| (B as in
+    :func:`split_orientation`), the remnant relative to the *size* of A, not to its
+    inverse. It stays finite where det A = 0 (at a root of a mode of the inner face,
+    where :func:`split_orientation`'s remnant is infinite); it cannot fall below the
+    O(1 / |(m, k r)|) by which the frozen W+ differs from the true dominant subspace,
+    which is why the caller bounds the true remnant by the attraction rate instead
+    (short_wave_start.keep_plan). (0, nan, inf) if the sizes are not finite."""
+    Xp = P @ X
+    A = Xp[:4].copy()
+    d = determinant(A)
+    C = X - Xp
+    top, rest = 0.0, 0.0
+    for a in range(8):
+        for b in range(4):
+            v = C[a, b] * (s if b == 3 else 1.0)
+            if a == 3:
+                v /= s
+            elif a == 7:
+                v *= s
+            rest = max(rest, abs(v))
+            if a < 4:
+                u = A[a, b] * (s if b == 3 else 1.0) / (s if a == 3 else 1.0)
+                top = max(top, abs(u))
+    if not (np.isfinite(d) and np.isfinite(rest) and top > 0.0 and np.isfinite(top)):
+        return 0.0, np.nan, np.inf
+    sign = 1.0 if d > 0.0 else (-1.0 if d < 0.0 else 0.0)
+    return sign, (np.log(abs(d)) if d != 0.0 else -np.inf), rest / top
+
+
+@nb.njit(cache=True)
+def growth_rate(Q, z, keep) -> float:
+    """tr(Q1 + Q2 z) over the kept pairs: d log|det U| / dR of a basis [U; z U] carried by
+    d(eta~)/dR = Q eta~ while its subspace stays z (Liouville)."""
+    acc = 0.0
+    for i in range(4):
+        if (keep >> i) & 1:
+            acc += Q[i, i]
+            for j in range(4):
+                if (keep >> j) & 1:
+                    acc += Q[i, 4 + j] * z[j, i]
+    return acc

@@ -27,10 +27,11 @@ TableStack for a batch), so the kernel knows no material.
 
 A short wave's Riccati equation is stiff (its subspace is attracted to the dominant one at
 a rate ~ 2 |(m, k r)|), so for loose tolerances (the signs of a march) the kernel may stop
-integrating the last segment once the carried subspace lies in the dominant subspace of the
-frozen Stroh system, and restart near the outer face from it, keeping the orientation
-(short_wave_start.py, dominant.py, docs/derivation-dominant.md).
-Roots are always integrated through the whole wall.
+integrating a segment (a layer) once the carried subspace lies in the dominant subspace of the
+frozen Stroh system, and restart near the segment's outer end from it, keeping the orientation
+(short_wave_start.py, dominant.py, docs/derivation-dominant.md); for tighter ones (the roots) a
+restart at radii fixed by the plan that carries the basis' size along, so that det(M2) keeps
+its zeros.
 
 Every member of a batch also says which of the four pairs (U_j, S_j) its mode family keeps
 (``keep``, a bitmask, ALL_PAIRS = 0b1111 for the paper's ansatz; see charts.py and
@@ -56,6 +57,8 @@ from .short_wave_start import (
     REMNANT_MAX,
     forget_check,
     forget_plan,
+    keep_plan,
+    keep_restart,
 )
 
 #: every pair (U_j, S_j) kept: the paper's ansatz
@@ -67,6 +70,11 @@ ALL_PAIRS = 0b1111
 #: orientation read off it at the next switch are arbitrary (a flipped target).
 #: Rejected, the step shrinks until it ends below LEAP and the chart switches cleanly.
 LEAP = 16.0 * SWITCH
+
+#: ``forget`` of integrate_one: every wall integrated; the short-wave start that keeps the
+#: sign only for rtol >= FORGET_RTOL (the signs of a march) and the one that keeps det(M2)
+#: below it; the latter at every rtol (roots refined on det(M2))
+WHOLE_WALL, SHORT_WAVE, KEEP_SIZE = 0, 1, 2
 
 #: status codes written by the kernel
 OK, MAX_STEPS, STEP_UNDERFLOW, NO_CHART = 0, 1, 2, 3
@@ -149,7 +157,7 @@ def _radii(table, work):
 
 
 @nb.njit(cache=True)
-def integrate_one(m, k, keep, table, rtol, max_steps, forget=True):
+def integrate_one(m, k, keep, table, rtol, max_steps, forget=SHORT_WAVE):
     """Integrate mode (m, k) through the wall of ``table`` (a RadialTable).
 
     ``keep`` (bit j set: pair (U_j, S_j) kept; ALL_PAIRS for the paper's ansatz) selects
@@ -159,16 +167,19 @@ def integrate_one(m, k, keep, table, rtol, max_steps, forget=True):
     condition. Adaptive steps with the local error of every entry of z~ below
     rtol (1 + |z~|), and a change of chart whenever an entry of z~ exceeds SWITCH (a step
     ending above LEAP is rejected: it jumped a pole of the chart).
-    With ``forget`` (default) and rtol >= FORGET_RTOL, a stiff short wave restarts the
-    outer segment near the outer face from the dominant subspace once the carried one
-    lies in it (short_wave_start.py; a family's left-out pairs stay on their constant
-    line, dominant.hold_left_out); False integrates every wall.
+    A stiff short wave may restart each segment (layer) near its outer end from the
+    dominant subspace once the carried one lies in it (short_wave_start.py; a family's
+    left-out pairs stay on their constant line, dominant.hold_left_out): with ``forget``
+    SHORT_WAVE (default) keeping only the orientation for rtol >= FORGET_RTOL (the signs
+    of a march), and keeping the basis' size too below it; KEEP_SIZE keeps the size at
+    every rtol; WHOLE_WALL integrates every wall.
     Returns (f, z~, J, status, steps, log_norm): the target of the kept block, the
     impedance in chart J at R_N, the chart, a status code (OK, MAX_STEPS, STEP_UNDERFLOW,
     NO_CHART; f is NaN unless OK), the steps tried, and log sqrt(det(M^T M)) of the basis
     M carried from the inner face (U~ = I there), which f divides out: f exp(log_norm) is
-    det(M2) of that basis, an analytic function of the parameters (NaN where the outer
-    segment was restarted from the dominant subspace: that forgets M's size).
+    det(M2) of that basis, an analytic function of the parameters (NaN where the restart
+    kept only the orientation; where it kept the size, det(M2) times a smooth positive
+    factor close to 1, with the same zeros to rtol: docs/derivation-dominant.md).
     """
     L = table.coef.shape[0]
     R0, RN = table.bounds[0], table.bounds[L]
@@ -190,13 +201,17 @@ def integrate_one(m, k, keep, table, rtol, max_steps, forget=True):
     znew = np.empty((4, 4))
     h = (RN - R0) / (4.0 + s)
     steps = 0
-    plan = forget and rtol >= FORGET_RTOL
-    R_s, rate, check, checks = -1.0, 0.0, np.inf, 0
-    for seg in range(L):
+    sizes = forget == KEEP_SIZE or (forget == SHORT_WAVE and rtol < FORGET_RTOL)
+    signs = forget == SHORT_WAVE and not sizes
+    for seg in range(L):  # each layer may restart near its outer end
         R, end = table.bounds[seg], table.bounds[seg + 1]
+        R_s, rate, check, checks, plan, first = -1.0, 0.0, np.inf, 0, signs, steps
+        stop_at = np.inf  # where the restart that keeps the size is tried (keep_plan)
+        if sizes:
+            R_s, stop_at = keep_plan(R, m, k, s, table, seg, rtol, work)
         rate = _rhs(R, z, m, k, table, seg, work, K[0])
         while R < end:
-            if plan and seg == L - 1 and steps >= 3 and end - R > PLAN_STEPS * h:
+            if plan and steps - first >= 3 and end - R > PLAN_STEPS * h:
                 plan = False  # a long integration ahead: is this a stiff short wave?
                 R_s, rate = forget_plan(R, m, k, s, table, seg, rtol, work)
                 if R_s > 0.0:
@@ -218,20 +233,36 @@ def integrate_one(m, k, keep, table, rtol, max_steps, forget=True):
                     h = min(h, end - R)
                 if not (np.isfinite(check) and check < R_s):
                     check = np.inf
+            if R >= stop_at:  # the restart that keeps the size (keep_plan)
+                stop_at = np.inf
+                sign_a, grow, zs = keep_restart(R, R_s, z, J, m, k, s, keep, table, seg, work)
+                if sign_a != 0.0:
+                    R, z, J, orient = R_s, zs, 0, orient * sign_a
+                    log_det += grow
+                    if np.max(np.abs(z)) > SWITCH:
+                        zn, J, d = switch_chart(z, 0)
+                        if J < 0:
+                            return np.nan, z, 0, NO_CHART, steps, np.nan
+                        z, orient = zn, orient * np.sign(d)
+                        log_det += np.log(abs(d))
+                    chart_setup(J, s, keep, work.perm, work.mult)
+                    rate = _rhs(R, z, m, k, table, seg, work, K[0])
+                    h = min(h, end - R)
             if steps >= max_steps:
                 return np.nan, z, J, MAX_STEPS, steps, np.nan
             if h < 1e-14 * (RN - R0):
                 return np.nan, z, J, STEP_UNDERFLOW, steps, np.nan
-            last = R + h >= end
+            stop = min(end, stop_at)
+            last = R + h >= stop
             if last:
-                h = end - R
+                h = stop - R
             grow = _step(R, h, z, m, k, table, seg, work, K, ztmp, znew, rate)
             err = _error(h, z, znew, K, rtol)
             steps += 1
             if err <= 1.0 and not np.max(np.abs(znew)) <= LEAP:
                 err = 1e6  # past a pole of the chart: shrink the step (LEAP)
             if err <= 1.0:
-                R = end if last else R + h
+                R = stop if last else R + h
                 log_det += grow
                 for i in range(4):
                     for j in range(4):

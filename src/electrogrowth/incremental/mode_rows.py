@@ -17,7 +17,7 @@ import math
 import numba as nb
 import numpy as np
 
-from .impedance import _member_table, integrate_one
+from .impedance import KEEP_SIZE, _member_table, integrate_one
 from .modes import ALL_PAIRS, U_TH, U_Z, Family
 
 _PRISMATIC, _TORSIONAL, _WRINKLE = (Family.PRISMATIC.code, Family.TORSIONAL.code,
@@ -71,16 +71,17 @@ def rows_parallel(modes, length, tables, rtol, max_steps):
 
 @nb.njit(cache=True)
 def rows_determinant(modes, length, tables, rtol, max_steps):
-    """(f, log_norm, status) of every row of ``modes`` on the one state of ``tables``, every
-    wall integrated (no short-wave restart, which forgets log_norm; impedance.integrate_one),
+    """(f, log_norm, status) of every row of ``modes`` on the one state of ``tables``, a
+    short wave restarted only in the way that keeps the basis' size (impedance.KEEP_SIZE),
     row by row as :func:`rows_serial`:
-    f exp(log_norm) is det(M2), what a root is refined on."""
+    f exp(log_norm) is det(M2) (times a smooth positive factor where restarted), what a
+    root is refined on."""
     n = modes.shape[0]
     f, log_norm, status = np.empty(n), np.empty(n), np.empty(n, np.int64)
     table = _member_table(tables, 0)
     for b in range(n):
         k = modes[b, 1] * math.pi / length
         f[b], _, _, status[b], _, log_norm[b] = integrate_one(
-            modes[b, 0], k, row_pairs(modes, b), table, rtol, max_steps, False
+            modes[b, 0], k, row_pairs(modes, b), table, rtol, max_steps, KEEP_SIZE
         )
     return f, log_norm, status
