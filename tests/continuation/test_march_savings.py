@@ -68,14 +68,15 @@ def test_a_settled_zero_is_bracketed_by_one_step():
 
 def test_one_crossing_is_finished_near_its_loose_root():
     """One candidate with its loose values: the fine root to the last bits in ~4 fine
-    evaluations; a loose root off by more than the bracket falls back on the bisection."""
+    evaluations; a loose root off by more than the first bracket in the second; off by more
+    than that, the bisection."""
     c = 0.3141592653589793
 
     def fine(x, i):
         asked.append(x)
         return (c - x) * (2.0 + x)
 
-    for shift, most in ((1e-12, 4), (30 * NEAR, 12)):
+    for shift, most in ((1e-12, 4), (30 * NEAR[0], 8), (30 * NEAR[-1], 14)):
         asked = []
 
         def signed(x, idx, shift=shift):
@@ -92,3 +93,36 @@ def test_one_crossing_is_finished_near_its_loose_root():
         )
         assert got[0] == pytest.approx(c, rel=2e-15, abs=0)
         assert len(asked) <= most
+
+
+def test_a_loose_root_on_a_step_is_refined_on_the_determinant():
+    """A short wave living at the inner face: its bounded target f is a step (+-1e-9), its
+    size log_norm carries the zero and grows like 60 x. Brent's method on f bisects (~30
+    evaluations to 1e-10); on det(M2) = f exp(log_norm), divided by exp of the line through
+    log_norm at the ends, it converges in a few."""
+    c = 0.3141592653589793
+
+    def parts(x, i):
+        asked.append(x)
+        return math.copysign(1e-9, c - x), math.log(abs(c - x) + 1e-300) + 60.0 * x + 20.0
+
+    def signed(x, idx):
+        return np.array([parts(x, 0)[0]])
+
+    def fine(x, i):
+        return (c - x) * math.exp(60.0 * x)
+
+    for loose_parts, least, most in ((None, 25, 40), (parts, 0, 12)):
+        asked = []
+        got = first_roots(
+            signed,
+            fine,
+            np.array([0]),
+            np.array([0.2]),
+            0.4,
+            0.0,
+            values=(signed(0.2, 0), signed(0.4, 0)),
+            loose_parts=loose_parts,
+        )
+        assert got[0] == pytest.approx(c, rel=2e-15, abs=0)
+        assert least <= len(asked) <= most, len(asked)

@@ -22,6 +22,7 @@ from collections.abc import Callable
 import numpy as np
 
 from ..basestate.tube import solve_base_state, threshold
+from ..continuation.events import scaled
 from ..errors import NEAR_LOCK, ConvergenceError
 from ..model.builtin_energies import BuiltinEnergy
 from ..model.layers import Tube
@@ -151,18 +152,14 @@ class SignedRow:
         return self.signed.one(x, self.i)
 
 
-#: det(M2) is scaled by exp(-log_norm) at a root's first sample; the exponent of its other
-#: samples is held within +-MAX_EXPONENT (float64 overflows at 709)
-MAX_EXPONENT = 600.0
-
-
 @dataclasses.dataclass(frozen=True, eq=False)
 class RootRows:
     """The rows of :class:`Signed`, as a root is refined on them: for the impedance kernel,
     det(M2) of the basis carried from the inner face (incremental.targets.analytic_parts),
     analytic in x with the signs and zeros of f, where f itself may be a step of constant
     size (a mode living at the inner face); in units of its size at the row's first sample,
-    so that it stays representable. Other targets (collocation's) as they are."""
+    so that it stays representable (continuation.events.scaled). Other targets
+    (collocation's) as they are."""
 
     at: TubeAt
     target: Callable
@@ -172,15 +169,21 @@ class RootRows:
 
     def one(self, x, i) -> float:
         """Signed det(M2) of row i at x, in units of its first sample's size."""
+        f, log_norm = self.parts(x, i)
+        if not math.isfinite(log_norm):  # the kernel failed there: f, from its fallback
+            return f
+        ref = self.scale.setdefault(i, log_norm)
+        return scaled(f, log_norm - ref)
+
+    def parts(self, x, i) -> tuple[float, float]:
+        """(signed f, log_norm) of row i at x: det(M2) is their f exp(log_norm); log_norm
+        is NaN for a target without them (collocation's) or where the kernel failed."""
         parts = getattr(self.target, "parts", None)
         if parts is None:
-            return float(self.signs[i] * self.target(self.at.state(x), self.modes[[i]])[0])
+            f = self.target(self.at.state(x), self.modes[[i]])[0]
+            return float(self.signs[i] * f), math.nan
         f, log_norm = (float(v[0]) for v in parts(self.at.state(x), self.modes[[i]]))
-        if not math.isfinite(log_norm):  # the kernel failed there: f, from its fallback
-            return float(self.signs[i] * f)
-        ref = self.scale.setdefault(i, log_norm)
-        exponent = min(max(log_norm - ref, -MAX_EXPONENT), MAX_EXPONENT)
-        return float(self.signs[i] * f * math.exp(exponent))
+        return float(self.signs[i] * f), log_norm
 
     def row(self, i: int) -> SignedRow:
         """Row i alone, a function of x."""

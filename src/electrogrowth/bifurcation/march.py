@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import dataclasses
 from collections.abc import Callable
+from typing import NamedTuple
 
 import numpy as np
 
@@ -176,11 +177,14 @@ def first_bifurcations(
             f" ({row_family(modes[i])}) at {solve_for} = {x0:g}; start from"
             " a stable state"
         )
-    signed = Signed(at, targets, modes, sref)
-    signed_fine = Signed(at, brent_targets or targets, modes, sref)
-    # roots are refined on the analytic det(M2), which a secant step follows where the
-    # bounded target is a step (a mode living at the inner face: incremental/targets.py)
-    signed_root = RootRows(at, brent_targets or targets, modes, sref)
+    fine = brent_targets or targets
+    views = Views(
+        Signed(at, targets, modes, sref),
+        Signed(at, fine, modes, sref),
+        RootRows(at, fine, modes, sref),
+        RootRows(at, targets, modes, sref),
+    )
+    signed = views.signed
 
     watch = EventWatch(x0, g0, sense, path.scale, steps.max_wait)
     step = Stepper(path, steps, state.lambda_i)
@@ -209,7 +213,7 @@ def first_bifurcations(
             idx = np.nonzero(watch.alive & (watch.xa != x))[0]
             if idx.size:
                 x, g = _last_look(signed, watch, idx, x)
-                found += _advance(watch, idx, x, g, signed, signed_fine, signed_root, top)
+                found += _advance(watch, idx, x, g, views, top)
             break
         idx = np.nonzero(watch.needs(x))[0]
         if idx.size:
@@ -218,7 +222,7 @@ def first_bifurcations(
             except ConvergenceError as err:  # the state solves, its tables do not
                 unresolved, stop = err, True
                 continue
-            found += _advance(watch, idx, x, g, signed, signed_fine, signed_root, top)
+            found += _advance(watch, idx, x, g, views, top)
         reach = watch.reach(steps.safety, steps.smallest * path.scale)
         step.accept(x, state.lambda_i, reach / path.scale)
     found.sort(key=lambda mv: sense * mv.value)
@@ -267,12 +271,24 @@ def _last_look(signed: Signed, watch, idx, x: float):
     return good, g
 
 
-def _advance(
-    watch, idx, x, g, signed: Signed, signed_fine: Signed, signed_root: RootRows, need=None
-) -> list:
+class Views(NamedTuple):
+    """The modes' signed targets along the path, each as one use wants it: the march's
+    loose samples, the bounded fine values (a dip's minimisation, the check of LATER
+    candidates), and det(M2), analytic where the bounded target is a step (a mode living
+    at the inner face: incremental/targets.py), at the fine tolerance (roots) and at the
+    loose one (a single candidate's loose root, events._near_root)."""
+
+    signed: Signed
+    fine: Signed
+    root: RootRows
+    loose_root: RootRows
+
+
+def _advance(watch, idx, x, g, views: Views, need=None) -> list:
     """Record the samples at x; roots of the modes that changed sign or dipped to zero
     (of those that changed sign, the first ``need``, see events.first_roots). A dip is
-    looked for on the bounded ``signed_fine``, roots are refined on ``signed_root``."""
+    looked for on the bounded fine values, roots are refined on det(M2) (``views``)."""
+    signed, signed_fine, signed_root = views.signed, views.fine, views.root
     found, modes = [], signed.modes
     hit = crossed(g)
     js = np.nonzero(hit)[0]
@@ -288,6 +304,7 @@ def _advance(
             need,
             values=(watch.g[0, cand], g[js]),
             fine_many=signed_fine,
+            loose_parts=views.loose_root.parts,
         )
         for j, root in zip(js, roots):
             if root is None:  # the loose sign was wrong: the mode is not past a root yet

@@ -110,6 +110,16 @@ def surface_tolerance(rtol: float) -> Tolerance:
     return Tolerance(max(1e-15, 1e-3 * rtol), 1e-15, 300)
 
 
+#: det(M2) = f exp(log_norm) is refined in units of a reference size exp(ref); the exponent
+#: log_norm - ref is held within +-MAX_EXPONENT (float64 overflows at 709)
+MAX_EXPONENT = 600.0
+
+
+def scaled(f: float, exponent: float) -> float:
+    """f exp(exponent), the exponent held within +-MAX_EXPONENT (representable)."""
+    return f * math.exp(min(max(exponent, -MAX_EXPONENT), MAX_EXPONENT))
+
+
 def brent(f, a: float, b: float, tol: Tolerance = FULL, *, ref=None, named: bool = True):
     """The root of f in [a, b] by Brent's method to ``tol`` (near ``ref``, default a).
 
@@ -234,12 +244,15 @@ def first_roots(
     need: int | None = None,
     values: tuple[np.ndarray, np.ndarray] | None = None,
     fine_many: Callable[[float, np.ndarray], np.ndarray] | None = None,
+    loose_parts: Callable[[float, int], tuple[float, float]] | None = None,
 ) -> list:
     """Roots of the candidates ``cand``, which changed sign between xa (each its own last
     sample) and x by the loose ``signed(x, cand)``; ``fine(x, i)`` is the accurate signed
     value of candidate i. ``values``: the loose values at xa and at x, if known.
     ``fine_many(x, cand)``: the accurate signs of many candidates at once (a batch), if
-    given, for the check of the LATER ones.
+    given, for the check of the LATER ones. ``loose_parts(x, i)``: candidate i's loose
+    (signed f, log_norm), det(M2) = f exp(log_norm), if its loose root is to be refined on
+    det(M2) rather than on ``signed``.
 
     A single candidate with its ``values`` is finished by :func:`_near_root`.
 
@@ -252,7 +265,7 @@ def first_roots(
     reported. x0 is the start of the path, where every candidate is positive.
     """
     if cand.size == 1 and values is not None:
-        near = _near_root(signed, fine, int(cand[0]), float(xa[0]), x, values)
+        near = _near_root(signed, fine, int(cand[0]), float(xa[0]), x, values, loose_parts)
         if near is not None:
             return [near]
     lo, hi = np.array(xa, float), np.full(cand.size, x, float)
@@ -366,30 +379,64 @@ def _pack(signed, cand, lo, hi, x: float, need: int) -> np.ndarray:
 #: the loose root of a single candidate, to this (not to full precision: it only places
 #: the fine bracket)
 LOOSE_ROOT = Tolerance(1e-10, 1e-12)
-#: the half-width of the fine bracket around the loose root, times max(1, |root|): the
-#: loose root (signs at rtol 1e-8 or looser, 1e-5 in a scan) is off by ~1e-10 relative,
-#: so the bracket holds the fine root with room to spare; where it does not, the caller
-#: bisects as for many candidates
-NEAR = 1e-8
+#: the half-widths of the fine bracket around the loose root, times max(1, |root|), tried
+#: in turn: the loose root (signs at rtol 1e-8 or looser, 1e-5 in a scan) is off by ~1e-10
+#: relative for most modes, so the first holds the fine root with room to spare; a short
+#: wave's target is small (2.5e-7 for (2000, 0) of a film on a thick substrate) and its
+#: loose root can be 3e-8 off; where neither holds it, the caller bisects as for many
+#: candidates (~20 fine evaluations where the second width costs ~6)
+NEAR = (1e-8, 1e-6)
 
 
-def _near_root(signed, fine, i: int, xa: float, x: float, values) -> float | None:
+def _on_line(parts, a: float, b: float) -> Callable[[float], float]:
+    """det(M2) = f exp(log_norm) (``parts(y)``: (f, log_norm)) divided by exp of the line
+    through log_norm at a and b.
+
+    The bounded target f of a short wave is a step where its mode lives at the inner face
+    (its size is in log_norm), and Brent's method on a step is a bisection, ~30 loose
+    evaluations in a march step; det(M2) is linear through the root, but log_norm ~ 600
+    changes by ~60 across a step, and on exp(60 x) Brent's method bisects too. What is left
+    of log_norm off its line is small and smooth. Where log_norm is not finite (the kernel
+    fell back, or a target without it), f as it is."""
+    ends = {a: parts(a), b: parts(b)}
+    la, lb = ends[a][1], ends[b][1]
+
+    def value(y: float) -> float:
+        f, log_norm = ends[y] if y in ends else parts(y)
+        if not (math.isfinite(log_norm) and math.isfinite(la) and math.isfinite(lb)):
+            return f
+        return scaled(f, log_norm - (la + (lb - la) * (y - a) / (b - a)))
+
+    return value
+
+
+def _near_root(signed, fine, i: int, xa: float, x: float, values, loose_parts=None):
     """The fine root of the one candidate i between xa and x: Brent's method on its loose
     values (known at both ends) to LOOSE_ROOT, then on the fine ones in +-NEAR around that
-    root. A bisection of loose signs would cost SHARED_ROUNDS evaluations for a bracket
-    2^-6 of the step, Brent's on it ~6 fine ones; this costs ~3 loose and ~4 fine ones.
-    None if the loose values do not change sign or the fine ones do not change sign across
-    the narrow bracket (first_roots then bisects)."""
+    root (each width of NEAR in turn). A bisection of loose signs would cost SHARED_ROUNDS
+    evaluations for a bracket 2^-6 of the step, Brent's on it ~6 fine ones; this costs ~3
+    loose and ~4 fine ones.
+    With ``loose_parts`` the loose root is refined on det(M2) (:func:`_on_line`), its
+    values at both ends asked again. None if the loose values do not change sign or the
+    fine ones do not change sign across the narrow bracket (first_roots then bisects)."""
     g_a, g_x = float(values[0][0]), float(values[1][0])
     if not (g_a > 0 >= g_x):
         return None
-    loose = Remembered(lambda y: float(signed(y, np.array([i]))[0]))
-    loose.seen.update({float(xa): g_a, float(x): g_x})
+    if loose_parts is None:
+        loose = Remembered(lambda y: float(signed(y, np.array([i]))[0]))
+        loose.seen.update({float(xa): g_a, float(x): g_x})
+    else:
+        loose = Remembered(_on_line(lambda y: loose_parts(y, i), float(xa), float(x)))
+        if not loose(float(xa)) > 0 >= loose(float(x)):
+            return None
     root = brent(loose, *sorted((xa, x)), LOOSE_ROOT, named=False)
-    w = NEAR * max(1.0, abs(root))
-    lo, hi = max(root - w, min(xa, x)), min(root + w, max(xa, x))
     f = Remembered(lambda y: fine(y, i))
-    good, bad = (lo, hi) if x > xa else (hi, lo)  # the start side is positive
-    if f(good) > 0 >= f(bad):
-        return brent(f, lo, hi)
+    for near in NEAR:
+        w = near * max(1.0, abs(root))
+        lo, hi = max(root - w, min(xa, x)), min(root + w, max(xa, x))
+        good, bad = (lo, hi) if x > xa else (hi, lo)  # the start side is positive
+        if f(good) > 0 >= f(bad):
+            return brent(f, lo, hi)
+        if f(good) <= 0 and f(bad) > 0:  # the fine values disagree with the loose ones
+            break
     return None

@@ -35,8 +35,8 @@ import math
 import numpy as np
 
 from ..basestate.tube import solve_base_state
-from ..bifurcation.along import MAX_EXPONENT
 from ..bifurcation.critical import control_name
+from ..continuation.events import scaled
 from ..errors import ConvergenceError, ParameterError
 from ..incremental.accuracy import Accuracy
 from ..incremental.radial_table import layer_units
@@ -190,7 +190,7 @@ class Determinant:
             raise _NoDeterminant
         if self.ref is None:
             self.ref = log_norm
-        return f * math.exp(min(max(log_norm - self.ref, -MAX_EXPONENT), MAX_EXPONENT))
+        return scaled(f, log_norm - self.ref)
 
     def plain(self, tube) -> float:
         return float(self.targets(solve_base_state(tube), self.modes)[0])
