@@ -106,7 +106,11 @@ def test_neo_hookean_coefficients_are_unchanged(family, before):
     else:
         tube = _film_tube(HOOP, voltage=0.2, eps=(2.0, 0.5))
         e = dielectric_expansion(tube, 12, THETA, nodes=16)
-    assert e.coefficient == pytest.approx(before, rel=1e-9)
+    # within 1e-9, or within the coefficient's own estimate where that is larger: the
+    # voltage coefficient's is 8e-9 ... 1.7e-8 (the change of A' with its steps halved),
+    # and a change of the impedance route's start in its last bit (1e-15) moves it by
+    # 4.5e-9 (the expansion's Newton stops at a step below 1e-12 of the control's scale)
+    assert abs(e.coefficient - before) <= max(1e-9 * before, e.derivative_error)
 
 
 # ---- exact identities and limits --------------------------------------------------------
