@@ -211,6 +211,24 @@ def test_secant_estimate_is_the_distance_to_the_root(offset):
         assert len(calls) == (2 if offset > 0 else 3) + len(error_estimate.NOISE_OFFSETS)
 
 
+def test_a_root_within_the_noise_is_bracketed_at_the_noise_read():
+    """The coarse root 1e-15 beyond the value, the target's noise (+1e-14 just past the
+    value) above the line's fall at twice that distance: the bracket is taken at the
+    rounding floor's read, 1e-12 beyond (an evaluation it makes anyway), not at 2 d, where
+    the noise hid the sign change and the windows' search cost six evaluations more (a
+    thick tube's (400, 0) in voltage)."""
+    calls = []
+    value, root = 0.25, 0.25 + 1e-15
+
+    def g(x):
+        calls.append(x)
+        return (root - x) + (1e-14 if value < x < value + 1e-13 else 0.0)
+
+    est = error_estimate.second_resolution(g, value, (0.0, 6.0))
+    assert est == pytest.approx(1e-15, rel=0.3)
+    assert len(set(calls)) == 2 + len(error_estimate.NOISE_OFFSETS)
+
+
 def test_secant_estimate_falls_back_without_a_sign_change():
     """A target that only touches zero near the value (no root within the secant's step):
     the windows' Brent decides, as before."""

@@ -98,8 +98,9 @@ def test_one_crossing_is_finished_near_its_loose_root():
 def test_a_loose_root_on_a_step_is_refined_on_the_determinant():
     """A short wave living at the inner face: its bounded target f is a step (+-1e-9), its
     size log_norm carries the zero and grows like 60 x. Brent's method on f bisects (~30
-    evaluations to 1e-10); on det(M2) = f exp(log_norm), divided by exp of the line through
-    log_norm at the ends, it converges in a few."""
+    evaluations to 1e-10); after its first iterations, det(M2) = f exp(log_norm), divided by
+    exp of the line through log_norm at the ends, converges in a few. A smooth target keeps
+    Brent's method on f, with no evaluation more."""
     c = 0.3141592653589793
 
     def parts(x, i):
@@ -112,7 +113,7 @@ def test_a_loose_root_on_a_step_is_refined_on_the_determinant():
     def fine(x, i):
         return (c - x) * math.exp(60.0 * x)
 
-    for loose_parts, least, most in ((None, 25, 40), (parts, 0, 12)):
+    for loose_parts, least, most in ((None, 25, 40), (parts, 0, 22)):
         asked = []
         got = first_roots(
             signed,
@@ -126,3 +127,30 @@ def test_a_loose_root_on_a_step_is_refined_on_the_determinant():
         )
         assert got[0] == pytest.approx(c, rel=2e-15, abs=0)
         assert least <= len(asked) <= most, len(asked)
+
+
+def test_a_smooth_loose_root_costs_no_more_with_the_determinant_at_hand():
+    c = 0.3141592653589793
+    counts = []
+    for with_parts in (False, True):
+        asked = []
+
+        def signed(x, idx, asked=asked):
+            asked.append(x)
+            return np.array([(c - x) * (2.0 + x)])
+
+        def parts(x, i):
+            raise AssertionError("det(M2) asked for a smooth target")
+
+        first_roots(
+            signed,
+            lambda x, i: (c - x) * (2.0 + x),
+            np.array([0]),
+            np.array([0.2]),
+            0.4,
+            0.0,
+            values=(signed(0.2, 0), signed(0.4, 0)),
+            loose_parts=parts if with_parts else None,
+        )
+        counts.append(len(asked))
+    assert counts[0] == counts[1]

@@ -19,10 +19,10 @@ import math
 import numpy as np
 import pytest
 
-from electrogrowth import Layer, Tube, solve_base_state
+from electrogrowth import Layer, Tube, critical_value, solve_base_state
 from electrogrowth.bifurcation.along import TubeAt
 from electrogrowth.brent import brentq
-from electrogrowth.incremental.impedance import KEEP_SIZE, WHOLE_WALL, integrate_one
+from electrogrowth.incremental.impedance import KEEP_SIZE, SHORT_WAVE, WHOLE_WALL, integrate_one
 from electrogrowth.incremental.mode_rows import row_pairs
 from electrogrowth.incremental.radial_table import build_table
 
@@ -134,3 +134,23 @@ def test_the_factor_is_smooth_in_the_parameter(tube, control, mode, x):
     logs = np.array(logs)
     assert np.abs(np.diff(logs)).max() <= 1e-6
     assert np.abs(np.diff(logs, 2)).max() <= 1e-8
+
+
+def test_loose_signs_restart_next_to_a_root_of_the_inner_face():
+    """Next to a root of det A (a short wave of the inner face) the orientation-only
+    restart's remnant ||X- A^-1|| is unbounded: each loose evaluation of (2000, 2000) within
+    1e-9 of its root integrated the whole wall (~2900 steps). Once X- has decayed
+    (keep_distance), the remnant relative to A's size decides; the signs are the whole
+    wall's."""
+    at = TubeAt(NEAR_THRESHOLD, "voltage")
+    for mode in [(0, 2000), (2000, 2000)]:
+        root = critical_value(NEAR_THRESHOLD, *mode, "voltage").value
+        for offset in (-1e-6, -1e-9, -1e-12, 1e-12, 1e-9, 1e-6):
+            state = at.state(root + offset)
+            f0, _, s0 = _run(state, *mode, 1e-8, WHOLE_WALL)
+            f1, _, s1 = _run(state, *mode, 1e-8, SHORT_WAVE)
+            assert math.copysign(1, f1) == math.copysign(1, f0)
+            if abs(offset) >= 1e-9:  # the loose target's root is within ~1e-10 of the fine one
+                assert math.copysign(1, f0) == -math.copysign(1, offset)
+            assert abs(f1 - f0) <= 1e-7 * abs(f0)
+            assert s1 < 0.1 * s0, (mode, offset, s0, s1)

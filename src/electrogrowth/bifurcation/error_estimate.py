@@ -53,11 +53,12 @@ def secant_estimate(g, value: float, path: tuple[float, float]) -> float | None:
     equals the root's to ~1e-4 relative, the digits an error estimate has (Brent located
     x_c to 2e-15 |value|). It is returned only when g changes sign between the value and the
     step back (the root is then interpolated) or between the value and twice the
-    extrapolated distance beyond it (one more evaluation): a root of g lies there, as near as
-    the secant says. Farther than STRAIGHT h from the value, one more evaluation at the
-    secant's root checks that g is a straight line over h: a stiff film's target turns
-    from one plateau to the other within 1e-8 of the root, where the secant would put the
-    root at h / 2. docs/derivation.md section 6."""
+    extrapolated distance beyond it, at least the rounding floor's 1e-12 max(1, |value|)
+    (one more evaluation, or none): a root of g lies there, as near as the secant says.
+    Farther than STRAIGHT h from the value, one more evaluation at the secant's root checks
+    that g is a straight line over h: a stiff film's target turns from one plateau to the
+    other within 1e-8 of the root, where the secant would put the root at h / 2.
+    docs/derivation.md section 6."""
     lo, hi = min(path), max(path)
     sense = 1.0 if path[1] >= path[0] else -1.0
     h = SECANT_STEP * max(1.0, abs(value))
@@ -72,7 +73,9 @@ def secant_estimate(g, value: float, path: tuple[float, float]) -> float | None:
         return None
     d = h * g0 / (g1 - g0)  # the secant's root lies at value + sense d
     if g0 >= 0.0:  # the root is beyond the value: it must be bracketed there
-        beyond = value + 2.0 * sense * d
+        # not nearer than the rounding floor's read (the same point: no evaluation more),
+        # where a root d ~ 1e-15 away is within the target's noise and 2 d may not bracket it
+        beyond = value + sense * max(2.0 * d, NOISE_OFFSETS[-1] * max(1.0, abs(value)))
         if not (0.0 < d <= h and lo <= beyond <= hi) or g(beyond) >= 0.0:
             return None
     if abs(d) > STRAIGHT * h and abs(g(value + sense * d)) > STRAIGHT * max(abs(g0), g1):

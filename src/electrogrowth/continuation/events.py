@@ -379,6 +379,9 @@ def _pack(signed, cand, lo, hi, x: float, need: int) -> np.ndarray:
 #: the loose root of a single candidate, to this (not to full precision: it only places
 #: the fine bracket)
 LOOSE_ROOT = Tolerance(1e-10, 1e-12)
+#: with det(M2) at hand, Brent's method on the bounded target stops after this many
+#: iterations (a smooth target is done in 4-8; a step would take ~30) and det(M2) takes over
+LOOSE_FIRST = dataclasses.replace(LOOSE_ROOT, maxiter=10)
 #: the half-widths of the fine bracket around the loose root, times max(1, |root|), tried
 #: in turn: the loose root (signs at rtol 1e-8 or looser, 1e-5 in a scan) is off by ~1e-10
 #: relative for most modes, so the first holds the fine root with room to spare; a short
@@ -386,6 +389,18 @@ LOOSE_ROOT = Tolerance(1e-10, 1e-12)
 #: loose root can be 3e-8 off; where neither holds it, the caller bisects as for many
 #: candidates (~20 fine evaluations where the second width costs ~6)
 NEAR = (1e-8, 1e-6)
+
+
+def _tightest(seen: dict, start: float) -> tuple[float, float]:
+    """(good, bad): of the points ``seen`` (x -> value, positive at ``start``), the first
+    non-positive one from ``start`` and the positive one next to it on the start side."""
+    order = sorted(seen, key=lambda y: abs(y - start))
+    bad = next(y for y in order if not seen[y] > 0)
+    good = max(
+        (y for y in order if seen[y] > 0 and abs(y - start) < abs(bad - start)),
+        key=lambda y: abs(y - start),
+    )
+    return good, bad
 
 
 def _on_line(parts, a: float, b: float) -> Callable[[float], float]:
@@ -416,20 +431,25 @@ def _near_root(signed, fine, i: int, xa: float, x: float, values, loose_parts=No
     root (each width of NEAR in turn). A bisection of loose signs would cost SHARED_ROUNDS
     evaluations for a bracket 2^-6 of the step, Brent's on it ~6 fine ones; this costs ~3
     loose and ~4 fine ones.
-    With ``loose_parts`` the loose root is refined on det(M2) (:func:`_on_line`), its
-    values at both ends asked again. None if the loose values do not change sign or the
-    fine ones do not change sign across the narrow bracket (first_roots then bisects)."""
+    With ``loose_parts``, where Brent's method on the loose values does not converge within
+    LOOSE_FIRST's iterations (a step), the loose root is refined on det(M2)
+    (:func:`_on_line`) in the tightest bracket those iterations left. None if the loose
+    values do not change sign or the fine ones do not change sign across the narrow
+    bracket (first_roots then bisects)."""
     g_a, g_x = float(values[0][0]), float(values[1][0])
     if not (g_a > 0 >= g_x):
         return None
-    if loose_parts is None:
-        loose = Remembered(lambda y: float(signed(y, np.array([i]))[0]))
-        loose.seen.update({float(xa): g_a, float(x): g_x})
-    else:
-        loose = Remembered(_on_line(lambda y: loose_parts(y, i), float(xa), float(x)))
-        if not loose(float(xa)) > 0 >= loose(float(x)):
+    loose = Remembered(lambda y: float(signed(y, np.array([i]))[0]))
+    loose.seen.update({float(xa): g_a, float(x): g_x})
+    first = LOOSE_ROOT if loose_parts is None else LOOSE_FIRST
+    try:
+        root = brent(loose, *sorted((xa, x)), first, named=False)
+    except RuntimeError:  # not converging: a step; det(M2) on the tightest bracket seen
+        good, bad = _tightest(loose.seen, xa)
+        det = Remembered(_on_line(lambda y: loose_parts(y, i), good, bad))
+        if not det(good) > 0 >= det(bad):
             return None
-    root = brent(loose, *sorted((xa, x)), LOOSE_ROOT, named=False)
+        root = brent(det, *sorted((good, bad)), LOOSE_ROOT, named=False)
     f = Remembered(lambda y: fine(y, i))
     for near in NEAR:
         w = near * max(1.0, abs(root))

@@ -57,6 +57,7 @@ from .short_wave_start import (
     REMNANT_MAX,
     forget_check,
     forget_plan,
+    keep_distance,
     keep_plan,
     keep_restart,
 )
@@ -205,7 +206,8 @@ def integrate_one(m, k, keep, table, rtol, max_steps, forget=SHORT_WAVE):
     signs = forget == SHORT_WAVE and not sizes
     for seg in range(L):  # each layer may restart near its outer end
         R, end = table.bounds[seg], table.bounds[seg + 1]
-        R_s, rate, check, checks, plan, first = -1.0, 0.0, np.inf, 0, signs, steps
+        R_s, attract, check, checks, plan, first = -1.0, 0.0, np.inf, 0, signs, steps
+        settled = np.inf  # past it, X- has decayed as keep_plan's R_c says
         stop_at = np.inf  # where the restart that keeps the size is tried (keep_plan)
         if sizes:
             R_s, stop_at = keep_plan(R, m, k, s, table, seg, rtol, work)
@@ -213,13 +215,18 @@ def integrate_one(m, k, keep, table, rtol, max_steps, forget=SHORT_WAVE):
         while R < end:
             if plan and steps - first >= 3 and end - R > PLAN_STEPS * h:
                 plan = False  # a long integration ahead: is this a stiff short wave?
-                R_s, rate = forget_plan(R, m, k, s, table, seg, rtol, work)
+                R_s, attract = forget_plan(R, m, k, s, table, seg, rtol, work)
                 if R_s > 0.0:
-                    check = R + BURN_NATS / rate
+                    check = R + BURN_NATS / attract
+                    settled = R + keep_distance(rtol, attract)
             if R >= check and checks < MAX_CHECKS:  # forget the inner face? (dominant.py)
                 checks += 1
-                remnant, sign_a, zs = forget_check(R, z, J, R_s, m, k, s, keep, table, seg, work)
-                check = R + np.log(max(remnant, 1.0) / (0.1 * REMNANT_MAX)) / rate
+                remnant, sign_a, zs = forget_check(
+                    R, z, J, R_s, m, k, s, keep, table, seg, work, R >= settled
+                )
+                check = R + np.log(max(remnant, 1.0) / (0.1 * REMNANT_MAX)) / attract
+                if R < settled and (checks == MAX_CHECKS - 1 or not check <= settled):
+                    check = settled  # the last check once settled (next to a root of det A)
                 if remnant <= REMNANT_MAX and sign_a != 0.0:
                     R, z, J, orient, check = R_s, zs, 0, orient * sign_a, np.inf
                     log_det = np.nan  # the restarted basis has forgotten the carried one's size

@@ -94,11 +94,17 @@ def forget_plan(R_a, m, k, s, table, seg, rtol, work):
 
 
 @nb.njit(cache=True)
-def forget_check(R, z, J, R_s, m, k, s, keep, table, seg, work):
+def forget_check(R, z, J, R_s, m, k, s, keep, table, seg, work, settled=False):
     """At R, is the carried subspace z~ (chart J) inside the dominant one W+ up to
     REMNANT_MAX? Returns (remnant, sign of det A, z+(R_s)) (dominant.py): the carried
     subspace is X = X+ + X-, X+ = [I; z+] A, and remnant = ||X- A^-1||; inf if the
-    split or z+(R_s) cannot be formed."""
+    split or z+(R_s) cannot be formed.
+
+    Next to a root of det A (a mode of the inner face) ||X- A^-1|| is unbounded at any
+    radius. ``settled``: R is far enough from the segment's start that X- has decayed as
+    keep_plan's R_c says; then the remnant relative to the size of A (split_sizes) is
+    taken instead, whose sign of det A is wrong only within ~1e-13 of the root (docs:
+    "Roots"), immaterial for the loose signs this restart serves."""
     Q = np.empty((8, 8))
     P = np.empty((8, 8))
     Zi = np.empty((8, 8))
@@ -107,7 +113,12 @@ def forget_check(R, z, J, R_s, m, k, s, keep, table, seg, work):
     if not growing_projector(Q, P, Zi):
         return np.inf, 0.0, zs
     hold_left_out(P, keep)
-    sign_a, remnant = split_orientation(P, hat_basis(z, J), s)
+    X = hat_basis(z, J)
+    sign_a, remnant = split_orientation(P, X, s)
+    if not remnant <= REMNANT_MAX and settled:
+        sign_s, _, rho = split_sizes(P, X, s)
+        if rho <= REMNANT_MAX and sign_s != 0.0:
+            sign_a, remnant = sign_s, rho
     if not remnant <= REMNANT_MAX:
         return remnant, sign_a, zs
     frozen_matrix(R_s, m, k, s, table, seg, work, Q)
@@ -120,6 +131,13 @@ def forget_check(R, z, J, R_s, m, k, s, keep, table, seg, work):
         for j in range(i + 1, 4):
             zs[i, j] = zs[j, i] = 0.5 * (zs[i, j] + zs[j, i])
     return remnant, sign_a, zs
+
+
+@nb.njit(cache=True)
+def keep_distance(rtol, rate) -> float:
+    """How far from a segment's start X- has decayed by (rtol / FORGET_MARGIN)^FORGET_SAFETY
+    at the attraction ``rate`` (after BURN_NATS): where keep_plan splits the basis."""
+    return (BURN_NATS + FORGET_SAFETY * np.log(FORGET_MARGIN / rtol)) / rate
 
 
 @nb.njit(cache=True)
@@ -136,7 +154,7 @@ def keep_plan(R_a, m, k, s, table, seg, rtol, work):
     R_s, rate = forget_plan(R_a, m, k, s, table, seg, rtol, work)
     if R_s < 0.0:
         return -1.0, np.inf
-    R_c = R_a + (BURN_NATS + FORGET_SAFETY * np.log(FORGET_MARGIN / rtol)) / rate
+    R_c = R_a + keep_distance(rtol, rate)
     if not R_s > R_c:
         return -1.0, np.inf
     return R_s, R_c
