@@ -30,13 +30,15 @@ def test_wrinkle_before_the_lock_is_found():
 
 
 def test_scan_before_the_lock_finds_the_first_wrinkle():
-    # the scan's first mode is its own critical value, below (11, 0)'s. It is the
-    # axisymmetric (0, 1) at 0.124561964718 (collocation 0.124561964734, estimate 2.9e-10);
-    # until 2026-12-05 the scan reported (4, 0) at 0.144125897376 (so did this test): its
-    # march crossed a pack of roots in one step and, choosing the first by loose signs,
-    # ended (0, 1) unexamined (continuation/events._later_before now asks the fine target)
+    # the scan's first mode is its own critical value, below (11, 0)'s: (1, 1) at
+    # 0.114372965455 (collocation 0.114372965545, and the single mode agreed before). Until
+    # 2026-12-05 the scan reported (4, 0) at 0.144125897376, then (0, 1) at 0.124561964718
+    # (and so did this test): the voltage march's scale was 1 whatever the moduli, and it
+    # sampled each mode every 0.25 in Vbar on a wall whose own voltage scale is 0.16
+    # (model/controls.voltage_scale), missing (1, 1)'s window; before that, a pack of roots
+    # crossed in one step ended (0, 1) unexamined (continuation/events._later_before)
     crit = scan_modes(FILM_ON_GENT, "voltage").critical
-    assert (crit.m, crit.n, crit.kind) == (0, 1, "bifurcation")
-    assert crit.value == pytest.approx(critical_value(FILM_ON_GENT, 0, 1, "voltage").value)
-    assert crit.value == pytest.approx(0.124561964734, rel=1e-9)  # collocation's
-    assert crit.value < critical_value(FILM_ON_GENT, 4, 0, "voltage").value < 0.146609015590
+    assert (crit.m, crit.n, crit.kind) == (1, 1, "bifurcation")
+    assert crit.value == pytest.approx(critical_value(FILM_ON_GENT, 1, 1, "voltage").value)
+    assert crit.value == pytest.approx(0.114372965545, rel=1e-9)  # collocation's
+    assert crit.value < critical_value(FILM_ON_GENT, 0, 1, "voltage").value < 0.146609015590

@@ -90,8 +90,29 @@ def _stretch_path(tube, up, base):
 
 
 def _voltage_path(tube, up, base):
-    thr = base.threshold(tube, "voltage").value  # stiffening energies may have none (inf)
-    return (0.0, 1e3, 1.0) if not math.isfinite(thr) else (0.0, thr * (1 - 1e-12), thr)
+    """From 0 up to the voltage threshold, its scale; where a stiffening energy has none
+    (inf), up to 1e3 times the wall's own voltage scale (:func:`voltage_scale`). That scale
+    was 1 whatever the moduli: with every modulus times 1e-3 (Vbar_cr times sqrt(1e-3)) the
+    march sampled a mode every 0.25 and stepped over an unstable window [0.0425, 0.0528]
+    (probe round 8a)."""
+    thr = base.threshold(tube, "voltage").value
+    if math.isfinite(thr):
+        return 0.0, thr * (1 - 1e-12), thr
+    scale = voltage_scale(tube)
+    return 0.0, 1e3 * scale, scale
+
+
+def voltage_scale(tube) -> float:
+    """sqrt(mu / eps) of the wall in Vbar's units: a voltage whose field's stress eps E^2 is
+    the wall's stiffness mu, the moduli weighed as the layers carry them, in parallel for
+    the hoop stiffness (sum mu_k ln(R_k / R_{k-1}), the pressure path's scale) and in
+    series for the permittivity (the layers are capacitors in series); 1 for a uniform
+    tube of unit moduli."""
+    logs = [math.log(b / a) for a, b in zip(tube.radii, tube.radii[1:])]
+    wall = sum(logs)
+    mu = _wall_sum(tube, lambda a, b: math.log(b / a)) / wall
+    eps = wall / sum(t / layer.initial_moduli[1] for layer, t in zip(tube.layers, logs))
+    return math.sqrt(mu / eps)
 
 
 def _pressure_path(tube, up, base):
