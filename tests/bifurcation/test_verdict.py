@@ -198,7 +198,7 @@ def test_the_mechanical_crease_ranks_beside_a_field_crease_met_at_the_start():
 
     for voltage in (0.70, 0.75):
         tube = Tube.uniform(1.8, length=1.0, voltage=voltage)
-        exact = brentq(lambda g: _outer_axial_ratio(tube, g) - CREASE_RATIO, 1.5, 1.89)
+        exact = brentq(lambda g, t=tube: _outer_axial_ratio(t, g) - CREASE_RATIO, 1.5, 1.89)
         v = critical_value(tube, 0, 1, "growth").verdict
         assert v.wrinkle.value > exact + 0.05
         assert (v.kind, v.face, v.crease.trigger) == ("crease", "outer", "axial")

@@ -166,9 +166,8 @@ def test_a_field_crease_does_not_steer_the_design_to_a_masked_crease():
     at = tube.at("voltage", 0.76)
     exact = brentq(lambda g: _outer_axial_ratio(at, g) - CREASE_RATIO, 1.5, 1.89, xtol=1e-13)
     assert crease_value(at, "growth", None, 1.0) == pytest.approx(exact, rel=1e-10)
-    d = prescribe(
-        tube, "growth", (0, 1), ("voltage", 0.70, 0.76), points=3, options=ScanOptions((0, 3), (1, 3))
-    )
+    options = ScanOptions((0, 3), (1, 3))
+    d = prescribe(tube, "growth", (0, 1), ("voltage", 0.70, 0.76), points=3, options=options)
     assert d.status == CREASE_FIRST, (d.status, d.x, d.value, d.crease_value)
     g_crease = brentq(lambda g: _outer_axial_ratio(tube.at("voltage", d.x), g) - 2.4, 1.5, 1.89)
     assert d.crease_value == pytest.approx(g_crease, abs=1e-8) and g_crease < d.value

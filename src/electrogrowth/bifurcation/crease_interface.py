@@ -8,9 +8,9 @@ the face of the stiffer layer is a free face. Between the two no onset criterion
 published. The package takes the limit as far as it is near:
 
 * an interface is a crease candidate only where the softer of its two layers has at most
-  SOFT_NEIGHBOUR (0.1, to a relative 1e-12: the same at any unit of the moduli) times the small-strain shear modulus of the stiffer one (the
-  layer's shear_modulus times its energy's own, Layer.initial_moduli) ("bonded to a much
-  softer layer");
+  SOFT_NEIGHBOUR (0.1, to a relative 1e-12: the same at any unit of the moduli) times the
+  small-strain shear modulus of the stiffer one (the layer's shear_modulus times its
+  energy's own, Layer.initial_moduli) ("bonded to a much softer layer");
 * the face of the *stiffer* layer creases, folding into the stiffer layer (the soft
   neighbour is drawn into the fold); the soft layer's face is bonded to a body that is at
   least ten times stiffer and is left out, as a face bonded to a rigid body would be;
