@@ -199,3 +199,31 @@ def test_a_tie_goes_to_the_face_whose_criterion_is_exact():
     }
     assert margins["inner"] == pytest.approx(margins["outer"], abs=1e-12)  # the tie
     assert c.value == pytest.approx(1 / CREASE_RATIO ** (2 / 3), rel=1e-9)
+
+
+def _outer_axial_ratio(tube, g):
+    """lambda_r / lambda_z of the outer face at growth g, from the base state directly."""
+    s = solve_base_state(tube.at("growth", g))
+    lr, _, lz = (float(v) for v in s.elastic_stretches(tube.outer_radius, side="inner"))
+    return lr / lz
+
+
+def test_a_field_crease_at_the_start_does_not_hide_the_mechanical_one():
+    """Probe 8b D1: with Vbar = 0.75 the inner face is past the (advisory) field criterion
+    where the growth march starts, g = 1; the march stopped there and no mechanical onset
+    was computed, although the outer face reaches lambda_r / lambda_z = 2.4 at g = 1.80202
+    (Brent on the base state's stretches). The mechanical criteria are now marched on their
+    own beside it (``mechanical``, ``ranked``)."""
+    from scipy.optimize import brentq
+
+    tube = Tube.uniform(1.8, length=1.0, voltage=0.75)
+    exact = brentq(lambda g: _outer_axial_ratio(tube, g) - CREASE_RATIO, 1.5, 1.89, xtol=1e-13)
+    c = crease_onset(tube, "growth")
+    assert (c.kind, c.trigger, c.value) == ("crease", "field", 1.0)
+    m = c.mechanical
+    assert m is c.ranked and (m.kind, m.face, m.trigger) == ("crease", "outer", "axial")
+    assert m.value == pytest.approx(exact, rel=1e-10)
+    assert m.mechanical is None and c.as_dict()["mechanical"]["value"] == m.value
+    # a mechanical onset first needs no second march: it is its own ranked onset
+    plain = crease_onset(Tube.uniform(1.8, length=1.0, voltage=0.7), "growth")
+    assert plain.trigger == "axial" and plain.ranked is plain

@@ -119,6 +119,31 @@ def test_only_the_ratio_of_the_moduli_matters():
     assert b.error_estimate == pytest.approx(a.error_estimate, rel=1e-6)
 
 
+#: a core of modulus 0.1 in a sheath of 1, every modulus scaled by c in 0.7, 1.3, 10, 1e-3
+#: (written as decimals, as a user would: 0.07 / 0.7 = 0.10000000000000002)
+SCALED_PAIRS = [(0.07, 0.7), (0.13, 1.3), (1.0, 10.0), (1e-4, 1e-3)]
+
+
+@pytest.mark.parametrize("soft, stiff", SCALED_PAIRS)
+def test_a_neighbour_on_the_threshold_is_one_at_any_unit_of_the_moduli(soft, stiff):
+    """Probe 8b D10: the tube (0.07 | 0.7) is (0.1 | 1.0) in other units, yet it creased at
+    g_z = 1.77971 on the outer face where (0.1 | 1.0) creases at 1.76956 at interface-1:
+    ``ratio <= SOFT_NEIGHBOUR`` was compared exactly, and 0.07 / 0.7 rounds above 0.1. The
+    comparison is now relative (SOFT_NEIGHBOUR_RTOL); the onset, face and trigger are the
+    unscaled tube's (the README's mucosa, 10 | 1, sits on the threshold too)."""
+
+    def onset(a: float, b: float):
+        tube = Tube((Layer(1.5, shear_modulus=a), Layer(2.0, shear_modulus=b)), stretch=1.0)
+        return crease_onset(tube, "growth[2].z")
+
+    ref, c = onset(0.1, 1.0), onset(soft, stiff)
+    assert (ref.kind, ref.face) == ("crease", "interface-1")
+    assert (c.kind, c.face, c.trigger) == (ref.kind, ref.face, ref.trigger)
+    assert c.value == pytest.approx(ref.value, rel=1e-9)
+    mucosa = Tube((Layer(1.1, shear_modulus=10.0 * stiff), Layer(2.0, shear_modulus=stiff)))
+    assert [i.name for i in interfaces(mucosa)] == ["interface-1"]
+
+
 def test_the_linear_analogue_starts_at_the_free_face_and_rises_linearly():
     """Biot's interfacial wrinkle by the half-space solver: the free face's ratio 3.383 as
     the neighbour vanishes, a delay linear in its modulus at first (first-order

@@ -83,3 +83,24 @@ def test_nowhere_first_and_not_computed():
     empty = CreaseAlong.empty(1)
     assert math.isnan(partial.crease.value[0]) and not partial.crease.first[0]
     assert partial.crease.face == empty.face
+
+
+def test_a_field_crease_at_the_start_leaves_the_mechanical_crease_in_the_columns():
+    """Probe 8b D1: `curve --solve-for growth --along voltage` of Tube.uniform(1.8) reported
+    crease_value 1.8008 (outer, axial) at Vbar 0.70, then 1.0 (inner, field) at 0.73 and
+    0.76, where the field criterion is met at g = 1: the outer face's crease was hidden.
+    Every row now carries the mechanical crease (lambda_r / lambda_z = 2.4, Brent on the
+    base state), before the wrinkle (~1.896)."""
+    from scipy.optimize import brentq
+
+    from electrogrowth.bifurcation.curve_crease import crease_along
+    from tests.bifurcation.test_crease import _outer_axial_ratio
+
+    tube, xs = Tube.uniform(1.8, length=1.0), [0.70, 0.73, 0.76]
+    c = crease_along(tube, "growth", "voltage", None, xs, [1.89] * 3)
+    exact = [
+        brentq(lambda g, t=tube.at("voltage", x): _outer_axial_ratio(t, g) - 2.4, 1.5, 1.89)
+        for x in xs
+    ]
+    assert c.value == pytest.approx(exact, abs=1e-8)
+    assert c.face == ("outer",) * 3 and c.trigger == ("axial",) * 3 and c.first.all()

@@ -186,3 +186,23 @@ def test_a_crease_by_the_field_criterion_informs_but_never_comes_first():
     assert alone.kind == "none" and alone.crease is c and "0.406" in alone.meaning
     axial = Rival(Kind.CREASE, 0.406, 0.003, face="inner", trigger="axial")
     assert judge(None, wrinkle=w, crease=axial).kind == "crease"  # a mechanical one does
+
+
+def test_the_mechanical_crease_ranks_beside_a_field_crease_met_at_the_start():
+    """Probe 8b D1: Tube.uniform(1.8, L = 1, Vbar = 0.75) under growth was judged to wrinkle
+    smoothly in (0, 1) at g = 1.8957 (the field criterion, met at g = 1, was the only crease
+    computed and is advisory); its outer face creases at g = 1.80202 before that (Brent on
+    the base state's lambda_r / lambda_z = 2.4). The crease now comes first; the field's is
+    a note (``field_crease``), and the verdict no longer flips between Vbar 0.70 and 0.75."""
+    from tests.bifurcation.test_crease import _outer_axial_ratio
+
+    for voltage in (0.70, 0.75):
+        tube = Tube.uniform(1.8, length=1.0, voltage=voltage)
+        exact = brentq(lambda g, t=tube: _outer_axial_ratio(t, g) - CREASE_RATIO, 1.5, 1.89)
+        v = critical_value(tube, 0, 1, "growth").verdict
+        assert v.wrinkle.value > exact + 0.05
+        assert (v.kind, v.face, v.crease.trigger) == ("crease", "outer", "axial")
+        assert v.value == pytest.approx(exact, abs=1e-8), v.meaning
+    assert v.field_crease.trigger == "field" and v.field_crease.value == 1.0
+    assert "note: the inner face's field reaches" in v.meaning
+    assert v.as_dict()["field_crease"]["trigger"] == "field"

@@ -149,3 +149,25 @@ def test_region_creases_counts_points_not_rows():
     curve = SimpleNamespace(x=x, crease=SimpleNamespace(first=first))
     iv = SimpleNamespace(lo=0.5, hi=1.5)
     assert region_creases([iv], curve) == [{"crease_first": "part", "crease_first_points": [2, 3]}]
+
+
+def test_a_field_crease_does_not_steer_the_design_to_a_masked_crease():
+    """Probe 8b D1: along Vbar 0.70 .. 0.76 the growth target (0, 1) of Tube.uniform(1.8)
+    was "found" at Vbar = 0.76 with crease_value NaN: from Vbar ~ 0.73 on the field
+    criterion is met at g = 1, and that advisory crease was all crease_onset computed, so
+    the margin saw no crease there. The outer face creases at g ~ 1.80 (Brent on the base
+    state's lambda_r / lambda_z = 2.4), before the wrinkle everywhere: crease_first."""
+    from scipy.optimize import brentq
+
+    from electrogrowth.design.onset import crease_value
+    from tests.bifurcation.test_crease import _outer_axial_ratio
+
+    tube = Tube.uniform(1.8, length=1.0)
+    at = tube.at("voltage", 0.76)
+    exact = brentq(lambda g: _outer_axial_ratio(at, g) - CREASE_RATIO, 1.5, 1.89, xtol=1e-13)
+    assert crease_value(at, "growth", None, 1.0) == pytest.approx(exact, rel=1e-10)
+    options = ScanOptions((0, 3), (1, 3))
+    d = prescribe(tube, "growth", (0, 1), ("voltage", 0.70, 0.76), points=3, options=options)
+    assert d.status == CREASE_FIRST, (d.status, d.x, d.value, d.crease_value)
+    g_crease = brentq(lambda g: _outer_axial_ratio(tube.at("voltage", d.x), g) - 2.4, 1.5, 1.89)
+    assert d.crease_value == pytest.approx(g_crease, abs=1e-8) and g_crease < d.value

@@ -69,6 +69,11 @@ STEP, STEP_MIN, STEP_MAX = 0.02, 0.002, 0.1
 #: the free faces, which may always crease; an interface may where its neighbour is much
 #: softer (crease_interface.interfaces)
 FACES = ("inner", "outer")
+#: the mechanical triggers, and all of them: the field criterion is an early bound (a bonded,
+#: unstretched film's, verdict.advisory), so where it is met first the mechanical onset is
+#: marched on its own (probe 8b D1: met at the start, it hid a crease before the wrinkle)
+MECHANICAL = ("prismatic", "axial")
+TRIGGERS = (*MECHANICAL, "field")
 
 
 def onset_strain(ratio: float = CREASE_RATIO) -> float:
@@ -108,13 +113,22 @@ class FaceCrease:
     @property
     def trigger(self) -> str:
         """The trigger nearest its onset: "prismatic", "axial" or "field"."""
-        d = self.drives
-        return max(d, key=d.__getitem__)
+        return self.trigger_of(TRIGGERS)
 
     @property
     def margin(self) -> float:
         """max(drives) - 1: negative while the face is smooth, 0 at the crease onset."""
-        return max(self.drives.values()) - 1.0
+        return self.margin_of(TRIGGERS)
+
+    def trigger_of(self, triggers: tuple[str, ...]) -> str:
+        """The trigger nearest its onset among ``triggers``."""
+        d = self.drives
+        return max(triggers, key=d.__getitem__)
+
+    def margin_of(self, triggers: tuple[str, ...]) -> float:
+        """The margin of ``triggers`` alone (MECHANICAL: the field criterion left out)."""
+        d = self.drives
+        return max(d[t] for t in triggers) - 1.0
 
 
 def face_creases(state) -> tuple[FaceCrease, ...]:
@@ -145,9 +159,9 @@ def neighbour_delay(neighbour: float) -> float:
     return 0.0 if neighbour <= 0.0 else interfacial_biot_ratio(neighbour) / BIOT_RATIO - 1.0
 
 
-def crease_margin(state) -> FaceCrease:
-    """The face nearest its crease onset (largest margin)."""
-    return max(face_creases(state), key=lambda f: f.margin)
+def crease_margin(state, triggers: tuple[str, ...] = TRIGGERS) -> FaceCrease:
+    """The face nearest its crease onset (largest margin of ``triggers``)."""
+    return max(face_creases(state), key=lambda f: f.margin_of(triggers))
 
 
 @functools.lru_cache(maxsize=64)
@@ -231,7 +245,10 @@ class CreaseOnset(Outcome):
     CREASE_FIELD_ACCURACY; at an interface plus the neighbour's delay), linearised;
     ``criterion`` says which criterion was applied, ``label`` the face in words ("inner
     face", "interface 1|2 (R = 1.5), layer 1 folds"). ``threshold`` is where the march lost
-    the axisymmetric state (NaN if it did not)."""
+    the axisymmetric state (NaN if it did not). Where the onset is by the field criterion
+    (an early bound, verdict.advisory), ``mechanical`` is the first onset by the mechanical
+    criteria alone along the same control (a CreaseOnset, of kind CREASE or NONE); else
+    None (the onset is itself mechanical, or none is reached)."""
 
     solve_for: str
     value: float
@@ -247,10 +264,17 @@ class CreaseOnset(Outcome):
     status: Status = Status.OK
     message: str = ""
     remedy: str = ""
+    mechanical: CreaseOnset | None = None
+
+    @property
+    def ranked(self) -> CreaseOnset:
+        """The onset that ranks against a wrinkle: the mechanical one where this one is by
+        the field criterion, else this one."""
+        return self if self.mechanical is None else self.mechanical
 
     def as_dict(self) -> dict:
         fin = lambda v: v if math.isfinite(v) else None  # noqa: E731
-        return {
+        out = {
             "kind": str(self.kind),
             "value": fin(self.value),
             "face": self.face,
@@ -259,6 +283,9 @@ class CreaseOnset(Outcome):
             "error_estimate": fin(self.error_estimate),
             "criterion": self.criterion,
         }
+        if self.mechanical is not None:
+            out["mechanical"] = self.mechanical.as_dict()
+        return out
 
 
 def crease_onset(
@@ -274,7 +301,9 @@ def crease_onset(
     start along the base-state path, as for a critical value; the crease margin of the
     inner and outer face (:func:`crease_margin`) is followed and its first root found by
     Brent's method. A layered tube's interfaces bonded to a much softer layer count as
-    faces too (crease_interface.py).
+    faces too (crease_interface.py). Where the first onset is by the field criterion, the
+    mechanical criteria are marched again on their own (``mechanical``): the field's is an
+    early bound, and the mechanical crease it precedes is the one that ranks.
 
     Parameters
     ----------
@@ -292,6 +321,15 @@ def crease_onset(
     ('crease', 'axial', True)
     """
     problem = as_problem(params, solve_for, side=side, rtol=rtol)
+    onset = _march(problem, TRIGGERS)
+    if onset.kind == Kind.CREASE and onset.trigger == "field":
+        return dataclasses.replace(onset, mechanical=_march(problem, MECHANICAL))
+    return onset
+
+
+def _march(problem: Problem, triggers: tuple[str, ...]) -> CreaseOnset:
+    """The first root of the crease margin of ``triggers`` along the problem's control
+    (:func:`crease_onset`)."""
     tube, control, side, rtol = problem.tube, problem.control, problem.side, problem.rtol
     at = TubeAt(tube, control)
     start, end, scale = control_path(tube, control, side)
@@ -301,7 +339,7 @@ def crease_onset(
         return solve_base_state(at(x), rtol=rtol)
 
     def margin(x) -> float:
-        return crease_margin(state(x)).margin
+        return crease_margin(state(x), triggers).margin_of(triggers)
 
     def result(value, kind, face=None, trigger=None, error=math.nan, threshold=math.nan):
         params_at = tube.at(control, value) if math.isfinite(value) else tube
@@ -322,8 +360,8 @@ def crease_onset(
 
     x, h = start, margin(start)
     if h >= 0:  # already past the onset where the march starts
-        f = crease_margin(state(start))
-        return result(start, Kind.CREASE, f.face, f.trigger, 0.0)
+        f = crease_margin(state(start), triggers)
+        return result(start, Kind.CREASE, f.face, f.trigger_of(triggers), 0.0)
     sense = 1.0 if end > start else -1.0
     step = STEP * scale
     while sense * (end - x) > 0:
@@ -335,11 +373,11 @@ def crease_onset(
             return result(math.nan, Kind.NONE, threshold=math.nan if lost is None else lost)
         if h_new >= 0:
             value = brent(margin, x, x_new, FULL)
-            f = _creasing_face(tube, state(value))
+            f = _creasing_face(tube, state(value), triggers)
+            trigger = f.trigger_of(triggers)
             shift = energy_shift(tube, f.face)
-            onset = result(
-                value, Kind.CREASE, f.face, f.trigger, _criterion_error(margin, value, x, f, shift)
-            )
+            error = _criterion_error(margin, value, x, f, trigger, shift)
+            onset = result(value, Kind.CREASE, f.face, trigger, error)
             if math.isinf(shift):  # the criteria say nothing for this energy
                 return dataclasses.replace(onset, status=Status.INACCURATE, message=NO_BIOT)
             return onset
@@ -350,15 +388,15 @@ def crease_onset(
     return result(math.nan, Kind.NONE)
 
 
-def _creasing_face(tube: Tube, state) -> FaceCrease:
+def _creasing_face(tube: Tube, state, triggers: tuple[str, ...] = TRIGGERS) -> FaceCrease:
     """The face that creases at the onset: the nearest its onset (:func:`crease_margin`),
     and of faces tied with it to rounding, the one whose criteria are the most exact
     (:func:`energy_shift`): an axially compressed tube of a Gent core and a neo-Hookean
     sheath reaches the ratio on both faces at once, where the Gent face "may not crease"
     and the neo-Hookean one creases (probe round 7a)."""
     faces = face_creases(state)
-    top = max(f.margin for f in faces)
-    tied = [f for f in faces if f.margin >= top - TIE]
+    top = max(f.margin_of(triggers) for f in faces)
+    tied = [f for f in faces if f.margin_of(triggers) >= top - TIE]
     return min(tied, key=lambda f: energy_shift(tube, f.face))
 
 
@@ -378,7 +416,7 @@ def _solves(state):
 
 
 def _criterion_error(
-    margin, value: float, x_before: float, face: FaceCrease, shift: float = 0.0
+    margin, value: float, x_before: float, face: FaceCrease, trigger: str, shift: float = 0.0
 ) -> float:
     """How far the onset moves over the criterion's accuracy: d(drive) = accuracy / onset
     (at an interface plus the neighbour's delay, :func:`neighbour_delay`; for an energy the
@@ -389,7 +427,7 @@ def _criterion_error(
     slope = (margin(value) - margin(near)) / (value - near)
     rel = shift + (
         CREASE_FIELD_ACCURACY / CREASE_FIELD
-        if face.trigger == "field"
+        if trigger == "field"
         else CREASE_RATIO_ACCURACY / CREASE_RATIO + neighbour_delay(face.neighbour)
     )
     return abs(rel / slope) if slope != 0 and math.isfinite(rel) else math.inf

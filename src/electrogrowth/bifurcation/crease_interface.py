@@ -8,9 +8,9 @@ the face of the stiffer layer is a free face. Between the two no onset criterion
 published. The package takes the limit as far as it is near:
 
 * an interface is a crease candidate only where the softer of its two layers has at most
-  SOFT_NEIGHBOUR (0.1) times the small-strain shear modulus of the stiffer one (the
-  layer's shear_modulus times its energy's own, Layer.initial_moduli) ("bonded to a much
-  softer layer");
+  SOFT_NEIGHBOUR (0.1, to a relative 1e-12: the same at any unit of the moduli) times the
+  small-strain shear modulus of the stiffer one (the layer's shear_modulus times its
+  energy's own, Layer.initial_moduli) ("bonded to a much softer layer");
 * the face of the *stiffer* layer creases, folding into the stiffer layer (the soft
   neighbour is drawn into the fold); the soft layer's face is bonded to a body that is at
   least ten times stiffer and is left out, as a face bonded to a rigid body would be;
@@ -41,6 +41,12 @@ from .surface import ray_limit
 #: face of its stiffer layer: an order of magnitude. At 0.1 the linear analogue is delayed
 #: by 20 % (neighbour_delay), which the error estimate carries.
 SOFT_NEIGHBOUR = 0.1
+#: the relative tolerance of that comparison: the ratio of two moduli is rounded, so a tube
+#: whose every modulus is scaled by c (no load carries a modulus: the same state) may
+#: round to just above 0.1 where the unscaled one is exactly 0.1 (0.07 / 0.7 =
+#: 0.10000000000000002); ratios within a few ulps of the threshold are on it, and a tube's
+#: crease onset does not depend on the unit of its moduli (probe 8b D10)
+SOFT_NEIGHBOUR_RTOL = 1e-12
 
 
 @dataclasses.dataclass(frozen=True)
@@ -81,9 +87,20 @@ def interfaces(tube: Tube) -> tuple[Interface, ...]:
             layer, side, ratio = k, "inner", mu_above / mu_below
         else:
             layer, side, ratio = k + 1, "outer", mu_below / mu_above
-        if ratio <= SOFT_NEIGHBOUR:
+        if soft_enough(ratio):
             out.append(Interface(k, float(below.outer_radius), layer, side, ratio))
     return tuple(out)
+
+
+def soft_enough(ratio: float) -> bool:
+    """Is a neighbour ``ratio`` times as stiff much softer (at most SOFT_NEIGHBOUR, within
+    SOFT_NEIGHBOUR_RTOL: scale-invariant, the mucosa's 10 | 1 is on the threshold at any
+    unit)?
+
+    >>> soft_enough(0.1), soft_enough(0.07 / 0.7), soft_enough(0.1000001)
+    (True, True, False)
+    """
+    return ratio <= SOFT_NEIGHBOUR * (1.0 + SOFT_NEIGHBOUR_RTOL)
 
 
 def label(tube: Tube, face: str | None) -> str:

@@ -79,6 +79,9 @@ class Verdict:
     branch: str | None = None  # "supercritical" | "subcritical"; None: not computed
     koiter: float | None = None  # the Koiter coefficient; None: not computed
     koiter_error: float | None = None  # its change from a coarser resolution
+    #: the field criterion's crease where a mechanical crease is reached too (``crease``):
+    #: an early bound, a note in ``meaning``, never ranked (:func:`advisory`)
+    field_crease: Rival | None = None
 
     @property
     def first(self) -> Rival | None:
@@ -103,6 +106,7 @@ class Verdict:
             "face": self.face,
             "meaning": self.meaning,
             **{key: _rival_dict(getattr(self, key)) for key in RIVALS.values()},
+            "field_crease": _rival_dict(self.field_crease),
             "crease_criterion": self.criterion,
             "branch": self.branch,
             "koiter": self.koiter,
@@ -123,9 +127,12 @@ def judge(
     threshold: Rival | None = None,
     criterion: str | None = None,
     name: str = "the control",
+    field_crease: Rival | None = None,
 ) -> Verdict:
     """The verdict of the rivals found: the first reached along the march (decreasing on
     the compression side, else increasing) comes first; a tie goes to the linear result.
+    ``field_crease``, the field criterion's crease beside a mechanical ``crease``, is a
+    note (:func:`advisory`).
 
     >>> w = Rival(Kind.BIFURCATION, 0.511, m=0, n=1, family="wrinkle")
     >>> c = Rival(Kind.CREASE, 0.558, 0.005, face="outer", trigger="axial")
@@ -134,14 +141,17 @@ def judge(
     ('crease', 0.558, ['bifurcation'])
     """
     sense = -1.0 if side == "compression" else 1.0
-    rivals = [r for r in (wrinkle, surface, threshold, crease) if r is not None]
+    found = (wrinkle, surface, threshold, crease, field_crease)
+    rivals = [r for r in found if r is not None]
     rivals = [r for r in rivals if math.isfinite(r.value)]
     ranked = [r for r in rivals if not advisory(r)]
     if not ranked:
         note = "no instability found in the searched range"
         if rivals:
             note += f"; {_what(rivals[0])} at {name} = {rivals[0].value:.4g}"
-        return Verdict(Kind.NONE, math.nan, None, note, crease=crease, side=side)
+        return Verdict(
+            Kind.NONE, math.nan, None, note, crease=crease, side=side, field_crease=field_crease
+        )
     first = min(ranked, key=lambda r: sense * r.value)  # the first listed wins a tie
     return Verdict(
         first.kind,
@@ -154,6 +164,7 @@ def judge(
         threshold,
         criterion,
         side,
+        field_crease=field_crease,
     )
 
 
@@ -238,7 +249,23 @@ def _trigger(trigger: str | None) -> str:
 
 
 def crease_rival(onset) -> Rival | None:
-    """A :class:`~.crease.CreaseOnset` as a rival (None where no crease was reached)."""
+    """A :class:`~.crease.CreaseOnset` as a rival (None where no crease was reached): the
+    mechanical crease where the field criterion is met first and a mechanical one is
+    reached too (``onset.ranked``; the field's is :func:`field_rival`), else the onset."""
+    if onset is not None and onset.ranked.kind == Kind.CREASE:
+        onset = onset.ranked
+    return _onset_rival(onset)
+
+
+def field_rival(onset) -> Rival | None:
+    """The field criterion's crease where :func:`crease_rival` is the mechanical one (an
+    early bound beside it), else None (the field's, if any, is crease_rival itself)."""
+    if onset is None or onset.ranked is onset or onset.ranked.kind != Kind.CREASE:
+        return None
+    return _onset_rival(onset)
+
+
+def _onset_rival(onset) -> Rival | None:
     if onset is None or onset.kind != Kind.CREASE:
         return None
     at_interface = onset.face is not None and onset.face.startswith("interface")
@@ -302,8 +329,9 @@ def threshold_rival(critical, onset) -> Rival | None:
         if math.isfinite(t.value):
             return Rival(Kind.THRESHOLD, t.value, t.error, detail=f"{kind} {t.kind}")
         return None
-    if onset is not None and math.isfinite(onset.threshold):
-        return Rival(Kind.THRESHOLD, onset.threshold, None, detail="no axisymmetric state")
+    lost = math.nan if onset is None else onset.ranked.threshold  # the longer march's
+    if math.isfinite(lost):
+        return Rival(Kind.THRESHOLD, lost, None, detail="no axisymmetric state")
     return None
 
 
@@ -341,6 +369,7 @@ def verdict_of(critical, *, finite=None, short_wave=None) -> Verdict:
         threshold=threshold_rival(critical, onset),
         criterion=criterion,
         name=control_symbol(critical.solve_for),
+        field_crease=field_rival(onset),
     )
     if onset is None:
         return dataclasses.replace(verdict, meaning=verdict.meaning + " (crease not evaluated)")

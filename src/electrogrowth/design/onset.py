@@ -21,7 +21,7 @@ import math
 import numpy as np
 
 from ..basestate.tube import solve_base_state
-from ..bifurcation.crease import crease_margin, crease_onset, face_creases
+from ..bifurcation.crease import MECHANICAL, crease_margin, crease_onset, face_creases
 from ..bifurcation.scan import ScanOptions, scan_modes
 from ..bifurcation.verdict import advisory, crease_rival, creases
 from ..errors import ConvergenceError, ElectrogrowthError
@@ -60,7 +60,7 @@ def crease_sensitivities(tube, solve_for: str, value: float, keys, *, step: floa
     Richardson-extrapolated differences of design/sensitivity.py (base states only, no
     march). Raises ConvergenceError where h_v vanishes."""
     onset = crease_margin_at(tube, solve_for, value)
-    face, trigger = onset.face, onset.trigger
+    face, trigger = onset.face, onset.trigger_of(MECHANICAL)
 
     def h(t, v: float) -> float:
         state = solve_base_state(t.at(solve_for, v), rtol=1e-12)
@@ -100,8 +100,10 @@ def margin_sensitivity(sense: float, v: float, dv: dict, w: float, dw: dict) -> 
 
 
 def crease_margin_at(tube, solve_for: str, value: float):
-    """The face nearest its crease onset at ``solve_for`` = value (a FaceCrease)."""
-    return crease_margin(solve_base_state(tube.at(solve_for, value), rtol=1e-12))
+    """The face nearest its mechanical crease onset at ``solve_for`` = value (a FaceCrease):
+    the crease :func:`crease_value` ranks, whose trigger is never the field's."""
+    state = solve_base_state(tube.at(solve_for, value), rtol=1e-12)
+    return crease_margin(state, MECHANICAL)
 
 
 def design_verdict(tube, solve_for: str, side, options: ScanOptions, *, koiter: bool) -> dict:
