@@ -217,12 +217,29 @@ def _path_problem(exc: OSError) -> str:
     """One line naming the path and what is wrong with it."""
     path = Path(exc.filename)
     if isinstance(exc, (FileExistsError, NotADirectoryError)):
-        file = next((p for p in (path, *path.parents) if p.is_file()), path)
-        return (
-            f"{file} is an existing file, not a directory: give --out a directory (new or"
-            " existing), not a file"
-        )
+        # the first of the path and its parents that is there but no directory (a dangling
+        # link is there too: "an existing file" misnamed it, probe 8b)
+        there = (p for p in (path, *path.parents) if os.path.lexists(p) and not p.is_dir())
+        file = next(there, path)
+        what = _what_is(file)
+        tail = ", not a file" if what == "an existing file" else ""
+        return f"{file} is {what}, not a directory: give --out a directory (new or existing){tail}"
     return f"cannot use {path}: {exc.strerror or exc}"
+
+
+def _what_is(path: Path) -> str:
+    """What a path that is no directory is, in words."""
+    if path.is_symlink() and not path.exists():
+        return f"a dangling symbolic link (to {os.readlink(path)}, which does not exist)"
+    if path.is_file():
+        return "an existing file"
+    if path.is_fifo():
+        return "a named pipe (FIFO)"
+    if path.is_socket():
+        return "a socket"
+    if path.is_block_device() or path.is_char_device():
+        return "a device"
+    return "something other than a file"
 
 
 def _interrupted(stop: Interrupted) -> int:
