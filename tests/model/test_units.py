@@ -211,3 +211,19 @@ def test_cli_layered_critical_voltage_in_kV(capsys, tmp_path):
     rec = json.loads(capsys.readouterr().out)
     kv = rec["value"] * (3e-3 - 2e-3) * math.sqrt(1e5 / EPS) / 1e3  # R_o = 1.5 R_i = 3 mm
     assert rec["physical"]["voltage"] == [pytest.approx(kv, rel=1e-10), "kV"]
+
+
+@pytest.mark.parametrize(
+    ("argv", "match"),
+    [
+        (["--inner-radius", "-2mm"], "--inner-radius = '-2mm' is out of range; need 0 <"),
+        (["--inner-radius", "2mm", "--length", "-5 mm"], "--length = '-5 mm' is out of range"),
+        ([*PHYSICAL, "--voltage", "-3kV"], "--voltage = '-3kV' is out of range; need 0 <="),
+    ],
+)
+def test_cli_negative_quantity_is_named_with_its_range(capsys, argv, match):
+    """Probe 8b: `--inner-radius -2mm` gave argparse's "expected one argument" (a word
+    starting with "-" and no plain number was read as an option), not the value's range."""
+    assert main(["state", "--outer-radius", "1.4", *argv]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and match in err

@@ -47,8 +47,9 @@ PROG = "electrogrowth"
 class _Parser(argparse.ArgumentParser):
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)
-        # A value such as -inf, -1e5 or -nan is a (bad) number, not an unknown option: let
-        # the option's type name it instead of "expected one argument".
+        # A value such as -inf, -1e5, -nan or -2mm is a (bad) number or quantity, not an
+        # unknown option: let the option's type or range check name it instead of
+        # "expected one argument".
         self._negative_number_matcher = _NEGATIVE_NUMBER
 
     def error(self, message):
@@ -56,7 +57,10 @@ class _Parser(argparse.ArgumentParser):
 
 
 _FLOATING_POINT = r"(overflow|invalid value|divide by zero|underflow) encountered"
-_NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$", re.I)
+#: a negative number, optionally with a unit (a quantity: -2mm, -3 kV, -1e5 N/m^2)
+_NEGATIVE_NUMBER = re.compile(
+    r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?(\s*[^\W\d_]\S*(\s+\S+)*)?$|^-(inf|infinity|nan)$", re.I
+)
 
 
 #: Subcommand name -> (one-line help, configure(parser), run(args) -> exit status).
