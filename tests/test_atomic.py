@@ -2,6 +2,7 @@
 commands writing the same CSV leave a whole file, and an interrupted write leaves the
 previous file as it was."""
 
+import os
 import threading
 from pathlib import Path
 
@@ -26,6 +27,29 @@ def test_out_naming_a_file_is_one_clear_error(tmp_path, capsys, under):
         " directory (new or existing), not a file\n"
     )
     assert tube.read_text() == "length = 1.0\n"
+
+
+@pytest.mark.parametrize("under", ["", "/sub"])
+def test_out_naming_a_dangling_link_says_so(tmp_path, capsys, under):
+    """Probe 8b: a dangling symbolic link was called "an existing file" (it is neither a
+    file nor a directory)."""
+    link = tmp_path / "dangling"
+    link.symlink_to(tmp_path / "nowhere" / "x")
+    assert cli.main(["reproduce", "--quick", "--out", f"{link}{under}"]) == 2
+    err = capsys.readouterr().err
+    assert err == (
+        f"electrogrowth: error: {link} is a dangling symbolic link (to {tmp_path}/nowhere/x,"
+        " which does not exist), not a directory: give --out a directory (new or existing)\n"
+    )
+    assert not (tmp_path / "nowhere").exists()
+
+
+def test_out_naming_a_fifo_says_so(tmp_path, capsys):
+    fifo = tmp_path / "fifo"
+    os.mkfifo(fifo)
+    assert cli.main(["reproduce", "--quick", "--out", str(fifo)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and f"{fifo} is a named pipe (FIFO), not a directory" in err
 
 
 def _a_curve(rows: int, value: float):

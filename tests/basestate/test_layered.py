@@ -597,6 +597,12 @@ def test_tube_file_forms():
         (("axial_force = 0.0", "stretch = 1.0\naxial_force = 0.0"), 2, ["stretch", "both"]),
         (('material = "mooney-rivlin"', 'material = "rubber"'), 12, ["rubber", "choose"]),
         (("alpha = 0.4", "alpha = 2"), 13, ["layers.2.alpha", "alpha = 2"]),
+        # probe 8b: jm = 1e-300 was accepted, then blamed on the voltage and growth
+        (
+            ('material = "mooney-rivlin"\nalpha = 0.4', 'material = "gent"\njm = 1e-300'),
+            13,
+            ["layers.2.jm", "jm = 1e-300 is out of range; valid range: 0.001 <= jm"],
+        ),
         (
             ('energy = "(I1 - 3)/2 + (I1 - 3)**2/20 + I5/2"', 'energy = "I1 + J"'),
             8,

@@ -304,3 +304,22 @@ def test_cli_design_target_takes_the_package_mode_range(capsys):
         assert err.startswith("electrogrowth: error:") and "\n" not in err
         assert f"is not a whole number from 0 to {top}" in err
         assert "short-wave limit" in err
+
+
+def test_cli_design_whose_every_point_failed_exits_2_naming_the_failure(capsys, tmp_path):
+    """Probe 8b D8: every grid point failed (no mode bifurcates in extension up to lambda_z =
+    8, `critical` exits 2 with that line), yet `design` exited 0 with "no target mode among
+    the scanned modes: widen --m-max / --n-max", a remedy that cannot help. Now exit 2 with
+    one line naming the first failure, as `curve` does."""
+    tube = tmp_path / "comp.toml"
+    tube.write_text(
+        "length = 1.0\nstretch = 1.0\n[[layers]]\nouter_radius = 1.1\nshear_modulus = 3.0\n"
+        "[[layers]]\nouter_radius = 1.6\n"
+    )
+    args = ["design", "--tube", str(tube), "--solve-for", "stretch", "--side", "extension"]
+    args += ["--target", "1", "1", "--vary", "length", "0.6", "3", "--points", "3"]
+    assert main([*args, "--m-max", "4", "--n-max", "3", "--json"]) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and err.count("\n") == 1 and "widen" not in err
+    assert "every point of the design's sequence failed (3)" in err
+    assert "no mode bifurcates for stretch between 1 and 8" in err

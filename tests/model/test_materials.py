@@ -467,6 +467,8 @@ def test_material_by_name_builds_the_builtins():
     [
         (lambda: gent(jm=-1), ParameterError, "-1"),
         (lambda: gent(jm=0.0), ParameterError, "0.0"),
+        # probe 8b: 1e-300 was accepted, and its failure blamed on the voltage and growth
+        (lambda: gent(jm=1e-300), ParameterError, "1e-300 is out of range; valid range: 0.001"),
         (lambda: gent(jm=float("inf")), ParameterError, "inf"),
         (lambda: gent(jm=float("nan")), ParameterError, "nan"),
         (lambda: mooney_rivlin(alpha=0), ParameterError, "0"),
@@ -480,6 +482,7 @@ def test_material_by_name_builds_the_builtins():
     ids=[
         "gent-negative",
         "gent-zero",
+        "gent-tiny",
         "gent-inf",
         "gent-nan",
         "mr-zero",

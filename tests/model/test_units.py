@@ -3,6 +3,7 @@ design (a number keeps its non-dimensional meaning), one-line errors with exit s
 
 import json
 import math
+from pathlib import Path
 
 import pytest
 
@@ -174,3 +175,55 @@ def test_physical_line_breaks_between_entries_only():
     assert entries.replace(",,", ",").split(", ") == [
         f"quantity_{k} = {12345.6789 * k:.6g} kPa" for k in range(1, 9)
     ]
+
+
+# Probe 8b D7: with a layered --tube, resolve_units took R_o only from --outer-radius, which a
+# layered tube must not set: `--voltage 3kV` was refused ("needs --outer-radius as well"), and
+# no voltage was printed in kV (the scales had R_o = NaN); `state` printed no physical units.
+# R_o is now the file's outermost radius (2 R_i for examples/bilayer.toml).
+BILAYER = str(Path(__file__).resolve().parents[2] / "examples" / "bilayer.toml")
+BILAYER_SCALE = (4e-3 - 2e-3) * math.sqrt(1e5 / EPS)  # R_o - R_i = 2 mm
+
+
+def test_cli_layered_tube_takes_a_voltage_in_kV(capsys):
+    rec = _state(capsys, ["--tube", BILAYER, *PHYSICAL, "--voltage", "3kV"])
+    assert rec["voltage"] == pytest.approx(3000.0 / BILAYER_SCALE, rel=1e-14)  # 0.03059
+    assert rec["physical"]["voltage"] == [3.0, "kV"]
+    assert rec["physical"]["outer_radius"] == [4.0, "mm"]
+
+
+def test_cli_layered_state_prints_physical_units(capsys):
+    assert main(["state", "--tube", BILAYER, *PHYSICAL]) == 0
+    out = capsys.readouterr().out.replace("\n    ", " ")
+    vbar = 0.3  # the file's voltage
+    assert f"voltage = {vbar * BILAYER_SCALE / 1e3:.6g} kV" in out
+    assert "outer_radius = 4 mm" in out and "inner_pressure = 5 kPa" in out  # P_i 0.05 mu
+
+
+def test_cli_layered_critical_voltage_in_kV(capsys, tmp_path):
+    tube = tmp_path / "voltR.toml"
+    tube.write_text(
+        "length = 1.5\nstretch = 1.0\n[[layers]]\nouter_radius = 1.2\nshear_modulus = 2.0\n"
+        "[[layers]]\nouter_radius = 1.5\n"
+    )
+    argv = ["critical", "--tube", str(tube), *PHYSICAL, "--solve-for", "voltage"]
+    assert main([*argv, "--m-max", "3", "--n-max", "3", "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    kv = rec["value"] * (3e-3 - 2e-3) * math.sqrt(1e5 / EPS) / 1e3  # R_o = 1.5 R_i = 3 mm
+    assert rec["physical"]["voltage"] == [pytest.approx(kv, rel=1e-10), "kV"]
+
+
+@pytest.mark.parametrize(
+    ("argv", "match"),
+    [
+        (["--inner-radius", "-2mm"], "--inner-radius = '-2mm' is out of range; need 0 <"),
+        (["--inner-radius", "2mm", "--length", "-5 mm"], "--length = '-5 mm' is out of range"),
+        ([*PHYSICAL, "--voltage", "-3kV"], "--voltage = '-3kV' is out of range; need 0 <="),
+    ],
+)
+def test_cli_negative_quantity_is_named_with_its_range(capsys, argv, match):
+    """Probe 8b: `--inner-radius -2mm` gave argparse's "expected one argument" (a word
+    starting with "-" and no plain number was read as an option), not the value's range."""
+    assert main(["state", "--outer-radius", "1.4", *argv]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and match in err

@@ -47,8 +47,9 @@ PROG = "electrogrowth"
 class _Parser(argparse.ArgumentParser):
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)
-        # A value such as -inf, -1e5 or -nan is a (bad) number, not an unknown option: let
-        # the option's type name it instead of "expected one argument".
+        # A value such as -inf, -1e5, -nan or -2mm is a (bad) number or quantity, not an
+        # unknown option: let the option's type or range check name it instead of
+        # "expected one argument".
         self._negative_number_matcher = _NEGATIVE_NUMBER
 
     def error(self, message):
@@ -56,7 +57,10 @@ class _Parser(argparse.ArgumentParser):
 
 
 _FLOATING_POINT = r"(overflow|invalid value|divide by zero|underflow) encountered"
-_NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$", re.I)
+#: a negative number, optionally with a unit (a quantity: -2mm, -3 kV, -1e5 N/m^2)
+_NEGATIVE_NUMBER = re.compile(
+    r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?(\s*[^\W\d_]\S*(\s+\S+)*)?$|^-(inf|infinity|nan)$", re.I
+)
 
 
 #: Subcommand name -> (one-line help, configure(parser), run(args) -> exit status).
@@ -217,12 +221,29 @@ def _path_problem(exc: OSError) -> str:
     """One line naming the path and what is wrong with it."""
     path = Path(exc.filename)
     if isinstance(exc, (FileExistsError, NotADirectoryError)):
-        file = next((p for p in (path, *path.parents) if p.is_file()), path)
-        return (
-            f"{file} is an existing file, not a directory: give --out a directory (new or"
-            " existing), not a file"
-        )
+        # the first of the path and its parents that is there but no directory (a dangling
+        # link is there too: "an existing file" misnamed it, probe 8b)
+        there = (p for p in (path, *path.parents) if os.path.lexists(p) and not p.is_dir())
+        file = next(there, path)
+        what = _what_is(file)
+        tail = ", not a file" if what == "an existing file" else ""
+        return f"{file} is {what}, not a directory: give --out a directory (new or existing){tail}"
     return f"cannot use {path}: {exc.strerror or exc}"
+
+
+def _what_is(path: Path) -> str:
+    """What a path that is no directory is, in words."""
+    if path.is_symlink() and not path.exists():
+        return f"a dangling symbolic link (to {os.readlink(path)}, which does not exist)"
+    if path.is_file():
+        return "an existing file"
+    if path.is_fifo():
+        return "a named pipe (FIFO)"
+    if path.is_socket():
+        return "a socket"
+    if path.is_block_device() or path.is_char_device():
+        return "a device"
+    return "something other than a file"
 
 
 def _interrupted(stop: Interrupted) -> int:

@@ -18,6 +18,7 @@ import argparse
 import json
 import math
 import re
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -148,7 +149,7 @@ def _target(args):
 
 
 def run_design(args) -> int:
-    from ..design import prescribe  # the numeric stack, after the options are checked
+    from ..design import mode_sequence, prescribe  # the numeric stack, after the checks
     from ..design.sequence import check_vary
 
     varies, target = _vary(args), _target(args)
@@ -171,15 +172,15 @@ def run_design(args) -> int:
         )
     vary = varies[0]
     tube = tube.at(vary[0], vary[1])
-    result = prescribe(
-        tube,
-        solve_for,
-        target,
-        vary,
-        side=args.side,
-        options=scan_options_from_args(args),
+    options = scan_options_from_args(args)
+    sequence = mode_sequence(
+        tube, solve_for, vary, side=args.side, options=options,
         points=9 if args.points is None else args.points,
-        koiter=args.koiter,
+    )  # fmt: skip
+    if _every_point_failed(sequence):
+        return 2
+    result = prescribe(
+        tube, solve_for, target, vary, options=options, sequence=sequence, koiter=args.koiter
     )
     record = result.as_dict()
     if args.out is not None:
@@ -189,6 +190,25 @@ def run_design(args) -> int:
         return 0
     print("\n".join(summary(result) + record.get("files", [])))
     return 0
+
+
+def _every_point_failed(sequence) -> bool:
+    """True, after one line on stderr naming the first failure, when every point of the
+    sequence failed (as `curve` and a sweep do): its "failed" intervals hold no design, and
+    "widen --m-max / --n-max" would not help (e.g. no mode bifurcates in the range at all)."""
+    from ..outcomes import Status
+
+    curve = sequence.curve
+    failed = [i for i, k in enumerate(curve.kind) if k in (Status.FAILED, Status.ERROR)]
+    if not failed or len(failed) < len(curve.kind):
+        return False
+    first = " ".join(str(curve.status[failed[0]]).split())
+    print(
+        f"electrogrowth: error: every point of the design's sequence failed ({len(failed)});"
+        f" the first: {first}",
+        file=sys.stderr,
+    )
+    return True
 
 
 def _write(result, out: Path) -> list[Path]:
@@ -282,8 +302,6 @@ def _verdict_lines(verdict: dict) -> list[str]:
 
 
 def _run_map(args, tube, solve_for, varies, target) -> int:
-    import sys
-
     from ..design.mode_map import mode_map
     from ..design.prescribe_map import prescribe_map
     from .progress import enabled

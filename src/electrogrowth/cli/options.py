@@ -143,7 +143,7 @@ def add_tube_options(
         "--jm",
         type=finite_number,
         metavar="JM",
-        help="Gent stiffening parameter J_m > 0 (only with --material gent; default 97.2)",
+        help="Gent stiffening parameter J_m >= 0.001 (only with --material gent; default 97.2)",
     )
     mat.add_argument(
         "--alpha",

@@ -147,4 +147,5 @@ def _print_layered(tube: Tube, rec: dict) -> None:
         f"  end force (N less caps)      {rec['end_force']:.12g}",
     ]
     _stress_lines(lines, rec)
+    lines += physical_line(rec.get("physical", {}))  # as for one layer (probe 8b D7)
     print("\n".join(lines))

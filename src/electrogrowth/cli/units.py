@@ -64,7 +64,8 @@ def add_unit_options(parser: argparse.ArgumentParser) -> None:
         "physical units (optional; needs pip install 'electrogrowth[units]')",
         "Give the tube in physical units: --inner-radius sets the unit of length R_i, then"
         " --outer-radius and --length accept lengths (2.8mm) as well as Rbar_o and L;"
-        " --shear-modulus and --permittivity with both radii let --voltage take a voltage"
+        " --shear-modulus and --permittivity with both radii (R_o from --outer-radius or"
+        " the --tube file) let --voltage take a voltage"
         " (3kV), converted to Vbar = V / (R_o - R_i) sqrt(eps / mu). Results are then also"
         " printed in these units (voltages in kV, stresses in kPa, lengths in mm, the axial"
         " force in N; a length only if you gave one).",
@@ -85,6 +86,21 @@ def add_unit_options(parser: argparse.ArgumentParser) -> None:
         help="eps, the permittivity: a number is the relative permittivity eps_r"
         " (eps = eps_r eps_0, e.g. 4.7), or give it with its unit (e.g. 4.16e-11F/m)",
     )
+
+
+def _outer_radius(args: argparse.Namespace) -> float | None:
+    """Rbar_o of the tube the command will solve: --outer-radius, else the --tube file's
+    outermost radius (a layered tube must not set --outer-radius, so the file is the only
+    place it is given), else the command's default one-layer Rbar_o; None if there is none."""
+    rbar_o = getattr(args, "outer_radius", None)
+    if isinstance(rbar_o, float):
+        return rbar_o
+    if getattr(args, "tube", None) is not None:
+        from ..model.tube_file import load_tube  # read again by tube_of: a small file
+
+        return load_tube(args.tube).outer_radius
+    default = getattr(args, "shared_defaults", {}).get("outer_radius")
+    return default if isinstance(default, float) else None
 
 
 def resolve_units(args: argparse.Namespace) -> None:
@@ -123,8 +139,8 @@ def resolve_units(args: argparse.Namespace) -> None:
                     " of length), or a non-dimensional value"
                 )
             setattr(args, dest, value / r_i)
-    rbar_o = getattr(args, "outer_radius", None)
-    r_o = r_i * rbar_o if isinstance(rbar_o, float) else math.nan
+    rbar_o = _outer_radius(args)
+    r_o = r_i * rbar_o if rbar_o is not None else math.nan
     mu = math.nan
     if given["shear_modulus"] is not None:
         mu = magnitude(given["shear_modulus"], "--shear-modulus", "pressure", "Pa")

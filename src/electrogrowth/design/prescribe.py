@@ -30,6 +30,7 @@ import math
 from ..bifurcation.scan import TOP_MAX, ScanOptions, scan_modes
 from ..bifurcation.scan_grid import scan_grid
 from ..errors import ElectrogrowthError
+from ..incremental.accuracy import check_rtol
 from ..outcomes import Kind
 from . import onset
 from .margins import Margins
@@ -176,6 +177,7 @@ def prescribe(
         docstring), the verdict at the design, and the sensitivities
         dv/dp = -f_p / f_v of the target's critical value (design/sensitivity.py).
     """
+    check_rtol(rtol)  # before the sequence: a bad rtol is refused, not found after minutes
     goal = check_target(target)
     key, lo, hi = (
         check_vary(vary) if sequence is None else (sequence.key, sequence.lo, sequence.hi)

@@ -25,6 +25,7 @@ from scipy.optimize import minimize
 
 from ..bifurcation.scan import ScanOptions, scan_modes
 from ..errors import ElectrogrowthError
+from ..incremental.accuracy import check_rtol
 from ..outcomes import Kind
 from .map_record import ModeMap, label_json, label_of
 from .map_trace import Values, valued
@@ -277,6 +278,7 @@ def prescribe_map(
     -------
     MapDesign
     """
+    check_rtol(rtol)  # refused up front, as in prescribe (not after the margins' work)
     goal = check_target(target)
     margins = _Margins(mmap, tube, options)
     region = tuple(b for b in mmap.boundaries if b.left in goal or b.right in goal)

@@ -38,7 +38,7 @@ from ..basestate.tube import solve_base_state
 from ..bifurcation.critical import control_name
 from ..continuation.events import scaled
 from ..errors import ConvergenceError, ParameterError
-from ..incremental.accuracy import Accuracy
+from ..incremental.accuracy import Accuracy, check_rtol
 from ..incremental.radial_table import layer_units
 from ..incremental.targets import ImpedanceTarget, check_mode, with_family
 from ..model.layers import Tube
@@ -104,9 +104,12 @@ def sensitivities(
 
     Raises
     ------
+    ParameterError
+        If ``rtol`` is outside its valid range (incremental/accuracy.py RTOL_RANGE).
     ConvergenceError
         If D_v vanishes (a fold of the mode's branch: v(p) is not differentiable there).
     """
+    check_rtol(rtol)  # a nan or 10 would give Accuracy(rtol) silently coarse digits
     solve_for = control_name(tube, solve_for)
     fam = check_mode(*mode, family)
     target = Determinant(ImpedanceTarget(Accuracy(rtol).fine), with_family(*mode, fam))

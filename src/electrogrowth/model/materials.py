@@ -314,14 +314,24 @@ def neo_hookean() -> Material:
     return Material("neo-hookean", BuiltinEnergy("neo-hookean"))
 
 
+#: The smallest Gent jm: such a material locks within about 2 % strain (I1 - 3 = jm), and
+#: far below it I1 - 3's rounding (~1e-15) is no longer small against jm (jm = 1e-30 leaves
+#: even the unloaded tube "undefined", blamed on the loads). The generated forms are checked
+#: from here up (tests/model/test_builtin_energies.py).
+JM_MIN = 1e-3
+
+
 def gent(jm: float = 97.2) -> Material:
     """Ideal Gent dielectric, Omega = -(Jm/2) ln(1 - (I1 - 3)/Jm) + I5/2.
 
-    ``jm`` > 0 is the dimensionless stiffening parameter; jm -> infinity recovers
-    neo-Hookean. 97.2 is the classical value for VHB-type elastomers.
+    ``jm`` >= JM_MIN = 1e-3 is the dimensionless stiffening parameter; jm -> infinity
+    recovers neo-Hookean. 97.2 is the classical value for VHB-type elastomers.
     """
-    if isinstance(jm, bool) or not isinstance(jm, (int, float)) or not np.isfinite(jm) or jm <= 0:
-        raise ParameterError(f"Gent parameter jm = {jm!r} is invalid; need 0 < jm < inf")
+    if isinstance(jm, bool) or not isinstance(jm, (int, float)) or not JM_MIN <= jm < np.inf:
+        raise ParameterError(
+            f"Gent parameter jm = {jm!r} is out of range; valid range: {JM_MIN:g} <= jm < inf"
+            " (a smaller jm locks the material within 2 % strain)"
+        )
     return Material(f"gent(jm={float(jm):g})", BuiltinEnergy("gent", float(jm)))
 
 
