@@ -66,7 +66,7 @@ def test_layered_collocation_refinement_stays_at_the_kernel_root():
     collocation on its own and returned its spurious root -0.0213702353 (status OK, estimate
     2.1e-9), where the kernel and the QR shooting twin give -0.0425203156122 (agreeing to
     1.3e-12). Now the bracket is found again about the kernel's root at each rtol
-    (-0.0425202305, estimate 2.7e-6, INACCURATE). ~100 s."""
+    (-0.0425202305, estimate 2.7e-6, INACCURATE). ~25 s."""
     txt = Material("txt", "0.3*(I1-3) + 0.2*(I2-3) + 0.01*(I1-3)**2 + I5/2")
     tube = Tube(
         [
