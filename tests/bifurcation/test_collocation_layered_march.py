@@ -17,7 +17,16 @@ estimates), or none be reported. ~45 s.
 
 import pytest
 
-from electrogrowth import Layer, NoBifurcationFound, Tube, critical_value
+from electrogrowth import (
+    ConvergenceError,
+    Layer,
+    Material,
+    NoBifurcationFound,
+    Tube,
+    critical_value,
+    gent,
+    mooney_rivlin,
+)
 from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.incremental.targets import impedance_targets, with_family
 
@@ -40,3 +49,35 @@ def test_layered_collocation_reports_a_root_of_the_kernel_or_none():
         f"collocation reports g = {c.value!r} ({c.status}, estimate {c.error_estimate:.1e}),"
         " where the kernel's target keeps its sign"
     )
+
+
+def test_layered_collocation_does_not_march_from_a_bracket_without_a_sign_change():
+    """A bracket on which layered collocation keeps its sign is no licence to march (probe
+    round 8a, D1): ``_solve`` fell back to marching collocation on its own, and here found
+    its spurious g = 2.0324 of L.3. Now it says why it stops. ~10 s."""
+    with pytest.raises(ConvergenceError, match="does not march on its own"):
+        critical_value(L3_TUBE, 0, 8, "growth[2]", method="collocation", bracket=(1.5, 1.6))
+
+
+@pytest.mark.slow
+def test_layered_collocation_refinement_stays_at_the_kernel_root():
+    """Refined at rtol / 100, layered collocation reused the bracket found at rtol (probe
+    round 8a, D1). With more nodes the determinant kept its sign on it, ``_solve`` marched
+    collocation on its own and returned its spurious root -0.0213702353 (status OK, estimate
+    2.1e-9), where the kernel and the QR shooting twin give -0.0425203156122 (agreeing to
+    1.3e-12). Now the bracket is found again about the kernel's root at each rtol
+    (-0.0425202305, estimate 2.7e-6, INACCURATE). ~25 s."""
+    txt = Material("txt", "0.3*(I1-3) + 0.2*(I2-3) + 0.01*(I1-3)**2 + I5/2")
+    tube = Tube(
+        [
+            Layer(1.2, material=gent(50.0), shear_modulus=1e-2),
+            Layer(1.201, shear_modulus=100.0),
+            Layer(1.6, material=txt),
+            Layer(2.2, material=mooney_rivlin(0.2), shear_modulus=0.01),
+        ],
+        length=2.0,
+        stretch=1.0,
+    )
+    kernel = -0.0425203156122  # the kernel's and the shooting twin's root
+    c = critical_value(tube, 2, 0, "pressure", side="compression", method="collocation")
+    assert abs(c.value - kernel) <= c.error_estimate + 1e-12

@@ -248,3 +248,27 @@ def test_search_along_n_and_its_neighbours(monkeypatch, centre, top):
     assert found.best.n == ranked[0] and found.at_cap == (ranked[0] == 2000)
     assert [v.n for v in found.found[:top]] == ranked[:top]
     assert len(marched) < 60  # coarse-to-fine, not every n
+
+
+def test_search_along_n_marches_the_neighbouring_m_rows(monkeypatch):
+    """Along n the runners-up are looked for on the rows of m within top - 1 of the best's
+    too (probe round 8a, D3: a ring (0, 587)'s runners-up were its own row's (0, 586),
+    (0, 588), ... while (1, 587) and (2, 587) come first). Synthetic values
+    1 + (n - 300.2)^2 + 0.3 m^2 + 0.01 m: (1, 300) before (0, 301) before (2, 300)."""
+    from electrogrowth.bifurcation import msearch
+
+    def value(m, n):
+        return 1 + (n - 300.2) ** 2 + 0.3 * m * m + 0.01 * m
+
+    def first(params, solve_for, side, rows, rtol, ks, only=None, *, axis="m", top=3):
+        modes = [(m, k) for k in ks for m, _ in only or rows]
+        modes.sort(key=lambda mode: value(*mode))
+        return [ModeValue(m, n, value(m, n)) for m, n in modes[:top]]
+
+    monkeypatch.setattr(msearch, "_first", first)
+    rings = [(0, Family.WRINKLE.code)]
+    found = msearch.search_n(None, THETA, None, rings, 240, 2000, RTOL, 4, m_span=(0, 30))
+    ranked = sorted(
+        ((m, n) for m in range(0, 31) for n in range(240, 2001)), key=lambda mode: value(*mode)
+    )
+    assert [(v.m, v.n) for v in found.found[:4]] == ranked[:4]

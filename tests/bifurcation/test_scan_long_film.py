@@ -19,7 +19,7 @@ is searched coarse-to-fine along n (msearch.search_n), as m is beyond 64. About 
 
 import pytest
 
-from electrogrowth import Layer, Tube, critical_value, scan_modes
+from electrogrowth import Layer, ScanOptions, Tube, critical_value, scan_modes
 
 LONG_FILM = Tube((Layer(1.0026, shear_modulus=8000.0), Layer(2.7)), length=30.0, stretch=1.0)
 
@@ -51,3 +51,17 @@ def test_scan_finds_the_rings_of_a_long_film_lined_tube_under_axial_compression(
     scan = scan_modes(RINGED, "stretch")
     assert (scan.critical.m, scan.critical.n) == (0, 306)
     assert scan.critical.value == pytest.approx(ring.value, rel=1e-11)
+
+
+def test_ring_runners_up_include_the_neighbouring_m_rows():
+    """The runners-up of a ring found by the search along n came from the ring's own row
+    (0, n) only (probe round 8a, D3): (0, 586), (0, 588), (0, 585), (0, 589), where single
+    solves rank (1, 587) 1.02452016737, (0, 586) ...20726, (2, 587) ...21108, (1, 586) first
+    (and (0, 588), (1, 588), (3, 587) still before (0, 585)). The neighbourhood of the best
+    is now marched on the rows of m within top - 1 of its m too. ~5 s (once compiled)."""
+    film = Tube([Layer(3.0), Layer(3.001, shear_modulus=100.0)], length=6.0, stretch=1.0)
+    s = scan_modes(film, "growth[2].z", options=ScanOptions(top=5))
+    assert (s.critical.m, s.critical.n) == (0, 587)
+    assert [(v.m, v.n) for v in s.runners_up] == [(1, 587), (0, 586), (2, 587), (1, 586)]
+    second = critical_value(film, 1, 587, "growth[2].z").value  # 1.0245201673665
+    assert s.runners_up[0].value == pytest.approx(second, rel=1e-13)

@@ -39,7 +39,7 @@ def test_a_family_row_is_searched_only_along_its_own_axis(
 ):
     searched = []
 
-    def search(params, solve_for, side, rows, edge, top, rtol, keep):
+    def search(params, solve_for, side, rows, edge, top, rtol, keep, **more):
         searched.extend(rows)
         raise NoBifurcationFound("none beyond")
 

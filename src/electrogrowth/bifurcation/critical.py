@@ -178,7 +178,8 @@ def critical_value(
         and returned with status INACCURATE if it still does.
     bracket : (float, float), optional
         A known sign-change interval (e.g. from a mode scan); the march is skipped when
-        the target does change sign on it.
+        the target does change sign on it (layered collocation never marches: then
+        ConvergenceError).
 
     Returns
     -------
@@ -193,24 +194,45 @@ def critical_value(
     fam = check_mode(m, n, family)
     problem = as_problem(params, solve_for, side=side, rtol=rtol)
     params, solve_for, side, rtol = problem.tube, problem.control, problem.side, problem.rtol
-    if bracket is None and check_method(method) is Method.COLLOCATION and not params.is_uniform:
+    # layered collocation never marches on its own (its determinant has sign changes of its
+    # own, docs/derivation-layered-modes.md L.3): it solves a root in a bracket
+    layered = check_method(method) is Method.COLLOCATION and not params.is_uniform
+    kernel = None
+    if bracket is None and layered:
         kernel, bracket = _kernel_bracket(params, m, n, solve_for, fam, side, rtol)
         if bracket is None:
             return kernel  # the state is lost first (a base-state property: any method)
-    point = _solve(params, m, n, solve_for, fam, side, method, rtol, bracket)
+    solve = functools.partial(
+        _solve, params, m, n, solve_for, fam, side, method, march=not layered
+    )
+    point = solve(rtol, bracket)
     tight = rtol
     while not _certified(point, rtol) and tight / REFINE >= RTOL_RANGE[0] * (1 - 1e-9):
         tight /= REFINE
-        point = _solve(params, m, n, solve_for, fam, side, method, tight, bracket)
+        if kernel is not None:  # more nodes at the finer rtol: the bracket is theirs to find
+            bracket = _collocation_bracket(params, m, n, solve_for, fam, kernel.value, tight)
+        try:
+            point = solve(tight, bracket)
+        except _NoSignChange as exc:  # the point at the looser rtol stands, not certified
+            return _inaccurate(point, rtol, f"; at rtol = {tight:g} {exc}")
     if _certified(point, rtol):
         return point
+    return _inaccurate(point, rtol, f" even at rtol / {REFINE:g}")
+
+
+def _inaccurate(point: CriticalPoint, rtol: float, why: str) -> CriticalPoint:
+    """``point`` marked INACCURATE: its estimate exceeds the certified bound, and ``why``."""
     return dataclasses.replace(
         point,
         status=Status.INACCURATE,
         message=f"error estimate {point.error_estimate:.1e} exceeds {CERTIFIED:g} rtol"
-        f" max(1, |value|) (rtol = {rtol:g}) even at rtol / {REFINE:g}",
+        f" max(1, |value|) (rtol = {rtol:g}){why}",
         remedy=ConvergenceError.remedy,
     )
+
+
+class _NoSignChange(ConvergenceError):
+    """Layered collocation has no sign change on its bracket (it does not march instead)."""
 
 
 #: relative half-widths tried around the kernel's root for layered collocation's bracket
@@ -230,19 +252,27 @@ def _kernel_bracket(params, m, n, solve_for, fam, side, rtol):
     kernel = _solve(params, m, n, solve_for, fam, side, "impedance", rtol, None)
     if kernel.kind != Kind.BIFURCATION:
         return kernel, None
-    colloc, v = CollocationTarget(rtol), kernel.value
-    mode = with_family(m, n, fam)
+    bracket = _collocation_bracket(params, m, n, solve_for, fam, kernel.value, rtol)
+    if bracket is not None:
+        return kernel, bracket
+    raise ConvergenceError(
+        f"collocation finds no root of mode ({m}, {n}) within {KERNEL_BRACKETS[-1]:g} of the"
+        f" impedance kernel's {solve_for} = {kernel.value:.12g} on this layered tube (its"
+        " determinant has sign changes of its own: docs/derivation-layered-modes.md L.3); use"
+        " the impedance method, or give collocation a bracket"
+    )
+
+
+def _collocation_bracket(params, m, n, solve_for, fam, v, rtol):
+    """The narrowest of the KERNEL_BRACKETS about ``v`` on which collocation at ``rtol`` (its
+    node count) changes sign, or None."""
+    colloc, mode = CollocationTarget(rtol), with_family(m, n, fam)
     for width in KERNEL_BRACKETS:
         w = width * max(abs(v), 1e-300)  # relative: a small value's bracket keeps its side
         ends = [colloc(solve_base_state(params.at(solve_for, x)), mode)[0] for x in (v - w, v + w)]
         if ends[0] * ends[1] < 0:
-            return kernel, (v - w, v + w)
-    raise ConvergenceError(
-        f"collocation finds no root of mode ({m}, {n}) within {KERNEL_BRACKETS[-1]:g} of the"
-        f" impedance kernel's {solve_for} = {v:.12g} on this layered tube (its determinant has"
-        " sign changes of its own: docs/derivation-layered-modes.md L.3); use the impedance"
-        " method, or give collocation a bracket"
-    )
+            return v - w, v + w
+    return None
 
 
 def _certified(point: CriticalPoint, rtol: float) -> bool:
@@ -252,8 +282,11 @@ def _certified(point: CriticalPoint, rtol: float) -> bool:
     return point.error_estimate <= CERTIFIED * rtol * max(1.0, abs(point.value))
 
 
-def _solve(params, m, n, solve_for, fam, side, method, rtol, bracket) -> CriticalPoint:
-    """One solve of :func:`critical_value` at ``rtol`` (checked arguments)."""
+def _solve(
+    params, m, n, solve_for, fam, side, method, rtol, bracket, *, march=True
+) -> CriticalPoint:
+    """One solve of :func:`critical_value` at ``rtol`` (checked arguments); without
+    ``march``, only in ``bracket`` (_NoSignChange if the target keeps its sign there)."""
     mode = with_family(m, n, fam)
     acc = Accuracy(rtol)
     fine, coarse = targets_for(method, acc.fine), coarse_targets_for(method, acc.fine)
@@ -262,6 +295,13 @@ def _solve(params, m, n, solve_for, fam, side, method, rtol, bracket) -> Critica
     g = root_mode(at, fine, mode, sref)  # along the control, stable > 0
     if bracket is not None and g(bracket[0]) * g(bracket[1]) < 0:
         value = brent(g, *bracket)
+    elif not march:
+        where = "no bracket" if bracket is None else f"no sign change on {bracket}"
+        raise _NoSignChange(
+            f"{method} has {where} for mode ({m}, {n}) on this layered tube, and does not"
+            " march on its own there (its determinant has sign changes of its own:"
+            " docs/derivation-layered-modes.md L.3)"
+        )
     else:
         loose = targets_for(method, acc.march_signs)
         try:

@@ -23,7 +23,8 @@ The same search runs along n (:func:`search_n`, rows of fixed m): a long tube li
 film that grows isotropically folds into rings (0, n) of the flat film's wavelength, n ~
 hundreds, beyond the n range's doublings. The integers next to the best are all marched
 (``top - 1`` either side, at most NEIGHBOURS), so the runners-up of a searched optimum are
-its true neighbours.
+its true neighbours; along n, on the rows of m within ``top - 1`` of the best's too (a ring
+(0, n)'s next modes are (1, n), (0, n +- 1), (2, n), ...).
 """
 
 from __future__ import annotations
@@ -82,14 +83,23 @@ def search_m(
 
 
 def search_n(
-    params, solve_for: str, side, rows, edge: int, cap: int, rtol: float, top: int = 1
+    params,
+    solve_for: str,
+    side,
+    rows,
+    edge: int,
+    cap: int,
+    rtol: float,
+    top: int = 1,
+    m_span: tuple[int, int] | None = None,
 ) -> SearchResult:
     """:func:`search_m` along n: the best n in [edge, cap] of the rows ``rows`` ((m, family
-    code) pairs)."""
-    return _search(params, solve_for, side, rows, (edge, cap), rtol, top, "n")
+    code) pairs); its runners-up are looked for on the wrinkle rows of m within ``top - 1``
+    of the best's too, inside ``m_span`` (if given)."""
+    return _search(params, solve_for, side, rows, (edge, cap), rtol, top, "n", m_span)
 
 
-def _search(params, solve_for, side, rows, span, rtol, top, axis) -> SearchResult:
+def _search(params, solve_for, side, rows, span, rtol, top, axis, m_span=None) -> SearchResult:
     edge, cap = span
     march = functools.partial(_first, params, solve_for, side, rows, rtol, axis=axis)
     samples = geometric_samples(edge, cap)
@@ -110,7 +120,8 @@ def _search(params, solve_for, side, rows, span, rtol, top, axis) -> SearchResul
         lo, hi = _neighbours([lo, *inner, _index(best, axis), hi], _index(best, axis))
         if complete:
             break
-    seen += _neighbourhood(march, rows, seen, best, span, top, axis)
+    near = rows if m_span is None else _near_rows(rows, best, m_span, top)
+    seen += _neighbourhood(march, near, seen, best, span, top, axis)
     key = {(v.m, v.n, v.family): v for v in seen}
     ordered = sorted(key.values(), key=lambda v: _sense(side) * v.value)
     return SearchResult(best, tuple(ordered), _index(best, axis) == cap)
@@ -128,9 +139,19 @@ def _neighbourhood(march, rows, seen, best, span, top, axis) -> list[ModeValue]:
     if not todo:
         return []
     try:
-        return list(march(todo, top=top))
+        return list(march(todo, sorted(rows), top=top))
     except NoBifurcationFound:
         return []
+
+
+def _near_rows(rows, best: ModeValue, m_span: tuple[int, int], top: int) -> set:
+    """``rows`` and the wrinkle rows (m, n >= 1) of m within top - 1 of the best's, inside
+    ``m_span``: a ring (0, 587) of a film has (1, 587), (2, 587), (1, 586) and (3, 587)
+    before its own row's (0, 585) (probe round 8a), as the m search's neighbourhood has the
+    other n rows (round 6b)."""
+    wide = min(top - 1, NEIGHBOURS)
+    lo, hi = max(m_span[0], best.m - wide), min(m_span[1], best.m + wide)
+    return set(rows) | {(m, Family.WRINKLE.code) for m in range(lo, hi + 1)}
 
 
 def _first(params, solve_for, side, rows, rtol, ks, only=None, *, axis="m", top=3):

@@ -328,8 +328,12 @@ def _searched(
         searcher, edge = search_n, result.n_range[1]
     ranges = {"m": result.m_range, "n": result.n_range}
     ranges[axis] = (ranges[axis][0], top)
+    # along n, the runners-up include the neighbouring m rows of the scanned m range
+    more = {} if axis == "m" else {"m_span": (options.m_range[0], result.m_range[1])}
     try:
-        found = searcher(params, solve_for, side, sorted(rows), edge, top, rtol, options.top)
+        found = searcher(
+            params, solve_for, side, sorted(rows), edge, top, rtol, options.top, **more
+        )
     except NoBifurcationFound:  # no mode beyond the scan bifurcates first: the scan stands
         return dataclasses.replace(result, m_range=ranges["m"], n_range=ranges["n"]), False
     best, others = found.best, {(v.m, v.n, v.family): v for v in found.found}
