@@ -46,7 +46,7 @@ from pathlib import Path
 
 import numpy as np
 
-from electrogrowth import Tube
+from electrogrowth import Layer, Tube
 from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.bifurcation.scan import ScanOptions, scan_modes
@@ -261,6 +261,35 @@ def warm_mode(repeat=30):
     return wall, wall, cpu
 
 
+#: a critical value's CPU time against its mode (issue 21: the cost per mode must not grow
+#: with m): the thick tube in voltage, and a stiff film outside a thick substrate
+MODE_COST = [
+    (
+        "thick Rbar_o 2, L 1, voltage",
+        P(2.0, 1.0),
+        "voltage",
+        [(2, 1), (40, 0), (400, 0), (2000, 0), (0, 2000), (2000, 2000)],
+    ),
+    (
+        "film mu 100, 0.004 thick, outside R 2, L 5, hoop growth",
+        Tube((Layer(2.0), Layer(2.004, shear_modulus=100.0)), length=5.0, stretch=1.0),
+        "growth[2].theta",
+        [(20, 0), (200, 0), (1000, 0), (2000, 0)],
+    ),
+]
+
+
+def mode_cost(repeat=5) -> list:
+    """[{tube, mode, value, cpu_seconds}]: the median CPU of ``repeat`` warm calls each."""
+    out = []
+    for name, tube, control, modes in MODE_COST:
+        for m, n in modes:
+            critical_value(tube, m, n, control)  # its first call: tables, states
+            _, res, cpu = median_time(lambda: critical_value(tube, m, n, control), repeat)  # noqa: B023
+            out.append({"tube": name, "mode": [m, n], "value": res.value, "cpu_seconds": cpu})
+    return out
+
+
 FRESH = (
     "import time; t = time.perf_counter(); from electrogrowth import Tube;"
     "from electrogrowth.bifurcation.critical import critical_value;"
@@ -354,6 +383,12 @@ def tables(results) -> str:
         f"| fresh process: import + first critical value | {o['fresh'][0]:.2f} s"
         f" (whole process {o['fresh'][1]:.2f} s) |",
     ]
+    for row in o.get("mode_cost", []):
+        m, n = row["mode"]
+        lines.append(
+            f"| critical ({m}, {n}), {row['tube']}, warm (CPU, median of 5)"
+            f" | {1e3 * row['cpu_seconds']:.1f} ms |"
+        )
     if "reproduce" in o:
         rep = o["reproduce"]
         for number, sec in sorted(rep["figures"].items(), key=lambda kv: int(kv[0])):
@@ -430,6 +465,8 @@ def main(argv=None) -> None:
     other["warm_mode"] = warm_mode()
     other["fresh"] = fresh_process(1 if args.quick else 3)
     print(f"warm mode {1e3 * other['warm_mode'][0]:.2f} ms, fresh {other['fresh']}", flush=True)
+    if not args.quick:
+        other["mode_cost"] = mode_cost()
     save()
     if not args.quick:
         other["sweep"] = sweep_throughput(False)
