@@ -12,7 +12,7 @@ from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.bifurcation.curves import Switch, critical_curve
 from electrogrowth.bifurcation.scan import ScanOptions, scan_modes
 from electrogrowth.cli.curve import configure_curve, run_curve
-from electrogrowth.errors import ParameterError
+from electrogrowth.errors import NoBifurcationFound, ParameterError
 from electrogrowth.figures.plots import plot_curve
 from electrogrowth.model.layers import Tube
 
@@ -291,8 +291,9 @@ def test_continuation_equals_full_scans(params, solve_for, along, grid, side, mo
 def _fake_modes(monkeypatch, values, threshold=None, inaccurate=()):
     """Replace the scans and single-mode solves by closed forms: ``values[mode](x)`` is the
     first critical value of a mode at voltage x (NaN: the mode is not reached before the
-    threshold, whose value is ``threshold(x)``); the scans at the voltages ``inaccurate``
-    return a critical value of status "inaccurate"."""
+    threshold, whose value is ``threshold(x)``; None: it has no root before the end of the
+    march); the scans at the voltages ``inaccurate`` return a critical value of status
+    "inaccurate"."""
     import math
     from types import SimpleNamespace
 
@@ -300,12 +301,18 @@ def _fake_modes(monkeypatch, values, threshold=None, inaccurate=()):
 
     def one(at, m, n, solve_for, side=None, bracket=None):
         v = values[m, n](at.voltage)
+        if v is None:
+            raise NoBifurcationFound(f"({m}, {n}) has no root")
         if math.isnan(v):
             return SimpleNamespace(value=threshold(at.voltage), kind="threshold")
         return SimpleNamespace(value=v, kind="bifurcation")
 
     def scan(at, solve_for, side=None, options=None):
-        found = [(v, mode) for mode, f in values.items() if not math.isnan(v := f(at.voltage))]
+        found = [
+            (v, mode)
+            for mode, f in values.items()
+            if (v := f(at.voltage)) is not None and not math.isnan(v)
+        ]
         if found:
             v, (m, n) = min(found)
             crit = SimpleNamespace(kind="bifurcation", m=m, n=n, value=v, error_estimate=0.0)
@@ -334,6 +341,23 @@ def test_a_crossing_is_a_switch(monkeypatch):
     assert curve.ends == () and sw.kind == "switch"
     assert sw.x == pytest.approx(0.5, abs=1e-12) and sw.value == pytest.approx(2.0, abs=1e-12)
     assert list(curve.kind) == ["bifurcation", "switch", "switch", "bifurcation"]
+
+
+def test_a_crossing_is_a_switch_when_a_mode_has_no_root_at_the_far_grid_point(monkeypatch):
+    """Modes (0, 1): 1 + 2x and (1, 1): 1.5 + x cross at x = 0.5, value 2; (0, 1) has no
+    root before the end of the march beyond x = 0.8. Found by probing (round 8b, D3): the
+    single-mode solve's NoBifurcationFound at the grid point x = 0.9 sent the switch to the
+    bisection with scans, which located it to 1e-7 only and, its two values taken 1e-7
+    apart, labelled it an "end". A mode with no root comes after every other: +-inf in
+    Brent's d."""
+    _fake_modes(
+        monkeypatch,
+        {(0, 1): lambda x: 1 + 2 * x if x < 0.8 else None, (1, 1): lambda x: 1.5 + x},
+    )
+    curve = _curve([0.1, 0.9])
+    (sw,) = curve.switches
+    assert curve.ends == () and sw.kind == "switch"
+    assert sw.x == pytest.approx(0.5, abs=1e-12) and sw.value == pytest.approx(2.0, abs=1e-12)
 
 
 def test_a_branch_that_ends_at_a_jump_is_an_end(monkeypatch, tmp_path):
@@ -420,3 +444,39 @@ def test_cli_warns_of_inaccurate_points_and_exits_0(monkeypatch, tmp_path, capsy
     out, err = capsys.readouterr()
     assert json.loads(out)["status"] == ["", "inaccurate", ""]
     assert err.count("\n") == 1 and "warning: 1 of 3 points are inaccurate" in err
+
+
+@pytest.mark.slow
+def test_a_sequence_switch_with_a_mode_rootless_at_the_far_grid_point_is_brents():
+    """Probe round 8b (D2, D3), ~90 s: bilayer (mu 10 | 1), hoop growth, m range (8, 16),
+    along the inner pressure. (15, 1) -> (8, 2) cross continuously at p = 0.16111873085
+    (Brent on two single-mode solves, both 2.5310340968); the sequence put the switch at
+    0.16111871595 as an "end" ((15, 1) has no root up to g = 6 at the grid point p = 0.3, so
+    the scans' bisection took over), and left a gap [0.153455, 0.154053] with no mode (the
+    scan at 0.1545 reported (14, 1) behind its runner-up (17, 0))."""
+    from scipy.optimize import brentq
+
+    from electrogrowth import Layer, mode_sequence
+
+    def tube(p):
+        return Tube(
+            [Layer(1.1, shear_modulus=10.0), Layer(2.0)],
+            length=1.0,
+            stretch=1.0,
+            inner_pressure=p,
+        )
+
+    ctrl = "growth[1].theta"
+    seq = mode_sequence(
+        tube(0.0), ctrl, ("pressure", -0.05, 0.3), points=3, options=ScanOptions((8, 16), (1, 1))
+    )
+    ivs = seq.intervals
+    assert not [(a.hi, b.lo) for a, b in zip(ivs, ivs[1:]) if b.lo - a.hi > 1e-12]
+    (sw,) = [s for s in seq.switches if tuple(s.mode_after) == (8, 2)]
+
+    def d(p):
+        v15 = critical_value(tube(p), 15, 1, ctrl, rtol=1e-12).value
+        return v15 - critical_value(tube(p), 8, 2, ctrl, rtol=1e-12).value
+
+    root = brentq(d, 0.1605, 0.1615, xtol=1e-14)
+    assert str(sw.kind) == "switch" and abs(sw.x - root) < 1e-10, (sw, root)

@@ -5,7 +5,8 @@ SWITCH) on d(x) = s (v_A(x) - v_B(x)), v a mode's first critical value (or the s
 limit); where d jumps (a window of instability opens) the switch is that jump. Between a
 mode and the threshold: bisection (continuation.events.bisect, MODE_EDGE) on whether the
 mode still bifurcates before the threshold. A located switch is checked by a scan there;
-a third mode found first splits the interval. If a single-mode solve fails, the switch is
+a third mode found first splits the interval. A mode with no root before the end of the
+march is read as coming after all (+-inf in d). If a single-mode solve fails, the switch is
 bisected with scans, to a relative 1e-7 only.
 
 Between a grid point whose scan failed (the tube already unstable at the control's start,
@@ -20,7 +21,7 @@ from __future__ import annotations
 import math
 
 from ..continuation.events import MODE_EDGE, SWITCH, bisect, brent
-from ..errors import ElectrogrowthError
+from ..errors import ElectrogrowthError, NoBifurcationFound
 from ..outcomes import NO_MODE, Kind
 from .curve_record import CurvePoint, Switch, _change_kind, _failed, _row
 
@@ -46,12 +47,20 @@ class _Locator:
 
     def mode_value(self, mode, x) -> tuple[float, str]:
         """First critical value of ``mode`` at x, by the single-mode march (the threshold,
-        kind "threshold", if the base state is lost first: then the mode comes after all)."""
+        kind "threshold", if the base state is lost first: then the mode comes after all;
+        +-inf in the march's direction, kind "none", if it has no root before the end of
+        the march)."""
         key = (mode, float(x))
         if key not in self.known:
             at = self.params.at(self.along, x)
-            c = self.critical_value(at, *mode, self.solve_for, side=self.side)
-            self.known[key] = (c.value, c.kind)
+            try:
+                c = self.critical_value(at, *mode, self.solve_for, side=self.side)
+                self.known[key] = (c.value, c.kind)
+            except NoBifurcationFound:
+                # Not a failure: the mode comes after every other, which is all the sign of
+                # d (Brent's bracket) needs, as in design/margins.py. Falling back to scans
+                # here located a regular crossing to 1e-7 only, as an "end" (probe 8b, D3).
+                self.known[key] = (self.sense * math.inf, Kind.NONE)
         return self.known[key]
 
     def value_of(self, pt: CurvePoint, x) -> float:

@@ -124,6 +124,10 @@ def _search(params, solve_for, side, rows, span, rtol, top, axis, m_span=None) -
     seen += _neighbourhood(march, near, seen, best, span, top, axis)
     key = {(v.m, v.n, v.family): v for v in seen}
     ordered = sorted(key.values(), key=lambda v: _sense(side) * v.value)
+    # The neighbourhood marches every row, not only the refined best's: a mode of another
+    # row found there may come first ((17, 0) before the refined (16, 1), probe 8b D2), and
+    # the best is the earliest of all the search found.
+    best = ordered[0]
     return SearchResult(best, tuple(ordered), _index(best, axis) == cap)
 
 
@@ -160,9 +164,12 @@ def _first(params, solve_for, side, rows, rtol, ks, only=None, *, axis="m", top=
     does."""
     pairs = only or rows
     if axis == "m":
-        modes = np.array([(k, n, code) for k in ks for n, code in pairs], float)
+        modes = [(k, n, code) for k in ks for n, code in pairs]
     else:
-        modes = np.array([(m, k, code) for k in ks for m, code in pairs], float)
+        modes = [(m, k, code) for k in ks for m, code in pairs]
+    modes = np.array([mode for mode in modes if _is_mode(*mode)], float).reshape(-1, 3)
+    if not len(modes):
+        raise NoBifurcationFound(f"no mode with {axis} in {ks[0]}..{ks[-1]} on these rows")
     loose = ImpedanceTarget(SCAN_SIGNS)
     fine = ImpedanceTarget(rtol)
     stable = ImpedanceTarget(SCAN_STABLE_SIGNS)
@@ -179,6 +186,14 @@ def _first(params, solve_for, side, rows, rtol, ks, only=None, *, axis="m", top=
     if not res.found:
         raise NoBifurcationFound(f"no mode with {axis} in {ks[0]}..{ks[-1]} bifurcates")
     return res.found
+
+
+def _is_mode(m, n, code) -> bool:
+    """Is (m, n) of family ``code`` a mode? A search from an edge m = 1 (or 0) on the
+    prismatic row would otherwise march (1, 0), a rigid translation of the cross-section, or
+    (0, 0), the base state's own limit point: the march then reads the unloaded tube as
+    already unstable (probe 8b, D11)."""
+    return m >= 2 if code == Family.PRISMATIC.code else n >= 1  # as incremental.check_mode
 
 
 def _stable(modes, targets):
