@@ -20,7 +20,8 @@ ends at a located end of the valid range (next to a failed scan: the tube is alr
 unstable at the control's start beyond it), v_T falls to the start there and M alone grows
 without bound, so the room below the target counts too (design/margins.py: M_0 = (v_T -
 v_0) / (v_N - v_T), and at a cliff, where v_T does not fall to v_0, the relative distance
-to the end M_end; ``limited_by`` NO_DESIGN). docs/design.md.
+to the end M_end; ``limited_by`` NO_DESIGN). At a tie of competitors (a kink of M) the
+margin's sensitivity is one-sided (design/onset.py :func:`kinked_margin`). docs/design.md.
 """
 
 from __future__ import annotations
@@ -77,6 +78,10 @@ class Design:
     scanned modes (x and the values are NaN). ``sensitivity``: d(value)/dp of the target
     mode's critical value for every parameter p of the tube at x; ``margin_sensitivity``:
     dM/dp from the two modes' sensitivities; ``next_sensitivity``: those of the next mode.
+    Where another competitor ties with the one that sets M (the usual case at the widest
+    margin: a kink of M, design/onset.py :func:`kinked_margin`), ``tied_with`` names it,
+    ``margin_sensitivity`` is None for each p at whose kink M is not differentiable and
+    ``margin_sides`` holds (down, up) there: dM/dp lowering p and raising it.
     """
 
     target: str
@@ -101,6 +106,8 @@ class Design:
     verdict: dict = dataclasses.field(default_factory=dict)
     region_crease: tuple = ()
     crease_sensitivity: dict = dataclasses.field(default_factory=dict)
+    margin_sides: dict = dataclasses.field(default_factory=dict)
+    tied_with: tuple = ()
 
     def as_dict(self) -> dict:
         num = lambda v: v if v is not None and math.isfinite(v) else None  # noqa: E731
@@ -126,6 +133,7 @@ class Design:
                 "crease_value": num(self.crease_value),
                 "crease_margin": num(self.crease_margin),
                 "limited_by": self.limited_by or None,
+                "tied_with": [tie_name(t) for t in self.tied_with],
                 "verdict": self.verdict or None,
             },
             "sensitivity": sensitivity_json(self),
@@ -237,6 +245,11 @@ def prescribe(
         sens_margin = {}
     elif sens_next:
         sens_margin = onset.margin_sensitivity(margins.sense, v, sens, v_next, sens_next)
+    sides, tied = {}, ()
+    if sens_margin:  # M set by a mode or the crease: a tie with another is a kink of M
+        lead = (nxt, v_next, sens_next) if limited == "mode" else ("crease", v_crease, sens_crease)
+        rivals = _near(margins, at, sequence.solve_for, x, v, lead, others, sens_crease, rtol)
+        sens_margin, sides, tied = onset.kinked_margin(at, margins.sense, v, sens, rivals)
     ends = (
         []
         if span is None
@@ -265,7 +278,30 @@ def prescribe(
         onset.design_verdict(at, sequence.solve_for, side, scan_opts, koiter=koiter),
         tuple(onset.region_creases(region, sequence.curve)),
         sens_crease,
+        sides,
+        tied,
     )
+
+
+def tie_name(rival) -> object:
+    """A tied competitor for JSON: a mode as [m, n], the crease as "crease"."""
+    return list(rival) if isinstance(rival, tuple) else rival
+
+
+def _near(margins: Margins, at, solve_for, x, v, lead, others, sens_crease, rtol) -> list:
+    """The competitors at x within reach of a tie with ``lead`` (onset.near_rivals), each
+    with its sensitivities: the modes ``others`` and the crease."""
+
+    def sens_of(name, w):
+        if name == "crease":
+            return sens_crease or None
+        try:
+            return sensitivities(at, name, solve_for, w, rtol=rtol)
+        except ElectrogrowthError:  # a fold of the rival's branch: its kink is not known
+            return None
+
+    cands = [(o, margins.value(o, x)) for o in others] + [("crease", margins.crease(x))]
+    return onset.near_rivals(margins.sense, v, lead, cands, sens_of)
 
 
 def _touches(span: Interval | None, ends) -> tuple:
