@@ -28,8 +28,9 @@ cliff the room below is measured by the design variable itself:
 the fraction by which the design variable can move towards the end x_e before the tube is
 unstable with no control (for a load varied, its own margin to its critical value at the
 control's start); the margin is then min(M, M_0, M_end). An end is a cliff where M_0 at the
-end itself is not ~0: a smooth end, located to 1e-13 (SWITCH), leaves v_T - v_0 ~ 1e-6
-relative there, a cliff a finite room. docs/design.md.
+end itself is not ~0: a smooth end, located to 1e-13 (SWITCH), leaves M_0 = 3e-5 there (the
+grown tube of tests/design/test_boundary_after_failed_point.py: v_T = 6e-6), a cliff a
+finite room (5.07 in probe 8b's case). docs/design.md.
 """
 
 from __future__ import annotations
@@ -44,7 +45,7 @@ from . import onset
 from .onset import gap_to_crease
 
 #: M_0 at a located end above which the end is a cliff (module docstring): a smooth end
-#: leaves ~1e-6, a cliff such as probe 8b's D4 leaves 5
+#: leaves 3e-5, a cliff such as probe 8b's D4 leaves 5
 CLIFF = 1e-2
 
 
