@@ -259,11 +259,34 @@ def summary(result) -> list[str]:
     lines += _verdict_lines(result.verdict)
     if result.to_boundary is not None:
         lines.append(f"  distance to the region's boundary: {result.to_boundary:.6g}")
+    lines += _tie_lines(result)
     for p, d in sorted(result.sensitivity.items(), key=lambda kv: -abs(kv[1])):
-        dm = result.margin_sensitivity.get(p)
-        extra = "" if dm is None else f", d(margin)/d{p} = {dm:.6g}"
-        lines.append(f"  d{seq.solve_for}_cr/d{p} = {d:.6g}{extra}")
+        lines.append(f"  d{seq.solve_for}_cr/d{p} = {d:.6g}{_margin_slope(result, p)}")
     return lines
+
+
+def _tie_lines(result) -> list[str]:
+    """One line where competitors tie at the design (a kink of the margin)."""
+    if not result.tied_with:
+        return []
+    lead = "the crease" if result.limited_by == "crease" else result.next_mode
+    names = ", ".join(str(t) for t in (lead, *result.tied_with))
+    return [
+        f"  {names} tie at this design: the margin has a kink there, its derivatives are"
+        " one-sided (lowering / raising the parameter)"
+    ]
+
+
+def _margin_slope(result, p: str) -> str:
+    """The text ", d(margin)/dp = ..." for one parameter: the two one-sided derivatives at a
+    kink, "" where none was formed."""
+    dm = result.margin_sensitivity.get(p)
+    if dm is not None:
+        return f", d(margin)/d{p} = {dm:.6g}"
+    down, up = result.margin_sides.get(p, (None, None))
+    if down is None or up is None:
+        return ""
+    return f", d(margin)/d{p} = {down:.6g} lowering it, {up:.6g} raising it (a kink)"
 
 
 #: how the text names the design of each status
@@ -409,8 +432,7 @@ def map_summary(result) -> list[str]:
     for k, d in result.to_boundary.items():
         if d is not None:
             lines.append(f"  distance to the region's boundary along {k}: {d:.6g}")
+    lines += _tie_lines(result)
     for p, d in sorted(result.sensitivity.items(), key=lambda kv: -abs(kv[1])):
-        dm = result.margin_sensitivity.get(p)
-        extra = "" if dm is None else f", d(margin)/d{p} = {dm:.6g}"
-        lines.append(f"  d{mmap.solve_for}_cr/d{p} = {d:.6g}{extra}")
+        lines.append(f"  d{mmap.solve_for}_cr/d{p} = {d:.6g}{_margin_slope(result, p)}")
     return lines

@@ -14,7 +14,23 @@ already wrinkled. There the room below the target's onset counts as a competitor
 the room from the start to the target relative to the room from the target to the next
 competitor (M the gap to the next mode or the crease, whichever is nearer). M_0 = 0 at the
 end, as M = 0 at a switch; min(M, M_0) is largest where both rooms balance (for v_0 = 0:
-v_N = 2 v_T, M = 1). docs/design.md.
+v_N = 2 v_T, M = 1).
+
+That rule assumes v_T falls to v_0 at the end. At a cliff it does not: the target's onset
+stays away from the start up to the end and beyond it the tube is unstable at v_0 at once
+(an ungrown tube of Rbar_o = 1.4 under a voltage: g_cr of (0, 1) is 1.104 up to the
+critical voltage of the ungrown tube, 0.7234620, then 1). M_0 stays ~5 there and never
+limited the design, which sat 2e-8 (relative) from the cliff (probe 8b, D4). So next to a
+cliff the room below is measured by the design variable itself:
+
+    M_end(x) = |x - x_e| / |x_e|   (|x_e| = 0: the width of [lo, hi]),
+
+the fraction by which the design variable can move towards the end x_e before the tube is
+unstable with no control (for a load varied, its own margin to its critical value at the
+control's start); the margin is then min(M, M_0, M_end). An end is a cliff where M_0 at the
+end itself is not ~0: a smooth end, located to 1e-13 (SWITCH), leaves M_0 = 3e-5 there (the
+grown tube of tests/design/test_boundary_after_failed_point.py: v_T = 6e-6), a cliff a
+finite room (5.07 in probe 8b's case). docs/design.md.
 """
 
 from __future__ import annotations
@@ -28,12 +44,19 @@ from ..outcomes import Kind
 from . import onset
 from .onset import gap_to_crease
 
+#: M_0 at a located end above which the end is a cliff (module docstring): a smooth end
+#: leaves 3e-5, a cliff such as probe 8b's D4 leaves 5
+CLIFF = 1e-2
+
 
 class Margins:
-    """Critical values of single modes at designs x, cached, and the margin M(x)."""
+    """Critical values of single modes at designs x, cached, and the margin M(x)
+    (``width``: that of the design range [lo, hi], the scale of M_end at an end x_e = 0)."""
 
-    def __init__(self, tube, solve_for, key, side) -> None:
+    def __init__(self, tube, solve_for, key, side, width: float = 1.0) -> None:
         self.tube, self.solve_for, self.key, self.side = tube, solve_for, key, side
+        self.width = width
+        self.cliffs: dict = {}
         self.sense = -1.0 if side == "compression" else 1.0
         self.cache: dict = {}
         self.creases: dict = {}
@@ -74,7 +97,7 @@ class Margins:
                 self.starts[x] = math.nan
         return self.starts[x]
 
-    def to_no_design(self, mode, x: float, above: float) -> float:
+    def room_below(self, mode, x: float, above: float) -> float:
         """M_0 (module docstring): the room below the target's onset over the room above
         it, ``above`` the relative gap M to the nearer competitor; inf where M is not a
         positive finite gap (the target not first, or nothing after it)."""
@@ -83,16 +106,33 @@ class Margins:
             return math.inf
         return self.sense * (v - self.start(x)) / abs(v) / above
 
-    def best_margin(
-        self, mode, others, x: float, edge: bool = False
-    ) -> tuple[float, tuple | None]:
+    def to_no_design(self, mode, others, x: float, above: float, ends=()) -> float:
+        """The gap to the located ends ``ends`` of the valid range: M_0, and M_end for an
+        end that is a cliff (module docstring)."""
+        gap = self.room_below(mode, x, above)
+        for end in ends:
+            if self.cliff(mode, others, end):
+                gap = min(gap, abs(x - end) / (abs(end) or self.width))
+        return gap
+
+    def cliff(self, mode, others, end: float) -> bool:
+        """Does the target's onset keep room below at the end itself (M_0 >= CLIFF there),
+        so that beyond it the tube is unstable at the control's start at once? Not where M_0
+        is not defined there (inf: no competitor above, or the target not first)."""
+        if (mode, others, end) not in self.cliffs:
+            above = self.best_margin(mode, others, end)[0]
+            self.cliffs[mode, others, end] = CLIFF <= self.room_below(mode, end, above) < math.inf
+        return self.cliffs[mode, others, end]
+
+    def best_margin(self, mode, others, x: float, ends=()) -> tuple[float, tuple | None]:
         """(M, the next mode) at x over the competitors ``others`` and the crease, and with
-        ``edge`` (a region next to a located end of the valid range) that end's gap."""
+        ``ends`` (the located ends of the valid range that the region's span reaches) the
+        gap to them."""
         m = by_crease = gap_to_crease(self.value(mode, x), self.crease(x), self.sense)
         nxt = None
         if others:
             nxt = min(others, key=lambda o: self.sense * self.value(o, x))
             m = min(self.margin(mode, x, self.value(nxt, x)), by_crease)
-        if edge:
-            m = min(m, self.to_no_design(mode, x, m))
+        if ends:
+            m = min(m, self.to_no_design(mode, others, x, m, ends))
         return m, nxt

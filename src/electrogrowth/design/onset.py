@@ -99,6 +99,55 @@ def margin_sensitivity(sense: float, v: float, dv: dict, w: float, dw: dict) -> 
     return {p: scale * (v * dw[p] - w * dv[p]) for p in dv if p in dw}
 
 
+#: competitors whose margin is within this of the one that sets M are checked for a kink
+#: (a gap that a relative step of 1e-4 in p closes needs a slope difference of 10 per unit
+#: of log p: none seen; the ties at an optimum are equal to ~1e-9)
+TIE_SCREEN = 1e-3
+
+
+def near_rivals(sense: float, v: float, lead: tuple, candidates, sens_of) -> list:
+    """[lead] and every other competitor (name, w) of ``candidates`` whose margin
+    s (w - v) / |v| is within TIE_SCREEN of the lead's, as (name, w, dw): ``lead`` (name,
+    w, dw) sets M; ``sens_of(name, w)`` gives dw (None where it cannot be formed)."""
+    m_lead = sense * (lead[1] - v) / abs(v)
+    out = [lead]
+    for name, w in candidates:
+        near = math.isfinite(w) and sense * (w - v) / abs(v) - m_lead <= TIE_SCREEN
+        if name != lead[0] and near:
+            out.append((name, w, sens_of(name, w)))
+    return out
+
+
+def kinked_margin(tube, sense: float, v: float, dv: dict, rivals) -> tuple[dict, dict, tuple]:
+    """dM/dp of M = min over ``rivals`` [(name, w, dw)] (from :func:`near_rivals`, the one
+    that sets M first) of s (w - v) / |v|: (dM/dp by key, {key: (down, up)}, the tied
+    rivals).
+
+    At a tie M is the minimum of smooth gaps M_i and has a kink: raising p it follows the
+    steepest falling one, dM/dp+ = min_i dM_i/dp, lowering p the steepest rising one,
+    dM/dp- = max_i dM_i/dp. The usual optimum is such a tie (probe 8b, D5: +0.061 was
+    reported for the length where M falls by 0.045 per unit towards longer tubes). A rival
+    counts as tied for p where the kink lies within the sensitivities' own step in p,
+    M_i - M_0 <= h |dM_0/dp - dM_i/dp|; then dM/dp is None and ``down``, ``up`` the two
+    one-sided derivatives (None both where a tied rival's dw could not be formed)."""
+    lead = rivals[0]
+    dm = [None if dw is None else margin_sensitivity(sense, v, dv, w, dw) for _, w, dw in rivals]
+    gaps = [sense * (w - v) / abs(v) - sense * (lead[1] - v) / abs(v) for _, w, _ in rivals]
+    sens, sides, tied = dict(dm[0]), {}, []
+    for p, d0 in dm[0].items():
+        h = relative_step(key_value(tube, p))
+        near = []
+        for (name, _, _), d, gap in zip(rivals[1:], dm[1:], gaps[1:]):
+            if d is None or (p in d and gap <= h * abs(d0 - d[p])):
+                near.append(None if d is None else d[p])
+                tied += [name] * (name not in tied)
+        if None in near:
+            sens[p], sides[p] = None, (None, None)
+        elif near and max(near + [d0]) != min(near + [d0]):
+            sens[p], sides[p] = None, (max(near + [d0]), min(near + [d0]))
+    return sens, sides, tuple(tied)
+
+
 def crease_margin_at(tube, solve_for: str, value: float):
     """The face nearest its mechanical crease onset at ``solve_for`` = value (a FaceCrease):
     the crease :func:`crease_value` ranks, whose trigger is never the field's."""

@@ -19,7 +19,9 @@ smallest relative gap) and N is the mode that beats T there. In a span of the re
 ends at a located end of the valid range (next to a failed scan: the tube is already
 unstable at the control's start beyond it), v_T falls to the start there and M alone grows
 without bound, so the room below the target counts too (design/margins.py: M_0 = (v_T -
-v_0) / (v_N - v_T), ``limited_by`` NO_DESIGN). docs/design.md.
+v_0) / (v_N - v_T), and at a cliff, where v_T does not fall to v_0, the relative distance
+to the end M_end; ``limited_by`` NO_DESIGN). At a tie of competitors (a kink of M) the
+margin's sensitivity is one-sided (design/onset.py :func:`kinked_margin`). docs/design.md.
 """
 
 from __future__ import annotations
@@ -47,6 +49,9 @@ XTOL = 1e-9  # relative accuracy of the best design
 AHEAD = 6  # competitors ahead of the closest design's target mode that are kept
 MEMBERS_MAX = 256  # a set's members solved directly when none is among a scan's first ones
 NO_DESIGN = "no design"  # limited_by: the gap to a located end of the valid range
+#: the end's gap sets M where it is within this (relative) of M: at the balance Brent
+#: leaves them ~1e-6 apart (probe 8b, D4), a relative step of the sensitivities (1e-4)
+BALANCE = 1e-4
 
 
 @dataclasses.dataclass(frozen=True)
@@ -74,6 +79,10 @@ class Design:
     scanned modes (x and the values are NaN). ``sensitivity``: d(value)/dp of the target
     mode's critical value for every parameter p of the tube at x; ``margin_sensitivity``:
     dM/dp from the two modes' sensitivities; ``next_sensitivity``: those of the next mode.
+    Where another competitor ties with the one that sets M (the usual case at the widest
+    margin: a kink of M, design/onset.py :func:`kinked_margin`), ``tied_with`` names it,
+    ``margin_sensitivity`` is None for each p at whose kink M is not differentiable and
+    ``margin_sides`` holds (down, up) there: dM/dp lowering p and raising it.
     """
 
     target: str
@@ -98,6 +107,8 @@ class Design:
     verdict: dict = dataclasses.field(default_factory=dict)
     region_crease: tuple = ()
     crease_sensitivity: dict = dataclasses.field(default_factory=dict)
+    margin_sides: dict = dataclasses.field(default_factory=dict)
+    tied_with: tuple = ()
 
     def as_dict(self) -> dict:
         num = lambda v: v if v is not None and math.isfinite(v) else None  # noqa: E731
@@ -123,6 +134,7 @@ class Design:
                 "crease_value": num(self.crease_value),
                 "crease_margin": num(self.crease_margin),
                 "limited_by": self.limited_by or None,
+                "tied_with": [tie_name(t) for t in self.tied_with],
                 "verdict": self.verdict or None,
             },
             "sensitivity": sensitivity_json(self),
@@ -185,7 +197,7 @@ def prescribe(
     if sequence is None:
         sequence = mode_sequence(tube, solve_for, vary, side=side, options=options, points=points)
     side = sequence.side
-    margins = Margins(tube, sequence.solve_for, key, side)
+    margins = Margins(tube, sequence.solve_for, key, side, width=hi - lo)
     scan_opts = dataclasses.replace(options, top=max(options.top, 6))
 
     def scan(x, top=None):  # the modes in the order reached; none where the scan fails
@@ -221,7 +233,8 @@ def prescribe(
     m_crease = gap_to_crease(v, v_crease, margins.sense)
     by_modes = margins.margin(mode, x, v_next) if nxt is not None else math.inf
     limited = "crease" if m_crease < by_modes else "mode"
-    if edge and margins.to_no_design(mode, x, min(by_modes, m_crease)) == m_x:
+    gap_end = margins.to_no_design(mode, others, x, min(by_modes, m_crease), edge)
+    if edge and gap_end <= m_x + BALANCE * abs(m_x):
         limited = NO_DESIGN  # the room below the target, to the end of the valid range
     if status == FOUND and m_x < 0:  # a crease before the target everywhere in its region
         status = CREASE_FIRST
@@ -230,10 +243,15 @@ def prescribe(
     sens_crease = onset.crease_sensitivity(at, sequence.solve_for, v_crease, tuple(sens))
     if limited == "crease":  # M is the gap to the crease
         sens_margin = onset.margin_sensitivity(margins.sense, v, sens, v_crease, sens_crease)
-    elif limited == NO_DESIGN:  # M_0 moves with the start v_0 too: not derived here
+    elif limited == NO_DESIGN:  # M_0 moves with v_0, M_end with the end: not derived here
         sens_margin = {}
     elif sens_next:
         sens_margin = onset.margin_sensitivity(margins.sense, v, sens, v_next, sens_next)
+    sides, tied = {}, ()
+    if sens_margin:  # M set by a mode or the crease: a tie with another is a kink of M
+        lead = (nxt, v_next, sens_next) if limited == "mode" else ("crease", v_crease, sens_crease)
+        rivals = _near(margins, at, sequence.solve_for, x, v, lead, others, sens_crease, rtol)
+        sens_margin, sides, tied = onset.kinked_margin(at, margins.sense, v, sens, rivals)
     ends = (
         []
         if span is None
@@ -262,12 +280,36 @@ def prescribe(
         onset.design_verdict(at, sequence.solve_for, side, scan_opts, koiter=koiter),
         tuple(onset.region_creases(region, sequence.curve)),
         sens_crease,
+        sides,
+        tied,
     )
 
 
-def _touches(span: Interval | None, ends) -> bool:
-    """Does the joined interval ``span`` end at a located end of the valid range?"""
-    return span is not None and (span.lo in ends or span.hi in ends)
+def tie_name(rival) -> object:
+    """A tied competitor for JSON: a mode as [m, n], the crease as "crease"."""
+    return list(rival) if isinstance(rival, tuple) else rival
+
+
+def _near(margins: Margins, at, solve_for, x, v, lead, others, sens_crease, rtol) -> list:
+    """The competitors at x within reach of a tie with ``lead`` (onset.near_rivals), each
+    with its sensitivities: the modes ``others`` and the crease."""
+
+    def sens_of(name, w):
+        if name == "crease":
+            return sens_crease or None
+        try:
+            return sensitivities(at, name, solve_for, w, rtol=rtol)
+        except ElectrogrowthError:  # a fold of the rival's branch: its kink is not known
+            return None
+
+    cands = [(o, margins.value(o, x)) for o in others] + [("crease", margins.crease(x))]
+    return onset.near_rivals(margins.sense, v, lead, cands, sens_of)
+
+
+def _touches(span: Interval | None, ends) -> tuple:
+    """The located ends of the valid range at which the joined interval ``span`` ends
+    (empty: none)."""
+    return () if span is None else tuple(e for e in (span.lo, span.hi) if e in ends)
 
 
 def _span(region, x: float) -> Interval | None:
@@ -386,7 +428,7 @@ def _competitors(mode, ranked, goal: Target) -> list:
     return out
 
 
-def _refine(mode, others, a, b, x0, goal: Target, margins: Margins, scan, edge=False):
+def _refine(mode, others, a, b, x0, goal: Target, margins: Margins, scan, edge=()):
     """Maximise M over [a, b] by bounded Brent from the grid's best x0; a competitor that a
     scan at the optimum finds but ``others`` lacks is added and the maximisation repeated
     (``edge``: M counts the gap to a located end of the valid range)."""

@@ -35,9 +35,11 @@ from .onset import (
     crease_value,
     design_verdict,
     gap_to_crease,
+    kinked_margin,
     margin_sensitivity,
+    near_rivals,
 )
-from .prescribe import FOUND, NOT_FIRST, NOT_REACHED, REFINE_ROUNDS
+from .prescribe import FOUND, NOT_FIRST, NOT_REACHED, REFINE_ROUNDS, tie_name
 from .sensitivity import sensitivities, sensitivity_json
 from .targets import Target, check_target
 
@@ -54,7 +56,8 @@ class MapDesign:
     the region's boundary along x and along y (None where no boundary crosses that line);
     the sensitivities as in :class:`~.prescribe.Design`; ``crease_value``,
     ``crease_margin``, ``limited_by``, ``verdict`` as there, and ``region_crease``: how many
-    of the raster points in the target's region crease first."""
+    of the raster points in the target's region crease first. ``margin_sides`` and
+    ``tied_with``: at a kink of M, as in :class:`~.prescribe.Design`."""
 
     target: str
     status: str
@@ -79,6 +82,8 @@ class MapDesign:
     verdict: dict = dataclasses.field(default_factory=dict)
     region_crease: dict = dataclasses.field(default_factory=dict)
     crease_sensitivity: dict = dataclasses.field(default_factory=dict)
+    margin_sides: dict = dataclasses.field(default_factory=dict)
+    tied_with: tuple = ()
 
     def as_dict(self) -> dict:
         num = lambda v: v if v is not None and math.isfinite(v) else None  # noqa: E731
@@ -103,6 +108,7 @@ class MapDesign:
                 "crease_value": num(self.crease_value),
                 "crease_margin": num(self.crease_margin),
                 "limited_by": self.limited_by or None,
+                "tied_with": [tie_name(t) for t in self.tied_with],
                 "verdict": self.verdict or None,
             },
             "sensitivity": sensitivity_json(self),
@@ -128,13 +134,31 @@ def stored_design(record: dict, mmap: ModeMap, target) -> MapDesign:
             tuple(b for b in mmap.boundaries if b.left in goal or b.right in goal),
             x, y, mode, num(best["value"]), num(best["margin"]), nxt, num(best["next_value"]),
             {str(k): None if v is None else float(v) for k, v in best["to_boundary"].items()},
-            table(sens["value"]), table(sens["next_value"]), table(sens["margin"]), mmap, goal,
+            table(sens["value"]), table(sens["next_value"]), _margins_of(sens), mmap, goal,
             num(best.get("crease_value")), num(best.get("crease_margin")),
             best.get("limited_by") or "", dict(best.get("verdict") or {}),
             dict(record.get("region_crease") or {}), table(sens.get("crease_value", {})),
+            _sides_of(sens), tuple(_tie_of(t) for t in best.get("tied_with") or ()),
         )  # fmt: skip
     except (KeyError, TypeError, ValueError, IndexError) as exc:
         raise ValueError(f"not a stored design: {exc}") from None
+
+
+def _margins_of(sens: dict) -> dict:
+    """A stored ``sensitivity.margin``: null (a kink of M, or not formed) stays None."""
+    return {str(k): None if v is None else float(v) for k, v in sens["margin"].items()}
+
+
+def _sides_of(sens: dict) -> dict:
+    """A stored ``sensitivity.margin_sides``: {key: (down, up)} (a record without: {})."""
+    num = lambda v: None if v is None else float(v)  # noqa: E731
+    rows = (sens.get("margin_sides") or {}).items()
+    return {str(k): (num(d["down"]), num(d["up"])) for k, d in rows}
+
+
+def _tie_of(item):
+    """A stored tied competitor: [m, n] as a mode, else its name ("crease")."""
+    return (int(item[0]), int(item[1])) if isinstance(item, list) else str(item)
 
 
 class _Margins:
@@ -343,6 +367,11 @@ def prescribe_map(
         sens_margin = margin_sensitivity(margins.sense, v, sens, v_crease, sens_crease)
     elif sens_next:
         sens_margin = margin_sensitivity(margins.sense, v, sens, v_next, sens_next)
+    sides, tied = {}, ()
+    if sens_margin:  # M set by a mode or the crease: a tie with another is a kink of M
+        lead = (nxt, v_next, sens_next) if limited == "mode" else ("crease", v_crease, sens_crease)
+        rivals = _near(margins, at, mmap.solve_for, u, v, lead, others, sens_crease, rtol)
+        sens_margin, sides, tied = kinked_margin(at, margins.sense, v, sens, rivals)
     x, y = margins.xy(u)
     verdict = design_verdict(
         at,
@@ -356,8 +385,24 @@ def prescribe_map(
         _distances(mmap, region, x, y) if status != NOT_FIRST else {},
         sens, sens_next, sens_margin, mmap, goal,
         v_crease if math.isfinite(v_crease) else math.nan, m_crease, limited, verdict,
-        region_crease, sens_crease,
+        region_crease, sens_crease, sides, tied,
     )  # fmt: skip
+
+
+def _near(margins: _Margins, at, solve_for, u, v, lead, others, sens_crease, rtol) -> list:
+    """The competitors at u within reach of a tie with ``lead`` (onset.near_rivals), each
+    with its sensitivities: the modes ``others`` and the crease."""
+
+    def sens_of(name, w):
+        if name == "crease":
+            return sens_crease or None
+        try:
+            return sensitivities(at, name, solve_for, w, rtol=rtol)
+        except ElectrogrowthError:  # a fold of the rival's branch: its kink is not known
+            return None
+
+    cands = [(o, margins.value(o, u)) for o in others] + [("crease", margins.crease(u))]
+    return near_rivals(margins.sense, v, lead, cands, sens_of)
 
 
 def _region_crease(creased: int, points: int) -> dict:

@@ -1,0 +1,74 @@
+"""The margin's sensitivity at a kink of M.
+
+The widest margin usually sits where two competitors tie: for a bilayer under a voltage,
+target (1, 1) along Rbar_o, (0, 1) and (2, 1) are equal there to 1e-11. M = min of the two
+gaps is not differentiable there; `margin_sensitivity` was the derivative against
+`next_mode` alone, dM/dlength = +0.0610, where M falls by 0.0450 per unit towards longer
+tubes (probe 8b, D5): a user lengthening the tube by it loses margin. Now such a key's
+`margin_sensitivity` is None and `margin_sides` holds the two one-sided derivatives,
+checked here against one-sided differences of direct single-mode solves."""
+
+import json
+
+import pytest
+
+from electrogrowth import Layer, ScanOptions, Tube, critical_value, prescribe
+from electrogrowth.cli.app import main
+
+TUBE = Tube([Layer(1.2, shear_modulus=2.0), Layer(1.5)], length=1.5, stretch=1.0)
+OPTIONS = ScanOptions((0, 4), (1, 3))
+VARY = ("outer_radius", 1.3, 1.8)
+
+
+RIVALS = ((0, 1), (2, 1))
+
+
+def _gaps(tube):
+    """The gap s (v_c - v_T) / |v_T| to each rival c, M the smaller."""
+    v = {m: critical_value(tube, *m, "voltage", rtol=1e-12).value for m in ((1, 1), *RIVALS)}
+    return {c: v[c] / v[(1, 1)] - 1.0 for c in RIVALS}
+
+
+def _slopes(at, key):
+    """dM_c/dp of each rival's gap: central differences of direct solves, Richardson of
+    steps h and h / 2."""
+    p, h = at.value_of(key), 1e-4
+    g = {t: _gaps(at.at(key, p + t)) for t in (-h, -h / 2, h / 2, h)}
+    return {c: (8 * (g[h / 2][c] - g[-h / 2][c]) - (g[h][c] - g[-h][c])) / (6 * h) for c in RIVALS}
+
+
+@pytest.fixture(scope="module")
+def design():
+    return prescribe(TUBE, "voltage", (1, 1), VARY, points=4, options=OPTIONS)
+
+
+@pytest.mark.parametrize("key", ["length", "layers[1].shear_modulus"])
+def test_margin_sensitivity_at_a_tie_gives_both_sides(design, key):
+    at = TUBE.at("outer_radius", design.x)
+    gaps = _gaps(at)
+    assert abs(design.margin - min(gaps.values())) < 1e-9
+    assert abs(gaps[(0, 1)] - gaps[(2, 1)]) < 1e-8  # the two rivals tie at the design
+    d = _slopes(at, key)
+    up, down = min(d.values()), max(d.values())  # raising p M follows the falling gap
+    assert up < 0 < down  # a kink: M falls both ways (length: -0.0450, +0.0610)
+    assert design.margin_sensitivity[key] is None  # was +0.0610 for the length
+    assert set(design.tied_with) | {design.next_mode} == set(RIVALS)
+    got_down, got_up = design.margin_sides[key]
+    assert abs(got_up - up) < 1e-7 and abs(got_down - down) < 1e-7, (got_down, got_up, down, up)
+
+
+def test_design_json_reports_the_kink(design, tmp_path, capsys):
+    """`design --json` says the same: null for the two-sided number, both sides, the tie."""
+    tube_file = tmp_path / "bilayer.toml"
+    tube_file.write_text(
+        "length = 1.5\nstretch = 1.0\n[[layers]]\nouter_radius = 1.2\nshear_modulus = 2.0\n"
+        "[[layers]]\nouter_radius = 1.5\n"
+    )
+    args = ["design", "--tube", str(tube_file), "--solve-for", "voltage", "--target", "1", "1"]
+    args += ["--vary", "outer_radius", "1.3", "1.8", "--points", "4", "--m-max", "4"]
+    assert main([*args, "--n-max", "3", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["sensitivity"]["margin"]["length"] is None  # was +0.0610
+    sides = out["sensitivity"]["margin_sides"]["length"]
+    assert (sides["down"], sides["up"]) == pytest.approx(design.margin_sides["length"], rel=1e-9)
+    assert sorted(out["best"]["tied_with"] + [out["best"]["next_mode"]]) == [[0, 1], [2, 1]]
