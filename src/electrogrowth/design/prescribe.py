@@ -247,7 +247,8 @@ def prescribe(
         sens_margin = {}
     elif sens_next:
         sens_margin = onset.margin_sensitivity(margins.sense, v, sens, v_next, sens_next)
-    sides, tied = {}, ()
+    sides: dict[str, tuple[float, float]] = {}
+    tied: tuple = ()
     if sens_margin:  # M set by a mode or the crease: a tie with another is a kink of M
         lead = (nxt, v_next, sens_next) if limited == "mode" else ("crease", v_crease, sens_crease)
         rivals = _near(margins, at, sequence.solve_for, x, v, lead, others, sens_crease, rtol)
