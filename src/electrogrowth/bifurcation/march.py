@@ -42,9 +42,15 @@ from ..continuation.events import (
 )
 from ..continuation.path import ControlPath, Stepper, StepPolicy
 from ..continuation.predict import EventWatch
-from ..errors import BaseStateError, ConvergenceError, NoBifurcationFound, ParameterError
+from ..errors import (
+    BaseStateError,
+    ConvergenceError,
+    NoBifurcationFound,
+    ParameterError,
+    Remedy,
+)
 from ..incremental.targets import SIGN_TUBE as SIGN_TUBE  # re-exported: its grids' signs
-from ..incremental.targets import natural_family, row_family
+from ..incremental.targets import fallbacks, natural_family, row_family
 from ..model.controls import KINDS
 from ..model.layers import Tube
 from .along import RootRows, Signed, TubeAt
@@ -121,6 +127,14 @@ def unloaded_signs(params, modes: np.ndarray, targets: Targets) -> np.ndarray:
     return np.sign(targets(solve_base_state(params.reference()), modes))
 
 
+#: a march stops after this many consecutive samples on which the kernel failed for every
+#: mode sampled (each went to collocation, incremental/targets.py _retry): the states are
+#: past what the kernel resolves (a Fung-type energy's moduli grow like exp((I1 - 3)^2);
+#: from g = 3.93 on, a tube's (0, 1) failed at every state, and its march, 40 ms of
+#: collocation an evaluation, crept to g = 5.71 in 10 minutes on a tiny target whose loose
+#: and fine collocation values disagreed in sign: probe round 8b, D9)
+KERNEL_FAILURE_RUN = 8
+
 #: halvings of the gap back to the modes' last samples where states past the path's end
 #: are unresolvable: the last look lands within 2^-12 of that gap of the resolvable edge
 RETREAT_ROUNDS = 12
@@ -192,6 +206,7 @@ def first_bifurcations(
     # but do not resolve, next to a lock); stop: it ended the path at step.x; film: the wall
     # became a film there (its state runs to an asymptote)
     found, threshold, unresolved, stop, film = [], None, None, False, False
+    failing = KernelFailures(solve_for)
     while watch.alive.any():
         done = step.at_end() or len(found) >= top or stop
         if not done:
@@ -218,11 +233,13 @@ def first_bifurcations(
         idx = np.nonzero(watch.needs(x))[0]
         if idx.size:
             try:
-                g = sref[idx] * targets(state, modes[idx])
+                g = failing.sample(targets, state, modes[idx], x) * sref[idx]
             except ConvergenceError as err:  # the state solves, its tables do not
                 unresolved, stop = err, True
                 continue
             found += _advance(watch, idx, x, g, views, top)
+            if failing.persistent():  # the states from here on are past the kernel
+                unresolved, stop = failing.error(), True
         reach = watch.reach(steps.safety, steps.smallest * path.scale)
         step.accept(x, state.lambda_i, reach / path.scale)
     found.sort(key=lambda mv: sense * mv.value)
@@ -245,6 +262,40 @@ def first_bifurcations(
                 f"no mode bifurcates for {solve_for} between {x0:g} and {last:g}"
             )
     return MarchResult(found[:top], threshold)
+
+
+class KernelFailures:
+    """The run of consecutive march samples on which the kernel failed for every mode."""
+
+    def __init__(self, solve_for: str):
+        self.solve_for, self.run, self.since, self.last, self.reason = solve_for, 0, None, None, ""
+
+    def sample(self, targets, state, modes, x: float) -> np.ndarray:
+        """targets(state, modes), counting the run of samples that went to collocation for
+        every mode (an isolated failure, or one mode of many, ends the run)."""
+        before = fallbacks()[0]
+        f = targets(state, modes)
+        count, reason = fallbacks()
+        if count - before < modes.shape[0]:  # resolved by the kernel, or failed in isolation
+            self.run, self.since = 0, None
+            return f
+        self.run, self.last, self.reason = self.run + 1, x, reason
+        self.since = x if self.since is None else self.since
+        return f
+
+    def persistent(self) -> bool:
+        """Has the kernel failed on KERNEL_FAILURE_RUN consecutive samples?"""
+        return self.run >= KERNEL_FAILURE_RUN
+
+    def error(self) -> ConvergenceError:
+        """The run, named: where it began and ended, and why the kernel failed last."""
+        err = ConvergenceError(
+            f"{self.reason}, also at tighter tolerances, at each of {self.run} consecutive"
+            f" states from {self.solve_for} = {self.since:.12g} to {self.last:.12g} (the"
+            " collocation fallback is for isolated failures)"
+        )
+        err.remedy = Remedy("")  # no tolerance or method resolves them faster
+        return err
 
 
 def _last_look(signed: Signed, watch, idx, x: float):

@@ -127,6 +127,21 @@ RETRY_BUDGET = 5
 RETRY_SAMPLE = 4
 
 
+class _Fallbacks:
+    """How many modes went to collocation (:func:`_retry`), and why the kernel failed on the
+    last: a march compares the count around a sample to tell a state on which the kernel
+    fails for every mode (bifurcation/march.py stops after a run of them: collocation is for
+    isolated failures, ~40 ms a mode) from an isolated failure."""
+
+    count = 0
+    reason = ""
+
+
+def fallbacks() -> tuple[int, str]:
+    """(modes sent to collocation so far in this process, why the kernel failed last)."""
+    return _Fallbacks.count, _Fallbacks.reason
+
+
 def _retry(state, modes, status, rtol, max_steps) -> np.ndarray:
     """Targets of the modes whose integration failed (a step size underflow where the
     error estimate of a loose rtol misjudges a steep stretch of z~, or a chart lost):
@@ -154,6 +169,8 @@ def _retry(state, modes, status, rtol, max_steps) -> np.ndarray:
     colloc = CollocationTarget(rtol)
     for i in np.flatnonzero(np.isnan(f)):
         row = modes[i : i + 1]
+        _Fallbacks.count += 1
+        _Fallbacks.reason = _failure(modes[i], status[i])
         try:
             nodes = colloc._nodes(state, row[0])
             value = collocation_targets(state, row, nodes=nodes)[0]
@@ -162,11 +179,17 @@ def _retry(state, modes, status, rtol, max_steps) -> np.ndarray:
             pass
         if not np.isfinite(f[i]):
             raise ConvergenceError(
-                f"impedance integration failed for mode (m, n) = ({modes[i, 0]:g}, "
-                f"{modes[i, 1]:g}) ({row_family(modes[i])}): {STATUS_TEXT[int(status[i])]},"
-                " also at tighter tolerances and by collocation"
+                f"{_Fallbacks.reason}, also at tighter tolerances and by collocation"
             )
     return f
+
+
+def _failure(mode, status) -> str:
+    """Why the kernel failed for ``mode`` (a row (m, n[, code])), in words."""
+    return (
+        f"impedance integration failed for mode (m, n) = ({mode[0]:g}, {mode[1]:g})"
+        f" ({row_family(mode)}): {STATUS_TEXT[int(status)]}"
+    )
 
 
 #: The tube on which the kernel's stable signs of modes are read: they are the same on
