@@ -100,7 +100,7 @@ def test_good_file_is_normalised():
         (edit(7, "n = [1.5, 3]"), 7, "modes.n: expected an inclusive range"),
         (edit(11, 'name = "rubber"'), 11, "unknown material 'rubber'"),
         (edit(12, "alpha = 0.5"), 12, "material.alpha: unknown key; material 'gent' takes jm"),
-        (edit(12, "jm = -1"), 12, "Gent parameter jm = -1.0 is invalid"),
+        (edit(12, "jm = -1"), 12, "Gent parameter jm = -1.0 is out of range"),
         (edit(15, "length = 0"), 15, "fixed.length: length L = 0.0 is out of range"),
         (edit(15, "voltage = 0.1"), 15, "fixed.voltage: voltage is what is solved for"),
         (edit(15, "stretch = 1.0"), 15, "fixed.stretch: stretch is also swept"),
