@@ -26,7 +26,7 @@ from ..bifurcation.scan import ScanOptions, scan_modes
 from ..bifurcation.verdict import advisory, crease_rival, creases
 from ..errors import ConvergenceError, ElectrogrowthError
 from ..interrupts import reraise_interrupt
-from .sensitivity import STEP, _derivative, key_value, relative_step
+from .sensitivity import STEP, _derivative, key_value, relative_step, sensitivities
 
 CREASE_FIRST = "crease_first"  # first among the wrinkles in its region, but a crease comes first
 
@@ -103,6 +103,24 @@ def margin_sensitivity(sense: float, v: float, dv: dict, w: float, dw: dict) -> 
 #: (a gap that a relative step of 1e-4 in p closes needs a slope difference of 10 per unit
 #: of log p: none seen; the ties at an optimum are equal to ~1e-9)
 TIE_SCREEN = 1e-3
+
+
+def rivals_at(margins, at, solve_for, x, v, lead, others, sens_crease, rtol) -> list:
+    """The competitors at x within reach of a tie with ``lead`` (:func:`near_rivals`), each
+    with its sensitivities: the modes ``others`` and the crease. ``margins``: a design's
+    margins along its variable or variables (``value(mode, x)``, ``crease(x)``,
+    ``sense``); ``sens_crease``: the crease's sensitivities, already taken."""
+
+    def sens_of(name, w):
+        if name == "crease":
+            return sens_crease or None
+        try:
+            return sensitivities(at, name, solve_for, w, rtol=rtol)
+        except ElectrogrowthError:  # a fold of the rival's branch: its kink is not known
+            return None
+
+    cands = [(o, margins.value(o, x)) for o in others] + [("crease", margins.crease(x))]
+    return near_rivals(margins.sense, v, lead, cands, sens_of)
 
 
 def near_rivals(sense: float, v: float, lead: tuple, candidates, sens_of) -> list:

@@ -251,7 +251,9 @@ def prescribe(
     tied: tuple = ()
     if sens_margin:  # M set by a mode or the crease: a tie with another is a kink of M
         lead = (nxt, v_next, sens_next) if limited == "mode" else ("crease", v_crease, sens_crease)
-        rivals = _near(margins, at, sequence.solve_for, x, v, lead, others, sens_crease, rtol)
+        rivals = onset.rivals_at(
+            margins, at, sequence.solve_for, x, v, lead, others, sens_crease, rtol
+        )
         sens_margin, sides, tied = onset.kinked_margin(at, margins.sense, v, sens, rivals)
     ends = (
         []
@@ -289,22 +291,6 @@ def prescribe(
 def tie_name(rival) -> object:
     """A tied competitor for JSON: a mode as [m, n], the crease as "crease"."""
     return list(rival) if isinstance(rival, tuple) else rival
-
-
-def _near(margins: Margins, at, solve_for, x, v, lead, others, sens_crease, rtol) -> list:
-    """The competitors at x within reach of a tie with ``lead`` (onset.near_rivals), each
-    with its sensitivities: the modes ``others`` and the crease."""
-
-    def sens_of(name, w):
-        if name == "crease":
-            return sens_crease or None
-        try:
-            return sensitivities(at, name, solve_for, w, rtol=rtol)
-        except ElectrogrowthError:  # a fold of the rival's branch: its kink is not known
-            return None
-
-    cands = [(o, margins.value(o, x)) for o in others] + [("crease", margins.crease(x))]
-    return onset.near_rivals(margins.sense, v, lead, cands, sens_of)
 
 
 def _touches(span: Interval | None, ends) -> tuple:

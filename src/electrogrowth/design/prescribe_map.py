@@ -37,7 +37,7 @@ from .onset import (
     gap_to_crease,
     kinked_margin,
     margin_sensitivity,
-    near_rivals,
+    rivals_at,
 )
 from .prescribe import FOUND, NOT_FIRST, NOT_REACHED, REFINE_ROUNDS, tie_name
 from .sensitivity import sensitivities, sensitivity_json
@@ -370,7 +370,7 @@ def prescribe_map(
     sides, tied = {}, ()
     if sens_margin:  # M set by a mode or the crease: a tie with another is a kink of M
         lead = (nxt, v_next, sens_next) if limited == "mode" else ("crease", v_crease, sens_crease)
-        rivals = _near(margins, at, mmap.solve_for, u, v, lead, others, sens_crease, rtol)
+        rivals = rivals_at(margins, at, mmap.solve_for, u, v, lead, others, sens_crease, rtol)
         sens_margin, sides, tied = kinked_margin(at, margins.sense, v, sens, rivals)
     x, y = margins.xy(u)
     verdict = design_verdict(
@@ -387,22 +387,6 @@ def prescribe_map(
         v_crease if math.isfinite(v_crease) else math.nan, m_crease, limited, verdict,
         region_crease, sens_crease, sides, tied,
     )  # fmt: skip
-
-
-def _near(margins: _Margins, at, solve_for, u, v, lead, others, sens_crease, rtol) -> list:
-    """The competitors at u within reach of a tie with ``lead`` (onset.near_rivals), each
-    with its sensitivities: the modes ``others`` and the crease."""
-
-    def sens_of(name, w):
-        if name == "crease":
-            return sens_crease or None
-        try:
-            return sensitivities(at, name, solve_for, w, rtol=rtol)
-        except ElectrogrowthError:  # a fold of the rival's branch: its kink is not known
-            return None
-
-    cands = [(o, margins.value(o, u)) for o in others] + [("crease", margins.crease(u))]
-    return near_rivals(margins.sense, v, lead, cands, sens_of)
 
 
 def _region_crease(creased: int, points: int) -> dict:

@@ -109,10 +109,8 @@ def forget_check(R, z, J, R_s, m, k, s, keep, table, seg, work, settled=False):
     P = np.empty((8, 8))
     Zi = np.empty((8, 8))
     zs = np.empty((4, 4))
-    frozen_matrix(R, m, k, s, table, seg, work, Q)
-    if not growing_projector(Q, P, Zi):
+    if not _block_projector(R, m, k, s, keep, table, seg, work, Q, P, Zi):
         return np.inf, 0.0, zs
-    hold_left_out(P, keep)
     X = hat_basis(z, J)
     sign_a, remnant = split_orientation(P, X, s)
     if not remnant <= REMNANT_MAX and settled:
@@ -122,14 +120,8 @@ def forget_check(R, z, J, R_s, m, k, s, keep, table, seg, work, settled=False):
     if not remnant <= REMNANT_MAX:
         return remnant, sign_a, zs
     frozen_matrix(R_s, m, k, s, table, seg, work, Q)
-    if not growing_projector(Q, P, Zi):
+    if not (growing_projector(Q, P, Zi) and _graph(P, keep, zs)):
         return np.inf, 0.0, zs
-    hold_left_out(P, keep)
-    if not dominant_impedance(P, zs):
-        return np.inf, 0.0, zs
-    for i in range(4):  # symmetric up to rounding (W+ is Lagrangian)
-        for j in range(i + 1, 4):
-            zs[i, j] = zs[j, i] = 0.5 * (zs[i, j] + zs[j, i])
     return remnant, sign_a, zs
 
 
@@ -173,10 +165,8 @@ def keep_restart(R_c, R_s, z, J, m, k, s, keep, table, seg, work):
     P = np.empty((8, 8))
     Zi = np.empty((8, 8))
     zs = np.empty((4, 4))
-    frozen_matrix(R_c, m, k, s, table, seg, work, Q)
-    if not growing_projector(Q, P, Zi):
+    if not _block_projector(R_c, m, k, s, keep, table, seg, work, Q, P, Zi):
         return 0.0, 0.0, zs
-    hold_left_out(P, keep)
     sign, log_a, remnant = split_sizes(P, hat_basis(z, J), s)
     if sign == 0.0 or not remnant <= REMNANT_MAX:  # not attracted as the rate said
         return 0.0, 0.0, zs
@@ -191,6 +181,17 @@ def keep_restart(R_c, R_s, z, J, m, k, s, keep, table, seg, work):
     if not (growing_projector(Q, P, Zi) and _graph(P, keep, zs)):
         return 0.0, 0.0, zs
     return sign, log_a + grow, zs
+
+
+@nb.njit(cache=True)
+def _block_projector(R, m, k, s, keep, table, seg, work, Q, P, Zi) -> bool:
+    """Q <- the Stroh matrix frozen at R, P <- its growing projector with a family's
+    left-out pairs held (dominant.hold_left_out); False if P cannot be formed."""
+    frozen_matrix(R, m, k, s, table, seg, work, Q)
+    if not growing_projector(Q, P, Zi):
+        return False
+    hold_left_out(P, keep)
+    return True
 
 
 @nb.njit(cache=True)
