@@ -66,6 +66,21 @@ def test_a_settled_zero_is_bracketed_by_one_step():
     assert wavy.reach(0.7, 1e-4) == pytest.approx(0.7 * d)
 
 
+def _one_crossing(signed, fine, loose_parts=None):
+    """first_roots of one candidate that crossed between 0.2 and 0.4, its loose values at
+    both ends known."""
+    return first_roots(
+        signed,
+        fine,
+        np.array([0]),
+        np.array([0.2]),
+        0.4,
+        0.0,
+        values=(signed(0.2, 0), signed(0.4, 0)),
+        loose_parts=loose_parts,
+    )
+
+
 def test_one_crossing_is_finished_near_its_loose_root():
     """One candidate with its loose values: the fine root to the last bits in ~4 fine
     evaluations; a loose root off by more than the first bracket in the second; off by more
@@ -82,15 +97,7 @@ def test_one_crossing_is_finished_near_its_loose_root():
         def signed(x, idx, shift=shift):
             return np.array([(c + shift - x) * (2.0 + x)])
 
-        got = first_roots(
-            signed,
-            fine,
-            np.array([0]),
-            np.array([0.2]),
-            0.4,
-            0.0,
-            values=(signed(0.2, 0), signed(0.4, 0)),
-        )
+        got = _one_crossing(signed, fine)
         assert got[0] == pytest.approx(c, rel=2e-15, abs=0)
         assert len(asked) <= most
 
@@ -115,21 +122,14 @@ def test_a_loose_root_on_a_step_is_refined_on_the_determinant():
 
     for loose_parts, least, most in ((None, 25, 40), (parts, 0, 22)):
         asked = []
-        got = first_roots(
-            signed,
-            fine,
-            np.array([0]),
-            np.array([0.2]),
-            0.4,
-            0.0,
-            values=(signed(0.2, 0), signed(0.4, 0)),
-            loose_parts=loose_parts,
-        )
+        got = _one_crossing(signed, fine, loose_parts)
         assert got[0] == pytest.approx(c, rel=2e-15, abs=0)
         assert least <= len(asked) <= most, len(asked)
 
 
 def test_a_smooth_loose_root_costs_no_more_with_the_determinant_at_hand():
+    """Brent's method on a smooth bounded target converges within LOOSE_FIRST: det(M2) is
+    never asked, and the loose evaluations are those of the route without it."""
     c = 0.3141592653589793
     counts = []
     for with_parts in (False, True):
@@ -142,15 +142,6 @@ def test_a_smooth_loose_root_costs_no_more_with_the_determinant_at_hand():
         def parts(x, i):
             raise AssertionError("det(M2) asked for a smooth target")
 
-        first_roots(
-            signed,
-            lambda x, i: (c - x) * (2.0 + x),
-            np.array([0]),
-            np.array([0.2]),
-            0.4,
-            0.0,
-            values=(signed(0.2, 0), signed(0.4, 0)),
-            loose_parts=parts if with_parts else None,
-        )
+        _one_crossing(signed, lambda x, i: (c - x) * (2.0 + x), parts if with_parts else None)
         counts.append(len(asked))
     assert counts[0] == counts[1]
