@@ -22,6 +22,7 @@ import pytest
 from electrogrowth import ConvergenceError, Material, Tube, critical_value
 from electrogrowth.bifurcation.march import KERNEL_FAILURE_RUN, KernelFailures
 from electrogrowth.incremental import targets as targets_module
+from electrogrowth.incremental.targets import Sample
 
 FUNG = "(I1-3)/2 + I5/2 + 0.1*(exp((I1-3)**2) - 1)"
 BUDGET = 90  # seconds: the unfixed march ran for over 10 minutes
@@ -35,9 +36,16 @@ def _stop(signum, frame):
     raise _TooLong(f"critical_value still running after {BUDGET} s")
 
 
-def test_a_march_on_states_the_kernel_never_resolves_stops_with_a_named_error():
+def test_a_march_on_states_the_kernel_never_resolves_stops_with_a_named_error(monkeypatch):
     tube = Tube.uniform(1.5, length=1.0, material=Material("fung", FUNG))
-    before = targets_module.fallbacks()[0]
+    collocated, retry = [], targets_module._retry
+
+    def counted(*args):
+        out = retry(*args)
+        collocated.append(out.collocated)
+        return out
+
+    monkeypatch.setattr(targets_module, "_retry", counted)
     old = signal.signal(signal.SIGALRM, _stop)
     signal.alarm(BUDGET)
     try:
@@ -48,24 +56,27 @@ def test_a_march_on_states_the_kernel_never_resolves_stops_with_a_named_error():
     finally:
         signal.alarm(0)
         signal.signal(signal.SIGALRM, old)
-    assert targets_module.fallbacks()[0] - before < 100  # 33 here; 2456 in 100 s before
+    assert 0 < sum(collocated) < 100  # 33 here; 2456 in 100 s before
 
 
-def _fake_targets(fails):
-    """A target whose kernel 'fails' (counts a collocation fallback) where fails(x)."""
+class _FakeTarget:
+    """A target whose kernel 'fails' (every mode goes to collocation) where fails(x)."""
 
-    def target(state, modes):
-        if fails(state):
-            targets_module._Fallbacks.count += modes.shape[0]
-            targets_module._Fallbacks.reason = "impedance integration failed (fake)"
-        return np.ones(modes.shape[0])
+    def __init__(self, fails):
+        self.fails = fails
 
-    return target
+    def __call__(self, state, modes):
+        return self.sample(state, modes).values
+
+    def sample(self, state, modes):
+        if self.fails(state):
+            return Sample(np.ones(modes.shape[0]), modes.shape[0], "failed (fake)")
+        return Sample(np.ones(modes.shape[0]))
 
 
 def test_isolated_kernel_failures_keep_the_collocation_fallback():
     watch, modes = KernelFailures("growth"), np.array([[0.0, 1.0]])
-    target = _fake_targets(lambda x: x % 2 == 0)  # every other state fails
+    target = _FakeTarget(lambda x: x % 2 == 0)  # every other state fails
     for x in range(4 * KERNEL_FAILURE_RUN):
         assert watch.sample(target, x, modes, float(x))[0] == 1.0
         assert not watch.persistent()
@@ -73,10 +84,13 @@ def test_isolated_kernel_failures_keep_the_collocation_fallback():
 
 def test_one_mode_of_many_failing_keeps_the_collocation_fallback():
     watch, modes = KernelFailures("growth"), np.array([[0.0, 1.0], [1.0, 1.0]])
-    every = _fake_targets(lambda x: True)
+    every = _FakeTarget(lambda x: True)
 
-    def target_one(state, modes):  # the kernel fails for the first mode only
-        return np.concatenate([every(state, modes[:1]), np.ones(modes.shape[0] - 1)])
+    class TargetOne(_FakeTarget):  # the kernel fails for the first mode only
+        def sample(self, state, modes):
+            return Sample(np.ones(modes.shape[0]), every.sample(state, modes[:1]).collocated)
+
+    target_one = TargetOne(None)
 
     for x in range(4 * KERNEL_FAILURE_RUN):
         watch.sample(target_one, x, modes, float(x))
@@ -85,7 +99,7 @@ def test_one_mode_of_many_failing_keeps_the_collocation_fallback():
 
 def test_a_run_of_kernel_failures_ends_the_march():
     watch, modes = KernelFailures("growth"), np.array([[0.0, 1.0], [1.0, 1.0]])
-    target, last = _fake_targets(lambda x: x >= 3), 3 + KERNEL_FAILURE_RUN - 1
+    target, last = _FakeTarget(lambda x: x >= 3), 3 + KERNEL_FAILURE_RUN - 1
     for x in range(last + 1):
         watch.sample(target, x, modes, float(x))
         assert watch.persistent() == (x == last)

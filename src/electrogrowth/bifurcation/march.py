@@ -50,7 +50,7 @@ from ..errors import (
     Remedy,
 )
 from ..incremental.targets import SIGN_TUBE as SIGN_TUBE  # re-exported: its grids' signs
-from ..incremental.targets import fallbacks, natural_family, row_family
+from ..incremental.targets import Sample, natural_family, row_family
 from ..model.controls import KINDS
 from ..model.layers import Tube
 from .along import RootRows, Signed, TubeAt
@@ -272,16 +272,17 @@ class KernelFailures:
 
     def sample(self, targets, state, modes, x: float) -> np.ndarray:
         """targets(state, modes), counting the run of samples that went to collocation for
-        every mode (an isolated failure, or one mode of many, ends the run)."""
-        before = fallbacks()[0]
-        f = targets(state, modes)
-        count, reason = fallbacks()
-        if count - before < modes.shape[0]:  # resolved by the kernel, or failed in isolation
+        every mode (an isolated failure, or one mode of many, ends the run). A target that
+        can fall back says how often it did (incremental.targets.ImpedanceTarget.sample);
+        any other never does."""
+        ask = getattr(targets, "sample", None)
+        got = Sample(targets(state, modes)) if ask is None else ask(state, modes)
+        if got.collocated < modes.shape[0]:  # resolved by the kernel, or failed in isolation
             self.run, self.since = 0, None
-            return f
-        self.run, self.last, self.reason = self.run + 1, x, reason
+            return got.values
+        self.run, self.last, self.reason = self.run + 1, x, got.reason
         self.since = x if self.since is None else self.since
-        return f
+        return got.values
 
     def persistent(self) -> bool:
         """Has the kernel failed on KERNEL_FAILURE_RUN consecutive samples?"""

@@ -36,6 +36,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
+from typing import NamedTuple
 
 import numpy as np
 
@@ -73,18 +74,36 @@ def wavenumber(params, n: float) -> float:
     return n * math.pi / (params.stretch * params.length)
 
 
-def impedance_targets(state, modes, *, rtol: float = 1e-12, max_steps: int = 20000) -> np.ndarray:
-    """Kernel target f for many modes (rows (m, n) or (m, n, code)) on one base state."""
+class Sample(NamedTuple):
+    """A target evaluation: the values, how many modes the kernel failed on and went to
+    collocation (:func:`_retry`), and why it failed on the last of them. A march stops on
+    a run of states where every mode went there (bifurcation/march.py, KernelFailures):
+    collocation is for isolated failures, ~40 ms a mode."""
+
+    values: np.ndarray
+    collocated: int = 0
+    reason: str = ""
+
+
+def impedance_sample(state, modes, *, rtol: float = 1e-12, max_steps: int = 20000) -> Sample:
+    """Kernel target f for many modes (rows (m, n) or (m, n, code)) on one base state, with
+    the modes that went to collocation counted."""
     modes = np.asarray(modes, dtype=float, order="C")
     if modes.ndim == 1:  # one row
         modes = modes[None]
     tables = stack_tables([build_table(state, tol=_table_tol(rtol))])
     kernel = rows_parallel if modes.shape[0] >= PARALLEL_FROM else rows_serial
     f, status = kernel(modes, state.current_length, tables, rtol, max_steps)
-    if status.any():
-        bad = status != 0
-        f[bad] = _retry(state, modes[bad], status[bad], rtol, max_steps)
-    return f
+    if not status.any():
+        return Sample(f)
+    bad = status != 0
+    f[bad], collocated, reason = _retry(state, modes[bad], status[bad], rtol, max_steps)
+    return Sample(f, collocated, reason)
+
+
+def impedance_targets(state, modes, *, rtol: float = 1e-12, max_steps: int = 20000) -> np.ndarray:
+    """Kernel target f for many modes (rows (m, n) or (m, n, code)) on one base state."""
+    return impedance_sample(state, modes, rtol=rtol, max_steps=max_steps).values
 
 
 @functools.lru_cache(maxsize=32)
@@ -127,22 +146,7 @@ RETRY_BUDGET = 5
 RETRY_SAMPLE = 4
 
 
-class _Fallbacks:
-    """How many modes went to collocation (:func:`_retry`), and why the kernel failed on the
-    last: a march compares the count around a sample to tell a state on which the kernel
-    fails for every mode (bifurcation/march.py stops after a run of them: collocation is for
-    isolated failures, ~40 ms a mode) from an isolated failure."""
-
-    count = 0
-    reason = ""
-
-
-def fallbacks() -> tuple[int, str]:
-    """(modes sent to collocation so far in this process, why the kernel failed last)."""
-    return _Fallbacks.count, _Fallbacks.reason
-
-
-def _retry(state, modes, status, rtol, max_steps) -> np.ndarray:
+def _retry(state, modes, status, rtol, max_steps) -> Sample:
     """Targets of the modes whose integration failed (a step size underflow where the
     error estimate of a loose rtol misjudges a steep stretch of z~, or a chart lost):
     again at tighter tolerances (never looser), then by collocation at the nodes that
@@ -165,12 +169,11 @@ def _retry(state, modes, status, rtol, max_steps) -> np.ndarray:
             break
         f[rest] = _serial(state, modes[rest], tables, tight, budget)
         if not np.isnan(f).any():
-            return f
-    colloc = CollocationTarget(rtol)
-    for i in np.flatnonzero(np.isnan(f)):
+            return Sample(f)
+    colloc, todo, reason = CollocationTarget(rtol), np.flatnonzero(np.isnan(f)), ""
+    for i in todo:
         row = modes[i : i + 1]
-        _Fallbacks.count += 1
-        _Fallbacks.reason = _failure(modes[i], status[i])
+        reason = _failure(modes[i], status[i])
         try:
             nodes = colloc._nodes(state, row[0])
             value = collocation_targets(state, row, nodes=nodes)[0]
@@ -178,10 +181,8 @@ def _retry(state, modes, status, rtol, max_steps) -> np.ndarray:
         except (ArithmeticError, ValueError, np.linalg.LinAlgError):
             pass
         if not np.isfinite(f[i]):
-            raise ConvergenceError(
-                f"{_Fallbacks.reason}, also at tighter tolerances and by collocation"
-            )
-    return f
+            raise ConvergenceError(f"{reason}, also at tighter tolerances and by collocation")
+    return Sample(f, todo.size, reason)
 
 
 def _failure(mode, status) -> str:
@@ -274,6 +275,10 @@ class ImpedanceTarget:
 
     def __call__(self, state, modes) -> np.ndarray:
         return impedance_targets(state, modes, rtol=self.rtol, max_steps=self.max_steps)
+
+    def sample(self, state, modes) -> Sample:
+        """The values with the modes that went to collocation (:func:`impedance_sample`)."""
+        return impedance_sample(state, modes, rtol=self.rtol, max_steps=self.max_steps)
 
     def parts(self, state, modes) -> tuple[np.ndarray, np.ndarray]:
         """(f, log_norm): f and the log of what it divides out (:func:`analytic_parts`)."""
