@@ -26,6 +26,7 @@ at g = 1.18), and ``critical_value(tube, 3, 1, "growth")`` crashed with it (eith
 import json
 import warnings
 
+import numpy as np
 import pytest
 
 from electrogrowth import Layer, Material, Tube, critical_value, solve_base_state
@@ -79,3 +80,30 @@ def test_critical_growth_of_a_mild_exponential_energy():
         col = critical_value(tube, 3, 1, "growth", method="collocation")
     assert imp.status == "ok"
     assert col.value == pytest.approx(imp.value, rel=1e-8)
+
+
+#: Fung type with a quadratic exponent: its stresses ~ (I1 - 3) exp((I1 - 3)^2) overflow a
+#: double while the energy itself is still finite (I1 - 3 ~ 26.6)
+FUNG_SQUARED = Material("fung-squared", "(I1-3)/2 + I5/2 + 0.1*(exp((I1-3)**2) - 1)")
+
+
+def test_states_of_an_energy_whose_stresses_overflow_first_solve_everywhere():
+    """The voltage threshold's scan of Vbar(lambda_i) (basestate/voltage.py
+    ``charge_and_voltage``, run for every state, charged or not) reached lambda_i where the
+    energy is finite but its stresses overflow; the material raised ParameterError
+    ("deformation outside the domain ... derivatives are not finite") instead of the scan
+    ending its branch there. Sporadic in g (1.335, 1.565, 1.83 of a 0.005 grid over
+    [1, 3]), so a growth scan of this tube stopped at g = 1.335 blaming the user, while the
+    single mode (0, 1) marched on to g = 4.28. Every state of the grid now solves, and
+    equals the same tube cut into two identical layers (the layered solver, which never
+    scans the threshold)."""
+    tube = Tube.uniform(1.5, length=1.0, material=FUNG_SQUARED)
+    for g in (1.0 + 0.005 * np.arange(400)).tolist():
+        solve_base_state(tube.at("growth", g))
+    two = Tube(
+        (Layer(1.2, material=FUNG_SQUARED, growth=1.335),
+         Layer(1.5, material=FUNG_SQUARED, growth=1.335)),
+        length=1.0,
+    )  # fmt: skip
+    one = solve_base_state(tube.at("growth", 1.335)).lambda_i
+    assert one == pytest.approx(solve_base_state(two).lambda_i, rel=1e-12)

@@ -131,7 +131,7 @@ class UniformWall:
         ok = self.in_domain(lam_i)
         delta = self.b * (self.outer_radius**2 - 1.0)  # r_o^2 - r_i^2, exact
         with np.errstate(**_QUIET):
-            m0, scale = self.hoop(lam_i[ok], 0.0)
+            m0, scale = self._hoop_or_nan(lam_i[ok], 0.0)
             # the stresses overflow before the energy does (an exponential energy's
             # stresses ~ I1 exp(k I1)): no state is computed there, and an infinite scale
             # would zero M below, a false Vbar = 0 that ends the branch in a false peak
@@ -175,33 +175,34 @@ class UniformWall:
         return float((self.material.electric_field(*stretches, d) * wdr).sum(-1)[0])
 
     def _hoop_or_nan(self, lam_i, q):
-        """hoop(lam_i, q)[0], NaN where the energy is not finite: a charge past what the
-        energy allows is no state (an electro-mechanical coupling that stiffens with I1 may
-        need a charge without bound as lambda_i nears the end of the branch), not the user's
-        input."""
+        """hoop(lam_i, q), NaN where the energy or its stresses are not finite: a charge
+        past what the energy allows is no state (an electro-mechanical coupling that
+        stiffens with I1 may need a charge without bound as lambda_i nears the end of the
+        branch), nor is a lambda_i of the threshold's scan whose stresses overflow (a
+        Fung-type energy's ~ exp((I1 - 3)^2)); neither is the user's input."""
         try:
-            return self.hoop(lam_i, q)[0]
+            return self.hoop(lam_i, q)
         except ParameterError:
-            out = np.full(np.shape(lam_i), np.nan)
+            f, size = np.full(np.shape(lam_i), np.nan), np.full(np.shape(lam_i), np.nan)
             for j, (lam, qj) in enumerate(zip(lam_i, np.broadcast_to(q, np.shape(lam_i)))):
                 try:
-                    out[j] = self.hoop(np.array([lam]), qj)[0][0]
+                    (f[j],), (size[j],) = self.hoop(np.array([lam]), qj)
                 except ParameterError:
                     pass
-            return out
+            return f, size
 
     def _solve_q(self, lam_i, f_lo, q_hi, rtol):
         """q = c^2 solving hoop(lam_i, q) = 0, given f(0) >= 0: q doubled until f <= 0, then
         Illinois; NaN where no charge within the energy's domain balances the traction."""
         q_lo, q_hi = np.zeros_like(q_hi), np.maximum(q_hi, 1e-300)
-        f_hi = self._hoop_or_nan(lam_i, q_hi)
+        f_hi = self._hoop_or_nan(lam_i, q_hi)[0]
         for _ in range(200):  # expand until f(q_hi) <= 0
             up = f_hi > 0
             if not up.any():
                 break
             q_lo, f_lo = np.where(up, q_hi, q_lo), np.where(up, f_hi, f_lo)
             q_hi = np.where(up, 2.0 * q_hi, q_hi)
-            f_hi = self._hoop_or_nan(lam_i, q_hi)
+            f_hi = self._hoop_or_nan(lam_i, q_hi)[0]
         q, live = np.full(q_hi.shape, np.nan), f_hi <= 0
         if live.any():
             q[live] = self._illinois(
