@@ -163,7 +163,7 @@ def test_the_cli_prints_what_a_surface_result_certified(capsys):
     assert main(argv) == 0
     out = capsys.readouterr().out
     assert "  certified: half-space value recomputed at rtol 1e-14" in out
-    assert "the best finite mode (0, 24)" in out and "certified by collocation" in out
+    assert "the first scanned finite mode (0, 24)" in out and "certified by collocation" in out
 
 
 def test_a_judge_that_missed_its_own_accuracy_says_so(monkeypatch):

@@ -98,7 +98,9 @@ def test_a_crease_the_criterion_cannot_establish_prints_no_digits_it_lacks(capsy
 
 def test_a_surface_result_names_its_best_finite_mode_once(capsys):
     """The best finite mode of a surface result heads its runners-up in the record; the
-    text shows it on the wrinkle line and lists the next ones after it, not it again."""
+    text shows it on the wrinkle line and lists the next ones after it, not it again. It is
+    the first of the scanned modes only (shorter waves tend to the surface value, none is
+    first among all), and the line says so with the ranges of the record."""
     argv = ["critical", "--outer-radius", "2", "--length", "1", "--solve-for", "voltage"]
     rec = _json(capsys, argv)
     assert rec["kind"] == "surface"
@@ -109,6 +111,9 @@ def test_a_surface_result_names_its_best_finite_mode_once(capsys):
     assert main(argv) == 0
     lines = capsys.readouterr().out.splitlines()
     best = f"(m, n) = ({w['m']}, {w['n']})"
-    assert any(line.startswith("  wrinkle (linear analysis): " + best) for line in lines)
+    (wline,) = [line for line in lines if line.startswith("  wrinkle (linear analysis): ")]
+    assert wline.startswith("  wrinkle (linear analysis): " + best)
+    (m0, m1), (n0, n1) = rec["m_range"], rec["n_range"]
+    assert wline.endswith(f"(the first of the scanned m = {m0}..{m1}, n = {n0}..{n1})")
     nxt = [line for line in lines if line.startswith("  next: ")]
     assert len(nxt) == len(rec["runners_up"]) - 1 and not any(best in line for line in nxt)

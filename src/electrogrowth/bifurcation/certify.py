@@ -278,10 +278,10 @@ def _surface(params, crit, scan, rtol) -> Certificate:
         mode = (r.m, r.n, r.family)
         other, value, rdiff = _other_method(params, crit, mode, r.value, 0.0, rtol, "impedance")
     except ConvergenceError as exc:
-        msg += f"; the best finite mode ({r.m}, {r.n}) at {r.value:.12g} is {exc}"
+        msg += f"; the first scanned finite mode ({r.m}, {r.n}) at {r.value:.12g} is {exc}"
         return Certificate(False, "halfspace", limit.value, diff, None, msg)
     msg += (
-        f"; the best finite mode ({r.m}, {r.n}) at {r.value:.12g} certified by {other}"
+        f"; the first scanned finite mode ({r.m}, {r.n}) at {r.value:.12g} certified by {other}"
         f" ({value:.12g}, relative difference {rdiff:.1e}): it comes after the surface"
     )
     return Certificate(True, "halfspace", limit.value, diff, None, msg)

@@ -108,7 +108,7 @@ def print_text(rec: dict, runners: list, scales=None) -> None:
     if w is not None and rec["kind"] != Kind.BIFURCATION:
         lines.append(
             f"  wrinkle (linear analysis): (m, n) = ({w['m']}, {w['n']})"
-            f"{_family_note(w.get('family'))}   {name} = {w['value']:.10g}"
+            f"{_family_note(w.get('family'))}   {name} = {w['value']:.10g}{_scanned(rec)}"
         )
     if "certification" in rec:  # a surface result: what was certified and how, or why not
         lines.append(
@@ -139,6 +139,15 @@ def print_text(rec: dict, runners: list, scales=None) -> None:
         )
     lines += _rival_lines(rec, name)
     print("\n".join(lines))
+
+
+def _scanned(rec: dict) -> str:
+    """Where a surface result's finite mode is first: only among the scanned modes (shorter
+    waves than those tend to the surface value, no finite mode is first among all)."""
+    if not rec.get("surface_instability") or "m_range" not in rec:
+        return ""
+    (m0, m1), (n0, n1) = rec["m_range"], rec["n_range"]
+    return f"  (the first of the scanned m = {m0}..{m1}, n = {n0}..{n1})"
 
 
 _TRIGGER = {
