@@ -31,6 +31,7 @@ from .koiter_film import (
     sign_change_ratio,
 )
 from .koiter_loads import loaded_expansion
+from .koiter_resonance import Resonance, nearest_resonance
 from .koiter_tube import (
     TubeExpansion,
     axial_wavenumber,
@@ -76,6 +77,9 @@ class KoiterResult:
     branch: str
     error_estimate: float
     normalisation: str = "eps = K_c w, w the amplitude of the free face's deflection"
+    #: a tube's second harmonic bifurcating within koiter_resonance.WINDOW of onset (c_2
+    #: has a pole where one does at onset), or None
+    resonance: Resonance | None = None
 
     def as_dict(self) -> dict:
         return dataclasses.asdict(self)
@@ -171,6 +175,7 @@ def _tube_result(tube: Tube, mode, control: str, side: str | None = None) -> Koi
         # the discretisation's change, and A''s difference steps' (relative to the control)
         error_estimate=abs(fine.coefficient - coarse.coefficient) + fine.derivative_error,
         normalisation="eps = max_R |u_r| / R_i of the mode (R_i = 1)",
+        resonance=nearest_resonance(tube, mode, control, side, fine.control_value),
     )
 
 
@@ -249,11 +254,14 @@ def with_branch(
         "subcritical": "subcritical: the tube jumps to large folds at onset",
     }
     meaning = f"{verdict.meaning}; the wrinkle is {words[k.branch]}"
+    if k.resonance is not None:
+        meaning += f", but {k.resonance.words(solve_for)}"
     out = dataclasses.replace(
         verdict,
         branch=k.branch,
         koiter=k.coefficient,
         koiter_error=k.error_estimate,
+        koiter_resonance=None if k.resonance is None else dataclasses.asdict(k.resonance),
         meaning=meaning,
     )
     return out, None

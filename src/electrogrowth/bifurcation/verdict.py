@@ -79,6 +79,8 @@ class Verdict:
     branch: str | None = None  # "supercritical" | "subcritical"; None: not computed
     koiter: float | None = None  # the Koiter coefficient; None: not computed
     koiter_error: float | None = None  # its change from a coarser resolution
+    #: a second harmonic next to onset (koiter_resonance.Resonance as a dict), or None
+    koiter_resonance: dict | None = None
     #: the field criterion's crease where a mechanical crease is reached too (``crease``):
     #: an early bound, a note in ``meaning``, never ranked (:func:`advisory`)
     field_crease: Rival | None = None
@@ -111,6 +113,7 @@ class Verdict:
             "branch": self.branch,
             "koiter": self.koiter,
             "koiter_error": self.koiter_error,
+            "koiter_resonance": self.koiter_resonance,
         }
 
 

@@ -167,6 +167,7 @@ def _amplitude_equation(args, params, solve_for, crit) -> dict:
         "branch": verdict.branch,
         "koiter": verdict.koiter,
         "koiter_error": verdict.koiter_error,
+        "koiter_resonance": verdict.koiter_resonance,
         "meaning": verdict.meaning,
     }
 

@@ -177,8 +177,9 @@ def design_verdict(tube, solve_for: str, side, options: ScanOptions, *, koiter: 
     """The verdict of the chosen design (a scan there, as ``electrogrowth critical``):
     ``kind``, ``value``, ``face``, ``meaning``, the crease (``crease``: value, face,
     trigger, error_estimate, or None), ``wrinkle`` (its mode and value), and with
-    ``koiter`` the branch (``branch``, ``koiter``, ``koiter_error``; ``branch_note``: why
-    not). A scan that fails gives ``kind`` "" and the ``meaning`` of the failure."""
+    ``koiter`` the branch (``branch``, ``koiter``, ``koiter_error``, ``koiter_resonance``;
+    ``branch_note``: why not). A scan that fails gives ``kind`` "" and the ``meaning`` of
+    the failure."""
     try:
         verdict = scan_modes(tube, solve_for, side=side, options=options).verdict
     except Exception as exc:  # noqa: BLE001 - the design stands; its verdict says why not
@@ -192,7 +193,8 @@ def design_verdict(tube, solve_for: str, side, options: ScanOptions, *, koiter: 
         note = why or ""
     d = verdict.as_dict()
     keep = ("kind", "value", "face", "meaning", "crease", "wrinkle", "branch", "koiter")
-    return {**{k: d[k] for k in keep}, "koiter_error": d["koiter_error"], "branch_note": note}
+    extra = {k: d[k] for k in ("koiter_error", "koiter_resonance")}
+    return {**{k: d[k] for k in keep}, **extra, "branch_note": note}
 
 
 def observable(verdict: dict) -> str:

@@ -1,0 +1,104 @@
+"""Where the amplitude equation of a tube's mode breaks down: a second harmonic of the mode
+bifurcating next to its onset (docs/derivation-koiter.md, "Resonance").
+
+The second-order correction psi of a mode (m, n) lives on the harmonics of phi's products:
+(2m, 2n), (2m, 0) and (0, 2n) (and the axisymmetric (0, 0), the base state's own
+stiffness). psi solves A(c_c) psi = -C[phi, phi, .] / 2 on those harmonics, so where one of
+them is itself critical at c_c, A is singular there and c_2 has a pole: c_2 ~ 1 / (c_c - c_h),
+c_h the control at which the harmonic bifurcates. The expansion c = c_c + c_2 eps^2 then
+holds only while |c - c_c| << |c_h - c_c|: two modes interact (a uniform tube's (1, 1) of
+L = 8 in compression: c_2 = 12.5 times its slender-tube value, (2, 2) 0.075 % away).
+
+The harmonics' impedance targets are read on a grid across a window of WINDOW of the
+control's scale about c_c; a sign change is a harmonic's root, located by Brent's method.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+
+from ..basestate.tube import solve_base_state
+from ..brent import brentq
+from ..errors import BaseStateError, ConvergenceError, ParameterError
+from ..incremental.targets import ImpedanceTarget
+from ..model.layers import Tube
+from .march import control_path
+
+#: the window about the onset searched for a harmonic's root, relative to max(|c_c|,
+#: the control's scale), and its grid's points
+WINDOW = 0.05
+POINTS = 21
+#: the harmonics' targets: a root needs a few digits only (a distance, not a value)
+TARGET = ImpedanceTarget(rtol=1e-10)
+
+
+@dataclasses.dataclass(frozen=True)
+class Resonance:
+    """A second harmonic (m, n) of the mode that bifurcates at ``value`` of the control,
+    ``gap`` = |value - c_c| / max(|c_c|, scale) from the onset c_c; ``before``: the march
+    from the control's start reaches it first (the mode is then not the tube's first)."""
+
+    m: int
+    n: int
+    value: float
+    gap: float
+    before: bool
+
+    def words(self, control: str) -> str:
+        """The note a user reads: which harmonic, where, and what it means."""
+        first = ", before the mode's onset" if self.before else ""
+        return (
+            f"its second harmonic ({self.m}, {self.n}) bifurcates at {control} ="
+            f" {self.value:.10g}{first}, {100 * self.gap:.2g} % of the scale from onset: the"
+            " one-mode expansion holds only while the control stays much closer to onset"
+            " than that (mode interaction)"
+        )
+
+
+def harmonics(m: int, n: int) -> list[tuple[int, int]]:
+    """The modes of psi other than (0, 0): (2m, 0) for a prismatic mode, (0, 2n) for an
+    axisymmetric one, all three for a wrinkle."""
+    if n == 0:
+        return [(2 * m, 0)]
+    if m == 0:
+        return [(0, 2 * n)]
+    return [(2 * m, 2 * n), (2 * m, 0), (0, 2 * n)]
+
+
+def nearest_resonance(
+    tube: Tube, mode: tuple[int, int], control: str, side: str | None, onset: float
+) -> Resonance | None:
+    """The harmonic root nearest ``onset`` within the window, or None."""
+    start, end, scale = control_path(tube, control, side)
+    size = max(abs(onset), scale)
+    lo, hi = sorted((start, end))
+    xs = np.clip(onset + WINDOW * size * np.linspace(-1.0, 1.0, POINTS), lo, hi)
+    xs = np.unique(xs)
+    rows = np.array(harmonics(*mode), dtype=float)
+    values = np.array([_targets(tube, control, x, rows) for x in xs])  # (points, harmonics)
+    best = None
+    for j, (hm, hn) in enumerate(harmonics(*mode)):
+        for a, b, fa, fb in zip(xs, xs[1:], values[:, j], values[1:, j]):
+            if not (np.isfinite(fa) and np.isfinite(fb)) or fa * fb > 0:
+                continue
+            root = _root(tube, control, rows[j : j + 1], a, b, size)
+            gap = abs(root - onset) / size
+            if best is None or gap < best.gap:
+                best = Resonance(hm, hn, root, gap, (end - start) * (root - onset) < 0)
+    return best
+
+
+def _targets(tube: Tube, control: str, x: float, rows: np.ndarray) -> np.ndarray:
+    """The harmonics' targets at control x; NaN where the state or the kernel fails."""
+    try:
+        return TARGET(solve_base_state(tube.at(control, x)), rows)
+    except (BaseStateError, ConvergenceError, ParameterError):
+        return np.full(rows.shape[0], math.nan)
+
+
+def _root(tube: Tube, control: str, row: np.ndarray, a: float, b: float, size: float) -> float:
+    """The harmonic's root in [a, b] (its target changes sign there)."""
+    return brentq(lambda x: float(_targets(tube, control, x, row)[0]), a, b, xtol=1e-9 * size)
