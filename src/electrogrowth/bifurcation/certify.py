@@ -244,13 +244,16 @@ def unloaded_signs(reference, modes) -> np.ndarray:
     block_of = np.where(np.where(prismatic, modes[:, 0] >= 2, modes[:, 1] >= 1), pairs, -1)
     for p in np.unique(block_of):
         block = np.flatnonzero(block_of == p)
-        sample = block[_spread(modes[block])]
-        s = np.sign(impedance_targets(reference, modes[sample], rtol=SIGN_RTOL))
-        if p >= 0 and s[0] != 0 and np.all(s == s[0]):
-            signs[block] = s[0]
-        else:
-            signs[block] = kernel_signs(reference, modes[block])
+        s = _block_sign(reference, modes[block]) if p >= 0 else 0.0
+        signs[block] = s if s != 0 else kernel_signs(reference, modes[block])
     return signs
+
+
+def _block_sign(reference, rows) -> float:
+    """The one sign of a block's ``rows`` on the unloaded ``reference`` where its sampled
+    modes agree on it at SIGN_RTOL, else 0 (no sign assumed)."""
+    s = np.sign(impedance_targets(reference, rows[_spread(rows)], rtol=SIGN_RTOL))
+    return float(s[0]) if s[0] != 0 and np.all(s == s[0]) else 0.0
 
 
 def _spread(rows) -> np.ndarray:
