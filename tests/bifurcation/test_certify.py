@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 from electrogrowth import (
+    Layer,
     ScanOptions,
     ScanResult,
     Tube,
@@ -201,3 +202,69 @@ def test_the_kernel_signs_of_the_choice_are_its_tight_signs_next_to_a_root():
         tight = np.sign(impedance_targets(state, rows, rtol=certify_module.SIGN_RTOL))
         np.testing.assert_array_equal(signs, tight)
         assert signs[0] == (1.0 if d < 0 else -1.0)  # stable before the root, not after
+
+
+def test_the_choice_reads_the_unloaded_tube_at_a_few_modes_per_family_block(monkeypatch):
+    """Probe 8a, D5: ``certify`` of a film's scan (m to 2000, n to 240: 482 000 modes) ran
+    past 13 minutes, because the kernel read every scanned mode four times, twice on the
+    unloaded tube, whose signs are one per family block (certify.unloaded_signs). Now the
+    unloaded tube is read at a few modes of each block and only the state mode by mode."""
+    opts = ScanOptions((0, 40), (1, 10), extend=False, surface=False)
+    res = scan_modes(P, "growth", options=opts)
+    real, rows = certify_module.impedance_targets, {"reference": 0, "state": 0}
+
+    def counted(state, modes, **kw):
+        rows["reference" if state.tube.voltage == 0 else "state"] += len(modes)
+        return real(state, modes, **kw)
+
+    monkeypatch.setattr(certify_module, "impedance_targets", counted)
+    cert = certify(P, _as_collocation(res.critical), scan=res, options=opts)
+    assert cert.certified and cert.modes_checked == 41 * 10 + 39 + 10
+    assert rows["state"] >= 2 * cert.modes_checked  # every mode, at 1e-9 and 1e-7
+    assert rows["reference"] <= 100  # four blocks of <= 22 samples, not 2 x 459 modes
+
+
+@pytest.mark.parametrize("name", ["uniform", "bilayer"])
+def test_the_unloaded_sign_of_a_family_block_is_the_sign_of_each_of_its_modes(name):
+    """The one sign per block that certify.unloaded_signs reads is every mode's own sign at
+    1e-12 on the unloaded tube (here +1), for every family, one layer and two."""
+    from electrogrowth import solve_base_state
+    from electrogrowth.bifurcation.scan_grid import scan_grid
+    from electrogrowth.incremental.targets import impedance_targets
+
+    tube = P if name == "uniform" else load_tube(BILAYER)
+    reference = solve_base_state(tube.reference())
+    modes = scan_grid((0, 30), (1, 20), False, (True, True))
+    tight = np.sign(impedance_targets(reference, modes, rtol=certify_module.SIGN_RTOL))
+    np.testing.assert_array_equal(certify_module.unloaded_signs(reference, modes), tight)
+
+
+def test_a_block_whose_sampled_unloaded_signs_disagree_is_read_mode_by_mode(monkeypatch):
+    """Where the samples of a block disagree (injected: the kernel misreads the modes of the
+    largest m on the unloaded tube) no block sign is assumed: every mode is read, and the
+    misread modes keep their misread sign (a suspect for collocation, not a silent +1)."""
+    from electrogrowth import solve_base_state
+
+    real = certify_module.impedance_targets
+
+    def misread(state, modes, **kw):
+        f = real(state, modes, **kw)
+        return np.where(modes[:, 0] == 12, -f, f)
+
+    monkeypatch.setattr(certify_module, "impedance_targets", misread)
+    reference = solve_base_state(P.reference())
+    modes = np.array([[m, n, 0] for m in range(1, 13) for n in (1, 2)], dtype=float)
+    signs = certify_module.unloaded_signs(reference, modes)
+    np.testing.assert_array_equal(signs, np.where(modes[:, 0] == 12, -1.0, 1.0))
+
+
+def test_a_film_scan_claiming_a_later_fold_is_refused():
+    """A film's fold (231, 0) (mu 100, h 0.004 on R 3, hoop growth): a scan result claiming
+    its neighbour (233, 0) is refused, a fold before it named (the kernel's and collocation's
+    signs have both changed), with the block signs of the unloaded tube read at samples."""
+    film = Tube([Layer(3.0), Layer(3.004, shear_modulus=100.0)], length=2.0)
+    later = critical_value(film, 233, 0, "growth[2].theta")
+    fake = ScanResult(later, (), (229, 233), (1, 1))
+    opts = ScanOptions((229, 233), (1, 1), torsional=False)
+    with pytest.raises(ConvergenceError, match=r"mode \(2(29|3[012]), [01]\) is already unstable"):
+        certify(film, fake.critical, scan=fake, options=opts)

@@ -11,7 +11,10 @@ root lies before the critical value only if the impedance kernel's sign (at a ti
 tolerance) has changed too. So the kernel reads every scanned mode first, in batches, and
 collocation only the modes whose kernel sign has changed: a film's scan covers m to 2000
 and n to 30, 62 059 modes at ~50 ms each by collocation (not done in 600 s); on a loaded
-machine the kernel took 940 s at 1e-12, 139 s as :func:`kernel_signs` reads them.
+machine the kernel took 940 s at 1e-12, 139 s as :func:`kernel_signs` reads them. The
+kernel's signs on the unloaded tube are one per family block (:func:`unloaded_signs`), read
+at a few modes, not at every mode twice more: a film folding at m = 922 is scanned to
+m = 2000, n = 240 (482 000 modes), and four reads a mode ran past 13 minutes (probe 8a, D5).
 
 A surface (short-wave) result is certified by recomputing the exact half-space value at a
 tighter tolerance, and its best finite runner-up, if any, by the other method.
@@ -20,6 +23,7 @@ tighter tolerance, and its best finite runner-up, if any, by the other method.
 from __future__ import annotations
 
 import dataclasses
+import functools
 from collections.abc import Callable
 
 import numpy as np
@@ -27,6 +31,7 @@ import numpy as np
 from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError, ParameterError
 from ..incremental.accuracy import CERTIFY_RTOL
+from ..incremental.modes import ALL_PAIRS, U_Z, mode_pairs
 from ..incremental.targets import collocation_targets, impedance_targets, resolving_nodes
 from ..outcomes import Kind, Status
 from .critical import critical_value
@@ -186,7 +191,8 @@ def _certify_choice(params, crit, scan, families, progress, disagreement: float)
     modes = scan_grid(scan.m_range, scan.n_range, False, families)
     state = solve_base_state(params.at(crit.solve_for, before))
     reference = solve_base_state(params.reference())
-    f = _in_batches(ImpedanceSigns(state, reference), modes, progress)
+    stable = unloaded_signs(reference, modes)
+    f = _in_batches(functools.partial(kernel_signs, state), modes, progress) * stable
     suspects = np.flatnonzero(~(f > 0))  # changed sign, or no sign (NaN, 0)
     for i in suspects[np.argsort(f[suspects])]:  # the most unstable-looking first
         if _collocation_stable(state, reference, modes[i]):
@@ -212,16 +218,50 @@ def _collocation_stable(state, reference, row) -> bool:
     )
 
 
-@dataclasses.dataclass(frozen=True)
-class ImpedanceSigns:
-    """The impedance kernel's sign of some modes at ``state`` times its sign on the unloaded
-    ``reference``: -1 for a mode whose sign has changed, 0 where a sign is not known."""
+#: modes of a family block whose sign on the unloaded tube is read, besides its extremes
+SAMPLES = 16
 
-    state: object
-    reference: object
 
-    def __call__(self, rows) -> np.ndarray:
-        return kernel_signs(self.state, rows) * kernel_signs(self.reference, rows)
+def unloaded_signs(reference, modes) -> np.ndarray:
+    """The kernel's sign of every row of ``modes`` on the unloaded tube ``reference``: one
+    sign per family block (the Stroh pairs a row keeps, :func:`mode_pairs`), read at
+    SIGN_RTOL at the block's extreme modes and SAMPLES spread over it.
+
+    Why one: on a stress-free tube no mode of a block has a non-trivial solution for any
+    real (m, k) of the block's domain (m >= 1, k > 0 for the wrinkles; m = 0 the rings and
+    the torsion, k = 0 the prismatic m >= 2): the incremental energy is positive definite
+    and no rigid motion has the form U(r) exp(i (m theta + k z)) there. The target is
+    continuous in (m, k) (f exp(log_norm) is det M2, analytic), so it keeps one sign over
+    the block (the argument of scan_grid.stable_signs, along modes instead of tubes); it is
+    +1 in every mode of eight tubes read at 1e-12 (one to four layers, dielectric, Gent,
+    Mooney-Rivlin, a film to m = 2000, n = 120). A block whose samples disagree (a kernel
+    misread: a chart's pole once gave -0.7 at 1e-9, docs/reliability.md) is read mode by
+    mode, as :func:`kernel_signs` reads the state; so is a row outside those domains (a
+    hand-made range with n = 0 reaches the rigid motions at k = 0).
+    """
+    pairs, signs = mode_pairs(modes), np.zeros(len(modes))
+    prismatic = pairs == ALL_PAIRS & ~U_Z
+    block_of = np.where(np.where(prismatic, modes[:, 0] >= 2, modes[:, 1] >= 1), pairs, -1)
+    for p in np.unique(block_of):
+        block = np.flatnonzero(block_of == p)
+        s = _block_sign(reference, modes[block]) if p >= 0 else 0.0
+        signs[block] = s if s != 0 else kernel_signs(reference, modes[block])
+    return signs
+
+
+def _block_sign(reference, rows) -> float:
+    """The one sign of a block's ``rows`` on the unloaded ``reference`` where its sampled
+    modes agree on it at SIGN_RTOL, else 0 (no sign assumed)."""
+    s = np.sign(impedance_targets(reference, rows[_spread(rows)], rtol=SIGN_RTOL))
+    return float(s[0]) if s[0] != 0 and np.all(s == s[0]) else 0.0
+
+
+def _spread(rows) -> np.ndarray:
+    """Indices of ``rows``: its extremes in m, n and m + n, and SAMPLES evenly spread."""
+    m, n = rows[:, 0], rows[:, 1]
+    ends = [f(x) for x in (m, n, m + n) for f in (np.argmin, np.argmax)]
+    even = np.linspace(0, len(rows) - 1, min(SAMPLES, len(rows))).astype(int)
+    return np.unique(np.concatenate([ends, even]))
 
 
 def kernel_signs(state, rows) -> np.ndarray:
