@@ -4,6 +4,7 @@ a growth component as g_theta (growth[K] is layer K's growth), a curve's --along
 (not as solve_for), and the remedy of "no mode bifurcates" in the terms of what was asked
 (no --m-max for one --mode, no --side for growth)."""
 
+import math
 import re
 import warnings
 from pathlib import Path
@@ -31,7 +32,7 @@ TUBE = Tube((Layer(1.1), Layer(2.0)))
         ("layers[2].thickness", 1e-17, "layers[2].thickness = 1e-17", ">= 2e-16"),
         ("layers[1].outer_radius", 2.25, "layers[1].outer_radius = 2.25", "1 < R < 2"),
         ("layers[2].outer_radius", 0.5, "layers[2].outer_radius = 0.5", "> 1.1"),
-        ("layers[2].shear_modulus", -1.0, "layers[2].shear_modulus = -1.0", "0 < value"),
+        ("layers[2].shear_modulus", -1.0, "layers[2].shear_modulus = -1.0", "1e-08 to 1e+08"),
     ],
 )
 def test_a_key_of_a_layered_tube_is_refused_in_its_own_terms(key, value, named, valid):
@@ -138,6 +139,16 @@ def test_a_layer_s_modulus_outside_the_supported_range_is_refused_in_one_line(fi
         Layer(3.0, **{field: value})
     with pytest.raises(ParameterError, match="^" + re.escape(f"layers[2].{want}")):
         TUBE.at(f"layers[2].{field}", value)
+
+
+@pytest.mark.parametrize("field", ["shear_modulus", "permittivity"])
+@pytest.mark.parametrize("value", [-0.0, 0.0, -1.0, math.nan, math.inf])
+def test_a_layer_s_modulus_not_positive_names_the_supported_range(field, value):
+    # probe 9b: permittivity = -0.0 was refused with "valid range: 0 < value < inf", not
+    # the supported range the positive values outside it are refused with
+    want = f"{field} = {value!r} is out of range; valid range: 1e-08 to 1e+08 (of the reference)"
+    with pytest.raises(ParameterError, match="^" + re.escape(want) + "$"):
+        Layer(3.0, **{field: value})
 
 
 def test_the_ends_of_the_modulus_range_are_accepted_and_their_ratio_is_bounded():

@@ -61,8 +61,8 @@ def _growth(name: str, value, valid: str) -> float:
 def modulus(name: str, value) -> float:
     """A layer's shear modulus or permittivity > 0 inside the supported range (params.py):
     1e-300 was accepted and failed as a ZeroDivisionError deep in a scan."""
-    v = _number(name, value, "0 < value < inf", lambda v: v > 0)
     lo, hi = MODULI
+    v = _number(name, value, f"{lo:g} to {hi:g} (of the reference)", lambda v: v > 0)
     if not lo <= v <= hi:
         raise ParameterError(
             f"{name} = {v:.6g} is outside the supported range {lo:g} to {hi:g}: {MODULI_WHY}"
