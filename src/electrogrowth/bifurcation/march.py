@@ -17,7 +17,8 @@ the base state is lost between two steps the threshold is located exactly and ap
 with shrinking steps. Modes that change sign in a step are narrowed by a shared bisection
 and finished with Brent's method; a mode whose target dips towards zero between steps
 without crossing is examined by a bounded minimisation; a single crossing is finished near
-its loose root. The stepping, the prediction and
+its loose root. The loose signs are those of the caller's tolerance unless they do not
+resolve this tube's targets at the start (:func:`calibrated`). The stepping, the prediction and
 the location are the continuation engine's (continuation/: MODE_STEPS, EventWatch,
 first_roots); the march says what a state, a mode and a lost state are.
 """
