@@ -390,3 +390,24 @@ def test_a_small_critical_force_is_within_its_estimates(layers):
     for a in pts:
         for b in pts:
             assert abs(a.value - b.value) <= a.error_estimate + b.error_estimate
+
+
+def test_an_estimate_is_at_least_the_accuracy_asked():
+    """Found by probing (round 9a, D3): an inner film [1, 1.001] (mu 1) on a substrate to 2
+    (mu 1e-4), hoop growth, mode (67, 0), gave 1.0320894981908515 with an estimate of
+    3.4e-14, status OK; its value at rtol 1e-14 is 1.0320894981896265 (the shooting twin's
+    root: 1.0320894981896187), an error of 1.2e-12, 36x the estimate. The second resolution
+    (rtol 1e-10) landed on the same root to 2e-16: both carried the same error. Now an
+    estimate is at least ACHIEVED rtol |value| (error_estimate.achieved_floor)."""
+    film = Tube((Layer(1.001, shear_modulus=1.0), Layer(2.0, shear_modulus=1e-4)), length=2.0)
+    point = critical_value(film, 67, 0, "growth[1].theta")
+    ref = critical_value(film, 67, 0, "growth[1].theta", rtol=1e-14)
+    assert point.status == Status.OK
+    assert abs(point.value - ref.value) <= point.error_estimate
+
+
+def test_the_floor_is_relative_to_the_value():
+    """A small value (a critical force of a soft tube, 6e-5) gets a relative floor, not
+    rtol max(1, |value|), which would say 1e-12 of a value known to 2e-14."""
+    assert error_estimate.achieved_floor(-6.27e-5, 1e-12) == pytest.approx(3.135e-16)
+    assert error_estimate.achieved_floor(1.032, 1e-12) == pytest.approx(5.16e-12)

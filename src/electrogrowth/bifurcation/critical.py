@@ -51,7 +51,7 @@ from ..model.layers import Tube
 from ..outcomes import Kind, Outcome, Status
 from ..summary import critical_html
 from .along import TubeAt, root_mode
-from .error_estimate import collocation_floor, second_resolution
+from .error_estimate import achieved_floor, collocation_floor, second_resolution
 from .march import ONE_MODE_STEPS, control_path, first_bifurcations
 from .problem import Problem, as_problem
 
@@ -173,7 +173,8 @@ def critical_value(
         The compiled Riccati kernel or the independent spectral collocation.
     rtol : float
         Local accuracy of the integration (default 1e-12, valid 1e-14 to 1e-4); the value is
-        converged to ~10 rtol. A value whose
+        converged to a few rtol, and its error estimate is at least 5 rtol |value|
+        (error_estimate.achieved_floor). A value whose
         error estimate exceeds CERTIFIED rtol max(1, |value|) is solved again at rtol / 100,
         and returned with status INACCURATE if it still does.
     bracket : (float, float), optional
@@ -344,6 +345,7 @@ def _solve(
     estimate = second_resolution(root_mode(at, coarse, mode, sref), value, path)
     if check_method(method) is Method.COLLOCATION:
         estimate = max(estimate, collocation_floor(Remembered(g), value, path))
+    estimate = max(estimate, achieved_floor(value, acc.fine))  # the two may share an error
     return CriticalPoint(
         solve_for,
         value,

@@ -38,6 +38,28 @@ def second_resolution(g_coarse, value: float, path: tuple[float, float]) -> floa
     return windows[-1][2]  # the widest window's half-width
 
 
+#: a value solved at ``rtol`` is not known better than ACHIEVED rtol |value|, whatever its
+#: second resolution says: the kernel's rtol is a local tolerance, and the error it leaves in
+#: a value accumulates over the steps (probe 9a D3: 1.2 rtol |value| at rtol 1e-12 with two
+#: resolutions 2e-16 apart). Not more: the floor decides the estimate of many values (the
+#: paper's tube, growth, (0, 1): 1.4e-12 -> 6.3e-12 for an error of 1.6e-14), and an
+#: overstated estimate costs printed digits. A film's (135, 3) at rtol 1e-10 is 10 rtol
+#: |value| off, twice this floor (its second resolution covers it at 1e-11 and 1e-12):
+#: docs/derivation.md section 6
+ACHIEVED = 5.0
+
+
+def achieved_floor(value: float, rtol: float) -> float:
+    """The least error estimate of a value solved at ``rtol``: ACHIEVED rtol |value|. Two
+    resolutions 100x apart can share their error: a film's (67, 0) at rtol 1e-12 and at
+    1e-10 landed 2e-16 apart, both 1.2e-12 from the value at 1e-14 (probe 9a, D3). Relative
+    to |value|, not max(1, |value|): the kernel's tolerance is relative, and a critical force
+    of 6e-5 known to 2e-14 is not to be reported as known to 1e-11 (the CLI prints the digits
+    the estimate supports). A small value whose error is larger still, an absolute one, is
+    the second resolution's to show. docs/derivation.md section 6."""
+    return ACHIEVED * rtol * abs(value)
+
+
 #: the secant's step back towards the path's start, and the first window's half-width,
 #: relative to max(1, |value|)
 SECANT_STEP = 1e-6

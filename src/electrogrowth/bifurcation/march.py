@@ -17,7 +17,8 @@ the base state is lost between two steps the threshold is located exactly and ap
 with shrinking steps. Modes that change sign in a step are narrowed by a shared bisection
 and finished with Brent's method; a mode whose target dips towards zero between steps
 without crossing is examined by a bounded minimisation; a single crossing is finished near
-its loose root. The stepping, the prediction and
+its loose root. The loose signs are those of the caller's tolerance unless they do not
+resolve this tube's targets at the start (:func:`calibrated`). The stepping, the prediction and
 the location are the continuation engine's (continuation/: MODE_STEPS, EventWatch,
 first_roots); the march says what a state, a mode and a lost state are.
 """
@@ -50,7 +51,7 @@ from ..errors import (
     Remedy,
 )
 from ..incremental.targets import SIGN_TUBE as SIGN_TUBE  # re-exported: its grids' signs
-from ..incremental.targets import Sample, natural_family, row_family
+from ..incremental.targets import ImpedanceTarget, Sample, natural_family, row_family
 from ..model.controls import KINDS
 from ..model.layers import Tube
 from .along import RootRows, Signed, TubeAt
@@ -179,7 +180,9 @@ def first_bifurcations(
         path = dataclasses.replace(path, end=until)
     x0, sense = path.start, path.sense
     state = at.state(x0)
-    g0 = sref * targets(state, modes)
+    raw = targets(state, modes)
+    targets, raw = calibrated(targets, state, modes, raw)
+    g0 = sref * raw
     doubt = np.nonzero(g0 <= 0)[0]
     if doubt.size and brent_targets is not None:  # a loose sign may be wrong: ask again
         g0[doubt] = sref[doubt] * brent_targets(state, modes[doubt])
@@ -262,6 +265,49 @@ def first_bifurcations(
                 f"no mode bifurcates for {solve_for} between {x0:g} and {last:g}"
             )
     return MarchResult(found[:top], threshold)
+
+
+#: the loose signs resolve a tube's targets when, on a sample of its modes at the march's
+#: start, the 90th percentile of |loose - fine| / |fine| is at most this: then a mode's loose
+#: sign is right until it is within ~1e-4 of the path's distance to its root, an ordering
+#: the LATER checks of continuation/events.py finish on fine values. Ordinary tubes (the
+#: 12 points of benchmarks/bench.py, five layered ones) read 1e-5 at rtol 1e-5 (90th
+#: percentile over 443 modes at most 3e-5); a film 1e4 times as stiff as its substrate
+#: (h = 1e-3) reads 4e-4 to 2e-2, and its loose signs stayed wrong up to 1e-2 of the path
+#: past a root: its scan reported the ring (0, 111) for (0, 110) (probe 9a, D1)
+LOOSE_RESOLVES = 1e-4
+#: the sample: this many modes spread evenly over the batch (the grid's order spreads m, n)
+CALIBRATION_MODES = 16
+#: the reference of the calibration, and the floor of a tightened loose tolerance
+CALIBRATION_FINE = 1e-12
+LOOSE_FLOOR = 1e-9
+
+
+def calibrated(targets, state, modes: np.ndarray, raw: np.ndarray):
+    """(targets, raw): the march's loose ``targets`` and their values ``raw`` of ``modes`` at
+    the start ``state``, tightened (x100 steps, down to LOOSE_FLOOR) until they resolve this
+    tube's targets (LOOSE_RESOLVES against CALIBRATION_FINE, on CALIBRATION_MODES of the
+    modes), then re-read. A target without a kernel tolerance (collocation's) or one already
+    at the floor is returned as it is. docs/derivation.md section 7."""
+    if not isinstance(targets, ImpedanceTarget) or targets.rtol <= LOOSE_FLOOR:
+        return targets, raw
+    pick = np.unique(np.linspace(0, modes.shape[0] - 1, CALIBRATION_MODES).astype(int))
+    fine = ImpedanceTarget(CALIBRATION_FINE)(state, modes[pick])
+    start, loose = targets, raw[pick]
+    while targets.rtol > LOOSE_FLOOR and loose_error(loose, fine) > LOOSE_RESOLVES:
+        targets = dataclasses.replace(targets, rtol=max(targets.rtol / 100.0, LOOSE_FLOOR))
+        loose = targets(state, modes[pick])
+    if targets is start:
+        return targets, raw
+    return targets, targets(state, modes)
+
+
+def loose_error(loose: np.ndarray, fine: np.ndarray) -> float:
+    """The 90th percentile of |loose - fine| / |fine| (finite values only): one or two modes
+    of tiny target (a thin tube's probe (0, 60), 1e-3 off at 2e-5) do not tighten a march."""
+    rel = np.abs(loose - fine) / np.abs(fine)
+    rel = rel[np.isfinite(rel)]
+    return float(np.quantile(rel, 0.9)) if rel.size else 0.0
 
 
 class KernelFailures:

@@ -17,7 +17,9 @@ name                   value                              why
                        else 72                            (more where a mode needs them)
 ``STABLE_SIGN``        1e-10                              sign of one mode on the unloaded tube
 ``SCAN_SIGNS``         1e-5                               signs of every mode along a scan's march
-                                                          (no sign error seen at 1e-4)
+                                                          (no sign error seen at 1e-4); tightened
+                                                          for a tube whose targets it does not
+                                                          resolve (march.calibrated)
 ``SCAN_STABLE_SIGNS``  1e-9                               signs of every mode on the unloaded tube
 ``runners_up``         max(rtol, 1e-9)                    the runners-up of a scan; the critical
                                                           mode is re-solved at ``fine``
