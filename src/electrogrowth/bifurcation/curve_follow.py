@@ -21,12 +21,13 @@ from ..continuation.path import Point
 from ..continuation.predict import secant_bracket
 from ..errors import ElectrogrowthError
 from ..incremental.accuracy import SCAN_SIGNS
-from ..incremental.targets import impedance_targets
+from ..incremental.targets import ImpedanceTarget
 from ..interrupts import reraise_interrupt
 from ..model.layers import Tube
 from ..outcomes import NO_MODE, Kind
 from .curve_record import CurvePoint, _accuracy, _failed_point, _scan_point
 from .directions import past_surface
+from .march import calibrated
 from .scan import ScanOptions
 from .scan_grid import scan_grid, stable_signs
 
@@ -116,8 +117,9 @@ class _Follower:
 
     def _all_stable(self, at: Tube, best, value: float) -> bool:
         """Every mode of the scan's grid but ``best`` (None: all) is still on its stable
-        side (the sign on the unloaded tube, as in a scan's march; loose targets) just
-        before ``value``."""
+        side (the sign on the unloaded tube, as in a scan's march; loose targets, tightened
+        as a march's where they do not resolve this tube's targets: march.calibrated)
+        just before ``value``."""
         o = self.options
         families = (o.prismatic, o.torsional)
         grid = scan_grid(*self.ranges, o.extend, families)
@@ -127,5 +129,6 @@ class _Follower:
             other = ~((grid[:, 0] == best[0]) & (grid[:, 1] == best[1]))
         before = value - self.sense * 1e-9 * max(1.0, abs(value))
         state = solve_base_state(at.at(self.solve_for, before))
-        signs = signs[other] * impedance_targets(state, grid[other], rtol=SCAN_SIGNS)
-        return bool(np.all(signs > 0))
+        rows, loose = grid[other], ImpedanceTarget(SCAN_SIGNS)
+        _, f = calibrated(loose, state, rows, loose(state, rows))
+        return bool(np.all(signs[other] * f > 0))
