@@ -47,6 +47,9 @@ def test_json_and_files_of_a_charged_pressurised_bilayer(tmp_path, capsys):
     assert status == 0, err
     rec = json.loads(out)
     assert rec["m"] == 12 and rec["n"] == 0
+    # (13, 0) comes first on this tube (docs/postbuckling.md): said, not hidden (probe 9b D7)
+    first = "mode (12, 0) is not the tube's first: (13, 0) bifurcates first, at"
+    assert rec["not_first"].startswith(first) and f"note: {first}" in err
     assert abs(rec["onset_fe"] - rec["onset_linear"]) < 2e-3 * rec["onset_linear"]
     assert rec["mesh"]["elements"] == (2 + 6) * 3
     branch = rec["branch"]
@@ -111,3 +114,15 @@ def test_meridian_json_and_files(tmp_path, capsys, monkeypatch):
     assert rec["ended"] is None
     names = {p.name for p in (tmp_path / "out").iterdir()}
     assert {"branch.csv", "branch.png", "folding.png", "shape-2.vtu"} <= names
+
+
+def test_no_note_for_the_tube_s_first_mode(tmp_path):
+    """The note names another mode only where one comes first: (13, 0) is this tube's."""
+    from electrogrowth.bifurcation.scan import scan_modes
+    from electrogrowth.cli.postbuckle import _not_first
+    from electrogrowth.model.tube_file import load_tube
+
+    (tmp_path / "tube.toml").write_text(TUBE)
+    scan = scan_modes(load_tube(tmp_path / "tube.toml"), "growth[1].theta")
+    assert _not_first(scan, (13, 0), "growth[1].theta") == ""
+    assert _not_first(scan, (12, 0), "growth[1].theta").startswith("mode (12, 0) is not")

@@ -10,8 +10,9 @@ import json
 import sys
 from pathlib import Path
 
-from ..errors import MissingDependencyError, ParameterError, Remedy
+from ..errors import ElectrogrowthError, MissingDependencyError, ParameterError, Remedy
 from ..interrupts import Interrupted
+from ..outcomes import Kind
 from .options import add_control_options, bounded_int, check_side_option, finite_number
 from .progress import add_quiet_option, enabled
 from .tube_input import add_any_tube_options, control_of
@@ -110,8 +111,12 @@ def run_postbuckle(args) -> int:
     tube, control = control_of(args)
     if args.mode is not None:
         m, n = _mode_of(args.mode)
-    else:
-        m, n = _critical_prismatic(tube, control, args), 0
+    scan = _scan(tube, control, args, need=args.mode is None)
+    if args.mode is None:
+        m, n = _critical_prismatic(scan), 0
+    note = _not_first(scan, (m, n), control)
+    if note:
+        _say(f"note: {note}")
     say = _say if enabled(args) else None
     try:
         result = postbuckle(
@@ -142,7 +147,7 @@ def run_postbuckle(args) -> int:
     if result.ended:
         print(f"electrogrowth: warning: {result.ended}", file=sys.stderr)
     if args.json:
-        print(json.dumps(result.as_dict(), indent=2))
+        print(json.dumps({**result.as_dict(), "not_first": note or None}, indent=2))
     else:
         print(
             f"mode ({m}, {n}), {control}: linear onset {result.onset_linear:.8g}, FE onset"
@@ -185,12 +190,26 @@ def _mode_of(values: list[int]) -> tuple[int, int]:
     return m, n
 
 
-def _critical_prismatic(tube, control, args) -> int:
+def _scan(tube, control, args, need: bool):
+    """The tube's mode scan (~1-2 s beside the branch's minutes): which mode comes first.
+    Where a mode was given (``need`` False) a scan that fails leaves None: the branch of the
+    asked mode stands without the comparison."""
     from ..bifurcation.scan import scan_modes
 
     if enabled(args):
-        _say("scanning the modes for the critical prismatic one")
-    scan = scan_modes(tube, control, side=args.side)
+        _say("scanning the modes: which comes first")
+    try:
+        return scan_modes(tube, control, side=args.side)
+    except ElectrogrowthError as exc:
+        if need:
+            raise
+        _say(f"note: no scan, so whether this mode comes first is not known: {exc}")
+        return None
+
+
+def _critical_prismatic(scan) -> int:
+    """m of the first prismatic mode (m, 0), m >= 2, among the scan's critical mode and its
+    runners-up."""
     for point in (scan.critical, *scan.runners_up):
         m, n = getattr(point, "m", None), getattr(point, "n", None)
         if n == 0 and isinstance(m, int) and m >= 2:
@@ -200,6 +219,26 @@ def _critical_prismatic(tube, control, args) -> int:
         f"the scan's critical mode is ({c.m}, {c.n}) and no prismatic mode (m, 0) is among"
         " its runners-up; give --mode M (the cross-section, (m, 0)) or --mode 0 N (the"
         " meridian, (0, n))"
+    )
+
+
+def _not_first(scan, mode: tuple[int, int], control: str) -> str:
+    """Why the branch of ``mode`` is not the tube's own (another mode, the short-wave limit
+    or the loss of the state comes first), or "": the cross-section and the meridian hold
+    one family each, and the first mode among them need not be the tube's first."""
+    if scan is None:
+        return ""
+    c = scan.critical
+    if c.kind == Kind.BIFURCATION and (c.m, c.n) == mode:
+        return ""
+    first = {
+        Kind.BIFURCATION: f"({c.m}, {c.n}) bifurcates first",
+        Kind.SURFACE: "the short-wave (surface) limit comes first",
+        Kind.THRESHOLD: "the axisymmetric state is lost first",
+    }.get(c.kind, f"{c.kind} comes first")
+    return (
+        f"mode {mode} is not the tube's first: {first}, at {control} = {c.value:.10g};"
+        " the branch below is that of the mode asked for"
     )
 
 
