@@ -227,3 +227,33 @@ def test_cli_negative_quantity_is_named_with_its_range(capsys, argv, match):
     assert main(["state", "--outer-radius", "1.4", *argv]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and match in err
+
+
+def test_cli_loads_in_physical_units_equal_the_nondimensional_input(capsys):
+    """Probe 9b: `--inner-pressure 5kPa` was refused though pressures are printed in kPa.
+    With --shear-modulus 100 kPa a pressure of 5 kPa is P / mu = 0.05 (the outer one may be
+    negative); with --inner-radius 2 mm a force of -0.1 N is N / (mu R_i^2) = -0.25."""
+    units = ["--shear-modulus", "100kPa", "--inner-radius", "2mm", "--outer-radius", "1.4"]
+    phys = _state(capsys, [*units, "--inner-pressure", "5kPa", "--outer-pressure", "-2kPa"])
+    plain = _state(capsys, ["--outer-radius", "1.4", "--inner-pressure", "0.05",
+                            "--outer-pressure", "-0.02"])  # fmt: skip
+    assert (phys["inner_pressure"], phys["outer_pressure"]) == (0.05, -0.02)
+    assert phys["lambda_i"] == pytest.approx(plain["lambda_i"], rel=1e-14)
+    phys = _state(capsys, [*units, "--axial-force", "-0.1N"])
+    plain = _state(capsys, ["--outer-radius", "1.4", "--axial-force", "-0.25"])
+    assert phys["axial_force"] == pytest.approx(-0.25, rel=1e-14)
+    assert phys["lambda_i"] == pytest.approx(plain["lambda_i"], rel=1e-14)
+
+
+@pytest.mark.parametrize(
+    ("argv", "match"),
+    [
+        (["--inner-pressure", "5kPa"], "5kPa is a pressure; give --shear-modulus"),
+        (["--shear-modulus", "1kPa", "--axial-force", "0.1N"], "give --inner-radius too"),
+        (["--shear-modulus", "1kPa", "--outer-pressure", "3mm"], "is not a pressure"),
+    ],
+)
+def test_cli_a_load_without_its_scale_is_one_line(capsys, argv, match):
+    assert main(["state", "--outer-radius", "1.4", *argv]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and match in err

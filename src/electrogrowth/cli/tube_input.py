@@ -18,7 +18,8 @@ from ..model.layers import Tube
 from ..model.materials import material_by_name
 from ..model.tube_file import load_tube
 from .energy import energy_from_args
-from .options import add_tube_options, finite_number, tube_from_args
+from .options import add_tube_options, tube_from_args
+from .units import number_or_quantity
 
 #: shared options whose defaults are applied here, so that a given one can override a file
 _SHARED = ("outer_radius", "growth", "stretch", "voltage", "length", "material")
@@ -46,22 +47,25 @@ def add_any_tube_options(parser: argparse.ArgumentParser, *, outer_radius=None) 
     )
     tube.add_argument(
         "--inner-pressure",
-        type=finite_number,
+        type=number_or_quantity,
         metavar="P_I",
-        help="follower pressure P_i on the inner face, units mu (> 0 inflates; default 0)",
+        help="follower pressure P_i on the inner face, units mu (> 0 inflates; default 0), or"
+        " a pressure with its unit (5kPa, with --shear-modulus)",
     )
     tube.add_argument(
         "--outer-pressure",
-        type=finite_number,
+        type=number_or_quantity,
         metavar="P_O",
-        help="follower pressure P_o on the outer face, units mu (> 0 squeezes; default 0)",
+        help="follower pressure P_o on the outer face, units mu (> 0 squeezes; default 0), or"
+        " a pressure with its unit (5kPa, with --shear-modulus)",
     )
     tube.add_argument(
         "--axial-force",
-        type=finite_number,
+        type=number_or_quantity,
         metavar="F",
-        help="axial force on the ends (units mu R_i^2; free ends: 0) instead of --stretch:"
-        " lambda_z is then solved for",
+        help="axial force on the ends (units mu R_i^2; free ends: 0), or a force with its unit"
+        " (0.1N, with --shear-modulus and --inner-radius), instead of --stretch: lambda_z is"
+        " then solved for",
     )
     tube.add_argument(
         "--closed-ends",

@@ -4,8 +4,9 @@
 Without any of them nothing changes: every number is non-dimensional (mu = eps = R_i = 1).
 With them, the options that take a length or a voltage accept a quantity as well as a number
 (a number keeps its non-dimensional meaning): ``--outer-radius 2.8mm`` or ``1.4``,
-``--length 10mm`` or ``5``, ``--voltage 3kV`` or ``0.0765``. After parsing,
-:func:`resolve_units` turns the quantities into Rbar_o, L and Vbar (model/units.py) and
+``--length 10mm`` or ``5``, ``--voltage 3kV`` or ``0.0765``, ``--inner-pressure 5kPa`` or
+``0.05``, ``--axial-force -0.1N`` or ``-0.25``. After parsing, :func:`resolve_units` turns
+the quantities into Rbar_o, L, Vbar, P / mu and N / (mu R_i^2) (model/units.py) and
 leaves ``args.scales`` (a :class:`Scales`, or None) for the output in physical units.
 pint (the ``units`` extra) is imported only when a quantity is given.
 """
@@ -55,6 +56,15 @@ DIMENSIONAL = {
     "outer_radius": ("--outer-radius", "length", "m"),
     "length": ("--length", "length", "m"),
     "voltage": ("--voltage", "voltage", "V"),
+    "inner_pressure": ("--inner-pressure", "pressure", "Pa"),
+    "outer_pressure": ("--outer-pressure", "pressure", "Pa"),
+    "axial_force": ("--axial-force", "force", "N"),
+}
+#: the loads: dest -> the scales their unit needs (in units mu and mu R_i^2)
+LOADS = {
+    "inner_pressure": ("--shear-modulus",),
+    "outer_pressure": ("--shear-modulus",),
+    "axial_force": ("--shear-modulus", "--inner-radius"),
 }
 
 
@@ -66,7 +76,9 @@ def add_unit_options(parser: argparse.ArgumentParser) -> None:
         " --outer-radius and --length accept lengths (2.8mm) as well as Rbar_o and L;"
         " --shear-modulus and --permittivity with both radii (R_o from --outer-radius or"
         " the --tube file) let --voltage take a voltage"
-        " (3kV), converted to Vbar = V / (R_o - R_i) sqrt(eps / mu). Results are then also"
+        " (3kV), converted to Vbar = V / (R_o - R_i) sqrt(eps / mu); --shear-modulus lets"
+        " --inner-pressure and --outer-pressure take a pressure (5kPa), with --inner-radius"
+        " --axial-force a force (0.1N). Results are then also"
         " printed in these units (voltages in kV, stresses in kPa, lengths in mm, the axial"
         " force in N; a length only if you gave one).",
     )
@@ -169,4 +181,24 @@ def resolve_units(args: argparse.Namespace) -> None:
             )
         volts = magnitude(quantities["voltage"], "--voltage", "voltage", "V", zero=True)
         args.voltage = scales.to_vbar(volts)
+    for dest in LOADS:
+        if dest in quantities:
+            setattr(args, dest, _load(dest, quantities[dest], r_i, mu))
     args.scales = scales
+
+
+def _load(dest: str, text: str, r_i: float, mu: float) -> float:
+    """A pressure in units mu, or the axial force in units mu R_i^2, from its quantity."""
+    flag, kind, unit = DIMENSIONAL[dest]
+    known = {"--shear-modulus": not math.isnan(mu), "--inner-radius": not math.isnan(r_i)}
+    missing = [name for name in LOADS[dest] if not known[name]]
+    if missing:
+        raise ParameterError(
+            f"{flag} {text} is a {kind}; give {' and '.join(missing)} too (the unit of"
+            f" {'stress' if kind == 'pressure' else 'force, mu R_i^2'}), or a value in units"
+            f" {'mu' if kind == 'pressure' else 'mu R_i^2'}"
+        )
+    from ..model.units import magnitude
+
+    value = magnitude(text, flag, kind, unit, signed=True)
+    return value / mu if kind == "pressure" else value / (mu * r_i * r_i)

@@ -54,11 +54,13 @@ def registry():
     return pint.UnitRegistry()
 
 
-def magnitude(value, name: str, kind: str, unit: str, *, zero: bool = False) -> float:
+def magnitude(
+    value, name: str, kind: str, unit: str, *, zero: bool = False, signed: bool = False
+) -> float:
     """``value`` (a pint quantity or a string like "2 mm") in ``unit``, a float; a
     ParameterError names the value when it is no quantity, has no unit or is not a ``kind``
     (a word: "length", "pressure", ...) of the dimension of ``unit``, or is not positive
-    (or zero, with ``zero``)."""
+    (or zero, with ``zero``; any finite value with ``signed``: a load)."""
     if isinstance(value, str) and not (len(value) <= 100 and _QUANTITY_TEXT.fullmatch(value)):
         raise ParameterError(
             f"{name} = {value[:100]!r} is not a quantity: write a number and its unit, e.g."
@@ -74,6 +76,8 @@ def magnitude(value, name: str, kind: str, unit: str, *, zero: bool = False) -> 
     if q.dimensionality != ureg.Quantity(1.0, unit).dimensionality:
         raise ParameterError(f"{name} = {value!r} is not a {kind} (its unit is {q.units:~})")
     out = float(q.to(unit).magnitude)
+    if signed and math.isfinite(out):
+        return out
     if not (math.isfinite(out) and (out > 0 or (zero and out == 0))):
         bound = "0 <=" if zero else "0 <"
         raise ParameterError(f"{name} = {value!r} is out of range; need {bound} {name} < inf")
