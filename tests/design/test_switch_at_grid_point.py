@@ -1,0 +1,41 @@
+"""A design range that starts exactly at a switch (probe 9b, D1; the natural zoom: the two
+switches that bound the target's region taken as the range).
+
+Film [1, 1.01] (mu 100) on [1.01, 2] (mu 1), hoop growth of the film, its thickness varied
+over [A, B], A and B the switches (35, 0) -> (34, 0) and (34, 0) -> (33, 0) of the same
+design over [0.008, 0.012]. The scan at A picks (35, 0) (right: single-mode solves put it
+5e-16 before (34, 0)) but lists (34, 0) 5e-12 *before* it. ``_Locator._crossing`` judged
+the sign change by those remembered scan values, saw none ("a third mode in between"),
+halved towards A until the depth ran out, and ``_split`` at depth 0 dropped the switch:
+(35, 0) on [A, A], then (34, 0) only from A + 2.5e-6, a silent gap of 0.8 % of the range.
+Now the ends are judged by single-mode solves, a tie there is the switch, and a switch is
+never dropped when the halvings run out.
+"""
+
+import pytest
+
+from electrogrowth import Layer, ScanOptions, Tube, mode_sequence
+
+A = 0.00978754728637357  # the switch (35, 0) -> (34, 0) of the same sequence on [0.008, 0.012]
+B = 0.01011219017563628  # the switch (34, 0) -> (33, 0)
+KEY, CONTROL = "layers[1].thickness", "growth[1].theta"
+OPTIONS = ScanOptions((28, 40), (1, 1), top=5)
+
+
+def _film():
+    return Tube([Layer(1.01, shear_modulus=100.0), Layer(2.0)], length=1.0, stretch=1.0)
+
+
+@pytest.fixture(scope="module")
+def sequence():
+    return mode_sequence(_film(), CONTROL, (KEY, A, B), points=3, options=OPTIONS)
+
+
+def test_sequence_starting_at_a_switch_covers_its_range(sequence):
+    ivs = sequence.intervals
+    # the intervals tile [A, B]: each starts where the previous ends (a switch)
+    for left, right in zip(ivs, ivs[1:]):
+        assert abs(right.lo - left.hi) <= 1e-13 * A, (left, right, sequence.switches)
+    assert abs(ivs[-1].hi - B) <= 1e-13 * B
+    # (34, 0) is first on the whole open range (single-mode solves: the switches are A, B)
+    assert any(iv.mode == (34, 0) and iv.lo - A <= 1e-12 * A for iv in ivs), ivs
