@@ -12,9 +12,13 @@ Now the ends are judged by single-mode solves, a tie there is the switch, and a 
 never dropped when the halvings run out.
 """
 
-import pytest
+import math
 
-from electrogrowth import Layer, ScanOptions, Tube, mode_sequence
+import pytest
+from scipy.optimize import brentq
+
+from electrogrowth import Layer, ScanOptions, Tube, critical_value, mode_sequence
+from electrogrowth.design import prescribe
 
 A = 0.00978754728637357  # the switch (35, 0) -> (34, 0) of the same sequence on [0.008, 0.012]
 B = 0.01011219017563628  # the switch (34, 0) -> (33, 0)
@@ -39,3 +43,23 @@ def test_sequence_starting_at_a_switch_covers_its_range(sequence):
     assert abs(ivs[-1].hi - B) <= 1e-13 * B
     # (34, 0) is first on the whole open range (single-mode solves: the switches are A, B)
     assert any(iv.mode == (34, 0) and iv.lo - A <= 1e-12 * A for iv in ivs), ivs
+
+
+def _v(mode, x):
+    return critical_value(_film().at(KEY, x), *mode, CONTROL).value
+
+
+def test_widest_margin_at_a_kink_is_the_tie_of_its_two_competitors():
+    """The widest margin for (34, 0) sits where (33, 0) and (35, 0) tie; bounded Brent
+    maximisation of M left it 4.5e-8 (relative) off, M 2.7e-6 low. The independent check:
+    brentq on the difference of two single-mode critical values."""
+    film = _film()
+    seq = mode_sequence(film, CONTROL, (KEY, 0.008, 0.012), points=9, options=OPTIONS)
+    d = prescribe(film, CONTROL, (34, 0), (KEY, 0.008, 0.012), sequence=seq, options=OPTIONS)
+    kink = brentq(lambda x: _v((33, 0), x) - _v((35, 0), x), A, B, xtol=1e-16, rtol=1e-15)
+    assert abs(kink - 0.009950296465216089) <= 1e-12 * kink
+    assert d.status == "found" and d.mode == (34, 0)
+    assert abs(d.x - kink) <= 1e-10 * kink, (d.x, kink)
+    v, w = _v((34, 0), kink), _v((33, 0), kink)
+    assert math.isclose(d.margin, (w - v) / v, rel_tol=1e-9), (d.margin, (w - v) / v)
+    assert set(d.tied_with) | {d.next_mode} == {(33, 0), (35, 0)}
