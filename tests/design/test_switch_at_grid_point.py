@@ -49,6 +49,16 @@ def _v(mode, x):
     return critical_value(_film().at(KEY, x), *mode, CONTROL).value
 
 
+def test_target_tied_only_at_the_range_end_is_not_first(sequence):
+    """(35, 0) ties with (34, 0) at A and comes after it on the rest of [A, B]: it was
+    "found" with the zero-width region [A, A] and to_boundary 0."""
+    d = prescribe(_film(), CONTROL, (35, 0), (KEY, A, B), sequence=sequence, options=OPTIONS)
+    assert d.status == "not_first", (d.status, d.region)
+    assert d.region == ()
+    assert d.x == A and d.next_mode == (34, 0)
+    assert abs(d.margin) <= 1e-12  # the tie: M -> 0 from below towards A
+
+
 def test_widest_margin_at_a_kink_is_the_tie_of_its_two_competitors():
     """The widest margin for (34, 0) sits where (33, 0) and (35, 0) tie; bounded Brent
     maximisation of M left it 4.5e-8 (relative) off, M 2.7e-6 low. The independent check:
@@ -63,3 +73,13 @@ def test_widest_margin_at_a_kink_is_the_tie_of_its_two_competitors():
     v, w = _v((34, 0), kink), _v((33, 0), kink)
     assert math.isclose(d.margin, (w - v) / v, rel_tol=1e-9), (d.margin, (w - v) / v)
     assert set(d.tied_with) | {d.next_mode} == {(33, 0), (35, 0)}
+
+
+def test_to_boundary_counts_the_switch_at_the_range_start(sequence):
+    """The widest margin for (34, 0) on [A, B] is at the tie of (33, 0) and (35, 0); its
+    distance to the switch at A was measured to the false boundary A + 2.5e-6 (0.000160213)
+    while the switch was lost, and the switch located at A is a switch, not just the end of
+    the range."""
+    d = prescribe(_film(), CONTROL, (34, 0), (KEY, A, B), sequence=sequence, options=OPTIONS)
+    assert d.status == "found" and d.region[0].lo == A and not d.region[0].lo_edge
+    assert d.to_boundary == d.x - A

@@ -71,7 +71,8 @@ class Design:
     switch or a located end of the valid range, next to a failed scan (None if both ends are
     the ends of the range). NOT_FIRST: no region; x is the
     closest design, M < 0, and
-    ``next_mode`` beats the target there. CREASE_FIRST: the target is first among the
+    ``next_mode`` beats the target there (where the target only ties with it at one x, an
+    interval of no width, x is that point and M ~ 0). CREASE_FIRST: the target is first among the
     wrinkles in its region, but a free face creases before it at every design there; x is
     the design nearest to wrinkling first (M < 0, ``limited_by`` "crease").
     ``crease_value`` is where a face creases at x (NaN: none; ``crease_sensitivity`` its
@@ -214,16 +215,21 @@ def prescribe(
             return []
         return _ranked(res)
 
-    region = tuple(
-        iv for iv in sequence.intervals if iv.kind == Kind.BIFURCATION and iv.mode in goal
-    )
+    hits = [iv for iv in sequence.intervals if iv.kind == Kind.BIFURCATION and iv.mode in goal]
+    # an interval of no width is a tie at one x (a range that starts at the target's switch):
+    # the target is first nowhere, it was "found" with M = 4e-16 and to_boundary 0 (probe 9b)
+    region = tuple(iv for iv in hits if iv.hi != iv.lo)
     grid = sorted(set(float(x) for x in sequence.curve.x))
     edges = no_design_ends(sequence)
     if region:
         status, best = FOUND, _best_in_region(region, grid, goal, margins, scan, edges)
     else:
-        members = set_members(goal, options)
-        status, best = NOT_FIRST, _closest(grid, goal, margins, scan, members)
+        status, best = (
+            NOT_FIRST,
+            _tied_only([iv for iv in hits if iv.hi == iv.lo], goal, margins, scan),
+        )
+        if best is None:
+            best = _closest(grid, goal, margins, scan, set_members(goal, options))
     if best is None:
         return _unreached(goal, key, sequence, region)
     x, mode, others = best
@@ -354,6 +360,20 @@ def _best_in_region(region, grid, goal: Target, margins: Margins, scan, edges=fr
         score = margins.best_margin(iv.mode, others, x, edge)[0]
         if best is None or score > best[0]:
             best = (score, x, iv.mode, others)
+    return None if best is None else best[1:]
+
+
+def _tied_only(ties, goal: Target, margins: Margins, scan):
+    """(x, target mode, competitors) at the point of ``ties`` (intervals of no width, where
+    a target mode only ties with another) with the largest M: the closest design, M ~ 0
+    (the rounding of the two values); None without such points."""
+    best = None
+    for iv in ties:
+        others = tuple(_competitors(iv.mode, scan(iv.lo), goal))
+        if others:
+            m = margins.best_margin(iv.mode, others, iv.lo)[0]
+            if best is None or m > best[0]:
+                best = (m, iv.lo, iv.mode, others)
     return None if best is None else best[1:]
 
 
