@@ -18,6 +18,7 @@ import pytest
 from scipy.optimize import brentq
 
 from electrogrowth import Layer, ScanOptions, Tube, critical_value, mode_sequence
+from electrogrowth.cli.design import summary
 from electrogrowth.design import prescribe
 
 A = 0.00978754728637357  # the switch (35, 0) -> (34, 0) of the same sequence on [0.008, 0.012]
@@ -57,6 +58,7 @@ def test_target_tied_only_at_the_range_end_is_not_first(sequence):
     assert d.region == ()
     assert d.x == A and d.next_mode == (34, 0)
     assert abs(d.margin) <= 1e-12  # the tie: M -> 0 from below towards A
+    assert any("only ties with (34, 0)" in line for line in summary(d)), summary(d)
 
 
 def test_widest_margin_at_a_kink_is_the_tie_of_its_two_competitors():
