@@ -52,9 +52,10 @@ AHEAD = 6  # competitors ahead of the closest design's target mode that are kept
 MEMBERS_MAX = 256  # a set's members solved directly when none is among a scan's first ones
 NO_DESIGN = "no design"  # limited_by: the gap to a located end of the valid range
 CREASE = "crease"  # the crease as a competitor (a tie at a kink of M)
-#: windows, widening 4-fold from XTOL, in which the kink next to the maximiser is looked for
-#: (the bounded Brent leaves it within ~50 XTOL)
-KINK_WINDOWS = 12
+#: windows, widening 4-fold from XTOL max(1, |x|), in which the kink next to the bounded
+#: Brent's maximiser is looked for: up to 1024 times its tolerance (it left the kink within
+#: 0.5 of it in probe 9b); a smooth maximum costs 4 solves per window
+KINK_WINDOWS = 6
 #: the end's gap sets M where it is within this (relative) of M: at the balance Brent
 #: leaves them ~1e-6 apart (probe 8b, D4), a relative step of the sensitivities (1e-4)
 BALANCE = 1e-4
