@@ -5,9 +5,12 @@ SWITCH) on d(x) = s (v_A(x) - v_B(x)), v a mode's first critical value (or the s
 limit); where d jumps (a window of instability opens) the switch is that jump. Between a
 mode and the threshold: bisection (continuation.events.bisect, MODE_EDGE) on whether the
 mode still bifurcates before the threshold. A located switch is checked by a scan there;
-a third mode found first splits the interval. A mode with no root before the end of the
-march is read as coming after all (+-inf in d). If a single-mode solve fails, the switch is
-bisected with scans, to a relative 1e-7 only.
+a third mode found first splits the interval (at most MAX_SPLITS times; then the switch is
+bisected with scans, or the point says it was not located: never dropped). The sign of d
+at the grid points is that of the scans' values, and where they show no sign change, that
+of single-mode solves: two modes that tie at a grid point (TIE) switch there. A mode with
+no root before the end of the march is read as coming after all (+-inf in d). If a
+single-mode solve fails, the switch is bisected with scans, to a relative 1e-7 only.
 
 Between a grid point whose scan failed (the tube already unstable at the control's start,
 no base state, ...) and one whose scan succeeded, on request (``critical_curve(...,
@@ -21,12 +24,16 @@ from __future__ import annotations
 import math
 
 from ..continuation.events import MODE_EDGE, SWITCH, bisect, brent
-from ..errors import ElectrogrowthError, NoBifurcationFound
+from ..errors import ConvergenceError, ElectrogrowthError, NoBifurcationFound
 from ..outcomes import NO_MODE, Kind
 from .curve_record import CurvePoint, Switch, _change_kind, _failed, _row
 
 #: the value recorded on the failed side of a located edge of the valid range
 NO_VALUE = math.nan
+#: two single-mode critical values this close (relative) at a grid point, in the wrong order,
+#: tie there: the switch is the grid point (each is converged to ~10 rtol = 1e-11; in probe
+#: 9b's D1 they were 5e-16 apart, the scan's runner-up 5e-12 off)
+TIE = 1e-9
 
 
 class _Locator:
@@ -106,12 +113,7 @@ class _Locator:
                 and self.sense * (check.value - first) < -1e-9 * max(1.0, abs(first))
             ):
                 return self._split(a, check, b, depth)
-        kind = _change_kind(a, b, v_before, v_after)
-        rows = [
-            (x, v_before, a.mode, kind, "", a.surface, math.nan),
-            (x, v_after, b.mode, kind, "", b.surface, math.nan),
-        ]
-        return rows, [Switch(x, v_before, a.mode, b.mode, v_after, kind)]
+        return _switch_at(a, b, x, v_before, v_after)
 
     def edge(self, a: CurvePoint, b: CurvePoint, depth: int):
         """Rows and changes strictly between neighbours a and b of which exactly one
@@ -141,8 +143,10 @@ class _Locator:
 
     def _split(self, a, mid, b, depth):
         """Locate the switches on both sides of a scanned point ``mid`` (kept as a row)."""
-        if depth <= 0 or _failed(mid):
+        if _failed(mid):
             return [], []
+        if depth <= 0:  # out of halvings: the change of mode is still located, not dropped
+            return self._last_resort(a, b)
         rows, switches = [], []
         if mid.mode != a.mode:
             rows, switches = self.between(a, mid, depth - 1)
@@ -155,13 +159,22 @@ class _Locator:
     def _crossing(self, a, b):
         """(x, value before, value after) where d = s (v_A - v_B) changes sign (Brent), or
         None if it does not. At a jump (a mode's first root appears or vanishes) the two
-        values differ: they are taken just before and just after x."""
+        values differ: they are taken just before and just after x. An end where the two
+        single-mode values tie (TIE) is itself the switch."""
 
         def d(x):
             return self.sense * (self.value_of(a, x) - self.value_of(b, x))
 
         if not d(a.x) < 0 < d(b.x):
-            return None
+            # The ends' values are the scans' (remembered), good to ~1e-11 only: a range
+            # that starts at a switch saw v_B 5e-12 before v_A at a, "no sign change", and
+            # its switch was dropped (probe 9b, D1). Judge the ends by single-mode solves.
+            self._forget_scans(a, b)
+            tie = self._tie_at_end(a, b, d)
+            if tie is not None:
+                return tie
+            if not d(a.x) < 0 < d(b.x):
+                return None
         tol = SWITCH.at(a.x)
         x = brent(d, a.x, b.x, SWITCH, named=False)
         va, vb = self.value_of(a, x), self.value_of(b, x)
@@ -169,6 +182,37 @@ class _Locator:
             step = math.copysign(4 * tol, b.x - a.x)
             va, vb = self.value_of(a, x - step), self.value_of(b, x + step)
         return x, va, vb
+
+    def _forget_scans(self, a, b):
+        """Drop the scans' values of the two modes at the two ends, so that they are solved
+        mode by mode (the surface limit is not a scan's value: kept)."""
+        for pt in (a, b):
+            if pt.kind != Kind.SURFACE:
+                for end in (a.x, b.x):
+                    self.known.pop((pt.mode, float(end)), None)
+
+    def _tie_at_end(self, a, b, d):
+        """(x, v, v) at the end x of [a, b] where d (single-mode values) is zero or of the
+        wrong sign by no more than TIE relative: the two modes tie there, a switch at the
+        grid point itself; None otherwise."""
+        for end, wrong in ((a.x, d(a.x) >= 0), (b.x, d(b.x) <= 0)):
+            va, vb = self.value_of(a, end), self.value_of(b, end)
+            if wrong and abs(va - vb) <= TIE * max(1.0, abs(va)):
+                return end, va, vb
+        return None
+
+    def _last_resort(self, a, b):
+        """The switch between a and b by bisection with scans (1e-7 relative) where the
+        halvings ran out: a silent gap in the sequence is worse than a coarse switch; a third
+        mode met there is a ConvergenceError (the point's message), never dropped."""
+        found = self._scan_bisection(a, b)
+        if isinstance(found, CurvePoint):
+            raise ConvergenceError(
+                f"the switch from mode {a.mode} to {b.mode} between {a.x:.12g} and {b.x:.12g}"
+                f" was not located: a third pattern is first at {found.x:.12g}, and the"
+                " interval was halved as often as allowed"
+            )
+        return _switch_at(a, b, *found)
 
     def _scan_bisection(self, a, b):
         """Fallback: bisect on the mode the scans find, to a relative 1e-7 in x; returns
@@ -192,3 +236,13 @@ class _Locator:
         good, _ = bisect(bifurcates, good, bad, MODE_EDGE)
         value = self.mode_value(mode, good)[0]
         return good, value, value
+
+
+def _switch_at(a: CurvePoint, b: CurvePoint, x: float, v_before: float, v_after: float):
+    """The two rows (a's mode, b's mode at x) and the Switch of a located change."""
+    kind = _change_kind(a, b, v_before, v_after)
+    rows = [
+        (x, v_before, a.mode, kind, "", a.surface, math.nan),
+        (x, v_after, b.mode, kind, "", b.surface, math.nan),
+    ]
+    return rows, [Switch(x, v_before, a.mode, b.mode, v_after, kind)]

@@ -256,6 +256,7 @@ def summary(result) -> list[str]:
         f"  {best}: {seq.key} = {result.x:.10g}, mode {result.mode} at {seq.solve_for}_cr ="
         f" {result.value:.10g}, margin {result.margin:.4g} to {_limit(result)}"
     )
+    lines += _tied_only_lines(result)
     lines += _verdict_lines(result.verdict)
     if result.to_boundary is not None:
         lines.append(f"  distance to the region's boundary: {result.to_boundary:.6g}")
@@ -263,6 +264,20 @@ def summary(result) -> list[str]:
     for p, d in sorted(result.sensitivity.items(), key=lambda kv: -abs(kv[1])):
         lines.append(f"  d{seq.solve_for}_cr/d{p} = {d:.6g}{_margin_slope(result, p)}")
     return lines
+
+
+def _tied_only_lines(result) -> list[str]:
+    """One line where a target that is first nowhere ties with the next mode at the closest
+    design (an interval of no width: its margin is ~0, of either sign by rounding)."""
+    point = any(
+        iv.lo == iv.hi == result.x and iv.mode == result.mode for iv in result.sequence.intervals
+    )
+    if result.status != "not_first" or not point:
+        return []
+    return [
+        f"  {result.mode} only ties with {result.next_mode} at this design (a switch): it is"
+        " first on no interval of the range"
+    ]
 
 
 def _tie_lines(result) -> list[str]:

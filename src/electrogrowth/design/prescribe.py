@@ -21,7 +21,8 @@ unstable at the control's start beyond it), v_T falls to the start there and M a
 without bound, so the room below the target counts too (design/margins.py: M_0 = (v_T -
 v_0) / (v_N - v_T), and at a cliff, where v_T does not fall to v_0, the relative distance
 to the end M_end; ``limited_by`` NO_DESIGN). At a tie of competitors (a kink of M) the
-margin's sensitivity is one-sided (design/onset.py :func:`kinked_margin`). docs/design.md.
+margin's sensitivity is one-sided (design/onset.py :func:`kinked_margin`), and the kink
+itself is located as the two competitors' tie (:func:`_at_kink`). docs/design.md.
 """
 
 from __future__ import annotations
@@ -31,6 +32,7 @@ import math
 
 from ..bifurcation.scan import TOP_MAX, ScanOptions, scan_modes
 from ..bifurcation.scan_grid import scan_grid
+from ..continuation.events import SWITCH, brent, widening_windows
 from ..errors import ElectrogrowthError
 from ..incremental.accuracy import check_rtol
 from ..outcomes import Kind
@@ -49,6 +51,11 @@ XTOL = 1e-9  # relative accuracy of the best design
 AHEAD = 6  # competitors ahead of the closest design's target mode that are kept
 MEMBERS_MAX = 256  # a set's members solved directly when none is among a scan's first ones
 NO_DESIGN = "no design"  # limited_by: the gap to a located end of the valid range
+CREASE = "crease"  # the crease as a competitor (a tie at a kink of M)
+#: windows, widening 4-fold from XTOL max(1, |x|), in which the kink next to the bounded
+#: Brent's maximiser is looked for: up to 1024 times its tolerance (it left the kink within
+#: 0.5 of it in probe 9b); a smooth maximum costs 4 solves per window
+KINK_WINDOWS = 6
 #: the end's gap sets M where it is within this (relative) of M: at the balance Brent
 #: leaves them ~1e-6 apart (probe 8b, D4), a relative step of the sensitivities (1e-4)
 BALANCE = 1e-4
@@ -65,7 +72,8 @@ class Design:
     switch or a located end of the valid range, next to a failed scan (None if both ends are
     the ends of the range). NOT_FIRST: no region; x is the
     closest design, M < 0, and
-    ``next_mode`` beats the target there. CREASE_FIRST: the target is first among the
+    ``next_mode`` beats the target there (where the target only ties with it at one x, an
+    interval of no width, x is that point and M ~ 0). CREASE_FIRST: the target is first among the
     wrinkles in its region, but a free face creases before it at every design there; x is
     the design nearest to wrinkling first (M < 0, ``limited_by`` "crease").
     ``crease_value`` is where a face creases at x (NaN: none; ``crease_sensitivity`` its
@@ -208,16 +216,21 @@ def prescribe(
             return []
         return _ranked(res)
 
-    region = tuple(
-        iv for iv in sequence.intervals if iv.kind == Kind.BIFURCATION and iv.mode in goal
-    )
+    hits = [iv for iv in sequence.intervals if iv.kind == Kind.BIFURCATION and iv.mode in goal]
+    # an interval of no width is a tie at one x (a range that starts at the target's switch):
+    # the target is first nowhere, it was "found" with M = 4e-16 and to_boundary 0 (probe 9b)
+    region = tuple(iv for iv in hits if iv.hi != iv.lo)
     grid = sorted(set(float(x) for x in sequence.curve.x))
     edges = no_design_ends(sequence)
     if region:
         status, best = FOUND, _best_in_region(region, grid, goal, margins, scan, edges)
     else:
-        members = set_members(goal, options)
-        status, best = NOT_FIRST, _closest(grid, goal, margins, scan, members)
+        status, best = (
+            NOT_FIRST,
+            _tied_only([iv for iv in hits if iv.hi == iv.lo], goal, margins, scan),
+        )
+        if best is None:
+            best = _closest(grid, goal, margins, scan, set_members(goal, options))
     if best is None:
         return _unreached(goal, key, sequence, region)
     x, mode, others = best
@@ -351,6 +364,20 @@ def _best_in_region(region, grid, goal: Target, margins: Margins, scan, edges=fr
     return None if best is None else best[1:]
 
 
+def _tied_only(ties, goal: Target, margins: Margins, scan):
+    """(x, target mode, competitors) at the point of ``ties`` (intervals of no width, where
+    a target mode only ties with another) with the largest M: the closest design, M ~ 0
+    (the rounding of the two values); None without such points."""
+    best = None
+    for iv in ties:
+        others = tuple(_competitors(iv.mode, scan(iv.lo), goal))
+        if others:
+            m = margins.best_margin(iv.mode, others, iv.lo)[0]
+            if best is None or m > best[0]:
+                best = (m, iv.lo, iv.mode, others)
+    return None if best is None else best[1:]
+
+
 def _closest(grid, goal: Target, margins: Margins, scan, members):
     """(x, target mode, competitors ahead of it) where the best target mode comes closest
     to first: M < 0 maximised. A set none of whose modes is among a scan's first TOP_MAX
@@ -436,4 +463,47 @@ def _refine(mode, others, a, b, x0, goal: Target, margins: Margins, scan, edge=(
         if not missing:
             break
         others = tuple(sorted(set(others) | set(missing)))
-    return x, others
+    return _at_kink(mode, others, a, b, x, margins, edge), others
+
+
+def _at_kink(mode, others, a, b, x, margins: Margins, edge=()):
+    """The kink of M next to the maximiser x of the bounded Brent (``_refine``), located as
+    the tie of its two competitors: Brent (SWITCH, as a mode switch) on s (w_1 - w_2), w_1
+    the competitor (a mode or the crease) that sets M at x, w_2 the next. The bounded
+    maximisation alone left the usual optimum, such a kink, 5e-8 (relative) off and M 3e-6
+    low (probe 9b). x itself where M is smooth there, no such tie lies within [a, b], or
+    the room below the target (``edge``) sets M."""
+    if not b > a:
+        return x
+    w = {c: _rival_value(margins, c, x) for c in (*others, CREASE)}
+    first, second = sorted(w, key=lambda c: margins.sense * w[c])[:2]
+    near = abs(w[second] - w[first]) <= onset.TIE_SCREEN * abs(margins.value(mode, x))
+    m_x = margins.best_margin(mode, others, x, edge)[0]
+    if not (near and math.isfinite(w[second]) and m_x == margins.margin(mode, x, w[first])):
+        return x
+
+    def d(t):
+        return margins.sense * (_rival_value(margins, first, t) - _rival_value(margins, second, t))
+
+    tie = _bracketed_root(d, x, a, b)
+    if tie is None or not margins.best_margin(mode, others, tie, edge)[0] >= m_x:
+        return x
+    return tie
+
+
+def _bracketed_root(d, x: float, a: float, b: float) -> float | None:
+    """The root of d next to x in [a, b] (d(x) <= 0 there), by windows widening from the
+    bounded Brent's own tolerance; None if d keeps its sign."""
+    if d(x) == 0:
+        return x
+    step = XTOL * max(1.0, abs(x))
+    for lo, hi, _ in widening_windows(x, step, KINK_WINDOWS, bounds=(a, b)):
+        for p, q in ((lo, x), (x, hi)):
+            if q > p and (d(p) > 0) != (d(q) > 0):
+                return brent(d, p, q, SWITCH)
+    return None
+
+
+def _rival_value(margins: Margins, rival, x: float) -> float:
+    """The critical value of a competitor at x: a mode's, or where a face creases."""
+    return margins.crease(x) if rival == CREASE else margins.value(rival, x)

@@ -34,9 +34,9 @@ class Interval:
     """``key`` in [lo, hi] (in the order of the grid, lo < hi) has ``mode`` (m, n) first,
     kind "bifurcation"; or kind "surface" (the short-wave limit), "threshold" (no mode
     before the axisymmetric state is lost) or "failed" (mode (-1, -1)). ``lo_edge`` and
-    ``hi_edge`` say whether an end is the end of the searched range (else a located switch:
-    next to a failed interval, the located end of the valid range, a switch to "no
-    design")."""
+    ``hi_edge`` say whether an end is the end of the searched range (else a located switch,
+    also one located at the range's end, a tie there: next to a failed interval, the
+    located end of the valid range, a switch to "no design")."""
 
     lo: float
     hi: float
@@ -263,8 +263,13 @@ def from_curve(curve: Curve, key: str, lo: float, hi: float) -> ModeSequence:
             runs[-1][3] = float(x)
         else:
             runs.append([mode, kind, float(x), float(x)])
-    intervals = tuple(Interval(a, b, mode, kind, a == lo, b == hi) for mode, kind, a, b in runs)
     changes = sorted(curve.switches + curve.ends, key=lambda s: s.x)
+    # a switch located at an end of the range (a tie there) bounds its interval as a switch
+    located = {float(s.x) for s in changes}
+    intervals = tuple(
+        Interval(a, b, mode, kind, a == lo and a not in located, b == hi and b not in located)
+        for mode, kind, a, b in runs
+    )
     switches = tuple(
         SequenceSwitch(s.x, s.mode_before, s.mode_after, s.value, s.value_after, s.kind)
         for s in changes
