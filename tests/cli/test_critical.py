@@ -107,3 +107,25 @@ def test_layered_tube_line_prints_the_force_to_its_estimate(monkeypatch, capsys,
     line = next(x for x in capsys.readouterr().out.splitlines() if x.startswith("  tube:"))
     assert "axial force -6.27e-05," in line, line
     assert "P_i = 0, P_o = 0" in line
+
+
+def test_a_runner_up_is_printed_with_the_digits_its_estimate_supports(monkeypatch, capsys):
+    """probe 9a, D2: the runners-up were printed to 10 digits with no estimate (a film's
+    force ring 1.3e-6 off, relative). A runner-up's estimate, here made 1e-7, now sets its
+    digits, as the headline's does."""
+    import dataclasses
+
+    import electrogrowth.bifurcation.scan as scan
+
+    real = scan.scan_modes
+
+    def coarse(*args, **kwargs):
+        res = real(*args, **kwargs)
+        runners = tuple(dataclasses.replace(r, error_estimate=1e-7) for r in res.runners_up)
+        return dataclasses.replace(res, runners_up=runners)
+
+    monkeypatch.setattr(scan, "scan_modes", coarse)
+    argv = BASE + ["--solve-for", "growth", "--voltage", "0.4", "--m-max", "1", "--n-max", "1"]
+    assert main(argv) == 0
+    nxt = [x for x in capsys.readouterr().out.splitlines() if x.startswith("  next:")]
+    assert nxt[0] == "  next: (m, n) = (1, 1)   g_cr = 1.2817091", nxt

@@ -122,7 +122,8 @@ def print_text(rec: dict, runners: list, scales=None) -> None:
     if w is not None and rec["kind"] != Kind.BIFURCATION:
         lines.append(
             f"  wrinkle (linear analysis): (m, n) = ({w['m']}, {w['n']})"
-            f"{_family_note(w.get('family'))}   {name} = {w['value']:.10g}{_scanned(rec)}"
+            f"{_family_note(w.get('family'))}   {name} ="
+            f" {supported(w['value'], w.get('error_estimate'))}{_scanned(rec)}"
         )
     if "certification" in rec:  # a surface result: what was certified and how, or why not
         lines.append(
@@ -147,9 +148,10 @@ def print_text(rec: dict, runners: list, scales=None) -> None:
     for r in runners:
         if shown is not None and all(r[k] == shown[k] for k in ("m", "n", "family", "value")):
             continue  # a surface result's best finite mode heads its runners-up: shown above
+        # the digits its estimate supports (a scan's runners-up carry one: runners.py)
         lines.append(
             f"  next: (m, n) = ({r['m']}, {r['n']}){_family_note(r.get('family'))}"
-            f"   {name} = {r['value']:.10g}"
+            f"   {name} = {supported(r['value'], r.get('error_estimate'))}"
         )
     lines += _rival_lines(rec, name)
     print("\n".join(lines))
