@@ -38,6 +38,14 @@ def test_runners_up_are_solved_at_the_scan_rtol():
         assert 0 < r.error_estimate < 1e-10
 
 
+def test_at_a_loose_rtol_the_estimates_cover_the_errors():
+    """At rtol 1e-8 the march's roots are already at rtol (max(rtol, 1e-9)): they stand, and
+    their estimates (1e-8) cover their errors (1e-10)."""
+    s = scan_modes(P, "growth", options=ScanOptions((0, 4), (1, 2)), rtol=1e-8)
+    for r in s.runners_up:
+        assert abs(r.value - _true(P, r, "growth").value) <= r.error_estimate < 1e-7
+
+
 def test_the_json_record_of_a_runner_up_has_its_estimate(capsys):
     argv = ["critical", "--outer-radius", "1.4", "--length", "1.0", "--voltage", "0.4"]
     assert main(argv + ["--solve-for", "growth", "--m-max", "2", "--n-max", "1", "--json"]) == 0

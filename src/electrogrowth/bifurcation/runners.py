@@ -74,10 +74,12 @@ def finished_runner(at: TubeAt, side, rtol: float, mv: ModeValue) -> ModeValue:
     mode = with_family(mv.m, mv.n, fam)
     sign = stable_sign(mv.m, mv.n, at.tube, family=fam)
     path = control_path(at.tube, at.control, side)[:2]
-    tol = Accuracy(rtol).runners_up * max(1.0, abs(mv.value))
+    march = Accuracy(rtol).runners_up
+    tol = march * max(1.0, abs(mv.value))
     try:
         fine = root_mode(at, targets_for("impedance", rtol), mode, sign)
-        value = _root_near(fine, mv.value, WINDOW * tol, path)
+        # at rtol >= 1e-9 the march's root is already the root of this target (Brent's)
+        value = mv.value if march <= rtol else _root_near(fine, mv.value, WINDOW * tol, path)
         if value is None:
             return dataclasses.replace(mv, error_estimate=_widest(tol))
         coarse = root_mode(at, coarse_targets_for("impedance", rtol), mode, sign)
