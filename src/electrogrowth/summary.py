@@ -96,7 +96,7 @@ def scan_html(result) -> str:
     if result.short_wave_limit is not None:
         rows.insert(-1, ("short-wave limit", f"{result.short_wave_limit:.10g}"))
     for r in result.runners_up:
-        rows.insert(-1, (f"next ({r.m}, {r.n})", f"{r.value:.10g}"))
+        rows.insert(-1, (f"next ({r.m}, {r.n})", _digits(r.value, r.error_estimate)))
     rows.insert(-1, ("verdict", result.verdict.meaning))
     return table(f"ScanResult: critical {result.critical.solve_for} over the modes", rows)
 

@@ -64,6 +64,22 @@ def test_a_wrong_choice_of_mode_is_refused_naming_the_mode_that_comes_first():
         certify(P, fake.critical, scan=fake, options=opts)
 
 
+def test_a_wrong_choice_of_mode_is_remedied_by_solving_the_first_mode_alone():
+    """probe 9a, D5: the refusal of a scan's choice carried ConvergenceError's remedy, "pass a
+    looser rtol (e.g. rtol=1e-10), or certify ... with method='collocation'", given at
+    rtol 1e-6: neither helps, the scan's mode is the wrong one. The remedy names the mode
+    that comes first and how to solve it, in both forms."""
+    later = critical_value(P, 2, 1, "growth")
+    fake = ScanResult(_as_collocation(later), (), (0, 2), (1, 1))
+    opts = ScanOptions((0, 2), (1, 1), prismatic=False, torsional=False)
+    with pytest.raises(ConvergenceError) as exc:
+        certify(P, fake.critical, scan=fake, options=opts, rtol=1e-6)
+    remedy = exc.value.remedy
+    assert "looser" not in remedy.python and "loosen" not in remedy.cli
+    assert "--mode 0 1 " in remedy.cli and "(2, 1)" in remedy.cli
+    assert "critical_value(tube, 0, 1, 'growth')" in remedy.python
+
+
 def test_a_true_choice_counts_every_scanned_mode():
     opts = ScanOptions((0, 2), (1, 1), extend=False, surface=False, prismatic=False)
     opts = dataclasses.replace(opts, torsional=False)

@@ -68,3 +68,64 @@ def test_bad_input_is_one_line_exit_2(capsys, extra, needle):
     assert main(BASE + extra) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and needle in err and "Traceback" not in err
+
+
+FILM_TOML = """length = 10.0
+axial_force = 0.0
+[[layers]]
+outer_radius = 2.0
+shear_modulus = 1e-4
+[[layers]]
+outer_radius = 2.001
+shear_modulus = 1.0
+"""
+
+
+def test_layered_tube_line_prints_the_force_to_its_estimate(monkeypatch, capsys, tmp_path):
+    """probe 9a, D4: the "tube:" line of a layered tube printed the force solved for to 12
+    digits whatever its estimate (cli/critical_text.py:tube_line trimmed only a layer's
+    growth): at rtol 1e-8 the headline said -6.27e-05 (estimate 1.1e-7) and the tube line
+    -6.27486723204e-05, whose 6th digit is wrong (-6.27486168431e-05). The solve is faked
+    with that point; the given loads keep their 12 digits."""
+    import electrogrowth.bifurcation.critical as solver
+    from electrogrowth.bifurcation.critical import CriticalPoint
+    from electrogrowth.outcomes import Kind
+
+    value = -6.27486723204e-05
+
+    def fake(params, m, n, solve_for, **kwargs):
+        at = params.at(solve_for, value)
+        return CriticalPoint(
+            solve_for, value, m, n, Kind.BIFURCATION, 1.1e-7, "impedance", "compression", at
+        )
+
+    monkeypatch.setattr(solver, "critical_value", fake)
+    film = tmp_path / "film.toml"
+    film.write_text(FILM_TOML)
+    argv = ["critical", "--tube", str(film), "--solve-for", "force", "--side", "compression"]
+    assert main(argv + ["--mode", "0", "220", "--rtol", "1e-8"]) == 0
+    line = next(x for x in capsys.readouterr().out.splitlines() if x.startswith("  tube:"))
+    assert "axial force -6.27e-05," in line, line
+    assert "P_i = 0, P_o = 0" in line
+
+
+def test_a_runner_up_is_printed_with_the_digits_its_estimate_supports(monkeypatch, capsys):
+    """probe 9a, D2: the runners-up were printed to 10 digits with no estimate (a film's
+    force ring 1.3e-6 off, relative). A runner-up's estimate, here made 1e-7, now sets its
+    digits, as the headline's does."""
+    import dataclasses
+
+    import electrogrowth.bifurcation.scan as scan
+
+    real = scan.scan_modes
+
+    def coarse(*args, **kwargs):
+        res = real(*args, **kwargs)
+        runners = tuple(dataclasses.replace(r, error_estimate=1e-7) for r in res.runners_up)
+        return dataclasses.replace(res, runners_up=runners)
+
+    monkeypatch.setattr(scan, "scan_modes", coarse)
+    argv = BASE + ["--solve-for", "growth", "--voltage", "0.4", "--m-max", "1", "--n-max", "1"]
+    assert main(argv) == 0
+    nxt = [x for x in capsys.readouterr().out.splitlines() if x.startswith("  next:")]
+    assert nxt[0] == "  next: (m, n) = (1, 1)   g_cr = 1.2817091", nxt

@@ -29,10 +29,16 @@ from collections.abc import Callable
 import numpy as np
 
 from ..basestate.tube import solve_base_state
-from ..errors import ConvergenceError, ParameterError
+from ..errors import ConvergenceError, ParameterError, Remedy
 from ..incremental.accuracy import CERTIFY_RTOL
 from ..incremental.modes import ALL_PAIRS, U_Z, mode_pairs
-from ..incremental.targets import collocation_targets, impedance_targets, resolving_nodes
+from ..incremental.targets import (
+    collocation_targets,
+    impedance_targets,
+    natural_family,
+    resolving_nodes,
+    row_family,
+)
 from ..outcomes import Kind, Status
 from .critical import critical_value
 from .march import control_path
@@ -198,12 +204,34 @@ def _certify_choice(params, crit, scan, families, progress, disagreement: float)
         if _collocation_stable(state, reference, modes[i]):
             continue  # the kernel's sign changed alone: not both methods
         m, n = (int(x) for x in modes[i, :2])
-        raise ConvergenceError(
+        err = ConvergenceError(
             f"not certified: by collocation and impedance mode ({m}, {n}) is already"
             f" unstable at {crit.solve_for} = {before:.12g}, before the scan's critical"
             f" mode ({crit.m}, {crit.n}) at {crit.value:.12g}"
         )
+        err.remedy = choice_remedy(crit, m, n, str(row_family(modes[i])))
+        raise err
     return int(len(modes))
+
+
+def choice_remedy(crit, m: int, n: int, family: str) -> Remedy:
+    """What to do where the scan chose the wrong mode: solve the mode that comes first alone.
+    Not ConvergenceError's "loosen rtol": the value of the scan's mode may be exact, and no
+    tolerance of certify makes it the first (probe 9a, D5: that advice came with rtol 1e-6)."""
+    natural = family == natural_family(m, n)
+    flag = "" if natural else f" --family {family}"
+    args = ("" if natural else f", family={family!r}") + (
+        "" if crit.side is None else f", side={crit.side!r}"
+    )
+    why = (
+        f"the scan passed over mode ({m}, {n}), which bifurcates before its mode"
+        f" ({crit.m}, {crit.n}): the critical value is that mode's or an earlier one's"
+    )
+    return Remedy(
+        f"solve mode ({m}, {n}) alone with --mode {m} {n}{flag} ({why})",
+        python=f"solve mode ({m}, {n}) alone with critical_value(tube, {m}, {n},"
+        f" {crit.solve_for!r}{args}) ({why})",
+    )
 
 
 def _collocation_stable(state, reference, row) -> bool:

@@ -83,7 +83,7 @@ def reused(modes, known, top):
     c = result.critical
     if c.kind != Kind.BIFURCATION or result.surface_instability:
         return None
-    old = [ModeValue(c.m, c.n, c.value, c.family), *result.runners_up]
+    old = [ModeValue(c.m, c.n, c.value, c.family, c.error_estimate), *result.runners_up]
     rows = {_row_key(r) for r in modes}
     if any(_mode_key(mv) not in rows for mv in old):
         return None

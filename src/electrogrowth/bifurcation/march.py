@@ -92,12 +92,15 @@ Targets = Callable[[object, np.ndarray], np.ndarray]
 @dataclasses.dataclass(frozen=True)
 class ModeValue:
     """Critical value of one mode (m, n) of ``family`` (incremental.targets.Family; the
-    natural family of (m, n) when not given: prismatic for n = 0, else wrinkle)."""
+    natural family of (m, n) when not given: prismatic for n = 0, else wrinkle).
+    ``error_estimate``: as a CriticalPoint's, once the value is solved at a scan's rtol
+    (runners.py); None for a march's root, solved at the march's tolerance."""
 
     m: int
     n: int
     value: float
     family: str | None = None
+    error_estimate: float | None = None
 
     def __post_init__(self):
         fam = natural_family(self.m, self.n) if self.family is None else self.family

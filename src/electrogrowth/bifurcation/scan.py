@@ -44,6 +44,7 @@ from .msearch import search_m, search_n
 from .options import EVERY_M, M_CAP, N_CAP, ScanOptions
 from .options import TOP_MAX as TOP_MAX  # re-exported: the CLI checks --top against it
 from .problem import Problem, as_problem
+from .runners import with_finished_runners
 from .scan_grid import scan_grid
 from .scan_record import ScanResult
 from .surface import short_wave_limit
@@ -123,7 +124,8 @@ def scan_modes(
         result = _with_short_waves(
             params, solve_for, side, result, options.top, rtol, at_cap, limit
         )
-    return _capped(result)
+    # the runners-up were the march's roots (max(rtol, 1e-9)): solved at rtol (runners.py)
+    return _capped(with_finished_runners(params, solve_for, side, rtol, result))
 
 
 def _capped(result: ScanResult) -> ScanResult:
@@ -339,7 +341,7 @@ def _searched(
     best, others = found.best, {(v.m, v.n, v.family): v for v in found.found}
     others.update({(v.m, v.n, v.family): v for v in result.runners_up})
     if c.kind == Kind.BIFURCATION:
-        others[(c.m, c.n, c.family)] = ModeValue(c.m, c.n, c.value, c.family)
+        others[(c.m, c.n, c.family)] = ModeValue(c.m, c.n, c.value, c.family, c.error_estimate)
     if c.kind == Kind.BIFURCATION and sense * c.value <= sense * best.value:
         crit = c
     else:
@@ -368,7 +370,11 @@ def _with_short_waves(
     if c.kind == Kind.BIFURCATION and (limit.value - c.value) * sense >= 0:
         return result
     crit = _surface_point(limit, side)
-    finite = (ModeValue(c.m, c.n, c.value, c.family),) if c.kind == Kind.BIFURCATION else ()
+    finite = (
+        (ModeValue(c.m, c.n, c.value, c.family, c.error_estimate),)
+        if c.kind == Kind.BIFURCATION
+        else ()
+    )
     return dataclasses.replace(
         result,
         critical=crit,

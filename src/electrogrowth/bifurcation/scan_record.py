@@ -24,6 +24,8 @@ class ScanResult:
     threshold); ``verdict`` (computed when first read) what comes first of it and a crease
     of a free face (bifurcation/crease.py), with the runner-up of each kind. ``as_dict``
     (the JSON of ``electrogrowth critical``) gives the verdict's kind and value at the top.
+    Each runner-up is solved at the scan's rtol, with its ``error_estimate``
+    (bifurcation/runners.py).
     """
 
     critical: CriticalPoint

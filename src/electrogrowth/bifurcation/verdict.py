@@ -361,7 +361,8 @@ def verdict_of(critical, *, finite=None, short_wave=None) -> Verdict:
     elif critical.kind == Kind.SURFACE:
         surface = Rival(Kind.SURFACE, critical.value, critical.error_estimate, face=critical.face)
     if finite is not None:
-        wrinkle = Rival(Kind.BIFURCATION, finite.value, None, finite.m, finite.n, finite.family)
+        est = finite.error_estimate  # a critical point's, moved among the runners-up
+        wrinkle = Rival(Kind.BIFURCATION, finite.value, est, finite.m, finite.n, finite.family)
     if short_wave is not None and surface is None:
         surface = Rival(Kind.SURFACE, short_wave[0], short_wave[1])
     verdict = judge(

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import math
 
-from ..model.controls import parse_control
+from ..model.controls import KINDS, parse_control
 from ..outcomes import Kind
 from .report import physical_line, supported, voltage_text
 
@@ -42,15 +42,29 @@ def tube_line(rec: dict, scales=None) -> str:
         for ly in rec["layers"]
     )
     axial = (
-        f"lambda_z = {rec['stretch']:.12g}"
+        f"lambda_z = {_load(rec, 'stretch')}"
         if rec["stretch"] is not None
-        else f"axial force {rec['axial_force']:.12g}"
+        else f"axial force {_load(rec, 'axial_force')}"
     )
     return (
         f"  tube: {len(rec['layers'])} layer(s) [{layers}], L = {rec['length']:g}, {axial},"
-        f" Vbar = {rec['voltage']:.12g}, P_i = {rec['inner_pressure']:.12g},"
-        f" P_o = {rec['outer_pressure']:.12g}"
+        f" Vbar = {_load(rec, 'voltage')}, P_i = {_load(rec, 'inner_pressure')},"
+        f" P_o = {_load(rec, 'outer_pressure')}"
     )
+
+
+def _load(rec: dict, key: str) -> str:
+    """A layered tube's stretch, force, voltage or pressure: the one solved for (the
+    control's tube field, model/controls.py KINDS) with the digits its error estimate
+    supports, as the headline prints it; a given load to 12 digits. Only where the tube is
+    at the value solved for: a crease's record carries the wrinkle's tube, and its own
+    estimate is not that value's (a force solved at rtol 1e-8, estimate 1.1e-7, was
+    printed -6.27486723204e-05 for -6.27486168431e-05: probe 9a, D4)."""
+    value = rec[key]
+    field = KINDS[parse_control(rec["solve_for"]).kind].field
+    if field == key and value == rec["value"]:
+        return supported(value, rec["error_estimate"])
+    return f"{value:.12g}"
 
 
 def _growth_text(growth, rec: dict) -> str:
@@ -108,7 +122,8 @@ def print_text(rec: dict, runners: list, scales=None) -> None:
     if w is not None and rec["kind"] != Kind.BIFURCATION:
         lines.append(
             f"  wrinkle (linear analysis): (m, n) = ({w['m']}, {w['n']})"
-            f"{_family_note(w.get('family'))}   {name} = {w['value']:.10g}{_scanned(rec)}"
+            f"{_family_note(w.get('family'))}   {name} ="
+            f" {supported(w['value'], w.get('error_estimate'))}{_scanned(rec)}"
         )
     if "certification" in rec:  # a surface result: what was certified and how, or why not
         lines.append(
@@ -133,9 +148,10 @@ def print_text(rec: dict, runners: list, scales=None) -> None:
     for r in runners:
         if shown is not None and all(r[k] == shown[k] for k in ("m", "n", "family", "value")):
             continue  # a surface result's best finite mode heads its runners-up: shown above
+        # the digits its estimate supports (a scan's runners-up carry one: runners.py)
         lines.append(
             f"  next: (m, n) = ({r['m']}, {r['n']}){_family_note(r.get('family'))}"
-            f"   {name} = {r['value']:.10g}"
+            f"   {name} = {supported(r['value'], r.get('error_estimate'))}"
         )
     lines += _rival_lines(rec, name)
     print("\n".join(lines))

@@ -21,8 +21,9 @@ name                   value                              why
                                                           for a tube whose targets it does not
                                                           resolve (march.calibrated)
 ``SCAN_STABLE_SIGNS``  1e-9                               signs of every mode on the unloaded tube
-``runners_up``         max(rtol, 1e-9)                    the runners-up of a scan; the critical
-                                                          mode is re-solved at ``fine``
+``runners_up``         max(rtol, 1e-9)                    the roots of a scan's march; the critical
+                                                          mode and the runners-up are re-solved at
+                                                          ``fine`` (bifurcation/runners.py)
 ``CERTIFIED``          1e4                                a critical value is certified when its
                                                           error estimate is at most
                                                           CERTIFIED rtol max(1, |value|)
