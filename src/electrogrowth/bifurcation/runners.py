@@ -25,7 +25,7 @@ from ..incremental.targets import Family, coarse_targets_for, targets_for, with_
 from ..outcomes import Kind
 from .along import TubeAt, root_mode
 from .critical import stable_sign
-from .error_estimate import second_resolution
+from .error_estimate import achieved_floor, second_resolution
 from .grid_scan import finished
 from .march import ModeValue, control_path
 from .scan_record import ScanResult
@@ -83,7 +83,8 @@ def finished_runner(at: TubeAt, side, rtol: float, mv: ModeValue) -> ModeValue:
         if value is None:
             return dataclasses.replace(mv, error_estimate=_widest(tol))
         coarse = root_mode(at, coarse_targets_for("impedance", rtol), mode, sign)
-        estimate = second_resolution(coarse, value, path)
+        # at least what the solve achieves (a critical value's floor: critical._solve)
+        estimate = max(second_resolution(coarse, value, path), achieved_floor(value, rtol))
     except (BaseStateError, ConvergenceError):
         return dataclasses.replace(mv, error_estimate=_widest(tol))
     return dataclasses.replace(mv, value=value, error_estimate=estimate)
