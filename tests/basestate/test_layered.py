@@ -488,7 +488,7 @@ def test_gent_locking_threshold():
         (lambda: Layer(1.5, growth=(1.0, 0.0, 1.0)), ["growth g_theta", "> 0"]),
         (lambda: Layer(1.5, growth=-1.0), ["growth", "> 0"]),
         (lambda: Layer(1.5, growth=(1.0, 2.0)), ["growth", "g_r, g_theta, g_z"]),
-        (lambda: Layer(1.5, shear_modulus=0.0), ["shear_modulus", "0 <"]),
+        (lambda: Layer(1.5, shear_modulus=0.0), ["shear_modulus", "1e-08 to 1e+08"]),
         (lambda: Layer(1.5, permittivity=math.inf), ["permittivity"]),
         (lambda: Tube((Layer(1.5, growth=lambda R: (R - 1.2, 1, 1)),)), ["growth function"]),
         (lambda: Tube((Layer(1.5),), stretch=1.0, axial_force=0.0), ["stretch", "axial_force"]),
