@@ -49,6 +49,28 @@ PARAMETERS = {
     "length": ("R_i", "undeformed length L / R_i"),
 }
 
+#: a parameter's axis in a store (a sweep's, a design map's): (description, symbol)
+AXES = {
+    "outer_radius": ("outer radius", "R̄ₒ = Rₒ/Rᵢ"),
+    "length": ("length", "L/Rᵢ"),
+    "growth": ("growth factor", "g"),
+    "stretch": ("axial stretch", "λ_z"),
+    "voltage": ("voltage", "V̄"),
+    "pressure": ("inner pressure", "P_i"),
+    "force": ("axial force", "F"),
+}
+
+
+def axis_label(name: str) -> tuple[str, str]:
+    """(description, symbol) of a parameter; a layered tube's control or key as itself."""
+    return AXES.get(name, (name, name))
+
+
+def axis_attrs(name: str) -> dict:
+    """The attributes of a parameter's axis in a store: long_name, symbol, units."""
+    long_name, symbol = axis_label(name)
+    return {"long_name": long_name, "symbol": symbol, "units": "1 (mu = eps = R_i = 1)"}
+
 
 def xarray():
     """The xarray module, or MissingDependencyError naming the extra."""

@@ -211,6 +211,38 @@ def test_cli_design_two_variables(capsys, tmp_path):
     assert width > 2 * height  # the map and, beside it, the design's tube in 3D
 
 
+def test_cli_design_map_csv_holds_plain_numbers(capsys, tmp_path):
+    """probe 9b D4: cli/design.py `_write_map` wrote f"{x!r}" of NumPy 2 scalars, rows like
+    `0,np.float64(1.23423654523418),np.float64(0.95),...` that read back as text."""
+    import csv
+
+    from electrogrowth.cli.app import main
+
+    args = ["design", "--solve-for", "stretch", "--side", "compression", "--target", "0", "1"]
+    args += ["--vary", "outer_radius", "1.2", "1.3", "--vary", "length", "0.95", "1.05"]
+    args += ["--points", "2", "--m-max", "1", "--n-max", "1", "--quiet", "--out", str(tmp_path)]
+    assert main(args) == 0
+    (path,) = tmp_path.glob("*.csv")
+    rows = list(csv.DictReader(path.open()))
+    assert rows
+    for row in rows:
+        for key in ("outer_radius", "length", "critical_stretch"):
+            float(row[key])  # a number, "np.float64(...)" is refused
+
+
+def test_map_axes_carry_units_and_symbols(small_map):
+    """probe 9b D4: the map's axes x, y had only long_name and boundary_x, boundary_y no
+    attributes at all, where a sweep's store gives every axis long_name, symbol, units."""
+    pytest.importorskip("xarray")
+    ds = small_map.to_xarray()
+    for name, key in (("x", "outer_radius"), ("y", "length"), ("boundary_x", "outer_radius"),
+                      ("boundary_y", "length"), ("triple_y", "length")):  # fmt: skip
+        attrs = ds[name].attrs
+        assert {"long_name", "symbol", "units"} <= set(attrs), (name, attrs)
+        assert attrs["long_name"] == {"outer_radius": "outer radius", "length": "length"}[key]
+    assert ds["y"].attrs["symbol"] == "L/Rᵢ"
+
+
 def test_cli_design_two_variables_bad_input(capsys):
     from electrogrowth.cli.app import main
 

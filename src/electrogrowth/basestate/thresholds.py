@@ -161,12 +161,20 @@ def threshold(
     )
 
 
-def solve_on(branch: Branch, grid, target: float, thr: Threshold | None, what: str):
+def solve_on(branch: Branch, grid, target: float, thr: Threshold | None, what: str, sign: int = 1):
     """r_i, lambda_z on the scanned branch where the analytic load reaches target (brentq in
-    the bracketing cell; beyond the scan, a geometric tail towards the asymptote or lock)."""
+    the bracketing cell; beyond the scan, a geometric tail towards the asymptote or lock).
+
+    ``sign``: the direction the load moves from the branch's start (+1 for the voltage, the
+    sign of P_i - P_o for the pressure), given by the caller: read off the grid's first load
+    it was rounding for a target next to the start (Vbar^2 = 1e-18 below the unloaded
+    state's computed 3.8e-16 marched the wrong way and found no state, probe 9b D2)."""
     xs, lzs, loads = grid
-    sign = 1 if target >= loads[0] else -1
     k = np.flatnonzero(sign * (loads - target) >= 0)
+    if k.size and k[0] == 0:
+        # the start's load is exactly the control's start value, so the target lies between
+        # it and its computed value: within the rounding of the load, the start is the state
+        return float(xs[0]), float(lzs[0])
     if not k.size and thr is not None:
         far = thr.lambda_i
         tail = (
@@ -321,5 +329,5 @@ def _prepared(tube: Tube, rtol: float, nodes: int | None) -> _Prepared:
                 f"inner pressure P_i = {target:.12g} is at or beyond the pressure threshold"
                 f" P_i = {thr.value:.12g} ({thr.kind}) of this tube; no axisymmetric state"
             )
-        loaded = solve_on(branch, thr.grid, target, thr if thr.kind else None, "P_i")
+        loaded = solve_on(branch, thr.grid, target, thr if thr.kind else None, "P_i", sign)
     return _Prepared(wall, (x0, lz0), loaded)

@@ -381,7 +381,11 @@ def _write_map(result, out: Path, tube) -> list[Path]:
         lines = [f"boundary,{mmap.keys[0]},{mmap.keys[1]},critical_{mmap.solve_for},left,right"]
         for k, b in enumerate(mmap.boundaries):
             sides = f"{_text(b.left)},{_text(b.right)}"
-            lines += [f"{k},{x!r},{y!r},{v!r},{sides}" for x, y, v in zip(b.x, b.y, b.value)]
+            # float(): NumPy 2's repr of its scalars is "np.float64(...)", not a number
+            lines += [
+                f"{k},{float(x)!r},{float(y)!r},{float(v)!r},{sides}"
+                for x, y, v in zip(b.x, b.y, b.value)
+            ]
         fh.write("\n".join(lines) + "\n")
     png = out / f"{stem}.png"
     plot_map_pattern(result, tube).savefig(png, dpi=200)  # the map and the design in 3D

@@ -258,7 +258,7 @@ class ModeMap:
         """The grid (dimensions x, y: m, n, kind, critical value), the boundaries' points
         (dimension point, with the boundary index) and the triple points (dimension triple)
         as an ``xarray.Dataset`` (needs xarray, the ``sweep`` extra)."""
-        from ..labelled import xarray
+        from ..labelled import axis_attrs, xarray
 
         xr = xarray()
         lab = self.grid_labels()
@@ -277,21 +277,23 @@ class ModeMap:
         crit = {"units": "1", "long_name": f"critical {self.solve_for}"}
         sides = [(label_json(b.left), label_json(b.right)) for b in self.boundaries]
         tp = self.triple_points
+        # the axes described as a sweep's store describes its own (a key, its symbol, units)
+        ax, ay = (axis_attrs(key) for key in self.keys)
         return xr.Dataset(
             {
                 "m": (("x", "y"), m, modes),
                 "n": (("x", "y"), n, modes),
                 "kind": (("x", "y"), kind.astype(str)),
                 "value": (("x", "y"), np.asarray(self.values, float), crit),
-                "boundary_x": ("point", np.array(px, float)),
-                "boundary_y": ("point", np.array(py, float)),
+                "boundary_x": ("point", np.array(px, float), ax),
+                "boundary_y": ("point", np.array(py, float), ay),
                 "boundary_value": ("point", np.array(pv, float), crit),
                 "boundary": ("point", np.array(pb, int)),
                 "left": ("boundary_index", [str(s[0]) for s in sides]),
                 "right": ("boundary_index", [str(s[1]) for s in sides]),
                 "certified": ("boundary_index", [b.certified for b in self.boundaries]),
-                "triple_x": ("triple", np.array([t.x for t in tp], float)),
-                "triple_y": ("triple", np.array([t.y for t in tp], float)),
+                "triple_x": ("triple", np.array([t.x for t in tp], float), ax),
+                "triple_y": ("triple", np.array([t.y for t in tp], float), ay),
                 "triple_value": ("triple", np.array([t.value for t in tp], float), crit),
                 "triple_patterns": (
                     "triple",
@@ -299,8 +301,8 @@ class ModeMap:
                 ),
             },
             coords={
-                "x": ("x", np.array(self.xs), {"long_name": self.keys[0]}),
-                "y": ("y", np.array(self.ys), {"long_name": self.keys[1]}),
+                "x": ("x", np.array(self.xs, float), ax),
+                "y": ("y", np.array(self.ys, float), ay),
             },
             attrs={"keys": " ".join(self.keys), "solve_for": self.solve_for,
                    "side": self.side or ""},

@@ -26,7 +26,7 @@ from ..bifurcation.scan import ScanOptions, scan_modes
 from ..bifurcation.verdict import advisory, crease_rival, creases
 from ..errors import ConvergenceError, ElectrogrowthError
 from ..interrupts import reraise_interrupt
-from .sensitivity import STEP, _derivative, key_value, relative_step, sensitivities
+from .sensitivity import STEP, _derivative, key_value, sensitivities, step_of
 
 CREASE_FIRST = "crease_first"  # first among the wrinkles in its region, but a crease comes first
 
@@ -69,13 +69,14 @@ def crease_sensitivities(tube, solve_for: str, value: float, keys, *, step: floa
             raise ConvergenceError(f"the {face} is no crease candidate at {solve_for} = {v:g}")
         return f.drives[trigger] - 1.0
 
-    h_v = _derivative(lambda v: h(tube, v), value, relative_step(value, step))
+    h_v = _derivative(lambda v: h(tube, v), value, step_of(tube, solve_for, value, step))
     if not math.isfinite(h_v) or h_v == 0.0:
         raise ConvergenceError(f"the crease drive does not change with {solve_for} at {value:g}")
     out = {}
     for key in keys:
         p = key_value(tube, key)
-        h_p = _derivative(lambda q, key=key: h(tube.at(key, q), value), p, relative_step(p, step))
+        f_key = lambda q, key=key: h(tube.at(key, q), value)  # noqa: E731
+        h_p = _derivative(f_key, p, step_of(tube, key, p, step))
         out[key] = -h_p / h_v
     return out
 
@@ -153,7 +154,7 @@ def kinked_margin(tube, sense: float, v: float, dv: dict, rivals) -> tuple[dict,
     gaps = [sense * (w - v) / abs(v) - sense * (lead[1] - v) / abs(v) for _, w, _ in rivals]
     sens, sides, tied = dict(dm[0]), {}, []
     for p, d0 in dm[0].items():
-        h = relative_step(key_value(tube, p))
+        h = step_of(tube, p, key_value(tube, p))
         near = []
         for (name, _, _), d, gap in zip(rivals[1:], dm[1:], gaps[1:]):
             if d is None or (p in d and gap <= h * abs(d0 - d[p])):

@@ -15,11 +15,13 @@ as stiff as its substrate) and -f_p / f_v came out near v itself (1.074 for 6.34
 round 7b). Where the kernel fails and D is not available, f is differentiated (its
 fallback's target, the same roots).
 
-Both partials are central differences at a step h = 1e-4 |p| (1e-4 at p = 0) and h / 2,
-combined by Richardson extrapolation, (4 D(h/2) - D(h)) / 3, which cancels the O(h^2) error
-of the central difference: the targets of thick layered tubes at high m are strongly curved
-in p, where D(h) alone is off by ~1e-4 at h = 1e-4. The step is relative: the absolute
-1e-4 max(1, |p|) of before was 10 % of a film 0.001 thick. Where p cannot be moved both ways
+Both partials are central differences at a step h = 1e-4 max(|p|, s_p) and h / 2, s_p the
+scale of a load and 0 for the other keys (:func:`load_scale`), combined by Richardson
+extrapolation, (4 D(h/2) - D(h)) / 3, which cancels the O(h^2) error of the central
+difference: the targets of thick layered tubes at high m are strongly curved in p, where
+D(h) alone is off by ~1e-4 at h = 1e-4. The step is relative for a size or a modulus: the
+absolute 1e-4 max(1, |p|) of before was 10 % of a film 0.001 thick; a load (which may be 0
+or near it) steps on its own scale. Where p cannot be moved both ways
 (a bound of its range), or where the kernel's unit modulus bends between p - h and p + h
 (:func:`_units_bend`), a one-sided second-order difference is used, Richardson-extrapolated.
 docs/design.md derives it and tests/design/test_sequence.py and
@@ -41,6 +43,7 @@ from ..errors import ConvergenceError, ParameterError
 from ..incremental.accuracy import Accuracy, check_rtol
 from ..incremental.radial_table import layer_units
 from ..incremental.targets import ImpedanceTarget, check_mode, with_family
+from ..model.controls import force_scale, pressure_scale, voltage_scale
 from ..model.layers import Tube
 
 STEP = 1e-4
@@ -126,7 +129,7 @@ def _implicit(target, tube, solve_for, value, keys, step, mode) -> dict[str, flo
     def f(t, v: float) -> float:
         return target(t.at(solve_for, v))
 
-    f_v = _derivative(lambda v: f(tube, v), value, relative_step(value, step))
+    f_v = _derivative(lambda v: f(tube, v), value, step_of(tube, solve_for, value, step))
     if not math.isfinite(f_v) or f_v == 0.0:
         raise ConvergenceError(
             f"dD/d{solve_for} vanishes at {solve_for} = {value:g} for mode {tuple(mode)}: a"
@@ -135,7 +138,7 @@ def _implicit(target, tube, solve_for, value, keys, step, mode) -> dict[str, flo
     out = {}
     for key in parameter_keys(tube, solve_for) if keys is None else keys:
         p = key_value(tube, key)
-        h = relative_step(p, step)
+        h = step_of(tube, key, p, step)
         f_key = lambda q, key=key: f(tube.at(key, q), value)  # noqa: E731
         f_p = _one_sided(f_key, p, h) if _units_bend(tube, key, p, h) else _derivative(f_key, p, h)
         out[key] = -f_p / f_v
@@ -168,9 +171,35 @@ def _one_sided(f, x: float, h: float) -> float:
     raise ParameterError(f"cannot vary the parameter at {x:g} by {h:g} either way")
 
 
-def relative_step(x: float, step: float = STEP) -> float:
-    """The difference step for a parameter at x: step |x|, or step at x = 0."""
-    return step * abs(x) if x != 0.0 else step
+def relative_step(x: float, step: float = STEP, scale: float = 0.0) -> float:
+    """The difference step for a parameter at x on the scale ``scale`` (:func:`load_scale`):
+    step max(|x|, scale), or step where both are 0."""
+    size = max(abs(x), scale)
+    return step * size if size != 0.0 else step
+
+
+#: the scales of the loads, which may be 0 or near it (model/controls.py, the march's)
+_LOAD_SCALES = {
+    "pressure": pressure_scale,
+    "outer_pressure": pressure_scale,
+    "voltage": voltage_scale,
+    "force": force_scale,
+}
+
+
+def load_scale(tube, key: str) -> float:
+    """The change of ``key`` that strains the tube by O(1) for a load (a pressure, the
+    voltage, the force), 0 for every other key: those are sizes, moduli, growths and
+    stretches, positive, on the scale of their own value (a film 0.001 thick). A load's own
+    value is no scale: at P_i = 1e-9 the step 1e-4 |P_i| = 1e-13 left only the rounding of D
+    in its difference (dv/dP_i 1.9 % off, a design's dv/dVbar of the wrong sign, probe 9b)."""
+    scale = _LOAD_SCALES.get(key)
+    return 0.0 if scale is None else scale(tube)
+
+
+def step_of(tube, key: str, x: float, step: float = STEP) -> float:
+    """The difference step for ``key`` of ``tube`` at x (:func:`relative_step`)."""
+    return relative_step(x, step, load_scale(tube, key))
 
 
 class _NoDeterminant(Exception):

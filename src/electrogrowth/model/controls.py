@@ -115,10 +115,20 @@ def voltage_scale(tube) -> float:
     return math.sqrt(mu / eps)
 
 
+def pressure_scale(tube) -> float:
+    """sum mu_k ln(R_k / R_{k-1}) of the unloaded tube: the pressure that strains it by O(1)."""
+    return _wall_sum(tube, lambda a, b: math.log(b / a))
+
+
+def force_scale(tube) -> float:
+    """pi sum mu_k (R_k^2 - R_{k-1}^2): the axial force that strains the tube by O(1)."""
+    return math.pi * _wall_sum(tube, lambda a, b: b * b - a * a)
+
+
 def _pressure_path(tube, up, base):
     """From P_i = P_o up to the pressure branch's threshold (inflation) or down (collapse);
-    the scale is the unloaded tube's sum mu_k ln(R_k / R_{k-1})."""
-    scale = _wall_sum(tube, lambda a, b: math.log(b / a))
+    the scale is the unloaded tube's (:func:`pressure_scale`)."""
+    scale = pressure_scale(tube)
     start = tube.outer_pressure
     if not up:
         return start, start - 20.0 * scale, scale
@@ -127,8 +137,8 @@ def _pressure_path(tube, up, base):
 
 
 def _force_path(tube, up, base):
-    """From 0 down (compression) or up; the scale is pi sum mu_k (R_k^2 - R_{k-1}^2)."""
-    scale = math.pi * _wall_sum(tube, lambda a, b: b * b - a * a)
+    """From 0 down (compression) or up; the scale is :func:`force_scale`."""
+    scale = force_scale(tube)
     return (0.0, 20.0 * scale, scale) if up else (0.0, -20.0 * scale, scale)
 
 

@@ -7,22 +7,8 @@ from __future__ import annotations
 
 import math
 
-#: Coordinate attributes of the tube parameters.
-LABELS = {
-    "outer_radius": ("outer radius", "R̄ₒ = Rₒ/Rᵢ"),
-    "length": ("length", "L/Rᵢ"),
-    "growth": ("growth factor", "g"),
-    "stretch": ("axial stretch", "λ_z"),
-    "voltage": ("voltage", "V̄"),
-    "pressure": ("inner pressure", "P_i"),
-    "force": ("axial force", "F"),
-}
-
-
-def label(name: str) -> tuple[str, str]:
-    """(description, symbol) of a parameter; a layered tube's control or key as itself."""
-    return LABELS.get(name, (name, name))
-
+# the axes' names and symbols, shared with a design map's store
+from ..labelled import axis_label as label  # noqa: F401
 
 #: name -> (dtype, value before the point is computed, description)
 POINT_VARIABLES = {

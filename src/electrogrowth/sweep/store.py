@@ -35,6 +35,7 @@ import xarray as xr
 import zarr
 
 from ..errors import Remedy, SweepError
+from ..labelled import axis_attrs
 from ..outcomes import Kind, Status
 from .config import SweepConfig, differences
 from .schema import MARK, POINT_VARIABLES, RUNNER_VARIABLES, label
@@ -322,5 +323,4 @@ def _coordinates(config: SweepConfig, source_text: str) -> xr.Dataset:
 
 
 def _coord_attrs(name: str) -> dict:
-    long_name, symbol = label(name)
-    return {"long_name": long_name, "symbol": symbol, "units": "1 (mu = eps = R_i = 1)"}
+    return axis_attrs(name)
