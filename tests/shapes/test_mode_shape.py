@@ -4,11 +4,15 @@ import dataclasses
 
 import numpy as np
 import pytest
+from scipy.integrate import solve_ivp
 
-from electrogrowth import NoBifurcationFound, ParameterError, Tube
+from electrogrowth import Layer, NoBifurcationFound, ParameterError, Tube
 from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.bifurcation.critical import CriticalPoint, critical_value
 from electrogrowth.figures.plots import plot_mode_shape
+from electrogrowth.incremental.impedance_reference import layer_fields
+from electrogrowth.incremental.stroh import stroh_matrix
+from electrogrowth.shapes import riccati
 from electrogrowth.shapes.mode_shape import ModeShape, mode_shape
 from electrogrowth.shapes.riccati import impedance_profile, stroh_at, transport
 
@@ -149,20 +153,149 @@ def test_long_waves_are_benign_both_ways():
 
 def test_inner_face_mode_and_fallback_at_a_pole():
     """Thick charged tube, short axial waves: the mode is localised at the inner face,
-    where D_r = c / r is largest. Just below the critical stretch the impedance z has a pole
-    in the wall, so the Riccati route falls back to collocation and says so."""
+    where D_r = c / r is largest. Just below the critical stretch the impedance z from the
+    inner face has a pole in the wall; the one from the outer face has none, and the
+    route takes U on the inner face (until probe9b D6 it fell back to collocation)."""
     params = Tube.uniform(3.0, 5.0, voltage=0.5)
     crit = critical_value(params, 0, 15, "stretch", bracket=(0.4887, 0.4888))
     imp = mode_shape(crit, points=41)
     col = mode_shape(crit, method="collocation", nodes=60, points=41)
     assert imp.route == "impedance"
     assert imp.R[np.argmax(np.abs(imp.U_r))] < 1.1 and abs(imp.U_r[-1]) < 1e-5  # inner face
-    assert np.abs(imp.eta[:3] - col.eta[:3]).max() < 1e-5  # rests on a tail ~1e-7
-    near = mode_shape(
-        (dataclasses.replace(params, stretch=crit.value - 5e-5), 0, 15), points=41, nodes=60
-    )
-    assert near.route == "collocation" and "pole" in near.note
-    assert np.abs(near.eta[:3] - col.eta[:3]).max() < 1e-3
+    # U taken on the inner face, where the mode is (1.3e-11; 3e-7 when taken on the outer)
+    assert np.abs(imp.eta[:3] - col.eta[:3]).max() < 1e-9
+    near = (dataclasses.replace(params, stretch=crit.value - 5e-5), 0, 15)
+    with pytest.raises(riccati._PoleError, match="pole"):
+        impedance_profile(*near_state(near))
+    # z from the outer face has no pole there: the route takes U on the inner face
+    shape = mode_shape(near, points=41, nodes=60)
+    assert shape.route == "impedance" and shape.note == ""
+    near_col = mode_shape(near, points=41, nodes=60, method="collocation")
+    assert np.abs(shape.eta[:3] - near_col.eta[:3]).max() < 1e-5
+    assert np.abs(shape.eta[:3] - col.eta[:3]).max() < 1e-3
+
+
+def near_state(case):
+    params, m, n = case
+    state = solve_base_state(params)
+    return state, m, n * np.pi / state.current_length
+
+
+def test_poles_from_both_faces_fall_back_to_collocation(monkeypatch):
+    """Where z has a pole in the wall from both faces, the shape is collocation's."""
+
+    def pole(*args, **kwargs):
+        raise riccati._PoleError("the impedance z has a pole near r = 1.5")
+
+    monkeypatch.setattr(riccati, "impedance_profile", pole)
+    crit = critical("grown_voltage_m2_n1")
+    shape = mode_shape(crit, points=21)
+    assert shape.route == "collocation" and "pole" in shape.note
+    col = mode_shape(crit, points=21, method="collocation")
+    assert np.array_equal(shape.eta, col.eta)
+
+
+def step_residual(shape: ModeShape) -> float:
+    """max over the samples of |eta(R_j+1) - (eta(R_j) carried to R_j+1 by d eta/dR =
+    w G eta, layer by layer, DOP853 rtol 1e-13, atol 1e-16)|, U rows over max |U|, S rows
+    over max |S|.
+
+    The full 8x8 Stroh system, not the Riccati equation, over one sample step at a time
+    (well conditioned: a short wave grows by ~exp(m h / r) per step). A step across an
+    interface carries eta continuously into the next layer's system, so this also checks
+    that eta is continuous there (U and S: bonded, charge-free interface)."""
+    state = solve_base_state(shape.params)
+    G = np.empty((8, 8))
+
+    def rhs(R, eta, fields):
+        mod, p, r, w = fields(R)
+        stroh_matrix(np.ascontiguousarray(mod, dtype=float), p, float(shape.m), shape.k * r, G)
+        return w * (G @ eta)
+
+    scale = np.repeat([np.abs(shape.eta[:4]).max(), np.abs(shape.eta[4:]).max()], 4)
+    worst = 0.0
+    for j in range(shape.R.size - 1):
+        eta = shape.eta[:, j]
+        for a, b, fields in layer_fields(state):
+            a, b = max(a, shape.R[j]), min(b, shape.R[j + 1])
+            if a < b:
+                sol = solve_ivp(
+                    rhs, (a, b), eta, args=(fields,), method="DOP853", rtol=1e-13, atol=1e-16
+                )
+                eta = sol.y[:, -1]
+        worst = max(worst, (np.abs(eta - shape.eta[:, j + 1]) / scale).max())
+    return worst
+
+
+#: name -> (tube, (m, n), control): thin stiff films (probe9b D6) inside and outside
+FILMS = {
+    "inner_film_folds_34_0": (
+        Tube((Layer(1.01, shear_modulus=100.0), Layer(2.0)), stretch=1.0, length=1.0),
+        (34, 0),
+        "growth[1].theta",
+    ),
+    "inner_film_wrinkles_34_1": (
+        Tube((Layer(1.01, shear_modulus=100.0), Layer(2.0)), stretch=1.0, length=1.0),
+        (34, 1),
+        "growth[1].theta",
+    ),
+    "inner_film_rings_0_20": (
+        Tube((Layer(1.01, shear_modulus=100.0), Layer(2.0)), stretch=1.0, length=2.0),
+        (0, 20),
+        "growth[1].z",
+    ),
+    "outer_film_folds_73_0": (
+        Tube((Layer(1.99), Layer(2.0, shear_modulus=100.0)), stretch=1.0),
+        (73, 0),
+        "growth[2].theta",
+    ),
+}
+
+
+@pytest.mark.parametrize("name", sorted(FILMS))
+def test_thin_stiff_film_shape_from_the_face_it_lives_at(name):
+    """probe9b D6: a thin stiff INNER film's folds, wrinkles and rings (m >~ 25) had a mode
+    shape that "vanished identically" (ParameterError; `pattern` exit 2). The route took
+    U on the outer face, as the null vector of z(r_o): the mode decays like (r_i / r)^m into
+    the substrate, so there z(r_o) is far from singular (singular values 72.6 .. 0.029 for
+    (34, 1)) and its last singular vector was the decoupled potential [0, 0, 0, 1]: zero
+    displacement. The null vector is now taken on the face where z is singular.
+
+    Checks: the Stroh system step by step and across the interface (2e-13 measured; the
+    route integrates at rtol 1e-12), both faces traction-free (1.6e-13 measured), the mode
+    at its film, and collocation. Collocation is the less accurate route here: its own step
+    residual is 1.1e-4 for (34, 0) at 40 nodes and grows with more (the film is 1/100 of the
+    wall); it agrees with the impedance shape to 3.1e-5 (U) and 5.6e-5 (S / max |S|), the
+    outer film and the rings to 6.3e-6 and 1.3e-5."""
+    tube, mode, control = FILMS[name]
+    crit = critical_value(tube, *mode, control)
+    shape = mode_shape(crit)
+    assert shape.route == "impedance" and shape.note == ""
+    assert shape.boundary_residual < 1e-12
+    assert step_residual(shape) < 1e-10
+    film_face = 0 if name.startswith("inner") else -1
+    assert np.argmax(np.abs(shape.U_r)) == film_face % shape.R.size
+    col = mode_shape(crit, method="collocation")
+    for f in ("U_r", "U_th", "U_z", "Phi"):
+        assert np.abs(getattr(shape, f) - getattr(col, f)).max() < 1e-4, f
+    # r Delta_r and S, relative to max |S| (as test_routes_agree)
+    assert np.abs(shape.eta[3:] - col.eta[3:]).max() < 2e-4 * np.abs(shape.eta[4:]).max()
+
+
+def test_a_null_vector_without_displacement_falls_back_to_collocation(monkeypatch):
+    """The backstop of probe9b D6: had the route still taken the inner film's null vector
+    on the outer face (the decoupled potential), the shape is collocation's with a note, not
+    a ParameterError that blames the user for a valid critical point."""
+    tube, mode, control = FILMS["inner_film_folds_34_0"]
+    crit = critical_value(tube, *mode, control)
+
+    def outer_face_only(state, m, k, faces, *, rtol, pairs):
+        return impedance_profile(state, m, k, rtol=rtol, pairs=pairs, start=0), 0
+
+    monkeypatch.setattr(riccati, "_null_face", outer_face_only)
+    shape = mode_shape(crit)
+    assert shape.route == "collocation" and "no displacement" in shape.note
+    assert shape.U_r[0] == 1.0
 
 
 def test_params_tuple_and_interpolation():

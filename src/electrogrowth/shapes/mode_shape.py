@@ -15,9 +15,13 @@ S(r_i) = S(r_o) = 0. Two independent routes compute it (riccati.py, null_vector.
   and recover S = z U. Inwards is the stable direction: the inner-face subspace is
   dominated by solutions that grow outwards (like exp(k r)), so G1 + G2 z has mostly
   growing directions outwards and decaying ones inwards (tested in
-  tests/shapes/test_mode_shape.py).
-  z may have a pole inside the wall (the subspace is then not a graph over U); the
-  integration fails there and the collocation route is used instead (``route``, ``note``).
+  tests/shapes/test_mode_shape.py). The same is done from the outer face (z(r_o) = 0,
+  U(r_i) in the null space of z(r_i), U carried outwards), and the face whose z is the
+  more nearly singular gives the null vector: a mode living at the inner face (a thin
+  stiff film's folds, decaying like (r_i / r)^m into the substrate) is exponentially small
+  at r_o, where z(r_o) is then not singular to working accuracy (riccati.py).
+  z may have a pole inside the wall (the subspace is then not a graph over U); where both
+  integrations fail, the collocation route is used instead (``route``, ``note``).
 * "collocation": the null vector of the Chebyshev collocation matrix (collocation.py),
   interpolated by its polynomial; S follows from the constitutive law.
 
@@ -47,12 +51,12 @@ from scipy.interpolate import CubicSpline
 from .._types import FloatArray
 from ..basestate.tube import solve_base_state
 from ..bifurcation.critical import CriticalPoint
-from ..errors import NoBifurcationFound, ParameterError
+from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
 from ..incremental.targets import Family, Method, check_method, check_mode
 from ..model.layers import Tube
 from ..outcomes import Kind
 from .null_vector import collocation_shape
-from .riccati import _PoleError, face_impedances, impedance_shape
+from .riccati import _RouteFailed, face_impedances, impedance_shape
 
 #: Components of the Stroh vector eta, in order (stroh.py, SIGN_PHI = -1).
 ETA_NAMES = (
@@ -188,6 +192,8 @@ def mode_shape(
         Bad method, points, mode numbers or family.
     NoBifurcationFound
         ``critical`` is a voltage threshold, not a bifurcation (it has no mode).
+    ConvergenceError
+        Both routes failed to give a displacement (internal; not expected).
 
     Examples
     --------
@@ -209,7 +215,7 @@ def mode_shape(
     if method is Method.IMPEDANCE:
         try:
             eta = impedance_shape(state, m, k, R, rtol=rtol, pairs=pairs)
-        except _PoleError as exc:
+        except _RouteFailed as exc:
             method, note = Method.COLLOCATION, f"{exc}; shape from collocation instead"
     if method is Method.COLLOCATION:
         eta = collocation_shape(state, m, n, R, nodes=nodes, pairs=pairs)
@@ -267,7 +273,8 @@ def normalise(eta: FloatArray) -> FloatArray:
     disp = eta[:3]
     big = disp.flat[np.argmax(np.abs(disp))]
     if big == 0.0:
-        raise ParameterError("the mode shape vanishes identically")
+        # an internal failure (a route's null vector without displacement), not the user's
+        raise ConvergenceError("the computed mode shape has no displacement")
     ur = disp[0, np.argmax(np.abs(disp[0]))]
     sign = math.copysign(1.0, ur if abs(ur) > 1e-9 * abs(big) else big)
     return eta / (sign * abs(big))  # a division: the largest sample is then exactly +-1
