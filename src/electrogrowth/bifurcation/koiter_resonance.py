@@ -9,8 +9,9 @@ c_h the control at which the harmonic bifurcates. The expansion c = c_c + c_2 ep
 holds only while |c - c_c| << |c_h - c_c|: two modes interact (a uniform tube's (1, 1) of
 L = 8 in compression: c_2 = 12.5 times its slender-tube value, (2, 2) 0.075 % away).
 
-The harmonics' impedance targets are read on a grid across a window of WINDOW of the
-control's scale about c_c; a sign change is a harmonic's root, located by Brent's method.
+The harmonics' impedance targets are read on a grid across a window of WINDOW of |c_c|
+(of the control's scale where c_c is next to zero) about c_c; a sign change is a
+harmonic's root, located by Brent's method.
 """
 
 from __future__ import annotations
@@ -27,9 +28,13 @@ from ..incremental.targets import ImpedanceTarget
 from ..model.layers import Tube
 from .march import control_path
 
-#: the window about the onset searched for a harmonic's root, relative to max(|c_c|,
-#: the control's scale), and its grid's points
+#: the window about the onset searched for a harmonic's root, relative to |c_c| (or to the
+#: control's scale where c_c is within NEAR_ZERO of it of zero: a pressure or force next
+#: to zero), and its grid's points. Not the scale alone: a film's collapse pressure is
+#: 1/12 of its scale, and 5 % of the scale flagged harmonics 70 % away from onset
+#: (probe round 10a)
 WINDOW = 0.05
+NEAR_ZERO = 1e-3
 POINTS = 21
 #: the harmonics' targets: a root needs a few digits only (a distance, not a value)
 TARGET = ImpedanceTarget(rtol=1e-10)
@@ -38,8 +43,9 @@ TARGET = ImpedanceTarget(rtol=1e-10)
 @dataclasses.dataclass(frozen=True)
 class Resonance:
     """A second harmonic (m, n) of the mode that bifurcates at ``value`` of the control,
-    ``gap`` = |value - c_c| / max(|c_c|, scale) from the onset c_c; ``before``: the march
-    from the control's start reaches it first (the mode is then not the tube's first)."""
+    ``gap`` = |value - c_c| / size from the onset c_c (size: :func:`window_size`);
+    ``before``: the march from the control's start reaches it first (the mode is then not
+    the tube's first)."""
 
     m: int
     n: int
@@ -50,11 +56,12 @@ class Resonance:
     def words(self, control: str) -> str:
         """The note a user reads: which harmonic, where, and what it means."""
         first = ", before the mode's onset" if self.before else ""
+        # the root to 6 digits: Brent's at 1e-9 of the size, a note's precision
         return (
             f"its second harmonic ({self.m}, {self.n}) bifurcates at {control} ="
-            f" {self.value:.10g}{first}, {100 * self.gap:.2g} % of the scale from onset: the"
-            " one-mode expansion holds only while the control stays much closer to onset"
-            " than that (mode interaction)"
+            f" {self.value:.6g}{first}, {100 * self.gap:.2g} % from onset: the one-mode"
+            " expansion holds only while the control stays much closer to onset than that"
+            " (mode interaction)"
         )
 
 
@@ -73,7 +80,7 @@ def nearest_resonance(
 ) -> Resonance | None:
     """The harmonic root nearest ``onset`` within the window, or None."""
     start, end, scale = control_path(tube, control, side)
-    size = max(abs(onset), scale)
+    size = window_size(onset, scale)
     lo, hi = sorted((start, end))
     xs = np.clip(onset + WINDOW * size * np.linspace(-1.0, 1.0, POINTS), lo, hi)
     xs = np.unique(xs)
@@ -89,6 +96,12 @@ def nearest_resonance(
             if best is None or gap < best.gap:
                 best = Resonance(hm, hn, root, gap, (end - start) * (root - onset) < 0)
     return best
+
+
+def window_size(onset: float, scale: float) -> float:
+    """What the window and the gap are relative to: |c_c|, or the control's scale where
+    c_c is next to zero (within NEAR_ZERO of the scale)."""
+    return abs(onset) if abs(onset) > NEAR_ZERO * scale else scale
 
 
 def _targets(tube: Tube, control: str, x: float, rows: np.ndarray) -> np.ndarray:
