@@ -251,6 +251,12 @@ def test_cli_loads_in_physical_units_equal_the_nondimensional_input(capsys):
         (["--inner-pressure", "5kPa"], "5kPa is a pressure; give --shear-modulus"),
         (["--shear-modulus", "1kPa", "--axial-force", "0.1N"], "give --inner-radius too"),
         (["--shear-modulus", "1kPa", "--outer-pressure", "3mm"], "is not a pressure"),
+        # probe 10b: an overflowing load was told "need 0 < --inner-pressure < inf"
+        (["--shear-modulus", "1kPa", "--inner-pressure", "-1e400kPa"], "not a finite pressure"),
+        (
+            ["--shear-modulus", "1kPa", "--inner-radius", "1mm", "--axial-force", "1e400N"],
+            "'1e400N' is not a finite force",
+        ),
     ],
 )
 def test_cli_a_load_without_its_scale_is_one_line(capsys, argv, match):

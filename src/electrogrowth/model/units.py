@@ -76,7 +76,9 @@ def magnitude(
     if q.dimensionality != ureg.Quantity(1.0, unit).dimensionality:
         raise ParameterError(f"{name} = {value!r} is not a {kind} (its unit is {q.units:~})")
     out = float(q.to(unit).magnitude)
-    if signed and math.isfinite(out):
+    if signed:  # a load: either sign
+        if not math.isfinite(out):
+            raise ParameterError(f"{name} = {value!r} is not a finite {kind}")
         return out
     if not (math.isfinite(out) and (out > 0 or (zero and out == 0))):
         bound = "0 <=" if zero else "0 <"
