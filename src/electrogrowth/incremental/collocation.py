@@ -57,7 +57,7 @@ from .collocation_layout import (
     check_pairs,
     stable_det_sign,
 )
-from .dense_algebra import equilibrated, one_blas_thread
+from .dense_algebra import equilibrated, equilibration, one_blas_thread
 from .nodal_law import Operator, _fluxes_at, _Grid
 
 
@@ -358,8 +358,9 @@ def mode_shape_collocation(
     ``pairs`` (a family's block) the left-out unknowns are exactly zero.
     """
     with one_blas_thread():
-        M = collocation_matrix(state, m, n, nodes=nodes, pairs=pairs)
-        null = np.linalg.svd(M)[2][-1]
+        # the null vector of the equilibrated matrix, as the onset target's (dense_algebra)
+        M, cols = equilibration(collocation_matrix(state, m, n, nodes=nodes, pairs=pairs))
+        null = cols * np.linalg.svd(M)[2][-1]
     nn, layers = int(nodes), _layers(state)
     width = 5 * nn - 2
     v = np.zeros(width * layers)

@@ -51,7 +51,7 @@ from scipy.interpolate import CubicSpline
 from .._types import FloatArray
 from ..basestate.tube import solve_base_state
 from ..bifurcation.critical import CriticalPoint
-from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
+from ..errors import ConvergenceError, NoBifurcationFound, ParameterError, Remedy
 from ..incremental.targets import Family, Method, check_method, check_mode
 from ..model.layers import Tube
 from ..outcomes import Kind
@@ -88,7 +88,8 @@ class ModeShape:
     params : the Tube at the critical point.
     route : "impedance" or "collocation", the route actually used.
     boundary_residual : max |S| on the faces over max |S| in the wall (0 at bifurcation).
-    note : why the route differs from the one requested ("" otherwise).
+    note : why the route differs from the one requested, and that a collocation shape at
+        parameters given as (tube, m, n) leaves its faces loaded ("" otherwise).
     family : the mode family ("wrinkle", "prismatic", "torsional").
     """
 
@@ -193,7 +194,11 @@ def mode_shape(
     NoBifurcationFound
         ``critical`` is a voltage threshold, not a bifurcation (it has no mode).
     ConvergenceError
-        Both routes failed to give a displacement (internal; not expected).
+        Both routes failed to give a displacement (internal; not expected), or, at a
+        CriticalPoint, the collocation shape (requested or the fallback) leaves its faces
+        loaded: boundary residual above ``COLLOCATION_RESIDUAL_LIMIT`` (1e-3), not the mode.
+        At parameters given as (tube, m, n) that is a ``note`` instead (they may not be
+        critical).
 
     Examples
     --------
@@ -220,6 +225,9 @@ def mode_shape(
     if method is Method.COLLOCATION:
         eta = collocation_shape(state, m, n, R, nodes=nodes, pairs=pairs)
     eta = normalise(eta)
+    residual = boundary_residual(eta, face_impedances(state, m, k))
+    if method is Method.COLLOCATION:
+        note = _check_collocation(residual, nodes, note, isinstance(critical, CriticalPoint))
     return ModeShape(
         R,
         state.radius(R),
@@ -229,11 +237,45 @@ def mode_shape(
         k,
         params,
         method.value,
-        boundary_residual(eta, face_impedances(state, m, k)),
+        residual,
         note,
         family,
         state.current_length,
     )
+
+
+#: Largest boundary residual of a collocation shape that is returned (at a CriticalPoint).
+#: Shapes that are the mode give 5e-13 .. 1.4e-8 (uniform tubes; films 1/100 of the wall,
+#: 100 times as stiff; 40 .. 80 nodes), up to 1.5e-5 and 4.2e-5 for films 1/1000 of the wall,
+#: 1e4 and 1e3 times as stiff (their S, differentiated through a steep polynomial, is the
+#: least accurate); a null vector that is not the mode leaves its faces loaded at O(1)
+#: (0.31 .. 1.0, probe10a D1). 1e-3, 24x the largest good one, separates them.
+COLLOCATION_RESIDUAL_LIMIT = 1e-3
+
+_COLLOCATION_REMEDY = Remedy(
+    "use --method impedance (the default); if that falls back to collocation, report it",
+    python="use method='impedance' (the default), or collocation with other nodes=",
+)
+
+
+def _check_collocation(residual: float, nodes: int, note: str, certified: bool) -> str:
+    """The note of a collocation shape, or ConvergenceError: a shape whose faces are loaded
+    is never returned silently (by request or as the impedance route's fallback).
+
+    At a CriticalPoint (a bifurcation to its error estimate) a loaded face is the method's
+    failure: ConvergenceError. At parameters the caller gave as (tube, m, n), it may be
+    theirs (they need not be critical; docs/modes.md): a note says so, the shape is kept."""
+    if residual <= COLLOCATION_RESIDUAL_LIMIT:
+        return note
+    loaded = (
+        f"the collocation mode shape ({nodes} nodes) is not the mode: its faces carry"
+        f" {residual:.1e} of the wall's largest traction (limit {COLLOCATION_RESIDUAL_LIMIT:g})"
+    )
+    if not certified:
+        return "; ".join(filter(None, (note, loaded + ", or the parameters are not critical")))
+    err = ConvergenceError(loaded + (f" ({note})" if note else ""))
+    err.remedy = _COLLOCATION_REMEDY
+    raise err
 
 
 def _unpack(critical) -> tuple[Tube, int, int, Family]:
