@@ -150,13 +150,18 @@ def _target(args):
 
 def run_design(args) -> int:
     from ..design import mode_sequence, prescribe  # the numeric stack, after the checks
-    from ..design.sequence import check_vary
+    from ..design.sequence import check_vary, shared_variable
 
     varies, target = _vary(args), _target(args)
     check_side_option(args)
     tube, solve_for = control_of(args)
     for vary in varies:
         check_vary(vary, tube, solve_for)  # the key and its range, before any work
+    if len(varies) == 2 and (same := shared_variable(tube, varies[0][0], varies[1][0])):
+        raise ParameterError(
+            f"--vary {varies[0][0]} and --vary {varies[1][0]} both set {same} of this tube;"
+            " choose two variables"
+        )
     if len(varies) == 2:
         if args.points is not None and args.points > MAP_NODES:
             raise ParameterError(
