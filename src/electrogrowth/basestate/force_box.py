@@ -50,8 +50,8 @@ def check_force_when_lost(tube) -> None:
     span = " to ".join("?" if f is None else f"{f:.6g}" for f in (f_lo, f_hi))
     raise ParameterError(
         f"axial force F = {F:.6g} is outside the supported range {span} of this tube (the"
-        f" forces that hold its unloaded state, V = 0 and P_i = P_o, at an elastic axial"
-        f" stretch lambda_z / g_z of {lo:g} and {hi:g}): {SUPPORTED_WHY}"
+        f" forces at which its elastic axial stretch lambda_z / g_z is {lo:g} and {hi:g}"
+        f" when unloaded, V = 0 and P_i = P_o): {SUPPORTED_WHY}"
     )
 
 
