@@ -13,7 +13,7 @@ import pytest
 from electrogrowth.basestate.tube import neo_hookean_asymptote, solve_base_state
 from electrogrowth.cli.app import main
 from electrogrowth.figures import FIGURES
-from electrogrowth.model.layers import Tube
+from electrogrowth.model.layers import Layer, Tube
 from electrogrowth.model.materials import gent
 
 BASE = ["state", "--outer-radius", "2.0", "--growth", "1.1", "--stretch", "1.0"]
@@ -173,3 +173,33 @@ def test_python_dash_m_runs_the_cli():
         timeout=300,
     )
     assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and "0.9" in bad.stderr
+
+
+@pytest.mark.parametrize(
+    "force, lz",
+    [(1000.0, None), (250.0, 63.66222), (200.0, 50.93)],
+)
+def test_a_force_beyond_the_stretch_box_is_refused_as_the_force(capsys, force, lz):
+    """Probe 10b D2: on Rbar_o = 1.5 (neo-Hookean) F = pi (R_o^2 - 1)(lambda - lambda^-2),
+    so F = 1000 asks for lambda_z = 254.6, outside the elastic-stretch box 0.02 to 50 that
+    ``--stretch 250`` is refused with. It was blamed on a voltage nobody gave ("no unloaded
+    state ... lower the voltage"), and F = 250 or 200 (lambda_z 63.7, 50.9) were accepted
+    without a word: the solved stretch was never checked against the box."""
+    status, out, err = run(capsys, "state", "--outer-radius", "1.5", "--axial-force", str(force))
+    assert status == 2 and out == "" and len(err.strip().splitlines()) == 1
+    assert "voltage" not in err and "unloaded state (V = 0, P_i = P_o) found" not in err, err
+    assert f"axial force F = {force:g}" in err, err
+    if lz is None:  # not solved: the range of the force, the forces at lambda_z = 0.02, 50
+        f_hi = math.pi * 1.25 * (50 - 50**-2)
+        f_lo = math.pi * 1.25 * (0.02 - 0.02**-2)
+        assert f"supported range {f_lo:.6g} to {f_hi:.6g}" in err, err
+    else:
+        assert f"lambda_z / g_z = {lz:.6g}" in err, err
+
+
+def test_a_force_inside_the_stretch_box_is_solved():
+    """The force at lambda_z = 49 is solved (the box check does not refuse its inside)."""
+    lz = 49.0
+    force = math.pi * 1.25 * (lz - lz**-2)
+    tube = Tube((Layer(1.5),), axial_force=force)
+    assert solve_base_state(tube).stretch == pytest.approx(lz, rel=1e-10)

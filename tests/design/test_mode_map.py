@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -257,6 +258,53 @@ def test_cli_design_two_variables_bad_input(capsys):
     assert len(err) == 5 and all(e.startswith("electrogrowth: error:") for e in err)
     assert "given twice" in err[0] and "once or twice" in err[1] and "at most 101" in err[2]
     assert "--workers 0 is out of range" in err[3] and "give --vary twice" in err[4]
+
+
+MUCOSA = Path(__file__).resolve().parents[2] / "examples" / "mucosa.toml"
+
+
+@pytest.mark.parametrize(
+    "x, y",
+    [
+        ("outer_radius", "layers[2].outer_radius"),  # Tube.at's alias
+        ("layers[2].thickness", "outer_radius"),  # the outermost thickness sets R_2
+        ("growth[1]", "growth[1].theta"),  # every component, and one of them
+    ],
+)
+def test_one_number_under_two_names_is_refused_as_a_map(x, y, capsys):
+    """Probe 10b D3: on the two-layer mucosa ``outer_radius`` is ``layers[2].outer_radius``
+    (Tube.at), yet the map compared the key strings: it ran 95 s and reported the best
+    design at outer_radius = 2.175 and layers[2].outer_radius = 2.085 at once (x had no
+    effect). The names as Tube.at resolves them are compared now, in Python and the CLI."""
+    from electrogrowth.cli.app import main
+    from electrogrowth.model.tube_file import load_tube
+
+    tube = load_tube(MUCOSA)
+    vary = ((x, *sorted((tube.value_of(x), 1.01 * tube.value_of(x)))),)
+    vary += ((y, *sorted((tube.value_of(y), 1.02 * tube.value_of(y)))),)
+    with pytest.raises(ParameterError, match="both set"):
+        mode_map(tube, "pressure", vary, options=NEAR)
+    argv = ["design", "--tube", str(MUCOSA), "--solve-for", "pressure", "--target", "2", "0"]
+    for key, lo, hi in vary:
+        argv += ["--vary", key, repr(lo), repr(hi)]
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and f"--vary {x} and --vary {y} both set" in err[0], err
+
+
+def test_two_layer_radii_of_one_tube_are_two_variables():
+    """Not refused: an inner layer's thickness and outer radius (the thickness also moves
+    the layers outside it), two growth components, the two pressures."""
+    from electrogrowth.design.sequence import shared_variable
+    from electrogrowth.model.tube_file import load_tube
+
+    tube = load_tube(MUCOSA)
+    for x, y in (
+        ("layers[1].thickness", "layers[1].outer_radius"),
+        ("growth[1].r", "growth[1].theta"),
+        ("pressure", "outer_pressure"),
+    ):
+        assert shared_variable(tube, x, y) is None
 
 
 @pytest.mark.slow

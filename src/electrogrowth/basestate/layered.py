@@ -21,6 +21,7 @@ import numpy as np
 from ..errors import BaseStateError, ConvergenceError, ParameterError
 from ..model.layers import Tube
 from .branches import Branch, clean
+from .force_box import check_force_when_lost, check_solved_stretch
 from .layered_state import LayeredState
 from .plies import ORDERS
 from .thresholds import Threshold, prepare, solve_on, threshold
@@ -66,11 +67,11 @@ def solve_layered_state(tube: Tube, *, rtol: float = 1e-12, near=None, guess=Non
         _, wall, prep, x, lz, c = warm
         state = LayeredState._build(tube, wall, prep, x, lz, c, rtol, compiled=True)
         if state.quadrature_error <= max(rtol, 1e-14):
-            return state
+            return _in_box(state)
     key = dataclasses.replace(tube, voltage=0.0)
     nodes = None
     for _ in range(len(ORDERS)):
-        prep = prepare(key, rtol, nodes)
+        prep = _prepare(key, rtol, nodes)
         if tube.voltage == 0:
             x, lz = prep.loaded
         elif not math.isfinite(tube.voltage * tube.voltage):
@@ -97,11 +98,29 @@ def solve_layered_state(tube: Tube, *, rtol: float = 1e-12, near=None, guess=Non
         pt = Branch(prep.wall, "pressure", vbar=tube.voltage).point([x], [lz])
         state = LayeredState._build(tube, prep.wall, prep, x, lz, float(pt["charge"][0]), rtol)
         if state.quadrature_error <= max(rtol, 1e-14):
-            return state
+            return _in_box(state)
         nodes = ORDERS[min(ORDERS.index(prep.wall.nodes) + 2, len(ORDERS) - 1)]
         if prep.wall.nodes == ORDERS[-1]:
             break
     raise ConvergenceError(f"layered base state not resolved to rtol = {rtol}")
+
+
+def _prepare(tube: Tube, rtol: float, nodes):
+    """thresholds.prepare; under force control, a lost unloaded state whose force lies
+    outside the stretch box is refused as the force's (basestate/force_box.py)."""
+    try:
+        return prepare(tube, rtol, nodes)
+    except BaseStateError:
+        if tube.control == "force":
+            check_force_when_lost(tube)
+        raise
+
+
+def _in_box(state: LayeredState) -> LayeredState:
+    """The state, its solved stretch checked against the box under force control."""
+    if state.tube.control == "force":
+        check_solved_stretch(state.tube, state.stretch)
+    return state
 
 
 def layered_threshold(tube: Tube, control: str = "voltage", *, rtol: float = 1e-12) -> Threshold:

@@ -35,7 +35,7 @@ from .options import (
     scan_options_from_args,
 )
 from .progress import add_quiet_option, enabled
-from .report import warn
+from .report import NAMED, named_physical, physical_line, warn
 from .tube_input import add_any_tube_options, control_of
 
 #: How each parameter is described in the options' help (the paper's terms).
@@ -136,11 +136,35 @@ def run_curve(args) -> int:
     wrapped_title(ax, tube_text(curve.params, SYMBOLS, skip=(curve.along, curve.solve_for)), 8)
     ax.figure.savefig(png, dpi=200)
     warn(_inaccurate_text(curve))
+    physical = _physical(curve, getattr(args, "scales", None))
     if args.json:
-        print(json.dumps({**curve.as_dict(), "csv": str(csv), "png": str(png)}))
+        extra = {"physical": physical} if physical else {}
+        print(json.dumps({**curve.as_dict(), **extra, "csv": str(csv), "png": str(png)}))
     else:
-        print("\n".join(summary(curve) + [str(csv), str(png)]))
+        print("\n".join(summary(curve) + physical_line(physical) + [str(csv), str(png)]))
     return _all_failed(curve)
+
+
+def _physical(curve, scales) -> dict:
+    """The curve's fixed loads and sizes and the range of its critical value in physical
+    units, when they are given: the help promises them (probe 10b D4: --inner-pressure
+    5kPa came back as P_i = 0.05 alone)."""
+    if scales is None:
+        return {}
+    skip = {NAMED.get(curve.along), NAMED.get(curve.solve_for)}
+    fixed = {
+        k: v
+        for k, v in curve.params.record().items()
+        if isinstance(v, (int, float)) and NAMED.get(k) not in skip
+    }
+    out = named_physical(fixed, scales, variables=(curve.along,))
+    ok = np.isfinite(curve.value)
+    if ok.any():
+        for end, value in (("min", curve.value[ok].min()), ("max", curve.value[ok].max())):
+            solved = named_physical({curve.solve_for: float(value)}, scales, (curve.along,))
+            for entry in solved.values():  # none: the control has no unit (growth)
+                out[f"{curve.solve_for}_cr_{end}"] = entry
+    return out
 
 
 def _failed(curve) -> list[int]:

@@ -36,6 +36,7 @@ from .options import (
     scan_options_from_args,
 )
 from .progress import add_quiet_option
+from .report import named_physical, physical_line
 from .tube_input import add_any_tube_options, control_of
 
 PLOT_POINTS = 25  # critical values of each competing mode drawn at this many designs
@@ -150,13 +151,18 @@ def _target(args):
 
 def run_design(args) -> int:
     from ..design import mode_sequence, prescribe  # the numeric stack, after the checks
-    from ..design.sequence import check_vary
+    from ..design.sequence import check_vary, shared_variable
 
     varies, target = _vary(args), _target(args)
     check_side_option(args)
     tube, solve_for = control_of(args)
     for vary in varies:
         check_vary(vary, tube, solve_for)  # the key and its range, before any work
+    if len(varies) == 2 and (same := shared_variable(tube, varies[0][0], varies[1][0])):
+        raise ParameterError(
+            f"--vary {varies[0][0]} and --vary {varies[1][0]} both set {same} of this tube;"
+            " choose two variables"
+        )
     if len(varies) == 2:
         if args.points is not None and args.points > MAP_NODES:
             raise ParameterError(
@@ -183,13 +189,27 @@ def run_design(args) -> int:
         tube, solve_for, target, vary, options=options, sequence=sequence, koiter=args.koiter
     )
     record = result.as_dict()
+    seq = sequence
+    _add_physical(record, args, result, {seq.solve_for: result.value, seq.key: result.x})
     if args.out is not None:
         record["files"] = [str(p) for p in _write(result, args.out)]
     if args.json:
         print(json.dumps(record))
         return 0
-    print("\n".join(summary(result) + record.get("files", [])))
+    lines = summary(result, record.get("physical"))
+    print("\n".join(lines + record.get("files", [])))
     return 0
+
+
+def _add_physical(record: dict, args, result, values: dict) -> None:
+    """The design's ``values`` (the control solved for first, then the design variables)
+    in physical units (key "physical": those that have a unit) when they are given: the
+    help promises them (probe 10b D4: P_o in kPa gave pressure_cr in units mu only)."""
+    scales = getattr(args, "scales", None)
+    if scales is None or result.status == "not_reached":
+        return
+    finite = {k: v for k, v in values.items() if v is not None and math.isfinite(v)}
+    record["physical"] = named_physical(finite, scales, variables=list(values)[1:])
 
 
 def _every_point_failed(sequence) -> bool:
@@ -231,8 +251,9 @@ def _write(result, out: Path) -> list[Path]:
     return [csv, png]
 
 
-def summary(result) -> list[str]:
-    """Text lines: the sequence, the region, the best design, the largest sensitivities."""
+def summary(result, physical: dict | None = None) -> list[str]:
+    """Text lines: the sequence, the region, the best design (``physical``: its values in
+    physical units, under it), the largest sensitivities."""
     seq = result.sequence
     side = f" ({seq.side})" if seq.side else ""
     lines = [f"target {result.target}: critical {seq.solve_for}{side} along {seq.key}"]
@@ -256,6 +277,7 @@ def summary(result) -> list[str]:
         f"  {best}: {seq.key} = {result.x:.10g}, mode {result.mode} at {seq.solve_for}_cr ="
         f" {result.value:.10g}, margin {result.margin:.4g} to {_limit(result)}"
     )
+    lines += physical_line(physical or {})
     lines += _tied_only_lines(result)
     lines += _verdict_lines(result.verdict)
     if result.to_boundary is not None:
@@ -358,12 +380,15 @@ def _run_map(args, tube, solve_for, varies, target) -> int:
     )  # fmt: skip
     result = prescribe_map(tube, target, mmap, options=options, koiter=args.koiter)
     record = result.as_dict()
+    (kx, ky), v = mmap.keys, mmap.solve_for
+    _add_physical(record, args, result, {v: result.value, kx: result.x, ky: result.y})
     if args.out is not None:
         record["files"] = [str(p) for p in _write_map(result, args.out, tube)]
     if args.json:
         print(json.dumps(record))
         return 0
-    print("\n".join(map_summary(result) + record.get("files", [])))
+    lines = map_summary(result, record.get("physical"))
+    print("\n".join(lines + record.get("files", [])))
     return 0
 
 
@@ -410,8 +435,9 @@ def _name(label) -> str:
     return f"({label[0]}, {label[1]})" if isinstance(label, tuple) else str(label)
 
 
-def map_summary(result) -> list[str]:
-    """Text lines of a two-variable design: the boundaries, triple points, the design."""
+def map_summary(result, physical: dict | None = None) -> list[str]:
+    """Text lines of a two-variable design: the boundaries, triple points, the design
+    (``physical``: its values in physical units, under it)."""
     mmap = result.map
     kx, ky = mmap.keys
     side = f" ({mmap.side})" if mmap.side else ""
@@ -447,6 +473,7 @@ def map_summary(result) -> list[str]:
         f" {'the crease' if crease else _name(result.next_mode)}"
         f" ({result.crease_value if crease else result.next_value:.10g})"
     )
+    lines += physical_line(physical or {})
     lines += _verdict_lines(result.verdict)
     for k, d in result.to_boundary.items():
         if d is not None:

@@ -15,6 +15,7 @@ from ..interrupts import Interrupted
 from ..outcomes import Kind
 from .options import add_control_options, bounded_int, check_side_option, finite_number
 from .progress import add_quiet_option, enabled
+from .report import named_physical, physical_line
 from .tube_input import add_any_tube_options, control_of
 
 INSTALL = "pip install 'electrogrowth[fe]'"
@@ -146,8 +147,10 @@ def run_postbuckle(args) -> int:
         _write(result, Path(args.out))
     if result.ended:
         print(f"electrogrowth: warning: {result.ended}", file=sys.stderr)
+    physical = _physical(result, control, getattr(args, "scales", None))
     if args.json:
-        print(json.dumps({**result.as_dict(), "not_first": note or None}, indent=2))
+        extra = {"physical": physical} if physical else {}
+        print(json.dumps({**result.as_dict(), "not_first": note or None, **extra}, indent=2))
     else:
         print(
             f"mode ({m}, {n}), {control}: linear onset {result.onset_linear:.8g}, FE onset"
@@ -155,6 +158,8 @@ def run_postbuckle(args) -> int:
             f" {(result.onset_fe - result.onset_linear) / abs(result.onset_linear):.2e}),"
             f" mesh {result.mesh.elements} elements, {result.unknowns} unknowns"
         )
+        if physical:
+            print("\n".join(physical_line(physical)))
         print(
             f"initial curvature d({control})/d(a^2) = {result.curvature:.6g} (it changed by"
             f" {result.curvature_error:.2g} from amplitudes ten times larger)"
@@ -172,6 +177,19 @@ def run_postbuckle(args) -> int:
                 f" {s.amplitude:.6g}, {control} = {s.control:.10g} ({how})"
             )
     return 0
+
+
+def _physical(result, control: str, scales) -> dict:
+    """The two onsets in physical units, when they are given and the control has a unit:
+    the help promises them (probe 10b D4: --outer-pressure 2kPa, the onset in units mu
+    only)."""
+    if scales is None:
+        return {}
+    out = {}
+    for name, value in (("onset_linear", result.onset_linear), ("onset_fe", result.onset_fe)):
+        for entry in named_physical({control: value}, scales).values():  # none: no unit
+            out[name] = entry
+    return out
 
 
 def _say(text: str) -> None:

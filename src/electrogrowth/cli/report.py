@@ -105,6 +105,41 @@ def physical_record(record: dict, scales, errors: dict | None = None) -> dict:
     return out
 
 
+#: a control or key of a solve, curve or design -> its key in a physical record (_PHYSICAL)
+NAMED = {
+    "pressure": "inner_pressure",
+    "force": "axial_force",
+    "voltage": "voltage",
+    "inner_pressure": "inner_pressure",
+    "outer_pressure": "outer_pressure",
+    "axial_force": "axial_force",
+    "outer_radius": "outer_radius",
+    "length": "length",
+}
+
+
+def named_physical(values: dict, scales, variables=()) -> dict:
+    """:func:`physical_record` of ``values`` keyed by a control or key (``pressure``,
+    ``outer_pressure``, ...): those with a physical unit. A voltage is converted with the
+    tube's own R_o (Vbar = V / (R_o - R_i) sqrt(eps / mu)): left out when one of the
+    result's ``variables`` moves the outer radius, as at another R_o it is another V."""
+    moves = any(moves_radius(key) for key in variables)
+    rec = {
+        NAMED[name]: value
+        for name, value in values.items()
+        if name in NAMED and not (moves and NAMED[name] == "voltage")
+    }
+    return physical_record(rec, scales)
+
+
+def moves_radius(key: str) -> bool:
+    """Whether setting the key ``key`` (Tube.at) moves the tube's outer radius."""
+    from ..model.keys import layer_key
+
+    lk = layer_key(key)
+    return key == "outer_radius" or (lk is not None and lk[1] in ("outer_radius", "thickness"))
+
+
 def physical_line(physical: dict) -> list[str]:
     """One text line of a :func:`physical_record` (none when it is empty)."""
     if not physical:

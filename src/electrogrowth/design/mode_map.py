@@ -30,7 +30,7 @@ from .map_boundaries import trace_boundaries
 from .map_checks import certificate, sampled, scan_node
 from .map_record import Boundary, ModeMap, TriplePoint
 from .map_trace import FAILED, Values, valued
-from .sequence import check_vary
+from .sequence import check_vary, shared_variable
 
 MIN_NODES, MAX_NODES = 2, 101
 
@@ -135,6 +135,12 @@ def mode_map(
     vy = check_vary(vary[1], tube, solve_for)
     if vx[0] == vy[0]:
         raise ParameterError(f"the two design variables are both {vx[0]!r}; choose two keys")
+    same = shared_variable(tube, vx[0], vy[0])
+    if same is not None:
+        raise ParameterError(
+            f"the two design variables {vx[0]!r} and {vy[0]!r} both set {same} of this tube;"
+            " choose two keys"
+        )
     tube.at(vx[0], vx[1]).at(vy[0], vy[1])
     nx, ny = check_points(points)
     if isinstance(certify, bool) or not isinstance(certify, int) or certify < 0:

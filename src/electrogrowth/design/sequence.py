@@ -23,6 +23,8 @@ import numpy as np
 from ..bifurcation.curves import Curve, check_curve, critical_curve
 from ..bifurcation.scan import ScanOptions
 from ..errors import ElectrogrowthError, ParameterError
+from ..model.controls import parse_control
+from ..model.keys import layer_key
 from ..model.layers import KEYS_TEXT
 from ..outcomes import NO_MODE, Kind, Status
 
@@ -177,6 +179,37 @@ def check_vary(vary, tube=None, solve_for: str | None = None) -> tuple[str, floa
         tube.at(key, lo)
         tube.at(key, hi)
     return key, float(lo), float(hi)
+
+
+def shared_variable(tube, key_x: str, key_y: str) -> str | None:
+    """The number of ``tube`` that the keys ``key_x`` and ``key_y`` both set, as
+    :meth:`Tube.at <electrogrowth.model.layers.Tube.at>` resolves them, or None: a map over
+    one number under two names (``outer_radius`` and ``layers[N].outer_radius``, ``growth``
+    and ``growth[1].theta``) has no effect along one axis and reports a design that
+    contradicts itself (probe 10b D3), so the names, not the strings, must differ."""
+    common = _numbers_set(tube, key_x) & _numbers_set(tube, key_y)
+    return min(common) if common else None
+
+
+def _numbers_set(tube, key: str) -> set[str]:
+    """The tube's numbers ``tube.at(key, v)`` sets, each by one name."""
+    n = len(tube.layers)
+    if key == "outer_radius":  # Tube.at's alias, for any number of layers
+        return {f"layers[{n}].outer_radius"}
+    k_field = layer_key(key)
+    if k_field is not None:
+        k, field = k_field
+        if (k, field) == (n, "thickness"):  # the outermost layer's sets the outer radius
+            field = "outer_radius"  # (an inner one's also moves the layers outside it)
+        return {f"layers[{k}].{field}"}
+    try:
+        c = parse_control(key)
+    except ParameterError:  # a key (length, outer_pressure): its own name
+        return {key}
+    if c.kind != "growth":
+        return {c.kind}
+    comps = c.components or ("r", "theta", "z")  # growth alone sets every component
+    return {f"growth[{c.layer or 1}].{comp}" for comp in comps}
 
 
 def check_points(points) -> int:

@@ -48,6 +48,12 @@ def with_key(tube, name: str, value: float):
     return dataclasses.replace(tube, layers=tuple(layers))
 
 
+def layer_key(name) -> tuple[int, str] | None:
+    """(K, field) of a key ``layers[K].field``, or None for any other name."""
+    match = _LAYER_KEY.fullmatch(str(name))
+    return None if match is None else (int(match[1]), match[2])
+
+
 def key_value(tube, name) -> float | None:
     """The current value of the key ``name`` (as :func:`with_key` sets it), None if
     ``name`` is not a key (then it may be a control)."""

@@ -1,0 +1,83 @@
+"""The supported box of the elastic axial stretch (model/params.SUPPORTED) for a tube under
+force control, whose lambda_z is solved, not given: a prescribed lambda_z is refused outside
+0.02 g_z to 50 g_z when the tube is built (model/tube_checks.check_supported); a force that
+leads there is refused here, naming the force (probe 10b D2: F = 1000 on Rbar_o = 1.5 asks
+for lambda_z = 254.6; its refusal blamed a voltage never given, and F = 250, lambda_z =
+63.7, was accepted without a word).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+from ..errors import BaseStateError, ConvergenceError, ParameterError
+from ..model.params import SUPPORTED, SUPPORTED_WHY
+
+#: a stretch at the box's edge, moved inside it by this (relative): lambda_z / g_z rounded
+#: back is then inside the box the tube's own check applies
+_INSIDE = 1e-12
+
+
+def check_solved_stretch(tube, stretch: float) -> None:
+    """Refuse the axial force of ``tube`` (force control) if its solved ``stretch`` puts a
+    layer's elastic axial stretch lambda_z / g_z outside the box (graded layers unchecked,
+    as for a prescribed stretch)."""
+    lo, hi = SUPPORTED[5:7]
+    for k, layer in enumerate(tube.layers, 1):
+        if layer.graded:
+            continue
+        elastic = stretch / layer.growth[2]
+        if not lo <= elastic <= hi:
+            raise ParameterError(
+                f"axial force F = {tube.axial_force:.6g} gives layers[{k}] an elastic axial"
+                f" stretch lambda_z / g_z = {elastic:.6g}, outside the supported range"
+                f" {lo:g} to {hi:g}: {SUPPORTED_WHY}"
+            )
+
+
+def check_force_when_lost(tube) -> None:
+    """When no unloaded state of ``tube`` (force control) was found: refuse its axial force
+    if it lies outside the forces that hold the unloaded state (V = 0, P_i = P_o) at the
+    edges of the stretch box; otherwise return (the caller's own error stands)."""
+    edges = _stretch_edges(tube)
+    if edges is None:
+        return
+    f_lo, f_hi = (_unloaded_force(tube, s) for s in edges)
+    F = tube.axial_force
+    if (f_hi is None or not F > f_hi) and (f_lo is None or not F < f_lo):
+        return
+    lo, hi = SUPPORTED[5:7]
+    span = " to ".join("?" if f is None else f"{f:.6g}" for f in (f_lo, f_hi))
+    raise ParameterError(
+        f"axial force F = {F:.6g} is outside the supported range {span} of this tube (the"
+        f" forces at which its elastic axial stretch lambda_z / g_z is {lo:g} and {hi:g}"
+        f" when unloaded, V = 0 and P_i = P_o): {SUPPORTED_WHY}"
+    )
+
+
+def _stretch_edges(tube):
+    """The lambda_z at the box's edges for every constant-growth layer (None if all are
+    graded or the layers' boxes do not overlap)."""
+    gz = [layer.growth[2] for layer in tube.layers if not layer.graded]
+    if not gz:
+        return None
+    lo, hi = SUPPORTED[5:7]
+    s_lo, s_hi = max(lo * g for g in gz), min(hi * g for g in gz)
+    if not s_lo < s_hi:
+        return None
+    return s_lo * (1 + _INSIDE), s_hi * (1 - _INSIDE)
+
+
+def _unloaded_force(tube, stretch: float):
+    """The axial force (as ``tube.axial_force`` counts it) of the unloaded state at the
+    prescribed ``stretch``, or None where that state is not found."""
+    from .layered import solve_layered_state  # layered imports this module
+
+    fixed = dataclasses.replace(
+        tube, stretch=stretch, axial_force=None, voltage=0.0, inner_pressure=tube.outer_pressure
+    )
+    try:
+        state = solve_layered_state(fixed)
+    except (BaseStateError, ConvergenceError, ParameterError):
+        return None
+    return state.end_force if tube.closed_ends else state.axial_force

@@ -1,0 +1,73 @@
+"""Probe 10b D4: ``design``, ``curve`` and ``postbuckle`` take physical loads (``--outer-pressure
+2kPa --shear-modulus 100kPa``), and their ``--help`` says "Results are then also printed in
+these units", yet they printed the value solved for in units mu only (``pressure_cr =
+-0.339448199``, no kPa anywhere, no ``physical`` key in --json), as ``critical`` and
+``state`` do not. Each now prints it (and its --json carries it) in the units given."""
+
+import json
+from pathlib import Path
+
+import pytest
+
+from electrogrowth.cli.app import main
+
+ROOT = Path(__file__).resolve().parents[2]
+MUCOSA = str(ROOT / "examples" / "mucosa.toml")
+UNITS = ["--shear-modulus", "100kPa", "--inner-radius", "2mm"]
+
+
+def test_design_prints_a_pressure_result_in_the_units_it_was_given(capsys):
+    argv = ["design", "--tube", MUCOSA, "--solve-for", "pressure", "--target", "2", "0"]
+    argv += ["--side", "compression", "--vary", "layers[1].shear_modulus", "5", "10"]
+    argv += ["--points", "3", "--m-max", "6", "--n-max", "1", "--outer-pressure", "2kPa"]
+    assert main([*argv, *UNITS]) == 0
+    out = capsys.readouterr().out
+    best = next(line for line in out.splitlines() if "best design" in line)
+    value = float(best.split("pressure_cr = ")[1].split(",")[0])  # units mu = 100 kPa
+    assert f"in physical units: inner_pressure = {100 * value:.6g} kPa" in out, out
+    assert main([*argv, *UNITS, "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["physical"]["inner_pressure"] == [pytest.approx(100 * value, rel=1e-9), "kPa"]
+
+
+def test_a_design_over_the_outer_pressure_prints_it_in_kpa(capsys):
+    argv = ["design", "--tube", MUCOSA, "--solve-for", "pressure", "--target", "2", "0"]
+    argv += ["--side", "compression", "--vary", "outer_pressure", "-0.03", "-0.01"]
+    argv += ["--points", "3", "--m-max", "6", "--n-max", "1", "--json"]
+    assert main([*argv, *UNITS]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    best = rec["best"]
+    assert rec["physical"] == {
+        "inner_pressure": [pytest.approx(100 * best["value"], rel=1e-12), "kPa"],
+        "outer_pressure": [pytest.approx(100 * best["design"], rel=1e-12), "kPa"],
+    }
+
+
+def test_curve_prints_its_loads_and_values_in_the_units_given(tmp_path, capsys):
+    argv = ["curve", "--tube", MUCOSA, "--solve-for", "pressure", "--side", "compression"]
+    argv += ["--along", "layers[1].shear_modulus", "--from", "5", "--to", "6", "--points", "2"]
+    argv += ["--m-max", "6", "--n-max", "1", "--outer-pressure", "2kPa", "--out", str(tmp_path)]
+    assert main([*argv, *UNITS, "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    phys, values = rec["physical"], [v for v in rec["value"] if v is not None]
+    assert phys["outer_pressure"] == [pytest.approx(2.0, rel=1e-12), "kPa"]
+    assert phys["pressure_cr_min"] == [pytest.approx(100 * min(values), rel=1e-12), "kPa"]
+    assert phys["pressure_cr_max"] == [pytest.approx(100 * max(values), rel=1e-12), "kPa"]
+    assert main([*argv, *UNITS]) == 0
+    assert "in physical units: outer_pressure = 2 kPa" in capsys.readouterr().out
+
+
+def test_postbuckle_prints_its_onset_in_the_units_given(tmp_path, capsys):
+    pytest.importorskip("skfem")
+    (tmp_path / "tube.toml").write_text(
+        "stretch = 1.0\n\n[[layers]]\nouter_radius = 1.3\n"
+    )  # the collapse (2, 0) of a thick tube under outer pressure: a coarse mesh
+    argv = ["postbuckle", "--tube", str(tmp_path / "tube.toml"), "--solve-for", "pressure"]
+    argv += ["--side", "compression", "--mode", "2", "--density", "4", "--hoop", "6"]
+    argv += ["--points", "2", "--amplitude", "0.02", *UNITS]
+    assert main([*argv, "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    for key in ("onset_linear", "onset_fe"):
+        assert rec["physical"][key] == [pytest.approx(100 * rec[key], rel=1e-12), "kPa"]
+    assert main(argv) == 0
+    assert "in physical units: onset_linear = " in capsys.readouterr().out
