@@ -237,3 +237,24 @@ def test_door_takes_pressures():
     r = koiter_coefficient(tube, mode, control, side=side)
     assert r.coefficient == pytest.approx(_expansion("pressure-axisymmetric", 24).coefficient)
     assert r.coefficient < 0 and r.branch == "supercritical"
+
+
+@pytest.mark.slow  # five expansions of a 57-fold film at 18..48 nodes: ~40 s
+def test_the_estimate_covers_an_outer_film_s_fold_at_other_resolutions():
+    """Probe 10a D2: an outer film (mu 1, 0.005 thick on a substrate mu 1e-3), fold (57, 0)
+    under the collapsing inner pressure. The estimate was |c_2(24) - c_2(18)| plus one
+    halving's change of A': -1.30094635648, estimate 1.65e-8, while the expansion at
+    32 / 40 / 48 nodes gave -1.30094629473 / ...30025 / ...34314 (6.2e-8 apart: the
+    rounding of A(c), divided by A''s step, and of the correction's solve, wanders with the
+    node count). Now the spread of three resolutions and two samples of A''s rounding."""
+    from electrogrowth.bifurcation.koiter import _expansion
+
+    tube = Tube(
+        (Layer(2.0, shear_modulus=1e-3), Layer(2.005, shear_modulus=1.0)),
+        length=3.0,
+        stretch=1.0,
+    )
+    k = koiter_coefficient(tube, (57, 0), "pressure", side="compression")
+    for nodes in (40, 48):
+        other = _expansion(tube, (57, 0), "pressure", nodes, "compression").coefficient
+        assert abs(k.coefficient - other) <= k.error_estimate, (nodes, k, other)

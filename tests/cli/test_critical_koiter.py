@@ -25,7 +25,7 @@ def test_json_has_the_branch_and_the_coefficient(capsys):
     assert main(["critical", *MUCOSA, "--json"]) == 0
     rec = json.loads(capsys.readouterr().out)
     tube = Tube((Layer(1.1, shear_modulus=10.0), Layer(2.0)), stretch=1.0)
-    c2 = tube_expansion(tube, 12, "growth[1].theta").coefficient
+    c2 = tube_expansion(tube, 12, "growth[1].theta", nodes=32).coefficient  # the door's finest
     assert rec["branch"] == "supercritical"
     assert abs(rec["koiter"] - c2) < 1e-9 * abs(c2)
     assert "grow gradually" in rec["meaning"]

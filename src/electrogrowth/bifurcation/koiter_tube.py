@@ -21,7 +21,7 @@ from ..incremental.meridian_forms import MeridianForms
 from ..incremental.polar_forms import PolarForms, rings
 from ..model.layers import Tube
 from ..outcomes import Kind
-from .control_derivative import Reach, derivative, derivative_and_change, reach
+from .control_derivative import Reach, derivative, derivative_and_noise, reach
 from .critical import critical_value
 from .koiter_film import MODE, _nearest_zero
 from .koiter_force import AxialFreedom, axial_freedom
@@ -43,7 +43,7 @@ class TubeExpansion:
     numerator: float = math.nan  # 2 A[psi, psi] - 4 E4(phi) (+ a_z^2 / (2 k) at a force)
     axial: AxialFreedom | None = None  # the force prescribed: lambda_z's freedom
     outer_face: float = math.nan  # u_r of the mode at R_N over its peak
-    derivative_error: float = 0.0  # |c_2|'s change when A''s difference steps are halved
+    derivative_error: float = 0.0  # |c_2|'s changes when A''s difference steps are halved, shifted
 
 
 def singular_point(stiffness, start: float, what: str, where: Reach):
@@ -182,8 +182,10 @@ def expand(tube, control, first, second, start, what) -> TubeExpansion:
 
 
 def slope_ratio(numerator: float, stiffness, c: float, phi, where: Reach) -> tuple[float, float]:
-    """(c_2, its change with the difference steps halved) = numerator / A'(c)[phi, phi]:
-    the truncation of A' enters c_2 relative, and is part of its error estimate."""
-    slope, change = (float(phi @ d @ phi) for d in derivative_and_change(stiffness, c, where))
+    """(c_2, its change with A''s difference steps halved plus that with them shifted) =
+    numerator / A'(c)[phi, phi]: the truncation and the rounding of A' enter c_2 relative,
+    and are part of its error estimate (control_derivative.derivative_and_noise)."""
+    derivatives = derivative_and_noise(stiffness, c, where)
+    slope, *changes = (float(phi @ d @ phi) for d in derivatives)
     c2 = numerator / slope
-    return float(c2), abs(c2 * change / slope)
+    return float(c2), sum(abs(c2 * change / slope) for change in changes)
