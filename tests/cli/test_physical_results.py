@@ -16,6 +16,7 @@ MUCOSA = str(ROOT / "examples" / "mucosa.toml")
 UNITS = ["--shear-modulus", "100kPa", "--inner-radius", "2mm"]
 
 
+@pytest.mark.slow  # 14 s; the outer-pressure design below covers the path fast
 def test_design_prints_a_pressure_result_in_the_units_it_was_given(capsys):
     argv = ["design", "--tube", MUCOSA, "--solve-for", "pressure", "--target", "2", "0"]
     argv += ["--side", "compression", "--vary", "layers[1].shear_modulus", "5", "10"]

@@ -61,6 +61,7 @@ def test_target_tied_only_at_the_range_end_is_not_first(sequence):
     assert any("only ties with (34, 0)" in line for line in summary(d)), summary(d)
 
 
+@pytest.mark.slow  # 20 s: two prescribe runs over a film
 def test_widest_margin_at_a_kink_is_the_tie_of_its_two_competitors():
     """The widest margin for (34, 0) sits where (33, 0) and (35, 0) tie; bounded Brent
     maximisation of M left it 4.5e-8 (relative) off, M 2.7e-6 low. The independent check:
