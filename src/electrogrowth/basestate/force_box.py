@@ -35,14 +35,15 @@ def check_solved_stretch(tube, stretch: float) -> None:
             )
 
 
-def check_force_when_lost(tube) -> None:
+def check_force_when_lost(tube, solve) -> None:
     """When no unloaded state of ``tube`` (force control) was found: refuse its axial force
     if it lies outside the forces that hold the unloaded state (V = 0, P_i = P_o) at the
-    edges of the stretch box; otherwise return (the caller's own error stands)."""
+    edges of the stretch box; otherwise return (the caller's own error stands). ``solve``:
+    the layered solver (layered.solve_layered_state, which calls this module)."""
     edges = _stretch_edges(tube)
     if edges is None:
         return
-    f_lo, f_hi = (_unloaded_force(tube, s) for s in edges)
+    f_lo, f_hi = (_unloaded_force(tube, s, solve) for s in edges)
     F = tube.axial_force
     if (f_hi is None or not F > f_hi) and (f_lo is None or not F < f_lo):
         return
@@ -68,16 +69,14 @@ def _stretch_edges(tube):
     return s_lo * (1 + _INSIDE), s_hi * (1 - _INSIDE)
 
 
-def _unloaded_force(tube, stretch: float):
+def _unloaded_force(tube, stretch: float, solve):
     """The axial force (as ``tube.axial_force`` counts it) of the unloaded state at the
-    prescribed ``stretch``, or None where that state is not found."""
-    from .layered import solve_layered_state  # layered imports this module
-
+    prescribed ``stretch`` by ``solve``, or None where that state is not found."""
     fixed = dataclasses.replace(
         tube, stretch=stretch, axial_force=None, voltage=0.0, inner_pressure=tube.outer_pressure
     )
     try:
-        state = solve_layered_state(fixed)
+        state = solve(fixed)
     except (BaseStateError, ConvergenceError, ParameterError):
         return None
     return state.end_force if tube.closed_ends else state.axial_force

@@ -112,7 +112,7 @@ def _prepare(tube: Tube, rtol: float, nodes):
         return prepare(tube, rtol, nodes)
     except BaseStateError:
         if tube.control == "force":
-            check_force_when_lost(tube)
+            check_force_when_lost(tube, solve_layered_state)
         raise
 
 
