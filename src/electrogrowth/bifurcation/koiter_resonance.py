@@ -92,6 +92,8 @@ def nearest_resonance(
             if not (np.isfinite(fa) and np.isfinite(fb)) or fa * fb > 0:
                 continue
             root = _root(tube, control, rows[j : j + 1], a, b, size)
+            if root is None:
+                continue
             gap = abs(root - onset) / size
             if best is None or gap < best.gap:
                 best = Resonance(hm, hn, root, gap, (end - start) * (root - onset) < 0)
@@ -112,6 +114,12 @@ def _targets(tube: Tube, control: str, x: float, rows: np.ndarray) -> np.ndarray
         return np.full(rows.shape[0], math.nan)
 
 
-def _root(tube: Tube, control: str, row: np.ndarray, a: float, b: float, size: float) -> float:
-    """The harmonic's root in [a, b] (its target changes sign there)."""
-    return brentq(lambda x: float(_targets(tube, control, x, row)[0]), a, b, xtol=1e-9 * size)
+def _root(
+    tube: Tube, control: str, row: np.ndarray, a: float, b: float, size: float
+) -> float | None:
+    """The harmonic's root in [a, b] (its target changes sign there), or None where the
+    target is not computable inside (a note is not worth an error)."""
+    try:
+        return brentq(lambda x: float(_targets(tube, control, x, row)[0]), a, b, xtol=1e-9 * size)
+    except (ValueError, RuntimeError):  # a NaN met inside, or no convergence
+        return None
