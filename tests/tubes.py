@@ -2,7 +2,7 @@
 conftest.py; tests that add their own tubes import TUBES from here)."""
 
 from electrogrowth.model.layers import Layer, LinearGrowth, Tube
-from electrogrowth.model.materials import gent, mooney_rivlin
+from electrogrowth.model.materials import Material, gent, mooney_rivlin
 
 #: one tube of every kind, for physics that holds for any tube (the ``tubes`` fixture)
 TUBES = {
@@ -42,4 +42,19 @@ FORCE_BILAYER = Tube(
     voltage=0.2,
     closed_ends=True,
     inner_pressure=0.03,
+)
+
+#: an energy text (no built-in family) used by several probe tubes
+TEXT = Material("txt", "0.3*(I1-3) + 0.2*(I2-3) + 0.01*(I1-3)**2 + I5/2")
+#: probe round 8a's four layers: a soft Gent core, a skin 1e4 times as stiff, an energy
+#: text and a soft Mooney-Rivlin layer (its collapse (2, 0) and voltage window (6, 8))
+FOUR_LAYERS = Tube(
+    [
+        Layer(1.2, material=gent(50.0), shear_modulus=1e-2),
+        Layer(1.201, shear_modulus=100.0),
+        Layer(1.6, material=TEXT),
+        Layer(2.2, material=mooney_rivlin(0.2), shear_modulus=0.01),
+    ],
+    length=2.0,
+    stretch=1.0,
 )

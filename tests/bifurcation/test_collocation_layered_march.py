@@ -20,15 +20,13 @@ import pytest
 from electrogrowth import (
     ConvergenceError,
     Layer,
-    Material,
     NoBifurcationFound,
     Tube,
     critical_value,
-    gent,
-    mooney_rivlin,
 )
 from electrogrowth.basestate.tube import solve_base_state
 from electrogrowth.incremental.targets import impedance_targets, with_family
+from tests.tubes import FOUR_LAYERS
 
 L3_TUBE = Tube((Layer(1.5, shear_modulus=0.2), Layer(2.0), Layer(2.5, shear_modulus=0.2)))
 
@@ -67,17 +65,7 @@ def test_layered_collocation_refinement_stays_at_the_kernel_root():
     2.1e-9), where the kernel and the QR shooting twin give -0.0425203156122 (agreeing to
     1.3e-12). Now the bracket is found again about the kernel's root at each rtol
     (-0.0425202305, estimate 2.7e-6, INACCURATE). ~25 s."""
-    txt = Material("txt", "0.3*(I1-3) + 0.2*(I2-3) + 0.01*(I1-3)**2 + I5/2")
-    tube = Tube(
-        [
-            Layer(1.2, material=gent(50.0), shear_modulus=1e-2),
-            Layer(1.201, shear_modulus=100.0),
-            Layer(1.6, material=txt),
-            Layer(2.2, material=mooney_rivlin(0.2), shear_modulus=0.01),
-        ],
-        length=2.0,
-        stretch=1.0,
-    )
+    tube = FOUR_LAYERS
     kernel = -0.0425203156122  # the kernel's and the shooting twin's root
     c = critical_value(tube, 2, 0, "pressure", side="compression", method="collocation")
     assert abs(c.value - kernel) <= c.error_estimate + 1e-12

@@ -15,17 +15,14 @@ import pytest
 
 from electrogrowth import (
     Layer,
-    Material,
     ScanOptions,
     Tube,
     critical_value,
     gent,
-    mooney_rivlin,
     scan_modes,
 )
 from electrogrowth.model.controls import voltage_scale
-
-TEXT = Material("txt", "0.3*(I1-3) + 0.2*(I2-3) + 0.01*(I1-3)**2 + I5/2")
+from tests.tubes import FOUR_LAYERS, TEXT
 
 
 def _three(c):
@@ -61,16 +58,7 @@ def test_the_critical_voltage_scales_with_the_moduli(c):
 
 
 def test_a_voltage_scan_sees_a_narrow_window():
-    tube = Tube(
-        [
-            Layer(1.2, material=gent(50.0), shear_modulus=1e-2),
-            Layer(1.201, shear_modulus=100.0),
-            Layer(1.6, material=TEXT),
-            Layer(2.2, material=mooney_rivlin(0.2), shear_modulus=0.01),
-        ],
-        length=2.0,
-        stretch=1.0,
-    )
+    tube = FOUR_LAYERS
     one = critical_value(tube, 6, 8, "voltage").value  # 0.10336395731
     options = ScanOptions(m_range=(4, 8), n_range=(6, 10), surface=False)
     scan = scan_modes(tube, "voltage", options=options)
