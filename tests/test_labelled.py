@@ -135,3 +135,27 @@ def test_scan_dataset_has_the_verdict(tmp_path):
     back, _ = _round_trip(ds, tmp_path)
     assert str(back["verdict"].values) == "crease" and "creases" in str(back["meaning"].values)
     assert "verdict" in res._repr_html_() and "creases" in res._repr_html_()
+
+
+def test_verdict_variables_carry_a_harmonic_next_to_onset():
+    """A verdict with its branch (bifurcation/koiter.with_branch) whose wrinkle (1, 1) has
+    the harmonic (2, 2) 0.74 % after onset (L = 8.5): its value and (m, n) are variables;
+    without one, NaN and -1."""
+    from electrogrowth.bifurcation.koiter import with_branch
+    from electrogrowth.labelled import verdict_variables
+
+    tube = Tube.uniform(1.2, length=8.5)
+    verdict, note = with_branch(
+        scan_modes(tube, "stretch", side="compression", options=SMALL).verdict,
+        tube,
+        "stretch",
+        "compression",
+    )
+    assert note is None
+    got = verdict_variables(verdict, "stretch")
+    r = verdict.koiter_resonance
+    assert got["koiter_resonance_value"][1] == r["value"]
+    assert (got["koiter_resonance_m"][1], got["koiter_resonance_n"][1]) == (2, 2)
+    plain = verdict_variables(scan_modes(TUBE, "growth", options=SMALL).verdict, "growth")
+    assert np.isnan(plain["koiter_resonance_value"][1])
+    assert plain["koiter_resonance_m"][1] == plain["koiter_resonance_n"][1] == -1

@@ -274,6 +274,34 @@ def verdict_variables(v, solve_for: str) -> dict:
             np.nan if v.koiter_error is None else float(v.koiter_error),
             text("the Koiter coefficient's change from a coarser mesh (NaN: not computed)"),
         ),
+        **_resonance(v.koiter_resonance, units, long_name),
+    }
+
+
+def _resonance(r: dict | None, units: str, long_name: str) -> dict:
+    """The second harmonic bifurcating next to onset, where the Koiter coefficient has a
+    pole (bifurcation/koiter_resonance.py): its value and (m, n); NaN and -1 where none."""
+    none = r is None
+    return {
+        "koiter_resonance_value": (
+            (),
+            np.nan if none else float(r["value"]),
+            {
+                "units": units,
+                "long_name": f"{long_name} where a second harmonic bifurcates"
+                " next to onset (NaN: none)",
+            },
+        ),
+        "koiter_resonance_m": (
+            (),
+            -1 if none else int(r["m"]),
+            {"units": "1", "long_name": "m of that harmonic (-1: none)"},
+        ),
+        "koiter_resonance_n": (
+            (),
+            -1 if none else int(r["n"]),
+            {"units": "1", "long_name": "n of that harmonic (-1: none)"},
+        ),
     }
 
 

@@ -192,3 +192,38 @@ def test_a_store_written_before_the_branch_fields_reads_and_resumes(tmp_path):
     ds = open_results(out)
     assert "branch_note" not in ds and "koiter_error" not in ds
     assert str(ds["status"].values[0]) == "ok" and "what comes first: 1 " in summary.text()
+
+
+RESONANT = """\
+[solve]
+for = "stretch"
+side = "compression"
+koiter = true
+[modes]
+m = [0, 3]
+n = [1, 3]
+extend = false
+[fixed]
+outer_radius = 1.2
+[grid]
+length = [8.5, 30.0]
+"""
+
+
+def test_a_second_harmonic_next_to_onset_is_stored(tmp_path):
+    """tests/bifurcation/test_koiter_resonance.py's tube: at L = 8.5 the first mode (1, 1)
+    has its harmonic (2, 2) bifurcating 0.74 % after onset, where its coefficient has a pole;
+    the store holds that harmonic's value and (m, n), those of the direct expansion. At
+    L = 30 there is none: NaN and -1."""
+    compute_sweep(parse_config(RESONANT, source=str(tmp_path / "s.toml")), tmp_path / "o.zarr")
+    ds = open_results(tmp_path / "o.zarr")
+    direct = koiter_coefficient(
+        Tube.uniform(1.2, length=8.5), (1, 1), "stretch", side="compression"
+    ).resonance
+    assert (int(ds["m"].values[0]), int(ds["n"].values[0])) == (1, 1)
+    assert float(ds["koiter_resonance_value"].values[0]) == pytest.approx(direct.value, rel=1e-12)
+    assert int(ds["koiter_resonance_m"].values[0]) == direct.m == 2
+    assert int(ds["koiter_resonance_n"].values[0]) == direct.n == 2
+    assert math.isnan(float(ds["koiter_resonance_value"].values[1]))
+    assert int(ds["koiter_resonance_m"].values[1]) == int(ds["koiter_resonance_n"].values[1]) == -1
+    assert math.isfinite(float(ds["koiter"].values[1]))  # the expansion ran there

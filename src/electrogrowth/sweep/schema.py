@@ -92,6 +92,15 @@ POINT_VARIABLES = {
         " (NaN: not computed)",
     ),
     "koiter_error": ("f8", math.nan, "the Koiter coefficient's change from a coarser mesh"),
+    "koiter_resonance_value": (
+        "f8",
+        math.nan,
+        "where a second harmonic of the wrinkle bifurcates next to onset (within 5 % of it):"
+        " the coefficient, which has a pole there, holds only much closer to onset than"
+        " that (NaN: none, or not computed)",
+    ),
+    "koiter_resonance_m": ("i4", -1, "m of that second harmonic (-1: none)"),
+    "koiter_resonance_n": ("i4", -1, "n of that second harmonic (-1: none)"),
     "branch_note": (
         object,
         "",

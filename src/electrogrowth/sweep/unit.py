@@ -60,10 +60,11 @@ class PointResult(Outcome):
     ``crease_value`` (``crease_face``, ``crease_trigger``, ``crease_error``: the
     criterion's accuracy), ``threshold_value``, ``meaning``, and, where the spec asks for
     the amplitude equation (``koiter``), ``branch`` ("supercritical" / "subcritical"; ""
-    not computed), ``koiter`` and ``koiter_error`` (NaN: not computed) and
-    ``branch_note``: why there is no branch (the case is not covered, or "amplitude
-    equation failed: ..." where its solve raised: the point keeps its status, the linear
-    result stands). An :class:`~electrogrowth.outcomes.Outcome`:
+    not computed), ``koiter`` and ``koiter_error`` (NaN: not computed), the second
+    harmonic next to onset where there is one (``koiter_resonance_value``, ``_m``, ``_n``:
+    NaN and -1 where none) and ``branch_note``: why there is no branch (the case is not
+    covered, or "amplitude equation failed: ..." where its solve raised: the point keeps
+    its status, the linear result stands). An :class:`~electrogrowth.outcomes.Outcome`:
     ``unwrap()`` raises the failure, ``outcome_dict()`` gives the shared fields.
     """
 
@@ -92,6 +93,9 @@ class PointResult(Outcome):
     branch: str = ""
     koiter: float = math.nan
     koiter_error: float = math.nan
+    koiter_resonance_value: float = math.nan
+    koiter_resonance_m: int = -1
+    koiter_resonance_n: int = -1
     branch_note: str = ""
 
 
@@ -181,6 +185,17 @@ def verdict_fields(v) -> dict:
         "branch": v.branch or "",
         "koiter": math.nan if v.koiter is None else float(v.koiter),
         "koiter_error": math.nan if v.koiter_error is None else float(v.koiter_error),
+        **_resonance_fields(v.koiter_resonance),
+    }
+
+
+def _resonance_fields(resonance: dict | None) -> dict:
+    """The second harmonic next to onset (koiter_resonance.Resonance as a dict), or none."""
+    r = resonance or {"value": math.nan, "m": -1, "n": -1}
+    return {
+        "koiter_resonance_value": float(r["value"]),
+        "koiter_resonance_m": int(r["m"]),
+        "koiter_resonance_n": int(r["n"]),
     }
 
 
