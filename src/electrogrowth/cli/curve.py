@@ -31,12 +31,12 @@ from .options import (
     add_control_options,
     add_mode_range_options,
     check_side_option,
-    finite_number,
     scan_options_from_args,
 )
 from .progress import add_quiet_option, enabled
 from .report import NAMED, named_physical, physical_line, warn
 from .tube_input import add_any_tube_options, control_of
+from .units import check_held_voltage, key_value
 
 #: How each parameter is described in the options' help (the paper's terms).
 MEANING = {
@@ -63,15 +63,14 @@ def configure_curve(parser: argparse.ArgumentParser) -> None:
     what.add_argument(
         "--from",
         dest="start",
-        type=finite_number,
         required=True,
         metavar="X0",
-        help="first value of the --along parameter",
+        help="first value of the --along parameter (with the tube's physical scales below,"
+        " a length, voltage, pressure or force may carry its unit: 2.6mm)",
     )
     what.add_argument(
         "--to",
         dest="stop",
-        type=finite_number,
         required=True,
         metavar="X1",
         help="last value of the --along parameter",
@@ -105,6 +104,10 @@ def configure_curve(parser: argparse.ArgumentParser) -> None:
 def run_curve(args) -> int:
     params, solve_for = control_of(args)
     check_curve(solve_for, args.along, params)
+    scales = getattr(args, "scales", None)  # --from 2.6mm: a value with the tube's scales
+    args.start, args.stop = (key_value(f, args.along, v, scales) for f, v in
+                             (("--from", args.start), ("--to", args.stop)))  # fmt: skip
+    check_held_voltage(args, [args.along], len(params.layers))
     params = params.at(args.along, args.start)
     if not 2 <= args.points <= MAX_POINTS:
         raise ParameterError(

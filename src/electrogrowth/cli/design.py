@@ -32,12 +32,12 @@ from .options import (
     add_mode_range_options,
     bounded_int,
     check_side_option,
-    finite_number,
     scan_options_from_args,
 )
 from .progress import add_quiet_option
 from .report import named_physical, physical_line
 from .tube_input import add_any_tube_options, control_of
+from .units import check_held_voltage, key_value
 
 PLOT_POINTS = 25  # critical values of each competing mode drawn at this many designs
 MAP_NODES = 101  # grid points along each variable of a map, at most
@@ -70,7 +70,8 @@ def configure_design(parser: argparse.ArgumentParser) -> None:
         metavar=("KEY", "LO", "HI"),
         help="the design variable and its range: outer_radius, length, growth, stretch or"
         f" voltage; for a layered --tube any control or key ({KEYS_TEXT}); give it twice"
-        " for a map over two variables",
+        " for a map over two variables. With the tube's physical scales below, a length,"
+        " voltage, pressure or force may carry its unit (2.6mm 4mm)",
     )
     what.add_argument(
         "--points",
@@ -122,17 +123,24 @@ def _vary(args) -> list[tuple[str, float, float]]:
     if len(args.vary) > 2:
         raise ParameterError("give --vary once or twice (one or two design variables)")
     out = []
-    for key, lo, hi in args.vary:
-        try:
-            lo, hi = finite_number(lo), finite_number(hi)
-        except argparse.ArgumentTypeError as exc:
-            raise ParameterError(f"--vary {key}: {exc}") from None
+    for key, lo, hi in args.vary:  # a value may carry a unit (2.6mm) with the tube's scales
+        scales = getattr(args, "scales", None)
+        lo, hi = (key_value("--vary", key, v, scales) for v in (lo, hi))
         if not lo < hi:
             raise ParameterError(f"--vary {key} {lo:g} {hi:g}: need LO < HI")
         out.append((key, lo, hi))
     if len(out) == 2 and out[0][0] == out[1][0]:
         raise ParameterError(f"--vary {out[0][0]} is given twice; choose two variables")
     return out
+
+
+def _plain(text: str) -> bool:
+    """Whether a bound of --vary is a plain number (not a quantity with its unit)."""
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
 
 
 def _target(args):
@@ -158,6 +166,8 @@ def run_design(args) -> int:
     tube, solve_for = control_of(args)
     for vary in varies:
         check_vary(vary, tube, solve_for)  # the key and its range, before any work
+    volts = [lo for key, lo, _ in args.vary if key == "voltage" and not _plain(lo)]
+    check_held_voltage(args, [v[0] for v in varies], len(tube.layers), (volts or [None])[0])
     if len(varies) == 2 and (same := shared_variable(tube, varies[0][0], varies[1][0])):
         raise ParameterError(
             f"--vary {varies[0][0]} and --vary {varies[1][0]} both set {same} of this tube;"

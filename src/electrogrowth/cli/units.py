@@ -181,6 +181,7 @@ def resolve_units(args: argparse.Namespace) -> None:
             )
         volts = magnitude(quantities["voltage"], "--voltage", "voltage", "V", zero=True)
         args.voltage = scales.to_vbar(volts)
+        args.voltage_text = quantities["voltage"]  # held as Vbar: check_held_voltage
     for dest in LOADS:
         if dest in quantities:
             setattr(args, dest, _load(dest, quantities[dest], r_i, mu))
@@ -202,3 +203,91 @@ def _load(dest: str, text: str, r_i: float, mu: float) -> float:
 
     value = magnitude(text, flag, kind, unit, signed=True)
     return value / mu if kind == "pressure" else value / (mu * r_i * r_i)
+
+
+def _key_unit(key: str) -> tuple[str, str] | None:
+    """(kind, SI unit) of a value of the control or tube key ``key`` (Tube.at) that may be
+    given with a unit, or None for a pure number (a growth, a stretch, a permittivity)."""
+    from ..model.keys import layer_key
+
+    lk = layer_key(key)
+    field = key if lk is None else lk[1]
+    if field in ("outer_radius", "length", "thickness"):
+        return "length", "m"
+    if field in ("pressure", "inner_pressure", "outer_pressure", "shear_modulus"):
+        return "pressure", "Pa"
+    if field in ("force", "axial_force"):
+        return "force", "N"
+    return ("voltage", "V") if field == "voltage" else None
+
+
+def key_value(flag: str, key: str, text, scales) -> float:
+    """The value of ``key`` typed as ``text`` after ``flag`` (--vary KEY LO HI, --from,
+    --to): a number as it is (non-dimensional), or a quantity of the key's kind in units of
+    the tube's ``scales`` (a length in R_i, a voltage in Vbar, a pressure or a layer's
+    modulus in mu, a force in mu R_i^2). One line naming the value otherwise."""
+    try:
+        value = number_or_quantity(str(text)) if not isinstance(text, float) else text
+    except argparse.ArgumentTypeError as exc:
+        raise ParameterError(f"{flag} {key}: {exc}") from None
+    if not isinstance(value, QuantityText):
+        return float(value)
+    unit = _key_unit(key)
+    if unit is None:
+        raise ParameterError(
+            f"{flag} {key} {text}: {key} is a pure number; give it without a unit"
+        )
+    kind, si = unit
+    needs = {
+        "length": ("inner_radius",),
+        "pressure": ("shear_modulus",),
+        "force": ("shear_modulus", "inner_radius"),
+        "voltage": ("inner_radius", "outer_radius", "shear_modulus", "permittivity"),
+    }[kind]
+    if scales is None or not scales.has(*needs):
+        flags = ", ".join("--" + n.replace("_", "-") for n in needs)
+        raise ParameterError(
+            f"{flag} {key} {text} is a {kind}; give {flags} too (the tube's scales), or a"
+            " non-dimensional value"
+        )
+    from ..model.units import magnitude
+
+    signed = key in ("pressure", "inner_pressure", "outer_pressure", "force", "axial_force")
+    got = magnitude(value, f"{flag} {key}", kind, si, zero=kind == "voltage", signed=signed)
+    if kind == "voltage":
+        return scales.to_vbar(got)
+    mu, r_i = scales.shear_modulus, scales.inner_radius
+    if kind == "length":
+        return got / r_i
+    return got / mu if kind == "pressure" else got / (mu * r_i * r_i)
+
+
+def check_held_voltage(args: argparse.Namespace, keys, layers: int, varied=None) -> None:
+    """Refuse a voltage given in volts (--voltage 3kV, or ``varied``: the text of a varied
+    voltage's bound) beside a variable that moves the outer radius: Vbar = V / (R_o - R_i)
+    sqrt(eps / mu) is converted once, at the given R_o; along such a variable the same Vbar
+    is another V at every point (at twice the wall, twice the voltage), not the one asked."""
+    text = varied or getattr(args, "voltage_text", None)
+    moving = [key for key in keys if moves_outer_radius(key, layers)]
+    if text is None or not moving:
+        return
+    given, held = (
+        ("--vary voltage", "") if varied else ("--voltage", f" (here {args.voltage:.6g})")
+    )
+    raise ParameterError(
+        f"{given} {text} is a voltage, but {moving[0]} changes the wall R_o - R_i along the"
+        f" range and with it Vbar = V / (R_o - R_i) sqrt(eps / mu); give the voltage as Vbar"
+        f"{held}, which is held as the wall changes"
+    )
+
+
+def moves_outer_radius(key: str, layers: int) -> bool:
+    """Whether setting ``key`` (Tube.at) of a tube of ``layers`` layers moves its outer
+    radius: outer_radius, the outermost layer's outer radius, any layer's thickness (the
+    layers outside move with it)."""
+    from ..model.keys import layer_key
+
+    lk = layer_key(key)
+    if lk is None:
+        return key == "outer_radius"
+    return lk[1] == "thickness" or (lk[1] == "outer_radius" and lk[0] == layers)
