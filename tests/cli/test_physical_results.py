@@ -70,5 +70,15 @@ def test_postbuckle_prints_its_onset_in_the_units_given(tmp_path, capsys):
     rec = json.loads(capsys.readouterr().out)
     for key in ("onset_linear", "onset_fe"):
         assert rec["physical"][key] == [pytest.approx(100 * rec[key], rel=1e-12), "kPa"]
-    assert main(argv) == 0
-    assert "in physical units: onset_linear = " in capsys.readouterr().out
+    # the branch too: amplitude in mm (R_i = 2 mm), pressure in kPa, energy per unit
+    # length in J/m (mu R_i^2 = 1e5 Pa * 4e-6 m^2 = 0.4 N); before, in units mu only
+    branch, points = rec["physical"]["branch"], rec["branch"]
+    assert branch["amplitude_mm"] == pytest.approx([2 * a for a in points["amplitude"]])
+    assert branch["pressure_kPa"] == pytest.approx([100 * c for c in points["control"]])
+    assert branch["energy_J_per_m"] == pytest.approx([0.4 * e for e in points["energy"]])
+    assert main([*argv, "--out", str(tmp_path / "out")]) == 0
+    out = capsys.readouterr().out
+    assert "in physical units: onset_linear = " in out
+    assert "lowest_mode  amplitude_mm  pressure_kPa  energy_J_per_m" in out
+    header = (tmp_path / "out" / "branch.csv").read_text().splitlines()[0]
+    assert header.endswith("subharmonic_fraction,amplitude_mm,pressure_kPa,energy_J_per_m")

@@ -138,18 +138,20 @@ def run_postbuckle(args) -> int:
         done = stop.partial
         if done is None or args.out is None:
             raise
-        _write(done, Path(args.out))
+        _write(done, Path(args.out), _columns(done, control, getattr(args, "scales", None)))
         raise Interrupted(
             stop.signum,
             f"{stop}; {len(done.amplitude)} finished branch points written to {args.out}",
         ) from None
+    scales = getattr(args, "scales", None)
     if args.out:
-        _write(result, Path(args.out))
+        _write(result, Path(args.out), _columns(result, control, scales))
     if result.ended:
         print(f"electrogrowth: warning: {result.ended}", file=sys.stderr)
-    physical = _physical(result, control, getattr(args, "scales", None))
+    physical = _physical(result, control, scales)
     if args.json:
-        extra = {"physical": physical} if physical else {}
+        branch = dict(_columns(result, control, scales))
+        extra = {"physical": {**physical, "branch": branch}} if physical or branch else {}
         print(json.dumps({**result.as_dict(), "not_first": note or None, **extra}, indent=2))
     else:
         print(
@@ -164,12 +166,15 @@ def run_postbuckle(args) -> int:
             f"initial curvature d({control})/d(a^2) = {result.curvature:.6g} (it changed by"
             f" {result.curvature_error:.2g} from amplitudes ten times larger)"
         )
-        print("amplitude  control  energy  lowest_eigenvalue  lowest_mode")
+        columns = _columns(result, control, getattr(args, "scales", None))
+        names = "".join(f"  {name}" for name, _ in columns)
+        print(f"amplitude  control  energy  lowest_eigenvalue  lowest_mode{names}")
         rows = zip(
             result.amplitude, result.control, result.energy, result.eigenvalue, result.lowest_mode
         )
-        for a, c, e, v, kind in rows:
-            print(f"{a:.6g}  {c:.10g}  {e:.10g}  {v:.4g}  {kind}")
+        for k, (a, c, e, v, kind) in enumerate(rows):
+            more = "".join(f"  {values[k]:.10g}" for _, values in columns)
+            print(f"{a:.6g}  {c:.10g}  {e:.10g}  {v:.4g}  {kind}{more}")
         for s in result.secondary:
             how = "located" if s.located else "interpolated"
             print(
@@ -189,6 +194,26 @@ def _physical(result, control: str, scales) -> dict:
     for name, value in (("onset_linear", result.onset_linear), ("onset_fe", result.onset_fe)):
         for entry in named_physical({control: value}, scales).values():  # none: no unit
             out[name] = entry
+    return out
+
+
+def _columns(result, control: str, scales) -> list[tuple[str, list[float]]]:
+    """The branch in the physical units given, as (name with its unit, values): the
+    amplitude in mm (with --inner-radius), the control in its unit (kPa, kV, N; a growth
+    or stretch has none), the energy per unit length in N = J/m (with --shear-modulus and
+    --inner-radius). None without physical units."""
+    if scales is None:
+        return []
+    out = []
+    if scales.has("inner_radius"):
+        out.append(("amplitude_mm", [float(scales.length(a).magnitude) for a in result.amplitude]))
+    entries = [named_physical({control: float(c)}, scales) for c in result.control]
+    if entries and entries[0]:
+        unit = next(iter(entries[0].values()))[1]
+        out.append((f"{control}_{unit}", [next(iter(e.values()))[0] for e in entries]))
+    if scales.has("inner_radius", "shear_modulus"):
+        r_i, mu = scales.inner_radius, scales.shear_modulus  # energy in units mu R_i^2
+        out.append(("energy_J_per_m", [float(e) * mu * r_i * r_i for e in result.energy]))
     return out
 
 
@@ -260,7 +285,9 @@ def _not_first(scan, mode: tuple[int, int], control: str) -> str:
     )
 
 
-def _write(result, out: Path) -> None:
+def _write(result, out: Path, columns=()) -> None:
+    """branch.csv (with ``columns``: the branch in physical units), the two PNGs and one VTK
+    file of the section per branch point."""
     from ..figures.postbuckle import plot_branch, plot_folding
     from ..postbuckle.shape import whole
 
@@ -270,10 +297,12 @@ def _write(result, out: Path) -> None:
         w.writerow(
             ["amplitude", result.solve_for, "energy", "lowest_eigenvalue", "lowest_mode"]
             + ["subharmonic_fraction"]
+            + [name for name, _ in columns]
         )
         numbers = zip(result.amplitude, result.control, result.energy, result.eigenvalue)
-        for row, kind, sub in zip(numbers, result.lowest_mode, result.subharmonic):
-            w.writerow([repr(float(v)) for v in row] + [kind or "", repr(float(sub))])
+        for k, (row, kind, sub) in enumerate(zip(numbers, result.lowest_mode, result.subharmonic)):
+            more = [repr(float(values[k])) for _, values in columns]
+            w.writerow([repr(float(v)) for v in row] + [kind or "", repr(float(sub))] + more)
     plot_branch(result).savefig(out / "branch.png", dpi=150)
     plot_folding(result).savefig(out / "folding.png", dpi=150)
     try:
