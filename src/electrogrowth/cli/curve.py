@@ -19,6 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..atomic import write_figure
 from ..bifurcation.curves import MAX_POINTS, check_curve, critical_curve
 from ..errors import ParameterError
 from ..figures.plots import plot_curve
@@ -134,10 +135,9 @@ def run_curve(args) -> int:
         raise _kept(stop, args.out / f"{stem}.partial.csv", args.points) from None
     csv = curve.to_csv(args.out / f"{stem}.csv")
     (args.out / f"{stem}.partial.csv").unlink(missing_ok=True)  # of an interrupted run
-    png = args.out / f"{stem}.png"
     ax = plot_curve(curve)
     wrapped_title(ax, tube_text(curve.params, SYMBOLS, skip=(curve.along, curve.solve_for)), 8)
-    ax.figure.savefig(png, dpi=200)
+    png = write_figure(ax.figure, args.out / f"{stem}.png")
     warn(_inaccurate_text(curve))
     physical = _physical(curve, getattr(args, "scales", None))
     if args.json:

@@ -13,6 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..atomic import write_figure, write_text
 from ..basestate.tube import solve_base_state
 from ..bifurcation.curves import critical_curve
 from ..bifurcation.scan import scan_modes
@@ -43,12 +44,12 @@ def run_demo(args) -> int:
     p = HEADLINE
     state = solve_base_state(p)
     rec = state.as_dict()
-    (out / "state.json").write_text(json.dumps(rec, indent=1))
+    write_text(out / "state.json", json.dumps(rec, indent=1))
     _stress_profile(state, out)
     with stage(args, "scanning the wrinkling modes for the critical growth"):
         scan = scan_modes(p, "growth")
     crit = scan.critical
-    (out / "critical.json").write_text(json.dumps(scan.as_dict(), indent=1))
+    write_text(out / "critical.json", json.dumps(scan.as_dict(), indent=1))
     lines = [
         f"Tube Rbar_o = {p.outer_radius:g}, L = {p.length:g}, lambda_z = {p.stretch:g},"
         f" Vbar = {p.voltage:g} ({p.material.name}); units mu = eps = R_i = 1",
@@ -100,7 +101,7 @@ def _stress_profile(state, out: Path) -> None:
         fontsize=9,
     )
     ax.legend()
-    fig.savefig(out / "stress_profile.png", dpi=200)
+    write_figure(fig, out / "stress_profile.png")
 
 
 def _extras(params, crit, out: Path, args) -> list[Path]:
@@ -108,7 +109,7 @@ def _extras(params, crit, out: Path, args) -> list[Path]:
     xs = np.linspace(0.95, 1.25, 4 if args.quick else 13)
     curve = critical_curve(params, "growth", "stretch", xs, progress=enabled(args))
     curve.to_csv(out / "gcr_curve.csv")
-    plot_curve(curve).figure.savefig(out / "gcr_curve.png", dpi=200)
+    write_figure(plot_curve(curve).figure, out / "gcr_curve.png")
     with stage(args, "drawing the wrinkled tube in 3D"):
         render_pattern(mode_shape(crit), path=out / "pattern.png")
     return [out / "gcr_curve.csv", out / "gcr_curve.png", out / "pattern.png"]

@@ -23,6 +23,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..atomic import replaced, replaced_name, write_figure
 from ..errors import ParameterError, UsageError
 from ..model.layers import KEYS_TEXT
 from ..pool import check_workers, usable_cores
@@ -256,8 +257,7 @@ def _write(result, out: Path) -> list[Path]:
         seq.curve.params, seq.solve_for, seq.key, sorted(modes), xs, side=seq.side
     )
     ax = plot_design(result, values, xs)
-    png = out / f"{stem}.png"
-    ax.figure.savefig(png, dpi=200)
+    png = write_figure(ax.figure, out / f"{stem}.png")
     return [csv, png]
 
 
@@ -403,7 +403,6 @@ def _run_map(args, tube, solve_for, varies, target) -> int:
 
 
 def _write_map(result, out: Path, tube) -> list[Path]:
-    from ..atomic import replaced
     from ..figures.design import plot_map_pattern
 
     mmap = result.map
@@ -422,8 +421,7 @@ def _write_map(result, out: Path, tube) -> list[Path]:
                 for x, y, v in zip(b.x, b.y, b.value)
             ]
         fh.write("\n".join(lines) + "\n")
-    png = out / f"{stem}.png"
-    plot_map_pattern(result, tube).savefig(png, dpi=200)  # the map and the design in 3D
+    png = write_figure(plot_map_pattern(result, tube), out / f"{stem}.png")  # and the design in 3D
     files = [csv, png]
     try:
         ds = mmap.to_xarray()
@@ -431,7 +429,8 @@ def _write_map(result, out: Path, tube) -> list[Path]:
         return files
     nc = out / f"{stem}.nc"
     try:
-        ds.to_netcdf(nc)
+        with replaced_name(nc) as name:
+            ds.to_netcdf(name)
     except (ImportError, ValueError):
         return files  # no netCDF engine installed
     return files + [nc]

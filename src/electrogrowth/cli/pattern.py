@@ -18,6 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..atomic import replaced, write_figure
 from ..bifurcation.critical import critical_value
 from ..bifurcation.scan import scan_modes
 from ..errors import MissingDependencyError, ParameterError
@@ -195,9 +196,10 @@ def write_outputs(shape, directory: Path, *, amplitude: float) -> list[Path]:
     plot, csv = directory / f"mode-shape-{stem}.png", directory / f"mode-shape-{stem}.csv"
     if not torsional:
         render_pattern(shape, amplitude=amplitude, path=pattern)
-    plot_mode_shape(shape).savefig(plot, dpi=200)
+    write_figure(plot_mode_shape(shape), plot)
     columns, table = shape.table()
-    np.savetxt(csv, table, delimiter=",", header=",".join(columns), comments="", fmt="%.15g")
+    with replaced(csv) as fh:
+        np.savetxt(fh, table, delimiter=",", header=",".join(columns), comments="", fmt="%.15g")
     return ([] if torsional else [pattern]) + [plot, csv]
 
 

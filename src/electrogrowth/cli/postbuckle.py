@@ -10,6 +10,7 @@ import json
 import sys
 from pathlib import Path
 
+from ..atomic import replaced, replaced_name, write_figure
 from ..errors import ElectrogrowthError, MissingDependencyError, ParameterError, Remedy
 from ..interrupts import Interrupted
 from ..outcomes import Kind
@@ -292,7 +293,7 @@ def _write(result, out: Path, columns=()) -> None:
     from ..postbuckle.shape import whole
 
     out.mkdir(parents=True, exist_ok=True)
-    with open(out / "branch.csv", "w", newline="") as f:
+    with replaced(out / "branch.csv", newline="") as f:
         w = csv.writer(f)
         w.writerow(
             ["amplitude", result.solve_for, "energy", "lowest_eigenvalue", "lowest_mode"]
@@ -303,8 +304,8 @@ def _write(result, out: Path, columns=()) -> None:
         for k, (row, kind, sub) in enumerate(zip(numbers, result.lowest_mode, result.subharmonic)):
             more = [repr(float(values[k])) for _, values in columns]
             w.writerow([repr(float(v)) for v in row] + [kind or "", repr(float(sub))] + more)
-    plot_branch(result).savefig(out / "branch.png", dpi=150)
-    plot_folding(result).savefig(out / "folding.png", dpi=150)
+    write_figure(plot_branch(result), out / "branch.png", dpi=150)
+    write_figure(plot_folding(result), out / "folding.png", dpi=150)
     try:
         import meshio
     except ImportError:
@@ -322,7 +323,6 @@ def _write(result, out: Path, columns=()) -> None:
         zero = np.zeros(pts.shape[1])
         # the ring in the plane z = 0; the longitudinal section in the plane y = 0
         points = np.vstack([pts, zero] if result.n == 0 else [pts[0], zero, pts[1]]).T
-        meshio.write(
-            out / f"shape-{k}.vtu",
-            meshio.Mesh(points, [("quad", cells)], cell_data={"layer": [layer + 1]}),
-        )
+        with replaced_name(out / f"shape-{k}.vtu") as name:
+            mesh = meshio.Mesh(points, [("quad", cells)], cell_data={"layer": [layer + 1]})
+            meshio.write(name, mesh)

@@ -11,6 +11,7 @@ import time
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
+from ..atomic import write_text
 from ..errors import ParameterError
 from ..figures import FIGURES, GALLERY
 from ..figures.plots import render_pattern
@@ -103,11 +104,12 @@ def run_reproduce(args) -> int:
         sections.append(_section(number, fn, result, patterns, seconds, args.quick))
         print(f"figure {number}: {out / f'fig{number}.png'} ({seconds:.1f} s)")
     index = out / "index.md"
-    index.write_text(
+    write_text(
+        index,
         "# The paper's figures, reproduced by electrogrowth\n\n"
         "Each figure: the paper's caption, our plot and data, and the"
         " parameters of this run. Differences from the paper are discussed"
-        " in docs/paper-comparison.md.\n\n" + "\n".join(sections)
+        " in docs/paper-comparison.md.\n\n" + "\n".join(sections),
     )
     print(index)
     return 0
@@ -189,10 +191,11 @@ def run_gallery(args) -> int:
     if pool:
         pool.shutdown()
     index = out / "gallery.md"
-    index.write_text(
+    write_text(
+        index,
         "# Gallery: layered, growing, pressurised tubes, computed by electrogrowth\n\n"
         "Each example: what it computes, its plot, its data and the 3D patterns at onset."
-        " The discussion is in docs/patterns.md.\n\n" + "\n".join(sections)
+        " The discussion is in docs/patterns.md.\n\n" + "\n".join(sections),
     )
     print(index)
     return 0

@@ -8,6 +8,7 @@ import argparse
 import sys
 from pathlib import Path
 
+from ..atomic import write_figure
 from ..errors import ElectrogrowthError, UsageError
 from ..interrupts import Interrupted, interrupt_of
 from ..pool import check_workers
@@ -185,7 +186,7 @@ def run_plot(args) -> int:
     args.out.mkdir(parents=True, exist_ok=True)
     stem = f"{args.store.name.removesuffix('.zarr')}_{x}_{y}"
     for path in (args.out / f"{stem}.png", args.out / f"{stem}.svg"):
-        fig.savefig(path, dpi=150)
+        write_figure(fig, path, dpi=150)
         print(path)
     return 0
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import dataclasses
 
+from ..atomic import write_text
 from ..bifurcation.options import ScanOptions
 from ..continuation.contour import MAX_POINTS
 from ..design.map_record import ModeMap
@@ -120,7 +121,6 @@ def write_fold_designs(path, *, progress=None, workers: int = 1, map_path=None) 
     ``map_path``: where the map alone is written as soon as it is traced."""
     import json
     import time
-    from pathlib import Path
 
     start = time.perf_counter()
     tube = gut_bilayer(FULL_BOX[0][1] - 1.0, FULL_BOX[1][1])
@@ -129,7 +129,7 @@ def write_fold_designs(path, *, progress=None, workers: int = 1, map_path=None) 
         certify=FULL_CERTIFY, max_step=FULL_STEP, progress=progress, workers=workers,
     )  # fmt: skip
     if map_path is not None:
-        Path(map_path).write_text(json.dumps(mmap.as_dict(), indent=1) + "\n", encoding="utf-8")
+        write_text(map_path, json.dumps(mmap.as_dict(), indent=1) + "\n")
     return design_and_write(path, mmap, time.perf_counter() - start, progress, workers)
 
 
@@ -151,7 +151,6 @@ def design_and_write(
     """Design the traced full map ``mmap`` for 8, 12 and 16 folds (``workers`` at once)
     and write map and designs to ``path`` (:func:`write_fold_designs`)."""
     import json
-    from pathlib import Path
 
     from ..pool import run_tasks
 
@@ -172,7 +171,7 @@ def design_and_write(
         "designs": {str(m): d.as_dict() for m, d in designs.items()},
         "seconds": seconds,
     }
-    Path(path).write_text(json.dumps(record, indent=1) + "\n", encoding="utf-8")
+    write_text(path, json.dumps(record, indent=1) + "\n")
     return FoldDesigns(mmap, designs, draw_folds(designs))
 
 

@@ -17,6 +17,7 @@ from mpl_toolkits.mplot3d import proj3d
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
 from .._types import FloatArray
+from ..atomic import write_figure
 from ..bifurcation.curves import Curve
 from ..outcomes import NO_MODE, Status
 from ..shapes.mode_shape import ModeShape
@@ -255,8 +256,7 @@ def render_pattern(
             va="top",
         )
     if path is not None:
-        Path(path).parent.mkdir(parents=True, exist_ok=True)
-        fig.savefig(path, dpi=dpi)
+        write_figure(fig, path, dpi=dpi)
     return fig
 
 

@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 from matplotlib.collections import PolyCollection
 
+from ..atomic import write_text
 from ..model.layers import Layer, Tube
 from ..postbuckle import postbuckle
 from ..postbuckle.onset import fe_onset
@@ -78,7 +79,7 @@ def write_case(name: str, path: Path, progress=None) -> dict:
             "unknowns": section.unknowns,
             "onset_fe": onset,
         }
-    path.write_text(json.dumps(record, indent=1) + "\n", encoding="utf-8")
+    write_text(path, json.dumps(record, indent=1) + "\n")
     return record
 
 

@@ -16,6 +16,7 @@ from pathlib import Path
 import matplotlib as mpl
 import numpy as np
 
+from ..atomic import write_text
 from ..shapes.mode_shape import ModeShape
 from ..shapes.wall import Surface, wall_surface
 
@@ -69,10 +70,7 @@ def pattern_html(
 
 def write_pattern_html(shape: ModeShape, path: str | Path, **options) -> Path:
     """Write :func:`pattern_html` to ``path`` (parent directories created)."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(pattern_html(shape, **options), encoding="utf-8")
-    return path
+    return write_text(path, pattern_html(shape, **options))
 
 
 PAGE = """<!DOCTYPE html>

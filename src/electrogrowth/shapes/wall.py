@@ -21,6 +21,7 @@ from pathlib import Path
 import numpy as np
 
 from .._types import FloatArray
+from ..atomic import replaced_name
 from ..errors import MissingDependencyError, ParameterError
 from .mode_shape import ModeShape
 
@@ -244,8 +245,8 @@ def export_vtk(
         key: mesh[key]
         for key in ("displacement", "radial_displacement", "potential", "r_reference")
     }
-    path.parent.mkdir(parents=True, exist_ok=True)
-    meshio.write(
-        path, meshio.Mesh(mesh["points"], [("hexahedron", mesh["cells"])], point_data=data)
-    )
+    with replaced_name(path) as name:  # whole or not at all
+        meshio.write(
+            name, meshio.Mesh(mesh["points"], [("hexahedron", mesh["cells"])], point_data=data)
+        )
     return path
