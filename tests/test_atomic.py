@@ -166,3 +166,11 @@ def test_no_command_writes_in_place():
         if in_place.search(line) and not line.lstrip().startswith(("#", '"', "Off-screen"))
     ]
     assert not found, found
+
+
+@pytest.mark.parametrize("command", ["reproduce --quick", "demo --quick"])
+def test_an_empty_out_is_refused(command, capsys):
+    """Probe 11b (doubt): `--out ''` wrote into the current directory without a word."""
+    assert cli.main([*command.split(), "--out", ""]) == 2
+    err = capsys.readouterr().err
+    assert "argument --out: '' is an empty path" in err and err.count("\n") == 1

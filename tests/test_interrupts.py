@@ -294,3 +294,56 @@ def test_a_signal_in_a_finaliser_interrupts_the_code_after_it(capsys, sigint_int
                 pass
             raise AssertionError("the interrupt was lost in the finaliser")
     assert "Exception ignored" not in capsys.readouterr().err
+
+
+DESIGN = (
+    "design --solve-for growth --outer-radius 1.4 --vary voltage 0 0.3 --points 3"
+    " --target 0 1 --m-max 3 --n-max 3"
+).split()
+
+
+def test_an_interrupted_design_keeps_its_finished_scans(monkeypatch, tmp_path, capsys):
+    """Probe 11b D3: Ctrl-C during `design` kept nothing (curve keeps its points). Stopped
+    at its second full scan (the last point): the two finished points in a .partial.csv,
+    named in the one line."""
+    calls = []
+
+    def scan(params, *args, **kwargs):
+        if len(calls) == 1:
+            raise _wrapped_interrupt()
+        calls.append(params)
+        return real(params, *args, **kwargs)
+
+    real = curves.scan_modes
+    monkeypatch.setattr(curves, "scan_modes", scan)
+    assert cli.main([*DESIGN, "--out", str(tmp_path)]) == 130
+    err = capsys.readouterr().err
+    partial = tmp_path / "design_0_1_vs_voltage.partial.csv"
+    rows = list(csv.DictReader(partial.open()))
+    kept = f"2 of 3 points written to {partial} (switches not located)"
+    assert err == f"electrogrowth: interrupted; {kept}\n"
+    assert [float(r["voltage"]) for r in rows] == [0.0, 0.15]
+    assert all(r["kind"] == "bifurcation" and float(r["growth_cr"]) > 1 for r in rows)
+    calls.clear()
+    assert cli.main(DESIGN) == 130  # without --out: nothing to write, and it says how
+    assert "give --out DIR to keep the finished points" in capsys.readouterr().err
+
+
+def test_a_design_interrupted_after_its_sequence_keeps_the_sequence(monkeypatch, tmp_path, capsys):
+    """Stopped while choosing the design (margins, sensitivities): the mode sequence is
+    whole, its CSV is written; a later complete run removes a stale .partial.csv."""
+    import electrogrowth.design as design
+
+    def prescribe(*args, **kwargs):
+        raise Interrupted()
+
+    (tmp_path / "design_0_1_vs_voltage.partial.csv").write_text("stale\n")
+    real = design.prescribe
+    monkeypatch.setattr(design, "prescribe", prescribe)
+    assert cli.main([*DESIGN, "--out", str(tmp_path)]) == 130
+    path = tmp_path / "design_0_1_vs_voltage.csv"
+    assert f"the mode sequence written to {path} (no design chosen)" in capsys.readouterr().err
+    assert len(list(csv.DictReader(path.open()))) >= 3  # the grid and the located switches
+    monkeypatch.setattr(design, "prescribe", real)
+    assert cli.main([*DESIGN, "--out", str(tmp_path)]) == 0
+    assert not (tmp_path / "design_0_1_vs_voltage.partial.csv").exists()

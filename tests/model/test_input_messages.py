@@ -182,3 +182,14 @@ def test_a_denormal_substrate_modulus_is_refused_not_an_internal_error(tmp_path,
     assert cli.main([*args, "--component", "theta", "--mode", "33", "0"]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "shear_modulus = 1e-300 is outside the supported" in err
+
+
+@pytest.mark.parametrize("value", ['"3 kV"', '"2.8mm"', '"100 kPa"'])
+def test_a_quantity_in_a_tube_file_says_where_units_go(value):
+    """Probe 11b (doubt): `voltage = "3 kV"` in a tube file was "expected a number, got a
+    string", with no word that files are non-dimensional and units go on the command line."""
+    with pytest.raises(ConfigError, match="give physical units on the command line"):
+        parse_tube(f"voltage = {value}\n[[layers]]\nouter_radius = 1.4\n")
+    with pytest.raises(ConfigError) as plain:
+        parse_tube('[[layers]]\nouter_radius = "abc"\n')
+    assert "units" not in str(plain.value)

@@ -32,6 +32,7 @@ from .options import (
     add_control_options,
     add_mode_range_options,
     check_side_option,
+    path_arg,
     scan_options_from_args,
 )
 from .progress import add_quiet_option, enabled
@@ -89,7 +90,7 @@ def configure_curve(parser: argparse.ArgumentParser) -> None:
     add_mode_range_options(modes)
     parser.add_argument(
         "--out",
-        type=Path,
+        type=path_arg,
         default=Path("out"),
         metavar="DIR",
         help="directory for the CSV and PNG (default ./out)",

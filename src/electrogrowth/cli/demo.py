@@ -21,6 +21,7 @@ from ..figures.plots import plot_curve, render_pattern
 from ..figures.style import COLORS, new_figure
 from ..model.layers import Tube
 from ..shapes.mode_shape import mode_shape
+from .options import path_arg
 from .progress import add_quiet_option, enabled, stage
 
 HEADLINE = Tube.uniform(outer_radius=1.4, length=1.0, growth=1.0, stretch=1.0, voltage=0.4)
@@ -29,7 +30,7 @@ HEADLINE = Tube.uniform(outer_radius=1.4, length=1.0, growth=1.0, stretch=1.0, v
 def configure_demo(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--out",
-        type=Path,
+        type=path_arg,
         default=Path("out"),
         metavar="DIR",
         help="directory for the PNG, CSV and JSON results (default ./out)",

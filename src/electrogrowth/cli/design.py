@@ -25,6 +25,7 @@ import numpy as np
 
 from ..atomic import replaced, replaced_name, write_figure
 from ..errors import ParameterError, UsageError
+from ..interrupts import Interrupted
 from ..model.layers import KEYS_TEXT
 from ..pool import check_workers, usable_cores
 from .options import (
@@ -33,6 +34,7 @@ from .options import (
     add_mode_range_options,
     bounded_int,
     check_side_option,
+    path_arg,
     scan_options_from_args,
 )
 from .progress import add_quiet_option
@@ -88,7 +90,7 @@ def configure_design(parser: argparse.ArgumentParser) -> None:
     add_mode_range_options(modes)
     parser.add_argument(
         "--out",
-        type=Path,
+        type=path_arg,
         default=None,
         metavar="DIR",
         help="directory for the CSV of the mode sequence and the PNG (none by default)",
@@ -161,6 +163,7 @@ def _target(args):
 def run_design(args) -> int:
     from ..design import mode_sequence, prescribe  # the numeric stack, after the checks
     from ..design.sequence import check_vary, shared_variable
+    from ..design.targets import check_target
 
     varies, target = _vary(args), _target(args)
     check_side_option(args)
@@ -190,20 +193,28 @@ def run_design(args) -> int:
     vary = varies[0]
     tube = tube.at(vary[0], vary[1])
     options = scan_options_from_args(args)
-    sequence = mode_sequence(
-        tube, solve_for, vary, side=args.side, options=options,
-        points=9 if args.points is None else args.points,
-    )  # fmt: skip
+    points = 9 if args.points is None else args.points
+    stem = _stem(check_target(target).name, vary[0])
+    try:
+        sequence = mode_sequence(
+            tube, solve_for, vary, side=args.side, options=options, points=points
+        )
+    except Interrupted as stop:  # keep the finished scans
+        raise _kept(stop, args.out, stem, points) from None
     if _every_point_failed(sequence):
         return 2
-    result = prescribe(
-        tube, solve_for, target, vary, options=options, sequence=sequence, koiter=args.koiter
-    )
+    try:
+        result = prescribe(
+            tube, solve_for, target, vary, options=options, sequence=sequence, koiter=args.koiter
+        )
+    except Interrupted as stop:  # the sequence is whole: keep it
+        raise _kept(Interrupted(stop.signum, str(stop), sequence.curve), args.out, stem) from None
     record = result.as_dict()
     seq = sequence
     _add_physical(record, args, result, {seq.solve_for: result.value, seq.key: result.x})
     if args.out is not None:
         record["files"] = [str(p) for p in _write(result, args.out)]
+        (args.out / f"{stem}.partial.csv").unlink(missing_ok=True)  # of an interrupted run
     if args.json:
         print(json.dumps(record))
         return 0
@@ -242,13 +253,39 @@ def _every_point_failed(sequence) -> bool:
     return True
 
 
+def _stem(target: str, key: str) -> str:
+    """The name of a one-variable design's files: design_<target>_vs_<key>."""
+    name = re.sub(r"[^A-Za-z0-9]+", "_", target).strip("_")
+    return f"design_{name}_vs_{key}".replace("[", "").replace("]", "")
+
+
+def _kept(stop: Interrupted, out: Path | None, stem: str, total: int = 0) -> Interrupted:
+    """The interrupt, saying what was kept: the scans finished before it (``total`` the
+    grid's points; a CSV named .partial.csv, no switch located), or the whole mode
+    sequence (total 0: its CSV, no design chosen); nothing without --out."""
+    done = stop.partial
+    if done is None or not len(done.x):
+        return Interrupted(stop.signum, f"{stop}; no point was finished")
+    if out is None:
+        return Interrupted(stop.signum, f"{stop}; give --out DIR to keep the finished points")
+    if not total:
+        path = done.to_csv(out / f"{stem}.csv")
+        return Interrupted(
+            stop.signum, f"{stop}; the mode sequence written to {path} (no design chosen)"
+        )
+    path = done.to_csv(out / f"{stem}.partial.csv")
+    return Interrupted(
+        stop.signum,
+        f"{stop}; {len(done.x)} of {total} points written to {path} (switches not located)",
+    )
+
+
 def _write(result, out: Path) -> list[Path]:
     from ..design.sequence import mode_values
     from ..figures.design import plot_design
 
     seq = result.sequence
-    name = re.sub(r"[^A-Za-z0-9]+", "_", result.target).strip("_")
-    stem = f"design_{name}_vs_{seq.key}".replace("[", "").replace("]", "")
+    stem = _stem(result.target, seq.key)
     csv = seq.curve.to_csv(out / f"{stem}.csv")
     modes = {iv.mode for iv in seq.intervals if iv.kind == "bifurcation"}
     modes |= {m for m in (result.mode, result.next_mode) if m is not None}

@@ -6,6 +6,7 @@ import argparse
 from pathlib import Path
 
 from ..figures import FIGURES
+from .options import path_arg
 from .progress import add_quiet_option, progress_options, stage
 
 
@@ -21,7 +22,7 @@ def configure_figure(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--out",
-        type=Path,
+        type=path_arg,
         default=Path("out"),
         metavar="DIR",
         help="directory for fig<N>.png and fig<N>.csv (default ./out)",

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import math
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ..errors import ParameterError
@@ -33,6 +34,15 @@ def finite_number(text: str) -> float:
     if not math.isfinite(value):
         raise argparse.ArgumentTypeError(f"{text!r} is not a finite number")
     return value
+
+
+def path_arg(text: str) -> Path:
+    """A path; an empty one is refused (it would silently mean the current directory)."""
+    if not text.strip():
+        raise argparse.ArgumentTypeError(
+            f"{text!r} is an empty path; give a file or directory ('.' for this one)"
+        )
+    return Path(text)
 
 
 def bounded_int(lowest: int, highest: int, why: str = ""):

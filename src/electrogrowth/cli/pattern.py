@@ -37,6 +37,7 @@ from .options import (
     check_side_option,
     finite_number,
     mode_from_args,
+    path_arg,
     scan_options_from_args,
 )
 from .progress import add_quiet_option, stage
@@ -86,7 +87,7 @@ def configure_pattern(parser: argparse.ArgumentParser) -> None:
     )
     shape.add_argument(
         "--out",
-        type=Path,
+        type=path_arg,
         metavar="DIR",
         help="write pattern-m<M>-n<N>.png (3D wrinkled tube, coloured by u_r),"
         " mode-shape-m<M>-n<N>.png (U_r, U_theta, U_z, Phi against r) and"
@@ -95,7 +96,7 @@ def configure_pattern(parser: argparse.ArgumentParser) -> None:
     )
     shape.add_argument(
         "--vtk",
-        type=Path,
+        type=path_arg,
         metavar="FILE",
         help="write the wall as a hexahedral VTK mesh (.vtu or .vtk) with"
         " point data displacement, radial_displacement, potential and"

@@ -16,6 +16,7 @@ from ..errors import ParameterError
 from ..figures import FIGURES, GALLERY
 from ..figures.plots import render_pattern
 from ..shapes.mode_shape import mode_shape
+from .options import path_arg
 from .progress import add_quiet_option, counting, progress_options, stage
 
 #: The paper's captions (quoted; Figure 7's caption in the paper repeats Figure 5's topic,
@@ -47,7 +48,7 @@ CAPTIONS = {
 def configure_reproduce(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--out",
-        type=Path,
+        type=path_arg,
         default=Path("out/figures"),
         metavar="DIR",
         help="directory for fig<N>.png/.csv, the patterns and index.md (default ./out/figures)",

@@ -14,6 +14,7 @@ from ..interrupts import Interrupted, interrupt_of
 from ..pool import check_workers
 from ..sweep.file import load_config
 from ..sweep.run import compute_sweep
+from .options import path_arg
 from .progress import enabled
 
 EXTRA = "pip install 'electrogrowth[sweep]'"
@@ -36,7 +37,7 @@ def _need_sweep_extra() -> None:
 def configure_sweep(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "file",
-        type=Path,
+        type=path_arg,
         metavar="SWEEP.toml",
         help="the sweep: material (or a layered [tube] file, whose controls and keys such as"
         " layers[1].thickness it may fix and vary), fixed parameters, grids, what to solve for,"
@@ -45,7 +46,7 @@ def configure_sweep(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--out",
-        type=Path,
+        type=path_arg,
         metavar="STORE.zarr",
         help="the Zarr store of the results (default: the file's name with"
         " .zarr, in the current directory). If it holds the same sweep,"
@@ -146,7 +147,7 @@ def _print_plan(config, out: Path) -> int:
 def configure_plot(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "store",
-        type=Path,
+        type=path_arg,
         metavar="RESULTS.zarr",
         help="a store written by `electrogrowth sweep` (may be unfinished)",
     )
@@ -166,7 +167,7 @@ def configure_plot(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--out",
-        type=Path,
+        type=path_arg,
         default=Path("out"),
         metavar="DIR",
         help="directory for <store>_<x>_<y>.png and .svg (default ./out)",

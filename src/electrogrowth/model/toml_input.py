@@ -91,7 +91,7 @@ def typename(v) -> str:
 def finite(v, path: tuple) -> float:
     """``v`` as a finite float, or ConfigError at the key ``path``."""
     if isinstance(v, bool) or not isinstance(v, (int, float)):
-        raise ConfigError(path, f"expected a number, got {typename(v)} {shown(v)}")
+        raise ConfigError(path, f"expected a number, got {typename(v)} {shown(v)}{units_hint(v)}")
     try:
         value = float(v)
     except OverflowError:  # an integer beyond the largest double
@@ -99,6 +99,21 @@ def finite(v, path: tuple) -> float:
     if not math.isfinite(value):
         raise ConfigError(path, f"{shown(v)} is not a finite number (largest double 1.8e308)")
     return value
+
+
+#: a string that reads as a quantity: a number and a unit ("3 kV", "2.8mm")
+_QUANTITY = re.compile(r"\s*[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?\s*[A-Za-z\u00b5\u03bc]")
+
+
+def units_hint(v) -> str:
+    """For a quantity given where a file wants a number ("3 kV"): where units go."""
+    if not (isinstance(v, str) and _QUANTITY.match(v)):
+        return ""
+    return (
+        "; files hold non-dimensional values (mu = eps = R_i = 1): give physical units on"
+        " the command line (e.g. --voltage 3kV with --inner-radius, --shear-modulus and"
+        " --permittivity), or the value in those units"
+    )
 
 
 def shown(v, limit: int = 60) -> str:
