@@ -101,3 +101,38 @@ def test_no_surface_in_the_scans_none_in_the_margin():
     d = _design(1.75, 1.8, 2, ScanOptions((0, 2), (1, 2), extend=False, surface=False))
     assert d.limited_by == "mode" and d.next_mode == (1, 1)
     assert d.surface_value != d.surface_value  # NaN: not located
+
+
+def test_a_map_pattern_that_is_no_mode_is_not_in_a_target():
+    """A map's "surface" (or "threshold", "failed") label was unpacked into the target's
+    accepts(m, n): TypeError, so no map with a surface region could be designed on."""
+    from electrogrowth.design.targets import check_target
+
+    for target in ((0, 1), "axisymmetric", [(0, 1), (1, 1)], lambda m, n: True):
+        goal = check_target(target)
+        assert "surface" not in goal and "threshold" not in goal and None not in goal
+    assert (0, 1) in check_target("axisymmetric") and [0, 1] in check_target((0, 1))
+
+
+@pytest.mark.slow  # 40 s: a map of two variables and its design
+def test_map_design_counts_the_surface_limit():
+    """The same tube over L and Rbar_o: the map's design is the tie of (1, 1) with the
+    limit (it raised TypeError on the map's "surface" region before; its margin left the
+    limit out, as along one variable)."""
+    from electrogrowth.design.mode_map import mode_map
+    from electrogrowth.design.prescribe_map import prescribe_map
+
+    tube = Tube.uniform(R, length=1.6)
+    vary = (("length", 1.6, 1.95), ("outer_radius", 2.08, 2.12))
+    mm = mode_map(tube, "voltage", vary, points=2, options=NEAR, certify=2)
+    assert any("surface" in (b.left, b.right) for b in mm.boundaries)
+    d = prescribe_map(tube, (0, 1), mm, options=NEAR)
+    at = tube.at("length", d.x).at("outer_radius", d.y)
+    v, v_s = _values(at)
+    v_11 = critical_value(at, 1, 1, "voltage").value
+    assert d.status == FOUND and d.value == pytest.approx(v, rel=1e-11)
+    assert d.margin == pytest.approx(min(v_s - v, v_11 - v) / v, rel=1e-8)
+    assert v_11 == pytest.approx(v_s, rel=1e-9)  # the tie: a kink of M
+    assert "surface" in {d.limited_by, *d.tied_with}
+    best = d.as_dict()["best"]
+    assert best["surface_value"] == pytest.approx(v_s, rel=1e-11)

@@ -83,7 +83,7 @@ def _locate(tube, solve_for: str, side, until: float | None):
         except ElectrogrowthError:
             pass  # no state at w (past a threshold): the march decides
     try:
-        lim = short_wave_limit(tube, solve_for, side=side, until=until)
+        lim = short_wave_limit(tube, solve_for, side=side, until=until, estimate=False)
     except ElectrogrowthError:  # not located: counted as no competitor up to w
         return None, until
     if lim.kind == Kind.SURFACE:
