@@ -13,9 +13,8 @@ already wrinkled. There the room below the target's onset counts as a competitor
 
 the room from the start to the target relative to the room from the target to the next
 competitor (M the gap to the next mode, the crease or the short-wave limit, whichever is
-nearest). M_0 = 0 at the
-end, as M = 0 at a switch; min(M, M_0) is largest where both rooms balance (for v_0 = 0:
-v_N = 2 v_T, M = 1).
+nearest). M_0 = 0 at the end, as M = 0 at a switch; min(M, M_0) is largest where both
+rooms balance (for v_0 = 0: v_N = 2 v_T, M = 1).
 
 That rule assumes v_T falls to v_0 at the end. At a cliff it does not: the target's onset
 stays away from the start up to the end and beyond it the tube is unstable at v_0 at once
