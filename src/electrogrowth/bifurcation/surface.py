@@ -146,7 +146,9 @@ def _second_resolution(value_coarse, value: float) -> float:
     raise ConvergenceError(f"no root of the coarse half-space target near {value}")
 
 
-def _solve(params, solve_for, side, faces, rtol, direction, until=None) -> SurfaceLimit:
+def _solve(
+    params, solve_for, side, faces, rtol, direction, until=None, estimate=True
+) -> SurfaceLimit:
     solve_for, side, faces = _check(params, solve_for, side, faces, rtol)
     signs = reference_signs(params)
     fine = Resolution(25, 1e-10, rtol)
@@ -176,7 +178,7 @@ def _solve(params, solve_for, side, faces, rtol, direction, until=None) -> Surfa
     value_of = SampleValue(h, StateAt(at, rtol))
     value = events.brent(value_of, *bracket, events.surface_tolerance(rtol))
     coarse_of = SampleValue(hc, StateAt(at, coarse.rtol))
-    err = _second_resolution(coarse_of, value)
+    err = _second_resolution(coarse_of, value) if estimate else math.nan
     s = h(solve_base_state(at(value), rtol=rtol))
     return SurfaceLimit(
         solve_for, value, s.face, s.psi, _ratio(s.psi), Kind.SURFACE, err, at(value), side
@@ -201,6 +203,7 @@ def short_wave_limit(
     psi: float | None = None,
     rtol: float | None = None,
     until: float | None = None,
+    estimate: bool = True,
 ) -> SurfaceLimit:
     """Critical value of ``solve_for`` for wrinkles of vanishing wavelength (m, k -> inf).
 
@@ -227,6 +230,9 @@ def short_wave_limit(
     until : float, optional
         March only this far (a scan asks whether the limit comes before its best finite
         mode): kind "none" when nothing is met before it.
+    estimate : bool
+        Also the error estimate (a second root at a coarser resolution, a fifth of the
+        cost); False: ``error_estimate`` NaN (a design's margin needs the value only).
 
     Returns
     -------
@@ -247,11 +253,12 @@ def short_wave_limit(
     elif rtol is None:
         rtol = DEFAULT_RTOL
     if psi is None:
-        return _solve(params, solve_for, side, faces, rtol, None, until)
+        return _solve(params, solve_for, side, faces, rtol, None, until, estimate)
     if isinstance(psi, bool) or not isinstance(psi, (int, float)) or not 0 <= psi <= HALF_PI:
         raise ParameterError(f"psi = {psi!r} is out of range; valid range: 0 <= psi <= pi/2")
     fixed = float(psi)
-    return _solve(params, solve_for, side, faces, rtol, FixedDirection(fixed), until)
+    direction = FixedDirection(fixed)
+    return _solve(params, solve_for, side, faces, rtol, direction, until, estimate)
 
 
 def ray_limit(

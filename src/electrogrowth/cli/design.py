@@ -353,8 +353,8 @@ def _tie_lines(result) -> list[str]:
     """One line where competitors tie at the design (a kink of the margin)."""
     if not result.tied_with:
         return []
-    lead = "the crease" if result.limited_by == "crease" else result.next_mode
-    names = ", ".join(str(t) for t in (lead, *result.tied_with))
+    lead = RIVALS.get(result.limited_by, result.next_mode)
+    names = ", ".join(str(RIVALS.get(t, t)) for t in (lead, *result.tied_with))
     return [
         f"  {names} tie at this design: the margin has a kink there, its derivatives are"
         " one-sided (lowering / raising the parameter)"
@@ -385,13 +385,24 @@ def _creased(crease: dict | None) -> str:
     return f" (a face creases first at {first} of its {rows} points)"
 
 
-def _limit(result) -> str:
-    """What sets a one-variable design's margin, with its value."""
+#: how the text names the competitors that are no mode (limited_by, tied_with)
+RIVALS = {"crease": "the crease", "surface": "the short-wave limit"}
+
+
+def _lead(result) -> str:
+    """What sets a design's margin, with its value: a mode, the crease or the limit."""
     if result.limited_by == "crease":
         return f"the crease ({result.crease_value:.10g})"
+    if result.limited_by == "surface":
+        return f"the short-wave limit ({result.surface_value:.10g})"
+    return f"{_name(result.next_mode)} ({result.next_value:.10g})"
+
+
+def _limit(result) -> str:
+    """What sets a one-variable design's margin, with its value."""
     if result.limited_by == "no design":  # the room below the target over the room above
         return f"the end of the valid range (next {result.next_mode} at {result.next_value:.10g})"
-    return f"{result.next_mode} ({result.next_value:.10g})"
+    return _lead(result)
 
 
 def _verdict_lines(verdict: dict) -> list[str]:
@@ -512,12 +523,10 @@ def map_summary(result, physical: dict | None = None) -> list[str]:
             " in its region"
         )
     best = BEST.get(result.status, "never first; closest design")
-    crease = result.limited_by == "crease"
     lines.append(
         f"  {best}: {kx} = {result.x:.10g}, {ky} = {result.y:.10g}, mode {result.mode} at"
         f" {mmap.solve_for}_cr = {result.value:.10g}, margin {result.margin:.4g} to"
-        f" {'the crease' if crease else _name(result.next_mode)}"
-        f" ({result.crease_value if crease else result.next_value:.10g})"
+        f" {_lead(result)}"
     )
     lines += physical_line(physical or {})
     lines += _verdict_lines(result.verdict)

@@ -1,8 +1,8 @@
-"""The margin of a target mode at a design x: its relative gap to the next mode and to the
-crease (design/prescribe.py's module docstring defines M), from critical values of single
-modes cached per design; and, next to a located end of the valid range (a switch to "no
-design": the tube is already unstable at the control's start, or has no state, beyond it),
-the gap to that end.
+"""The margin of a target mode at a design x: its relative gap to the next mode, to the
+crease and to the exact short-wave limit (design/prescribe.py's module docstring defines M;
+design/short_waves.py), from critical values of single modes cached per design; and, next
+to a located end of the valid range (a switch to "no design": the tube is already unstable
+at the control's start, or has no state, beyond it), the gap to that end.
 
 Approaching such an end the target's critical value v_T falls to the control's start v_0,
 so the relative gap M = s (v_N - v_T) / |v_T| grows without bound for a control that
@@ -12,9 +12,9 @@ already wrinkled. There the room below the target's onset counts as a competitor
     M_0(x) = s (v_T - v_0) / (M |v_T|)  =  (v_T - v_0) / (v_N - v_T),
 
 the room from the start to the target relative to the room from the target to the next
-competitor (M the gap to the next mode or the crease, whichever is nearer). M_0 = 0 at the
-end, as M = 0 at a switch; min(M, M_0) is largest where both rooms balance (for v_0 = 0:
-v_N = 2 v_T, M = 1).
+competitor (M the gap to the next mode, the crease or the short-wave limit, whichever is
+nearest). M_0 = 0 at the end, as M = 0 at a switch; min(M, M_0) is largest where both
+rooms balance (for v_0 = 0: v_N = 2 v_T, M = 1).
 
 That rule assumes v_T falls to v_0 at the end. At a cliff it does not: the target's onset
 stays away from the start up to the end and beyond it the tube is unstable at v_0 at once
@@ -43,6 +43,7 @@ from ..errors import ElectrogrowthError
 from ..outcomes import Kind
 from . import onset
 from .onset import gap_to_crease
+from .short_waves import SurfaceRival
 
 #: M_0 at a located end above which the end is a cliff (module docstring): a smooth end
 #: leaves 3e-5, a cliff such as probe 8b's D4 leaves 5
@@ -51,9 +52,10 @@ CLIFF = 1e-2
 
 class Margins:
     """Critical values of single modes at designs x, cached, and the margin M(x)
-    (``width``: that of the design range [lo, hi], the scale of M_end at an end x_e = 0)."""
+    (``width``: that of the design range [lo, hi], the scale of M_end at an end x_e = 0;
+    ``surface``: count the short-wave limit, as the scans do with ScanOptions.surface)."""
 
-    def __init__(self, tube, solve_for, key, side, width: float = 1.0) -> None:
+    def __init__(self, tube, solve_for, key, side, width: float = 1.0, surface=True) -> None:
         self.tube, self.solve_for, self.key, self.side = tube, solve_for, key, side
         self.width = width
         self.cliffs: dict = {}
@@ -61,6 +63,13 @@ class Margins:
         self.cache: dict = {}
         self.creases: dict = {}
         self.starts: dict = {}
+        at = lambda x: tube.at(key, x)  # noqa: E731
+        self.surfaces = SurfaceRival(at, solve_for, side, self.sense, surface)
+
+    def surface(self, x: float, until: float | None = None) -> float:
+        """The short-wave limit at x where it comes before ``until`` (sense * inf: not;
+        design/short_waves.py)."""
+        return self.surfaces.value(x, until)
 
     def crease(self, x: float) -> float:
         """Where a face creases at x (sense * inf: none; design/onset.py)."""
@@ -125,14 +134,18 @@ class Margins:
         return self.cliffs[mode, others, end]
 
     def best_margin(self, mode, others, x: float, ends=()) -> tuple[float, tuple | None]:
-        """(M, the next mode) at x over the competitors ``others`` and the crease, and with
-        ``ends`` (the located ends of the valid range that the region's span reaches) the
-        gap to them."""
-        m = by_crease = gap_to_crease(self.value(mode, x), self.crease(x), self.sense)
+        """(M, the next mode) at x over the competitors ``others``, the crease and the
+        short-wave limit, and with ``ends`` (the located ends of the valid range that the
+        region's span reaches) the gap to them."""
+        v = self.value(mode, x)
+        m = by_crease = gap_to_crease(v, self.crease(x), self.sense)
         nxt = None
         if others:
             nxt = min(others, key=lambda o: self.sense * self.value(o, x))
             m = min(self.margin(mode, x, self.value(nxt, x)), by_crease)
+        if math.isfinite(v):  # the limit only where it comes before the nearest other one
+            until = v + self.sense * m * abs(v) if math.isfinite(m) else None
+            m = min(m, gap_to_crease(v, self.surface(x, until), self.sense))
         if ends:
             m = min(m, self.to_no_design(mode, others, x, m, ends))
         return m, nxt

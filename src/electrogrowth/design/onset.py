@@ -106,21 +106,26 @@ def margin_sensitivity(sense: float, v: float, dv: dict, w: float, dw: dict) -> 
 TIE_SCREEN = 1e-3
 
 
-def rivals_at(margins, at, solve_for, x, v, lead, others, sens_crease, rtol) -> list:
+def rivals_at(margins, at, solve_for, x, v, lead, others, given, rtol) -> list:
     """The competitors at x within reach of a tie with ``lead`` (:func:`near_rivals`), each
-    with its sensitivities: the modes ``others`` and the crease. ``margins``: a design's
-    margins along its variable or variables (``value(mode, x)``, ``crease(x)``,
-    ``sense``); ``sens_crease``: the crease's sensitivities, already taken."""
+    with its sensitivities: the modes ``others``, the crease and the short-wave limit.
+    ``margins``: a design's margins along its variable or variables (``value(mode, x)``,
+    ``crease(x)``, ``surface(x, until)``, ``sense``); ``given``: the sensitivities of the
+    crease and of the limit by name ("crease", "surface"), already taken."""
 
     def sens_of(name, w):
-        if name == "crease":
-            return sens_crease or None
+        if name in given:
+            return given[name] or None
         try:
             return sensitivities(at, name, solve_for, w, rtol=rtol)
         except ElectrogrowthError:  # a fold of the rival's branch: its kink is not known
             return None
 
-    cands = [(o, margins.value(o, x)) for o in others] + [("crease", margins.crease(x))]
+    reach = lead[1] + margins.sense * TIE_SCREEN * abs(v)  # the limit only within the screen
+    cands = [(o, margins.value(o, x)) for o in others] + [
+        ("crease", margins.crease(x)),
+        ("surface", margins.surface(x, reach)),
+    ]
     return near_rivals(margins.sense, v, lead, cands, sens_of)
 
 

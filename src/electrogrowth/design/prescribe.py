@@ -12,7 +12,9 @@ inflating pressure) and -1 where it falls (stretch in compression, axial force):
 exactly where T comes first, and M is the fraction by which the control can overshoot v_T
 before N could also wrinkle. A crease of a free face is one more competitor (design/onset.py:
 M is also at most the relative gap to the crease), so a design where a face creases before
-T has M < 0. The best design maximises M over the target's region; where a crease comes
+T has M < 0; so is the exact short-wave limit (design/short_waves.py: where the target's
+region borders an interval in which the limit comes first, M vanishes at that switch as at
+any other). The best design maximises M over the target's region; where a crease comes
 first across the whole region it is the one nearest to wrinkling first (CREASE_FIRST).
 Where no x in [lo, hi] makes the target first, the closest design maximises M < 0 (the
 smallest relative gap) and N is the mode that beats T there. In a span of the region that
@@ -41,6 +43,7 @@ from .margins import Margins
 from .onset import CREASE_FIRST, gap_to_crease
 from .sensitivity import sensitivities, sensitivity_json
 from .sequence import Interval, ModeSequence, check_vary, mode_sequence, no_design_ends
+from .short_waves import SURFACE, surface_sensitivity
 from .targets import Target, check_target
 
 FOUND = "found"  # the target comes first in its region; the best design has M > 0
@@ -78,9 +81,11 @@ class Design:
     the design nearest to wrinkling first (M < 0, ``limited_by`` "crease").
     ``crease_value`` is where a face creases at x (NaN: none; ``crease_sensitivity`` its
     d/dp), ``crease_margin`` the relative gap to it (``margin_sensitivity`` is that of the
-    gap that sets M; empty for "no design"), ``limited_by`` which competitor sets M
-    ("mode", "crease", or "no design": the room below the target, next to a located end of
-    the valid range),
+    gap that sets M; empty for "no design"), ``surface_value`` and ``surface_margin`` the
+    exact short-wave limit at x and the gap to it (NaN: the scans leave it out, or none is
+    met; ``surface_sensitivity`` its d/dp), ``limited_by`` which competitor sets M
+    ("mode", "crease", "surface", or "no design": the room below the target, next to a
+    located end of the valid range),
     ``verdict`` the verdict of a scan at x (design/onset.py :func:`design_verdict`) and
     ``region_crease`` how many of the curve's points in each interval of the region
     crease first. NOT_REACHED: no target mode was found among the
@@ -117,6 +122,9 @@ class Design:
     crease_sensitivity: dict = dataclasses.field(default_factory=dict)
     margin_sides: dict = dataclasses.field(default_factory=dict)
     tied_with: tuple = ()
+    surface_value: float = math.nan
+    surface_margin: float = math.nan
+    surface_sensitivity: dict = dataclasses.field(default_factory=dict)
 
     def as_dict(self) -> dict:
         num = lambda v: v if v is not None and math.isfinite(v) else None  # noqa: E731
@@ -141,6 +149,8 @@ class Design:
                 "to_boundary": num(self.to_boundary),
                 "crease_value": num(self.crease_value),
                 "crease_margin": num(self.crease_margin),
+                "surface_value": num(self.surface_value),
+                "surface_margin": num(self.surface_margin),
                 "limited_by": self.limited_by or None,
                 "tied_with": [tie_name(t) for t in self.tied_with],
                 "verdict": self.verdict or None,
@@ -205,7 +215,7 @@ def prescribe(
     if sequence is None:
         sequence = mode_sequence(tube, solve_for, vary, side=side, options=options, points=points)
     side = sequence.side
-    margins = Margins(tube, sequence.solve_for, key, side, width=hi - lo)
+    margins = Margins(tube, sequence.solve_for, key, side, width=hi - lo, surface=options.surface)
     scan_opts = dataclasses.replace(options, top=max(options.top, 6))
 
     def scan(x, top=None):  # the modes in the order reached; none where the scan fails
@@ -244,9 +254,13 @@ def prescribe(
     sens_next, sens_margin = {}, {}
     v_crease = margins.crease(x)
     m_crease = gap_to_crease(v, v_crease, margins.sense)
+    limit = margins.surfaces.limit(x)  # the whole march, once: its value is reported
+    v_surface = margins.surface(x)
+    m_surface = gap_to_crease(v, v_surface, margins.sense)
     by_modes = margins.margin(mode, x, v_next) if nxt is not None else math.inf
-    limited = "crease" if m_crease < by_modes else "mode"
-    gap_end = margins.to_no_design(mode, others, x, min(by_modes, m_crease), edge)
+    gaps = {"mode": by_modes, CREASE: m_crease, SURFACE: m_surface}
+    limited = min(gaps, key=gaps.__getitem__)  # the first of equal gaps: a mode
+    gap_end = margins.to_no_design(mode, others, x, gaps[limited], edge)
     if edge and gap_end <= m_x + BALANCE * abs(m_x):
         limited = NO_DESIGN  # the room below the target, to the end of the valid range
     if status == FOUND and m_x < 0:  # a crease before the target everywhere in its region
@@ -254,20 +268,22 @@ def prescribe(
     if nxt is not None and math.isfinite(v_next):
         sens_next = sensitivities(at, nxt, sequence.solve_for, v_next, rtol=rtol)
     sens_crease = onset.crease_sensitivity(at, sequence.solve_for, v_crease, tuple(sens))
-    if limited == "crease":  # M is the gap to the crease
-        sens_margin = onset.margin_sensitivity(margins.sense, v, sens, v_crease, sens_crease)
-    elif limited == NO_DESIGN:  # M_0 moves with v_0, M_end with the end: not derived here
-        sens_margin = {}
-    elif sens_next:
-        sens_margin = onset.margin_sensitivity(margins.sense, v, sens, v_next, sens_next)
+    sens_surface = surface_sensitivity(at, sequence.solve_for, limit, tuple(sens))
+    rivals = {
+        "mode": (nxt, v_next, sens_next),
+        CREASE: (CREASE, v_crease, sens_crease),
+        SURFACE: (SURFACE, v_surface, sens_surface),
+    }
+    # NO_DESIGN: M_0 moves with v_0, M_end with the end: not derived here
+    if limited != NO_DESIGN and rivals[limited][2]:
+        lead = rivals[limited]
+        sens_margin = onset.margin_sensitivity(margins.sense, v, sens, lead[1], lead[2])
     sides: dict[str, tuple[float, float]] = {}
     tied: tuple = ()
-    if sens_margin:  # M set by a mode or the crease: a tie with another is a kink of M
-        lead = (nxt, v_next, sens_next) if limited == "mode" else ("crease", v_crease, sens_crease)
-        rivals = onset.rivals_at(
-            margins, at, sequence.solve_for, x, v, lead, others, sens_crease, rtol
-        )
-        sens_margin, sides, tied = onset.kinked_margin(at, margins.sense, v, sens, rivals)
+    if sens_margin:  # M set by a mode, the crease or the limit: a tie is a kink of M
+        given = {CREASE: sens_crease, SURFACE: sens_surface}
+        near = onset.rivals_at(margins, at, sequence.solve_for, x, v, lead, others, given, rtol)
+        sens_margin, sides, tied = onset.kinked_margin(at, margins.sense, v, sens, near)
     ends = (
         []
         if span is None
@@ -298,6 +314,9 @@ def prescribe(
         sens_crease,
         sides,
         tied,
+        v_surface if math.isfinite(v_surface) else math.nan,
+        m_surface,
+        sens_surface,
     )
 
 
@@ -469,13 +488,16 @@ def _refine(mode, others, a, b, x0, goal: Target, margins: Margins, scan, edge=(
 def _at_kink(mode, others, a, b, x, margins: Margins, edge=()):
     """The kink of M next to the maximiser x of the bounded Brent (``_refine``), located as
     the tie of its two competitors: Brent (SWITCH, as a mode switch) on s (w_1 - w_2), w_1
-    the competitor (a mode or the crease) that sets M at x, w_2 the next. The bounded
+    the competitor (a mode, the crease or the short-wave limit) that sets M at x, w_2 the
+    next. The bounded
     maximisation alone left the usual optimum, such a kink, 5e-8 (relative) off and M 3e-6
     low (probe 9b). x itself where M is smooth there, no such tie lies within [a, b], or
     the room below the target (``edge``) sets M."""
     if not b > a:
         return x
     w = {c: _rival_value(margins, c, x) for c in (*others, CREASE)}
+    # the limit where it is among the first two (the march only as far as the second)
+    w[SURFACE] = margins.surface(x, sorted(w.values(), key=lambda u: margins.sense * u)[1])
     first, second = sorted(w, key=lambda c: margins.sense * w[c])[:2]
     near = abs(w[second] - w[first]) <= onset.TIE_SCREEN * abs(margins.value(mode, x))
     m_x = margins.best_margin(mode, others, x, edge)[0]
@@ -505,5 +527,8 @@ def _bracketed_root(d, x: float, a: float, b: float) -> float | None:
 
 
 def _rival_value(margins: Margins, rival, x: float) -> float:
-    """The critical value of a competitor at x: a mode's, or where a face creases."""
+    """The critical value of a competitor at x: a mode's, where a face creases, or the
+    short-wave limit."""
+    if rival == SURFACE:
+        return margins.surface(x)
     return margins.crease(x) if rival == CREASE else margins.value(rival, x)

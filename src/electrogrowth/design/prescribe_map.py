@@ -12,7 +12,9 @@ target is first nowhere, the closest design maximises M < 0 from the map's grid 
 scanned again for the modes ahead of the target), refined the same way. As along one
 variable, a crease of a free face is one more competitor (design/onset.py), so a design
 where a face creases first has M < 0, and where that holds at every raster point of the
-target's region the status is CREASE_FIRST.
+target's region the status is CREASE_FIRST; so is the exact short-wave limit
+(design/short_waves.py: a map's "surface" pattern is no mode to solve, so it was left out of
+the competitors, and M did not vanish on a boundary with it).
 """
 
 from __future__ import annotations
@@ -39,8 +41,9 @@ from .onset import (
     margin_sensitivity,
     rivals_at,
 )
-from .prescribe import FOUND, NOT_FIRST, NOT_REACHED, REFINE_ROUNDS, tie_name
+from .prescribe import CREASE, FOUND, NOT_FIRST, NOT_REACHED, REFINE_ROUNDS, tie_name
 from .sensitivity import sensitivities, sensitivity_json
+from .short_waves import SURFACE, SurfaceRival, surface_sensitivity
 from .targets import Target, check_target
 
 RASTER = 7  # raster points per variable where the margin is first sampled
@@ -55,7 +58,8 @@ class MapDesign:
     it, for NOT_FIRST) at ``next_value``; ``to_boundary``: the distance from the design to
     the region's boundary along x and along y (None where no boundary crosses that line);
     the sensitivities as in :class:`~.prescribe.Design`; ``crease_value``,
-    ``crease_margin``, ``limited_by``, ``verdict`` as there, and ``region_crease``: how many
+    ``crease_margin``, ``surface_value``, ``surface_margin``, ``limited_by``, ``verdict``
+    as there, and ``region_crease``: how many
     of the raster points in the target's region crease first. ``margin_sides`` and
     ``tied_with``: at a kink of M, as in :class:`~.prescribe.Design`."""
 
@@ -84,6 +88,9 @@ class MapDesign:
     crease_sensitivity: dict = dataclasses.field(default_factory=dict)
     margin_sides: dict = dataclasses.field(default_factory=dict)
     tied_with: tuple = ()
+    surface_value: float = math.nan
+    surface_margin: float = math.nan
+    surface_sensitivity: dict = dataclasses.field(default_factory=dict)
 
     def as_dict(self) -> dict:
         num = lambda v: v if v is not None and math.isfinite(v) else None  # noqa: E731
@@ -107,6 +114,8 @@ class MapDesign:
                 "to_boundary": {k: num(v) for k, v in self.to_boundary.items()},
                 "crease_value": num(self.crease_value),
                 "crease_margin": num(self.crease_margin),
+                "surface_value": num(self.surface_value),
+                "surface_margin": num(self.surface_margin),
                 "limited_by": self.limited_by or None,
                 "tied_with": [tie_name(t) for t in self.tied_with],
                 "verdict": self.verdict or None,
@@ -139,6 +148,8 @@ def stored_design(record: dict, mmap: ModeMap, target) -> MapDesign:
             best.get("limited_by") or "", dict(best.get("verdict") or {}),
             dict(record.get("region_crease") or {}), table(sens.get("crease_value", {})),
             _sides_of(sens), tuple(_tie_of(t) for t in best.get("tied_with") or ()),
+            num(best.get("surface_value")), num(best.get("surface_margin")),
+            table(sens.get("surface_value", {})),
         )  # fmt: skip
     except (KeyError, TypeError, ValueError, IndexError) as exc:
         raise ValueError(f"not a stored design: {exc}") from None
@@ -157,7 +168,7 @@ def _sides_of(sens: dict) -> dict:
 
 
 def _tie_of(item):
-    """A stored tied competitor: [m, n] as a mode, else its name ("crease")."""
+    """A stored tied competitor: [m, n] as a mode, else its name ("crease", "surface")."""
     return (int(item[0]), int(item[1])) if isinstance(item, list) else str(item)
 
 
@@ -169,6 +180,9 @@ class _Margins:
         self.sense = -1.0 if mmap.side == "compression" else 1.0
         self.values = Values(tube, mmap.solve_for, mmap.keys, mmap.box, mmap.side, 1e-12)
         self.creases: dict = {}
+        self.surfaces = SurfaceRival(
+            self.at, mmap.solve_for, mmap.side, self.sense, options.surface
+        )
 
     def xy(self, u):
         return self.values.xy(u)
@@ -195,16 +209,23 @@ class _Margins:
             self.creases[key] = crease_value(at, self.map.solve_for, self.map.side, self.sense)
         return self.creases[key]
 
+    def surface(self, u, until: float | None = None) -> float:
+        """The short-wave limit at u where it comes before ``until`` (sense * inf: not)."""
+        return self.surfaces.value(u, until)
+
     def margin(self, mode, others, u) -> tuple[float, object]:
-        """(M, the next pattern) at u over the competitors ``others`` and the crease."""
+        """(M, the next pattern) at u over the competitors ``others``, the crease and the
+        short-wave limit (located only where it can come before the nearest other one)."""
         v = self.value(mode, u)
         if not math.isfinite(v):
             return -math.inf, None
-        by_crease = gap_to_crease(v, self.crease(u), self.sense)
-        if not others:
-            return by_crease, None
-        nxt = min(others, key=lambda o: self.sense * self.value(o, u))
-        return min(self.sense * (self.value(nxt, u) - v) / abs(v), by_crease), nxt
+        m = gap_to_crease(v, self.crease(u), self.sense)
+        nxt = None
+        if others:
+            nxt = min(others, key=lambda o: self.sense * self.value(o, u))
+            m = min(self.sense * (self.value(nxt, u) - v) / abs(v), m)
+        until = v + self.sense * m * abs(v) if math.isfinite(m) else None
+        return min(m, gap_to_crease(v, self.surface(u, until), self.sense)), nxt
 
     def ranked(self, u) -> list:
         """The modes a scan at u finds, in the order reached: [((m, n), value), ...]."""
@@ -356,22 +377,31 @@ def prescribe_map(
     sens_next, sens_margin = {}, {}
     v_crease = margins.crease(u)
     m_crease = gap_to_crease(v, v_crease, margins.sense)
+    limit = margins.surfaces.limit(u)  # the whole march, once: its value is reported
+    v_surface = margins.surface(u)
+    m_surface = gap_to_crease(v, v_surface, margins.sense)
     by_modes = margins.sense * (v_next - v) / abs(v) if nxt is not None else math.inf
-    limited = "crease" if m_crease < by_modes else "mode"
+    gaps = {"mode": by_modes, CREASE: m_crease, SURFACE: m_surface}
+    limited = min(gaps, key=gaps.__getitem__)  # the first of equal gaps: a mode
     if status == FOUND and m_u < 0:  # a crease before the target everywhere in its region
         status = CREASE_FIRST
     if nxt is not None and math.isfinite(v_next):
         sens_next = sensitivities(at, nxt, mmap.solve_for, v_next, rtol=rtol)
     sens_crease = crease_sensitivity(at, mmap.solve_for, v_crease, tuple(sens))
-    if limited == "crease":  # M is the gap to the crease
-        sens_margin = margin_sensitivity(margins.sense, v, sens, v_crease, sens_crease)
-    elif sens_next:
-        sens_margin = margin_sensitivity(margins.sense, v, sens, v_next, sens_next)
+    sens_surface = surface_sensitivity(at, mmap.solve_for, limit, tuple(sens))
+    rivals = {
+        "mode": (nxt, v_next, sens_next),
+        CREASE: (CREASE, v_crease, sens_crease),
+        SURFACE: (SURFACE, v_surface, sens_surface),
+    }
+    lead = rivals[limited]
+    if lead[2]:
+        sens_margin = margin_sensitivity(margins.sense, v, sens, lead[1], lead[2])
     sides, tied = {}, ()
-    if sens_margin:  # M set by a mode or the crease: a tie with another is a kink of M
-        lead = (nxt, v_next, sens_next) if limited == "mode" else ("crease", v_crease, sens_crease)
-        rivals = rivals_at(margins, at, mmap.solve_for, u, v, lead, others, sens_crease, rtol)
-        sens_margin, sides, tied = kinked_margin(at, margins.sense, v, sens, rivals)
+    if sens_margin:  # M set by a mode, the crease or the limit: a tie is a kink of M
+        given = {CREASE: sens_crease, SURFACE: sens_surface}
+        near = rivals_at(margins, at, mmap.solve_for, u, v, lead, others, given, rtol)
+        sens_margin, sides, tied = kinked_margin(at, margins.sense, v, sens, near)
     x, y = margins.xy(u)
     verdict = design_verdict(
         at,
@@ -386,6 +416,7 @@ def prescribe_map(
         sens, sens_next, sens_margin, mmap, goal,
         v_crease if math.isfinite(v_crease) else math.nan, m_crease, limited, verdict,
         region_crease, sens_crease, sides, tied,
+        v_surface if math.isfinite(v_surface) else math.nan, m_surface, sens_surface,
     )  # fmt: skip
 
 

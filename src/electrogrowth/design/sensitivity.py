@@ -243,18 +243,20 @@ class Determinant:
 
 
 def sensitivity_json(outcome) -> dict:
-    """The four sensitivities of a prescription's best design (``sensitivity``,
-    ``next_sensitivity``, ``margin_sensitivity``, ``crease_sensitivity``: d/dp by parameter
-    key) as JSON, a derivative that could not be formed as null, and ``margin_sides``: at a
-    kink of M, dM/dp lowering ("down") and raising ("up") each such p."""
+    """The five sensitivities of a prescription's best design (``sensitivity``,
+    ``next_sensitivity``, ``margin_sensitivity``, ``crease_sensitivity``,
+    ``surface_sensitivity``: d/dp by parameter key) as JSON, a derivative that could not be
+    formed as null, and ``margin_sides``: at a kink of M, dM/dp lowering ("down") and
+    raising ("up") each such p."""
 
     def num(v):
         return v if v is not None and math.isfinite(v) else None
 
     fields = {"value": "sensitivity", "next_value": "next_sensitivity",
-              "margin": "margin_sensitivity", "crease_value": "crease_sensitivity"}  # fmt: skip
+              "margin": "margin_sensitivity", "crease_value": "crease_sensitivity",
+              "surface_value": "surface_sensitivity"}  # fmt: skip
     out = {
-        name: {p: num(d) for p, d in getattr(outcome, attr).items()}
+        name: {p: num(d) for p, d in getattr(outcome, attr, {}).items()}
         for name, attr in fields.items()
     }
     # at a kink of M (a tie of competitors) "margin" is null and these are its two sides

@@ -47,7 +47,11 @@ class Target:
     modes: tuple[tuple[int, int], ...] = ()  # the listed modes, if the target is a list
 
     def __contains__(self, mode) -> bool:
-        return mode is not None and tuple(mode) != (-1, -1) and bool(self.accepts(*mode))
+        # a map's other patterns are names ("surface", "threshold", "failed"), no modes:
+        # unpacked into accepts(m, n) a design crashed on a map with a surface region
+        if mode is None or isinstance(mode, str):
+            return False
+        return tuple(mode) != (-1, -1) and bool(self.accepts(*mode))
 
 
 def check_target(target) -> Target:
