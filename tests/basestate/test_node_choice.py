@@ -12,7 +12,7 @@ agrees with the package to 1e-12 where the package solves (g = 1.34: r_i = 1.511
 
 import pytest
 
-from electrogrowth import Layer, Tube, gent, solve_base_state
+from electrogrowth import Layer, Material, Tube, gent, solve_base_state
 
 
 def test_benign_gent_state_is_solved():
@@ -26,3 +26,43 @@ def test_benign_gent_state_is_solved():
     assert got == pytest.approx(
         (1.5793423983027883, 2.8256861609386057, 3.3655909530600945), rel=1e-9
     )
+
+
+FUNG = "(I1-3)/2 + I5/2 + 0.1*(exp((I1-3)**2)-1)"
+
+
+def fung_mucosa(g):
+    """Probe 11a's tube: a 0.05-thick inner layer 30 times as stiff, growing in the hoop
+    direction, both layers of an exponential energy text."""
+    fung = Material("fung", FUNG)
+    return Tube(
+        (
+            Layer(1.05, material=fung, shear_modulus=30.0, growth=(1, g, 1)),
+            Layer(2.0, material=fung),
+        ),
+        length=4.0,
+        stretch=1.0,
+    )
+
+
+@pytest.mark.parametrize("g", [3.005, 3.0175, 3.0263553055738077, 3.0325])
+def test_a_guess_resolved_to_its_rounding_is_resolved(g):
+    """The stress scale at the guess is ~2.7e19 (exp((I1 - 3)^2)), whose rounding makes
+    successive Gauss rules differ by 2e-14 ... 2e-13 of it whatever their node count:
+    choose_nodes asked for 64 eps = 1.4e-14 and raised "quadrature not converged to
+    rtol = 1e-12 with 256 nodes" for these states, while 3.0, 3.0025, 3.0075 (a rule
+    agreeing by luck) solved. The state is the one solved at rtol = 1e-10, which worked."""
+    state = solve_base_state(fung_mucosa(g))
+    assert state.quadrature_error <= 1e-12
+    assert state.r_i == pytest.approx(solve_base_state(fung_mucosa(g), rtol=1e-10).r_i, rel=1e-11)
+
+
+def test_only_differences_that_stall_at_the_rounding_are_accepted():
+    """The guess's fallback (plies._stall): a stall at most 1e3 eps is the rounding floor; a
+    sequence still falling, or one that stalls above the floor, is not accepted."""
+    from electrogrowth.basestate.plies import _stall
+
+    orders = [8, 12, 16, 24, 32]
+    assert _stall(orders, [1e-4, 1.6e-13, 4.3e-14, 6.6e-14, 4.3e-14]) == 12
+    assert _stall(orders, [1e-4, 2e-13, 1e-15, 1e-17, 0.0]) == -1  # still falling: no floor
+    assert _stall(orders, [1e-6, 9e-7, 8e-7, 7e-7, 6e-7]) == -1  # stalled above rounding

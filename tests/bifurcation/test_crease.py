@@ -227,3 +227,62 @@ def test_a_field_crease_at_the_start_does_not_hide_the_mechanical_one():
     # a mechanical onset first needs no second march: it is its own ranked onset
     plain = crease_onset(Tube.uniform(1.8, length=1.0, voltage=0.7), "growth")
     assert plain.trigger == "axial" and plain.ranked is plain
+
+
+def _march_with(monkeypatch, fail):
+    """crease_onset of axial compression of the paper's tube with the base state at the
+    stretches ``fail`` picks raising its error instead; the march's solved stretches."""
+    from electrogrowth.bifurcation import crease
+
+    solved = []
+
+    def state(tube, **kw):
+        err = fail(tube.stretch)
+        if err is not None:
+            raise err
+        solved.append(tube.stretch)
+        return solve_base_state(tube, **kw)
+
+    monkeypatch.setattr(crease, "solve_base_state", state)
+    return lambda: crease_onset(
+        Tube.uniform(2.0, length=1.0), "stretch", side="compression"
+    ), solved
+
+
+def test_an_unresolved_state_is_not_the_loss_of_the_state(monkeypatch):
+    """Probe 11a D2: a ConvergenceError (a state that exists but is not resolved) was bisected
+    as the loss of the axisymmetric state: a Fung bilayer's verdict said "next: the loss of
+    the axisymmetric state at growth[1].theta = 3.026" where states past it solve. The march
+    ends as not resolved instead, with no threshold."""
+    from electrogrowth.errors import ConvergenceError
+
+    onset, _ = _march_with(
+        monkeypatch, lambda lz: ConvergenceError("not resolved") if lz < 0.8 else None
+    )
+    with pytest.raises(
+        ConvergenceError, match=r"no crease for stretch from 1 up to .* is not resolved"
+    ):
+        onset()
+
+
+def test_the_loss_is_bisected_over_unresolved_states_as_existing(monkeypatch):
+    """Only a failed state search (BaseStateError) is a loss: a state between the last solved
+    one and the lost one that is not resolved exists, and the edge is past it. Unresolved
+    states alternating with solved ones had moved the bisected edge onto themselves."""
+    from electrogrowth.errors import BaseStateError, ConvergenceError
+
+    onset, solved = _march_with(monkeypatch, lambda lz: None)
+    onset()
+    x_ok, x_lost = solved[1], solved[2]  # two successive steps of the march
+    gap = (x_lost - x_ok) * np.array([0.3, 0.7])  # around the bisection's first midpoint
+
+    def fail(lz):
+        if (lz - x_lost) * (x_lost - x_ok) >= 0:
+            return BaseStateError("no state")
+        if min(x_ok + gap) < lz < max(x_ok + gap):
+            return ConvergenceError("not resolved")
+        return None
+
+    onset, _ = _march_with(monkeypatch, fail)
+    c = onset()
+    assert c.kind == "none" and c.threshold == pytest.approx(x_lost, abs=1e-6)

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -192,6 +193,36 @@ def test_ellipticity_loss_is_detected():
 
     kind, value, bracket = surface_march.locate(Tube.uniform(), "growth", None, fake, 1e-12)
     assert kind == "ellipticity" and abs(value - 1.7) < 1e-11 and bracket is None
+
+
+def test_moduli_past_double_range_raise_not_a_nan():
+    """Probe 11a D3: moduli whose products pass 1e308 (c12^2 at ~1e154) made the half-space
+    matrix infinite, its target NaN, read as a loss of strong ellipticity, with numpy's
+    "overflow encountered in multiply" on stderr. Moduli just below stay a number."""
+    from electrogrowth.errors import ConvergenceError
+
+    mod = neo_hookean_moduli(0.8, 1.1, 1.0 / 0.88, 0.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        assert np.isfinite(FaceProblem.from_moduli(1e150 * mod, 1e150, "outer").target(0.3))
+        with pytest.raises(ConvergenceError, match="overflows double precision"):
+            FaceProblem.from_moduli(1e160 * mod, 1e160, "outer")
+
+
+def test_an_exponential_energy_compressed_warns_nothing_and_claims_no_ellipticity_loss():
+    """Probe 11a D3: Biot's ratio of a Fung-type energy (the crease criterion's text of any
+    verdict on it) marched its face until the moduli overflowed: RuntimeWarnings reached
+    stderr from the Python API, and the overflow's NaN was reported as the loss of strong
+    ellipticity at lambda_z = 0.0921. The march now says the half-space overflows."""
+    from electrogrowth import Material
+    from electrogrowth.errors import ConvergenceError
+
+    fung = Material("fung-d3", "(I1-3)/2 + I5/2 + 0.1*(exp((I1-3)**2)-1)")  # none cached
+    tube = Tube.uniform(2.0, length=1.0, material=fung)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        with pytest.raises(ConvergenceError, match="overflows double precision"):
+            ray_limit(tube, 0, 1, "stretch", side="compression")
 
 
 def test_pressure_impedance_is_the_scaled_limit():

@@ -203,3 +203,46 @@ def test_a_force_inside_the_stretch_box_is_solved():
     force = math.pi * 1.25 * (lz - lz**-2)
     tube = Tube((Layer(1.5),), axial_force=force)
     assert solve_base_state(tube).stretch == pytest.approx(lz, rel=1e-10)
+
+
+FUNG_TOML = """
+length = 4.0
+stretch = 1.0
+[[layers]]
+outer_radius = 1.05
+shear_modulus = 30.0
+growth = [1.0, 3.005, 1.0]
+energy = "(I1-3)/2 + I5/2 + 0.1*(exp((I1-3)**2)-1)"
+[[layers]]
+outer_radius = 2.0
+energy = "(I1-3)/2 + I5/2 + 0.1*(exp((I1-3)**2)-1)"
+"""
+
+
+def test_a_state_resolved_to_its_rounding_is_printed(capsys, tmp_path):
+    """Probe 11a D1: the node choice refused this state ("quadrature not converged to
+    rtol = 1e-12 with 256 nodes", exit 2); the same file at g_theta = 3.0025 solved."""
+    path = tmp_path / "fung.toml"
+    path.write_text(FUNG_TOML)
+    status, out, err = run(capsys, "state", "--tube", str(path), "--json")
+    assert status == 0 and err == "", err
+    assert json.loads(out)["r_i"] == pytest.approx(1.9723208930221494, rel=1e-11)
+
+
+def test_an_unresolved_state_names_a_remedy_state_has(capsys, monkeypatch, tmp_path):
+    """Probe 11a D1: `state` advised "loosen --rtol (e.g. 1e-10)", an option it does not
+    have ("unrecognized arguments: --rtol 1e-10"), as does --method."""
+    from electrogrowth.cli import state as cli_state
+    from electrogrowth.errors import ConvergenceError
+
+    def unresolved(tube):
+        raise ConvergenceError("quadrature not converged to rtol = 1e-12 with 256 nodes")
+
+    monkeypatch.setattr(cli_state, "solve_base_state", unresolved)
+    path = tmp_path / "fung.toml"
+    path.write_text(FUNG_TOML)
+    for argv in (BASE, ["state", "--tube", str(path)]):  # the one-layer and layered paths
+        status, out, err = run(capsys, *argv)
+        assert status == 2 and out == "" and err.count("\n") == 1, err
+        assert "--rtol" not in err and "--method" not in err, err
+        assert "solve_base_state(tube, rtol=1e-10)" in err, err

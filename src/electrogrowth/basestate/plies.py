@@ -36,7 +36,7 @@ from ..model.layers import Layer, Tube
 from ..model.materials import Material
 from ..model.moduli import MODULI_NAMES, neo_hookean_moduli
 from .chebyshev_series import ChebyshevSeries, chebinterpolate
-from .voltage import energy_kind
+from .voltage import STRESS_NOISE, energy_kind
 
 ORDERS = (8, 12, 16, 24, 32, 48, 64, 96, 128, 192, 256)  # Gauss-Legendre nodes per layer
 _QUIET = dict(invalid="ignore", divide="ignore", over="ignore")
@@ -338,12 +338,12 @@ def choose_nodes(tube: Tube, rtol: float, plies) -> int:
     A representative no rule resolves (a Gent layer just short of its lock at 1.5 or 3 times
     the guess) is left out rather than refusing the tube: the rule is only a start, the
     solved state checks its own quadrature error and asks for more nodes. The guess itself
-    must be resolved."""
+    must be resolved: to the tolerance, or else to its rounding floor (:func:`_stall`)."""
     x0, lz0 = start_guess(Wall.build(tube, 16, plies))
     r = x0 * np.tile([0.6, 0.8, 1.0, 1.5, 3.0], 2)
     c = np.where(np.arange(10) < 5, 0.0, 0.5 * r)
     first = np.full(r.shape, -1)  # the first agreeing rule of each representative
-    prev = None
+    prev, gaps = None, []  # gaps: (n, each representative's difference with the next rule)
     for n in ORDERS:
         cur = Wall.build(tube, n, plies).integrals(r, lz0, c)
         if prev is not None:
@@ -356,12 +356,30 @@ def choose_nodes(tube: Tube, rtol: float, plies) -> int:
             if np.all(good):
                 return prev[0]
             first = np.where((first < 0) & good, prev[0], first)
+            gaps.append((prev[0], np.where(ok, err, 0.0)))
         prev = (n, cur)
+    for k in (2, 7):  # the guess: only it must be resolved, to rounding if not to tolerance
+        if first[k] < 0:
+            first[k] = _stall([n for n, _ in gaps], [gap[k] for _, gap in gaps])
     if np.any(first[[2, 7]] < 0):
         raise ConvergenceError(
             f"quadrature not converged to rtol = {rtol} with {ORDERS[-1]} nodes"
         )
     return int(first.max())
+
+
+def _stall(orders, gaps) -> int:
+    """The first rule whose difference with the next is at most the stresses' rounding
+    (STRESS_NOISE) and from which the differences have stopped falling (neither of the next
+    two is below a tenth of it), or -1. An exponential energy's stresses at the guess reach
+    ~1e19 times its modulus and carry the rounding of their exponent, ~1e-13 of their scale:
+    successive rules then differ by rounding alone, above 64 eps, and a rule agreeing to 64
+    eps is luck (the profile's Chebyshev tail accepts such a stall the same way)."""
+    for k in range(len(gaps) - 2):
+        stalled = min(gaps[k + 1], gaps[k + 2]) > 0.1 * gaps[k]
+        if gaps[k] <= STRESS_NOISE and stalled:
+            return orders[k]
+    return -1
 
 
 def start_guess(wall: Wall) -> tuple[float, float]:

@@ -316,6 +316,12 @@ def crease_onset(
     -------
     CreaseOnset
 
+    Raises
+    ------
+    ConvergenceError
+        Where the march meets a base state that exists but is not resolved before any
+        crease: neither a crease nor a loss of the state is established past it.
+
     >>> c = crease_onset(Tube.uniform(2.0, length=1.0), "stretch", side="compression")
     >>> str(c.kind), c.trigger, abs(c.value - CREASE_RATIO ** (-2 / 3)) < 1e-12
     ('crease', 'axial', True)
@@ -368,9 +374,11 @@ def _march(problem: Problem, triggers: tuple[str, ...]) -> CreaseOnset:
         x_new = x + sense * step if sense * (end - x - sense * step) > 0 else end
         try:
             h_new = margin(x_new)
-        except (BaseStateError, ConvergenceError):
-            lost = threshold_between(x, x_new, exists=_solves(state))
+        except BaseStateError:  # no state at x_new: where the states end is bisected
+            lost = threshold_between(x, x_new, exists=_not_lost(state))
             return result(math.nan, Kind.NONE, threshold=math.nan if lost is None else lost)
+        except ConvergenceError as err:  # a state that is not resolved is not a lost one
+            raise _unresolved(control, start, x, x_new, err) from err
         if h_new >= 0:
             value = brent(margin, x, x_new, FULL)
             f = _creasing_face(tube, state(value), triggers)
@@ -404,15 +412,33 @@ def _creasing_face(tube: Tube, state, triggers: tuple[str, ...] = TRIGGERS) -> F
 TIE = 1e-12
 
 
-def _solves(state):
+def _not_lost(state):
+    """Does a state exist at x? Only a failed state search (BaseStateError) says no: a state
+    that does not resolve (ConvergenceError) exists, and cold solves of an exponential
+    energy's states once failed and solved alternately, which a bisection for the loss
+    settled between as a false edge (probe round 11a)."""
+
     def exists(x) -> bool:
         try:
             state(x)
-        except (BaseStateError, ConvergenceError):
+        except BaseStateError:
             return False
+        except ConvergenceError:  # there, not resolved
+            pass
         return True
 
     return exists
+
+
+def _unresolved(control: str, start: float, x: float, x_bad: float, err: ConvergenceError):
+    """The crease march ended at a state that exists but is not resolved: no crease up to
+    x, and whether one (or the loss of the state) follows is not established."""
+    out = ConvergenceError(
+        f"no crease for {control} from {start:.12g} up to {x:.12g}, and the base state at"
+        f" {x_bad:.12g} is not resolved: {err.args[0]}"
+    )
+    out.remedy = err.remedy
+    return out
 
 
 def _criterion_error(

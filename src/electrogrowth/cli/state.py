@@ -11,7 +11,7 @@ import json
 import re
 
 from ..basestate.tube import solve_base_state
-from ..errors import BaseStateError
+from ..errors import BaseStateError, ConvergenceError, Remedy
 from ..model.layers import Tube
 from ..model.tube_file import line_of
 from .report import physical_line, physical_record, voltage_text
@@ -25,15 +25,29 @@ def configure_state(parser: argparse.ArgumentParser) -> None:
     )
 
 
+#: `state` has neither --rtol nor --method (ConvergenceError's own remedy names both): the
+#: looser tolerance it can be given is the Python API's
+STATE_REMEDY = Remedy(
+    "`state` solves to rtol = 1e-12; Python's solve_base_state(tube, rtol=1e-10) takes a"
+    " looser tolerance",
+    python="pass a looser rtol (e.g. rtol=1e-10)",
+)
+
+
 def run_state(args) -> int:
     tube = tube_of(args)
-    if tube.is_uniform:  # the paper's tube: its five numbers, as the paper prints them
-        rec = _with_physical(solve_base_state(tube).as_dict(), args)
-        return _print_one_layer(tube, rec, args.json)
     try:
-        rec = _with_physical(solve_base_state(tube).as_dict(), args)
+        state = solve_base_state(tube)
     except BaseStateError as exc:
+        if tube.is_uniform:  # the paper's tube: the uniform solver's message as it is
+            raise
         raise _located(exc, args) from None
+    except ConvergenceError as exc:
+        exc.remedy = STATE_REMEDY
+        raise
+    rec = _with_physical(state.as_dict(), args)
+    if tube.is_uniform:  # the paper's tube: its five numbers, as the paper prints them
+        return _print_one_layer(tube, rec, args.json)
     if args.json:
         print(json.dumps(rec))
         return 0

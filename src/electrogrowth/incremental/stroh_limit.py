@@ -55,7 +55,7 @@ import math
 import numpy as np
 import numpy.typing as npt
 
-from ..errors import ParameterError
+from ..errors import ConvergenceError, ParameterError, Remedy
 from ..model.moduli import MODULI_INDEX
 
 FloatArray = npt.NDArray[np.float64]
@@ -97,10 +97,29 @@ def limit_expansion(mod, p) -> FloatArray:
 
     ``mod`` (..., 23) and ``p`` broadcast; returns (..., 6, 8, 8). Building them once per
     face makes N for many directions one small matrix product.
+
+    Moduli whose products overflow (c12^2 past 1e308: an exponential energy's moduli at
+    ~1e154 of its modulus) raise ConvergenceError: an infinite entry made every target NaN,
+    which reads as a loss of strong ellipticity, and numpy's warning reached stderr.
     """
     mod = np.asarray(mod, float)
-    M = [mod[..., k] for k in range(mod.shape[-1])]
     p = np.asarray(p, float)
+    try:
+        with np.errstate(over="raise"):
+            return _expansion(mod, p)
+    except FloatingPointError:
+        size = float(np.nanmax(np.abs(mod)))
+        err = ConvergenceError(
+            "the short-wave (half-space) problem overflows double precision: moduli up to"
+            f" {size:.3g} (their products pass 1e308)"
+        )
+        err.remedy = Remedy("")  # neither a looser rtol nor collocation: the range of doubles
+        raise err from None
+
+
+def _expansion(mod, p) -> FloatArray:
+    """:func:`limit_expansion` without the check."""
+    M = [mod[..., k] for k in range(mod.shape[-1])]
     e12 = M[_I["G122"]] / M[_I["K22"]]
     e13 = M[_I["G133"]] / M[_I["K33"]]
     gam12 = M[_I["A1212"]] - e12 * M[_I["G122"]]
@@ -120,7 +139,7 @@ def limit_expansion(mod, p) -> FloatArray:
     chi2 = 1.0 / M[_I["K22"]] + e12 * e12 / gam12  # chi = c^2 chi2 + s^2 chi3
     chi3 = 1.0 / M[_I["K33"]] + e13 * e13 / gam13
     k23 = a13 + M[_I["A2332"]] + 2.0 * p
-    one = np.ones_like(gam12 * gam13 * p)
+    one = np.ones(np.broadcast(gam12, gam13, p).shape)  # (a product could overflow)
     c, s, cc, ss, cs = 1, 2, 3, 4, 5
     entries = [  # (weight, row, column, value)
         (c, 0, 1, -one),
