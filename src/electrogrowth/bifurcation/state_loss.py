@@ -8,8 +8,10 @@ way is lost at its end (:func:`loss_at_end`): a path that ends at the control's 
 to a film runs to an asymptote, where the threshold of a load held fixed falls to that load
 (:func:`held_loads`: the inflation threshold of a tube pulled at a fixed inner pressure).
 
-A state that is lost (the state search fails: BaseStateError) right after one that solves
-ends the path there. A state that exists but does not resolve (ConvergenceError: its profile
+A state that is lost (the state search fails: BaseStateError, from cold and continued from
+the march's nearest state) right after one that solves ends the path there; a search that
+meets a layer's lock first (LockedSearch, even at the finest Gauss rule) is no loss by itself,
+as below. A state that exists but does not resolve (ConvergenceError: its profile
 needs more than the largest Chebyshev degree, or it lies within LOCK_MARGIN of a lock,
 along.clear_of_lock) ends nothing by itself: a stiffening layer's state goes on, closer and
 closer to its lock (docs/reliability.md). The loss there is established only kinematically:
