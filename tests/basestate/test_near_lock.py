@@ -6,10 +6,12 @@ stretches (neo-Hookean film, Gent substrate, jm = 2), root in r_i by brentq. At 
 the substrate's inner face has I1 - 3 = 1.755, 88 % of jm: a regular state, not a lock.
 """
 
+import dataclasses
+
 import pytest
 
 from electrogrowth import Layer, Tube, critical_value, gent, solve_base_state
-from electrogrowth.errors import ConvergenceError
+from electrogrowth.errors import BaseStateError, ConvergenceError, python_remedy
 
 
 def film_on_gent(g_theta: float) -> Tube:
@@ -42,7 +44,11 @@ def test_no_threshold_where_the_state_exists():
     with pytest.raises(ConvergenceError, match="no mode bifurcates") as err:
         critical_value(film_on_gent(1.0), 30, 0, "growth[1].theta")
     reached = float(err.value.args[0].split(" up to ")[1].split(",")[0])
-    assert 1.97 < reached < 2.0098
+    # 2.0098 before the cold search refined its Gauss rule next to the lock (probe 11a, D4);
+    # now 2.0177, with states that are right: at 2.0176 (margin 6.1e-4) the independent
+    # quadrature (40 digits, the root bracketed short of the lock) gives r_i 1.9673686973637
+    assert 1.97 < reached < 2.02
+    assert solve_base_state(film_on_gent(2.0176)).r_i == pytest.approx(1.9673686973637, rel=1e-11)
     assert "not established" in str(err.value)
     # a state just short of the edge is resolved: within ~5e-9 of it, whether a state's
     # profile resolves by degree 4096 turns on its last digits (cold solves on a grid of
@@ -66,3 +72,43 @@ def test_gent_film_growing_axially_short_of_its_lock(g_z, radii):
     state = solve_base_state(tube)
     got = (state.r_i, state.interface_radii[0], state.r_o)
     assert got == pytest.approx(radii, rel=1e-9)
+
+
+def stiff_film_in_gent(g_theta: float, voltage: float = 0.0) -> Tube:
+    """A film 10 times as stiff grown in the hoop direction inside a Gent (jm 3) layer (probe
+    11a, D4): the Gent layer's inner face nears its lock (1 - (I1 - 3) / jm = 0.0018 at
+    g_theta 5.41), the film is compressed, and the state goes on towards the lock."""
+    layers = (
+        Layer(1.04, shear_modulus=10.0, growth=(1.0, g_theta, 1.0)),
+        Layer(1.6, material=gent(3.0)),
+    )
+    return Tube(layers, length=3.0, stretch=1.0, voltage=voltage)
+
+
+@pytest.mark.parametrize(
+    ("g_theta", "r_i"),
+    [
+        # independent: the radial equilibrium above, in mpmath (40 digits, tanh-sinh), the
+        # root bracketed short of the Gent face's lock; margins 0.0018, 0.0016, 0.00092
+        (5.41, 2.175912909683),
+        (5.45, 2.175371753466),
+        (5.58, 2.173436043256),
+    ],
+)
+def test_cold_search_next_to_a_lock_finds_the_state(g_theta, r_i):
+    # the cold solve raised "no unloaded state (V = 0, P_i = P_o) found" from 5.4 on, with
+    # the remedy "move the growth ... back towards 1" (with Vbar 0.2: "lower the voltage"),
+    # while the states exist: the unloaded search ran at the Gauss rule chosen at the
+    # homogeneous guess (12 nodes), whose T errs by tenths next to the lock and put the
+    # root past the Gent layer's edge; the search now refines the rule before giving up
+    assert solve_base_state(stiff_film_in_gent(g_theta)).r_i == pytest.approx(r_i, rel=1e-11)
+
+
+def test_no_unloaded_state_does_not_blame_the_voltage():
+    # past the kinematic lock (lambda_z = 2.3: lambda^2 + 2 / lambda - 3 = 3.16 > jm) no
+    # unloaded state exists; the search is at V = 0, so the remedy must not name the voltage
+    tube = dataclasses.replace(stiff_film_in_gent(1.0, voltage=0.2), stretch=2.3)
+    with pytest.raises(BaseStateError, match="no unloaded state") as err:
+        solve_base_state(tube)
+    assert "voltage" not in err.value.remedy
+    assert "voltage" not in python_remedy(err.value.remedy)

@@ -12,10 +12,21 @@ import dataclasses
 
 import pytest
 
-from electrogrowth import Layer, ScanOptions, Tube, critical_value, scan_modes
+from electrogrowth import (
+    Layer,
+    ScanOptions,
+    Tube,
+    critical_value,
+    gent,
+    mooney_rivlin,
+    scan_modes,
+)
 from electrogrowth.bifurcation import runners
+from electrogrowth.bifurcation.critical import CriticalPoint
 from electrogrowth.bifurcation.march import ModeValue
+from electrogrowth.bifurcation.scan_record import ScanResult
 from electrogrowth.cli.app import main
+from electrogrowth.outcomes import NO_MODE, Kind
 
 P = Tube.uniform(1.4, 1.0, voltage=0.4)
 FILM = Tube(
@@ -95,3 +106,76 @@ def test_a_film_ring_runner_up_under_force_to_the_scan_rtol():
         true = _true(FILM, r, "force", "compression").value
         assert r.value == pytest.approx(true, rel=1e-8), (r.m, r.n)
         assert abs(r.value - true) <= max(r.error_estimate, 1e-16)
+
+
+#: three layers (probe 11a, Q1): a stiff film, a Mooney-Rivlin layer and a Gent (jm 15) skin
+#: whose kinematic lock under stretch is lambda_z = 4.185954093606898 (lambda^2 + 2 / lambda
+#: - 3 = 15), reached before any mode bifurcates
+LAYERS3 = (
+    Layer(1.03, shear_modulus=50.0),
+    Layer(1.4, material=mooney_rivlin(0.8)),
+    Layer(2.2, shear_modulus=5.0, material=gent(15.0)),
+)
+TUBE3 = Tube(LAYERS3, length=3.0, stretch=1.0, voltage=0.2)
+LOCK3 = 4.185954093606898
+
+
+def _lost_at_lock(runners_up) -> ScanResult:
+    """A stretch scan of TUBE3 as the march left it: the loss at the lock, and runners-up."""
+    crit = CriticalPoint(
+        "stretch", LOCK3, *NO_MODE, Kind.THRESHOLD, 0.0, "impedance", "extension",
+        TUBE3.at("stretch", LOCK3),
+    )  # fmt: skip
+    return ScanResult(crit, tuple(runners_up), (0, 10), (0, 3))
+
+
+def test_runners_up_before_a_loss_must_be_roots_at_rtol():
+    """The stretch scan of TUBE3 listed (4, 1) at 4.185951531 and (10, 2) at 4.185952006,
+    2.6e-6 and 2.1e-6 BEFORE its threshold, the lock (estimates 4.3e-5: no root at rtol was
+    found near the march's, which then stood). Their fine targets (rtol 1e-12) keep their
+    sign up to the lock (a single solve of each returns the lock); next to it every target
+    saturates (~1e259) and the march's looser ones (1e-9) flip sign there. They are not
+    bifurcations, and are no longer listed."""
+    marched = _lost_at_lock(
+        [ModeValue(4, 1, 4.185951531, "wrinkle"), ModeValue(10, 2, 4.185952006, "wrinkle")]
+    )
+    got = runners.with_finished_runners(TUBE3, "stretch", "extension", 1e-12, marched)
+    assert got.critical == marched.critical
+    assert got.runners_up == ()
+
+
+def test_a_root_at_rtol_before_a_loss_is_the_critical_mode(monkeypatch):
+    """A runner-up whose root at rtol comes before the loss of the state bifurcates first: it
+    is the critical mode (a threshold result after it was wrong). Injected: (4, 1) confirmed
+    1e-6 before the lock, (10, 2) not."""
+    early = ModeValue(4, 1, LOCK3 - 1e-6, "wrinkle", 1e-12)
+
+    def fine(at, side, rtol, mv):
+        return early if (mv.m, mv.n) == (4, 1) else None
+
+    monkeypatch.setattr(runners, "fine_runner", fine)
+    point = dataclasses.replace(_lost_at_lock([]).critical, kind=Kind.BIFURCATION, m=4, n=1)
+    monkeypatch.setattr(
+        runners, "finished", lambda *a: dataclasses.replace(point, value=a[-1].value)
+    )
+    marched = _lost_at_lock(
+        [ModeValue(4, 1, 4.185951531, "wrinkle"), ModeValue(10, 2, 4.185952006, "wrinkle")]
+    )
+    got = runners.with_finished_runners(TUBE3, "stretch", "extension", 1e-12, marched)
+    assert (got.critical.kind, got.critical.m, got.critical.value) == (
+        Kind.BIFURCATION,
+        4,
+        early.value,
+    )
+    assert got.runners_up == ()
+
+
+@pytest.mark.slow
+def test_a_scan_lost_at_a_lock_lists_no_mode_before_it():
+    """The whole scan (~3 min): a threshold labelled with mode (8, 2) (the march's root of
+    (8, 2), which a solve at rtol does not confirm) and (4, 1), (10, 2) before it; now the
+    lock, no mode, no runner-up."""
+    s = scan_modes(TUBE3, "stretch", side="extension")
+    c = s.critical
+    assert (c.kind, c.value, (c.m, c.n)) == (Kind.THRESHOLD, LOCK3, NO_MODE)
+    assert all(r.value > c.value for r in s.runners_up)

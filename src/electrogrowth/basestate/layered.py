@@ -24,7 +24,7 @@ from .branches import Branch, clean
 from .force_box import check_force_when_lost, check_solved_stretch
 from .layered_state import LayeredState
 from .plies import ORDERS
-from .thresholds import Threshold, prepare, solve_on, threshold
+from .thresholds import LockedSearch, Threshold, prepare, solve_on, threshold
 from .warm import continued
 
 __all__ = [
@@ -63,11 +63,8 @@ def solve_layered_state(tube: Tube, *, rtol: float = 1e-12, near=None, guess=Non
     >>> round(state.lambda_i, 6), state.threshold_kind
     (1.151387, 'asymptote')
     """
-    if near is not None and (warm := continued(tube, near, rtol, guess)) is not None:
-        _, wall, prep, x, lz, c = warm
-        state = LayeredState._build(tube, wall, prep, x, lz, c, rtol, compiled=True)
-        if state.quadrature_error <= max(rtol, 1e-14):
-            return _in_box(state)
+    if near is not None and (state := solve_continued(tube, near, rtol, guess)) is not None:
+        return state
     key = dataclasses.replace(tube, voltage=0.0)
     nodes = None
     for _ in range(len(ORDERS)):
@@ -99,21 +96,47 @@ def solve_layered_state(tube: Tube, *, rtol: float = 1e-12, near=None, guess=Non
         state = LayeredState._build(tube, prep.wall, prep, x, lz, float(pt["charge"][0]), rtol)
         if state.quadrature_error <= max(rtol, 1e-14):
             return _in_box(state)
-        nodes = ORDERS[min(ORDERS.index(prep.wall.nodes) + 2, len(ORDERS) - 1)]
+        nodes = _finer(prep.wall.nodes)
         if prep.wall.nodes == ORDERS[-1]:
             break
     raise ConvergenceError(f"layered base state not resolved to rtol = {rtol}")
 
 
+def solve_continued(tube: Tube, near, rtol: float = 1e-12, guess=None) -> LayeredState | None:
+    """The state of ``tube`` continued from ``near`` alone (:mod:`.warm`, its checks and
+    the quadrature's), or None where that is not the walk's root: no cold walk after."""
+    warm = continued(tube, near, rtol, guess)
+    if warm is None:
+        return None
+    _, wall, prep, x, lz, c = warm
+    state = LayeredState._build(tube, wall, prep, x, lz, c, rtol, compiled=True)
+    return _in_box(state) if state.quadrature_error <= max(rtol, 1e-14) else None
+
+
 def _prepare(tube: Tube, rtol: float, nodes):
-    """thresholds.prepare; under force control, a lost unloaded state whose force lies
-    outside the stretch box is refused as the force's (basestate/force_box.py)."""
-    try:
-        return prepare(tube, rtol, nodes)
-    except BaseStateError:
+    """thresholds.prepare; an unloaded-state search that met a layer's lock is made again
+    with finer Gauss rules up to the largest (a coarse rule's T misplaces the root past
+    the lock while the state exists: LockedSearch); under force control, a lost unloaded
+    state whose force lies outside the stretch box is refused as the force's
+    (basestate/force_box.py)."""
+    while True:
+        try:
+            return prepare(tube, rtol, nodes)
+        except LockedSearch as exc:
+            if exc.nodes < ORDERS[-1]:
+                nodes = _finer(exc.nodes)
+                continue
+            lost = exc
+        except BaseStateError as exc:
+            lost = exc
         if tube.control == "force":
             check_force_when_lost(tube, solve_layered_state)
-        raise
+        raise lost
+
+
+def _finer(nodes: int) -> int:
+    """The Gauss rule two orders finer than ``nodes`` (the largest at most)."""
+    return ORDERS[min(ORDERS.index(nodes) + 2, len(ORDERS) - 1)]
 
 
 def _in_box(state: LayeredState) -> LayeredState:

@@ -23,7 +23,7 @@ from numpy.polynomial import chebyshev as cheb
 
 from ..continuation.events import BRANCH, LOCK, Remembered, bisect, brent, reached, turned
 from ..continuation.path import GeometricGrid
-from ..errors import NEAR_LOCK, BaseStateError, ConvergenceError
+from ..errors import NEAR_LOCK, BaseStateError, ConvergenceError, Remedy
 from ..model.layers import Tube
 from .branches import Branch, clean
 from .plies import Ply, Wall, choose_nodes, numeric_energy, start_guess
@@ -246,8 +246,9 @@ def _start(wall: Wall, P_i: float | None = None) -> tuple[float, float]:
             break
         xg = start * 1.1 ** (j // 2 + 1) if j % 2 else start / 1.1 ** (j // 2)
         f0, _ = f(xg)
+    edge = LockedSearch(f"no {which} found before a layer's lock", wall.nodes)
     if not np.isfinite(f0):
-        raise BaseStateError(f"no {which} found for this tube")
+        raise edge
     if f0 == 0:
         return xg, f(xg)[1]
     step, last, f_last = 1.1, xg, f0
@@ -258,17 +259,42 @@ def _start(wall: Wall, P_i: float | None = None) -> tuple[float, float]:
             # past the edge of the states (a Gent layer's lock): the root may lie between
             # the last state and that edge, in a window narrower than the step
             if step - 1.0 < 1e-12:
-                break
+                raise edge
             step = math.sqrt(step)
             continue
         if np.sign(fn) != np.sign(f_last):
             try:
                 x = brent(lambda x: f(x)[0], *sorted((last, nxt)), BRANCH, named=False)
             except ValueError:  # a state inside the bracket past a layer's lock
-                break
+                raise edge from None
             return x, f(x)[1]
         last, f_last = nxt, fn
-    raise BaseStateError(f"no {which} found for this tube")
+    lost = BaseStateError(f"no {which} found for this tube")
+    lost.remedy = NO_UNLOADED
+    raise lost
+
+
+#: what to do where no unloaded state is found (the tube's own growth and stretch: no load
+#: of the user's, such as a voltage, is the cause, since the search is made at V = 0)
+NO_UNLOADED = Remedy(
+    "move the growth or stretch back towards 1 (no unloaded state was found at them)"
+)
+
+
+class LockedSearch(BaseStateError):
+    """The unloaded-state search met the edge of the finite states (a layer's lock) before
+    the root, at ``nodes`` Gauss nodes. Next to a Gent layer's lock a coarse rule misplaces
+    the root (its T errs by tenths there) past that edge while the state exists: the caller
+    tries a finer rule before calling the state lost."""
+
+    remedy = Remedy(
+        "the tube's unloaded state, if any, lies next to a Gent layer's lock: grow or"
+        " stretch it less, or give the layer a larger jm"
+    )
+
+    def __init__(self, message: str, nodes: int):
+        super().__init__(message)
+        self.nodes = nodes
 
 
 @dataclasses.dataclass(frozen=True)

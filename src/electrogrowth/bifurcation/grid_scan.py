@@ -9,6 +9,8 @@ and only up to the earlier top-th value.
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from ..incremental.accuracy import SCAN_SIGNS, Accuracy
@@ -61,6 +63,11 @@ def scan_once(
         )
         return ScanResult(crit, (), m_range, n_range)
     crit = finished(params, solve_for, side, rtol, found[0])
+    if crit.kind == Kind.THRESHOLD:
+        # the march's root of found[0] was its looser target's alone: solved at rtol the
+        # mode reaches the loss of the state first, which is the tube's, not the mode's
+        # (the others are checked at rtol as runners-up: runners.with_finished_runners)
+        crit = dataclasses.replace(crit, m=NO_MODE[0], n=NO_MODE[1], family=None)
     return ScanResult(crit, tuple(found[1:top]), m_range, n_range)
 
 

@@ -46,6 +46,8 @@ def with_finished_runners(params, solve_for, side, rtol, result: ScanResult) -> 
         return result
     sense = -1.0 if side == "compression" else 1.0  # the march's direction
     at = TubeAt(params, solve_for)  # shared: a layered state continues from its neighbour
+    if result.critical.kind == Kind.THRESHOLD:
+        return _before_the_loss(params, solve_for, side, rtol, result, at, sense)
     runners = sorted(
         (finished_runner(at, side, rtol, r) for r in result.runners_up),
         key=lambda mv: sense * mv.value,
@@ -60,6 +62,27 @@ def with_finished_runners(params, solve_for, side, rtol, result: ScanResult) -> 
     return dataclasses.replace(result, critical=crit, runners_up=tuple(runners))
 
 
+def _before_the_loss(params, solve_for, side, rtol, result: ScanResult, at, sense):
+    """``result``, whose critical point is the loss of the state (a threshold), with its
+    runners-up checked: the march stops at the loss, so each comes before it, and is kept
+    only where its root at ``rtol`` is found (:func:`fine_runner`). A root of the march's
+    looser target alone is no bifurcation: next to a Gent lock the targets saturate
+    (~1e259) and the loose ones flip sign where the fine ones keep theirs (probe 11a, Q1:
+    (4, 1) and (10, 2) listed 2.6e-6 before a lock they do not reach). The first mode kept,
+    if any, bifurcates before the loss: it is the critical mode, the others its runners-up."""
+    c = result.critical
+    fine = (fine_runner(at, side, rtol, r) for r in result.runners_up)
+    kept = sorted(
+        (mv for mv in fine if mv is not None and sense * (mv.value - c.value) < 0),
+        key=lambda mv: sense * mv.value,
+    )
+    for i, first in enumerate(kept):
+        crit = finished(params, solve_for, side, rtol, first)
+        if crit.kind == Kind.BIFURCATION:
+            return dataclasses.replace(result, critical=crit, runners_up=tuple(kept[i + 1 :]))
+    return dataclasses.replace(result, runners_up=())
+
+
 def finished_runner(at: TubeAt, side, rtol: float, mv: ModeValue) -> ModeValue:
     """The runner-up ``mv`` (its value the march's root) solved at ``rtol`` near that root,
     with its error estimate. One with an estimate (a critical point's, moved among the
@@ -68,6 +91,16 @@ def finished_runner(at: TubeAt, side, rtol: float, mv: ModeValue) -> ModeValue:
     Where no root at rtol is found near the march's (no sign change in the widest window,
     or states there that do not resolve), the march's root stands with that window's
     half-width as its estimate: the fine root is at least that far."""
+    fine = fine_runner(at, side, rtol, mv)
+    if fine is None:
+        tol = Accuracy(rtol).runners_up * max(1.0, abs(mv.value))
+        return dataclasses.replace(mv, error_estimate=_widest(tol))
+    return fine
+
+
+def fine_runner(at: TubeAt, side, rtol: float, mv: ModeValue) -> ModeValue | None:
+    """:func:`finished_runner`, or None where no root at ``rtol`` is found near the
+    march's."""
     if mv.error_estimate is not None:
         return mv
     fam = Family(mv.family)
@@ -81,12 +114,12 @@ def finished_runner(at: TubeAt, side, rtol: float, mv: ModeValue) -> ModeValue:
         # at rtol >= 1e-9 the march's root is already the root of this target (Brent's)
         value = mv.value if march <= rtol else _root_near(fine, mv.value, WINDOW * tol, path)
         if value is None:
-            return dataclasses.replace(mv, error_estimate=_widest(tol))
+            return None
         coarse = root_mode(at, coarse_targets_for("impedance", rtol), mode, sign)
         # at least what the solve achieves (a critical value's floor: critical._solve)
         estimate = max(second_resolution(coarse, value, path), achieved_floor(value, rtol))
     except (BaseStateError, ConvergenceError):
-        return dataclasses.replace(mv, error_estimate=_widest(tol))
+        return None
     return dataclasses.replace(mv, value=value, error_estimate=estimate)
 
 

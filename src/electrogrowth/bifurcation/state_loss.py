@@ -8,8 +8,10 @@ way is lost at its end (:func:`loss_at_end`): a path that ends at the control's 
 to a film runs to an asymptote, where the threshold of a load held fixed falls to that load
 (:func:`held_loads`: the inflation threshold of a tube pulled at a fixed inner pressure).
 
-A state that is lost (the state search fails: BaseStateError) right after one that solves
-ends the path there. A state that exists but does not resolve (ConvergenceError: its profile
+A state that is lost (the state search fails: BaseStateError, from cold and continued from
+the march's nearest state) right after one that solves ends the path there; a search that
+meets a layer's lock first (LockedSearch, even at the finest Gauss rule) is no loss by itself,
+as below. A state that exists but does not resolve (ConvergenceError: its profile
 needs more than the largest Chebyshev degree, or it lies within LOCK_MARGIN of a lock,
 along.clear_of_lock) ends nothing by itself: a stiffening layer's state goes on, closer and
 closer to its lock (docs/reliability.md). The loss there is established only kinematically:
@@ -27,7 +29,8 @@ import math
 
 import numpy as np
 
-from ..basestate.thresholds import Threshold
+from ..basestate.layered import LayeredState, solve_continued
+from ..basestate.thresholds import LockedSearch, Threshold
 from ..basestate.tube import solve_base_state, threshold
 from ..continuation.events import EDGE, FULL, LOCK, THRESHOLD, bisect, brent
 from ..continuation.events import threshold_between as _lost_between
@@ -36,6 +39,8 @@ from ..model.controls import parse_control
 from ..model.layers import Tube
 from .along import LoadMargin, TubeAt, bounded_energy, clear_of_lock, has_lock
 
+#: the fates of a point where no state was found (_fate)
+_NO_STATE = ("lost", "locked")
 #: what a margin's evaluation may raise where it cannot be read (no state to start from)
 _UNREADABLE = (ValueError, BaseStateError, ConvergenceError)
 
@@ -116,16 +121,16 @@ def threshold_between(at: TubeAt, params: Tube, x_ok: float, x_bad: float, rtol=
             x_ok,
             ConvergenceError(
                 f"the base state at {x_bad:.12g} was not resolved continued from its neighbour"
-                " (it solves from cold)"
+                " (it solves on its own)"
             ),
         )
     ok, bad = bisect(lambda x: _fate(at, x, rtol) == "solved", x_ok, x_bad, EDGE)
-    if _fate(at, bad, rtol) != "unresolved":
+    if _fate(at, bad, rtol) == "lost":
         return ok, ok, None
-    beyond = x_bad if fate_bad == "lost" else _lost_past_lock(at, x_ok, x_bad, rtol)
+    beyond = x_bad if fate_bad in _NO_STATE else _lost_past_lock(at, x_ok, x_bad, rtol)
     lost_from = ""
     if beyond is not None:
-        _, lost = bisect(lambda x: _fate(at, x, rtol) != "lost", bad, beyond, EDGE)
+        _, lost = bisect(lambda x: _fate(at, x, rtol) not in _NO_STATE, bad, beyond, EDGE)
         lock = kinematic_lock(at, ok, lost)
         if lock is not None:  # past it no state can exist: the loss is established, exactly
             return lock, ok, None
@@ -146,7 +151,7 @@ def _lost_past_lock(at: TubeAt, x_ok: float, x_bad: float, rtol: float) -> float
     locks kinematically before it and no state is found there (else None)."""
     ahead = x_bad + (x_bad - x_ok)
     try:
-        if kinematic_lock(at, x_bad, ahead) is None or _fate(at, ahead, rtol) != "lost":
+        if kinematic_lock(at, x_bad, ahead) is None or _fate(at, ahead, rtol) not in _NO_STATE:
             return None
     except ParameterError:  # one more step leaves the control's range
         return None
@@ -215,13 +220,34 @@ def _finite(omega, i1: float, i2: float) -> bool:
 
 
 def _fate(at: TubeAt, x: float, rtol: float = 1e-12) -> str:
-    """The base state at x: "solved", "lost" (BaseStateError) or "unresolved" (it exists,
-    but its profile is not resolved, or it lies within LOCK_MARGIN of a lock:
+    """The base state at x: "solved"; "lost" (BaseStateError: no state found); "locked"
+    (LockedSearch: the search met a layer's lock before any state, even with the finest
+    Gauss rule: a loss only where :func:`kinematic_lock` establishes it); or "unresolved"
+    (it exists, but its profile is not resolved, or it lies within LOCK_MARGIN of a lock:
     ConvergenceError)."""
     try:
-        clear_of_lock(solve_base_state(at(x), rtol=rtol))  # from cold, as every bisection
+        clear_of_lock(_solved(at, x, rtol))
+    except LockedSearch:
+        return "locked"
     except BaseStateError:
         return "lost"
     except ConvergenceError:
         return "unresolved"
     return "solved"
+
+
+def _solved(at: TubeAt, x: float, rtol: float):
+    """The state at x from cold, as every bisection; where that search fails, continued
+    from the nearest state the march solved (basestate/warm.py: the same root, checked), so
+    that a failure of the search alone is never read as the loss of a state."""
+    tube = at(x)
+    try:
+        return solve_base_state(tube, rtol=rtol)
+    except BaseStateError:
+        near, guess = at.neighbours.nearest(x, rtol)
+        if near is None or tube.is_uniform or not isinstance(near, LayeredState):
+            raise
+        state = solve_continued(tube, near, rtol, guess)
+        if state is None:
+            raise
+        return state
