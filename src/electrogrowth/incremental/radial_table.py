@@ -162,6 +162,10 @@ def _layer_units(mu_k: float, eps_k: float, mu: float, eps: float) -> np.ndarray
     return units
 
 
+#: the column sizes of a layer tabulated in its own units (a uniform tube's table)
+_UNIT_LAYER = _layer_units(1.0, 1.0, 1.0, 1.0)
+
+
 def _segments(state, mu: float, eps: float):
     """[(a, b, values, unit)] per segment: values(R) is the (n, 26) array of the 23 moduli,
     p, r and w at the reference radii R (strictly inside [a, b]), in the table's units
@@ -299,8 +303,9 @@ def _uniform_table(state, tol: float, max_nodes: int) -> RadialTable:
     tube = state.tube
     J = math.prod(tube.layers[0].growth)  # as _segments' values: the same product
     b = tube.outer_radius
-    unit = _layer_units(1.0, 1.0, 1.0, 1.0)  # the table's units are the layer's
-    rows, fmap = _segment_table(1.0, b, lambda R: state.table_block(R, J), unit, tol, max_nodes)
+    rows, fmap = _segment_table(
+        1.0, b, lambda R: state.table_block(R, J), _UNIT_LAYER, tol, max_nodes
+    )
     return RadialTable(
         np.ascontiguousarray(rows)[None],
         np.array([rows.shape[0]], dtype=np.int64),
