@@ -26,6 +26,12 @@ def _same(a, b) -> bool:
     return a.shape == b.shape and a.dtype == b.dtype and a.tobytes() == b.tobytes()
 
 
+def _random_units(rng):
+    """Column sizes as a table's (radial_table._layer_units): some 0 (r, w), the others
+    around the columns' own sizes, above and below them."""
+    return np.where(rng.uniform(size=26) < 0.3, 0.0, 10.0 ** rng.uniform(-4, 3, size=26))
+
+
 def _random_segment(rng, n):
     """(coef, values) of 26 functions at n nodes, as a table's: some columns repeated, some
     constant, tails at and around the chopping threshold, signed zeros."""
@@ -46,10 +52,12 @@ def test_chop_equals_numpy_on_random_coefficients(seed, n):
     rng = np.random.default_rng(seed)
     coef, values = _random_segment(rng, n)
     tol = 10.0 ** rng.uniform(-16, -8)
-    scale = np.maximum(np.abs(values).max(axis=0), 1e-300)
+    unit = _random_units(rng)
+    scale = np.maximum(np.abs(values).max(axis=0), np.maximum(1e-300, unit))
     f = rng.integers(26)  # one coefficient exactly at its threshold (kept small: <=)
     coef[n - 4, f] = tol * scale[f] * 8
-    got, want = chop_and_merge(coef, values, tol), radial_table._chop_numpy(coef, values, tol)
+    got = chop_and_merge(coef, values, tol, unit)
+    want = radial_table._chop_numpy(coef, values, tol, unit)
     assert got[0] == want[0]
     assert _same(got[1], want[1]) and _same(got[2], want[2])
 
@@ -61,8 +69,9 @@ def test_scaled_chop_equals_numpy(seed, n):
     rng = np.random.default_rng(500 + seed)
     _, values = _random_segment(rng, n)
     tol = 10.0 ** rng.uniform(-16, -8)
-    got = radial_table._chop(values, tol)
-    want = radial_table._chop_numpy(radial_table._cheb_coefficients(values), values, tol)
+    unit = _random_units(rng)
+    got = radial_table._chop(values, tol, unit)
+    want = radial_table._chop_numpy(radial_table._cheb_coefficients(values), values, tol, unit)
     assert got[0] == want[0]
     assert _same(got[1], want[1]) and _same(got[2], want[2])
 
@@ -71,7 +80,9 @@ def test_chop_equals_numpy_with_nan():
     rng = np.random.default_rng(7)
     coef, values = _random_segment(rng, 17)
     coef[5, 3], values[2, 9] = np.nan, np.nan
-    got, want = chop_and_merge(coef, values, 1e-12), radial_table._chop_numpy(coef, values, 1e-12)
+    unit = _random_units(rng)
+    got = chop_and_merge(coef, values, 1e-12, unit)
+    want = radial_table._chop_numpy(coef, values, 1e-12, unit)
     assert got[0] == want[0] is False
     np.testing.assert_array_equal(got[1], want[1])  # NaN == NaN here
     assert _same(got[2], want[2])
@@ -113,8 +124,8 @@ def test_build_table_equals_the_numpy_twin(states, tol, monkeypatch):
     monkeypatch.setattr(
         radial_table,
         "_chop",
-        lambda vals, tol: radial_table._chop_numpy(
-            radial_table._cheb_coefficients(vals), vals, tol
+        lambda vals, tol, unit: radial_table._chop_numpy(
+            radial_table._cheb_coefficients(vals), vals, tol, unit
         ),
     )
     twin = [radial_table.build_table(s, tol=tol) for s in states]

@@ -31,7 +31,7 @@ import math
 import numpy as np
 from numpy.polynomial import chebyshev as cheb
 
-from ..errors import ConvergenceError
+from ..errors import ConvergenceError, ParameterError
 from ..model.layers import Layer, Tube
 from ..model.materials import Material
 from ..model.moduli import MODULI_NAMES, neo_hookean_moduli
@@ -160,6 +160,19 @@ class Ply:
             )
         return np.isfinite(np.broadcast_to(w, l1.shape)) & state
 
+    def evaluates(self, l1, l2, l3, d) -> np.ndarray:
+        """Per row (the last axis: a state's nodes), whether the stress and the field are
+        finite at every node: where :meth:`finite` cannot tell, a polynomial energy that
+        overflows a double (1e-30 (I1 - 3)^60 at I1 ~ 1.4e5) or whose stresses do."""
+        ok = np.ones(l1.shape[:-1], bool)
+        for j in np.ndindex(ok.shape):
+            try:
+                self.stress(l1[j], l2[j], l3[j], d[j])
+                self.field(l1[j], l2[j], l3[j], d[j])
+            except ParameterError:
+                ok[j] = False
+        return ok
+
     def stress(self, l1, l2, l3, d):
         """tau_i = mu_k tau^_i(l, d / s_k), shape (3,) + l1.shape (Maxwell part included)."""
         mu, eps = self.layer.shear_modulus, self.layer.permittivity
@@ -285,20 +298,37 @@ class Wall:
                 continue
             r, r2, (l1, l2, l3), d = ply.kinematics(R, g, G, r_i, lz, c)
             ok = ply.finite(l1, l2, l3, d).all(-1)
-            if not ok.all():
-                bad |= ~ok
-                keep = ok[..., None]
-                l1, l2, l3 = (np.where(keep, v, 1.0) for v in (l1, l2, l3))
-                d = np.where(keep, d, 0.0)
-            tau = ply.stress(l1, l2, l3, d)
+            l1, l2, l3, d = _masked(ok, l1, l2, l3, d)
+            try:
+                tau = ply.stress(l1, l2, l3, d)
+                field = ply.field(l1, l2, l3, d) if np.any(c) else None
+            except ParameterError:
+                # not finite where ply.finite cannot see it (a polynomial energy's overflow):
+                # those states are past the energy's end, as a Gent lock's (NaN), as on the
+                # one-layer path (voltage.UniformWall._hoop_or_nan); not the user's input
+                ok &= ply.evaluates(l1, l2, l3, d)
+                l1, l2, l3, d = _masked(ok, l1, l2, l3, d)
+                tau = ply.stress(l1, l2, l3, d)
+                field = ply.field(l1, l2, l3, d) if np.any(c) else None
+            bad |= ~ok
             jr = w * J * R / lz  # r dr = J R dR / lambda_z
             out[0] += ((tau[1] - tau[0]) * jr / r2).sum(-1)
             out[1] += ((abs(tau[1]) + abs(tau[0])) * jr / r2).sum(-1)
-            if np.any(c):
-                out[2] += (ply.field(l1, l2, l3, d) * jr / r).sum(-1)
+            if field is not None:
+                out[2] += (field * jr / r).sum(-1)
             out[3] += math.pi * ((2.0 * tau[2] - tau[0] - tau[1]) * jr).sum(-1)
         out[:, bad] = np.nan
         return out
+
+
+def _masked(ok, l1, l2, l3, d):
+    """The stretches and D with the rows that are not ``ok`` (NaN in the result) replaced by
+    the unstrained, uncharged state, whose stresses are finite."""
+    if ok.all():
+        return l1, l2, l3, d
+    keep = ok[..., None]
+    l1, l2, l3 = (np.where(keep, v, 1.0) for v in (l1, l2, l3))
+    return l1, l2, l3, np.where(keep, d, 0.0)
 
 
 def illinois(f, a, b, fa, fb):

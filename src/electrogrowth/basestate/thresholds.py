@@ -67,7 +67,7 @@ def _walk(branch: Branch, x0: float, lz0: float, *, sign: int = 1, target=None):
         for xj, lj, vj in zip(x, pt["stretch"], branch.value(pt)):
             xs.append(float(xj)), lzs.append(float(lj)), loads.append(float(vj))
             if not np.isfinite(vj):
-                if all(numeric_energy(p.layer.material) is None for p in branch.wall.plies):
+                if not _energy_ends(branch, xj, lzs[-2]):
                     raise ConvergenceError(
                         f"no lambda_z balances the axial force at lambda_i = {xj:.12g}"
                     )
@@ -77,6 +77,16 @@ def _walk(branch: Branch, x0: float, lz0: float, *, sign: int = 1, target=None):
             if turned(loads[-2], vj, sign):
                 return np.array(xs), np.array(lzs), np.array(loads), "peak"
     return np.array(xs), np.array(lzs), np.array(loads), "end"
+
+
+def _energy_ends(branch: Branch, x: float, lz: float) -> bool:
+    """Whether a state that is not finite at r_i = x is past an energy's end (a lock): any
+    energy with its own domain (Gent, an exponential) ends; polynomials only where they
+    overflow a double, i.e. the state at the last lambda_z, lz, is not finite either (else
+    no lambda_z balances the axial force)."""
+    if any(numeric_energy(p.layer.material) is not None for p in branch.wall.plies):
+        return True
+    return not np.isfinite(branch.value(clean(branch.point(np.array([x]), np.array([lz]))))[0])
 
 
 def _guess(xs, lzs):

@@ -8,7 +8,8 @@ homogeneous tube of the paper), R in [R_{k-1}, R_k]: the moduli, p and dr/dR jum
 interface (each layer has its own energy, modulus and growth), but inside a layer each of
 the 26 functions is analytic, so a Chebyshev interpolant per segment converges
 geometrically. We interpolate on Chebyshev points, chop the coefficients below ``tol``
-relative to the largest function value, and store identical functions (the neo-Hookean
+relative to each function's scale (its largest value, at least the size of the quantity it
+holds in its layer: :func:`_layer_units`), and store identical functions (the neo-Hookean
 moduli repeat a lot) once per segment. This keeps any material, any growth (anisotropic,
 graded) and any layering out of the compiled code: the kernel only runs Clenshaw sums. With
 r dr = (J / lambda_z) R dR (J = det F_g; docs/derivation-layered.md (K)),
@@ -145,10 +146,30 @@ def _column_units(mu: float, eps: float) -> np.ndarray:
     return units
 
 
+@functools.lru_cache(maxsize=64)
+def _layer_units(mu_k: float, eps_k: float, mu: float, eps: float) -> np.ndarray:
+    """The size of each of the 26 columns in a layer of modulus mu_k and permittivity eps_k,
+    in the table units (mu, eps): mu_k for the A moduli and p, 1 / eps_k for K. A column's
+    Chebyshev tail is measured against the larger of its largest value and this: a modulus
+    that vanishes at the unstrained state (O(I1 - 3) for a Yeoh energy without its square
+    term) holds the rounding of mu_k, never smaller, so at a small load its tail is noise of
+    1e-8 of itself and 1e-16 of mu_k (table_chop.chop_and_merge). 0 (each column its own
+    scale) for G, which is odd in D (its rounding is relative to itself), and for r and w,
+    positive everywhere."""
+    family = {"A": mu_k / mu, "G": 0.0, "K": eps / eps_k}
+    units = np.array([family[name[0]] for name in MODULI_NAMES] + [mu_k / mu, 0.0, 0.0])
+    units.setflags(write=False)  # shared by every table of these units
+    return units
+
+
+#: the column sizes of a layer tabulated in its own units (a uniform tube's table)
+_UNIT_LAYER = _layer_units(1.0, 1.0, 1.0, 1.0)
+
+
 def _segments(state, mu: float, eps: float):
-    """[(a, b, values)] per segment: values(R) is the (n, 26) array of the 23 moduli, p,
-    r and w at the reference radii R (strictly inside [a, b]), in the table's units
-    (mu, eps) (:func:`table_units`)."""
+    """[(a, b, values, unit)] per segment: values(R) is the (n, 26) array of the 23 moduli,
+    p, r and w at the reference radii R (strictly inside [a, b]), in the table's units
+    (mu, eps) (:func:`table_units`), and unit (26,) the size of each (:func:`_layer_units`)."""
     tube = state.tube
     radii = tube.radii
     units = _column_units(mu, eps)
@@ -173,25 +194,30 @@ def _segments(state, mu: float, eps: float):
         return out if unit else out / units
 
     return [
-        (a, b, lambda R, k=k, layer=layer: values(R, k, layer))
+        (
+            a,
+            b,
+            lambda R, k=k, layer=layer: values(R, k, layer),
+            _layer_units(layer.shear_modulus, layer.permittivity, mu, eps),
+        )
         for k, (a, b, layer) in enumerate(zip(radii, radii[1:], tube.layers))
     ]
 
 
-def _segment_table(a, b, values, tol, max_nodes):
-    """(chopped distinct coefficient rows, fmap) of one segment (the chopping and merging
-    compiled: table_chop.py)."""
+def _segment_table(a, b, values, unit, tol, max_nodes):
+    """(chopped distinct coefficient rows, fmap) of one segment whose columns have the sizes
+    ``unit`` (the chopping and merging compiled: table_chop.py)."""
     n, tails = 17, []
     while True:
         vals = values(_nodes(a, b, n))
-        tail_ok, rows, fmap = _chop(vals, tol)
+        tail_ok, rows, fmap = _chop(vals, tol, unit)
         if tail_ok or n >= max_nodes:
             break
         if n >= 129:  # the noise floor is looked for only where it can be reached
-            tails.append(_tail(vals))
+            tails.append(_tail(vals, unit))
         n = 2 * n - 1
     if not tail_ok and len(tails) >= 1:  # rounding noise, not want of points?
-        last = _tail(vals)
+        last = _tail(vals, unit)
         tail_ok = bool(np.all((last <= 8 * tol) | ((last >= 0.1 * tails[-1]) & (last <= 1e-9))))
     if not tail_ok:
         raise ConvergenceError(
@@ -201,27 +227,29 @@ def _segment_table(a, b, values, tol, max_nodes):
     return rows, fmap
 
 
-def _tail(vals) -> np.ndarray:
+def _tail(vals, unit) -> np.ndarray:
     """The largest of the last three Chebyshev coefficients of each function, relative to
-    its largest value. Where it no longer falls as the points double (and is small), it is
-    the rounding of the values, not a want of points: a Gent layer next to its lock
-    amplifies the rounding of I1 by 1 / (1 - (I1 - 3) / jm); the kernel does not see it."""
+    its scale (its largest value, at least its ``unit``). Where it no longer falls as the
+    points double (and is small), it is the rounding of the values, not a want of points: a
+    Gent layer next to its lock amplifies the rounding of I1 by 1 / (1 - (I1 - 3) / jm); the
+    kernel does not see it."""
     coef = (_chebyshev_points(vals.shape[0])[1] @ vals) * (2.0 / vals.shape[0])
-    return abs(coef[-3:]).max(0) / np.maximum(abs(vals).max(0), 1e-300)
+    return abs(coef[-3:]).max(0) / np.maximum(np.maximum(abs(vals).max(0), 1e-300), unit)
 
 
-def _chop(vals, tol):
-    """(tail_ok, rows, fmap) of the functions with values ``vals`` at the Chebyshev points:
+def _chop(vals, tol, unit):
+    """(tail_ok, rows, fmap) of the functions with values ``vals`` at the Chebyshev points
+    and sizes ``unit``:
     the DCT's product in NumPy, its scaling (:func:`_cheb_coefficients`), the chopping and
     the merging compiled (table_chop.py; its twin: :func:`_chop_numpy` of the coefficients)."""
-    return scale_chop_and_merge(_chebyshev_points(vals.shape[0])[1] @ vals, vals, tol)
+    return scale_chop_and_merge(_chebyshev_points(vals.shape[0])[1] @ vals, vals, tol, unit)
 
 
-def _chop_numpy(coef, vals, tol):
+def _chop_numpy(coef, vals, tol, unit):
     """The slow twin of table_chop.chop_and_merge, in NumPy: (tail_ok, rows, fmap)."""
     coef = coef.T  # (26, n)
     n = coef.shape[1]
-    scale = np.maximum(np.abs(vals).max(axis=0), 1e-300)
+    scale = np.maximum(np.abs(vals).max(axis=0), np.maximum(1e-300, unit))
     small = np.abs(coef) <= tol * scale[:, None] * 8
     tail_ok = bool(small[:, -3:].all())
     # significant coefficients: n minus the trailing run of small ones (at least 1)
@@ -257,8 +285,8 @@ def build_table(state, *, tol: float = 1e-15, max_nodes: int = 1025) -> RadialTa
         return _uniform_table(state, tol, max_nodes)
     mu, eps = table_units(state)
     segments = _segments(state, mu, eps)
-    parts = [_segment_table(a, b, f, tol, max_nodes) for a, b, f in segments]
-    bounds = [segments[0][0]] + [b for _, b, _ in segments]
+    parts = [_segment_table(a, b, f, unit, tol, max_nodes) for a, b, f, unit in segments]
+    bounds = [segments[0][0]] + [b for _, b, _, _ in segments]
     return RadialTable(
         _padded([c for c, _ in parts]),
         np.array([c.shape[0] for c, _ in parts], dtype=np.int64),
@@ -275,7 +303,9 @@ def _uniform_table(state, tol: float, max_nodes: int) -> RadialTable:
     tube = state.tube
     J = math.prod(tube.layers[0].growth)  # as _segments' values: the same product
     b = tube.outer_radius
-    rows, fmap = _segment_table(1.0, b, lambda R: state.table_block(R, J), tol, max_nodes)
+    rows, fmap = _segment_table(
+        1.0, b, lambda R: state.table_block(R, J), _UNIT_LAYER, tol, max_nodes
+    )
     return RadialTable(
         np.ascontiguousarray(rows)[None],
         np.array([rows.shape[0]], dtype=np.int64),

@@ -2,11 +2,11 @@
 
 A table (radial_table.py) is built at every step of a march: its 26 functions (the 23
 moduli, p, r, w) are interpolated at n Chebyshev points, each function's trailing
-coefficients below ``tol`` times its largest value are cut off, and functions whose chopped
-coefficients are identical (bit for bit: the neo-Hookean moduli repeat a lot) are stored
-once. In NumPy that is ~60 small array operations, 50-70 us a table, a third of a warm
-critical value's time (BENCHMARKS.md, "one warm mode"); here it is one loop over the
-coefficients, ~2 us.
+coefficients below ``tol`` times its scale (its largest value, at least its unit) are cut
+off, and functions whose chopped coefficients are identical (bit for bit: the neo-Hookean
+moduli repeat a lot) are stored once. In NumPy that is ~60 small array operations, 50-70 us
+a table, a third of a warm critical value's time (BENCHMARKS.md, "one warm mode"); here it
+is one loop over the coefficients, ~2 us.
 
 :func:`chop_and_merge` makes exactly the decisions of its slow twin,
 ``radial_table._chop_numpy`` with ``radial_table._dedupe`` (the same comparisons of the same
@@ -22,7 +22,7 @@ import numpy as np
 
 
 @nb.njit(cache=True)
-def chop_and_merge(coef, values, tol):
+def chop_and_merge(coef, values, tol, unit):
     """Chop and merge the functions of one segment.
 
     Parameters
@@ -30,10 +30,16 @@ def chop_and_merge(coef, values, tol):
     coef : (n, F) array
         Chebyshev coefficients (row j: T_j) of F functions, C-contiguous.
     values : (n, F) array
-        The functions' values at the nodes (their scale: the largest |value|, at least
-        1e-300).
+        The functions' values at the nodes.
     tol : float
         A coefficient is negligible when |c| <= tol scale 8.
+    unit : (F,) array
+        The size of the quantity each function holds: its scale is the larger of its largest
+        |value| and its unit (at least 1e-300). A modulus that vanishes at the unstrained
+        state (O(I1 - 3) for a Yeoh energy without its square term) carries the rounding of
+        the layer's modulus, which is noise of 1e-8 of its own size at a small load: measured
+        against itself its tail never falls, against its unit it is zero (issue D1 of probe
+        11b). 0 measures a function against itself alone (radial_table._layer_units).
 
     Returns
     -------
@@ -47,8 +53,8 @@ def chop_and_merge(coef, values, tol):
     degree = np.ones(F, np.int64)
     tail_ok = True
     for f in range(F):
-        scale = 1e-300
-        for i in range(n):  # np.maximum(np.abs(values).max(axis=0), 1e-300), NaN kept
+        scale = max(1e-300, unit[f])
+        for i in range(n):  # np.maximum(np.abs(values).max(axis=0), that), NaN kept
             a = abs(values[i, f])
             if a != a:
                 scale = a
@@ -95,7 +101,7 @@ def chop_and_merge(coef, values, tol):
 
 
 @nb.njit(cache=True)
-def scale_chop_and_merge(product, values, tol):
+def scale_chop_and_merge(product, values, tol, unit):
     """:func:`chop_and_merge` of the coefficients c = product 2 / n, c[0] halved (n rows),
     product = DCT-II matrix @ values: radial_table._cheb_coefficients' scaling, the same
     floating-point operations, in the compiled pass (``product`` is overwritten with c)."""
@@ -106,4 +112,4 @@ def scale_chop_and_merge(product, values, tol):
             product[j, f] = product[j, f] * scale
     for f in range(product.shape[1]):
         product[0, f] = product[0, f] * 0.5
-    return chop_and_merge(product, values, tol)
+    return chop_and_merge(product, values, tol, unit)
