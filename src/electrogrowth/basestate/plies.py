@@ -142,23 +142,32 @@ class Ply:
         l3 = np.broadcast_to(lz / g[2], l2.shape)
         return r, r2, (1.0 / (l2 * l3), l2, l3), c / r
 
-    def finite(self, l1, l2, l3, d):
-        """Where the energy is finite (False beyond a locking stretch, and where the state
-        itself is not: no charge balances the traction past another layer's lock, c NaN)."""
-        state = np.isfinite(l1) & np.isfinite(l2) & np.isfinite(l3) & np.isfinite(d)
-        if (energy := numeric_energy(self.layer.material)) is None:
-            # finite everywhere: only a NaN state is not (it must not reach the stress)
-            return np.broadcast_to(state, l1.shape)
-        dt2 = (d / (l1 * math.sqrt(self.layer.shear_modulus * self.layer.permittivity))) ** 2
+    def trial_stress(self, l1, l2, l3, d):
+        """:meth:`stress`, NaN where the energy or the stress is not finite (beyond a locking
+        stretch; where an exponential energy's stresses overflow a double, which they do a
+        little before the energy itself; where the state is not, e.g. no charge balances the
+        traction past another layer's lock, c NaN). For the wall's integrals at trial and
+        probe states: such a point is no state to use, never the user's deformation (a
+        node-count probe at 3 times the guess once raised the material's ParameterError for
+        a state far inside the double range)."""
+        mu, eps = self.layer.shear_modulus, self.layer.permittivity
+        with np.errstate(**_QUIET):  # a trial state's infinities become NaN below, quietly
+            if self.kind == "neo-hookean":  # NaN only where the state is
+                tau = self.stress(l1, l2, l3, d)
+            else:
+                s = math.sqrt(mu * eps)
+                tau = mu * self.layer.material.finite_stress(l1, l2, l3, d / s)
+        return np.where(np.isfinite(tau).all(0), tau, np.nan)  # mu tau may overflow too
+
+    def trial_field(self, l1, l2, l3, d):
+        """:meth:`field`, NaN where it is not finite (as :meth:`trial_stress`)."""
+        mu, eps = self.layer.shear_modulus, self.layer.permittivity
+        if self.kind != "general":
+            return np.broadcast_to(d / eps, l1.shape)
+        s = math.sqrt(mu * eps)
         with np.errstate(**_QUIET):
-            w = energy(
-                l1**2 + l2**2 + l3**2,
-                (l1 * l2) ** 2 + (l2 * l3) ** 2 + (l3 * l1) ** 2,
-                dt2,
-                dt2 * l1**2,
-                dt2 * l1**4,
-            )
-        return np.isfinite(np.broadcast_to(w, l1.shape)) & state
+            field = mu / s * self.layer.material.finite_electric_field(l1, l2, l3, d / s)
+        return np.where(np.isfinite(field), field, np.nan)
 
     def stress(self, l1, l2, l3, d):
         """tau_i = mu_k tau^_i(l, d / s_k), shape (3,) + l1.shape (Maxwell part included)."""
@@ -284,19 +293,17 @@ class Wall:
             if skip:
                 continue
             r, r2, (l1, l2, l3), d = ply.kinematics(R, g, G, r_i, lz, c)
-            ok = ply.finite(l1, l2, l3, d).all(-1)
-            if not ok.all():
-                bad |= ~ok
-                keep = ok[..., None]
-                l1, l2, l3 = (np.where(keep, v, 1.0) for v in (l1, l2, l3))
-                d = np.where(keep, d, 0.0)
-            tau = ply.stress(l1, l2, l3, d)
+            tau = ply.trial_stress(l1, l2, l3, d)  # NaN where not finite: that state is bad
+            ok = np.isfinite(tau).all(0)
             jr = w * J * R / lz  # r dr = J R dR / lambda_z
             out[0] += ((tau[1] - tau[0]) * jr / r2).sum(-1)
             out[1] += ((abs(tau[1]) + abs(tau[0])) * jr / r2).sum(-1)
             if np.any(c):
-                out[2] += (ply.field(l1, l2, l3, d) * jr / r).sum(-1)
+                field = ply.trial_field(l1, l2, l3, d)
+                ok &= np.isfinite(field)
+                out[2] += (field * jr / r).sum(-1)
             out[3] += math.pi * ((2.0 * tau[2] - tau[0] - tau[1]) * jr).sum(-1)
+            bad |= ~ok.all(-1)
         out[:, bad] = np.nan
         return out
 
