@@ -272,6 +272,25 @@ class Wall:
                 flat,
             )
 
+    def overflow(self, r_i: float, lz: float) -> float | None:
+        """I1 at the first node (uncharged, at r_i and lambda_z) where a layer's stresses
+        overflow a double: its energy is +inf there, or finite with stresses that are not (an
+        exponential energy's, e.g. exp((I1 - 3)^2) from I1 ~ 29.6); None if nowhere. Not a
+        lock's end, where the energy is NaN: that is the user's deformation."""
+        for ply, (R, _, g, _, G) in zip(self.plies, self.grids):
+            if (energy := numeric_energy(ply.layer.material)) is None:
+                continue  # a polynomial: finite wherever its stretches are
+            _, _, (l1, l2, l3), d = ply.kinematics(R, g, G, np.array([r_i]), lz, 0.0)
+            I1 = l1**2 + l2**2 + l3**2
+            with np.errstate(**_QUIET):
+                w = np.broadcast_to(energy(I1, (l1 * l2) ** 2 + (l2 * l3) ** 2 + (l3 * l1) ** 2,
+                                           0.0, 0.0, 0.0), I1.shape)  # fmt: skip
+            tau = ply.trial_stress(l1, l2, l3, d)
+            over = (w == math.inf) | (np.isfinite(w) & ~np.isfinite(tau).all(0))
+            if over.any():
+                return float(I1[over][0])
+        return None
+
     def integrals(self, r_i, lz, c, compiled: bool = False):
         """(T, scale, V, Nint): T = int (tau_2 - tau_1) dr / r, scale = int (|tau_1| + |tau_2|)
         dr / r, V = int E_r dr, Nint = pi int (2 tau_3 - tau_1 - tau_2) r dr; NaN where an

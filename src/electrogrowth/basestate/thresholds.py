@@ -23,7 +23,7 @@ from numpy.polynomial import chebyshev as cheb
 
 from ..continuation.events import BRANCH, LOCK, Remembered, bisect, brent, reached, turned
 from ..continuation.path import GeometricGrid
-from ..errors import NEAR_LOCK, BaseStateError, ConvergenceError
+from ..errors import NEAR_LOCK, OVERFLOW, BaseStateError, ConvergenceError
 from ..model.layers import Tube
 from .branches import Branch, clean
 from .plies import Ply, Wall, choose_nodes, numeric_energy, start_guess
@@ -247,7 +247,7 @@ def _start(wall: Wall, P_i: float | None = None) -> tuple[float, float]:
         xg = start * 1.1 ** (j // 2 + 1) if j % 2 else start / 1.1 ** (j // 2)
         f0, _ = f(xg)
     if not np.isfinite(f0):
-        raise BaseStateError(f"no {which} found for this tube")
+        _not_found(wall, start, lg, which)
     if f0 == 0:
         return xg, f(xg)[1]
     step, last, f_last = 1.1, xg, f0
@@ -268,6 +268,21 @@ def _start(wall: Wall, P_i: float | None = None) -> tuple[float, float]:
                 break
             return x, f(x)[1]
         last, f_last = nxt, fn
+    _not_found(wall, start, lg, which)
+
+
+def _not_found(wall: Wall, x: float, lz: float, which: str):
+    """Raise: no start state found from the guess (r_i, lambda_z) = (x, lz). Where the
+    stresses at the guess overflow a double, the search met the end of double precision, not
+    of the states (an exponential energy's exist at every stretch): ConvergenceError naming
+    it. Otherwise, as past a lock, BaseStateError."""
+    if (at := wall.overflow(x, lz)) is not None:
+        err = ConvergenceError(
+            f"no {which} found for this tube: its stresses overflow a double (I1 = {at:.6g} at"
+            " the homogeneous-growth guess), beyond which no state is computed"
+        )
+        err.remedy = OVERFLOW  # neither a looser rtol nor collocation reaches it
+        raise err
     raise BaseStateError(f"no {which} found for this tube")
 
 
