@@ -99,6 +99,13 @@ NEAR_LOCK = Remedy(
     " for less load, or give the layer a larger jm"
 )
 
+#: what to do where a state's stresses overflow a double (an exponential energy far out): the
+#: state may exist, but no double-precision solve reaches it, nor would a looser rtol
+OVERFLOW = Remedy(
+    "the stresses there exceed the range of a double: ask for less load, growth or stretch,"
+    " or use an energy that stiffens less steeply"
+)
+
 
 class NoBifurcationFound(ElectrogrowthError, RuntimeError):
     """No bifurcation of the requested kind lies in the searched range."""

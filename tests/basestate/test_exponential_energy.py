@@ -29,7 +29,7 @@ import warnings
 import numpy as np
 import pytest
 
-from electrogrowth import Layer, Material, Tube, critical_value, solve_base_state
+from electrogrowth import Layer, Material, Tube, critical_value, gent, solve_base_state
 from electrogrowth.cli.app import main
 
 FUNG_TEXT = "(exp(0.5*(I1-3))-1) + I5/2"
@@ -107,3 +107,103 @@ def test_states_of_an_energy_whose_stresses_overflow_first_solve_everywhere():
     )  # fmt: skip
     one = solve_base_state(tube.at("growth", 1.335)).lambda_i
     assert one == pytest.approx(solve_base_state(two).lambda_i, rel=1e-12)
+
+
+def _mucosa(g_theta: float) -> Tube:
+    """Probe 11a's Fung mucosa, 0.1 thick and 10 times as stiff, growing in the hoop
+    direction."""
+    return Tube(
+        (Layer(1.1, material=FUNG_SQUARED, shear_modulus=10.0, growth=(1.0, g_theta, 1.0)),
+         Layer(2.0, material=FUNG_SQUARED)),
+        length=4.0,
+    )  # fmt: skip
+
+
+def test_a_layered_state_whose_node_probe_overflows_solves():
+    """``solve_base_state`` of this bilayer at g_theta = 3.475 raised ParameterError
+    ("deformation outside the domain of 'fung-squared' (I1 = 29.6251): the energy's
+    derivatives are not finite there") while 3.45 and 3.5 solved. The state lies far inside
+    the double range (I1 < 5); the node count's probe at 3 times the guess
+    (basestate/plies.py ``choose_nodes``) met a point of the outer layer where the energy
+    is finite, exp(708.9), but its derivative overflows. ``Ply.finite`` looked at the
+    energy alone, so the point reached ``Material.stress``, which blames the user. Such a
+    point is now no state to use (NaN, as beyond a lock), and the probe is left out.
+
+    The state: continued by Newton from its neighbour at 3.45, and independently the root of
+    the traction integral (*) by mpmath's adaptive quadrature at 30 digits, r_i =
+    2.04274157844085094524."""
+    cold = solve_base_state(_mucosa(3.475))
+    warm = solve_base_state(_mucosa(3.475), near=solve_base_state(_mucosa(3.45)))
+    assert cold.r_i == pytest.approx(2.04274157844085094524, rel=1e-13)
+    assert cold.r_i == pytest.approx(warm.r_i, rel=1e-13)
+    assert cold.quadrature_error <= 1e-12
+
+
+def test_a_trial_stress_that_overflows_is_nan_but_the_users_is_refused():
+    """The two ways to meet a deformation where the stresses are not finite: the solver's
+    own trial point (``Material.finite_stress``: NaN there, finite values elsewhere
+    unchanged) and the user's (``Material.stress``: one ParameterError naming it), the
+    same for an exponential past the double range and a Gent layer past its lock."""
+    from electrogrowth.errors import ParameterError
+
+    # plane strain (1 / l, l, 1): I1 = l^2 + l^-2 + 1, 29.6251 (energy finite) and 4.5625
+    band = ((28.6251 + (28.6251**2 - 4.0) ** 0.5) / 2.0) ** 0.5
+    assert np.isfinite(FUNG_SQUARED.numeric()[0](band**2 + band**-2 + 1.0, 0, 0, 0, 0))
+    for material, bad in ((FUNG_SQUARED, band), (gent(3.0), 2.5)):  # Gent: I1 - 3 = 4.41
+        l = np.array([1.1, bad])
+        stretches = (1.0 / l, l, 1.0)
+        tau = material.finite_stress(*stretches, 0.0)
+        assert np.isfinite(tau[:, 0]).all() and np.isnan(tau[:, 1]).all()
+        assert tau[:, 0] == pytest.approx(material.stress(1 / 1.1, 1.1, 1.0, 0.0), rel=1e-15)
+        with pytest.raises(ParameterError, match="outside the domain"):
+            material.stress(*stretches, 0.0)
+
+
+@pytest.mark.parametrize(
+    "tube",
+    [
+        Tube.uniform(1.5, material=FUNG_SQUARED, stretch=5.41),  # I1 = 29.64: energy finite
+        Tube.uniform(1.5, material=FUNG_SQUARED, stretch=6.0),  # I1 = 36.3: energy too
+        Tube(
+            (
+                Layer(1.1, material=FUNG_SQUARED, shear_modulus=10.0),
+                Layer(2.0, material=FUNG_SQUARED),
+            ),
+            length=4.0,
+            stretch=5.4075,
+        ),
+    ],  # fmt: skip
+    ids=["uniform-stresses", "uniform-energy", "layered-stresses"],
+)
+def test_a_state_whose_own_stresses_overflow_is_not_blamed_on_the_user(tube):
+    """A state that lies where the stresses themselves pass the largest double (axial
+    stretch 5.41: I1 = 29.64 through the uniform wall) cannot be computed, yet it exists
+    (exp is finite everywhere). The uniform tube raised the material's ParameterError
+    ("deformation outside the domain ... derivatives are not finite", at 5.4075 and 5.41
+    of a 0.0025 grid) or, where the energy overflows too, BaseStateError "the energy ...
+    is undefined in the homogeneous state"; the layered tube "no unloaded state found"
+    (BaseStateError, once the node-count probe no longer raised). Each is now a
+    ConvergenceError naming the overflow, whose remedy is less load, not a looser rtol."""
+    from electrogrowth import ConvergenceError
+    from electrogrowth.errors import OVERFLOW
+
+    with pytest.raises(ConvergenceError, match="overflow a double") as exc:
+        solve_base_state(tube)
+    assert exc.value.remedy is OVERFLOW
+
+
+@pytest.mark.parametrize(
+    "tube",
+    [
+        Tube.uniform(1.5, material=gent(1.0), stretch=3.0),
+        Tube((Layer(1.5, material=gent(1.0)), Layer(2.0)), length=4.0, stretch=3.0),
+    ],
+    ids=["uniform", "layered"],
+)
+def test_a_gent_layer_stretched_past_its_lock_still_has_no_state(tube):
+    """The other end of an energy's domain, a lock (Gent's energy is NaN past it), keeps
+    its BaseStateError: there no state exists (lambda_z = 3 gives I1 - 3 > 1 = J_m)."""
+    from electrogrowth import BaseStateError
+
+    with pytest.raises(BaseStateError, match="no unloaded state|undefined"):
+        solve_base_state(tube)

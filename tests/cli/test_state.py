@@ -246,3 +246,16 @@ def test_an_unresolved_state_names_a_remedy_state_has(capsys, monkeypatch, tmp_p
         assert status == 2 and out == "" and err.count("\n") == 1, err
         assert "--rtol" not in err and "--method" not in err, err
         assert "solve_base_state(tube, rtol=1e-10)" in err, err
+
+
+def test_a_state_whose_stresses_overflow_keeps_its_own_remedy(capsys):
+    """A state past the double range (Fung exp((I1 - 3)^2) at lambda_z = 5.41, I1 = 29.64)
+    is a ConvergenceError naming the overflow (basestate/voltage.py); `state` replaced every
+    ConvergenceError's remedy by its looser-rtol advice, which cannot help there. Before, the
+    same command exited 2 blaming the deformation ("outside the domain")."""
+    energy = "(I1-3)/2 + I5/2 + 0.1*(exp((I1-3)**2)-1)"
+    argv = ["state", "--outer-radius", "1.5", "--energy", energy, "--stretch", "5.41"]
+    status, out, err = run(capsys, *argv)
+    assert status == 2 and out == "" and err.count("\n") == 1, err
+    assert "overflow a double" in err and "less load, growth or stretch" in err, err
+    assert "rtol" not in err and "outside the domain" not in err, err

@@ -31,7 +31,7 @@ import math
 import numpy as np
 from numpy.polynomial import chebyshev as cheb
 
-from ..errors import ConvergenceError, ParameterError
+from ..errors import ConvergenceError
 from ..model.layers import Layer, Tube
 from ..model.materials import Material
 from ..model.moduli import MODULI_NAMES, neo_hookean_moduli
@@ -142,36 +142,32 @@ class Ply:
         l3 = np.broadcast_to(lz / g[2], l2.shape)
         return r, r2, (1.0 / (l2 * l3), l2, l3), c / r
 
-    def finite(self, l1, l2, l3, d):
-        """Where the energy is finite (False beyond a locking stretch, and where the state
-        itself is not: no charge balances the traction past another layer's lock, c NaN)."""
-        state = np.isfinite(l1) & np.isfinite(l2) & np.isfinite(l3) & np.isfinite(d)
-        if (energy := numeric_energy(self.layer.material)) is None:
-            # finite everywhere: only a NaN state is not (it must not reach the stress)
-            return np.broadcast_to(state, l1.shape)
-        dt2 = (d / (l1 * math.sqrt(self.layer.shear_modulus * self.layer.permittivity))) ** 2
-        with np.errstate(**_QUIET):
-            w = energy(
-                l1**2 + l2**2 + l3**2,
-                (l1 * l2) ** 2 + (l2 * l3) ** 2 + (l3 * l1) ** 2,
-                dt2,
-                dt2 * l1**2,
-                dt2 * l1**4,
-            )
-        return np.isfinite(np.broadcast_to(w, l1.shape)) & state
+    def trial_stress(self, l1, l2, l3, d):
+        """:meth:`stress`, NaN where the energy or the stress is not finite (beyond a locking
+        stretch; where an exponential energy's stresses overflow a double, which they do a
+        little before the energy itself; where the state is not, e.g. no charge balances the
+        traction past another layer's lock, c NaN). For the wall's integrals at trial and
+        probe states: such a point is no state to use, never the user's deformation (a
+        node-count probe at 3 times the guess once raised the material's ParameterError for
+        a state far inside the double range)."""
+        mu, eps = self.layer.shear_modulus, self.layer.permittivity
+        with np.errstate(**_QUIET):  # a trial state's infinities become NaN below, quietly
+            if self.kind == "neo-hookean":  # NaN only where the state is
+                tau = self.stress(l1, l2, l3, d)
+            else:
+                s = math.sqrt(mu * eps)
+                tau = mu * self.layer.material.finite_stress(l1, l2, l3, d / s)
+        return np.where(np.isfinite(tau).all(0), tau, np.nan)  # mu tau may overflow too
 
-    def evaluates(self, l1, l2, l3, d) -> np.ndarray:
-        """Per row (the last axis: a state's nodes), whether the stress and the field are
-        finite at every node: where :meth:`finite` cannot tell, a polynomial energy that
-        overflows a double (1e-30 (I1 - 3)^60 at I1 ~ 1.4e5) or whose stresses do."""
-        ok = np.ones(l1.shape[:-1], bool)
-        for j in np.ndindex(ok.shape):
-            try:
-                self.stress(l1[j], l2[j], l3[j], d[j])
-                self.field(l1[j], l2[j], l3[j], d[j])
-            except ParameterError:
-                ok[j] = False
-        return ok
+    def trial_field(self, l1, l2, l3, d):
+        """:meth:`field`, NaN where it is not finite (as :meth:`trial_stress`)."""
+        mu, eps = self.layer.shear_modulus, self.layer.permittivity
+        if self.kind != "general":
+            return np.broadcast_to(d / eps, l1.shape)
+        s = math.sqrt(mu * eps)
+        with np.errstate(**_QUIET):
+            field = mu / s * self.layer.material.finite_electric_field(l1, l2, l3, d / s)
+        return np.where(np.isfinite(field), field, np.nan)
 
     def stress(self, l1, l2, l3, d):
         """tau_i = mu_k tau^_i(l, d / s_k), shape (3,) + l1.shape (Maxwell part included)."""
@@ -276,6 +272,25 @@ class Wall:
                 flat,
             )
 
+    def overflow(self, r_i: float, lz: float) -> float | None:
+        """I1 at the first node (uncharged, at r_i and lambda_z) where a layer's stresses
+        overflow a double: its energy is +inf there, or finite with stresses that are not (an
+        exponential energy's, e.g. exp((I1 - 3)^2) from I1 ~ 29.6); None if nowhere. Not a
+        lock's end, where the energy is NaN: that is the user's deformation."""
+        for ply, (R, _, g, _, G) in zip(self.plies, self.grids):
+            if (energy := numeric_energy(ply.layer.material)) is None:
+                continue  # a polynomial: finite wherever its stretches are
+            _, _, (l1, l2, l3), d = ply.kinematics(R, g, G, np.array([r_i]), lz, 0.0)
+            I1 = l1**2 + l2**2 + l3**2
+            with np.errstate(**_QUIET):
+                w = np.broadcast_to(energy(I1, (l1 * l2) ** 2 + (l2 * l3) ** 2 + (l3 * l1) ** 2,
+                                           0.0, 0.0, 0.0), I1.shape)  # fmt: skip
+            tau = ply.trial_stress(l1, l2, l3, d)
+            over = (w == math.inf) | (np.isfinite(w) & ~np.isfinite(tau).all(0))
+            if over.any():
+                return float(I1[over][0])
+        return None
+
     def integrals(self, r_i, lz, c, compiled: bool = False):
         """(T, scale, V, Nint): T = int (tau_2 - tau_1) dr / r, scale = int (|tau_1| + |tau_2|)
         dr / r, V = int E_r dr, Nint = pi int (2 tau_3 - tau_1 - tau_2) r dr; NaN where an
@@ -297,38 +312,19 @@ class Wall:
             if skip:
                 continue
             r, r2, (l1, l2, l3), d = ply.kinematics(R, g, G, r_i, lz, c)
-            ok = ply.finite(l1, l2, l3, d).all(-1)
-            l1, l2, l3, d = _masked(ok, l1, l2, l3, d)
-            try:
-                tau = ply.stress(l1, l2, l3, d)
-                field = ply.field(l1, l2, l3, d) if np.any(c) else None
-            except ParameterError:
-                # not finite where ply.finite cannot see it (a polynomial energy's overflow):
-                # those states are past the energy's end, as a Gent lock's (NaN), as on the
-                # one-layer path (voltage.UniformWall._hoop_or_nan); not the user's input
-                ok &= ply.evaluates(l1, l2, l3, d)
-                l1, l2, l3, d = _masked(ok, l1, l2, l3, d)
-                tau = ply.stress(l1, l2, l3, d)
-                field = ply.field(l1, l2, l3, d) if np.any(c) else None
-            bad |= ~ok
+            tau = ply.trial_stress(l1, l2, l3, d)  # NaN where not finite: that state is bad
+            ok = np.isfinite(tau).all(0)
             jr = w * J * R / lz  # r dr = J R dR / lambda_z
             out[0] += ((tau[1] - tau[0]) * jr / r2).sum(-1)
             out[1] += ((abs(tau[1]) + abs(tau[0])) * jr / r2).sum(-1)
-            if field is not None:
+            if np.any(c):
+                field = ply.trial_field(l1, l2, l3, d)
+                ok &= np.isfinite(field)
                 out[2] += (field * jr / r).sum(-1)
             out[3] += math.pi * ((2.0 * tau[2] - tau[0] - tau[1]) * jr).sum(-1)
+            bad |= ~ok.all(-1)
         out[:, bad] = np.nan
         return out
-
-
-def _masked(ok, l1, l2, l3, d):
-    """The stretches and D with the rows that are not ``ok`` (NaN in the result) replaced by
-    the unstrained, uncharged state, whose stresses are finite."""
-    if ok.all():
-        return l1, l2, l3, d
-    keep = ok[..., None]
-    l1, l2, l3 = (np.where(keep, v, 1.0) for v in (l1, l2, l3))
-    return l1, l2, l3, np.where(keep, d, 0.0)
 
 
 def illinois(f, a, b, fa, fb):

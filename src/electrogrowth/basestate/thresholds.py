@@ -23,7 +23,7 @@ from numpy.polynomial import chebyshev as cheb
 
 from ..continuation.events import BRANCH, LOCK, Remembered, bisect, brent, reached, turned
 from ..continuation.path import GeometricGrid
-from ..errors import NEAR_LOCK, BaseStateError, ConvergenceError, Remedy
+from ..errors import NEAR_LOCK, OVERFLOW, BaseStateError, ConvergenceError, Remedy
 from ..model.layers import Tube
 from .branches import Branch, clean
 from .plies import Ply, Wall, choose_nodes, numeric_energy, start_guess
@@ -258,7 +258,7 @@ def _start(wall: Wall, P_i: float | None = None) -> tuple[float, float]:
         f0, _ = f(xg)
     edge = LockedSearch(f"no {which} found before a layer's lock", wall.nodes)
     if not np.isfinite(f0):
-        raise edge
+        _not_found(wall, start, lg, which, edge)
     if f0 == 0:
         return xg, f(xg)[1]
     step, last, f_last = 1.1, xg, f0
@@ -281,7 +281,7 @@ def _start(wall: Wall, P_i: float | None = None) -> tuple[float, float]:
         last, f_last = nxt, fn
     lost = BaseStateError(f"no {which} found for this tube")
     lost.remedy = NO_UNLOADED
-    raise lost
+    _not_found(wall, start, lg, which, lost)
 
 
 #: what to do where no unloaded state is found (the tube's own growth and stretch: no load
@@ -305,6 +305,21 @@ class LockedSearch(BaseStateError):
     def __init__(self, message: str, nodes: int):
         super().__init__(message)
         self.nodes = nodes
+
+
+def _not_found(wall: Wall, x: float, lz: float, which: str, otherwise: BaseStateError):
+    """Raise: no start state found from the guess (r_i, lambda_z) = (x, lz). Where the
+    stresses at the guess overflow a double, the search met the end of double precision, not
+    of the states (an exponential energy's exist at every stretch): ConvergenceError naming
+    it. Otherwise ``otherwise`` (past a lock, or none found)."""
+    if (at := wall.overflow(x, lz)) is not None:
+        err = ConvergenceError(
+            f"no {which} found for this tube: its stresses overflow a double (I1 = {at:.6g} at"
+            " the homogeneous-growth guess), beyond which no state is computed"
+        )
+        err.remedy = OVERFLOW  # neither a looser rtol nor collocation reaches it
+        raise err
+    raise otherwise
 
 
 @dataclasses.dataclass(frozen=True)

@@ -29,8 +29,8 @@ import numpy as np
 from numpy.polynomial import chebyshev as cheb
 
 from ..brent import brentq
-from ..errors import BaseStateError, ConvergenceError, ParameterError
-from ..model.materials import Material
+from ..errors import OVERFLOW, BaseStateError, ConvergenceError, ParameterError
+from ..model.materials import Material, shorten
 from .neo_hookean import nh_asymptote
 
 GAUSS_ORDERS = (16, 24, 32, 48, 64, 96, 128, 192, 256, 384)  # Gauss-Legendre node counts tried
@@ -263,6 +263,14 @@ def _mechanical(material, outer_radius, growth, stretch, rtol) -> tuple[float, i
     the sign of lambda_i - lambda_i0, so no other state has Vbar = 0 (docs Sec. 3)."""
     tube = UniformWall(material, outer_radius, growth, stretch, GAUSS_ORDERS[0])
     lam0 = math.sqrt(growth**3 / stretch)
+    if (at := _overflow(tube, lam0)) is not None:
+        err = ConvergenceError(
+            f"the traction-free state at Vbar = 0 for g = {growth:g}, lambda_z = {stretch:g},"
+            f" Rbar_o = {outer_radius:g} is not computed: the stresses of"
+            f" {shorten(material.name)!r} overflow a double in it (I1 = {at:.6g})"
+        )
+        err.remedy = OVERFLOW  # neither a looser rtol nor collocation reaches it
+        raise err
     if not tube.in_domain(np.array([lam0]))[0]:
         raise BaseStateError(
             f"no traction-free state at Vbar = 0 for g = {growth:g},"
@@ -270,6 +278,23 @@ def _mechanical(material, outer_radius, growth, stretch, rtol) -> tuple[float, i
             f" of {material.name} is undefined in the homogeneous state"
         )
     return lam0, _nodes(tube, lam0 * np.array([1.0, 1.5, 3.0]), rtol)
+
+
+def _overflow(tube: UniformWall, lam0: float) -> float | None:
+    """I1 of the homogeneous state lambda_i0 if its stresses overflow a double: its energy
+    +inf, or finite with stresses that are not (an exponential energy's, e.g.
+    exp((I1 - 3)^2) from I1 ~ 29.6). That state exists, but the material's ParameterError
+    there would blame the user's deformation, and "undefined" is for a lock's end (NaN)."""
+    if (energy := _energy(tube.material)) is None:
+        return None
+    _, (l1, l2, l3), _ = tube.kinematics(np.array([lam0]), np.array([1.0]))
+    I1 = float((l1**2 + l2**2 + l3**2)[0])
+    with np.errstate(**_QUIET):
+        w = float(
+            np.ravel(energy(I1, (l1 * l2) ** 2 + (l2 * l3) ** 2 + (l3 * l1) ** 2, 0, 0, 0))[0]
+        )
+    tau = tube.material.finite_stress(l1, l2, l3, 0.0)
+    return I1 if w == math.inf or (math.isfinite(w) and not np.isfinite(tau).all()) else None
 
 
 def _nodes(tube: UniformWall, lam: np.ndarray, rtol: float) -> int:

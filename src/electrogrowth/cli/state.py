@@ -43,7 +43,8 @@ def run_state(args) -> int:
             raise
         raise _located(exc, args) from None
     except ConvergenceError as exc:
-        exc.remedy = STATE_REMEDY
+        if exc.remedy is ConvergenceError.remedy:  # not a particular one (e.g. OVERFLOW)
+            exc.remedy = STATE_REMEDY
         raise
     rec = _with_physical(state.as_dict(), args)
     if tube.is_uniform:  # the paper's tube: its five numbers, as the paper prints them

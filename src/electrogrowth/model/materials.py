@@ -193,24 +193,34 @@ class Material:
         return None if d.is_polynomial(*INVARIANTS) else self.numeric()[0]
 
     def _derivs(self, l1, l2, l3, d, *, hessian: bool = True):
+        l1, l2, l3, d, inv, omega, w, W = self._raw_derivs(l1, l2, l3, d, hessian)
+        if not _all_finite([omega]):
+            self._outside(inv, [omega], "energy")
+        if not _all_finite(w) or not _all_finite(W):
+            self._outside(inv, [*w, *W], "energy's derivatives")
+        return self._broadcast(l1, l2, l3, d, w, W)
+
+    def _raw_derivs(self, l1, l2, l3, d, hessian: bool):
+        """(l1, l2, l3, d, invariants, Omega, its gradient, its Hessian (flat, or [])), not
+        checked: NaN or inf where the energy or its derivatives are not finite."""
         l1, l2, l3, d = np.broadcast_arrays(*(np.asarray(x, float) for x in (l1, l2, l3, d)))
         inv = _invariants(l1, l2, l3, d)
         value, gradient, derivatives = self.numeric()
-        # Overflow is reported below as one ParameterError, not as NumPy warnings.
+        # Overflow is reported by the callers (a ParameterError or NaN), not as NumPy warnings.
         with np.errstate(all="ignore"):
             omega = np.asarray(self._evaluate(value, inv), dtype=float)
-            if not _all_finite([omega]):
-                self._outside(inv, [omega], "energy")
             if not hessian:
-                w = self._evaluate(gradient, inv)
-                W = []
+                w, W = self._evaluate(gradient, inv), []
             else:
                 w, W = self._evaluate(derivatives, inv)
                 W = [x for row in W for x in row]
-        if not _all_finite(w) or not _all_finite(W):
-            self._outside(inv, [*w, *W], "energy's derivatives")
+        return l1, l2, l3, d, inv, omega, w, W
+
+    @staticmethod
+    def _broadcast(l1, l2, l3, d, w, W):
+        """The chain rule's arguments: every derivative as an array of the stretches' shape."""
         w = [np.broadcast_to(np.asarray(x, float), l1.shape) for x in w]
-        if not hessian:
+        if not W:
             return (l1, l2, l3, d, w, _NO_HESSIAN)
         W = [np.broadcast_to(np.asarray(x, float), l1.shape) for x in W]
         return (l1, l2, l3, d, w, W)
@@ -245,6 +255,34 @@ class Material:
         """
         args = self._derivs(l1, l2, l3, d, hessian=False)
         return np.array(_chain_rule.stress(*args), dtype=float)
+
+    def finite_stress(self, l1, l2, l3, d) -> np.ndarray:
+        """:meth:`stress`, NaN at every point where the energy, its derivatives or the stress
+        are not finite instead of a ParameterError for the whole array.
+
+        For a solver's own trial and probe states (basestate/plies.py), where such a point is
+        no state to use, not a deformation the user gave: an exponential energy's stresses
+        (~ (I1 - 3) exp((I1 - 3)^2)) overflow a double a little before the energy does, and a
+        node-count probe or a Newton trial can land in between while the state sought lies
+        far inside the double range."""
+        return self._finite_form(_chain_rule.stress, l1, l2, l3, d, (3,))
+
+    def finite_electric_field(self, l1, l2, l3, d) -> np.ndarray:
+        """:meth:`electric_field`, NaN where it is not finite (as :meth:`finite_stress`)."""
+        return self._finite_form(_chain_rule.field, l1, l2, l3, d, ())
+
+    def _finite_form(self, form, l1, l2, l3, d, lead: tuple) -> np.ndarray:
+        """One chain-rule form (stress or field, leading shape ``lead``) with NaN where it,
+        the energy or the energy's gradient is not finite."""
+        l1, l2, l3, d, _, omega, w, W = self._raw_derivs(l1, l2, l3, d, hessian=False)
+        shape = l1.shape
+        with np.errstate(all="ignore"):
+            values = np.asarray(form(*self._broadcast(l1, l2, l3, d, w, W)), dtype=float)
+        values = np.broadcast_to(values, lead + shape)
+        ok = np.isfinite(values.reshape((-1,) + shape)).all(0)
+        for x in (omega, *w):  # a gradient entry may be a plain number (a constant)
+            ok &= np.broadcast_to(np.isfinite(x), shape)
+        return np.where(ok, values, np.nan)
 
     def electric_field(self, l1, l2, l3, d):
         """Radial current electric field E_1 for radial current displacement d."""
