@@ -194,20 +194,13 @@ def test_a_store_written_before_the_branch_fields_reads_and_resumes(tmp_path):
     assert str(ds["status"].values[0]) == "ok" and "what comes first: 1 " in summary.text()
 
 
-RESONANT = """\
-[solve]
-for = "stretch"
-side = "compression"
-koiter = true
-[modes]
-m = [0, 3]
-n = [1, 3]
-extend = false
-[fixed]
-outer_radius = 1.2
-[grid]
-length = [8.5, 30.0]
-"""
+#: the paper's sweep on tests/bifurcation/test_koiter_resonance.py's tube: compressed, L 8.5
+#: (a harmonic next to onset) and 30 (none)
+RESONANT = (
+    PAPER.replace('for = "growth"', 'for = "stretch"\nside = "compression"')
+    .replace("length = 1.0", "outer_radius = 1.2")
+    .replace("outer_radius = [1.5]", "length = [8.5, 30.0]")
+)
 
 
 def test_a_second_harmonic_next_to_onset_is_stored(tmp_path):

@@ -40,7 +40,7 @@ from .options import (
 from .progress import add_quiet_option
 from .report import named_physical, physical_line
 from .tube_input import add_any_tube_options, control_of
-from .units import check_held_voltage, key_value
+from .units import QuantityText, check_held_voltage, key_value, number_or_quantity
 
 PLOT_POINTS = 25  # critical values of each competing mode drawn at this many designs
 MAP_NODES = 101  # grid points along each variable of a map, at most
@@ -137,13 +137,9 @@ def _vary(args) -> list[tuple[str, float, float]]:
     return out
 
 
-def _plain(text: str) -> bool:
-    """Whether a bound of --vary is a plain number (not a quantity with its unit)."""
-    try:
-        float(text)
-    except ValueError:
-        return False
-    return True
+def _has_unit(text: str) -> bool:
+    """Whether a bound of --vary (checked by _vary) carries a unit."""
+    return isinstance(number_or_quantity(text), QuantityText)
 
 
 def _target(args):
@@ -170,7 +166,7 @@ def run_design(args) -> int:
     tube, solve_for = control_of(args)
     for vary in varies:
         check_vary(vary, tube, solve_for)  # the key and its range, before any work
-    volts = [lo for key, lo, _ in args.vary if key == "voltage" and not _plain(lo)]
+    volts = [lo for key, lo, _ in args.vary if key == "voltage" and _has_unit(lo)]
     check_held_voltage(args, [v[0] for v in varies], len(tube.layers), (volts or [None])[0])
     if len(varies) == 2 and (same := shared_variable(tube, varies[0][0], varies[1][0])):
         raise ParameterError(
