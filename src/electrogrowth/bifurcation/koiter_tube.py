@@ -166,8 +166,8 @@ def _inside(c: float, new: float, what: str, where: Reach) -> float:
     raise ConvergenceError(
         f"the amplitude equation's expansion of the critical {what} did not converge:"
         f" Newton's method on its discrete stiffness stepped from {c:.12g} to {new:.12g},"
-        f" outside the control's range ({where.lo:g}, {where.hi:g}), so the discretisation"
-        " does not resolve this mode"
+        f" outside the control's range ({where.lo:g}, {where.hi:g}), so it did not follow"
+        " this mode"
     )
 
 
