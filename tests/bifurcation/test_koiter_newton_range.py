@@ -8,7 +8,7 @@ zero of the 24-node discrete stiffness A(c), which does not resolve this film, s
 1.032 to -0.08, and the tube's refusal of that growth escaped as the user's input error
 (`critical --koiter`: "amplitude equation not computed: growth g_theta = -0.08 ... is out
 of range"). A step out of the control's range is now a ConvergenceError naming the
-expansion.
+expansion; and the fold's coefficient is now computed (test_koiter_thin_stiff_film.py).
 """
 
 import math
@@ -34,6 +34,8 @@ def test_a_step_out_of_range_is_no_parameter_error():
     assert c == pytest.approx(-1.0, abs=1e-12)
 
 
+@pytest.mark.slow  # the full coefficient now (three resolutions, ~85 s); the fast check of
+# this fold is test_koiter_thin_stiff_film.py's 18-node expansion
 def test_film_fold_koiter_is_not_a_parameter_error():
     film = Tube((Layer(1.001, shear_modulus=1e4), Layer(2.0)), stretch=1.0, length=1.0)
     try:

@@ -50,6 +50,10 @@ class FilmOnHalfSpace:
         Chebyshev-Lobatto points of the film; the substrate, truncated at ``depth`` film
         thicknesses and clamped there, has three segments of ``substrate_nodes`` points,
         graded to resolve the decay near the interface.
+    wavenumbers : (float, float)
+        The window of reference wavenumbers K (per film thickness) searched for the
+        critical one: a film 1e4 times as stiff folds at K ~ 0.067, below the default
+        window, and needs a substrate deep enough for its decay (``depth`` ~ 400).
     """
 
     modulus_ratio: float
@@ -57,6 +61,7 @@ class FilmOnHalfSpace:
     nodes: int = 16
     substrate_nodes: int = 24
     depth: float = 40.0
+    wavenumbers: tuple[float, float] = (0.1, 10.0)
 
     def __post_init__(self):
         r = self.modulus_ratio
@@ -188,14 +193,15 @@ def critical_mode(film: FilmOnHalfSpace) -> tuple[float, float]:
     """(K_c, lambda_c): the reference wavenumber that maximises the critical stretch (the
     first mode reached as the compression grows) and that stretch, where d lambda_c / dK = 0.
 
-    Raises NoBifurcationFound when the maximum is not at a finite K in [0.1, 10] (a film
-    softer than the substrate folds at the shortest or longest waves)."""
+    Raises NoBifurcationFound when the maximum is not at a finite K in the film's window
+    (default [0.1, 10]: a film softer than the substrate folds at the shortest or longest
+    waves)."""
     forms = Forms.build(Space(film.segments(), MODE))
-    c = _critical_mode(forms)
+    c = _critical_mode(forms, film.wavenumbers)
     return c.K, c.lam
 
 
-def _critical_mode(forms: Forms) -> _Critical:
+def _critical_mode(forms: Forms, window=(0.1, 10.0)) -> _Critical:
     """A scan of K on a geometric grid for the sign change of d lambda_c / dK (from rising
     to falling), then Brent's method on that slope, each solve started from the last."""
     state: dict = {}
@@ -204,11 +210,12 @@ def _critical_mode(forms: Forms) -> _Critical:
         state["c"] = critical_stretch(forms, k, state["c"])
         return state["c"].slope(forms)
 
-    Ks = np.geomspace(0.1, 10.0, 15)
+    Ks = np.geomspace(*window, 15)
+    where = f"K in [{window[0]:g}, {window[1]:g}] per film thickness"
     prev = critical_stretch(forms, Ks[0])
     if prev.slope(forms) <= 0:
         raise NoBifurcationFound(
-            "the critical stretch has no maximum for K in [0.1, 10] per film thickness: it "
+            f"the critical stretch has no maximum for {where}: it "
             "rises towards longer waves (a film softer than ~ its substrate, or one stiffer "
             "than ~ 3000 times, whose folds the truncated substrate does not resolve)"
         )
@@ -220,8 +227,8 @@ def _critical_mode(forms: Forms) -> _Critical:
             return critical_stretch(forms, Kc, state["c"])
         prev = cur
     raise NoBifurcationFound(
-        "the critical stretch has no maximum at a finite wavenumber (K in [0.1, 10] per "
-        "film thickness): a film this soft folds at the shortest or longest waves"
+        f"the critical stretch has no maximum at a finite wavenumber ({where}): a film "
+        "this soft folds at the shortest or longest waves"
     )
 
 
@@ -243,14 +250,16 @@ class Expansion:
     second: Forms
 
 
-def expansion(segments: tuple[Segment, ...], *, forms: type[Forms] = Forms) -> Expansion:
+def expansion(
+    segments: tuple[Segment, ...], *, forms: type[Forms] = Forms, window=(0.1, 10.0)
+) -> Expansion:
     """The Koiter expansion of the critical wrinkle of a stack of segments (the film is
     the top one): phi from A(lambda_c) phi = 0, psi from A(lambda_c) psi = -C[phi, phi, .] / 2
     on harmonics 0 and 2, lambda_2 = 2 A(lambda_c)[psi, psi] / A'(lambda_c)[phi, phi].
     ``forms`` builds the quadratic and cubic forms (another parametrisation of the energy,
     for checks)."""
     first = forms.build(Space(segments, MODE))
-    crit = _critical_mode(first)
+    crit = _critical_mode(first, window)
     Kc, lam = crit.K, crit.lam
     top = first.space._layout[0][1].stop - 1  # b at the free face
     phi = crit.phi / (Kc * crit.phi[top])  # eps = K_c w
@@ -265,7 +274,7 @@ def expansion(segments: tuple[Segment, ...], *, forms: type[Forms] = Forms) -> E
 
 def _coefficient(film: FilmOnHalfSpace) -> tuple[float, float, float]:
     """(lambda_2, lambda_c, K_c) at the film's resolution."""
-    e = expansion(film.segments())
+    e = expansion(film.segments(), window=film.wavenumbers)
     return e.lambda_2, e.lam, e.K
 
 

@@ -30,6 +30,7 @@ from .koiter_tube import (
     TubeExpansion,
     axial_wavenumber,
     onset_value,
+    quadratic_part,
     singular_point,
     slope_ratio,
 )
@@ -54,6 +55,22 @@ class LoadedEnergy:
         """grad E3 at the mode (= C[phi, phi, .] / 2), the wall's and the load's."""
         load = self.face.gradient(self.face.potential(state)[3], phi_face)
         return self.wall.gradient(self.wall.lagrangian(state)[3], phi_fields) + load
+
+    def quadratic(self, state) -> list:
+        """The quadratic monomials of the wall's Lagrangian and of the load's potential, each
+        tagged with its part ("wall" or "face") in its field names' place."""
+        wall = self.wall.lagrangian(state)[2]
+        face = self.face.potential(state)[2]
+        return [(k, ("wall", xs)) for k, xs in wall] + [(k, ("face", xs)) for k, xs in face]
+
+    def energy(self, polynomial, fields: dict, face_fields: dict) -> float:
+        """The integral of a tagged Polynomial (:meth:`quadratic`) at the wall's and the
+        face's local fields."""
+        parts: dict = {"wall": [], "face": []}
+        for k, (part, xs) in polynomial.monomials():
+            parts[part].append((k, xs))
+        wall = self.wall.energy(parts["wall"], fields)
+        return wall + self.face.energy(parts["face"], face_fields)
 
     def quartic(self, state, phi_fields: dict) -> float:
         """E4 at the mode (the wall's: the load has none)."""
@@ -116,7 +133,14 @@ def loaded_expansion(
     A2 = second.stiffness(state)
     psi = np.linalg.solve(A2, -second.third(state, f1, face1))
     quartic = first.quartic(state, f1)
-    c2, error = slope_ratio(2 * (psi @ A2 @ psi) - 4 * quartic, A, c, phi, where)
+    c2, error = slope_ratio(  # A' term by term, the wall's and the load's (koiter_tube.py)
+        2 * (psi @ A2 @ psi) - 4 * quartic,
+        quadratic_part(tube, control, first.quadratic),
+        c,
+        phi,
+        where,
+        along=lambda d: 2 * first.energy(d, f1, face1),
+    )
     radial = phi[first.wall.slices[0]]  # u_r on the rings, from R_i to R_N
     return TubeExpansion(
         float(c),

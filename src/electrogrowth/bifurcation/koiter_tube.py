@@ -13,11 +13,14 @@ import dataclasses
 import math
 
 import numpy as np
+import scipy.linalg
 
+from .._types import FloatArray
 from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
 from ..incremental.dielectric_forms import DielectricForms
 from ..incremental.meridian_forms import MeridianForms
+from ..incremental.monomial_forms import Polynomial
 from ..incremental.polar_forms import PolarForms, rings
 from ..model.layers import Tube
 from ..outcomes import Kind
@@ -47,36 +50,124 @@ class TubeExpansion:
 
 
 def singular_point(stiffness, start: float, what: str, where: Reach):
-    """(c, phi): Newton's method on the eigenvalue of A(c) nearest zero, from ``start``,
+    """(c, phi): the control where A(c) is singular, and its null vector, from ``start``.
+
+    First Newton's method on the eigenvalue of the saddle-point A nearest zero (inverse
+    iteration from the last mode), kept where its null vector is the mode of the
+    displacement stiffness on the constraint's kernel (:func:`constrained_nearest_zero`):
+    its eigenvalue carries the least rounding. Where it is not (a thin stiff film, whose
+    pressure modes have eigenvalues ~1e-10 at |A| ~ 2e9, nearer zero than the fold's), or
+    where that Newton fails, Newton's method on the kernel's eigenvalue itself."""
+    try:
+        c, phi, A = _newton(stiffness, start, what, where, _nearest_zero)
+        if _same_mode(A, phi):
+            return c, phi
+    except ConvergenceError:
+        if not _pressures(stiffness(start)).size:
+            raise
+    return _newton(stiffness, start, what, where, constrained_nearest_zero)[:2]
+
+
+def _newton(stiffness, start: float, what: str, where: Reach, nearest):
+    """(c, phi, A(c)): Newton's method on the eigenvalue ``nearest(A, last phi)`` gives,
     with the symmetric eigenvalue derivative phi^T A' phi; converged at a step below
     1e-12 s, or below 1e-9 s once the steps stop shrinking (the rounding floor of the
     eigenvalue, ~1e-11 s for a tube under a voltage), s = max(|c|, the control's scale):
     a pressure's critical value may be ~0, and its scale is the tube's modulus, not 1."""
     c, phi, last = start, None, np.inf
     for _ in range(20):
-        sigma, phi = _nearest_zero(stiffness(c), phi)
+        sigma, phi = nearest(stiffness(c), phi)
         step = sigma / (phi @ derivative(stiffness, c, where) @ phi)
         c = _inside(c, c - step, what, where)
         scale = max(where.scale, abs(c))
         if abs(step) < 1e-12 * scale or (abs(step) < 1e-9 * scale and abs(step) > last / 2):
-            return c, _nearest_zero(stiffness(c), phi)[1]
+            A = stiffness(c)
+            return c, nearest(A, phi)[1], A
         last = abs(step)
     raise ConvergenceError(f"the critical {what} did not converge")
 
 
+def null_vector(A: FloatArray, last: FloatArray) -> FloatArray:
+    """The mode of A nearest ``last`` as :func:`singular_point` finds it: the saddle's
+    eigenvector nearest zero where it is the kernel's mode, else the kernel's."""
+    phi = _nearest_zero(A, last)[1]
+    return phi if _same_mode(A, phi) else constrained_nearest_zero(A, last)[1]
+
+
+def _pressures(A: FloatArray) -> np.ndarray:
+    """The pressure unknowns of a saddle-point A: its rows zero on their own block (the
+    energy is linear in q: exactly zero, not small) and not on the displacements; empty
+    when there are none (or A is not such a saddle)."""
+    P = np.flatnonzero(np.diag(A) == 0)
+    if P.size == 0 or np.any(A[np.ix_(P, P)] != 0) or not np.all(np.any(A[P] != 0, axis=1)):
+        return np.empty(0, dtype=int)
+    return P
+
+
+def _same_mode(A: FloatArray, phi: FloatArray) -> bool:
+    """Whether the saddle's null vector ``phi`` is the kernel's mode: their displacements
+    parallel (0.99); True for a stiffness without pressures."""
+    P = _pressures(A)
+    if P.size == 0:
+        return True
+    mode = constrained_nearest_zero(A)[1]
+    U = np.setdiff1d(np.arange(len(phi)), P)
+    u, v = phi[U], mode[U]
+    return bool(abs(u @ v) > 0.99 * np.linalg.norm(u) * np.linalg.norm(v))
+
+
+def constrained_nearest_zero(A: FloatArray, last: FloatArray | None = None):
+    """(sigma, phi): the eigenvalue nearest zero of the stiffness restricted to ker B, B the
+    incompressibility constraint, and its extension phi = (u, q) to the saddle point
+    A = [[K, B^T], [B, 0]] (u = Z y, y the unit eigenvector of Z^T K Z, Z an orthonormal
+    basis of ker B; q the pressure that balances the rest of K u: B^T q = -(K u - sigma u)),
+    so that d sigma / dc = phi^T A' phi (docs/derivation-koiter.md, "A thin stiff film").
+    With ``last`` (the previous iterate's phi), the eigenvalue among the three nearest zero
+    whose mode is most nearly parallel to it: Newton follows one mode.
+
+    The saddle's own eigenvalue nearest zero may be no displacement mode: its pressure
+    modes have eigenvalues ~ -s_B^2 / |K|, for a film 1e4 times as stiff as its substrate
+    ~1e-10 at |A| ~ 2e9, nearer zero than the fold's, and Newton followed one."""
+    P = _pressures(A)
+    if P.size == 0:
+        return _nearest_zero(A, last)
+    U = np.setdiff1d(np.arange(len(A)), P)
+    B = A[np.ix_(P, U)]
+    rows = 1.0 / np.linalg.norm(B, axis=1)  # the film's rows are ~1e4 times the substrate's
+    Q, R = np.linalg.qr((rows[:, None] * B).T, mode="complete")
+    Z = Q[:, P.size :]
+    KZ = A[np.ix_(U, U)] @ Z
+    w, Y = np.linalg.eigh(Z.T @ KZ)
+    i = _followed(w, Z @ Y, None if last is None else last[U])
+    u = Z @ Y[:, i]
+    rest = KZ @ Y[:, i] - w[i] * u  # K u's part outside ker B, = -B^T q
+    q = -rows * scipy.linalg.solve_triangular(R[: P.size], Q[:, : P.size].T @ rest)
+    phi = np.empty(len(A))
+    phi[U], phi[P] = u, q
+    return float(w[i]), phi
+
+
+def _followed(w: FloatArray, modes: FloatArray, last: FloatArray | None) -> int:
+    """The index of the eigenvalue nearest zero, or with ``last`` of the one among the
+    three nearest whose mode is most nearly parallel to it."""
+    near = np.argsort(np.abs(w))[:3]
+    if last is None:
+        return int(near[0])
+    return int(max(near, key=lambda k: abs(modes[:, k] @ last)))
+
+
 def _inside(c: float, new: float, what: str, where: Reach) -> float:
     """Newton's next iterate ``new``, or a ConvergenceError where it leaves the range of the
-    control where the state exists: the discrete stiffness is singular there only because
-    it does not resolve the mode, and the state there is not the user's input (the
-    24-node rings of a film 0.001 thick and 1e4 times as stiff stepped from a growth 1.032
+    control where the state exists: the state there is not the user's input (Newton on a
+    pressure mode of a film 0.001 thick and 1e4 times as stiff stepped from a growth 1.032
     to -0.08, and the tube's refusal of that growth was reported as the user's error)."""
     if where.lo < new < where.hi:
         return new
     raise ConvergenceError(
         f"the amplitude equation's expansion of the critical {what} did not converge:"
         f" Newton's method on its discrete stiffness stepped from {c:.12g} to {new:.12g},"
-        f" outside the control's range ({where.lo:g}, {where.hi:g}), so the discretisation"
-        " does not resolve this mode"
+        f" outside the control's range ({where.lo:g}, {where.hi:g}), so it did not follow"
+        " this mode"
     )
 
 
@@ -163,6 +254,29 @@ def expand(tube, control, first, second, start, what) -> TubeExpansion:
 
     where = reach(tube, control)
     c, phi = singular_point(A, start, what, where)
+    phi, f1, numerator = _numerator(tube, control, first, second, c, phi)
+    rounding = _numerator_rounding(tube, control, (first, second), A, c, phi, where, numerator)
+    axial = None
+    if tube.control == "force":  # the (0, 0) correction's freedom in lambda_z
+        axial = axial_freedom(tube, control, c, first.stiffness, phi)
+        numerator += axial.term
+    c2, error = slope_ratio(  # A' along the path (force or stretch), term by term
+        numerator,
+        quadratic_part(tube, control, lambda state: first.lagrangian(state)[2]),
+        c,
+        phi,
+        where,
+        along=lambda d: 2 * first.energy(d.monomials(), f1),
+    )
+    error += abs(c2 * rounding / numerator) if numerator else 0.0
+    radial = phi[first.slices[0]]  # u_r on the rings, from R_i to R_N
+    inner, outer = float(radial[0]), float(radial[-1])
+    return TubeExpansion(float(c), c2, float(start), inner, float(numerator), axial, outer, error)
+
+
+def _numerator(tube, control, first, second, c, phi):
+    """(phi scaled to max |u_r| = R_i, its local fields, 2 A[psi, psi] - 4 E4(phi)) at c,
+    psi the correction of A psi = -grad E3(phi) on ``second``'s harmonics."""
     phi = phi / first.peak_radial(phi, first.slices[0])[1]
     state = solve_base_state(tube.at(control, c))
     f1 = first.fields(phi)
@@ -170,22 +284,49 @@ def expand(tube, control, first, second, start, what) -> TubeExpansion:
     A2 = second.hessian(L[2])
     psi = np.linalg.solve(A2, -second.gradient(L[3], f1))
     quartic = first.energy(L[4], f1)  # E4(phi) = D[phi, phi, phi, phi] / 24
-    numerator = 2 * (psi @ A2 @ psi) - 4 * quartic
-    axial = None
-    if tube.control == "force":  # the (0, 0) correction's freedom in lambda_z
-        axial = axial_freedom(tube, control, c, first.stiffness, phi)
-        numerator += axial.term
-    c2, error = slope_ratio(numerator, A, c, phi, where)  # A' along the path (force or stretch)
-    radial = phi[first.slices[0]]  # u_r on the rings, from R_i to R_N
-    inner, outer = float(radial[0]), float(radial[-1])
-    return TubeExpansion(float(c), c2, float(start), inner, float(numerator), axial, outer, error)
+    return phi, f1, float(2 * (psi @ A2 @ psi) - 4 * quartic)
 
 
-def slope_ratio(numerator: float, stiffness, c: float, phi, where: Reach) -> tuple[float, float]:
+#: the nudge of the control (over its scale) that resamples the numerator's rounding while
+#: its true change stays ~1e-11 relative
+NUDGE = 1e-11
+
+
+def _numerator_rounding(tube, control, forms, A, c, phi, where, numerator) -> float:
+    """The change of ``numerator`` (at c) when c is nudged by NUDGE: a sample of its
+    rounding. A thin stiff film's correction solves with A2 of condition ~1e10 (the
+    film's through-thickness stiffness against the substrate's breathing: 1e4 times as
+    stiff, 1e-3 thick), and its numerator wanders by ~1e-5 relative with the node count
+    and with c moved by 1e-11; for a thick tube the change is ~1e-14."""
+    nudged = c + NUDGE * max(abs(c), where.scale)
+    phi = null_vector(A(nudged), phi)
+    return abs(_numerator(tube, control, *forms, nudged, phi)[2] - numerator)
+
+
+def quadratic_part(tube: Tube, control: str, monomials):
+    """c -> the quadratic monomials ``monomials(state)`` of a Lagrangian at the base state of
+    c, as a Polynomial (its coefficients differenced by :func:`slope_ratio`)."""
+
+    def at(c: float) -> Polynomial:
+        return Polynomial.of(monomials(solve_base_state(tube.at(control, c))))
+
+    return at
+
+
+def slope_ratio(
+    numerator: float, stiffness, c: float, phi, where: Reach, *, along=None
+) -> tuple[float, float]:
     """(c_2, its change with A''s difference steps halved plus that with them shifted) =
     numerator / A'(c)[phi, phi]: the truncation and the rounding of A' enter c_2 relative,
-    and are part of its error estimate (control_derivative.derivative_and_noise)."""
+    and are part of its error estimate (control_derivative.derivative_and_noise).
+    ``stiffness`` gives A(c); or, with ``along`` (a derivative -> A'[phi, phi]), the
+    quadratic part of the Lagrangian (:func:`quadratic_part`), whose coefficients are
+    differenced instead of the matrix: A'[phi, phi] = 2 E2'(phi)."""
     derivatives = derivative_and_noise(stiffness, c, where)
-    slope, *changes = (float(phi @ d @ phi) for d in derivatives)
+    if along is None:
+        values = (float(phi @ d @ phi) for d in derivatives)
+    else:
+        values = (float(along(d)) for d in derivatives)
+    slope, *changes = values
     c2 = numerator / slope
     return float(c2), sum(abs(c2 * change / slope) for change in changes)
