@@ -29,7 +29,6 @@ import math
 
 import numpy as np
 
-from ..basestate.layered import LayeredState, solve_continued
 from ..basestate.thresholds import LockedSearch, Threshold
 from ..basestate.tube import solve_base_state, threshold
 from ..continuation.events import EDGE, FULL, LOCK, THRESHOLD, bisect, brent
@@ -244,8 +243,12 @@ def _solved(at: TubeAt, x: float, rtol: float):
     try:
         return solve_base_state(tube, rtol=rtol)
     except BaseStateError:
+        if tube.is_uniform:  # continuation is the layered solver's (basestate/warm.py)
+            raise
+        from ..basestate.layered import LayeredState, solve_continued  # a layered tube's
+
         near, guess = at.neighbours.nearest(x, rtol)
-        if near is None or tube.is_uniform or not isinstance(near, LayeredState):
+        if near is None or not isinstance(near, LayeredState):
             raise
         state = solve_continued(tube, near, rtol, guess)
         if state is None:
