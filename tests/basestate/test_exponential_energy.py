@@ -207,3 +207,25 @@ def test_a_gent_layer_stretched_past_its_lock_still_has_no_state(tube):
 
     with pytest.raises(BaseStateError, match="no unloaded state|undefined"):
         solve_base_state(tube)
+
+
+@pytest.mark.parametrize("stretch", [5.385, 5.39])
+def test_next_to_the_overflow_band_an_honest_error_and_no_warnings(stretch):
+    """A uniform tube of FUNG_SQUARED just below the stretch where its own stresses pass the
+    double range (5.4075): its state solves, its moduli or their products do not fit a
+    double. The result was already a ConvergenceError, but NumPy's RuntimeWarnings (the
+    chain rule's products, the table's DCT, the collocation fallback's NaN algebra)
+    reached the Python API's stderr; and at 5.39 the table doubled its points to 1025
+    before calling the state "not resolved". Now: the same error class, no warning, and a
+    table of non-finite moduli is named as the overflow at once."""
+    from electrogrowth import ConvergenceError, critical_value
+    from electrogrowth.errors import OVERFLOW
+
+    tube = Tube.uniform(1.4, 1.0, stretch=stretch, material=FUNG_SQUARED)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        with pytest.raises(ConvergenceError) as err:
+            critical_value(tube, 1, 1, "growth")
+    if stretch == 5.39:
+        assert "moduli overflow a double" in str(err.value)
+        assert err.value.remedy == OVERFLOW

@@ -262,7 +262,11 @@ def collocation_target(
     """
     pairs = check_pairs(pairs)
     with one_blas_thread() as linalg:
-        M = equilibrated(collocation_matrix(state, m, n, nodes=nodes, pairs=pairs))
+        with np.errstate(over="ignore", invalid="ignore"):  # moduli next to the double range
+            raw = collocation_matrix(state, m, n, nodes=nodes, pairs=pairs)
+        if not np.isfinite(raw).all():  # an overflow: NaN, as before, without NaN
+            return math.nan  # arithmetic's warnings or LAPACK on a NaN matrix
+        M = equilibrated(raw)
         sign, _ = np.linalg.slogdet(M)
         s = linalg.svdvals(M, check_finite=False)
     s0 = stable_det_sign(pairs, nodes) if _layers(state) == 1 else 1.0

@@ -39,7 +39,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ..errors import ConvergenceError
+from ..errors import OVERFLOW, ConvergenceError
 from ..model.moduli import MODULI_NAMES
 from .table_chop import scale_chop_and_merge
 
@@ -210,6 +210,12 @@ def _segment_table(a, b, values, unit, tol, max_nodes):
     n, tails = 17, []
     while True:
         vals = values(_nodes(a, b, n))
+        if not np.isfinite(vals).all():  # no number of points resolves an overflow
+            err = ConvergenceError(
+                f"the base state's moduli overflow a double on R in [{a:g}, {b:g}]"
+            )
+            err.remedy = OVERFLOW  # neither a looser rtol nor collocation reaches them
+            raise err
         tail_ok, rows, fmap = _chop(vals, tol, unit)
         if tail_ok or n >= max_nodes:
             break
@@ -233,7 +239,8 @@ def _tail(vals, unit) -> np.ndarray:
     points double (and is small), it is the rounding of the values, not a want of points: a
     Gent layer next to its lock amplifies the rounding of I1 by 1 / (1 - (I1 - 3) / jm); the
     kernel does not see it."""
-    coef = (_chebyshev_points(vals.shape[0])[1] @ vals) * (2.0 / vals.shape[0])
+    with np.errstate(over="ignore", invalid="ignore"):  # values next to the double range
+        coef = (_chebyshev_points(vals.shape[0])[1] @ vals) * (2.0 / vals.shape[0])
     return abs(coef[-3:]).max(0) / np.maximum(np.maximum(abs(vals).max(0), 1e-300), unit)
 
 
@@ -242,7 +249,9 @@ def _chop(vals, tol, unit):
     and sizes ``unit``:
     the DCT's product in NumPy, its scaling (:func:`_cheb_coefficients`), the chopping and
     the merging compiled (table_chop.py; its twin: :func:`_chop_numpy` of the coefficients)."""
-    return scale_chop_and_merge(_chebyshev_points(vals.shape[0])[1] @ vals, vals, tol, unit)
+    with np.errstate(over="ignore", invalid="ignore"):  # an overflow is an unresolved tail
+        coef = _chebyshev_points(vals.shape[0])[1] @ vals
+    return scale_chop_and_merge(coef, vals, tol, unit)
 
 
 def _chop_numpy(coef, vals, tol, unit):

@@ -294,10 +294,11 @@ class Material:
         """Updated moduli, shape ``broadcast(l1, ...).shape + (23,)``, order MODULI_NAMES."""
         args = self._derivs(l1, l2, l3, d)
         shape = args[0].shape
-        return np.stack(
-            [np.broadcast_to(np.asarray(c, float), shape) for c in _chain_rule.moduli(*args)],
-            axis=-1,
-        )
+        # finite derivatives whose products pass the double range give inf moduli, which the
+        # table refuses by name (radial_table._segment_table), not a warning on stderr
+        with np.errstate(over="ignore", invalid="ignore"):
+            moduli = _chain_rule.moduli(*args)
+        return np.stack([np.broadcast_to(np.asarray(c, float), shape) for c in moduli], axis=-1)
 
     def is_ideal_dielectric(self) -> bool:
         """True when Omega = W(I1, I2) + I5 / 2 (E = D / eps, paper Sec. 3.1)."""
