@@ -21,18 +21,8 @@ from pathlib import Path
 def replaced(path: str | Path, mode: str = "w", **open_args):
     """``open(path, mode)`` for writing, the file taking ``path``'s place only when the block
     ends without an exception; the directory is created if missing."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    try:
-        with os.fdopen(fd, mode, **open_args) as fh:
-            yield fh
-        os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes it 0600: the usual mode instead
-        os.replace(tmp, path)
-    except BaseException:
-        with contextlib.suppress(OSError):
-            os.unlink(tmp)
-        raise
+    with replaced_name(path) as name, open(name, mode, **open_args) as fh:
+        yield fh  # closed before the rename: the inner block ends first
 
 
 @contextlib.contextmanager
