@@ -252,10 +252,7 @@ def first_bifurcations(
     if not found and cut and unresolved is not None and sense * (x - asked) >= 0:
         return MarchResult([], None)  # resolved up to ``until``: only its margin was not
     if not found and unresolved is not None:  # neither a loss nor a wrinkle is established
-        err = ConvergenceError(
-            f"no mode bifurcates for {solve_for} from {x0:.12g} up to {x:.12g}, and the base"
-            f" states past it are not resolved: {unresolved.args[0]}"
-        )
+        err = ConvergenceError(f"{_unexamined(solve_for, x0, x)}: {unresolved.args[0]}")
         err.remedy = unresolved.remedy if isinstance(unresolved, ConvergenceError) else ""
         raise err from unresolved
     if not found and threshold is None and cut:
@@ -268,6 +265,19 @@ def first_bifurcations(
                 f"no mode bifurcates for {solve_for} between {x0:g} and {last:g}"
             )
     return MarchResult(found[:top], threshold)
+
+
+def _unexamined(solve_for: str, x0: float, x: float) -> str:
+    """What a march that ends unresolved at x established: nothing, if x is its start."""
+    if x == x0:  # not one step: "from 0 up to 0" would claim a range was examined
+        return (
+            f"no mode could be examined past {solve_for} = {x0:.12g}: the first states"
+            " past it are not resolved"
+        )
+    return (
+        f"no mode bifurcates for {solve_for} from {x0:.12g} up to {x:.12g}, and the base"
+        " states past it are not resolved"
+    )
 
 
 #: the loose signs resolve a tube's targets when, on a sample of its modes at the march's
