@@ -78,8 +78,9 @@ def test_the_four_results_share_one_outcome(computed):
 
 def test_an_inaccurate_critical_point_says_why_and_what_to_try(monkeypatch):
     from electrogrowth.bifurcation import critical
+    from electrogrowth.incremental import accuracy
 
-    monkeypatch.setattr(critical, "CERTIFIED", 0.0)  # no estimate is good enough
+    monkeypatch.setattr(accuracy, "CERTIFIED", 0.0)  # no estimate is good enough
     monkeypatch.setattr(critical, "REFINE", 1e9)  # and no refinement is tried
     cp = critical_value(Tube.uniform(voltage=0.2), 1, 1, "growth")
     assert cp.status is Status.INACCURATE and cp.ok and cp.unwrap() is cp

@@ -16,9 +16,9 @@ exist first (the voltage threshold), that is reported instead.
 
 Every value carries an error estimate, the distance to the root of the same target at 100
 times looser accuracy (searched only inside the march's path: a probe never leaves the
-control's domain). A value whose estimate exceeds CERTIFIED rtol max(1, |value|) (the
-looser root more than 100 times its own tolerance away) is solved again at rtol / 100
-(down to the smallest rtol), and if it still misses it is returned with the status
+control's domain). A value whose estimate exceeds CERTIFIED rtol |value| (the looser root
+more than 100 times its own tolerance away; incremental.accuracy.certified) is solved again
+at rtol / 100 (down to the smallest rtol), and if it still misses it is returned with the status
 INACCURATE (outcomes.Status), never silently.
 """
 
@@ -34,7 +34,7 @@ import numpy as np
 from ..basestate.tube import solve_base_state
 from ..continuation.events import Remembered, brent
 from ..errors import ConvergenceError, NoBifurcationFound, Remedy
-from ..incremental.accuracy import CERTIFIED, RTOL_RANGE, STABLE_SIGN, Accuracy
+from ..incremental.accuracy import CERTIFIED, RTOL_RANGE, STABLE_SIGN, Accuracy, certified
 from ..incremental.targets import (
     CollocationTarget,
     Family,
@@ -46,7 +46,7 @@ from ..incremental.targets import (
     targets_for,
     with_family,
 )
-from ..model.controls import check_side
+from ..model.controls import check_side, natural_scale
 from ..model.layers import Tube
 from ..outcomes import Kind, Outcome, Status
 from ..summary import critical_html
@@ -175,7 +175,7 @@ def critical_value(
         Local accuracy of the integration (default 1e-12, valid 1e-14 to 1e-4); the value is
         converged to a few rtol, and its error estimate is at least 5 rtol |value|
         (error_estimate.achieved_floor). A value whose
-        error estimate exceeds CERTIFIED rtol max(1, |value|) is solved again at rtol / 100,
+        error estimate exceeds CERTIFIED rtol |value| is solved again at rtol / 100,
         and returned with status INACCURATE if it still does.
     bracket : (float, float), optional
         A known sign-change interval (e.g. from a mode scan); the march is skipped when
@@ -208,7 +208,8 @@ def critical_value(
     )
     point = solve(rtol, bracket)
     tight = rtol
-    while not _certified(point, rtol) and tight / REFINE >= RTOL_RANGE[0] * (1 - 1e-9):
+    certain = functools.partial(is_certified, rtol=rtol, tube=params)
+    while not certain(point) and tight / REFINE >= RTOL_RANGE[0] * (1 - 1e-9):
         tight /= REFINE
         if kernel is not None:  # more nodes at the finer rtol: the bracket is theirs to find
             bracket = _collocation_bracket(params, m, n, solve_for, fam, kernel.value, tight)
@@ -216,7 +217,7 @@ def critical_value(
             point = solve(tight, bracket)
         except _NoSignChange as exc:  # the point at the looser rtol stands, not certified
             return _inaccurate(point, rtol, f"; at rtol = {tight:g} {exc}")
-    if _certified(point, rtol):
+    if certain(point):
         return point
     return _inaccurate(point, rtol, f" even at rtol / {REFINE:g}")
 
@@ -227,7 +228,7 @@ def _inaccurate(point: CriticalPoint, rtol: float, why: str) -> CriticalPoint:
         point,
         status=Status.INACCURATE,
         message=f"error estimate {point.error_estimate:.1e} exceeds {CERTIFIED:g} rtol"
-        f" max(1, |value|) (rtol = {rtol:g}){why}",
+        f" |value| (rtol = {rtol:g}){why}",
         remedy=ConvergenceError.remedy,
     )
 
@@ -276,11 +277,14 @@ def _collocation_bracket(params, m, n, solve_for, fam, v, rtol):
     return None
 
 
-def _certified(point: CriticalPoint, rtol: float) -> bool:
-    """Is the error estimate of ``point`` within CERTIFIED rtol max(1, |value|)?"""
+def is_certified(point: CriticalPoint, rtol: float, tube: Tube) -> bool:
+    """Is the error estimate of ``point`` (a critical value of ``tube``) within CERTIFIED
+    rtol |value| (incremental.accuracy.certified)? A threshold or a limit has no second
+    resolution to miss."""
     if point.kind != Kind.BIFURCATION:
         return True
-    return point.error_estimate <= CERTIFIED * rtol * max(1.0, abs(point.value))
+    natural = natural_scale(tube, tube.check_control(point.solve_for).kind)
+    return certified(point.error_estimate, point.value, rtol, natural)
 
 
 def _solve(

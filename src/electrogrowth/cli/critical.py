@@ -151,7 +151,7 @@ def run_critical(args) -> int:
         print_text(record, runners, getattr(args, "scales", None))
     if record.get("certified") is False:  # --certify refused it (the text says why)
         return 0 if args.accept_inaccurate else INACCURATE_EXIT
-    return _inaccurate_exit(crit, args)
+    return _inaccurate_exit(crit, args, params)
 
 
 def _amplitude_equation(args, params, solve_for, crit) -> dict:
@@ -172,12 +172,14 @@ def _amplitude_equation(args, params, solve_for, crit) -> dict:
     }
 
 
-def _inaccurate_exit(crit, args) -> int:
+def _inaccurate_exit(crit, args, tube) -> int:
     """0, or INACCURATE_EXIT with a warning for a value not certified to --rtol (unless
     --accept-inaccurate)."""
     if crit.status != Status.INACCURATE:
         return 0
-    if crit.error_estimate <= CERTIFIED * args.rtol * max(1.0, abs(crit.value)):
+    from ..bifurcation.critical import is_certified
+
+    if is_certified(crit, args.rtol, tube):
         # accurate, but not the tube's critical value for certain (a scan at its mode cap)
         why = "; ".join(filter(None, (crit.message, crit.remedy)))
         warn(f"{crit.solve_for} = {crit.value:.6g} is not certified: {why}")

@@ -26,7 +26,8 @@ name                   value                              why
                                                           ``fine`` (bifurcation/runners.py)
 ``CERTIFIED``          1e4                                a critical value is certified when its
                                                           error estimate is at most
-                                                          CERTIFIED rtol max(1, |value|)
+                                                          CERTIFIED rtol |value|
+                                                          (:func:`certified`)
 ``CERTIFY_RTOL``       1e-8                               the two methods of ``certify`` agree
                                                           this well (relative)
 =====================  =================================  =========================================
@@ -41,9 +42,12 @@ from ..errors import ParameterError
 STABLE_SIGN = 1e-10
 SCAN_SIGNS = 1e-5
 SCAN_STABLE_SIGNS = 1e-9
-#: a value is certified when its error estimate is at most CERTIFIED rtol max(1, |value|)
-#: (bifurcation/critical.py)
+#: a value is certified when its error estimate is at most CERTIFIED rtol |value|
+#: (:func:`certified`, bifurcation/critical.py)
 CERTIFIED = 1e4
+#: a load below this fraction of its control's natural scale (model.controls.natural_scale)
+#: is as good as none: its error is measured against that, not against itself
+ZERO_LOAD = 1e-6
 #: the two methods must agree this well for a certified value (bifurcation/certify.py)
 CERTIFY_RTOL = 1e-8
 
@@ -78,6 +82,17 @@ class Accuracy:
     @property
     def runners_up(self) -> float:
         return max(self.rtol, SCAN_STABLE_SIGNS)
+
+
+def certified(estimate: float, value: float, rtol: float, natural: float) -> bool:
+    """Is a critical value known to CERTIFIED ``rtol`` of itself by its error ``estimate``?
+
+    Relative to the value, which is what ``rtol`` asks: the rule was relative to max(1,
+    |value|), so a film's critical pressure of 2.9e-6 was "certified" at rtol 1e-12 with an
+    estimate of 1.2e-7 of itself. A value within ZERO_LOAD of its control's ``natural``
+    scale (a force crossing zero along a curve) is measured against that floor instead:
+    no solve gives a vanishing value to a fraction of itself."""
+    return estimate <= CERTIFIED * rtol * max(abs(value), ZERO_LOAD * natural)
 
 
 RTOL_RANGE = (1e-14, 1e-4)

@@ -125,6 +125,15 @@ def force_scale(tube) -> float:
     return math.pi * _wall_sum(tube, lambda a, b: b * b - a * a)
 
 
+def natural_scale(tube, kind: str) -> float:
+    """The value of a control of ``kind`` that strains the tube by O(1): 1 for the growth
+    factor and the stretch, :func:`voltage_scale`, :func:`pressure_scale`,
+    :func:`force_scale`. Below a small fraction of it a load is as good as none
+    (incremental.accuracy.certified)."""
+    scales = {"voltage": voltage_scale, "pressure": pressure_scale, "force": force_scale}
+    return scales[kind](tube) if kind in scales else 1.0
+
+
 def _pressure_path(tube, up, base):
     """From P_i = P_o up to the pressure branch's threshold (inflation) or down (collapse);
     the scale is the unloaded tube's (:func:`pressure_scale`)."""

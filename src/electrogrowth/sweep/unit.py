@@ -203,7 +203,7 @@ def _inaccurate_message(c, rtol: float) -> str:
     """Why a critical value is not certified (bifurcation/critical.py's rule)."""
     return (
         f"inaccurate: error estimate {c.error_estimate:.1e} exceeds {CERTIFIED:g} rtol"
-        f" max(1, |value|) (rtol = {rtol:g}) even at rtol / {REFINE:g}"
+        f" |value| (rtol = {rtol:g}) even at rtol / {REFINE:g}"
     )
 
 
