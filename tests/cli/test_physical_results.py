@@ -82,3 +82,15 @@ def test_postbuckle_prints_its_onset_in_the_units_given(tmp_path, capsys):
     assert "lowest_mode  amplitude_mm  pressure_kPa  energy_J_per_m" in out
     header = (tmp_path / "out" / "branch.csv").read_text().splitlines()[0]
     assert header.endswith("subharmonic_fraction,amplitude_mm,pressure_kPa,energy_J_per_m")
+
+
+def test_the_koiter_coefficient_in_the_unit_of_its_control(capsys):
+    """Probe round 12a (doubt 4): `critical --koiter` with kPa printed c_2 in units of mu
+    only: on the branch P_i = P_cr + c_2 eps^2 (eps = peak u_r / R_i, a ratio), so c_2 is a
+    pressure, 100 times its non-dimensional value at mu = 100 kPa."""
+    argv = ["critical", "--outer-radius", "2.6mm", "--length", "6mm", "--solve-for"]
+    argv += ["pressure", "--side", "compression", "--mode", "2", "0", "--koiter"]
+    assert main([*argv, *UNITS]) == 0
+    out = " ".join(capsys.readouterr().out.split())
+    c2 = float(out.split("Koiter coefficient c_2 = ")[1].split()[0])
+    assert f"koiter = {100 * c2:.6g} kPa" in out

@@ -25,7 +25,7 @@ from .options import (
     scan_options_from_args,
 )
 from .progress import add_quiet_option, bar, stage
-from .report import edge_warning, physical_record, warn
+from .report import NAMED, edge_warning, physical_record, warn
 from .tube_input import add_any_tube_options, control_of
 
 INACCURATE_EXIT = 3  # the exit status of a value not certified to --rtol
@@ -145,6 +145,7 @@ def run_critical(args) -> int:
     if getattr(args, "scales", None) is not None:
         errors = {record.get("solve_for"): record.get("error_estimate")}
         record["physical"] = physical_record(record, args.scales, errors)
+        record["physical"].update(_koiter_physical(record, args.scales))
     if args.json:
         print(json.dumps(record))
     else:
@@ -170,6 +171,21 @@ def _amplitude_equation(args, params, solve_for, crit) -> dict:
         "koiter_resonance": verdict.koiter_resonance,
         "meaning": verdict.meaning,
     }
+
+
+def _koiter_physical(record: dict, scales) -> dict:
+    """The Koiter coefficient c_2 in the unit of its control ({} where that has none, or
+    none was computed): on the branch the control is c_cr + c_2 eps^2, eps = peak u_r / R_i a
+    ratio, so c_2 is a pressure, a force or a voltage like the control itself (probe round
+    12a: -10.96 was printed for -1096 kPa)."""
+    from ..model.controls import parse_control
+
+    c2 = record.get("koiter")
+    key = NAMED.get(parse_control(record["solve_for"]).kind)
+    if c2 is None or key is None:
+        return {}
+    converted = physical_record({key: c2}, scales, {key: record.get("koiter_error")})
+    return {"koiter": converted[key]} if key in converted else {}
 
 
 def _inaccurate_exit(crit, args, tube) -> int:
