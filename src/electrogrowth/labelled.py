@@ -279,8 +279,9 @@ def verdict_variables(v, solve_for: str) -> dict:
 
 
 def _resonance(r: dict | None, units: str, long_name: str) -> dict:
-    """The second harmonic bifurcating next to onset, where the Koiter coefficient has a
-    pole (bifurcation/koiter_resonance.py): its value and (m, n); NaN and -1 where none."""
+    """The second harmonic bifurcating next to onset, or the mode restabilising past it,
+    where the Koiter coefficient has a pole (bifurcation/koiter_resonance.py): its value and
+    (m, n); NaN and -1 where none."""
     none = r is None
     return {
         "koiter_resonance_value": (
@@ -289,18 +290,18 @@ def _resonance(r: dict | None, units: str, long_name: str) -> dict:
             {
                 "units": units,
                 "long_name": f"{long_name} where a second harmonic bifurcates"
-                " next to onset (NaN: none)",
+                " next to onset, or the mode restabilises (NaN: none)",
             },
         ),
         "koiter_resonance_m": (
             (),
             -1 if none else int(r["m"]),
-            {"units": "1", "long_name": "m of that harmonic (-1: none)"},
+            {"units": "1", "long_name": "m of that harmonic, or of the mode (-1: none)"},
         ),
         "koiter_resonance_n": (
             (),
             -1 if none else int(r["n"]),
-            {"units": "1", "long_name": "n of that harmonic (-1: none)"},
+            {"units": "1", "long_name": "n of that harmonic, or of the mode (-1: none)"},
         ),
     }
 

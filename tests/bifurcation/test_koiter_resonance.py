@@ -85,3 +85,31 @@ def test_the_verdict_says_so():
     assert "second harmonic (2, 2) bifurcates at stretch = 0.922418, 0.8 % from" in out.meaning
     rec = out.as_dict()["koiter_resonance"]
     assert (rec["m"], rec["n"], rec["before"]) == (2, 2, False)
+
+
+def test_a_mode_that_restabilises_next_to_onset_says_so():
+    """Probe round 12a (doubt 2): a Gent tube (J_m 1.32), (0, 1) in compression, is unstable
+    only for 0.5701 < lambda_z < 0.6054: its c_2 (-1.59, against -0.27 neo-Hookean) is a true
+    derivative, but the one-mode expansion's range ends where the mode restabilises, and the
+    verdict said only "the folds grow gradually". The restabilisation is a root of the
+    mode's own target: collocation, an independent method, changes sign across it too."""
+    from electrogrowth.basestate.tube import solve_base_state
+    from electrogrowth.incremental.targets import CollocationTarget
+    from electrogrowth.model.materials import gent
+
+    tube = Tube.uniform(1.5, length=3, material=gent(1.32))
+    k = koiter_coefficient(tube, (0, 1), "stretch", side="compression")
+    r = k.resonance
+    assert r is not None and r.own and (r.m, r.n) == (0, 1) and not r.before
+    assert r.value < k.critical_value and r.gap == pytest.approx(0.0583, abs=1e-3)
+    colloc = CollocationTarget(1e-10)
+    signs = [
+        colloc(solve_base_state(tube.at("stretch", r.value + d)), [[0, 1]])[0]
+        for d in (-1e-6, 1e-6)
+    ]
+    assert signs[0] * signs[1] < 0
+    verdict, _ = with_branch(critical_value(tube, 0, 1, "stretch", side="compression").verdict,
+                             tube, "stretch", "compression")  # fmt: skip
+    assert "the mode restabilises at stretch = 0.570119, 5.8 % past onset" in verdict.meaning
+    plain = koiter_coefficient(Tube.uniform(1.5, length=3), (0, 1), "stretch", side="compression")
+    assert plain.resonance is None  # neo-Hookean: the mode stays unstable past the window

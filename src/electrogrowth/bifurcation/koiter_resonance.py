@@ -12,6 +12,14 @@ L = 8 in compression: c_2 = 12.5 times its slender-tube value, (2, 2) 0.075 % aw
 The harmonics' impedance targets are read on a grid across a window of WINDOW of |c_c|
 (of the control's scale where c_c is next to zero) about c_c; a sign change is a
 harmonic's root, located by Brent's method.
+
+The mode itself can end the expansion too: where its neutral curve folds, the mode is
+unstable only in a window past onset and restabilises at c_r. Its eigenvalue
+sigma(c) ~ A' (c - c_c) + sigma'' (c - c_c)^2 / 2 then has c_r - c_c = -2 A' / sigma'', and c_2,
+which divides by A', grows like 1 / (c_r - c_c): a pole of the same kind (a Gent tube J_m
+1.32, (0, 1) in compression: c_2 = -1.59 against -0.27 neo-Hookean, c_r 5.8 % past onset;
+probe round 12a). The mode's own target is read on the same grid continued to OWN_WINDOW
+past onset; its first sign change strictly past onset is c_r.
 """
 
 from __future__ import annotations
@@ -36,6 +44,9 @@ from .march import control_path
 WINDOW = 0.05
 NEAR_ZERO = 1e-3
 POINTS = 21
+#: how far past onset (relative, as WINDOW) the mode's own restabilisation is looked for,
+#: on the same grid spacing: the expansion's range is a fact worth a note this far out
+OWN_WINDOW = 0.1
 #: the harmonics' targets: a root needs a few digits only (a distance, not a value)
 TARGET = ImpedanceTarget(rtol=1e-10)
 
@@ -52,9 +63,17 @@ class Resonance:
     value: float
     gap: float
     before: bool
+    #: the mode itself, restabilising at ``value`` past onset (not a harmonic)
+    own: bool = False
 
     def words(self, control: str) -> str:
         """The note a user reads: which harmonic, where, and what it means."""
+        if self.own:
+            return (
+                f"the mode restabilises at {control} = {self.value:.6g},"
+                f" {100 * self.gap:.2g} % past onset (its neutral curve folds): the one-mode"
+                " expansion holds only while the control stays much closer to onset than that"
+            )
         first = ", before the mode's onset" if self.before else ""
         # the root to 6 digits: Brent's at 1e-9 of the size, a note's precision
         return (
@@ -78,25 +97,37 @@ def harmonics(m: int, n: int) -> list[tuple[int, int]]:
 def nearest_resonance(
     tube: Tube, mode: tuple[int, int], control: str, side: str | None, onset: float
 ) -> Resonance | None:
-    """The harmonic root nearest ``onset`` within the window, or None."""
+    """The root nearest ``onset`` of a harmonic within WINDOW, or of the mode itself past
+    onset within OWN_WINDOW (its restabilisation), or None."""
     start, end, scale = control_path(tube, control, side)
     size = window_size(onset, scale)
+    sense = 1.0 if end >= start else -1.0
     lo, hi = sorted((start, end))
-    xs = np.clip(onset + WINDOW * size * np.linspace(-1.0, 1.0, POINTS), lo, hi)
-    xs = np.unique(xs)
-    rows = np.array(harmonics(*mode), dtype=float)
-    values = np.array([_targets(tube, control, x, rows) for x in xs])  # (points, harmonics)
+    # WINDOW's grid of POINTS about onset, continued past onset to OWN_WINDOW
+    step = 2.0 * WINDOW / (POINTS - 1)
+    ts = step * np.arange(-round(WINDOW / step), round(OWN_WINDOW / step) + 1)
+    xs = np.unique(np.clip(onset + sense * size * ts, lo, hi))
+    own = (int(mode[0]), int(mode[1]))
+    found = [*harmonics(*mode), own]
+    rows = np.array(found, dtype=float)
+    values = np.array([_targets(tube, control, x, rows) for x in xs])  # (points, modes)
     best = None
-    for j, (hm, hn) in enumerate(harmonics(*mode)):
+    for j, (hm, hn) in enumerate(found):
+        mine = j == len(found) - 1
         for a, b, fa, fb in zip(xs, xs[1:], values[:, j], values[1:, j]):
             if not (np.isfinite(fa) and np.isfinite(fb)) or fa * fb > 0:
                 continue
+            if mine and min(sense * (a - onset), sense * (b - onset)) <= 0:
+                continue  # the onset itself, or before it
+            if not mine and min(abs(a - onset), abs(b - onset)) > WINDOW * size:
+                continue  # a harmonic's root past WINDOW: the grid's continuation is the mode's
             root = _root(tube, control, rows[j : j + 1], a, b, size)
             if root is None:
                 continue
             gap = abs(root - onset) / size
-            if best is None or gap < best.gap:
-                best = Resonance(hm, hn, root, gap, (end - start) * (root - onset) < 0)
+            if gap > (OWN_WINDOW if mine else WINDOW) or (best is not None and gap >= best.gap):
+                continue
+            best = Resonance(hm, hn, root, gap, sense * (root - onset) < 0, own=mine)
     return best
 
 

@@ -95,12 +95,13 @@ POINT_VARIABLES = {
     "koiter_resonance_value": (
         "f8",
         math.nan,
-        "where a second harmonic of the wrinkle bifurcates next to onset (within 5 % of it):"
-        " the coefficient, which has a pole there, holds only much closer to onset than"
-        " that (NaN: none, or not computed)",
+        "where a second harmonic of the wrinkle bifurcates next to onset (within 5 % of it),"
+        " or the wrinkle itself restabilises (within 10 % past it): the coefficient, which"
+        " has a pole there, holds only much closer to onset than that (NaN: none, or not"
+        " computed)",
     ),
-    "koiter_resonance_m": ("i4", -1, "m of that second harmonic (-1: none)"),
-    "koiter_resonance_n": ("i4", -1, "n of that second harmonic (-1: none)"),
+    "koiter_resonance_m": ("i4", -1, "m of that harmonic, or of the wrinkle (-1: none)"),
+    "koiter_resonance_n": ("i4", -1, "n of that harmonic, or of the wrinkle (-1: none)"),
     "branch_note": (
         object,
         "",
