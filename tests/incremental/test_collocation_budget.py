@@ -18,6 +18,7 @@ import sys
 import textwrap
 import tracemalloc
 
+import numpy as np
 import pytest
 
 from electrogrowth import Layer, Tube, certify, critical_value, solve_base_state
@@ -131,3 +132,21 @@ def test_cli_certify_prints_the_value_and_exits_3(tmp_path):
     assert r.returncode == 3, r.stderr
     assert "g_cr = 2.2535426" in r.stdout
     assert "NOT certified: collocation would need 2681 nodes" in r.stdout
+
+
+def test_a_failed_kernel_mode_beyond_the_budget_names_both_failures(no_large_arrays, monkeypatch):
+    """Where the kernel fails for a mode (also at tighter tolerances) it goes to collocation
+    (targets._retry); beyond the budget the error names the kernel's failure and
+    collocation's nodes, and sends the user to neither method (the kernel's failures are
+    made here: the kernel integrates this mode)."""
+    from electrogrowth.incremental import targets
+    from electrogrowth.incremental.impedance import STEP_UNDERFLOW
+
+    monkeypatch.setattr(targets, "_serial", lambda state, modes, *a: np.full(len(modes), np.nan))
+    state = solve_base_state(THICK.at("growth", 2.25))
+    with pytest.raises(CollocationTooLarge) as err:
+        targets._retry(state, np.array([[0.0, 1000.0]]), np.array([STEP_UNDERFLOW]), 1e-12, 100)
+    text = str(err.value)
+    assert text.startswith("impedance integration failed for mode (m, n) = (0, 1000)")
+    assert "step size underflow, also at tighter tolerances, and collocation would need" in text
+    assert err.value.remedy.startswith("neither method resolves this mode here")
