@@ -93,6 +93,19 @@ class ConvergenceError(ElectrogrowthError, RuntimeError):
     )
 
 
+class CollocationTooLarge(ConvergenceError):
+    """Collocation would need more nodes for a mode than its memory budget holds (a short
+    wave through a thick wall): the impedance kernel, whose memory does not grow with the
+    mode, is the method there."""
+
+    remedy = Remedy(
+        "use --method impedance (the default), which resolves such modes; for waves this"
+        " short the exact short-wave limit, which every scan computes, is their bound",
+        python="use method='impedance' (the default), which resolves such modes; for waves"
+        " this short the exact short-wave limit (short_wave_limit) is their bound",
+    )
+
+
 #: what to do where a Gent layer's states next to its lock cannot be resolved (they exist)
 NEAR_LOCK = Remedy(
     "the states there are next to a Gent layer's lock, where no wrinkle is computable: ask"

@@ -14,7 +14,7 @@ import pytest
 from scipy.optimize import brentq
 from scipy.special import iv, kv
 
-from electrogrowth import Tube
+from electrogrowth import Layer, Tube
 from electrogrowth.bifurcation.crease import CREASE_RATIO
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.bifurcation.options import ScanOptions
@@ -206,3 +206,30 @@ def test_the_mechanical_crease_ranks_beside_a_field_crease_met_at_the_start():
     assert v.field_crease.trigger == "field" and v.field_crease.value == 1.0
     assert "note: the inner face's field reaches" in v.meaning
     assert v.as_dict()["field_crease"]["trigger"] == "field"
+
+
+def test_the_meaning_does_not_round_the_onset_to_the_start():
+    """Probe 12b, D2: the meaning printed every value with 4 digits whatever its estimate: a
+    film's onset g_cr = 1.00027786548 (estimate 5e-12) read "at growth[1] = 1", the unloaded
+    tube's growth, where the march starts. Now the digits its estimate supports."""
+    film = Tube([Layer(1.0026, shear_modulus=8000.0), Layer(2.7)], length=170.0)
+    c = critical_value(film, 1, 1, "growth[1]")
+    assert c.value == pytest.approx(1.00027786548, abs=1e-10) and c.error_estimate < 1e-10
+    assert "(1, 1) at growth[1] = 1.00027786548;" in c.verdict.meaning
+
+
+def test_the_meaning_tells_the_first_event_from_the_next_and_the_start():
+    """Probe 12b, D2: a surface result and the next mode 6.5e-5 apart both read 0.7961; a
+    value whose estimate supports 4 digits (1.0003 +- 1e-3) read "1", the start; a value
+    without an estimate keeps 4 digits unless they print it as the start."""
+    surface = Rival(Kind.SURFACE, 0.79606346300, 7e-11, face="outer")
+    ring = Rival(Kind.BIFURCATION, 0.79612846, 1e-5, m=0, n=120, family="wrinkle")
+    v = judge(None, surface=surface, wrinkle=ring, name="Vbar", start=0.0)
+    assert "outer face at Vbar = 0.796063463;" in v.meaning  # its estimate's digits
+    assert "(0, 120) at Vbar = 0.79613" in v.meaning  # 4 digits would be 0.7961 too
+    loose = Rival(Kind.BIFURCATION, 1.00027786548, 1e-3, m=1, n=1, family="wrinkle")
+    assert "= 1.0003" in judge(None, wrinkle=loose, name="g", start=1.0).meaning
+    lost = Rival(Kind.THRESHOLD, 1.01966699017, None, detail="voltage threshold")
+    assert "Vbar = 1.02 before" in judge(None, threshold=lost, name="Vbar", start=0.0).meaning
+    near = Rival(Kind.THRESHOLD, 1.0000002, None, detail="no axisymmetric state")
+    assert "g = 1.0000002 before" in judge(None, threshold=near, name="g", start=1.0).meaning

@@ -129,3 +129,35 @@ def test_a_runner_up_is_printed_with_the_digits_its_estimate_supports(monkeypatc
     assert main(argv) == 0
     nxt = [x for x in capsys.readouterr().out.splitlines() if x.startswith("  next:")]
     assert nxt[0] == "  next: (m, n) = (1, 1)   g_cr = 1.2817091", nxt
+
+
+def test_a_runner_up_at_the_mode_cap_says_a_shorter_wave_may_come_first(monkeypatch, capsys):
+    """probe 12b (doubt): a long film's scan to --n-max 2000 listed the rings (0, 2000) and
+    (0, 1999) next with no word that their optimum lies beyond the cap (n ~ 2056), so modes
+    the scan cannot reach come before them. A runner-up at the cap now says so in its line
+    and its JSON ``note``; one below the cap, and the critical mode, are unchanged."""
+    import dataclasses
+
+    import electrogrowth.bifurcation.scan as scan
+    from electrogrowth.bifurcation.march import ModeValue
+
+    real = scan.scan_modes
+
+    def capped(*args, **kwargs):
+        res = real(*args, **kwargs)
+        top = res.critical.value + 1e-3
+        rings = (ModeValue(0, 2000, top, error_estimate=1e-12), ModeValue(0, 1999, top + 1e-6))
+        return dataclasses.replace(res, runners_up=rings)
+
+    monkeypatch.setattr(scan, "scan_modes", capped)
+    argv = BASE + ["--solve-for", "growth", "--voltage", "0.4", "--m-max", "1", "--n-max", "1"]
+    assert main(argv) == 0
+    nxt = [x for x in capsys.readouterr().out.splitlines() if x.startswith("  next:")]
+    assert nxt[0].endswith(
+        "(at the largest n = 2000 supported: a mode beyond it may come before it)"
+    ), nxt
+    assert nxt[1].startswith("  next: (m, n) = (0, 1999)") and "supported" not in nxt[1]
+    assert main(argv + ["--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)
+    assert rec["runners_up"][0]["note"].startswith("at the largest n = 2000 supported")
+    assert rec["runners_up"][1]["note"] is None and rec["status"] == "ok"

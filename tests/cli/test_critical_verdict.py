@@ -117,3 +117,27 @@ def test_a_surface_result_names_its_best_finite_mode_once(capsys):
     assert wline.endswith(f"(the first of the scanned m = {m0}..{m1}, n = {n0}..{n1})")
     nxt = [line for line in lines if line.startswith("  next: ")]
     assert len(nxt) == len(rec["runners_up"]) - 1 and not any(best in line for line in nxt)
+
+
+FILM_8000 = """length = 170.0
+[[layers]]
+outer_radius = 1.0026
+shear_modulus = 8000.0
+[[layers]]
+outer_radius = 2.7
+"""
+
+
+def test_the_verdict_line_and_json_meaning_keep_the_onset_s_digits(tmp_path, capsys):
+    """Probe 12b, D2: the verdict line and the JSON ``meaning`` read "at growth[1] = 1", the
+    start of the march, for a film's onset 1.00027786548 (estimate 5e-12): the verdict
+    printed 4 digits. Now the digits the estimate supports, as the headline."""
+    film = tmp_path / "film.toml"
+    film.write_text(FILM_8000)
+    argv = ["critical", "--tube", str(film), "--solve-for", "growth", "--layer", "1"]
+    argv += ["--mode", "1", "1"]
+    rec = _json(capsys, argv)
+    assert "(1, 1) at growth[1] = 1.00027786548;" in rec["meaning"]
+    assert main(argv) == 0
+    line = next(x for x in capsys.readouterr().out.splitlines() if "verdict:" in x)
+    assert "(1, 1) at growth[1] = 1.00027786548;" in line, line

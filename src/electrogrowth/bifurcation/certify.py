@@ -29,7 +29,7 @@ from collections.abc import Callable
 import numpy as np
 
 from ..basestate.tube import solve_base_state
-from ..errors import ConvergenceError, ParameterError, Remedy
+from ..errors import CollocationTooLarge, ConvergenceError, ParameterError, Remedy
 from ..incremental.accuracy import CERTIFY_RTOL
 from ..incremental.modes import ALL_PAIRS, U_Z, mode_pairs
 from ..incremental.targets import (
@@ -150,16 +150,19 @@ def _other_method(params, crit, mode, value, error, rtol, method=None):
     other = "collocation" if method == "impedance" else "impedance"
     m, n, family = mode
     w = max(1e-6 * abs(value), 10 * error)
-    check = critical_value(
-        params,
-        m,
-        n,
-        crit.solve_for,
-        family=family,
-        side=crit.side,
-        method=other,
-        bracket=(value - w, value + w),
-    )
+    try:
+        check = critical_value(
+            params,
+            m,
+            n,
+            crit.solve_for,
+            family=family,
+            side=crit.side,
+            method=other,
+            bracket=(value - w, value + w),
+        )
+    except CollocationTooLarge as exc:  # the value stands, printed, but unchecked (exit 3)
+        raise _unchecked(exc, f"{method}'s {value:.12g}") from exc
     diff = abs(check.value - value) / abs(value)
     if diff > rtol:
         # which one is off: the judge that did not meet its own accuracy says so
@@ -175,6 +178,11 @@ def _other_method(params, crit, mode, value, error, rtol, method=None):
             f" {diff:.2e} > {rtol:g}){unresolved}"
         )
     return other, check.value, diff
+
+
+def _unchecked(exc: CollocationTooLarge, what: str) -> ConvergenceError:
+    """ "not certified: ..." where collocation cannot be run for the mode of ``what``."""
+    return ConvergenceError(f"not certified: {exc}, so it cannot check {what} here")
 
 
 #: the choice is read this many times the two methods' disagreement (or the error
@@ -238,7 +246,12 @@ def _collocation_stable(state, reference, row) -> bool:
     """Has collocation's target of mode ``row`` at ``state`` its sign on the unloaded
     ``reference`` (positive for one layer), with the nodes that resolve the mode there?"""
     nodes = resolving_nodes(state, row[0], row[1], CERTIFY_RTOL)
-    now = collocation_targets(state, row[None, :], nodes=nodes)[0]
+    try:
+        now = collocation_targets(state, row[None, :], nodes=nodes)[0]
+    except CollocationTooLarge as exc:  # the kernel's sign changed, collocation cannot say
+        raise _unchecked(
+            exc, f"the kernel's sign change of mode ({int(row[0])}, {int(row[1])})"
+        ) from exc
     if len(state.tube.layers) == 1:
         return bool(now > 0)
     return bool(

@@ -12,6 +12,7 @@ from ..labelled import scan_dataset
 from ..summary import scan_html
 from .critical import CriticalPoint
 from .march import ModeValue
+from .options import M_CAP, N_CAP
 from .verdict import Verdict, verdict_of
 from .verdict import record as verdict_record
 
@@ -47,7 +48,7 @@ class ScanResult:
 
     def as_dict(self) -> dict:
         out = self.critical.as_dict()
-        out["runners_up"] = [dataclasses.asdict(r) for r in self.runners_up]
+        out["runners_up"] = [runner_record(r) for r in self.runners_up]
         out["m_range"], out["n_range"] = list(self.m_range), list(self.n_range)
         out["surface_instability"] = self.surface_instability
         out["short_wave_limit"] = self.short_wave_limit
@@ -61,3 +62,19 @@ class ScanResult:
 
     def _repr_html_(self) -> str:
         return scan_html(self)
+
+
+def runner_record(r: ModeValue) -> dict:
+    """A runner-up's JSON record: its fields and ``note``, which says where it sits at the
+    largest m or n supported (None elsewhere). A scan does not look beyond the caps, so
+    shorter waves may come before such a runner-up: a long film's rings (0, 2000) and
+    (0, 1999) were listed next with no word while their optimum lies near n = 2056 (probe
+    12b); the critical mode at a cap says so in its status (scan._capped)."""
+    out = dataclasses.asdict(r)
+    over = [f"{k} = {cap}" for k, v, cap in (("m", r.m, M_CAP), ("n", r.n, N_CAP)) if v >= cap]
+    out["note"] = (
+        f"at the largest {' and '.join(over)} supported: a mode beyond it may come before it"
+        if over
+        else None
+    )
+    return out

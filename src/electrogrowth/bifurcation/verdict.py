@@ -18,10 +18,12 @@ from __future__ import annotations
 import dataclasses
 import math
 
+from ..digits import apart
 from ..errors import ElectrogrowthError
 from ..model.controls import parse_control
 from ..outcomes import Kind
 from .crease import crease_onset
+from .march import control_path
 from .state_loss import own_threshold
 
 #: the kinds a verdict compares, and the record key of each one's runner-up
@@ -131,11 +133,13 @@ def judge(
     criterion: str | None = None,
     name: str = "the control",
     field_crease: Rival | None = None,
+    start: float | None = None,
 ) -> Verdict:
     """The verdict of the rivals found: the first reached along the march (decreasing on
     the compression side, else increasing) comes first; a tie goes to the linear result.
     ``field_crease``, the field criterion's crease beside a mechanical ``crease``, is a
-    note (:func:`advisory`).
+    note (:func:`advisory`). ``start``: the control's value where the march starts, which
+    no value of ``meaning`` may read as (:func:`meaning`).
 
     >>> w = Rival(Kind.BIFURCATION, 0.511, m=0, n=1, family="wrinkle")
     >>> c = Rival(Kind.CREASE, 0.558, 0.005, face="outer", trigger="axial")
@@ -151,7 +155,7 @@ def judge(
     if not ranked:
         note = "no instability found in the searched range"
         if rivals:
-            note += f"; {_what(rivals[0])} at {name} = {rivals[0].value:.4g}"
+            note += f"; {_what(rivals[0])} at {name} = {_shown(rivals[0], start)}"
         return Verdict(
             Kind.NONE, math.nan, None, note, crease=crease, side=side, field_crease=field_crease
         )
@@ -160,7 +164,7 @@ def judge(
         first.kind,
         first.value,
         first.face,
-        meaning(first, [r for r in rivals if r is not first], sense, name),
+        meaning(first, [r for r in rivals if r is not first], sense, name, start),
         wrinkle,
         surface,
         crease,
@@ -183,12 +187,31 @@ def _mode(r: Rival) -> str:
     return f"mode (m, n) = ({r.m}, {r.n})"
 
 
-def meaning(first: Rival, others: list[Rival], sense: float, name: str) -> str:
-    """One line for a user: what they will see first and what it pre-empts."""
-    notes = "".join(f"; note: {_what(r)} at {name} = {r.value:.4g}" for r in others if advisory(r))
+def _shown(r: Rival, *others: float | None) -> str:
+    """``r``'s value with the digits its error estimate supports, and enough to tell it
+    from ``others``: 4 digits printed a film's onset 1.00027786548 (estimate 5e-12) as
+    "1", the unloaded start, and a surface limit and the next mode 6.5e-5 apart both as
+    "0.7961" (probe 12b, D2)."""
+    return apart(r.value, r.error_estimate, *others)
+
+
+def meaning(
+    first: Rival, others: list[Rival], sense: float, name: str, start: float | None = None
+) -> str:
+    """One line for a user: what they will see first and what it pre-empts, each value with
+    the digits its estimate supports and never printed as the control's ``start`` or as
+    the other event's value (:func:`_shown`)."""
+    notes = "".join(
+        f"; note: {_what(r)} at {name} = {_shown(r, start, first.value)}"
+        for r in others
+        if advisory(r)
+    )
     others = [r for r in others if not advisory(r)]
     nxt = min(others, key=lambda r: sense * r.value) if others else None
-    after = "" if nxt is None else f"; next: {_what(nxt)} at {name} = {nxt.value:.4g}"
+    after = ""
+    if nxt is not None:
+        after = f"; next: {_what(nxt)} at {name} = {_shown(nxt, start, first.value)}"
+    at = _shown(first, start, None if nxt is None else nxt.value)
     close = ""
     if first.kind == Kind.CREASE and first.error_estimate is not None:
         if math.isinf(first.error_estimate):  # crease.energy_shift: no Biot ratio
@@ -198,18 +221,16 @@ def meaning(first: Rival, others: list[Rival], sense: float, name: str) -> str:
     if first.kind == Kind.CREASE:
         head = (
             f"{creases(first.face, first.detail)} (sharp folds, {_trigger(first.trigger)})"
-            f" at {name} = {first.value:.4g} before any smooth wrinkle"
+            f" at {name} = {at} before any smooth wrinkle"
         )
     elif first.kind == Kind.BIFURCATION:
-        head = f"the tube wrinkles smoothly in {_mode(first)} at {name} = {first.value:.4g}"
+        head = f"the tube wrinkles smoothly in {_mode(first)} at {name} = {at}"
     elif first.kind == Kind.SURFACE:
-        head = (
-            f"short-wave surface wrinkles at the {first.face} face at {name} = {first.value:.4g}"
-        )
+        head = f"short-wave surface wrinkles at the {first.face} face at {name} = {at}"
     else:
         head = (
             f"the axisymmetric state is lost ({first.detail or 'threshold'}) at {name} ="
-            f" {first.value:.4g} before any wrinkle or crease"
+            f" {at} before any wrinkle or crease"
         )
     return head + after + close + notes
 
@@ -338,6 +359,14 @@ def threshold_rival(critical, onset) -> Rival | None:
     return None
 
 
+def _start(critical) -> float | None:
+    """Where the march of ``critical``'s control starts (None where it has no path)."""
+    try:
+        return control_path(critical.params, critical.solve_for, critical.side)[0]
+    except ElectrogrowthError:
+        return None
+
+
 def verdict_of(critical, *, finite=None, short_wave=None) -> Verdict:
     """The verdict of a critical point (``critical_value`` or a scan's), the crease onset
     along the same control computed here. ``finite`` is the best finite mode when the
@@ -374,6 +403,7 @@ def verdict_of(critical, *, finite=None, short_wave=None) -> Verdict:
         criterion=criterion,
         name=control_symbol(critical.solve_for),
         field_crease=field_rival(onset),
+        start=_start(critical),
     )
     if onset is None:
         return dataclasses.replace(verdict, meaning=verdict.meaning + " (crease not evaluated)")

@@ -152,6 +152,7 @@ def print_text(rec: dict, runners: list, scales=None) -> None:
         lines.append(
             f"  next: (m, n) = ({r['m']}, {r['n']}){_family_note(r.get('family'))}"
             f"   {name} = {supported(r['value'], r.get('error_estimate'))}"
+            + (f"  ({r['note']})" if r.get("note") else "")
         )
     lines += _rival_lines(rec, name)
     print("\n".join(lines))

@@ -1,8 +1,9 @@
 """How the commands print results a person can trust at a glance.
 
-* :func:`supported` prints a value with as many digits as its error estimate supports: the
-  last digit shown is the decade of the estimate (1.266 for 1.26611 +- 3.8e-3), never more
-  than 12 significant digits, never fewer than 3;
+* :func:`supported` (from digits.py, shared with the verdict's text) prints a value with as
+  many digits as its error estimate supports: the last digit shown is the decade of the
+  estimate (1.266 for 1.26611 +- 3.8e-3), never more than 12 significant digits, never
+  fewer than 3;
 * :func:`voltage_text` puts the voltage next to Vbar: V = Vbar (Rbar_o - 1) in units
   R_i sqrt(mu / eps), or in kV when the physical units are known (cli/units.py);
 * :func:`physical_record` and :func:`physical_line` report a result in physical units;
@@ -12,36 +13,11 @@
 
 from __future__ import annotations
 
-import math
 import sys
 import textwrap
 
+from ..digits import digits, supported
 from ..errors import ParameterError
-
-MAX_DIGITS, MIN_DIGITS = 12, 3
-
-
-def digits(value: float, error: float | None) -> int:
-    """Significant digits of ``value`` that an absolute ``error`` estimate supports.
-
-    >>> digits(1.26611156226, 3.8e-3), digits(1.26611156226, 2e-14), digits(0.5, 0.0)
-    (4, 12, 12)
-    """
-    if error is None or not math.isfinite(error) or error <= 0 or value == 0:
-        return MAX_DIGITS
-    if not math.isfinite(value):
-        return MIN_DIGITS
-    n = math.floor(math.log10(abs(value))) - math.floor(math.log10(error)) + 1
-    return max(MIN_DIGITS, min(MAX_DIGITS, n))
-
-
-def supported(value: float, error: float | None) -> str:
-    """``value`` with the digits its error estimate supports.
-
-    >>> supported(1.26611156226, 3.8e-3), supported(1.26611156226, 1e-11)
-    ('1.266', '1.26611156226')
-    """
-    return f"{value:.{digits(value, error)}g}"
 
 
 def voltage_text(vbar: float, outer_radius: float, scales=None, error: float | None = None) -> str:

@@ -45,7 +45,7 @@ import numpy as np
 
 from .._types import FloatArray
 from ..basestate.tube import solve_base_state
-from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
+from ..errors import CollocationTooLarge, ConvergenceError, NoBifurcationFound, ParameterError
 from ..model.layers import Tube
 from ..model.moduli import MODULI_INDEX
 from .chebyshev import chebyshev_lobatto, interior_interpolation
@@ -101,9 +101,44 @@ def _layer_fields(state, k: int, r: FloatArray) -> tuple[FloatArray, FloatArray]
     return mod, p
 
 
+#: the most memory one collocation target may take: every prismatic mode up to the scan's
+#: cap m = 2000 of a tube of up to four layers at rtol 1e-12 (251 nodes a layer, 0.9 GB)
+#: fits, while a short axial wave through a thick wall, (0, 1000) of Rbar_o = 100 (2681
+#: nodes, tens of GB), is refused before numpy asks for its arrays: unbounded, its 4.8 GiB
+#: maps got the process OOM-killed on a shared machine (probe 12b, D5)
+MEMORY_BUDGET = 1 << 30
+
+#: complex (nodes, 5 nodes - 2) arrays alive at once at the peak, per layer and once: each
+#: layer keeps L and S (9 each) and D (3), and the assembly of S (nodal_law._fluxes_at)
+#: holds its terms; tracemalloc's peaks for 1, 2, 3 layers at 60 and 120 nodes were 38,
+#: 79, 125 such arrays with the real matrix of :func:`collocation_bytes` besides
+MAPS_PER_LAYER, MAPS_ONCE = 34, 2
+
+
+def collocation_bytes(nodes: int, layers: int) -> int:
+    """Peak bytes of one collocation target at ``nodes`` per layer, from its arrays' shapes:
+    the layers' nodal maps (complex, nodes x width, width = 5 nodes - 2) and the real
+    matrix (layers width)^2 that LAPACK factors; within 1 % above tracemalloc's peaks."""
+    width = 5 * nodes - 2
+    maps = 16 * nodes * width * (MAPS_PER_LAYER * layers + MAPS_ONCE)
+    return maps + 8 * (layers * width) ** 2
+
+
+def check_budget(state, m: float, n: float, nodes: int) -> None:
+    """CollocationTooLarge where mode (m, n) at ``nodes`` per layer exceeds MEMORY_BUDGET."""
+    need = collocation_bytes(int(nodes), _layers(state))
+    if need > MEMORY_BUDGET:
+        raise CollocationTooLarge(
+            f"collocation would need {int(nodes)} nodes a layer for mode (m, n) = ({m:g},"
+            f" {n:g}) of this {_layers(state)}-layer tube, about {need / 2**30:.3g} GiB of"
+            f" arrays at its peak, beyond its budget of {MEMORY_BUDGET / 2**30:g} GiB"
+        )
+
+
 def _segments(state, m: float, n: float, nodes: int) -> list:
     """[(grid, L, S, D)] of every layer, inner layer first."""
     _grid(state, n, nodes)  # validates ``nodes``
+    check_budget(state, m, n, nodes)  # before any array of the nodes' size
     out = []
     for k in range(len(state.tube.layers)):
         grid = _layer_grid(state, k, n, nodes)

@@ -41,7 +41,7 @@ from typing import NamedTuple
 import numpy as np
 
 from ..basestate.tube import solve_base_state
-from ..errors import ConvergenceError
+from ..errors import CollocationTooLarge, ConvergenceError, Remedy
 from ..model.layers import Tube
 from .accuracy import STABLE_SIGN, Accuracy
 from .impedance import STATUS_TEXT, target_serial
@@ -180,9 +180,24 @@ def _retry(state, modes, status, rtol, max_steps) -> Sample:
             f[i] = value * _kernel_sign(state, row, nodes)
         except (ArithmeticError, ValueError, np.linalg.LinAlgError):
             pass
+        except CollocationTooLarge as exc:  # neither method resolves the mode here
+            raise _beyond_both(reason, exc) from exc
         if not np.isfinite(f[i]):
             raise ConvergenceError(f"{reason}, also at tighter tolerances and by collocation")
     return Sample(f, todo.size, reason)
+
+
+def _beyond_both(reason: str, exc: CollocationTooLarge) -> CollocationTooLarge:
+    """The kernel's failure ``reason`` and collocation's refusal ``exc`` in one error, whose
+    remedy does not send the user to either method."""
+    err = CollocationTooLarge(f"{reason}, also at tighter tolerances, and {exc}")
+    err.remedy = Remedy(
+        "neither method resolves this mode here; for waves this short the exact short-wave"
+        " limit, which every scan computes, is their bound",
+        python="neither method resolves this mode here; for waves this short the exact"
+        " short-wave limit (short_wave_limit) is their bound",
+    )
+    return err
 
 
 def _failure(mode, status) -> str:
