@@ -215,7 +215,7 @@ def test_the_meaning_does_not_round_the_onset_to_the_start():
     film = Tube([Layer(1.0026, shear_modulus=8000.0), Layer(2.7)], length=170.0)
     c = critical_value(film, 1, 1, "growth[1]")
     assert c.value == pytest.approx(1.00027786548, abs=1e-10) and c.error_estimate < 1e-10
-    assert "(1, 1) at growth[1] = 1.00027786548;" in c.verdict.meaning
+    assert "(1, 1) wrinkles smoothly at growth[1] = 1.00027786548 (" in c.verdict.meaning
 
 
 def test_the_meaning_tells_the_first_event_from_the_next_and_the_start():
@@ -233,3 +233,18 @@ def test_the_meaning_tells_the_first_event_from_the_next_and_the_start():
     assert "Vbar = 1.02 before" in judge(None, threshold=lost, name="Vbar", start=0.0).meaning
     near = Rival(Kind.THRESHOLD, 1.0000002, None, detail="no axisymmetric state")
     assert "g = 1.0000002 before" in judge(None, threshold=near, name="g", start=1.0).meaning
+
+
+def test_one_mode_asked_for_is_not_said_to_be_the_tubes_first():
+    """Probe round 12a (doubt 3): `critical --mode 12 0` on the mucosa example said "the tube
+    wrinkles smoothly in mode (12, 0)" while (11, 0) comes first; only a scan can say which
+    mode is the tube's first, and its verdict still does."""
+    from electrogrowth import Tube, critical_value, scan_modes
+    from electrogrowth.bifurcation.options import ScanOptions
+
+    tube = Tube.uniform(1.4, 1.0, voltage=0.4)
+    one = critical_value(tube, 1, 1, "growth").verdict.meaning
+    assert one.startswith("mode (m, n) = (1, 1) wrinkles smoothly at g = ")
+    assert "the mode asked for: a scan says whether another mode comes first" in one
+    scan = scan_modes(tube, "growth", options=ScanOptions((0, 2), (1, 2)))
+    assert scan.verdict.meaning.startswith("the tube wrinkles smoothly in mode (m, n) = (0, 1)")

@@ -137,7 +137,7 @@ def test_the_verdict_line_and_json_meaning_keep_the_onset_s_digits(tmp_path, cap
     argv = ["critical", "--tube", str(film), "--solve-for", "growth", "--layer", "1"]
     argv += ["--mode", "1", "1"]
     rec = _json(capsys, argv)
-    assert "(1, 1) at growth[1] = 1.00027786548;" in rec["meaning"]
+    assert "(1, 1) wrinkles smoothly at growth[1] = 1.00027786548 (" in rec["meaning"]
     assert main(argv) == 0
     line = next(x for x in capsys.readouterr().out.splitlines() if "verdict:" in x)
-    assert "(1, 1) at growth[1] = 1.00027786548;" in line, line
+    assert "(1, 1) wrinkles smoothly at growth[1] = 1.00027786548 (" in line, line

@@ -126,7 +126,7 @@ class CriticalPoint(Outcome):
         """What comes first: this linear result, a crease or the threshold (verdict.py)."""
         from .verdict import verdict_of  # here: a critical value alone never loads the crease
 
-        return verdict_of(self)
+        return verdict_of(self, one_mode=True)
 
     def _repr_html_(self) -> str:
         return critical_html(self)

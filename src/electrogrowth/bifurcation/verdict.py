@@ -41,10 +41,10 @@ def _fin(v):
 
 @dataclasses.dataclass(frozen=True)
 class Rival:
-    """One kind of instability at its value: a wrinkle (``m``, ``n``, ``family``), a
-    surface or crease (``face``; a crease's ``trigger``: prismatic, axial or field; at an
-    interface ``detail`` says which, and which layer folds) or the threshold (``detail``:
-    what is lost)."""
+    """One kind of instability at its value: a wrinkle (``m``, ``n``, ``family``; ``detail``
+    ONE_MODE where it is the one mode asked for, not a scan's first), a surface or crease
+    (``face``; a crease's ``trigger``: prismatic, axial or field; at an interface ``detail``
+    says which, and which layer folds) or the threshold (``detail``: what is lost)."""
 
     kind: str
     value: float
@@ -175,6 +175,12 @@ def judge(
     )
 
 
+#: a wrinkle's ``detail`` where it is the one mode asked for (``critical_value``): no other
+#: mode was looked at, so it is not "the tube wrinkles" (probe round 12a: `critical --mode
+#: 12 0` said so of a tube whose (11, 0) comes first)
+ONE_MODE = "the mode asked for"
+
+
 def advisory(r: Rival) -> bool:
     """A crease by the field criterion informs but never comes first: its value is that of
     a bonded film that can neither thin nor stretch (derivation-crease.md), and the tube's
@@ -222,6 +228,11 @@ def meaning(
         head = (
             f"{creases(first.face, first.detail)} (sharp folds, {_trigger(first.trigger)})"
             f" at {name} = {at} before any smooth wrinkle"
+        )
+    elif first.kind == Kind.BIFURCATION and first.detail == ONE_MODE:
+        head = (
+            f"{_mode(first)} wrinkles smoothly at {name} = {at} (the mode asked for: a scan"
+            " says whether another mode comes first)"
         )
     elif first.kind == Kind.BIFURCATION:
         head = f"the tube wrinkles smoothly in {_mode(first)} at {name} = {at}"
@@ -367,11 +378,13 @@ def _start(critical) -> float | None:
         return None
 
 
-def verdict_of(critical, *, finite=None, short_wave=None) -> Verdict:
+def verdict_of(critical, *, finite=None, short_wave=None, one_mode=False) -> Verdict:
     """The verdict of a critical point (``critical_value`` or a scan's), the crease onset
     along the same control computed here. ``finite`` is the best finite mode when the
     critical point is the surface limit (a ModeValue); ``short_wave`` (value, error) the
-    exact surface limit where a scan computed it after the wrinkle."""
+    exact surface limit where a scan computed it after the wrinkle; ``one_mode``: the
+    critical point is the one mode asked for, whose wrinkle is said to be that mode's only
+    (ONE_MODE)."""
     try:
         onset = crease_onset(critical.params, critical.solve_for, side=critical.side)
         criterion = onset.criterion
@@ -386,6 +399,7 @@ def verdict_of(critical, *, finite=None, short_wave=None) -> Verdict:
             critical.m,
             critical.n,
             str(critical.family) if critical.family else None,
+            detail=ONE_MODE if one_mode else None,
         )
     elif critical.kind == Kind.SURFACE:
         surface = Rival(Kind.SURFACE, critical.value, critical.error_estimate, face=critical.face)

@@ -108,7 +108,8 @@ def run_critical(args) -> int:
                 method=args.method,
                 rtol=args.rtol,
             )
-        record = verdict_record(crit.as_dict(), crit.verdict, crit, first_on_top=False)
+        verdict = crit.verdict  # the mode's own: no other mode was looked at
+        record = verdict_record(crit.as_dict(), verdict, crit, first_on_top=False)
         runners = []
     else:
         if args.method != "impedance":
@@ -125,11 +126,11 @@ def run_critical(args) -> int:
                 options=scan_options_from_args(args),
                 rtol=args.rtol,
             )
-        crit, record = result.critical, result.as_dict()
+        crit, record, verdict = result.critical, result.as_dict(), result.verdict
         runners = record["runners_up"]
         warn(edge_warning(result))
     if args.koiter:
-        record.update(_amplitude_equation(args, params, solve_for, crit))
+        record.update(_amplitude_equation(args, params, solve_for, verdict))
     elif record.get("wrinkle") is not None:  # say how to learn it, rather than nothing
         record["branch_note"] = "not asked: add --koiter for super- or subcritical (1-5 s)"
     if args.certify and crit.kind in (Kind.BIFURCATION, Kind.SURFACE):
@@ -155,13 +156,13 @@ def run_critical(args) -> int:
     return _inaccurate_exit(crit, args, params)
 
 
-def _amplitude_equation(args, params, solve_for, crit) -> dict:
+def _amplitude_equation(args, params, solve_for, verdict) -> dict:
     """The verdict's ``branch``, ``koiter`` and ``meaning`` from the amplitude equation, or
     ``branch_note``: why it is not computed."""
     from ..bifurcation.koiter import with_branch  # scipy's dense algebra: only when asked
 
     with stage(args, "solving the amplitude equation at onset", tick=True):
-        verdict, note = with_branch(crit.verdict, params, solve_for, args.side)
+        verdict, note = with_branch(verdict, params, solve_for, args.side)
     if note is not None:
         return {"branch_note": note}
     return {
