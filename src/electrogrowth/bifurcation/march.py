@@ -16,11 +16,13 @@ mode's march, ONE_MODE_STEPS, predicts lambda_i instead and solves no state it d
 the base state is lost between two steps the threshold is located exactly and approached
 with shrinking steps. Modes that change sign in a step are narrowed by a shared bisection
 and finished with Brent's method; a mode whose target dips towards zero between steps
-without crossing is examined by a bounded minimisation; a single crossing is finished near
-its loose root. The loose signs are those of the caller's tolerance unless they do not
-resolve this tube's targets at the start (:func:`calibrated`). The stepping, the prediction and
-the location are the continuation engine's (continuation/: MODE_STEPS, EventWatch,
-first_roots); the march says what a state, a mode and a lost state are.
+without crossing, or stays positive at a sample past the zero its last samples predicted (a
+window narrower than the step past that zero: :func:`overstepped`), is examined by a bounded
+minimisation; a single crossing is finished near its loose root. The loose signs are those
+of the caller's tolerance unless they do not resolve this tube's targets at the start
+(:func:`calibrated`). The stepping, the prediction and the location are the continuation
+engine's (continuation/: MODE_STEPS, EventWatch, first_roots); the march says what a state,
+a mode and a lost state are.
 """
 
 from __future__ import annotations
