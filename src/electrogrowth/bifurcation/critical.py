@@ -329,7 +329,9 @@ def _solve(
                 at=at,  # the error estimate's first state is the value's, solved by the march
             )
         except NoBifurcationFound as exc:
-            root = _surface_window(params, (m, n), solve_for, side, g)
+            # torsional modes never bifurcate (derivation-families.md): no window to look for
+            torsional = fam is Family.TORSIONAL
+            root = None if torsional else _surface_window(params, (m, n), solve_for, side, g)
             if root is None:
                 _no_bifurcation(exc, solve_for, m, n, fam)
             res = MarchResult([ModeValue(int(m), int(n), root, str(fam))], None)
