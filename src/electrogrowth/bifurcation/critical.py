@@ -33,7 +33,7 @@ import numpy as np
 
 from ..basestate.tube import solve_base_state
 from ..continuation.events import Remembered, brent
-from ..errors import ConvergenceError, NoBifurcationFound, Remedy
+from ..errors import ConvergenceError, ElectrogrowthError, NoBifurcationFound, Remedy
 from ..incremental.accuracy import CERTIFIED, RTOL_RANGE, STABLE_SIGN, Accuracy, certified
 from ..incremental.targets import (
     CollocationTarget,
@@ -52,7 +52,14 @@ from ..outcomes import Kind, Outcome, Status
 from ..summary import critical_html
 from .along import TubeAt, root_mode
 from .error_estimate import achieved_floor, collocation_floor, second_resolution
-from .march import ONE_MODE_STEPS, control_path, first_bifurcations
+from .march import (
+    ONE_MODE_STEPS,
+    ONE_MODE_WAIT,
+    MarchResult,
+    ModeValue,
+    control_path,
+    first_bifurcations,
+)
 from .problem import Problem, as_problem
 
 if TYPE_CHECKING:
@@ -322,15 +329,12 @@ def _solve(
                 at=at,  # the error estimate's first state is the value's, solved by the march
             )
         except NoBifurcationFound as exc:
-            exc.remedy = no_bifurcation_remedy(solve_for, mode=(m, n))
-            if fam is not Family.TORSIONAL:
-                raise
-            stop = NoBifurcationFound(
-                f"{exc}: torsional modes never bifurcate while the shear moduli gamma_12 and"
-                " A3232 are positive (docs/derivation-families.md)"
-            )
-            stop.remedy = exc.remedy
-            raise stop from None
+            # torsional modes never bifurcate (derivation-families.md): no window to look for
+            torsional = fam is Family.TORSIONAL
+            root = None if torsional else _surface_window(params, (m, n), solve_for, side, g)
+            if root is None:
+                _no_bifurcation(exc, solve_for, m, n, fam)
+            res = MarchResult([ModeValue(int(m), int(n), root, str(fam))], None)
         if not res.found:
             return CriticalPoint(
                 solve_for,
@@ -362,6 +366,75 @@ def _solve(
         params.at(solve_for, value),
         family=fam,
     )
+
+
+def _no_bifurcation(exc: NoBifurcationFound, solve_for: str, m: int, n: int, fam) -> None:
+    """Raise the march's ``exc`` with its remedy (and why, for a torsional mode)."""
+    exc.remedy = no_bifurcation_remedy(solve_for, mode=(m, n))
+    if fam is not Family.TORSIONAL:
+        raise exc
+    stop = NoBifurcationFound(
+        f"{exc}: torsional modes never bifurcate while the shear moduli gamma_12 and"
+        " A3232 are positive (docs/derivation-families.md)"
+    )
+    stop.remedy = exc.remedy
+    raise stop from None
+
+
+#: the search around the short-wave limit x_s for an unstable state: first this far from it
+#: (times the path's scale), then SURFACE_WIDEN times as far, up to the march's longest step
+#: (ONE_MODE_WAIT: a wider window has a sample of the march in it)
+SURFACE_FIRST = 1e-7
+SURFACE_WIDEN = 4.0
+
+
+def _surface_window(params, mode, solve_for, side, g) -> float | None:
+    """The first bifurcation of ``mode`` (m, n) in its window next to the short-wave limit
+    x_s of its ray (modes (j m, j n), surface.ray_limit), when the
+    march found none: None where the mode g (stable > 0) is stable within one march step of
+    x_s (or the path has no surface value).
+
+    A short wave's critical value tends to x_s (like 1 / wavenumber) from either side, and
+    near the cap of the modes it can be unstable only in a window next to x_s narrower than
+    the march's steps: a film ring's (0, 2000) on [1.7643, 1.779] around x_s = 1.7678, whose
+    bounded target keeps its size through both roots (its sign is det(M2)'s: nothing tells a
+    march sampling every 0.05 that the window is there). The unstable state nearest to x_s
+    (earlier side first) is looked for in widening steps, then the stable one before it."""
+    from .surface import ray_limit  # the half-space march: only where a march failed
+
+    try:
+        limit = ray_limit(params, *mode, solve_for, side=side, estimate=False)
+    except ElectrogrowthError:  # no surface value on this path: the march's answer stands
+        return None
+    if limit.kind is not Kind.SURFACE:
+        return None
+    start, end, scale = control_path(params, solve_for, side)
+    xs, sense = limit.value, math.copysign(1.0, end - start)
+    width, widest = SURFACE_FIRST * scale, ONE_MODE_WAIT * scale
+    unstable = xs if not g(xs) > 0 else None
+    while unstable is None and width <= widest:
+        near = [xs - sense * width, xs + sense * width]
+        unstable = next((x for x in near if _inside(x, start, end) and not g(x) > 0), None)
+        width *= SURFACE_WIDEN
+    return None if unstable is None else _root_before(g, unstable, start, scale)
+
+
+def _inside(x: float, start: float, end: float) -> bool:
+    """Is x strictly past the path's start and not past its end?"""
+    return (x - start) * (end - x) >= 0 and x != start
+
+
+def _root_before(g, bad: float, start: float, scale: float) -> float:
+    """The root of g between ``bad`` (g <= 0) and the nearest stable state before it, found in
+    widening steps back towards the start (stable: the march checked it)."""
+    sense, width = math.copysign(1.0, bad - start), SURFACE_FIRST * scale
+    while True:
+        a = bad - sense * width
+        if sense * (a - start) <= 0:
+            a = start
+        if a == start or g(a) > 0:
+            return brent(g, *sorted((a, bad)))
+        width *= SURFACE_WIDEN
 
 
 def no_bifurcation_remedy(solve_for: str, *, mode: tuple[int, int] | None = None) -> Remedy:

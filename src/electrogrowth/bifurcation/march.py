@@ -16,11 +16,13 @@ mode's march, ONE_MODE_STEPS, predicts lambda_i instead and solves no state it d
 the base state is lost between two steps the threshold is located exactly and approached
 with shrinking steps. Modes that change sign in a step are narrowed by a shared bisection
 and finished with Brent's method; a mode whose target dips towards zero between steps
-without crossing is examined by a bounded minimisation; a single crossing is finished near
-its loose root. The loose signs are those of the caller's tolerance unless they do not
-resolve this tube's targets at the start (:func:`calibrated`). The stepping, the prediction and
-the location are the continuation engine's (continuation/: MODE_STEPS, EventWatch,
-first_roots); the march says what a state, a mode and a lost state are.
+without crossing, or stays positive at a sample past the zero its last samples predicted (a
+window narrower than the step past that zero: :func:`overstepped`), is examined by a bounded
+minimisation; a single crossing is finished near its loose root. The loose signs are those
+of the caller's tolerance unless they do not resolve this tube's targets at the start
+(:func:`calibrated`). The stepping, the prediction and the location are the continuation
+engine's (continuation/: MODE_STEPS, EventWatch, first_roots); the march says what a state,
+a mode and a lost state are.
 """
 
 from __future__ import annotations
@@ -395,12 +397,25 @@ class Views(NamedTuple):
     loose_root: RootRows
 
 
+def overstepped(watch, idx, x: float, g: np.ndarray) -> np.ndarray:
+    """Which modes ``idx``, sampled at x with signed values g, are still positive although x
+    is past the zero their last samples predicted (EventWatch: the march steps just past a
+    trusted zero to bracket it). A target with a simple root changes sign there; one that
+    does not turned within the step: a window of instability narrower than the step's
+    overshoot may lie inside it (a short axial wave of a thick tube, (0, 2000) of Rbar_o 3:
+    its target falls through zero and comes back within 5e-5, and the step past its
+    predicted zero, 0.1 of the distance to it, landed 5e-5 beyond, positive again)."""
+    ahead = watch.root_distance()[idx]  # inf where receding or not yet extrapolated
+    return (g > 0) & (watch.sense * (x - watch.xa[idx]) >= ahead)
+
+
 def _advance(watch, idx, x, g, views: Views, need=None) -> list:
     """Record the samples at x; roots of the modes that changed sign or dipped to zero
     (of those that changed sign, the first ``need``, see events.first_roots). A dip is
     looked for on the bounded fine values, roots are refined on det(M2) (``views``)."""
     signed, signed_fine, signed_root = views.signed, views.fine, views.root
     found, modes = [], signed.modes
+    passed = overstepped(watch, idx, x, g)  # read before the new samples move the prediction
     hit = crossed(g)
     js = np.nonzero(hit)[0]
     if js.size:  # bisected together from where each mode was last seen
@@ -425,10 +440,12 @@ def _advance(watch, idx, x, g, views: Views, need=None) -> list:
             else:
                 found.append(_mode_value(modes, idx[j], root))
     mid, old = watch.g[0, idx], watch.g[1, idx]  # the two samples before x
-    dips = np.nonzero(~hit & dipped(old, mid, g))[0]
-    for j in dips[np.argsort(mid[dips])][:8]:
+    dip = dipped(old, mid, g)
+    dips = np.nonzero(~hit & (dip | passed))[0]
+    for j in dips[np.argsort(np.minimum(mid[dips], g[dips]))][:8]:
         i = idx[j]
-        bracket = dip_bracket(signed_fine.row(i), watch.x[1, i], x)
+        # a dip's minimum is near mid (its window on either side); a passed zero's after it
+        bracket = dip_bracket(signed_fine.row(i), watch.x[1 if dip[j] else 0, i], x)
         if bracket is not None:
             found.append(_mode_value(modes, i, brent(signed_root.row(i), *bracket)))
             hit[j] = True

@@ -270,6 +270,7 @@ def ray_limit(
     side: str | None = None,
     faces=None,
     rtol: float = 1e-12,
+    estimate: bool = True,
 ) -> SurfaceLimit:
     """Limit j -> infinity of the critical value of the modes (j m, j n).
 
@@ -277,6 +278,8 @@ def ray_limit(
     k = n pi / (lambda_z L); it follows the state (lambda_z and r change with the
     control). The limit is the first control value at which the half-space at one of
     ``faces`` bifurcates in that direction. m = 0 gives psi = pi/2, n = 0 gives psi = 0.
+    Without ``estimate`` the error estimate (a second, coarser solve) is NaN, as for
+    :func:`short_wave_limit`.
     """
     for name, v in (("m", m), ("n", n)):
         if (
@@ -287,4 +290,4 @@ def ray_limit(
             raise ParameterError(f"ray {name} = {v!r} is invalid; need 0 <= {name} < inf")
     if m == 0 and n == 0:
         raise ParameterError("ray (m, n) = (0, 0) is invalid; need m > 0 or n > 0")
-    return _solve(params, solve_for, side, faces, rtol, RayDirection(m, n))
+    return _solve(params, solve_for, side, faces, rtol, RayDirection(m, n), estimate=estimate)
