@@ -19,7 +19,9 @@ def second_resolution(g_coarse, value: float, path: tuple[float, float]) -> floa
     value, clipped to the march's ``path`` (start, end): the probes stay in the control's
     domain (a window of +-4.2 put a growth at -0.16), and a root before the start is not
     this one. Without a root in the widest window the estimate is that window's half-width
-    (the looser root is at least that far): an uncertified value, not a failure.
+    (the looser root is at least that far): an uncertified value, not a failure. Where the
+    looser target is not positive at the path's start, its root is the start (as a march
+    reports it, continuation.events.first_roots), known to :func:`start_floor`.
 
     The secant's distance is at least the second resolution's rounding noise over its slope
     (:func:`rounding_floor`, two more evaluations): a long tube's Euler mode (L = 200, a
@@ -35,7 +37,7 @@ def second_resolution(g_coarse, value: float, path: tuple[float, float]) -> floa
     for lo, hi, _ in windows:
         if lo < hi and g_coarse(lo) * g_coarse(hi) < 0:
             return abs(brent(g_coarse, lo, hi) - value)
-    if not g_coarse(path[0]) > 0:  # its root is the start, as a march reports it
+    if g_coarse(path[0]) <= 0:  # its root is the start, as a march reports it (not NaN)
         return max(abs(value - path[0]), start_floor(g_coarse, path))
     return windows[-1][2]  # the widest window's half-width
 
