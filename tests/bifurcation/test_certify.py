@@ -284,3 +284,57 @@ def test_a_film_scan_claiming_a_later_fold_is_refused():
     opts = ScanOptions((229, 233), (1, 1), torsional=False)
     with pytest.raises(ConvergenceError, match=r"mode \(2(29|3[012]), [01]\) is already unstable"):
         certify(film, fake.critical, scan=fake, options=opts)
+
+
+def test_a_value_less_accurate_than_the_certificate_is_the_one_blamed():
+    """probe 12b, D4: a value solved at rtol 1e-4 (its estimate 5.2e-4) disagreed with
+    collocation by 6.6e-7 and the refusal said collocation "cannot judge impedance here",
+    while collocation agreed with the value at rtol 1e-12 to 2.2e-10. A value whose own
+    estimate exceeds CERTIFY_RTOL |value| is named as the one not accurate enough, with
+    --rtol as the remedy (made up here: the impedance kernel judges, the fast direction)."""
+    crit = critical_value(P, 0, 1, "growth")
+    loose = dataclasses.replace(
+        _as_collocation(crit), value=crit.value * (1 + 1e-6), error_estimate=1e-5 * crit.value
+    )
+    with pytest.raises(ConvergenceError) as exc:
+        certify(P, loose)
+    why = str(exc.value)
+    assert "not accurate enough to be certified to 1e-08" in why and "--rtol" in why
+    assert "cannot judge" not in why
+
+
+def test_no_root_of_the_other_method_near_the_value_is_a_refusal(monkeypatch):
+    """probe 12b, D8: layered collocation's "no sign change on (...)" passed through certify
+    as a ConvergenceError that is not a refusal: the CLI exited 2 with nothing printed. It
+    is "not certified: collocation cannot resolve this mode near the value", after the
+    brackets widened to OTHER_BRACKETS (each tried once)."""
+    from electrogrowth.bifurcation.critical import NoSignChange
+
+    crit = critical_value(P, 0, 1, "growth")
+    brackets = []
+
+    def no_sign_change(*args, bracket, **kwargs):
+        brackets.append(bracket)
+        raise NoSignChange(f"collocation has no sign change on {bracket}")
+
+    monkeypatch.setattr(certify_module, "critical_value", no_sign_change)
+    with pytest.raises(ConvergenceError, match="^not certified: collocation cannot resolve"):
+        certify(P, crit)
+    widths = [(b - a) / 2 / crit.value for a, b in brackets]
+    assert len(widths) == 3 and widths[1:] == pytest.approx(certify_module.OTHER_BRACKETS)
+
+
+@pytest.mark.slow
+def test_a_film_pressure_next_to_its_fold_is_refused_not_failed():
+    """probe 12b, D8, the real case: a film 1e4 times as stiff, 1e-5 below its fold at
+    P_i = 0: P_i,cr = -1.68626e-5 (estimate 2e-14). Collocation's root lies 4.8e-8 of it
+    away (its own estimate 9e-8), outside the first bracket (1.7e-11): "not certified",
+    naming collocation as unresolved, not "no sign change" (CLI exit 2, nothing printed)."""
+    t = Tube(
+        [Layer(1.001, shear_modulus=1e4, growth=(1, 1.026916558161777, 1)), Layer(3.0)],
+        length=2.0,
+    )
+    c = critical_value(t, 69, 0, "pressure", side="compression")
+    with pytest.raises(ConvergenceError, match="^not certified: ") as exc:
+        certify(t, c)
+    assert "collocation did not resolve this mode" in str(exc.value)

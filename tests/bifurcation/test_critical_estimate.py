@@ -416,3 +416,21 @@ def test_the_floor_is_relative_to_the_value():
     rtol max(1, |value|), which would say 1e-12 of a value known to 2e-14."""
     assert error_estimate.achieved_floor(-6.27e-5, 1e-12) == pytest.approx(3.135e-16)
     assert error_estimate.achieved_floor(1.032, 1e-12) == pytest.approx(5.16e-12)
+
+
+def test_cli_the_other_methods_failure_is_a_refusal_with_exit_3(monkeypatch, capsys):
+    """probe 12b, D8: collocation's "no sign change" (layered collocation solves only in a
+    bracket) escaped --certify as an error: exit 2, nothing on stdout, and the remedy
+    "certify the point with --method collocation", the method that failed. Now the value is
+    printed, refused, with exit 3."""
+    import electrogrowth.bifurcation.certify as certifier
+    from electrogrowth.bifurcation.critical import NoSignChange
+
+    def no_sign_change(*args, bracket, **kwargs):
+        raise NoSignChange(f"collocation has no sign change on {bracket}")
+
+    monkeypatch.setattr(certifier, "critical_value", no_sign_change)
+    assert main(ARGV + ["--certify"]) == 3
+    out, err = capsys.readouterr()
+    assert out.startswith("g_cr = ") and "collocation cannot resolve this mode" in out
+    assert err.startswith("electrogrowth: warning: not certified") and err.count("\n") == 1

@@ -60,7 +60,10 @@ def _walk(branch: Branch, x0: float, lz0: float, *, sign: int = 1, target=None):
     """Follow the branch from r_i = x0 on x0 1.08^(sign k) up to a factor 1e3; returns arrays
     (r_i, lambda_z, analytic load) from x0 and why it stopped: "target" (sign (load - target)
     >= 0), "peak" (the load turned back), "lock" (an energy ended: last entry NaN) or "end"."""
-    first = clean(branch.at([x0], lz0))
+    # the start (x0, lz0) is a solved state: solved again for lambda_z, a charged tube's
+    # voltage branch under suction found none (two lambda_z close by), and the grid began
+    # with a NaN load (probe 12b, D7)
+    first = clean(branch.point([x0], [lz0]))
     xs, lzs, loads = [x0], [lz0], [float(branch.value(first)[0])]
     for x in BRANCH_STEPS.batches(x0, sign):
         pt = clean(branch.at(x, lzs[-1]))
@@ -212,13 +215,22 @@ def solve_on(branch: Branch, grid, target: float, thr: Threshold | None, what: s
         return float(branch.value(clean(branch.at([x], guess(x))))[0]) - target
 
     f = Remembered(load)  # Brent evaluates the checked ends again
+    # the scan's own load at a: solved again there, the branch's start can land on the other
+    # lambda_z (two balance the force at a charged tube's start under suction), or on none
+    f.seen[a] = loads[k[0] - 1] - target
     if f(a) * f(b) > 0:  # the scan's sign change was its rounding: next to the threshold
         near = "" if thr is None else f" {thr.value:.12g}"
         raise BaseStateError(
             f"{what} = {target:.12g} is within the accuracy of the threshold{near} of its"
             " branch (the load does not reach it in the scan's cell)"
         )
-    x = brent(f, *sorted((a, b)), BRANCH, named=False)
+    try:
+        x = brent(f, *sorted((a, b)), BRANCH, named=False)
+    except ValueError as exc:  # a load NaN inside the cell: no lambda_z found there
+        raise ConvergenceError(
+            f"{what} is not resolved: the branch's load is not finite inside its scan's cell"
+            f" lambda_i in [{min(a, b):.12g}, {max(a, b):.12g}] ({exc})"
+        ) from None
     return x, float(clean(branch.at([x], guess(x)))["stretch"][0])
 
 

@@ -222,7 +222,7 @@ def critical_value(
             bracket = _collocation_bracket(params, m, n, solve_for, fam, kernel.value, tight)
         try:
             point = solve(tight, bracket)
-        except _NoSignChange as exc:  # the point at the looser rtol stands, not certified
+        except NoSignChange as exc:  # the point at the looser rtol stands, not certified
             return _inaccurate(point, rtol, f"; at rtol = {tight:g} {exc}")
     if certain(point):
         return point
@@ -240,8 +240,9 @@ def _inaccurate(point: CriticalPoint, rtol: float, why: str) -> CriticalPoint:
     )
 
 
-class _NoSignChange(ConvergenceError):
-    """Layered collocation has no sign change on its bracket (it does not march instead)."""
+class NoSignChange(ConvergenceError):
+    """Layered collocation has no sign change on its bracket (it does not march instead);
+    certify reads it as the other method's refusal, not as an error of the value."""
 
 
 #: relative half-widths tried around the kernel's root for layered collocation's bracket
@@ -265,8 +266,8 @@ def _kernel_bracket(params, m, n, solve_for, fam, side, rtol):
     if bracket is not None:
         return kernel, bracket
     raise ConvergenceError(
-        f"collocation finds no root of mode ({m}, {n}) within {KERNEL_BRACKETS[-1]:g} of the"
-        f" impedance kernel's {solve_for} = {kernel.value:.12g} on this layered tube (its"
+        f"collocation finds no root of mode ({m}, {n}) within {KERNEL_BRACKETS[-1]:g} |value| of"
+        f" the impedance kernel's {solve_for} = {kernel.value:.12g} on this layered tube (its"
         " determinant has sign changes of its own: docs/derivation-layered-modes.md L.3); use"
         " the impedance method, or give collocation a bracket"
     )
@@ -298,7 +299,7 @@ def _solve(
     params, m, n, solve_for, fam, side, method, rtol, bracket, *, march=True
 ) -> CriticalPoint:
     """One solve of :func:`critical_value` at ``rtol`` (checked arguments); without
-    ``march``, only in ``bracket`` (_NoSignChange if the target keeps its sign there)."""
+    ``march``, only in ``bracket`` (NoSignChange if the target keeps its sign there)."""
     mode = with_family(m, n, fam)
     acc = Accuracy(rtol)
     fine, coarse = targets_for(method, acc.fine), coarse_targets_for(method, acc.fine)
@@ -309,7 +310,7 @@ def _solve(
         value = brent(g, *bracket)
     elif not march:
         where = "no bracket" if bracket is None else f"no sign change on {bracket}"
-        raise _NoSignChange(
+        raise NoSignChange(
             f"{method} has {where} for mode ({m}, {n}) on this layered tube, and does not"
             " march on its own there (its determinant has sign changes of its own:"
             " docs/derivation-layered-modes.md L.3)"
@@ -403,7 +404,7 @@ def _surface_window(params, mode, solve_for, side, g) -> float | None:
     from .surface import ray_limit  # the half-space march: only where a march failed
 
     try:
-        limit = ray_limit(params, *mode, solve_for, side=side, estimate=False)
+        limit = ray_limit(params, mode[0], mode[1], solve_for, side=side, estimate=False)
     except ElectrogrowthError:  # no surface value on this path: the march's answer stands
         return None
     if limit.kind is not Kind.SURFACE:

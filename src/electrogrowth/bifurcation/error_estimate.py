@@ -19,7 +19,9 @@ def second_resolution(g_coarse, value: float, path: tuple[float, float]) -> floa
     value, clipped to the march's ``path`` (start, end): the probes stay in the control's
     domain (a window of +-4.2 put a growth at -0.16), and a root before the start is not
     this one. Without a root in the widest window the estimate is that window's half-width
-    (the looser root is at least that far): an uncertified value, not a failure.
+    (the looser root is at least that far): an uncertified value, not a failure. Where the
+    looser target is not positive at the path's start, its root is the start (as a march
+    reports it, continuation.events.first_roots), known to :func:`start_floor`.
 
     The secant's distance is at least the second resolution's rounding noise over its slope
     (:func:`rounding_floor`, two more evaluations): a long tube's Euler mode (L = 200, a
@@ -35,6 +37,8 @@ def second_resolution(g_coarse, value: float, path: tuple[float, float]) -> floa
     for lo, hi, _ in windows:
         if lo < hi and g_coarse(lo) * g_coarse(hi) < 0:
             return abs(brent(g_coarse, lo, hi) - value)
+    if g_coarse(path[0]) <= 0:  # its root is the start, as a march reports it (not NaN)
+        return max(abs(value - path[0]), start_floor(g_coarse, path))
     return windows[-1][2]  # the widest window's half-width
 
 
@@ -58,6 +62,22 @@ def achieved_floor(value: float, rtol: float) -> float:
     the estimate supports). A small value whose error is larger still, an absolute one, is
     the second resolution's to show. docs/derivation.md section 6."""
     return ACHIEVED * rtol * abs(value)
+
+
+def start_floor(g, path: tuple[float, float]) -> float:
+    """How far from the path's start a root of g reported at the start (g not positive
+    there: continuation.events.first_roots) may lie: |g(start)| over g's slope along the
+    first SECANT_STEP max(1, |start|) of the path, its Newton step from the start (0 where
+    the slope is not read). A film at its fold at P_i = 0 has a target of 4e-15 there on
+    a slope of 0.24: its root is known within 2e-14 of the start, not exactly (probe 12b,
+    D3)."""
+    start, end = path
+    h = math.copysign(min(SECANT_STEP * max(1.0, abs(start)), abs(end - start)), end - start)
+    g0, g1 = g(start), g(start + h)
+    slope = (g1 - g0) / h
+    if not (math.isfinite(slope) and slope != 0.0 and math.isfinite(g0)):
+        return 0.0
+    return abs(g0 / slope)
 
 
 #: the secant's step back towards the path's start, and the first window's half-width,

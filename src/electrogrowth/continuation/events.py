@@ -258,7 +258,11 @@ def first_roots(
 
     Shared bisection points narrow every candidate's own bracket (SHARED_ROUNDS), then
     Brent's method on ``fine`` finishes each. A candidate whose fine value is still
-    positive at x was misjudged by the loose one: None (it stays in the march). With
+    positive at x was misjudged by the loose one: None (it stays in the march). One whose
+    fine value is not positive even at x0, the start the march found stable (by its loose
+    sign, or its fine bounded target where that doubted), has its root at x0 within the
+    fine value's rounding: x0 (a film at its fold at P_i = 0 has det(M2) = -4e-15 there on
+    a slope of 0.24, and Brent's method had no sign change to work on, probe 12b D3). With
     ``need``, the candidates past zero at the first x where at least ``need`` of them are
     (a shared bisection of the loose signs) are finished, the rest are LATER: near a
     short-wave limit hundreds of modes cross within a step, and only the first few are
@@ -290,6 +294,9 @@ def first_roots(
             h = x
         if f(l) <= 0:
             l = xa[k] if f(xa[k]) > 0 else x0  # the candidate is positive at the start
+        if f(l) <= 0:  # not by the fine values: its root is the start (module docstring)
+            out[k] = x0
+            return
         out[k] = brent(f, *sorted((l, h)))
 
     for k in keep:
