@@ -227,10 +227,12 @@ def solve_on(branch: Branch, grid, target: float, thr: Threshold | None, what: s
     try:
         x = brent(f, *sorted((a, b)), BRANCH, named=False)
     except ValueError as exc:  # a load NaN inside the cell: no lambda_z found there
-        raise ConvergenceError(
+        err = ConvergenceError(
             f"{what} is not resolved: the branch's load is not finite inside its scan's cell"
             f" lambda_i in [{min(a, b):.12g}, {max(a, b):.12g}] ({exc})"
-        ) from None
+        )
+        err.remedy = Remedy("")  # no tolerance finds a lambda_z there: not "loosen --rtol"
+        raise err from None
     return x, float(clean(branch.at([x], guess(x)))["stretch"][0])
 
 

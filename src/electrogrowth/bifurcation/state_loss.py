@@ -33,7 +33,7 @@ from ..basestate.thresholds import LockedSearch, Threshold
 from ..basestate.tube import solve_base_state, threshold
 from ..continuation.events import EDGE, FULL, LOCK, THRESHOLD, bisect, brent
 from ..continuation.events import threshold_between as _lost_between
-from ..errors import NEAR_LOCK, BaseStateError, ConvergenceError, ParameterError
+from ..errors import NEAR_LOCK, BaseStateError, ConvergenceError, ParameterError, Remedy
 from ..model.controls import parse_control
 from ..model.layers import Tube
 from .along import LoadMargin, TubeAt, bounded_energy, clear_of_lock, has_lock
@@ -140,8 +140,10 @@ def threshold_between(at: TubeAt, params: Tube, x_ok: float, x_bad: float, rtol=
         f"the states from {bad:.12g} are not resolved ({near}){lost_from}: whether the"
         " state is lost there is not established"
     )
-    if locks:  # neither a looser rtol (the states' is fixed) nor collocation helps there
-        unresolved.remedy = NEAR_LOCK
+    # neither a looser rtol (the states' is fixed) nor collocation helps: a lock's remedy,
+    # or none (a charged film under suction: "loosen --rtol" failed the same at 1e-8,
+    # probe 12b D7)
+    unresolved.remedy = NEAR_LOCK if locks else Remedy("")
     return None, ok, unresolved
 
 
