@@ -145,7 +145,15 @@ def postbuckle(
     # the onset itself (eigenvalue zero to its tolerance, either sign) is no sign change
     say("the lowest eigenvalue's sign changes on the branch")
     found = secondaries(branch, pts if imperfection > 0 else pts[1:])
-    return dataclasses.replace(record(pts), ended=branch.ended, secondary=found)
+    # a zero located in a pattern of the elements' size is the mesh's, not a secondary
+    unresolved = [p.amplitude for p in pts if p.unresolved]
+    unresolved += [s.amplitude for s in found if s.element_scale]
+    return dataclasses.replace(
+        record(pts),
+        ended=branch.ended,
+        secondary=tuple(s for s in found if not s.element_scale),
+        unresolved_from=min(unresolved, default=math.nan),
+    )
 
 
 @dataclasses.dataclass(frozen=True)
@@ -318,7 +326,9 @@ def _record(tube, control, mode, linear, onset, size, section, curvature, pts):
         control=np.array([p.control for p in pts]),
         amplitude=np.array([p.amplitude for p in pts]),
         energy=full * np.array([p.energy for p in pts]),
-        eigenvalue=np.array([p.eigenvalue for p in pts]),
+        # the tube's stability is unknown where the lowest mode is the mesh's artefact
+        eigenvalue=np.array([math.nan if p.unresolved else p.eigenvalue for p in pts]),
+        element_scale=np.array([p.element_scale for p in pts]),
         curvature=float(curvature.value),
         curvature_error=float(curvature.error),
         imperfection=0.0,
