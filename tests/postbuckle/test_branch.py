@@ -63,3 +63,24 @@ def test_a_failed_step_is_halved():
     start = BranchPoint(1.0, 0.0, 0.0, np.zeros(2))
     pts = _branch(solve).follow(start, [0.2])
     assert [p.amplitude for p in pts] == [0.1, 0.2]
+
+
+# -- requested amplitudes (probe 12a D2) --------------------------------------------------
+
+
+@pytest.mark.slow
+def test_every_requested_amplitude_is_on_the_branch():
+    """probe 12a D2 (about 30 s): the amplitudes up to the curvature's points (2e-3 by
+    default) were dropped without a word (amplitude 0.003, points 3 gave a = 0 and 0.003;
+    amplitude 1e-6 the onset alone, ``ended`` empty). Now they are solved from the onset."""
+    from electrogrowth.model.layers import Layer, Tube
+    from electrogrowth.postbuckle.api import postbuckle
+
+    mucosa = Tube((Layer(1.1, shear_modulus=10.0), Layer(2.0)), stretch=1.0)
+    r = postbuckle(mucosa, 12, "growth[1].theta", amplitude=0.003, points=3, density=10, hoop=4)
+    assert r.amplitude[1:] == pytest.approx([0.001, 0.002, 0.003], rel=1e-9)
+    assert r.ended == "" and np.all(np.diff(r.control) > 0)  # supercritical: rising
+    tiny = postbuckle(mucosa, 12, "growth[1].theta", amplitude=1e-6, points=1, density=10, hoop=4)
+    assert tiny.amplitude == pytest.approx([0.0, 1e-6], abs=1e-15) and tiny.ended == ""
+    # c - c_c = c_2 a^2 = 7e-12 (c_2 = 6.78 on this mesh), below Newton's tolerance
+    assert tiny.control[1] == pytest.approx(tiny.control[0], abs=1e-9)

@@ -126,20 +126,17 @@ def postbuckle(
         x0, _ = newton(section, onset.x, invariant=True)
         x0 = _with_imperfection(section, x0, force)
         first = with_stability(section, BranchPoint(c0, float(a @ x0), section.energy(x0), x0))
-        head, follow_from = [first], first
-        amps = amps[amps > first.amplitude]
+        head, legs = [first], [(first, amps[amps > first.amplitude])]
+        skipped = amps[amps <= first.amplitude]
     else:
         branch = AmplitudeBranch(section, tube, control, eigenvalues=True, face=face)
-        head, follow_from = [start], near[-1]
-        amps = amps[amps > near[-1].amplitude]
+        # the amplitudes up to the curvature's points from the onset itself, the rest from
+        # the last of those (probe 12a D2: they were dropped without a word)
+        last = near[-1].amplitude
+        head, legs = [start], [(start, amps[amps <= last]), (near[-1], amps[amps > last])]
+        skipped = amps[:0]
     try:
-        pts = head + branch.follow(
-            follow_from,
-            amps,
-            direction=direction,
-            progress=_reporter(say, control),
-            keep_going=True,
-        )
+        pts = head + _follow(branch, legs, direction, _reporter(say, control))
     except Interrupted as stop:  # the finished points, as a result
         raise Interrupted(stop.signum, str(stop), partial=record(head + stop.partial)) from None
     # the onset itself (eigenvalue zero to its tolerance, either sign) is no sign change
@@ -150,9 +147,38 @@ def postbuckle(
     unresolved += [s.amplitude for s in found if s.element_scale]
     return dataclasses.replace(
         record(pts),
-        ended=branch.ended,
+        ended=branch.ended or _skipped_note(skipped, head[0].amplitude),
         secondary=tuple(s for s in found if not s.element_scale),
         unresolved_from=min(unresolved, default=math.nan),
+    )
+
+
+def _follow(branch, legs, direction, progress) -> list:
+    """The points of each leg (a start point, its amplitudes) in turn; a leg that ends
+    early (``branch.ended``) ends the branch. Interrupted carries every finished point."""
+    done: list = []
+    for first, amplitudes in legs:
+        if len(amplitudes) == 0:
+            continue
+        try:
+            done += branch.follow(
+                first, amplitudes, direction=direction, progress=progress, keep_going=True
+            )
+        except Interrupted as stop:
+            raise Interrupted(stop.signum, str(stop), partial=done + stop.partial) from None
+        if branch.ended:
+            break
+    return done
+
+
+def _skipped_note(skipped, first: float) -> str:
+    """Why the imperfect path has no point at the amplitudes ``skipped`` ("" if none)."""
+    if len(skipped) == 0:
+        return ""
+    shown = ", ".join(f"{a:.4g}" for a in skipped)
+    return (
+        f"no point at amplitude {shown}: the imperfect path starts at amplitude {first:.4g}"
+        " (90 % of the way to onset), and amplitudes below it lie before its start"
     )
 
 
