@@ -84,3 +84,25 @@ def test_every_requested_amplitude_is_on_the_branch():
     assert tiny.amplitude == pytest.approx([0.0, 1e-6], abs=1e-15) and tiny.ended == ""
     # c - c_c = c_2 a^2 = 7e-12 (c_2 = 6.78 on this mesh), below Newton's tolerance
     assert tiny.control[1] == pytest.approx(tiny.control[0], abs=1e-9)
+
+
+@pytest.mark.parametrize(
+    "kwargs, message",
+    [
+        ({"amplitude": 1e9}, "amplitude = 1000000000.0 is out of range; valid range: > 0 and < 2"),
+        ({"amplitude": 2.0}, "valid range: > 0 and < 2"),
+        ({"density": 0.0}, "density = 0.0 is out of range; valid range: > 0 and <= 2000"),
+    ],
+    ids=["amplitude-1e9", "amplitude-outer-radius", "density-0"],
+)
+def test_out_of_range_amplitude_and_density_are_one_line(kwargs, message):
+    """probe 12a doubts 1 and 7: amplitude 1e9 ran (exit 0, a branch ended at a point not
+    in the table); density 0 was refused with "valid range: 0 to 2000"."""
+    from electrogrowth.errors import ParameterError
+    from electrogrowth.model.layers import Layer, Tube
+    from electrogrowth.postbuckle.api import postbuckle
+
+    mucosa = Tube((Layer(1.1, shear_modulus=10.0), Layer(2.0)), stretch=1.0)
+    with pytest.raises(ParameterError) as caught:
+        postbuckle(mucosa, 12, "growth[1].theta", **{"amplitude": 0.01, **kwargs})
+    assert message in str(caught.value) and "\n" not in str(caught.value)

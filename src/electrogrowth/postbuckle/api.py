@@ -86,14 +86,15 @@ def postbuckle(
     points in ``partial``)
     """
     m, n = _mode(mode)
-    if not (math.isfinite(amplitude) and amplitude > 0):
-        raise ParameterError(f"amplitude = {amplitude!r} is out of range; valid range: > 0")
+    _check_amplitude(amplitude, tube)
     if not (isinstance(points, int) and 1 <= points <= 1000):
         raise ParameterError(f"points = {points!r} is out of range; valid range: 1 to 1000")
     if not (math.isfinite(imperfection) and imperfection >= 0):
         raise ParameterError(f"imperfection = {imperfection!r} is out of range; valid: >= 0")
     if not (math.isfinite(density) and 0 < density <= 2000):
-        raise ParameterError(f"density = {density!r} is out of range; valid range: 0 to 2000")
+        raise ParameterError(
+            f"density = {density!r} is out of range; valid range: > 0 and <= 2000"
+        )
     for name, value in (("hoop", hoop), ("axial", axial)):
         if value is not None and not (isinstance(value, int) and 1 <= value <= 1000):
             raise ParameterError(f"{name} = {value!r} is out of range; valid range: 1 to 1000")
@@ -151,6 +152,19 @@ def postbuckle(
         secondary=tuple(s for s in found if not s.element_scale),
         unresolved_from=min(unresolved, default=math.nan),
     )
+
+
+def _check_amplitude(amplitude, tube: Tube) -> None:
+    """ParameterError unless 0 < ``amplitude`` < the outer radius R_N (units R_i): a fold
+    as deep as the tube's radius would bring a face to the axis (probe 12a: 1e9 ran, and
+    the branch ended without a word on why)."""
+    outer = tube.radii[-1]
+    if not (math.isfinite(amplitude) and 0 < amplitude < outer):
+        raise ParameterError(
+            f"amplitude = {amplitude!r} is out of range; valid range: > 0 and < {outer:g}"
+            " (the outer radius, units R_i: a fold as deep as the tube's radius would bring"
+            " a face to the axis)"
+        )
 
 
 def _follow(branch, legs, direction, progress) -> list:
