@@ -4,6 +4,7 @@ eigenvalue located on a subcritical branch, where it must be the limit point of 
 control (d c / d a = 0: at fixed control the tangent is singular exactly there)."""
 
 import csv
+import importlib.util
 import json
 
 import numpy as np
@@ -165,6 +166,10 @@ def test_element_scale_instability_is_no_secondary_and_says_so():
     record = fine.as_dict()
     assert record["stability_unresolved_from"] == pytest.approx(0.1)
     assert "not established on this mesh" in record["stability_note"]
+    if importlib.util.find_spec("xarray") is not None:
+        data = fine.to_xarray()
+        assert data["element_scale_fraction"].values[-1] > 0.5
+        assert data.attrs["stability_unresolved_from"] == pytest.approx(0.1)
     coarse = postbuckle(tube, (0, 2), "growth", amplitude=0.1, points=2, density=10, axial=4)
     assert coarse.secondary == () and coarse.eigenvalue[-1] > 0
     assert np.isnan(coarse.unresolved_from) and coarse.as_dict()["stability_note"] is None

@@ -154,6 +154,7 @@ class PostbuckleResult:
                 "lowest_eigenvalue": ("point", self.eigenvalue, {"units": "mu / R_i^2"}),
                 "subharmonic_fraction": ("point", self.subharmonic),
                 "pattern_period": ("point", self.pattern, {"units": "wavelengths"}),
+                "element_scale_fraction": ("point", self.element_scale),
             },
             coords={"amplitude": ("point", self.amplitude, {"units": "R_i"})},
             attrs={
@@ -164,6 +165,7 @@ class PostbuckleResult:
                 "curvature": self.curvature,
                 "curvature_error": self.curvature_error,
                 "periods": self.periods,
+                "stability_unresolved_from": self.unresolved_from,
             },
         )
 
