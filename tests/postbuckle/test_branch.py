@@ -63,3 +63,46 @@ def test_a_failed_step_is_halved():
     start = BranchPoint(1.0, 0.0, 0.0, np.zeros(2))
     pts = _branch(solve).follow(start, [0.2])
     assert [p.amplitude for p in pts] == [0.1, 0.2]
+
+
+# -- requested amplitudes (probe 12a D2) --------------------------------------------------
+
+
+@pytest.mark.slow
+def test_every_requested_amplitude_is_on_the_branch():
+    """probe 12a D2 (about 30 s): the amplitudes up to the curvature's points (2e-3 by
+    default) were dropped without a word (amplitude 0.003, points 3 gave a = 0 and 0.003;
+    amplitude 1e-6 the onset alone, ``ended`` empty). Now they are solved from the onset."""
+    from electrogrowth.model.layers import Layer, Tube
+    from electrogrowth.postbuckle.api import postbuckle
+
+    mucosa = Tube((Layer(1.1, shear_modulus=10.0), Layer(2.0)), stretch=1.0)
+    r = postbuckle(mucosa, 12, "growth[1].theta", amplitude=0.003, points=3, density=10, hoop=4)
+    assert r.amplitude[1:] == pytest.approx([0.001, 0.002, 0.003], rel=1e-9)
+    assert r.ended == "" and np.all(np.diff(r.control) > 0)  # supercritical: rising
+    tiny = postbuckle(mucosa, 12, "growth[1].theta", amplitude=1e-6, points=1, density=10, hoop=4)
+    assert tiny.amplitude == pytest.approx([0.0, 1e-6], abs=1e-15) and tiny.ended == ""
+    # c - c_c = c_2 a^2 = 7e-12 (c_2 = 6.78 on this mesh), below Newton's tolerance
+    assert tiny.control[1] == pytest.approx(tiny.control[0], abs=1e-9)
+
+
+@pytest.mark.parametrize(
+    "kwargs, message",
+    [
+        ({"amplitude": 1e9}, "amplitude = 1000000000.0 is out of range; valid range: > 0 and < 2"),
+        ({"amplitude": 2.0}, "valid range: > 0 and < 2"),
+        ({"density": 0.0}, "density = 0.0 is out of range; valid range: > 0 and <= 2000"),
+    ],
+    ids=["amplitude-1e9", "amplitude-outer-radius", "density-0"],
+)
+def test_out_of_range_amplitude_and_density_are_one_line(kwargs, message):
+    """probe 12a doubts 1 and 7: amplitude 1e9 ran (exit 0, a branch ended at a point not
+    in the table); density 0 was refused with "valid range: 0 to 2000"."""
+    from electrogrowth.errors import ParameterError
+    from electrogrowth.model.layers import Layer, Tube
+    from electrogrowth.postbuckle.api import postbuckle
+
+    mucosa = Tube((Layer(1.1, shear_modulus=10.0), Layer(2.0)), stretch=1.0)
+    with pytest.raises(ParameterError) as caught:
+        postbuckle(mucosa, 12, "growth[1].theta", **{"amplitude": 0.01, **kwargs})
+    assert message in str(caught.value) and "\n" not in str(caught.value)

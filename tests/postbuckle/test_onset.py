@@ -86,3 +86,23 @@ def test_a_mesh_too_coarse_along_the_faces_says_so():
     with pytest.raises(ConvergenceError, match=message + r".*too coarse") as exc:
         postbuckle(tube, 24, "voltage", density=10, hoop=4, points=2)
     assert "finer mesh" in exc.value.remedy.cli
+
+
+def test_an_element_scale_refusal_gives_postbuckle_s_own_remedy():
+    """probe 12a D3: Tube.uniform(1.8, length=1), (0, 1), on (8) x 16 is unstable in the
+    face's harmonic 16 of 16 long before its linear onset 1.956 (the mixed elements'
+    artefact). The refusal took the scan's remedy ("raise --m-max / --n-max, try the other
+    --side"), options postbuckle lacks, and its message advised "a smaller guess, more
+    steps or a finer mesh" (a finer mesh along the face makes it worse). Now it names the
+    pattern and the remedy that works ((16) x 4: onset 1.95663)."""
+    from electrogrowth.errors import NoBifurcationFound
+    from electrogrowth.postbuckle.meridian import Meridian
+
+    tube = Tube.uniform(1.8, length=1.0)
+    model = Meridian(tube, 1, MeshSize((8,), 16))
+    with pytest.raises(NoBifurcationFound, match="of the elements' size") as caught:
+        fe_onset(model, tube, "growth", critical_value(tube, 0, 1, "growth").value)
+    remedy = caught.value.remedy
+    assert "--m-max" not in remedy and "--side" not in remedy
+    assert "--axial" in remedy.cli and "axial=" in remedy.python
+    assert "guess" not in str(caught.value)

@@ -4,6 +4,7 @@ eigenvalue located on a subcritical branch, where it must be the limit point of 
 control (d c / d a = 0: at fixed control the tangent is singular exactly there)."""
 
 import csv
+import importlib.util
 import json
 
 import numpy as np
@@ -93,3 +94,82 @@ def test_sign_change_on_a_subcritical_branch_is_the_control_limit_point(tmp_path
     assert [r["lowest_mode"] for r in rows] == ["symmetric"] * 11
     signs = [float(r["lowest_eigenvalue"]) < 0 for r in rows[1:]]
     assert signs == [True] * 9 + [False]
+
+
+# -- element-scale eigenvectors (probe 12a D1) -------------------------------------------
+# The Q2 / discontinuous-P1 elements lose stability under finite compression in patterns of
+# their own size, at loads that fall as the mesh is refined. Before the check, such a mode
+# came out as a located "secondary (symmetric)" point and as negative eigenvalues on
+# uncharged tubes whose continuum is stable (the default mesh of the uniform tube below:
+# a secondary at a = 0.070, -1142 at a = 0.1; (5) x 16: a secondary at 0.069, -285).
+
+
+def test_element_scale_fraction_of_known_fields():
+    """cos(q Theta) with q up to half the elements along the sector is resolved (share 0),
+    the vertices' alternation (q = 2 N m / 2, N = 8 elements along pi / m) is not (1)."""
+    from electrogrowth.postbuckle.stability import element_scale_fraction
+
+    section = Section(BILAYER, 12, MeshSize((1, 2), 8))
+    for q, share in ((12, 0.0), (48, 0.0), (96, 1.0), (84, 1.0)):
+        z = np.zeros(section.basis.N)
+        for comp, wave in (("u^1^1", np.cos), ("u^2^1", np.sin)):
+            dofs = section.basis.get_dofs(elements=True).all(comp)
+            z[dofs] = wave(q * section.basis.doflocs[1, dofs])
+        assert element_scale_fraction(section, z) == pytest.approx(share, abs=1e-9), q
+
+
+def test_uniform_tube_s_spurious_mode_is_element_scale():
+    """Tube.uniform(1.8, length=1) grown to g = 1.4, far below its first (0, j) root (1.956):
+    on (8) x 16 the lowest eigenvalue is -485 in the face's harmonic 16 of 16 (the mesh's),
+    on (8) x 4 positive in a resolved pattern."""
+    from electrogrowth.postbuckle.meridian import Meridian
+    from electrogrowth.postbuckle.newton import loaded
+    from electrogrowth.postbuckle.onset import lowest_eigenvalue
+    from electrogrowth.postbuckle.stability import is_element_scale
+
+    tube = Tube.uniform(1.8, length=1.0)
+    for axial, spurious in ((16, True), (4, False)):
+        model = Meridian(tube, 1, MeshSize((8,), axial))
+        x = loaded(model, tube.at("growth", 1.4), steps=3)
+        lam, z = lowest_eigenvalue(model, x, vector=True)
+        assert (lam < 0) == spurious and is_element_scale(model, z) == spurious
+
+
+def test_no_sign_change_is_sought_across_an_element_scale_point():
+    """A negative lowest eigenvalue of the elements' size has no known sign for the tube:
+    ``secondaries`` neither locates a zero next to it (it used to: the branch below is
+    never touched, so any attempt fails) nor elsewhere."""
+    from electrogrowth.postbuckle.branch import BranchPoint
+    from electrogrowth.postbuckle.stability import secondaries
+
+    x = np.zeros(3)
+    pts = [
+        BranchPoint(1.0, 0.05, 0.0, x, eigenvalue=0.03, element_scale=0.004),
+        BranchPoint(1.1, 0.10, 0.0, x, eigenvalue=-1142.0, element_scale=0.99),
+        BranchPoint(1.2, 0.15, 0.0, x, eigenvalue=-3472.0, element_scale=0.99),
+    ]
+    assert pts[1].unresolved and not pts[0].unresolved
+    assert secondaries(None, pts) == ()
+
+
+@pytest.mark.slow
+def test_element_scale_instability_is_no_secondary_and_says_so():
+    """probe 12a D1 (about 40 s): Tube.uniform(1.5, length=3), mode (0, 2), growth, on
+    (5) x 16 reported a located secondary at a = 0.0694 and -285 at a = 0.1, where (5) x 4
+    gives +0.119; now the point at 0.1 has no eigenvalue (NaN: the mesh's mode), no
+    secondary, and ``unresolved_from`` says where the stability stops being known."""
+    tube = Tube.uniform(1.5, length=3.0)
+    fine = postbuckle(tube, (0, 2), "growth", amplitude=0.1, points=2, density=10, axial=16)
+    assert fine.secondary == ()
+    assert np.isnan(fine.eigenvalue[-1]) and fine.lowest_mode[-1] == "element-scale"
+    assert fine.eigenvalue[1] > 0 and fine.unresolved_from == pytest.approx(0.1)
+    record = fine.as_dict()
+    assert record["stability_unresolved_from"] == pytest.approx(0.1)
+    assert "not established on this mesh" in record["stability_note"]
+    if importlib.util.find_spec("xarray") is not None:
+        data = fine.to_xarray()
+        assert data["element_scale_fraction"].values[-1] > 0.5
+        assert data.attrs["stability_unresolved_from"] == pytest.approx(0.1)
+    coarse = postbuckle(tube, (0, 2), "growth", amplitude=0.1, points=2, density=10, axial=4)
+    assert coarse.secondary == () and coarse.eigenvalue[-1] > 0
+    assert np.isnan(coarse.unresolved_from) and coarse.as_dict()["stability_note"] is None

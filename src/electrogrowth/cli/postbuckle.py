@@ -149,6 +149,8 @@ def run_postbuckle(args) -> int:
         _write(result, Path(args.out), _columns(result, control, scales))
     if result.ended:
         print(f"electrogrowth: warning: {result.ended}", file=sys.stderr)
+    if result.stability_note:
+        print(f"electrogrowth: warning: {result.stability_note}", file=sys.stderr)
     physical = _physical(result, control, scales)
     if args.json:
         branch = dict(_columns(result, control, scales))

@@ -86,14 +86,15 @@ def postbuckle(
     points in ``partial``)
     """
     m, n = _mode(mode)
-    if not (math.isfinite(amplitude) and amplitude > 0):
-        raise ParameterError(f"amplitude = {amplitude!r} is out of range; valid range: > 0")
+    _check_amplitude(amplitude, tube)
     if not (isinstance(points, int) and 1 <= points <= 1000):
         raise ParameterError(f"points = {points!r} is out of range; valid range: 1 to 1000")
     if not (math.isfinite(imperfection) and imperfection >= 0):
         raise ParameterError(f"imperfection = {imperfection!r} is out of range; valid: >= 0")
     if not (math.isfinite(density) and 0 < density <= 2000):
-        raise ParameterError(f"density = {density!r} is out of range; valid range: 0 to 2000")
+        raise ParameterError(
+            f"density = {density!r} is out of range; valid range: > 0 and <= 2000"
+        )
     for name, value in (("hoop", hoop), ("axial", axial)):
         if value is not None and not (isinstance(value, int) and 1 <= value <= 1000):
             raise ParameterError(f"{name} = {value!r} is out of range; valid range: 1 to 1000")
@@ -126,26 +127,73 @@ def postbuckle(
         x0, _ = newton(section, onset.x, invariant=True)
         x0 = _with_imperfection(section, x0, force)
         first = with_stability(section, BranchPoint(c0, float(a @ x0), section.energy(x0), x0))
-        head, follow_from = [first], first
-        amps = amps[amps > first.amplitude]
+        head, legs = [first], [(first, amps[amps > first.amplitude])]
+        skipped = amps[amps <= first.amplitude]
     else:
         branch = AmplitudeBranch(section, tube, control, eigenvalues=True, face=face)
-        head, follow_from = [start], near[-1]
-        amps = amps[amps > near[-1].amplitude]
+        # the amplitudes up to the curvature's points from the onset itself, the rest from
+        # the last of those (probe 12a D2: they were dropped without a word)
+        last = near[-1].amplitude
+        head, legs = [start], [(start, amps[amps <= last]), (near[-1], amps[amps > last])]
+        skipped = amps[:0]
     try:
-        pts = head + branch.follow(
-            follow_from,
-            amps,
-            direction=direction,
-            progress=_reporter(say, control),
-            keep_going=True,
-        )
+        pts = head + _follow(branch, legs, direction, _reporter(say, control))
     except Interrupted as stop:  # the finished points, as a result
         raise Interrupted(stop.signum, str(stop), partial=record(head + stop.partial)) from None
     # the onset itself (eigenvalue zero to its tolerance, either sign) is no sign change
     say("the lowest eigenvalue's sign changes on the branch")
     found = secondaries(branch, pts if imperfection > 0 else pts[1:])
-    return dataclasses.replace(record(pts), ended=branch.ended, secondary=found)
+    # a zero located in a pattern of the elements' size is the mesh's, not a secondary
+    unresolved = [p.amplitude for p in pts if p.unresolved]
+    unresolved += [s.amplitude for s in found if s.element_scale]
+    return dataclasses.replace(
+        record(pts),
+        ended=branch.ended or _skipped_note(skipped, head[0].amplitude),
+        secondary=tuple(s for s in found if not s.element_scale),
+        unresolved_from=min(unresolved, default=math.nan),
+    )
+
+
+def _check_amplitude(amplitude, tube: Tube) -> None:
+    """ParameterError unless 0 < ``amplitude`` < the outer radius R_N (units R_i): a fold
+    as deep as the tube's radius would bring a face to the axis (probe 12a: 1e9 ran, and
+    the branch ended without a word on why)."""
+    outer = tube.radii[-1]
+    if not (math.isfinite(amplitude) and 0 < amplitude < outer):
+        raise ParameterError(
+            f"amplitude = {amplitude!r} is out of range; valid range: > 0 and < {outer:g}"
+            " (the outer radius, units R_i: a fold as deep as the tube's radius would bring"
+            " a face to the axis)"
+        )
+
+
+def _follow(branch, legs, direction, progress) -> list:
+    """The points of each leg (a start point, its amplitudes) in turn; a leg that ends
+    early (``branch.ended``) ends the branch. Interrupted carries every finished point."""
+    done: list = []
+    for first, amplitudes in legs:
+        if len(amplitudes) == 0:
+            continue
+        try:
+            done += branch.follow(
+                first, amplitudes, direction=direction, progress=progress, keep_going=True
+            )
+        except Interrupted as stop:
+            raise Interrupted(stop.signum, str(stop), partial=done + stop.partial) from None
+        if branch.ended:
+            break
+    return done
+
+
+def _skipped_note(skipped, first: float) -> str:
+    """Why the imperfect path has no point at the amplitudes ``skipped`` ("" if none)."""
+    if len(skipped) == 0:
+        return ""
+    shown = ", ".join(f"{a:.4g}" for a in skipped)
+    return (
+        f"no point at amplitude {shown}: the imperfect path starts at amplitude {first:.4g}"
+        " (90 % of the way to onset), and amplitudes below it lie before its start"
+    )
 
 
 @dataclasses.dataclass(frozen=True)
@@ -318,7 +366,9 @@ def _record(tube, control, mode, linear, onset, size, section, curvature, pts):
         control=np.array([p.control for p in pts]),
         amplitude=np.array([p.amplitude for p in pts]),
         energy=full * np.array([p.energy for p in pts]),
-        eigenvalue=np.array([p.eigenvalue for p in pts]),
+        # the tube's stability is unknown where the lowest mode is the mesh's artefact
+        eigenvalue=np.array([math.nan if p.unresolved else p.eigenvalue for p in pts]),
+        element_scale=np.array([p.element_scale for p in pts]),
         curvature=float(curvature.value),
         curvature_error=float(curvature.error),
         imperfection=0.0,

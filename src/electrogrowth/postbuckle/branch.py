@@ -31,7 +31,7 @@ from ..errors import ConvergenceError, ParameterError
 from ..interrupts import Interrupted
 from .newton import MAX_ITERATIONS, RESIDUAL_TOL, fe_error
 from .onset import lowest_eigenvalue
-from .stability import classify
+from .stability import ELEMENT_SCALE, classify, element_scale_fraction
 
 #: relative step of the central difference dR/dc
 DC = 1e-6
@@ -53,12 +53,21 @@ class BranchPoint:
     #: in wavelengths of the mode (1: the mode's family; 2: period doubling; 0: not computed)
     subharmonic: float = float("nan")
     pattern: int = 0
+    #: its share in patterns the mesh does not resolve (stability.element_scale_fraction)
+    element_scale: float = float("nan")
+
+    @property
+    def unresolved(self) -> bool:
+        """Whether the lowest eigenvalue is negative in a pattern of the elements' size: the
+        mesh's artefact, which leaves the tube's stability at this point unknown."""
+        return self.eigenvalue < 0 and self.element_scale > ELEMENT_SCALE
 
 
 def with_stability(section, point: BranchPoint) -> BranchPoint:
     """``point`` with its lowest eigenvalue and the pattern of its eigenvector."""
     point.eigenvalue, z = lowest_eigenvalue(section, point.x, vector=True)
     point.subharmonic, point.pattern = classify(section, z)
+    point.element_scale = element_scale_fraction(section, z)
     return point
 
 

@@ -18,7 +18,7 @@ import numpy as np
 import scipy.optimize as so
 import scipy.sparse.linalg as spla
 
-from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
+from ..errors import ConvergenceError, NoBifurcationFound, ParameterError, Remedy
 from ..model.layers import Tube
 from .inertia import count_below, multiplier_mask
 from .newton import fe_error, loaded, newton
@@ -104,6 +104,47 @@ class FEOnset:
     path: tuple[tuple[float, float], ...]
 
 
+#: postbuckle's own remedies where the FE onset is refused (probe 12a D3: the scan's
+#: "raise --m-max / --n-max, try the other --side" named options postbuckle lacks)
+ELEMENT_SCALE_REMEDY = Remedy(
+    "the mixed elements lose stability under compression in patterns of their own size, the"
+    " earlier the more elements along the face: give fewer elements along the sector or"
+    " window (--hoop, --axial) or more across the wall (--density)",
+    python="the mixed elements lose stability under compression in patterns of their own"
+    " size, the earlier the more elements along the face: give fewer elements along the"
+    " sector or window (hoop=, axial=) or more across the wall (density=)",
+)
+FINER_MESH = Remedy(
+    "try a finer mesh (--density, --hoop or --axial)",
+    python="try a finer mesh (density=, hoop= or axial=)",
+)
+
+
+def _unstable_before(section, x, control: str, c: float, guess: float) -> NoBifurcationFound:
+    """The refusal of a path already unstable at ``c`` = 0.9 of the way to the linear onset
+    ``guess``: in a pattern of the elements' size (the mesh's artefact), or in one the mesh
+    resolves (another mode or a crease comes first)."""
+    from .stability import is_element_scale  # stability imports this module
+
+    _, z = lowest_eigenvalue(section, x, vector=True)
+    exc = NoBifurcationFound(
+        f"the finite-element tube is already unstable at {control} = {c:.6g}, 0.9 of the way"
+        f" to the linear onset {guess:.6g}"
+    )
+    if is_element_scale(section, z):
+        exc.args = (f"{exc.args[0]}, in a pattern of the elements' size",)
+        exc.remedy = ELEMENT_SCALE_REMEDY
+    else:
+        exc.args = (f"{exc.args[0]}, in a pattern the mesh resolves",)
+        exc.remedy = Remedy(
+            "another mode or a crease may come first (`electrogrowth critical` gives the"
+            " verdict); else " + FINER_MESH.cli,
+            python="another mode or a crease may come first (the critical point's verdict);"
+            " else " + FINER_MESH.python,
+        )
+    return exc
+
+
 def fe_onset(
     section,
     tube: Tube,
@@ -139,11 +180,7 @@ def fe_onset(
         path.append((float(c), at(float(c))))
     (c_prev, lam_prev), (c, lam) = path[-2], path[-1]
     if lam <= 0:
-        raise NoBifurcationFound(
-            f"the finite-element tube is already unstable at {control} = {c:.6g}, 0.9 of"
-            " the way to the guessed onset (a guess past the onset, or a mesh unstable in"
-            " modes of its elements' size: give a smaller guess, more steps or a finer mesh)"
-        )
+        raise _unstable_before(section, states[c][0], control, c, guess)
     while lam > 0:
         # the secant's zero, 1 % of the span past it, at most 10 % of the span ahead
         zero = c - lam * (c - c_prev) / (lam - lam_prev) if lam != lam_prev else c + span
@@ -151,9 +188,12 @@ def fe_onset(
         c_prev, lam_prev = c, lam
         c = c + float(ahead)
         if abs(c - start) > 2 * abs(span):
-            raise NoBifurcationFound(
-                f"the lowest eigenvalue does not change sign up to {control} = {c:.6g}"
+            exc = NoBifurcationFound(
+                f"the finite-element tube's lowest eigenvalue does not change sign up to"
+                f" {control} = {c:.6g}, twice the way to the linear onset {guess:.6g}"
             )
+            exc.remedy = FINER_MESH
+            raise exc
         lam = at(c)
         path.append((float(c), lam))
     value = so.brentq(at, c_prev, c, xtol=xtol, rtol=4 * np.finfo(float).eps)

@@ -10,7 +10,7 @@ import numpy as np
 
 from ..model.layers import Tube
 from .section import MeshSize
-from .stability import Secondary, pattern_name
+from .stability import ELEMENT_SCALE, Secondary, pattern_name
 
 
 @dataclasses.dataclass(frozen=True)
@@ -58,11 +58,38 @@ class PostbuckleResult:
     pattern: np.ndarray = dataclasses.field(default_factory=lambda: np.zeros(0, int))
     secondary: tuple[Secondary, ...] = ()
     curvature_error: float = math.nan
+    #: each point's lowest eigenvector's share in patterns the mesh does not resolve
+    element_scale: np.ndarray = dataclasses.field(default_factory=lambda: np.zeros(0))
+    #: the first amplitude where the lowest eigenvalue is negative in a pattern of the
+    #: elements' size (its ``eigenvalue`` is NaN there: the tube's stability is not known),
+    #: NaN if none
+    unresolved_from: float = math.nan
+
+    @property
+    def stability_note(self) -> str:
+        """Why the branch's stability is not established past some amplitude, or ""."""
+        if math.isnan(self.unresolved_from):
+            return ""
+        where = "sector (--hoop)" if self.n == 0 else "window (--axial)"
+        return (
+            f"from amplitude {self.unresolved_from:.6g} on the lowest eigenvalue is negative in"
+            " a pattern of the elements' size (half a wavelength shorter than two elements),"
+            " the mixed elements' artefact under compression, not the tube's: the branch's"
+            " stability there is not established on this mesh (lowest_eigenvalue null) and"
+            " no secondary point is reported there; compare a mesh with another ratio of"
+            f" elements along the {where} to elements across the wall (--density)"
+        )
 
     @property
     def lowest_mode(self) -> list[str | None]:
-        """The name of each point's lowest eigenvector's pattern (None: not computed)."""
-        return [pattern_name(int(d)) if d > 0 else None for d in self.pattern]
+        """The name of each point's lowest eigenvector's pattern (None: not computed;
+        "element-scale" where its negative eigenvalue is the mesh's, ``eigenvalue`` NaN)."""
+        names = [pattern_name(int(d)) if d > 0 else None for d in self.pattern]
+        unresolved = self.element_scale > ELEMENT_SCALE
+        return [
+            "element-scale" if k < len(unresolved) and unresolved[k] and np.isnan(v) else name
+            for k, (name, v) in enumerate(zip(names, self.eigenvalue))
+        ]
 
     @property
     def mode(self) -> tuple[int, int]:
@@ -105,8 +132,13 @@ class PostbuckleResult:
                 "lowest_eigenvalue": [None if np.isnan(v) else v for v in self.eigenvalue],
                 "lowest_mode": self.lowest_mode,
                 "subharmonic_fraction": [None if np.isnan(v) else v for v in self.subharmonic],
+                "element_scale_fraction": [None if np.isnan(v) else v for v in self.element_scale],
             },
             "secondary": [s.as_dict() for s in self.secondary],
+            "stability_unresolved_from": (
+                None if math.isnan(self.unresolved_from) else self.unresolved_from
+            ),
+            "stability_note": self.stability_note or None,
             "ended": self.ended or None,
             "tube": self.tube.record(),
         }
@@ -122,6 +154,7 @@ class PostbuckleResult:
                 "lowest_eigenvalue": ("point", self.eigenvalue, {"units": "mu / R_i^2"}),
                 "subharmonic_fraction": ("point", self.subharmonic),
                 "pattern_period": ("point", self.pattern, {"units": "wavelengths"}),
+                "element_scale_fraction": ("point", self.element_scale),
             },
             coords={"amplitude": ("point", self.amplitude, {"units": "R_i"})},
             attrs={
@@ -132,6 +165,7 @@ class PostbuckleResult:
                 "curvature": self.curvature,
                 "curvature_error": self.curvature_error,
                 "periods": self.periods,
+                "stability_unresolved_from": self.unresolved_from,
             },
         )
 

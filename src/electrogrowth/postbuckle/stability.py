@@ -81,6 +81,43 @@ def face_harmonic(model, z: np.ndarray) -> tuple[int, float]:
     return best[0], best[1]
 
 
+def element_scale_fraction(model, z: np.ndarray) -> float:
+    """The share of ``z``'s squared nodal values (u_R and u_Y at every Q2 node, row by row
+    along the sector or window, mirrored into one period) in harmonics cos(i pi Y / extent)
+    with i > N / 2, N the elements along it: patterns whose half wavelength is shorter than
+    two elements, which the mesh does not resolve. The Q2 / discontinuous-P1 pair loses
+    stability under finite compression in such patterns at loads that fall as the mesh is
+    refined (Auricchio, Beirao da Veiga, Lovadina and Reali 2005; probe 12a D1: a uniform
+    tube on (8) x 16 at -485 in harmonic 16 of 16 at g = 1.4, where the continuum is
+    stable to 1.956), so such an eigenvector says nothing about the continuum's stability.
+    All Q2 nodes, not the vertices alone: a pattern can alternate between midside nodes."""
+    energy = 0.0
+    for name, parity in (("u^1^1", 1.0), ("u^2^1", -1.0)):  # u_R even, u_Y odd at the ends
+        dofs = model.basis.get_dofs(elements=True).all(name)
+        R, Y = model.basis.doflocs[:, dofs]
+        # rows of constant R, each along Y (R rounded: a midside node's R can differ from
+        # its row's vertices' in the last bit, which would reorder the row)
+        order = np.lexsort((Y, np.round(R, 10)))
+        f = z[dofs[order]].reshape(-1, 2 * model.size.hoop + 1)
+        f = np.concatenate([f, parity * f[:, -2:0:-1]], axis=1)
+        energy = energy + (np.abs(np.fft.rfft(f, axis=-1)) ** 2).sum(axis=0)
+    total = float(np.sum(energy))
+    if total == 0.0:
+        return 0.0
+    unresolved = np.arange(len(energy)) > model.size.hoop / 2
+    return float(energy[unresolved].sum() / total)
+
+
+#: the element-scale share above which an eigenvector is the mesh's, not the tube's
+ELEMENT_SCALE = 0.5
+
+
+def is_element_scale(model, z: np.ndarray) -> bool:
+    """Whether most of ``z`` lies in patterns the mesh does not resolve
+    (:func:`element_scale_fraction`)."""
+    return element_scale_fraction(model, z) > ELEMENT_SCALE
+
+
 def classify(model, z: np.ndarray) -> tuple[float, int]:
     """(the fraction of ``z`` outside the mode's family, the period of its pattern in
     wavelengths of the mode: the smallest divisor d of ``periods`` whose patterns hold
@@ -106,6 +143,8 @@ class Secondary:
     kind: str
     subharmonic: float
     located: bool
+    #: the eigenvector there is of the elements' size (is_element_scale): not the tube's
+    element_scale: bool = False
 
     def as_dict(self) -> dict:
         return dataclasses.asdict(self)
@@ -115,10 +154,15 @@ def secondaries(branch, points) -> tuple[Secondary, ...]:
     """The sign changes of the lowest eigenvalue between consecutive ``points`` (branch
     points of the AmplitudeBranch ``branch``, eigenvalues computed), each located by
     Brent's method on the amplitude (every evaluation a branch point solved from the
-    interpolated guess and its lowest eigenvalue)."""
+    interpolated guess and its lowest eigenvalue). A point whose negative lowest eigenvalue
+    is of the elements' size (``unresolved``) has no known sign: no change is sought on
+    either side of it. A located zero whose eigenvector is of the elements' size is
+    returned with ``element_scale`` set (the caller reports it as unresolved, not as a
+    secondary)."""
     found = []
     for p, q in zip(points, points[1:]):
-        if np.isfinite(p.eigenvalue) and np.isfinite(q.eigenvalue):
+        known = not (p.unresolved or q.unresolved)
+        if known and np.isfinite(p.eigenvalue) and np.isfinite(q.eigenvalue):
             if (p.eigenvalue < 0) != (q.eigenvalue < 0):
                 found.append(_locate(branch, p, q))
     return tuple(found)
@@ -148,14 +192,18 @@ def _locate(branch, p, q) -> Secondary:
         _, z = lowest_eigenvalue(model, q.x, vector=True)
         located = False
     subharmonic, period = classify(model, z)
-    return Secondary(float(c), float(a), pattern_name(period), subharmonic, located)
+    kind = pattern_name(period)
+    return Secondary(float(c), float(a), kind, subharmonic, located, is_element_scale(model, z))
 
 
 __all__ = [
     "PATTERNS",
     "Secondary",
+    "ELEMENT_SCALE",
     "classify",
+    "element_scale_fraction",
     "face_harmonic",
+    "is_element_scale",
     "outside_fraction",
     "pattern_name",
     "secondaries",
