@@ -16,12 +16,13 @@ from ..errors import ConvergenceError, NoBifurcationFound, ParameterError
 from ..interrupts import Interrupted
 from ..model.layers import Tube
 from .branch import AmplitudeBranch, BranchPoint, amplitude_vector, with_stability
+from .harmonics import face_harmonic
 from .meridian import Meridian, meridian_size, window
 from .newton import fe_error, newton
 from .onset import fe_onset, start_value
 from .result import PostbuckleResult
 from .section import Section, mesh_size
-from .stability import face_harmonic, secondaries
+from .stability import secondaries
 from .wall import check_periods
 
 
@@ -256,7 +257,7 @@ CURVATURE_SCALES = 3
 
 def _check_onset_pattern(section, onset, linear: float, mode, control: str) -> None:
     """ConvergenceError unless the mesh's first instability has the mode's own pattern on
-    the faces (:func:`~.stability.face_harmonic`: ``periods`` half wavelengths along the
+    the faces (:func:`~.harmonics.face_harmonic`: ``periods`` half wavelengths along the
     sector or window). A mesh too coarse along a face can lose stability first in a pattern
     of its elements' size, which the linear analysis puts later: the grown bilayer of
     docs/postbuckling.md on 4 elements along pi / 24, in cos(96 Theta) at its outer face

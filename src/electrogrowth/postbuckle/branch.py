@@ -29,9 +29,10 @@ import scipy.sparse.linalg as spla
 
 from ..errors import ConvergenceError, ParameterError
 from ..interrupts import Interrupted
+from .harmonics import ELEMENT_SCALE, element_scale_fraction
 from .newton import MAX_ITERATIONS, RESIDUAL_TOL, fe_error
 from .onset import lowest_eigenvalue
-from .stability import ELEMENT_SCALE, classify, element_scale_fraction
+from .stability import classify
 
 #: relative step of the central difference dR/dc
 DC = 1e-6
@@ -53,7 +54,7 @@ class BranchPoint:
     #: in wavelengths of the mode (1: the mode's family; 2: period doubling; 0: not computed)
     subharmonic: float = float("nan")
     pattern: int = 0
-    #: its share in patterns the mesh does not resolve (stability.element_scale_fraction)
+    #: its share in patterns the mesh does not resolve (harmonics.element_scale_fraction)
     element_scale: float = float("nan")
 
     @property

@@ -20,6 +20,7 @@ import scipy.sparse.linalg as spla
 
 from ..errors import ConvergenceError, NoBifurcationFound, ParameterError, Remedy
 from ..model.layers import Tube
+from .harmonics import is_element_scale
 from .inertia import count_below, multiplier_mask
 from .newton import fe_error, loaded, newton
 
@@ -124,7 +125,6 @@ def _unstable_before(section, x, control: str, c: float, guess: float) -> NoBifu
     """The refusal of a path already unstable at ``c`` = 0.9 of the way to the linear onset
     ``guess``: in a pattern of the elements' size (the mesh's artefact), or in one the mesh
     resolves (another mode or a crease comes first)."""
-    from .stability import is_element_scale  # stability imports this module
 
     _, z = lowest_eigenvalue(section, x, vector=True)
     exc = NoBifurcationFound(
