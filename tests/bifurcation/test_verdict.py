@@ -248,3 +248,24 @@ def test_one_mode_asked_for_is_not_said_to_be_the_tubes_first():
     assert "the mode asked for: a scan says whether another mode comes first" in one
     scan = scan_modes(tube, "growth", options=ScanOptions((0, 2), (1, 2)))
     assert scan.verdict.meaning.startswith("the tube wrinkles smoothly in mode (m, n) = (0, 1)")
+
+
+def test_a_crease_or_threshold_before_the_one_mode_asked_for_is_not_before_any_wrinkle():
+    """Probe 13c, D1: `critical --mode 0 1` of Tube.uniform(1.5, length 8) in compression
+    said "the inner face creases ... at lambda_z = 0.558 before any smooth wrinkle" while
+    (1, 1) wrinkles at 0.901: with one mode asked for, no other wrinkle was looked at. A scan's
+    verdict keeps the claim, which its own scan supports."""
+    from electrogrowth.bifurcation.verdict import ONE_MODE
+
+    ring = Rival(Kind.BIFURCATION, 0.4214, 1e-12, m=0, n=1, detail=ONE_MODE)
+    crease = Rival(Kind.CREASE, 0.5579, 0.01, face="inner", trigger="axial")
+    one = judge("compression", wrinkle=ring, crease=crease, name="lambda_z")
+    assert "before any smooth wrinkle" not in one.meaning
+    assert "before the mode asked for wrinkles (a scan says whether" in one.meaning
+    lost = Rival(Kind.THRESHOLD, 0.3, None, detail="voltage threshold")
+    ring_up = Rival(Kind.BIFURCATION, 0.5, 1e-12, m=0, n=1, detail=ONE_MODE)
+    thr = judge(None, wrinkle=ring_up, threshold=lost, name="Vbar").meaning
+    assert "before any crease or the mode asked for (a scan says" in thr
+    scanned = Rival(Kind.BIFURCATION, 0.4214, 1e-12, m=0, n=1)
+    crease_first = judge("compression", wrinkle=scanned, crease=crease, name="lambda_z")
+    assert "before any smooth wrinkle" in crease_first.meaning

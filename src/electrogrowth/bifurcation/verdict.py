@@ -224,10 +224,15 @@ def meaning(
             close = " (a neo-Hookean criterion this energy may never reach: it may not crease)"
         elif nxt is not None and abs(nxt.value - first.value) <= first.error_estimate:
             close = " (within the crease criterion's accuracy of it: too close to call)"
+    # with one mode asked for no other wrinkle was looked at: "before any smooth wrinkle"
+    # was said of a crease at 0.558 while (1, 1) wrinkles at 0.901 (probe 13c, D1)
+    one = any(r.kind == Kind.BIFURCATION and r.detail == ONE_MODE for r in others)
+    scan_says = " (a scan says whether another mode comes first)"
     if first.kind == Kind.CREASE:
         head = (
             f"{creases(first.face, first.detail)} (sharp folds, {_trigger(first.trigger)})"
-            f" at {name} = {at} before any smooth wrinkle"
+            f" at {name} = {at} before "
+            + (f"the mode asked for wrinkles{scan_says}" if one else "any smooth wrinkle")
         )
     elif first.kind == Kind.BIFURCATION and first.detail == ONE_MODE:
         head = (
@@ -241,7 +246,8 @@ def meaning(
     else:
         head = (
             f"the axisymmetric state is lost ({first.detail or 'threshold'}) at {name} ="
-            f" {at} before any wrinkle or crease"
+            f" {at} before "
+            + (f"any crease or the mode asked for{scan_says}" if one else "any wrinkle or crease")
         )
     return head + after + close + notes
 
