@@ -112,3 +112,15 @@ def test_no_unloaded_state_does_not_blame_the_voltage():
         solve_base_state(tube)
     assert "voltage" not in err.value.remedy
     assert "voltage" not in python_remedy(err.value.remedy)
+
+
+def test_the_voltage_stage_of_a_pressurised_tube_names_its_pressure():
+    """Probe 13a (doubt): a closed-ended three-layer tube near its lock at P_i = 1.35 was
+    refused as "Vbar = 0.1 lies too close to the locking stretch" while the pressure was what
+    moved: the voltage stage is applied at the tube's pressure, and its words now say so."""
+    from electrogrowth.basestate.layered import _voltage_stage
+    from electrogrowth.model.layers import Layer, Tube
+
+    tube = Tube([Layer(1.2), Layer(1.8)], voltage=0.1)
+    assert _voltage_stage(tube) == "Vbar = 0.1"
+    assert _voltage_stage(tube.at("pressure", 1.35)) == "Vbar = 0.1 at P_i - P_o = 1.35"

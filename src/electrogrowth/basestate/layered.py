@@ -88,7 +88,7 @@ def solve_layered_state(tube: Tube, *, rtol: float = 1e-12, near=None, guess=Non
                 thr.grid,
                 tube.voltage * tube.voltage,
                 thr if thr.kind else None,
-                f"Vbar = {tube.voltage}",
+                _voltage_stage(tube),
             )
         # c from the voltage, c = V / Lambda for ideal dielectrics (from (*) it would carry
         # the cancellation of T - (P_i - P_o) near the start, amplified by the square root)
@@ -215,3 +215,11 @@ def pressure_response(
     branch, start = _pressure_branch(tube, rtol)
     thr = threshold(branch, *start, "pressure") if lambda_i is None else None
     return _response(branch, start, thr, lambda_i, points, span)
+
+
+def _voltage_stage(tube) -> str:
+    """The voltage stage's load in words, with the pressure it is applied at: near a lock a
+    tube under pressure was said to have "Vbar = 0.1 ... too close to the locking stretch"
+    while the pressure was what moved (probe 13a)."""
+    dp = tube.inner_pressure - tube.outer_pressure
+    return f"Vbar = {tube.voltage}" + (f" at P_i - P_o = {dp:.12g}" if dp else "")
