@@ -93,6 +93,15 @@ class ConvergenceError(ElectrogrowthError, RuntimeError):
     )
 
 
+#: a collocation value that is not certified: the other method checks it (ConvergenceError's
+#: own remedy names collocation, the method that was just used; probe 13a D2)
+CHECK_WITH_IMPEDANCE = Remedy(
+    "loosen --rtol (e.g. 1e-10), or check the point with --method impedance (the default)",
+    python="pass a looser rtol (e.g. rtol=1e-10), or check the point with"
+    " method='impedance' (the default)",
+)
+
+
 class CollocationTooLarge(ConvergenceError):
     """Collocation would need more nodes for a mode than its memory budget holds (a short
     wave through a thick wall): the impedance kernel, whose memory does not grow with the

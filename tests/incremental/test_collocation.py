@@ -445,3 +445,41 @@ def test_failures_are_named():
         critical(tube(), 2, 1, "force", (0.9, 1.0))
     with pytest.raises(ParameterError, match="nodes"):
         col.collocation_target(fixture_state(tube()), 2, 1, nodes=4)
+
+
+# -- a softening energy: tr L at the faces (probe 13a D2) -----------------------------------
+
+#: A1111 + p = 2 W1 + 4 W11 + p = 0 unloaded (W11 = -1/2): it passes through 0 near the
+#: faces at small growth
+SOFTENING = "0.5*(I1-3) + I5/2 - 0.25*(I1-3)**2"
+
+
+@pytest.mark.parametrize("nodes", [24, 40])
+def test_softening_energy_has_no_spurious_face_mode(nodes):
+    """Probe 13a D2: the target of this energy (Rbar_o 1.5, L 1, Vbar 0.2, mode (2, 1))
+    changed sign at g = 1.04883 for every mode and node count, while the kernel and the
+    shooting twin stay positive up to their root 1.37439: tr L at a face node is free in
+    the collocation (tr L = 0 only at interior nodes) and its only coefficient, A1111 + p
+    in S_rr, passed through 0 there, a singular matrix the continuous problem does not have.
+    The moduli are now shifted by c delta delta (absorbed by the pressure) to keep it
+    positive: the target keeps its stable sign up to the genuine root."""
+    from electrogrowth.basestate.tube import solve_base_state
+
+    params = Tube.uniform(1.5, 1.0, voltage=0.2, material=Material("soft", SOFTENING))
+    f = [
+        col.collocation_target(solve_base_state(params.at("growth", g)), 2, 1, nodes=nodes)
+        for g in (1.0, 1.04, 1.0486, 1.0488, 1.04883, 1.0489, 1.06, 1.3, 1.37, 1.38)
+    ]
+    assert min(f[:-1]) > 0 > f[-1], f
+
+
+def test_the_face_shift_leaves_a_neo_hookean_tube_bit_identical():
+    """The shift acts only where A1111 + p < A1212: for the neo-Hookean tube (A1111 + p ~ 2
+    A1212 here) the matrix is the one assembled from the moduli as they are."""
+    from electrogrowth.incremental import nodal_law
+
+    state = fixture_state(tube(growth=1.1, stretch=0.9, voltage=0.5))
+    A, _, _ = full_moduli(state.moduli(np.linspace(1.0, 1.5, 7)))
+    shifted = A.copy()
+    nodal_law._shift_out_of_the_face_mode(shifted, state.pressure(np.linspace(1.0, 1.5, 7)))
+    assert np.array_equal(shifted, A)

@@ -652,3 +652,36 @@ def test_ideal_dielectric_hidden_from_cancellation_is_still_detected():
     mat = Material("hidden", (I1 - 3) / 2 + (I5 + 1) ** 2 / 4 - I5**2 / 4 - R(1, 4))
     assert I5 in (mat.energy - I5 / 2).free_symbols
     assert mat.is_ideal_dielectric()
+
+
+@pytest.mark.parametrize("check_units", [False, True])
+@pytest.mark.parametrize(
+    "text",
+    [
+        "(I1 - 3)/2 + I5/2 + log(0)",  # an infinite constant: its derivatives are all finite
+        "1/(I1 - 3) + I5/2",
+        "(I1 - 3)/2 + I5/2 + (I1 - I1)**(-2)",
+        "(I1 - 3)/2 + I5/2 + I4**0.5",  # singular in the field only: mu is 1
+        "(I1 - 3)/2 + I5/2 + 1e-20*log(I4)",
+    ],
+)
+def test_energy_not_finite_at_the_reference_state_is_named_whatever_the_units(text, check_units):
+    """Probe 13a D1: with check_units=False these energies were accepted and failed inside
+    the first computation with a raw KeyError ('ComplexInfinity', sympy's lambdify printer)
+    or ZeroDivisionError: the finiteness check ran only inside the units check. With the
+    units checked, the infinite ones were refused as "shear modulus ... = 0" and the
+    field-singular ones as "shear modulus = nan" (mu is 1 there), a remedy (rescale) that
+    cannot help. Now one MaterialError in the command line's words, before the units."""
+    with pytest.raises(MaterialError, match="not finite real numbers at the undeformed") as err:
+        Material("x", text, check_units=check_units)
+    assert "'x'" in str(err.value) and "\n" not in str(err.value)
+
+
+def test_singular_energy_never_reaches_a_computation():
+    """Probe 13a D1, end to end: the critical value of a tube of such an energy was a
+    KeyError; now the Material itself is refused, so no tube can carry it."""
+    from electrogrowth import Tube, critical_value
+
+    with pytest.raises(MaterialError):
+        m = Material("x", "(I1 - 3)/2 + I5/2 + log(0)", check_units=False)
+        critical_value(Tube.uniform(1.5, 1.0, voltage=0.2, material=m), 2, 1, "growth")

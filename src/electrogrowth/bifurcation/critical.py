@@ -33,7 +33,13 @@ import numpy as np
 
 from ..basestate.tube import solve_base_state
 from ..continuation.events import Remembered, brent
-from ..errors import ConvergenceError, ElectrogrowthError, NoBifurcationFound, Remedy
+from ..errors import (
+    CHECK_WITH_IMPEDANCE,
+    ConvergenceError,
+    ElectrogrowthError,
+    NoBifurcationFound,
+    Remedy,
+)
 from ..incremental.accuracy import CERTIFIED, RTOL_RANGE, STABLE_SIGN, Accuracy, certified
 from ..incremental.targets import (
     CollocationTarget,
@@ -236,7 +242,9 @@ def _inaccurate(point: CriticalPoint, rtol: float, why: str) -> CriticalPoint:
         status=Status.INACCURATE,
         message=f"error estimate {point.error_estimate:.1e} exceeds {CERTIFIED:g} rtol"
         f" |value| (rtol = {rtol:g}){why}",
-        remedy=ConvergenceError.remedy,
+        remedy=CHECK_WITH_IMPEDANCE
+        if point.method == Method.COLLOCATION
+        else ConvergenceError.remedy,
     )
 
 

@@ -99,9 +99,36 @@ def _contract(T: FloatArray, X: Operator, out_rank: int) -> Operator:
     return out
 
 
+def _shift_out_of_the_face_mode(A: FloatArray, p: FloatArray) -> None:
+    """Add c delta_pi delta_qj to A (in place) at the nodes where A_rrrr + p < A_rthrth, with
+    c = A_rthrth - A_rrrr - p, so that A_rrrr + p + c >= A_rthrth > 0 at every node.
+
+    Why: for an incompressible solid such a shift changes S only by c tr(L) I, which the
+    incremental pressure absorbs (tr L = 0): the continuous problem is the same. The
+    collocation enforces tr L = 0 at the interior nodes only (P_N - P_{N-2}), so tr L at a
+    face (or interface) node is free and enters the equations only through the coefficient
+    A_rrrr + p of S_rr. Where that coefficient passes through zero near a face, the
+    discrete matrix becomes singular in a mode the continuous problem does not have, at
+    the same control value for every (m, n) and node count: a softening energy
+    (0.5 (I1-3) + I5/2 - 0.25 (I1-3)^2, A_rrrr + p = 0 unloaded) gave a spurious onset
+    g = 1.04861 for the true 1.37439 (probe 13a D2), and its sign past it, the
+    opposite of the stable side. The floor A_rthrth (a shear modulus, positive on the
+    stable side) leaves every node where A_rrrr + p is already above it bit-identical,
+    and the shift, continuous in the state, keeps the target continuous. Interior nodes'
+    c multiplies tr L = 0 there, so it moves no root, only the floor at the faces does.
+    """
+    c = np.maximum(0.0, A[0, 1, 0, 1] - (A[0, 0, 0, 0] + p))
+    if not np.any(c > 0):
+        return
+    for i in range(3):
+        for j in range(3):
+            A[i, i, j, j] += c
+
+
 def _fluxes_at(moduli, p, grid: _Grid, m: float) -> tuple[Operator, Operator, Operator]:
     """The maps of :func:`_fluxes` from the moduli and p at the nodes."""
     A, G, K = full_moduli(moduli)
+    _shift_out_of_the_face_mode(A, p)
     L, E, pdot = _operators(grid, m)
     Lt = L.transpose(1, 0, 2, 3)  # Lt[q, j] = L_jq
     # E_p = Gamma_qjp L_jq + K_pq D_q  =>  D = K^{-1} (E - Gamma_qjp L_jq)

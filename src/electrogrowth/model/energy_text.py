@@ -15,14 +15,11 @@ at the undeformed state is not 1 is refused by :class:`~.materials.Material`, na
 
 from __future__ import annotations
 
-import math
-
-import sympy as sp
-
 from ..errors import MaterialError
 from .energy_grammar import CONSTANTS, parse_energy, shorten
 from .energy_grammar import FUNCTIONS as _FUNCTIONS
-from .materials import I1, I2, I4, I5, I6, Material
+from .invariants import check_finite_at_reference
+from .materials import Material
 
 #: Names an energy may use besides the invariants (sympy functions and constants).
 FUNCTIONS = (*_FUNCTIONS, *CONSTANTS)
@@ -45,25 +42,6 @@ def energy_material(text: str, *, name: str | None = None) -> Material:
         raise MaterialError(f"energy = {shorten(repr(text))} is not a string")
     expr = parse_energy(text)
     label = " ".join(text.split())
-    _reference_values(expr, label)
+    # Named by its text here (Material names it by ``name``, which a caller may set).
+    check_finite_at_reference(expr, f"energy {shorten(label)!r}")
     return Material(name or label, expr)  # refuses moduli other than 1, naming which
-
-
-def _reference_values(energy: sp.Expr, label: str) -> tuple[float, float]:
-    """(mu, 1 / eps) of the energy at the undeformed state: 2 (Omega_1 + Omega_2) and
-    2 (Omega_4 + Omega_5 + Omega_6); MaterialError if it or they are not finite there."""
-    at = {I1: 3, I2: 3, I4: 0, I5: 0, I6: 0}
-    try:
-        value = float(energy.subs(at))
-        mu = float(2 * (sp.diff(energy, I1) + sp.diff(energy, I2)).subs(at))
-        inv_eps = float(
-            2 * (sp.diff(energy, I4) + sp.diff(energy, I5) + sp.diff(energy, I6)).subs(at)
-        )
-    except (TypeError, ValueError, OverflowError):
-        value = mu = inv_eps = math.nan
-    if not all(math.isfinite(x) for x in (value, mu, inv_eps)):
-        raise MaterialError(
-            f"energy {shorten(label)!r} or its derivatives are not finite real numbers at the"
-            " undeformed state I1 = I2 = 3, I4 = I5 = I6 = 0"
-        )
-    return mu, inv_eps

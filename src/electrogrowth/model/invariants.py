@@ -49,14 +49,35 @@ def _energy_value(energy: sp.Expr) -> Callable:
     return sp.lambdify(INVARIANTS, energy, "numpy")
 
 
+#: The reference (undeformed, unloaded) state, kept exact for sympy.
+_REFERENCE = {I1: 3, I2: 3, I4: 0, I5: 0, I6: 0}
+
+
+def check_finite_at_reference(energy: sp.Expr, subject: str) -> None:
+    """MaterialError unless the energy and each of its first derivatives are finite real
+    numbers at the reference state. Every computation starts there, whatever the units: an
+    infinity left in would surface later as sympy's lambdify printer's KeyError
+    ('ComplexInfinity') or a ZeroDivisionError inside a solver. ``subject`` names the energy
+    ("energy 'text'" or "energy of 'name'")."""
+    parts = [energy, *(sp.diff(energy, s) for s in INVARIANTS)]
+    try:
+        values = [complex(p.subs(_REFERENCE).evalf()) for p in parts]
+    except (TypeError, ValueError, OverflowError, ZeroDivisionError):
+        values = [complex(math.nan)]
+    if not all(v.imag == 0 and math.isfinite(v.real) for v in values):
+        raise MaterialError(
+            f"{subject} or its derivatives are not finite real numbers at the"
+            " undeformed state I1 = I2 = 3, I4 = I5 = I6 = 0"
+        )
+
+
 def reference_moduli(energy: sp.Expr) -> tuple[float, float]:
     """(mu, eps) of an energy in the reference state I1 = I2 = 3, I4 = I5 = I6 = 0: the
     small-strain shear modulus mu = 2 (Omega_1 + Omega_2) and the small-field permittivity
     eps = 1 / (2 (Omega_4 + Omega_5 + Omega_6)) (all three electric invariants equal D.D
     there). NaN where a derivative is not finite."""
-    at = {I1: 3, I2: 3, I4: 0, I5: 0, I6: 0}
     try:
-        w = [complex(sp.diff(energy, s).subs(at).evalf()) for s in INVARIANTS]
+        w = [complex(sp.diff(energy, s).subs(_REFERENCE).evalf()) for s in INVARIANTS]
     except (TypeError, ValueError, ZeroDivisionError):
         return math.nan, math.nan
     if any(abs(x.imag) > 0 or not np.isfinite(x.real) for x in w):
@@ -112,7 +133,8 @@ def energy_kind(energy: sp.Expr) -> str:
 
 def checked_energy(name: str, energy, check_units: bool) -> sp.Expr:
     """The sympy expression of a Material's ``energy`` (an expression or its text), checked:
-    symbols and (check_units) mu = eps = 1 in the reference state; MaterialError if not."""
+    symbols, finite in the reference state and (check_units) mu = eps = 1 there;
+    MaterialError if not."""
     # Text is read by the whitelist grammar, never by sympify (data never executes);
     # invariants are matched by name, so sp.Symbol("I1") works too.
     names = {str(s): s for s in INVARIANTS}
@@ -132,6 +154,9 @@ def checked_energy(name: str, energy, check_units: bool) -> sp.Expr:
             f"energy of {shorten(name)!r} has unknown symbols {sorted(map(str, extra))};"
             " use only I1, I2, I4, I5, I6 with parameters substituted"
         )
+    # Finiteness first and always: check_units=False keeps a scaled energy, not a singular
+    # one, and an infinite energy's moduli would otherwise be misreported (mu = 0 or nan).
+    check_finite_at_reference(expr, f"energy of {shorten(name)!r}")
     if check_units:
         mu, eps = reference_moduli(expr)
         for what, value, why in (
