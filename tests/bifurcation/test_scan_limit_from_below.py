@@ -67,6 +67,20 @@ def test_face_past_its_limit_at_the_scanned_best_folds_come_first():
     _is_first(scan, 811, 0, "pressure", side="compression")
 
 
+def test_limit_not_ok_when_a_turned_mode_beyond_is_not_found(monkeypatch):
+    """The rule's guard: a mode beyond the ranges is past its root at the limit but the
+    search beyond finds none (faked here: _searched as if the march met no root). The limit
+    cannot then be the first instability for sure: it is returned INACCURATE, saying why,
+    not "ok" (D1's tube had it ok, with (1028, 0) 3.7e-4 earlier)."""
+    import electrogrowth.bifurcation.scan as scan
+
+    monkeypatch.setattr(scan, "_searched", lambda *args, **kwargs: (args[3], False))
+    tube = Tube([SOFT, Layer(3.0)], stretch=1.0)
+    c = scan_modes(tube, "growth[1].theta", options=SHORT).critical
+    assert c.kind == "surface" and c.value == pytest.approx(1.8245777636, rel=1e-9)
+    assert c.status == "inaccurate" and "past its root" in c.message
+
+
 SOFT_TOML = """[[layers]]
 outer_radius = 1.01
 shear_modulus = 1e-2

@@ -155,7 +155,8 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
 
     Widening only looks for a finite optimum beyond the ranges, so it stops (as at the
     cap) once the exact short-wave limit comes before the best finite mode found: shorter
-    waves tend to that limit, which then is the result (the wider scan is not needed).
+    waves tend to that limit, which is then the result unless a mode beyond the scan is
+    unstable at it (_with_short_waves reads both axes there: _folds_before_limit).
     Every m is scanned up to EVERY_M (or m_max, if smaller); m beyond it, of an m range
     reaching past EVERY_M or of an optimum on the m edge there (or a probe beyond it), are
     examined by the coarse-to-fine search along family rows (:func:`_searched`), which
@@ -358,7 +359,7 @@ def _no_scanned_mode(params, solve_for, side, options: ScanOptions, rtol, exc):
     crit, error = _surface_point(limit, side), limit.error_estimate
     result = ScanResult(crit, (), m_range, options.n_range, True, limit.value, error)
     if not options.surface:
-        result = _folds_before_limit(params, solve_for, side, result, options, rtol, limit)
+        result, _ = _folds_before_limit(params, solve_for, side, result, options, rtol, limit)
         if result.critical.kind != Kind.BIFURCATION:
             raise exc
         result = dataclasses.replace(
@@ -386,11 +387,13 @@ def _with_short_waves(
     if _before(c, limit.value, side):
         return result
     # the one place a limit becomes the result: not before the folds beyond the scan
-    result = _folds_before_limit(params, solve_for, side, result, options, rtol, limit)
+    result, turned = _folds_before_limit(params, solve_for, side, result, options, rtol, limit)
     c = result.critical
     if _before(c, limit.value, side):
         return result
     crit = _surface_point(limit, side)
+    if turned:  # a mode beyond is past its root at the limit, yet no root was found before it
+        crit = dataclasses.replace(crit, status=Status.INACCURATE, **_UNFOUND)
     finite = (
         (ModeValue(c.m, c.n, c.value, c.family, c.error_estimate),)
         if c.kind == Kind.BIFURCATION
@@ -404,6 +407,13 @@ def _with_short_waves(
     )
 
 
+_UNFOUND = {
+    "message": "a mode beyond the scanned ranges is past its root at this short-wave limit,"
+    " but the search beyond them found no root before it: a finite mode may come first",
+    "remedy": "scan the single modes beyond the ranges (--mode M N) near the limit",
+}
+
+
 def _before(c: CriticalPoint, value: float, side) -> bool:
     """Whether ``c`` is a finite mode reached no later than ``value`` along the march."""
     sense = -1.0 if side == "compression" else 1.0  # the direction of the march
@@ -412,7 +422,7 @@ def _before(c: CriticalPoint, value: float, side) -> bool:
 
 def _folds_before_limit(params, solve_for, side, result: ScanResult, options, rtol, limit):
     """``result`` searched along each axis (n, then m, up to its cap) whose modes beyond the
-    ranges are past their roots at the limit's value (beyond.py).
+    ranges are past their roots at the limit's value (beyond.py); and whether one was.
 
     Shorter waves tend to a face's limit, but not always from above: the flat film never
     comes before Biot's limit, while a soft lining on a stiffer tube reaches it from below,
@@ -425,12 +435,11 @@ def _folds_before_limit(params, solve_for, side, result: ScanResult, options, rt
     turned = unstable_beyond(
         params, solve_for, limit.value, result.m_range, result.n_range, options.prismatic
     )
-    found = result
+    if not any(turned.values()):
+        return result, False
     for axis, cap in (("n", N_CAP), ("m", M_CAP)):
         if turned[axis]:  # a mode at the cap is then the result: _capped says so
-            found, _ = _searched(params, solve_for, side, found, options, rtol, cap, axis)
-    if found is result:
-        return result
+            result, _ = _searched(params, solve_for, side, result, options, rtol, cap, axis)
     # the search's result is a scan's: the limit computed is kept (a finite mode leads)
     limit_kept = {"short_wave_limit": limit.value, "short_wave_error": limit.error_estimate}
-    return dataclasses.replace(found, surface_instability=False, **limit_kept)
+    return dataclasses.replace(result, surface_instability=False, **limit_kept), True
