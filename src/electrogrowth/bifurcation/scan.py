@@ -23,8 +23,10 @@ infimum over all modes may be the short-wave limit m, k -> infinity, a surface
 instability of a face: it is computed exactly from the half-space problem (surface.py)
 when the best finite mode sits on the edge at the cap, when no finite mode bifurcates
 before the threshold (or at all), or when a face is already past its half-space
-instability at the best finite value. If it comes first, it is the result (kind SURFACE,
-with the face and the wave direction) and the best finite mode is the first runner-up.
+instability at the best finite value. If it comes first, and no mode beyond the scan is
+unstable at it along either axis (a soft lining on a stiffer tube reaches its face's limit
+from below: :func:`_folds_before_limit`), it is the result (kind SURFACE, with the face and
+the wave direction) and the best finite mode is the first runner-up.
 """
 
 from __future__ import annotations
@@ -111,19 +113,9 @@ def scan_modes(
             result, at_cap = found
     except NoBifurcationFound as exc:
         exc.remedy = no_bifurcation_remedy(solve_for)  # not the remedy of one mode's solve
-        if not options.surface:
-            raise
-        limit = short_wave_limit(params, solve_for, side=side, rtol=rtol)
-        if limit.kind != Kind.SURFACE:
-            raise
-        crit = _surface_point(limit, side)
-        return ScanResult(
-            crit, (), options.m_range, options.n_range, True, limit.value, limit.error_estimate
-        )
+        result, at_cap, limit = _no_scanned_mode(params, solve_for, side, options, rtol, exc)
     if options.surface:
-        result = _with_short_waves(
-            params, solve_for, side, result, options.top, rtol, at_cap, limit
-        )
+        result = _with_short_waves(params, solve_for, side, result, options, rtol, at_cap, limit)
     # the runners-up were the march's roots (max(rtol, 1e-9)): solved at rtol (runners.py)
     return _capped(with_finished_runners(params, solve_for, side, rtol, result))
 
@@ -163,7 +155,8 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
 
     Widening only looks for a finite optimum beyond the ranges, so it stops (as at the
     cap) once the exact short-wave limit comes before the best finite mode found: shorter
-    waves tend to that limit, which then is the result (the wider scan is not needed).
+    waves tend to that limit, which is then the result unless a mode beyond the scan is
+    unstable at it (_with_short_waves reads both axes there: _folds_before_limit).
     Every m is scanned up to EVERY_M (or m_max, if smaller); m beyond it, of an m range
     reaching past EVERY_M or of an optimum on the m edge there (or a probe beyond it), are
     examined by the coarse-to-fine search along family rows (:func:`_searched`), which
@@ -185,16 +178,11 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
         return limit.kind == Kind.SURFACE and (limit.value - c.value) * sense < 0
 
     def limit_stands(result) -> tuple[ScanResult, bool]:
-        """The limit comes before the scanned modes; so it stands unless folds beyond the
-        scan (up to M_CAP) are unstable at it: a film folding beyond the scanned m lies
-        below its face's limit, then searched."""
+        """The limit comes before the scanned modes: widening stops, and the result is
+        flagged as at the cap, so that _with_short_waves weighs the limit, reading the modes
+        beyond the scan at it first (_folds_before_limit)."""
         assert limit is not None  # limit_first computed it
-        beyond = unstable_beyond(
-            params, solve_for, limit.value, m_range, n_range, options.prismatic, ("m",)
-        )
-        if not beyond["m"]:
-            return result, True
-        return search(result)
+        return result, True
 
     def search(result, m_top=M_CAP, axis="m"):
         return _searched(params, solve_for, side, result, options, rtol, m_top, axis)
@@ -295,7 +283,8 @@ def _beyond_value(params, side, result, options, limit, runner: bool) -> float |
     its grid; the search would only list short waves approaching the limit), nor when the
     march ended short of ``top`` modes. Not when the short-wave limit comes first (``limit``
     if computed, or a face already past its half-space instability): every short wave is
-    then unstable at the finite value, and the limit, its folds checked, is the result."""
+    then unstable at the finite value; the modes beyond are read at the limit instead, where
+    it would become the result (:func:`_folds_before_limit`)."""
     c, runners = result.critical, result.runners_up
     if runner and (params.is_uniform or not runners or len(runners) < options.top - 1):
         return None
@@ -352,11 +341,40 @@ def _searched(
     return ScanResult(crit, tuple(runners), ranges["m"], ranges["n"]), at_top
 
 
+def _no_scanned_mode(params, solve_for, side, options: ScanOptions, rtol, exc):
+    """No scanned mode bifurcates (``exc``): the scan's result, its critical point the
+    exact short-wave limit of a face, for _with_short_waves to weigh against the modes
+    beyond the scan (a soft lining's folds (1028, 0) come 3.7e-4 before its face's limit,
+    which a scan of m <= 12, n <= 2 returned unchecked: probe 13b, D1); and at_cap and the
+    limit, as _widened_scan gives them. Re-raises ``exc`` where no face has a limit.
+
+    Without ``options.surface`` the limit is not a result, but it is where those folds are
+    read (each short wave is unstable past it), so it is computed all the same; a fold
+    found beyond the scan is the result, else ``exc`` is raised."""
+    limit = short_wave_limit(params, solve_for, side=side, rtol=rtol, estimate=options.surface)
+    if limit.kind != Kind.SURFACE:
+        raise exc
+    m_lo, m_max = options.m_range
+    m_range = (m_lo, min(m_max, max(m_lo, EVERY_M)))  # as scanned (_widened_scan)
+    crit, error = _surface_point(limit, side), limit.error_estimate
+    result = ScanResult(crit, (), m_range, options.n_range, True, limit.value, error)
+    if not options.surface:
+        result, _ = _folds_before_limit(params, solve_for, side, result, options, rtol, limit)
+        if result.critical.kind != Kind.BIFURCATION:
+            raise exc
+        result = dataclasses.replace(
+            result, surface_instability=False, short_wave_limit=None, short_wave_error=None
+        )
+    return result, True, limit
+
+
 def _with_short_waves(
-    params, solve_for, side, result: ScanResult, top: int, rtol: float, at_cap: bool, limit=None
+    params, solve_for, side, result: ScanResult, options, rtol: float, at_cap: bool, limit=None
 ) -> ScanResult:
     """``result``, or the exact short-wave limit (``limit`` if already computed) if it
-    comes first (module docstring)."""
+    comes first (module docstring) and no mode beyond the scan comes before it
+    (:func:`_folds_before_limit`). ``result``'s critical point is a finite mode, or the
+    limit itself where no scanned mode bifurcates (:func:`_no_scanned_mode`)."""
     c = result.critical
     if c.kind == Kind.BIFURCATION and not at_cap and not past_surface(c.params):
         return result
@@ -366,10 +384,16 @@ def _with_short_waves(
     result = dataclasses.replace(
         result, short_wave_limit=limit.value, short_wave_error=limit.error_estimate
     )
-    sense = -1.0 if side == "compression" else 1.0  # the direction of the march
-    if c.kind == Kind.BIFURCATION and (limit.value - c.value) * sense >= 0:
+    if _before(c, limit.value, side):
+        return result
+    # the one place a limit becomes the result: not before the folds beyond the scan
+    result, turned = _folds_before_limit(params, solve_for, side, result, options, rtol, limit)
+    c = result.critical
+    if _before(c, limit.value, side):
         return result
     crit = _surface_point(limit, side)
+    if turned:  # a mode beyond is past its root at the limit, yet no root was found before it
+        crit = dataclasses.replace(crit, status=Status.INACCURATE, **_UNFOUND)
     finite = (
         (ModeValue(c.m, c.n, c.value, c.family, c.error_estimate),)
         if c.kind == Kind.BIFURCATION
@@ -379,5 +403,43 @@ def _with_short_waves(
         result,
         critical=crit,
         surface_instability=True,
-        runners_up=(finite + result.runners_up)[: top - 1],
+        runners_up=(finite + result.runners_up)[: options.top - 1],
     )
+
+
+_UNFOUND = {
+    "message": "a mode beyond the scanned ranges is past its root at this short-wave limit,"
+    " but the search beyond them found no root before it: a finite mode may come first",
+    "remedy": "scan the single modes beyond the ranges (--mode M N) near the limit",
+}
+
+
+def _before(c: CriticalPoint, value: float, side) -> bool:
+    """Whether ``c`` is a finite mode reached no later than ``value`` along the march."""
+    sense = -1.0 if side == "compression" else 1.0  # the direction of the march
+    return c.kind == Kind.BIFURCATION and (value - c.value) * sense >= 0
+
+
+def _folds_before_limit(params, solve_for, side, result: ScanResult, options, rtol, limit):
+    """``result`` searched along each axis (n, then m, up to its cap) whose modes beyond the
+    ranges are past their roots at the limit's value (beyond.py); and whether one was.
+
+    Shorter waves tend to a face's limit, but not always from above: the flat film never
+    comes before Biot's limit, while a soft lining on a stiffer tube reaches it from below,
+    through its O(1/k) corrections (curvature, the stress gradient across the lining). So
+    folds far beyond the scan ((m, 0), m ~ 800-1030; rings (0, n), n ~ 300-340) come 2.5e-4
+    to 3.2e-3 before the limit, and the limit was returned unchecked, or checked along m
+    only (probe 13b, D1-D3). Not without ``options.extend``: the ranges are then as asked."""
+    if not options.extend:
+        return result, False
+    turned = unstable_beyond(
+        params, solve_for, limit.value, result.m_range, result.n_range, options.prismatic
+    )
+    if not any(turned.values()):
+        return result, False
+    for axis, cap in (("n", N_CAP), ("m", M_CAP)):
+        if turned[axis]:  # a mode at the cap is then the result: _capped says so
+            result, _ = _searched(params, solve_for, side, result, options, rtol, cap, axis)
+    # the search's result is a scan's: the limit computed is kept (a finite mode leads)
+    limit_kept = {"short_wave_limit": limit.value, "short_wave_error": limit.error_estimate}
+    return dataclasses.replace(result, surface_instability=False, **limit_kept), True

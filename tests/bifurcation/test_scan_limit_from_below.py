@@ -1,0 +1,104 @@
+"""A soft lining (shear modulus 1e-2 on a substrate of 1, [1, 1.01] in [1, 3]) reaches its
+free face's short-wave limit from below: its folds (m, 0) with m ~ 800-1030 and its rings
+(0, n) with n ~ 300-340 come 2.5e-4 to 3.2e-3 before the exact limit (collocation agrees
+with them to 1e-12), while the flat film never comes before Biot's limit (the tube's
+O(1/k) corrections do). The scan returned the limit (kind "surface", status ok) with the
+folds unchecked, by three paths of bifurcation/scan.py (probe 13b):
+
+* D1: no scanned mode bifurcates (m <= 12, n <= 2): the ``except NoBifurcationFound``
+  branch of scan_modes returned the limit with no look beyond the ranges; without the
+  surface it raised "no mode bifurcates", which is false;
+* D2: the limit came before the scanned modes: ``_widened_scan.limit_stands`` read the
+  modes beyond along m only, and the rings along n came first;
+* D3: the scanned best came after the limit on no edge: ``_with_short_waves`` returned the
+  limit, ``_beyond_value`` having skipped the check since the face was past its limit.
+
+Now every path goes through scan._folds_before_limit (both axes read at the limit).
+"""
+
+import pytest
+
+from electrogrowth import Layer, ScanOptions, Tube, critical_value, scan_modes
+from electrogrowth.cli.app import main
+
+SOFT = Layer(1.01, shear_modulus=1e-2)
+SHORT = ScanOptions(m_range=(0, 12), n_range=(1, 2))
+
+
+def _is_first(scan, m, n, solve_for, side=None):
+    """The scan's critical mode is the finite mode (m, n), solved alone, and the limit it
+    computed comes after it."""
+    c = scan.critical
+    want = critical_value(scan.critical.params, m, n, solve_for, side=side).value
+    assert c.kind == "bifurcation" and (c.m, c.n) == (m, n) and c.status == "ok"
+    assert c.value == pytest.approx(want, rel=1e-10)
+    sense = -1.0 if side == "compression" else 1.0
+    assert scan.short_wave_limit is not None and (scan.short_wave_limit - c.value) * sense > 0
+
+
+def test_no_scanned_mode_folds_beyond_before_the_limit():
+    """D1: was surface 1.8245777636, no runners-up; (1028, 0) comes at 1.8239095766."""
+    tube = Tube([SOFT, Layer(3.0)], stretch=1.0)
+    _is_first(scan_modes(tube, "growth[1].theta", options=SHORT), 1028, 0, "growth[1].theta")
+
+
+def test_no_scanned_mode_without_the_surface_finds_the_folds():
+    """D1, options.surface False: raised NoBifurcationFound "between 1 and 6"."""
+    tube = Tube([SOFT, Layer(3.0)], stretch=1.0)
+    options = ScanOptions(m_range=(0, 12), n_range=(1, 2), surface=False)
+    scan = scan_modes(tube, "growth[1].theta", options=options)
+    c = scan.critical
+    assert (c.kind, c.m, c.n) == ("bifurcation", 1028, 0) and scan.short_wave_limit is None
+    assert not scan.surface_instability
+
+
+def test_limit_before_the_scanned_modes_rings_beyond_come_first():
+    """D2: was surface 1.8317856539 (m checked only); (0, 340) comes at 1.8313272644."""
+    tube = Tube([SOFT, Layer(3.0)], stretch=1.0, length=1.0)
+    _is_first(scan_modes(tube, "growth[1].z"), 0, 340, "growth[1].z")
+
+
+def test_face_past_its_limit_at_the_scanned_best_folds_come_first():
+    """D3: was surface P_i = -0.3888920984 (runners-up (2, 0), (3, 0)); (811, 0) comes at
+    -0.38764313 (the probe's (810, 0) at -0.38764315 is its neighbour)."""
+    grown = Layer(1.01, shear_modulus=1e-2, growth=(1, 1.5, 1))
+    tube = Tube([grown, Layer(3.0)], stretch=1.0)
+    scan = scan_modes(tube, "pressure", side="compression")
+    _is_first(scan, 811, 0, "pressure", side="compression")
+
+
+def test_limit_not_ok_when_a_turned_mode_beyond_is_not_found(monkeypatch):
+    """The rule's guard: a mode beyond the ranges is past its root at the limit but the
+    search beyond finds none (faked here: _searched as if the march met no root). The limit
+    cannot then be the first instability for sure: it is returned INACCURATE, saying why,
+    not "ok" (D1's tube had it ok, with (1028, 0) 3.7e-4 earlier)."""
+    import electrogrowth.bifurcation.scan as scan
+
+    monkeypatch.setattr(scan, "_searched", lambda *args, **kwargs: (args[3], False))
+    tube = Tube([SOFT, Layer(3.0)], stretch=1.0)
+    c = scan_modes(tube, "growth[1].theta", options=SHORT).critical
+    assert c.kind == "surface" and c.value == pytest.approx(1.8245777636, rel=1e-9)
+    assert c.status == "inaccurate" and "past its root" in c.message
+
+
+SOFT_TOML = """[[layers]]
+outer_radius = 1.01
+shear_modulus = 1e-2
+[[layers]]
+outer_radius = 3.0
+shear_modulus = 1.0
+"""
+
+
+@pytest.mark.slow  # 20 s of collocation over 6003 modes
+def test_cli_certify_no_longer_passes_the_limit(tmp_path, capsys):
+    """D1 by the CLI: `--certify` said "no finite mode was reached before the end of the
+    march, none to certify" and the limit 1.82457776364, exit 0. It now certifies the
+    fold (1028, 0) at 1.82390957658."""
+    path = tmp_path / "soft.toml"
+    path.write_text(SOFT_TOML)
+    argv = ["critical", "--tube", str(path), "--solve-for", "growth", "--layer", "1"]
+    assert main(argv + ["--component", "theta", "--n-max", "2", "--certify"]) == 0
+    out = capsys.readouterr().out
+    assert "(m, n) = (1028, 0)" in out and "1.82390957658" in out
+    assert "certified by collocation: 1.8239095" in out
