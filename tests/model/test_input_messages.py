@@ -6,6 +6,7 @@ a growth component as g_theta (growth[K] is layer K's growth), a curve's --along
 
 import math
 import re
+import types
 import warnings
 from pathlib import Path
 
@@ -17,6 +18,7 @@ from electrogrowth.cli import app as cli
 from electrogrowth.errors import ConfigError, NoBifurcationFound, ParameterError
 from electrogrowth.model.layers import Layer, Tube
 from electrogrowth.model.tube_file import parse_tube
+from electrogrowth.outcomes import Kind
 
 BILAYER = Path(__file__).resolve().parents[2] / "examples" / "bilayer.toml"
 TUBE = Tube((Layer(1.1), Layer(2.0)))
@@ -91,6 +93,10 @@ def test_a_scan_finding_nothing_gives_the_scan_remedy(monkeypatch):
         raise exc
 
     monkeypatch.setattr(scan, "_widened_scan", nothing)
+    # no face limit either: else the folds beyond the (faked) scan are read at it, and a
+    # uniform tube's are found there (probe 13b, D1: scan._no_scanned_mode)
+    no_limit = types.SimpleNamespace(kind=Kind.THRESHOLD)
+    monkeypatch.setattr(scan, "short_wave_limit", lambda *args, **kwargs: no_limit)
     options = scan.ScanOptions(surface=False)
     with pytest.raises(NoBifurcationFound) as err:
         scan.scan_modes(Tube.uniform(1.4), "growth", options=options)
