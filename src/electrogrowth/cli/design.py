@@ -322,6 +322,7 @@ def summary(result, physical: dict | None = None) -> list[str]:
     )
     lines += physical_line(physical or {})
     lines += _tied_only_lines(result)
+    lines += [f"  note: {result.note}"] if result.note else []
     lines += _verdict_lines(result.verdict)
     if result.to_boundary is not None:
         lines.append(f"  distance to the region's boundary: {result.to_boundary:.6g}")

@@ -32,11 +32,13 @@ from __future__ import annotations
 import dataclasses
 import math
 
+from ..bifurcation.msearch import _neighbours, geometric_samples, refine_samples
 from ..bifurcation.scan import TOP_MAX, ScanOptions, scan_modes
 from ..bifurcation.scan_grid import scan_grid
 from ..continuation.events import SWITCH, brent, widening_windows
 from ..errors import ElectrogrowthError
 from ..incremental.accuracy import check_rtol
+from ..incremental.modes import MODE_MAX
 from ..outcomes import Kind
 from . import onset
 from .margins import Margins
@@ -67,6 +69,9 @@ BALANCE = 1e-4
 @dataclasses.dataclass(frozen=True)
 class Design:
     """Result of :func:`design` (module docstring for the margin M).
+
+    ``note``: why the result may not be final (a set's closest member found at the mode cap,
+    :func:`_past_window`), else empty.
 
     ``status`` FOUND: ``x`` is the design with the widest margin in the ``region`` (the
     intervals where the target is first), ``mode`` is critical there at ``value`` and
@@ -125,6 +130,7 @@ class Design:
     surface_value: float = math.nan
     surface_margin: float = math.nan
     surface_sensitivity: dict = dataclasses.field(default_factory=dict)
+    note: str = ""
 
     def as_dict(self) -> dict:
         num = lambda v: v if v is not None and math.isfinite(v) else None  # noqa: E731
@@ -154,6 +160,7 @@ class Design:
                 "limited_by": self.limited_by or None,
                 "tied_with": [tie_name(t) for t in self.tied_with],
                 "verdict": self.verdict or None,
+                "note": self.note or None,
             },
             "sensitivity": sensitivity_json(self),
         }
@@ -243,7 +250,8 @@ def prescribe(
             best = _closest(grid, goal, margins, scan, set_members(goal, options))
     if best is None:
         return _unreached(goal, key, sequence, region)
-    x, mode, others = best
+    x, mode, others, *capped = best
+    note = _cap_note(mode) if capped and capped[0] else ""
     span = _span(region, x)
     edge = _touches(span, edges)
     m_x, nxt = margins.best_margin(mode, others, x, edge)
@@ -317,6 +325,7 @@ def prescribe(
         v_surface if math.isfinite(v_surface) else math.nan,
         m_surface,
         sens_surface,
+        note,
     )
 
 
@@ -399,9 +408,11 @@ def _tied_only(ties, goal: Target, margins: Margins, scan):
 
 def _closest(grid, goal: Target, margins: Margins, scan, members):
     """(x, target mode, competitors ahead of it) where the best target mode comes closest
-    to first: M < 0 maximised. A set none of whose modes is among a scan's first TOP_MAX
-    (a film's 64 x 31 folds and wrinkles before its first ring) is ranked by solving its
-    scanned ``members`` directly (:func:`set_members`)."""
+    to first: M < 0 maximised, and whether that mode sits at the mode cap. A set none of
+    whose modes is among a scan's first TOP_MAX (a film's 64 x 31 folds and wrinkles before
+    its first ring) is ranked by solving its scanned ``members`` directly
+    (:func:`set_members`); a set's best member found is followed past the modes looked at
+    (:func:`_past_window`)."""
     scored = []
     for x in grid:
         ranked = scan(x)
@@ -418,15 +429,18 @@ def _closest(grid, goal: Target, margins: Margins, scan, members):
         if not hits:
             continue
         mode, v = min(hits, key=lambda h: margins.sense * h[1])
+        capped = False
+        if not goal.modes:  # a set, not a list: its members go on past the scanned window
+            mode, v, capped = _past_window(mode, v, x, goal, margins)
         # the earliest competitors decide M < 0 (the first of them alone, the rest for _refine)
         ahead = tuple(m for m, w in ranked if m not in goal and margins.sense * (w - v) < 0)
         ahead = ahead[:AHEAD]
         if ahead:
-            scored.append((margins.best_margin(mode, ahead, x)[0], x, mode, ahead))
+            scored.append((margins.best_margin(mode, ahead, x)[0], x, mode, ahead, capped))
     if not scored:
         return None
     j = max(range(len(scored)), key=lambda k: scored[k][0])
-    _, x0, mode, ahead = scored[j]
+    _, x0, mode, ahead, capped = scored[j]
     a = b = x0
     others = set(ahead)
     if j > 0 and scored[j - 1][2] == mode:
@@ -434,7 +448,69 @@ def _closest(grid, goal: Target, margins: Margins, scan, members):
     if j + 1 < len(scored) and scored[j + 1][2] == mode:
         b, others = scored[j + 1][1], others | set(scored[j + 1][3])
     x, others = _refine(mode, tuple(sorted(others)), a, b, x0, goal, margins, scan)
-    return x, mode, others
+    return x, mode, others, capped
+
+
+def _past_window(mode, v: float, x: float, goal: Target, margins: Margins):
+    """(member, value, at the cap): the member of the set ``goal`` nearest to first along
+    n, then m, from ``mode`` (at ``v``), the best one among the modes looked at at x.
+
+    A scan's window (ScanOptions' ranges, widened only for its own critical mode) or the
+    set's scanned members hold the set's first modes only: a film's best ring (0, 182) lies
+    far past a window of n <= 4, whose edge (0, 8) was reported as the closest member with
+    M = -0.370 against -0.0185 (probe 13c). Where the next member along an axis comes
+    earlier, the members go on by single-mode solves, in msearch.py's geometric steps, until
+    their values turn away (or the mode cap), and the bracket is refined as there."""
+    capped = False
+    for axis in (1, 0):
+        mode, v, top = _along_axis(mode, v, x, axis, goal, margins)
+        capped = capped or top
+    return mode, v, capped
+
+
+def _along_axis(mode, v: float, x: float, axis: int, goal: Target, margins: Margins):
+    """:func:`_past_window` along one axis (1: n, 0: m); never = sense * inf (not a member,
+    or it does not bifurcate)."""
+
+    def member(k):
+        return (k, mode[1]) if axis == 0 else (mode[0], k)
+
+    def value(k):
+        trial = member(k)
+        return margins.value(trial, x) if trial in goal else margins.sense * math.inf
+
+    def later(a, b):  # is member a reached after member b (or with it)?
+        return margins.sense * seen[a] >= margins.sense * seen[b]
+
+    k0 = mode[axis]
+    if k0 >= MODE_MAX or margins.sense * value(k0 + 1) >= margins.sense * v:
+        return mode, v, False  # they turn away at once: no edge to go past
+    seen = {k0: v, k0 + 1: value(k0 + 1)}  # (cached)
+    best = k0 + 1
+    for k in geometric_samples(max(k0, 1), MODE_MAX):  # from 1: 0 x RATIO stays 0
+        if k <= best:
+            continue
+        seen[k] = value(k)
+        if later(k, best):
+            break
+        best = k
+    lo, hi = _neighbours(list(seen), best)
+    while hi - lo > 1:  # the bracket refined as msearch.py's is
+        inner = refine_samples(lo, hi)
+        seen.update({k: value(k) for k in inner if k not in seen})
+        best = min([lo, *inner, hi], key=lambda k: margins.sense * seen[k])
+        complete = len(inner) == hi - lo - 1
+        lo, hi = _neighbours([lo, *inner, hi], best)
+        if complete:
+            break
+    return member(best), seen[best], best == MODE_MAX
+
+
+def _cap_note(mode) -> str:
+    return (
+        f"the closest member found, {mode}, is at the mode cap {MODE_MAX}: a member of the"
+        " set beyond it may come closer"
+    )
 
 
 def set_members(goal: Target, options: ScanOptions) -> tuple:
