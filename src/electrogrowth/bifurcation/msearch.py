@@ -106,7 +106,7 @@ def _search(params, solve_for, side, rows, span, rtol, top, axis, m_span=None) -
     seen = list(march(samples))
     best = seen[0]
     row = [(_fixed(best, axis), _code(best))]
-    lo, hi = _neighbours(samples, _index(best, axis))
+    lo, hi = neighbours(samples, _index(best, axis))
     while hi - lo > 1:  # (at the cap too: the minimum may lie just below it)
         inner = refine_samples(lo, hi)
         complete = len(inner) == hi - lo - 1  # every integer of the bracket is marched
@@ -117,7 +117,7 @@ def _search(params, solve_for, side, rows, span, rtol, top, axis, m_span=None) -
         seen += got
         if _earlier(got[0], best, side):
             best = got[0]
-        lo, hi = _neighbours([lo, *inner, _index(best, axis), hi], _index(best, axis))
+        lo, hi = neighbours([lo, *inner, _index(best, axis), hi], _index(best, axis))
         if complete:
             break
     near = rows if m_span is None else _near_rows(rows, best, m_span, top)
@@ -214,7 +214,7 @@ def _fixed(v: ModeValue, axis: str) -> int:
     return v.n if axis == "m" else v.m
 
 
-def _neighbours(ms, m) -> tuple[int, int]:
+def neighbours(ms, m) -> tuple[int, int]:
     """The samples either side of m in the sorted ``ms`` (m itself at an end)."""
     ms = sorted(set(ms))
     i = ms.index(m)

@@ -32,7 +32,7 @@ from __future__ import annotations
 import dataclasses
 import math
 
-from ..bifurcation.msearch import _neighbours, geometric_samples, refine_samples
+from ..bifurcation.msearch import geometric_samples, neighbours, refine_samples
 from ..bifurcation.scan import TOP_MAX, ScanOptions, scan_modes
 from ..bifurcation.scan_grid import scan_grid
 from ..continuation.events import SWITCH, brent, widening_windows
@@ -494,13 +494,13 @@ def _along_axis(mode, v: float, x: float, axis: int, goal: Target, margins: Marg
         if later(k, best):
             break
         best = k
-    lo, hi = _neighbours(list(seen), best)
+    lo, hi = neighbours(list(seen), best)
     while hi - lo > 1:  # the bracket refined as msearch.py's is
         inner = refine_samples(lo, hi)
         seen.update({k: value(k) for k in inner if k not in seen})
         best = min([lo, *inner, hi], key=lambda k: margins.sense * seen[k])
         complete = len(inner) == hi - lo - 1
-        lo, hi = _neighbours([lo, *inner, hi], best)
+        lo, hi = neighbours([lo, *inner, hi], best)
         if complete:
             break
     return member(best), seen[best], best == MODE_MAX
