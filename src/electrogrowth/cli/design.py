@@ -526,6 +526,7 @@ def map_summary(result, physical: dict | None = None) -> list[str]:
         f" {_lead(result)}"
     )
     lines += physical_line(physical or {})
+    lines += [f"  note: {result.note}"] if result.note else []
     lines += _verdict_lines(result.verdict)
     for k, d in result.to_boundary.items():
         if d is not None:

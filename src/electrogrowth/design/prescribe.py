@@ -251,7 +251,7 @@ def prescribe(
     if best is None:
         return _unreached(goal, key, sequence, region)
     x, mode, others, *capped = best
-    note = _cap_note(mode) if capped and capped[0] else ""
+    note = cap_note(mode) if capped and capped[0] else ""
     span = _span(region, x)
     edge = _touches(span, edges)
     m_x, nxt = margins.best_margin(mode, others, x, edge)
@@ -415,23 +415,10 @@ def _closest(grid, goal: Target, margins: Margins, scan, members):
     (:func:`_past_window`)."""
     scored = []
     for x in grid:
-        ranked = scan(x)
-        for mode in goal.modes:  # listed modes beyond the scan's top: solved directly
-            if all(r[0] != mode for r in ranked) and math.isfinite(margins.value(mode, x)):
-                ranked.append((mode, margins.value(mode, x)))
-        hits = [(mode, v) for mode, v in ranked if mode in goal]
-        if not hits and not goal.modes:  # a set's modes all come later: ranked further
-            ranked = scan(x, TOP_MAX)
-            hits = [(mode, v) for mode, v in ranked if mode in goal]
-            if not hits:  # ... past the first TOP_MAX: its members solved directly
-                solved = [(mode, margins.value(mode, x)) for mode in members]
-                hits = [(mode, v) for mode, v in solved if math.isfinite(v)]
-        if not hits:
+        found = best_member(x, goal, margins, scan, members)
+        if found is None:
             continue
-        mode, v = min(hits, key=lambda h: margins.sense * h[1])
-        capped = False
-        if not goal.modes:  # a set, not a list: its members go on past the scanned window
-            mode, v, capped = _past_window(mode, v, x, goal, margins)
+        ranked, mode, v, capped = found
         # the earliest competitors decide M < 0 (the first of them alone, the rest for _refine)
         ahead = tuple(m for m, w in ranked if m not in goal and margins.sense * (w - v) < 0)
         ahead = ahead[:AHEAD]
@@ -449,6 +436,39 @@ def _closest(grid, goal: Target, margins: Margins, scan, members):
         b, others = scored[j + 1][1], others | set(scored[j + 1][3])
     x, others = _refine(mode, tuple(sorted(others)), a, b, x0, goal, margins, scan)
     return x, mode, others, capped
+
+
+def best_member(x, goal: Target, margins, scan, members):
+    """(the modes ranked at x, the target's first mode there, its value, at the mode cap), or
+    None where no target mode is found: as :func:`_closest` takes it (its docstring), for
+    prescribe_map.py's closest design too. ``margins``: ``value``/``sense`` as
+    :class:`Margins`; ``scan(x, top=None)``: the modes in the order reached."""
+    ranked = scan(x)
+    for mode in goal.modes:  # listed modes beyond the scan's top: solved directly
+        if all(r[0] != mode for r in ranked) and math.isfinite(margins.value(mode, x)):
+            ranked.append((mode, margins.value(mode, x)))
+    hits = [(mode, v) for mode, v in ranked if mode in goal and math.isfinite(v)]
+    if not hits and not goal.modes:  # a set's modes all come later: ranked further
+        ranked = scan(x, TOP_MAX)
+        hits = [(mode, v) for mode, v in ranked if mode in goal and math.isfinite(v)]
+        if not hits:  # ... past the first TOP_MAX: its members solved directly
+            solved = [(mode, margins.value(mode, x)) for mode in members]
+            hits = [(mode, v) for mode, v in solved if math.isfinite(v)]
+    if not hits:
+        return None
+    mode, v = min(hits, key=lambda h: margins.sense * h[1])
+    capped = False
+    if not goal.modes:  # a set, not a list: its members go on past the scanned window
+        mode, v, capped = _past_window(mode, v, x, goal, margins)
+    return ranked, mode, v, capped
+
+
+def cap_note(mode) -> str:
+    """``note`` where a set's closest member found sits at the mode cap."""
+    return (
+        f"the closest member found, {mode}, is at the mode cap {MODE_MAX}: a member of the"
+        " set beyond it may come closer"
+    )
 
 
 def _past_window(mode, v: float, x: float, goal: Target, margins: Margins):
@@ -504,13 +524,6 @@ def _along_axis(mode, v: float, x: float, axis: int, goal: Target, margins: Marg
         if complete:
             break
     return member(best), seen[best], best == MODE_MAX
-
-
-def _cap_note(mode) -> str:
-    return (
-        f"the closest member found, {mode}, is at the mode cap {MODE_MAX}: a member of the"
-        " set beyond it may come closer"
-    )
 
 
 def set_members(goal: Target, options: ScanOptions) -> tuple:

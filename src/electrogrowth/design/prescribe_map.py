@@ -41,7 +41,18 @@ from .onset import (
     margin_sensitivity,
     rivals_at,
 )
-from .prescribe import CREASE, FOUND, NOT_FIRST, NOT_REACHED, REFINE_ROUNDS, tie_name
+from .prescribe import (
+    AHEAD,
+    CREASE,
+    FOUND,
+    NOT_FIRST,
+    NOT_REACHED,
+    REFINE_ROUNDS,
+    best_member,
+    cap_note,
+    set_members,
+    tie_name,
+)
 from .sensitivity import sensitivities, sensitivity_json
 from .short_waves import SURFACE, SurfaceRival, surface_sensitivity
 from .targets import Target, check_target
@@ -61,7 +72,8 @@ class MapDesign:
     ``crease_margin``, ``surface_value``, ``surface_margin``, ``limited_by``, ``verdict``
     as there, and ``region_crease``: how many
     of the raster points in the target's region crease first. ``margin_sides`` and
-    ``tied_with``: at a kink of M, as in :class:`~.prescribe.Design`."""
+    ``tied_with``: at a kink of M, as in :class:`~.prescribe.Design`; ``note`` too (a set's
+    closest member found at the mode cap)."""
 
     target: str
     status: str
@@ -91,6 +103,7 @@ class MapDesign:
     surface_value: float = math.nan
     surface_margin: float = math.nan
     surface_sensitivity: dict = dataclasses.field(default_factory=dict)
+    note: str = ""
 
     def as_dict(self) -> dict:
         num = lambda v: v if v is not None and math.isfinite(v) else None  # noqa: E731
@@ -119,6 +132,7 @@ class MapDesign:
                 "limited_by": self.limited_by or None,
                 "tied_with": [tie_name(t) for t in self.tied_with],
                 "verdict": self.verdict or None,
+                "note": self.note or None,
             },
             "sensitivity": sensitivity_json(self),
         }
@@ -149,7 +163,7 @@ def stored_design(record: dict, mmap: ModeMap, target) -> MapDesign:
             dict(record.get("region_crease") or {}), table(sens.get("crease_value", {})),
             _sides_of(sens), tuple(_tie_of(t) for t in best.get("tied_with") or ()),
             num(best.get("surface_value")), num(best.get("surface_margin")),
-            table(sens.get("surface_value", {})),
+            table(sens.get("surface_value", {})), str(best.get("note") or ""),
         )  # fmt: skip
     except (KeyError, TypeError, ValueError, IndexError) as exc:
         raise ValueError(f"not a stored design: {exc}") from None
@@ -227,9 +241,10 @@ class _Margins:
         until = v + self.sense * m * abs(v) if math.isfinite(m) else None
         return min(m, gap_to_crease(v, self.surface(u, until), self.sense)), nxt
 
-    def ranked(self, u) -> list:
-        """The modes a scan at u finds, in the order reached: [((m, n), value), ...]."""
-        opts = dataclasses.replace(self.options, top=max(self.options.top, 6))
+    def ranked(self, u, top: int | None = None) -> list:
+        """The modes a scan at u finds, in the order reached: [((m, n), value), ...] (the
+        first ``top``, by default at least 6)."""
+        opts = dataclasses.replace(self.options, top=top or max(self.options.top, 6))
         try:
             res = scan_modes(self.at(u), self.map.solve_for, side=self.map.side, options=opts)
         except ElectrogrowthError:
@@ -344,29 +359,30 @@ def prescribe_map(
             margins.sense * (margins.crease(u) - margins.value(lab, u)) < 0 for u, lab in inside
         )
         region_crease = _region_crease(int(creased), len(inside))
+        note = ""
     else:
         status = NOT_FIRST
         best = None
         gx = (np.asarray(mmap.xs) - x0) / (x1 - x0)
         gy = (np.asarray(mmap.ys) - y0) / (y1 - y0)
+        members = set_members(goal, options)
         for i, j in np.ndindex(len(gx), len(gy)):  # the map's grid nodes, scanned again
             u = np.array([gx[i], gy[j]])
-            ranked = margins.ranked(u)
-            for m in goal.modes:
-                if all(r[0] != m for r in ranked):
-                    ranked.append((m, margins.value(m, u)))
-            hits = [(m, v) for m, v in ranked if m in goal and math.isfinite(v)]
-            if not hits:
+            # a set's first member as along one variable: past the scan's top and window
+            found = best_member(u, goal, margins, margins.ranked, members)
+            if found is None:
                 continue
-            m, v = min(hits, key=lambda h: margins.sense * h[1])
+            ranked, m, v, capped = found
             ahead = tuple(a for a, w in ranked if a not in goal and margins.sense * (w - v) < 0)
+            ahead = ahead[:AHEAD]  # the earliest: a scan down to TOP_MAX has hundreds
             if ahead:
                 score = margins.margin(m, ahead, u)[0]
                 if best is None or score > best[0]:
-                    best = (score, tuple(u), m, ahead)
+                    best = (score, tuple(u), m, ahead, capped)
         if best is None:
             return _unreached(goal, mmap, region)
-        _, u0, mode, others = best
+        _, u0, mode, others, capped = best
+        note = cap_note(mode) if capped else ""
         region_crease = {}
     u, others = _maximise(margins, mode, others, u0, goal)
     m_u, nxt = margins.margin(mode, others, u)
@@ -416,7 +432,7 @@ def prescribe_map(
         sens, sens_next, sens_margin, mmap, goal,
         v_crease if math.isfinite(v_crease) else math.nan, m_crease, limited, verdict,
         region_crease, sens_crease, sides, tied,
-        v_surface if math.isfinite(v_surface) else math.nan, m_surface, sens_surface,
+        v_surface if math.isfinite(v_surface) else math.nan, m_surface, sens_surface, note,
     )  # fmt: skip
 
 
