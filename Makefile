@@ -41,12 +41,9 @@ $(VENV)/.installed-%: $(VENV)/.installed
 
 install: $(VENV)/.kernels
 
-# The lint and format checks first (seconds), then the tests and every docstring example,
-# file by file on TEST_WORKERS processes (pytest-xdist; a file's tests in their order, in
-# one process, as a serial run has them; TEST_WORKERS=0 runs them in this process).
-TEST_WORKERS ?= 2
+# The lint and format checks first (seconds), then the tests and every docstring example.
 test: lint $(VENV)/.kernels
-	$(BIN)/python -m pytest -q -n $(TEST_WORKERS) --dist loadfile
+	$(BIN)/python -m pytest -q
 
 # Exit status 5 (no test selected) is not a failure while no test is marked slow.
 # ruff: the lint rules and the formatting of pyproject.toml [tool.ruff]; changes nothing.
@@ -62,7 +59,7 @@ format: $(VENV)/.installed
 	$(BIN)/ruff format src tests benchmarks tools examples docs/conf.py docs/_ext
 
 test-slow: $(VENV)/.kernels
-	$(BIN)/python -m pytest -q -m slow -n $(TEST_WORKERS) --dist loadfile || [ $$? -eq 5 ]
+	$(BIN)/python -m pytest -q -m slow || [ $$? -eq 5 ]
 
 demo: $(VENV)/.kernels
 	$(BIN)/electrogrowth demo --out $(OUT)
