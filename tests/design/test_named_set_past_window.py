@@ -88,13 +88,15 @@ class _Parabola:
 
 @pytest.mark.parametrize("low", [5, 37, 182, 1999])
 def test_a_sets_member_is_followed_to_its_minimum(low):
-    from electrogrowth.design.prescribe import _past_window
+    from electrogrowth.design.prescribe import _past_window, cap_note
     from electrogrowth.design.targets import check_target
 
     margins = _Parabola(low)
     v = margins.value((0, 4), 0.0)
-    mode, v, capped = _past_window((0, 4), v, 0.0, check_target("axisymmetric"), margins)
-    assert (mode, capped) == ((0, low), False)
+    goal = check_target("axisymmetric")
+    mode, v = _past_window((0, 4), v, 0.0, goal, margins)
+    assert mode == (0, low)
+    assert cap_note(mode, goal) == ""
     assert margins.solved < 60  # geometric steps and a refined bracket, not every n
 
 
@@ -105,9 +107,11 @@ def test_a_member_at_the_mode_cap_is_said_to_be():
 
     margins = _Parabola(5000)  # the minimum lies beyond the cap
     v = margins.value((0, 4), 0.0)
-    mode, _, capped = _past_window((0, 4), v, 0.0, check_target("axisymmetric"), margins)
-    assert mode == (0, MODE_MAX) and capped
-    assert str(MODE_MAX) in cap_note(mode)
+    goal = check_target("axisymmetric")
+    mode, _ = _past_window((0, 4), v, 0.0, goal, margins)
+    assert mode == (0, MODE_MAX)
+    assert str(MODE_MAX) in cap_note(mode, goal)
+    assert cap_note(mode, check_target([(0, MODE_MAX)])) == ""  # a listed mode: no set
 
 
 def test_members_that_turn_away_at_once_stay():

@@ -250,8 +250,8 @@ def prescribe(
             best = _closest(grid, goal, margins, scan, set_members(goal, options))
     if best is None:
         return _unreached(goal, key, sequence, region)
-    x, mode, others, *capped = best
-    note = cap_note(mode) if capped and capped[0] else ""
+    x, mode, others = best
+    note = cap_note(mode, goal) if status == NOT_FIRST else ""
     span = _span(region, x)
     edge = _touches(span, edges)
     m_x, nxt = margins.best_margin(mode, others, x, edge)
@@ -408,7 +408,7 @@ def _tied_only(ties, goal: Target, margins: Margins, scan):
 
 def _closest(grid, goal: Target, margins: Margins, scan, members):
     """(x, target mode, competitors ahead of it) where the best target mode comes closest
-    to first: M < 0 maximised, and whether that mode sits at the mode cap. A set none of
+    to first: M < 0 maximised. A set none of
     whose modes is among a scan's first TOP_MAX (a film's 64 x 31 folds and wrinkles before
     its first ring) is ranked by solving its scanned ``members`` directly
     (:func:`set_members`); a set's best member found is followed past the modes looked at
@@ -418,16 +418,16 @@ def _closest(grid, goal: Target, margins: Margins, scan, members):
         found = best_member(x, goal, margins, scan, members)
         if found is None:
             continue
-        ranked, mode, v, capped = found
+        ranked, mode, v = found
         # the earliest competitors decide M < 0 (the first of them alone, the rest for _refine)
         ahead = tuple(m for m, w in ranked if m not in goal and margins.sense * (w - v) < 0)
         ahead = ahead[:AHEAD]
         if ahead:
-            scored.append((margins.best_margin(mode, ahead, x)[0], x, mode, ahead, capped))
+            scored.append((margins.best_margin(mode, ahead, x)[0], x, mode, ahead))
     if not scored:
         return None
     j = max(range(len(scored)), key=lambda k: scored[k][0])
-    _, x0, mode, ahead, capped = scored[j]
+    _, x0, mode, ahead = scored[j]
     a = b = x0
     others = set(ahead)
     if j > 0 and scored[j - 1][2] == mode:
@@ -435,11 +435,11 @@ def _closest(grid, goal: Target, margins: Margins, scan, members):
     if j + 1 < len(scored) and scored[j + 1][2] == mode:
         b, others = scored[j + 1][1], others | set(scored[j + 1][3])
     x, others = _refine(mode, tuple(sorted(others)), a, b, x0, goal, margins, scan)
-    return x, mode, others, capped
+    return x, mode, others
 
 
 def best_member(x, goal: Target, margins, scan, members):
-    """(the modes ranked at x, the target's first mode there, its value, at the mode cap), or
+    """(the modes ranked at x, the target's first mode there, its value), or
     None where no target mode is found: as :func:`_closest` takes it (its docstring), for
     prescribe_map.py's closest design too. ``margins``: ``value``/``sense`` as
     :class:`Margins`; ``scan(x, top=None)``: the modes in the order reached."""
@@ -457,14 +457,16 @@ def best_member(x, goal: Target, margins, scan, members):
     if not hits:
         return None
     mode, v = min(hits, key=lambda h: margins.sense * h[1])
-    capped = False
     if not goal.modes:  # a set, not a list: its members go on past the scanned window
-        mode, v, capped = _past_window(mode, v, x, goal, margins)
-    return ranked, mode, v, capped
+        mode, v = _past_window(mode, v, x, goal, margins)
+    return ranked, mode, v
 
 
-def cap_note(mode) -> str:
-    """``note`` where a set's closest member found sits at the mode cap."""
+def cap_note(mode, goal: Target) -> str:
+    """``note`` where a set's closest member found sits at the mode cap (whether the scan
+    or :func:`_past_window` reached it there), else empty."""
+    if goal.modes or max(mode) < MODE_MAX:
+        return ""
     return (
         f"the closest member found, {mode}, is at the mode cap {MODE_MAX}: a member of the"
         " set beyond it may come closer"
@@ -472,7 +474,7 @@ def cap_note(mode) -> str:
 
 
 def _past_window(mode, v: float, x: float, goal: Target, margins: Margins):
-    """(member, value, at the cap): the member of the set ``goal`` nearest to first along
+    """(member, value): the member of the set ``goal`` nearest to first along
     n, then m, from ``mode`` (at ``v``), the best one among the modes looked at at x.
 
     A scan's window (ScanOptions' ranges, widened only for its own critical mode) or the
@@ -481,11 +483,9 @@ def _past_window(mode, v: float, x: float, goal: Target, margins: Margins):
     M = -0.370 against -0.0185 (probe 13c). Where the next member along an axis comes
     earlier, the members go on by single-mode solves, in msearch.py's geometric steps, until
     their values turn away (or the mode cap), and the bracket is refined as there."""
-    capped = False
     for axis in (1, 0):
-        mode, v, top = _along_axis(mode, v, x, axis, goal, margins)
-        capped = capped or top
-    return mode, v, capped
+        mode, v = _along_axis(mode, v, x, axis, goal, margins)
+    return mode, v
 
 
 def _along_axis(mode, v: float, x: float, axis: int, goal: Target, margins: Margins):
@@ -504,7 +504,7 @@ def _along_axis(mode, v: float, x: float, axis: int, goal: Target, margins: Marg
 
     k0 = mode[axis]
     if k0 >= MODE_MAX or margins.sense * value(k0 + 1) >= margins.sense * v:
-        return mode, v, False  # they turn away at once: no edge to go past
+        return mode, v  # they turn away at once: no edge to go past
     seen = {k0: v, k0 + 1: value(k0 + 1)}  # (cached)
     best = k0 + 1
     for k in geometric_samples(max(k0, 1), MODE_MAX):  # from 1: 0 x RATIO stays 0
@@ -523,7 +523,7 @@ def _along_axis(mode, v: float, x: float, axis: int, goal: Target, margins: Marg
         lo, hi = neighbours([lo, *inner, hi], best)
         if complete:
             break
-    return member(best), seen[best], best == MODE_MAX
+    return member(best), seen[best]
 
 
 def set_members(goal: Target, options: ScanOptions) -> tuple:

@@ -372,17 +372,17 @@ def prescribe_map(
             found = best_member(u, goal, margins, margins.ranked, members)
             if found is None:
                 continue
-            ranked, m, v, capped = found
+            ranked, m, v = found
             ahead = tuple(a for a, w in ranked if a not in goal and margins.sense * (w - v) < 0)
             ahead = ahead[:AHEAD]  # the earliest: a scan down to TOP_MAX has hundreds
             if ahead:
                 score = margins.margin(m, ahead, u)[0]
                 if best is None or score > best[0]:
-                    best = (score, tuple(u), m, ahead, capped)
+                    best = (score, tuple(u), m, ahead)
         if best is None:
             return _unreached(goal, mmap, region)
-        _, u0, mode, others, capped = best
-        note = cap_note(mode) if capped else ""
+        _, u0, mode, others = best
+        note = cap_note(mode, goal)
         region_crease = {}
     u, others = _maximise(margins, mode, others, u0, goal)
     m_u, nxt = margins.margin(mode, others, u)
