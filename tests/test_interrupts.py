@@ -97,8 +97,9 @@ def _interrupt(tmp_path, sig, *argv, ready=None, timeout=300, launcher=LAUNCHER)
         **os.environ,
         "PYTHONPATH": os.pathsep.join(filter(None, [str(SRC), os.environ.get("PYTHONPATH")])),
     }
+    # faulthandler: a crash of the child prints its stack instead of ending silently
     proc = subprocess.Popen(
-        [sys.executable, "launch.py", *argv],
+        [sys.executable, "-X", "faulthandler", "launch.py", *argv],
         cwd=tmp_path,
         env=env,
         stdout=subprocess.DEVNULL,
@@ -122,8 +123,9 @@ def _interrupt(tmp_path, sig, *argv, ready=None, timeout=300, launcher=LAUNCHER)
     err = proc.stderr.read().decode()
     proc.stderr.close()
     assert took < STOPS_WITHIN, f"{took:.1f} s after the signal"
-    assert "Traceback" not in err and err.count("\n") == 1, err
-    assert code == 128 + sig, err
+    said = f"exit status {code}, stderr {err!r}"
+    assert "Traceback" not in err and err.count("\n") == 1, said
+    assert code == 128 + sig, said
     return err
 
 
