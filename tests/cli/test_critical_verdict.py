@@ -96,6 +96,26 @@ def test_a_crease_the_criterion_cannot_establish_prints_no_digits_it_lacks(capsy
     assert rec["crease"]["error_estimate"] is None
 
 
+def test_a_crease_first_that_the_criterion_cannot_establish_is_not_ok(capsys):
+    """A scan whose first event is such a crease (a thick Gent J_m 3 tube compressed): the
+    record's status is inaccurate, the command warns and exits 3 unless the user accepts
+    it (probe round 13c: status ok with a null estimate); the neo-Hookean tube's crease,
+    whose criterion holds to its stated estimate, stays ok."""
+    argv = ["critical", "--outer-radius", "3", "--length", "1", "--solve-for", "stretch"]
+    argv += ["--m-max", "3", "--n-max", "3"]
+    gent = argv + ["--material", "gent", "--jm", "3"]
+    assert main([*gent, "--json"]) == 3
+    out, err = capsys.readouterr()
+    rec = json.loads(out)
+    assert (rec["kind"], rec["status"], rec["error_estimate"]) == ("crease", "inaccurate", None)
+    assert "not certified" in err and "not that energy's own onset" in err
+    assert main(gent) == 3 and main([*gent, "--accept-inaccurate"]) == 0
+    capsys.readouterr()
+    rec = _json(capsys, argv)
+    assert (rec["kind"], rec["status"]) == ("crease", "ok") and rec["error_estimate"] > 0
+    assert main(argv) == 0
+
+
 def test_a_surface_result_names_its_best_finite_mode_once(capsys):
     """The best finite mode of a surface result heads its runners-up in the record; the
     text shows it on the wrinkle line and lists the next ones after it, not it again. It is

@@ -21,7 +21,7 @@ import math
 from ..digits import apart
 from ..errors import ElectrogrowthError
 from ..model.controls import parse_control
-from ..outcomes import Kind
+from ..outcomes import Kind, Status
 from .crease import crease_onset
 from .march import control_path
 from .state_loss import own_threshold
@@ -345,7 +345,19 @@ def record(base: dict, verdict: Verdict, critical=None, *, first_on_top: bool = 
         out["psi"] = None
         if first.kind == Kind.CREASE:
             out["method"] = "crease criterion"
+        if unestablished(first):
+            out["status"] = str(Status.INACCURATE)
     return out
+
+
+def unestablished(r: Rival | None) -> bool:
+    """A crease whose criteria say nothing for its energy (no finite error estimate:
+    crease.energy_shift is inf, a solid that never wrinkles at its surface): a value of
+    unknown accuracy, never status ok where it comes first (probe round 13c: a Gent J_m = 3
+    tube's crease came first with status ok and no estimate)."""
+    if r is None or r.kind != Kind.CREASE:
+        return False
+    return r.error_estimate is None or not math.isfinite(r.error_estimate)
 
 
 #: how a control is named in a verdict's meaning

@@ -60,7 +60,8 @@ def configure_critical(parser: argparse.ArgumentParser) -> None:
         help="exit 0 even when the critical value is not certified to --rtol (its error"
         f" estimate exceeds {CERTIFIED:g} rtol |value| after a solve at rtol / 100); without"
         " it such a value is printed with the digits its estimate supports, a warning on"
-        f" stderr, and exit status {INACCURATE_EXIT}; likewise a value --certify refuses",
+        f" stderr, and exit status {INACCURATE_EXIT}; likewise a value --certify refuses and a"
+        " crease that comes first by a criterion not established for the energy",
     )
     parser.add_argument(
         "--koiter",
@@ -152,6 +153,13 @@ def run_critical(args) -> int:
     else:
         print_text(record, runners, getattr(args, "scales", None))
     if record.get("certified") is False:  # --certify refused it (the text says why)
+        return 0 if args.accept_inaccurate else INACCURATE_EXIT
+    if record["status"] == Status.INACCURATE and crit.status != Status.INACCURATE:
+        # a crease first whose criterion is not established for the energy (verdict.py)
+        warn(
+            f"{record['solve_for']} = {record['value']:.3g} is not certified:"
+            f" {record['crease_criterion']}"
+        )
         return 0 if args.accept_inaccurate else INACCURATE_EXIT
     return _inaccurate_exit(crit, args, params)
 
