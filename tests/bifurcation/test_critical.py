@@ -112,3 +112,14 @@ def test_no_bifurcation_in_range():
     p = Tube.uniform(1.4, 1.0, growth=1.0)
     with pytest.raises(NoBifurcationFound):  # axial extension of an unloaded tube is stable
         critical_value(p, 0, 1, "stretch", side="extension")
+
+
+def test_a_bracket_without_a_sign_change_says_the_value_is_the_marchs():
+    """A bracket that holds the root is solved in (no note); one that does not is marched
+    past, and the value outside it says why (probe round 14a: no note)."""
+    tube = Tube.uniform(1.4, 1.0, voltage=0.4)
+    inside = critical_value(tube, 0, 1, "growth", bracket=(1.2, 1.3))
+    assert 1.2 < inside.value < 1.3 and inside.message == ""
+    past = critical_value(tube, 0, 1, "growth", bracket=(1.0, 1.1))
+    assert past.value == pytest.approx(inside.value, rel=1e-10)
+    assert past.message.startswith("no sign change on the bracket (1.0, 1.1)")

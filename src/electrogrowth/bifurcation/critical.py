@@ -192,8 +192,9 @@ def critical_value(
         and returned with status INACCURATE if it still does.
     bracket : (float, float), optional
         A known sign-change interval (e.g. from a mode scan); the march is skipped when
-        the target does change sign on it (layered collocation never marches: then
-        ConvergenceError).
+        the target does change sign on it; where it does not, the march from the control's
+        start finds the first root and ``message`` says so (layered collocation never
+        marches: then ConvergenceError).
 
     Returns
     -------
@@ -314,6 +315,7 @@ def _solve(
     sref = stable_sign(m, n, params, method, family=fam)
     at = TubeAt(params, solve_for)
     g = root_mode(at, fine, mode, sref)  # along the control, stable > 0
+    note = ""
     if bracket is not None and g(bracket[0]) * g(bracket[1]) < 0:
         value = brent(g, *bracket)
     elif not march:
@@ -324,6 +326,8 @@ def _solve(
             " docs/derivation-layered-modes.md L.3)"
         )
     else:
+        if bracket is not None:  # a value outside the caller's bracket says why (probe 14a)
+            note = f"no sign change on the bracket {tuple(bracket)}: the march's first root"
         loose = targets_for(method, acc.march_signs)
         try:
             res = first_bifurcations(
@@ -374,6 +378,7 @@ def _solve(
         side,
         params.at(solve_for, value),
         family=fam,
+        message=note,
     )
 
 
