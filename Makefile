@@ -26,7 +26,7 @@ $(VENV)/.installed: pyproject.toml
 KERNEL_SOURCES := $(shell find src -name '*.py')
 $(VENV)/.kernels: $(KERNEL_SOURCES) | $(VENV)/.installed
 	find src -name '*.nbi' -delete -o -name '*.nbc' -delete
-	@echo "electrogrowth: compiling the numerical kernels (once per change; kept in the cache)"
+	@echo "electrogrowth: compiling the numerical kernels (2-5 min, once per change; kept in the cache)"
 	$(BIN)/electrogrowth critical --solve-for growth --outer-radius 1.4 --length 1 \
 		--voltage 0.4 > /dev/null
 	$(BIN)/electrogrowth critical --tube examples/bilayer.toml --solve-for voltage \

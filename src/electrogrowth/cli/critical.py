@@ -133,7 +133,9 @@ def run_critical(args) -> int:
     if args.koiter:
         record.update(_amplitude_equation(args, params, solve_for, verdict))
     elif record.get("wrinkle") is not None:  # say how to learn it, rather than nothing
-        record["branch_note"] = "not asked: add --koiter for super- or subcritical (1-5 s)"
+        record["branch_note"] = (
+            "not asked: add --koiter for super- or subcritical (1-5 s; ~10 s layered)"
+        )
     if args.certify and crit.kind in (Kind.BIFURCATION, Kind.SURFACE):
         # a scan: certify the choice of the mode as well
         try:
