@@ -72,3 +72,15 @@ def test_design_json_reports_the_kink(design, tmp_path, capsys):
     sides = out["sensitivity"]["margin_sides"]["length"]
     assert (sides["down"], sides["up"]) == pytest.approx(design.margin_sides["length"], rel=1e-9)
     assert sorted(out["best"]["tied_with"] + [out["best"]["next_mode"]]) == [[0, 1], [2, 1]]
+
+
+def test_an_exact_zero_slope_prints_as_zero_not_minus_zero():
+    """probe round 14e: the design text printed "d(margin)/dvoltage = -0"."""
+    from types import SimpleNamespace
+
+    from electrogrowth.cli.design import _margin_slope
+
+    one = SimpleNamespace(margin_sensitivity={"voltage": -0.0}, margin_sides={})
+    assert _margin_slope(one, "voltage") == ", d(margin)/dvoltage = 0"
+    kink = SimpleNamespace(margin_sensitivity={}, margin_sides={"voltage": (-0.0, 1.5)})
+    assert _margin_slope(kink, "voltage").startswith(", d(margin)/dvoltage = 0 lowering")

@@ -136,6 +136,7 @@ def test_plot_command_writes_png_and_svg(store, tmp_path, monkeypatch, capsys):
         (["--x", "stretch", "--y", "stretch"], "both 'stretch'"),
         (["--at", "voltage=0.2"], "--at voltage: not a further swept parameter"),
         (["--at", "length"], "expected PARAM=VALUE"),
+        (["--at", "length=abc"], "the value 'abc' is not a number"),
     ],
 )
 def test_plot_command_rejects_bad_axes(store, tmp_path, monkeypatch, capsys, extra, needle):

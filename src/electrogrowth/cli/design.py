@@ -362,12 +362,12 @@ def _margin_slope(result, p: str) -> str:
     """The text ", d(margin)/dp = ..." for one parameter: the two one-sided derivatives at a
     kink, "" where none was formed."""
     dm = result.margin_sensitivity.get(p)
-    if dm is not None:
-        return f", d(margin)/d{p} = {dm:.6g}"
+    if dm is not None:  # + 0.0: an exact zero prints as 0, not -0 (probe 14e)
+        return f", d(margin)/d{p} = {dm + 0.0:.6g}"
     down, up = result.margin_sides.get(p, (None, None))
     if down is None or up is None:
         return ""
-    return f", d(margin)/d{p} = {down:.6g} lowering it, {up:.6g} raising it (a kink)"
+    return f", d(margin)/d{p} = {down + 0.0:.6g} lowering it, {up + 0.0:.6g} raising it (a kink)"
 
 
 #: how the text names the design of each status

@@ -196,10 +196,13 @@ def _parse_at(items: list[str]) -> dict:
     at = {}
     for item in items:
         name, sep, value = item.partition("=")
+        if not sep:
+            raise UsageError(f"--at {item!r}: expected PARAM=VALUE, e.g. --at length=2")
         try:
             at[name.strip()] = float(value)
         except ValueError:
-            sep = ""
-        if not sep:
-            raise UsageError(f"--at {item!r}: expected PARAM=VALUE, e.g. --at length=2")
+            raise UsageError(
+                f"--at {item!r}: the value {value.strip()!r} is not a number"
+                " (non-dimensional, as the store's grid), e.g. --at length=2"
+            ) from None
     return at
