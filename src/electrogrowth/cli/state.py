@@ -79,7 +79,9 @@ def _located(exc: BaseStateError, args) -> BaseStateError:
     with open(args.tube, encoding="utf-8") as fh:
         line = line_of(fh.read(), (key,))
     where = ":".join(str(p) for p in (args.tube, line) if p is not None)
-    return BaseStateError(f"{where}: {key}: {exc}")
+    located = BaseStateError(f"{where}: {key}: {exc}")
+    located.remedy = exc.remedy  # the load's own remedy (a pressure's is not a voltage's)
+    return located
 
 
 def _print_one_layer(params, rec: dict, as_json: bool) -> int:
