@@ -16,6 +16,7 @@ import dataclasses
 from ..errors import BaseStateError, ParameterError, UsageError
 from ..model.layers import Tube
 from ..model.materials import material_by_name
+from ..model.toml_input import read_text
 from ..model.tube_file import line_of, load_tube
 from .energy import energy_from_args
 from .options import add_tube_options, tube_from_args
@@ -179,8 +180,7 @@ def located(exc: BaseStateError, args) -> BaseStateError:
             str(exc).startswith(f"{start}{getattr(tube, key):.12g} ")
             and getattr(args, key) is None
         ):
-            with open(path, encoding="utf-8-sig") as fh:
-                line = line_of(fh.read(), (key,))
+            line = line_of(read_text(path, "tube file"), (key,))
             where = ":".join(str(p) for p in (path, line) if p is not None)
             out = BaseStateError(f"{where}: {key}: {exc}")
             out.remedy = exc.remedy  # the load's own remedy (a pressure's is not a voltage's)
