@@ -218,3 +218,29 @@ def test_a_file_with_a_byte_order_mark_reads_as_without(tmp_path, capsys):
     marked.write_bytes(bom + b"voltage = 5\n[[layers]]\nouter_radius = 2\n")
     assert cli.main(["state", "--tube", str(marked)]) == 2
     assert capsys.readouterr().err.startswith(f"electrogrowth: error: {marked}:1: voltage: ")
+
+
+@pytest.mark.parametrize(
+    "material, key, named",
+    [
+        (
+            "",
+            "jm = 97.2",
+            'jm is a parameter of material = "gent", and this layer\'s material'
+            ' is neo-hookean (the default): set material = "gent" or drop jm',
+        ),
+        (
+            'material = "gent"\n',
+            "alpha = 0.3",
+            "alpha is a parameter of material ="
+            ' "mooney-rivlin", and this layer\'s material is gent',
+        ),
+        ('material = "gent"\n', "frobnicate = 1", "unknown key; a layer takes outer_radius"),
+    ],
+)
+def test_a_material_parameter_on_another_material_names_its_material(material, key, named):
+    """Probe 14e D7: jm on a layer of the default material was an "unknown key" whose list
+    left jm out; a parameter of another built-in material names that material."""
+    with pytest.raises(ConfigError) as refused:
+        parse_tube(f"[[layers]]\nouter_radius = 2\n{material}{key}\n")
+    assert named in str(refused.value)
