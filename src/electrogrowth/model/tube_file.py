@@ -136,9 +136,10 @@ def _unknown_layer_key(key: str, name: str, params: tuple[str, ...], given: bool
     owners = [other for other in BUILTIN if key in _parameters(other)]
     if owners:
         which = " or ".join(f'material = "{other}"' for other in owners)
+        own = f", which takes {', '.join(params)}" if params else ""
         return (
             f"{key} is a parameter of {which}, and this layer's material is {name}"
-            f"{'' if given else ' (the default)'}: set {which} or drop {key}"
+            f"{'' if given else ' (the default)'}{own}: set {which} or drop {key}"
         )
     extra = f" (and {', '.join(params)} for {name})" if params else ""
     return f"unknown key; a layer takes {', '.join(LAYER)}{extra}"
