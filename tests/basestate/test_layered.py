@@ -589,7 +589,11 @@ def test_tube_file_forms():
     "edit, line, words",
     [
         (("length = 2.0", "lenght = 2.0"), 1, ["lenght", "unknown key"]),
-        (("alpha = 0.4", "jm = 0.4"), 13, ["layers.2.jm", "unknown key", "alpha"]),
+        (
+            ("alpha = 0.4", "jm = 0.4"),
+            13,
+            ["layers.2.jm", 'parameter of material = "gent"', "which takes alpha"],
+        ),
         (("outer_radius = 1.8", "outer_radius = 1.1"), 11, ["layers.2.outer_radius", "> 1.2"]),
         (("[1.0, 1.0, 1.1]", "[1.0, 0.0, 1.1]"), 15, ["layers.2.growth", "> 0"]),
         (("outer = 1.0}", "outer = -1.0}"), 9, ["layers.1.growth", "> 0"]),

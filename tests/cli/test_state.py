@@ -111,6 +111,24 @@ def test_voltage_at_threshold_names_both_numbers(capsys):
     assert f"{thr:.12g}" in err and "threshold" in err
 
 
+@pytest.mark.parametrize("from_file", [False, True])
+def test_a_pressure_beyond_its_threshold_names_the_pressure_as_remedy(capsys, tmp_path, from_file):
+    """The neo-Hookean tube's inflation asymptote is P_i = ln(Rbar_o) (g = lambda_z = 1: the
+    integral of (1/lambda - 1/lambda^3) dr/r as lambda -> inf); the remedy names that load,
+    not a voltage the tube does not carry (probe 14e D1)."""
+    path = tmp_path / "t.toml"
+    path.write_text("inner_pressure = 50\n[[layers]]\nouter_radius = 2.0\n")
+    tube = (
+        ["--tube", str(path)] if from_file else ["--outer-radius", "2", "--inner-pressure", "50"]
+    )
+    status, out, err = run(capsys, "state", *tube)
+    assert status == 2 and out == "" and err.count("\n") == 1
+    assert f"P_i = {math.log(2.0):.12g} (asymptote)" in err
+    remedy = err[err.index("no axisymmetric state") :]
+    assert "inner pressure" in remedy and "voltage" not in remedy
+    assert (f"{path}:1: inner_pressure: " in err) == from_file
+
+
 def test_unknown_subcommand_and_figure(capsys):
     status, _, err = run(capsys, "bogus")
     assert status == 2 and "bogus" in err and err.count("\n") == 1

@@ -88,3 +88,23 @@ def test_a_sweep_varies_the_keys_of_a_tube_file(tmp_path):
 def test_bad_tube_sweeps_are_refused_with_the_key(tmp_path, body, needle):
     with pytest.raises(ConfigError, match=needle):
         _sweep(tmp_path, body)
+
+
+@pytest.mark.parametrize("layers", [1, 2])
+@pytest.mark.parametrize("command", [["state"], ["critical", "--solve-for", "growth"]])
+def test_a_voltage_beyond_its_threshold_names_its_file_line(capsys, tmp_path, layers, command):
+    """One layer (the uniform solver) or two (the layered one), `state` or `critical`: the
+    file's load beyond its threshold is prefixed FILE:LINE: voltage: (docs/derivation-
+    layered.md Sec. 11; probe 14e D2: a one-layer file lost it). The same voltage from the
+    command line is no line of the file."""
+    path = tmp_path / "t.toml"
+    inner = "[[layers]]\nouter_radius = 1.5\n" if layers == 2 else ""
+    path.write_text(f"length = 3.0\nvoltage = 5\n{inner}[[layers]]\nouter_radius = 2\n")
+    layer = ["--layer", "1"] if layers == 2 and command[0] == "critical" else []
+    argv = [*command, "--tube", str(path), *layer]
+    assert main(argv) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and err.count("\n") == 1
+    assert err.startswith(f"electrogrowth: error: {path}:2: voltage: Vbar = 5 is at or above")
+    assert main([*argv, "--voltage", "5"]) == 2
+    assert capsys.readouterr().err.startswith("electrogrowth: error: Vbar = 5 ")

@@ -9,11 +9,13 @@ tubes (probe 8b, D5): a user lengthening the tube by it loses margin. Now such a
 checked here against one-sided differences of direct single-mode solves."""
 
 import json
+from types import SimpleNamespace
 
 import pytest
 
 from electrogrowth import Layer, ScanOptions, Tube, critical_value, prescribe
 from electrogrowth.cli.app import main
+from electrogrowth.figures.design import plotted_modes
 
 TUBE = Tube([Layer(1.2, shear_modulus=2.0), Layer(1.5)], length=1.5, stretch=1.0)
 OPTIONS = ScanOptions((0, 4), (1, 3))
@@ -84,3 +86,25 @@ def test_an_exact_zero_slope_prints_as_zero_not_minus_zero():
     assert _margin_slope(one, "voltage") == ", d(margin)/dvoltage = 0"
     kink = SimpleNamespace(margin_sensitivity={}, margin_sides={"voltage": (-0.0, 1.5)})
     assert _margin_slope(kink, "voltage").startswith(", d(margin)/dvoltage = 0 lowering")
+
+
+def test_the_design_figure_draws_every_competitor_of_the_tie(design):
+    """Probe 14e D4: the README design's figure drew (1, 1) and (0, 1) only while the margin
+    at its star is set by (0, 1) and (2, 1) together; every tied mode is drawn (the crease
+    or the short-wave limit is no mode curve)."""
+    assert design.tied_with and {design.next_mode, *design.tied_with} == set(RIVALS)
+    assert set(RIVALS) | {(1, 1)} <= set(plotted_modes(design))
+
+
+def test_the_design_figure_draws_a_tied_mode_first_nowhere():
+    """The README's design (probe 14e D4), its result in outline (no solve): (2, 1) ties
+    with the next mode (0, 1) at the star and is first nowhere along the sequence."""
+    readme = SimpleNamespace(  # its sequence: (1, 1) then (0, 1); (2, 1) first nowhere
+        sequence=SimpleNamespace(
+            intervals=[SimpleNamespace(mode=m, kind="bifurcation") for m in ((1, 1), (0, 1))]
+        ),
+        mode=(1, 1),
+        next_mode=(0, 1),
+        tied_with=((2, 1), "crease"),
+    )
+    assert plotted_modes(readme) == [(0, 1), (1, 1), (2, 1)]

@@ -6,6 +6,8 @@ import pytest
 
 from electrogrowth import ConfigError, MaterialError, Tube, solve_base_state
 from electrogrowth.cli.app import main
+from electrogrowth.model.energy_grammar import _OPERATORS as OPERATORS
+from electrogrowth.model.energy_grammar import CONSTANTS, FUNCTIONS, SYMBOLS, parse_energy
 from electrogrowth.model.energy_text import energy_material
 from electrogrowth.model.materials import mooney_rivlin
 from electrogrowth.sweep.file import parse_config
@@ -94,3 +96,18 @@ def test_sweep_file_energy():
 def test_sweep_file_bad_energy_names_file_line_key():
     with pytest.raises(ConfigError, match=r"s.toml:5: material.energy: .*unknown name .x."):
         parse_config(SWEEP.format(energy="(I1 - 3)/2 + x"), source="s.toml")
+
+
+def test_the_energy_help_lists_every_word_the_grammar_accepts(capsys):
+    """Probe 14e D6: --energy's help listed log, exp, sqrt of the grammar's seven functions
+    and neither ^ nor pi, E. Every function, constant, operator and invariant the parser
+    knows (its own tables) is in the help, and each function parses."""
+    assert main(["state", "--help"]) == 0
+    text = capsys.readouterr().out
+    help_ = " ".join(text[text.index("  --energy OMEGA") : text.index("  --jm JM")].split())
+    words = help_.split("(paper eq. 8)")[1].replace(",", " ").replace(";", " ").split()
+    for word in (*FUNCTIONS, *CONSTANTS, *SYMBOLS, *OPERATORS):
+        assert word in words, word
+    for name in FUNCTIONS:
+        parse_energy(f"(I1 - 3)/2 + 0*{name}(I1 - 2) + I5/2")
+    parse_energy("(I1 - 3)^1/2 + pi*E*0 + I5/2")

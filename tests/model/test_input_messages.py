@@ -17,8 +17,9 @@ from electrogrowth.bifurcation.critical import no_bifurcation_remedy
 from electrogrowth.cli import app as cli
 from electrogrowth.errors import ConfigError, NoBifurcationFound, ParameterError
 from electrogrowth.model.layers import Layer, Tube
-from electrogrowth.model.tube_file import parse_tube
+from electrogrowth.model.tube_file import load_tube, parse_tube
 from electrogrowth.outcomes import Kind
+from electrogrowth.sweep.file import load_config
 
 BILAYER = Path(__file__).resolve().parents[2] / "examples" / "bilayer.toml"
 TUBE = Tube((Layer(1.1), Layer(2.0)))
@@ -199,3 +200,47 @@ def test_a_quantity_in_a_tube_file_says_where_units_go(value):
     with pytest.raises(ConfigError) as plain:
         parse_tube('[[layers]]\nouter_radius = "abc"\n')
     assert "units" not in str(plain.value)
+
+
+def test_a_file_with_a_byte_order_mark_reads_as_without(tmp_path, capsys):
+    """Probe 14e D3: Windows editors' "UTF-8 with BOM" (EF BB BF first) was "invalid TOML:
+    Invalid statement". The tube and sweep files read the same with it; a load beyond its
+    threshold still names line 1 of the file."""
+    bom = b"\xef\xbb\xbf"
+    tube = b"length = 3.0\r\n[[layers]]\r\nouter_radius = 2.0\r\n"
+    sweep = b'[solve]\nfor = "voltage"\n[grid]\nouter_radius = [1.4, 1.6]\n'
+    for name, text, load in (("t", tube, load_tube), ("s", sweep, load_config)):
+        plain, marked = tmp_path / f"{name}.toml", tmp_path / f"{name}_bom.toml"
+        plain.write_bytes(text)
+        marked.write_bytes(bom + text)
+        assert load(marked) == load(plain)
+    marked = tmp_path / "v_bom.toml"
+    marked.write_bytes(bom + b"voltage = 5\n[[layers]]\nouter_radius = 2\n")
+    assert cli.main(["state", "--tube", str(marked)]) == 2
+    assert capsys.readouterr().err.startswith(f"electrogrowth: error: {marked}:1: voltage: ")
+
+
+@pytest.mark.parametrize(
+    "material, key, named",
+    [
+        (
+            "",
+            "jm = 97.2",
+            'jm is a parameter of material = "gent", and this layer\'s material'
+            ' is neo-hookean (the default): set material = "gent" or drop jm',
+        ),
+        (
+            'material = "gent"\n',
+            "alpha = 0.3",
+            "alpha is a parameter of material ="
+            ' "mooney-rivlin", and this layer\'s material is gent',
+        ),
+        ('material = "gent"\n', "frobnicate = 1", "unknown key; a layer takes outer_radius"),
+    ],
+)
+def test_a_material_parameter_on_another_material_names_its_material(material, key, named):
+    """Probe 14e D7: jm on a layer of the default material was an "unknown key" whose list
+    left jm out; a parameter of another built-in material names that material."""
+    with pytest.raises(ConfigError) as refused:
+        parse_tube(f"[[layers]]\nouter_radius = 2\n{material}{key}\n")
+    assert named in str(refused.value)

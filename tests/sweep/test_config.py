@@ -322,3 +322,18 @@ def test_a_tube_sweep_takes_the_same_path():
     assert tubes == [file_tube.at("layers[1].shear_modulus", mu) for mu in (5.0, 20.0)]
     assert SweepConfig.from_dict(json.loads(c.to_json())) == c
     assert c.side == "compression" and c.spec.side is None  # the scan refuses it for growth
+
+
+@pytest.mark.parametrize(
+    "grid", ['["2 mm", "3 mm"]', '"2 mm"', '{start = "2 mm", stop = 3, num = 2}']
+)
+def test_a_quantity_in_a_sweep_grid_says_where_units_go(grid):
+    """Probe 14e D8: a unit string in a grid was "value 1 is a string '2 mm', not a number"
+    without the tube file's hint that files are non-dimensional (toml_input.units_hint,
+    shared); a plain string gets no such hint."""
+    text = '[solve]\nfor = "voltage"\n[grid]\nouter_radius = {}\n'
+    with pytest.raises(ConfigError, match="files hold non-dimensional values"):
+        parse_config(text.format(grid))
+    with pytest.raises(ConfigError) as plain:
+        parse_config(text.format('["abc", 3]'))
+    assert "non-dimensional" not in str(plain.value)

@@ -305,6 +305,14 @@ NO_UNLOADED = Remedy(
 )
 
 
+#: what to do where the inner pressure is beyond its threshold (BaseStateError's own remedy
+#: names the voltage, which may not even be applied; probe 14e D1)
+PRESSURE_BEYOND = Remedy(
+    "bring the inner pressure back towards the outer one, inside the threshold named here,"
+    " or move the growth or stretch back towards 1"
+)
+
+
 class LockedSearch(BaseStateError):
     """The unloaded-state search met the edge of the finite states (a layer's lock) before
     the root, at ``nodes`` Gauss nodes. Next to a Gent layer's lock a coarse rule misplaces
@@ -390,9 +398,11 @@ def _prepared(tube: Tube, rtol: float, nodes: int | None) -> _Prepared:
         target, sign = tube.inner_pressure, (1 if dp > 0 else -1)
         thr = threshold(branch, x0, lz0, "pressure", sign=sign, target=target)
         if thr.kind and not sign * (thr.value - target) > 0:
-            raise BaseStateError(
+            err = BaseStateError(
                 f"inner pressure P_i = {target:.12g} is at or beyond the pressure threshold"
                 f" P_i = {thr.value:.12g} ({thr.kind}) of this tube; no axisymmetric state"
             )
+            err.remedy = PRESSURE_BEYOND  # the load is the pressure, not a voltage
+            raise err
         loaded = solve_on(branch, thr.grid, target, thr if thr.kind else None, "P_i", sign)
     return _Prepared(wall, (x0, lz0), loaded)

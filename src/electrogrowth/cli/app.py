@@ -24,7 +24,7 @@ from collections.abc import Callable
 from importlib.metadata import version
 from pathlib import Path
 
-from ..errors import ElectrogrowthError, UsageError
+from ..errors import BaseStateError, ElectrogrowthError, UsageError
 from ..interrupts import Interrupted, interrupt_of, signals_as_interrupts
 from .units import resolve_units
 
@@ -186,7 +186,12 @@ def _dispatch(argv: list[str] | None) -> int:
         except SystemExit as done:  # --help, --version
             return done.code if isinstance(done.code, int) else 0
         resolve_units(args)
-        return args.run(args)
+        try:
+            return args.run(args)
+        except BaseStateError as exc:  # a load beyond its threshold: its file line, if any
+            from .tube_input import located  # the model's import only when it is needed
+
+            raise located(exc, args) from None
     except ElectrogrowthError as exc:  # bad input, or a failure with a remedy
         text = " ".join(str(exc).split())
         remedy = f" ({exc.remedy})" if exc.remedy else ""  # a Remedy's text: the CLI form

@@ -278,16 +278,14 @@ def _kept(stop: Interrupted, out: Path | None, stem: str, total: int = 0) -> Int
 
 def _write(result, out: Path) -> list[Path]:
     from ..design.sequence import mode_values
-    from ..figures.design import plot_design
+    from ..figures.design import plot_design, plotted_modes
 
     seq = result.sequence
     stem = _stem(result.target, seq.key)
     csv = seq.curve.to_csv(out / f"{stem}.csv")
-    modes = {iv.mode for iv in seq.intervals if iv.kind == "bifurcation"}
-    modes |= {m for m in (result.mode, result.next_mode) if m is not None}
     xs = np.linspace(seq.lo, seq.hi, PLOT_POINTS)
     values = mode_values(
-        seq.curve.params, seq.solve_for, seq.key, sorted(modes), xs, side=seq.side
+        seq.curve.params, seq.solve_for, seq.key, plotted_modes(result), xs, side=seq.side
     )
     ax = plot_design(result, values, xs)
     png = write_figure(ax.figure, out / f"{stem}.png")

@@ -8,6 +8,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ..errors import ParameterError
+from ..model import energy_words
 from ..model.controls import KINDS, SIDED, SIDES, TUBE_CONTROLS
 from ..model.layers import Tube
 from ..model.materials import BUILTIN, material_by_name
@@ -146,8 +147,8 @@ def add_tube_options(
         metavar="OMEGA",
         help="the energy Omega(I1, I2, I4, I5, I6) per unit virtual volume, units mu = eps = 1,"
         ' instead of --material, e.g. "(I1 - 3)/2 + 0.1*(I2 - 3) + I5/2": I1 = tr C, I2,'
-        " I4 = D~.D~, I5 = D~.C D~, I6 = D~.C^2 D~ (paper eq. 8); numbers, + - * / ** ( ),"
-        " log, exp, sqrt; stresses, field and moduli follow from it",
+        f" I4 = D~.D~, I5 = D~.C D~, I6 = D~.C^2 D~ (paper eq. 8); {energy_words.words()};"
+        " stresses, field and moduli follow from it",
     )
     mat.add_argument(
         "--jm",

@@ -11,9 +11,8 @@ import json
 import re
 
 from ..basestate.tube import solve_base_state
-from ..errors import BaseStateError, ConvergenceError, Remedy
+from ..errors import ConvergenceError, Remedy
 from ..model.layers import Tube
-from ..model.tube_file import line_of
 from .report import physical_line, physical_record, voltage_text
 from .tube_input import add_any_tube_options, tube_of
 
@@ -38,10 +37,6 @@ def run_state(args) -> int:
     tube = tube_of(args)
     try:
         state = solve_base_state(tube)
-    except BaseStateError as exc:
-        if tube.is_uniform:  # the paper's tube: the uniform solver's message as it is
-            raise
-        raise _located(exc, args) from None
     except ConvergenceError as exc:
         if exc.remedy is ConvergenceError.remedy:  # not a particular one (e.g. OVERFLOW)
             exc.remedy = STATE_REMEDY
@@ -61,25 +56,6 @@ def _with_physical(rec: dict, args) -> dict:
     if getattr(args, "scales", None) is not None:
         rec["physical"] = physical_record(rec, args.scales)
     return rec
-
-
-def _located(exc: BaseStateError, args) -> BaseStateError:
-    """A threshold error with the file and line of the load it names, when it is the file's."""
-    text = str(exc)  # only a message that names the load as the cause ("no unloaded state
-    # (V = 0, P_i = P_o)" is the tube's own, e.g. of a growth outside the supported range)
-    key = (
-        "voltage"
-        if text.startswith("Vbar = ")
-        else "inner_pressure"
-        if text.startswith("inner pressure P_i = ")
-        else None
-    )
-    if args.tube is None or key is None or getattr(args, key) is not None:
-        return exc
-    with open(args.tube, encoding="utf-8") as fh:
-        line = line_of(fh.read(), (key,))
-    where = ":".join(str(p) for p in (args.tube, line) if p is not None)
-    return BaseStateError(f"{where}: {key}: {exc}")
 
 
 def _print_one_layer(params, rec: dict, as_json: bool) -> int:

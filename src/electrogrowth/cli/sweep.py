@@ -11,6 +11,7 @@ from pathlib import Path
 from ..atomic import write_figure
 from ..errors import ElectrogrowthError, UsageError
 from ..interrupts import Interrupted, interrupt_of
+from ..model.toml_input import read_text
 from ..pool import check_workers
 from ..sweep.file import load_config
 from ..sweep.run import compute_sweep
@@ -91,7 +92,7 @@ def run_sweep(args) -> int:
             workers=args.workers,
             scheduler=args.scheduler,
             progress=enabled(args),  # a terminal, and no --quiet
-            source_text=args.file.read_text(encoding="utf-8"),
+            source_text=read_text(args.file, "sweep file"),  # as the config read it
         )
     except KeyboardInterrupt as exc:  # main prints the one line and exits 130 / 143
         stop = interrupt_of(exc)

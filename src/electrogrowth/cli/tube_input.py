@@ -13,10 +13,11 @@ from __future__ import annotations
 import argparse
 import dataclasses
 
-from ..errors import ParameterError, UsageError
+from ..errors import BaseStateError, ParameterError, UsageError
 from ..model.layers import Tube
 from ..model.materials import material_by_name
-from ..model.tube_file import load_tube
+from ..model.toml_input import read_text
+from ..model.tube_file import line_of, load_tube
 from .energy import energy_from_args
 from .options import add_tube_options, tube_from_args
 from .units import number_or_quantity
@@ -159,3 +160,29 @@ def control_of(args) -> tuple[Tube, str]:
         if args.component is not None:
             name += "." + args.component
     return params, str(params.check_control(name))
+
+
+#: the loads a threshold message names as its cause: tube field -> how the message starts
+#: (uniform.py's and layered.py's voltage messages, thresholds.py's pressure one)
+_THRESHOLD_LOADS = {"voltage": "Vbar = ", "inner_pressure": "inner pressure P_i = "}
+
+
+def located(exc: BaseStateError, args) -> BaseStateError:
+    """A load beyond its threshold, prefixed ``FILE:LINE: key:`` when that load is the tube
+    file's (not a command-line override, nor a value a command marched to); any other
+    error as it is. One path for every command and for one layer or several."""
+    path = getattr(args, "tube", None)
+    if path is None:
+        return exc
+    tube = load_tube(path)
+    for key, start in _THRESHOLD_LOADS.items():
+        if (
+            str(exc).startswith(f"{start}{getattr(tube, key):.12g} ")
+            and getattr(args, key) is None
+        ):
+            line = line_of(read_text(path, "tube file"), (key,))
+            where = ":".join(str(p) for p in (path, line) if p is not None)
+            out = BaseStateError(f"{where}: {key}: {exc}")
+            out.remedy = exc.remedy  # the load's own remedy (a pressure's is not a voltage's)
+            return out
+    return exc

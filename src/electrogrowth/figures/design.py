@@ -72,6 +72,17 @@ def plot_design(result, values: dict, xs) -> object:
     return ax
 
 
+def plotted_modes(result) -> list:
+    """The modes :func:`plot_design` draws: each first somewhere along the sequence, the
+    design's target mode, the next one, and every mode that ties with it in setting the
+    margin at the design (a kink of the margin): without these the star's margin is
+    measured against a curve the figure does not show (probe 14e D4)."""
+    seq = result.sequence
+    modes = {iv.mode for iv in seq.intervals if iv.kind == "bifurcation"}
+    modes |= {m for m in (result.mode, result.next_mode, *result.tied_with) if m is not None}
+    return sorted(m for m in modes if isinstance(m, tuple))  # not "crease" nor "surface"
+
+
 def _name(label) -> str:
     return f"({label[0]}, {label[1]})" if isinstance(label, tuple) else str(label)
 

@@ -37,6 +37,7 @@ import re
 import sympy as sp
 
 from ..errors import MaterialError
+from . import energy_words
 from .energy_sizes import as_float, log_height, log_size, undeformed_value
 
 MAX_LENGTH = 2000
@@ -47,28 +48,17 @@ MAX_LOG = 700.0  # e^709.8 is the largest double
 MAX_EXPONENT = 100.0
 
 #: The invariants, equal to model/materials.py's symbols (sympy symbols are equal by name
-#: and assumptions).
-SYMBOLS = {name: sp.Symbol(name, real=True) for name in ("I1", "I2", "I4", "I5", "I6")}
-FUNCTIONS = {
-    "log": sp.log,
-    "exp": sp.exp,
-    "sqrt": sp.sqrt,
-    "tanh": sp.tanh,
-    "atan": sp.atan,
-    "cosh": sp.cosh,
-    "sinh": sp.sinh,
-}
-CONSTANTS = {"pi": sp.pi, "E": sp.E}
-ALLOWED = (
-    "allowed: numbers, I1 I2 I4 I5 I6, + - * / ** ^ ( ), log exp sqrt tanh atan cosh sinh"
-    " of one argument, pi, E"
-)
+#: and assumptions); the functions and constants by their names in sympy (energy_words.py).
+SYMBOLS = {name: sp.Symbol(name, real=True) for name in energy_words.INVARIANTS}
+FUNCTIONS = {name: getattr(sp, name) for name in energy_words.FUNCTIONS}
+CONSTANTS = {name: getattr(sp, name) for name in energy_words.CONSTANTS}
+ALLOWED = "allowed: " + energy_words.words()
 
 _NUMBER = re.compile(r"(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?")
 _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 _SPACE = " \t\r\n"
 _NAMES = {*SYMBOLS, *CONSTANTS, *FUNCTIONS}
-_OPERATORS = ("**", "+", "-", "*", "/", "^", "(", ")")
+_OPERATORS = tuple(sorted(energy_words.OPERATORS, key=len, reverse=True))  # "**" before "*"
 _GROWING = (sp.exp, sp.cosh, sp.sinh)  # functions that overflow a double beyond MAX_LOG
 
 

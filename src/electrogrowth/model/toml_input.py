@@ -17,7 +17,8 @@ MAX_FILE_BYTES = 1_000_000
 
 
 def read_text(path: str | Path, what: str) -> str:
-    """The UTF-8 text of ``path``; ConfigError if it cannot be read (``what``: "tube file").
+    """The UTF-8 text of ``path`` (a leading byte-order mark dropped, line ends made "\\n");
+    ConfigError if it cannot be read (``what``: "tube file").
 
     Only a regular file of at most :data:`MAX_FILE_BYTES` is read: a path naming a
     directory, a device (``/dev/zero`` never ends) or a pipe is refused before reading.
@@ -42,8 +43,8 @@ def read_text(path: str | Path, what: str) -> str:
         ) from None
     if len(data) > MAX_FILE_BYTES:
         raise ConfigError((), f"the {what} grew beyond {MAX_FILE_BYTES} bytes", source=str(path))
-    try:
-        return data.decode("utf-8").replace("\r\n", "\n").replace("\r", "\n")  # as read_text
+    try:  # utf-8-sig: a leading byte-order mark (Windows editors' "UTF-8 with BOM") dropped
+        return data.decode("utf-8-sig").replace("\r\n", "\n").replace("\r", "\n")
     except UnicodeDecodeError:
         raise ConfigError((), f"the {what} is not UTF-8 text", source=str(path)) from None
 

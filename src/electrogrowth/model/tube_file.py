@@ -91,12 +91,11 @@ def _layer(table, where: tuple[str, ...], inner: float) -> Layer:
         raise ConfigError(
             where + ("material",), f"unknown material {name!r}; choose {', '.join(BUILTIN)}"
         )
-    params = tuple(inspect.signature(BUILTIN[name]).parameters)
+    params = _parameters(name)
     for key in table:
         if key not in LAYER + params:
-            extra = f" (and {', '.join(params)} for {name})" if params else ""
             raise ConfigError(
-                where + (key,), f"unknown key; a layer takes {', '.join(LAYER)}{extra}"
+                where + (key,), _unknown_layer_key(key, name, params, "material" in table)
             )
     if "outer_radius" not in table:
         raise ConfigError(where, "missing outer_radius (R_k / R_i > 1)")
@@ -124,6 +123,26 @@ def _layer(table, where: tuple[str, ...], inner: float) -> Layer:
     if "growth" in table:
         fields["growth"] = _growth(table["growth"], where + ("growth",), inner, b)
     return _checked(lambda: Layer(**fields), where)
+
+
+def _parameters(name: str) -> tuple[str, ...]:
+    """The parameters of the built-in material ``name`` (jm for gent, ...)."""
+    return tuple(inspect.signature(BUILTIN[name]).parameters)
+
+
+def _unknown_layer_key(key: str, name: str, params: tuple[str, ...], given: bool) -> str:
+    """Why a layer's ``key`` is refused: a parameter of another built-in material is named
+    as such (jm without material = "gent"), any other key gets the layer's list."""
+    owners = [other for other in BUILTIN if key in _parameters(other)]
+    if owners:
+        which = " or ".join(f'material = "{other}"' for other in owners)
+        own = f", which takes {', '.join(params)}" if params else ""
+        return (
+            f"{key} is a parameter of {which}, and this layer's material is {name}"
+            f"{'' if given else ' (the default)'}{own}: set {which} or drop {key}"
+        )
+    extra = f" (and {', '.join(params)} for {name})" if params else ""
+    return f"unknown key; a layer takes {', '.join(LAYER)}{extra}"
 
 
 def _growth(value, where, inner: float, outer: float):

@@ -20,7 +20,7 @@ from ..bifurcation.scan import ScanOptions
 from ..errors import ConfigError, ParameterError
 from ..model.controls import parse_control
 from ..model.layers import Tube
-from ..model.toml_input import finite, number, parse, read_text, shown, typename
+from ..model.toml_input import finite, number, parse, read_text, shown, typename, units_hint
 from ..model.tube_file import parse_tube
 from .config import MODE_KEYS, SweepConfig, default_chunk, reference_tube, sweep_keys
 
@@ -229,14 +229,15 @@ def _grid_values(key: str, value) -> tuple[float, ...]:
         for i, v in enumerate(value):
             if isinstance(v, bool) or not isinstance(v, (int, float)):
                 raise ConfigError(
-                    where, f"value {i + 1} is {typename(v)} {shown(v)}, not a number"
+                    where,
+                    f"value {i + 1} is {typename(v)} {shown(v)}, not a number{units_hint(v)}",
                 )
             values.append(finite(v, where))
     else:
         raise ConfigError(
             where,
             f"expected a list of numbers or a range {{start, stop,"
-            f" num}}, got {typename(value)} {shown(value)}",
+            f" num}}, got {typename(value)} {shown(value)}{units_hint(value)}",
         )
     ordered = sorted(values)
     for a, b in zip(ordered, ordered[1:]):
