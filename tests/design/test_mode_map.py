@@ -434,3 +434,16 @@ def test_a_region_met_only_where_a_boundary_leaves_the_box():
     ]  # fmt: skip
     labels = {frozenset(t.patterns) for t in mm.triple_points}
     assert frozenset(((3, 1), (2, 1), (3, 2))) in labels
+
+
+def test_an_uncertified_boundary_names_what_came_first():
+    """The design's text says which pattern a failed certificate's scan found first, where
+    and how far ahead (probe14f D1's map said only "NOT certified")."""
+    from electrogrowth.cli.design import _uncertified
+    from electrogrowth.design.map_record import Boundary, Certificate
+
+    cert = Certificate(1.1, 2.460798, 1e-15, (3, 2), -0.00268, False)
+    b = Boundary((3, 1), (2, 1), (1.1,), (2.460798,), (0.95,), ("edge", "edge"), (cert,))
+    text = _uncertified(b)
+    assert "(3, 2) comes first at (1.1, 2.460798), 0.00268 ahead" in text
+    assert "raise --points" in text
