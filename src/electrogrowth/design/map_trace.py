@@ -27,7 +27,9 @@ ones). Where something does, the curve met it first, before the point Newton fou
 last step passed two events in one (triple points closer than a step), so the trace is
 taken again from the last point before the event with steps of a quarter of that one,
 until the triple point holds or the step is the smallest (then the curve ends "lost").
-docs/design.md.
+Where a curve leaves the box a full scan checks it too: a pattern first there that was not
+compared means the curve crossed its region unseen, so the curve is taken again from its
+start with it compared, to the triple point where it meets that region. docs/design.md.
 """
 
 from __future__ import annotations
