@@ -74,6 +74,31 @@ def test_a_pattern_only_a_scan_finds_is_met_first():
     assert abs(u[1] - 0.38) < 1e-12 and all(p[1] <= 0.38 + 1e-12 for p in pts)
 
 
+def test_a_pattern_only_a_scan_finds_at_the_box_edge_is_met_first():
+    """probe14f D1: the P|Q curve leaves the box (u_1 = 1) where D, not compared, comes
+    first (from u_1 = 0.8 on, v_D - v = 0.1 (0.8 - u_1) on the curve). The scan where it
+    leaves names D, and the curve is taken again to the triple point of P, Q and D, found
+    where the closed forms cross: (0.5, 0.8), value 2 - 0.08."""
+
+    def scan(values, seen, u, v):
+        if values.value("D", u) >= v - 1e-9:
+            return None
+        if "D" not in seen:
+            seen.append("D")
+        return "D"
+
+    patterns = dict(PATTERNS, D=_linear(2.0 + 0.1 * 0.8, -0.4, -0.2))
+    values = Linear(patterns)
+    seen: list = []
+    pts, end, (labels, u, v) = follow(
+        values, "P", "Q", np.array([0.5, 0.0]), np.array([0.0, 1.0]), lambda u: seen,
+        check=lambda u, v: scan(values, seen, u, v),
+    )  # fmt: skip
+    assert end == TRIPLE and labels == ("P", "Q", "D")
+    assert abs(u[0] - 0.5) < 1e-12 and abs(u[1] - 0.8) < 1e-12 and abs(v - 1.92) < 1e-12
+    assert all(p[1] <= 0.8 + 1e-12 for p in pts)
+
+
 def test_a_mode_with_no_root_in_the_range_does_not_come():
     """At the gut map's thick, stiff corner the prismatic (10, 0) has no critical hoop
     growth in [1, 6] (its first root rises steeply and vanishes near R_1 = 1.125): the

@@ -398,3 +398,52 @@ def test_seeds_kept_in_order_whatever_ran_ahead(width):
 def test_bad_workers(workers):
     with pytest.raises(UsageError, match="workers"):
         mode_map(TUBE, "stretch", VARY, options=NEAR, workers=workers)
+
+
+def test_a_region_met_only_where_a_boundary_leaves_the_box():
+    """probe14f D1: on the edge Rbar_o = 1.1 of this box (charged tube, Vbar = 0.3), (3, 2)
+    comes first for L between two switches, in a region no grid node lands in that narrows
+    into the box. The (3, 1) | (2, 1) curve leaves the box inside it; the scan there must
+    find (3, 2), and its region be traced with ends where single-mode critical values cross
+    (Brent on critical_value along L, independent of the tracer)."""
+    tube = Tube.uniform(1.3, 1.0, voltage=0.3)
+    vary = (("outer_radius", 1.1, 1.13), ("length", 2.0, 3.0))
+    options = ScanOptions((2, 3), (1, 2))
+    mm = mode_map(tube, "stretch", vary, side="compression", points=2, options=options)
+
+    def switch(a, b, lo, hi):
+        def gap(y):
+            at = tube.at("outer_radius", 1.1).at("length", y)
+            va = critical_value(at, *a, "stretch", side="compression").value
+            return va - critical_value(at, *b, "stretch", side="compression").value
+
+        return brentq(gap, lo, hi, xtol=1e-13, rtol=1e-15)
+
+    ends = {}
+    for b in mm.boundaries:
+        assert b.certified
+        if (3, 2) in (b.left, b.right) and b.ends[1] == "edge":
+            ends[frozenset((b.left, b.right))] = b.y[-1]
+            assert b.x[-1] == 1.1
+    lower = switch((3, 1), (3, 2), 2.1, 2.4)
+    upper = switch((3, 2), (2, 1), 2.5, 2.9)
+    assert abs(ends[frozenset(((3, 1), (3, 2)))] - lower) < 1e-9
+    assert abs(ends[frozenset(((3, 2), (2, 1)))] - upper) < 1e-9
+    assert [mm.pattern_at(1.1, y) for y in (2.2, 2.45, 2.65, 2.75)] == [
+        (3, 1), (3, 2), (3, 2), (2, 1)
+    ]  # fmt: skip
+    labels = {frozenset(t.patterns) for t in mm.triple_points}
+    assert frozenset(((3, 1), (2, 1), (3, 2))) in labels
+
+
+def test_an_uncertified_boundary_names_what_came_first():
+    """The design's text says which pattern a failed certificate's scan found first, where
+    and how far ahead (probe14f D1's map said only "NOT certified")."""
+    from electrogrowth.cli.design import _uncertified
+    from electrogrowth.design.map_record import Boundary, Certificate
+
+    cert = Certificate(1.1, 2.460798, 1e-15, (3, 2), -0.00268, False)
+    b = Boundary((3, 1), (2, 1), (1.1,), (2.460798,), (0.95,), ("edge", "edge"), (cert,))
+    text = _uncertified(b)
+    assert "(3, 2) comes first at (1.1, 2.460798), 0.00268 ahead" in text
+    assert "raise --points" in text

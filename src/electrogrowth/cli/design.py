@@ -487,6 +487,19 @@ def _name(label) -> str:
     return f"({label[0]}, {label[1]})" if isinstance(label, tuple) else str(label)
 
 
+def _uncertified(boundary) -> str:
+    """Why a boundary is not certified: its first failed point, what the scan found there
+    and how far ahead, with the remedy."""
+    c = next(c for c in boundary.certificates if not c.ok)
+    where = f"at ({c.x:.8g}, {c.y:.8g})"
+    if boundary.left != c.first != boundary.right and math.isfinite(c.ahead):
+        missed = f"{_name(c.first)} comes first {where}"
+        why = f"{missed}, {-c.ahead:.3g} ahead (a pattern the map missed)"
+    else:
+        why = f"the two critical values differ by {c.gap:.3g} {where}"
+    return f"NOT certified: {why}; raise --points"
+
+
 def map_summary(result, physical: dict | None = None) -> list[str]:
     """Text lines of a two-variable design: the boundaries, triple points, the design
     (``physical``: its values in physical units, under it)."""
@@ -495,7 +508,7 @@ def map_summary(result, physical: dict | None = None) -> list[str]:
     side = f" ({mmap.side})" if mmap.side else ""
     lines = [f"target {result.target}: critical {mmap.solve_for}{side} over {kx} and {ky}"]
     for b in mmap.boundaries:
-        ok = "certified" if b.certified else "NOT certified"
+        ok = "certified" if b.certified else _uncertified(b)
         lines.append(
             f"  boundary {_name(b.left)} | {_name(b.right)}: {len(b.x)} points from"
             f" ({b.x[0]:.8g}, {b.y[0]:.8g}) to ({b.x[-1]:.8g}, {b.y[-1]:.8g}), ends"

@@ -27,7 +27,9 @@ ones). Where something does, the curve met it first, before the point Newton fou
 last step passed two events in one (triple points closer than a step), so the trace is
 taken again from the last point before the event with steps of a quarter of that one,
 until the triple point holds or the step is the smallest (then the curve ends "lost").
-docs/design.md.
+Where a curve leaves the box a full scan checks it too: a pattern first there that was not
+compared means the curve crossed its region unseen, so the curve is taken again from its
+start with it compared, to the triple point where it meets that region. docs/design.md.
 """
 
 from __future__ import annotations
@@ -227,7 +229,9 @@ def follow(values: Values, p, q, start, tangent, candidates, policy=CONTOUR_STEP
     CLOSED, TRIPLE, JUMP or LOST and triple (labels, u, value) where it met a third pattern.
 
     ``candidates(u)`` are the patterns compared at each point; ``check(u, v)``, if given,
-    names a pattern a full scan finds earlier than v at a triple point u (else None)."""
+    names a pattern a full scan finds earlier than v at u (else None): asked at a triple
+    point and where the curve leaves the box; a pattern found there that was not compared
+    before is compared from then on, and the curve is taken again from ``start``."""
     d = values.condition(p, q)
     seen: dict = {}  # pattern -> (its relative lead over P and Q, the point it was checked)
     count = [0]
@@ -253,9 +257,21 @@ def follow(values: Values, p, q, start, tangent, candidates, policy=CONTOUR_STEP
 
     pts = [np.asarray(start, float)]
     t = np.asarray(tangent, float)
+    first_policy, retaken = policy, set()
     while True:
         tr = trace_contour(d, pts[-1], t, stop=stop, policy=policy)
         pts = pts[:-1] + [np.array(x) for x in tr.points]
+        if tr.end == EDGE and check is not None:
+            c = _exit_check(values, p, q, pts[-1], check)
+            if c is not None and c not in retaken:
+                # the curve left the box where c comes first: it met c's region on the
+                # way, unseen as c was not compared; taken again with c compared
+                retaken.add(c)
+                pts, t = [np.asarray(start, float)], np.asarray(tangent, float)
+                policy = first_policy
+                seen.clear()
+                count[0] = 0
+                continue
         if tr.end != STOPPED:
             return pts, {EDGE: EDGE, CLOSED: CLOSED, LOST: LOST}[tr.end], None
         if tr.event == JUMP:
@@ -271,6 +287,12 @@ def follow(values: Values, p, q, start, tangent, candidates, policy=CONTOUR_STEP
         short = max(REFINE * step, policy.smallest)  # again from the last point, shorter
         policy = dataclasses.replace(policy, first=short, largest=short)
         t = past - last
+
+
+def _exit_check(values: Values, p, q, u, check):
+    """A pattern a full scan finds earlier than P and Q where the curve leaves the box."""
+    v = values.value(p, u) if valued(p) else values.value(q, u)
+    return None if v is None else check(u, v)
 
 
 def _event(values: Values, p, q, c, last, past, candidates, check):
