@@ -106,3 +106,29 @@ def test_an_element_scale_refusal_gives_postbuckle_s_own_remedy():
     assert "--m-max" not in remedy and "--side" not in remedy
     assert "--axial" in remedy.cli and "axial=" in remedy.python
     assert "guess" not in str(caught.value)
+    # probe 14d D2: the counts refused, and the one along to keep when raising --density
+    assert "along the window than the 16 now (--axial)" in remedy.cli
+    assert "across the wall than the 8 now (--density) with --axial 16 or fewer" in remedy.cli
+    assert "with axial=16 or fewer given" in remedy.python
+
+
+def test_the_element_scale_remedy_keeps_the_count_along_when_density_rises():
+    """probe 14d D2: R = 1 to 1.6, L = 1, (0, 1) under growth is refused in a pattern of the
+    elements' size on --density 20 and on --density 40 alike, since --axial (left out)
+    grows with --density: (13) x 20, then (25) x 40. "More across the wall (--density)"
+    alone could not help; --density 40 --axial 20 runs (onset 1.6480470, linear 1.6480458).
+    The remedy names the mesh's counts, along the window (--axial) or the sector (--hoop,
+    per pi/m, whatever the periods), and says to keep the one along."""
+    from electrogrowth.postbuckle.meridian import Meridian, meridian_size
+    from electrogrowth.postbuckle.onset import element_scale_remedy
+    from electrogrowth.postbuckle.section import mesh_size
+
+    tube = Tube.uniform(1.6, length=1.0)
+    meridian = element_scale_remedy(Meridian(tube, 1, meridian_size(tube, 1, 20.0)))
+    assert "than the 20 now (--axial)" in meridian.cli
+    assert "than the 13 now (--density) with --axial 20 or fewer given" in meridian.cli
+    assert "left out, it grows with --density" in meridian.cli
+    section = Section(tube, 4, mesh_size(tube, 4, 20.0, periods=2), periods=2)
+    sector = element_scale_remedy(section)
+    assert "along the sector than the 16 now (--hoop)" in sector.cli
+    assert "with hoop=16 or fewer given" in sector.python and "--" not in sector.python

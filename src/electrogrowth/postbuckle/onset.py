@@ -105,16 +105,29 @@ class FEOnset:
     path: tuple[tuple[float, float], ...]
 
 
-#: postbuckle's own remedies where the FE onset is refused (probe 12a D3: the scan's
-#: "raise --m-max / --n-max, try the other --side" named options postbuckle lacks)
-ELEMENT_SCALE_REMEDY = Remedy(
-    "the mixed elements lose stability under compression in patterns of their own size, the"
-    " earlier the more elements along the face: give fewer elements along the sector or"
-    " window (--hoop, --axial) or more across the wall (--density)",
-    python="the mixed elements lose stability under compression in patterns of their own"
-    " size, the earlier the more elements along the face: give fewer elements along the"
-    " sector or window (hoop=, axial=) or more across the wall (density=)",
-)
+def element_scale_remedy(section) -> Remedy:
+    """postbuckle's own remedy where the FE onset is refused in a pattern of the elements'
+    size (probe 12a D3: the scan's "raise --m-max / --n-max, try the other --side" named
+    options postbuckle lacks). It names the count along the face now: left out, --hoop /
+    --axial grows with --density, so "more across the wall (--density)" alone refined along
+    the face as much and failed the same (probe 14d, D2: --density 20 and 40 both refused,
+    --density 40 --axial 20 runs)."""
+    flag, where = ("hoop", "sector") if section.kind == "section" else ("axial", "window")
+    along, across = section.size.hoop // section.periods, sum(section.size.radial)
+    why = (
+        "the mixed elements lose stability under compression in patterns of their own size,"
+        " the earlier the more elements along the face"
+    )
+    return Remedy(
+        f"{why}: give fewer elements along the {where} than the {along} now (--{flag}), or"
+        f" more across the wall than the {across} now (--density) with --{flag} {along} or"
+        f" fewer given (left out, it grows with --density)",
+        python=f"{why}: give fewer elements along the {where} than the {along} now"
+        f" ({flag}=), or more across the wall than the {across} now (density=) with"
+        f" {flag}={along} or fewer given (left out, it grows with density)",
+    )
+
+
 FINER_MESH = Remedy(
     "try a finer mesh (--density, --hoop or --axial)",
     python="try a finer mesh (density=, hoop= or axial=)",
@@ -133,7 +146,7 @@ def _unstable_before(section, x, control: str, c: float, guess: float) -> NoBifu
     )
     if is_element_scale(section, z):
         exc.args = (f"{exc.args[0]}, in a pattern of the elements' size",)
-        exc.remedy = ELEMENT_SCALE_REMEDY
+        exc.remedy = element_scale_remedy(section)
     else:
         exc.args = (f"{exc.args[0]}, in a pattern the mesh resolves",)
         exc.remedy = Remedy(
