@@ -36,10 +36,10 @@ from ..bifurcation.msearch import geometric_samples, neighbours, refine_samples
 from ..bifurcation.scan import TOP_MAX, ScanOptions, scan_modes
 from ..bifurcation.scan_grid import scan_grid
 from ..continuation.events import SWITCH, brent, widening_windows
-from ..errors import ElectrogrowthError
+from ..errors import ElectrogrowthError, Remedy
 from ..incremental.accuracy import check_rtol
 from ..incremental.modes import MODE_MAX
-from ..outcomes import Kind
+from ..outcomes import Kind, Status
 from . import onset
 from .margins import Margins
 from .onset import CREASE_FIRST, gap_to_crease
@@ -71,7 +71,8 @@ class Design:
     """Result of :func:`design` (module docstring for the margin M).
 
     ``note``: why the result may not be final (a set's closest member found at the mode cap,
-    :func:`_past_window`), else empty.
+    :func:`_past_window`), or for NOT_REACHED what to try (:func:`unreached_note`), else
+    empty.
 
     ``status`` FOUND: ``x`` is the design with the widest margin in the ``region`` (the
     intervals where the target is first), ``mode`` is critical there at ``value`` and
@@ -249,7 +250,8 @@ def prescribe(
         if best is None:
             best = _closest(grid, goal, margins, scan, set_members(goal, options))
     if best is None:
-        return _unreached(goal, key, sequence, region)
+        failed = any(iv.kind == Status.FAILED for iv in sequence.intervals)
+        return _unreached(goal, key, sequence, region, unreached_note(goal, failed))
     x, mode, others = best
     note = cap_note(mode, goal) if status == NOT_FIRST else ""
     span = _span(region, x)
@@ -352,12 +354,32 @@ def _span(region, x: float) -> Interval | None:
     return next((sp for sp in spans if sp.contains(x)), None)
 
 
-def _unreached(goal: Target, key, sequence, region) -> Design:
+def _unreached(goal: Target, key, sequence, region, note: str) -> Design:
     nan = math.nan
     return Design(
         goal.name, NOT_REACHED, key, sequence.solve_for, region, nan, None, nan, nan, None,
-        nan, None, {}, {}, {}, sequence,
+        nan, None, {}, {}, {}, sequence, note=note,
     )  # fmt: skip
+
+
+def unreached_note(goal: Target, failed: bool) -> Remedy:
+    """What to try when no target mode was found (NOT_REACHED). A listed mode is solved
+    directly at every scanned design, whatever the scans' window: widening it cannot help
+    (it was advised for a (2, 0) well inside it, whose window lay between two failed grid
+    points, probe 14d D1), a finer grid can; a set's members are those the window holds."""
+    where = "between the grid's points" + (" and in its failed intervals" if failed else "")
+    if goal.modes:
+        return Remedy(
+            f"no target mode bifurcates at the scanned designs (each solved directly): it may"
+            f" come first {where}; raise --points, or move the --vary range",
+            python=f"no target mode bifurcates at the scanned designs (each solved directly):"
+            f" it may come first {where}; raise points=, or move the vary range",
+        )
+    return Remedy(
+        "no member of the set among the scanned modes: widen --m-max / --n-max, or raise --points",
+        python="no member of the set among the scanned modes: widen ScanOptions(m_range=...,"
+        " n_range=...), or raise points=",
+    )
 
 
 def _best_in_region(region, grid, goal: Target, margins: Margins, scan, edges=frozenset()):
