@@ -22,6 +22,7 @@ from electrogrowth.bifurcation.curve_switches import _Locator
 from electrogrowth.bifurcation.curves import _curve, _located
 from electrogrowth.cli.design import _change_line
 from electrogrowth.continuation.events import SWITCH
+from electrogrowth.design.margins import Margins
 from electrogrowth.design.prescribe import unreached_note
 from electrogrowth.design.sequence import from_curve
 from electrogrowth.design.targets import check_target
@@ -170,6 +171,21 @@ OPTIONS = ScanOptions((0, 3), (1, 1), extend=False)
 def _collapse_pressure(g: float) -> float:
     """The (2, 0) critical inner pressure of the tube grown to g (another control)."""
     return critical_value(TUBE.at(CONTROL, g), 2, 0, "pressure", side="compression").value
+
+
+def test_next_to_the_cap_the_margin_is_the_room_up_to_it_not_infinite():
+    """At P_i = -0.0005 (2, 0) wrinkles at g = 4.99 and (3, 0) not before the cap 6: M was
+    inf there, and a design over [-0.005, 0] sat 6e-10 from the window's end with M = inf.
+    Nothing is known past the cap: M is the room up to it, (6 - v_T) / v_T, by a direct
+    single-mode solve."""
+    x = -0.0005
+    at = TUBE.at("pressure", x)
+    v_t = critical_value(at, 2, 0, CONTROL).value
+    with pytest.raises(NoBifurcationFound):
+        critical_value(at, 3, 0, CONTROL)
+    margins = Margins(TUBE, CONTROL, "pressure", None, width=0.1)
+    m, nxt = margins.best_margin((2, 0), ((3, 0),), x)
+    assert nxt == (3, 0) and math.isclose(m, (6.0 - v_t) / v_t, rel_tol=1e-12)
 
 
 @pytest.mark.slow

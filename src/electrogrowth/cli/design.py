@@ -421,6 +421,8 @@ def _limit(result) -> str:
     """What sets a one-variable design's margin, with its value."""
     if result.limited_by == "no design":  # the room below the target over the room above
         return f"the end of the valid range (next {result.next_mode} at {result.next_value:.10g})"
+    if result.limited_by == "range end":  # no competitor before it: a lower bound
+        return "the end of the control's range (no competitor comes before it)"
     return _lead(result)
 
 

@@ -56,6 +56,7 @@ XTOL = 1e-9  # relative accuracy of the best design
 AHEAD = 6  # competitors ahead of the closest design's target mode that are kept
 MEMBERS_MAX = 256  # a set's members solved directly when none is among a scan's first ones
 NO_DESIGN = "no design"  # limited_by: the gap to a located end of the valid range
+RANGE_END = "range end"  # limited_by: no competitor before the end of the control's range
 CREASE = "crease"  # the crease as a competitor (a tie at a kink of M)
 #: windows, widening 4-fold from XTOL max(1, |x|), in which the kink next to the bounded
 #: Brent's maximiser is looked for: up to 1024 times its tolerance (it left the kink within
@@ -90,8 +91,9 @@ class Design:
     gap that sets M; empty for "no design"), ``surface_value`` and ``surface_margin`` the
     exact short-wave limit at x and the gap to it (NaN: the scans leave it out, or none is
     met; ``surface_sensitivity`` its d/dp), ``limited_by`` which competitor sets M
-    ("mode", "crease", "surface", or "no design": the room below the target, next to a
-    located end of the valid range),
+    ("mode", "crease", "surface", "no design": the room below the target, next to a
+    located end of the valid range, or "range end": no competitor comes before the end of
+    the control's range, and M is the room up to it, a lower bound, design/margins.py),
     ``verdict`` the verdict of a scan at x (design/onset.py :func:`design_verdict`) and
     ``region_crease`` how many of the curve's points in each interval of the region
     crease first. NOT_REACHED: no target mode was found among the
@@ -268,7 +270,8 @@ def prescribe(
     v_surface = margins.surface(x)
     m_surface = gap_to_crease(v, v_surface, margins.sense)
     by_modes = margins.margin(mode, x, v_next) if nxt is not None else math.inf
-    gaps = {"mode": by_modes, CREASE: m_crease, SURFACE: m_surface}
+    m_end = margins.to_range_end(mode, x)
+    gaps = {"mode": by_modes, CREASE: m_crease, SURFACE: m_surface, RANGE_END: m_end}
     limited = min(gaps, key=gaps.__getitem__)  # the first of equal gaps: a mode
     gap_end = margins.to_no_design(mode, others, x, gaps[limited], edge)
     if edge and gap_end <= m_x + BALANCE * abs(m_x):
@@ -284,8 +287,9 @@ def prescribe(
         CREASE: (CREASE, v_crease, sens_crease),
         SURFACE: (SURFACE, v_surface, sens_surface),
     }
-    # NO_DESIGN: M_0 moves with v_0, M_end with the end: not derived here
-    if limited != NO_DESIGN and rivals[limited][2]:
+    # NO_DESIGN: M_0 moves with v_0, M_end with the end; RANGE_END with the path's end:
+    # not derived here
+    if limited in rivals and rivals[limited][2]:
         lead = rivals[limited]
         sens_margin = onset.margin_sensitivity(margins.sense, v, sens, lead[1], lead[2])
     sides: dict[str, tuple[float, float]] = {}

@@ -24,7 +24,7 @@ import numpy as np
 
 from ..bifurcation.curves import Curve, check_curve, critical_curve
 from ..bifurcation.scan import ScanOptions
-from ..errors import ElectrogrowthError, ParameterError
+from ..errors import ElectrogrowthError, NoBifurcationFound, ParameterError
 from ..model.controls import parse_control
 from ..model.keys import layer_key
 from ..model.layers import KEYS_TEXT
@@ -345,12 +345,17 @@ def from_curve(curve: Curve, key: str, lo: float, hi: float) -> ModeSequence:
 def no_design_ends(sequence: ModeSequence) -> frozenset:
     """The located ends of the valid range: the ends of the intervals next to a failed
     one (beyond them the tube is already unstable at the control's start, or has no
-    state: a switch to "no design")."""
+    state: a switch to "no design"). Not an end beyond which no mode bifurcates before the
+    control's end: there the target's onset rises to that end, not down to the start, and
+    the room up to it is the gap (design/margins.py M_e)."""
     ivs = sequence.intervals
     out = set()
     for a, b in zip(ivs, ivs[1:]):
-        if (a.kind == Status.FAILED) != (b.kind == Status.FAILED):
-            out.add(b.lo if a.kind == Status.FAILED else a.hi)
+        failed = a if a.kind == Status.FAILED else b
+        if (a.kind == Status.FAILED) != (b.kind == Status.FAILED) and (
+            failed.failure != NoBifurcationFound.__name__
+        ):
+            out.add(b.lo if failed is a else a.hi)
     return frozenset(out)
 
 
