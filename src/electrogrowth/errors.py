@@ -66,6 +66,13 @@ class ParameterError(ElectrogrowthError, ValueError):
     """A non-physical or out-of-range input parameter."""
 
 
+class UnstableAtStart(ParameterError):
+    """The tube is already unstable at the control's start, before any of its load (a mode,
+    or a face's short-wave limit): its critical value lies at or before the start. Next to
+    a tube that wrinkles in no mode before the control's end (NoBifurcationFound), the
+    critical value runs through the control's whole range in between."""
+
+
 class MaterialError(ElectrogrowthError, ValueError):
     """An unknown material or an energy the package cannot use."""
 

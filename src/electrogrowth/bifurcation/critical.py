@@ -316,6 +316,8 @@ def _solve(
     at = TubeAt(params, solve_for)
     g = root_mode(at, fine, mode, sref)  # along the control, stable > 0
     note = ""
+    if bracket is not None:
+        bracket = _after_start(bracket, control_path(params, solve_for, side)[:2])
     if bracket is not None and g(bracket[0]) * g(bracket[1]) < 0:
         value = brent(g, *bracket)
     elif not march:
@@ -380,6 +382,20 @@ def _solve(
         family=fam,
         message=note,
     )
+
+
+def _after_start(bracket: tuple[float, float], path: tuple[float, float]):
+    """``bracket`` cut at the path's start (start, end): a root before the start is no
+    onset, the tube is unstable at its start, which the march then says. A scan's bracket
+    about its march's root (relative 1e-7 wide, grid_scan.finished) reached past g = 1
+    where the march's loose sign at the start read stable: it returned g_cr = 0.9999999
+    where a single-mode solve said "already unstable" (probe 14d, D1)."""
+    start, end = path
+    sense = math.copysign(1.0, end - start)
+    near, far = sorted(bracket, key=lambda x: sense * x)
+    if sense * (near - start) < 0 < sense * (far - start):
+        near = start
+    return (near, far) if near <= far else (far, near)
 
 
 def _no_bifurcation(exc: NoBifurcationFound, solve_for: str, m: int, n: int, fam) -> None:

@@ -12,6 +12,7 @@ from typing import NamedTuple
 import numpy as np
 
 from ..atomic import replaced
+from ..errors import NoBifurcationFound, UnstableAtStart
 from ..labelled import curve_dataset
 from ..model.layers import Tube
 from ..outcomes import NO_MODE, Kind, Outcome, Status, remedy, status_of, traceback_of
@@ -58,6 +59,9 @@ class CurvePoint(Outcome):
     the critical point is the short-wave limit (``surface``), and that limit where the
     scan computed it (else NaN). A status given as text ("", "inaccurate") is read as the
     Status. The curve's table writes a failure's status in its kind column (:func:`_row`).
+    ``failure`` names a failure's kind, its exception's class ("UnstableAtStart": the
+    tube is already unstable at the control's start; "NoBifurcationFound": no mode before
+    the control's end; "BaseStateError": no state; ...), "" where none.
     """
 
     x: float
@@ -72,6 +76,7 @@ class CurvePoint(Outcome):
     message: str = ""
     remedy: str = ""
     traceback: str = dataclasses.field(default="", repr=False, compare=False)
+    failure: str = ""
 
     def __post_init__(self):
         object.__setattr__(self, "status", Status(self.status or Status.OK))
@@ -92,12 +97,39 @@ def _failed_point(x: float, exc: Exception) -> CurvePoint:
         message=message,
         remedy=remedy(exc),
         traceback=traceback_of(exc),
+        failure=type(exc).__name__,
     )
 
 
 def _failed(pt: CurvePoint) -> bool:
     """A grid point without a value: its scan failed, or hit a bug."""
     return pt.status in (Status.FAILED, Status.ERROR)
+
+
+def _fails_alike(pt: CurvePoint, other: CurvePoint) -> bool:
+    """Both points failed, and in the same way (the same kind of failure)."""
+    return _failed(pt) and _failed(other) and pt.failure == other.failure
+
+
+def _changes(prev: CurvePoint, pt: CurvePoint) -> bool:
+    """The critical mode changes between two neighbouring points: a switch to locate."""
+    return not (_failed(prev) or _failed(pt)) and prev.mode != pt.mode
+
+
+def _window_between(a: CurvePoint, b: CurvePoint) -> bool:
+    """One point's tube is already unstable at the control's start (its critical value at
+    or before the start) and the other's wrinkles in no mode before the control's end (past
+    the end): by continuity the critical value runs through the whole range in between."""
+    kinds = {a.failure, b.failure} if _failed(a) and _failed(b) else set()
+    return kinds == {UnstableAtStart.__name__, NoBifurcationFound.__name__}
+
+
+def _edge(prev: CurvePoint, pt: CurvePoint) -> bool:
+    """One of two neighbouring points failed and the other not, or both failed in
+    different ways: an end of the valid range, or a valid window between two kinds of
+    failure (:func:`_window_between`), to locate (with ``critical_curve(...,
+    edges=True)``)."""
+    return (_failed(prev) or _failed(pt)) and not _fails_alike(prev, pt)
 
 
 def _failed_row(kind) -> bool:
@@ -127,6 +159,8 @@ class Curve:
     the branch ends that were located. ``crease`` (bifurcation/curve_crease.py): per row,
     where a free face creases along the same control and whether that comes first
     (``crease.first``; not computed, all NaN, for an interrupted curve's points).
+    ``failure``: per row, the kind of a failed row's failure (:class:`CurvePoint`), ""
+    for the others.
     """
 
     along: str
@@ -144,10 +178,13 @@ class Curve:
     short_wave_limit: np.ndarray
     ends: tuple[Switch, ...] = ()
     crease: CreaseAlong | None = None
+    failure: tuple[str, ...] = ()
 
     def __post_init__(self):
         if self.crease is None:
             object.__setattr__(self, "crease", CreaseAlong.empty(len(self.x)))
+        if not self.failure:
+            object.__setattr__(self, "failure", ("",) * len(self.x))
 
     @property
     def inaccurate(self) -> np.ndarray:
@@ -258,6 +295,7 @@ class Curve:
             "n": self.n.tolist(),
             "kind": self.kind.tolist(),
             "status": list(self.status),
+            "failure": list(self.failure),
             "surface": self.surface.tolist(),
             "short_wave_limit": num(self.short_wave_limit),
             "switches": [_change_record(s) for s in self.switches],
@@ -314,9 +352,19 @@ def _accuracy(c) -> Status:
 
 
 def _row(pt: CurvePoint):
-    """The table row of a grid point: a failure's status in the kind column."""
+    """The table row of a grid point: a failure's status in the kind column, its kind
+    last."""
     kind = pt.status if pt.kind == "" else pt.kind
-    return (pt.x, pt.value, pt.mode, kind, _row_status(pt), pt.surface, pt.short_wave_limit)
+    return (
+        pt.x,
+        pt.value,
+        pt.mode,
+        kind,
+        _row_status(pt),
+        pt.surface,
+        pt.short_wave_limit,
+        pt.failure,
+    )
 
 
 def _row_status(pt: CurvePoint) -> str:

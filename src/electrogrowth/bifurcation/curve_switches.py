@@ -13,10 +13,16 @@ no root before the end of the march is read as coming after all (+-inf in d). If
 single-mode solve fails, the switch is bisected with scans, to a relative 1e-7 only.
 
 Between a grid point whose scan failed (the tube already unstable at the control's start,
-no base state, ...) and one whose scan succeeded, on request (``critical_curve(...,
-edges=True)``, the design's mode sequence): the end of the valid range, by bisection on
-"the scan succeeds" to the switches' tolerance (SWITCH), kept as an "end" from or to no
-mode; then the switches between that end and the valid grid point, as above.
+no base state, no mode before the control's end, ...) and one whose scan succeeded, on
+request (``critical_curve(..., edges=True)``, the design's mode sequence): the end of the
+valid range, by bisection on "the scan succeeds" to the switches' tolerance (SWITCH), kept
+as an "end" from or to no mode; then the switches between that end and the valid grid
+point, as above. Failures of different kinds are kept apart (``CurvePoint.failure``), and
+between a tube already unstable at the control's start and one that wrinkles in no mode
+before the control's end, where the critical value runs through the control's whole
+range, the valid window is searched: bisection on the kind of failure until a scan
+succeeds, whose two ends are then located as above (probe 14d, D1: the two failures were
+taken for one, the window missed).
 """
 
 from __future__ import annotations
@@ -26,7 +32,17 @@ import math
 from ..continuation.events import MODE_EDGE, SWITCH, bisect, brent
 from ..errors import ConvergenceError, ElectrogrowthError, NoBifurcationFound
 from ..outcomes import NO_MODE, Kind
-from .curve_record import CurvePoint, Switch, _change_kind, _failed, _row
+from .curve_record import (
+    CurvePoint,
+    Switch,
+    _change_kind,
+    _changes,
+    _edge,
+    _failed,
+    _fails_alike,
+    _row,
+    _window_between,
+)
 
 #: the value recorded on the failed side of a located edge of the valid range
 NO_VALUE = math.nan
@@ -116,10 +132,20 @@ class _Locator:
         return _switch_at(a, b, x, v_before, v_after)
 
     def edge(self, a: CurvePoint, b: CurvePoint, depth: int):
-        """Rows and changes strictly between neighbours a and b of which exactly one
-        failed: the last failed and the first valid scan of a bisection on "the scan
-        succeeds" (SWITCH's tolerance), the "end" between them (at the valid one, NaN on
-        the failed side) and the switches from there to the valid grid point."""
+        """Rows and changes strictly between neighbours a and b of which one failed and the
+        other not, or both failed in different ways (:func:`_edge`).
+
+        One failed: bisection on "the scan succeeds" (SWITCH's tolerance): the last failed
+        and the first valid scan are rows, the "end" between them (at the valid one, NaN on
+        the failed side), then the switches from there to the valid neighbour. The failed
+        scans of the bisection are points of the curve too where their kind of failure
+        changes, and between a tube unstable at the control's start and one with no mode
+        before its end the window is searched (:meth:`_window`): the bisection took two
+        such failures for one and missed the window between them (probe 14d, D1). Both
+        failed: that window, where their kinds bound one; else nothing (two failures, the
+        change between them not located)."""
+        if _failed(a) and _failed(b):
+            return self._window(a, b, depth) if _window_between(a, b) else ([], [])
         good, bad = (b, a) if _failed(a) else (a, b)
         scanned = {good.x: good, bad.x: bad}
 
@@ -132,14 +158,52 @@ class _Locator:
         rows, switches = [], []
         if end is not good and end.mode != good.mode:
             rows, switches = self.between(*((end, good) if good is b else (good, end)), depth)
+        sense = b.x - a.x  # the grid's order
+        failed = sorted((p for p in scanned.values() if _failed(p)), key=lambda p: sense * p.x)
+        more_rows, more_switches = self._chain(_kind_changes(failed), depth)
         inner = [_row(p) for p in (last_failed, end) if p is not bad and p is not good]
         if good is b:  # failed before, valid after: the valid range starts at x_good
-            rows = inner + rows
+            rows = more_rows + inner + rows
             change = Switch(x_good, NO_VALUE, NO_MODE, end.mode, end.value, Kind.END)
         else:
-            rows = rows + inner[::-1]
+            rows = rows + inner[::-1] + more_rows
             change = Switch(x_good, end.value, end.mode, NO_MODE, NO_VALUE, Kind.END)
-        return rows, sorted(switches + [change], key=lambda s: (b.x - a.x) * s.x)
+        changes = switches + more_switches + [change]
+        return rows, sorted(changes, key=lambda s: sense * s.x)
+
+    def _window(self, a: CurvePoint, b: CurvePoint, depth: int):
+        """Rows and changes between a tube unstable at the control's start and one with no
+        mode before its end (a and b, either way round): the critical value runs through
+        the control's whole range in between, so a window where the scans succeed lies
+        there. Bisection on "the scan fails as a's does" until a scan succeeds (the window:
+        its two ends are then located as ends, :meth:`edge`) or the bracket is SWITCH's
+        tolerance (the two failures meet: its two scans are rows)."""
+        lo, hi = a, b
+        while abs(hi.x - lo.x) > SWITCH.at(hi.x):
+            mid = self.unit(0.5 * (lo.x + hi.x))
+            if _fails_alike(mid, a):
+                lo = mid
+            elif _fails_alike(mid, b):
+                hi = mid
+            else:  # valid, or a failure of a third kind: the changes on either side
+                return self._chain([a, mid, b], depth)
+        return [_row(p) for p in (lo, hi) if p is not a and p is not b], []
+
+    def _chain(self, points: list[CurvePoint], depth: int):
+        """Rows and changes between consecutive ``points`` (grid order), the rows of the
+        points inside the chain included, as between grid points: a switch where two valid
+        ones differ, an end or a window where one failed (or both, in different ways)."""
+        rows, switches = [], []
+        for i, (p, q) in enumerate(zip(points, points[1:])):
+            if _changes(p, q):
+                new_rows, new_switches = self.between(p, q, depth)
+            elif _edge(p, q) and depth > 0:
+                new_rows, new_switches = self.edge(p, q, depth - 1)
+            else:
+                new_rows, new_switches = [], []
+            rows += new_rows + ([_row(q)] if i + 2 < len(points) else [])
+            switches += new_switches
+        return rows, switches
 
     def _split(self, a, mid, b, depth):
         """Locate the switches on both sides of a scanned point ``mid`` (kept as a row)."""
@@ -238,11 +302,24 @@ class _Locator:
         return good, value, value
 
 
+def _kind_changes(failed: list[CurvePoint]) -> list[CurvePoint]:
+    """The first and last of the ``failed`` points (grid order) and those next to a point
+    that failed in another way: where the kind of failure changes (one kind: the first
+    and the last alone)."""
+    last = len(failed) - 1
+    return [
+        p
+        for i, p in enumerate(failed)
+        if i in (0, last)
+        or not (_fails_alike(p, failed[i - 1]) and _fails_alike(p, failed[i + 1]))
+    ]
+
+
 def _switch_at(a: CurvePoint, b: CurvePoint, x: float, v_before: float, v_after: float):
     """The two rows (a's mode, b's mode at x) and the Switch of a located change."""
     kind = _change_kind(a, b, v_before, v_after)
     rows = [
-        (x, v_before, a.mode, kind, "", a.surface, math.nan),
-        (x, v_after, b.mode, kind, "", b.surface, math.nan),
+        (x, v_before, a.mode, kind, "", a.surface, math.nan, ""),
+        (x, v_after, b.mode, kind, "", b.surface, math.nan, ""),
     ]
     return rows, [Switch(x, v_before, a.mode, b.mode, v_after, kind)]

@@ -25,9 +25,12 @@ scans instead, to a relative 1e-7 only. A point whose scan fails (e.g. the tube 
 already unstable at the start of the march) is kept as kind "failed" with its message (kind
 "error": an unexpected exception, a bug); with ``edges=True`` (the design's mode sequence)
 the end of the valid range next to it is located too, by bisection on "the scan
-succeeds", and kept as an "end" to or from no mode. An interrupt (Ctrl-C, SIGTERM) is
-never a failed point: it ends the curve with :class:`~electrogrowth.interrupts.Interrupted`,
-whose ``partial`` holds the grid points computed before it.
+succeeds", and kept as an "end" to or from no mode; failures of different kinds are kept
+apart, and between a tube already unstable at the control's start and one with no mode
+before the control's end the valid window is searched (curve_switches.py). An interrupt
+(Ctrl-C, SIGTERM) is never a failed point: it ends the curve with
+:class:`~electrogrowth.interrupts.Interrupted`, whose ``partial`` holds the grid points
+computed before it.
 
 By continuation (``follow``, the default with the builtin ``map``), the grid points between
 full scans are not scanned: the last scan's critical mode and runners-up are followed
@@ -63,6 +66,8 @@ from .curve_record import (
     Curve,
     CurvePoint,
     Switch,
+    _changes,
+    _edge,
     _failed,
     _failed_point,
     _not_located,
@@ -123,11 +128,6 @@ def _critical_text(pt: CurvePoint) -> str:
     if pt.kind == Kind.SURFACE:
         return "the short-wave limit"
     return "the threshold" if pt.mode == NO_MODE else str(pt.mode)
-
-
-def _changes(prev: CurvePoint, pt: CurvePoint) -> bool:
-    """The critical mode changes between two neighbouring grid points: a switch to locate."""
-    return not (_failed(prev) or _failed(pt)) and prev.mode != pt.mode
 
 
 def check_curve(solve_for: str, along: str, params: Tube) -> None:
@@ -196,8 +196,11 @@ def critical_curve(
         Also locate, between a failed grid point and a valid neighbour, where the scans
         start to succeed (bisection to the switches' tolerance, some 40 scans per edge):
         an "end" in ``Curve.ends`` whose failed side has mode (-1, -1) and value NaN, with
-        the last failed and the first valid scan as rows. False (default): the valid range
-        ends at the grid point.
+        the last failed and the first valid scan as rows; and between a tube already
+        unstable at the control's start and one with no mode before the control's end
+        (two grid points, or two scans of that bisection: ``Curve.failure``) the valid
+        window where the critical value runs through the control's range, and its ends
+        (curve_switches.py). False (default): the valid range ends at the grid point.
 
     Returns
     -------
@@ -291,12 +294,6 @@ def critical_curve(
     return _curve(along, solve_for, side, params, rows, switches, crease)
 
 
-def _edge(prev: CurvePoint, pt: CurvePoint) -> bool:
-    """One of two neighbouring grid points failed, the other not: an end of the valid
-    range to locate (with ``edges``)."""
-    return _failed(prev) != _failed(pt)
-
-
 def _located(points: list[CurvePoint], loc: _Locator, progress=None, edges: bool = False):
     """The rows of the grid points with the located switches between them (and, with
     ``edges``, the ends of the valid range next to failed points), and the switches (a
@@ -335,7 +332,7 @@ def _located(points: list[CurvePoint], loc: _Locator, progress=None, edges: bool
 def _curve(along, solve_for, side, params, rows, switches, crease=None) -> Curve:
     """The Curve of table rows (as :func:`_row`) and switches (and ends), with the crease
     at each row (None: not computed)."""
-    x, v, modes, kinds, status, surface, limit = zip(*rows) if rows else [()] * 7
+    x, v, modes, kinds, status, surface, limit, failure = zip(*rows) if rows else [()] * 8
     modes = np.array(modes, dtype=int).reshape(-1, 2)
     return Curve(
         along,
@@ -353,4 +350,5 @@ def _curve(along, solve_for, side, params, rows, switches, crease=None) -> Curve
         np.array(limit, dtype=float),
         tuple(s for s in switches if s.kind == Kind.END),
         crease,
+        tuple(failure),
     )

@@ -49,8 +49,8 @@ from ..errors import (
     BaseStateError,
     ConvergenceError,
     NoBifurcationFound,
-    ParameterError,
     Remedy,
+    UnstableAtStart,
 )
 from ..incremental.targets import SIGN_TUBE as SIGN_TUBE  # re-exported: its grids' signs
 from ..incremental.targets import ImpedanceTarget, Sample, natural_family, row_family
@@ -194,7 +194,7 @@ def first_bifurcations(
     if (g0 <= 0).any():
         i = int(np.argmax(g0 <= 0))
         m, n = modes[i, :2].astype(int)
-        raise ParameterError(
+        raise UnstableAtStart(
             f"the tube is already unstable in mode ({m}, {n})"
             f" ({row_family(modes[i])}) at {solve_for} = {x0:g}; start from"
             " a stable state"

@@ -18,7 +18,7 @@ from collections.abc import Callable
 
 from ..continuation import events
 from ..continuation.path import ControlPath, Stepper, StepPolicy
-from ..errors import BaseStateError, ConvergenceError, ParameterError
+from ..errors import BaseStateError, ConvergenceError, ParameterError, UnstableAtStart
 from ..outcomes import Kind
 from .along import Elliptic, NearLock, SampleValue, StateAt, TubeAt
 from .march import control_path
@@ -53,12 +53,12 @@ def locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, unti
         ) from None
     s0 = h(state)
     if math.isnan(s0.value):
-        raise ParameterError(
+        raise UnstableAtStart(
             f"the half-space at the {s0.face} face is not strongly "
             f"elliptic at {solve_for} = {x0:g}; start from a stable state"
         )
     if s0.value <= 0:
-        raise ParameterError(
+        raise UnstableAtStart(
             f"the {s0.face} face is already unstable (psi = {s0.psi:.6g})"
             f" at {solve_for} = {x0:g}; start from a stable state"
         )

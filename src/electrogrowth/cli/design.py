@@ -300,18 +300,14 @@ def summary(result, physical: dict | None = None) -> list[str]:
     lines = [f"target {result.target}: critical {seq.solve_for}{side} along {seq.key}"]
     creases = dict(zip(result.region, result._crease_rows()))
     for iv in seq.intervals:
-        what = f"mode {iv.mode}" if iv.kind == "bifurcation" else iv.kind
+        what = _pattern(iv) + (f": {_reason(iv)}" if iv.reason else "")
         lines.append(
             f"  {seq.key} {iv.lo:.10g} .. {iv.hi:.10g}: {what}{_creased(creases.get(iv))}"
         )
     for s in seq.switches:
-        value = s.value if math.isfinite(s.value) else s.value_after  # NaN: from no mode
-        lines.append(
-            f"  {s.kind} at {seq.key} = {s.x:.12g}: {s.mode_before} -> {s.mode_after},"
-            f" {seq.solve_for}_cr = {value:.12g}"
-        )
+        lines.append(_change_line(seq, s))
     if result.status == "not_reached":
-        lines.append("  no target mode among the scanned modes: widen --m-max / --n-max")
+        lines.append(f"  not reached: {result.note}")
         return lines
     best = BEST.get(result.status, "never first; closest design")
     lines.append(
@@ -328,6 +324,32 @@ def summary(result, physical: dict | None = None) -> list[str]:
     for p, d in sorted(result.sensitivity.items(), key=lambda kv: -abs(kv[1])):
         lines.append(f"  d{seq.solve_for}_cr/d{p} = {d:.6g}{_margin_slope(result, p)}")
     return lines
+
+
+def _pattern(iv) -> str:
+    """An interval's pattern in words: "mode (m, n)", "threshold", "surface" or "failed"."""
+    return f"mode {iv.mode}" if iv.kind == "bifurcation" else str(iv.kind)
+
+
+def _reason(iv) -> str:
+    """A failed interval's failure, its first clause (without "start from a stable
+    state")."""
+    return iv.reason.split("; ")[0]
+
+
+def _change_line(seq, s) -> str:
+    """A switch or end of the sequence, its two sides in words ((-1, -1) was the threshold,
+    the short-wave limit and a failure alike); next to a failed interval, its failure: the
+    value at the end of a range where no mode bifurcates before the control's cap is that
+    cap (probe 14d: "(-1, -1) -> (-1, -1), growth_cr = 6" said neither)."""
+    before, after = seq.sides(s)
+    value = s.value if math.isfinite(s.value) else s.value_after  # NaN: from no mode
+    line = (
+        f"  {s.kind} at {seq.key} = {s.x:.12g}: {_pattern(before)} -> {_pattern(after)},"
+        f" {seq.solve_for}_cr = {value:.12g}"
+    )
+    failed = [(side, iv) for side, iv in (("before", before), ("after", after)) if iv.reason]
+    return line + "".join(f"; {side} it: {_reason(iv)}" for side, iv in failed)
 
 
 def _tied_only_lines(result) -> list[str]:
@@ -397,6 +419,8 @@ def _limit(result) -> str:
     """What sets a one-variable design's margin, with its value."""
     if result.limited_by == "no design":  # the room below the target over the room above
         return f"the end of the valid range (next {result.next_mode} at {result.next_value:.10g})"
+    if result.limited_by == "range end":  # no competitor before it: a lower bound
+        return "the end of the control's range (no competitor comes before it)"
     return _lead(result)
 
 
@@ -521,7 +545,7 @@ def map_summary(result, physical: dict | None = None) -> list[str]:
             f" {t.value:.10g}"
         )
     if result.status == "not_reached":
-        lines.append("  no target mode among the scanned modes: widen --m-max / --n-max")
+        lines.append(f"  not reached: {result.note}")
         return lines
     rc = result.region_crease
     if rc and rc["crease_first"] != "none":

@@ -159,7 +159,7 @@ def _region(tube, growth, seq: ModeSequence, iv, fill: int) -> VoltageRegion:
     rows = {
         float(curve.x[i]): float(curve.value[i])
         for i in range(len(curve.x))
-        if iv.lo <= curve.x[i] <= iv.hi and _label(curve, i) == (iv.mode, iv.kind)
+        if iv.lo <= curve.x[i] <= iv.hi and _label(curve, i) == (iv.mode, iv.kind, iv.failure)
     }
     if iv.kind == Kind.BIFURCATION and iv.hi > iv.lo:
         for v in np.linspace(iv.lo, iv.hi, fill + 2)[1:-1]:

@@ -30,7 +30,19 @@ unstable with no control (for a load varied, its own margin to its critical valu
 control's start); the margin is then min(M, M_0, M_end). An end is a cliff where M_0 at the
 end itself is not ~0: a smooth end, located to 1e-13 (SWITCH), leaves M_0 = 3e-5 there (the
 grown tube of tests/design/test_boundary_after_failed_point.py: v_T = 6e-6), a cliff a
-finite room (5.07 in probe 8b's case). docs/design.md.
+finite room (5.07 in probe 8b's case).
+
+The other end of a valid range, where no mode bifurcates before the end of the control's
+range v_e beyond it (its cap, e.g. g = 6): there v_T rises to v_e, and a competitor that
+the march does not meet before v_e has no value (+-inf), so M was infinite next to it
+(probe 14d: the (2, 0) window of a pressurised tube, M = inf at P_i = -0.0005, where (3,
+0) lies past g = 6). All that is known is that the competitors come after v_e, so the room
+up to it is one more gap:
+
+    M_e(x) = s (v_e - v_T) / |v_T|,
+
+a lower bound of the true M, which vanishes at that end as M does at a switch; where a
+competitor is met before v_e its own gap is the smaller. docs/design.md.
 """
 
 from __future__ import annotations
@@ -63,6 +75,7 @@ class Margins:
         self.cache: dict = {}
         self.creases: dict = {}
         self.starts: dict = {}
+        self.ends: dict = {}
         at = lambda x: tube.at(key, x)  # noqa: E731
         self.surfaces = SurfaceRival(at, solve_for, side, self.sense, surface)
 
@@ -106,6 +119,22 @@ class Margins:
                 self.starts[x] = math.nan
         return self.starts[x]
 
+    def range_end(self, x: float) -> float:
+        """v_e: where the control's march ends on the tube at x (its cap, e.g. g = 6; or
+        the threshold where the path ends there)."""
+        if x not in self.ends:
+            try:
+                at = self.tube.at(self.key, x)
+                self.ends[x] = control_path(at, self.solve_for, self.side)[1]
+            except ElectrogrowthError:  # no path: no end to count
+                self.ends[x] = self.sense * math.inf
+        return self.ends[x]
+
+    def to_range_end(self, mode, x: float) -> float:
+        """M_e (module docstring): the room from the target's onset to the end of the
+        control's range (-inf where the target has no onset, as the other gaps)."""
+        return gap_to_crease(self.value(mode, x), self.range_end(x), self.sense)
+
     def room_below(self, mode, x: float, above: float) -> float:
         """M_0 (module docstring): the room below the target's onset over the room above
         it, ``above`` the relative gap M to the nearer competitor; inf where M is not a
@@ -146,6 +175,7 @@ class Margins:
         if math.isfinite(v):  # the limit only where it comes before the nearest other one
             until = v + self.sense * m * abs(v) if math.isfinite(m) else None
             m = min(m, gap_to_crease(v, self.surface(x, until), self.sense))
+        m = min(m, self.to_range_end(mode, x))
         if ends:
             m = min(m, self.to_no_design(mode, others, x, m, ends))
         return m, nxt

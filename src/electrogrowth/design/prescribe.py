@@ -36,10 +36,10 @@ from ..bifurcation.msearch import geometric_samples, neighbours, refine_samples
 from ..bifurcation.scan import TOP_MAX, ScanOptions, scan_modes
 from ..bifurcation.scan_grid import scan_grid
 from ..continuation.events import SWITCH, brent, widening_windows
-from ..errors import ElectrogrowthError
+from ..errors import ElectrogrowthError, Remedy
 from ..incremental.accuracy import check_rtol
 from ..incremental.modes import MODE_MAX
-from ..outcomes import Kind
+from ..outcomes import Kind, Status
 from . import onset
 from .margins import Margins
 from .onset import CREASE_FIRST, gap_to_crease
@@ -56,6 +56,7 @@ XTOL = 1e-9  # relative accuracy of the best design
 AHEAD = 6  # competitors ahead of the closest design's target mode that are kept
 MEMBERS_MAX = 256  # a set's members solved directly when none is among a scan's first ones
 NO_DESIGN = "no design"  # limited_by: the gap to a located end of the valid range
+RANGE_END = "range end"  # limited_by: no competitor before the end of the control's range
 CREASE = "crease"  # the crease as a competitor (a tie at a kink of M)
 #: windows, widening 4-fold from XTOL max(1, |x|), in which the kink next to the bounded
 #: Brent's maximiser is looked for: up to 1024 times its tolerance (it left the kink within
@@ -71,7 +72,8 @@ class Design:
     """Result of :func:`design` (module docstring for the margin M).
 
     ``note``: why the result may not be final (a set's closest member found at the mode cap,
-    :func:`_past_window`), else empty.
+    :func:`_past_window`), or for NOT_REACHED what to try (:func:`unreached_note`), else
+    empty.
 
     ``status`` FOUND: ``x`` is the design with the widest margin in the ``region`` (the
     intervals where the target is first), ``mode`` is critical there at ``value`` and
@@ -89,8 +91,9 @@ class Design:
     gap that sets M; empty for "no design"), ``surface_value`` and ``surface_margin`` the
     exact short-wave limit at x and the gap to it (NaN: the scans leave it out, or none is
     met; ``surface_sensitivity`` its d/dp), ``limited_by`` which competitor sets M
-    ("mode", "crease", "surface", or "no design": the room below the target, next to a
-    located end of the valid range),
+    ("mode", "crease", "surface", "no design": the room below the target, next to a
+    located end of the valid range, or "range end": no competitor comes before the end of
+    the control's range, and M is the room up to it, a lower bound, design/margins.py),
     ``verdict`` the verdict of a scan at x (design/onset.py :func:`design_verdict`) and
     ``region_crease`` how many of the curve's points in each interval of the region
     crease first. NOT_REACHED: no target mode was found among the
@@ -249,7 +252,8 @@ def prescribe(
         if best is None:
             best = _closest(grid, goal, margins, scan, set_members(goal, options))
     if best is None:
-        return _unreached(goal, key, sequence, region)
+        failed = any(iv.kind == Status.FAILED for iv in sequence.intervals)
+        return _unreached(goal, key, sequence, region, unreached_note(goal, failed))
     x, mode, others = best
     note = cap_note(mode, goal) if status == NOT_FIRST else ""
     span = _span(region, x)
@@ -266,7 +270,8 @@ def prescribe(
     v_surface = margins.surface(x)
     m_surface = gap_to_crease(v, v_surface, margins.sense)
     by_modes = margins.margin(mode, x, v_next) if nxt is not None else math.inf
-    gaps = {"mode": by_modes, CREASE: m_crease, SURFACE: m_surface}
+    m_end = margins.to_range_end(mode, x)
+    gaps = {"mode": by_modes, CREASE: m_crease, SURFACE: m_surface, RANGE_END: m_end}
     limited = min(gaps, key=gaps.__getitem__)  # the first of equal gaps: a mode
     gap_end = margins.to_no_design(mode, others, x, gaps[limited], edge)
     if edge and gap_end <= m_x + BALANCE * abs(m_x):
@@ -282,8 +287,9 @@ def prescribe(
         CREASE: (CREASE, v_crease, sens_crease),
         SURFACE: (SURFACE, v_surface, sens_surface),
     }
-    # NO_DESIGN: M_0 moves with v_0, M_end with the end: not derived here
-    if limited != NO_DESIGN and rivals[limited][2]:
+    # NO_DESIGN: M_0 moves with v_0, M_end with the end; RANGE_END with the path's end:
+    # not derived here
+    if limited in rivals and rivals[limited][2]:
         lead = rivals[limited]
         sens_margin = onset.margin_sensitivity(margins.sense, v, sens, lead[1], lead[2])
     sides: dict[str, tuple[float, float]] = {}
@@ -352,12 +358,32 @@ def _span(region, x: float) -> Interval | None:
     return next((sp for sp in spans if sp.contains(x)), None)
 
 
-def _unreached(goal: Target, key, sequence, region) -> Design:
+def _unreached(goal: Target, key, sequence, region, note: str) -> Design:
     nan = math.nan
     return Design(
         goal.name, NOT_REACHED, key, sequence.solve_for, region, nan, None, nan, nan, None,
-        nan, None, {}, {}, {}, sequence,
+        nan, None, {}, {}, {}, sequence, note=note,
     )  # fmt: skip
+
+
+def unreached_note(goal: Target, failed: bool) -> Remedy:
+    """What to try when no target mode was found (NOT_REACHED). A listed mode is solved
+    directly at every scanned design, whatever the scans' window: widening it cannot help
+    (it was advised for a (2, 0) well inside it, whose window lay between two failed grid
+    points, probe 14d D1), a finer grid can; a set's members are those the window holds."""
+    where = "between the grid's points" + (" and in its failed intervals" if failed else "")
+    if goal.modes:
+        return Remedy(
+            f"no target mode bifurcates at the scanned designs (each solved directly): it may"
+            f" come first {where}; raise --points, or move the --vary range",
+            python=f"no target mode bifurcates at the scanned designs (each solved directly):"
+            f" it may come first {where}; raise points=, or move the vary range",
+        )
+    return Remedy(
+        "no member of the set among the scanned modes: widen --m-max / --n-max, or raise --points",
+        python="no member of the set among the scanned modes: widen ScanOptions(m_range=...,"
+        " n_range=...), or raise points=",
+    )
 
 
 def _best_in_region(region, grid, goal: Target, margins: Margins, scan, edges=frozenset()):

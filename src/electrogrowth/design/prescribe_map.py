@@ -30,7 +30,7 @@ from ..errors import ElectrogrowthError
 from ..incremental.accuracy import check_rtol
 from ..outcomes import Kind
 from .map_record import ModeMap, label_json, label_of
-from .map_trace import Values, valued
+from .map_trace import FAILED, Values, valued
 from .onset import (
     CREASE_FIRST,
     crease_sensitivity,
@@ -52,6 +52,7 @@ from .prescribe import (
     cap_note,
     set_members,
     tie_name,
+    unreached_note,
 )
 from .sensitivity import sensitivities, sensitivity_json
 from .short_waves import SURFACE, SurfaceRival, surface_sensitivity
@@ -444,7 +445,8 @@ def _region_crease(creased: int, points: int) -> dict:
 
 def _unreached(goal, mmap, region) -> MapDesign:
     nan = math.nan
+    failed = any(lab == FAILED for row in mmap.labels for lab in row)
     return MapDesign(
         goal.name, NOT_REACHED, mmap.keys, region, nan, nan, None, nan, nan, None, nan, {},
-        {}, {}, {}, mmap, goal,
+        {}, {}, {}, mmap, goal, note=unreached_note(goal, failed),
     )  # fmt: skip

@@ -10,7 +10,9 @@ an x tolerance of 1e-13 relative; it is not computed a second time here. Where a
 point's scan fails (the tube already unstable at the control's start, no state) next to
 one that succeeds, the curve also locates the end of the valid range (``edges=True``:
 bisection on "the scan succeeds" to the same tolerance), an "end" to or from no mode, so
-an interval next to a failed one is not cut at the grid point.
+an interval next to a failed one is not cut at the grid point; and between a tube already
+unstable at the control's start and one that wrinkles in no mode before its end, the valid
+window in which the critical value runs through the control's range is searched.
 """
 
 from __future__ import annotations
@@ -22,7 +24,7 @@ import numpy as np
 
 from ..bifurcation.curves import Curve, check_curve, critical_curve
 from ..bifurcation.scan import ScanOptions
-from ..errors import ElectrogrowthError, ParameterError
+from ..errors import ElectrogrowthError, NoBifurcationFound, ParameterError
 from ..model.controls import parse_control
 from ..model.keys import layer_key
 from ..model.layers import KEYS_TEXT
@@ -38,7 +40,13 @@ class Interval:
     before the axisymmetric state is lost) or "failed" (mode (-1, -1)). ``lo_edge`` and
     ``hi_edge`` say whether an end is the end of the searched range (else a located switch,
     also one located at the range's end, a tie there: next to a failed interval, the
-    located end of the valid range, a switch to "no design")."""
+    located end of the valid range, a switch to "no design"). A failed interval's
+    ``failure`` is the kind of its scans' failure (the error's class: "UnstableAtStart",
+    the tube already unstable at the control's start; "NoBifurcationFound", no mode
+    before the control's end; "BaseStateError", no state; ...) and ``reason`` the first
+    one's message; failures of two kinds are two intervals (the change between them
+    located where they bound a valid window, bifurcation/curve_switches.py, else not: a
+    gap between the two)."""
 
     lo: float
     hi: float
@@ -46,6 +54,8 @@ class Interval:
     kind: str
     lo_edge: bool = False
     hi_edge: bool = False
+    failure: str = ""
+    reason: str = ""
 
     def contains(self, x: float) -> bool:
         return self.lo <= x <= self.hi
@@ -59,6 +69,8 @@ class Interval:
             "kind": str(self.kind),
             "lo_edge": self.lo_edge,
             "hi_edge": self.hi_edge,
+            "failure": self.failure or None,
+            "reason": self.reason or None,
         }
 
 
@@ -104,6 +116,15 @@ class ModeSequence:
     def interval_at(self, x: float) -> Interval | None:
         """The (first) interval holding x, or None."""
         return next((iv for iv in self.intervals if iv.contains(x)), None)
+
+    def sides(self, change: SequenceSwitch) -> tuple[Interval, Interval]:
+        """The intervals just before and just after ``change``, one of the ``switches``
+        (an end's failed side begins or ends at the last failed scan, within SWITCH of it:
+        the first interval from its x on that holds its mode after)."""
+        after = [k for k, iv in enumerate(self.intervals) if k and iv.lo >= change.x]
+        k = next((k for k in after if self.intervals[k].mode == change.mode_after), None)
+        k = k if k is not None else (after[0] if after else len(self.intervals) - 1)
+        return self.intervals[max(k - 1, 0)], self.intervals[k]
 
     def as_dict(self) -> dict:
         return {
@@ -274,34 +295,45 @@ def mode_sequence(
     return from_curve(curve, key, lo, hi)
 
 
-def _label(curve: Curve, i: int) -> tuple[tuple[int, int], str]:
-    """The pattern of row i: (mode, kind) with kind bifurcation, surface, threshold or
-    failed; a switch or end row takes its mode's kind."""
+def _label(curve: Curve, i: int) -> tuple[tuple[int, int], str, str]:
+    """The pattern of row i: (mode, kind, failure) with kind bifurcation, surface,
+    threshold or failed (and then the failure's kind); a switch or end row takes its
+    mode's kind."""
     mode = (int(curve.m[i]), int(curve.n[i]))
     if curve.kind[i] == Status.FAILED:
-        return NO_MODE, str(Status.FAILED)
+        return NO_MODE, str(Status.FAILED), curve.failure[i]
     if bool(curve.surface[i]):
-        return NO_MODE, str(Kind.SURFACE)
+        return NO_MODE, str(Kind.SURFACE), ""
     if mode == NO_MODE:
-        return NO_MODE, str(Kind.THRESHOLD)
-    return mode, str(Kind.BIFURCATION)
+        return NO_MODE, str(Kind.THRESHOLD), ""
+    return mode, str(Kind.BIFURCATION), ""
 
 
 def from_curve(curve: Curve, key: str, lo: float, hi: float) -> ModeSequence:
-    """The intervals of constant first pattern of a curve, and its located changes."""
-    runs: list[list] = []  # [mode, kind, x_first, x_last]
+    """The intervals of constant first pattern (and kind of failure) of a curve, and its
+    located changes."""
+    runs: list[list] = []  # [(mode, kind, failure), x_first, x_last, reason]
     for i, x in enumerate(curve.x):
-        mode, kind = _label(curve, i)
-        if runs and runs[-1][:2] == [mode, kind]:
-            runs[-1][3] = float(x)
+        label = _label(curve, i)
+        if runs and runs[-1][0] == label:
+            runs[-1][2] = float(x)
         else:
-            runs.append([mode, kind, float(x), float(x)])
+            runs.append([label, float(x), float(x), str(curve.status[i]) if label[2] else ""])
     changes = sorted(curve.switches + curve.ends, key=lambda s: s.x)
     # a switch located at an end of the range (a tie there) bounds its interval as a switch
     located = {float(s.x) for s in changes}
     intervals = tuple(
-        Interval(a, b, mode, kind, a == lo and a not in located, b == hi and b not in located)
-        for mode, kind, a, b in runs
+        Interval(
+            a,
+            b,
+            mode,
+            kind,
+            a == lo and a not in located,
+            b == hi and b not in located,
+            failure,
+            reason,
+        )
+        for (mode, kind, failure), a, b, reason in runs
     )
     switches = tuple(
         SequenceSwitch(s.x, s.mode_before, s.mode_after, s.value, s.value_after, s.kind)
@@ -313,12 +345,17 @@ def from_curve(curve: Curve, key: str, lo: float, hi: float) -> ModeSequence:
 def no_design_ends(sequence: ModeSequence) -> frozenset:
     """The located ends of the valid range: the ends of the intervals next to a failed
     one (beyond them the tube is already unstable at the control's start, or has no
-    state: a switch to "no design")."""
+    state: a switch to "no design"). Not an end beyond which no mode bifurcates before the
+    control's end: there the target's onset rises to that end, not down to the start, and
+    the room up to it is the gap (design/margins.py M_e)."""
     ivs = sequence.intervals
     out = set()
     for a, b in zip(ivs, ivs[1:]):
-        if (a.kind == Status.FAILED) != (b.kind == Status.FAILED):
-            out.add(b.lo if a.kind == Status.FAILED else a.hi)
+        failed = a if a.kind == Status.FAILED else b
+        if (a.kind == Status.FAILED) != (b.kind == Status.FAILED) and (
+            failed.failure != NoBifurcationFound.__name__
+        ):
+            out.add(b.lo if failed is a else a.hi)
     return frozenset(out)
 
 
