@@ -52,23 +52,25 @@ def test_a_long_step_past_two_triple_points_stops_at_the_first(order):
     assert all(p[1] <= 0.4 + 1e-12 for p in pts)  # no point beyond it
 
 
+def _scan_finding_d(values, seen, u, v):
+    """A full scan that knows one more pattern, D: it names D where D comes first."""
+    if values.value("D", u) >= v - 1e-9:
+        return None
+    if "D" not in seen:
+        seen.append("D")
+    return "D"
+
+
 def test_a_pattern_only_a_scan_finds_is_met_first():
     """D is not among the compared patterns; the scan at the triple point of C names it
     (as the tracer's full scan does), and the curve is taken again to D's triple point."""
-
-    def scan(values, seen, u, v):
-        if values.value("D", u) >= v - 1e-9:
-            return None
-        if "D" not in seen:
-            seen.append("D")
-        return "D"
 
     patterns = dict(PATTERNS, D=_linear(2.0 + 0.1 * 0.38, -0.4, -0.2))  # D first at 0.38
     values = Linear(patterns)
     seen = ["C"]
     pts, end, (labels, u, v) = follow(
         values, "P", "Q", np.array([0.5, 0.0]), np.array([0.0, 1.0]), lambda u: seen, LONG,
-        check=lambda u, v: scan(values, seen, u, v),
+        check=lambda u, v: _scan_finding_d(values, seen, u, v),
     )  # fmt: skip
     assert end == TRIPLE and labels == ("P", "Q", "D")
     assert abs(u[1] - 0.38) < 1e-12 and all(p[1] <= 0.38 + 1e-12 for p in pts)
@@ -80,19 +82,12 @@ def test_a_pattern_only_a_scan_finds_at_the_box_edge_is_met_first():
     leaves names D, and the curve is taken again to the triple point of P, Q and D, found
     where the closed forms cross: (0.5, 0.8), value 2 - 0.08."""
 
-    def scan(values, seen, u, v):
-        if values.value("D", u) >= v - 1e-9:
-            return None
-        if "D" not in seen:
-            seen.append("D")
-        return "D"
-
     patterns = dict(PATTERNS, D=_linear(2.0 + 0.1 * 0.8, -0.4, -0.2))
     values = Linear(patterns)
     seen: list = []
     pts, end, (labels, u, v) = follow(
         values, "P", "Q", np.array([0.5, 0.0]), np.array([0.0, 1.0]), lambda u: seen,
-        check=lambda u, v: scan(values, seen, u, v),
+        check=lambda u, v: _scan_finding_d(values, seen, u, v),
     )  # fmt: skip
     assert end == TRIPLE and labels == ("P", "Q", "D")
     assert abs(u[0] - 0.5) < 1e-12 and abs(u[1] - 0.8) < 1e-12 and abs(v - 1.92) < 1e-12
