@@ -20,6 +20,9 @@ from electrogrowth.interrupts import Interrupted, interrupt_of, signals_as_inter
 from electrogrowth.outcomes import Status
 from electrogrowth.sweep import unit
 
+#: Real signals to a child process, timed: run alone after the parallel tests (make test).
+pytestmark = pytest.mark.serial
+
 SRC = Path(__file__).resolve().parents[1] / "src"
 #: Runs the command line, with a file "mark" written once the work is under way: after
 #: each finished point of a curve, when a scan starts.

@@ -63,6 +63,7 @@ def test_a_state_reports_its_threshold():
     assert record["threshold_kind"] == "locking" and record["voltage_threshold"] is None
 
 
+@pytest.mark.slow  # 10-25 s: make test-slow runs it
 def test_growth_control_at_a_voltage_meets_the_lock_as_the_ideal_neighbour_does():
     # the march's state-loss search walks the voltage branch at each growth: with the ideal
     # text it ends "not resolved" next to the lock at g_theta 5.60103; the non-ideal one at

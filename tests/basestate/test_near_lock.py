@@ -32,6 +32,7 @@ def test_state_exists_short_of_the_lock():
     assert state.r_o == pytest.approx(2.286517933107146, rel=1e-9)
 
 
+@pytest.mark.slow  # 10-25 s: make test-slow runs it
 def test_no_threshold_where_the_state_exists():
     # states exist (independently) for every g_theta up to 1.97 (I1 - 3 = 1.947 < jm there),
     # and mode (30, 0) is still stable at 1.97; a loss of the axisymmetric state below that

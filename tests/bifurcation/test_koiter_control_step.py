@@ -36,6 +36,7 @@ def voltage_reference():
     return {mode: koiter_coefficient(_bilayer(1.0), mode, "voltage") for mode in ((4, 0), (2, 1))}
 
 
+@pytest.mark.slow  # 10-25 s: make test-slow runs it
 @pytest.mark.parametrize("mode", [(4, 0), (2, 1)])
 def test_a_soft_tube_s_voltage_coefficient_scales_with_the_root_of_its_moduli(
     voltage_reference, mode
@@ -61,6 +62,7 @@ def test_a_soft_tube_s_collapse_coefficient_scales_with_its_moduli(c):
     assert soft.coefficient / c == pytest.approx(ref.coefficient, rel=1e-8)
 
 
+@pytest.mark.slow  # 10-25 s: make test-slow runs it
 def test_a_coefficient_near_the_voltage_threshold_is_right_within_its_estimate():
     # (4, 0) of the bilayer: Vbar_cr = 1.14685, 0.95 % below the threshold 1.15776. A step
     # 2e-3 Vbar_cr gave A' 1.9e-5 off, and the coefficient 0.00505909293787 (3.3e-5 off)

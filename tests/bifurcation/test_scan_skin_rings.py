@@ -44,6 +44,7 @@ def test_default_scan_finds_the_first_mode():
     assert (s.critical.m, s.critical.n) == (35, 0)
 
 
+@pytest.mark.slow  # 10-25 s: make test-slow runs it
 def test_grid_scan_widened_equals_direct_grid():
     opts = ScanOptions(m_range=(0, 12), n_range=(1, 240), extend=False, surface=False)
     direct = scan_modes(skin(), CTRL, options=opts)

@@ -26,6 +26,7 @@ def _tube(energy=CUBIC):
     return Tube.uniform(2.0, length=1.0, material=Material("y", energy))
 
 
+@pytest.mark.slow  # 10-25 s: make test-slow runs it
 def test_cli_critical_voltage_of_a_cubic_tube(capsys):
     """Was exit 2, "from 0 up to 0"; the probe bracketed (0.80, 0.85) by growth control."""
     assert main(CLI + ["--energy", CUBIC, "--mode", "2", "1", "--json"]) == 0

@@ -57,6 +57,7 @@ def test_the_critical_voltage_scales_with_the_moduli(c):
     assert vc / math.sqrt(c) == pytest.approx(v1, rel=1e-9)
 
 
+@pytest.mark.slow  # 10-25 s: make test-slow runs it
 def test_a_voltage_scan_sees_a_narrow_window():
     tube = FOUR_LAYERS
     one = critical_value(tube, 6, 8, "voltage").value  # 0.10336395731

@@ -31,6 +31,7 @@ def test_design_prints_a_pressure_result_in_the_units_it_was_given(capsys):
     assert rec["physical"]["inner_pressure"] == [pytest.approx(100 * value, rel=1e-9), "kPa"]
 
 
+@pytest.mark.slow  # 10-25 s: make test-slow runs it
 def test_a_design_over_the_outer_pressure_prints_it_in_kpa(capsys):
     argv = ["design", "--tube", MUCOSA, "--solve-for", "pressure", "--target", "2", "0"]
     argv += ["--side", "compression", "--vary", "outer_pressure", "-0.03", "-0.01"]
@@ -58,6 +59,7 @@ def test_curve_prints_its_loads_and_values_in_the_units_given(tmp_path, capsys):
     assert "in physical units: outer_pressure = 2 kPa" in capsys.readouterr().out
 
 
+@pytest.mark.slow  # 10-25 s: make test-slow runs it
 def test_postbuckle_prints_its_onset_in_the_units_given(tmp_path, capsys):
     pytest.importorskip("skfem")
     (tmp_path / "tube.toml").write_text(

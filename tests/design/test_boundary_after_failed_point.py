@@ -11,6 +11,7 @@ ten times further, and the only located switch is at 1.2843."""
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from scipy.optimize import brentq
 
 from electrogrowth import (
@@ -93,6 +94,7 @@ def test_the_end_of_the_valid_range_is_where_the_start_turns_unstable():
     assert abs(d.to_boundary - min(d.x - end.x, switch - d.x)) < 1e-12
 
 
+@pytest.mark.slow  # 10-25 s: make test-slow runs it
 def test_an_end_after_the_valid_range_is_the_critical_growth_at_zero_voltage():
     """Growing past g_cr(V = 0) the tube is wrinkled before any voltage: the end of the
     valid range along g is the critical growth of a scan at zero voltage (the other

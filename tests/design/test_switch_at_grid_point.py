@@ -78,6 +78,7 @@ def test_widest_margin_at_a_kink_is_the_tie_of_its_two_competitors():
     assert set(d.tied_with) | {d.next_mode} == {(33, 0), (35, 0)}
 
 
+@pytest.mark.slow  # 10-25 s: make test-slow runs it
 def test_to_boundary_counts_the_switch_at_the_range_start(sequence):
     """The widest margin for (34, 0) on [A, B] is at the tie of (33, 0) and (35, 0); its
     distance to the switch at A was measured to the false boundary A + 2.5e-6 (0.000160213)

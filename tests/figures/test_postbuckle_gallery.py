@@ -58,6 +58,7 @@ def test_whole_shape_is_the_ring_or_tube(name):
         assert pts[1].max() == pytest.approx(copies * record["shapes"]["height"], abs=1e-6)
 
 
+@pytest.mark.slow  # 10-25 s: make test-slow runs it
 def test_tool_record_round_trips_to_a_figure(tmp_path, monkeypatch):
     """A small case through ``write_case``, ``read_case`` and ``plot_case``."""
     small = dict(

@@ -35,6 +35,7 @@ def test_without_the_extra_says_how_to_install(tmp_path, capsys, monkeypatch):
     assert "pip install 'electrogrowth[fe]'" in err
 
 
+@pytest.mark.slow  # 10-25 s: make test-slow runs it
 def test_json_and_files_of_a_charged_pressurised_bilayer(tmp_path, capsys):
     """Growth, voltage and pressure at once on a coarse mesh (6 x 3 elements): the FE onset
     within 2e-3 of the linear one, the imperfect branch through it, every file written."""

@@ -41,6 +41,7 @@ def test_fe_branch_curvature_converges_to_the_koiter_coefficient():
     assert gaps[1] < 1.2e-2
 
 
+@pytest.mark.slow  # 10-25 s: make test-slow runs it
 def test_koiter_coefficient_is_supercritical_for_the_mucosal_bilayer():
     """The expansion alone (no FE): a stiff film (mu ratio 10) on a soft substrate folds
     stably, c_2 > 0 under growth, and the FE's coarse-mesh curvature has the same sign."""

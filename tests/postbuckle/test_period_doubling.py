@@ -18,6 +18,7 @@ CONTROL = "growth[1].theta"
 M = 12
 
 
+@pytest.mark.slow  # 10-25 s: make test-slow runs it
 def test_doubled_sector_follows_the_same_branch():
     """(2, 5) x 3 elements in pi / 12 against (2, 5) x 6 in 2 pi / 12: the same onset,
     curvature and branch to rounding, the sector's energy doubled (the ring's the same),

@@ -18,6 +18,7 @@ SECTIONS = (
     "postbuckle",
 )  # sphinx-gallery's subsections, in order
 SCRIPTS = sorted(GALLERY.glob("*/plot_*.py"))
+SLOW = {"plot_17_growth_voltage"}  # ~20 s: make test-slow runs it (the docs build too)
 
 
 def test_gallery_has_its_examples_in_sections():
@@ -32,7 +33,11 @@ def test_gallery_has_its_examples_in_sections():
     assert not list(GALLERY.glob("plot_*.py")), "every example belongs to a section"
 
 
-@pytest.mark.parametrize("script", SCRIPTS, ids=[s.stem for s in SCRIPTS])
+@pytest.mark.parametrize(
+    "script",
+    [pytest.param(s, marks=[pytest.mark.slow] if s.stem in SLOW else []) for s in SCRIPTS],
+    ids=[s.stem for s in SCRIPTS],
+)
 def test_example_runs_and_draws(script, monkeypatch, tmp_path):
     if "sweep" in script.stem:
         pytest.importorskip("zarr")
