@@ -76,6 +76,7 @@ def test_expansion_is_singular_at_the_impedance_critical_value():
     assert abs(quartic) > 1e-3 * abs(correction)
 
 
+@pytest.mark.slow  # ~10 s: make test-slow runs it
 def test_tube_result_record_and_convergence():
     """koiter_coefficient on a tube, mode (0, 3): film [1, 1.1] (mu 1, axial growth) in a
     substrate to 2 (mu 0.2), L = 1: supercritical; 18 and 24 points a segment agree to

@@ -120,6 +120,7 @@ def test_branch_curvature_from_newton(name):
     assert richardson(D) == pytest.approx(e.coefficient, rel=1e-6)
 
 
+@pytest.mark.slow  # ~10 s: make test-slow runs it
 def test_door_takes_the_voltage_for_rings():
     """koiter_coefficient covers a charged tube's rings and the voltage control."""
     tube, control = CASES["voltage"]

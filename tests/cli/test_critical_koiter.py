@@ -107,6 +107,7 @@ permittivity = 0.5
 """
 
 
+@pytest.mark.slow  # ~10 s: make test-slow runs it
 def test_voltage_control_has_its_branch(tmp_path, capsys):
     """`--solve-for voltage --koiter`: the critical voltage's branch (the voltage the
     control, bifurcation/koiter_controls.py) is the library's expansion, supercritical."""

@@ -345,6 +345,7 @@ def _same_map(a, b):
     np.testing.assert_array_equal(a.values, b.values)
 
 
+@pytest.mark.slow  # ~10 s: make test-slow runs it
 def test_a_pool_draws_the_same_map():
     """Two worker processes scan the grid, trace the two boundaries (seeds of different
     pattern pairs: one batch) and certify them: the same map, to the last bit (every task is

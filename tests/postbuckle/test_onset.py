@@ -59,6 +59,7 @@ def test_voltage_onset_of_a_grown_bilayer_converges():
     assert errors[0] < 2e-4 and errors[1] < 5e-5
 
 
+@pytest.mark.slow  # ~10 s: make test-slow runs it
 def test_a_charged_tube_on_a_coarse_mesh_keeps_its_onset():
     """The dielectric tube R = 1 to 1.5, mode (0, 1) at Vbar = 0.7541, on 10 elements a
     wavelength: with the potential as the field its tangent turned negative at Vbar = 0.7232

@@ -18,7 +18,8 @@ SECTIONS = (
     "postbuckle",
 )  # sphinx-gallery's subsections, in order
 SCRIPTS = sorted(GALLERY.glob("*/plot_*.py"))
-SLOW = {"plot_17_growth_voltage"}  # ~20 s: make test-slow runs it (the docs build too)
+# 7-20 s each: make test-slow runs them (and the documentation build)
+SLOW = {"plot_16_stretch_rings_folds", "plot_17_growth_voltage"}
 
 
 def test_gallery_has_its_examples_in_sections():
