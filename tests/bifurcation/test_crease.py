@@ -232,7 +232,7 @@ def test_a_field_crease_at_the_start_does_not_hide_the_mechanical_one():
 def _march_with(monkeypatch, fail):
     """crease_onset of axial compression of the paper's tube with the base state at the
     stretches ``fail`` picks raising its error instead; the march's solved stretches."""
-    from electrogrowth.bifurcation import crease
+    from electrogrowth.bifurcation import along
 
     solved = []
 
@@ -243,7 +243,7 @@ def _march_with(monkeypatch, fail):
         solved.append(tube.stretch)
         return solve_base_state(tube, **kw)
 
-    monkeypatch.setattr(crease, "solve_base_state", state)
+    monkeypatch.setattr(along, "solve_base_state", state)  # the march's states (TubeAt)
     return lambda: crease_onset(
         Tube.uniform(2.0, length=1.0), "stretch", side="compression"
     ), solved

@@ -88,7 +88,14 @@ class TubeAt:
 
     def state(self, x, rtol: float = 1e-12):
         """``solve_base_state(self(x), rtol=rtol)``, started from the nearest state this path
-        has solved (the same root: basestate/warm.py)."""
+        has solved (the same root: basestate/warm.py); ConvergenceError where a layer is too
+        near its lock for the modes to be read (:func:`clear_of_lock`)."""
+        state = self.solved(x, rtol)
+        return clear_of_lock(state) if self.locks else state
+
+    def solved(self, x, rtol: float = 1e-12):
+        """The base state at x continued from the nearest state this path has solved, near
+        a lock or not (a crease's drive needs no incremental moduli)."""
         x = float(x)
         state = self.neighbours.solved_at(x, rtol)  # solved here before (a value, then its
         if state is None:  # estimate), or solved now
@@ -99,7 +106,7 @@ class TubeAt:
                 near, guess = self.neighbours.nearest(x, rtol)
                 state = solve_base_state(tube, rtol=rtol, near=near, guess=guess)
             self.neighbours.keep(x, rtol, state)
-        return clear_of_lock(state) if self.locks else state
+        return state
 
     @functools.cached_property
     def locks(self) -> bool:

@@ -32,7 +32,6 @@ import dataclasses
 import functools
 import math
 
-from ..basestate.tube import solve_base_state
 from ..continuation.events import FULL, brent, threshold_between
 from ..errors import BaseStateError, ConvergenceError, ElectrogrowthError
 from ..model.builtin_energies import BuiltinEnergy
@@ -341,8 +340,8 @@ def _march(problem: Problem, triggers: tuple[str, ...]) -> CreaseOnset:
     start, end, scale = control_path(tube, control, side)
     criterion = criterion_text(tube)
 
-    def state(x):
-        return solve_base_state(at(x), rtol=rtol)
+    def state(x):  # continued from the march's last state, not walked from the unloaded tube
+        return at.solved(x, rtol)
 
     def margin(x) -> float:
         return crease_margin(state(x), triggers).margin_of(triggers)
