@@ -31,6 +31,7 @@ from electrogrowth.bifurcation.surface import short_wave_limit
 from electrogrowth.model.layer import Layer
 from electrogrowth.model.layers import Tube as LayeredTube
 from electrogrowth.model.materials import Material, gent, mooney_rivlin, neo_hookean
+from electrogrowth.outcomes import Kind
 
 
 def test_the_ratio_gives_the_published_onset_strain():
@@ -286,3 +287,25 @@ def test_the_loss_is_bisected_over_unresolved_states_as_existing(monkeypatch):
     onset, _ = _march_with(monkeypatch, fail)
     c = onset()
     assert c.kind == "none" and c.threshold == pytest.approx(x_lost, abs=1e-6)
+
+
+def test_a_march_until_a_rival_stops_there(monkeypatch):
+    """``until`` (a design's nearest rival): no state is solved past it, the onset past it
+    is NONE, and an onset before it is the whole march's."""
+    from electrogrowth.bifurcation import along
+
+    tube = Tube.uniform(2.0, length=1.0)
+    full = crease_onset(tube, "stretch", side="compression")
+    solved = []
+
+    def state(t, **kw):
+        solved.append(t.stretch)
+        return solve_base_state(t, **kw)
+
+    monkeypatch.setattr(along, "solve_base_state", state)
+    early = crease_onset(tube, "stretch", side="compression", until=full.value + 0.01)
+    assert early.kind == Kind.NONE and min(solved) >= full.value + 0.01
+    late = crease_onset(tube, "stretch", side="compression", until=full.value - 0.01)
+    assert late.kind == Kind.CREASE and late.trigger == full.trigger
+    assert late.value == pytest.approx(full.value, rel=1e-12, abs=0)
+    assert crease_onset(tube, "stretch", side="compression", until=1.5).kind == Kind.NONE

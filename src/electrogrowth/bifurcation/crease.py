@@ -293,6 +293,7 @@ def crease_onset(
     *,
     side: str | None = None,
     rtol: float | None = None,
+    until: float | None = None,
 ) -> CreaseOnset:
     """The control value at which a face of the tube first reaches the crease onset.
 
@@ -310,6 +311,10 @@ def crease_onset(
         As for :func:`~.critical.critical_value`.
     solve_for, side, rtol
         The control, its side and the base state's accuracy (Problem's defaults).
+    until : float, optional
+        March no further than this control value: past it the onset is not looked for
+        (Kind.NONE, "none before until"), for a caller that needs a crease only before a
+        rival (a design's margin).
 
     Returns
     -------
@@ -326,18 +331,20 @@ def crease_onset(
     ('crease', 'axial', True)
     """
     problem = as_problem(params, solve_for, side=side, rtol=rtol)
-    onset = _march(problem, TRIGGERS)
+    onset = _march(problem, TRIGGERS, until)
     if onset.kind == Kind.CREASE and onset.trigger == "field":
-        return dataclasses.replace(onset, mechanical=_march(problem, MECHANICAL))
+        return dataclasses.replace(onset, mechanical=_march(problem, MECHANICAL, until))
     return onset
 
 
-def _march(problem: Problem, triggers: tuple[str, ...]) -> CreaseOnset:
-    """The first root of the crease margin of ``triggers`` along the problem's control
-    (:func:`crease_onset`)."""
+def _march(problem: Problem, triggers: tuple[str, ...], until=None) -> CreaseOnset:
+    """The first root of the crease margin of ``triggers`` along the problem's control,
+    up to its end or ``until`` if that comes first (:func:`crease_onset`)."""
     tube, control, side, rtol = problem.tube, problem.control, problem.side, problem.rtol
     at = TubeAt(tube, control)
     start, end, scale = control_path(tube, control, side)
+    if until is not None and (end - until) * (end - start) > 0:  # until comes first
+        end = until if (until - start) * (end - start) > 0 else start  # (no march: NONE)
     criterion = criterion_text(tube)
 
     def state(x):  # continued from the march's last state, not walked from the unloaded tube

@@ -31,11 +31,12 @@ from .sensitivity import STEP, _derivative, key_value, sensitivities, step_of
 CREASE_FIRST = "crease_first"  # first among the wrinkles in its region, but a crease comes first
 
 
-def crease_value(tube, solve_for: str, side, sense: float) -> float:
+def crease_value(tube, solve_for: str, side, sense: float, until=None) -> float:
     """Where a face of ``tube`` creases along the control (a mechanical crease);
-    sense * inf where none is reached or the criterion cannot be evaluated."""
+    sense * inf where none is reached (before ``until``, if given) or the criterion cannot
+    be evaluated."""
     try:
-        rival = crease_rival(crease_onset(tube, solve_for, side=side))
+        rival = crease_rival(crease_onset(tube, solve_for, side=side, until=until))
     except ElectrogrowthError:
         return sense * math.inf
     if rival is None or advisory(rival):

@@ -216,13 +216,18 @@ class _Margins:
             v = None
         return self.sense * math.inf if v is None else v
 
-    def crease(self, u) -> float:
-        """Where a face creases at u (sense * inf: none; design/onset.py)."""
+    def crease(self, u, until: float | None = None) -> float:
+        """Where a face creases at u (sense * inf: none; design/onset.py), looked for only
+        before ``until`` if given: a crease after the nearest rival does not set M, and
+        the march to the end of the control's range was most of a design's cost."""
         key = tuple(float(c) for c in u)
-        if key not in self.creases:
+        reach = self.sense * math.inf if until is None else until
+        known = self.creases.get(key)
+        if known is None or (math.isinf(known[0]) and self.sense * (reach - known[1]) > 0):
             at = self.at(u)
-            self.creases[key] = crease_value(at, self.map.solve_for, self.map.side, self.sense)
-        return self.creases[key]
+            v = crease_value(at, self.map.solve_for, self.map.side, self.sense, until)
+            self.creases[key] = known = (v, reach)  # v, or none up to reach
+        return known[0]
 
     def surface(self, u, until: float | None = None) -> float:
         """The short-wave limit at u where it comes before ``until`` (sense * inf: not)."""
@@ -234,13 +239,14 @@ class _Margins:
         v = self.value(mode, u)
         if not math.isfinite(v):
             return -math.inf, None
-        m = gap_to_crease(v, self.crease(u), self.sense)
-        nxt = None
+        m, nxt = math.inf, None
         if others:
             nxt = min(others, key=lambda o: self.sense * self.value(o, u))
-            m = min(self.sense * (self.value(nxt, u) - v) / abs(v), m)
-        until = v + self.sense * m * abs(v) if math.isfinite(m) else None
-        return min(m, gap_to_crease(v, self.surface(u, until), self.sense)), nxt
+            m = self.sense * (self.value(nxt, u) - v) / abs(v)
+        for rival in (self.crease, self.surface):  # each only where it can come first
+            until = v + self.sense * m * abs(v) if math.isfinite(m) else None
+            m = min(m, gap_to_crease(v, rival(u, until), self.sense))
+        return m, nxt
 
     def ranked(self, u, top: int | None = None) -> list:
         """The modes a scan at u finds, in the order reached: [((m, n), value), ...] (the
