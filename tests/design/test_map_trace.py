@@ -9,8 +9,8 @@ import dataclasses
 import numpy as np
 import pytest
 
-from electrogrowth.continuation.contour import CONTOUR_STEPS
-from electrogrowth.design.map_trace import TRIPLE, Values, follow
+from electrogrowth.continuation.contour import CONTOUR_STEPS, LOST
+from electrogrowth.design.map_trace import JUMP, TRIPLE, Values, follow
 
 LONG = dataclasses.replace(CONTOUR_STEPS, largest=0.5)  # the gallery's longest step
 
@@ -111,3 +111,58 @@ def test_a_mode_with_no_root_in_the_range_does_not_come():
     assert values.value((10, 0), (1.0, 1.0), hinted=False) is None
     v = values.value((2, 1), (1.0, 1.0), hinted=False)
     assert v == pytest.approx(critical_value(corner, 2, 1, CONTROL).value, abs=1e-10)
+
+
+class Jumping(Linear):
+    """P's first root jumps down by 1 (an earlier root appears) left of the line
+    u_0 = 1/2 + tilt (u_1 - 0.663): the P|Q curve runs into that line at (0.5, 0.663). At a
+    shallow angle (tilt 1/4) the corrector lands on the jump and d_PQ jumps there instead
+    of vanishing (the curve ends "jump"); more across it (tilt 1) the shortened steps find
+    the root on their corrector's line too far off, and the curve is lost at the smallest
+    step."""
+
+    def __init__(self, patterns, tilt=0.25):
+        super().__init__(patterns)
+        self.tilt = tilt
+
+    def _solve(self, label, u, hinted):
+        v = super()._solve(label, u, hinted)
+        return v - 1.0 if label == "P" and u[0] < 0.5 + self.tilt * (u[1] - 0.663) else v
+
+
+@pytest.mark.parametrize("tilt", [0.25, 1.0])
+def test_a_pattern_only_a_scan_finds_at_a_jump_or_where_lost_is_met_first(tilt):
+    """D, which no traced point compares, comes first on the P|Q curve only from
+    u_1 = 0.647 on, a little before the curve's jump at 0.663 (v_D - v = 0.1 (0.647 - u_1)
+    on it). The jump is located to the smallest step and scanned there: the scan names D,
+    the curve is taken again to the triple point of P, Q and D, found where the closed
+    forms cross: (0.5, 0.647), value 2 - 0.0647. Before, the curve ended "jump" at
+    u_1 = 0.62 (its last point before a step of 0.08 past the jump), or "lost" near 0.663,
+    D unseen. Where the curve is lost (tilt 1) the scan there names D the same way."""
+    patterns = dict(PATTERNS, D=_linear(2.0 + 0.1 * 0.647, -0.4, -0.2))
+    values = Jumping(patterns, tilt)
+    seen: list = []
+    pts, end, triple = follow(
+        values, "P", "Q", np.array([0.5, 0.0]), np.array([0.0, 1.0]), lambda u: seen,
+        check=lambda u, v: _scan_finding_d(values, seen, u, v),
+    )  # fmt: skip
+    assert end == TRIPLE and triple is not None and triple[0] == ("P", "Q", "D")
+    u, v = triple[1:]
+    assert abs(u[0] - 0.5) < 1e-12 and abs(u[1] - 0.647) < 1e-12 and abs(v - 1.9353) < 1e-12
+    assert all(p[1] <= 0.647 + 1e-12 for p in pts)
+
+
+def test_a_jump_is_located_to_the_smallest_step():
+    """With nothing else first, the curve still ends "jump", now within two of the smallest
+    steps (2e-4 of the side) of where it meets the jump at u_1 = 0.663, not a step of
+    0.08 short of it; the scan there finds nothing and the curve is not taken again."""
+    values = Jumping({"P": PATTERNS["P"], "Q": PATTERNS["Q"], "D": _linear(3.0, 0.0, 0.0)})
+    seen: list = []
+    pts, end, triple = follow(
+        values, "P", "Q", np.array([0.5, 0.0]), np.array([0.0, 1.0]), lambda u: seen,
+        check=lambda u, v: _scan_finding_d(values, seen, u, v),
+    )  # fmt: skip
+    assert end == JUMP and triple is None and seen == []
+    lost = Jumping(values.patterns, 1.0)
+    assert follow(lost, "P", "Q", pts[0], np.array([0.0, 1.0]), lambda u: [])[1] == LOST
+    assert 0.663 - 4e-4 <= pts[-1][1] <= 0.663 and abs(pts[-1][0] - 0.5) < 1e-12

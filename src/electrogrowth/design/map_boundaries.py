@@ -96,8 +96,9 @@ class _Tracer:
         return self.found
 
     def check(self, u, v):
-        """A pattern a full scan finds earlier than v at the triple point u, else None; a
-        mode no task had seen joins the compared ones (the curve is taken again to it)."""
+        """A pattern a full scan finds earlier than v at u (a triple point, or where a curve
+        ends), else None; a mode no task had seen joins the compared ones (the curve is
+        taken again to it)."""
         first, w = scan_label(self.values, self.options, u)
         late = not (valued(first) and math.isfinite(w))
         if late or self.values.sense * (w - v) >= -CERTIFIED * max(1.0, abs(v)):

@@ -26,10 +26,12 @@ nothing a full scan finds (``check``; a mode no task had seen is added to the co
 ones). Where something does, the curve met it first, before the point Newton found: the
 last step passed two events in one (triple points closer than a step), so the trace is
 taken again from the last point before the event with steps of a quarter of that one,
-until the triple point holds or the step is the smallest (then the curve ends "lost").
-Where a curve leaves the box a full scan checks it too: a pattern first there that was not
-compared means the curve crossed its region unseen, so the curve is taken again from its
-start with it compared, to the triple point where it meets that region. docs/design.md.
+until the triple point holds or the step is the smallest (then the curve ends "lost"); a
+jump is located the same way, to the smallest step. Where a curve ends, but for a closed
+one (it leaves the box, ends at a jump or is lost), a full scan checks it too: a pattern
+first there that was not compared means the curve crossed its region unseen, so the curve
+is taken again from its start with it compared, to the triple point where it meets that
+region. A closed curve ends at its start, scanned before it was traced. docs/design.md.
 """
 
 from __future__ import annotations
@@ -45,7 +47,6 @@ from ..continuation.contour import (
     CLOSED,
     CONTOUR,
     CONTOUR_STEPS,
-    EDGE,
     LOST,
     STOPPED,
     trace_contour,
@@ -230,8 +231,11 @@ def follow(values: Values, p, q, start, tangent, candidates, policy=CONTOUR_STEP
 
     ``candidates(u)`` are the patterns compared at each point; ``check(u, v)``, if given,
     names a pattern a full scan finds earlier than v at u (else None): asked at a triple
-    point and where the curve leaves the box; a pattern found there that was not compared
-    before is compared from then on, and the curve is taken again from ``start``."""
+    point and where the curve ends but for a closed one (it leaves the box, ends at a jump,
+    which is first located to the smallest step as an event is, or is lost); a pattern
+    found at an end that was not compared before is compared from then on, and the curve is
+    taken again from ``start``. A closed curve ends at its start, already scanned (the seed
+    edge's root, or a triple point)."""
     d = values.condition(p, q)
     seen: dict = {}  # pattern -> (its relative lead over P and Q, the point it was checked)
     count = [0]
@@ -261,36 +265,40 @@ def follow(values: Values, p, q, start, tangent, candidates, policy=CONTOUR_STEP
     while True:
         tr = trace_contour(d, pts[-1], t, stop=stop, policy=policy)
         pts = pts[:-1] + [np.array(x) for x in tr.points]
-        if tr.end == EDGE and check is not None:
-            c = _exit_check(values, p, q, pts[-1], check)
+        end = tr.end  # EDGE, CLOSED or LOST, or STOPPED at an event (below)
+        if tr.end == STOPPED:
+            last, past = pts[-1], np.asarray(tr.past)
+            if tr.event != JUMP:
+                found = _event(values, p, q, tr.event, last, past, candidates, check)
+                if found is not None:
+                    u, v = found
+                    return pts + [u], TRIPLE, ((p, q, tr.event), u, v)
+            step = float(np.linalg.norm(past - last))
+            if step > 2 * policy.smallest:
+                # an event not located, or a jump: again from the last point, shorter, so
+                # the curve ends within the smallest step of where it passed it
+                short = max(REFINE * step, policy.smallest)
+                policy = dataclasses.replace(policy, first=short, largest=short)
+                t = past - last
+                continue
+            end = JUMP if tr.event == JUMP else LOST
+        if end != CLOSED and check is not None:
+            c = _end_check(values, p, q, pts[-1], check)
             if c is not None and c not in retaken:
-                # the curve left the box where c comes first: it met c's region on the
-                # way, unseen as c was not compared; taken again with c compared
+                # the curve ends where c comes first: it met c's region on the way, unseen
+                # as c was not compared; taken again from its start with c compared
                 retaken.add(c)
                 pts, t = [np.asarray(start, float)], np.asarray(tangent, float)
                 policy = first_policy
                 seen.clear()
                 count[0] = 0
                 continue
-        if tr.end != STOPPED:
-            return pts, {EDGE: EDGE, CLOSED: CLOSED, LOST: LOST}[tr.end], None
-        if tr.event == JUMP:
-            return pts, JUMP, None
-        last, past = pts[-1], np.asarray(tr.past)
-        found = _event(values, p, q, tr.event, last, past, candidates, check)
-        if found is not None:
-            u, v = found
-            return pts + [u], TRIPLE, ((p, q, tr.event), u, v)
-        step = float(np.linalg.norm(past - last))
-        if step <= 2 * policy.smallest:
-            return pts, LOST, None
-        short = max(REFINE * step, policy.smallest)  # again from the last point, shorter
-        policy = dataclasses.replace(policy, first=short, largest=short)
-        t = past - last
+        return pts, end, None
 
 
-def _exit_check(values: Values, p, q, u, check):
-    """A pattern a full scan finds earlier than P and Q where the curve leaves the box."""
+def _end_check(values: Values, p, q, u, check):
+    """A pattern a full scan finds earlier than P and Q where the curve ends (leaves the
+    box, at a jump, lost)."""
     v = values.value(p, u) if valued(p) else values.value(q, u)
     return None if v is None else check(u, v)
 
