@@ -6,6 +6,7 @@ a range there has no design whose pattern is the wrinkle, and the result says so
 would report a design found with M > 0."""
 
 import json
+import math
 
 import pytest
 
@@ -171,3 +172,20 @@ def test_a_field_crease_does_not_steer_the_design_to_a_masked_crease():
     assert d.status == CREASE_FIRST, (d.status, d.x, d.value, d.crease_value)
     g_crease = brentq(lambda g: _outer_axial_ratio(tube.at("voltage", d.x), g) - 2.4, 1.5, 1.89)
     assert d.crease_value == pytest.approx(g_crease, abs=1e-8) and g_crease < d.value
+
+
+def test_the_crease_rival_looks_only_as_far_as_asked(monkeypatch):
+    """CreaseRival (a design's crease, cached per design): before ``until`` only, a march
+    not repeated for an ``until`` it has passed, and a crease once found kept for any."""
+    from electrogrowth.design import onset
+
+    marches = []
+    value = onset.crease_value
+    monkeypatch.setattr(onset, "crease_value", lambda *a: marches.append(a[-1]) or value(*a))
+    rival = onset.CreaseRival(
+        lambda x: Tube.uniform(2.0, length=x), "stretch", "compression", -1.0
+    )
+    assert rival.value(1.0, until=0.7) == -math.inf
+    assert rival.value(1.0, until=0.8) == -math.inf and marches == [0.7]  # looked past 0.8
+    assert rival.value(1.0, until=0.5) == pytest.approx(CREASE, rel=1e-10)
+    assert rival.value(1.0) == rival.value(1.0, until=0.9) and marches == [0.7, 0.5]

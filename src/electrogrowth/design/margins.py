@@ -73,23 +73,20 @@ class Margins:
         self.cliffs: dict = {}
         self.sense = -1.0 if side == "compression" else 1.0
         self.cache: dict = {}
-        self.creases: dict = {}
         self.starts: dict = {}
         self.ends: dict = {}
         at = lambda x: tube.at(key, x)  # noqa: E731
         self.surfaces = SurfaceRival(at, solve_for, side, self.sense, surface)
+        self.creases = onset.CreaseRival(at, solve_for, side, self.sense)
 
     def surface(self, x: float, until: float | None = None) -> float:
         """The short-wave limit at x where it comes before ``until`` (sense * inf: not;
         design/short_waves.py)."""
         return self.surfaces.value(x, until)
 
-    def crease(self, x: float) -> float:
-        """Where a face creases at x (sense * inf: none; design/onset.py)."""
-        if x not in self.creases:
-            at = self.tube.at(self.key, x)
-            self.creases[x] = onset.crease_value(at, self.solve_for, self.side, self.sense)
-        return self.creases[x]
+    def crease(self, x: float, until: float | None = None) -> float:
+        """Where a face creases at x, looked for before ``until`` (design/onset.py)."""
+        return self.creases.value(x, until)
 
     def value(self, mode, x: float) -> float:
         """The first critical value of ``mode`` at x; +-inf (never) if the threshold or no
@@ -167,14 +164,14 @@ class Margins:
         short-wave limit, and with ``ends`` (the located ends of the valid range that the
         region's span reaches) the gap to them."""
         v = self.value(mode, x)
-        m = by_crease = gap_to_crease(v, self.crease(x), self.sense)
-        nxt = None
+        m, nxt = (math.inf if math.isfinite(v) else -math.inf), None
         if others:
             nxt = min(others, key=lambda o: self.sense * self.value(o, x))
-            m = min(self.margin(mode, x, self.value(nxt, x)), by_crease)
-        if math.isfinite(v):  # the limit only where it comes before the nearest other one
-            until = v + self.sense * m * abs(v) if math.isfinite(m) else None
-            m = min(m, gap_to_crease(v, self.surface(x, until), self.sense))
+            m = self.margin(mode, x, self.value(nxt, x))
+        if math.isfinite(v):  # the crease and the limit only where they can come first
+            for rival in (self.crease, self.surface):
+                until = v + self.sense * m * abs(v) if math.isfinite(m) else None
+                m = min(m, gap_to_crease(v, rival(x, until), self.sense))
         m = min(m, self.to_range_end(mode, x))
         if ends:
             m = min(m, self.to_no_design(mode, others, x, m, ends))

@@ -44,6 +44,33 @@ def crease_value(tube, solve_for: str, side, sense: float, until=None) -> float:
     return rival.value
 
 
+class CreaseRival:
+    """Where a face creases at designs x, cached (:func:`crease_value`): ``tube_at(x)`` the
+    tube there. Only a crease before the nearest other rival can set the margin, so it is
+    looked for up to ``until`` where one is given; each entry is (v, reach): the crease
+    value, or sense * inf and how far the march looked (None: to the control's end)."""
+
+    def __init__(self, tube_at, solve_for: str, side, sense: float):
+        self.tube_at, self.solve_for, self.side, self.sense = tube_at, solve_for, side, sense
+        self.cache: dict = {}
+
+    def value(self, x, until: float | None = None) -> float:
+        """v_C at x where it comes before ``until`` (None or infinite: anywhere); sense *
+        inf where it does not. A crease already located past ``until`` is returned as it
+        is: it cannot set M there either."""
+        until = until if until is not None and math.isfinite(until) else None
+        key = tuple(float(c) for c in x) if hasattr(x, "__len__") else x
+        if key in self.cache:
+            v, reach = self.cache[key]
+            if math.isfinite(v) or reach is None:
+                return v
+            if until is not None and self.sense * (until - reach) <= 0:
+                return v  # looked that far already
+        v = crease_value(self.tube_at(x), self.solve_for, self.side, self.sense, until)
+        self.cache[key] = (v, None if math.isfinite(v) else until)
+        return v
+
+
 def gap_to_crease(v_target: float, v_crease: float, sense: float) -> float:
     """M_crease (module docstring): inf where no crease is reached, -inf where the target
     is never reached."""

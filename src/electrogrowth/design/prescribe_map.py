@@ -33,8 +33,8 @@ from .map_record import ModeMap, label_json, label_of
 from .map_trace import FAILED, Values, valued
 from .onset import (
     CREASE_FIRST,
+    CreaseRival,
     crease_sensitivity,
-    crease_value,
     design_verdict,
     gap_to_crease,
     kinked_margin,
@@ -194,7 +194,7 @@ class _Margins:
         self.map, self.tube, self.options = mmap, tube, options
         self.sense = -1.0 if mmap.side == "compression" else 1.0
         self.values = Values(tube, mmap.solve_for, mmap.keys, mmap.box, mmap.side, 1e-12)
-        self.creases: dict = {}
+        self.creases = CreaseRival(self.at, mmap.solve_for, mmap.side, self.sense)
         self.surfaces = SurfaceRival(
             self.at, mmap.solve_for, mmap.side, self.sense, options.surface
         )
@@ -217,17 +217,8 @@ class _Margins:
         return self.sense * math.inf if v is None else v
 
     def crease(self, u, until: float | None = None) -> float:
-        """Where a face creases at u (sense * inf: none; design/onset.py), looked for only
-        before ``until`` if given: a crease after the nearest rival does not set M, and
-        the march to the end of the control's range was most of a design's cost."""
-        key = tuple(float(c) for c in u)
-        reach = self.sense * math.inf if until is None else until
-        known = self.creases.get(key)
-        if known is None or (math.isinf(known[0]) and self.sense * (reach - known[1]) > 0):
-            at = self.at(u)
-            v = crease_value(at, self.map.solve_for, self.map.side, self.sense, until)
-            self.creases[key] = known = (v, reach)  # v, or none up to reach
-        return known[0]
+        """Where a face creases at u, looked for before ``until`` (design/onset.py)."""
+        return self.creases.value(u, until)
 
     def surface(self, u, until: float | None = None) -> float:
         """The short-wave limit at u where it comes before ``until`` (sense * inf: not)."""
