@@ -28,6 +28,7 @@ from electrogrowth.bifurcation.crease import (
     ratio_is_exact,
 )
 from electrogrowth.bifurcation.surface import short_wave_limit
+from electrogrowth.errors import ParameterError
 from electrogrowth.model.layer import Layer
 from electrogrowth.model.layers import Tube as LayeredTube
 from electrogrowth.model.materials import Material, gent, mooney_rivlin, neo_hookean
@@ -305,7 +306,10 @@ def test_a_march_until_a_rival_stops_there(monkeypatch):
     monkeypatch.setattr(along, "solve_base_state", state)
     early = crease_onset(tube, "stretch", side="compression", until=full.value + 0.01)
     assert early.kind == Kind.NONE and min(solved) >= full.value + 0.01
+    assert early.message == f"none before {full.value + 0.01:.12g}" and full.message == ""
     late = crease_onset(tube, "stretch", side="compression", until=full.value - 0.01)
     assert late.kind == Kind.CREASE and late.trigger == full.trigger
     assert late.value == pytest.approx(full.value, rel=1e-12, abs=0)
     assert crease_onset(tube, "stretch", side="compression", until=1.5).kind == Kind.NONE
+    with pytest.raises(ParameterError, match="until = nan must be a finite value"):
+        crease_onset(tube, "stretch", side="compression", until=math.nan)

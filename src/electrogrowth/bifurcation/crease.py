@@ -33,7 +33,7 @@ import functools
 import math
 
 from ..continuation.events import FULL, brent, threshold_between
-from ..errors import BaseStateError, ConvergenceError, ElectrogrowthError
+from ..errors import BaseStateError, ConvergenceError, ElectrogrowthError, ParameterError
 from ..model.builtin_energies import BuiltinEnergy
 from ..model.layers import Tube
 from ..outcomes import Kind, Outcome, Status
@@ -330,6 +330,8 @@ def crease_onset(
     >>> str(c.kind), c.trigger, abs(c.value - CREASE_RATIO ** (-2 / 3)) < 1e-12
     ('crease', 'axial', True)
     """
+    if until is not None and not math.isfinite(until):
+        raise ParameterError(f"until = {until} must be a finite value of the control (or None)")
     problem = as_problem(params, solve_for, side=side, rtol=rtol)
     onset = _march(problem, TRIGGERS, until)
     if onset.kind == Kind.CREASE and onset.trigger == "field":
@@ -343,6 +345,7 @@ def _march(problem: Problem, triggers: tuple[str, ...], until=None) -> CreaseOns
     tube, control, side, rtol = problem.tube, problem.control, problem.side, problem.rtol
     at = TubeAt(tube, control)
     start, end, scale = control_path(tube, control, side)
+    path_end = end
     if until is not None and (end - until) * (end - start) > 0:  # until comes first
         end = until if (until - start) * (end - start) > 0 else start  # (no march: NONE)
     criterion = criterion_text(tube)
@@ -399,7 +402,10 @@ def _march(problem: Problem, triggers: tuple[str, ...], until=None) -> CreaseOns
         ahead = -h_new / slope if slope > 0 else math.inf
         step = min(max(0.5 * ahead, STEP_MIN * scale), STEP_MAX * scale)
         x, h = x_new, h_new
-    return result(math.nan, Kind.NONE)
+    none = result(math.nan, Kind.NONE)
+    return (
+        none if end == path_end else dataclasses.replace(none, message=f"none before {end:.12g}")
+    )
 
 
 def _creasing_face(tube: Tube, state, triggers: tuple[str, ...] = TRIGGERS) -> FaceCrease:
