@@ -268,9 +268,13 @@ def test_the_march_continues_its_layered_states(monkeypatch):
     walks = []
     walk = layered._prepare
 
-    def counted(*args):  # a walk for one of the march's own states (its margin's)
-        walks.append(any(f.function == "margin" and f.filename.endswith("crease.py")
-                         for f in inspect.stack()))  # fmt: skip
+    def for_the_march() -> bool:  # called for one of the march's own states (its margin's)
+        return any(
+            f.function == "margin" and f.filename.endswith("crease.py") for f in inspect.stack()
+        )
+
+    def counted(*args):
+        walks.append(for_the_march())
         return walk(*args)
 
     monkeypatch.setattr(layered, "_prepare", counted)
