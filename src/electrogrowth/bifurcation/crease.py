@@ -339,7 +339,7 @@ def crease_onset(
     return onset
 
 
-def _march(problem: Problem, triggers: tuple[str, ...], until=None) -> CreaseOnset:
+def _march(problem: Problem, triggers: tuple[str, ...], until: float | None = None) -> CreaseOnset:
     """The first root of the crease margin of ``triggers`` along the problem's control,
     up to its end or ``until`` if that comes first (:func:`crease_onset`)."""
     tube, control, side, rtol = problem.tube, problem.control, problem.side, problem.rtol

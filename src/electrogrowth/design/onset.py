@@ -31,7 +31,7 @@ from .sensitivity import STEP, _derivative, key_value, sensitivities, step_of
 CREASE_FIRST = "crease_first"  # first among the wrinkles in its region, but a crease comes first
 
 
-def crease_value(tube, solve_for: str, side, sense: float, until=None) -> float:
+def crease_value(tube, solve_for: str, side, sense: float, until: float | None = None) -> float:
     """Where a face of ``tube`` creases along the control (a mechanical crease);
     sense * inf where none is reached (before ``until``, if given) or the criterion cannot
     be evaluated."""
