@@ -326,7 +326,8 @@ def test_an_interrupted_design_keeps_its_finished_scans(monkeypatch, tmp_path, c
     partial = tmp_path / "design_0_1_vs_voltage.partial.csv"
     rows = list(csv.DictReader(partial.open()))
     kept = f"2 of 3 points written to {partial} (switches not located)"
-    assert err == f"electrogrowth: interrupted; {kept}\n"
+    again = "run the same command again to compute only the rest"
+    assert err == f"electrogrowth: interrupted; {kept}; {again}\n"
     assert [float(r["voltage"]) for r in rows] == [0.0, 0.15]
     assert all(r["kind"] == "bifurcation" and float(r["growth_cr"]) > 1 for r in rows)
     calls.clear()

@@ -82,6 +82,77 @@ class CurvePoint(Outcome):
         object.__setattr__(self, "status", Status(self.status or Status.OK))
 
 
+#: The kinds a grid point can have ("" where its scan failed).
+POINT_KINDS = ("", Kind.BIFURCATION, Kind.THRESHOLD, Kind.SURFACE)
+
+
+def point_record(pt: CurvePoint) -> dict:
+    """A grid point as a JSON-ready record (:func:`point_of` reads it back exactly: floats
+    keep every digit through JSON's repr, NaN as None)."""
+    record = dataclasses.asdict(pt)
+    for key in ("x", "value", "short_wave_limit", "error_estimate"):
+        record[key] = None if math.isnan(record[key]) else record[key]
+    record["status"], record["kind"] = str(pt.status), str(pt.kind)
+    record["runners_up"] = [[m, n, None if math.isnan(v) else v] for m, n, v in pt.runners_up]
+    return record
+
+
+def point_of(record: dict) -> CurvePoint:
+    """The grid point of a :func:`point_record`, its every field checked (the record comes
+    from a file: ValueError names the first field that is not what a point holds)."""
+    if not isinstance(record, dict) or set(record) != _FIELDS:
+        raise ValueError("not a curve point's record (its fields differ)")
+    kind, status, surface = record["kind"], record["status"], record["surface"]
+    if kind not in POINT_KINDS or status not in set(Status) or not isinstance(surface, bool):
+        raise ValueError(f"kind {kind!r}, status {status!r} or surface {surface!r} unknown")
+    runners = record["runners_up"]
+    if not isinstance(runners, (list, tuple)):
+        raise ValueError(f"runners_up = {runners!r} is not a list")
+    texts = [record[k] for k in ("message", "remedy", "traceback", "failure")]
+    if not all(isinstance(t, str) and _printable(t) for t in texts):
+        raise ValueError("message, remedy, traceback or failure is not a printable text")
+    x, value, limit, error = (
+        _float(record[k], k) for k in ("x", "value", "short_wave_limit", "error_estimate")
+    )
+    runners_up = tuple(_runner(r) for r in runners)
+    return CurvePoint(x, value, _mode(record["mode"]), kind, Status(status), runners_up,
+                      surface, limit, error, *texts)  # fmt: skip
+
+
+def _printable(text: str) -> bool:
+    """No control characters but line breaks and tabs (a text of a file is printed later:
+    no terminal escape sequences)."""
+    return all(c.isprintable() or c in "\n\t" for c in text)
+
+
+def _float(v, name: str) -> float:
+    """A record's number as a float (None: NaN, as :func:`point_record` writes it)."""
+    if v is None:
+        return math.nan
+    if isinstance(v, bool) or not isinstance(v, (int, float)):
+        raise ValueError(f"{name} = {v!r} is not a number")
+    return float(v)
+
+
+def _runner(r) -> tuple[int, int, float]:
+    """A runner-up (m, n, value) of a record."""
+    if not isinstance(r, (list, tuple)) or len(r) != 3:
+        raise ValueError(f"runner-up {r!r} is not (m, n, value)")
+    return (*_mode(r[:2]), _float(r[2], "a runner-up's value"))
+
+
+def _mode(v) -> tuple[int, int]:
+    """(m, n) of a record's two integers."""
+    if not isinstance(v, (list, tuple)) or len(v) != 2:
+        raise ValueError(f"mode {v!r} is not two integers (m, n)")
+    if any(isinstance(i, bool) or not isinstance(i, int) for i in v):
+        raise ValueError(f"mode {v!r} is not two integers (m, n)")
+    return (int(v[0]), int(v[1]))
+
+
+_FIELDS = {f.name for f in dataclasses.fields(CurvePoint)}
+
+
 def _failed_point(x: float, exc: Exception) -> CurvePoint:
     """The grid point at x whose scan raised ``exc``: FAILED (an electrogrowth error) or
     ERROR (a bug, its traceback kept)."""
@@ -179,6 +250,9 @@ class Curve:
     ends: tuple[Switch, ...] = ()
     crease: CreaseAlong | None = None
     failure: tuple[str, ...] = ()
+    #: the grid points as computed (CurvePoint, runners-up and all): an interrupted
+    #: curve's finished points, which ``critical_curve(..., resume=curve)`` takes back
+    grid: tuple[CurvePoint, ...] = dataclasses.field(default=(), repr=False, compare=False)
 
     def __post_init__(self):
         if self.crease is None:

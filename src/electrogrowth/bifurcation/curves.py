@@ -157,6 +157,7 @@ def critical_curve(
     mapper: Callable = map,
     follow: bool = True,
     edges: bool = False,
+    resume: Curve | None = None,
 ) -> Curve:
     """Critical ``solve_for`` as ``along`` runs over ``values``, switches located.
 
@@ -201,6 +202,11 @@ def critical_curve(
         (two grid points, or two scans of that bisection: ``Curve.failure``) the valid
         window where the critical value runs through the control's range, and its ends
         (curve_switches.py). False (default): the valid range ends at the grid point.
+    resume : Curve, optional
+        An earlier curve of the same tube, control and side (e.g. the ``partial`` of an
+        :class:`~electrogrowth.interrupts.Interrupted` one): its grid points (``grid``)
+        at the leading ``values`` are taken as computed, the rest computed (the first of
+        them by a full scan), and the switches located over the whole grid.
 
     Returns
     -------
@@ -259,14 +265,18 @@ def critical_curve(
     for x in xs:  # the ranges are checked before any work
         params.at(along, x)
     unit = functools.partial(curve_point, params, solve_for, along, side=side, options=options)
+    points = _resumed(resume, xs, (along, solve_for, side, params))
+    rest = xs[len(points) :]
     if follow and mapper is map:
         solvers = dict(scan=scan_modes, solve=critical_value, limit=short_wave_limit)
         follower = _Follower(params, solve_for, along, side, options, unit, **solvers)
-        computed = (follower.point(x, i in (0, xs.size - 1)) for i, x in enumerate(xs))
+        ends = (0, rest.size - 1)  # a full scan first: a resumed grid has no scan to follow
+        computed = (follower.point(x, i in ends) for i, x in enumerate(rest))
     else:
-        computed = mapper(unit, xs)
-    points = []
+        computed = mapper(unit, rest)
     bar = _progress_bar(xs.size, f"{solve_for} along {along}") if progress is True else None
+    if bar is not None:
+        bar.update(len(points))
     try:
         for pt in computed:
             points.append(pt)
@@ -286,12 +296,40 @@ def critical_curve(
         stop = interrupt_of(exc)  # hand back the finished grid points, switches not located
         if stop is None:
             raise
-        partial = _curve(along, solve_for, side, params, [_row(p) for p in points], [])
+        partial = grid_curve(along, solve_for, side, params, points)
         raise Interrupted(stop.signum, str(stop), partial=partial) from None
     finally:
         if bar is not None:
             bar.close()
-    return _curve(along, solve_for, side, params, rows, switches, crease)
+    return _curve(along, solve_for, side, params, rows, switches, crease, grid=points)
+
+
+def grid_curve(along: str, solve_for: str, side, params: Tube, points) -> Curve:
+    """The curve of grid points alone (no switch located, no crease): what an interrupted
+    curve hands back, and what ``critical_curve(..., resume=...)`` takes (the control's
+    name and side as critical_curve reads them)."""
+    solve_for = str(params.check_control(solve_for))
+    side, points = check_side(solve_for, side), list(points)
+    return _curve(along, solve_for, side, params, [_row(p) for p in points], [], grid=points)
+
+
+def _resumed(resume: Curve | None, xs: np.ndarray, what: tuple) -> list[CurvePoint]:
+    """The grid points of ``resume`` at the leading values of ``xs`` (the same numbers),
+    after checking it is a curve of the same (along, solve_for, side, tube)."""
+    if resume is None:
+        return []
+    if (resume.along, resume.solve_for, resume.side, resume.params) != what:
+        raise ParameterError(
+            "resume is a curve of another tube, control or side: "
+            f"{resume.solve_for} along {resume.along} (side {resume.side}), not"
+            f" {what[1]} along {what[0]} (side {what[2]}) of this tube"
+        )
+    done = []
+    for pt, x in zip(resume.grid, xs):
+        if pt.x != x:
+            break
+        done.append(pt)
+    return done
 
 
 def _located(points: list[CurvePoint], loc: _Locator, progress=None, edges: bool = False):
@@ -329,9 +367,9 @@ def _located(points: list[CurvePoint], loc: _Locator, progress=None, edges: bool
     return rows, switches
 
 
-def _curve(along, solve_for, side, params, rows, switches, crease=None) -> Curve:
+def _curve(along, solve_for, side, params, rows, switches, crease=None, grid=()) -> Curve:
     """The Curve of table rows (as :func:`_row`) and switches (and ends), with the crease
-    at each row (None: not computed)."""
+    at each row (None: not computed) and the ``grid`` points they were made of."""
     x, v, modes, kinds, status, surface, limit, failure = zip(*rows) if rows else [()] * 8
     modes = np.array(modes, dtype=int).reshape(-1, 2)
     return Curve(
@@ -351,4 +389,5 @@ def _curve(along, solve_for, side, params, rows, switches, crease=None) -> Curve
         tuple(s for s in switches if s.kind == Kind.END),
         crease,
         tuple(failure),
+        tuple(grid),
     )

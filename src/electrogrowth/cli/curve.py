@@ -28,6 +28,7 @@ from ..interrupts import Interrupted
 from ..model.layers import KEYS_TEXT
 from ..outcomes import Status
 from ..summary import tube_text
+from . import resume
 from .options import (
     add_control_options,
     add_mode_range_options,
@@ -122,6 +123,10 @@ def run_curve(args) -> int:
         raise ParameterError(f"--from = --to = {args.start:g}; need two different values")
     values = np.linspace(args.start, args.stop, args.points)
     stem = f"curve_{solve_for}_vs_{args.along}".replace("[", "").replace("]", "")
+    what = (args.along, solve_for, args.side, params)
+    earlier, records = resume.resumable(
+        args.out, stem, what, args.points, args, values=values.tolist(), options=options
+    )
     try:
         curve = critical_curve(  # bars over the points, then the switches being located
             params,
@@ -131,11 +136,12 @@ def run_curve(args) -> int:
             side=args.side,
             options=options,
             progress=not args.json and enabled(args),
+            resume=earlier,
         )
     except Interrupted as stop:  # keep the finished points
-        raise _kept(stop, args.out / f"{stem}.partial.csv", args.points) from None
+        raise _kept(stop, args.out / f"{stem}.partial.csv", args.points, records) from None
     csv = curve.to_csv(args.out / f"{stem}.csv")
-    (args.out / f"{stem}.partial.csv").unlink(missing_ok=True)  # of an interrupted run
+    resume.discard(args.out, stem)  # what an interrupted run kept
     ax = plot_curve(curve)
     wrapped_title(ax, tube_text(curve.params, SYMBOLS, skip=(curve.along, curve.solve_for)), 8)
     png = write_figure(ax.figure, args.out / f"{stem}.png")
@@ -143,6 +149,7 @@ def run_curve(args) -> int:
     physical = _physical(curve, getattr(args, "scales", None))
     if args.json:
         extra = {"physical": physical} if physical else {}
+        extra["resumed_points"] = 0 if earlier is None else len(earlier.grid)
         print(json.dumps({**curve.as_dict(), **extra, "csv": str(csv), "png": str(png)}))
     else:
         print("\n".join(summary(curve) + physical_line(physical) + [str(csv), str(png)]))
@@ -203,16 +210,18 @@ def _inaccurate_text(curve) -> str:
     )
 
 
-def _kept(stop: Interrupted, path: Path, total: int) -> Interrupted:
+def _kept(stop: Interrupted, path: Path, total: int, records=None) -> Interrupted:
     """The interrupt, saying where the points finished before it were written (a CSV named
-    .partial.csv: the grid points only, no switch located)."""
+    .partial.csv: the grid points only, no switch located; with ``records``, (path, run),
+    also the points whole for the same command run again, cli/resume.py)."""
     done = stop.partial
     if done is None or not len(done.x):
         return Interrupted(stop.signum, f"{stop}; no point was finished")
     done.to_csv(path)
+    again = resume.keep(records, done)
     return Interrupted(
         stop.signum,
-        f"{stop}; {len(done.x)} of {total} points written to {path} (switches not located)",
+        f"{stop}; {len(done.x)} of {total} points written to {path} (switches not located){again}",
     )
 
 

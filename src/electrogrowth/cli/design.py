@@ -28,6 +28,7 @@ from ..errors import ParameterError, UsageError
 from ..interrupts import Interrupted
 from ..model.layers import KEYS_TEXT
 from ..pool import check_workers, usable_cores
+from . import resume
 from .options import (
     SHORT_WAVES,
     add_control_options,
@@ -191,12 +192,19 @@ def run_design(args) -> int:
     options = scan_options_from_args(args)
     points = 9 if args.points is None else args.points
     stem = _stem(check_target(target).name, vary[0])
+    earlier, records = None, None  # without --out nothing is kept
+    if args.out is not None:
+        what = (vary[0], solve_for, args.side, tube)
+        earlier, records = resume.resumable(
+            args.out, stem, what, points, args, vary=vary, points=points, options=options
+        )
     try:
         sequence = mode_sequence(
-            tube, solve_for, vary, side=args.side, options=options, points=points
-        )
+            tube, solve_for, vary, side=args.side, options=options, points=points,
+            resume=earlier,
+        )  # fmt: skip
     except Interrupted as stop:  # keep the finished scans
-        raise _kept(stop, args.out, stem, points) from None
+        raise _kept(stop, args.out, stem, points, records) from None
     if _every_point_failed(sequence):
         return 2
     try:
@@ -210,7 +218,7 @@ def run_design(args) -> int:
     _add_physical(record, args, result, {seq.solve_for: result.value, seq.key: result.x})
     if args.out is not None:
         record["files"] = [str(p) for p in _write(result, args.out)]
-        (args.out / f"{stem}.partial.csv").unlink(missing_ok=True)  # of an interrupted run
+        resume.discard(args.out, stem)  # what an interrupted run kept
     if args.json:
         print(json.dumps(record))
         return 0
@@ -255,10 +263,13 @@ def _stem(target: str, key: str) -> str:
     return f"design_{name}_vs_{key}".replace("[", "").replace("]", "")
 
 
-def _kept(stop: Interrupted, out: Path | None, stem: str, total: int = 0) -> Interrupted:
+def _kept(
+    stop: Interrupted, out: Path | None, stem: str, total: int = 0, records=None
+) -> Interrupted:
     """The interrupt, saying what was kept: the scans finished before it (``total`` the
-    grid's points; a CSV named .partial.csv, no switch located), or the whole mode
-    sequence (total 0: its CSV, no design chosen); nothing without --out."""
+    grid's points; a CSV named .partial.csv, no switch located, and with ``records``,
+    (path, run), the points whole for the same command run again, cli/resume.py), or the
+    whole mode sequence (total 0: its CSV, no design chosen); nothing without --out."""
     done = stop.partial
     if done is None or not len(done.x):
         return Interrupted(stop.signum, f"{stop}; no point was finished")
@@ -270,9 +281,10 @@ def _kept(stop: Interrupted, out: Path | None, stem: str, total: int = 0) -> Int
             stop.signum, f"{stop}; the mode sequence written to {path} (no design chosen)"
         )
     path = done.to_csv(out / f"{stem}.partial.csv")
+    again = resume.keep(records, done)
     return Interrupted(
         stop.signum,
-        f"{stop}; {len(done.x)} of {total} points written to {path} (switches not located)",
+        f"{stop}; {len(done.x)} of {total} points written to {path} (switches not located){again}",
     )
 
 

@@ -252,6 +252,7 @@ def mode_sequence(
     options: ScanOptions = ScanOptions(),
     points: int = 9,
     progress=None,
+    resume: Curve | None = None,
 ) -> ModeSequence:
     """The first pattern as the design variable runs over [lo, hi], switches located.
 
@@ -273,6 +274,9 @@ def mode_sequence(
         between them are located; an interval narrower than the spacing can be missed.
         Next to a grid point whose scan fails, the end of the valid range is located (an
         "end" switch to or from no mode, mode (-1, -1)).
+    resume : Curve, optional
+        The ``partial`` curve of an interrupted sequence of the same tube and grid: its
+        finished scans are taken as computed (:func:`~electrogrowth.critical_curve`).
 
     Returns
     -------
@@ -290,8 +294,9 @@ def mode_sequence(
     points = check_points(points)
     xs = np.linspace(lo, hi, points)
     curve = critical_curve(
-        tube, solve_for, key, xs, side=side, options=options, progress=progress, edges=True
-    )
+        tube, solve_for, key, xs, side=side, options=options, progress=progress, edges=True,
+        resume=resume,
+    )  # fmt: skip
     return from_curve(curve, key, lo, hi)
 
 
