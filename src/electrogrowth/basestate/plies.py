@@ -291,6 +291,17 @@ class Wall:
                 return float(I1[over][0])
         return None
 
+    def peak_invariant(self, r_i: float, lz: float) -> float:
+        """The largest I1 (uncharged, at r_i and lambda_z) over the nodes of the layers whose
+        energy can end (a Gent layer's lock I1 = 3 + jm); -inf where none can. Its minimum
+        over r_i is the least-stretched state, where a lock's window of finite states lies."""
+        peak = -math.inf
+        for ply, (R, _, g, _, G) in zip(self.plies, self.grids):
+            if numeric_energy(ply.layer.material) is not None:
+                _, _, (l1, l2, l3), _ = ply.kinematics(R, g, G, np.array([r_i]), lz, 0.0)
+                peak = max(peak, float((l1**2 + l2**2 + l3**2).max()))
+        return peak
+
     def integrals(self, r_i, lz, c, compiled: bool = False):
         """(T, scale, V, Nint): T = int (tau_2 - tau_1) dr / r, scale = int (|tau_1| + |tau_2|)
         dr / r, V = int E_r dr, Nint = pi int (2 tau_3 - tau_1 - tau_2) r dr; NaN where an
