@@ -10,7 +10,7 @@ import dataclasses
 
 import pytest
 
-from electrogrowth import Layer, Tube, critical_value, gent, solve_base_state
+from electrogrowth import Layer, Tube, critical_value, gent, mooney_rivlin, solve_base_state
 from electrogrowth.errors import BaseStateError, ConvergenceError, python_remedy
 
 
@@ -103,6 +103,41 @@ def test_cold_search_next_to_a_lock_finds_the_state(g_theta, r_i):
     # homogeneous guess (12 nodes), whose T errs by tenths next to the lock and put the
     # root past the Gent layer's edge; the search now refines the rule before giving up
     assert solve_base_state(stiff_film_in_gent(g_theta)).r_i == pytest.approx(r_i, rel=1e-11)
+
+
+def stretched_gent_pair(stretch: float) -> Tube:
+    """Check round 15 (D1): a Mooney-Rivlin core inside two Gent (jm 3) layers, stretched
+    towards the outer layer's point lock lambda_z^2 + 2 / lambda_z = 6 (at 2.2618102)."""
+    layers = (
+        Layer(1.495939775554611, mooney_rivlin(0.8), shear_modulus=48.89900100283162),
+        Layer(1.7057300432216378, gent(3.0), shear_modulus=3.9436486226610885, growth=1.034),
+        Layer(2.2701926109254207, gent(3.0), shear_modulus=0.33345072666259745),
+    )
+    return Tube(layers, stretch=stretch)
+
+
+@pytest.mark.parametrize(
+    ("stretch", "r_i"),
+    [
+        # independent: the radial balance int (s_tt - s_rr) / r dr = 0 of the three layers
+        # in mpmath (30 digits), root in r_i by bisection (check15 probe/indep5.py); the
+        # continued states (bifurcation.along.TubeAt) agree to 1e-14
+        (2.26175, 0.6432968996301939),
+        (2.2618, 0.6410425573468315),
+    ],
+)
+def test_cold_search_finds_a_window_narrower_than_its_steps(stretch, r_i):
+    # the finite states form a window in r_i around the least-stretched state, 7 % wide at
+    # 2.26175 and 1.2 % at 2.2618, between the guess (0.6706, past the lock) and its
+    # neighbours 1.1 times away: the cold search met none and raised "no unloaded state
+    # ... found before a layer's lock"; it now starts from the least-stretched state
+    assert solve_base_state(stretched_gent_pair(stretch)).r_i == pytest.approx(r_i, rel=1e-12)
+
+
+def test_no_window_past_the_point_lock():
+    # 2.2619^2 + 2 / 2.2619 - 3 = 3.0004 > jm: no r_i gives the outer layer a finite energy
+    with pytest.raises(BaseStateError, match="no unloaded state"):
+        solve_base_state(stretched_gent_pair(2.2619))
 
 
 def test_no_unloaded_state_does_not_blame_the_voltage():

@@ -12,7 +12,7 @@ agrees with the package to 1e-12 where the package solves (g = 1.34: r_i = 1.511
 
 import pytest
 
-from electrogrowth import Layer, Material, Tube, gent, solve_base_state
+from electrogrowth import Layer, Material, Tube, gent, mooney_rivlin, solve_base_state
 
 
 def test_benign_gent_state_is_solved():
@@ -66,3 +66,37 @@ def test_only_differences_that_stall_at_the_rounding_are_accepted():
     assert _stall(orders, [1e-4, 1.6e-13, 4.3e-14, 6.6e-14, 4.3e-14]) == 12
     assert _stall(orders, [1e-4, 2e-13, 1e-15, 1e-17, 0.0]) == -1  # still falling: no floor
     assert _stall(orders, [1e-6, 9e-7, 8e-7, 7e-7, 6e-7]) == -1  # stalled above rounding
+
+
+def grown_gent_skin(g):
+    """Check round 15 (D2): a Mooney-Rivlin core grown 1.233 in a Gent (jm 2) layer grown g,
+    free ends (axial force 0), inner pressure 0.156."""
+    layers = (
+        Layer(
+            1.392214803453142, mooney_rivlin(0.8), shear_modulus=1.0223099836719607, growth=1.233
+        ),
+        Layer(1.7047606779761022, gent(2.0), shear_modulus=12.769242336373196, growth=g),
+    )
+    return Tube(layers, axial_force=0.0, inner_pressure=0.156)
+
+
+@pytest.mark.parametrize(
+    ("g", "r_i", "stretch"),
+    [
+        # independent: the radial balance and zero axial end force of the two layers in
+        # mpmath, solved for (r_i, lambda_z) (check15 probe/indep223.py)
+        (5.2, 7.147727613487496, 5.081131069151281),
+        (5.4, 7.420457083325349, 5.274240101781634),
+    ],
+)
+def test_an_unresolved_guess_far_from_the_state_is_left_out(g, r_i, stretch):
+    """The homogeneous guess (r_i 3.76 at g = 5.2) puts the skin at I1 - 3 = 1.979 of
+    jm 2, where successive Gauss rules reach their rounding only at 128-256 nodes:
+    choose_nodes raised "quadrature not converged to rtol = 1e-12 with 256 nodes" for a
+    state twice as wide that 64 nodes resolve (the continued solve from g = 5 did)."""
+    state = solve_base_state(grown_gent_skin(g))
+    assert (state.r_i, state.stretch) == pytest.approx((r_i, stretch), rel=1e-12)
+    assert state.quadrature_error <= 1e-12
+    near = solve_base_state(grown_gent_skin(5.0))
+    warm = solve_base_state(grown_gent_skin(g), near=near)
+    assert (state.r_i, state.stretch) == pytest.approx((warm.r_i, warm.stretch), rel=1e-13)

@@ -270,6 +270,9 @@ def _start(wall: Wall, P_i: float | None = None) -> tuple[float, float]:
             break
         xg = start * 1.1 ** (j // 2 + 1) if j % 2 else start / 1.1 ** (j // 2)
         f0, _ = f(xg)
+    if not np.isfinite(f0):  # the window of finite states narrower than those steps
+        xg = _least_stretched(wall, start, lg, 1.1**20)
+        f0, _ = f(xg)
     edge = LockedSearch(f"no {which} found before a layer's lock", wall.nodes)
     if not np.isfinite(f0):
         _not_found(wall, start, lg, which, edge)
@@ -296,6 +299,22 @@ def _start(wall: Wall, P_i: float | None = None) -> tuple[float, float]:
     lost = BaseStateError(f"no {which} found for this tube")
     lost.remedy = NO_UNLOADED
     _not_found(wall, start, lg, which, lost)
+
+
+def _least_stretched(wall: Wall, x: float, lz: float, span: float) -> float:
+    """The r_i in [x / span, x span] of the least-stretched state at lambda_z (the smallest
+    largest I1 of the layers that can lock): next to a Gent layer's lock, e.g. lambda_z within
+    1e-4 of its point lock lambda_z^2 + 2 / lambda_z = 3 + jm, the finite states form a
+    window around it a few per cent wide or less, which the guess's 1.1 steps jump over."""
+    from scipy.optimize import minimize_scalar  # 0.5 s of imports: only next to a lock
+
+    res = minimize_scalar(
+        lambda r: wall.peak_invariant(r, lz),
+        bounds=(x / span, x * span),
+        method="bounded",
+        options={"xatol": 1e-12 * x},
+    )
+    return float(res.x)
 
 
 #: what to do where no unloaded state is found (the tube's own growth and stretch: no load
