@@ -262,8 +262,8 @@ def _maximise(margins: _Margins, mode, others, u0, goal):
             w = np.clip(w, 0.0, 1.0)
             return -margins.margin(mode, others, w)[0]
 
-        res = minimize(
-            neg, u, method="Nelder-Mead",
+        res = minimize(  # bounded: a simplex past the box's side would pay for flat M
+            neg, u, method="Nelder-Mead", bounds=[(0.0, 1.0)] * 2,
             options={"xatol": XATOL, "fatol": 1e-13, "initial_simplex": _simplex(u)},
         )  # fmt: skip
         w = np.clip(res.x, 0.0, 1.0)
