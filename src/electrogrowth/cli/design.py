@@ -218,6 +218,7 @@ def run_design(args) -> int:
     _add_physical(record, args, result, {seq.solve_for: result.value, seq.key: result.x})
     if args.out is not None:
         record["files"] = [str(p) for p in _write(result, args.out)]
+        record["resumed_points"] = 0 if earlier is None else len(earlier.grid)
         resume.discard(args.out, stem)  # what an interrupted run kept
     if args.json:
         print(json.dumps(record))
