@@ -17,6 +17,13 @@ straddled the first root. Two of them:
   0.134705156 (the impedance method given the bracket (0.1, 0.15); collocation, without a
   bracket, 0.134705156 to 5e-9) and again at 0.0897146 (the outer face's own mode). The march
   raised NoBifurcationFound "no mode bifurcates for stretch between 1 and 0.05".
+* window (check round 16, D1): a neo-Hookean core (mu 0.0988) in a Mooney-Rivlin (0.333)
+  layer of mu 6.40, grown anisotropically, compressed: (1, 2) is unstable in the window
+  0.42200953 < lambda_z < 0.42632183 (the roots of an independent collocation solver at 40
+  and 56 nodes, to 1e-14; the package's own target bracketed gives both) and again from
+  0.29286. A 5 % step landed 1.3e-3 past the window (target 1.49e-5 after 2.26e-4), the
+  next, short one at 3.98e-5: not below 1/4 of both neighbours, no dip examined, and both
+  methods returned 0.2928645687, status OK.
 """
 
 import pytest
@@ -47,6 +54,24 @@ CASES = {
         (14, 1),
         0.134705156,
         1e-8,
+    ),
+    "window": (
+        Tube(
+            (
+                Layer(1.1301390736345303, shear_modulus=0.09878171425715293),
+                Layer(
+                    1.995814547016356,
+                    mooney_rivlin(0.333),
+                    6.4011527284369505,
+                    growth=(1.1628604718694893, 1.2057713714926312, 0.956039101598253),
+                ),
+            ),
+            length=0.7194435192286683,
+            stretch=1.0,
+        ),
+        (1, 2),
+        0.42632183211911,
+        1e-12,
     ),
 }
 

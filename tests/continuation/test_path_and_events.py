@@ -112,6 +112,23 @@ def test_a_dip_between_samples_is_found():
     assert dip_bracket(lambda x: f(x) + 2e-4, 1.0, 1.3) is None
 
 
+def test_a_dip_after_an_uneven_pair_of_steps_is_examined():
+    """A narrow window (roots 0.4220, 0.4263) passed by a long step that lands just beyond
+    it, then a short step: the middle sample is 0.37 of the next one, above DIP_RATIO, but
+    the secant from the next sample through it reaches zero within the long step (check
+    round 16, D1, its samples as they were); the window is then bracketed and found."""
+    f = lambda x: 0.0107 * abs(x - 0.424166) - 0.0107 * 0.002156  # noqa: E731
+    xs = [0.46849, 0.42069, 0.41837]
+    old, mid, new = map(f, xs)
+    assert min(old, mid, new) > 0 and not dipped(old, mid, new)  # the ratio alone
+    assert dipped(old, mid, new, (xs[0] - xs[1], xs[1] - xs[2]))
+    bracket = dip_bracket(f, xs[0], xs[2])
+    assert bracket is not None and brent(f, *bracket) == pytest.approx(0.426322, rel=1e-12)
+    # evenly stepped about a smooth minimum at 0.6 of its neighbours' height: no dip
+    g = lambda x: 1.5 + (x - 1.0) ** 2  # noqa: E731
+    assert not dipped(g(0.0), g(1.0), g(2.0), (1.0, 1.0))
+
+
 def test_reached_and_turned():
     assert reached(2.0, 2.0, 1) and not reached(1.9, 2.0, 1) and reached(1.9, 2.0, -1)
     assert turned(3.0, 2.9, 1) and not turned(3.0, 3.1, 1) and turned(3.0, 3.1, -1)

@@ -440,7 +440,7 @@ def _advance(watch, idx, x, g, views: Views, need=None) -> list:
             else:
                 found.append(_mode_value(modes, idx[j], root))
     mid, old = watch.g[0, idx], watch.g[1, idx]  # the two samples before x
-    dip = dipped(old, mid, g)
+    dip = dipped(old, mid, g, (watch.x[1, idx] - watch.x[0, idx], watch.x[0, idx] - x))
     dips = np.nonzero(~hit & (dip | passed))[0]
     for j in dips[np.argsort(np.minimum(mid[dips], g[dips]))][:8]:
         i = idx[j]
