@@ -94,7 +94,8 @@ def locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, unti
             return Kind.ELLIPTICITY, 0.5 * (lo + hi), None
         if s.value <= 0:
             return Kind.SURFACE, None, _bracket(xs, x, fine_of)
-        if len(hs) >= 2 and events.dipped(hs[-2], hs[-1], s.value):  # a dip between samples?
+        steps = (xs[-2] - xs[-1], xs[-1] - x) if len(hs) >= 2 else None
+        if steps and events.dipped(hs[-2], hs[-1], s.value, steps):  # a dip between samples?
             dip = events.dip_bracket(value_of, xs[-2], x)
             if dip is not None:
                 return Kind.SURFACE, None, _bracket(xs[:-1], float(dip[1]), fine_of)
