@@ -15,6 +15,7 @@ from electrogrowth.bifurcation.scan import ScanOptions
 from electrogrowth.errors import ParameterError
 from electrogrowth.interrupts import Interrupted
 from electrogrowth.outcomes import Status
+from tests.interrupting import interrupt_scan_at
 
 TUBE = Tube.uniform(1.4)
 GRID = [0.0, 0.1, 0.2, 0.3, 0.4, 0.5]
@@ -24,15 +25,7 @@ OPTIONS = ScanOptions((0, 4), (1, 3))
 def _curve(monkeypatch=None, stop_at=None, **kwargs):
     """The curve of growth along the voltage; with ``stop_at``, interrupted at that scan."""
     if stop_at is not None:
-        real, calls = curves.scan_modes, []
-
-        def scan(*args, **kw):
-            calls.append(1)
-            if len(calls) == stop_at:
-                raise KeyboardInterrupt
-            return real(*args, **kw)
-
-        monkeypatch.setattr(curves, "scan_modes", scan)
+        interrupt_scan_at(monkeypatch, stop_at)
     return curves.critical_curve(TUBE, "growth", "voltage", GRID, options=OPTIONS, **kwargs)
 
 

@@ -6,27 +6,14 @@ import json
 
 import pytest
 
-from electrogrowth.bifurcation import curves
 from electrogrowth.cli import app as cli
+from tests.interrupting import interrupt_scan_at
 
 CURVE = (
     "curve --solve-for growth --along voltage --from 0 --to 0.5 --points 6 --outer-radius 1.4"
     " --m-max 4 --n-max 3 --json"
 ).split()
 STEM = "curve_growth_vs_voltage"
-
-
-def _interrupted_at(monkeypatch, scan_number):
-    """The next command's scan number ``scan_number`` raises a KeyboardInterrupt."""
-    real, calls = curves.scan_modes, []
-
-    def scan(*args, **kwargs):
-        calls.append(1)
-        if len(calls) == scan_number:
-            raise KeyboardInterrupt
-        return real(*args, **kwargs)
-
-    monkeypatch.setattr(curves, "scan_modes", scan)
 
 
 def _run(args, capsys):
@@ -45,7 +32,7 @@ def whole(tmp_path_factory):
 
 def test_an_interrupted_curve_is_resumed(monkeypatch, tmp_path, capsys, whole):
     args = [*CURVE, "--out", str(tmp_path)]
-    _interrupted_at(monkeypatch, 2)  # the grid's last point: its first five are finished
+    interrupt_scan_at(monkeypatch, 2)  # the grid's last point: its first five are finished
     rc, _, err = _run(args, capsys)
     assert rc == 130 and "run the same command again to compute only the rest" in err
     assert (tmp_path / f"{STEM}.partial.json").is_file()
@@ -58,7 +45,7 @@ def test_an_interrupted_curve_is_resumed(monkeypatch, tmp_path, capsys, whole):
 
 def test_the_text_output_says_what_was_taken_back(monkeypatch, tmp_path, capsys):
     args = [a for a in CURVE if a != "--json"] + ["--out", str(tmp_path)]
-    _interrupted_at(monkeypatch, 2)
+    interrupt_scan_at(monkeypatch, 2)
     assert cli.main(args) == 130
     monkeypatch.undo()
     capsys.readouterr()
@@ -88,7 +75,7 @@ def test_a_kept_file_that_is_no_such_file_is_named_and_ignored(tmp_path, capsys,
 
 
 def test_points_of_another_run_are_not_taken_back(monkeypatch, tmp_path, capsys):
-    _interrupted_at(monkeypatch, 2)
+    interrupt_scan_at(monkeypatch, 2)
     assert cli.main([*CURVE, "--out", str(tmp_path)]) == 130
     monkeypatch.undo()
     capsys.readouterr()
@@ -99,7 +86,7 @@ def test_points_of_another_run_are_not_taken_back(monkeypatch, tmp_path, capsys)
 
 
 def test_a_points_record_that_is_tampered_with_is_refused(monkeypatch, tmp_path, capsys):
-    _interrupted_at(monkeypatch, 2)
+    interrupt_scan_at(monkeypatch, 2)
     assert cli.main([*CURVE, "--out", str(tmp_path)]) == 130
     monkeypatch.undo()
     capsys.readouterr()
@@ -122,7 +109,7 @@ def test_an_interrupted_design_is_resumed(monkeypatch, tmp_path, capsys):
     args = [*DESIGN, "--out", str(tmp_path)]
     rc, whole, _ = _run(args, capsys)
     assert rc == 0
-    _interrupted_at(monkeypatch, 2)
+    interrupt_scan_at(monkeypatch, 2)
     assert cli.main(args) == 130
     assert "run the same command again" in capsys.readouterr().err
     monkeypatch.undo()
