@@ -47,6 +47,15 @@ def test_a_resumed_curve_is_the_uninterrupted_one(monkeypatch, follow):
     assert resumed.switches == whole.switches
 
 
+def test_every_grid_point_carries_its_error_estimate():
+    """Followed points too (check round 16c: NaN where the point was followed, not
+    scanned): the estimate of the critical value solved there."""
+    grid = _curve().grid
+    assert len(grid) == len(GRID)
+    for pt in grid:
+        assert 0 <= pt.error_estimate <= 1e-10 * abs(pt.value), pt
+
+
 def test_a_curve_of_another_tube_is_not_resumed():
     partial = curves.grid_curve("voltage", "growth", None, Tube.uniform(1.5), [])
     with pytest.raises(ParameterError, match="resume is a curve of another tube"):

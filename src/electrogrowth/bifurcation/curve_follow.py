@@ -98,7 +98,8 @@ class _Follower:
             limit = self.short_wave_limit(at, self.solve_for, side=self.side)
             if limit.kind != Kind.SURFACE or not self._all_stable(at, None, limit.value):
                 return None
-            return CurvePoint(x, limit.value, NO_MODE, Kind.SURFACE, "", (), True, limit.value)
+            return CurvePoint(x, limit.value, NO_MODE, Kind.SURFACE, "", (), True, limit.value,
+                              float(limit.error_estimate))  # fmt: skip
         modes = [self.scan.mode] + [(m, n) for m, n, _ in self.scan.runners_up]
         guesses = [(mode, self._predict(mode, x)) for mode in modes]
         guesses = [(mode, b) for mode, b in guesses if b is not None]
@@ -113,7 +114,9 @@ class _Follower:
             return None
         if self.options.surface and past_surface(c.params):
             return None
-        return CurvePoint(x, c.value, best, Kind.BIFURCATION, _accuracy(c))
+        return CurvePoint(  # no runners-up: only the mode predicted first was solved
+            x, c.value, best, Kind.BIFURCATION, _accuracy(c), error_estimate=c.error_estimate
+        )
 
     def _all_stable(self, at: Tube, best, value: float) -> bool:
         """Every mode of the scan's grid but ``best`` (None: all) is still on its stable

@@ -55,7 +55,8 @@ class CurvePoint(Outcome):
     value NaN and ``status`` FAILED, an electrogrowth error, or ERROR, a bug, with
     ``message``, ``remedy`` and, for a bug, its ``traceback``), status OK or INACCURATE
     (the critical value's error estimate exceeds the accuracy asked even after
-    refinement, :func:`bifurcation.critical_value`), the runners-up (m, n, value), whether
+    refinement, :func:`bifurcation.critical_value`), the runners-up (m, n, value: a scanned
+    point's; a followed point solved its critical mode alone and has none), whether
     the critical point is the short-wave limit (``surface``), and that limit where the
     scan computed it (else NaN). A status given as text ("", "inaccurate") is read as the
     Status. The curve's table writes a failure's status in its kind column (:func:`_row`).
