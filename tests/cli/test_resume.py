@@ -105,6 +105,7 @@ DESIGN = (
 ).split()
 
 
+@pytest.mark.slow  # three designs: ~18 s (the resume itself is the curve's, tested above)
 def test_an_interrupted_design_is_resumed(monkeypatch, tmp_path, capsys):
     args = [*DESIGN, "--out", str(tmp_path)]
     rc, whole, _ = _run(args, capsys)
