@@ -5,8 +5,9 @@ Every march signs its event functions so that the start of the path is positive 
 mode's target times its sign on the unloaded tube, the half-space minimum): an event
 happens where a function reaches zero. Between two samples a function can also dip below
 zero and come back (a window of instability): a sample lower than DIP_RATIO of both its
-neighbours is examined by a bounded minimisation. The tolerances are named here, each
-with its caller, so a march's accuracy is read off one table.
+neighbours, or low enough that a neighbour's secant through it reaches zero within the
+other step (:func:`dipped`), is examined by a bounded minimisation. The tolerances are
+named here, each with its caller, so a march's accuracy is read off one table.
 """
 
 from __future__ import annotations
@@ -39,7 +40,7 @@ def dipped(old, mid, new, steps=None):
     ``new``? Where ``mid`` fell below DIP_RATIO of both; and, given ``steps`` (the
     distances old - mid and mid - new), where it is the lowest of the three and the secant
     from either neighbour through it, continued across it, reaches zero within the other
-    step: with its slope no steeper than the one sampled the target can reach zero there.
+    step: there the target can reach zero at a slope no steeper than the one sampled.
     The ratio alone misses an uneven pair of steps: a 5 % step that lands just past a
     narrow window, then a short one (the 4e-3 wide window of a bilayer's (1, 2), check
     round 16: samples 2.3e-4, 1.5e-5 past the window, 4.0e-5 a short step on, 0.37 > 1/4)."""
