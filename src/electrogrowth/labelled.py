@@ -330,6 +330,11 @@ def _ends(curve) -> dict:
             np.array([e.value_after for e in ends], float),
             {**_critical_attrs(curve.solve_for), "long_name": "critical value just after"},
         ),
+        "end_x_error": (
+            "end",
+            np.array([e.x_error for e in ends], float),
+            {**_attrs(curve.along), "long_name": f"error estimate of {curve.along} there"},
+        ),
         "end_mode_before": (
             ("end", "mode"),
             np.array([e.mode_before for e in ends], int).reshape(-1, 2),
@@ -399,6 +404,19 @@ def curve_dataset(curve):
                 "switch",
                 np.array([s.value for s in curve.switches], float),
                 {**_critical_attrs(curve.solve_for), "long_name": "critical value at the switch"},
+            ),
+            "switch_x_error": (
+                "switch",
+                np.array([s.x_error for s in curve.switches], float),
+                {**_attrs(curve.along), "long_name": f"error estimate of {curve.along} there"},
+            ),
+            "switch_value_error": (
+                "switch",
+                np.array([s.value_error for s in curve.switches], float),
+                {
+                    **_critical_attrs(curve.solve_for),
+                    "long_name": "error estimate of the critical value at the switch",
+                },
             ),
             "switch_mode_before": (
                 ("switch", "mode"),

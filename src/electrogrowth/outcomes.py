@@ -56,6 +56,11 @@ BUG_REMEDY = Remedy(
 )
 
 
+def json_number(v: float | None) -> float | None:
+    """A number for JSON, which has neither NaN nor infinities: those (and None) as None."""
+    return v if v is not None and math.isfinite(v) else None
+
+
 def remedy(exc: BaseException) -> str:
     """The one-line remedy for a failure (a :class:`~electrogrowth.errors.Remedy`, both
     forms): the exception's own, or the bug report's."""
@@ -139,7 +144,7 @@ class Outcome:
             if key == "remedy":
                 v = v.python if isinstance(v, Remedy) else str(v)
             elif isinstance(v, float):
-                v = v if math.isfinite(v) else None
+                v = json_number(v)
             elif isinstance(v, str):
                 v = str(v)
             out[key] = v

@@ -12,6 +12,7 @@ from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.bifurcation.curves import Switch, critical_curve
 from electrogrowth.bifurcation.scan import ScanOptions, scan_modes
 from electrogrowth.cli.curve import configure_curve, run_curve
+from electrogrowth.continuation.events import MODE_EDGE, SWITCH
 from electrogrowth.errors import NoBifurcationFound, ParameterError
 from electrogrowth.figures.plots import plot_curve
 from electrogrowth.model.layers import Tube
@@ -288,6 +289,10 @@ def test_continuation_equals_full_scans(params, solve_for, along, grid, side, mo
         assert len(scans) < len(grid)
 
 
+#: the fake single-mode values' error estimate
+ERROR = 1e-12
+
+
 def _fake_modes(monkeypatch, values, threshold=None, inaccurate=()):
     """Replace the scans and single-mode solves by closed forms: ``values[mode](x)`` is the
     first critical value of a mode at voltage x (NaN: the mode is not reached before the
@@ -304,8 +309,10 @@ def _fake_modes(monkeypatch, values, threshold=None, inaccurate=()):
         if v is None:
             raise NoBifurcationFound(f"({m}, {n}) has no root")
         if math.isnan(v):
-            return SimpleNamespace(value=threshold(at.voltage), kind="threshold")
-        return SimpleNamespace(value=v, kind="bifurcation")
+            return SimpleNamespace(
+                value=threshold(at.voltage), kind="threshold", error_estimate=ERROR
+            )
+        return SimpleNamespace(value=v, kind="bifurcation", error_estimate=ERROR)
 
     def scan(at, solve_for, side=None, options=None):
         found = [
@@ -341,6 +348,27 @@ def test_a_crossing_is_a_switch(monkeypatch):
     assert curve.ends == () and sw.kind == "switch"
     assert sw.x == pytest.approx(0.5, abs=1e-12) and sw.value == pytest.approx(2.0, abs=1e-12)
     assert list(curve.kind) == ["bifurcation", "switch", "switch", "bifurcation"]
+    # d = x - 0.5 (slope 1), each value +- ERROR: x +- 2 ERROR beyond Brent's tolerance,
+    # the value +- ERROR + 2 (the steeper slope) x_error
+    tol = SWITCH.at(0.5)
+    assert sw.x_error == pytest.approx(tol + 2 * ERROR, rel=1e-3)
+    assert sw.value_error == pytest.approx(ERROR + 2 * sw.x_error, rel=1e-3)
+
+
+def test_the_error_of_a_switch_between_nearly_parallel_modes(monkeypatch):
+    """Neighbouring folds: values nearly parallel (here d = 1e-4 (x - 0.5)), so their
+    errors move the tie 1e4 times as far (check round 16c: 1e-12 in the values moved a
+    fold switch 1e-8); the switch says so. The one-sided secant slopes are exact here."""
+    _fake_modes(
+        monkeypatch, {(0, 1): lambda x: 1 + 2 * x, (1, 1): lambda x: 1 + 0.5e-4 + (2 - 1e-4) * x}
+    )
+    (sw,) = _curve([0.1, 0.9]).switches
+    assert sw.x == pytest.approx(0.5, abs=1e-7)
+    assert sw.x_error == pytest.approx(SWITCH.at(0.5) + 2 * ERROR / 1e-4, rel=1e-3)
+    assert abs(sw.x - 0.5) <= sw.x_error
+    assert sw.value_error == pytest.approx(ERROR + 2 * sw.x_error, rel=1e-3)
+    record = _curve([0.1, 0.9]).as_dict()["switches"][0]
+    assert record["x_error"] == sw.x_error and record["value_error"] == sw.value_error
 
 
 def test_a_crossing_is_a_switch_when_a_mode_has_no_root_at_the_far_grid_point(monkeypatch):
@@ -378,10 +406,16 @@ def test_a_branch_that_ends_at_a_jump_is_an_end(monkeypatch, tmp_path):
         pytest.approx(2.5, abs=1e-9),
     )
     assert list(curve.kind) == ["bifurcation", "end", "end", "bifurcation"]
-    rec = json.loads(json.dumps(curve.as_dict()))
+    # a jump is located to Brent's tolerance and the one-sided values' offset, whatever
+    # the values' errors; its values are as good as their estimates
+    assert abs(end.x - 0.5) <= end.x_error <= 5 * SWITCH.at(0.5)
+    assert end.value_error == ERROR
+    rec = json.loads(json.dumps(curve.as_dict(), allow_nan=False))
     assert rec["switches"] == [] and rec["ends"][0]["mode_before"] == [0, 1]
+    assert rec["ends"][0]["x_error"] == end.x_error
     ds = curve.to_xarray()
     assert ds.sizes["end"] == 1 and ds.sizes["switch"] == 0
+    assert float(ds["end_x_error"][0]) == end.x_error
     assert ds["end_mode_after"].values.tolist() == [[1, 1]]
     assert float(ds["end_value_after"][0]) == pytest.approx(2.5, abs=1e-9)
     with curve.to_csv(tmp_path / "c.csv").open() as fh:
@@ -410,6 +444,8 @@ def test_a_branch_that_meets_the_threshold_ends(monkeypatch):
     (end,) = curve.ends
     assert end.mode_after == (-1, -1) and end.x == pytest.approx(0.5, abs=1e-9)
     assert list(curve.kind) == ["bifurcation", "end", "end", "threshold"]
+    # the bisection's last bracket (MODE_EDGE) holds the end
+    assert abs(end.x - 0.5) <= end.x_error <= MODE_EDGE.at(0.5)
     from electrogrowth.cli.curve import summary
 
     assert "then the threshold (axisymmetric state lost)" in "\n".join(summary(curve))

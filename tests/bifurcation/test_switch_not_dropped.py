@@ -20,7 +20,7 @@ X_SWITCH = 0.3
 class _Single:
     """Single-mode critical values: A always first (no sign change of d)."""
 
-    value, kind = 0.0, Kind.BIFURCATION
+    value, kind, error_estimate = 0.0, Kind.BIFURCATION, 0.0
 
 
 def _solve(params, m, n, solve_for, side=None):
@@ -51,6 +51,8 @@ def test_switch_located_by_scans_when_the_halvings_run_out():
     s = switches[0]
     assert (s.mode_before, s.mode_after) == (A, B)
     assert math.isclose(s.x, X_SWITCH, abs_tol=1e-7)
+    # its error estimate is half the bisection's last bracket, and covers the error
+    assert abs(s.x - X_SWITCH) <= s.x_error <= 1e-7
 
 
 def test_a_third_mode_out_of_halvings_is_an_error_not_a_gap():

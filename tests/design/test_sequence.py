@@ -83,6 +83,27 @@ def test_switch_agrees_with_collocation_at_the_switch(sequence):
         assert below * above < 0, mode
 
 
+def test_the_switch_error_estimate_covers_its_error(sequence):
+    """The tie of the two modes' values solved at rtol 1e-13 (their own Brent, not the
+    locator's) is within the switch's x_error of it; the estimate, from the values' own
+    (1e-11) over the slope of their difference, is not vacuous either."""
+    from scipy.optimize import brentq
+
+    (s,) = sequence.switches
+
+    def d(x):
+        at = TUBE.at("outer_radius", x)
+        a, b = (critical_value(at, *mode, "stretch", side="compression", rtol=1e-13).value
+                for mode in ((1, 1), (0, 1)))  # fmt: skip
+        return a - b
+
+    tie = brentq(d, *VARY[1:], xtol=1e-15, rtol=1e-15)
+    assert abs(s.x - tie) <= s.x_error < 1e-9
+    at = TUBE.at("outer_radius", tie)
+    value = critical_value(at, 1, 1, "stretch", side="compression", rtol=1e-13).value
+    assert abs(s.value - value) <= s.value_error < 1e-9
+
+
 @pytest.mark.slow
 def test_switch_agrees_with_collocation_solves(sequence):
     (s,) = sequence.switches
@@ -254,9 +275,11 @@ def test_sequence_records(sequence):
     record = json.loads(json.dumps(sequence.as_dict()))
     assert [iv["mode"] for iv in record["intervals"]] == [[1, 1], [0, 1]]
     assert record["switches"][0]["x"] == sequence.switches[0].x
+    assert record["switches"][0]["x_error"] == sequence.switches[0].x_error
     pytest.importorskip("xarray")
     ds = sequence.to_xarray()
     assert ds["switch_x"].values.tolist() == [sequence.switches[0].x]
+    assert ds["switch_x_error"].values.tolist() == [sequence.switches[0].x_error]
     assert ds["mode"].values.tolist() == [[1, 1], [0, 1]]
     assert ds["hi"].values[0] == ds["lo"].values[1] == sequence.switches[0].x
 

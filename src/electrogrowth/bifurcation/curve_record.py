@@ -15,7 +15,7 @@ from ..atomic import replaced
 from ..errors import NoBifurcationFound, UnstableAtStart
 from ..labelled import curve_dataset
 from ..model.layers import Tube
-from ..outcomes import NO_MODE, Kind, Outcome, Status, remedy, status_of, traceback_of
+from ..outcomes import NO_MODE, Kind, Outcome, Status, json_number, remedy, status_of, traceback_of
 from ..summary import curve_html
 from .curve_crease import CreaseAlong
 
@@ -27,7 +27,9 @@ class Switch(NamedTuple):
     ``value_after``. ``kind`` "end": the branch before ends there without a crossing, either
     at a jump (a mode's first critical value appears or vanishes discontinuously, e.g. a
     window of instability closes; ``value`` and ``value_after`` are the one-sided limits of
-    the critical value) or where one side does not wrinkle (the threshold comes first)."""
+    the critical value) or where one side does not wrinkle (the threshold comes first).
+    ``x_error`` and ``value_error``: estimates of the absolute errors of ``x`` and of the
+    values (bifurcation/curve_switches.py; NaN: not known)."""
 
     x: float
     value: float
@@ -35,6 +37,8 @@ class Switch(NamedTuple):
     mode_after: tuple[int, int]
     value_after: float
     kind: str = Kind.SWITCH
+    x_error: float = math.nan
+    value_error: float = math.nan
 
 
 def _change_kind(a: CurvePoint, b: CurvePoint, v_before: float, v_after: float) -> Kind:
@@ -394,11 +398,13 @@ def _crease_record(crease) -> dict:
 def _change_record(s: Switch) -> dict:
     return {
         "x": s.x,
-        "value": s.value,
+        "value": json_number(s.value),  # NaN on an end's failed side
         "mode_before": list(s.mode_before),
         "mode_after": list(s.mode_after),
-        "value_after": s.value_after,
+        "value_after": json_number(s.value_after),
         "kind": str(s.kind),
+        "x_error": json_number(s.x_error),
+        "value_error": json_number(s.value_error),
     }
 
 

@@ -12,6 +12,13 @@ of single-mode solves: two modes that tie at a grid point (TIE) switch there. A 
 no root before the end of the march is read as coming after all (+-inf in d). If a
 single-mode solve fails, the switch is bisected with scans, to a relative 1e-7 only.
 
+Each change carries error estimates (``Switch.x_error``, ``value_error``): at a crossing,
+Brent's tolerance plus (e_A + e_B) / |d'| (the two values' own estimates move the root of d
+that much; between nearly parallel neighbouring folds, far more than the tolerance: check
+round 16c), d' the secant of the values already solved nearest to x on either side above
+that noise; the value's, the larger estimate plus the values' slope times the x error. A
+bisection's change: its last bracket, and the value's own estimate.
+
 Between a grid point whose scan failed (the tube already unstable at the control's start,
 no base state, no mode before the control's end, ...) and one whose scan succeeded, on
 request (``critical_curve(..., edges=True)``, the design's mode sequence): the end of the
@@ -28,6 +35,7 @@ taken for one, the window missed).
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 from ..continuation.events import MODE_EDGE, SWITCH, bisect, brent
 from ..errors import ConvergenceError, ElectrogrowthError, NoBifurcationFound
@@ -50,6 +58,20 @@ NO_VALUE = math.nan
 #: tie there: the switch is the grid point (each is converged to ~10 rtol = 1e-11; in probe
 #: 9b's D1 they were 5e-16 apart, the scan's runner-up 5e-12 off)
 TIE = 1e-9
+#: a secant of d for the x error spans values whose |d| is this many times their noise
+#: (e_A + e_B): its slope is then good to ~25 %, as an error estimate needs
+ABOVE_NOISE = 8.0
+
+
+class Located(NamedTuple):
+    """A change located between two grid points: at ``x`` (+- ``x_error``), the critical
+    value just before and just after (+- ``value_error``)."""
+
+    x: float
+    before: float
+    after: float
+    x_error: float = math.nan
+    value_error: float = math.nan
 
 
 class _Locator:
@@ -60,44 +82,52 @@ class _Locator:
         self.unit = unit  # x -> CurvePoint (a scan)
         self.critical_value, self.short_wave_limit = solve, limit  # from curves.py
         self.sense = -1.0 if side == "compression" else 1.0
-        self.known: dict[tuple[tuple[int, int], float], tuple[float, str]] = {}
+        # (mode or "surface", x) -> (value, kind, error estimate): every value solved
+        self.known: dict[tuple, tuple[float, str, float]] = {}
 
     def _remember(self, pt: CurvePoint):
         if pt.kind == Kind.BIFURCATION:
-            self.known[pt.mode, pt.x] = (pt.value, Kind.BIFURCATION)
+            self.known[pt.mode, pt.x] = (pt.value, Kind.BIFURCATION, pt.error_estimate)
         for m, n, value in pt.runners_up:
-            self.known[(m, n), pt.x] = (value, Kind.BIFURCATION)
+            self.known[(m, n), pt.x] = (value, Kind.BIFURCATION, math.nan)
 
-    def mode_value(self, mode, x) -> tuple[float, str]:
-        """First critical value of ``mode`` at x, by the single-mode march (the threshold,
-        kind "threshold", if the base state is lost first: then the mode comes after all;
-        +-inf in the march's direction, kind "none", if it has no root before the end of
-        the march)."""
+    def mode_value(self, mode, x) -> tuple[float, str, float]:
+        """First critical value of ``mode`` at x, by the single-mode march, its kind and
+        error estimate (the threshold, kind "threshold", if the base state is lost first:
+        then the mode comes after all; +-inf in the march's direction, kind "none", if it
+        has no root before the end of the march)."""
         key = (mode, float(x))
         if key not in self.known:
             at = self.params.at(self.along, x)
             try:
                 c = self.critical_value(at, *mode, self.solve_for, side=self.side)
-                self.known[key] = (c.value, c.kind)
+                self.known[key] = (c.value, c.kind, c.error_estimate)
             except NoBifurcationFound:
                 # Not a failure: the mode comes after every other, which is all the sign of
                 # d (Brent's bracket) needs, as in design/margins.py. Falling back to scans
                 # here located a regular crossing to 1e-7 only, as an "end" (probe 8b, D3).
-                self.known[key] = (self.sense * math.inf, Kind.NONE)
+                self.known[key] = (self.sense * math.inf, Kind.NONE, math.nan)
         return self.known[key]
 
     def value_of(self, pt: CurvePoint, x) -> float:
         """The critical value at x of what is critical at ``pt``: its mode, or the
         short-wave limit."""
+        return self._solved(pt, x)[0]
+
+    def error_of(self, pt: CurvePoint, x) -> float:
+        """The error estimate of :meth:`value_of` (NaN: a scan's runner-up, not known)."""
+        return self._solved(pt, x)[2]
+
+    def _solved(self, pt: CurvePoint, x) -> tuple[float, str, float]:
         if pt.kind != Kind.SURFACE:
-            return self.mode_value(pt.mode, x)[0]
-        key = ("surface", float(x))
+            return self.mode_value(pt.mode, x)
+        key = _key(pt, x)
         if key not in self.known:
             limit = self.short_wave_limit(
                 self.params.at(self.along, x), self.solve_for, side=self.side
             )
-            self.known[key] = (limit.value, limit.kind)
-        return self.known[key][0]
+            self.known[key] = (limit.value, limit.kind, limit.error_estimate)
+        return self.known[key]
 
     def between(self, a: CurvePoint, b: CurvePoint, depth: int):
         """Rows and switches strictly between grid points a and b, in grid order."""
@@ -119,17 +149,16 @@ class _Locator:
                 return self._split(a, found, b, depth)
         if found is None:  # d keeps its sign: a third mode in between; look in the middle
             return self._split(a, self.unit(0.5 * (a.x + b.x)), b, depth)
-        x, v_before, v_after = found
         if depth > 0:
-            check = self.unit(x)
-            first = min(v_before, v_after, key=lambda v: self.sense * v)
+            check = self.unit(found.x)
+            first = min(found.before, found.after, key=lambda v: self.sense * v)
             if (
                 not _failed(check)
                 and check.mode not in (a.mode, b.mode)
                 and self.sense * (check.value - first) < -1e-9 * max(1.0, abs(first))
             ):
                 return self._split(a, check, b, depth)
-        return _switch_at(a, b, x, v_before, v_after)
+        return _switch_at(a, b, found)
 
     def edge(self, a: CurvePoint, b: CurvePoint, depth: int):
         """Rows and changes strictly between neighbours a and b of which one failed and the
@@ -162,12 +191,13 @@ class _Locator:
         failed = sorted((p for p in scanned.values() if _failed(p)), key=lambda p: sense * p.x)
         more_rows, more_switches = self._chain(_kind_changes(failed), depth)
         inner = [_row(p) for p in (last_failed, end) if p is not bad and p is not good]
+        errors = (abs(x_bad - x_good), end.error_estimate)  # the end lies in the last bracket
         if good is b:  # failed before, valid after: the valid range starts at x_good
             rows = more_rows + inner + rows
-            change = Switch(x_good, NO_VALUE, NO_MODE, end.mode, end.value, Kind.END)
+            change = Switch(x_good, NO_VALUE, NO_MODE, end.mode, end.value, Kind.END, *errors)
         else:
             rows = rows + inner[::-1] + more_rows
-            change = Switch(x_good, end.value, end.mode, NO_MODE, NO_VALUE, Kind.END)
+            change = Switch(x_good, end.value, end.mode, NO_MODE, NO_VALUE, Kind.END, *errors)
         changes = switches + more_switches + [change]
         return rows, sorted(changes, key=lambda s: sense * s.x)
 
@@ -220,11 +250,11 @@ class _Locator:
             rows, switches = rows + more_rows, switches + more_switches
         return rows, switches
 
-    def _crossing(self, a, b):
-        """(x, value before, value after) where d = s (v_A - v_B) changes sign (Brent), or
-        None if it does not. At a jump (a mode's first root appears or vanishes) the two
-        values differ: they are taken just before and just after x. An end where the two
-        single-mode values tie (TIE) is itself the switch."""
+    def _crossing(self, a, b) -> Located | None:
+        """Where d = s (v_A - v_B) changes sign (Brent), or None if it does not. At a jump
+        (a mode's first root appears or vanishes) the two values differ: they are taken
+        just before and just after x, and x is as good as Brent's tolerance. An end where
+        the two single-mode values tie (TIE) is itself the switch."""
 
         def d(x):
             return self.sense * (self.value_of(a, x) - self.value_of(b, x))
@@ -244,8 +274,54 @@ class _Locator:
         va, vb = self.value_of(a, x), self.value_of(b, x)
         if abs(va - vb) > 1e-9 * max(1.0, abs(va)):  # a jump: one-sided values
             step = math.copysign(4 * tol, b.x - a.x)
-            va, vb = self.value_of(a, x - step), self.value_of(b, x + step)
-        return x, va, vb
+            before, after = x - step, x + step
+            va, vb = self.value_of(a, before), self.value_of(b, after)
+            error = max(self.error_of(a, before), self.error_of(b, after))
+            return Located(x, va, vb, SWITCH.at(x) + abs(step), error)
+        return self._crossed(a, b, x, d, SWITCH.at(x))
+
+    def _crossed(self, a, b, x: float, d, tol: float) -> Located:
+        """The crossing of a's and b's values at x (a root of d to ``tol``), with its errors
+        (the module docstring): the values' estimates e_A + e_B and the residual |d(x)|
+        over the slope of d, its secant through the values solved nearest to x on either
+        side (x itself where one side has none) whose |d| is above ABOVE_NOISE times that
+        noise (else the farthest: a secant in the noise makes the x error as large as the
+        interval, as it is). No value is solved for it but a scan's runner-up at x, which
+        has no estimate (Brent's root at a grid point: a tie there)."""
+        for pt in (a, b):
+            if math.isnan(self.error_of(pt, x)) and pt.kind == Kind.BIFURCATION:
+                self.known.pop(_key(pt, x))
+        va, vb = self.value_of(a, x), self.value_of(b, x)
+        ea, eb = self.error_of(a, x), self.error_of(b, x)
+        noise = ea + eb
+        solved = sorted(
+            xi for xi in {xi for _, xi in self.known} if xi != x and self._both(a, b, xi)
+        )
+        left = [xi for xi in solved if xi < x][::-1]  # nearest first
+        right = [xi for xi in solved if xi > x]
+
+        def secant_end(side: list[float]) -> float:
+            above = [xi for xi in side if abs(d(xi)) > ABOVE_NOISE * noise]
+            return above[0] if above else side[-1]
+
+        p = secant_end(left) if left else x
+        q = secant_end(right) if right else x
+        if p == q:  # nothing else solved: no slope, no estimate
+            return Located(x, va, vb)
+        slope_d = abs(d(q) - d(p)) / (q - p)
+        slope_v = max(abs(self.value_of(o, q) - self.value_of(o, p)) for o in (a, b)) / (q - p)
+        residual = abs(va - vb)
+        x_error = tol + ((noise + residual) / slope_d if slope_d > 0 else math.inf)
+        return Located(x, va, vb, x_error, max(ea, eb) + slope_v * x_error)
+
+    def _both(self, a, b, x) -> bool:
+        """Both a's and b's values at x are solved and are critical values (finite, not the
+        threshold or a mode with no root, which say only which comes first)."""
+        pair = [self.known.get(_key(o, x)) for o in (a, b)]
+        return all(
+            v is not None and math.isfinite(v[0]) and v[1] not in (Kind.THRESHOLD, Kind.NONE)
+            for v in pair
+        )
 
     def _forget_scans(self, a, b):
         """Drop the scans' values of the two modes at the two ends, so that they are solved
@@ -255,14 +331,14 @@ class _Locator:
                 for end in (a.x, b.x):
                     self.known.pop((pt.mode, float(end)), None)
 
-    def _tie_at_end(self, a, b, d):
-        """(x, v, v) at the end x of [a, b] where d (single-mode values) is zero or of the
-        wrong sign by no more than TIE relative: the two modes tie there, a switch at the
-        grid point itself; None otherwise."""
+    def _tie_at_end(self, a, b, d) -> Located | None:
+        """The crossing at the end x of [a, b] where d (single-mode values) is zero or of
+        the wrong sign by no more than TIE relative: the two modes tie there, a switch at
+        the grid point itself; None otherwise."""
         for end, wrong in ((a.x, d(a.x) >= 0), (b.x, d(b.x) <= 0)):
             va, vb = self.value_of(a, end), self.value_of(b, end)
             if wrong and abs(va - vb) <= TIE * max(1.0, abs(va)):
-                return end, va, vb
+                return self._crossed(a, b, end, d, 0.0)
         return None
 
     def _last_resort(self, a, b):
@@ -276,18 +352,21 @@ class _Locator:
                 f" was not located: a third pattern is first at {found.x:.12g}, and the"
                 " interval was halved as often as allowed"
             )
-        return _switch_at(a, b, *found)
+        return _switch_at(a, b, found)
 
     def _scan_bisection(self, a, b):
         """Fallback: bisect on the mode the scans find, to a relative 1e-7 in x; returns
-        (x, value before, value after), or the scanned point where a third mode is first."""
+        the Located change (its errors: half the last bracket, and the values' estimates
+        with their difference across it), or the scanned point where a third mode is
+        first."""
         lo, hi = a, b
         while abs(hi.x - lo.x) > 1e-7 * max(1.0, abs(lo.x)):
             mid = self.unit(0.5 * (lo.x + hi.x))
             if _failed(mid) or mid.mode not in (a.mode, b.mode):
                 return mid
             lo, hi = (mid, hi) if mid.mode == a.mode else (lo, mid)
-        return 0.5 * (lo.x + hi.x), lo.value, hi.value
+        spread = abs(hi.value - lo.value) + max(lo.error_estimate, hi.error_estimate)
+        return Located(0.5 * (lo.x + hi.x), lo.value, hi.value, 0.5 * abs(hi.x - lo.x), spread)
 
     def _threshold_switch(self, a, b):
         """Bisection on 'the non-threshold mode bifurcates before the threshold'."""
@@ -297,9 +376,9 @@ class _Locator:
         def bifurcates(x):
             return self.mode_value(mode, x)[1] == Kind.BIFURCATION
 
-        good, _ = bisect(bifurcates, good, bad, MODE_EDGE)
-        value = self.mode_value(mode, good)[0]
-        return good, value, value
+        good, bad = bisect(bifurcates, good, bad, MODE_EDGE)
+        value, _, error = self.mode_value(mode, good)
+        return Located(good, value, value, abs(bad - good), error)
 
 
 def _kind_changes(failed: list[CurvePoint]) -> list[CurvePoint]:
@@ -315,11 +394,19 @@ def _kind_changes(failed: list[CurvePoint]) -> list[CurvePoint]:
     ]
 
 
-def _switch_at(a: CurvePoint, b: CurvePoint, x: float, v_before: float, v_after: float):
+def _key(pt: CurvePoint, x) -> tuple:
+    """The key of the value at x of what is critical at ``pt`` (its mode, or the short-wave
+    limit) among a locator's solved values."""
+    return ("surface" if pt.kind == Kind.SURFACE else pt.mode, float(x))
+
+
+def _switch_at(a: CurvePoint, b: CurvePoint, found: Located):
     """The two rows (a's mode, b's mode at x) and the Switch of a located change."""
+    x, v_before, v_after = found.x, found.before, found.after
     kind = _change_kind(a, b, v_before, v_after)
     rows = [
         (x, v_before, a.mode, kind, "", a.surface, math.nan, ""),
         (x, v_after, b.mode, kind, "", b.surface, math.nan, ""),
     ]
-    return rows, [Switch(x, v_before, a.mode, b.mode, v_after, kind)]
+    errors = (found.x_error, found.value_error)
+    return rows, [Switch(x, v_before, a.mode, b.mode, v_after, kind, *errors)]

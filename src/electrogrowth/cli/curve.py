@@ -37,7 +37,7 @@ from .options import (
     scan_options_from_args,
 )
 from .progress import add_quiet_option, enabled
-from .report import NAMED, named_physical, physical_line, warn
+from .report import NAMED, named_physical, physical_line, supported, warn
 from .tube_input import add_any_tube_options, control_of
 from .units import check_held_voltage, key_value
 
@@ -260,14 +260,16 @@ def summary(curve) -> list[str]:
         lines.append(
             f"  {curve.along} {curve.x[rows[0]]:.10g} .. {curve.x[rows[-1]]:.10g}: {what}"
         )
-    for s in curve.switches:
+    for s in curve.switches:  # with the digits their error estimates support
         jump = abs(s.value_after - s.value) > 1e-9 * max(1.0, abs(s.value))
         value = (
-            f"jumps from {s.value:.12g} to {s.value_after:.12g}" if jump else f"= {s.value:.12g}"
+            f"jumps from {s.value:.12g} to {s.value_after:.12g}"
+            if jump
+            else f"= {supported(s.value, s.value_error)}"
         )
         lines.append(
-            f"  switch at {curve.along} = {s.x:.12g}, {curve.solve_for}_cr {value}:"
-            f" {_mode(s.mode_before)} -> {_mode(s.mode_after)}"
+            f"  switch at {curve.along} = {supported(s.x, s.x_error)}, {curve.solve_for}_cr"
+            f" {value}: {_mode(s.mode_before)} -> {_mode(s.mode_after)}"
         )
     for e in curve.ends:
         row = (curve.x == e.x) & (curve.kind == "end") & (curve.m == e.mode_after[0])
@@ -279,7 +281,7 @@ def summary(curve) -> list[str]:
                 else "the threshold (axisymmetric state lost)"
             )
         lines.append(
-            f"  branch {_mode(e.mode_before)} ends at {curve.along} = {e.x:.12g},"
+            f"  branch {_mode(e.mode_before)} ends at {curve.along} = {supported(e.x, e.x_error)},"
             f" {curve.solve_for}_cr = {e.value:.12g}; then "
             + (after or f"{_mode(e.mode_after)} from {e.value_after:.12g}")
         )

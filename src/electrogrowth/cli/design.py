@@ -39,7 +39,7 @@ from .options import (
     scan_options_from_args,
 )
 from .progress import add_quiet_option
-from .report import named_physical, physical_line
+from .report import named_physical, physical_line, supported
 from .tube_input import add_any_tube_options, control_of
 from .units import QuantityText, check_held_voltage, key_value, number_or_quantity
 
@@ -358,8 +358,8 @@ def _change_line(seq, s) -> str:
     before, after = seq.sides(s)
     value = s.value if math.isfinite(s.value) else s.value_after  # NaN: from no mode
     line = (
-        f"  {s.kind} at {seq.key} = {s.x:.12g}: {_pattern(before)} -> {_pattern(after)},"
-        f" {seq.solve_for}_cr = {value:.12g}"
+        f"  {s.kind} at {seq.key} = {supported(s.x, s.x_error)}: {_pattern(before)} ->"
+        f" {_pattern(after)}, {seq.solve_for}_cr = {supported(value, s.value_error)}"
     )
     failed = [(side, iv) for side, iv in (("before", before), ("after", after)) if iv.reason]
     return line + "".join(f"; {side} it: {_reason(iv)}" for side, iv in failed)

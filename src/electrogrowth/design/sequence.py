@@ -6,7 +6,9 @@ each with the pattern that comes first there: a mode (m, n), the exact short-wav
 ("surface") or the loss of the axisymmetric state ("threshold"). The switch between two
 intervals is the curve's own location (bifurcation/curves.py): Brent's method on the
 two-mode condition s (v_A(x) - v_B(x)) = 0, each v the critical value of one fixed mode, to
-an x tolerance of 1e-13 relative; it is not computed a second time here. Where a grid
+an x tolerance of 1e-13 relative, with the error estimate that the values' own give x
+(``x_error``: far above the tolerance between neighbouring folds, docs/design.md); it is not
+computed a second time here. Where a grid
 point's scan fails (the tube already unstable at the control's start, no state) next to
 one that succeeds, the curve also locates the end of the valid range (``edges=True``:
 bisection on "the scan succeeds" to the same tolerance), an "end" to or from no mode, so
@@ -28,7 +30,7 @@ from ..errors import ElectrogrowthError, NoBifurcationFound, ParameterError
 from ..model.controls import parse_control
 from ..model.keys import layer_key
 from ..model.layers import KEYS_TEXT
-from ..outcomes import NO_MODE, Kind, Status
+from ..outcomes import NO_MODE, Kind, Status, json_number
 
 MIN_POINTS, MAX_POINTS = 2, 2001
 
@@ -79,7 +81,9 @@ class SequenceSwitch:
     """The first pattern changes at ``x`` from ``mode_before`` to ``mode_after`` (grid
     order; (-1, -1): the short-wave limit or the threshold). ``kind`` "switch": both are
     equally critical there, at ``value``; "end": the branch before ends without a crossing
-    (a jump: ``value`` and ``value_after`` are the one-sided limits, or the threshold)."""
+    (a jump: ``value`` and ``value_after`` are the one-sided limits, or the threshold).
+    ``x_error``, ``value_error``: their error estimates (NaN: not known; the curve's
+    :class:`~electrogrowth.bifurcation.curve_record.Switch`)."""
 
     x: float
     mode_before: tuple[int, int]
@@ -87,15 +91,19 @@ class SequenceSwitch:
     value: float
     value_after: float
     kind: str
+    x_error: float = math.nan
+    value_error: float = math.nan
 
     def as_dict(self) -> dict:
         return {
             "x": self.x,
             "mode_before": list(self.mode_before),
             "mode_after": list(self.mode_after),
-            "value": self.value,
-            "value_after": self.value_after,
+            "value": json_number(self.value),  # NaN on an end's failed side
+            "value_after": json_number(self.value_after),
             "kind": str(self.kind),
+            "x_error": json_number(self.x_error),
+            "value_error": json_number(self.value_error),
         }
 
 
@@ -168,6 +176,16 @@ class ModeSequence:
                     mode,
                 ),
                 "switch_kind": ("switch", [str(s.kind) for s in self.switches]),
+                "switch_x_error": (
+                    "switch",
+                    [s.x_error for s in self.switches],
+                    {**key, "long_name": f"error estimate of {self.key} at the switch"},
+                ),
+                "switch_value_error": (
+                    "switch",
+                    [s.value_error for s in self.switches],
+                    {**value, "long_name": "error estimate of the critical value at the switch"},
+                ),
             },
             attrs={"key": self.key, "solve_for": self.solve_for, "side": self.side or ""},
         )
@@ -341,7 +359,16 @@ def from_curve(curve: Curve, key: str, lo: float, hi: float) -> ModeSequence:
         for (mode, kind, failure), a, b, reason in runs
     )
     switches = tuple(
-        SequenceSwitch(s.x, s.mode_before, s.mode_after, s.value, s.value_after, s.kind)
+        SequenceSwitch(
+            s.x,
+            s.mode_before,
+            s.mode_after,
+            s.value,
+            s.value_after,
+            s.kind,
+            s.x_error,
+            s.value_error,
+        )
         for s in changes
     )
     return ModeSequence(key, lo, hi, curve.solve_for, curve.side, intervals, switches, curve)
