@@ -58,7 +58,7 @@ BUG_REMEDY = Remedy(
 
 def json_number(v: float | None) -> float | None:
     """A number for JSON, which has neither NaN nor infinities: those (and None) as None."""
-    return v if v is not None and math.isfinite(v) else None
+    return float(v) if v is not None and math.isfinite(v) else None
 
 
 def remedy(exc: BaseException) -> str:

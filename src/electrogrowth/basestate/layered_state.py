@@ -21,6 +21,7 @@ import numpy as np
 from ..errors import ParameterError
 from ..labelled import layered_state_dataset
 from ..model.layers import Layer, Tube
+from ..outcomes import json_number
 from .chebyshev_series import ChebyshevSeries
 from .plies import Wall, chebyshev
 
@@ -347,9 +348,9 @@ class LayeredState:
             "charge": self.charge,
             "stretch": self.stretch,
             "current_length": self.current_length,
-            "voltage_threshold": _finite(self.voltage_threshold),
+            "voltage_threshold": json_number(self.voltage_threshold),
             "threshold_kind": self.threshold_kind,
-            "threshold_lambda_i": _finite(self.threshold_lambda_i),
+            "threshold_lambda_i": json_number(self.threshold_lambda_i),
             "axial_force": self.axial_force,
             "end_force": self.end_force,
             "quadrature_error": self.quadrature_error,
@@ -358,10 +359,6 @@ class LayeredState:
             record[f"{key}_min"] = float(prof[key].min())
             record[f"{key}_max"] = float(prof[key].max())
         return record
-
-
-def _finite(v: float) -> float | None:
-    return float(v) if math.isfinite(v) else None
 
 
 def _layer_record(layer: Layer) -> dict:

@@ -36,7 +36,7 @@ from ..continuation.events import FULL, brent, threshold_between
 from ..errors import BaseStateError, ConvergenceError, ElectrogrowthError, ParameterError
 from ..model.builtin_energies import BuiltinEnergy
 from ..model.layers import Tube
-from ..outcomes import Kind, Outcome, Status
+from ..outcomes import Kind, Outcome, Status, json_number
 from .along import TubeAt
 from .crease_interface import SOFT_NEIGHBOUR, interfaces, interfacial_biot_ratio, label
 from .march import control_path
@@ -272,14 +272,13 @@ class CreaseOnset(Outcome):
         return self if self.mechanical is None else self.mechanical
 
     def as_dict(self) -> dict:
-        fin = lambda v: v if math.isfinite(v) else None  # noqa: E731
         out = {
             "kind": str(self.kind),
-            "value": fin(self.value),
+            "value": json_number(self.value),
             "face": self.face,
             "label": self.label,
             "trigger": self.trigger,
-            "error_estimate": fin(self.error_estimate),
+            "error_estimate": json_number(self.error_estimate),
             "criterion": self.criterion,
         }
         if self.mechanical is not None:

@@ -21,7 +21,7 @@ import math
 from ..digits import apart
 from ..errors import ElectrogrowthError
 from ..model.controls import parse_control
-from ..outcomes import Kind, Status
+from ..outcomes import Kind, Status, json_number
 from .crease import crease_onset
 from .march import control_path
 from .state_loss import own_threshold
@@ -33,10 +33,6 @@ RIVALS = {
     Kind.CREASE: "crease",
     Kind.THRESHOLD: "threshold",
 }
-
-
-def _fin(v):
-    return v if v is not None and math.isfinite(v) else None
 
 
 @dataclasses.dataclass(frozen=True)
@@ -59,7 +55,10 @@ class Rival:
     def as_dict(self) -> dict:
         out = dataclasses.asdict(self)
         out["kind"] = str(self.kind)
-        out["value"], out["error_estimate"] = _fin(self.value), _fin(self.error_estimate)
+        out["value"], out["error_estimate"] = (
+            json_number(self.value),
+            json_number(self.error_estimate),
+        )
         return out
 
 
@@ -106,7 +105,7 @@ class Verdict:
     def as_dict(self) -> dict:
         return {
             "kind": str(self.kind),
-            "value": _fin(self.value),
+            "value": json_number(self.value),
             "face": self.face,
             "meaning": self.meaning,
             **{key: _rival_dict(getattr(self, key)) for key in RIVALS.values()},
@@ -340,7 +339,7 @@ def record(base: dict, verdict: Verdict, critical=None, *, first_on_top: bool = 
     out["kind"], out["face"] = v["kind"], v["face"]
     if first.kind in (Kind.CREASE, Kind.THRESHOLD):
         out["value"] = first.value
-        out["error_estimate"] = _fin(first.error_estimate)
+        out["error_estimate"] = json_number(first.error_estimate)
         out["m"] = out["n"] = out["family"] = None
         out["psi"] = None
         if first.kind == Kind.CREASE:

@@ -22,7 +22,7 @@ import numpy as np
 from ..bifurcation.critical import critical_value
 from ..bifurcation.scan import ScanOptions
 from ..errors import ParameterError
-from ..outcomes import Kind
+from ..outcomes import Kind, json_number
 from .sequence import ModeSequence, SequenceSwitch, _label, check_vary, mode_sequence
 
 VOLTAGE = "voltage"
@@ -50,7 +50,7 @@ class VoltageRegion:
             "mode": list(self.mode) if finite else None,
             "kind": str(self.kind),
             "voltage": list(self.voltage),
-            "growth": [v if math.isfinite(v) else None for v in self.growth],
+            "growth": [json_number(v) for v in self.growth],
         }
 
 

@@ -9,14 +9,12 @@ import math
 
 import numpy as np
 
+from ..outcomes import json_number
+
 
 def label_json(label):
     """A pattern for JSON and text: [m, n] for a mode, else its kind ("surface", ...)."""
     return list(label) if isinstance(label, tuple) else str(label)
-
-
-def _num(v):
-    return v if v is not None and math.isfinite(v) else None
 
 
 def label_of(value):
@@ -51,9 +49,9 @@ class Certificate:
         return {
             "x": self.x,
             "y": self.y,
-            "gap": _num(self.gap),
+            "gap": json_number(self.gap),
             "first": label_json(self.first),
-            "ahead": _num(self.ahead),
+            "ahead": json_number(self.ahead),
             "ok": self.ok,
         }
 
@@ -81,7 +79,7 @@ class Boundary:
             "patterns": [label_json(self.left), label_json(self.right)],
             "x": list(self.x),
             "y": list(self.y),
-            "value": [_num(v) for v in self.value],
+            "value": [json_number(v) for v in self.value],
             "ends": list(self.ends),
             "certified": self.certified,
             "certificates": [c.as_dict() for c in self.certificates],
@@ -105,7 +103,7 @@ class TriplePoint:
             "x": self.x,
             "y": self.y,
             "value": self.value,
-            "gap": _num(self.gap),
+            "gap": json_number(self.gap),
         }
 
 
@@ -246,7 +244,7 @@ class ModeMap:
                 "x": list(self.xs),
                 "y": list(self.ys),
                 "pattern": [[label_json(lab) for lab in row] for row in self.labels],
-                "value": [[_num(float(v)) for v in row] for row in self.values],
+                "value": [[json_number(float(v)) for v in row] for row in self.values],
             },
             "boundaries": [b.as_dict() for b in self.boundaries],
             "triple_points": [t.as_dict() for t in self.triple_points],

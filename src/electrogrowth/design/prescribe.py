@@ -39,7 +39,7 @@ from ..continuation.events import SWITCH, brent, widening_windows
 from ..errors import ElectrogrowthError, Remedy
 from ..incremental.accuracy import check_rtol
 from ..incremental.modes import MODE_MAX
-from ..outcomes import Kind, Status
+from ..outcomes import Kind, Status, json_number
 from . import onset
 from .margins import Margins
 from .onset import CREASE_FIRST, gap_to_crease
@@ -136,7 +136,6 @@ class Design:
     note: str = ""
 
     def as_dict(self) -> dict:
-        num = lambda v: v if v is not None and math.isfinite(v) else None  # noqa: E731
         return {
             "target": self.target,
             "status": self.status,
@@ -149,17 +148,17 @@ class Design:
             "switches": [s.as_dict() for s in self.sequence.switches],
             "sequence": [iv.as_dict() for iv in self.sequence.intervals],
             "best": {
-                "design": num(self.x),
+                "design": json_number(self.x),
                 "mode": None if self.mode is None else list(self.mode),
-                "value": num(self.value),
-                "margin": num(self.margin),
+                "value": json_number(self.value),
+                "margin": json_number(self.margin),
                 "next_mode": None if self.next_mode is None else list(self.next_mode),
-                "next_value": num(self.next_value),
-                "to_boundary": num(self.to_boundary),
-                "crease_value": num(self.crease_value),
-                "crease_margin": num(self.crease_margin),
-                "surface_value": num(self.surface_value),
-                "surface_margin": num(self.surface_margin),
+                "next_value": json_number(self.next_value),
+                "to_boundary": json_number(self.to_boundary),
+                "crease_value": json_number(self.crease_value),
+                "crease_margin": json_number(self.crease_margin),
+                "surface_value": json_number(self.surface_value),
+                "surface_margin": json_number(self.surface_margin),
                 "limited_by": self.limited_by or None,
                 "tied_with": [tie_name(t) for t in self.tied_with],
                 "verdict": self.verdict or None,

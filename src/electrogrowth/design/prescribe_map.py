@@ -28,7 +28,7 @@ from scipy.optimize import minimize
 from ..bifurcation.scan import ScanOptions, scan_modes
 from ..errors import ElectrogrowthError
 from ..incremental.accuracy import check_rtol
-from ..outcomes import Kind
+from ..outcomes import Kind, json_number
 from .map_record import ModeMap, label_json, label_of
 from .map_trace import FAILED, Values, valued
 from .onset import (
@@ -107,7 +107,6 @@ class MapDesign:
     note: str = ""
 
     def as_dict(self) -> dict:
-        num = lambda v: v if v is not None and math.isfinite(v) else None  # noqa: E731
         return {
             "target": self.target,
             "status": self.status,
@@ -119,17 +118,17 @@ class MapDesign:
             "switches": [b.as_dict() for b in self.map.boundaries],
             "triple_points": [t.as_dict() for t in self.map.triple_points],
             "best": {
-                "design": [num(self.x), num(self.y)],
+                "design": [json_number(self.x), json_number(self.y)],
                 "mode": None if self.mode is None else list(self.mode),
-                "value": num(self.value),
-                "margin": num(self.margin),
+                "value": json_number(self.value),
+                "margin": json_number(self.margin),
                 "next_mode": None if self.next_mode is None else label_json(self.next_mode),
-                "next_value": num(self.next_value),
-                "to_boundary": {k: num(v) for k, v in self.to_boundary.items()},
-                "crease_value": num(self.crease_value),
-                "crease_margin": num(self.crease_margin),
-                "surface_value": num(self.surface_value),
-                "surface_margin": num(self.surface_margin),
+                "next_value": json_number(self.next_value),
+                "to_boundary": {k: json_number(v) for k, v in self.to_boundary.items()},
+                "crease_value": json_number(self.crease_value),
+                "crease_margin": json_number(self.crease_margin),
+                "surface_value": json_number(self.surface_value),
+                "surface_margin": json_number(self.surface_margin),
                 "limited_by": self.limited_by or None,
                 "tied_with": [tie_name(t) for t in self.tied_with],
                 "verdict": self.verdict or None,

@@ -45,6 +45,7 @@ from ..incremental.radial_table import layer_units
 from ..incremental.targets import ImpedanceTarget, check_mode, with_family
 from ..model.controls import force_scale, pressure_scale, voltage_scale
 from ..model.layers import Tube
+from ..outcomes import json_number
 
 STEP = 1e-4
 
@@ -248,18 +249,16 @@ def sensitivity_json(outcome) -> dict:
     ``surface_sensitivity``: d/dp by parameter key) as JSON, a derivative that could not be
     formed as null, and ``margin_sides``: at a kink of M, dM/dp lowering ("down") and
     raising ("up") each such p."""
-
-    def num(v):
-        return v if v is not None and math.isfinite(v) else None
-
     fields = {"value": "sensitivity", "next_value": "next_sensitivity",
               "margin": "margin_sensitivity", "crease_value": "crease_sensitivity",
               "surface_value": "surface_sensitivity"}  # fmt: skip
-    out = {
-        name: {p: num(d) for p, d in getattr(outcome, attr, {}).items()}
+    out: dict[str, dict] = {
+        name: {p: json_number(d) for p, d in getattr(outcome, attr, {}).items()}
         for name, attr in fields.items()
     }
     # at a kink of M (a tie of competitors) "margin" is null and these are its two sides
     sides = getattr(outcome, "margin_sides", {})
-    out["margin_sides"] = {p: {"down": num(a), "up": num(b)} for p, (a, b) in sides.items()}
+    out["margin_sides"] = {
+        p: {"down": json_number(a), "up": json_number(b)} for p, (a, b) in sides.items()
+    }
     return out
