@@ -4,10 +4,12 @@ solves, failures as data, and the ``electrogrowth curve`` command."""
 import argparse
 import csv
 import json
+import math
 
 import numpy as np
 import pytest
 
+from electrogrowth.bifurcation import curve_switches
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.bifurcation.curves import Switch, critical_curve
 from electrogrowth.bifurcation.scan import ScanOptions, scan_modes
@@ -304,15 +306,16 @@ def _fake_modes(monkeypatch, values, threshold=None, inaccurate=()):
 
     from electrogrowth.bifurcation import curves
 
-    def one(at, m, n, solve_for, side=None, bracket=None):
+    def one(at, m, n, solve_for, side=None, bracket=None, rtol=1e-12):
         v = values[m, n](at.voltage)
+        error = ERROR * rtol / 1e-12  # as the package's estimate, ~ rtol |v|
         if v is None:
             raise NoBifurcationFound(f"({m}, {n}) has no root")
         if math.isnan(v):
             return SimpleNamespace(
-                value=threshold(at.voltage), kind="threshold", error_estimate=ERROR
+                value=threshold(at.voltage), kind="threshold", error_estimate=error
             )
-        return SimpleNamespace(value=v, kind="bifurcation", error_estimate=ERROR)
+        return SimpleNamespace(value=v, kind="bifurcation", error_estimate=error)
 
     def scan(at, solve_for, side=None, options=None):
         found = [
@@ -358,17 +361,23 @@ def test_a_crossing_is_a_switch(monkeypatch):
 def test_the_error_of_a_switch_between_nearly_parallel_modes(monkeypatch):
     """Neighbouring folds: values nearly parallel (here d = 1e-4 (x - 0.5)), so their
     errors move the tie 1e4 times as far (check round 16c: 1e-12 in the values moved a
-    fold switch 1e-8); the switch says so. The one-sided secant slopes are exact here."""
+    fold switch 1e-8); the switch says so: x_error 2e-8 at the default rtol, above
+    REFINE_ABOVE, so the two modes are solved again at the finest rtol (1e-14: errors 1e-2
+    ERROR) either side and x_error is 2e-10. The secant slopes are exact here."""
     _fake_modes(
         monkeypatch, {(0, 1): lambda x: 1 + 2 * x, (1, 1): lambda x: 1 + 0.5e-4 + (2 - 1e-4) * x}
     )
     (sw,) = _curve([0.1, 0.9]).switches
-    assert sw.x == pytest.approx(0.5, abs=1e-7)
-    assert sw.x_error == pytest.approx(SWITCH.at(0.5) + 2 * ERROR / 1e-4, rel=1e-3)
+    assert sw.x == pytest.approx(0.5, abs=1e-9)
+    finest = 1e-2 * ERROR
+    assert sw.x_error == pytest.approx(SWITCH.at(0.5) + 2 * finest / 1e-4, rel=1e-3)
     assert abs(sw.x - 0.5) <= sw.x_error
-    assert sw.value_error == pytest.approx(ERROR + 2 * sw.x_error, rel=1e-3)
+    assert sw.value_error == pytest.approx(finest + 2 * sw.x_error, rel=1e-3)
     record = _curve([0.1, 0.9]).as_dict()["switches"][0]
     assert record["x_error"] == sw.x_error and record["value_error"] == sw.value_error
+    monkeypatch.setattr(curve_switches, "REFINE_ABOVE", math.inf)  # the default rtol's
+    (sw,) = _curve([0.1, 0.9]).switches
+    assert sw.x_error == pytest.approx(SWITCH.at(0.5) + 2 * ERROR / 1e-4, rel=1e-3)
 
 
 def test_a_crossing_is_a_switch_when_a_mode_has_no_root_at_the_far_grid_point(monkeypatch):

@@ -17,6 +17,8 @@ Brent's tolerance plus (e_A + e_B) / |d'| (the two values' own estimates move th
 that much; between nearly parallel neighbouring folds, far more than the tolerance: check
 round 16c), d' the secant of the values already solved nearest to x on either side above
 that noise; the value's, the larger estimate plus the values' slope times the x error. A
+crossing of two modes whose x error is above REFINE_ABOVE is refined: the two modes solved
+again at the finest rtol either side of x, and the root of the line through them. A
 bisection's change: its last bracket, and the value's own estimate.
 
 Between a grid point whose scan failed (the tube already unstable at the control's start,
@@ -39,6 +41,7 @@ from typing import NamedTuple
 
 from ..continuation.events import MODE_EDGE, SWITCH, bisect, brent
 from ..errors import ConvergenceError, ElectrogrowthError, NoBifurcationFound
+from ..incremental.accuracy import RTOL_RANGE
 from ..outcomes import NO_MODE, Kind
 from .curve_record import (
     CurvePoint,
@@ -61,6 +64,11 @@ TIE = 1e-9
 #: a secant of d for the x error spans values whose |d| is this many times their noise
 #: (e_A + e_B): its slope is then good to ~25 %, as an error estimate needs
 ABOVE_NOISE = 8.0
+#: a crossing whose x_error exceeds this (relative to max(1, |x|)) is refined: its two
+#: modes solved again at FINEST (between neighbouring folds x_error ~1e-7 at the default
+#: rtol, ~1e-9 after)
+REFINE_ABOVE = 1e-9
+FINEST = RTOL_RANGE[0]
 
 
 class Located(NamedTuple):
@@ -278,7 +286,40 @@ class _Locator:
             va, vb = self.value_of(a, before), self.value_of(b, after)
             error = max(self.error_of(a, before), self.error_of(b, after))
             return Located(x, va, vb, SWITCH.at(x) + abs(step), error)
-        return self._crossed(a, b, x, d, SWITCH.at(x))
+        lo, hi = sorted((a.x, b.x))
+        return self._refined(a, b, self._crossed(a, b, x, d, SWITCH.at(x)), lo, hi)
+
+    def _refined(self, a, b, found: Located, lo: float, hi: float) -> Located:
+        """A crossing of two modes whose x_error is above REFINE_ABOVE (relative): their
+        values solved again at the finest rtol an x_error either side of x (within [lo,
+        hi]: the root lies between where the estimate holds), the root of the line through
+        them (d is linear on that scale) and the errors of those values; kept as found
+        where they bracket no root or a solve fails."""
+        x, h = found.x, found.x_error
+        if not REFINE_ABOVE * max(1.0, abs(x)) < h < math.inf or Kind.SURFACE in (a.kind, b.kind):
+            return found
+        ends = (max(x - h, lo), min(x + h, hi))
+        try:
+            (a0, b0), (a1, b1) = ((self._finest(a, xi), self._finest(b, xi)) for xi in ends)
+        except ElectrogrowthError:
+            return found
+        d0, d1 = (self.sense * (u.value - w.value) for u, w in ((a0, b0), (a1, b1)))
+        if not d0 * d1 < 0 or any(c.kind != Kind.BIFURCATION for c in (a0, b0, a1, b1)):
+            return found
+        width = ends[1] - ends[0]
+        t = d0 / (d0 - d1)
+        root = ends[0] + t * width
+        noise = max(a0.error_estimate + b0.error_estimate, a1.error_estimate + b1.error_estimate)
+        x_error = SWITCH.at(root) + noise * width / abs(d1 - d0)
+        slope_v = max(abs(a1.value - a0.value), abs(b1.value - b0.value)) / width
+        va, vb = (u.value + t * (w.value - u.value) for u, w in ((a0, a1), (b0, b1)))
+        errors = (a0.error_estimate, b0.error_estimate, a1.error_estimate, b1.error_estimate)
+        return Located(root, va, vb, x_error, max(errors) + slope_v * x_error)
+
+    def _finest(self, pt: CurvePoint, x: float):
+        """The critical value of pt's mode at x at the finest rtol (a refined crossing)."""
+        at = self.params.at(self.along, x)
+        return self.critical_value(at, *pt.mode, self.solve_for, side=self.side, rtol=FINEST)
 
     def _crossed(self, a, b, x: float, d, tol: float) -> Located:
         """The crossing of a's and b's values at x (a root of d to ``tol``), with its errors
