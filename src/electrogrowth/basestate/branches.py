@@ -137,54 +137,76 @@ class Branch:
         tube = self.wall.tube
         if tube.control == "stretch":
             return self.point(r_i, np.full_like(r_i, tube.stretch))
-        guesses = np.broadcast_to(np.asarray(lz_guess, float), r_i.shape)
-        lz, follow = np.full_like(r_i, np.nan), np.ndim(lz_guess) == 0
-        for j, x in enumerate(r_i):
-            start = (
-                (lz[j - 1] if j and np.isfinite(lz[j - 1]) else guesses[j])
-                if follow
-                else guesses[j]
-            )
-            lz[j] = self._stretch(x, start)
-            if not np.isfinite(lz[j]):
-                break
+        lz = _each(r_i, lz_guess, self._stretch)
         return self.point(r_i, np.where(np.isfinite(lz), lz, 1.0)) | _nan_where(~np.isfinite(lz))
 
+    def at_stretch(self, lz, r_guess) -> dict:
+        """Points at the lambda_z (1-d, in order, force control), r_i solved at each from the
+        guess as :meth:`at` solves lambda_z: the chart of a branch whose r_i turns where its
+        lambda_z keeps moving (a charged force-free tube under suction, probe 12b D7)."""
+        lz = np.atleast_1d(np.asarray(lz, float))
+        r_i = _each(lz, r_guess, self._inner_radius)
+        return self.point(np.where(np.isfinite(r_i), r_i, 1.0), lz) | _nan_where(~np.isfinite(r_i))
+
+    def _residual(self, x: float, lz: float) -> float:
+        return float(self.point(np.array([x]), np.array([lz]))["residual"][0])
+
     def _stretch(self, x: float, guess: float) -> float:
-        """lambda_z balancing the axial force at r_i = x: bracketed from the guess outward in
-        both directions (steps growing 1.5-fold), then brentq; NaN if no bracket."""
+        """lambda_z balancing the axial force at r_i = x (:func:`_balance` from the guess)."""
+        return _balance(lambda lz: self._residual(x, lz), guess)
 
-        def h(lz):
-            return float(self.point(np.array([x]), np.array([lz]))["residual"][0])
+    def _inner_radius(self, lz: float, guess: float) -> float:
+        """r_i balancing the axial force at lambda_z = lz (:func:`_balance` from the guess)."""
+        return _balance(lambda x: self._residual(x, lz), guess)
 
-        h0 = h(guess)
-        if h0 == 0 or not np.isfinite(h0):
-            return guess if h0 == 0 else math.nan
-        ends = {1: (guess, h0), -1: (guess, h0)}
-        step = 0.02
-        for _ in range(40):
-            for sense in (1, -1):
-                if ends[sense] is None:
-                    continue
-                last, hl = ends[sense]
-                nxt = last * math.exp(sense * step)
-                if not 1e-3 * guess < nxt < 1e3 * guess:
-                    ends[sense] = None
-                    continue
-                hn = h(nxt)
-                if not np.isfinite(hn):  # past the states at this r_i (a Gent layer's lock)
-                    ends[sense] = None
-                    bracket = _short_of_edge(h, last, hl, nxt)
-                    if bracket is not None:
-                        return brent(h, *sorted(bracket), BRANCH_STRETCH, named=False)
-                elif np.sign(hn) != np.sign(hl):
-                    return brent(h, *sorted((last, nxt)), BRANCH_STRETCH, named=False)
-                else:
-                    ends[sense] = (nxt, hn)
-            if ends[1] is None and ends[-1] is None:
-                break
-            step *= 1.5
-        return math.nan
+
+def _each(fixed: np.ndarray, guess, solve) -> np.ndarray:
+    """solve(fixed[j], start) at each fixed value in order, the other coordinate from the
+    guess (a number: continued from the last finite solution; an array: one per value);
+    NaN from the first value where none is found."""
+    guesses = np.broadcast_to(np.asarray(guess, float), fixed.shape)
+    out, follow = np.full_like(fixed, np.nan), np.ndim(guess) == 0
+    for j, x in enumerate(fixed):
+        start = (
+            (out[j - 1] if j and np.isfinite(out[j - 1]) else guesses[j]) if follow else guesses[j]
+        )
+        out[j] = solve(x, start)
+        if not np.isfinite(out[j]):
+            break
+    return out
+
+
+def _balance(h, guess: float) -> float:
+    """The root of the axial force's residual h in one coordinate: bracketed from the guess
+    outward in both directions (steps growing 1.5-fold), then brentq; NaN if no bracket."""
+    h0 = h(guess)
+    if h0 == 0 or not np.isfinite(h0):
+        return guess if h0 == 0 else math.nan
+    ends = {1: (guess, h0), -1: (guess, h0)}
+    step = 0.02
+    for _ in range(40):
+        for sense in (1, -1):
+            if ends[sense] is None:
+                continue
+            last, hl = ends[sense]
+            nxt = last * math.exp(sense * step)
+            if not 1e-3 * guess < nxt < 1e3 * guess:
+                ends[sense] = None
+                continue
+            hn = h(nxt)
+            if not np.isfinite(hn):  # past the states at this r_i (a Gent layer's lock)
+                ends[sense] = None
+                bracket = _short_of_edge(h, last, hl, nxt)
+                if bracket is not None:
+                    return brent(h, *sorted(bracket), BRANCH_STRETCH, named=False)
+            elif np.sign(hn) != np.sign(hl):
+                return brent(h, *sorted((last, nxt)), BRANCH_STRETCH, named=False)
+            else:
+                ends[sense] = (nxt, hn)
+        if ends[1] is None and ends[-1] is None:
+            break
+        step *= 1.5
+    return math.nan
 
 
 def _short_of_edge(h, last: float, h_last: float, edge: float):

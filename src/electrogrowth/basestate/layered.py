@@ -83,13 +83,7 @@ def solve_layered_state(tube: Tube, *, rtol: float = 1e-12, near=None, guess=Non
                     f"Vbar = {tube.voltage:.12g} is at or above the voltage threshold"
                     f" Vbar = {thr.value:.12g} ({thr.kind}) of this tube; no axisymmetric state"
                 )
-            x, lz = solve_on(
-                prep.branch,
-                thr.grid,
-                tube.voltage * tube.voltage,
-                thr if thr.kind else None,
-                _voltage_stage(tube),
-            )
+            x, lz = solve_on(prep.branch, thr, tube.voltage * tube.voltage, _voltage_stage(tube))
         # c from the voltage, c = V / Lambda for ideal dielectrics (from (*) it would carry
         # the cancellation of T - (P_i - P_o) near the start, amplified by the square root)
         pt = Branch(prep.wall, "pressure", vbar=tube.voltage).point([x], [lz])

@@ -1,11 +1,12 @@
 """Following a loading branch of a layered tube from its start, and where it is lost
 (docs/derivation-layered.md; the branches' states at given r_i: :mod:`.branches`).
 
-A branch is walked in r_i from its start on a geometric grid (``BRANCH_STEPS``) and its
-threshold (:class:`Threshold`) is where it is lost: a limit point (first maximum of the
+A branch is walked from its start on a geometric grid (``BRANCH_STEPS``) in r_i, or in
+lambda_z where r_i falls back as the load rises (its :func:`chart`), and its threshold
+(:class:`Threshold`) is where it is lost: a limit point (first maximum of the
 load, located on a Chebyshev interpolant), an asymptote (Richardson extrapolation of the
 load as lambda_i -> inf), locking (the energy ends, located by bisection) or none. A load is
-solved for on the walked branch by Brent's method in its bracketing cell
+solved for on the walked branch by Brent's method in its bracketing cell of the walked coordinate
 (:func:`solve_on`). A tube is prepared once (:func:`prepare`, cached): its unloaded state
 (V = 0, P_i = P_o), the pressure stage to its P_i at V = 0, and the voltage branch from
 there, whose threshold is walked when first asked for. A load beyond the branch's threshold
@@ -54,68 +55,150 @@ class Threshold:
     error: float = 0.0
     # the scanned branch from its start (r_i, lambda_z, analytic load): brackets for solves
     grid: tuple = dataclasses.field(default=(), repr=False, compare=False)
+    # the coordinate the grid was walked in, monotone along it: "r_i" or "stretch" (Chart)
+    walked: str = dataclasses.field(default="r_i", repr=False, compare=False)
 
 
-def _walk(branch: Branch, x0: float, lz0: float, *, sign: int = 1, target=None):
-    """Follow the branch from r_i = x0 on x0 1.08^(sign k) up to a factor 1e3; returns arrays
-    (r_i, lambda_z, analytic load) from x0 and why it stopped: "target" (sign (load - target)
-    >= 0), "peak" (the load turned back), "lock" (an energy ended: last entry NaN) or "end"."""
+#: the relative step of lambda_z that probes, at a branch's start, which way r_i moves as
+#: the load rises (first order: r_i moves by |d ln r_i / d ln lambda_z| times it)
+PROBE = 1e-6
+
+
+@dataclasses.dataclass(frozen=True)
+class Chart:
+    """A branch's states along one coordinate: ``by`` "r_i" (lambda_z solved at each r_i,
+    Branch.at) or "stretch" (r_i solved at each lambda_z, Branch.at_stretch), walked in
+    direction ``step`` (+1 rising, -1 falling) as the load rises from the start."""
+
+    branch: Branch
+    by: str = "r_i"
+    step: int = 1
+
+    def at(self, u, guess) -> dict:
+        """Points at the walked coordinate's values u, the other one solved from guess."""
+        if self.by == "r_i":
+            return self.branch.at(u, guess)
+        return self.branch.at_stretch(u, guess)
+
+    def point(self, u, other) -> dict:
+        """The point at the walked coordinate u and the other one, as given."""
+        r_i, lz = (u, other) if self.by == "r_i" else (other, u)
+        return self.branch.point(np.atleast_1d(r_i), np.atleast_1d(lz))
+
+    def split(self, pt: dict):
+        """(walked coordinate, the other one) of points."""
+        r_i, lz = pt["r_i"], pt["stretch"]
+        return (r_i, lz) if self.by == "r_i" else (lz, r_i)
+
+    def start(self, x0: float, lz0: float) -> tuple[float, float]:
+        """(walked coordinate, the other one) of the start (r_i, lambda_z) = (x0, lz0)."""
+        return (x0, lz0) if self.by == "r_i" else (lz0, x0)
+
+    def state(self, u: float, other: float) -> tuple[float, float]:
+        """(r_i, lambda_z) of the walked coordinate u and the other one."""
+        return (u, other) if self.by == "r_i" else (other, u)
+
+
+def chart(branch: Branch, x0: float, lz0: float, sense: int = 1) -> Chart:
+    """How to walk the branch from its start (x0, lz0) so that the load moves in ``sense``:
+    in r_i moving with it (every branch under stretch control; under force control where r_i
+    rises with a rising load: the walk as it always was), else in the coordinate that moves
+    faster, from the two states at lambda_z = lz0 (1 +- PROBE). A charged force-free film
+    tube under suction (P_i < -9.69, probe 12b D7) lets r_i fall as the voltage rises, to a
+    minimum where it turns (a fold of the r_i chart: no lambda_z beyond it) while lambda_z
+    rises throughout: walked in rising r_i, the branch's first states were skipped."""
+    ri_chart = Chart(branch, "r_i", sense)
+    if branch.wall.tube.control != "force":
+        return ri_chart
+    lz = lz0 * (1.0 + PROBE * np.array([1.0, -1.0]))
+    pt = clean(branch.at_stretch(lz, np.array([x0, x0])))  # each from the start's r_i
+    up = sense * branch.value(pt)
+    if not (np.all(np.isfinite(up)) and up[0] != up[1]):
+        return ri_chart  # lambda_z does not move through the start: r_i does
+    j = int(np.argmax(up))  # the side where the load moves in sense
+    dr = math.log(pt["r_i"][j] / x0)
+    if sense * dr >= 0:
+        return ri_chart
+    if abs(dr) > abs(math.log(lz[j] / lz0)):
+        return Chart(branch, "r_i", -sense)
+    return Chart(branch, "stretch", 1 if j == 0 else -1)
+
+
+def _walk(chart: Chart, x0: float, lz0: float, *, sense: int = 1, target=None):
+    """Follow the branch from (r_i, lambda_z) = (x0, lz0) on the chart's coordinate u0 1.08^(step
+    k) up to a factor 1e3; returns arrays (u, the other coordinate, analytic load) from the
+    start and why it stopped: "target" (sense (load - target) >= 0), "peak" (the load turned
+    back), "lock" (an energy ended: last entry NaN) or "end"."""
+    u0, v0 = chart.start(x0, lz0)
     # the start (x0, lz0) is a solved state: solved again for lambda_z, a charged tube's
     # voltage branch under suction found none (two lambda_z close by), and the grid began
     # with a NaN load (probe 12b, D7)
-    first = clean(branch.point([x0], [lz0]))
-    xs, lzs, loads = [x0], [lz0], [float(branch.value(first)[0])]
-    for x in BRANCH_STEPS.batches(x0, sign):
-        pt = clean(branch.at(x, lzs[-1]))
-        for xj, lj, vj in zip(x, pt["stretch"], branch.value(pt)):
-            xs.append(float(xj)), lzs.append(float(lj)), loads.append(float(vj))
-            if not np.isfinite(vj):
-                if not _energy_ends(branch, xj, lzs[-2]):
+    first = clean(chart.point(u0, v0))
+    branch = chart.branch
+    us, vs, loads = [u0], [v0], [float(branch.value(first)[0])]
+    for u in BRANCH_STEPS.batches(u0, chart.step):
+        pt = clean(chart.at(u, vs[-1]))
+        for uj, vj, lj in zip(u, chart.split(pt)[1], branch.value(pt)):
+            us.append(float(uj)), vs.append(float(vj)), loads.append(float(lj))
+            if not np.isfinite(lj):
+                if not _energy_ends(chart, uj, vs[-2]):
+                    name = "lambda_z" if chart.by == "r_i" else "r_i"
+                    fixed = "lambda_i" if chart.by == "r_i" else "lambda_z"
                     raise ConvergenceError(
-                        f"no lambda_z balances the axial force at lambda_i = {xj:.12g}"
+                        f"no {name} balances the axial force at {fixed} = {uj:.12g}"
                     )
-                return np.array(xs), np.array(lzs), np.array(loads), "lock"
-            if target is not None and reached(vj, target, sign):
-                return np.array(xs), np.array(lzs), np.array(loads), "target"
-            if turned(loads[-2], vj, sign):
-                return np.array(xs), np.array(lzs), np.array(loads), "peak"
-    return np.array(xs), np.array(lzs), np.array(loads), "end"
+                return np.array(us), np.array(vs), np.array(loads), "lock"
+            if target is not None and reached(lj, target, sense):
+                return np.array(us), np.array(vs), np.array(loads), "target"
+            if turned(loads[-2], lj, sense):
+                return np.array(us), np.array(vs), np.array(loads), "peak"
+    return np.array(us), np.array(vs), np.array(loads), "end"
 
 
-def _energy_ends(branch: Branch, x: float, lz: float) -> bool:
-    """Whether a state that is not finite at r_i = x is past an energy's end (a lock): any
-    energy with its own domain (Gent, an exponential) ends; polynomials only where they
-    overflow a double, i.e. the state at the last lambda_z, lz, is not finite either (else
-    no lambda_z balances the axial force)."""
-    if any(numeric_energy(p.layer.material) is not None for p in branch.wall.plies):
+def _energy_ends(chart: Chart, u: float, v: float) -> bool:
+    """Whether a state that is not finite at the walked coordinate u is past an energy's end
+    (a lock): any energy with its own domain (Gent, an exponential) ends; polynomials only
+    where they overflow a double, i.e. the state at u and the last other coordinate, v, is
+    not finite either (else no state balances the axial force)."""
+    if any(numeric_energy(p.layer.material) is not None for p in chart.branch.wall.plies):
         return True
-    return not np.isfinite(branch.value(clean(branch.point(np.array([x]), np.array([lz]))))[0])
+    return not np.isfinite(chart.branch.value(clean(chart.point(u, v)))[0])
 
 
-def _guess(xs, lzs):
-    """lambda_z guesses at new r_i by interpolation of a scanned branch (log-linear)."""
-    good = np.isfinite(lzs)
-    order = np.argsort(xs[good])
-    return lambda x: np.interp(np.log(x), np.log(xs[good][order]), lzs[good][order])
+def _guess(us, vs):
+    """The other coordinate's guesses at new values of the walked one, u, by interpolation
+    of a scanned branch (u, v) (log-linear)."""
+    good = np.isfinite(vs)
+    order = np.argsort(us[good])
+    return lambda u: np.interp(np.log(u), np.log(us[good][order]), vs[good][order])
 
 
 def threshold(
     branch: Branch, x0: float, lz0: float, control: str, *, sign: int = 1, target=None
 ) -> Threshold:
-    """Scan the branch from its start (r_i rising for sign = 1, falling for -1); classify and
-    locate where it is lost. With a target (analytic load) the scan stops once it is crossed:
-    kind "" (not lost before it), value nan, the grid brackets the target."""
-    xs, lzs, loads, stop = _walk(branch, x0, lz0, sign=sign, target=target)
-    guess = _guess(xs, lzs)
+    """Scan the branch from its start (x0, lz0) as the load rises (sign = 1) or falls (-1),
+    on its :func:`chart`; classify and locate where it is lost. With a target (analytic load)
+    the scan stops once it is crossed: kind "" (not lost before it), value nan, the grid
+    brackets the target."""
+    walk = chart(branch, x0, lz0, sign)
+    us, vs, loads, stop = _walk(walk, x0, lz0, sense=sign, target=target)
+    guess = _guess(us, vs)
     out = lambda v: math.sqrt(v) if control == "voltage" else v  # noqa: E731
-    if stop == "target":
-        return Threshold(control, math.nan, "", math.nan, math.nan, 0.0, (xs, lzs, loads))
-    if stop == "peak":
-        j = len(xs) - 2  # the extreme load scanned
-        a, b = sorted((xs[max(j - 1, 0)], xs[j + 1]))
 
-        def f(x):
-            return sign * branch.value(clean(branch.at(x, guess(x))))
+    def lost(kind, value, u, v, error=0.0, grid=None):
+        x, lz = walk.state(u, v)
+        grid = (us, vs, loads) if grid is None else grid
+        physical = walk.state(grid[0], grid[1]) + (grid[2],)
+        return Threshold(control, value, kind, x, lz, error, physical, walk.by)
+
+    if stop == "target":
+        return lost("", math.nan, math.nan, math.nan)
+    if stop == "peak":
+        j = len(us) - 2  # the extreme load scanned
+        a, b = sorted((us[max(j - 1, 0)], us[j + 1]))
+
+        def f(u):
+            return sign * branch.value(clean(walk.at(u, guess(u))))
 
         poly = cheb.Chebyshev.interpolate(f, 24, domain=[a, b])
         crit = [x.real for x in poly.deriv().roots() if abs(x.imag) < 1e-9 and a <= x.real <= b]
@@ -124,41 +207,47 @@ def threshold(
                 f"limit point of the {control} not located in [{a:.6g}, {b:.6g}]"
             )
         top = max(crit, key=poly)
-        pt = clean(branch.at([top], guess(top)))
+        pt = clean(walk.at([top], guess(top)))
         value = float(branch.value(pt)[0])
-        keep = sign * (top - xs) > 0
+        other = float(walk.split(pt)[1][0])
+        keep = walk.step * (top - us) > 0
         grid = (
-            np.append(xs[keep], top),
-            np.append(lzs[keep], pt["stretch"][0]),
+            np.append(us[keep], top),
+            np.append(vs[keep], other),
             np.append(loads[keep], value),
         )
-        return Threshold(
-            control,
-            out(value),
+        return lost(
             "limit point",
+            out(value),
             float(top),
-            float(pt["stretch"][0]),
+            other,
             abs(sign * float(poly(top)) - value),
             grid,
         )
     if stop == "lock":
 
-        def finite(x):
-            return bool(np.isfinite(branch.value(clean(branch.at([x], guess(x))))[0]))
+        def finite(u):
+            return bool(np.isfinite(branch.value(clean(walk.at([u], guess(u))))[0]))
 
-        a, _ = bisect(finite, xs[-2], xs[-1], LOCK, near_bad=True)  # the energy's domain ends
-        grid = (xs[:-1], lzs[:-1], loads[:-1])
-        return Threshold(control, sign * math.inf, "locking", float(a), float(guess(a)), 0.0, grid)
-    grid = (xs, lzs, loads)
+        a, _ = bisect(finite, us[-2], us[-1], LOCK, near_bad=True)  # the energy's domain ends
+        grid = (us[:-1], vs[:-1], loads[:-1])
+        return lost("locking", sign * math.inf, float(a), float(guess(a)), grid=grid)
+    if walk.by != "r_i" or walk.step != sign:  # the limits below are of r_i -> inf or 0
+        name = "lambda_i" if walk.by == "r_i" else "lambda_z"
+        raise ConvergenceError(
+            f"the {control} branch walked in {name} from {us[0]:.12g} to {us[-1]:.12g} met"
+            " no threshold (the load's limit at the end of that walk is not computed)"
+        )
+    grid = (us, vs, loads)
     if sign < 0:
-        return Threshold(control, -math.inf, "none", 0.0, float(lzs[-1]), 0.0, grid)
+        return Threshold(control, -math.inf, "none", 0.0, float(vs[-1]), 0.0, grid)
     # Richardson: load = L_inf + a x^p + ..., x = lambda_i^-2, the order p measured
     far = x0 * 100.0 * 2.0 ** np.arange(5)
     pt = clean(branch.at(far, guess(far[0])))
     t = np.array([out(v) if np.isfinite(v) else np.nan for v in branch.value(pt)])
     d = np.diff(t)
     if not (np.all(np.isfinite(t)) and np.all(d > 0) and d[-2] > d[-1]):
-        return Threshold(control, math.inf, "none", math.inf, float(lzs[-1]), 0.0, grid)
+        return Threshold(control, math.inf, "none", math.inf, float(vs[-1]), 0.0, grid)
     p = math.log(d[-2] / d[-1], 4.0)
     p = round(p) if abs(p - round(p)) < 0.05 else p
     for j in range(3):
@@ -174,29 +263,34 @@ def threshold(
     )
 
 
-def solve_on(branch: Branch, grid, target: float, thr: Threshold | None, what: str, sign: int = 1):
+def solve_on(branch: Branch, walked: Threshold, target: float, what: str, sign: int = 1):
     """r_i, lambda_z on the scanned branch where the analytic load reaches target (brentq in
-    the bracketing cell; beyond the scan, a geometric tail towards the asymptote or lock).
+    the bracketing cell of the walked coordinate; beyond the scan, a geometric tail towards
+    the asymptote or lock). ``walked``: the walk's Threshold, kind "" where the walk reached
+    the target before any threshold.
 
     ``sign``: the direction the load moves from the branch's start (+1 for the voltage, the
     sign of P_i - P_o for the pressure), given by the caller: read off the grid's first load
     it was rounding for a target next to the start (Vbar^2 = 1e-18 below the unloaded
     state's computed 3.8e-16 marched the wrong way and found no state, probe 9b D2)."""
-    xs, lzs, loads = grid
+    walk = Chart(branch, walked.walked)
+    thr = walked if walked.kind else None
+    r_i, lz, loads = walked.grid
+    xs, lzs = walk.start(r_i, lz)  # the walked coordinate, the other one
     k = np.flatnonzero(sign * (loads - target) >= 0)
     if k.size and k[0] == 0:
         # the start's load is exactly the control's start value, so the target lies between
         # it and its computed value: within the rounding of the load, the start is the state
-        return float(xs[0]), float(lzs[0])
+        return float(r_i[0]), float(lz[0])
     if not k.size and thr is not None:
-        far = thr.lambda_i
+        far = walk.start(thr.lambda_i, thr.stretch)[0]
         tail = (
             xs[-1] * 4.0 ** (sign * np.arange(1, 21))
             if not 0 < far < math.inf
             else far - (far - xs[-1]) * 4.0 ** -np.arange(1, 21)
         )
-        pt = clean(branch.at(tail, lzs[-1]))
-        xs, lzs = np.append(xs[-1], tail), np.append(lzs[-1], pt["stretch"])
+        pt = clean(walk.at(tail, lzs[-1]))
+        xs, lzs = np.append(xs[-1], tail), np.append(lzs[-1], walk.split(pt)[1])
         loads = np.append(loads[-1], branch.value(pt))
         k = np.flatnonzero(sign * (loads - target) >= 0)
     if not k.size:
@@ -212,7 +306,7 @@ def solve_on(branch: Branch, grid, target: float, thr: Threshold | None, what: s
     guess = _guess(xs[k[0] - 1 : k[0] + 1], lzs[k[0] - 1 : k[0] + 1])
 
     def load(x):
-        return float(branch.value(clean(branch.at([x], guess(x))))[0]) - target
+        return float(branch.value(clean(walk.at([x], guess(x))))[0]) - target
 
     f = Remembered(load)  # Brent evaluates the checked ends again
     # the scan's own load at a: solved again there, the branch's start can land on the other
@@ -224,16 +318,17 @@ def solve_on(branch: Branch, grid, target: float, thr: Threshold | None, what: s
             f"{what} = {target:.12g} is within the accuracy of the threshold{near} of its"
             " branch (the load does not reach it in the scan's cell)"
         )
+    name = "lambda_i" if walk.by == "r_i" else "lambda_z"
     try:
         x = brent(f, *sorted((a, b)), BRANCH, named=False)
-    except ValueError as exc:  # a load NaN inside the cell: no lambda_z found there
+    except ValueError as exc:  # a load NaN inside the cell: no state found there
         err = ConvergenceError(
             f"{what} is not resolved: the branch's load is not finite inside its scan's cell"
-            f" lambda_i in [{min(a, b):.12g}, {max(a, b):.12g}] ({exc})"
+            f" {name} in [{min(a, b):.12g}, {max(a, b):.12g}] ({exc})"
         )
-        err.remedy = Remedy("")  # no tolerance finds a lambda_z there: not "loosen --rtol"
+        err.remedy = Remedy("")  # no tolerance finds a state there: not "loosen --rtol"
         raise err from None
-    return x, float(clean(branch.at([x], guess(x)))["stretch"][0])
+    return walk.state(x, float(walk.split(clean(walk.at([x], guess(x))))[1][0]))
 
 
 # -- preparation: the unloaded start, the pressure stage, the voltage branch -------------------
@@ -423,5 +518,5 @@ def _prepared(tube: Tube, rtol: float, nodes: int | None) -> _Prepared:
             )
             err.remedy = PRESSURE_BEYOND  # the load is the pressure, not a voltage
             raise err
-        loaded = solve_on(branch, thr.grid, target, thr if thr.kind else None, "P_i", sign)
+        loaded = solve_on(branch, thr, target, "P_i", sign)
     return _Prepared(wall, (x0, lz0), loaded)

@@ -117,7 +117,7 @@ THRESHOLD = Tolerance(1e-14, 1e-15, 100, "absolute")
 SECOND = Tolerance(1e-15, 1e-15, 100)
 #: a point of a base-state branch (lambda_z, r_i: positive), to the last bits
 BRANCH = Tolerance(1e-16, 4 * _EPS, 300, "relative")
-#: lambda_z balancing the axial force on a branch
+#: lambda_z balancing the axial force on a branch (r_i, on a branch walked in lambda_z)
 BRANCH_STRETCH = Tolerance(1e-16, 4 * _EPS, 200, "relative")
 
 
