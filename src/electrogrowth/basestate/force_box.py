@@ -9,6 +9,7 @@ for lambda_z = 254.6; its refusal blamed a voltage never given, and F = 250, lam
 from __future__ import annotations
 
 import dataclasses
+import math
 
 from ..errors import BaseStateError, ConvergenceError, ParameterError
 from ..model.params import SUPPORTED, SUPPORTED_WHY
@@ -22,17 +23,46 @@ def check_solved_stretch(tube, stretch: float) -> None:
     """Refuse the axial force of ``tube`` (force control) if its solved ``stretch`` puts a
     layer's elastic axial stretch lambda_z / g_z outside the box (graded layers unchecked,
     as for a prescribed stretch)."""
+    outside = _outside(tube, stretch)
+    if outside is not None:
+        k, elastic = outside
+        lo, hi = SUPPORTED[5:7]
+        raise ParameterError(
+            f"axial force F = {tube.axial_force:.6g} gives layers[{k}] an elastic axial"
+            f" stretch lambda_z / g_z = {elastic:.6g}, outside the supported range"
+            f" {lo:g} to {hi:g}: {SUPPORTED_WHY}"
+        )
+
+
+def _outside(tube, stretch: float):
+    """(k, lambda_z / g_z) of the first constant-growth layer whose elastic axial stretch
+    at ``stretch`` is outside the box, or None."""
     lo, hi = SUPPORTED[5:7]
     for k, layer in enumerate(tube.layers, 1):
-        if layer.graded:
-            continue
-        elastic = stretch / layer.growth[2]
-        if not lo <= elastic <= hi:
-            raise ParameterError(
-                f"axial force F = {tube.axial_force:.6g} gives layers[{k}] an elastic axial"
-                f" stretch lambda_z / g_z = {elastic:.6g}, outside the supported range"
-                f" {lo:g} to {hi:g}: {SUPPORTED_WHY}"
-            )
+        if not layer.graded and not lo <= stretch / layer.growth[2] <= hi:
+            return k, stretch / layer.growth[2]
+    return None
+
+
+def load_in_box(tube, thr) -> float | None:
+    """Where the loading branch of a force-controlled ``tube`` (its walked Threshold) leaves
+    the box: the control's value (Vbar, or P_i) at the last walked state whose elastic axial
+    stretches are all inside it, where a later one (or the threshold's own) is outside;
+    None where the branch stays inside up to its threshold, or lambda_z is prescribed. A
+    voltage march of a charged three-layer tube pulled by a compressive force ran to its
+    limit point at lambda_z = 76.4 and reported it, status ok, while every state past
+    Vbar ~ 4e4 (lambda_z > 50) is refused (check round 17, D1): its march ends here."""
+    if tube.control != "force" or not thr.grid:
+        return None
+    _, stretches, loads = thr.grid
+    out = [j for j, lz in enumerate(stretches) if _outside(tube, lz) is not None]
+    if not out and _outside(tube, thr.stretch) is None:
+        return None
+    last = (out[0] if out else len(loads)) - 1
+    if last < 0:  # the branch's start itself: the tube is refused where it is built
+        return None
+    load = float(loads[last])
+    return math.sqrt(max(load, 0.0)) if thr.control == "voltage" else load
 
 
 def check_force_when_lost(tube, solve) -> None:

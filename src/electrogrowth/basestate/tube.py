@@ -16,6 +16,7 @@ import numpy as np
 from .._types import State
 from ..errors import BaseStateError, ParameterError
 from ..model.layers import Tube
+from . import force_box
 from .neo_hookean import nh_asymptote, nh_voltage
 from .thresholds import Threshold
 from .uniform import solve_uniform
@@ -122,6 +123,15 @@ def threshold(tube: Tube, control: str = "voltage", *, rtol: float = 1e-12) -> T
     from .layered import layered_threshold
 
     return layered_threshold(tube, control, rtol=rtol)
+
+
+def load_in_box(tube: Tube, control: str, *, rtol: float = 1e-12) -> float | None:
+    """Where the ``control``'s loading branch of a force-controlled tube leaves the supported
+    box of the elastic axial stretch before its threshold (:func:`.force_box.load_in_box`):
+    the value the control's march ends at; None where it does not (or lambda_z is given)."""
+    if tube.control != "force":
+        return None
+    return force_box.load_in_box(tube, threshold(tube, control, rtol=rtol))
 
 
 def free_stretch(tube: Tube, *, rtol: float = 1e-12) -> float:

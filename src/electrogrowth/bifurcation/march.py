@@ -57,7 +57,7 @@ from ..incremental.targets import ImpedanceTarget, Sample, natural_family, row_f
 from ..model.controls import KINDS
 from ..model.layers import Tube
 from .along import RootRows, Signed, TubeAt
-from .state_loss import loss_at_end
+from .state_loss import box_note, loss_at_end
 from .state_loss import threshold_between as _threshold_between
 
 #: the mode march's step control: 0.4 % of the scale doubling up to 5 %, not below 1e-4
@@ -265,6 +265,7 @@ def first_bifurcations(
             last = step.x if film else step.end
             raise NoBifurcationFound(
                 f"no mode bifurcates for {solve_for} between {x0:g} and {last:g}"
+                + box_note(params, solve_for, side, step.end)
             )
     return MarchResult(found[:top], threshold)
 

@@ -30,12 +30,13 @@ import math
 import numpy as np
 
 from ..basestate.thresholds import LockedSearch, Threshold
-from ..basestate.tube import solve_base_state, threshold
+from ..basestate.tube import load_in_box, solve_base_state, threshold
 from ..continuation.events import EDGE, FULL, LOCK, THRESHOLD, bisect, brent
 from ..continuation.events import threshold_between as _lost_between
 from ..errors import NEAR_LOCK, BaseStateError, ConvergenceError, ParameterError, Remedy
 from ..model.controls import parse_control
 from ..model.layers import Tube
+from ..model.params import SUPPORTED
 from .along import LoadMargin, TubeAt, bounded_energy, clear_of_lock, has_lock
 
 #: the fates of a point where no state was found (_fate)
@@ -48,10 +49,31 @@ def own_threshold(params: Tube, solve_for: str, side: str | None) -> Threshold |
     """The threshold of the control's own branch, where its march's path ends
     (model/controls.py): the voltage's, or the pressure's of an inflation (side not
     "compression"); None for any other control."""
+    kind = _own_kind(solve_for, side)
+    if kind is None or load_in_box(params, kind) is not None:
+        return None  # none, or the path ends where lambda_z leaves the box: no loss there
+    return threshold(params, kind)
+
+
+def _own_kind(solve_for: str, side: str | None) -> str | None:
+    """The kind of the control's own branch ("voltage", "pressure" of an inflation)."""
     kind = parse_control(solve_for).kind
-    if kind == "voltage" or (kind == "pressure" and side != "compression"):
-        return threshold(params, kind)
-    return None
+    return kind if kind == "voltage" or (kind == "pressure" and side != "compression") else None
+
+
+def box_note(params: Tube, solve_for: str, side: str | None, end: float) -> str:
+    """Why a march's path ended at ``end`` before its branch's threshold: a force-controlled
+    tube's lambda_z leaves the supported box there (model/controls.py paths); "" where the
+    path ends elsewhere."""
+    kind = _own_kind(solve_for, side)
+    box = None if kind is None else load_in_box(params, kind)
+    if box is None or box != end:
+        return ""
+    lo, hi = SUPPORTED[5:7]
+    return (
+        f" (its {kind} threshold lies past {solve_for} = {box:.6g}, where a layer's elastic"
+        f" axial stretch lambda_z / g_z leaves the supported range {lo:g} to {hi:g})"
+    )
 
 
 def held_loads(at: TubeAt, params: Tube, solve_for: str) -> LoadMargin | None:

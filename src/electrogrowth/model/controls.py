@@ -46,9 +46,10 @@ class ControlKind:
     ``field`` is the Tube field it sets (None: a layer's growth, set through its layer and
     components); ``default_side`` the side a march takes (None: the control only
     increases, and a side is refused); ``path(tube, up, base)`` the march's (start, end,
-    scale), given ``base``, the base-state door (``free_stretch`` and ``threshold``: the
-    model itself solves nothing); ``words``, ``symbol`` (mathtext) and ``unit`` name it on
-    an axis, ``help`` on the command line."""
+    scale), given ``base``, the base-state door (``free_stretch``, ``threshold`` and
+    ``load_in_box``, where a force-controlled tube's lambda_z leaves the supported box
+    first: the model itself solves nothing); ``words``, ``symbol`` (mathtext) and ``unit``
+    name it on an axis, ``help`` on the command line."""
 
     name: str
     field: str | None
@@ -96,10 +97,11 @@ def _voltage_path(tube, up, base):
     march sampled a mode every 0.25 and stepped over an unstable window [0.0425, 0.0528]
     (probe round 8a)."""
     thr = base.threshold(tube, "voltage").value
+    box = base.load_in_box(tube, "voltage")  # lambda_z leaves the box first (force control)
     if math.isfinite(thr):
-        return 0.0, thr * (1 - 1e-12), thr
+        return 0.0, thr * (1 - 1e-12) if box is None else box, thr
     scale = voltage_scale(tube)
-    return 0.0, 1e3 * scale, scale
+    return 0.0, 1e3 * scale if box is None else min(box, 1e3 * scale), scale
 
 
 def voltage_scale(tube) -> float:
@@ -142,7 +144,9 @@ def _pressure_path(tube, up, base):
     if not up:
         return start, start - 20.0 * scale, scale
     thr = base.threshold(tube, "pressure").value
-    return start, thr * (1 - 1e-12) if math.isfinite(thr) else start + 50.0 * scale, scale
+    end = thr * (1 - 1e-12) if math.isfinite(thr) else start + 50.0 * scale
+    box = base.load_in_box(tube, "pressure")  # lambda_z leaves the box first (force control)
+    return start, end if box is None else min(box, end), scale
 
 
 def _force_path(tube, up, base):
