@@ -105,6 +105,22 @@ def test_a_step_of_unknown_length_shows_the_time_it_has_taken(capsys, monkeypatc
     assert "solving mode (0, 1) by collocation: done in 2." in err
 
 
+def test_a_step_with_a_delay_is_shown_only_once_it_takes_that_long(capsys, monkeypatch):
+    """A single mode's march (`critical --mode`): milliseconds mostly, nothing shown; but
+    minutes for a mode that never bifurcates on a stiffening tube's voltage path (1e3
+    scales, ~2e4 steps): its elapsed time from the delay on, and how long it took."""
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
+    args = argparse.Namespace(quiet=False)
+    with stage(args, "solving mode (6, 2) by impedance", tick=True, delay=1.0):
+        time.sleep(0.1)
+    assert capsys.readouterr().err == ""
+    with stage(args, "solving mode (6, 2) by impedance", tick=True, delay=1.0):
+        time.sleep(2.3)
+    err = capsys.readouterr().err
+    assert "electrogrowth: solving mode (6, 2) by impedance ... 00:0" in err
+    assert "solving mode (6, 2) by impedance: done in 2." in err
+
+
 def test_pattern_names_its_stages_on_a_terminal(tmp_path, capsys, monkeypatch):
     argv = [
         "pattern", "--solve-for", "growth", "--outer-radius", "1.4", "--length", "1",

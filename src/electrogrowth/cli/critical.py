@@ -24,7 +24,7 @@ from .options import (
     mode_from_args,
     scan_options_from_args,
 )
-from .progress import add_quiet_option, bar, stage
+from .progress import LATE_NOTICE, add_quiet_option, bar, stage
 from .report import NAMED, edge_warning, physical_record, warn
 from .tube_input import add_any_tube_options, control_of
 
@@ -97,8 +97,11 @@ def run_critical(args) -> int:
 
     if mode is not None:
         m, n, family = mode
-        slow = args.method == "collocation"  # tens of seconds: say what is going on
-        with stage(args if slow else None, f"solving mode ({m}, {n}) by collocation", tick=True):
+        # collocation takes tens of seconds: say so at once; the kernel's march mostly
+        # milliseconds, but minutes for a mode that never bifurcates on a long path (a
+        # stiffening tube's voltage to 1e3 scales): shown from 2 s on
+        delay = 0.0 if args.method == "collocation" else LATE_NOTICE
+        with stage(args, f"solving mode ({m}, {n}) by {args.method}", tick=True, delay=delay):
             crit = critical_value(
                 params,
                 m,

@@ -39,31 +39,42 @@ def bar(args, total: int, desc: str, unit: str = "pt"):
     return tqdm(total=total, desc=desc, unit=unit, file=sys.stderr, dynamic_ncols=True)
 
 
+#: a step of unknown length shown only once it has taken this long (seconds)
+LATE_NOTICE = 2.0
+
+
 @contextlib.contextmanager
-def stage(args, text: str, *, tick: bool = False, done: bool = True) -> Iterator[None]:
+def stage(
+    args, text: str, *, tick: bool = False, done: bool = True, delay: float = 0.0
+) -> Iterator[None]:
     """``electrogrowth: <text> ...`` before a step and (``done``) its duration after it;
     ``tick``: the time elapsed so far, updated every second, for a step of unknown length
-    that shows nothing else (a single collocation solve)."""
+    that shows nothing else (a single collocation solve); with a ``delay``, neither is
+    shown for a step done sooner (a single mode's march: mostly milliseconds)."""
     if not enabled(args):
         yield
         return
     t = time.perf_counter()
     if tick:
-        with _ticking(f"electrogrowth: {text} ..."):
+        with _ticking(f"electrogrowth: {text} ...", delay):
             yield
     else:
         print(f"electrogrowth: {text} ...", file=sys.stderr, flush=True)
         yield
-    if done:
-        print(f"electrogrowth: {text}: done in {time.perf_counter() - t:.1f} s", file=sys.stderr)
+    took = time.perf_counter() - t
+    if done and took >= delay:
+        print(f"electrogrowth: {text}: done in {took:.1f} s", file=sys.stderr)
 
 
 @contextlib.contextmanager
-def _ticking(text: str) -> Iterator[None]:
-    """``text`` and the elapsed time, redrawn every second by a helper thread."""
+def _ticking(text: str, delay: float = 0.0) -> Iterator[None]:
+    """``text`` and the elapsed time, redrawn every second by a helper thread (shown from
+    ``delay`` seconds on)."""
     from tqdm import tqdm
 
-    line = tqdm(desc=text, bar_format="{desc} {elapsed}", file=sys.stderr, leave=False)
+    line = tqdm(
+        desc=text, bar_format="{desc} {elapsed}", file=sys.stderr, leave=False, delay=delay
+    )
     done = threading.Event()
 
     def redraw():
