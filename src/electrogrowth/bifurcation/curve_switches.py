@@ -80,6 +80,8 @@ class Located(NamedTuple):
     after: float
     x_error: float = math.nan
     value_error: float = math.nan
+    #: a crossing by Brent's method inside the interval, refined once it is confirmed
+    refine: bool = False
 
 
 class _Locator:
@@ -166,6 +168,8 @@ class _Locator:
                 and self.sense * (check.value - first) < -1e-9 * max(1.0, abs(first))
             ):
                 return self._split(a, check, b, depth)
+        if found.refine:  # confirmed: no third mode first there
+            found = self._refined(a, b, found, *sorted((a.x, b.x)))
         return _switch_at(a, b, found)
 
     def edge(self, a: CurvePoint, b: CurvePoint, depth: int):
@@ -286,8 +290,7 @@ class _Locator:
             va, vb = self.value_of(a, before), self.value_of(b, after)
             error = max(self.error_of(a, before), self.error_of(b, after))
             return Located(x, va, vb, SWITCH.at(x) + abs(step), error)
-        lo, hi = sorted((a.x, b.x))
-        return self._refined(a, b, self._crossed(a, b, x, d, SWITCH.at(x)), lo, hi)
+        return self._crossed(a, b, x, d, SWITCH.at(x))._replace(refine=True)
 
     def _refined(self, a, b, found: Located, lo: float, hi: float) -> Located:
         """A crossing of two modes whose x_error is above REFINE_ABOVE (relative): their
