@@ -17,8 +17,9 @@ Brent's tolerance plus (e_A + e_B) / |d'| (the two values' own estimates move th
 that much; between nearly parallel neighbouring folds, far more than the tolerance: check
 round 16c), d' the secant of the values already solved nearest to x on either side above
 that noise; the value's, the larger estimate plus the values' slope times the x error. A
-crossing of two modes whose x error is above REFINE_ABOVE is refined: the two modes solved
-again at the finest rtol either side of x, and the root of the line through them. A
+crossing of two modes whose x error is above REFINE_ABOVE is refined once the scan there
+confirms it: the two modes solved again at the finest rtol either side of x, and the root
+of the line through them. A
 bisection's change: its last bracket, and the value's own estimate.
 
 Between a grid point whose scan failed (the tube already unstable at the control's start,
