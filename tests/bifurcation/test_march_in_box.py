@@ -4,7 +4,7 @@ stretch (check round 17, D1).
 A charged three-layer tube (an energy text with I4 and I5 terms inside two neo-Hookean
 layers) pulled by a compressive end force with closed ends: its voltage branch runs to a
 limit point at Vbar = 45869.83 (an independent V(r_i) under force control: 2e-14), where
-lambda_z = 76.4, while every state past Vbar ~ 2.3e4 has a layer's elastic axial stretch
+lambda_z = 76.4, while every state past Vbar = 23895 has a layer's elastic axial stretch
 above 50 and ``solve_base_state`` refuses it (model/params.SUPPORTED). The voltage march of
 mode (6, 2) ran through those states and returned that limit point, kind "threshold", status
 ok, estimate 0. Its path now ends at the last walked state inside the box

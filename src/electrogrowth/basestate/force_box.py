@@ -51,7 +51,8 @@ def load_in_box(tube, thr) -> float | None:
     None where the branch stays inside up to its threshold, or lambda_z is prescribed. A
     voltage march of a charged three-layer tube pulled by a compressive force ran to its
     limit point at lambda_z = 76.4 and reported it, status ok, while every state past
-    Vbar ~ 4e4 (lambda_z > 50) is refused (check round 17, D1): its march ends here."""
+    Vbar = 23895 (an elastic axial stretch above 50) is refused (check round 17, D1): its
+    march ends here, at the last walked state before it (22801.7)."""
     if tube.control != "force" or not thr.grid:
         return None
     _, stretches, loads = thr.grid
