@@ -71,4 +71,4 @@ def test_a_tube_inside_the_box_keeps_its_path():
 def test_mode_6_2_reports_no_threshold_outside_the_box():
     with pytest.raises(NoBifurcationFound, match="supported range 0.02 to 50") as e:
         critical_value(TUBE, 6, 2, "voltage")  # was kind threshold 45869.83, status ok
-    assert "voltage threshold lies past" in str(e.value)
+    assert "voltage threshold lies beyond" in str(e.value)

@@ -71,8 +71,9 @@ def box_note(params: Tube, solve_for: str, side: str | None, end: float) -> str:
         return ""
     lo, hi = SUPPORTED[5:7]
     return (
-        f" (its {kind} threshold lies past {solve_for} = {box:.6g}, where a layer's elastic"
-        f" axial stretch lambda_z / g_z leaves the supported range {lo:g} to {hi:g})"
+        f" (its {kind} threshold lies beyond the supported range {lo:g} to {hi:g} of the"
+        f" elastic axial stretch lambda_z / g_z, which its branch leaves past {solve_for} ="
+        f" {box:.6g})"
     )
 
 
