@@ -33,12 +33,17 @@ from __future__ import annotations
 
 import dataclasses
 
-from ..errors import ConvergenceError, NoBifurcationFound
+import numpy as np
+
+from ..basestate.tube import solve_base_state
+from ..errors import ConvergenceError, ElectrogrowthError, NoBifurcationFound
+from ..incremental.modes import row_family
 from ..incremental.targets import Family
 from ..model.layers import Tube
 from ..outcomes import NO_MODE, Kind, Status
 from .beyond import unstable_beyond
-from .critical import CriticalPoint, no_bifurcation_remedy
+from .certify import kernel_signs
+from .critical import CriticalPoint, critical_value, no_bifurcation_remedy
 from .directions import past_surface
 from .grid_scan import finished, scan_once
 from .march import ModeValue
@@ -47,7 +52,7 @@ from .options import EVERY_M, M_CAP, N_CAP, ScanOptions
 from .options import TOP_MAX as TOP_MAX  # re-exported: the CLI checks --top against it
 from .problem import Problem, as_problem
 from .runners import with_finished_runners
-from .scan_grid import scan_grid
+from .scan_grid import scan_grid, stable_signs
 from .scan_record import ScanResult
 from .surface import short_wave_limit
 
@@ -391,6 +396,18 @@ def _with_short_waves(
     c = result.critical
     if _before(c, limit.value, side):
         return result
+    stepped = _stepped_over(params, solve_for, side, result, options, rtol, limit)
+    if stepped:  # scanned modes whose roots the march stepped over come first
+        first, *more = stepped
+        finite = (c,) if _finite(c) else ()
+        found = [
+            ModeValue(x.m, x.n, x.value, x.family, x.error_estimate) for x in (*more, *finite)
+        ]
+        sense = -1.0 if side == "compression" else 1.0
+        runners = sorted(found + list(result.runners_up), key=lambda r: sense * r.value)
+        return dataclasses.replace(
+            result, critical=first, runners_up=tuple(runners[: options.top - 1])
+        )
     crit = _surface_point(limit, side)
     if turned:  # a mode beyond is past its root at the limit, yet no root was found before it
         crit = dataclasses.replace(crit, status=Status.INACCURATE, **_UNFOUND)
@@ -405,6 +422,45 @@ def _with_short_waves(
         surface_instability=True,
         runners_up=(finite + result.runners_up)[: options.top - 1],
     )
+
+
+#: at most this many scanned modes that changed sign before the limit are solved alone
+STEPPED_OVER = 16
+
+
+def _finite(c: CriticalPoint) -> bool:
+    return c.kind == Kind.BIFURCATION
+
+
+def _stepped_over(params, solve_for, side, result: ScanResult, options, rtol, limit):
+    """The scanned modes whose first roots come before the limit although the scan's march
+    did not find them, earliest first (CriticalPoints). The march samples a scan's modes
+    every 0.25 of the control's scale; a mode unstable in a narrower window (two
+    interfaces of a thin stiff layer: one turns the target's sign, the other back) is
+    stepped over, and the limit was the answer, status ok (check round 18, D1 and D2:
+    (0, 1) 1e-3 and 1e-4 before an interface's limit). Every mode scanned mode by mode is
+    read just before the limit (as ``certify`` reads them before a critical value); those
+    past their roots (in grid order, at most STEPPED_OVER) are solved alone, by the
+    single-mode march that samples at every step."""
+    sense = -1.0 if side == "compression" else 1.0
+    gap = 10.0 * max(limit.error_estimate or 0.0, 1e-13 * max(1.0, abs(limit.value)))
+    families = (options.prismatic, options.torsional)
+    m_range = (result.m_range[0], min(result.m_range[1], max(result.m_range[0], EVERY_M)))
+    modes = scan_grid(m_range, result.n_range, False, families)
+    state = solve_base_state(params.at(solve_for, limit.value - sense * gap))
+    f = kernel_signs(state, modes) * stable_signs(m_range, result.n_range, False, families)
+    found = []
+    for i in np.flatnonzero(~(f > 0))[:STEPPED_OVER]:
+        m, n = (int(x) for x in modes[i, :2])
+        try:
+            c = critical_value(
+                params, m, n, solve_for, family=row_family(modes[i]), side=side, rtol=rtol
+            )
+        except ElectrogrowthError:  # no root after all (the sign's own doubt): not first
+            continue
+        if _before(c, limit.value, side):
+            found.append(c)
+    return sorted(found, key=lambda c: sense * c.value)
 
 
 _UNFOUND = {
