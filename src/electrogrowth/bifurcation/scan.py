@@ -399,10 +399,8 @@ def _with_short_waves(
     stepped = _stepped_over(params, solve_for, side, result, options, rtol, limit)
     if stepped:  # scanned modes whose roots the march stepped over come first
         first, *more = stepped
-        finite = (c,) if _finite(c) else ()
-        found = [
-            ModeValue(x.m, x.n, x.value, x.family, x.error_estimate) for x in (*more, *finite)
-        ]
+        more += [c] if _finite(c) else []  # the scan's own finite mode, after them
+        found = [ModeValue(x.m, x.n, x.value, x.family, x.error_estimate) for x in more]
         sense = -1.0 if side == "compression" else 1.0
         runners = sorted(found + list(result.runners_up), key=lambda r: sense * r.value)
         return dataclasses.replace(
