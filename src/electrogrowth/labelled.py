@@ -311,6 +311,26 @@ def _critical_attrs(solve_for: str) -> dict:
     return {"units": units, "long_name": f"critical {long_name}"}
 
 
+def _switch_columns(curve) -> dict:
+    """The located switches' numbers along dimension switch: x, the critical value, and
+    their error estimates."""
+    x_attrs, v_attrs = _attrs(curve.along), _critical_attrs(curve.solve_for)
+    columns = (
+        ("x", x_attrs, f"{curve.along} at a mode switch"),
+        ("value", v_attrs, "critical value at the switch"),
+        ("x_error", x_attrs, f"error estimate of {curve.along} there"),
+        ("value_error", v_attrs, "error estimate of the critical value at the switch"),
+    )
+    return {
+        f"switch_{field}": (
+            "switch",
+            np.array([getattr(s, field) for s in curve.switches], float),
+            {**attrs, "long_name": name},
+        )
+        for field, attrs, name in columns
+    }
+
+
 def _ends(curve) -> dict:
     """The located branch ends of a curve: x, the one-sided values, the modes either side."""
     ends = getattr(curve, "ends", ())
@@ -395,29 +415,7 @@ def curve_dataset(curve):
             ),
             "status": ("point", np.asarray(curve.status, str), _attrs("status")),
             **_crease_points(curve),
-            "switch_x": (
-                "switch",
-                np.array([s.x for s in curve.switches], float),
-                {**_attrs(curve.along), "long_name": f"{curve.along} at a mode switch"},
-            ),
-            "switch_value": (
-                "switch",
-                np.array([s.value for s in curve.switches], float),
-                {**_critical_attrs(curve.solve_for), "long_name": "critical value at the switch"},
-            ),
-            "switch_x_error": (
-                "switch",
-                np.array([s.x_error for s in curve.switches], float),
-                {**_attrs(curve.along), "long_name": f"error estimate of {curve.along} there"},
-            ),
-            "switch_value_error": (
-                "switch",
-                np.array([s.value_error for s in curve.switches], float),
-                {
-                    **_critical_attrs(curve.solve_for),
-                    "long_name": "error estimate of the critical value at the switch",
-                },
-            ),
+            **_switch_columns(curve),
             "switch_mode_before": (
                 ("switch", "mode"),
                 np.array([s.mode_before for s in curve.switches], int).reshape(-1, 2),
