@@ -448,18 +448,18 @@ def _stepped_over(params, solve_for, side, result: ScanResult, options, rtol, li
     families = (options.prismatic, options.torsional)
     m_range = (result.m_range[0], min(result.m_range[1], max(result.m_range[0], EVERY_M)))
     modes = scan_grid(m_range, result.n_range, False, families)
-    try:  # the limit's own march solved states there; one that fails adds no check
+    stable = stable_signs(m_range, result.n_range, False, families)
+    try:  # a state or a reading that fails there adds no check (the scan's result stands)
         state = solve_base_state(params.at(solve_for, limit.value - sense * gap))
+        # read as the march reads its modes (loosely), the modes that look past their roots
+        # then as certify reads them: a full sign reading costs a third of a surface scan
+        loose = impedance_targets(state, modes, rtol=LOOSE_READING) * stable
+        doubt = np.flatnonzero(~(loose > 0))
+        if not doubt.size:
+            return []
+        past = doubt[~(kernel_signs(state, modes[doubt]) * stable[doubt] > 0)]
     except ElectrogrowthError:
         return []
-    stable = stable_signs(m_range, result.n_range, False, families)
-    # read as the march reads its modes (loosely), the modes that look past their roots
-    # then as certify reads them: a full sign reading costs a third of a surface scan
-    loose = impedance_targets(state, modes, rtol=LOOSE_READING) * stable
-    doubt = np.flatnonzero(~(loose > 0))
-    if not doubt.size:
-        return []
-    past = doubt[~(kernel_signs(state, modes[doubt]) * stable[doubt] > 0)]
     found = []
     for i in past[:STEPPED_OVER]:
         m, n = (int(x) for x in modes[i, :2])
