@@ -398,27 +398,21 @@ def _with_short_waves(
         return result
     stepped = _stepped_over(params, solve_for, side, result, options, rtol, limit)
     if stepped:  # scanned modes whose roots the march stepped over come first
-        first, *more = stepped
-        more += [c] if _finite(c) else []  # the scan's own finite mode, after them
-        found = [ModeValue(x.m, x.n, x.value, x.family, x.error_estimate) for x in more]
+        first, *more = stepped  # then the scan's own finite mode, and its runners-up
+        found = [r for x in (*more, c) for r in _as_runner(x)] + list(result.runners_up)
         sense = -1.0 if side == "compression" else 1.0
-        runners = sorted(found + list(result.runners_up), key=lambda r: sense * r.value)
+        runners = sorted(found, key=lambda r: sense * r.value)
         return dataclasses.replace(
             result, critical=first, runners_up=tuple(runners[: options.top - 1])
         )
     crit = _surface_point(limit, side)
     if turned:  # a mode beyond is past its root at the limit, yet no root was found before it
         crit = dataclasses.replace(crit, status=Status.INACCURATE, **_UNFOUND)
-    finite = (
-        (ModeValue(c.m, c.n, c.value, c.family, c.error_estimate),)
-        if c.kind == Kind.BIFURCATION
-        else ()
-    )
     return dataclasses.replace(
         result,
         critical=crit,
         surface_instability=True,
-        runners_up=(finite + result.runners_up)[: options.top - 1],
+        runners_up=(_as_runner(c) + result.runners_up)[: options.top - 1],
     )
 
 
@@ -429,8 +423,11 @@ STEPPED_OVER = 16
 LOOSE_READING = 1e-5
 
 
-def _finite(c: CriticalPoint) -> bool:
-    return c.kind == Kind.BIFURCATION
+def _as_runner(c: CriticalPoint) -> tuple[ModeValue, ...]:
+    """``c`` as a runner-up of a scan (none where it is no finite mode)."""
+    if c.kind != Kind.BIFURCATION:
+        return ()
+    return (ModeValue(c.m, c.n, c.value, c.family, c.error_estimate),)
 
 
 def _stepped_over(params, solve_for, side, result: ScanResult, options, rtol, limit):
