@@ -50,3 +50,15 @@ def test_the_default_scan_of_a_thin_stiff_middle_layer():
     assert c.value == pytest.approx(2.243644972217, rel=2e-11)  # collocation's bracket
     assert s.short_wave_limit == pytest.approx(2.2446795607079726, rel=1e-13)
     assert (s.runners_up[0].m, s.runners_up[0].n) == (1, 1)
+
+
+def test_without_the_surface_the_window_is_found_all_the_same():
+    """Check round 18: with ``surface=False`` the limit is no result, but it is where the
+    window lies; was "no mode bifurcates for growth[2] between 1 and 6"."""
+    options = ScanOptions(m_range=(0, 2), n_range=(1, 3), extend=False, surface=False)
+    s = scan_modes(_tube(1.3, 1.4, 2.0, 0.5), "growth[2]", options=options)
+    c = s.critical
+    assert (c.kind, c.m, c.n, c.status) == ("bifurcation", 0, 1, "ok")
+    assert c.value == pytest.approx(2.149166089445, rel=1e-11)  # collocation's bracket
+    assert not s.surface_instability
+    assert [(r.m, r.n) for r in s.runners_up][:2] == [(1, 1), (0, 2)]

@@ -121,6 +121,8 @@ def scan_modes(
         result, at_cap, limit = _no_scanned_mode(params, solve_for, side, options, rtol, exc)
     if options.surface:
         result = _with_short_waves(params, solve_for, side, result, options, rtol, at_cap, limit)
+    else:
+        result = _windows_without_surface(params, solve_for, side, result, options, rtol, limit)
     # the runners-up were the march's roots (max(rtol, 1e-9)): solved at rtol (runners.py)
     return _capped(with_finished_runners(params, solve_for, side, rtol, result))
 
@@ -366,6 +368,8 @@ def _no_scanned_mode(params, solve_for, side, options: ScanOptions, rtol, exc):
     if not options.surface:
         result, _ = _folds_before_limit(params, solve_for, side, result, options, rtol, limit)
         if result.critical.kind != Kind.BIFURCATION:
+            result = _with_windows(params, solve_for, side, result, options, rtol, limit)
+        if result is None:
             raise exc
         result = dataclasses.replace(
             result, surface_instability=False, short_wave_limit=None, short_wave_error=None
@@ -396,15 +400,9 @@ def _with_short_waves(
     c = result.critical
     if _before(c, limit.value, side):
         return result
-    stepped = _stepped_over(params, solve_for, side, result, options, rtol, limit)
-    if stepped:  # scanned modes whose roots the march stepped over come first
-        first, *more = stepped  # then the scan's own finite mode, and its runners-up
-        found = [r for x in (*more, c) for r in _as_runner(x)] + list(result.runners_up)
-        sense = -1.0 if side == "compression" else 1.0
-        runners = sorted(found, key=lambda r: sense * r.value)
-        return dataclasses.replace(
-            result, critical=first, runners_up=tuple(runners[: options.top - 1])
-        )
+    windowed = _with_windows(params, solve_for, side, result, options, rtol, limit)
+    if windowed is not None:
+        return windowed
     crit = _surface_point(limit, side)
     if turned:  # a mode beyond is past its root at the limit, yet no root was found before it
         crit = dataclasses.replace(crit, status=Status.INACCURATE, **_UNFOUND)
@@ -421,6 +419,46 @@ STEPPED_OVER = 16
 #: the kernel's tolerance of a first reading of every scanned mode at the limit (the
 #: march's own loose samples': an ordinary tube's targets to ~1e-5)
 LOOSE_READING = 1e-5
+
+
+def _windows_without_surface(params, solve_for, side, result: ScanResult, options, rtol, limit):
+    """``result`` of a scan without the short-wave limit as a result, with the windows of
+    its modes before the limit all the same: they lie just before it (_stepped_over; check
+    round 18: "no mode bifurcates" where (0, 1) does, 1e-4 before an interface's limit).
+    The limit is computed only where a face is past it at the scan's finite mode (as
+    _with_short_waves decides), and marched only as far as that mode; where it cannot be
+    computed the result stands, as the window check adds no check then."""
+    c = result.critical
+    if c.kind == Kind.BIFURCATION and not past_surface(c.params):
+        return result
+    if limit is None:
+        until = c.value if c.kind == Kind.BIFURCATION else None
+        try:
+            limit = short_wave_limit(
+                params, solve_for, side=side, rtol=rtol, until=until, estimate=False
+            )
+        except ElectrogrowthError:
+            return result
+    if limit.kind != Kind.SURFACE or _before(c, limit.value, side):
+        return result
+    windowed = _with_windows(params, solve_for, side, result, options, rtol, limit)
+    return result if windowed is None else windowed
+
+
+def _with_windows(params, solve_for, side, result: ScanResult, options, rtol, limit):
+    """``result`` led by the scanned modes whose roots before ``limit`` the march stepped
+    over (:func:`_stepped_over`), its own finite mode among the runners-up; None where
+    there are none."""
+    stepped = _stepped_over(params, solve_for, side, result, options, rtol, limit)
+    if not stepped:
+        return None
+    first, *more = stepped
+    found = [r for x in (*more, result.critical) for r in _as_runner(x)]
+    sense = -1.0 if side == "compression" else 1.0
+    runners = sorted(found + list(result.runners_up), key=lambda r: sense * r.value)
+    return dataclasses.replace(
+        result, critical=first, runners_up=tuple(runners[: options.top - 1])
+    )
 
 
 def _as_runner(c: CriticalPoint) -> tuple[ModeValue, ...]:
@@ -441,7 +479,8 @@ def _stepped_over(params, solve_for, side, result: ScanResult, options, rtol, li
     past their roots (in grid order, at most STEPPED_OVER) are solved alone, by the
     single-mode march that samples at every step."""
     sense = -1.0 if side == "compression" else 1.0
-    gap = 10.0 * max(limit.error_estimate or 0.0, 1e-13 * max(1.0, abs(limit.value)))
+    error = limit.error_estimate if np.isfinite(limit.error_estimate) else 0.0  # NaN: none
+    gap = 10.0 * max(error, 1e-13 * max(1.0, abs(limit.value)))
     families = (options.prismatic, options.torsional)
     m_range = (result.m_range[0], min(result.m_range[1], max(result.m_range[0], EVERY_M)))
     modes = scan_grid(m_range, result.n_range, False, families)
