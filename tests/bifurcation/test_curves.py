@@ -15,6 +15,7 @@ from electrogrowth.bifurcation.curves import Switch, critical_curve
 from electrogrowth.bifurcation.scan import ScanOptions, scan_modes
 from electrogrowth.cli.curve import configure_curve, run_curve
 from electrogrowth.continuation.events import MODE_EDGE, SWITCH
+from electrogrowth.digits import supported
 from electrogrowth.errors import NoBifurcationFound, ParameterError
 from electrogrowth.figures.plots import plot_curve
 from electrogrowth.model.layers import Tube
@@ -378,6 +379,28 @@ def test_the_error_of_a_switch_between_nearly_parallel_modes(monkeypatch):
     monkeypatch.setattr(curve_switches, "REFINE_ABOVE", math.inf)  # the default rtol's
     (sw,) = _curve([0.1, 0.9]).switches
     assert sw.x_error == pytest.approx(SWITCH.at(0.5) + 2 * ERROR / 1e-4, rel=1e-3)
+
+
+def test_the_branches_end_at_a_switch_with_its_digits(monkeypatch):
+    """The branches' lines end at a switch with the digits its estimate supports (8 at
+    x_error 2e-8, nearly parallel modes at the default rtol), as the switch's own line;
+    the grid's ends as given. They printed 10 digits."""
+    tie = 0.45678912345678
+    _fake_modes(
+        monkeypatch,
+        {(0, 1): lambda x: 1 + 2 * x, (1, 1): lambda x: 1 + 1e-4 * tie + (2 - 1e-4) * x},
+    )
+    monkeypatch.setattr(curve_switches, "REFINE_ABOVE", math.inf)
+    curve = _curve([0.1, 0.9])
+    (sw,) = curve.switches
+    from electrogrowth.cli.curve import summary
+
+    shown = supported(sw.x, sw.x_error)
+    assert shown == "0.45678912"
+    lines = summary(curve)
+    assert f"  voltage 0.1 .. {shown}: mode (m, n) = (0, 1)" in lines
+    assert f"  voltage {shown} .. 0.9: mode (m, n) = (1, 1)" in lines
+    assert any(f"switch at voltage = {shown}," in line for line in lines)
 
 
 def test_a_crossing_is_a_switch_when_a_mode_has_no_root_at_the_far_grid_point(monkeypatch):

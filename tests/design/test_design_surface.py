@@ -20,6 +20,7 @@ from electrogrowth.bifurcation.surface import short_wave_limit
 from electrogrowth.cli.app import main
 from electrogrowth.cli.design import summary
 from electrogrowth.design.prescribe import FOUND, prescribe
+from electrogrowth.digits import supported
 
 R = 2.1
 NEAR = ScanOptions((0, 2), (1, 2), extend=False)
@@ -136,3 +137,16 @@ def test_map_design_counts_the_surface_limit():
     assert "surface" in {d.limited_by, *d.tied_with}
     best = d.as_dict()["best"]
     assert best["surface_value"] == pytest.approx(v_s, rel=1e-11)
+
+
+def test_the_intervals_end_at_a_switch_with_its_digits(by_surface):
+    """An interval's located end prints the digits its switch's estimate supports, as the
+    switch's own line (they printed 10 digits); the searched range's ends as given."""
+    seq = by_surface.sequence
+    assert seq.switches
+    lines = summary(by_surface)
+    for s in seq.switches:
+        shown = supported(s.x, s.x_error)
+        assert any(f" .. {shown}: " in line for line in lines), (shown, lines)
+        assert any(f"  {seq.key} {shown} .. " in line for line in lines), (shown, lines)
+    assert any(line.startswith(f"  {seq.key} 1.5 .. ") for line in lines)

@@ -37,7 +37,7 @@ from .options import (
     scan_options_from_args,
 )
 from .progress import add_quiet_option, enabled
-from .report import NAMED, named_physical, physical_line, supported, warn
+from .report import NAMED, grid_or_located, named_physical, physical_line, supported, warn
 from .tube_input import add_any_tube_options, control_of
 from .units import check_held_voltage, key_value
 
@@ -253,17 +253,18 @@ def summary(curve) -> list[str]:
             f"  {curve.solve_for}_cr from {curve.value[ok].min():.10g} to "
             f"{curve.value[ok].max():.10g}"
         )
+    located = (*curve.switches, *curve.ends)
     for (m, n), rows in curve.branches():
         what = "threshold (axisymmetric state lost)" if m < 0 else f"mode (m, n) = ({m}, {n})"
         if curve.surface[rows].any():
             what += " at the mode cap: short-wavelength (surface) instability"
-        lines.append(
-            f"  {curve.along} {curve.x[rows[0]]:.10g} .. {curve.x[rows[-1]]:.10g}: {what}"
-        )
+        lo, hi = (grid_or_located(curve.x[i], located) for i in (rows[0], rows[-1]))
+        lines.append(f"  {curve.along} {lo} .. {hi}: {what}")
     for s in curve.switches:  # with the digits their error estimates support
         jump = abs(s.value_after - s.value) > 1e-9 * max(1.0, abs(s.value))
         value = (
-            f"jumps from {s.value:.12g} to {s.value_after:.12g}"
+            f"jumps from {supported(s.value, s.value_error)} to"
+            f" {supported(s.value_after, s.value_error)}"
             if jump
             else f"= {supported(s.value, s.value_error)}"
         )
@@ -276,14 +277,14 @@ def summary(curve) -> list[str]:
         after = None
         if e.mode_after[0] < 0:
             after = (
-                f"the short-wave limit from {e.value_after:.12g}"
+                f"the short-wave limit from {supported(e.value_after, e.value_error)}"
                 if curve.surface[row].any()
                 else "the threshold (axisymmetric state lost)"
             )
         lines.append(
             f"  branch {_mode(e.mode_before)} ends at {curve.along} = {supported(e.x, e.x_error)},"
-            f" {curve.solve_for}_cr = {e.value:.12g}; then "
-            + (after or f"{_mode(e.mode_after)} from {e.value_after:.12g}")
+            f" {curve.solve_for}_cr = {supported(e.value, e.value_error)}; then "
+            + (after or f"{_mode(e.mode_after)} from {supported(e.value_after, e.value_error)}")
         )
     lines.append(crease_line(curve))
     for i in _failed(curve):

@@ -39,7 +39,7 @@ from .options import (
     scan_options_from_args,
 )
 from .progress import add_quiet_option
-from .report import named_physical, physical_line, supported
+from .report import grid_or_located, named_physical, physical_line, supported
 from .tube_input import add_any_tube_options, control_of
 from .units import QuantityText, check_held_voltage, key_value, number_or_quantity
 
@@ -314,9 +314,8 @@ def summary(result, physical: dict | None = None) -> list[str]:
     creases = dict(zip(result.region, result._crease_rows()))
     for iv in seq.intervals:
         what = _pattern(iv) + (f": {_reason(iv)}" if iv.reason else "")
-        lines.append(
-            f"  {seq.key} {iv.lo:.10g} .. {iv.hi:.10g}: {what}{_creased(creases.get(iv))}"
-        )
+        lo, hi = (grid_or_located(x, seq.switches) for x in (iv.lo, iv.hi))
+        lines.append(f"  {seq.key} {lo} .. {hi}: {what}{_creased(creases.get(iv))}")
     for s in seq.switches:
         lines.append(_change_line(seq, s))
     if result.status == "not_reached":

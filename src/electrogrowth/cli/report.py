@@ -166,3 +166,11 @@ def warn(message: str) -> None:
     """Print ``message`` as one warning line on stderr (nothing when it is empty)."""
     if message:
         print(f"electrogrowth: warning: {message}", file=sys.stderr)
+
+
+def grid_or_located(x: float, located) -> str:
+    """A branch's or an interval's end ``x``: a point of the grid as given (10 digits), a
+    located switch or end (``located``: objects with x and x_error) with the digits its
+    estimate supports, as its own line prints it."""
+    at = [s for s in located if s.x == x]
+    return supported(x, at[0].x_error) if at else f"{x:.10g}"
