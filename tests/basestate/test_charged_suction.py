@@ -83,7 +83,6 @@ def test_the_limit_point_walked_in_lambda_z_is_the_one_walked_in_r_i():
     assert thr.stretch == pytest.approx(2.229178886823665, rel=1e-10)
 
 
-@pytest.mark.slow  # ~70 s: every state past P_i ~ -9.75 is walked, not continued (warm.py)
 def test_mode_1_1_under_suction_has_no_root_down_to_the_march_end():
     """Was a ConvergenceError at -9.70 ("no mode bifurcates ... from 0 up to -9.70..., and
     the base states past it are not resolved"); the states now solve down to the march's end

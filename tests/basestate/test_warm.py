@@ -31,6 +31,17 @@ STACK = Tube(
     voltage=0.2,
 )
 
+#: a charged force-free film-lined tube under suction: its voltage branch is walked in
+#: lambda_z, r_i first falling as Vbar rises (thresholds.chart; tests/basestate/
+#: test_charged_suction.py); was walked from the unloaded tube at each step
+SUCTION = Tube(
+    (Layer(1.003, shear_modulus=300.0, growth=(1, 1.02, 1.01)), Layer(2.2)),
+    length=4.0,
+    axial_force=0.0,
+    inner_pressure=-10.0,
+    voltage=0.1,
+)
+
 #: (tube, control, the control's values along a march)
 MARCHES = [
     (MUCOSA, "voltage", np.linspace(0.3, 0.6, 13)),
@@ -41,6 +52,8 @@ MARCHES = [
     (FORCE, "force", np.linspace(0.0, -1.5, 11)),
     (STACK, "growth[1].theta", np.linspace(1.15, 1.4, 11)),
     (STACK, "voltage", np.linspace(0.2, 0.5, 11)),
+    (SUCTION, "pressure", np.linspace(-9.8, -11.0, 11)),
+    (SUCTION, "voltage", np.linspace(0.02, 1.2, 13)),  # r_i falls, turns (~0.4), rises
 ]
 
 
@@ -82,11 +95,17 @@ def test_past_the_voltage_threshold_the_continuation_refuses():
         solve_layered_state(beyond, near=near)
 
 
-def test_a_limit_point_is_not_continued_onto_the_falling_side():
+@pytest.mark.parametrize(
+    "tube",
+    [Tube((Layer(1.3, growth=1.0), Layer(2.5)), length=1.0, axial_force=0.0), SUCTION],
+    ids=["free", "suction"],
+)
+def test_a_limit_point_is_not_continued_onto_the_falling_side(tube):
     """Under force control the voltage branch of a free tube has a limit point (a maximum
     of Vbar): from the rising side just below it, a Vbar above it is refused, and a state
-    continued onto the falling side (from a neighbour there) is never returned."""
-    tube = Tube((Layer(1.3, growth=1.0), Layer(2.5)), length=1.0, axial_force=0.0)
+    continued onto the falling side (from a neighbour there) is never returned. Also where
+    the branch's r_i first falls with Vbar (the direction of rising load compared with the
+    neighbour's, not the sign of d Vbar / d r_i)."""
     thr = solve_layered_state(tube).voltage_threshold
     assert solve_layered_state(tube).threshold_kind == "limit point"
     near = solve_layered_state(tube.at("voltage", 0.999 * thr))

@@ -102,9 +102,11 @@ def solve_continued(tube: Tube, near, rtol: float = 1e-12, guess=None) -> Layere
     warm = continued(tube, near, rtol, guess)
     if warm is None:
         return None
-    _, wall, prep, x, lz, c = warm
+    _, wall, prep, x, lz, c, rise = warm
     state = LayeredState._build(tube, wall, prep, x, lz, c, rtol, compiled=True)
-    return _in_box(state) if state.quadrature_error <= max(rtol, 1e-14) else None
+    if not state.quadrature_error <= max(rtol, 1e-14):
+        return None
+    return _in_box(dataclasses.replace(state, _rise=rise))
 
 
 def _prepare(tube: Tube, rtol: float, nodes):

@@ -58,6 +58,8 @@ class LayeredState:
     _sigma: tuple = dataclasses.field(default=(), repr=False, compare=False)
     # the tube without its voltage, prepared: the voltage branch's threshold, walked on demand
     _prep: object = dataclasses.field(default=None, repr=False, compare=False)
+    # a continued state's direction of rising load along its branch (warm.py), for the next
+    _rise: object = dataclasses.field(default=None, repr=False, compare=False)
 
     @property
     def voltage_threshold(self) -> float:

@@ -21,7 +21,13 @@ before that branch's threshold:
   whole walked part of a branch before its threshold: d Vbar / d r_i > 0 on the voltage
   branch (P_i - P_o fixed) when Vbar > 0, else d P_i / d r_i > 0 on the pressure branch at
   V = 0 (for both directions of the pressure); beyond a limit point the continued root has
-  the opposite slope, beyond an asymptote or a locking stretch Newton does not converge;
+  the opposite slope, beyond an asymptote or a locking stretch Newton does not converge.
+  Under force control the branch is a curve in (r_i, lambda_z) that need not be walked in
+  rising r_i (thresholds.chart: a charged film tube under suction, whose r_i first falls as
+  the voltage rises): there the direction in which the load rises, at the root, must be
+  the one it has at the neighbour's state on its own branch, as it is along the walked part
+  (it turns back at a limit point); where the two stages differ (a march from V = 0), the
+  slope in r_i as above;
 * the independent Chebyshev quadrature of the state agrees with the Gauss rule of the
   neighbour's node count (``quadrature_error`` <= rtol, as for every state).
 
@@ -72,11 +78,12 @@ class LazyPrepared:
 
 
 def continued(tube: Tube, near, rtol: float, guess=None):
-    """(key, wall, prep, r_i, lambda_z, c) of ``tube``'s state continued from the solved
-    state ``near`` of a neighbouring tube, or None where that is not the walk's root (see
-    the module docstring). ``guess``: a better Newton start (r_i, lambda_z) than the
-    neighbour's own, e.g. extrapolated from two neighbours (the checks still compare with
-    ``near``)."""
+    """(key, wall, prep, r_i, lambda_z, c, rise) of ``tube``'s state continued from the
+    solved state ``near`` of a neighbouring tube, or None where that is not the walk's root
+    (see the module docstring); ``rise`` is the direction of rising load there
+    (:func:`_rise`), which the state keeps for its own continuation. ``guess``: a better
+    Newton start (r_i, lambda_z) than the neighbour's own, e.g. extrapolated from two
+    neighbours (the checks still compare with ``near``)."""
     old = near.tube
     if (
         near._wall is None
@@ -102,7 +109,7 @@ def continued(tube: Tube, near, rtol: float, guess=None):
 
 
 def _newton(tube, near, branch, wall, u, dp, force):
-    """(r_i, lambda_z, c) by Newton from u, or None (module docstring: the checks)."""
+    """(r_i, lambda_z, c, rise) by Newton from u, or None (module docstring: the checks)."""
     for _ in range(MAX_ITER):
         F, J = _system(branch, u, dp, force)
         if not (np.all(np.isfinite(F)) and np.all(np.isfinite(J))):
@@ -121,14 +128,15 @@ def _newton(tube, near, branch, wall, u, dp, force):
             force and abs(lz - near.stretch) > JUMP * near.stretch
         ):
             return None
-        if not _rising(wall, tube, last, F, J, dp, force):
+        rise = _rise(wall, tube, last, F, J, dp, force)
+        if not _rising(rise, tube, force, near):
             return None
         if wall.ideal:  # c = V / Lambda, as Branch.point has it, without the integrals
             thick = tube.outer_radius - 1.0
             c = tube.voltage * thick / float(wall.electric(np.array([x]), np.array([lz]))[1][0])
         else:
             c = float(branch.point([x], [lz])["charge"][0])
-        return x, lz, c
+        return x, lz, c, rise
     return None
 
 
@@ -156,31 +164,53 @@ def _system(branch: Branch, u, dp: float, force: bool):
     return res[:, 0], (res[:, 1:] - res[:, :1]) / h
 
 
-def _rising(wall: Wall, tube: Tube, u, F, J, dp: float, force: bool) -> bool:
-    """Does the load of the last loading stage rise with r_i at u (the last iterate, F and J
-    the residuals and their Jacobian d(dp, N)/d(r_i, lambda_z) there at fixed Vbar)?"""
-    vbar = tube.voltage
-    if vbar == 0:  # the pressure branch at V = 0 (or the unloaded state): dP_i / dr_i
-        if not force:
-            return bool(J[0, 0] > 0)
-        lz_x = -J[1, 0] / J[1, 1]
-        return bool(J[0, 0] + J[0, 1] * lz_x > 0)
-    # the voltage branch at fixed P_i - P_o: F(r_i, lambda_z, Vbar) = const along it
-    lz = u[1] if force else tube.stretch
-    if wall.ideal:
-        F_v = _ideal_load_rate(wall, tube, u[0], lz)[: len(u)]
-    else:
-        hv = _H * vbar
-        up = Branch(wall, "pressure", vbar=vbar + hv, compiled=True).point([u[0]], [lz])
-        F_v = (np.array([up["dp"][0] - dp, up["residual"][0]])[: len(u)] - F) / hv
-    if not force:
-        return bool(-J[0, 0] / F_v[0] > 0)
-    A = np.array([[J[0, 1], F_v[0]], [J[1, 1], F_v[1]]])
-    try:
-        _, v_x = np.linalg.solve(A, -J[:, 0])
-    except np.linalg.LinAlgError:
+def _rising(rise, tube: Tube, force: bool, near) -> bool:
+    """Does the load of the last loading stage rise along its branch in the direction
+    ``rise`` (:func:`_rise` at the root) as on the walked part (the module docstring)?"""
+    if rise is None:
         return False
-    return bool(v_x > 0 and math.isfinite(v_x))
+    if force and (near.tube.voltage == 0) == (tube.voltage == 0):  # the same stage
+        there = _near_rise(near)
+        return there is not None and float(rise @ there) > 0
+    return bool(rise[0] > 0)  # walked in rising r_i
+
+
+def _rise(wall: Wall, tube: Tube, u, F, J, dp: float, force: bool) -> np.ndarray | None:
+    """The direction (d r_i / r_i[, d lambda_z / lambda_z]) along the branch at u in which
+    the load of the last loading stage rises (None where it is not defined)."""
+    vbar = tube.voltage
+    if vbar == 0:  # the pressure branch at V = 0 (or the unloaded state): dP_i along it
+        if not force:
+            return np.array([J[0, 0]])
+        t = np.array([J[1, 1], -J[1, 0]])  # the axial balance kept
+        t = t * np.sign(J[0] @ t)
+    else:  # the voltage branch at fixed P_i - P_o: F(r_i, lambda_z, Vbar) = const along it
+        lz = u[1] if force else tube.stretch
+        if wall.ideal:
+            F_v = _ideal_load_rate(wall, tube, u[0], lz)[: len(u)]
+        else:
+            hv = _H * vbar
+            up = Branch(wall, "pressure", vbar=vbar + hv, compiled=True).point([u[0]], [lz])
+            F_v = (np.array([up["dp"][0] - dp, up["residual"][0]])[: len(u)] - F) / hv
+        if not force:
+            return np.array([-J[0, 0] / F_v[0]])
+        # the tangent of the curve in (r_i, lambda_z, Vbar): the null vector of [J | F_v]
+        t3 = np.cross(np.append(J[0], F_v[0]), np.append(J[1], F_v[1]))
+        t = t3[:2] * np.sign(t3[2])
+    t = t / np.abs(u)  # relative: r_i and lambda_z differ in scale
+    return t if np.all(np.isfinite(t)) and np.any(t != 0) else None
+
+
+def _near_rise(near) -> np.ndarray | None:
+    """:func:`_rise` at the neighbour's state on its own branch (kept by a continued one)."""
+    if near._rise is not None:
+        return near._rise
+    old = near.tube
+    u = np.array([near.r_i, near.stretch])
+    branch = Branch(near._wall, "pressure", vbar=old.voltage, compiled=True)
+    dp = old.inner_pressure - old.outer_pressure
+    F, J = _system(branch, u, dp, True)
+    return _rise(near._wall, old, u, F, J, dp, True)
 
 
 def _ideal_load_rate(wall: Wall, tube: Tube, r_i: float, lz: float) -> np.ndarray:
