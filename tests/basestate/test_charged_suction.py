@@ -91,3 +91,24 @@ def test_mode_1_1_under_suction_has_no_root_down_to_the_march_end():
     with pytest.raises(NoBifurcationFound, match="no mode bifurcates for pressure between 0") as e:
         critical_value(TUBE, 1, 1, "pressure", side="compression")
     assert "rtol" not in str(e.value.remedy)
+
+
+def test_the_voltage_response_follows_the_dip():
+    """`voltage_response` sampled the branch in r_i from its start: the states where r_i
+    falls as the voltage rises (below the start's r_i) were never shown. Sampled in
+    lambda_z, the branch's walked coordinate, the voltage rises at every sample, r_i dips
+    1.4e-5 below its start (at Vbar ~ 0.32 for P_i = -10) and rises to the limit point, and
+    each sample is the solved state at its voltage."""
+    from electrogrowth.basestate.layered import solve_layered_state, voltage_response
+
+    tube = TUBE.at("pressure", -10.0)
+    r = voltage_response(tube, points=400)
+    assert abs(r["voltage"][0]) < 1e-7  # Vbar^2 = 0 to rounding (1e-15) at the start
+    assert np.all(np.diff(r["voltage"]) > 0)
+    dip = int(np.argmin(r["r_i"]))
+    assert 0 < dip < len(r["r_i"]) - 1 and r["r_i"][dip] < r["r_i"][0] - 1e-5
+    assert r["r_i"][-1] > r["r_i"][0]
+    for j in (dip, 200):
+        state = solve_layered_state(tube.at("voltage", float(r["voltage"][j])))
+        assert state.r_i == pytest.approx(r["r_i"][j], rel=1e-12)
+        assert state.stretch == pytest.approx(r["stretch"][j], rel=1e-12)

@@ -168,13 +168,14 @@ def _pressure_branch(tube: Tube, rtol: float):
 
 
 def _response(branch, start, thr, lambda_i, points, span):
-    if lambda_i is None:
-        end = thr.lambda_i if math.isfinite(thr.lambda_i) else start[0] * span
-        if thr.kind == "locking":
-            end = start[0] + 0.999 * (end - start[0])
-        lambda_i = start[0] * (end / start[0]) ** np.linspace(0.0, 1.0, points)
-    r_i = np.sort(np.atleast_1d(np.asarray(lambda_i, float)))
-    pt = clean(branch.at(r_i, start[1]))
+    if lambda_i is None and thr.walked == "stretch":  # r_i turns along it: sampled in lambda_z
+        lz = _samples(start[1], thr.stretch, thr.kind, points, span)
+        pt = clean(branch.at_stretch(lz, start[0]))  # each continued from the one before
+    else:
+        if lambda_i is None:
+            lambda_i = _samples(start[0], thr.lambda_i, thr.kind, points, span)
+        r_i = np.sort(np.atleast_1d(np.asarray(lambda_i, float)))
+        pt = clean(branch.at(r_i, start[1]))
     return {
         "lambda_i": pt["r_i"],
         "lambda_o": pt["r_o"] / branch.wall.tube.outer_radius,
@@ -188,12 +189,24 @@ def _response(branch, start, thr, lambda_i, points, span):
     }
 
 
+def _samples(first: float, last: float, kind: str, points: int, span: float) -> np.ndarray:
+    """``points`` values of the walked coordinate from the branch's start to its threshold's
+    (``span`` times the start where that is at infinity, just before a locking one)."""
+    end = last if math.isfinite(last) else first * span
+    if kind == "locking":
+        end = first + 0.999 * (end - first)
+    return first * (end / first) ** np.linspace(0.0, 1.0, points)
+
+
 def voltage_response(
     tube: Tube, lambda_i=None, *, points: int = 41, span: float = 3.0, rtol: float = 1e-12
 ) -> dict[str, np.ndarray]:
     """The voltage branch at the tube's pressures (tube.voltage ignored), at the inner stretches
     ``lambda_i`` (sorted), or at ``points`` from its start to the threshold's lambda_i (a limit
-    point, just before a locking stretch) or to ``span`` times the start (asymptote).
+    point, just before a locking stretch) or to ``span`` times the start (asymptote). A
+    branch walked in lambda_z (force control, r_i turning as the load rises:
+    thresholds.chart) is sampled in lambda_z from its start to the threshold's, in the
+    branch's order.
 
     Returns arrays: lambda_i (= r_i), lambda_o, r_i, r_o, voltage (Vbar; negative below the
     start for ideal dielectrics), inner_pressure, stretch, charge, axial_force.
