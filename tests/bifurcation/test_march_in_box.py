@@ -16,7 +16,7 @@ import pytest
 from electrogrowth import Layer, Material, Tube, critical_value, solve_base_state, threshold
 from electrogrowth.basestate.tube import load_in_box
 from electrogrowth.bifurcation.march import control_path
-from electrogrowth.bifurcation.state_loss import own_threshold
+from electrogrowth.bifurcation.state_loss import box_note, own_threshold
 from electrogrowth.errors import NoBifurcationFound, ParameterError
 from electrogrowth.model.params import SUPPORTED
 
@@ -67,8 +67,21 @@ def test_a_tube_inside_the_box_keeps_its_path():
         assert control_path(tube, solve_for, "extension")[1] == thr.value * (1 - 1e-12)
 
 
-@pytest.mark.slow  # 30 s: the march to the box's edge
+def test_the_box_note_names_the_edge_where_the_path_ends_there():
+    box = load_in_box(TUBE, "voltage")
+    note = box_note(TUBE, "voltage", None, box)
+    assert "supported range 0.02 to 50" in note and f"voltage = {box:.6g}" in note
+    assert box_note(TUBE, "voltage", None, 0.5 * box) == ""  # the path ended elsewhere
+
+
+@pytest.mark.slow  # 20-30 s: the march to the film
 def test_mode_6_2_reports_no_threshold_outside_the_box():
-    with pytest.raises(NoBifurcationFound, match="supported range 0.02 to 50") as e:
-        critical_value(TUBE, 6, 2, "voltage")  # was kind threshold 45869.83, status ok
-    assert "voltage threshold lies beyond" in str(e.value)
+    """Was kind threshold 45869.83, status ok. Then "no mode bifurcates ... between 0 and
+    8364.03 (its voltage threshold lies beyond the supported range ..., which its branch
+    leaves past voltage = 22801.7)": the march had stopped where lambda_i grew 50-fold (a
+    film), and the box's note read as the reason (check round 19, D1)."""
+    with pytest.raises(NoBifurcationFound, match="no mode bifurcates for voltage between 0") as e:
+        critical_value(TUBE, 6, 2, "voltage")
+    text = str(e.value)
+    assert "grown 50-fold" in text and "the states beyond are not examined" in text
+    assert "supported range" not in text

@@ -265,9 +265,19 @@ def first_bifurcations(
             last = step.x if film else step.end
             raise NoBifurcationFound(
                 f"no mode bifurcates for {solve_for} between {x0:g} and {last:g}"
-                + box_note(params, solve_for, side, step.end)
+                + (_film_note(step) if film else box_note(params, solve_for, side, step.end))
             )
     return MarchResult(found[:top], threshold)
+
+
+def _film_note(step: Stepper) -> str:
+    """Why a march ended where its wall became a film, short of its path's end: the states
+    beyond were not examined (check round 19: the note of the box's edge further on read
+    as the reason)."""
+    return (
+        f", where the inner radius has grown {step.policy.film:g}-fold (the wall is a film,"
+        " its threshold near): the march stops there, the states beyond are not examined"
+    )
 
 
 def _unexamined(solve_for: str, x0: float, x: float) -> str:
