@@ -413,7 +413,10 @@ def _limit_point(tube: UniformWall, lam0: float, lam: np.ndarray, v: np.ndarray)
     if not crit:
         raise ConvergenceError(f"limit point of Vbar not located in [{a:.6g}, {b:.6g}]")
     top = max(crit, key=poly)
-    value = math.sqrt(float(vsq(top)[0]))
+    top_sq = float(vsq(top)[0])
+    if not top_sq > 0:  # the branch fell below the start before its first maximum (check 21)
+        raise ConvergenceError(f"Vbar(lambda_i) does not rise from lambda_i0 = {lam0:.12g}")
+    value = math.sqrt(top_sq)
     keep = lam < top
     return _Threshold(
         lam0,

@@ -67,6 +67,7 @@ from .march import (
     first_bifurcations,
 )
 from .problem import Problem, as_problem
+from .torsion_onset import torsional_onset
 
 if TYPE_CHECKING:
     from .verdict import Verdict
@@ -311,6 +312,7 @@ def _solve(
     ``march``, only in ``bracket`` (NoSignChange if the target keeps its sign there)."""
     mode = with_family(m, n, fam)
     acc = Accuracy(rtol)
+    doubt, fam_checked = "", False  # why a torsional root is not known to be the first
     fine, coarse = targets_for(method, acc.fine), coarse_targets_for(method, acc.fine)
     sref = stable_sign(m, n, params, method, family=fam)
     at = TubeAt(params, solve_for)
@@ -344,9 +346,12 @@ def _solve(
                 at=at,  # the error estimate's first state is the value's, solved by the march
             )
         except NoBifurcationFound as exc:
-            # torsional modes never bifurcate (derivation-families.md): no window to look for
-            torsional = fam is Family.TORSIONAL
-            root = None if torsional else _surface_window(params, (m, n), solve_for, side, g)
+            # a torsional mode first bifurcates where its moduli vanish: no window to look for
+            if fam is Family.TORSIONAL:
+                root, doubt = _torsional_first(params, at, solve_for, side, None)
+                fam_checked = True
+            else:
+                root = _surface_window(params, (m, n), solve_for, side, g)
             if root is None:
                 _no_bifurcation(exc, solve_for, m, n, fam)
             res = MarchResult([ModeValue(int(m), int(n), root, str(fam))], None)
@@ -364,6 +369,8 @@ def _solve(
                 family=fam,
             )
         value = res.found[0].value
+        if fam is Family.TORSIONAL and not fam_checked:  # the march's root: the first?
+            value, doubt = _torsional_first(params, at, solve_for, side, value)
     path = control_path(params, solve_for, side)[:2]
     estimate = second_resolution(root_mode(at, coarse, mode, sref), value, path)
     if check_method(method) is Method.COLLOCATION:
@@ -380,8 +387,43 @@ def _solve(
         side,
         params.at(solve_for, value),
         family=fam,
-        message=note,
+        status=Status.INACCURATE if doubt else Status.OK,
+        message=doubt or note,
+        remedy=TORSION_REMEDY if doubt else "",
     )
+
+
+TORSION_REMEDY = Remedy(
+    "solve the mode in Python with critical_value(..., bracket=(onset, value)): its first"
+    " root lies between the two (shorter torsional waves bifurcate nearer the onset)",
+    python="pass bracket=(onset, value) to critical_value: the first root lies between the"
+    " two (shorter torsional waves bifurcate nearer the onset)",
+)
+
+
+def _torsional_first(params, at: TubeAt, solve_for, side, found: float | None):
+    """(value, doubt) of a torsional mode whose march found the root ``found`` (None: no
+    root up to the path's end): the first zero of its moduli along the path before it
+    (torsion_onset.py) where that is an exact root of every torsional mode; else ``found``,
+    with why it is not known to be the first root where the moduli vanish before it (past
+    that point the roots come densely, the march steps over them); a ConvergenceError
+    where no root was found past such a point."""
+    start, end = control_path(params, solve_for, side)[:2]
+    onset = torsional_onset(at, start, end if found is None else found, 1e-12)
+    if onset is None:
+        return found, ""
+    if onset.exact:
+        return onset.value, ""
+    where = (
+        f"the wall's torsional shear modulus (gamma_12 or A3232) vanishes at {solve_for} ="
+        f" {onset.value:.12g}: past it the torsional problem is not elliptic and a mode's"
+        " roots come densely"
+    )
+    if found is None:
+        err = ConvergenceError(f"{where}; none was found up to {end:g}")
+        err.remedy = TORSION_REMEDY
+        raise err
+    return found, f"{where}; the first root lies between it and this one, not located"
 
 
 def _after_start(bracket: tuple[float, float], path: tuple[float, float]):

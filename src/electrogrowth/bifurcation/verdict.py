@@ -259,8 +259,9 @@ def _what(r: Rival) -> str:
         )
     if r.kind == Kind.CREASE:
         return f"a crease at {crease_where(r.face, r.detail)}"
-    if r.kind == Kind.BIFURCATION:
-        return f"the wrinkle {_mode(r)}"
+    if r.kind == Kind.BIFURCATION:  # u_theta alone is a twist, not a wrinkle (check 21, D3)
+        what = "torsional" if r.family == "torsional" else "wrinkle"
+        return f"the {what} {_mode(r)}"
     if r.kind == Kind.SURFACE:
         return f"short-wave wrinkles at the {r.face} face"
     return "the loss of the axisymmetric state"

@@ -1,0 +1,92 @@
+"""Where a torsional mode (0, n), u_theta = U(r) cos kz, can first bifurcate: where the
+wall's torsional shear moduli first vanish (docs/derivation-families.md, section 2).
+
+The torsional problem is the Euler-Lagrange system of
+
+    F[U] = int gamma_12 r^3 (d(U/r)/dr)^2 dr + k^2 int A3232 r U^2 dr,
+
+so no torsional mode bifurcates while gamma_12 = A1212 - Gamma_122^2 / K22 > 0 and
+A3232 > 0 throughout the wall. Past the first point x_e of the path where either vanishes
+somewhere, the problem is no longer elliptic there and a mode's roots come densely: for a
+wall whose A3232 vanishes everywhere at once, roots at x_e and then ~ j^2 / k^2 beyond it,
+windows of instability 4e-4 wide for n = 100 that a march's samples step over (check round
+21: an energy text with a negative I2 weight, A3232 = 0 at lambda_z = 1/6; (0, 100) gave
+its fifth root, (0, 400) its 113th, status ok).
+
+At x_e itself F vanishes for some U != 0 only where A3232 vanishes on the whole wall and
+gamma_12 > 0 (then U = r, for every k: the exact root); else the first root lies past x_e,
+nearer to it the shorter the wave.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+
+from ..continuation.events import THRESHOLD, brent
+from ..errors import ElectrogrowthError
+from ..model.moduli import MODULI_INDEX
+from .along import TubeAt
+
+#: samples of the moduli through each layer (both faces included)
+PER_LAYER = 17
+#: samples of the path between its start and the march's end
+STEPS = 64
+#: A3232 vanishes on the whole wall where its largest value is below this, relative to the
+#: wall's shear stiffness (rounding of the moduli ~1e-15, of the located x_e ~1e-13)
+UNIFORM = 1e-9
+
+_A1212, _A3232 = MODULI_INDEX["A1212"], MODULI_INDEX["A3232"]
+_G122, _K22 = MODULI_INDEX["G122"], MODULI_INDEX["K22"]
+
+
+@dataclasses.dataclass(frozen=True)
+class Onset:
+    """The first point ``value`` of the path where the torsional moduli vanish, and whether
+    it is an exact root of every torsional mode (``exact``: A3232 vanishes on the whole wall
+    and gamma_12 > 0 there)."""
+
+    value: float
+    exact: bool
+
+
+def torsional_onset(at: TubeAt, start: float, end: float, rtol: float) -> Onset | None:
+    """The first zero of :func:`margin` along the path from ``start`` to ``end`` (``STEPS``
+    samples, then Brent's method), or None where the moduli stay positive up to ``end``
+    or a state on the way does not solve (then no such point is claimed)."""
+    xs = np.linspace(start, end, STEPS + 1)
+    try:
+        values = [margin(at.solved(float(x), rtol))[0] for x in xs[:1]]
+        for x in xs[1:]:
+            values.append(margin(at.solved(float(x), rtol))[0])
+            if not values[-1] > 0:
+                break
+        else:
+            return None
+        if not values[0] > 0:  # at the start: the mode is unstable there, the march says so
+            return None
+        lo, hi = float(xs[len(values) - 2]), float(xs[len(values) - 1])
+        value = brent(lambda x: margin(at.solved(x, rtol))[0], lo, hi, THRESHOLD)
+        _, gamma, top = margin(at.solved(value, rtol))
+    except ElectrogrowthError:
+        return None
+    return Onset(value, exact=top <= UNIFORM and gamma > UNIFORM)
+
+
+def margin(state) -> tuple[float, float, float]:
+    """(min over the wall of min(gamma_12, A3232), min over the wall of gamma_12, max over
+    the wall of |A3232|), each over the wall's largest A1212 (the layers' own scaling
+    included)."""
+    radii = state.tube.radii
+    gamma, a3232, scale = [], [], 0.0
+    for a, b in zip(radii, radii[1:]):
+        R = np.linspace(a, b, PER_LAYER)
+        inner = state.moduli(R[:1], side="outer")  # the layer's own side of its faces
+        outer = state.moduli(R[-1:], side="inner")
+        mod = np.concatenate([inner, state.moduli(R[1:-1]), outer])
+        gamma.append(mod[:, _A1212] - mod[:, _G122] ** 2 / mod[:, _K22])
+        a3232.append(mod[:, _A3232])
+        scale = max(scale, float(np.max(np.abs(mod[:, _A1212]))))
+    g, a = np.concatenate(gamma) / scale, np.concatenate(a3232) / scale
+    return float(min(g.min(), a.min())), float(g.min()), float(np.max(np.abs(a)))
