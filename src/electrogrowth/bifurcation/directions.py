@@ -83,6 +83,13 @@ def past_surface(params, faces=None) -> bool:
     instability in some wave direction (the signed half-space target is <= 0 there): then
     the exact limit, reached earlier along any path from the unloaded tube, is worth
     locating."""
+    return surface_past(params, faces) is not None
+
+
+def surface_past(params, faces=None) -> str | None:
+    """The first surface (face or interface) of this loaded tube beyond its short-wave
+    instability in some wave direction, or where strong ellipticity is lost (the signed
+    half-space target is <= 0 or NaN), or None."""
     signs = reference_signs(params)
     state = solve_base_state(params)
     for face in surfaces(state) if faces is None else faces:
@@ -91,8 +98,8 @@ def past_surface(params, faces=None) -> bool:
         if v < MARCH_REFINE:
             v, _ = worst_direction(problem, signs[face])
         if not v > 0:
-            return True
-    return False
+            return face
+    return None
 
 
 def worst_direction(

@@ -36,7 +36,7 @@ import dataclasses
 import numpy as np
 
 from ..basestate.tube import solve_base_state
-from ..errors import ConvergenceError, ElectrogrowthError, NoBifurcationFound
+from ..errors import ConvergenceError, ElectrogrowthError, NoBifurcationFound, UnstableAtStart
 from ..incremental.modes import row_family
 from ..incremental.targets import Family, impedance_targets
 from ..model.layers import Tube
@@ -44,9 +44,9 @@ from ..outcomes import NO_MODE, Kind, Status
 from .beyond import unstable_beyond
 from .certify import kernel_signs
 from .critical import CriticalPoint, critical_value, no_bifurcation_remedy
-from .directions import past_surface
+from .directions import past_surface, surface_past
 from .grid_scan import finished, scan_once
-from .march import ModeValue
+from .march import ModeValue, control_path
 from .msearch import search_m, search_n
 from .options import EVERY_M, M_CAP, N_CAP, ScanOptions
 from .options import TOP_MAX as TOP_MAX  # re-exported: the CLI checks --top against it
@@ -111,6 +111,7 @@ def scan_modes(
     problem = as_problem(params, solve_for, side=side, rtol=rtol, options=options)
     params, solve_for, side = problem.tube, problem.control, problem.side
     options, rtol = problem.options, problem.rtol
+    _stable_short_waves_at_start(params, solve_for, side)
     try:
         result, at_cap, limit = _widened_scan(params, solve_for, side, options, rtol)
         if options.extend:
@@ -125,6 +126,26 @@ def scan_modes(
         result = _windows_without_surface(params, solve_for, side, result, options, rtol, limit)
     # the runners-up were the march's roots (max(rtol, 1e-9)): solved at rtol (runners.py)
     return _capped(with_finished_runners(params, solve_for, side, rtol, result))
+
+
+def _stable_short_waves_at_start(params, solve_for, side) -> None:
+    """UnstableAtStart where a face or interface is past its short-wave instability at the
+    control's start: every short wave there is unstable before the control moves. The
+    march reads only the scanned modes at its start, and the limit is weighed only against
+    a later critical value: a tube held at a voltage past its inner face's limit, whose
+    growth restabilises the short waves, was scanned as wrinkling in (2, 1) at g = 1.38,
+    status ok, where (0, 40) is unstable at g = 1 (check round 20, D1)."""
+    x0 = control_path(params, solve_for, side)[0]
+    try:
+        face = surface_past(params.at(solve_for, x0))
+    except ElectrogrowthError:  # no state or no reading at the start: the march says why
+        return
+    if face is not None:
+        where = face.replace("-", " ") if face.startswith("interface") else f"{face} face"
+        raise UnstableAtStart(
+            f"the tube is already unstable at {solve_for} = {x0:g}: its {where} is past its"
+            " short-wave (half-space) instability there; start from a stable state"
+        )
 
 
 def _capped(result: ScanResult) -> ScanResult:
