@@ -33,7 +33,14 @@ from ..basestate.thresholds import LockedSearch, Threshold
 from ..basestate.tube import load_in_box, solve_base_state, threshold
 from ..continuation.events import EDGE, FULL, LOCK, THRESHOLD, bisect, brent
 from ..continuation.events import threshold_between as _lost_between
-from ..errors import NEAR_LOCK, BaseStateError, ConvergenceError, ParameterError, Remedy
+from ..errors import (
+    NEAR_LOCK,
+    BaseStateError,
+    ConvergenceError,
+    ElectrogrowthError,
+    ParameterError,
+    Remedy,
+)
 from ..model.controls import parse_control
 from ..model.layers import Tube
 from ..model.params import SUPPORTED
@@ -158,7 +165,7 @@ def threshold_between(at: TubeAt, params: Tube, x_ok: float, x_bad: float, rtol=
             return lock, ok, None
         lost_from = f", and the state search fails from {lost:.12g}"
     locks = has_lock(at(x_ok))
-    near = "a layer next to its locking stretch?" if locks else "why is not known"
+    near = "a layer next to its locking stretch?" if locks else _why_unresolved(at, ok, rtol)
     unresolved = ConvergenceError(
         f"the states from {bad:.12g} are not resolved ({near}){lost_from}: whether the"
         " state is lost there is not established"
@@ -168,6 +175,30 @@ def threshold_between(at: TubeAt, params: Tube, x_ok: float, x_bad: float, rtol=
     # probe 12b D7)
     unresolved.remedy = NEAR_LOCK if locks else Remedy("")
     return None, ok, unresolved
+
+
+#: a wall whose smallest torsional shear modulus is below this share of its stiffness at the
+#: last resolved state is said to be losing strong ellipticity there
+SOFT_SHEAR = 1e-2
+
+
+def _why_unresolved(at: TubeAt, x_ok: float, rtol: float) -> str:
+    """What is known of why the states past x_ok are not resolved: a shear modulus of the
+    wall (gamma_12 or A3232, torsion_onset.margin) vanishing there, the material losing
+    strong ellipticity (an energy text whose W_1 falls to 0: check round 21), else that it
+    is not known."""
+    from .torsion_onset import margin  # here: the moduli are read only when states fail
+
+    try:
+        low = margin(at.solved(x_ok, rtol))[0]
+    except ElectrogrowthError:
+        return "why is not known"
+    if low < SOFT_SHEAR:
+        return (
+            f"the wall's shear modulus gamma_12 or A3232 falls to {low:.1g} of its stiffness"
+            " there: the material is losing strong ellipticity"
+        )
+    return "why is not known"
 
 
 def _lost_past_lock(at: TubeAt, x_ok: float, x_bad: float, rtol: float) -> float | None:

@@ -33,8 +33,8 @@ from .along import TubeAt
 PER_LAYER = 17
 #: samples of the path between its start and the march's end
 STEPS = 64
-#: A3232 vanishes on the whole wall where its largest value is below this, relative to the
-#: wall's shear stiffness (rounding of the moduli ~1e-15, of the located x_e ~1e-13)
+#: A3232 vanishes on the whole wall where its largest value is below this, relative to its
+#: layer's shear modulus (rounding of the moduli ~1e-15, of the located x_e ~1e-13)
 UNIFORM = 1e-9
 
 _A1212, _A3232 = MODULI_INDEX["A1212"], MODULI_INDEX["A3232"]
@@ -76,17 +76,17 @@ def torsional_onset(at: TubeAt, start: float, end: float, rtol: float) -> Onset 
 
 def margin(state) -> tuple[float, float, float]:
     """(min over the wall of min(gamma_12, A3232), min over the wall of gamma_12, max over
-    the wall of |A3232|), each over the wall's largest A1212 (the layers' own scaling
-    included)."""
+    the wall of |A3232|), each over its layer's small-strain shear modulus (not the loaded
+    moduli, which vanish with them: gamma_12 = A1212 where there is no field)."""
     radii = state.tube.radii
-    gamma, a3232, scale = [], [], 0.0
-    for a, b in zip(radii, radii[1:]):
+    gamma, a3232 = [], []
+    for layer, a, b in zip(state.tube.layers, radii, radii[1:]):
         R = np.linspace(a, b, PER_LAYER)
         inner = state.moduli(R[:1], side="outer")  # the layer's own side of its faces
         outer = state.moduli(R[-1:], side="inner")
         mod = np.concatenate([inner, state.moduli(R[1:-1]), outer])
-        gamma.append(mod[:, _A1212] - mod[:, _G122] ** 2 / mod[:, _K22])
-        a3232.append(mod[:, _A3232])
-        scale = max(scale, float(np.max(np.abs(mod[:, _A1212]))))
-    g, a = np.concatenate(gamma) / scale, np.concatenate(a3232) / scale
+        mu = layer.initial_moduli[0]
+        gamma.append((mod[:, _A1212] - mod[:, _G122] ** 2 / mod[:, _K22]) / mu)
+        a3232.append(mod[:, _A3232] / mu)
+    g, a = np.concatenate(gamma), np.concatenate(a3232)
     return float(min(g.min(), a.min())), float(g.min()), float(np.max(np.abs(a)))
