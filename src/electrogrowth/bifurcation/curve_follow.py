@@ -6,8 +6,10 @@ followed: each mode's value is predicted from its last two points
 (continuation.predict.secant_bracket), and the one predicted first is solved in that
 bracket; or the exact short-wave limit is solved, if it came first. The point is accepted
 only if every mode of the scan's grid is still on its stable side just before it, no face
-is past its short-wave limit and the mode is not on the edge of the scan's ranges;
-otherwise, at the ends and every CHECK_EVERY points it is a full scan.
+is past its short-wave limit and the mode is not on the edge of the scan's ranges, and the
+tube at the control's start is as stable as a scan's march requires (its grid's modes on
+their stable side, no face past its short-wave limit); otherwise, at the ends and every
+CHECK_EVERY points it is a full scan.
 """
 
 from __future__ import annotations
@@ -26,8 +28,8 @@ from ..interrupts import reraise_interrupt
 from ..model.layers import Tube
 from ..outcomes import NO_MODE, Kind
 from .curve_record import CurvePoint, _accuracy, _failed_point, _scan_point
-from .directions import past_surface
-from .march import calibrated
+from .directions import past_surface, surface_past
+from .march import calibrated, control_path
 from .scan import ScanOptions
 from .scan_grid import scan_grid, stable_signs
 
@@ -94,6 +96,8 @@ class _Follower:
         """The followed mode predicted first, solved, or None if the check fails (the
         short-wave limit, if it came first at the last scan)."""
         at = self.params.at(self.along, x)
+        if not self._stable_at_start(at):  # the full scan says why
+            return None
         if self.scan.kind == Kind.SURFACE:
             limit = self.short_wave_limit(at, self.solve_for, side=self.side)
             if limit.kind != Kind.SURFACE or not self._all_stable(at, None, limit.value):
@@ -118,11 +122,30 @@ class _Follower:
             x, c.value, best, Kind.BIFURCATION, _accuracy(c), error_estimate=c.error_estimate
         )
 
+    def _stable_at_start(self, at: Tube) -> bool:
+        """The tube at the control's start: no face past its short-wave instability and
+        every mode of the scan's grid on its stable side, as a full scan requires there. A
+        voltage held past the inner face's limit, whose growth restabilised the short waves
+        before the critical value, was followed as (2, 1), status ok (check round 20, D1)."""
+        x0 = control_path(at, self.solve_for, self.side)[0]
+        try:
+            return surface_past(at.at(self.solve_for, x0)) is None and self._grid_stable(
+                at, None, x0
+            )
+        except ElectrogrowthError:
+            return False
+
     def _all_stable(self, at: Tube, best, value: float) -> bool:
         """Every mode of the scan's grid but ``best`` (None: all) is still on its stable
         side (the sign on the unloaded tube, as in a scan's march; loose targets, tightened
         as a march's where they do not resolve this tube's targets: march.calibrated)
         just before ``value``."""
+        before = value - self.sense * 1e-9 * max(1.0, abs(value))
+        return self._grid_stable(at, best, before)
+
+    def _grid_stable(self, at: Tube, best, x: float) -> bool:
+        """Every mode of the scan's grid but ``best`` (None: all) on its stable side at
+        ``x`` (:meth:`_all_stable`)."""
         o = self.options
         families = (o.prismatic, o.torsional)
         grid = scan_grid(*self.ranges, o.extend, families)
@@ -130,8 +153,7 @@ class _Follower:
         other = np.ones(len(grid), bool)
         if best is not None:
             other = ~((grid[:, 0] == best[0]) & (grid[:, 1] == best[1]))
-        before = value - self.sense * 1e-9 * max(1.0, abs(value))
-        state = solve_base_state(at.at(self.solve_for, before))
+        state = solve_base_state(at.at(self.solve_for, x))
         rows, loose = grid[other], ImpedanceTarget(SCAN_SIGNS)
         _, f = calibrated(loose, state, rows, loose(state, rows))
         return bool(np.all(signs[other] * f > 0))
