@@ -312,7 +312,7 @@ def _solve(
     ``march``, only in ``bracket`` (NoSignChange if the target keeps its sign there)."""
     mode = with_family(m, n, fam)
     acc = Accuracy(rtol)
-    doubt, fam_checked = "", False  # why a torsional root is not known to be the first
+    doubt, onset_read = "", False  # why a torsional root is not known to be the first
     fine, coarse = targets_for(method, acc.fine), coarse_targets_for(method, acc.fine)
     sref = stable_sign(m, n, params, method, family=fam)
     at = TubeAt(params, solve_for)
@@ -349,7 +349,7 @@ def _solve(
             # a torsional mode first bifurcates where its moduli vanish: no window to look for
             if fam is Family.TORSIONAL:
                 root, doubt = _torsional_first(params, at, solve_for, side, None)
-                fam_checked = True
+                onset_read = True
             else:
                 root = _surface_window(params, (m, n), solve_for, side, g)
             if root is None:
@@ -369,7 +369,7 @@ def _solve(
                 family=fam,
             )
         value = res.found[0].value
-        if fam is Family.TORSIONAL and not fam_checked:  # the march's root: the first?
+        if fam is Family.TORSIONAL and not onset_read:  # the march's root: the first?
             value, doubt = _torsional_first(params, at, solve_for, side, value)
     path = control_path(params, solve_for, side)[:2]
     estimate = second_resolution(root_mode(at, coarse, mode, sref), value, path)

@@ -45,6 +45,7 @@ from ..model.controls import parse_control
 from ..model.layers import Tube
 from ..model.params import SUPPORTED
 from .along import LoadMargin, TubeAt, bounded_energy, clear_of_lock, has_lock
+from .torsion_onset import margin
 
 #: the fates of a point where no state was found (_fate)
 _NO_STATE = ("lost", "locked")
@@ -187,8 +188,6 @@ def _why_unresolved(at: TubeAt, x_ok: float, rtol: float) -> str:
     wall (gamma_12 or A3232, torsion_onset.margin) vanishing there, the material losing
     strong ellipticity (an energy text whose W_1 falls to 0: check round 21), else that it
     is not known."""
-    from .torsion_onset import margin  # here: the moduli are read only when states fail
-
     try:
         low = margin(at.solved(x_ok, rtol))[0]
     except ElectrogrowthError:

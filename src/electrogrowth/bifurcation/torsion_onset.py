@@ -55,19 +55,18 @@ def torsional_onset(at: TubeAt, start: float, end: float, rtol: float) -> Onset 
     """The first zero of :func:`margin` along the path from ``start`` to ``end`` (``STEPS``
     samples, then Brent's method), or None where the moduli stay positive up to ``end``
     or a state on the way does not solve (then no such point is claimed)."""
+
+    def low(x: float) -> float:
+        return margin(at.solved(float(x), rtol))[0]
+
     xs = np.linspace(start, end, STEPS + 1)
     try:
-        values = [margin(at.solved(float(x), rtol))[0] for x in xs[:1]]
-        for x in xs[1:]:
-            values.append(margin(at.solved(float(x), rtol))[0])
-            if not values[-1] > 0:
-                break
-        else:
+        if not low(xs[0]) > 0:  # at the start: the mode is unstable there, the march says so
             return None
-        if not values[0] > 0:  # at the start: the mode is unstable there, the march says so
+        hi = next((j for j in range(1, len(xs)) if not low(xs[j]) > 0), None)
+        if hi is None:
             return None
-        lo, hi = float(xs[len(values) - 2]), float(xs[len(values) - 1])
-        value = brent(lambda x: margin(at.solved(x, rtol))[0], lo, hi, THRESHOLD)
+        value = brent(low, float(xs[hi - 1]), float(xs[hi]), THRESHOLD)
         _, gamma, top = margin(at.solved(value, rtol))
     except ElectrogrowthError:
         return None
