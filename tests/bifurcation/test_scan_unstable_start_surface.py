@@ -69,4 +69,5 @@ def test_a_sequence_ends_at_the_inner_faces_limit():
     (end,) = [s for s in seq.switches if s.kind == "end"]
     limit = short_wave_limit(ungrown, "voltage")
     assert limit.face == "inner" and end.x == pytest.approx(limit.value, abs=1e-12)
+    assert end.x < 0.7619176717  # the independent (0, 40) onset of the ungrown tube
     assert [iv.failure for iv in seq.intervals][-1] == "UnstableAtStart"
