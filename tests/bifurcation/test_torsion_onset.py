@@ -10,12 +10,14 @@ exact Bessel dispersion relation puts the other roots of (0, 100) at 0.166235, 0
 its 113th root), status ok, certified.
 """
 
+import numpy as np
 import pytest
 
-from electrogrowth import Layer, Material, Tube, critical_value
+from electrogrowth import Layer, Material, Tube, critical_value, solve_base_state
 from electrogrowth.bifurcation.along import TubeAt
 from electrogrowth.bifurcation.torsion_onset import margin, torsional_onset
 from electrogrowth.errors import ConvergenceError, NoBifurcationFound
+from electrogrowth.incremental.targets import impedance_targets
 
 NEGATIVE_I2 = Material("mrneg", "(1.2*(I1-3) - 0.2*(I2-3))/2 + I5/2")
 TUBE = Tube((Layer(1.4, material=NEGATIVE_I2),), length=2.0)
@@ -68,3 +70,23 @@ def test_the_verdict_names_a_torsional_mode_so():
     c = critical_value(TUBE, 0, 100, "stretch", side="compression", family="torsional")
     meaning = c.verdict.meaning
     assert "the torsional mode (m, n) = (0, 100)" in meaning and "wrinkle mode" not in meaning
+
+
+#: A3232 = A1313 = lambda_z^2 (3 - 2 / lambda_z) in the uniform wall of this energy under
+#: stretch: both vanish at lambda_z = 2/3, and at the float 0.6666666666666667 A1313 is 0
+#: exactly. Brent's iterates for (0, 100) reached it.
+STEEP_I2 = Material("mrneg3", "(3.0*(I1-3) + (-2.0)*(I2-3))/2 + I5/2")
+
+
+def test_a_modulus_vanishing_exactly_is_no_internal_error():
+    """The Stroh matrix divides by gamma_13 = A1313 - ...; numba's Python error model
+    raised ZeroDivisionError there for every mode ('internal error: ZeroDivisionError'
+    from critical_value(..., 0, 100, ..., family='torsional')). A state that has lost
+    strong ellipticity has no meaningful target; IEEE division lets the root finders go on,
+    and the torsional onset below is the answer."""
+    tube = Tube((Layer(1.4, material=STEEP_I2),), length=2.0)
+    state = solve_base_state(tube.at("stretch", 0.6666666666666667))
+    rows = np.array([[0, 100, 2], [0, 100, 0], [3, 2, 0], [4, 0, 1]], float)
+    assert np.isfinite(impedance_targets(state, rows)).all()
+    c = critical_value(tube, 0, 100, "stretch", side="compression", family="torsional")
+    assert c.status == "ok" and c.value == pytest.approx(2 / 3, rel=1e-12)

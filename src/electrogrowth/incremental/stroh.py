@@ -79,7 +79,11 @@ K22 = MODULI_INDEX["K22"]
 K33 = MODULI_INDEX["K33"]
 
 
-@numba.njit(cache=True)
+# IEEE division: where a shear modulus gamma_1a vanishes exactly (strong ellipticity lost;
+# a Mooney-Rivlin wall with a negative I2 weight at lambda_z = 0.6666666666666667) the
+# Python error model raised ZeroDivisionError for every mode, an internal error; with inf
+# entries the integration fails or gives a value near zero, and the callers go on.
+@numba.njit(cache=True, error_model="numpy")
 def stroh_matrix(mod, p, m, kr, out):
     """Write the Stroh matrix G into ``out`` (paper eq. Stroh, d(eta)/dr = G eta / r).
 
