@@ -70,7 +70,10 @@ class UnstableAtStart(ParameterError):
     """The tube is already unstable at the control's start, before any of its load (a mode,
     or a face's short-wave limit): its critical value lies at or before the start. Next to
     a tube that wrinkles in no mode before the control's end (NoBifurcationFound), the
-    critical value runs through the control's whole range in between."""
+    critical value runs through the control's whole range in between. ``row``: the mode
+    (m, n, family code) found unstable there, where a mode was (None: a face)."""
+
+    row: tuple[int, int, int] | None = None
 
 
 class MaterialError(ElectrogrowthError, ValueError):

@@ -82,6 +82,10 @@ class CurvePoint(Outcome):
     remedy: str = ""
     traceback: str = dataclasses.field(default="", repr=False, compare=False)
     failure: str = ""
+    #: the mode (m, n, family code) an UnstableAtStart failure found unstable at the
+    #: control's start: where the end of a valid range is located (curve_switches.py); not
+    #: part of the record
+    unstable_row: tuple = dataclasses.field(default=(), repr=False, compare=False)
 
     def __post_init__(self):
         object.__setattr__(self, "status", Status(self.status or Status.OK))
@@ -95,6 +99,7 @@ def point_record(pt: CurvePoint) -> dict:
     """A grid point as a JSON-ready record (:func:`point_of` reads it back exactly: floats
     keep every digit through JSON's repr, NaN as None)."""
     record = dataclasses.asdict(pt)
+    del record["unstable_row"]
     for key in ("x", "value", "short_wave_limit", "error_estimate"):
         record[key] = None if math.isnan(record[key]) else record[key]
     record["status"], record["kind"] = str(pt.status), str(pt.kind)
@@ -155,7 +160,7 @@ def _mode(v) -> tuple[int, int]:
     return (int(v[0]), int(v[1]))
 
 
-_FIELDS = {f.name for f in dataclasses.fields(CurvePoint)}
+_FIELDS = {f.name for f in dataclasses.fields(CurvePoint)} - {"unstable_row"}
 
 
 def _failed_point(x: float, exc: Exception) -> CurvePoint:
@@ -174,6 +179,7 @@ def _failed_point(x: float, exc: Exception) -> CurvePoint:
         remedy=remedy(exc),
         traceback=traceback_of(exc),
         failure=type(exc).__name__,
+        unstable_row=getattr(exc, "row", None) or (),
     )
 
 

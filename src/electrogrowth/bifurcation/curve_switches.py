@@ -55,6 +55,7 @@ from .curve_record import (
     _row,
     _window_between,
 )
+from .start_edge import start_root
 
 #: the value recorded on the failed side of a located edge of the valid range
 NO_VALUE = math.nan
@@ -70,6 +71,9 @@ ABOVE_NOISE = 8.0
 #: rtol, ~1e-9 after)
 REFINE_ABOVE = 1e-9
 FINEST = RTOL_RANGE[0]
+#: the distance (relative to max(1, |x|)) of the scan whose secant carries an end's value
+#: to its located x (:meth:`_Locator._end_at`)
+SECANT = 1e-4
 
 
 class Located(NamedTuple):
@@ -203,16 +207,56 @@ class _Locator:
         sense = b.x - a.x  # the grid's order
         failed = sorted((p for p in scanned.values() if _failed(p)), key=lambda p: sense * p.x)
         more_rows, more_switches = self._chain(_kind_changes(failed), depth)
-        inner = [_row(p) for p in (last_failed, end) if p is not bad and p is not good]
-        errors = (abs(x_bad - x_good), end.error_estimate)  # the end lies in the last bracket
+        x_end, value, errors = self._end_at(end, last_failed, scanned, (good.x, bad.x))
+        # the rows of the two last scans, each on its side of the located end (a scan's
+        # start check reads loose signs: next to the root either can be past it, then its
+        # row is at the end, as a crossing's two rows are)
+        inner = []
+        if last_failed is not bad:
+            at = last_failed.x if _between(last_failed.x, bad.x, x_end) else x_end
+            inner.append((at, *_row(last_failed)[1:]))
+        if end is not good:  # the end's row where the end was located
+            inner.append((x_end, value, *_row(end)[2:]))
         if good is b:  # failed before, valid after: the valid range starts at x_good
             rows = more_rows + inner + rows
-            change = Switch(x_good, NO_VALUE, NO_MODE, end.mode, end.value, Kind.END, *errors)
+            change = Switch(x_end, NO_VALUE, NO_MODE, end.mode, value, Kind.END, *errors)
         else:
             rows = rows + inner[::-1] + more_rows
-            change = Switch(x_good, end.value, end.mode, NO_MODE, NO_VALUE, Kind.END, *errors)
+            change = Switch(x_end, value, end.mode, NO_MODE, NO_VALUE, Kind.END, *errors)
         changes = switches + more_switches + [change]
         return rows, sorted(changes, key=lambda s: sense * s.x)
+
+    def _end_at(self, end: CurvePoint, failed: CurvePoint, scanned: dict, grid: tuple):
+        """(x, value, (x_error, value_error)) of the end of the valid range found by the
+        bisection between ``end`` (the last valid scan) and ``failed``: the bracket and the
+        end's own value, or where the failed scan names the mode unstable at the control's
+        start, that mode's root there (bifurcation/start_edge.py), the value carried to it
+        along the secant of the valid scans of the same mode (``grid``: the valid and the
+        failed grid point; a root not between them is not taken)."""
+        x_error = abs(failed.x - end.x)  # the end lies in the last bracket
+        found = None
+        if failed.unstable_row and end.x != grid[0]:
+            found = start_root(
+                self.params, self.along, self.solve_for, self.side, failed.unstable_row,
+                end.x, failed.x,
+            )  # fmt: skip
+        if found is None or not _between(found[0], *grid):
+            return end.x, end.value, (x_error, end.error_estimate)
+        x, x_error = found
+        same = [
+            p
+            for p in scanned.values()
+            if p.mode == end.mode and p.kind == end.kind and p is not end
+        ]
+        if not same:  # no secant: the end's value where it was scanned, its distance an error
+            return end.x, end.value, (abs(x - end.x) + x_error, end.error_estimate)
+        # a secant over ~SECANT (the bisection's scans halve the distance: one is within a
+        # factor 2): the values' noise (~1e-11) and the curvature both small there
+        gap = SECANT * max(1.0, abs(end.x))
+        near = min(same, key=lambda p: abs(math.log(abs(p.x - end.x) / gap)))
+        slope = (near.value - end.value) / (near.x - end.x)
+        value_error = end.error_estimate + abs(slope) * x_error
+        return x, end.value + slope * (x - end.x), (x_error, value_error)
 
     def _window(self, a: CurvePoint, b: CurvePoint, depth: int):
         """Rows and changes between a tube unstable at the control's start and one with no
@@ -443,6 +487,11 @@ def _key(pt: CurvePoint, x) -> tuple:
     """The key of the value at x of what is critical at ``pt`` (its mode, or the short-wave
     limit) among a locator's solved values."""
     return ("surface" if pt.kind == Kind.SURFACE else pt.mode, float(x))
+
+
+def _between(x: float, a: float, b: float) -> bool:
+    """x strictly between a and b."""
+    return min(a, b) < x < max(a, b)
 
 
 def _switch_at(a: CurvePoint, b: CurvePoint, found: Located):

@@ -194,11 +194,13 @@ def first_bifurcations(
     if (g0 <= 0).any():
         i = int(np.argmax(g0 <= 0))
         m, n = modes[i, :2].astype(int)
-        raise UnstableAtStart(
+        err = UnstableAtStart(
             f"the tube is already unstable in mode ({m}, {n})"
             f" ({row_family(modes[i])}) at {solve_for} = {x0:g}; start from"
             " a stable state"
         )
+        err.row = (int(m), int(n), row_family(modes[i]).code)
+        raise err
     fine = brent_targets or targets
     views = Views(
         Signed(at, targets, modes, sref),
