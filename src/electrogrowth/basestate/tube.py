@@ -46,7 +46,9 @@ def voltage_threshold(params: Tube) -> tuple[float, str, float]:
         Vbar rises without bound (Vbar_threshold = inf) up to where the branch ends, lambda_i:
         the locking stretch of the energy (e.g. Gent), where no charge balances the traction,
         or where the stresses exceed the largest double (an exponential energy); "none": Vbar
-        rises without bound as lambda_i -> inf (lambda_i = inf). The kinds of a layered
+        rises without bound as lambda_i -> inf (lambda_i = inf); "closing": no charge
+        balances the traction just above lambda_i0 (the energy's field closes the bore,
+        a branch the package does not follow): 0, lambda_i = lambda_i0. The kinds of a layered
         tube's :class:`~electrogrowth.basestate.thresholds.Threshold`.
         ``params.voltage`` is ignored.
 

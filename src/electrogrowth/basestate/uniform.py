@@ -35,6 +35,13 @@ from .voltage import GAUSS_ORDERS, UniformWall, cell_root, threshold_info
 __all__ = ["UniformState", "solve_uniform"]
 
 
+#: why a "closing" threshold is 0 (basestate/voltage.py `_rises`)
+CLOSING = (
+    "this energy's field closes the bore (threshold 0, kind closing), and the package"
+    " follows only charged states along which it opens"
+)
+
+
 def solve_uniform(tube: Tube, rtol: float) -> UniformState:
     """The base state of a uniform tube (``tube.is_uniform``): lambda_i solves
     Vbar(lambda_i) = Vbar on the monotone branch from lambda_i0 (Vbar = 0) to the threshold,
@@ -43,11 +50,16 @@ def solve_uniform(tube: Tube, rtol: float) -> UniformState:
     Vbar (~2 ms)."""
     info = threshold_info(tube, rtol)
     target = tube.voltage
-    if not target < info.value:
+    if not (target < info.value or target == 0):
+        where = (
+            f"g = {tube.growth:g}, lambda_z = {tube.stretch:g}, Rbar_o = {tube.outer_radius:g},"
+            f" {tube.material.name}"
+        )
+        if info.kind == "closing":
+            raise BaseStateError(f"Vbar = {target:.12g} at {where}: {CLOSING}")
         raise BaseStateError(
             f"Vbar = {target:.12g} is at or above the threshold Vbar = {info.value:.12g}"
-            f" ({info.kind}) for g = {tube.growth:g}, lambda_z = {tube.stretch:g},"
-            f" Rbar_o = {tube.outer_radius:g}, {tube.material.name}; no axisymmetric state"
+            f" ({info.kind}) for {where}; no axisymmetric state"
         )
     Ro, g, lz = tube.outer_radius, tube.growth, tube.stretch
     if info.nodes == 0:  # neo-Hookean closed form

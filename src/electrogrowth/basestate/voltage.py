@@ -247,7 +247,8 @@ def _secant(f, x0: float) -> float:
 class _Threshold:
     lambda_i0: float  # purely mechanical state, Vbar = 0
     value: float  # Vbar threshold (inf if none)
-    kind: str  # "asymptote", "limit point", "locking" or "none" (as a layered Threshold)
+    kind: str  # "asymptote", "limit point", "locking", "none" (as a layered Threshold) or
+    # "closing" (no charged state rises from lambda_i0: value 0, lambda_i = lambda_i0)
     lambda_i: float  # lambda_i at the threshold (inf: asymptote; the branch's end: "locking")
     error: float  # estimated absolute error of value
     nodes: int  # Gauss-Legendre nodes meeting rtol (0: neo-Hookean closed form, no quadrature)
@@ -365,6 +366,8 @@ def _threshold(material, outer_radius, growth, stretch, rtol) -> _Threshold:
         )
     lam0, nodes = _mechanical(material, outer_radius, growth, stretch, rtol)
     tube = UniformWall(material, outer_radius, growth, stretch, nodes)
+    if not _rises(tube, lam0):  # no charged state on the branch followed: Vbar <= 0 only
+        return _Threshold(lam0, 0.0, "closing", lam0, 0.0, nodes, np.array([lam0]), np.zeros(1))
     lam = lam0 * _SCAN_RATIO ** np.arange(0, math.ceil(math.log(_SCAN_SPAN, _SCAN_RATIO)) + 1)
     v = np.concatenate([[0.0], tube.voltage(lam[1:])])
     bad = np.flatnonzero(~np.isfinite(v))
@@ -400,6 +403,22 @@ def _threshold(material, outer_radius, growth, stretch, rtol) -> _Threshold:
     return _Threshold(value=float(t[-1]), kind="asymptote", lambda_i=math.inf, **out)
 
 
+#: the branch is read this far above lambda_i0 (relative) before the scan's first step
+_FIRST_STEP = 1e-6
+
+
+def _rises(tube: UniformWall, lam0: float) -> bool:
+    """Does a charge balance the traction just above lambda_i0? Not where the energy's field
+    closes the bore (an I6 term with a negative weight, `(I1-3)/2 + 0.2*I4 + 0.4*I5 -
+    0.1*I6` at lambda_z <= 0.49: the charge raises the residual of (*) there): the branch
+    the package follows, rising in lambda_i, does not exist, and the threshold is 0 (kind
+    "closing"). The scan's steps of 8 % jumped that gap to states of another branch beyond
+    it: a locking stretch, an unbounded branch, or a limit point whose interpolant met the
+    gap ("internal error: LinAlgError", check round 24)."""
+    near = lam0 * (1.0 + _FIRST_STEP)
+    return bool(np.isfinite(tube.voltage(np.array([near]))[0]))
+
+
 def _limit_point(tube: UniformWall, lam0: float, lam: np.ndarray, v: np.ndarray) -> _Threshold:
     """Maximise Vbar on [lam[-3], lam[-1]]: root of the derivative of a degree-24 Chebyshev
     interpolant of Vbar^2 (analytic there), then Vbar evaluated exactly at that root."""
@@ -408,7 +427,10 @@ def _limit_point(tube: UniformWall, lam0: float, lam: np.ndarray, v: np.ndarray)
         return np.sign(y := tube.voltage(x)) * y**2
 
     a, b = lam[-3], lam[-1]
-    poly = cheb.Chebyshev.interpolate(vsq, 24, domain=[a, b])
+    with np.errstate(invalid="ignore"):
+        poly = cheb.Chebyshev.interpolate(vsq, 24, domain=[a, b])
+    if not np.isfinite(poly.coef).all():  # a gap in the branch between the scan's samples
+        raise ConvergenceError(f"Vbar is not finite everywhere in [{a:.6g}, {b:.6g}]")
     crit = [x.real for x in poly.deriv().roots() if abs(x.imag) < 1e-9 and a <= x.real <= b]
     if not crit:
         raise ConvergenceError(f"limit point of Vbar not located in [{a:.6g}, {b:.6g}]")

@@ -99,6 +99,8 @@ def _growth_text(growth) -> str:
 
 def _threshold_text(rec: dict) -> str:
     thr, kind, lam = rec["voltage_threshold"], rec["threshold_kind"], rec["threshold_lambda_i"]
+    if kind == "closing":
+        return "0 (closing: this energy's field closes the bore; no charged state is followed)"
     if kind == "locking":
         return f"none before the locking stretch lambda_i = {lam:.12g} (locking)"
     if thr is None:

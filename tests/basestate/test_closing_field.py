@@ -1,0 +1,64 @@
+"""An energy whose electric field closes the bore: no charged state rises from the
+unloaded state, the threshold is 0, kind "closing" (check round 24, D1;
+basestate/voltage.py `_rises`).
+
+`(I1-3)/2 + 0.2*I4 + 0.4*I5 - 0.1*I6` passes the unit check. In a uniform tube
+(Rbar_o 2) compressed to lambda_z <= 0.49, the charge makes the hoop residual of (*) rise
+just above lambda_i0 (below it, it rises through zero): the branch falls in lambda_i, which
+the package does not follow. The threshold's scan (8 % steps) jumped the gap to states of
+another branch beyond it: "internal error: LinAlgError" at 0.46-0.48 (its limit point's
+interpolant met the gap), a locking stretch 1.7076 at 0.4, "none (unbounded)" at 0.49.
+The crease criterion's Biot ratio compresses a tube through that range, so every
+critical value, curve and design with such a layer ended in that internal error.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from electrogrowth import Material, Tube, neo_hookean, solve_base_state
+from electrogrowth.basestate import voltage
+from electrogrowth.basestate.tube import voltage_threshold
+from electrogrowth.bifurcation.crease import biot_ratio, crease_onset
+from electrogrowth.errors import BaseStateError
+
+CLOSING = Material("closing", "(I1-3)/2 + 0.2*I4 + 0.4*I5 - 0.1*I6")
+
+
+@pytest.mark.parametrize("stretch", [0.40, 0.47, 0.49])
+def test_no_charged_state_rises_from_the_unloaded_state(stretch):
+    tube = Tube.uniform(2.0, stretch=stretch, material=CLOSING)
+    value, kind, lam = voltage_threshold(tube)  # was LinAlgError, "locking", "none"
+    assert (value, kind) == (0.0, "closing")
+    state = solve_base_state(tube)  # the uncharged state stands
+    assert state.lambda_i == lam == pytest.approx(math.sqrt(1 / stretch), rel=1e-12)
+    with pytest.raises(BaseStateError, match="closes the bore"):
+        solve_base_state(tube.at("voltage", 0.1))
+
+
+def test_the_charge_raises_the_hoop_residual_above_lambda_i0():
+    """Why: the traction's residual (*) above lambda_i0 grows with the charge q (an ideal
+    dielectric's falls through zero), and below lambda_i0 it rises through zero."""
+    lam0, nodes = voltage._mechanical(CLOSING, 2.0, 1.0, 0.47, 1e-12)
+    wall = voltage.UniformWall(CLOSING, 2.0, 1.0, 0.47, nodes)
+    qs = (0.0, 1e-2, 1e-1, 1.0)
+    above = [wall.hoop(np.array([lam0 * 1.001]), q)[0][0] for q in qs]
+    below = [wall.hoop(np.array([lam0 * 0.999]), q)[0][0] for q in qs]
+    assert above[0] > 0 and np.all(np.diff(above) > 0)
+    assert below[0] < 0 < below[-1]
+
+
+def test_an_opening_branch_of_the_same_energy_is_unchanged():
+    value, kind, _ = voltage_threshold(Tube.uniform(2.0, stretch=0.6, material=CLOSING))
+    assert (value, kind) == (math.inf, "none")
+
+
+def test_the_crease_criterion_of_such_an_energy_is_evaluated():
+    """Its Biot ratio compresses an uncharged tube through that range: LinAlgError before
+    (every critical value's verdict, curve and design with such a layer)."""
+    # uncharged, the energy is neo-Hookean: its Biot ratio and crease onset are that
+    # solid's (the crease at lambda_z = 2.4^(-2/3), docs/derivation-crease.md)
+    assert biot_ratio(CLOSING) == pytest.approx(biot_ratio(neo_hookean()), rel=1e-12)
+    onset = crease_onset(Tube.uniform(1.4, material=CLOSING), "stretch", side="compression")
+    assert onset.kind == "crease" and onset.value == pytest.approx(2.4 ** (-2 / 3), rel=1e-3)
