@@ -46,3 +46,35 @@ def test_film_fold_koiter_is_not_a_parameter_error():
     except ParameterError as exc:
         pytest.fail(f"internal Newton step blamed on the user: {exc}")
     assert k.branch in ("supercritical", "subcritical")
+
+
+def test_a_slender_tubes_bending_mode_converges_to_the_elastica():
+    """`koiter_coefficient(Tube.uniform(1.2, length=80), (1, 1), "growth")` raised
+    ConvergenceError (check round 23): at 32 nodes the eigenvalue sits at A's rounding
+    (~1e-13 at |A| ~ 1e3) while the bending mode's slope is tiny, so Newton stepped by
+    > 1e-9 back and forth. Independent route: the inextensible elastica, whose end
+    shortening gives g_2 -> g_c pi^2 / (4 L^2) (check round 23 derived it for the stretch
+    control; growth g scales lengths as 1 / lambda_z), approached like 1 / L^2."""
+    gap = {}
+    for length in (80.0, 120.0):
+        k = koiter_coefficient(Tube.uniform(1.2, length=length), (1, 1), "growth")
+        assert k.branch == "supercritical"
+        elastica = k.critical_value * math.pi**2 / (4 * length**2)
+        gap[length] = 1.0 - k.coefficient / elastica
+        assert 0 < gap[length] < 5e-3  # 2.7e-3 and 1.15e-3
+    assert gap[120.0] / gap[80.0] == pytest.approx((80 / 120) ** 2, rel=0.1)
+
+
+def test_an_expansion_that_does_not_converge_names_a_remedy_it_takes(monkeypatch):
+    """The ConvergenceError's own remedy named `rtol` and `method`, which
+    koiter_coefficient does not take (check round 23)."""
+    from electrogrowth.bifurcation import koiter
+
+    def fails(*args):
+        raise ConvergenceError("the critical growth of mode (1, 1) did not converge")
+
+    monkeypatch.setattr(koiter, "_expansion", fails)
+    with pytest.raises(ConvergenceError) as err:
+        koiter_coefficient(Tube.uniform(1.2, length=8.0), (1, 1), "growth")
+    assert "postbuckle" in err.value.remedy.python and "rtol" not in err.value.remedy.python
+    assert "--koiter" in str(err.value.remedy)

@@ -19,7 +19,13 @@ from __future__ import annotations
 
 import dataclasses
 
-from ..errors import BaseStateError, ConvergenceError, NoBifurcationFound, ParameterError
+from ..errors import (
+    BaseStateError,
+    ConvergenceError,
+    NoBifurcationFound,
+    ParameterError,
+    Remedy,
+)
 from ..model.layers import Tube
 from .koiter_controls import branch as branch_of
 from .koiter_controls import check_control
@@ -161,6 +167,16 @@ def koiter_coefficient(
     )
 
 
+#: where a tube's expansion does not converge: the linear value stands; the branch itself
+#: comes from the post-buckling model
+NOT_EXPANDED = Remedy(
+    "the critical value stands (run without --koiter); follow the branch itself with"
+    " `electrogrowth postbuckle`",
+    python="the critical value stands (critical_value); follow the branch itself with"
+    " electrogrowth.postbuckle.postbuckle",
+)
+
+
 def _tube_result(tube: Tube, mode, control: str, side: str | None = None) -> KoiterResult:
     """The tube's case of :func:`koiter_coefficient`, with its one-line refusals."""
     family = _tube_family(mode)
@@ -172,7 +188,11 @@ def _tube_result(tube: Tube, mode, control: str, side: str | None = None) -> Koi
         wavenumber = float(mode[0])
     else:  # the axial wavenumber K = n pi / L (a wrinkle's m is in its mode)
         wavenumber = axial_wavenumber(tube, int(mode[1]))
-    runs = [_expansion(tube, mode, control, nodes, side) for nodes in RESOLUTIONS]
+    try:
+        runs = [_expansion(tube, mode, control, nodes, side) for nodes in RESOLUTIONS]
+    except ConvergenceError as exc:  # not an rtol or a method: this function takes neither
+        exc.remedy = NOT_EXPANDED
+        raise
     fine = runs[-1]
     return KoiterResult(
         coefficient=fine.coefficient,
