@@ -178,10 +178,16 @@ def _each(fixed: np.ndarray, guess, solve) -> np.ndarray:
 
 def _balance(h, guess: float) -> float:
     """The root of the axial force's residual h in one coordinate: bracketed from the guess
+    (or, where h is not finite there, the nearest finite value: :func:`_finite_near`)
     outward in both directions (steps growing 1.5-fold), then brentq; NaN if no bracket."""
     h0 = h(guess)
-    if h0 == 0 or not np.isfinite(h0):
-        return guess if h0 == 0 else math.nan
+    if h0 == 0:
+        return guess
+    if not np.isfinite(h0):
+        found = _finite_near(h, guess)
+        if found is None:
+            return math.nan
+        guess, h0 = found
     ends = {1: (guess, h0), -1: (guess, h0)}
     step = 0.02
     for _ in range(40):
@@ -207,6 +213,23 @@ def _balance(h, guess: float) -> float:
             break
         step *= 1.5
     return math.nan
+
+
+def _finite_near(h, guess: float):
+    """(x, h(x)) at a finite value of h near the guess, where h(guess) is not, or None: steps
+    growing 1.5-fold from 0.1 % outward, both directions alternately, within a factor 1e3. A
+    walk continues lambda_z from its last r_i, and a step of r_i towards a Gent layer's
+    lock leaves that lambda_z past it while the balancing one is finite (a Gent core, jm 5,
+    grown 1.95: 1 % above); from there the bracketing goes on as from a finite guess."""
+    step = 1e-3
+    while step < math.log(1e3):
+        for sense in (1, -1):
+            x = guess * math.exp(sense * step)
+            hx = h(x)
+            if np.isfinite(hx):
+                return x, hx
+        step *= 1.5
+    return None
 
 
 def _short_of_edge(h, last: float, h_last: float, edge: float):

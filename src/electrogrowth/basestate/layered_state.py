@@ -23,7 +23,7 @@ from ..labelled import layered_state_dataset
 from ..model.layers import Layer, Tube
 from ..outcomes import json_number
 from .chebyshev_series import ChebyshevSeries
-from .plies import Wall, chebyshev
+from .plies import Wall, chebyshev, stalled_noise
 
 __all__ = ["LayeredState"]
 
@@ -53,6 +53,9 @@ class LayeredState:
     axial_force: float
     end_force: float
     quadrature_error: float = 0.0
+    # the resolution of that check: its residuals' share of a Chebyshev series that stopped
+    # at the noise of its integrand (next to a Gent lock), 0 where every series converged
+    quadrature_noise: float = 0.0
     _wall: Wall = dataclasses.field(default=None, repr=False, compare=False)
     # per layer: (antiderivative of d sigma_rr / dR from R_{k-1}, sigma_rr(R_{k-1}))
     _sigma: tuple = dataclasses.field(default=(), repr=False, compare=False)
@@ -87,6 +90,7 @@ class LayeredState:
         :class:`~.neo_hookean_wall.TractionProfile`, and the residuals below check Newton's
         convergence."""
         sigma, s_a, totals = [], -tube.inner_pressure, np.zeros(3)
+        noise = np.zeros(4)  # (T, scale, V, Nint): what the check's series do not resolve
         r2 = wall.radii2(x, lz)
         for k, ply in enumerate(wall.plies):
             if compiled and wall.closed_form[k]:
@@ -121,6 +125,7 @@ class LayeredState:
             mu, eps = ply.layer.shear_modulus, ply.layer.permittivity
             unit = np.array([mu, mu, math.sqrt(mu / eps), mu])  # stress, field: the layer's
             coef = chebyshev(f, ply.a, ply.b, 0.01 * rtol, "base-state profile", unit)
+            noise += (ply.b - ply.a) * stalled_noise(coef, 0.01 * rtol, unit)
             antider = ChebyshevSeries(coef[:, 0], domain=[ply.a, ply.b]).integ(lbnd=ply.a)
             weights = np.zeros(coef.shape[0])  # int_a^b T_k = (b - a) / (1 - k^2), k even
             weights[::2] = (ply.b - ply.a) / (1.0 - np.arange(0, coef.shape[0], 2) ** 2)
@@ -138,6 +143,7 @@ class LayeredState:
             abs(s_a + P_o) / max(1.0, abs(scale)),
             abs(volt / thick - tube.voltage) / max(1.0, tube.voltage),
         ]
+        floors = [noise[0] / max(1.0, abs(scale)), noise[2] / thick / max(1.0, tube.voltage)]
         if tube.control == "force":
             # the wall's axial stress scale: scale is int (|tau_rr| + |tau_tt|) dr / r, and
             # a stress uniform in r carries pi (r_o^2 - r_i^2) / ln(r_o / r_i) times that in
@@ -151,6 +157,7 @@ class LayeredState:
             area = math.pi * d / half_log if half_log > 0 else 2.0 * math.pi * r2_i
             axial = max(1.0, abs(nint), abs(ends), abs(scale) * area)
             errors.append(abs(applied - tube.axial_force) / axial)
+            floors.append(noise[3] / axial)
         return cls(
             tube,
             float(x),
@@ -163,6 +170,7 @@ class LayeredState:
             N,
             float(applied),
             float(max(errors)),
+            float(max(floors)),
             wall,
             tuple(sigma),
             prep,

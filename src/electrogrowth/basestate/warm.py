@@ -29,7 +29,11 @@ before that branch's threshold:
   (it turns back at a limit point); where the two stages differ (a march from V = 0), the
   slope in r_i as above;
 * the independent Chebyshev quadrature of the state agrees with the Gauss rule of the
-  neighbour's node count (``quadrature_error`` <= rtol, as for every state).
+  neighbour's node count (``quadrature_error`` <= rtol, or its own resolution next to a
+  lock, as for every state).
+
+An iterate that is no finite state (past a Gent layer's lock: a neighbour within 1e-3 of its
+lock is past it for the next tube) is moved back inside first (:func:`_back_inside`).
 
 Otherwise None is returned and the caller walks from the unloaded tube (the cold solve),
 which also raises for a load beyond its threshold. What the local checks cannot see is a
@@ -110,10 +114,14 @@ def continued(tube: Tube, near, rtol: float, guess=None):
 
 def _newton(tube, near, branch, wall, u, dp, force):
     """(r_i, lambda_z, c, rise) by Newton from u, or None (module docstring: the checks)."""
+    last = None
     for _ in range(MAX_ITER):
         F, J = _system(branch, u, dp, force)
         if not (np.all(np.isfinite(F)) and np.all(np.isfinite(J))):
-            return None
+            u = _back_inside(branch, u, last, force)
+            if u is None:
+                return None
+            continue
         try:
             step = np.linalg.solve(J, -F)
         except np.linalg.LinAlgError:
@@ -137,6 +145,29 @@ def _newton(tube, near, branch, wall, u, dp, force):
         else:
             c = float(branch.point([x], [lz])["charge"][0])
         return x, lz, c, rise
+    return None
+
+
+#: halvings of a Newton step that left the finite states, back towards the last iterate
+BACK_STEPS = 30
+
+
+def _back_inside(branch: Branch, u, last, force: bool):
+    """An iterate that is not a finite state (past a Gent layer's lock) moved back inside,
+    or None: the start, under force control, to the lambda_z that balances the axial force
+    at its r_i (Branch.at: a neighbour's state next to a lock is past it for the next tube,
+    a Gent core within 1e-3 of its lock grown 2 % more); a later one, its step halved back
+    towards the last iterate until the state and its Jacobian's points are finite."""
+    if last is None:
+        if not force:
+            return None
+        lz = float(branch.at([u[0]], u[1])["stretch"][0])
+        return np.array([u[0], lz]) if math.isfinite(lz) else None
+    for _ in range(BACK_STEPS):
+        u = last + 0.5 * (u - last)
+        F, J = _system(branch, u, 0.0, force)
+        if np.all(np.isfinite(F)) and np.all(np.isfinite(J)):
+            return u
     return None
 
 
