@@ -66,7 +66,8 @@ TIE = 1e-9
 #: a secant of d for the x error spans values whose |d| is this many times their noise
 #: (e_A + e_B): its slope is then good to ~25 %, as an error estimate needs
 ABOVE_NOISE = 8.0
-#: a crossing whose x_error exceeds this (relative to max(1, |x|)) is refined: its two
+#: a crossing whose x_error exceeds this (relative to |x|, or the grid's spacing where x is
+#: near 0) is refined: its two
 #: modes solved again at FINEST (between neighbouring folds x_error ~1e-7 at the default
 #: rtol, ~1e-9 after)
 REFINE_ABOVE = 1e-9
@@ -342,9 +343,13 @@ class _Locator:
         values solved again at the finest rtol an x_error either side of x (within [lo,
         hi]: the root lies between where the estimate holds), the root of the line through
         them (d is linear on that scale) and the errors of those values; kept as found
-        where they bracket no root or a solve fails."""
+        where they bracket no root or a solve fails. Relative to the design variable's own
+        scale, |x| or the grid's spacing where x is near 0: a film's thickness ~1e-3 kept
+        x_error 5.5e-8 of it (max(1, |x|) = 1 took 5.5e-11 as small), where its two modes
+        tie 4e-12 of it away (check round 22)."""
         x, h = found.x, found.x_error
-        if not REFINE_ABOVE * max(1.0, abs(x)) < h < math.inf or Kind.SURFACE in (a.kind, b.kind):
+        scale = max(abs(x), hi - lo)
+        if not REFINE_ABOVE * scale < h < math.inf or Kind.SURFACE in (a.kind, b.kind):
             return found
         ends = (max(x - h, lo), min(x + h, hi))
         try:

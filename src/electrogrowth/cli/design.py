@@ -367,8 +367,11 @@ def _change_line(seq, s) -> str:
 def _tied_only_lines(result) -> list[str]:
     """One line where a target that is first nowhere ties with the next mode at the closest
     design (an interval of no width: its margin is ~0, of either sign by rounding)."""
+    from ..design.prescribe import no_width
+
     point = any(
-        iv.lo == iv.hi == result.x and iv.mode == result.mode for iv in result.sequence.intervals
+        no_width(iv, result.sequence) and iv.lo == result.x and iv.mode == result.mode
+        for iv in result.sequence.intervals
     )
     if result.status != "not_first" or not point:
         return []

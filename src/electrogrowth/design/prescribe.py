@@ -238,7 +238,7 @@ def prescribe(
     hits = [iv for iv in sequence.intervals if iv.kind == Kind.BIFURCATION and iv.mode in goal]
     # an interval of no width is a tie at one x (a range that starts at the target's switch):
     # the target is first nowhere, it was "found" with M = 4e-16 and to_boundary 0 (probe 9b)
-    region = tuple(iv for iv in hits if iv.hi != iv.lo)
+    region = tuple(iv for iv in hits if not no_width(iv, sequence))
     grid = sorted(set(float(x) for x in sequence.curve.x))
     edges = no_design_ends(sequence)
     if region:
@@ -246,7 +246,7 @@ def prescribe(
     else:
         status, best = (
             NOT_FIRST,
-            _tied_only([iv for iv in hits if iv.hi == iv.lo], goal, margins, scan),
+            _tied_only([iv for iv in hits if no_width(iv, sequence)], goal, margins, scan),
         )
         if best is None:
             best = _closest(grid, goal, margins, scan, set_members(goal, options))
@@ -415,6 +415,16 @@ def _best_in_region(region, grid, goal: Target, margins: Margins, scan, edges=fr
         if best is None or score > best[0]:
             best = (score, x, iv.mode, others)
     return None if best is None else best[1:]
+
+
+def no_width(iv, sequence) -> bool:
+    """Is ``iv`` no wider than the x_error of the switches that bound it (a tie at one x)?
+    A range that starts at a switch located again to 1e-13 of x may start 1.7e-15 before
+    it: (35, 0) was "found" on that sliver."""
+    errors = [
+        s.x_error for s in sequence.switches if s.x in (iv.lo, iv.hi) and math.isfinite(s.x_error)
+    ]
+    return iv.hi - iv.lo <= max(errors, default=0.0)
 
 
 def _tied_only(ties, goal: Target, margins: Margins, scan):
