@@ -17,11 +17,11 @@ import math
 import numpy as np
 import pytest
 
-from electrogrowth import Material, Tube, neo_hookean, solve_base_state
+from electrogrowth import Layer, Material, Tube, gent, neo_hookean, solve_base_state
 from electrogrowth.basestate import voltage
 from electrogrowth.basestate.tube import voltage_threshold
 from electrogrowth.bifurcation.crease import biot_ratio, crease_onset
-from electrogrowth.errors import BaseStateError
+from electrogrowth.errors import BaseStateError, ConvergenceError
 
 CLOSING = Material("closing", "(I1-3)/2 + 0.2*I4 + 0.4*I5 - 0.1*I6")
 
@@ -62,3 +62,23 @@ def test_the_crease_criterion_of_such_an_energy_is_evaluated():
     assert biot_ratio(CLOSING) == pytest.approx(biot_ratio(neo_hookean()), rel=1e-12)
     onset = crease_onset(Tube.uniform(1.4, material=CLOSING), "stretch", side="compression")
     assert onset.kind == "crease" and onset.value == pytest.approx(2.4 ** (-2 / 3), rel=1e-3)
+
+
+def test_a_lock_next_to_the_unloaded_state_is_no_closing_field():
+    """A Gent layer (J_m 0.5) whose unloaded state lies next to its lock has no finite Vbar
+    just above lambda_i0 either: the energy's edge, not a field closing the bore (a second
+    read of the change: it was called closing and every charged state refused)."""
+    tube = Tube.uniform(2.0, material=gent(0.5))
+    assert voltage_threshold(tube)[1] == "locking"
+    assert solve_base_state(tube.at("voltage", 0.05)).lambda_i > 1.0
+
+
+def test_a_layered_tube_of_such_an_energy_names_the_gap():
+    """Two layers of it: the layered threshold's limit-point interpolant met the same gap,
+    'internal error: LinAlgError'; now a ConvergenceError naming it (the layered walk does
+    not read a closing field: docs/reliability.md, Left out)."""
+    tube = Tube((Layer(1.5, material=CLOSING), Layer(2.0, material=CLOSING)), stretch=0.47)
+    state = solve_base_state(tube)  # uncharged: lambda_i = lambda_z^(-1/2)
+    assert state.lambda_i == pytest.approx(0.47**-0.5, rel=1e-12)
+    with pytest.raises(ConvergenceError, match="no state somewhere in it"):
+        state.threshold_kind  # noqa: B018 -- the threshold is read when asked

@@ -215,14 +215,19 @@ def _balance(h, guess: float) -> float:
     return math.nan
 
 
+#: how far (in log) a finite value is looked for about a guess where h is not: a lock 1 %
+#: away is met; a NaN farther away ends the chart, not a root on another branch
+REACH = math.log(1.1)
+
+
 def _finite_near(h, guess: float):
     """(x, h(x)) at a finite value of h near the guess, where h(guess) is not, or None: steps
-    growing 1.5-fold from 0.1 % outward, both directions alternately, within a factor 1e3. A
+    growing 1.5-fold from 0.1 % outward, both directions alternately, within 10 % (REACH). A
     walk continues lambda_z from its last r_i, and a step of r_i towards a Gent layer's
     lock leaves that lambda_z past it while the balancing one is finite (a Gent core, jm 5,
     grown 1.95: 1 % above); from there the bracketing goes on as from a finite guess."""
     step = 1e-3
-    while step < math.log(1e3):
+    while step < REACH:
         for sense in (1, -1):
             x = guess * math.exp(sense * step)
             hx = h(x)

@@ -200,11 +200,18 @@ def threshold(
         def f(u):
             return sign * branch.value(clean(walk.at(u, guess(u))))
 
-        poly = cheb.Chebyshev.interpolate(f, 24, domain=[a, b])
-        crit = [x.real for x in poly.deriv().roots() if abs(x.imag) < 1e-9 and a <= x.real <= b]
+        with np.errstate(invalid="ignore"):
+            poly = cheb.Chebyshev.interpolate(f, 24, domain=[a, b])
+        # a gap between the scan's samples (no charge balances the traction: an energy whose
+        # field closes the bore) leaves NaN coefficients, on which eigvals raises
+        finite = np.isfinite(poly.coef).all()
+        crit = finite and [
+            x.real for x in poly.deriv().roots() if abs(x.imag) < 1e-9 and a <= x.real <= b
+        ]
         if not crit:
             raise ConvergenceError(
                 f"limit point of the {control} not located in [{a:.6g}, {b:.6g}]"
+                + ("" if finite else ": the branch has no state somewhere in it")
             )
         top = max(crit, key=poly)
         pt = clean(walk.at([top], guess(top)))

@@ -415,8 +415,10 @@ def _rises(tube: UniformWall, lam0: float) -> bool:
     "closing"). The scan's steps of 8 % jumped that gap to states of another branch beyond
     it: a locking stretch, an unbounded branch, or a limit point whose interpolant met the
     gap ("internal error: LinAlgError", check round 24)."""
-    near = lam0 * (1.0 + _FIRST_STEP)
-    return bool(np.isfinite(tube.voltage(np.array([near]))[0]))
+    near = np.array([lam0 * (1.0 + _FIRST_STEP)])
+    if not tube.in_domain(near)[0]:  # a lock right there (Gent), not a closing field
+        return True
+    return bool(np.isfinite(tube.voltage(near)[0]))
 
 
 def _limit_point(tube: UniformWall, lam0: float, lam: np.ndarray, v: np.ndarray) -> _Threshold:

@@ -66,13 +66,13 @@ TIE = 1e-9
 #: a secant of d for the x error spans values whose |d| is this many times their noise
 #: (e_A + e_B): its slope is then good to ~25 %, as an error estimate needs
 ABOVE_NOISE = 8.0
-#: a crossing whose x_error exceeds this (relative to |x|, or the grid's spacing where x is
-#: near 0) is refined: its two
+#: a crossing whose x_error exceeds this (relative to |x|, or 1e-6 of the grid's spacing
+#: where x is near 0) is refined: its two
 #: modes solved again at FINEST (between neighbouring folds x_error ~1e-7 at the default
 #: rtol, ~1e-9 after)
 REFINE_ABOVE = 1e-9
 FINEST = RTOL_RANGE[0]
-#: the distance (relative to max(1, |x|)) of the scan whose secant carries an end's value
+#: the distance (relative to |x|, as REFINE_ABOVE) of the scan whose secant carries an end's value
 #: to its located x (:meth:`_Locator._end_at`)
 SECANT = 1e-4
 
@@ -253,7 +253,7 @@ class _Locator:
             return end.x, end.value, (abs(x - end.x) + x_error, end.error_estimate)
         # a secant over ~SECANT (the bisection's scans halve the distance: one is within a
         # factor 2): the values' noise (~1e-11) and the curvature both small there
-        gap = SECANT * max(1.0, abs(end.x))
+        gap = SECANT * max(abs(end.x), 1e-6 * abs(grid[1] - grid[0]))  # as _refined's scale
         near = min(same, key=lambda p: abs(math.log(abs(p.x - end.x) / gap)))
         slope = (near.value - end.value) / (near.x - end.x)
         value_error = end.error_estimate + abs(slope) * x_error
@@ -344,11 +344,11 @@ class _Locator:
         hi]: the root lies between where the estimate holds), the root of the line through
         them (d is linear on that scale) and the errors of those values; kept as found
         where they bracket no root or a solve fails. Relative to the design variable's own
-        scale, |x| or the grid's spacing where x is near 0: a film's thickness ~1e-3 kept
+        scale, |x| or 1e-6 of the grid's spacing where x is near 0: a film's thickness ~1e-3 kept
         x_error 5.5e-8 of it (max(1, |x|) = 1 took 5.5e-11 as small), where its two modes
         tie 4e-12 of it away (check round 22)."""
         x, h = found.x, found.x_error
-        scale = max(abs(x), hi - lo)
+        scale = max(abs(x), 1e-6 * (hi - lo))  # the spacing's share: x near 0
         if not REFINE_ABOVE * scale < h < math.inf or Kind.SURFACE in (a.kind, b.kind):
             return found
         ends = (max(x - h, lo), min(x + h, hi))

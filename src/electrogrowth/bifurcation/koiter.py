@@ -170,10 +170,10 @@ def koiter_coefficient(
 #: where a tube's expansion does not converge: the linear value stands; the branch itself
 #: comes from the post-buckling model
 NOT_EXPANDED = Remedy(
-    "the critical value stands (run without --koiter); follow the branch itself with"
-    " `electrogrowth postbuckle`",
-    python="the critical value stands (critical_value); follow the branch itself with"
-    " electrogrowth.postbuckle.postbuckle",
+    "the critical value stands (run without --koiter); a prismatic (m, 0) or axisymmetric"
+    " (0, n) branch can be followed with `electrogrowth postbuckle`",
+    python="the critical value stands (critical_value); a prismatic (m, 0) or axisymmetric"
+    " (0, n) branch can be followed with electrogrowth.postbuckle.postbuckle",
 )
 
 
@@ -191,7 +191,8 @@ def _tube_result(tube: Tube, mode, control: str, side: str | None = None) -> Koi
     try:
         runs = [_expansion(tube, mode, control, nodes, side) for nodes in RESOLUTIONS]
     except ConvergenceError as exc:  # not an rtol or a method: this function takes neither
-        exc.remedy = NOT_EXPANDED
+        if "remedy" not in vars(exc):  # the class's own, not a deeper error's
+            exc.remedy = NOT_EXPANDED
         raise
     fine = runs[-1]
     return KoiterResult(

@@ -315,6 +315,8 @@ def _along_ridge(margins: _Margins, mode, others, u):
             if not math.isfinite(d):
                 break
             p = np.clip(p - d / slope * normal, 0.0, 1.0)
+            if abs(d / slope) < 1e-3 * XATOL:  # on the tie to well within the arc's tolerance
+                break
         return p
 
     def neg(t: float) -> float:

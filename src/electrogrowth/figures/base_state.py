@@ -10,6 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..basestate.tube import solve_base_state, voltage_curve, voltage_threshold
+from ..errors import BaseStateError
 from ..model.layers import Tube
 from ..model.materials import Material, neo_hookean
 from .style import COLORS, FigureResult, new_figure
@@ -46,6 +47,8 @@ def figure4(
         for color, g in zip(COLORS, growths):
             p = Tube.uniform(outer_radius=outer_radius, growth=g, stretch=lz, material=material)
             thr, kind, lam_thr = voltage_threshold(p)
+            if kind == "closing":  # no charged state on the branch followed: nothing to draw
+                continue
             lam0 = solve_base_state(p).lambda_i
             top = min(max_lambda_i, lam_thr * (1 - 1e-9))  # a limit point or locking
             lam = lam0 + (top - lam0) * np.linspace(0.0, 1.0, points) ** 2
@@ -64,6 +67,11 @@ def figure4(
                 ax.plot([thr], [lam_thr], "o", color=color, ms=4)
         ax.set_title(rf"$\lambda_z = {lz:g}$", fontsize=9)
         ax.set_xlabel(r"voltage $\bar V$ (–)")
+    if not rows:
+        raise BaseStateError(
+            f"{material.name}: no charged state at any of these growths and stretches (its"
+            " field closes the bore: voltage threshold 0, kind closing)"
+        )
     right = 1.08 * max(np.max(r[:, 2]) for r in rows)
     for ax in axes[0]:
         ax.set_xlim(0.0, right)
