@@ -3,6 +3,7 @@ curve an uninterrupted run gives, computing only the rest; the points' records (
 the command line keeps them in) read back exactly and refuse anything else."""
 
 import json
+import math
 
 import pytest
 from hypothesis import given
@@ -115,9 +116,24 @@ def test_a_point_s_record_reads_back_exactly(pt):
         {"message": 3},
         {"message": "\x1b[2J"},
         {"extra": 1},
+        {"unstable_row": [2, 1]},
+        {"unstable_row": [2, 1, -1]},
+        {"unstable_row": "2, 1, 0"},
     ],
 )
 def test_a_record_that_is_no_point_is_refused(change):
     record = point_record(CurvePoint(0.1, 1.2, (2, 1), "bifurcation", runners_up=((3, 1, 1.3),)))
     with pytest.raises(ValueError):
         point_of({**record, **change})
+
+
+def test_a_failed_points_unstable_mode_reads_back_and_old_records_still_read():
+    """The mode an UnstableAtStart scan found unstable locates the end of a design's valid
+    range (bifurcation/start_edge.py): a resumed curve keeps it. Records written before it
+    existed have no such field and read as ()."""
+    pt = CurvePoint(0.7, math.nan, (-1, -1), "", "failed", failure="UnstableAtStart",
+                    unstable_row=(2, 1, 0))  # fmt: skip
+    record = json.loads(json.dumps(point_record(pt)))
+    assert point_of(record).unstable_row == (2, 1, 0)
+    del record["unstable_row"]
+    assert point_of(record).unstable_row == ()

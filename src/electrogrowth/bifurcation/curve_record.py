@@ -83,8 +83,7 @@ class CurvePoint(Outcome):
     traceback: str = dataclasses.field(default="", repr=False, compare=False)
     failure: str = ""
     #: the mode (m, n, family code) an UnstableAtStart failure found unstable at the
-    #: control's start: where the end of a valid range is located (curve_switches.py); not
-    #: part of the record
+    #: control's start: where the end of a valid range is located (curve_switches.py)
     unstable_row: tuple = dataclasses.field(default=(), repr=False, compare=False)
 
     def __post_init__(self):
@@ -99,7 +98,7 @@ def point_record(pt: CurvePoint) -> dict:
     """A grid point as a JSON-ready record (:func:`point_of` reads it back exactly: floats
     keep every digit through JSON's repr, NaN as None)."""
     record = dataclasses.asdict(pt)
-    del record["unstable_row"]
+    record["unstable_row"] = list(pt.unstable_row)
     for key in ("x", "value", "short_wave_limit", "error_estimate"):
         record[key] = None if math.isnan(record[key]) else record[key]
     record["status"], record["kind"] = str(pt.status), str(pt.kind)
@@ -110,7 +109,7 @@ def point_record(pt: CurvePoint) -> dict:
 def point_of(record: dict) -> CurvePoint:
     """The grid point of a :func:`point_record`, its every field checked (the record comes
     from a file: ValueError names the first field that is not what a point holds)."""
-    if not isinstance(record, dict) or set(record) != _FIELDS:
+    if not isinstance(record, dict) or set(record) - {"unstable_row"} != _FIELDS:
         raise ValueError("not a curve point's record (its fields differ)")
     kind, status, surface = record["kind"], record["status"], record["surface"]
     if kind not in POINT_KINDS or status not in set(Status) or not isinstance(surface, bool):
@@ -125,8 +124,18 @@ def point_of(record: dict) -> CurvePoint:
         _float(record[k], k) for k in ("x", "value", "short_wave_limit", "error_estimate")
     )
     runners_up = tuple(_runner(r) for r in runners)
+    row = _unstable_row(record.get("unstable_row", []))  # absent in records before 2026-12-07
     return CurvePoint(x, value, _mode(record["mode"]), kind, Status(status), runners_up,
-                      surface, limit, error, *texts)  # fmt: skip
+                      surface, limit, error, *texts, unstable_row=row)  # fmt: skip
+
+
+def _unstable_row(v) -> tuple:
+    """A record's unstable mode: () or three integers (m, n, family code)."""
+    if not isinstance(v, (list, tuple)) or len(v) not in (0, 3):
+        raise ValueError(f"unstable_row {v!r} is not (m, n, family code)")
+    if any(isinstance(i, bool) or not isinstance(i, int) or i < 0 for i in v):
+        raise ValueError(f"unstable_row {v!r} is not (m, n, family code)")
+    return tuple(int(i) for i in v)
 
 
 def _printable(text: str) -> bool:
@@ -160,7 +169,7 @@ def _mode(v) -> tuple[int, int]:
     return (int(v[0]), int(v[1]))
 
 
-_FIELDS = {f.name for f in dataclasses.fields(CurvePoint)} - {"unstable_row"}
+_FIELDS = {f.name for f in dataclasses.fields(CurvePoint)} - {"unstable_row"}  # optional
 
 
 def _failed_point(x: float, exc: Exception) -> CurvePoint:
