@@ -83,5 +83,5 @@ def test_mode_6_2_reports_no_threshold_outside_the_box():
     with pytest.raises(NoBifurcationFound, match="no mode bifurcates for voltage between 0") as e:
         critical_value(TUBE, 6, 2, "voltage")
     text = str(e.value)
-    assert "grown 50-fold" in text and "the states beyond are not examined" in text
+    assert "become a film" in text and "the states beyond are not examined" in text
     assert "supported range" not in text

@@ -277,8 +277,9 @@ def _film_note(step: Stepper) -> str:
     beyond were not examined (check round 19: the note of the box's edge further on read
     as the reason)."""
     return (
-        f", where the inner radius has grown {step.policy.film:g}-fold (the wall is a film,"
-        " its threshold near): the march stops there, the states beyond are not examined"
+        f", where the wall has become a film (its inner radius about {step.policy.film:g}"
+        " times its start, at the next step): the march stops there, the states beyond are"
+        " not examined"
     )
 
 
