@@ -305,7 +305,6 @@ def _along_ridge(margins: _Margins, mode, others, u):
         return u
     normal = grad / np.linalg.norm(grad)
     tangent = np.array([-normal[1], normal[0]])
-
     slope = float(np.linalg.norm(grad))
 
     def on_tie(t: float):
@@ -337,7 +336,8 @@ def _nearest_two(margins: _Margins, mode, others, u):
     v = margins.value(mode, u)
     if not math.isfinite(v):
         return None
-    gaps = sorted((margins.sense * (margins.value(o, u) - v), o) for o in others)
+    gaps = sorted(((margins.sense * (margins.value(o, u) - v), o) for o in others),
+                  key=lambda g: g[0])  # fmt: skip
     (g_a, a), (g_b, b) = gaps[:2]
     if not (math.isfinite(g_b) and g_a > 0 and g_b - g_a <= RIDGE * g_a):
         return None
