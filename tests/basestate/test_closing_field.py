@@ -18,10 +18,10 @@ import numpy as np
 import pytest
 
 from electrogrowth import Layer, Material, Tube, gent, neo_hookean, solve_base_state
-from electrogrowth.basestate import voltage
+from electrogrowth.basestate import thresholds, voltage
 from electrogrowth.basestate.tube import voltage_threshold
 from electrogrowth.bifurcation.crease import biot_ratio, crease_onset
-from electrogrowth.errors import BaseStateError, ConvergenceError
+from electrogrowth.errors import BaseStateError
 
 CLOSING = Material("closing", "(I1-3)/2 + 0.2*I4 + 0.4*I5 - 0.1*I6")
 
@@ -73,12 +73,50 @@ def test_a_lock_next_to_the_unloaded_state_is_no_closing_field():
     assert solve_base_state(tube.at("voltage", 0.05)).lambda_i > 1.0
 
 
-def test_a_layered_tube_of_such_an_energy_names_the_gap():
-    """Two layers of it: the layered threshold's limit-point interpolant met the same gap,
-    'internal error: LinAlgError'; now a ConvergenceError naming it (the layered walk does
-    not read a closing field: docs/reliability.md, Left out)."""
-    tube = Tube((Layer(1.5, material=CLOSING), Layer(2.0, material=CLOSING)), stretch=0.47)
-    state = solve_base_state(tube)  # uncharged: lambda_i = lambda_z^(-1/2)
-    assert state.lambda_i == pytest.approx(0.47**-0.5, rel=1e-12)
-    with pytest.raises(ConvergenceError, match="no state somewhere in it"):
-        state.threshold_kind  # noqa: B018 -- the threshold is read when asked
+def test_two_layers_of_such_an_energy_read_the_one_layer_threshold():
+    """Two identical layers are the one-layer tube: threshold 0 of kind "closing" at its
+    lambda_i0, the uncharged state solved, a charged one refused naming why (the layered
+    walk met the gap: 'no state somewhere in it' at 0.47, "locking" at lambda_i0 at 0.45)."""
+    for stretch in (0.45, 0.47):
+        one = Tube.uniform(2.0, stretch=stretch, material=CLOSING)
+        two = Tube((Layer(1.5, material=CLOSING), Layer(2.0, material=CLOSING)), stretch=stretch)
+        v1, k1, lam1 = voltage_threshold(one)
+        v2, k2, lam2 = voltage_threshold(two)
+        assert (v2, k2) == (v1, k1) == (0.0, "closing")
+        assert lam2 == pytest.approx(lam1, rel=1e-15)
+        state = solve_base_state(two)
+        assert (state.threshold_kind, state.voltage_threshold) == ("closing", 0.0)
+        assert state.lambda_i == pytest.approx(stretch**-0.5, rel=1e-12)
+        with pytest.raises(BaseStateError, match="closes the bore"):
+            solve_base_state(two.at("voltage", 0.1))
+
+
+def _residual_with_charge(tube: Tube, qs) -> list[float]:
+    """The wall's hoop residual T of (*) 0.1 % above its unloaded r_i, at charges q = c^2:
+    the layered derivation's test, read off the wall's integrals (not the walk's probe)."""
+    prep = thresholds.prepare(tube, 1e-12)
+    x0, lz0 = prep.loaded
+    r, lz = np.array([x0 * 1.001]), np.array([lz0])
+    return [float(prep.wall.integrals(r, lz, np.sqrt(q))[0][0]) for q in qs]
+
+
+@pytest.mark.parametrize(
+    ("inner", "outer_material", "kind"),
+    [(1.9, neo_hookean(), "closing"), (1.5, neo_hookean(), "none")],
+)
+def test_a_mixed_stack_closes_where_the_charge_raises_its_residual(inner, outer_material, kind):
+    """The energy over a neo-Hookean layer at lambda_z = 0.45: with a thin neo-Hookean skin
+    the charge still raises the wall's residual above the start (closing), with a thick one
+    it lowers it (the branch opens: unchanged, "none")."""
+    tube = Tube(
+        (Layer(inner, material=CLOSING), Layer(2.0, material=outer_material)), stretch=0.45
+    )
+    residual = _residual_with_charge(tube, (0.0, 1e-2, 1e-1))
+    rises = bool(np.all(np.diff(residual) > 0))
+    assert rises == (kind == "closing")
+    value, got, lam = voltage_threshold(tube)
+    assert got == kind
+    if kind == "closing":
+        assert value == 0.0 and lam == solve_base_state(tube).lambda_i
+        with pytest.raises(BaseStateError, match="closes the bore"):
+            solve_base_state(tube.at("voltage", 0.05))

@@ -25,6 +25,7 @@ from .force_box import check_force_when_lost, check_solved_stretch
 from .layered_state import LayeredState
 from .plies import ORDERS
 from .thresholds import LockedSearch, Threshold, prepare, solve_on, threshold
+from .voltage import CLOSING
 from .warm import continued
 
 __all__ = [
@@ -78,6 +79,8 @@ def solve_layered_state(tube: Tube, *, rtol: float = 1e-12, near=None, guess=Non
             )
         else:  # the branch is walked only up to Vbar unless its threshold is known already
             thr = prep.voltage_to(tube.voltage)
+            if thr.kind == "closing":  # as a uniform tube's (uniform.py)
+                raise BaseStateError(f"Vbar = {tube.voltage:.12g} for this tube: {CLOSING}")
             if thr.kind and not tube.voltage < thr.value:
                 raise BaseStateError(
                     f"Vbar = {tube.voltage:.12g} is at or above the voltage threshold"

@@ -28,6 +28,7 @@ from ..errors import NEAR_LOCK, OVERFLOW, BaseStateError, ConvergenceError, Reme
 from ..model.layers import Tube
 from .branches import Branch, clean
 from .plies import Ply, Wall, choose_nodes, numeric_energy, start_guess
+from .voltage import FIRST_STEP
 
 #: branch scans: r_start 1.08^k up to 1e3 r_start, eight points evaluated at a time
 BRANCH_STEPS = GeometricGrid(ratio=1.08, span=1e3, batch=8)
@@ -43,8 +44,10 @@ class Threshold:
     control: "voltage" (value in Vbar) or "pressure" (value = P_i); kind: "limit point" (first
     maximum of the load along the branch, a snap-through), "asymptote" (the load tends to
     ``value`` as lambda_i -> inf), "locking" (the energy ends at lambda_i, the load unbounded
-    before it, value = inf) or "none" (the load rises without bound, value = inf); lambda_i and
-    stretch (lambda_z) at the threshold (inf / the last scanned lambda_z for an asymptote).
+    before it, value = inf), "none" (the load rises without bound, value = inf) or, for the
+    voltage, "closing" (no charge balances the traction just past the start: the field
+    closes the bore, value 0 at the start, :func:`opens`); lambda_i and stretch (lambda_z) at
+    the threshold (inf / the last scanned lambda_z for an asymptote).
     """
 
     control: str
@@ -155,6 +158,28 @@ def _walk(chart: Chart, x0: float, lz0: float, *, sense: int = 1, target=None):
     return np.array(us), np.array(vs), np.array(loads), "end"
 
 
+def opens(walk: Chart, x0: float, lz0: float) -> bool:
+    """Does a charge balance the traction just past the voltage branch's start (x0, lz0)?
+    The layered analogue of the one-layer tube's test (voltage._rises): there the wall's
+    residual T - (P_i - P_o) of (*) is 0 at q = c^2 = 0 and rises with r_i, so a charged
+    state past the start needs T to fall with q. Where the energy's field raises it
+    (dT/dq > 0: an I6 term with a negative weight, `(I1-3)/2 + 0.2*I4 + 0.4*I5 - 0.1*I6`
+    at lambda_z <= 0.49) no charge balances it (the load is NaN, read FIRST_STEP past the
+    start, as for one layer): the branch falls in r_i, the field closes the bore. T is a
+    sum over the layers, so identical layers read exactly what one layer does. A point
+    that is not finite because the energy ends there (a Gent layer at its lock) or no
+    lambda_z balances the axial force is no closing field: the walk reads those."""
+    u0, v0 = walk.start(x0, lz0)
+    pt = clean(walk.at([u0 * (1.0 + walk.step * FIRST_STEP)], v0))
+    if np.isfinite(walk.branch.value(pt)[0]):
+        return True
+    r_i, lz = pt["r_i"], pt["stretch"]
+    if not (np.isfinite(r_i[0]) and np.isfinite(lz[0])):
+        return True
+    uncharged = Branch(walk.branch.wall, "pressure", vbar=0.0).point(r_i, lz)
+    return not np.isfinite(uncharged["P_i"][0])  # the energy ends there: a lock
+
+
 def _energy_ends(chart: Chart, u: float, v: float) -> bool:
     """Whether a state that is not finite at the walked coordinate u is past an energy's end
     (a lock): any energy with its own domain (Gent, an exponential) ends; polynomials only
@@ -181,6 +206,9 @@ def threshold(
     the scan stops once it is crossed: kind "" (not lost before it), value nan, the grid
     brackets the target."""
     walk = chart(branch, x0, lz0, sign)
+    if control == "voltage" and sign > 0 and not opens(walk, x0, lz0):
+        start = (np.array([x0]), np.array([lz0]), np.zeros(1))
+        return Threshold(control, 0.0, "closing", x0, lz0, 0.0, start, walk.by)
     us, vs, loads, stop = _walk(walk, x0, lz0, sense=sign, target=target)
     guess = _guess(us, vs)
     out = lambda v: math.sqrt(v) if control == "voltage" else v  # noqa: E731

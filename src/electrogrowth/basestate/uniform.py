@@ -30,16 +30,9 @@ from ..errors import BaseStateError, ConvergenceError
 from ..model.layers import Tube
 from . import neo_hookean
 from .uniform_state import UniformState
-from .voltage import GAUSS_ORDERS, UniformWall, cell_root, threshold_info
+from .voltage import CLOSING, GAUSS_ORDERS, UniformWall, cell_root, threshold_info
 
 __all__ = ["UniformState", "solve_uniform"]
-
-
-#: why a "closing" threshold is 0 (basestate/voltage.py `_rises`)
-CLOSING = (
-    "this energy's field closes the bore (threshold 0, kind closing), and the package"
-    " follows only charged states along which it opens"
-)
 
 
 def solve_uniform(tube: Tube, rtol: float) -> UniformState:

@@ -403,8 +403,15 @@ def _threshold(material, outer_radius, growth, stretch, rtol) -> _Threshold:
     return _Threshold(value=float(t[-1]), kind="asymptote", lambda_i=math.inf, **out)
 
 
-#: the branch is read this far above lambda_i0 (relative) before the scan's first step
-_FIRST_STEP = 1e-6
+#: the branch is read this far above lambda_i0 (relative) before the scan's first step (the
+#: layered walk's start too: thresholds.opens)
+FIRST_STEP = 1e-6
+
+#: why a "closing" threshold is 0 (:func:`_rises`, thresholds.opens)
+CLOSING = (
+    "this energy's field closes the bore (threshold 0, kind closing), and the package"
+    " follows only charged states along which it opens"
+)
 
 
 def _rises(tube: UniformWall, lam0: float) -> bool:
@@ -415,7 +422,7 @@ def _rises(tube: UniformWall, lam0: float) -> bool:
     "closing"). The scan's steps of 8 % jumped that gap to states of another branch beyond
     it: a locking stretch, an unbounded branch, or a limit point whose interpolant met the
     gap ("internal error: LinAlgError", check round 24)."""
-    near = np.array([lam0 * (1.0 + _FIRST_STEP)])
+    near = np.array([lam0 * (1.0 + FIRST_STEP)])
     if not tube.in_domain(near)[0]:  # a lock right there (Gent), not a closing field
         return True
     return bool(np.isfinite(tube.voltage(near)[0]))
