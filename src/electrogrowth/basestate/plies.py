@@ -55,9 +55,10 @@ def numeric_energy(material: Material):
     return material.omega()
 
 
-def chebyshev(f, a: float, b: float, tol: float, what: str, unit=1.0) -> np.ndarray:
+def chebyshev(f, a: float, b: float, tol, what: str, unit=1.0) -> np.ndarray:
     """Chebyshev coefficients of the vectorised f (values on the last axis) on [a, b], degree
-    doubled until, in every column, the last three are below tol of its size, or have stopped
+    doubled until, in every column, the last three are below tol (a number, or one per
+    column) of its size, or have stopped
     falling (the noise floor of f, e.g. next to a locking stretch) below 1e-8 of it. Up to
     degree 4096: a Gent layer within ~0.5 % of its lock needs 1024-4096 (its stress has a
     pole just outside the wall); the test suite's other profiles resolve by 512.
@@ -78,7 +79,12 @@ def chebyshev(f, a: float, b: float, tol: float, what: str, unit=1.0) -> np.ndar
         ):
             return coef
         last = tail
-    raise ConvergenceError(f"{what} on [{a:g}, {b:g}] not resolved by Chebyshev degree 4096")
+    worst = int(np.argmax(tail / tol))  # what was observed: the column, by how much
+    raise ConvergenceError(
+        f"{what} on [{a:g}, {b:g}] not resolved by Chebyshev degree 4096 (its series'"
+        f" tail is {np.ravel(tail)[worst]:.2g} of its size, above"
+        f" {np.ravel(np.broadcast_to(tol, np.shape(tail)))[worst]:.2g})"
+    )
 
 
 def stalled_noise(coef: np.ndarray, tol: float, unit=1.0) -> np.ndarray:
