@@ -10,13 +10,15 @@ exact Bessel dispersion relation puts the other roots of (0, 100) at 0.166235, 0
 its 113th root), status ok, certified.
 """
 
+import math
+
 import numpy as np
 import pytest
 
 from electrogrowth import Layer, Material, Tube, critical_value, solve_base_state
 from electrogrowth.bifurcation.along import TubeAt
 from electrogrowth.bifurcation.torsion_onset import margin, torsional_onset
-from electrogrowth.errors import ConvergenceError, NoBifurcationFound
+from electrogrowth.errors import BaseStateError, NoBifurcationFound
 from electrogrowth.incremental.targets import impedance_targets
 
 NEGATIVE_I2 = Material("mrneg", "(1.2*(I1-3) - 0.2*(I2-3))/2 + I5/2")
@@ -57,12 +59,15 @@ def test_built_in_energies_keep_no_torsional_root():
 
 def test_under_extension_the_lost_state_is_no_internal_error():
     """Past lambda_z = sqrt(6) (gamma_12 = 0) the voltage branch's first maximum had a
-    negative Vbar^2: 'math domain error' (ValueError), exit 1."""
-    with pytest.raises(ConvergenceError, match="not resolved") as e:
-        critical_value(TUBE, 0, 1, "stretch", side="extension", family="torsional")
-    # gamma_12 = 2 lambda_r^2 (W_1 + lambda_z^2 W_2) vanishes at sqrt(6): said so, not
-    # "why is not known"
-    assert "2.44948974" in str(e.value) and "losing strong ellipticity" in str(e.value)
+    negative Vbar^2: 'math domain error' (ValueError), exit 1; then "not resolved", the
+    loss not established. gamma_12 = 2 lambda_r^2 (W_1 + lambda_z^2 W_2) vanishes at
+    sqrt(6): past it the energy is not strongly elliptic in the r-theta plane and no state
+    is followed (basestate/ellipticity.py), so the march's state ends exactly there."""
+    c = critical_value(TUBE, 0, 1, "stretch", side="extension", family="torsional")
+    assert c.kind == "threshold" and c.value == pytest.approx(math.sqrt(6.0), rel=1e-12)
+    with pytest.raises(BaseStateError, match="not strongly elliptic") as e:
+        solve_base_state(TUBE.at("stretch", 2.45))
+    assert "elliptic below lambda_z / g_z = 2.44948974" in str(e.value)
 
 
 def test_the_verdict_names_a_torsional_mode_so():

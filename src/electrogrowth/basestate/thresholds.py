@@ -27,6 +27,7 @@ from ..continuation.path import GeometricGrid
 from ..errors import NEAR_LOCK, OVERFLOW, BaseStateError, ConvergenceError, Remedy
 from ..model.layers import Tube
 from .branches import Branch, clean
+from .ellipticity import check_in_plane
 from .plies import Ply, Wall, choose_nodes, numeric_energy, start_guess
 from .voltage import FIRST_STEP
 
@@ -426,6 +427,11 @@ def _start(wall: Wall, P_i: float | None = None) -> tuple[float, float]:
                 raise edge from None
             return x, f(x)[1]
         last, f_last = nxt, fn
+    if wall.overflow(start, lg) is None:  # the search read a wall that opens: did it?
+        for k, layer in enumerate(wall.tube.layers, 1):
+            if not layer.graded:
+                where = f"layer {k} of this tube (lambda_z = {lg:g}, g_z = {layer.growth[2]:g})"
+                check_in_plane(layer.material, lg / layer.growth[2], where)
     lost = BaseStateError(f"no {which} found for this tube")
     lost.remedy = NO_UNLOADED
     _not_found(wall, start, lg, which, lost)

@@ -31,6 +31,7 @@ from numpy.polynomial import chebyshev as cheb
 from ..brent import brentq
 from ..errors import OVERFLOW, BaseStateError, ConvergenceError, ParameterError
 from ..model.materials import Material, shorten
+from .ellipticity import check_in_plane
 from .neo_hookean import nh_asymptote
 
 GAUSS_ORDERS = (16, 24, 32, 48, 64, 96, 128, 192, 256, 384)  # Gauss-Legendre node counts tried
@@ -365,6 +366,10 @@ def _threshold(material, outer_radius, growth, stretch, rtol) -> _Threshold:
             np.array([0.0]),
         )
     lam0, nodes = _mechanical(material, outer_radius, growth, stretch, rtol)
+    # the branch rises from lambda_i0 only where the in-plane shear modulus is positive
+    # there (Baker-Ericksen): else its Vbar fell from 0 ("does not rise", even at V = 0)
+    where = f"g = {growth:g}, lambda_z = {stretch:g}, Rbar_o = {outer_radius:g}"
+    check_in_plane(material, stretch / growth, where)
     tube = UniformWall(material, outer_radius, growth, stretch, nodes)
     if not _rises(tube, lam0):  # no charged state on the branch followed: Vbar <= 0 only
         return _Threshold(lam0, 0.0, "closing", lam0, 0.0, nodes, np.array([lam0]), np.zeros(1))

@@ -24,9 +24,9 @@ import dataclasses
 
 import numpy as np
 
+from ..basestate.ellipticity import SHEAR_NAMES, wall_shear
 from ..continuation.events import THRESHOLD, brent
 from ..errors import ElectrogrowthError
-from ..model.moduli import MODULI_INDEX
 from .along import TubeAt
 
 #: samples of the moduli through each layer (both faces included)
@@ -37,8 +37,7 @@ STEPS = 64
 #: layer's shear modulus (rounding of the moduli ~1e-15, of the located x_e ~1e-13)
 UNIFORM = 1e-9
 
-_A1212, _A3232 = MODULI_INDEX["A1212"], MODULI_INDEX["A3232"]
-_G122, _K22 = MODULI_INDEX["G122"], MODULI_INDEX["K22"]
+_GAMMA_12, _A3232 = SHEAR_NAMES.index("gamma_12"), SHEAR_NAMES.index("A3232")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -77,15 +76,6 @@ def margin(state) -> tuple[float, float, float]:
     """(min over the wall of min(gamma_12, A3232), min over the wall of gamma_12, max over
     the wall of |A3232|), each over its layer's small-strain shear modulus (not the loaded
     moduli, which vanish with them: gamma_12 = A1212 where there is no field)."""
-    radii = state.tube.radii
-    gamma, a3232 = [], []
-    for layer, a, b in zip(state.tube.layers, radii, radii[1:]):
-        R = np.linspace(a, b, PER_LAYER)
-        inner = state.moduli(R[:1], side="outer")  # the layer's own side of its faces
-        outer = state.moduli(R[-1:], side="inner")
-        mod = np.concatenate([inner, state.moduli(R[1:-1]), outer])
-        mu = layer.initial_moduli[0]
-        gamma.append((mod[:, _A1212] - mod[:, _G122] ** 2 / mod[:, _K22]) / mu)
-        a3232.append(mod[:, _A3232] / mu)
-    g, a = np.concatenate(gamma), np.concatenate(a3232)
+    shear = wall_shear(state, PER_LAYER)
+    g, a = shear[:, _GAMMA_12], shear[:, _A3232]
     return float(min(g.min(), a.min())), float(g.min()), float(np.max(np.abs(a)))
