@@ -29,6 +29,7 @@ import math
 
 import numpy as np
 
+from ..basestate.ellipticity import softest, wall_shear
 from ..basestate.thresholds import LockedSearch, Threshold
 from ..basestate.tube import load_in_box, solve_base_state, threshold
 from ..continuation.events import EDGE, FULL, LOCK, THRESHOLD, bisect, brent
@@ -45,7 +46,6 @@ from ..model.controls import parse_control
 from ..model.layers import Tube
 from ..model.params import SUPPORTED
 from .along import LoadMargin, TubeAt, bounded_energy, clear_of_lock, has_lock
-from .torsion_onset import margin
 
 #: the fates of a point where no state was found (_fate)
 _NO_STATE = ("lost", "locked")
@@ -166,7 +166,7 @@ def threshold_between(at: TubeAt, params: Tube, x_ok: float, x_bad: float, rtol=
             return lock, ok, None
         lost_from = f", and the state search fails from {lost:.12g}"
     locks = has_lock(at(x_ok))
-    near = "a layer next to its locking stretch?" if locks else _why_unresolved(at, ok, rtol)
+    near = "a layer next to its locking stretch?" if locks else _why_unresolved(at, ok, bad, rtol)
     unresolved = ConvergenceError(
         f"the states from {bad:.12g} are not resolved ({near}){lost_from}: whether the"
         " state is lost there is not established"
@@ -178,26 +178,32 @@ def threshold_between(at: TubeAt, params: Tube, x_ok: float, x_bad: float, rtol=
     return None, ok, unresolved
 
 
-#: a wall whose smallest torsional shear modulus is below this share of its stiffness at the
-#: last resolved state is said to be losing strong ellipticity there
+#: a wall whose smallest shear modulus (basestate/ellipticity.py) is below this share of its
+#: stiffness at the last resolved state is said to be losing strong ellipticity there
 SOFT_SHEAR = 1e-2
 
 
-def _why_unresolved(at: TubeAt, x_ok: float, rtol: float) -> str:
+def _why_unresolved(at: TubeAt, x_ok: float, x_bad: float, rtol: float) -> str:
     """What is known of why the states past x_ok are not resolved: a shear modulus of the
-    wall (gamma_12 or A3232, torsion_onset.margin) vanishing there, the material losing
-    strong ellipticity (an energy text whose W_1 falls to 0: check round 21), else that it
-    is not known."""
+    wall vanishing there (the material losing strong ellipticity: an energy text whose W_1
+    falls to 0, check round 21), else what the first unresolved state's search observed at
+    x_bad: which check failed and by how much (its error; check round 24 read "why is not
+    known" for a stress scale asked for more than a scale needs)."""
     try:
-        low = margin(at.solved(x_ok, rtol))[0]
+        state = at.solved(x_ok, rtol)
+        low = wall_shear(state).min()
     except ElectrogrowthError:
-        return "why is not known"
+        low = math.inf
     if low < SOFT_SHEAR:
         return (
-            f"the wall's shear modulus gamma_12 or A3232 falls to {low:.1g} of its stiffness"
-            " there: the material is losing strong ellipticity"
+            f"the wall's shear modulus {softest(state)} there: the material is losing"
+            " strong ellipticity"
         )
-    return "why is not known"
+    try:
+        clear_of_lock(_solved(at, x_bad, rtol))  # as _fate read it
+    except ElectrogrowthError as exc:
+        return f"at {x_bad:.12g}: {' '.join(str(exc).split())}"
+    return "they solve on their own, not continued from the march's states"
 
 
 def _lost_past_lock(at: TubeAt, x_ok: float, x_bad: float, rtol: float) -> float | None:
