@@ -31,6 +31,10 @@ from ..model.moduli import MODULI_INDEX
 #: the six shear moduli of :func:`shear_moduli`, in its order
 SHEAR_NAMES = ("gamma_12", "gamma_13", "A2121", "A3131", "A2323", "A3232")
 
+#: a shear modulus below this share of its layer's is lost beyond rounding (the moduli's
+#: ~1e-15; a state at a located onset, x_e to ~1e-13, reads A1313 = -8.9e-16 and stays)
+LOST = -1e-9
+
 _I = {name: MODULI_INDEX[name] for name in ("A1212", "A1313", "A2121", "A3131", "A2323")}
 _I |= {name: MODULI_INDEX[name] for name in ("A3232", "G122", "G133", "K22", "K33")}
 

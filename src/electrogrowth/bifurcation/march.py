@@ -291,8 +291,8 @@ def _unexamined(solve_for: str, x0: float, x: float) -> str:
             " past it are not resolved"
         )
     return (
-        f"no mode bifurcates for {solve_for} from {x0:.12g} up to {x:.12g}, and the base"
-        " states past it are not resolved"
+        f"no mode bifurcates for {solve_for} from {x0:.12g} up to {x:.12g}, and past it"
+        " none is resolved"
     )
 
 

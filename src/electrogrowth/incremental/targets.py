@@ -40,6 +40,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from ..basestate.ellipticity import LOST, softest, wall_shear
 from ..basestate.tube import solve_base_state
 from ..errors import CollocationTooLarge, ConvergenceError, Remedy
 from ..model.layers import Tube
@@ -171,6 +172,8 @@ def _retry(state, modes, status, rtol, max_steps) -> Sample:
         if not np.isnan(f).any():
             return Sample(f)
     colloc, todo, reason = CollocationTarget(rtol), np.flatnonzero(np.isnan(f)), ""
+    if todo.size and wall_shear(state).min() < LOST:
+        raise _not_elliptic(_failure(modes[todo[0]], status[todo[0]]), state)
     for i in todo:
         row = modes[i : i + 1]
         reason = _failure(modes[i], status[i])
@@ -185,6 +188,23 @@ def _retry(state, modes, status, rtol, max_steps) -> Sample:
         if not np.isfinite(f[i]):
             raise ConvergenceError(f"{reason}, also at tighter tolerances and by collocation")
     return Sample(f, todo.size, reason)
+
+
+def _not_elliptic(reason: str, state) -> ConvergenceError:
+    """The kernel's failure ``reason`` at a state that has lost strong ellipticity (a shear
+    modulus of its wall below LOST, basestate/ellipticity.py): no mode's target means anything
+    there, and collocation's sign is noise (it changed with the node count, 40 to 120, at
+    every state of check round 27's case 3-91, whose dip then had no sign change to refine:
+    'the bracketed root solve failed ... must have different signs'), so none is read."""
+    err = ConvergenceError(
+        f"{reason}, also at tighter tolerances, at a state that is not strongly elliptic"
+        f" (its shear modulus {softest(state)}): no mode's target is computed there"
+    )
+    err.remedy = Remedy(
+        "the tube loses strong ellipticity before this state: a critical value, if any, lies"
+        " before it; ask for less load, growth or stretch"
+    )
+    return err
 
 
 def _beyond_both(reason: str, exc: CollocationTooLarge) -> CollocationTooLarge:
