@@ -65,6 +65,7 @@ def test_under_extension_the_lost_state_is_no_internal_error():
     is followed (basestate/ellipticity.py), so the march's state ends exactly there."""
     c = critical_value(TUBE, 0, 1, "stretch", side="extension", family="torsional")
     assert c.kind == "threshold" and c.value == pytest.approx(math.sqrt(6.0), rel=1e-12)
+    assert "loses strong ellipticity, gamma_12 of layer 1" in c.message  # why it ends
     with pytest.raises(BaseStateError, match="not strongly elliptic") as e:
         solve_base_state(TUBE.at("stretch", 2.45))
     assert "elliptic below lambda_z / g_z = 2.44948974" in str(e.value)

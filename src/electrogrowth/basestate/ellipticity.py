@@ -118,3 +118,17 @@ def check_in_plane(material: Material, stretch: float, where: str) -> None:
         " strongly elliptic range"
     )
     raise err
+
+
+#: a shear modulus below this share of its layer's at the end of a march's states is the
+#: reason they end: loss of ellipticity located by the march's bisection (to ~1e-13 of
+#: the control, so the modulus reads ~1e-12), not merely a soft wall
+VANISHED = 1e-6
+
+
+def why_lost(state) -> str:
+    """'' or why the states end at ``state`` (the last one a march solved): a shear modulus
+    vanishing there, which no other threshold does (a voltage's limit point keeps them)."""
+    if wall_shear(state).min() >= VANISHED:
+        return ""
+    return f"the energy loses strong ellipticity, {softest(state)}"

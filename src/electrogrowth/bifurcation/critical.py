@@ -67,6 +67,7 @@ from .march import (
     first_bifurcations,
 )
 from .problem import Problem, as_problem
+from .state_loss import lost_note
 from .torsion_onset import torsional_onset
 
 if TYPE_CHECKING:
@@ -367,6 +368,7 @@ def _solve(
                 side,
                 params.at(solve_for, res.threshold),
                 family=fam,
+                message=lost_note(at, res.threshold),
             )
         value = res.found[0].value
         if fam is Family.TORSIONAL and not onset_read:  # the march's root: the first?

@@ -16,10 +16,12 @@ import numpy as np
 from ..incremental.accuracy import SCAN_SIGNS, Accuracy
 from ..incremental.targets import Family, ImpedanceTarget
 from ..outcomes import NO_MODE, Kind
+from .along import TubeAt
 from .critical import CriticalPoint, critical_value
 from .march import ModeValue, first_bifurcations
 from .scan_grid import scan_grid, stable_signs
 from .scan_record import ScanResult
+from .state_loss import lost_note
 
 
 def scan_once(
@@ -60,6 +62,7 @@ def scan_once(
             "impedance",
             side,
             params.at(solve_for, res.threshold),
+            message=lost_note(TubeAt(params, solve_for), res.threshold),
         )
         return ScanResult(crit, (), m_range, n_range)
     crit = finished(params, solve_for, side, rtol, found[0])

@@ -29,7 +29,7 @@ import math
 
 import numpy as np
 
-from ..basestate.ellipticity import softest, wall_shear
+from ..basestate.ellipticity import softest, wall_shear, why_lost
 from ..basestate.thresholds import LockedSearch, Threshold
 from ..basestate.tube import load_in_box, solve_base_state, threshold
 from ..continuation.events import EDGE, FULL, LOCK, THRESHOLD, bisect, brent
@@ -181,6 +181,16 @@ def threshold_between(at: TubeAt, params: Tube, x_ok: float, x_bad: float, rtol=
 #: a wall whose smallest shear modulus (basestate/ellipticity.py) is below this share of its
 #: stiffness at the last resolved state is said to be losing strong ellipticity there
 SOFT_SHEAR = 1e-2
+
+
+def lost_note(at: TubeAt, x: float) -> str:
+    """Why a march's states end at x (its threshold, where no mode bifurcated before), for
+    the result's message: a shear modulus vanishing there (basestate/ellipticity.py), else
+    '' (a load's threshold, or the edge of the states found, says itself)."""
+    try:
+        return why_lost(at.solved(x))
+    except ElectrogrowthError:
+        return ""
 
 
 def _why_unresolved(at: TubeAt, x_ok: float, x_bad: float, rtol: float) -> str:

@@ -376,7 +376,8 @@ def threshold_rival(critical, onset) -> Rival | None:
     the crease march met (None: not reached)."""
     kind = parse_control(critical.solve_for).kind
     if critical.kind == Kind.THRESHOLD:
-        return Rival(Kind.THRESHOLD, critical.value, 0.0, detail=f"{kind} threshold")
+        why = f"; {critical.message}" if critical.message else ""
+        return Rival(Kind.THRESHOLD, critical.value, 0.0, detail=f"{kind} threshold{why}")
     t = own_threshold(critical.params, critical.solve_for, critical.side)
     if t is not None:
         if math.isfinite(t.value):
