@@ -55,6 +55,12 @@ def _direction_weights(psi: float) -> FloatArray:
     return np.array([[1.0, c, s, c * c, s * s, c * s]])
 
 
+def _margins(N) -> FloatArray:
+    """min |Re nu| / max |nu| over the eigenvalues nu of each matrix N[..., 8, 8]."""
+    ev = np.linalg.eigvals(N)
+    return np.min(np.abs(ev.real), -1) / np.maximum(np.max(np.abs(ev), -1), 1e-300)
+
+
 def _masked(problem, psi) -> FloatArray:
     """problem.target over an array of psi: NaN where the margin is below ELLIPTICITY_TOL."""
     psi = np.asarray(psi, float)
@@ -108,9 +114,7 @@ class FaceProblem:
     def margin(self, psi) -> FloatArray:
         """Ellipticity margin min |Re nu| / max |nu| of N(psi) (0: not strongly elliptic)."""
         psi = np.asarray(psi, float)
-        ev = np.linalg.eigvals(self.matrix(psi.reshape(-1)))
-        out = np.min(np.abs(ev.real), -1) / np.maximum(np.max(np.abs(ev), -1), 1e-300)
-        return out.reshape(psi.shape)
+        return _margins(self.matrix(psi.reshape(-1))).reshape(psi.shape)
 
     def target(self, psi) -> FloatArray:
         """f = sign(det X) det(Y - Z X) / sqrt(det(M^T M)) for a basis M = [X; Y] of the
@@ -303,3 +307,44 @@ def surface_target(state, face: str, psi) -> FloatArray:
 def ellipticity_margin(state, face: str, psi) -> FloatArray:
     """min |Re nu| / max |nu| of N(psi) at a face (0 where strong ellipticity fails)."""
     return FaceProblem.from_state(state, face).margin(psi)
+
+
+#: where a wall's strong ellipticity is read (:func:`not_elliptic`): this many radii of each
+#: layer, evenly from face to face (a stretch is extreme at a face of a layer, where the
+#: loss begins), and this many wave directions psi in [0, pi/2]
+WALL_RADII = 5
+WALL_DIRECTIONS = 91
+
+
+def not_elliptic(state) -> tuple[int, float] | None:
+    """(layer, R): the first layer (1-based) and reference radius at which the wall of a
+    solved base state is not strongly elliptic (the margin of N(psi), as
+    :func:`ellipticity_margin`, at most ELLIPTICITY_TOL: a real wave vector solves the
+    incremental equations there; or a shear modulus gamma the half-space matrix divides by
+    is 0, the edge), read at WALL_RADII radii of each layer and WALL_DIRECTIONS directions;
+    None where it is elliptic at all of them (or its moduli are not finite)."""
+    psi = np.linspace(0.0, 0.5 * math.pi, WALL_DIRECTIONS)
+    for k in range(len(state.tube.layers)):
+        R, mod, p = _layer_points(state, k)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            N = np.einsum("pk,rkij->rpij", _weights(psi), limit_expansion(mod, p))
+        margin = np.zeros(N.shape[:2])  # a modulus N divides by (gamma_12) is 0: on the edge
+        finite = np.isfinite(N).all((-2, -1))
+        margin[finite] = _margins(N[finite])
+        margin[~(np.isfinite(mod).all(-1) & np.isfinite(p))] = np.inf  # moduli not known
+        lost = np.nonzero((margin <= ELLIPTICITY_TOL).any(-1))[0]
+        if lost.size:
+            return k + 1, float(R[lost[0]])
+    return None
+
+
+def _layer_points(state, k: int):
+    """(R, moduli, p) at WALL_RADII reference radii of layer k (0-based), from its inner
+    face to its outer one, each face on the layer's own side."""
+    a, b = state.tube.radii[k], state.tube.radii[k + 1]
+    R = np.linspace(a, b, WALL_RADII)
+    mod, p = np.empty((R.size, 23)), np.empty(R.size)
+    for side, sel in (("outer", R < b), ("inner", R >= b)):
+        mod[sel] = np.reshape(state.moduli(R[sel], side=side), (-1, 23))
+        p[sel] = state.pressure(R[sel], side=side)
+    return R, mod, p
