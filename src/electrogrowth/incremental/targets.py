@@ -45,7 +45,8 @@ from ..basestate.tube import solve_base_state
 from ..errors import CollocationTooLarge, ConvergenceError, Remedy
 from ..model.layers import Tube
 from .accuracy import STABLE_SIGN, Accuracy
-from .impedance import STATUS_TEXT, target_serial
+from .halfspace import not_elliptic
+from .impedance import MAX_STEPS, STATUS_TEXT, target_serial
 from .mode_rows import rows_determinant, rows_parallel, rows_serial
 from .modes import ALL_PAIRS as ALL_PAIRS
 from .modes import FAMILIES as FAMILIES
@@ -150,30 +151,17 @@ RETRY_SAMPLE = 4
 def _retry(state, modes, status, rtol, max_steps) -> Sample:
     """Targets of the modes whose integration failed (a step size underflow where the
     error estimate of a loose rtol misjudges a steep stretch of z~, or a chart lost):
-    again at tighter tolerances (never looser), then by collocation at the nodes that
-    resolve the mode and the state (:class:`CollocationTarget`), whose target has the same
-    sign and the same zeros. ConvergenceError only if all of these fail.
-
-    Where a tighter tolerance fails for every mode of a sample, the state is too stiff for
-    the kernel at any tolerance (next to a Gent lock, whose moduli grow like 1 / margin^2,
-    all 396 modes of a scan underflowed again at both, 42 s), and the others skip it."""
-    f = np.full(modes.shape[0], np.nan)
-    budget = max_steps
-    for factor in RETRY_TIGHTER:
-        todo = np.flatnonzero(np.isnan(f))
-        tight = max(rtol * factor, 1e-14)
-        budget *= RETRY_BUDGET
-        tables = stack_tables([build_table(state, tol=Accuracy(tight).table)])
-        first, rest = todo[:RETRY_SAMPLE], todo[RETRY_SAMPLE:]
-        f[first] = _serial(state, modes[first], tables, tight, budget)
-        if rest.size and np.isnan(f[first]).all():
-            break
-        f[rest] = _serial(state, modes[rest], tables, tight, budget)
-        if not np.isnan(f).any():
-            return Sample(f)
+    again at tighter tolerances (never looser; :func:`_tighter`), then by collocation at the
+    nodes that resolve the mode and the state (:class:`CollocationTarget`), whose target has
+    the same sign and the same zeros. ConvergenceError only if all of these fail, or where
+    the state is not strongly elliptic (:func:`_lost_ellipticity`)."""
+    f = _tighter(state, modes, rtol, max_steps)
+    if not np.isnan(f).any():
+        return Sample(f)
     colloc, todo, reason = CollocationTarget(rtol), np.flatnonzero(np.isnan(f)), ""
-    if todo.size and wall_shear(state).min() < LOST:
-        raise _not_elliptic(_failure(modes[todo[0]], status[todo[0]]), state)
+    lost = _lost_ellipticity(state)
+    if lost:
+        raise _not_elliptic(_failure(modes[todo[0]], status[todo[0]]), lost)
     for i in todo:
         row = modes[i : i + 1]
         reason = _failure(modes[i], status[i])
@@ -190,15 +178,70 @@ def _retry(state, modes, status, rtol, max_steps) -> Sample:
     return Sample(f, todo.size, reason)
 
 
-def _not_elliptic(reason: str, state) -> ConvergenceError:
-    """The kernel's failure ``reason`` at a state that has lost strong ellipticity (a shear
-    modulus of its wall below LOST, basestate/ellipticity.py): no mode's target means anything
-    there, and collocation's sign is noise (it changed with the node count, 40 to 120, at
-    every state of check round 27's case 3-91, whose dip then had no sign change to refine:
-    'the bracketed root solve failed ... must have different signs'), so none is read."""
+def _tighter(state, modes, rtol, max_steps) -> np.ndarray:
+    """The kernel's targets of ``modes`` at the tighter tolerances rtol RETRY_TIGHTER (down
+    to 1e-14) with RETRY_BUDGET times the steps each, NaN where every one fails.
+
+    Where a tighter tolerance fails for every mode of a sample, the state is too stiff for
+    the kernel at any tolerance (next to a Gent lock, whose moduli grow like 1 / margin^2,
+    all 396 modes of a scan underflowed again at both, 42 s), and the others skip it.
+    A mode that failed a tolerance otherwise than by running out of steps is not integrated
+    again at that same tolerance (both levels are 1e-14 for rtol <= 1e-12) with more steps:
+    the integration is deterministic, and only a step budget can change its end."""
+    f = np.full(modes.shape[0], np.nan)
+    code = np.full(modes.shape[0], MAX_STEPS)  # each mode's failure at the last level
+    budget, last = max_steps, None
+    for factor in RETRY_TIGHTER:
+        todo = np.flatnonzero(np.isnan(f))
+        tight = max(rtol * factor, 1e-14)
+        budget *= RETRY_BUDGET
+        tables = stack_tables([build_table(state, tol=Accuracy(tight).table)])
+        again = (tight != last) | (code == MAX_STEPS)  # may this level end otherwise?
+        last = tight
+        sample, rest = todo[:RETRY_SAMPLE], todo[RETRY_SAMPLE:]
+        for part in (sample, rest):
+            go = part[again[part]]
+            if go.size:
+                f[go], code[go] = _serial(state, modes[go], tables, tight, budget)
+            stiff = rest.size > 0 and np.isnan(f[sample]).all()
+            if stiff:  # every mode of the sample failed: the others skip this level
+                break
+        if stiff or not np.isnan(f).any():
+            break
+    return f
+
+
+def _lost_ellipticity(state) -> str:
+    """'' or where the wall of ``state`` is not strongly elliptic, in words: a shear modulus
+    along the axes below LOST of its layer's (basestate/ellipticity.py), or else, read by the
+    short-wave problem in every direction of the face and with the field's block
+    (halfspace.not_elliptic), a loss the axes do not show: an oblique wave's, or the
+    permittivity's (a dielectric bilayer's inner layer, whose hoop permittivity turns
+    negative at growth 2.029 while its six shear moduli stay above 0.17 of its own)."""
+    if wall_shear(state).min() < LOST:
+        return f"its shear modulus {softest(state)}"
+    try:
+        where = not_elliptic(state)
+    except ConvergenceError:  # moduli whose half-space matrix overflows: nothing to add
+        return ""
+    if where is None:
+        return ""
+    return (
+        f"layer {where[0]} at R = {where[1]:.6g}: a real wave vector solves its incremental"
+        " equations there"
+    )
+
+
+def _not_elliptic(reason: str, lost: str) -> ConvergenceError:
+    """The kernel's failure ``reason`` at a state that has lost strong ellipticity (``lost``
+    says where, :func:`_lost_ellipticity`): no mode's target means anything there, and
+    collocation's sign is noise (it changed with the node count, 40 to 120, at every state of
+    check round 27's case 3-91, whose dip then had no sign change to refine: 'the bracketed
+    root solve failed ... must have different signs'; +, -, +, - at 40, 56, 72, 100 nodes for
+    the dielectric bilayer's (7, 4) at growth 2.2965, check round 24 D2), so none is read."""
     err = ConvergenceError(
         f"{reason}, also at tighter tolerances, at a state that is not strongly elliptic"
-        f" (its shear modulus {softest(state)}): no mode's target is computed there"
+        f" ({lost}): no mode's target is computed there"
     )
     err.remedy = Remedy(
         "the tube loses strong ellipticity before this state: a critical value, if any, lies"
@@ -248,17 +291,18 @@ def _kernel_sign(state, row, nodes: int) -> float:
     return float(kernel * np.sign(collocation_targets(unloaded, row, nodes=nodes)[0]))
 
 
-def _serial(state, modes, tables, rtol, max_steps) -> np.ndarray:
-    """The kernel's targets of ``modes`` one by one at ``rtol``, NaN where it fails."""
+def _serial(state, modes, tables, rtol, max_steps) -> tuple[np.ndarray, np.ndarray]:
+    """(targets, status codes) of ``modes`` by the kernel one by one at ``rtol``, the
+    targets NaN where it fails."""
     if not modes.shape[0]:
-        return np.zeros(0)
+        return np.zeros(0), np.zeros(0, dtype=np.int64)
     k = modes[:, 1] * math.pi / state.current_length
     m = np.ascontiguousarray(modes[:, 0])
     pairs = mode_pairs(modes)
     got, code, _ = target_serial(
         m, k, pairs, np.zeros(m.size, dtype=np.int64), tables, rtol, max_steps
     )
-    return np.where(code == 0, got, np.nan)
+    return np.where(code == 0, got, np.nan), code
 
 
 def collocation_targets(state, modes, *, nodes: int = 40) -> np.ndarray:
