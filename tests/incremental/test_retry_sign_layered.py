@@ -32,3 +32,24 @@ def test_fallback_keeps_the_kernels_sign(mode):
     kernel = impedance_targets(state, row)[0]
     fallback = impedance_targets(state, row, max_steps=3)[0]  # every integration fails
     assert kernel * fallback > 0, (kernel, fallback)
+
+
+def test_the_unloaded_sign_is_collocated_once_for_a_tube_mode_and_nodes(monkeypatch):
+    # a march's fallbacks ask it at every state (126 states of a bilayer's march, check
+    # round 24 D2): it depends on the unloaded tube, the mode and the nodes alone
+    from electrogrowth.incremental import targets
+
+    targets._unloaded_sign.cache_clear()
+    asked, collocate = [], targets.collocation_targets
+
+    def counted(state, modes, *, nodes=40):
+        asked.append(state.tube.stretch)
+        return collocate(state, modes, nodes=nodes)
+
+    monkeypatch.setattr(targets, "collocation_targets", counted)
+    row = with_family(2, 1, "wrinkle")
+    for stretch in (1.0, 1.05, 1.1):
+        f = impedance_targets(solve_base_state(BILAYER.at("stretch", stretch)), row, max_steps=3)
+        assert f[0] > 0  # stable: the kernel's sign (test above)
+    # each state's own value, and the unloaded tube's sign once (not at every state)
+    assert sorted(asked) == [1.0, 1.0, 1.05, 1.1]
