@@ -159,3 +159,24 @@ def test_the_film_fold_is_refined_in_a_few_evaluations(monkeypatch):
     assert point.value == pytest.approx(FILM_ROOT, abs=2e-13)
     assert point.status.name == "OK" and point.error_estimate < 1e-10
     assert 0 < len(calls) <= 20
+
+
+def test_a_failed_integration_goes_to_the_retries_without_being_repeated(monkeypatch):
+    # below FORGET_RTOL the kernel's bounded target keeps the basis' size as det(M2)'s
+    # does: the same integration, the same failure (forced here by max_steps=3)
+    from electrogrowth.incremental import targets
+    from tests.incremental.test_retry_sign_layered import BILAYER
+
+    state = solve_base_state(BILAYER.at("stretch", 1.05))
+    row = np.array([[2.0, 1.0]])
+    expected = targets.impedance_targets(state, row, rtol=1e-12, max_steps=3)  # as before
+    integrated, serial = [], targets.rows_serial
+
+    def counted(*args):
+        integrated.append(args[0].shape[0])
+        return serial(*args)
+
+    monkeypatch.setattr(targets, "rows_serial", counted)
+    f, log_norm = analytic_parts(state, row, rtol=1e-12, max_steps=3)
+    assert integrated == []  # was [1]: the failed integration again
+    assert f == expected and np.isnan(log_norm).all()

@@ -67,6 +67,7 @@ from .modes import natural_family as natural_family
 from .modes import row_family as row_family
 from .modes import with_family as with_family
 from .radial_table import build_table, stack_tables
+from .short_wave_start import FORGET_RTOL
 
 PARALLEL_FROM = 16  # batches smaller than this run on one thread (thread launch costs more)
 
@@ -125,16 +126,20 @@ def analytic_parts(state, modes, *, rtol: float = 1e-12, max_steps: int = 20000)
     analytic in the parameters, with the same signs and zeros: roots are refined on it
     (bifurcation/along.py, :class:`~electrogrowth.bifurcation.along.RootRows`). Every wall
     is integrated (no short-wave restart: it forgets M's size). Where the kernel fails, f
-    comes from :func:`impedance_targets` (its retries) and log_norm is NaN."""
+    comes from :func:`impedance_targets` (its retries) and log_norm is NaN; below
+    FORGET_RTOL, where its integration keeps the basis' size too and so is this one, from
+    the retries alone (not the same failing integration twice)."""
     modes = np.asarray(modes, dtype=float, order="C")
     if modes.ndim == 1:
         modes = modes[None]
     tables = stack_tables([build_table(state, tol=_table_tol(rtol))])
     f, log_norm, status = rows_determinant(modes, state.current_length, tables, rtol, max_steps)
     bad = status != 0
-    if bad.any():
+    if bad.any() and rtol < FORGET_RTOL:  # impedance_targets' integration is this one
+        f[bad] = _retry(state, modes[bad], status[bad], rtol, max_steps).values
+    elif bad.any():
         f[bad] = impedance_targets(state, modes[bad], rtol=rtol, max_steps=max_steps)
-        log_norm[bad] = np.nan
+    log_norm[bad] = np.nan
     return f, log_norm
 
 
