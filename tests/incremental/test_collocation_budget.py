@@ -142,7 +142,10 @@ def test_a_failed_kernel_mode_beyond_the_budget_names_both_failures(no_large_arr
     from electrogrowth.incremental import targets
     from electrogrowth.incremental.impedance import STEP_UNDERFLOW
 
-    monkeypatch.setattr(targets, "_serial", lambda state, modes, *a: np.full(len(modes), np.nan))
+    def failed(state, modes, *args):  # (targets, status codes): every integration underflows
+        return np.full(len(modes), np.nan), np.full(len(modes), STEP_UNDERFLOW)
+
+    monkeypatch.setattr(targets, "_serial", failed)
     state = solve_base_state(THICK.at("growth", 2.25))
     with pytest.raises(CollocationTooLarge) as err:
         targets._retry(state, np.array([[0.0, 1000.0]]), np.array([STEP_UNDERFLOW]), 1e-12, 100)
