@@ -314,27 +314,37 @@ def ellipticity_margin(state, face: str, psi) -> FloatArray:
 #: loss begins), and this many wave directions psi in [0, pi/2]
 WALL_RADII = 5
 WALL_DIRECTIONS = 91
+#: an eigenvalue of N(psi) on the imaginary axis this close to 0 (times the largest) is at
+#: the edge of ellipticity, not past it (:func:`not_elliptic`)
+EDGE = math.sqrt(1e-9)
 
 
 def not_elliptic(state) -> tuple[int, float] | None:
     """(layer, R): the first layer (1-based) and reference radius at which the wall of a
-    solved base state is not strongly elliptic (the margin of N(psi), as
-    :func:`ellipticity_margin`, at most ELLIPTICITY_TOL: a real wave vector solves the
-    incremental equations there; or a shear modulus gamma the half-space matrix divides by
-    is 0, the edge), read at WALL_RADII radii of each layer and WALL_DIRECTIONS directions;
-    None where it is elliptic at all of them (or its moduli are not finite)."""
+    solved base state is not strongly elliptic beyond rounding, read at WALL_RADII radii of
+    each layer and WALL_DIRECTIONS directions; None where it is elliptic at all of them.
+
+    Lost: an eigenvalue nu of N(psi) on the imaginary axis (|Re nu| <= ELLIPTICITY_TOL
+    max |nu|: a real wave vector solves the incremental equations) and not at its origin
+    (|nu| >= EDGE max |nu|). A modulus past its zero by a share d of the layer's puts nu
+    ~ sqrt(d) off the origin, so EDGE = sqrt(1e-9) is basestate/ellipticity.py's LOST: a
+    state at the edge (A1313 = 0 exactly at a torsional onset, or -8.9e-16 where one is
+    located) keeps its fallback as the axes' test lets it, and a matrix that divides by a
+    vanished shear modulus (not finite) is left to that test."""
     psi = np.linspace(0.0, 0.5 * math.pi, WALL_DIRECTIONS)
     for k in range(len(state.tube.layers)):
         R, mod, p = _layer_points(state, k)
         with np.errstate(divide="ignore", invalid="ignore"):
             N = np.einsum("pk,rkij->rpij", _weights(psi), limit_expansion(mod, p))
-        margin = np.zeros(N.shape[:2])  # a modulus N divides by (gamma_12) is 0: on the edge
         finite = np.isfinite(N).all((-2, -1))
-        margin[finite] = _margins(N[finite])
-        margin[~(np.isfinite(mod).all(-1) & np.isfinite(p))] = np.inf  # moduli not known
-        lost = np.nonzero((margin <= ELLIPTICITY_TOL).any(-1))[0]
-        if lost.size:
-            return k + 1, float(R[lost[0]])
+        lost = np.zeros(N.shape[:2], dtype=bool)
+        ev = np.linalg.eigvals(N[finite])
+        top = np.max(np.abs(ev), -1, keepdims=True)
+        axis = (np.abs(ev.real) <= ELLIPTICITY_TOL * top) & (np.abs(ev) >= EDGE * top)
+        lost[finite] = axis.any(-1)
+        where = np.nonzero(lost.any(-1))[0]
+        if where.size:
+            return k + 1, float(R[where[0]])
     return None
 
 
