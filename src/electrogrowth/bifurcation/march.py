@@ -185,7 +185,8 @@ def first_bifurcations(
         path = dataclasses.replace(path, end=until)
     x0, sense = path.start, path.sense
     state = at.state(x0)
-    targets, raw = calibrated(targets, state, modes)
+    raw = targets(state, modes)
+    targets, raw = calibrated(targets, state, modes, raw)
     g0 = sref * raw
     doubt = np.nonzero(g0 <= 0)[0]
     if doubt.size and brent_targets is not None:  # a loose sign may be wrong: ask again
@@ -311,23 +312,16 @@ CALIBRATION_FINE = 1e-12
 LOOSE_FLOOR = 1e-9
 
 
-def calibrated(targets, state, modes: np.ndarray, raw: np.ndarray | None = None):
+def calibrated(targets, state, modes: np.ndarray, raw: np.ndarray):
     """(targets, raw): the march's loose ``targets`` and their values ``raw`` of ``modes`` at
-    the start ``state`` (read here unless given), tightened (x100 steps, down to
-    LOOSE_FLOOR) until they resolve this tube's targets (LOOSE_RESOLVES against
-    CALIBRATION_FINE, on CALIBRATION_MODES of the modes), then re-read. A target without
-    a kernel tolerance (collocation's) or one already at the floor is returned as it is.
-    docs/derivation.md section 7.
-
-    The fine values are read first: where the kernel fails at the start, the fine
-    tolerance's fallback is the larger collocation, and one over its budget refuses before
-    the loose fallback spends its time (a three-layer tube's (3, 400): 60 s of loose
-    collocation, then CollocationTooLarge at the fine tolerance on the same state)."""
+    the start ``state``, tightened (x100 steps, down to LOOSE_FLOOR) until they resolve this
+    tube's targets (LOOSE_RESOLVES against CALIBRATION_FINE, on CALIBRATION_MODES of the
+    modes), then re-read. A target without a kernel tolerance (collocation's) or one already
+    at the floor is returned as it is. docs/derivation.md section 7."""
     if not isinstance(targets, ImpedanceTarget) or targets.rtol <= LOOSE_FLOOR:
-        return targets, targets(state, modes) if raw is None else raw
+        return targets, raw
     pick = np.unique(np.linspace(0, modes.shape[0] - 1, CALIBRATION_MODES).astype(int))
     fine = ImpedanceTarget(CALIBRATION_FINE)(state, modes[pick])
-    raw = targets(state, modes) if raw is None else raw
     start, loose = targets, raw[pick]
     while targets.rtol > LOOSE_FLOOR and loose_error(loose, fine) > LOOSE_RESOLVES:
         targets = dataclasses.replace(targets, rtol=max(targets.rtol / 100.0, LOOSE_FLOOR))
