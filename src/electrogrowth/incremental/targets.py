@@ -298,12 +298,12 @@ def _unloaded_sign(reference: Tube, row: tuple, nodes: int) -> float:
     remembered: every fallback of a march asks it again for the same tube, mode and nodes
     (a bilayer's march collocated 126 states, 7 s of signs), and at a short wave's nodes
     it costs what the fallback's own value does (28 s for (3, 400) of a three-layer tube)."""
-    row = np.array([row])
-    kernel = np.sign(impedance_targets(solve_base_state(SIGN_TUBE), row, rtol=STABLE_SIGN)[0])
+    mode = np.array([row])
+    kernel = np.sign(impedance_targets(solve_base_state(SIGN_TUBE), mode, rtol=STABLE_SIGN)[0])
     if len(reference.layers) == 1:
         return float(kernel)
     unloaded = solve_base_state(reference)
-    return float(kernel * np.sign(collocation_targets(unloaded, row, nodes=nodes)[0]))
+    return float(kernel * np.sign(collocation_targets(unloaded, mode, nodes=nodes)[0]))
 
 
 def _serial(state, modes, tables, rtol, max_steps) -> tuple[np.ndarray, np.ndarray]:
