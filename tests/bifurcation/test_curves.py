@@ -89,6 +89,7 @@ def test_branches_csv_and_plot(thin_to_thick, tmp_path):
         "n",
         "kind",
         "surface",
+        "surface_face",
         "short_wave_limit",
         "status",
         "crease_value",

@@ -504,8 +504,8 @@ def _switch_at(a: CurvePoint, b: CurvePoint, found: Located):
     x, v_before, v_after = found.x, found.before, found.after
     kind = _change_kind(a, b, v_before, v_after)
     rows = [
-        (x, v_before, a.mode, kind, "", a.surface, math.nan, ""),
-        (x, v_after, b.mode, kind, "", b.surface, math.nan, ""),
+        (x, v_before, a.mode, kind, "", a.surface, math.nan, "", a.face),
+        (x, v_after, b.mode, kind, "", b.surface, math.nan, "", b.face),
     ]
     errors = (found.x_error, found.value_error)
     return rows, [Switch(x, v_before, a.mode, b.mode, v_after, kind, *errors)]

@@ -174,3 +174,9 @@ def grid_or_located(x: float, located) -> str:
     estimate supports, as its own line prints it."""
     at = [s for s in located if s.x == x]
     return supported(x, at[0].x_error) if at else f"{x:.10g}"
+
+
+def face_text(face: str) -> str:
+    """Where a short-wave (surface) instability is, in words: "the outer face", "the inner
+    face" or an interface by its name ("interface-1")."""
+    return face if face.startswith("interface") else f"the {face} face"
