@@ -63,7 +63,13 @@ _NOTE = "remedy: "
 
 
 class ParameterError(ElectrogrowthError, ValueError):
-    """A non-physical or out-of-range input parameter."""
+    """A non-physical or out-of-range input parameter. ``key``: where the value sits in
+    what was checked (("layers", "2", "outer_radius"), ("length",); () where not said), so
+    a file's reader names its line (model/tube_file.py)."""
+
+    def __init__(self, *args, key: tuple[str, ...] = ()):
+        super().__init__(*args)
+        self.key = tuple(key)
 
 
 class UnstableAtStart(ParameterError):
@@ -161,10 +167,11 @@ class ConfigError(ParameterError):
     def __init__(
         self, key: tuple[str, ...], reason: str, *, source: str = "", line: int | None = None
     ):
-        self.key, self.reason, self.source, self.line = tuple(key), reason, source, line
         where = ":".join(str(p) for p in (source, line) if p not in ("", None))
-        name = ".".join(self.key)
-        super().__init__(f"{where + ': ' if where else ''}{name + ': ' if name else ''}{reason}")
+        name = ".".join(key)
+        text = f"{where + ': ' if where else ''}{name + ': ' if name else ''}{reason}"
+        super().__init__(text, key=key)
+        self.reason, self.source, self.line = reason, source, line
 
 
 class SweepError(ElectrogrowthError, RuntimeError):
