@@ -10,6 +10,8 @@ keyword arguments ("pass rtol=1e-10"), which a Python traceback shows under the 
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 
 class Remedy(str):
     """A one-line remedy in two forms: the text itself is the command line's (``.cli``,
@@ -88,8 +90,24 @@ class MaterialError(ElectrogrowthError, ValueError):
     remedy = Remedy("use a built-in energy or an expression in I1, I2, I4, I5, I6")
 
 
+class Beyond(NamedTuple):
+    """A load at or beyond its threshold: the tube's key ("voltage", "inner_pressure"), its
+    value, the threshold and the tube's Rbar_o (the voltage's scale), in units mu = eps =
+    R_i = 1, so the command line can quote both in the units the user gave (kV, kPa)."""
+
+    load: str
+    value: float
+    threshold: float
+    outer_radius: float
+
+
 class BaseStateError(ElectrogrowthError, RuntimeError):
-    """No axisymmetric base state exists (e.g. the voltage is above the threshold)."""
+    """No axisymmetric base state exists (e.g. the voltage is above the threshold).
+    ``beyond``: the load and its threshold where that is why (:class:`Beyond`), else None."""
+
+    def __init__(self, *args, beyond: Beyond | None = None):
+        super().__init__(*args)
+        self.beyond = beyond
 
     remedy = Remedy(
         "lower the voltage below the threshold (`electrogrowth state` prints it) or"

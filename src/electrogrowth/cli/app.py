@@ -229,10 +229,12 @@ def _dispatch(argv: list[str] | None) -> int:
         resolve_units(args)
         try:
             return args.run(args)
-        except BaseStateError as exc:  # a load beyond its threshold: its file line, if any
+        except BaseStateError as exc:  # a load beyond its threshold: its file line, if any,
+            # and its value and threshold in the units the user gave (kV, kPa)
+            from .report import beyond_in_units
             from .tube_input import located  # the model's import only when it is needed
 
-            raise located(exc, args) from None
+            raise located(beyond_in_units(exc, getattr(args, "scales", None)), args) from None
     except ElectrogrowthError as exc:  # bad input, or a failure with a remedy
         text = " ".join(str(exc).split())
         remedy = f" ({exc.remedy})" if exc.remedy else ""  # a Remedy's text: the CLI form
