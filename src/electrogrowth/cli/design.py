@@ -30,6 +30,7 @@ from ..model.layers import KEYS_TEXT
 from ..pool import check_workers, usable_cores
 from . import resume
 from .options import (
+    KOITER_COST,
     SHORT_WAVES,
     add_control_options,
     add_mode_range_options,
@@ -117,7 +118,7 @@ def configure_design(parser: argparse.ArgumentParser) -> None:
         action="store_true",
         help="also solve the amplitude equation of the chosen design's wrinkle: super- or"
         " subcritical (as critical --koiter: every wrinkle (m, n) of tubes of any energy"
-        " in a growth, stretch, pressure or voltage control; one to five seconds)",
+        f" in a growth, stretch, pressure or voltage control; {KOITER_COST})",
     )
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     add_quiet_option(parser)
