@@ -36,7 +36,7 @@ VARIABLES = {
     "kind": ("1", "bifurcation, threshold, surface, switch or failed"),
     "surface": ("1", "1 where the critical point is the exact short-wave limit"),
     "surface_face": ("1", "where the short-wave limit wrinkles (inner, outer, interface-K)"),
-    "status": ("1", "why a point failed, or inaccurate (empty where it is ok)"),
+    "status": ("1", "ok, inaccurate, or why a point failed"),
 }
 #: the unit and name of each control / tube parameter
 PARAMETERS = {

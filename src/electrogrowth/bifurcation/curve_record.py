@@ -249,8 +249,9 @@ class Curve:
     ``kind`` is "bifurcation" (mode m, n), "threshold" (m = n = -1: the axisymmetric state
     is lost first), "surface" (m = n = -1: the exact short-wave limit m, n -> infinity at a
     face comes first), "switch", "end" or "failed" (value NaN, ``status`` says why).
-    ``status`` starts with "inaccurate" where the critical value's error estimate exceeds
-    the accuracy asked even after refinement (``inaccurate`` marks those rows).
+    ``status`` starts with "ok", or with "inaccurate" where the critical value's error
+    estimate exceeds the accuracy asked even after refinement (``inaccurate`` marks those
+    rows); a failed row's holds why.
     ``surface`` marks the rows of the short-wave limit; ``short_wave_limit`` holds the limit
     where the scan computed it (NaN elsewhere). ``switches`` lists the crossings, ``ends``
     the branch ends that were located. ``crease`` (bifurcation/curve_crease.py): per row,
@@ -485,13 +486,15 @@ def _row(pt: CurvePoint):
 
 
 def _row_status(pt: CurvePoint) -> str:
-    """The status column: a failure's message (a bug's with its remedy), else "" or
-    "inaccurate", then any note (a switch not located)."""
+    """The status column: a failure's message (a bug's with its remedy), else "ok" or
+    "inaccurate", then any note (a switch not located). An ok row said "" before
+    2026-12-08, an empty cell a reader could take for a missing value (check round 29);
+    ``Curve.inaccurate`` reads both."""
     if pt.kind == "" and pt.status == Status.ERROR:
         return f"{pt.message} ({pt.remedy})"
     if pt.kind == "":
         return pt.message
-    mark = str(Status.INACCURATE) if pt.status == Status.INACCURATE else ""
+    mark = str(Status.INACCURATE) if pt.status == Status.INACCURATE else str(Status.OK)
     return "; ".join(filter(None, (mark, pt.message)))
 
 
