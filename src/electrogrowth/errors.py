@@ -10,6 +10,8 @@ keyword arguments ("pass rtol=1e-10"), which a Python traceback shows under the 
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 
 class Remedy(str):
     """A one-line remedy in two forms: the text itself is the command line's (``.cli``,
@@ -63,7 +65,13 @@ _NOTE = "remedy: "
 
 
 class ParameterError(ElectrogrowthError, ValueError):
-    """A non-physical or out-of-range input parameter."""
+    """A non-physical or out-of-range input parameter. ``key``: where the value sits in
+    what was checked (("layers", "2", "outer_radius"), ("length",); () where not said), so
+    a file's reader names its line (model/tube_file.py)."""
+
+    def __init__(self, *args, key: tuple[str, ...] = ()):
+        super().__init__(*args)
+        self.key = tuple(key)
 
 
 class UnstableAtStart(ParameterError):
@@ -82,8 +90,24 @@ class MaterialError(ElectrogrowthError, ValueError):
     remedy = Remedy("use a built-in energy or an expression in I1, I2, I4, I5, I6")
 
 
+class Beyond(NamedTuple):
+    """A load at or beyond its threshold: the tube's key ("voltage", "inner_pressure"), its
+    value, the threshold and the tube's Rbar_o (the voltage's scale), in units mu = eps =
+    R_i = 1, so the command line can quote both in the units the user gave (kV, kPa)."""
+
+    load: str
+    value: float
+    threshold: float
+    outer_radius: float
+
+
 class BaseStateError(ElectrogrowthError, RuntimeError):
-    """No axisymmetric base state exists (e.g. the voltage is above the threshold)."""
+    """No axisymmetric base state exists (e.g. the voltage is above the threshold).
+    ``beyond``: the load and its threshold where that is why (:class:`Beyond`), else None."""
+
+    def __init__(self, *args, beyond: Beyond | None = None):
+        super().__init__(*args)
+        self.beyond = beyond
 
     remedy = Remedy(
         "lower the voltage below the threshold (`electrogrowth state` prints it) or"
@@ -161,10 +185,11 @@ class ConfigError(ParameterError):
     def __init__(
         self, key: tuple[str, ...], reason: str, *, source: str = "", line: int | None = None
     ):
-        self.key, self.reason, self.source, self.line = tuple(key), reason, source, line
         where = ":".join(str(p) for p in (source, line) if p not in ("", None))
-        name = ".".join(self.key)
-        super().__init__(f"{where + ': ' if where else ''}{name + ': ' if name else ''}{reason}")
+        name = ".".join(key)
+        text = f"{where + ': ' if where else ''}{name + ': ' if name else ''}{reason}"
+        super().__init__(text, key=key)
+        self.reason, self.source, self.line = reason, source, line
 
 
 class SweepError(ElectrogrowthError, RuntimeError):

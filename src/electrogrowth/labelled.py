@@ -35,7 +35,8 @@ VARIABLES = {
     "family": ("1", "mode family: wrinkle, prismatic (n = 0) or torsional (m = 0)"),
     "kind": ("1", "bifurcation, threshold, surface, switch or failed"),
     "surface": ("1", "1 where the critical point is the exact short-wave limit"),
-    "status": ("1", "why a point failed, or inaccurate (empty where it is ok)"),
+    "surface_face": ("1", "where the short-wave limit wrinkles (inner, outer, interface-K)"),
+    "status": ("1", "ok, inaccurate, or why a point failed"),
 }
 #: the unit and name of each control / tube parameter
 PARAMETERS = {
@@ -408,6 +409,7 @@ def curve_dataset(curve):
             "n": ("point", np.asarray(curve.n, int), _attrs("n")),
             "kind": ("point", np.asarray(curve.kind, str), _attrs("kind")),
             "surface": ("point", np.asarray(curve.surface, int), _attrs("surface")),
+            "surface_face": ("point", np.asarray(curve.surface_face, str), _attrs("surface_face")),
             "short_wave_limit": (
                 "point",
                 np.asarray(curve.short_wave_limit, float),

@@ -138,6 +138,9 @@ def test_a_surface_result_says_what_it_certified():
     cert = certify(p, res.critical)  # no scan: the half-space value alone
     assert cert.certified and cert.by == "halfspace" and cert.difference <= CERTIFY_RTOL
     assert "half-space value recomputed" in cert.message
+    # check round 29: two values agreeing to the bit certify to the precision achieved at
+    # rtol 1e-14 (5e-14), not to a difference of 0
+    assert cert.difference >= 5e-14 * cert.value / res.critical.value
     assert cert.as_dict()["certification"] == cert.message
 
 

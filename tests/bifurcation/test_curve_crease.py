@@ -78,7 +78,7 @@ def test_nowhere_first_and_not_computed():
     )
     assert not thin.crease.first.any()
     assert crease_line(thin).startswith("  crease: no point creases before it wrinkles; a face")
-    row = (1.5, 0.6, (0, 1), "bifurcation", "", False, math.nan, "")
+    row = (1.5, 0.6, (0, 1), "bifurcation", "", False, math.nan, "", "")
     partial = _curve("outer_radius", "stretch", "compression", Tube.uniform(), [row], [])
     empty = CreaseAlong.empty(1)
     assert math.isnan(partial.crease.value[0]) and not partial.crease.first[0]

@@ -3,6 +3,7 @@ solves, failures as data, and the ``electrogrowth curve`` command."""
 
 import argparse
 import csv
+import dataclasses
 import json
 import math
 
@@ -11,6 +12,7 @@ import pytest
 
 from electrogrowth.bifurcation import curve_switches
 from electrogrowth.bifurcation.critical import critical_value
+from electrogrowth.bifurcation.curve_record import Curve
 from electrogrowth.bifurcation.curves import Switch, critical_curve
 from electrogrowth.bifurcation.scan import ScanOptions, scan_modes
 from electrogrowth.cli.curve import configure_curve, run_curve
@@ -89,6 +91,7 @@ def test_branches_csv_and_plot(thin_to_thick, tmp_path):
         "n",
         "kind",
         "surface",
+        "surface_face",
         "short_wave_limit",
         "status",
         "crease_value",
@@ -352,6 +355,7 @@ def test_a_crossing_is_a_switch(monkeypatch):
     assert curve.ends == () and sw.kind == "switch"
     assert sw.x == pytest.approx(0.5, abs=1e-12) and sw.value == pytest.approx(2.0, abs=1e-12)
     assert list(curve.kind) == ["bifurcation", "switch", "switch", "bifurcation"]
+    assert list(curve.status) == ["ok"] * 4  # a located switch's rows too
     # d = x - 0.5 (slope 1), each value +- ERROR: x +- 2 ERROR beyond Brent's tolerance,
     # the value +- ERROR + 2 (the steeper slope) x_error
     tol = SWITCH.at(0.5)
@@ -486,16 +490,16 @@ def test_a_branch_that_meets_the_threshold_ends(monkeypatch):
 def test_an_inaccurate_critical_value_stays_marked(monkeypatch, tmp_path):
     """A grid point whose critical value is not certified (status "inaccurate" from
     critical_value) keeps that status in the curve, its CSV, JSON and xarray; the others
-    stay "" (ok)."""
+    say "ok" (check round 29: an empty cell, as before, read as a missing value)."""
     _fake_modes(monkeypatch, {(0, 1): lambda x: 1 + x}, inaccurate=(0.5,))
     curve = _curve([0.1, 0.5, 0.9])
-    assert list(curve.status) == ["", "inaccurate", ""]
+    assert list(curve.status) == ["ok", "inaccurate", "ok"]
     assert curve.inaccurate.tolist() == [False, True, False]
     assert list(curve.kind) == ["bifurcation"] * 3  # still a value and a mode
-    assert json.loads(json.dumps(curve.as_dict()))["status"] == ["", "inaccurate", ""]
+    assert json.loads(json.dumps(curve.as_dict()))["status"] == ["ok", "inaccurate", "ok"]
     with curve.to_csv(tmp_path / "c.csv").open() as fh:
-        assert [r["status"] for r in csv.DictReader(fh)] == ["", "inaccurate", ""]
-    assert curve.to_xarray()["status"].values.tolist() == ["", "inaccurate", ""]
+        assert [r["status"] for r in csv.DictReader(fh)] == ["ok", "inaccurate", "ok"]
+    assert curve.to_xarray()["status"].values.tolist() == ["ok", "inaccurate", "ok"]
 
 
 def test_cli_warns_of_inaccurate_points_and_exits_0(monkeypatch, tmp_path, capsys):
@@ -510,7 +514,7 @@ def test_cli_warns_of_inaccurate_points_and_exits_0(monkeypatch, tmp_path, capsy
     args = _args(*argv, "--points", "3", "--out", str(tmp_path), "--json")
     assert run_curve(args) == 0
     out, err = capsys.readouterr()
-    assert json.loads(out)["status"] == ["", "inaccurate", ""]
+    assert json.loads(out)["status"] == ["ok", "inaccurate", "ok"]
     assert err.count("\n") == 1 and "warning: 1 of 3 points are inaccurate" in err
 
 
@@ -548,3 +552,17 @@ def test_a_sequence_switch_with_a_mode_rootless_at_the_far_grid_point_is_brents(
 
     root = brentq(d, 0.1605, 0.1615, xtol=1e-14)
     assert str(sw.kind) == "switch" and abs(sw.x - root) < 1e-10, (sw, root)
+
+
+def test_an_older_curves_empty_status_still_reads_as_ok():
+    """Curves written before 2026-12-08 left an ok row's status empty: still not inaccurate."""
+    curve = dataclasses.replace(_fixed_curve(), status=("", "inaccurate; note", "ok"))
+    assert curve.inaccurate.tolist() == [False, True, False]
+
+
+def _fixed_curve():
+    n = 3
+    x, ones, kinds = np.linspace(0.1, 0.9, n), np.ones(n), np.array(["bifurcation"] * n)
+    m, ok, no = np.zeros(n, int), ("ok",) * n, np.zeros(n, bool)
+    return Curve("voltage", "growth", None, x, ones, m, m + 1, kinds, ok, (), Tube.uniform(),
+                 no, np.full(n, np.nan))  # fmt: skip

@@ -132,3 +132,16 @@ def test_without_koiter_a_wrinkle_says_how_to_learn_its_branch(capsys):
     assert rec["branch"] is None and "--koiter" in rec["branch_note"]
     assert main([*args, "--mode", "0", "1"]) == 0
     assert "amplitude equation not computed: not asked: add --koiter" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("command", ["critical", "design"])
+def test_the_help_says_what_koiter_costs_as_measured(command, capsys):
+    """Check round 29, D8: the help said "one to five seconds" while critical's own note
+    said ~10 s layered, and the README's mucosa took ~10 s more with --koiter. Both helps
+    and the note now quote one measured text (cli/options.KOITER_COST)."""
+    from electrogrowth.cli.options import KOITER_COST
+
+    assert main([command, "--help"]) == 0
+    text = " ".join(capsys.readouterr().out.split())
+    assert "one to five seconds" not in text and KOITER_COST in text
+    assert "~12 s on a layered tube" in KOITER_COST

@@ -108,3 +108,26 @@ def test_the_design_figure_draws_a_tied_mode_first_nowhere():
         tied_with=((2, 1), "crease"),
     )
     assert plotted_modes(readme) == [(0, 1), (1, 1), (2, 1)]
+
+
+def test_rounding_of_an_exact_zero_slope_is_no_kink(capsys, tmp_path):
+    """Check round 29, doubt: the README's design (uncharged, compressed, along Rbar_o)
+    printed "d(margin)/dgrowth = 2.31518e-12 lowering it, -8.68818e-12 raising it (a kink)".
+    At Vbar = 0 a growth g rescales the tube and every critical stretch alike, so the margin
+    does not move with g: the exact slope is 0 (the independent route). Slopes within their
+    own error (sensitivity.margin_error) are one, and one within it of 0 prints as 0."""
+    tube = Tube.uniform(1.25, 1.0)
+    opts = ScanOptions((0, 2), (1, 2))
+    d = prescribe(tube, "stretch", (1, 1), ("outer_radius", 1.2, 1.3), side="compression",
+                  points=6, options=opts)  # fmt: skip
+    assert d.tied_with  # the design sits at a tie: the length's slopes are a real kink
+    assert d.margin_sensitivity["length"] is None
+    down, up = d.margin_sides["length"]
+    assert down - up > 1e3 * d.margin_error["length"]
+    assert "growth" not in d.margin_sides  # was (2.3e-12, -8.7e-12)
+    assert abs(d.margin_sensitivity["growth"]) <= d.margin_error["growth"] < 1e-6
+    argv = ["design", "--solve-for", "stretch", "--side", "compression", "--target", "1", "1"]
+    argv += ["--vary", "outer_radius", "1.2", "1.3", "--points", "6", "--m-max", "2"]
+    assert main([*argv, "--n-max", "2", "--quiet", "--out", str(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    assert "d(margin)/dgrowth = 0 (within its error 3.0e-07)" in out

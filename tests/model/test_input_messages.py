@@ -244,3 +244,63 @@ def test_a_material_parameter_on_another_material_names_its_material(material, k
     with pytest.raises(ConfigError) as refused:
         parse_tube(f"[[layers]]\nouter_radius = 2\n{material}{key}\n")
     assert named in str(refused.value)
+
+
+@pytest.mark.parametrize(
+    "text, line, key, named",
+    [
+        # check round 29 D4: 1.0999999 after 1.1 read "= 1.1 ... valid range: > 1.1"
+        (
+            "length = 3\n[[layers]]\nouter_radius = 1.1\nshear_modulus = 10\n"
+            "[[layers]]\nouter_radius = 1.0999999\n",
+            6,
+            "layers.2.outer_radius",
+            "outer_radius = 1.0999999 is out of range; valid range: > 1.1,",
+        ),
+        # check round 29 D5: the paper's tube (one layer) lost its line and key
+        (
+            "[[layers]]\nouter_radius = 1e300\n",
+            2,
+            "layers.1.outer_radius",
+            "Rbar_o = 1e+300 is outside the supported range 1 to 100",
+        ),
+        (
+            "[[layers]]\nouter_radius = 100.00000000000001\n",
+            2,
+            "layers.1.outer_radius",
+            "Rbar_o = 100.00000000000001 is outside",
+        ),
+        ("length = 1e5\n[[layers]]\nouter_radius = 1.5\n", 1, "length", "L = 1e+05 is outside"),
+        (
+            "[[layers]]\nouter_radius = 1.5\n[[layers]]\nouter_radius = 300\n",
+            4,
+            "layers.2.outer_radius",
+            "outer_radius = 300 is outside the supported range 1 to 100",
+        ),
+        (
+            "length = 2\n[[layers]]\nouter_radius = 1.5\n[[layers]]\nouter_radius = 2\n"
+            "shear_modulus = 1.00000001e8\n[[layers]]\nouter_radius = 3\nshear_modulus = 1\n",
+            6,
+            "layers.2.shear_modulus",
+            "shear_modulus = 100000001 is outside the supported range 1e-08 to 1e+08",
+        ),
+        # D5: a growth of 0 and one of 0.001 name one range, the supported one
+        (
+            "[[layers]]\nouter_radius = 1.5\ngrowth = 0\n",
+            3,
+            "layers.1.growth",
+            "growth = 0.0 is out of range; valid range: 0.01 to 100",
+        ),
+        (
+            "[[layers]]\nouter_radius = 1.5\ngrowth = 0.001\n",
+            3,
+            "layers.1.growth",
+            "growth = 0.001 is outside the supported range 0.01 to 100",
+        ),
+    ],
+)
+def test_a_refused_tube_file_value_is_quoted_as_given_at_its_line(text, line, key, named):
+    with pytest.raises(ConfigError) as err:
+        parse_tube(text, source="t.toml")
+    msg = str(err.value)
+    assert msg.startswith(f"t.toml:{line}: {key}: ") and named in msg, msg

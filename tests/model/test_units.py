@@ -8,6 +8,7 @@ from pathlib import Path
 import pytest
 
 from electrogrowth import ParameterError, Tube, solve_base_state, tube_from_quantities
+from electrogrowth.basestate.tube import neo_hookean_asymptote
 from electrogrowth.cli.app import main
 from electrogrowth.model.units import EPSILON_0, Scales
 
@@ -263,3 +264,35 @@ def test_cli_a_load_without_its_scale_is_one_line(capsys, argv, match):
     assert main(["state", "--outer-radius", "1.4", *argv]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and match in err
+
+
+@pytest.mark.parametrize(
+    ("argv", "want"),
+    [
+        # the paper's tube (Rbar_o 1.4): its asymptote in closed form (NH-5), times the
+        # wall's scale (R_o - R_i) sqrt(mu / eps) worked by hand
+        (
+            ["--outer-radius", "2.8mm", "--voltage", "100kV"],
+            lambda: (
+                "V",
+                100,
+                neo_hookean_asymptote(Tube.uniform(1.4)) * 0.8e-3 * math.sqrt(1e5 / EPS) / 1e3,
+                "kV",
+            ),
+        ),
+        # an inflated neo-Hookean tube's asymptote P_i = ln(Rbar_o) mu (g = lambda_z = 1)
+        (
+            ["--outer-radius", "2", "--inner-pressure", "80kPa"],
+            lambda: ("P_i", 80, math.log(2) * 100, "kPa"),
+        ),
+    ],
+)
+def test_cli_a_load_beyond_its_threshold_is_refused_in_the_units_given(capsys, argv, want):
+    """Check round 29, D6: `--voltage 100kV` beyond the threshold was refused in Vbar only;
+    the refusal now quotes the load and its threshold in the user's units too."""
+    assert main(["state", *PHYSICAL, *argv]) == 2
+    err = capsys.readouterr().err
+    name, value, threshold, unit = want()
+    assert err.count("\n") == 1
+    assert f"; in {unit}: {name} = {value:.6g} {unit}, its threshold {name} =" in err
+    assert f" = {threshold:.6g} {unit} (" in err

@@ -18,7 +18,7 @@ import math
 
 import numpy as np
 
-from ..errors import BaseStateError, ConvergenceError, ParameterError
+from ..errors import BaseStateError, Beyond, ConvergenceError, ParameterError
 from ..model.layers import Tube
 from .branches import Branch, clean
 from .force_box import check_force_when_lost, check_solved_stretch
@@ -84,7 +84,8 @@ def solve_layered_state(tube: Tube, *, rtol: float = 1e-12, near=None, guess=Non
             if thr.kind and not tube.voltage < thr.value:
                 raise BaseStateError(
                     f"Vbar = {tube.voltage:.12g} is at or above the voltage threshold"
-                    f" Vbar = {thr.value:.12g} ({thr.kind}) of this tube; no axisymmetric state"
+                    f" Vbar = {thr.value:.12g} ({thr.kind}) of this tube; no axisymmetric state",
+                    beyond=Beyond("voltage", tube.voltage, thr.value, tube.outer_radius),
                 )
             x, lz = solve_on(prep.branch, thr, tube.voltage * tube.voltage, _voltage_stage(tube))
         # c from the voltage, c = V / Lambda for ideal dielectrics (from (*) it would carry

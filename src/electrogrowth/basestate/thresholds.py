@@ -24,7 +24,7 @@ from numpy.polynomial import chebyshev as cheb
 
 from ..continuation.events import BRANCH, LOCK, Remembered, bisect, brent, reached, turned
 from ..continuation.path import GeometricGrid
-from ..errors import NEAR_LOCK, OVERFLOW, BaseStateError, ConvergenceError, Remedy
+from ..errors import NEAR_LOCK, OVERFLOW, BaseStateError, Beyond, ConvergenceError, Remedy
 from ..model.layers import Tube
 from .branches import Branch, clean
 from .ellipticity import check_in_plane
@@ -555,7 +555,8 @@ def _prepared(tube: Tube, rtol: float, nodes: int | None) -> _Prepared:
         if thr.kind and not sign * (thr.value - target) > 0:
             err = BaseStateError(
                 f"inner pressure P_i = {target:.12g} is at or beyond the pressure threshold"
-                f" P_i = {thr.value:.12g} ({thr.kind}) of this tube; no axisymmetric state"
+                f" P_i = {thr.value:.12g} ({thr.kind}) of this tube; no axisymmetric state",
+                beyond=Beyond("inner_pressure", target, thr.value, tube.outer_radius),
             )
             err.remedy = PRESSURE_BEYOND  # the load is the pressure, not a voltage
             raise err

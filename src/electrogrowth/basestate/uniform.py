@@ -26,7 +26,7 @@ import math
 
 import numpy as np
 
-from ..errors import BaseStateError, ConvergenceError
+from ..errors import BaseStateError, Beyond, ConvergenceError
 from ..model.layers import Tube
 from . import neo_hookean
 from .uniform_state import UniformState
@@ -52,7 +52,8 @@ def solve_uniform(tube: Tube, rtol: float) -> UniformState:
             raise BaseStateError(f"Vbar = {target:.12g} at {where}: {CLOSING}")
         raise BaseStateError(
             f"Vbar = {target:.12g} is at or above the threshold Vbar = {info.value:.12g}"
-            f" ({info.kind}) for {where}; no axisymmetric state"
+            f" ({info.kind}) for {where}; no axisymmetric state",
+            beyond=Beyond("voltage", target, info.value, tube.outer_radius),
         )
     Ro, g, lz = tube.outer_radius, tube.growth, tube.stretch
     if info.nodes == 0:  # neo-Hookean closed form

@@ -103,7 +103,7 @@ class _Follower:
             if limit.kind != Kind.SURFACE or not self._all_stable(at, None, limit.value):
                 return None
             return CurvePoint(x, limit.value, NO_MODE, Kind.SURFACE, "", (), True, limit.value,
-                              float(limit.error_estimate))  # fmt: skip
+                              float(limit.error_estimate), face=limit.face or "")  # fmt: skip
         modes = [self.scan.mode] + [(m, n) for m, n, _ in self.scan.runners_up]
         guesses = [(mode, self._predict(mode, x)) for mode in modes]
         guesses = [(mode, b) for mode, b in guesses if b is not None]

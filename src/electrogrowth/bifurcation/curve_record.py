@@ -66,7 +66,9 @@ class CurvePoint(Outcome):
     Status. The curve's table writes a failure's status in its kind column (:func:`_row`).
     ``failure`` names a failure's kind, its exception's class ("UnstableAtStart": the
     tube is already unstable at the control's start; "NoBifurcationFound": no mode before
-    the control's end; "BaseStateError": no state; ...), "" where none.
+    the control's end; "BaseStateError": no state; ...), "" where none. ``face``: where
+    the short-wave limit that is the critical point wrinkles ("inner", "outer",
+    "interface-K"), "" elsewhere.
     """
 
     x: float
@@ -85,6 +87,7 @@ class CurvePoint(Outcome):
     #: the mode (m, n, family code) an UnstableAtStart failure found unstable at the
     #: control's start: where the end of a valid range is located (curve_switches.py)
     unstable_row: tuple = dataclasses.field(default=(), repr=False, compare=False)
+    face: str = ""
 
     def __post_init__(self):
         object.__setattr__(self, "status", Status(self.status or Status.OK))
@@ -109,7 +112,7 @@ def point_record(pt: CurvePoint) -> dict:
 def point_of(record: dict) -> CurvePoint:
     """The grid point of a :func:`point_record`, its every field checked (the record comes
     from a file: ValueError names the first field that is not what a point holds)."""
-    if not isinstance(record, dict) or set(record) - {"unstable_row"} != _FIELDS:
+    if not isinstance(record, dict) or set(record) - _OPTIONAL != _FIELDS:
         raise ValueError("not a curve point's record (its fields differ)")
     kind, status, surface = record["kind"], record["status"], record["surface"]
     if kind not in POINT_KINDS or status not in set(Status) or not isinstance(surface, bool):
@@ -118,15 +121,16 @@ def point_of(record: dict) -> CurvePoint:
     if not isinstance(runners, (list, tuple)):
         raise ValueError(f"runners_up = {runners!r} is not a list")
     texts = [record[k] for k in ("message", "remedy", "traceback", "failure")]
-    if not all(isinstance(t, str) and _printable(t) for t in texts):
-        raise ValueError("message, remedy, traceback or failure is not a printable text")
+    face = record.get("face", "")  # absent in records before 2026-12-08
+    if not all(isinstance(t, str) and _printable(t) for t in (*texts, face)):
+        raise ValueError("message, remedy, traceback, failure or face is not a printable text")
     x, value, limit, error = (
         _float(record[k], k) for k in ("x", "value", "short_wave_limit", "error_estimate")
     )
     runners_up = tuple(_runner(r) for r in runners)
     row = _unstable_row(record.get("unstable_row", []))  # absent in records before 2026-12-07
     return CurvePoint(x, value, _mode(record["mode"]), kind, Status(status), runners_up,
-                      surface, limit, error, *texts, unstable_row=row)  # fmt: skip
+                      surface, limit, error, *texts, unstable_row=row, face=face)  # fmt: skip
 
 
 def _unstable_row(v) -> tuple:
@@ -169,7 +173,9 @@ def _mode(v) -> tuple[int, int]:
     return (int(v[0]), int(v[1]))
 
 
-_FIELDS = {f.name for f in dataclasses.fields(CurvePoint)} - {"unstable_row"}  # optional
+#: the fields a record written before them lacks (read as none)
+_OPTIONAL = {"unstable_row", "face"}
+_FIELDS = {f.name for f in dataclasses.fields(CurvePoint)} - _OPTIONAL
 
 
 def _failed_point(x: float, exc: Exception) -> CurvePoint:
@@ -243,15 +249,17 @@ class Curve:
     ``kind`` is "bifurcation" (mode m, n), "threshold" (m = n = -1: the axisymmetric state
     is lost first), "surface" (m = n = -1: the exact short-wave limit m, n -> infinity at a
     face comes first), "switch", "end" or "failed" (value NaN, ``status`` says why).
-    ``status`` starts with "inaccurate" where the critical value's error estimate exceeds
-    the accuracy asked even after refinement (``inaccurate`` marks those rows).
+    ``status`` starts with "ok", or with "inaccurate" where the critical value's error
+    estimate exceeds the accuracy asked even after refinement (``inaccurate`` marks those
+    rows); a failed row's holds why.
     ``surface`` marks the rows of the short-wave limit; ``short_wave_limit`` holds the limit
     where the scan computed it (NaN elsewhere). ``switches`` lists the crossings, ``ends``
     the branch ends that were located. ``crease`` (bifurcation/curve_crease.py): per row,
     where a free face creases along the same control and whether that comes first
     (``crease.first``; not computed, all NaN, for an interrupted curve's points).
     ``failure``: per row, the kind of a failed row's failure (:class:`CurvePoint`), ""
-    for the others.
+    for the others. ``surface_face``: per row of the short-wave limit, the face where it
+    wrinkles ("inner", "outer", "interface-K"), "" for the others.
     """
 
     along: str
@@ -270,6 +278,7 @@ class Curve:
     ends: tuple[Switch, ...] = ()
     crease: CreaseAlong | None = None
     failure: tuple[str, ...] = ()
+    surface_face: tuple[str, ...] = ()
     #: the grid points as computed (CurvePoint, runners-up and all): an interrupted
     #: curve's finished points, which ``critical_curve(..., resume=curve)`` takes back
     grid: tuple[CurvePoint, ...] = dataclasses.field(default=(), repr=False, compare=False)
@@ -279,6 +288,8 @@ class Curve:
             object.__setattr__(self, "crease", CreaseAlong.empty(len(self.x)))
         if not self.failure:
             object.__setattr__(self, "failure", ("",) * len(self.x))
+        if not self.surface_face:
+            object.__setattr__(self, "surface_face", ("",) * len(self.x))
 
     @property
     def inaccurate(self) -> np.ndarray:
@@ -287,20 +298,25 @@ class Curve:
         return np.array([s.split(";")[0] == mark for s in self.status], dtype=bool)
 
     def branches(self) -> list[tuple[tuple[int, int], np.ndarray]]:
-        """Maximal runs of rows with one mode ((-1, -1): threshold), failed rows excluded:
+        """Maximal runs of rows with one mode ((-1, -1): the threshold, or the short-wave
+        limit: a run is one of them, ``surface`` tells which), failed rows excluded:
         [((m, n), row indices), ...] in order."""
         out, start = [], None
         for i in range(len(self.x) + 1):
             end = i == len(self.x)
             ok = not end and not _failed_row(self.kind[i])
-            if start is not None and (
-                not ok or (self.m[i], self.n[i]) != (self.m[start], self.n[start])
-            ):
+            if start is not None and (not ok or self._branch_of(i) != self._branch_of(start)):
                 out.append(((int(self.m[start]), int(self.n[start])), np.arange(start, i)))
                 start = None
             if ok and start is None:
                 start = i
         return out
+
+    def _branch_of(self, row: int) -> tuple:
+        """What a row's branch is: its mode, and for m = n = -1 the threshold or the
+        short-wave limit (at its face)."""
+        m, n = int(self.m[row]), int(self.n[row])
+        return (m, n) if m >= 0 else (m, n, bool(self.surface[row]), self.surface_face[row])
 
     def to_xarray(self):
         """The curve as an ``xarray.Dataset``: rows on dimension point (x is the coordinate
@@ -311,9 +327,9 @@ class Curve:
         return curve_html(self)
 
     def to_csv(self, path: str | Path) -> Path:
-        """Columns <along>, <solve_for>_cr, m, n, kind, surface (0/1), short_wave_limit,
-        status, and the crease (crease_value, crease_face, crease_trigger, crease_error,
-        crease_first 0/1)."""
+        """Columns <along>, <solve_for>_cr, m, n, kind, surface (0/1), surface_face,
+        short_wave_limit, status, and the crease (crease_value, crease_face, crease_trigger,
+        crease_error, crease_first 0/1)."""
         path = Path(path)
         with replaced(path, newline="") as fh:  # whole or not at all (atomic.py)
             w = csv.writer(fh)
@@ -325,6 +341,7 @@ class Curve:
                     "n",
                     "kind",
                     "surface",
+                    "surface_face",
                     "short_wave_limit",
                     "status",
                     *CREASE_COLUMNS,
@@ -339,12 +356,13 @@ class Curve:
                     self.n,
                     self.kind,
                     self.surface,
+                    self.surface_face,
                     self.short_wave_limit,
                     self.status,
                 ),
                 crease,
             ):
-                x, v, m, n, kind, surf, limit, status = row
+                x, v, m, n, kind, surf, face, limit, status = row
                 w.writerow(
                     [
                         repr(float(x)),
@@ -353,6 +371,7 @@ class Curve:
                         int(n),
                         kind,
                         int(surf),
+                        face,
                         repr(float(limit)),
                         status,
                         *more,
@@ -391,6 +410,7 @@ class Curve:
             "status": list(self.status),
             "failure": list(self.failure),
             "surface": self.surface.tolist(),
+            "surface_face": list(self.surface_face),
             "short_wave_limit": num(self.short_wave_limit),
             "switches": [_change_record(s) for s in self.switches],
             "ends": [_change_record(s) for s in self.ends],
@@ -438,6 +458,7 @@ def _scan_point(x: float, res) -> CurvePoint:
         bool(res.surface_instability),
         math.nan if limit is None else float(limit),
         float(c.error_estimate),
+        face=(c.face or "") if c.kind == Kind.SURFACE else "",
     )
 
 
@@ -460,17 +481,20 @@ def _row(pt: CurvePoint):
         pt.surface,
         pt.short_wave_limit,
         pt.failure,
+        pt.face,
     )
 
 
 def _row_status(pt: CurvePoint) -> str:
-    """The status column: a failure's message (a bug's with its remedy), else "" or
-    "inaccurate", then any note (a switch not located)."""
+    """The status column: a failure's message (a bug's with its remedy), else "ok" or
+    "inaccurate", then any note (a switch not located). An ok row said "" before
+    2026-12-08, an empty cell a reader could take for a missing value (check round 29);
+    ``Curve.inaccurate`` reads both."""
     if pt.kind == "" and pt.status == Status.ERROR:
         return f"{pt.message} ({pt.remedy})"
     if pt.kind == "":
         return pt.message
-    mark = str(Status.INACCURATE) if pt.status == Status.INACCURATE else ""
+    mark = str(Status.INACCURATE) if pt.status == Status.INACCURATE else str(Status.OK)
     return "; ".join(filter(None, (mark, pt.message)))
 
 

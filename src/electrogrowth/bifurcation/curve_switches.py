@@ -43,7 +43,7 @@ from typing import NamedTuple
 from ..continuation.events import MODE_EDGE, SWITCH, bisect, brent
 from ..errors import ConvergenceError, ElectrogrowthError, NoBifurcationFound
 from ..incremental.accuracy import RTOL_RANGE
-from ..outcomes import NO_MODE, Kind
+from ..outcomes import NO_MODE, Kind, Status
 from .curve_record import (
     CurvePoint,
     Switch,
@@ -504,8 +504,8 @@ def _switch_at(a: CurvePoint, b: CurvePoint, found: Located):
     x, v_before, v_after = found.x, found.before, found.after
     kind = _change_kind(a, b, v_before, v_after)
     rows = [
-        (x, v_before, a.mode, kind, "", a.surface, math.nan, ""),
-        (x, v_after, b.mode, kind, "", b.surface, math.nan, ""),
+        (x, v_before, a.mode, kind, str(Status.OK), a.surface, math.nan, "", a.face),
+        (x, v_after, b.mode, kind, str(Status.OK), b.surface, math.nan, "", b.face),
     ]
     errors = (found.x_error, found.value_error)
     return rows, [Switch(x, v_before, a.mode, b.mode, v_after, kind, *errors)]

@@ -370,7 +370,7 @@ def _located(points: list[CurvePoint], loc: _Locator, progress=None, edges: bool
 def _curve(along, solve_for, side, params, rows, switches, crease=None, grid=()) -> Curve:
     """The Curve of table rows (as :func:`_row`) and switches (and ends), with the crease
     at each row (None: not computed) and the ``grid`` points they were made of."""
-    x, v, modes, kinds, status, surface, limit, failure = zip(*rows) if rows else [()] * 8
+    x, v, modes, kinds, status, surface, limit, failure, face = zip(*rows) if rows else [()] * 9
     modes = np.array(modes, dtype=int).reshape(-1, 2)
     return Curve(
         along,
@@ -389,5 +389,6 @@ def _curve(along, solve_for, side, params, rows, switches, crease=None, grid=())
         tuple(s for s in switches if s.kind == Kind.END),
         crease,
         tuple(failure),
+        tuple(face),
         tuple(grid),
     )

@@ -31,7 +31,8 @@ along.LOCK_MARGIN of a lock, is no loss, and where nothing else is established t
 raises ConvergenceError), and kind "ellipticity" if the half-space stops being strongly
 elliptic first (then there is no decaying split to impose the face conditions on; the value
 is where that happens). The error estimate is the distance to the root found at a second,
-coarser resolution (psi grid 13 instead of 25, psi tolerance 1e-7, base state at 100 rtol).
+coarser resolution (psi grid 13 instead of 25, psi tolerance 1e-7, base state at 100 rtol),
+at least the precision rtol achieves (error_estimate.achieved_floor).
 Derivation and measured numbers: docs/derivation-surface.md.
 """
 
@@ -57,6 +58,7 @@ from .directions import (
     reference_signs,
     sampler,
 )
+from .error_estimate import achieved_floor
 from .problem import DEFAULT_RTOL, Problem, as_problem
 from .surface_march import locate
 
@@ -72,8 +74,10 @@ class SurfaceLimit(Outcome):
         up to the end of the march; value NaN, params as given).
     psi : wave direction in the face in radians, tan psi = k r / m (0: wrinkles along
         theta, pi/2: along z); ``ratio`` = k r / m = tan psi, None at psi = pi/2.
-    error_estimate : |value - value at a second, coarser resolution| (0 if not a root, NaN
-        if the base state is lost within the search for the coarser root).
+    error_estimate : |value - value at a second, coarser resolution|, at least the
+        precision rtol achieves (error_estimate.achieved_floor: the two may agree to the
+        bit, which is no exactness); 0 if not a root, NaN if the base state is lost within
+        the search for the coarser root.
     params : the parameters (Tube) at ``value``.
     face : the surface: "inner", "outer" or, in a layered tube, "interface-K" (between
         layers K and K + 1).
@@ -179,6 +183,9 @@ def _solve(
     value = events.brent(value_of, *bracket, events.surface_tolerance(rtol))
     coarse_of = SampleValue(hc, StateAt(at, coarse.rtol))
     err = _second_resolution(coarse_of, value) if estimate else math.nan
+    # the two resolutions can share their error (a closed-form state's roots agree to the
+    # bit): never less than what rtol achieves, as every critical value (critical.py)
+    err = max(err, achieved_floor(value, rtol)) if math.isfinite(err) else err
     s = h(solve_base_state(at(value), rtol=rtol))
     return SurfaceLimit(
         solve_for, value, s.face, s.psi, _ratio(s.psi), Kind.SURFACE, err, at(value), side

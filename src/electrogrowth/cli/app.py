@@ -55,6 +55,47 @@ class _Parser(argparse.ArgumentParser):
     def error(self, message):
         raise UsageError(message)
 
+    def parse_known_args(self, args=None, namespace=None):
+        # every parser of the command line passes here (a command's subparser too)
+        words = sys.argv[1:] if args is None else list(args)
+        return super().parse_known_args(self._values_attached(words), namespace)
+
+    def _values_attached(self, words: list[str]) -> list[str]:
+        """``--energy -10*log(1-(I1-3)/20)+I5/2`` as ``--energy=-10*log(...)+I5/2``: a word
+        after an option that takes one value is that value, even if it starts with "-" (an
+        energy, a path, a name), unless it is one of this parser's options or starts with
+        "--". argparse would read it as an unknown option ("expected one argument"), so a
+        value refused is named by the option's own check instead."""
+        attached: list[str] = []
+        i = 0
+        while i < len(words):
+            word, value = words[i], words[i + 1] if i + 1 < len(words) else ""
+            if word == "--":  # the rest are positional, as given
+                return attached + words[i:]
+            if self._takes_one_value(word) and self._is_dashed_value(value):
+                attached.append(f"{word}={value}")
+                i += 2
+            else:
+                attached.append(word)
+                i += 1
+        return attached
+
+    def _takes_one_value(self, word: str) -> bool:
+        """Whether ``word`` names an option of this parser that takes exactly one value (as
+        argparse reads it: exactly, or as the unique abbreviation of a long option)."""
+        action = self._option_string_actions.get(word)
+        if action is None and word.startswith("--") and len(word) > 2:
+            found = {a for s, a in self._option_string_actions.items() if s.startswith(word)}
+            action = found.pop() if len(found) == 1 else None
+        return action is not None and action.nargs is None
+
+    def _is_dashed_value(self, word: str) -> bool:
+        return (
+            word.startswith("-")
+            and not word.startswith("--")
+            and word not in self._option_string_actions
+        )
+
 
 _FLOATING_POINT = r"(overflow|invalid value|divide by zero|underflow) encountered"
 #: a negative number, optionally with a unit (a quantity: -2mm, -3 kV, -1e5 N/m^2)
@@ -188,10 +229,12 @@ def _dispatch(argv: list[str] | None) -> int:
         resolve_units(args)
         try:
             return args.run(args)
-        except BaseStateError as exc:  # a load beyond its threshold: its file line, if any
+        except BaseStateError as exc:  # a load beyond its threshold: its file line, if any,
+            # and its value and threshold in the units the user gave (kV, kPa)
+            from .report import beyond_in_units
             from .tube_input import located  # the model's import only when it is needed
 
-            raise located(exc, args) from None
+            raise located(beyond_in_units(exc, getattr(args, "scales", None)), args) from None
     except ElectrogrowthError as exc:  # bad input, or a failure with a remedy
         text = " ".join(str(exc).split())
         remedy = f" ({exc.remedy})" if exc.remedy else ""  # a Remedy's text: the CLI form

@@ -15,6 +15,7 @@ from ..incremental.accuracy import CERTIFIED, CERTIFY_RTOL, check_rtol
 from ..outcomes import Kind, Status
 from .critical_text import print_text, value_name
 from .options import (
+    KOITER_COST,
     MODE_COVERAGE,
     add_control_options,
     add_method_option,
@@ -72,7 +73,7 @@ def configure_critical(parser: argparse.ArgumentParser) -> None:
         " displacement over R_i (every wrinkle (m, n), m >= 2 or n >= 1, of layered"
         " tubes of any energy, graded growth included, for a growth, the stretch, the"
         " pressure or the voltage; ideal dielectrics under a voltage; pressures on the"
-        " faces, or the axial force prescribed without them; one to five seconds)",
+        f" faces, or the axial force prescribed without them; {KOITER_COST})",
     )
     parser.add_argument(
         "--json",
@@ -137,7 +138,7 @@ def run_critical(args) -> int:
         record.update(_amplitude_equation(args, params, solve_for, verdict))
     elif record.get("wrinkle") is not None:  # say how to learn it, rather than nothing
         record["branch_note"] = (
-            "not asked: add --koiter for super- or subcritical (1-5 s; ~10 s layered)"
+            f"not asked: add --koiter for super- or subcritical ({KOITER_COST})"
         )
     if args.certify and crit.kind in (Kind.BIFURCATION, Kind.SURFACE):
         # a scan: certify the choice of the mode as well

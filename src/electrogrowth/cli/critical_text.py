@@ -9,7 +9,7 @@ import math
 
 from ..model.controls import KINDS, parse_control
 from ..outcomes import Kind
-from .report import physical_line, supported, voltage_text
+from .report import face_text, physical_line, supported, voltage_text
 
 
 def value_name(solve_for: str) -> str:
@@ -104,11 +104,10 @@ def print_text(rec: dict, runners: list, scales=None) -> None:
             if abs(rec["psi"] - math.pi / 2) < 1e-12
             else f"the direction psi = {rec['psi']:.6g} rad from theta to z"
         )
-        where = rec["face"] if rec["face"].startswith("interface") else f"{rec['face']} face"
         head = (
             f"{name} = {value}  (error estimate {rec['error_estimate']:.1e},"
-            f" half-space)   short-wave (surface) instability, m, n -> infinity, at the"
-            f" {where}, wrinkles along {along}"
+            f" half-space)   short-wave (surface) instability, m, n -> infinity, at"
+            f" {face_text(rec['face'])}, wrinkles along {along}"
         )
     else:
         head = (

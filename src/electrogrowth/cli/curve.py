@@ -37,7 +37,15 @@ from .options import (
     scan_options_from_args,
 )
 from .progress import add_quiet_option, enabled
-from .report import NAMED, grid_or_located, named_physical, physical_line, supported, warn
+from .report import (
+    NAMED,
+    face_text,
+    grid_or_located,
+    named_physical,
+    physical_line,
+    supported,
+    warn,
+)
 from .tube_input import add_any_tube_options, control_of
 from .units import check_held_voltage, key_value
 
@@ -254,12 +262,9 @@ def summary(curve) -> list[str]:
             f"{curve.value[ok].max():.10g}"
         )
     located = (*curve.switches, *curve.ends)
-    for (m, n), rows in curve.branches():
-        what = "threshold (axisymmetric state lost)" if m < 0 else f"mode (m, n) = ({m}, {n})"
-        if curve.surface[rows].any():
-            what += " at the mode cap: short-wavelength (surface) instability"
+    for _, rows in curve.branches():
         lo, hi = (grid_or_located(curve.x[i], located) for i in (rows[0], rows[-1]))
-        lines.append(f"  {curve.along} {lo} .. {hi}: {what}")
+        lines.append(f"  {curve.along} {lo} .. {hi}: {_branch_text(curve, rows[0])}")
     for s in curve.switches:  # with the digits their error estimates support
         jump = abs(s.value_after - s.value) > 1e-9 * max(1.0, abs(s.value))
         value = (
@@ -276,9 +281,11 @@ def summary(curve) -> list[str]:
         row = (curve.x == e.x) & (curve.kind == "end") & (curve.m == e.mode_after[0])
         after = None
         if e.mode_after[0] < 0:
+            surface = np.flatnonzero(row & curve.surface)
             after = (
-                f"the short-wave limit from {supported(e.value_after, e.value_error)}"
-                if curve.surface[row].any()
+                f"the short-wave limit at {face_text(curve.surface_face[surface[0]])} from"
+                f" {supported(e.value_after, e.value_error)}"
+                if surface.size
                 else "the threshold (axisymmetric state lost)"
             )
         lines.append(
@@ -292,19 +299,29 @@ def summary(curve) -> list[str]:
     return lines
 
 
+def _branch_text(curve, row: int) -> str:
+    """What is critical on the branch of ``row``: a mode, the exact short-wave limit (at its
+    face, as `critical` says it) or the threshold."""
+    if curve.m[row] >= 0:
+        return f"mode (m, n) = ({curve.m[row]}, {curve.n[row]})"
+    if curve.surface[row]:
+        face = curve.surface_face[row]
+        at = f", at {face_text(face)}" if face else ""  # a record from before the face was kept
+        return f"short-wave (surface) instability, the exact limit m, n -> infinity{at}"
+    return "threshold (axisymmetric state lost)"
+
+
 def crease_line(curve) -> str:
     """One line: where along the curve a free face creases before the wrinkle (the crease
-    criterion at every point, bifurcation/curve_crease.py), or that it nowhere does."""
+    criterion at every point, bifurcation/curve_crease.py), or that it nowhere does; the
+    field criterion's early bound, never ranked, is said apart, before or after the
+    critical value along the control's direction (as `critical` words it)."""
     c = curve.crease
     first = np.flatnonzero(c.first)
-    found = np.isfinite(c.value)
     if not first.size:
-        where = (
-            f"; a face creases later, from {curve.solve_for} = {_range(c.value[found])}"
-            if found.any()
-            else ""
+        return "  crease: no point creases before it wrinkles" + "".join(
+            f"; {clause}" for clause in _later_creases(curve)
         )
-        return f"  crease: no point creases before it wrinkles{where}"
     xs = curve.x[first]
     faces = ", ".join(sorted({f"{c.face[i]} face ({c.trigger[i]})" for i in first}))
     return (
@@ -312,6 +329,32 @@ def crease_line(curve) -> str:
         f" {curve.along} {_range(xs)}: the {faces} creases at {curve.solve_for} ="
         f" {_range(c.value[first])} before the wrinkle (the pattern there is a crease)"
     )
+
+
+def _later_creases(curve) -> list[str]:
+    """Clauses for the crease values found that do not come first: the field criterion's
+    bound before or after the critical value along the control (its sign: compression
+    lowers it), and a mechanical crease after it; rows without a critical value say
+    neither."""
+    c = curve.crease
+    sense = -1.0 if curve.side == "compression" else 1.0
+    found = np.isfinite(c.value) & np.isfinite(curve.value)
+    before = found & (sense * c.value < sense * curve.value)  # a tie: the linear result first
+    field = np.array([t == "field" for t in c.trigger], bool).reshape(found.shape)
+    clauses = []
+    for rows, when in ((field & before, "before"), (field & found & ~before, "after")):
+        if rows.any():
+            faces = sorted({c.face[i] for i in np.flatnonzero(rows)})
+            whose = f"the {faces[0]} face's" if len(faces) == 1 else "the inner and outer faces'"
+            clauses.append(
+                f"{whose} field reaches the electro-creasing field of a bonded, unstretched"
+                f" film (an early bound for a crease, not ranked) at {curve.solve_for} ="
+                f" {_range(c.value[rows])}, {when} the critical value"
+            )
+    later = found & ~field & ~before
+    if later.any():
+        clauses.append(f"a face creases later, from {curve.solve_for} = {_range(c.value[later])}")
+    return clauses
 
 
 def _range(values) -> str:

@@ -30,6 +30,7 @@ from ..model.layers import KEYS_TEXT
 from ..pool import check_workers, usable_cores
 from . import resume
 from .options import (
+    KOITER_COST,
     SHORT_WAVES,
     add_control_options,
     add_mode_range_options,
@@ -117,7 +118,7 @@ def configure_design(parser: argparse.ArgumentParser) -> None:
         action="store_true",
         help="also solve the amplitude equation of the chosen design's wrinkle: super- or"
         " subcritical (as critical --koiter: every wrinkle (m, n) of tubes of any energy"
-        " in a growth, stretch, pressure or voltage control; one to five seconds)",
+        f" in a growth, stretch, pressure or voltage control; {KOITER_COST})",
     )
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     add_quiet_option(parser)
@@ -395,14 +396,28 @@ def _tie_lines(result) -> list[str]:
 
 def _margin_slope(result, p: str) -> str:
     """The text ", d(margin)/dp = ..." for one parameter: the two one-sided derivatives at a
-    kink, "" where none was formed."""
+    kink, "" where none was formed; a slope within its own error of 0 is 0 within it (the
+    rounding of an exact 0 printed as "2.3e-12 lowering it, -8.7e-12 raising it (a kink)",
+    check round 29)."""
+    error = getattr(result, "margin_error", {}).get(p)
     dm = result.margin_sensitivity.get(p)
-    if dm is not None:  # + 0.0: an exact zero prints as 0, not -0 (probe 14e)
-        return f", d(margin)/d{p} = {dm + 0.0:.6g}"
+    if dm is not None:
+        return f", d(margin)/d{p} = {_slope(dm, error)}"
     down, up = result.margin_sides.get(p, (None, None))
     if down is None or up is None:
         return ""
-    return f", d(margin)/d{p} = {down + 0.0:.6g} lowering it, {up + 0.0:.6g} raising it (a kink)"
+    return (
+        f", d(margin)/d{p} = {_slope(down, error)} lowering it, {_slope(up, error)} raising it"
+        " (a kink)"
+    )
+
+
+def _slope(d: float, error: float | None) -> str:
+    """A margin slope: 0 within its error where it is no larger (+ 0.0: an exact zero prints
+    as 0, not -0, probe 14e)."""
+    if error is not None and abs(d) <= error:
+        return f"0 (within its error {error:.1e})"
+    return f"{d + 0.0:.6g}"
 
 
 #: how the text names the design of each status

@@ -67,6 +67,13 @@ def bounded_int(lowest: int, highest: int, why: str = ""):
     return parse
 
 
+#: What --koiter costs, as measured (CPU seconds, 2 shared cores at load ~4.5, 2026-12-08:
+#: the paper's tube Rbar_o 1.4, Vbar 0.4 +2.5 s for --mode 0 1 and +7.1 s for its scan;
+#: README's examples/mucosa.toml --mode 12 0 +11.6 s; a fresh install compiles ~10 s more
+#: once). The help of critical and design and critical's note say the same.
+KOITER_COST = "adds ~3-7 s on the paper's tube, ~12 s on a layered tube; ~10 s more the first time"
+
+
 #: Why the largest m and n a scan may start from, and of one --mode, are bifurcation.scan's
 #: M_CAP and N_CAP (the kernel's step budget, incremental.modes.MODE_MAX); shorter
 #: waves tend to the exact short-wave (half-space) limit, which every scan computes.

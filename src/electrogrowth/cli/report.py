@@ -13,11 +13,12 @@
 
 from __future__ import annotations
 
+import dataclasses
 import sys
 import textwrap
 
 from ..digits import digits, supported
-from ..errors import ParameterError
+from ..errors import BaseStateError, ParameterError
 
 
 def voltage_text(vbar: float, outer_radius: float, scales=None, error: float | None = None) -> str:
@@ -174,3 +175,38 @@ def grid_or_located(x: float, located) -> str:
     estimate supports, as its own line prints it."""
     at = [s for s in located if s.x == x]
     return supported(x, at[0].x_error) if at else f"{x:.10g}"
+
+
+def face_text(face: str) -> str:
+    """Where a short-wave (surface) instability is, in words: "the outer face", "the inner
+    face" or an interface by its name ("interface-1")."""
+    return face if face.startswith("interface") else f"the {face} face"
+
+
+#: a load's symbol, in a refusal quoted in physical units
+_LOAD_SYMBOL = {"voltage": "V", "inner_pressure": "P_i"}
+
+
+def beyond_in_units(exc: BaseStateError, scales) -> BaseStateError:
+    """A load at or beyond its threshold (``exc.beyond``) refused in the units the user gave
+    too, as results are printed (:func:`physical_record`): "...; in kV: V = 100 kV, its
+    threshold V = 39.3995 kV". A voltage is converted with the refused tube's own R_o. Any
+    other error, or no such scales, as it is."""
+    b = getattr(exc, "beyond", None)
+    if b is None or scales is None:
+        return exc
+    at = scales  # a voltage's scale: the refused tube's own wall (R_i known)
+    if scales.has("inner_radius"):
+        at = dataclasses.replace(scales, outer_radius=scales.inner_radius * b.outer_radius)
+    pair = [physical_record({b.load: v}, at).get(b.load) for v in (b.value, b.threshold)]
+    if None in pair:
+        return exc
+    (value, unit), (threshold, _) = pair
+    name = _LOAD_SYMBOL[b.load]
+    out = BaseStateError(
+        f"{exc}; in {unit}: {name} = {value:.6g} {unit}, its threshold {name} ="
+        f" {threshold:.6g} {unit}",
+        beyond=b,
+    )
+    out.remedy = exc.remedy
+    return out

@@ -26,7 +26,7 @@ from ..bifurcation.scan import ScanOptions, scan_modes
 from ..bifurcation.verdict import advisory, crease_rival, creases
 from ..errors import ConvergenceError, ElectrogrowthError
 from ..interrupts import reraise_interrupt
-from .sensitivity import STEP, _derivative, key_value, sensitivities, step_of
+from .sensitivity import STEP, _derivative, key_value, margin_error, sensitivities, step_of
 
 CREASE_FIRST = "crease_first"  # first among the wrinkles in its region, but a crease comes first
 
@@ -170,7 +170,15 @@ def near_rivals(sense: float, v: float, lead: tuple, candidates, sens_of) -> lis
     return out
 
 
-def kinked_margin(tube, sense: float, v: float, dv: dict, rivals) -> tuple[dict, dict, tuple]:
+def margin_errors(tube, v: float, w: float, dv: dict, rtol: float) -> dict:
+    """The least error of dM/dp for every key of ``dv`` (sensitivity.margin_error), M
+    the gap from the target's v to the competitor's w."""
+    return {p: margin_error(tube, p, v, w, rtol) for p in dv}
+
+
+def kinked_margin(
+    tube, sense: float, v: float, dv: dict, rivals, error: dict | None = None
+) -> tuple[dict, dict, tuple]:
     """dM/dp of M = min over ``rivals`` [(name, w, dw)] (from :func:`near_rivals`, the one
     that sets M first) of s (w - v) / |v|: (dM/dp by key, {key: (down, up)}, the tied
     rivals).
@@ -181,7 +189,8 @@ def kinked_margin(tube, sense: float, v: float, dv: dict, rivals) -> tuple[dict,
     reported for the length where M falls by 0.045 per unit towards longer tubes). A rival
     counts as tied for p where the kink lies within the sensitivities' own step in p,
     M_i - M_0 <= h |dM_0/dp - dM_i/dp|; then dM/dp is None and ``down``, ``up`` the two
-    one-sided derivatives (None both where a tied rival's dw could not be formed)."""
+    one-sided derivatives (None both where a tied rival's dw could not be formed). Slopes
+    that differ by no more than their ``error`` (:func:`margin_errors`) are one: no kink."""
     lead = rivals[0]
     dm = [None if dw is None else margin_sensitivity(sense, v, dv, w, dw) for _, w, dw in rivals]
     gaps = [sense * (w - v) / abs(v) - sense * (lead[1] - v) / abs(v) for _, w, _ in rivals]
@@ -195,7 +204,7 @@ def kinked_margin(tube, sense: float, v: float, dv: dict, rivals) -> tuple[dict,
                 tied += [name] * (name not in tied)
         if None in near:
             sens[p], sides[p] = None, (None, None)
-        elif near and max(near + [d0]) != min(near + [d0]):
+        elif near and max(near + [d0]) - min(near + [d0]) > (error or {}).get(p, 0.0):
             sens[p], sides[p] = None, (max(near + [d0]), min(near + [d0]))
     return sens, sides, tuple(tied)
 

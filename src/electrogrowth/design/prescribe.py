@@ -104,6 +104,8 @@ class Design:
     margin: a kink of M, design/onset.py :func:`kinked_margin`), ``tied_with`` names it,
     ``margin_sensitivity`` is None for each p at whose kink M is not differentiable and
     ``margin_sides`` holds (down, up) there: dM/dp lowering p and raising it.
+    ``margin_error``: the least error of each dM/dp (sensitivity.margin_error): slopes
+    within it of each other are no kink, a slope within it of 0 is printed as 0.
     """
 
     target: str
@@ -134,6 +136,7 @@ class Design:
     surface_margin: float = math.nan
     surface_sensitivity: dict = dataclasses.field(default_factory=dict)
     note: str = ""
+    margin_error: dict = dataclasses.field(default_factory=dict)
 
     def as_dict(self) -> dict:
         return {
@@ -293,10 +296,12 @@ def prescribe(
         sens_margin = onset.margin_sensitivity(margins.sense, v, sens, lead[1], lead[2])
     sides: dict[str, tuple[float, float]] = {}
     tied: tuple = ()
+    errors: dict = {}
     if sens_margin:  # M set by a mode, the crease or the limit: a tie is a kink of M
         given = {CREASE: sens_crease, SURFACE: sens_surface}
         near = onset.rivals_at(margins, at, sequence.solve_for, x, v, lead, others, given, rtol)
-        sens_margin, sides, tied = onset.kinked_margin(at, margins.sense, v, sens, near)
+        errors = onset.margin_errors(at, v, lead[1], sens_margin, rtol)
+        sens_margin, sides, tied = onset.kinked_margin(at, margins.sense, v, sens, near, errors)
     ends = (
         []
         if span is None
@@ -331,6 +336,7 @@ def prescribe(
         m_surface,
         sens_surface,
         note,
+        errors,
     )
 
 

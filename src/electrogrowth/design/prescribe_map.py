@@ -38,6 +38,7 @@ from .onset import (
     design_verdict,
     gap_to_crease,
     kinked_margin,
+    margin_errors,
     margin_sensitivity,
     rivals_at,
 )
@@ -105,6 +106,7 @@ class MapDesign:
     surface_margin: float = math.nan
     surface_sensitivity: dict = dataclasses.field(default_factory=dict)
     note: str = ""
+    margin_error: dict = dataclasses.field(default_factory=dict)
 
     def as_dict(self) -> dict:
         return {
@@ -164,6 +166,7 @@ def stored_design(record: dict, mmap: ModeMap, target) -> MapDesign:
             _sides_of(sens), tuple(_tie_of(t) for t in best.get("tied_with") or ()),
             num(best.get("surface_value")), num(best.get("surface_margin")),
             table(sens.get("surface_value", {})), str(best.get("note") or ""),
+            table(sens.get("margin_error", {})),  # absent in records before 2026-12-08
         )  # fmt: skip
     except (KeyError, TypeError, ValueError, IndexError) as exc:
         raise ValueError(f"not a stored design: {exc}") from None
@@ -498,11 +501,12 @@ def prescribe_map(
     lead = rivals[limited]
     if lead[2]:
         sens_margin = margin_sensitivity(margins.sense, v, sens, lead[1], lead[2])
-    sides, tied = {}, ()
+    sides, tied, errors = {}, (), {}
     if sens_margin:  # M set by a mode, the crease or the limit: a tie is a kink of M
         given = {CREASE: sens_crease, SURFACE: sens_surface}
         near = rivals_at(margins, at, mmap.solve_for, u, v, lead, others, given, rtol)
-        sens_margin, sides, tied = kinked_margin(at, margins.sense, v, sens, near)
+        errors = margin_errors(at, v, lead[1], sens_margin, rtol)
+        sens_margin, sides, tied = kinked_margin(at, margins.sense, v, sens, near, errors)
     x, y = margins.xy(u)
     verdict = design_verdict(
         at,
@@ -518,6 +522,7 @@ def prescribe_map(
         v_crease if math.isfinite(v_crease) else math.nan, m_crease, limited, verdict,
         region_crease, sens_crease, sides, tied,
         v_surface if math.isfinite(v_surface) else math.nan, m_surface, sens_surface, note,
+        errors,
     )  # fmt: skip
 
 

@@ -17,7 +17,7 @@ import numpy as np
 
 from ..errors import ParameterError
 from .materials import Material, neo_hookean
-from .params import MODULI, MODULI_WHY, SUPPORTED, SUPPORTED_WHY
+from .params import MODULI, MODULI_WHY, SUPPORTED, SUPPORTED_WHY, given
 
 Growth = float | tuple[float, float, float] | Callable
 
@@ -38,11 +38,16 @@ def _triple(name: str, value) -> tuple[float, float, float]:
                 f"{name} = {value!r} has {len(value)} entries; give g or [g_r, g_theta, g_z]"
             )
         return tuple(  # named g_r, g_theta, g_z: growth[K] is layer K's growth (controls.py)
-            _growth(f"{name} g_{comp}", float(v) if isinstance(v, np.floating) else v, "> 0")
+            _growth(f"{name} g_{comp}", float(v) if isinstance(v, np.floating) else v, _GROWTH)
             for comp, v in zip(("r", "theta", "z"), value)
         )
-    g = _growth(name, value, "> 0 (or three entries > 0)")
+    g = _growth(name, value, f"{_GROWTH} (or three entries in it)")
     return (g, g, g)
+
+
+#: the supported range of a growth entry, the one-layer tube's (params.py): one text for a
+#: growth that is not physical (0) and one outside the box (0.001), check round 29 D5
+_GROWTH = f"{SUPPORTED[3]:g} to {SUPPORTED[4]:g}"
 
 
 def _growth(name: str, value, valid: str) -> float:
@@ -53,7 +58,7 @@ def _growth(name: str, value, valid: str) -> float:
     lo, hi = SUPPORTED[3], SUPPORTED[4]
     if not lo <= g <= hi:
         raise ParameterError(
-            f"{name} = {g:.6g} is outside the supported range {lo:g} to {hi:g}: {SUPPORTED_WHY}"
+            f"{name} = {given(g)} is outside the supported range {_GROWTH}: {SUPPORTED_WHY}"
         )
     return g
 
@@ -65,7 +70,7 @@ def modulus(name: str, value) -> float:
     v = _number(name, value, f"{lo:g} to {hi:g} (of the reference)", lambda v: v > 0)
     if not lo <= v <= hi:
         raise ParameterError(
-            f"{name} = {v:.6g} is outside the supported range {lo:g} to {hi:g}: {MODULI_WHY}"
+            f"{name} = {given(v)} is outside the supported range {lo:g} to {hi:g}: {MODULI_WHY}"
         )
     return v
 

@@ -12,11 +12,24 @@ from ..errors import ParameterError
 from .controls import SIDES, check_side  # noqa: F401  (the sides live with the controls)
 
 
-def _check(name: str, valid: str, ok, value: float) -> None:
+def given(value: float) -> str:
+    """A number as given, for a refusal: the shortest text that reads back to it (its
+    repr, or a ``g`` format: 300, 1.1e+08), so a value just past a bound never prints as
+    the bound (1.0999999 after 1.1 read "= 1.1 ... valid range: > 1.1" with 6 digits,
+    check round 29)."""
+    v = float(value)
+    if not math.isfinite(v):
+        return repr(v)
+    short = next(text for p in range(1, 18) if float(text := f"{v:.{p}g}") == v)
+    exact = repr(v).removesuffix(".0")
+    return short if len(short) < len(exact) else exact
+
+
+def _check(name: str, valid: str, ok, value: float, key: tuple[str, ...] = ()) -> None:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise ParameterError(f"{name} = {value!r} is not a number; valid range: {valid}")
+        raise ParameterError(f"{name} = {value!r} is not a number; valid range: {valid}", key=key)
     if not math.isfinite(value) or not ok(value):
-        raise ParameterError(f"{name} = {value!r} is out of range; valid range: {valid}")
+        raise ParameterError(f"{name} = {value!r} is out of range; valid range: {valid}", key=key)
 
 
 #: The box in which every solver is supported (Rbar_o max, L min and max, g min and max,
@@ -63,24 +76,26 @@ def check_uniform_number(name: str, five: dict) -> None:
 
 
 def _physical(name: str, value) -> None:
-    _check(*_UNIFORM_CHECKS[name], value)
+    _check(*_UNIFORM_CHECKS[name], value, _UNIFORM_KEYS[name])
 
 
 def _supported(name: str, value: float) -> None:
     if name in _UNIFORM_BOX:
-        _check_box(_UNIFORM_CHECKS[name][0], value, *_UNIFORM_BOX[name])
+        _check_box(_UNIFORM_CHECKS[name][0], value, *_UNIFORM_BOX[name], _UNIFORM_KEYS[name])
 
 
 def _elastic_stretch(five: dict) -> None:
     lo, hi = SUPPORTED[5:7]
-    _check_box("elastic axial stretch lambda_z / g", five["stretch"] / five["growth"], lo, hi)
+    ratio = five["stretch"] / five["growth"]
+    _check_box("elastic axial stretch lambda_z / g", ratio, lo, hi, ("stretch",))
 
 
-def _check_box(symbol: str, value: float, lo: float, hi: float) -> None:
+def _check_box(symbol: str, value: float, lo: float, hi: float, key=()) -> None:
     if not value <= hi or not lo <= value:
         raise ParameterError(
-            f"{symbol} = {value:.6g} is outside the supported range {lo:g} to {hi:g}:"
-            f" {SUPPORTED_WHY}"
+            f"{symbol} = {given(value)} is outside the supported range {lo:g} to {hi:g}:"
+            f" {SUPPORTED_WHY}",
+            key=key,
         )
 
 
@@ -91,6 +106,14 @@ _UNIFORM_CHECKS = {
     "growth": ("growth factor g", f"{SUPPORTED[3]:g} <= g <= {SUPPORTED[4]:g}", lambda v: v > 0),
     "stretch": ("axial stretch lambda_z", "0 < lambda_z < inf", lambda v: v > 0),
     "voltage": ("voltage Vbar", "0 <= Vbar < threshold", lambda v: v >= 0),
+}
+#: where each of the five sits in the paper's tube, a Tube of one layer (as in a tube file)
+_UNIFORM_KEYS = {
+    "outer_radius": ("layers", "1", "outer_radius"),
+    "length": ("length",),
+    "growth": ("layers", "1", "growth"),
+    "stretch": ("stretch",),
+    "voltage": ("voltage",),
 }
 #: the supported box of the numbers that have one (SUPPORTED)
 _UNIFORM_BOX = {

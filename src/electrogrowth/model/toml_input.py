@@ -89,10 +89,25 @@ def typename(v) -> str:
     }.get(type(v), type(v).__name__)
 
 
-def finite(v, path: tuple) -> float:
-    """``v`` as a finite float, or ConfigError at the key ``path``."""
+#: where a tube file's physical values go: the commands that read it take physical units
+TUBE_UNITS = (
+    "give physical units on the command line (e.g. --voltage 3kV with --inner-radius,"
+    " --shear-modulus and --permittivity), or the value in those units"
+)
+#: a sweep takes no physical units (its command has no such options, check round 29 D7)
+SWEEP_UNITS = (
+    "convert the value to those units (a length / R_i, a modulus or pressure / mu, a"
+    " permittivity / eps, a voltage to Vbar = V / (R_o - R_i) sqrt(eps / mu)); a sweep"
+    " takes no physical units"
+)
+
+
+def finite(v, path: tuple, units: str = TUBE_UNITS) -> float:
+    """``v`` as a finite float, or ConfigError at the key ``path`` (``units``: the remedy
+    of a quantity given as text, :func:`units_hint`)."""
     if isinstance(v, bool) or not isinstance(v, (int, float)):
-        raise ConfigError(path, f"expected a number, got {typename(v)} {shown(v)}{units_hint(v)}")
+        got = f"{typename(v)} {shown(v)}{units_hint(v, units)}"
+        raise ConfigError(path, f"expected a number, got {got}")
     try:
         value = float(v)
     except OverflowError:  # an integer beyond the largest double
@@ -106,15 +121,12 @@ def finite(v, path: tuple) -> float:
 _QUANTITY = re.compile(r"\s*[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?\s*[A-Za-z\u00b5\u03bc]")
 
 
-def units_hint(v) -> str:
-    """For a quantity given where a file wants a number ("3 kV"): where units go."""
+def units_hint(v, units: str = TUBE_UNITS) -> str:
+    """For a quantity given where a file wants a number ("3 kV"): where units go, as the
+    file's kind says (``units``: TUBE_UNITS or SWEEP_UNITS)."""
     if not (isinstance(v, str) and _QUANTITY.match(v)):
         return ""
-    return (
-        "; files hold non-dimensional values (mu = eps = R_i = 1): give physical units on"
-        " the command line (e.g. --voltage 3kV with --inner-radius, --shear-modulus and"
-        " --permittivity), or the value in those units"
-    )
+    return f"; files hold non-dimensional values (mu = eps = R_i = 1): {units}"
 
 
 def shown(v, limit: int = 60) -> str:
@@ -123,6 +135,6 @@ def shown(v, limit: int = 60) -> str:
     return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
-def number(table: dict, where: tuple, key: str) -> float:
+def number(table: dict, where: tuple, key: str, units: str = TUBE_UNITS) -> float:
     """``table[key]`` as a finite float, or ConfigError at ``where + (key,)``."""
-    return finite(table[key], where + (key,))
+    return finite(table[key], where + (key,), units)

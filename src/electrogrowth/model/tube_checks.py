@@ -19,7 +19,7 @@ import numpy as np
 from ..errors import ParameterError
 from .controls import Control, parse_control
 from .layer import Layer, _number
-from .params import MODULI, MODULI_WHY, SUPPORTED, SUPPORTED_WHY, check_uniform
+from .params import MODULI, MODULI_WHY, SUPPORTED, SUPPORTED_WHY, check_uniform, given
 
 
 def checked_fields(tube) -> dict:
@@ -37,9 +37,10 @@ def checked_fields(tube) -> dict:
             raise ParameterError(f"layers[{k + 1}] = {layer!r} is not a Layer")
         if not layer.outer_radius > inner:
             raise ParameterError(
-                f"layers[{k + 1}].outer_radius = {layer.outer_radius:g} is out of range;"
-                f" valid range: > {inner:g}, the layer's inner radius (layers are listed"
-                " from R = 1 outward, radii increasing; layers[1] is the innermost)"
+                f"layers[{k + 1}].outer_radius = {given(layer.outer_radius)} is out of range;"
+                f" valid range: > {given(inner)}, the layer's inner radius (layers are listed"
+                " from R = 1 outward, radii increasing; layers[1] is the innermost)",
+                key=("layers", str(k + 1), "outer_radius"),
             )
         if layer.graded:
             layer.growth_at(np.linspace(inner, layer.outer_radius, 17))
@@ -71,9 +72,10 @@ def check_supported(tube) -> None:
         check_uniform(tube.outer_radius, tube.length, tube.growth, tube.stretch, tube.voltage)
         return
     ro_max, l_lo, l_hi, _, _, e_lo, e_hi = SUPPORTED
+    outermost = ("layers", str(len(tube.layers)), "outer_radius")
     checks = [
-        ("outer_radius", tube.outer_radius, 1.0, ro_max),
-        ("length", tube.length, l_lo, l_hi),
+        ("outer_radius", tube.outer_radius, 1.0, ro_max, outermost),
+        ("length", tube.length, l_lo, l_hi, ("length",)),
     ]
     if tube.stretch is not None:
         checks += [
@@ -82,15 +84,17 @@ def check_supported(tube) -> None:
                 tube.stretch / la.growth[2],
                 e_lo,
                 e_hi,
+                ("stretch",),
             )
             for k, la in enumerate(tube.layers, 1)
             if not la.graded
         ]
-    for name, value, lo, hi in checks:
+    for name, value, lo, hi, key in checks:
         if not lo <= value <= hi:
             raise ParameterError(
-                f"{name} = {value:.6g} is outside the supported range {lo:g} to {hi:g}:"
-                f" {SUPPORTED_WHY}"
+                f"{name} = {given(value)} is outside the supported range {lo:g} to {hi:g}:"
+                f" {SUPPORTED_WHY}",
+                key=key,
             )
     for field in ("shear_modulus", "permittivity"):
         _check_ratio(tube.layers, field)
@@ -105,7 +109,7 @@ def _check_ratio(layers, field: str) -> None:
     if hi / lo > MODULI[1]:
         k, j = values.index(hi) + 1, values.index(lo) + 1
         raise ParameterError(
-            f"layers[{k}].{field} / layers[{j}].{field} = {hi / lo:.6g} is outside the"
+            f"layers[{k}].{field} / layers[{j}].{field} = {given(hi / lo)} is outside the"
             f" supported range 1 to {MODULI[1]:g}: {MODULI_WHY}"
         )
 

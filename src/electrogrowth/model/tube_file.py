@@ -169,14 +169,20 @@ def _growth(value, where, inner: float, outer: float):
 
 
 def _checked(make, where):
-    """make(), a ParameterError turned into a ConfigError at the key it names."""
+    """make(), a ParameterError turned into a ConfigError at the key it names: its ``key``
+    where the check says it (the paper's tube names its numbers by symbol, "outer radius
+    Rbar_o = 1e+300", and lost its line: check round 29 D5), else read off the message."""
     try:
         return make()
+    except ConfigError:  # already at its key
+        raise
     except ParameterError as exc:
         msg = str(exc)
         hit = re.match(r"(?:layers\[(\d+)\]\.)?([a-z_]+)(?: g_[a-z]+)?\s*=", msg)
         key = where
-        if hit and hit.group(1) is not None:  # layers[K], K = 1 innermost, as in the file
+        if exc.key:
+            key = where + exc.key
+        elif hit and hit.group(1) is not None:  # layers[K], K = 1 innermost, as in the file
             key = ("layers", hit.group(1), hit.group(2))
         elif hit and hit.group(2) in LAYER + TOP:
             key = where + (hit.group(2),)

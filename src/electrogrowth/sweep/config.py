@@ -52,7 +52,7 @@ from ..model.controls import SIDED, SIDES, TUBE_CONTROLS, parse_control
 from ..model.energy_text import energy_material
 from ..model.layers import Tube
 from ..model.materials import BUILTIN, Material, material_by_name
-from ..model.toml_input import shown, typename, units_hint
+from ..model.toml_input import SWEEP_UNITS, shown, typename, units_hint
 from ..model.tube_file import parse_tube
 from .unit import ScanSpec
 
@@ -339,7 +339,7 @@ def _check_koiter(c: SweepConfig) -> None:
 
 def _check_value(tube: Tube, name: str, value, where: tuple[str, ...]) -> None:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
-        got = f"{typename(value)} {shown(value)}{units_hint(value)}"
+        got = f"{typename(value)} {shown(value)}{units_hint(value, SWEEP_UNITS)}"
         raise ConfigError(where, f"expected a number, got {got}")
     try:
         tube.at(name, value)

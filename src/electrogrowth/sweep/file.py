@@ -18,9 +18,10 @@ import numpy as np
 
 from ..bifurcation.scan import ScanOptions
 from ..errors import ConfigError, ParameterError
+from ..model import toml_input
 from ..model.controls import parse_control
 from ..model.layers import Tube
-from ..model.toml_input import finite, number, parse, read_text, shown, typename, units_hint
+from ..model.toml_input import SWEEP_UNITS, parse, read_text, shown, typename
 from ..model.tube_file import parse_tube
 from .config import MODE_KEYS, SweepConfig, default_chunk, reference_tube, sweep_keys
 
@@ -35,6 +36,11 @@ TABLES = {
     "run": ("chunk",),
     "tube": ("file",),
 }
+
+# a sweep's numbers: a quantity given as text gets the sweep's remedy, not the tube file's
+finite = functools.partial(toml_input.finite, units=SWEEP_UNITS)
+number = functools.partial(toml_input.number, units=SWEEP_UNITS)
+units_hint = functools.partial(toml_input.units_hint, units=SWEEP_UNITS)
 
 
 #: The most values a {start, stop, num} range may ask for (a sweep file is read before any
