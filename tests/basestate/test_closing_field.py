@@ -12,6 +12,7 @@ The crease criterion's Biot ratio compresses a tube through that range, so every
 critical value, curve and design with such a layer ended in that internal error.
 """
 
+import dataclasses
 import math
 
 import numpy as np
@@ -120,3 +121,40 @@ def test_a_mixed_stack_closes_where_the_charge_raises_its_residual(inner, outer_
         assert value == 0.0 and lam == solve_base_state(tube).lambda_i
         with pytest.raises(BaseStateError, match="closes the bore"):
             solve_base_state(tube.at("voltage", 0.05))
+
+
+#: check round 28 D1: a bilayer whose coupling stiffens with I1 at fixed lambda_z and P_o
+COUP = Material("coup", "(I1-3)/2 + I5/2*(1 + 0.1*(I1-3))")
+COUPI4 = Material("coupi4", "(I1-3)/2 + 0.45*I5 + 0.05*I4*(1 + 0.1*(I1-3))")
+
+
+def _stiffening_bilayer(inner_pressure: float) -> Tube:
+    inner = Layer(1.8084397861935206, COUP, shear_modulus=2.6200505657523743)
+    outer = Layer(2.2693066463787863, COUPI4, shear_modulus=7.860779293048664)
+    growth = (1.150437756076137, 1.1313952076652471, 1.1219382139347056)
+    return Tube(
+        (
+            dataclasses.replace(inner, permittivity=0.9122528046112701),
+            dataclasses.replace(outer, permittivity=0.652746813978254, growth=growth),
+        ),
+        length=4.1481538834933875,
+        stretch=0.8109099045777046,
+        inner_pressure=inner_pressure,
+        outer_pressure=0.04364916679215165,
+    )
+
+
+def test_a_branch_running_inward_past_the_couplings_limit_is_closing_not_a_lock():
+    # on 9b16ae6: kind "locking" of zero width at the uncharged state (lambda_i
+    # 9.259299375132048) and a charged state refused as "too close to the locking stretch";
+    # the check's own quadrature: uncharged r_i 9.259299375131839, the charged branch runs
+    # inward (Vbar 0.1847 at r_i 9.25): not followed, said so
+    tube = _stiffening_bilayer(4.45)
+    value, kind, lam = voltage_threshold(tube)
+    assert (value, kind) == (0.0, "closing")
+    assert lam == pytest.approx(9.259299375131839, rel=1e-12)
+    with pytest.raises(BaseStateError, match="closes the bore"):
+        solve_base_state(tube.at("voltage", 0.1083518738228662))
+    # below the crossing (uncharged r_i 9.0111) the branch opens, to the coupling's limit
+    value, kind, lam = voltage_threshold(_stiffening_bilayer(4.448))
+    assert kind == "locking" and lam == pytest.approx(9.0334, abs=1e-4)

@@ -238,7 +238,14 @@ def first_bifurcations(
             idx = np.nonzero(watch.alive & (watch.xa != x))[0]
             if idx.size:
                 x, g = _last_look(signed, watch, idx, x)
-                found += _advance(watch, idx, x, g, views, top)
+                try:
+                    found += _advance(watch, idx, x, g, views, top)
+                except ConvergenceError as err:  # as below: the path's end next to a lock
+                    where = (idx, watch.xa[idx][np.argmax(sense * watch.xa[idx])], x)
+                    more, threshold, unresolved = _unresolved_tables(
+                        at, params, views, watch, where, err, top, threshold
+                    )
+                    found += more
             break
         idx = np.nonzero(watch.needs(x))[0]
         if idx.size:
@@ -247,7 +254,14 @@ def first_bifurcations(
             except ConvergenceError as err:  # the state solves, its tables do not
                 unresolved, stop = err, True
                 continue
-            found += _advance(watch, idx, x, g, views, top)
+            try:
+                found += _advance(watch, idx, x, g, views, top)
+            except ConvergenceError as err:  # a root's refinement met unresolved tables
+                more, threshold, unresolved = _unresolved_tables(
+                    at, params, views, watch, (idx, step.x, x), err, top, threshold
+                )
+                found, stop = found + more, True
+                continue
             if failing.persistent():  # the states from here on are past the kernel
                 unresolved, stop = failing.error(), True
         reach = watch.reach(steps.safety, steps.smallest * path.scale)
@@ -396,6 +410,27 @@ def _last_look(signed: Signed, watch, idx, x: float):
     if g is None:  # the modes were last seen at different x: none is known at one x
         raise unresolved
     return good, g
+
+
+def _unresolved_tables(at: TubeAt, params: Tube, views, watch, where, err, top, known=None):
+    """(roots, threshold, unresolved) where the refinement of a sign change of the modes
+    ``idx`` between their last samples (the latest x_ok) and x met a state whose radial
+    tables do not resolve (``err``; next to a lock, where a loose sign jumps: check round 28
+    D2, the table's error escaped the march): a mode whose fine sign is negative at the last
+    x where the fine targets resolve (:func:`_last_look`) has its root before it, found
+    there; else the states end at the ``known`` threshold (a loss the march established
+    past x), or where :func:`state_loss.threshold_between` says (a layer's kinematic lock),
+    or, where neither is, nothing is established and ``err`` is raised."""
+    idx, x_ok, x = where
+    try:
+        good, g = _last_look(views.fine, watch, idx, x)
+        if (g <= 0).any():
+            return _advance(watch, idx, good, g, views, top), known, None
+    except ConvergenceError:
+        pass  # not even the fine signs resolve: the states alone decide
+    if known is None:
+        known, _, _ = _threshold_between(at, params, x_ok, x, tables=True)
+    return [], known, None if known is not None else err
 
 
 class Views(NamedTuple):

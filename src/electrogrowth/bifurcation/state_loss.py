@@ -126,16 +126,21 @@ def loss_at_end(
     return None
 
 
-def threshold_between(at: TubeAt, params: Tube, x_ok: float, x_bad: float, rtol=1e-12):
+def threshold_between(
+    at: TubeAt, params: Tube, x_ok: float, x_bad: float, rtol=1e-12, *, tables: bool = False
+):
     """Where the base state is lost between x_ok and x_bad (no state, or none resolved, at
     x_bad): (value, the last x the march may step to, None). Where the voltage threshold
     falls to the applied voltage, or the inflation threshold to the inner pressure, if that
     brackets it (:func:`held_loads`), else the edge of the states that solve at ``rtol``
-    (whichever of the tube's loads reaches its threshold), bisected.
+    (whichever of the tube's loads reaches its threshold), bisected. ``tables``: the state
+    at x_bad solves but its radial tables do not resolve (a root's refinement met it): it
+    is unresolved, and the edge is x_bad itself.
 
     Next to a locking stretch the states past the edge may exist and yet not resolve: the
     edge is then a loss only where a layer locks kinematically before the first state that
-    is lost (or, where x_bad is not lost, within one more step of x_bad: the march came
+    is lost, or within one more step of it (the search failed within LOCK_MARGIN of the
+    lock), or, where x_bad is not lost, within one more step of x_bad (the march came
     within LOCK_MARGIN of the lock), and the value is that lock. Else the answer is (None,
     the last resolved x, the error to raise if nothing is found before it)."""
     margin = held_loads(at, params, at.control)
@@ -144,7 +149,7 @@ def threshold_between(at: TubeAt, params: Tube, x_ok: float, x_bad: float, rtol=
         x = _lost_between(x_ok, x_bad, margin=margin, tolerate=_UNREADABLE)
         if x is not None:
             return x, x, None
-    fate_bad = _fate(at, x_bad, rtol)
+    fate_bad = "unresolved" if tables else _fate(at, x_bad, rtol)
     if fate_bad == "solved":  # the failure was the march's alone: no edge here
         return (
             None,
@@ -154,14 +159,19 @@ def threshold_between(at: TubeAt, params: Tube, x_ok: float, x_bad: float, rtol=
                 " (it solves on its own)"
             ),
         )
-    ok, bad = bisect(lambda x: _fate(at, x, rtol) == "solved", x_ok, x_bad, EDGE)
-    if _fate(at, bad, rtol) == "lost":
-        return ok, ok, None
+    if tables:  # every state up to x_bad solves: the edge is where the tables fail
+        ok, bad = x_ok, x_bad
+    else:
+        ok, bad = bisect(lambda x: _fate(at, x, rtol) == "solved", x_ok, x_bad, EDGE)
+        if _fate(at, bad, rtol) == "lost":
+            return ok, ok, None
     beyond = x_bad if fate_bad in _NO_STATE else _lost_past_lock(at, x_ok, x_bad, rtol)
     lost_from = ""
     if beyond is not None:
         _, lost = bisect(lambda x: _fate(at, x, rtol) not in _NO_STATE, bad, beyond, EDGE)
-        lock = kinematic_lock(at, ok, lost)
+        # the search may fail short of the lock, within LOCK_MARGIN of it: one more step on
+        ahead = _lost_past_lock(at, ok, lost, rtol)
+        lock = kinematic_lock(at, ok, lost if ahead is None else ahead)
         if lock is not None:  # past it no state can exist: the loss is established, exactly
             return lock, ok, None
         lost_from = f", and the state search fails from {lost:.12g}"
@@ -217,8 +227,9 @@ def _why_unresolved(at: TubeAt, x_ok: float, x_bad: float, rtol: float) -> str:
 
 
 def _lost_past_lock(at: TubeAt, x_ok: float, x_bad: float, rtol: float) -> float | None:
-    """x_bad unresolved but not lost: a point one more step (x_bad - x_ok) on, if a layer
-    locks kinematically before it and no state is found there (else None)."""
+    """x_bad unresolved, or the first x where the search fails: a point one more step
+    (x_bad - x_ok) on, if a layer locks kinematically before it and no state is found there
+    (else None)."""
     ahead = x_bad + (x_bad - x_ok)
     try:
         if kinematic_lock(at, x_bad, ahead) is None or _fate(at, ahead, rtol) not in _NO_STATE:
