@@ -53,7 +53,7 @@ def test_out_naming_a_fifo_says_so(tmp_path, capsys):
 
 
 def _a_curve(rows: int, value: float):
-    row = (0.0, value, NO_MODE, Kind.THRESHOLD, "", False, np.nan, "")
+    row = (0.0, value, NO_MODE, Kind.THRESHOLD, "", False, np.nan, "", None)
     rows = [(float(i), *row[1:]) for i in range(rows)]
     return _curve("voltage", "growth", None, Tube.uniform(1.4), rows, [])
 
