@@ -117,6 +117,19 @@ class BaseStateError(ElectrogrowthError, RuntimeError):
     )
 
 
+class BranchNotFollowed(BaseStateError):
+    """A charged state the package does not follow, though it may exist: the energy's field
+    closes the bore, so the voltage branch runs inward from the uncharged state, and the
+    package follows charged branches only where the bore opens (basestate/voltage.py
+    ``_rises``, thresholds.opens). Not a loss of the state: a march whose states end so
+    leaves the rest of its path unexamined (bifurcation/state_loss.py ``_fate``)."""
+
+    remedy = Remedy(
+        "none within the package: it follows a voltage branch only where the charge opens"
+        " the bore; a smaller voltage or other loads may keep the tube on such a branch"
+    )
+
+
 class ConvergenceError(ElectrogrowthError, RuntimeError):
     """A root finder or integrator did not reach the requested accuracy."""
 

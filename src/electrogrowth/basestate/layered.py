@@ -18,7 +18,7 @@ import math
 
 import numpy as np
 
-from ..errors import BaseStateError, Beyond, ConvergenceError, ParameterError
+from ..errors import BaseStateError, Beyond, BranchNotFollowed, ConvergenceError, ParameterError
 from ..model.layers import Tube
 from .branches import Branch, clean
 from .force_box import check_force_when_lost, check_solved_stretch
@@ -80,7 +80,7 @@ def solve_layered_state(tube: Tube, *, rtol: float = 1e-12, near=None, guess=Non
         else:  # the branch is walked only up to Vbar unless its threshold is known already
             thr = prep.voltage_to(tube.voltage)
             if thr.kind == "closing":  # as a uniform tube's (uniform.py)
-                raise BaseStateError(f"Vbar = {tube.voltage:.12g} for this tube: {CLOSING}")
+                raise BranchNotFollowed(f"Vbar = {tube.voltage:.12g} for this tube: {CLOSING}")
             if thr.kind and not tube.voltage < thr.value:
                 raise BaseStateError(
                     f"Vbar = {tube.voltage:.12g} is at or above the voltage threshold"

@@ -26,7 +26,7 @@ import math
 
 import numpy as np
 
-from ..errors import BaseStateError, Beyond, ConvergenceError
+from ..errors import BaseStateError, Beyond, BranchNotFollowed, ConvergenceError
 from ..model.layers import Tube
 from . import neo_hookean
 from .uniform_state import UniformState
@@ -49,7 +49,7 @@ def solve_uniform(tube: Tube, rtol: float) -> UniformState:
             f" {tube.material.name}"
         )
         if info.kind == "closing":
-            raise BaseStateError(f"Vbar = {target:.12g} at {where}: {CLOSING}")
+            raise BranchNotFollowed(f"Vbar = {target:.12g} at {where}: {CLOSING}")
         raise BaseStateError(
             f"Vbar = {target:.12g} is at or above the threshold Vbar = {info.value:.12g}"
             f" ({info.kind}) for {where}; no axisymmetric state",

@@ -22,8 +22,9 @@ from collections.abc import Callable
 import numpy as np
 
 from ..basestate.tube import solve_base_state, threshold
+from ..basestate.voltage import CLOSING
 from ..continuation.events import scaled
-from ..errors import NEAR_LOCK, ConvergenceError
+from ..errors import NEAR_LOCK, BranchNotFollowed, ConvergenceError
 from ..model.builtin_energies import BuiltinEnergy
 from ..model.layers import Tube
 
@@ -242,7 +243,10 @@ class LoadMargin:
 
 def _load_threshold(tube: Tube, name: str) -> float:
     if name == "voltage":
-        return voltage_threshold(tube)
+        thr = threshold(tube, "voltage")
+        if thr.kind == "closing":  # charged states run inward: not followed, not lost
+            raise BranchNotFollowed(f"Vbar = {tube.voltage:.12g}: {CLOSING}")
+        return thr.value
     return threshold(dataclasses.replace(tube, voltage=0.0), "pressure").value
 
 

@@ -37,6 +37,7 @@ from ..continuation.events import threshold_between as _lost_between
 from ..errors import (
     NEAR_LOCK,
     BaseStateError,
+    BranchNotFollowed,
     ConvergenceError,
     ElectrogrowthError,
     ParameterError,
@@ -305,11 +306,13 @@ def _fate(at: TubeAt, x: float, rtol: float = 1e-12) -> str:
     (LockedSearch: the search met a layer's lock before any state, even with the finest
     Gauss rule: a loss only where :func:`kinematic_lock` establishes it); or "unresolved"
     (it exists, but its profile is not resolved, or it lies within LOCK_MARGIN of a lock:
-    ConvergenceError)."""
+    ConvergenceError; or it may exist on a branch not followed, BranchNotFollowed)."""
     try:
         clear_of_lock(_solved(at, x, rtol))
     except LockedSearch:
         return "locked"
+    except BranchNotFollowed:  # it may exist, on a branch the package does not follow
+        return "unresolved"
     except BaseStateError:
         return "lost"
     except ConvergenceError:
