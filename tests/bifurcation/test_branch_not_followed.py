@@ -60,3 +60,13 @@ def test_the_march_does_not_end_where_the_branch_turns_inward():
     assert value is None and err is not None  # was 4.448189975629997, an established loss
     assert "closes the bore" in str(err) and "not established" in str(err)
     assert ok == pytest.approx(4.4481899756, rel=1e-9)
+
+
+def test_the_crease_march_reads_a_branch_not_followed_as_existing():
+    """crease.py's bisection for where the states end counted it as lost."""
+    from electrogrowth.bifurcation.crease import _not_lost
+
+    def state(x):
+        raise BranchNotFollowed("closes the bore")
+
+    assert _not_lost(state)(4.45)  # was False: an edge the march would have reported

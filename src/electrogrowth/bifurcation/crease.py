@@ -33,7 +33,13 @@ import functools
 import math
 
 from ..continuation.events import FULL, brent, threshold_between
-from ..errors import BaseStateError, ConvergenceError, ElectrogrowthError, ParameterError
+from ..errors import (
+    BaseStateError,
+    BranchNotFollowed,
+    ConvergenceError,
+    ElectrogrowthError,
+    ParameterError,
+)
 from ..model.builtin_energies import BuiltinEnergy
 from ..model.layers import Tube
 from ..outcomes import Kind, Outcome, Status, json_number
@@ -382,6 +388,8 @@ def _march(problem: Problem, triggers: tuple[str, ...], until: float | None = No
         x_new = x + sense * step if sense * (end - x - sense * step) > 0 else end
         try:
             h_new = margin(x_new)
+        except BranchNotFollowed as err:  # it may exist: no loss, as an unresolved state
+            raise _unresolved(control, start, x, x_new, err) from err
         except BaseStateError:  # no state at x_new: where the states end is bisected
             lost = threshold_between(x, x_new, exists=_not_lost(state))
             return result(math.nan, Kind.NONE, threshold=math.nan if lost is None else lost)
@@ -432,6 +440,8 @@ def _not_lost(state):
     def exists(x) -> bool:
         try:
             state(x)
+        except BranchNotFollowed:  # it may exist, on a branch not followed
+            pass
         except BaseStateError:
             return False
         except ConvergenceError:  # there, not resolved
@@ -441,9 +451,10 @@ def _not_lost(state):
     return exists
 
 
-def _unresolved(control: str, start: float, x: float, x_bad: float, err: ConvergenceError):
+def _unresolved(control: str, start: float, x: float, x_bad: float, err: ElectrogrowthError):
     """The crease march ended at a state that exists but is not resolved: no crease up to
-    x, and whether one (or the loss of the state) follows is not established."""
+    x, and whether one (or the loss of the state) follows is not established (``err``: not
+    resolved, or on a branch the package does not follow)."""
     out = ConvergenceError(
         f"no crease for {control} from {start:.12g} up to {x:.12g}, and the base state at"
         f" {x_bad:.12g} is not resolved: {err.args[0]}"
