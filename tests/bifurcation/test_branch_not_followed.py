@@ -63,7 +63,7 @@ def test_the_states_on_the_inward_branch_are_solved():
     assert held == pytest.approx(float("inf"))  # the inward branch locks: Vbar unbounded
 
 
-@pytest.mark.slow  # ~100 s: the (6, 2) march in pressure
+@pytest.mark.slow  # 15 s on one BLAS thread, ~100 s with more under load: the (6, 2) march
 def test_the_march_goes_past_the_turn_towards_the_asymptote():
     # on main: the march ended at 4.4481899756 (threshold, ok; later unresolved); the states
     # exist up to ~4.4683 (the check's quadrature), below the uncharged asymptote 4.468374838
