@@ -119,9 +119,9 @@ class BaseStateError(ElectrogrowthError, RuntimeError):
 
 class BranchNotFollowed(BaseStateError):
     """A charged state the package does not follow, though it may exist: the energy's field
-    closes the bore, so the voltage branch runs inward from the uncharged state, and the
-    package follows charged branches only where the bore opens (basestate/voltage.py
-    ``_rises``, thresholds.opens). Not a loss of the state: a march whose states end so
+    closes the bore and no charge balances the traction inward of the uncharged state
+    either (threshold kind "closing"; basestate/voltage.py ``_rises``, ``_runs_inward``,
+    thresholds.opens, thresholds.inward). Not a loss of the state: a march whose states end so
     leaves the rest of its path unexamined (bifurcation/state_loss.py ``_fate``)."""
 
     remedy = Remedy(

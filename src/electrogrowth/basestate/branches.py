@@ -81,32 +81,33 @@ class Branch:
         )
 
     def _charge(self, r_i, lz):
-        """c for a general energy: (*) = dp in q = c^2 (0 where the unloaded T < dp), or
-        V(c) = Vbar (R_N - 1) on the pressure branch."""
+        """c for a general energy: (*) = dp in q = c^2, or V(c) = Vbar (R_N - 1) on the
+        pressure branch. On the voltage branch a field lowers T where the uncharged T
+        exceeds dp (outward of the uncharged state); inward of it (T < dp) a field that
+        raises T balances it (a coupling that stiffens with I1, check round 28 D1: the
+        branch runs inward), NaN where none does, and where the field lowers T there too, except
+        within the rounding of the start (q = 0)."""
         wall, thick = self.wall, self.wall.tube.outer_radius - 1.0
         M, scale, _, _ = wall.integrals(r_i, lz, 0.0, self.compiled)
         Q, Lam = wall.electric(r_i, lz)
         if self.load == "voltage":
             f0 = M - self.dp
-            up = f0 > 0
             q = np.zeros_like(M)
+            # the uncharged state to rounding (illinois's own zero, |f| <= 1e-15 scale): q = 0
+            # whichever way the field moves T (a field that raises it found none there)
+            start = abs(f0) <= 1e-15 * scale
+            up = (f0 > 0) & ~start
             if up.any():
-                ri, l, f0u = r_i[up], lz[up], f0[up]
-
-                def f(q):  # q NaN where no charge balances the traction: no state there
-                    with np.errstate(invalid="ignore"):
-                        T, s, _, _ = wall.integrals(ri, l, np.sqrt(q), self.compiled)
-                    return T - self.dp, s
-
-                hi = 2.0 * f0u / Q[up]
-                fhi = f(hi)[0]
-                for _ in range(100):
-                    more = fhi > 0
-                    if not more.any():
-                        break
-                    hi = np.where(more, 2.0 * hi, hi)
-                    fhi = f(hi)[0]
-                q[up] = illinois(f, np.zeros_like(hi), hi, f0u, fhi)
+                q[up] = self._balance(r_i[up], lz[up], f0[up], 2.0 * f0[up] / Q[up])
+            down = np.flatnonzero((f0 < 0) & ~start)
+            if down.size:
+                f = self._traction(r_i[down], lz[down])
+                rises = f(-2.0 * f0[down] / Q[down])[0] > f0[down]  # the field raises T
+                if (at := down[rises]).size:
+                    q[at] = self._balance(r_i[at], lz[at], f0[at], -2.0 * f0[at] / Q[at])
+                # where it lowers T no charge balances it: past the coupling's limit (r_i
+                # 9.03 there) a load of 0 read as the branch turning back
+                q[down[~rises]] = np.nan
             with np.errstate(invalid="ignore"):
                 return np.where(np.isfinite(M), np.sqrt(q), np.nan)
         target = self.vbar * thick
@@ -125,6 +126,31 @@ class Branch:
             hi = np.where(more, 2.0 * hi, hi)
             ghi = g(hi)[0]
         return illinois(g, np.zeros_like(hi), hi, np.full_like(hi, -target), ghi)
+
+    def _traction(self, r_i, lz):
+        """f(q) = (T - dp, noise scale) at the points, q = c^2 (NaN where no charge
+        balances the traction: no state there)."""
+
+        def f(q):
+            with np.errstate(invalid="ignore"):
+                T, s, _, _ = self.wall.integrals(r_i, lz, np.sqrt(q), self.compiled)
+            return T - self.dp, s
+
+        return f
+
+    def _balance(self, r_i, lz, f0, hi):
+        """q where T(q) = dp, from q = 0 (f = f0) towards hi, doubled until f changes sign
+        (at most 100 times); NaN where it does not (no charge balances the traction)."""
+        f = self._traction(r_i, lz)
+        fhi = f(hi)[0]
+        for _ in range(100):
+            more = np.sign(fhi) == np.sign(f0)
+            if not more.any():
+                break
+            hi = np.where(more, 2.0 * hi, hi)
+            fhi = f(hi)[0]
+        q = illinois(f, np.zeros_like(hi), hi, f0, fhi)
+        return np.where(np.sign(fhi) == np.sign(f0), np.nan, q)
 
     def value(self, pt) -> np.ndarray:
         """The load in analytic form: sign(Vbar) Vbar^2 (Vbar ~ sqrt near the start) or P_i."""

@@ -46,8 +46,8 @@ class Threshold:
     maximum of the load along the branch, a snap-through), "asymptote" (the load tends to
     ``value`` as lambda_i -> inf), "locking" (the energy ends at lambda_i, the load unbounded
     before it, value = inf), "none" (the load rises without bound, value = inf) or, for the
-    voltage, "closing" (no charge balances the traction just past the start: the field
-    closes the bore, value 0 at the start, :func:`opens`); lambda_i and stretch (lambda_z) at
+    voltage, "closing" (no charge balances the traction on either side of the start, value
+    0 there: :func:`opens`, :func:`inward`); lambda_i and stretch (lambda_z) at
     the threshold (inf / the last scanned lambda_z for an asymptote).
     """
 
@@ -166,7 +166,8 @@ def opens(walk: Chart, x0: float, lz0: float) -> bool:
     state past the start needs T to fall with q. Where the energy's field raises it
     (dT/dq > 0: an I6 term with a negative weight, `(I1-3)/2 + 0.2*I4 + 0.4*I5 - 0.1*I6`
     at lambda_z <= 0.49) no charge balances it (the load is NaN, read FIRST_STEP past the
-    start, as for one layer): the branch falls in r_i, the field closes the bore. T is a
+    start, as for one layer): the field closes the bore, the branch may run inward
+    (:func:`inward`). T is a
     sum over the layers, so identical layers read exactly what one layer does. A point
     that is not finite because the energy ends there (a Gent layer at its lock) or no
     lambda_z balances the axial force is no closing field: the walk reads those."""
@@ -179,6 +180,18 @@ def opens(walk: Chart, x0: float, lz0: float) -> bool:
         return True
     uncharged = Branch(walk.branch.wall, "pressure", vbar=0.0).point(r_i, lz)
     return not np.isfinite(uncharged["P_i"][0])  # the energy ends there: a lock
+
+
+def inward(walk: Chart, x0: float, lz0: float) -> Chart | None:
+    """The chart walked the other way where the field closes the bore past the start: a
+    field that raises T inward of the uncharged state balances the traction there, and
+    the voltage rises as r_i falls (a coupling that stiffens with I1, check round 28 D1:
+    Vbar 0.185 at r_i 9.25 from the uncharged 9.2593, to the coupling's limit at 9.03);
+    None where no charge balances on that side either (the field closes the bore)."""
+    back = dataclasses.replace(walk, step=-walk.step)
+    u0, v0 = back.start(x0, lz0)
+    load = walk.branch.value(clean(back.at([u0 * (1.0 + back.step * FIRST_STEP)], v0)))[0]
+    return back if np.isfinite(load) and load > 0 else None
 
 
 def _energy_ends(chart: Chart, u: float, v: float) -> bool:
@@ -208,8 +221,10 @@ def threshold(
     brackets the target."""
     walk = chart(branch, x0, lz0, sign)
     if control == "voltage" and sign > 0 and not opens(walk, x0, lz0):
-        start = (np.array([x0]), np.array([lz0]), np.zeros(1))
-        return Threshold(control, 0.0, "closing", x0, lz0, 0.0, start, walk.by)
+        walk = inward(walk, x0, lz0)
+        if walk is None:
+            start = (np.array([x0]), np.array([lz0]), np.zeros(1))
+            return Threshold(control, 0.0, "closing", x0, lz0, 0.0, start, "r_i")
     us, vs, loads, stop = _walk(walk, x0, lz0, sense=sign, target=target)
     guess = _guess(us, vs)
     out = lambda v: math.sqrt(v) if control == "voltage" else v  # noqa: E731

@@ -47,9 +47,9 @@ def voltage_threshold(params: Tube) -> tuple[float, str, float]:
         the locking stretch of the energy (e.g. Gent), where no charge balances the traction,
         or where the stresses exceed the largest double (an exponential energy); "none": Vbar
         rises without bound as lambda_i -> inf (lambda_i = inf); "closing": no charge
-        balances the traction just above lambda_i0 (the energy's field closes the bore,
-        a branch the package does not follow): 0, lambda_i = lambda_i0. The kinds of a layered
-        tube's :class:`~electrogrowth.basestate.thresholds.Threshold`.
+        balances the traction on either side of lambda_i0 (a branch that runs inward, Vbar
+        rising as lambda_i falls, is classified as any other): 0, lambda_i = lambda_i0.
+        The kinds of a layered tube's :class:`~electrogrowth.basestate.thresholds.Threshold`.
         ``params.voltage`` is ignored.
 
     >>> round(voltage_threshold(Tube.uniform(outer_radius=2.0, growth=1.1))[0], 6)

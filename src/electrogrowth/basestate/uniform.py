@@ -83,7 +83,7 @@ def solve_uniform(tube: Tube, rtol: float) -> UniformState:
             f"Vbar = {target:.12g} is within rounding of the threshold"
             f" {info.value:.12g}; no base state resolved"
         )
-    a, b = grid[k[0] - 1], grid[k[0]]
+    a, b = sorted((grid[k[0] - 1], grid[k[0]]))  # the grid falls on a branch running inward
     for n in GAUSS_ORDERS[GAUSS_ORDERS.index(wall.nodes) :]:
         wall = dataclasses.replace(wall, nodes=n)
         signed = lambda x, t=wall: np.sign(v := t.voltage(x)) * v**2 - target**2  # noqa: E731

@@ -126,7 +126,8 @@ class UniformWall:
     def charge_and_voltage(self, lam_i, *, rtol: float = 1e-13):
         """Charge c and Vbar solving (*) at each lambda_i (1-d arrays). Below lambda_i0 an ideal
         dielectric gives negative values (signed square root, monotone for root finding), a
-        general energy NaN; outside the energy's domain NaN."""
+        general energy the charge where its field raises the residual of (*) to 0 (the branch
+        runs inward), else NaN; outside the energy's domain NaN."""
         lam_i = np.atleast_1d(np.asarray(lam_i, float))
         c, v = np.full_like(lam_i, np.nan), np.full_like(lam_i, np.nan)
         ok = self.in_domain(lam_i)
@@ -145,9 +146,17 @@ class UniformWall:
                 c[ok] = np.sign(q) * np.sqrt(abs(q))
                 v[ok] = c[ok] * 0.5 * np.log1p(delta / lam**2)
             else:
-                up = m0 >= 0  # else below lambda_i0: NaN
-                ok[ok] = up
-                c[ok] = np.sqrt(self._solve_q(lam[up], m0[up], q[up], rtol))
+                # above lambda_i0 the charge lowers the residual to 0; below it, only a field
+                # that raises it balances the traction (an I6 term with a negative weight:
+                # the branch runs inward), else NaN
+                up = m0 > 0
+                qs = np.where(m0 == 0, 0.0, np.nan)  # lambda_i0 (to rounding): uncharged
+                qs[up] = self._solve_q(lam[up], m0[up], q[up], rtol)
+                down = np.flatnonzero(m0 < 0)
+                rises = self._hoop_or_nan(lam[down], -q[down])[0] > m0[down]
+                if (at := down[rises]).size:
+                    qs[at] = self._solve_q(lam[at], m0[at], -q[at], rtol, sign=-1)
+                c[ok] = np.sqrt(qs)
                 ok &= np.isfinite(c)  # else no charge balances the traction: NaN
                 r, stretches, d, wdr = self._quadrature(lam_i[ok], c[ok] ** 2)
                 v[ok] = (self.material.electric_field(*stretches, d) * wdr).sum(-1)
@@ -192,27 +201,29 @@ class UniformWall:
                     pass
             return f, size
 
-    def _solve_q(self, lam_i, f_lo, q_hi, rtol):
-        """q = c^2 solving hoop(lam_i, q) = 0, given f(0) >= 0: q doubled until f <= 0, then
-        Illinois; NaN where no charge within the energy's domain balances the traction."""
+    def _solve_q(self, lam_i, f_lo, q_hi, rtol, sign: int = 1):
+        """q = c^2 solving hoop(lam_i, q) = 0, given sign f(0) >= 0: q doubled until
+        sign f <= 0, then Illinois; NaN where no charge within the energy's domain balances
+        the traction. sign -1: below lambda_i0, where the charge raises f."""
         q_lo, q_hi = np.zeros_like(q_hi), np.maximum(q_hi, 1e-300)
         f_hi = self._hoop_or_nan(lam_i, q_hi)[0]
-        for _ in range(200):  # expand until f(q_hi) <= 0
-            up = f_hi > 0
+        for _ in range(200):  # expand until sign f(q_hi) <= 0
+            up = sign * f_hi > 0
             if not up.any():
                 break
             q_lo, f_lo = np.where(up, q_hi, q_lo), np.where(up, f_hi, f_lo)
             q_hi = np.where(up, 2.0 * q_hi, q_hi)
             f_hi = self._hoop_or_nan(lam_i, q_hi)[0]
-        q, live = np.full(q_hi.shape, np.nan), f_hi <= 0
+        q, live = np.full(q_hi.shape, np.nan), sign * f_hi <= 0
         if live.any():
             q[live] = self._illinois(
-                lam_i[live], q_lo[live], f_lo[live], q_hi[live], f_hi[live], rtol
+                lam_i[live], q_lo[live], f_lo[live], q_hi[live], f_hi[live], rtol, sign
             )
         return q
 
-    def _illinois(self, lam_i, q_lo, f_lo, q_hi, f_hi, rtol):
-        """Illinois (modified regula falsi) for hoop(lam_i, q) = 0 on [q_lo, q_hi]."""
+    def _illinois(self, lam_i, q_lo, f_lo, q_hi, f_hi, rtol, sign: int = 1):
+        """Illinois (modified regula falsi) for hoop(lam_i, q) = 0 on [q_lo, q_hi], sign f
+        >= 0 at q_lo."""
         side = np.zeros(q_hi.shape, int)
         for _ in range(100):
             q = np.where(f_hi == f_lo, q_hi, (q_lo * f_hi - q_hi * f_lo) / (f_hi - f_lo))
@@ -220,7 +231,7 @@ class UniformWall:
             done = (abs(f) <= 1e-14 * scale) | (abs(q_hi - q_lo) <= 1e-2 * rtol * abs(q))
             if np.all(done | ~np.isfinite(q)):
                 return np.where(f_lo == 0, q_lo, q)
-            hi = f < 0  # replace the endpoint of f's sign; halve the kept one's f (Illinois)
+            hi = sign * f < 0  # replace the endpoint of f's sign; halve the kept one's f
             f_lo = np.where(hi & (side == 1), f_lo / 2, f_lo)
             f_hi = np.where(~hi & (side == -1), f_hi / 2, f_hi)
             q_hi, f_hi = np.where(hi, q, q_hi), np.where(hi, f, f_hi)
@@ -249,11 +260,11 @@ class _Threshold:
     lambda_i0: float  # purely mechanical state, Vbar = 0
     value: float  # Vbar threshold (inf if none)
     kind: str  # "asymptote", "limit point", "locking", "none" (as a layered Threshold) or
-    # "closing" (no charged state rises from lambda_i0: value 0, lambda_i = lambda_i0)
+    # "closing" (no charged state on either side of lambda_i0: value 0, lambda_i = lambda_i0)
     lambda_i: float  # lambda_i at the threshold (inf: asymptote; the branch's end: "locking")
     error: float  # estimated absolute error of value
     nodes: int  # Gauss-Legendre nodes meeting rtol (0: neo-Hookean closed form, no quadrature)
-    grid: np.ndarray  # lambda_i on the monotone branch, from lambda_i0 ...
+    grid: np.ndarray  # lambda_i on the monotone branch, from lambda_i0 (falling: inward) ...
     values: np.ndarray  # ... and Vbar there (increasing, starts at 0)
 
 
@@ -371,9 +382,11 @@ def _threshold(material, outer_radius, growth, stretch, rtol) -> _Threshold:
     where = f"g = {growth:g}, lambda_z = {stretch:g}, Rbar_o = {outer_radius:g}"
     check_in_plane(material, stretch / growth, where)
     tube = UniformWall(material, outer_radius, growth, stretch, nodes)
-    if not _rises(tube, lam0):  # no charged state on the branch followed: Vbar <= 0 only
+    step = 1 if _rises(tube, lam0) else -1 if _runs_inward(tube, lam0) else 0
+    if not step:  # no charged state on either side of lambda_i0
         return _Threshold(lam0, 0.0, "closing", lam0, 0.0, nodes, np.array([lam0]), np.zeros(1))
-    lam = lam0 * _SCAN_RATIO ** np.arange(0, math.ceil(math.log(_SCAN_SPAN, _SCAN_RATIO)) + 1)
+    k = np.arange(0, math.ceil(math.log(_SCAN_SPAN, _SCAN_RATIO)) + 1)
+    lam = lam0 * _SCAN_RATIO ** (step * k)
     v = np.concatenate([[0.0], tube.voltage(lam[1:])])
     bad = np.flatnonzero(~np.isfinite(v))
     end = bad[0] if bad.size else v.size
@@ -390,11 +403,16 @@ def _threshold(material, outer_radius, growth, stretch, rtol) -> _Threshold:
         exists = tube.in_domain  # the energy's edge (cheap), else the charge's
         if exists(np.array([b]))[0]:
             exists = lambda x: np.isfinite(tube.voltage(x))  # noqa: E731
-        while b - a > 1e-14 * b:  # 64-section of the branch's end
+        while abs(b - a) > 1e-14 * b:  # 64-section of the branch's end
             x = np.linspace(a, b, 65)
             j = np.argmin(exists(x)) - 1
             a, b = x[j], x[j + 1]
         return _Threshold(value=math.inf, kind="locking", lambda_i=a, **out)
+    if step < 0:  # the limits below are of lambda_i -> inf
+        raise ConvergenceError(
+            f"the voltage branch walked inward from lambda_i0 = {lam0:.12g} to {lam[-1]:.12g}"
+            " met no threshold (its limit as lambda_i -> 0 is not computed)"
+        )
     # Richardson: Vbar = V_inf + a x^p + b x^(p+1) + ..., x = lambda_i^-2 (p = 2 for nH, MR)
     t = tube.voltage(100.0 * lam0 * 2.0 ** np.arange(5))  # x shrinks 4x per step
     d = np.diff(t)
@@ -414,8 +432,8 @@ FIRST_STEP = 1e-6
 
 #: why a "closing" threshold is 0 (:func:`_rises`, thresholds.opens)
 CLOSING = (
-    "this energy's field closes the bore (threshold 0, kind closing), and the package"
-    " follows only charged states along which it opens"
+    "this energy's field closes the bore and no charge balances it inward either (threshold"
+    " 0, kind closing): no charged state is followed"
 )
 
 
@@ -423,24 +441,34 @@ def _rises(tube: UniformWall, lam0: float) -> bool:
     """Does a charge balance the traction just above lambda_i0? Not where the energy's field
     closes the bore (an I6 term with a negative weight, `(I1-3)/2 + 0.2*I4 + 0.4*I5 -
     0.1*I6` at lambda_z <= 0.49: the charge raises the residual of (*) there): the branch
-    the package follows, rising in lambda_i, does not exist, and the threshold is 0 (kind
-    "closing"). The scan's steps of 8 % jumped that gap to states of another branch beyond
-    it: a locking stretch, an unbounded branch, or a limit point whose interpolant met the
-    gap ("internal error: LinAlgError", check round 24)."""
+    rising in lambda_i does not exist; it may run inward (:func:`_runs_inward`), else the
+    threshold is 0 (kind "closing"). The scan's steps of 8 % jumped that gap to states of
+    another branch beyond it: a locking stretch, an unbounded branch, or a limit point
+    whose interpolant met the gap ("internal error: LinAlgError", check round 24)."""
     near = np.array([lam0 * (1.0 + FIRST_STEP)])
     if not tube.in_domain(near)[0]:  # a lock right there (Gent), not a closing field
         return True
     return bool(np.isfinite(tube.voltage(near)[0]))
 
 
+def _runs_inward(tube: UniformWall, lam0: float) -> bool:
+    """Does a charge balance the traction just below lambda_i0, with Vbar > 0? Where the
+    energy's field closes the bore above it (:func:`_rises`), a field that raises the
+    residual of (*) balances it below (`(I1-3)/2 + 0.2*I4 + 0.4*I5 - 0.1*I6` at lambda_z
+    0.45: Vbar rises as lambda_i falls, to a limit point 1.0309 at lambda_i 1.3193)."""
+    v = tube.voltage(np.array([lam0 * (1.0 - FIRST_STEP)]))[0]
+    return bool(np.isfinite(v) and v > 0)
+
+
 def _limit_point(tube: UniformWall, lam0: float, lam: np.ndarray, v: np.ndarray) -> _Threshold:
-    """Maximise Vbar on [lam[-3], lam[-1]]: root of the derivative of a degree-24 Chebyshev
-    interpolant of Vbar^2 (analytic there), then Vbar evaluated exactly at that root."""
+    """Maximise Vbar between lam[-3] and lam[-1]: root of the derivative of a degree-24
+    Chebyshev interpolant of Vbar^2 (analytic there), then Vbar evaluated exactly at that
+    root. lam falls from lambda_i0 on a branch that runs inward."""
 
     def vsq(x):
         return np.sign(y := tube.voltage(x)) * y**2
 
-    a, b = lam[-3], lam[-1]
+    a, b = sorted((lam[-3], lam[-1]))
     with np.errstate(invalid="ignore"):
         poly = cheb.Chebyshev.interpolate(vsq, 24, domain=[a, b])
     if not np.isfinite(poly.coef).all():  # a gap in the branch between the scan's samples
@@ -453,7 +481,7 @@ def _limit_point(tube: UniformWall, lam0: float, lam: np.ndarray, v: np.ndarray)
     if not top_sq > 0:  # the branch fell below the start before its first maximum (check 21)
         raise ConvergenceError(f"Vbar(lambda_i) does not rise from lambda_i0 = {lam0:.12g}")
     value = math.sqrt(top_sq)
-    keep = lam < top
+    keep = (lam - top) * (lam[-1] - lam[0]) < 0  # before the top, either way
     return _Threshold(
         lam0,
         value,

@@ -244,7 +244,7 @@ class LoadMargin:
 def _load_threshold(tube: Tube, name: str) -> float:
     if name == "voltage":
         thr = threshold(tube, "voltage")
-        if thr.kind == "closing":  # charged states run inward: not followed, not lost
+        if thr.kind == "closing":  # no charged state followed: not lost either
             raise BranchNotFollowed(f"Vbar = {tube.voltage:.12g}: {CLOSING}")
         return thr.value
     return threshold(dataclasses.replace(tube, voltage=0.0), "pressure").value
