@@ -26,6 +26,7 @@ from pathlib import Path
 
 from ..errors import BaseStateError, ElectrogrowthError, UsageError
 from ..interrupts import Interrupted, interrupt_of, signals_as_interrupts
+from .report import flush_notes
 from .units import resolve_units
 
 
@@ -218,6 +219,7 @@ def _quiet_exit() -> None:
 def _dispatch(argv: list[str] | None) -> int:
     """Parse and run; every failure becomes one line on stderr (no traceback)."""
     words = sys.argv[1:] if argv is None else argv
+    flush_notes(keep=False)  # none left by an earlier call in this process
     if not words:  # no command: the overview on stdout and success, as `pip` does
         build_parser("").print_help()
         return 0
@@ -228,7 +230,9 @@ def _dispatch(argv: list[str] | None) -> int:
             return done.code if isinstance(done.code, int) else 0
         resolve_units(args)
         try:
-            return args.run(args)
+            code = args.run(args)
+            flush_notes()  # how the input was read, once it was all accepted
+            return code
         except BaseStateError as exc:  # a load beyond its threshold: its file line, if any,
             # and its value and threshold in the units the user gave (kV, kPa)
             from .report import beyond_in_units

@@ -169,6 +169,24 @@ def warn(message: str) -> None:
         print(f"electrogrowth: warning: {message}", file=sys.stderr)
 
 
+#: warnings about how the input was read, printed once the command has run
+#: (:func:`flush_notes`): bad input found later still gets its one line alone
+_NOTES: list[str] = []
+
+
+def note_after(message: str) -> None:
+    """Queue ``message`` for :func:`flush_notes`."""
+    _NOTES.append(message)
+
+
+def flush_notes(keep: bool = True) -> None:
+    """Print the queued notes as warnings (``keep`` False: drop them), and forget them."""
+    notes = list(_NOTES) if keep else []
+    _NOTES.clear()
+    for message in notes:
+        warn(message)
+
+
 def grid_or_located(x: float, located) -> str:
     """A branch's or an interval's end ``x``: a point of the grid as given (10 digits), a
     located switch or end (``located``: objects with x and x_error) with the digits its

@@ -159,23 +159,25 @@ def control_of(args) -> tuple[Tube, str]:
         name = str(params.check_control(f"growth[{1 if args.layer is None else args.layer}]"))
         if args.component is not None:
             name += "." + args.component
-        else:
-            _note_isotropic(params, args.layer or 1)
-    return params, str(params.check_control(name))
+    name = str(params.check_control(name))
+    if args.solve_for == "growth" and args.component is None:
+        _note_isotropic(params, args.layer or 1, name)
+    return params, name
 
 
-def _note_isotropic(params: Tube, k: int) -> None:
-    """A warning where ``growth[k]`` (all three components, g I) replaces an anisotropic
-    constant growth of the file's layer k: the file's hoop growth (1, 1.2, 1) was dropped
-    without a word by a README command (check round 29)."""
-    from .report import warn
+def _note_isotropic(params: Tube, k: int, control: str) -> None:
+    """A warning, once the command has run, where ``control`` (growth or growth[k]: all
+    three components, g I) replaces an anisotropic constant growth of the file's layer k:
+    the file's hoop growth (1, 1.2, 1) was dropped without a word by a README command
+    (check round 29)."""
+    from .report import note_after
 
     layer = params.layers[k - 1]
     if layer.graded or len(set(layer.growth)) == 1:
         return
     g = ", ".join(f"{v:g}" for v in layer.growth)
-    warn(
-        f"growth[{k}] varies layer {k}'s growth isotropically (g_r = g_theta = g_z = g),"
+    note_after(
+        f"{control} varies layer {k}'s growth isotropically (g_r = g_theta = g_z = g),"
         f" replacing its ({g}); --component r, theta or z varies one of them alone"
     )
 
