@@ -208,7 +208,7 @@ _LOAD_SYMBOL = {"voltage": "V", "inner_pressure": "P_i"}
 def beyond_in_units(exc: BaseStateError, scales) -> BaseStateError:
     """A load at or beyond its threshold (``exc.beyond``) refused in the units the user gave
     too, as results are printed (:func:`physical_record`): "...; in kV: V = 100 kV, its
-    threshold V = 39.3995 kV". A voltage is converted with the refused tube's own R_o. Any
+    threshold V = 39.4005 kV". A voltage is converted with the refused tube's own R_o. Any
     other error, or no such scales, as it is."""
     b = getattr(exc, "beyond", None)
     if b is None or scales is None:
