@@ -81,3 +81,44 @@ def test_an_option_is_never_taken_as_a_value(capsys, argv):
 def test_an_abbreviated_option_takes_its_dashed_value_too():
     args = build_parser("state").parse_args(["state", "--outer-radius", "2", "--ener", GENT_TEXT])
     assert args.energy == GENT_TEXT
+
+
+@pytest.mark.parametrize("exists", [True, False])
+@pytest.mark.parametrize(
+    "argv",
+    [["sweep", "-x.toml"], ["sweep", "--check", "-x.toml"], ["plot", "-x.toml"]],
+)
+def test_a_file_named_like_an_option_is_refused_naming_it_and_the_remedy(
+    capsys, monkeypatch, tmp_path, argv, exists
+):
+    """Check round 29 ("Left out"): `sweep -x.toml` said "the following arguments are
+    required: SWEEP.toml", naming neither the word nor the remedy. The word is refused
+    whether or not such a file exists (a mistyped option must not run on a file that
+    happens to be there), in one line that names it and says how to give a file."""
+    monkeypatch.chdir(tmp_path)
+    if exists:
+        (tmp_path / "-x.toml").write_text("")
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith("electrogrowth: error: -x.toml is not an")
+    assert "./-x.toml" in err and "--" in err
+    assert ("to give the file -x.toml" in err) == exists
+
+
+def test_a_file_named_like_an_option_is_read_after_dashes_or_dot_slash(
+    capsys, monkeypatch, tmp_path
+):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "-x.toml").write_text("[grid]\nouter_radius = [2, 3]\n")  # no [solve]
+    for argv in (["sweep", "--check", "--", "-x.toml"], ["sweep", "--check", "./-x.toml"]):
+        assert main(argv) == 2
+        assert "-x.toml: solve: missing key 'for'" in capsys.readouterr().err  # it was read
+
+
+def test_an_unknown_option_is_named_without_a_file_hint_where_no_file_is_meant(capsys):
+    assert main(["critical", "--bogus"]) == 2
+    err = capsys.readouterr().err
+    assert (
+        err == "electrogrowth: error: --bogus is not an option of critical (see"
+        " electrogrowth critical --help)\n"
+    )

@@ -58,8 +58,56 @@ class _Parser(argparse.ArgumentParser):
 
     def parse_known_args(self, args=None, namespace=None):
         # every parser of the command line passes here (a command's subparser too)
-        words = sys.argv[1:] if args is None else list(args)
-        return super().parse_known_args(self._values_attached(words), namespace)
+        words = self._values_attached(sys.argv[1:] if args is None else list(args))
+        try:
+            found, extras = super().parse_known_args(words, namespace)
+        except UsageError as exc:  # "SWEEP.toml is required": the file was read as an option
+            raise self._unknown_option(words) or exc from None
+        unknown = self._unknown_option(extras)
+        if unknown is not None:
+            raise unknown
+        return found, extras
+
+    def _unknown_option(self, words: list[str]) -> UsageError | None:
+        """The refusal of the first word (before "--") that argparse reads as an option this
+        command does not have, e.g. a file ``-x.toml``; None if there is none (or this is
+        the dispatcher, which hands a command's options on to its parser). Never taken as a
+        file: what a command line means must not depend on which files exist (a mistyped
+        option that names a file would run on it), as GNU tools refuse ``rm -x.toml``."""
+        if self._subparsers is not None:
+            return None
+        for word in words:
+            if word == "--":
+                return None
+            if self._reads_as_unknown_option(word):
+                return UsageError(self._not_an_option(word))
+        return None
+
+    def _reads_as_unknown_option(self, word: str) -> bool:
+        try:
+            found = self._parse_optional(word)  # argparse's own reading of the word
+        except UsageError:  # an ambiguous abbreviation: argparse names it itself
+            return False
+        if found is None:  # a positional (a negative number, "-", a word with a space)
+            return False
+        tuples = found if isinstance(found, list) else [found]  # a list from Python 3.12.7
+        return all(t[0] is None for t in tuples)
+
+    def _not_an_option(self, word: str) -> str:
+        """One line naming ``word``; where it may be a file (one of that name exists, or the
+        command takes a path), how to give it as one."""
+        command = self.prog.split()[-1]
+        text = f"{word} is not an option of {command} (see {self.prog} --help)"
+        # by name: cli/options.py (path_arg) imports the model, which --help need not load
+        takes_path = any(
+            not a.option_strings and getattr(a.type, "__name__", "") == "path_arg"
+            for a in self._actions
+        )
+        if os.path.lexists(word):
+            return f"{text}; to give the file {word}, write ./{word} or put -- before it"
+        if takes_path:
+            return f"{text}; a file whose name starts with '-' is written ./{word} or after --"
+        return text
 
     def _values_attached(self, words: list[str]) -> list[str]:
         """``--energy -10*log(1-(I1-3)/20)+I5/2`` as ``--energy=-10*log(...)+I5/2``: a word
