@@ -566,3 +566,79 @@ def _fixed_curve():
     m, ok, no = np.zeros(n, int), ("ok",) * n, np.zeros(n, bool)
     return Curve("voltage", "growth", None, x, ones, m, m + 1, kinds, ok, (), Tube.uniform(),
                  no, np.full(n, np.nan))  # fmt: skip
+
+
+def _fake_limit_and_threshold(monkeypatch, limit, threshold):
+    """Scans and short-wave limits by closed forms at voltage x, no finite mode: the exact
+    short-wave limit ``limit(x)`` (inner face) where it comes before ``threshold(x)``, else
+    the threshold (the limit's march reports which comes first)."""
+    from types import SimpleNamespace
+
+    from electrogrowth.bifurcation import curves
+
+    def first(x):
+        if limit(x) < threshold(x):
+            return SimpleNamespace(kind="surface", value=limit(x), error_estimate=ERROR,
+                                   face="inner")  # fmt: skip
+        return SimpleNamespace(kind="threshold", value=threshold(x), error_estimate=0.0, face=None)
+
+    def short_wave(at, solve_for, side=None):
+        return first(at.voltage)
+
+    def scan(at, solve_for, side=None, options=None):
+        c = first(at.voltage)
+        crit = SimpleNamespace(m=-1, n=-1, status="ok", **vars(c))
+        surface = c.kind == "surface"
+        return SimpleNamespace(critical=crit, runners_up=(), surface_instability=surface,
+                               short_wave_limit=c.value if surface else None)  # fmt: skip
+
+    monkeypatch.setattr(curves, "short_wave_limit", short_wave)
+    monkeypatch.setattr(curves, "scan_modes", scan)
+
+
+@pytest.mark.parametrize("grid", [[0.1, 0.9], [0.9, 0.1]])
+def test_a_change_between_the_short_wave_limit_and_the_threshold_is_located(
+    monkeypatch, tmp_path, grid
+):
+    """Check round 29 ("Left out"; fix23c): the short-wave limit 1 + x x^2 (inner face) comes
+    before the threshold 1.6 - x/2 up to their crossing; the change was drawn as two branches
+    but not located (both have m = n = -1, and only modes were compared). It is an end
+    (the threshold wrinkles in no mode), located by bisection to MODE_EDGE; checked
+    against the crossing of the two branches' own values by brentq."""
+    from scipy.optimize import brentq
+
+    from electrogrowth.cli.curve import summary
+
+    limit, threshold = (lambda x: 1 + x * x), (lambda x: 1.6 - x / 2)
+    _fake_limit_and_threshold(monkeypatch, limit, threshold)
+    crossing = brentq(lambda x: limit(x) - threshold(x), 0.1, 0.9, xtol=1e-15)
+    curve = _curve(grid)
+    assert curve.switches == ()
+    (end,) = curve.ends
+    assert abs(end.x - crossing) <= end.x_error <= MODE_EDGE.at(crossing)
+    assert end.value == pytest.approx(threshold(crossing), abs=1e-11)
+    assert end.value_after == pytest.approx(threshold(crossing), abs=1e-11)
+    limit_first = grid[0] < grid[1]
+    before, after = ((-1, -1), (-1, -1))
+    assert (end.mode_before, end.mode_after) == (before, after)
+    assert list(curve.kind) == ["surface" if limit_first else "threshold", "end", "end",
+                                "threshold" if limit_first else "surface"]  # fmt: skip
+    assert list(curve.surface) == [limit_first, limit_first, not limit_first, not limit_first]
+    record = json.loads(json.dumps(curve.as_dict(), allow_nan=False))
+    assert record["ends"][0]["x"] == end.x and record["ends"][0]["x_error"] == end.x_error
+    assert float(curve.to_xarray()["end_x"][0]) == end.x
+    with curve.to_csv(tmp_path / "c.csv").open() as fh:
+        assert [r["kind"] for r in csv.DictReader(fh)] == list(curve.kind)
+    marks = {line.get_label(): line for line in plot_curve(curve).get_lines()}
+    assert sorted(marks["branch ends"].get_ydata()) == pytest.approx([end.value] * 2, abs=1e-11)
+    text = "\n".join(summary(curve))
+    shown = supported(end.x, end.x_error)
+    if limit_first:
+        assert (
+            f"the short-wave limit at the inner face ends at voltage = {shown}, growth_cr ="
+            in text
+        )
+        assert "; then the threshold (axisymmetric state lost)" in text
+    else:
+        assert f"the threshold (axisymmetric state lost) ends at voltage = {shown}" in text
+        assert "; then the short-wave limit at the inner face from" in text

@@ -208,9 +208,15 @@ def _fails_alike(pt: CurvePoint, other: CurvePoint) -> bool:
     return _failed(pt) and _failed(other) and pt.failure == other.failure
 
 
+def _critical(pt: CurvePoint):
+    """What is critical at a point: its mode, or without one the threshold or the short-wave
+    limit (its kind: both have m = n = -1, and a change between them is located too)."""
+    return pt.mode if pt.mode != NO_MODE else pt.kind
+
+
 def _changes(prev: CurvePoint, pt: CurvePoint) -> bool:
-    """The critical mode changes between two neighbouring points: a switch to locate."""
-    return not (_failed(prev) or _failed(pt)) and prev.mode != pt.mode
+    """What is critical changes between two neighbouring points: a switch to locate."""
+    return not (_failed(prev) or _failed(pt)) and _critical(prev) != _critical(pt)
 
 
 def _window_between(a: CurvePoint, b: CurvePoint) -> bool:

@@ -4,7 +4,10 @@ Between two wrinkling modes A and B: Brent's method (continuation.events.brent, 
 SWITCH) on d(x) = s (v_A(x) - v_B(x)), v a mode's first critical value (or the short-wave
 limit); where d jumps (a window of instability opens) the switch is that jump. Between a
 mode and the threshold: bisection (continuation.events.bisect, MODE_EDGE) on whether the
-mode still bifurcates before the threshold. A located switch is checked by a scan there;
+mode still bifurcates before the threshold; between the short-wave limit and the threshold
+(both m = n = -1: what is critical is compared, ``curve_record._critical``), the same
+bisection on whether the limit's march meets a face's instability first (an "end": the
+threshold wrinkles in no mode). A located switch is checked by a scan there;
 a third mode found first splits the interval (at most MAX_SPLITS times; then the switch is
 bisected with scans, or the point says it was not located: never dropped). The sign of d
 at the grid points is that of the scans' values, and where they show no sign change, that
@@ -49,6 +52,7 @@ from .curve_record import (
     Switch,
     _change_kind,
     _changes,
+    _critical,
     _edge,
     _failed,
     _fails_alike,
@@ -137,7 +141,12 @@ class _Locator:
     def _solved(self, pt: CurvePoint, x) -> tuple[float, str, float]:
         if pt.kind != Kind.SURFACE:
             return self.mode_value(pt.mode, x)
-        key = _key(pt, x)
+        return self.limit_value(x)
+
+    def limit_value(self, x) -> tuple[float, str, float]:
+        """The short-wave limit at x: its value, kind ("surface", or "threshold" where the
+        base state is lost first) and error estimate."""
+        key = ("surface", float(x))
         if key not in self.known:
             limit = self.short_wave_limit(
                 self.params.at(self.along, x), self.solve_for, side=self.side
@@ -151,9 +160,9 @@ class _Locator:
         self._remember(b)
         try:
             kinds = (a.kind, b.kind)
-            if Kind.SURFACE in kinds and Kind.THRESHOLD in kinds:  # bisect with scans
-                raise ElectrogrowthError("a switch between the short-wave limit and the threshold")
-            if Kind.SURFACE in kinds:
+            if Kind.SURFACE in kinds and Kind.THRESHOLD in kinds:
+                found = self._limit_threshold_switch(a, b)
+            elif Kind.SURFACE in kinds:
                 found = self._crossing(a, b)
             elif NO_MODE in (a.mode, b.mode):
                 found = self._threshold_switch(a, b)
@@ -170,7 +179,7 @@ class _Locator:
             first = min(found.before, found.after, key=lambda v: self.sense * v)
             if (
                 not _failed(check)
-                and check.mode not in (a.mode, b.mode)
+                and _critical(check) not in (_critical(a), _critical(b))
                 and self.sense * (check.value - first) < -1e-9 * max(1.0, abs(first))
             ):
                 return self._split(a, check, b, depth)
@@ -203,7 +212,7 @@ class _Locator:
         x_good, x_bad = bisect(succeeds, good.x, bad.x, SWITCH)
         end, last_failed = scanned[x_good], scanned[x_bad]
         rows, switches = [], []
-        if end is not good and end.mode != good.mode:
+        if end is not good and _critical(end) != _critical(good):
             rows, switches = self.between(*((end, good) if good is b else (good, end)), depth)
         sense = b.x - a.x  # the grid's order
         failed = sorted((p for p in scanned.values() if _failed(p)), key=lambda p: sense * p.x)
@@ -300,10 +309,10 @@ class _Locator:
         if depth <= 0:  # out of halvings: the change of mode is still located, not dropped
             return self._last_resort(a, b)
         rows, switches = [], []
-        if mid.mode != a.mode:
+        if _critical(mid) != _critical(a):
             rows, switches = self.between(a, mid, depth - 1)
         rows = rows + [_row(mid)]
-        if mid.mode != b.mode:
+        if _critical(mid) != _critical(b):
             more_rows, more_switches = self.between(mid, b, depth - 1)
             rows, switches = rows + more_rows, switches + more_switches
         return rows, switches
@@ -456,9 +465,9 @@ class _Locator:
         lo, hi = a, b
         while abs(hi.x - lo.x) > 1e-7 * max(1.0, abs(lo.x)):
             mid = self.unit(0.5 * (lo.x + hi.x))
-            if _failed(mid) or mid.mode not in (a.mode, b.mode):
+            if _failed(mid) or _critical(mid) not in (_critical(a), _critical(b)):
                 return mid
-            lo, hi = (mid, hi) if mid.mode == a.mode else (lo, mid)
+            lo, hi = (mid, hi) if _critical(mid) == _critical(a) else (lo, mid)
         spread = abs(hi.value - lo.value) + max(lo.error_estimate, hi.error_estimate)
         return Located(0.5 * (lo.x + hi.x), lo.value, hi.value, 0.5 * abs(hi.x - lo.x), spread)
 
@@ -473,6 +482,23 @@ class _Locator:
         good, bad = bisect(bifurcates, good, bad, MODE_EDGE)
         value, _, error = self.mode_value(mode, good)
         return Located(good, value, value, abs(bad - good), error)
+
+    def _limit_threshold_switch(self, a, b):
+        """Between the short-wave limit and the threshold (neither a mode): bisection, as
+        for a mode and the threshold, on 'the limit's own march meets a face's instability
+        before the base state is lost'. At the last x where it does, the limit's value and
+        estimate; on the other side of the last bracket, the threshold's."""
+        limit_first = a.kind == Kind.SURFACE
+        good, bad = (a.x, b.x) if limit_first else (b.x, a.x)
+
+        def surface_first(x):
+            return self.limit_value(x)[1] == Kind.SURFACE
+
+        good, bad = bisect(surface_first, good, bad, MODE_EDGE)
+        limit, _, error = self.limit_value(good)
+        threshold = self.limit_value(bad)[0]
+        before, after = (limit, threshold) if limit_first else (threshold, limit)
+        return Located(good, before, after, abs(bad - good), error)
 
 
 def _kind_changes(failed: list[CurvePoint]) -> list[CurvePoint]:

@@ -13,7 +13,9 @@ switch is located exactly (bifurcation/curve_switches.py):
   the first mode reached is the largest lambda_z). Where a mode's first critical value
   jumps (a window of instability opens), d jumps too and the switch is that jump;
 * a mode and the threshold (the axisymmetric state is lost first): bisection on whether the
-  mode still bifurcates before the threshold.
+  mode still bifurcates before the threshold;
+* the exact short-wave limit and the threshold (neither a mode, both m = n = -1): bisection
+  on whether the limit's march meets a face's instability before the state is lost.
 
 A change with equal values on both sides, between two wrinkling modes (or a mode and the
 short-wave limit), is a "switch"; one where the value jumps, or the threshold is on one side,

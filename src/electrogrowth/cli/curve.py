@@ -278,25 +278,38 @@ def summary(curve) -> list[str]:
             f" {value}: {_mode(s.mode_before)} -> {_mode(s.mode_after)}"
         )
     for e in curve.ends:
-        row = (curve.x == e.x) & (curve.kind == "end") & (curve.m == e.mode_after[0])
-        after = None
-        if e.mode_after[0] < 0:
-            surface = np.flatnonzero(row & curve.surface)
-            after = (
-                f"the short-wave limit at {face_text(curve.surface_face[surface[0]])} from"
-                f" {supported(e.value_after, e.value_error)}"
-                if surface.size
-                else "the threshold (axisymmetric state lost)"
-            )
-        lines.append(
-            f"  branch {_mode(e.mode_before)} ends at {curve.along} = {supported(e.x, e.x_error)},"
-            f" {curve.solve_for}_cr = {supported(e.value, e.value_error)}; then "
-            + (after or f"{_mode(e.mode_after)} from {supported(e.value_after, e.value_error)}")
-        )
+        lines.append(_end_line(curve, e))
     lines.append(crease_line(curve))
     for i in _failed(curve):
         lines.append(f"  failed at {curve.along} = {curve.x[i]:.10g}: {curve.status[i]}")
     return lines
+
+
+def _end_line(curve, e) -> str:
+    """One line: the branch that ends at ``e``, where, and what comes after it."""
+    rows = np.flatnonzero((curve.x == e.x) & (curve.kind == "end"))
+    limit = [i for i in rows if curve.surface[i]]  # the short-wave limit's row at the end
+    after = None
+    if e.mode_after[0] < 0:
+        after = (
+            f"the short-wave limit at {face_text(curve.surface_face[limit[-1]])} from"
+            f" {supported(e.value_after, e.value_error)}"
+            if limit
+            else "the threshold (axisymmetric state lost)"
+        )
+    branch = f"branch {_mode(e.mode_before)}"
+    if e.mode_before[0] < 0 and e.mode_after[0] < 0 and limit:  # limit <-> threshold
+        limit_first = bool(curve.surface[rows[0]])
+        if limit_first:
+            branch = f"the short-wave limit at {face_text(curve.surface_face[limit[0]])}"
+            after = "the threshold (axisymmetric state lost)"
+        else:
+            branch = "the threshold (axisymmetric state lost)"
+    return (
+        f"  {branch} ends at {curve.along} = {supported(e.x, e.x_error)},"
+        f" {curve.solve_for}_cr = {supported(e.value, e.value_error)}; then "
+        + (after or f"{_mode(e.mode_after)} from {supported(e.value_after, e.value_error)}")
+    )
 
 
 def _branch_text(curve, row: int) -> str:
