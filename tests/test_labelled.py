@@ -159,3 +159,25 @@ def test_verdict_variables_carry_a_harmonic_next_to_onset():
     plain = verdict_variables(scan_modes(TUBE, "growth", options=SMALL).verdict, "growth")
     assert np.isnan(plain["koiter_resonance_value"][1])
     assert plain["koiter_resonance_m"][1] == plain["koiter_resonance_n"][1] == -1
+
+
+@pytest.mark.parametrize(
+    ("solve_for", "units"), [("pressure", "mu"), ("force", "mu R_i^2"), ("growth[1].theta", "1")]
+)
+def test_a_curve_of_any_control_carries_that_controls_units(solve_for, units):
+    """Check round 29 (doubts): a layered tube's controls had units "1" whatever they were
+    (a pressure is in mu, a force in mu R_i^2, as the command line's axes say), and so had
+    its keys (a layer's shear modulus is in mu); the same table serves a sweep's store."""
+    from electrogrowth.bifurcation.curve_crease import CreaseAlong
+    from electrogrowth.bifurcation.curve_record import Curve
+
+    nan = np.full(2, np.nan)
+    crease = CreaseAlong(nan, ("", ""), ("", ""), nan, np.zeros(2, bool))
+    curve = Curve("layers[1].shear_modulus", solve_for, None, np.array([2.0, 3.0]),
+                  np.array([0.1, 0.2]), np.array([1, 1]), np.array([1, 1]),
+                  np.array(["bifurcation"] * 2), ("ok", "ok"), (), TUBE, np.zeros(2, bool),
+                  nan, crease=crease, surface_face=("", ""))  # fmt: skip
+    ds = curve.to_xarray()
+    assert ds[f"{solve_for}_cr"].attrs["units"] == units
+    assert ds["layers[1].shear_modulus"].attrs["units"] == "mu"
+    assert ds["switch_value"].attrs["units"] == units

@@ -3,7 +3,8 @@
 The ``to_xarray()`` methods of :class:`~electrogrowth.UniformState`,
 :class:`~electrogrowth.LayeredState`, :class:`~electrogrowth.ScanResult` and
 :class:`~electrogrowth.Curve` call the functions here. Every variable carries ``units`` (in
-the package's units mu = eps = R_i = 1: "R_i", "mu", ...; "1" for a pure number) and
+the package's units mu = eps = R_i = 1: "R_i", "mu", ...; "1" for a pure number; a control
+or key by :func:`parameter`, the one table a sweep's store reads too) and
 ``long_name``; the dataset's attributes hold the tube, the material and what was solved
 for, and contain no None (so it saves to netCDF as well as to Zarr). xarray (the ``sweep``
 extra) is imported inside each function. Shared by every stage: imports no stage, reads
@@ -48,7 +49,33 @@ PARAMETERS = {
     ),
     "outer_radius": ("R_i", "undeformed outer radius Rbar_o = R_o / R_i"),
     "length": ("R_i", "undeformed length L / R_i"),
+    "pressure": ("mu", "inner follower pressure P_i / mu"),
+    "inner_pressure": ("mu", "inner follower pressure P_i / mu"),
+    "outer_pressure": ("mu", "outer follower pressure P_o / mu"),
+    "force": ("mu R_i^2", "axial end force F / (mu R_i^2)"),
 }
+#: the units of a layer's keys layers[K].<field>
+LAYER_UNITS = {
+    "outer_radius": "R_i",
+    "thickness": "R_i",
+    "shear_modulus": "mu",
+    "permittivity": "eps",
+}
+
+
+def parameter(name: str) -> tuple[str, str]:
+    """(units, long name) of a control or tube key, in the package's scales mu = eps = R_i =
+    1 ("1": a pure number): a layer's growth ``growth[K]``, ``growth[K].theta`` is a
+    growth factor, ``layers[K].thickness`` a length; one table for every record (a
+    curve's, a scan's, a sweep store's values and axes)."""
+    if name in PARAMETERS:
+        return PARAMETERS[name]
+    field = name.rsplit(".", 1)[-1]
+    if name.startswith("layers[") and field in LAYER_UNITS:
+        return LAYER_UNITS[field], name
+    kind = name.split("[")[0].split(".")[0]
+    return (PARAMETERS[kind][0] if kind in PARAMETERS else "1"), name
+
 
 #: a parameter's axis in a store (a sweep's, a design map's): (description, symbol)
 AXES = {
@@ -70,7 +97,7 @@ def axis_label(name: str) -> tuple[str, str]:
 def axis_attrs(name: str) -> dict:
     """The attributes of a parameter's axis in a store: long_name, symbol, units."""
     long_name, symbol = axis_label(name)
-    return {"long_name": long_name, "symbol": symbol, "units": "1 (mu = eps = R_i = 1)"}
+    return {"long_name": long_name, "symbol": symbol, "units": parameter(name)[0]}
 
 
 def xarray():
@@ -86,7 +113,7 @@ def xarray():
 
 
 def _attrs(name: str, **extra) -> dict:
-    units, long_name = VARIABLES.get(name) or PARAMETERS.get(name) or ("1", str(name))
+    units, long_name = VARIABLES.get(name) or parameter(str(name))
     return {"units": units, "long_name": long_name, **extra}
 
 
@@ -233,7 +260,7 @@ def verdict_variables(v, solve_for: str) -> dict:
     dimension rival (NaN and "" where that kind was not found), the slot ``branch`` (""
     not computed) and ``koiter`` (NaN)."""
     rivals = [getattr(v, key) for _, key in RIVAL_KINDS]
-    units, long_name = PARAMETERS.get(solve_for, ("1", solve_for))
+    units, long_name = parameter(solve_for)
     text = lambda long: {"units": "1", "long_name": long}  # noqa: E731
     return {
         "verdict": (
@@ -308,7 +335,7 @@ def _resonance(r: dict | None, units: str, long_name: str) -> dict:
 
 
 def _critical_attrs(solve_for: str) -> dict:
-    units, long_name = PARAMETERS.get(solve_for, ("1", solve_for))
+    units, long_name = parameter(solve_for)
     return {"units": units, "long_name": f"critical {long_name}"}
 
 

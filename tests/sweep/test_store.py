@@ -152,3 +152,34 @@ def test_a_resume_with_another_scan_option_is_refused(kind, key, value, tmp_path
         assert f"holds a different sweep (it differs in modes.{key});" in message
         assert "\n" not in message
         assert sorted(p.stat().st_mtime_ns for p in out.rglob("*")) == before
+
+
+PRESSURE = """\
+[tube]
+file = "t.toml"
+[solve]
+for = "pressure"
+[grid]
+"layers[1].thickness" = [0.1, 0.2]
+"""
+
+
+@pytest.mark.parametrize(
+    ("text", "control", "axis"),
+    [(PAPER, "1", ("outer_radius", "R_i")), (PRESSURE, "mu", ("layers[1].thickness", "R_i"))],
+)
+def test_every_store_variable_has_the_units_a_curve_gives_it(tmp_path, text, control, axis):
+    """Check round 29 (doubts): critical_value and error_estimate had no units attribute,
+    the axes "1 (mu = eps = R_i = 1)" whatever they were (an outer radius is in R_i, as a
+    curve's to_xarray says). Every variable now has units: the solved-for control's for
+    its values (a growth factor "1", a pressure "mu"), seconds "s", else "1"."""
+    out = tmp_path / "u.zarr"
+    open_store(out, _config(tmp_path, text))
+    ds = open_results(out)
+    for name in ("critical_value", "error_estimate", "threshold_value", "runner_up_value"):
+        assert ds[name].attrs["units"] == control, name
+    assert ds["seconds"].attrs["units"] == "s" and ds["m"].attrs["units"] == "1"
+    assert all("units" in v.attrs for v in ds.variables.values() if v.dims), [
+        name for name, v in ds.variables.items() if v.dims and "units" not in v.attrs
+    ]
+    assert ds[axis[0]].attrs["units"] == axis[1]

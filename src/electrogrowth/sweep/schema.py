@@ -9,6 +9,7 @@ import math
 
 # the axes' names and symbols, shared with a design map's store
 from ..labelled import axis_label as label  # noqa: F401
+from ..labelled import parameter
 
 #: name -> (dtype, value before the point is computed, description)
 POINT_VARIABLES = {
@@ -114,6 +115,34 @@ RUNNER_VARIABLES = {
     "runner_up_m": ("i4", -1, "m of the next modes"),
     "runner_up_n": ("i4", -1, "n of the next modes"),
 }
+#: the variables that hold a value of the solved-for control (or its error, or the Koiter
+#: coefficient c_2 of control = c_cr + c_2 eps^2, eps a pure number): in its units
+CONTROL_VALUED = frozenset(
+    {
+        "critical_value",
+        "error_estimate",
+        "verdict_value",
+        "wrinkle_value",
+        "crease_value",
+        "crease_error",
+        "threshold_value",
+        "koiter",
+        "koiter_error",
+        "koiter_resonance_value",
+        "runner_up_value",
+    }
+)
+
+
+def units(name: str, solve_for: str) -> str:
+    """The units of a store's variable: the control's (labelled.parameter: "1" for g,
+    lambda_z and Vbar, "mu" for a pressure, ...), seconds, or "1" (a pure number, a
+    wavenumber, text), as a curve's and a scan's ``to_xarray`` give them."""
+    if name in CONTROL_VALUED:
+        return parameter(solve_for)[0]
+    return "s" if name == "seconds" else "1"
+
+
 MARK = (
     "run",
     "i2",

@@ -38,7 +38,7 @@ from ..errors import Remedy, SweepError
 from ..labelled import axis_attrs
 from ..outcomes import Kind, Status
 from .config import SweepConfig, differences
-from .schema import MARK, POINT_VARIABLES, RUNNER_VARIABLES, label
+from .schema import MARK, POINT_VARIABLES, RUNNER_VARIABLES, label, units
 from .unit import BRANCH_FAILED, ChunkResult
 
 
@@ -275,7 +275,11 @@ def _create(out: Path, config: SweepConfig, source_text: str) -> None:
         )
         group = zarr.open_group(str(tmp), mode="r+")
         for name, adims, chunks, (dtype, fill, text) in arrays:
-            attrs = {"description": text, **({"coordinates": scalars} if scalars else {})}
+            attrs = {
+                "description": text,
+                "units": units(name, config.solve_for),
+                **({"coordinates": scalars} if scalars else {}),
+            }
             if name == "critical_value":
                 attrs.update(long_name=f"critical {what}", symbol=label(config.solve_for)[1])
             group.create_array(
@@ -306,7 +310,10 @@ def _coordinates(config: SweepConfig, source_text: str) -> xr.Dataset:
         coords["rank"] = (
             "rank",
             np.arange(1, config.scan.top),
-            {"description": "1 = the mode that bifurcates next after the critical one"},
+            {
+                "description": "1 = the mode that bifurcates next after the critical one",
+                "units": "1",
+            },
         )
     what = label(config.solve_for)[0]
     material = config.build_material().name
