@@ -43,7 +43,7 @@ def plot_curve(
     if new:
         with mpl.rc_context(STYLE):
             ax = Figure(figsize=(4.4, 3.3), layout="constrained").subplots()
-    first, k = True, 0
+    first, labels = True, []
     for (m, n), rows in curve.branches():
         x, v = curve.x[rows], curve.value[rows]
         if (m, n) == NO_MODE and not curve.surface[rows].all():  # the threshold
@@ -62,23 +62,48 @@ def plot_curve(
             i = len(rows) // 2
             xm, vm = (x[i], v[i]) if len(rows) > 2 else (x.mean(), v.mean())
             text = "m, n → ∞" if curve.surface[rows].all() else f"({m}, {n})"
-            ax.annotate(
-                text,
-                (xm, vm),
-                xytext=(0, 4 if k % 2 else -10),
-                textcoords="offset points",
-                ha="center",
-                fontsize=7,
-                color=color,
-            )
-            k += 1
+            labels.append((text, xm, vm))
     _marks(ax, curve, color)
+    _label_branches(ax, labels, color)
     ax.ticklabel_format(useOffset=False)
     ax.set_xlabel(axis_label(curve.along))
     ax.set_ylabel(axis_label(curve.solve_for, critical=True))
     if new:
         curve_legend(ax)
     return ax
+
+
+#: a branch label's offset from its line, in points: above (to its baseline), below
+ABOVE, BELOW = 4, -10
+
+
+def _label_branches(ax, labels, color: str) -> None:
+    """Each branch's label (text, x, value) at its middle, alternately below and above the
+    line (neighbouring labels apart); one that would cross the axes' frame goes to the
+    other side. Fig. 7's "m, n → ∞" at the lowest point of its curve sat on the x-axis
+    line. The frame is the laid-out one (a layout pass without rendering)."""
+    notes = [
+        ax.annotate(
+            text,
+            (x, v),
+            xytext=(0, ABOVE if k % 2 else BELOW),
+            textcoords="offset points",
+            ha="center",
+            fontsize=7,
+            color=color,
+        )
+        for k, (text, x, v) in enumerate(labels)
+    ]
+    if not notes:
+        return
+    ax.figure.draw_without_rendering()
+    frame = ax.get_window_extent()
+    for note in notes:
+        box = note.get_window_extent()
+        if box.y0 < frame.y0:
+            note.xyann = (0, ABOVE)
+        elif box.y1 > frame.y1:
+            note.xyann = (0, BELOW)
 
 
 def _marks(ax, curve: Curve, color: str) -> None:
