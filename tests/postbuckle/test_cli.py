@@ -127,3 +127,12 @@ def test_no_note_for_the_tube_s_first_mode(tmp_path):
     scan = scan_modes(load_tube(tmp_path / "tube.toml"), "growth[1].theta")
     assert _not_first(scan, (13, 0), "growth[1].theta") == ""
     assert _not_first(scan, (12, 0), "growth[1].theta").startswith("mode (12, 0) is not")
+
+
+def test_the_help_of_points_says_the_rows_the_branch_has(capsys):
+    """Check round 29 (cosmetic): `--points 5` gave 6 branch rows (the onset and 5 steps)
+    while the help said "branch points"; it now says N + 1 rows, which is what
+    test_json_and_files_of_a_charged_pressurised_bilayer counts (--points 2: 3 rows)."""
+    assert main(["postbuckle", "--help"]) == 0
+    text = " ".join(capsys.readouterr().out.split())
+    assert "--points N amplitude steps" in text and "N + 1 rows (default 10)" in text

@@ -48,7 +48,9 @@ def configure_postbuckle(parser: argparse.ArgumentParser) -> None:
         "--points",
         type=bounded_int(1, 1000),
         default=10,
-        help="branch points, equally spaced in the amplitude (default 10)",
+        metavar="N",
+        help="amplitude steps, equal, up to --amplitude: the branch is the onset and one"
+        " point per step, N + 1 rows (default 10)",
     )
     mode.add_argument(
         "--imperfection",
