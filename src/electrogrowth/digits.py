@@ -13,6 +13,8 @@ by the same rule.
 from __future__ import annotations
 
 import math
+from decimal import Decimal
+from fractions import Fraction
 
 MAX_DIGITS, MIN_DIGITS = 12, 3
 
@@ -65,3 +67,18 @@ def apart(value: float, error: float | None, *others: float | None, unknown: int
         while n < ROUND_TRIP and f"{value:.{n}g}" == f"{other:.{n}g}":
             n += 1
     return f"{value:.{n}g}"
+
+
+def decimal_grid(start: float, stop: float, num: int) -> list[float]:
+    """``num`` equally spaced values from ``start`` to ``stop``, each the double nearest to
+    the exact decimal grid point: the ends as given, and a step of 0.1 from 0 gives 0.1, 0.2
+    (``np.linspace`` gives 0.09999999999999999, which a CSV then shows). The ends are read
+    as their shortest decimals (``repr``), the points computed in exact fractions.
+
+    >>> decimal_grid(0.0, 0.3, 4)
+    [0.0, 0.1, 0.2, 0.3]
+    """
+    if num == 1:
+        return [float(start)]
+    a, b = (Fraction(Decimal(repr(float(v)))) for v in (start, stop))
+    return [float(a + (b - a) * i / (num - 1)) for i in range(num)]

@@ -642,3 +642,23 @@ def test_a_change_between_the_short_wave_limit_and_the_threshold_is_located(
     else:
         assert f"the threshold (axisymmetric state lost) ends at voltage = {shown}" in text
         assert "; then the short-wave limit at the inner face from" in text
+
+
+def test_the_csv_abscissae_are_the_grid_as_given(monkeypatch, tmp_path, capsys):
+    """Check round 29 (cosmetic): `--from 0 --to 0.3 --points 4` wrote 0.09999999999999999
+    (np.linspace's 0.3 * (1/3)); the grid is now the doubles nearest the decimal grid
+    points 0.1, 0.2, and the CSV reads back the same numbers (repr round trip)."""
+    import functools
+
+    from electrogrowth.cli import curve as cli_curve
+
+    _fake_modes(monkeypatch, {(0, 1): lambda x: 1.5 + x})
+    monkeypatch.setattr(
+        cli_curve, "critical_curve", functools.partial(critical_curve, follow=False)
+    )  # the fake scans are full scans
+    argv = ["--solve-for", "growth", "--along", "voltage", "--from", "0", "--to", "0.3"]
+    assert run_curve(_args(*argv, "--points", "4", "--out", str(tmp_path), "--json")) == 0
+    capsys.readouterr()
+    with (tmp_path / "curve_growth_vs_voltage.csv").open() as fh:
+        column = [row["voltage"] for row in csv.DictReader(fh)]
+    assert column == ["0.0", "0.1", "0.2", "0.3"]

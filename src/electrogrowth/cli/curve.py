@@ -21,6 +21,7 @@ import numpy as np
 
 from ..atomic import write_figure
 from ..bifurcation.curves import MAX_POINTS, check_curve, critical_curve
+from ..digits import decimal_grid
 from ..errors import ParameterError
 from ..figures.plots import plot_curve
 from ..figures.style import wrapped_title
@@ -129,7 +130,7 @@ def run_curve(args) -> int:
     check_side_option(args)
     if args.start == args.stop:
         raise ParameterError(f"--from = --to = {args.start:g}; need two different values")
-    values = np.linspace(args.start, args.stop, args.points)
+    values = np.array(decimal_grid(args.start, args.stop, args.points))  # 0.1, not 0.09999...
     stem = f"curve_{solve_for}_vs_{args.along}".replace("[", "").replace("]", "")
     what = (args.along, solve_for, args.side, params)
     earlier, records = resume.resumable(
