@@ -304,3 +304,30 @@ def test_a_refused_tube_file_value_is_quoted_as_given_at_its_line(text, line, ke
         parse_tube(text, source="t.toml")
     msg = str(err.value)
     assert msg.startswith(f"t.toml:{line}: {key}: ") and named in msg, msg
+
+
+@pytest.mark.parametrize(
+    "name, text, argv, example",
+    [
+        ("tube.json", '{"layers": [{"outer_radius": 2}]}', ["state", "--tube"], "bilayer"),
+        ("tube.toml", '{"layers": [{"outer_radius": 2}]}', ["state", "--tube"], "bilayer"),
+        ("sweep.json", '{"solve": {"for": "growth"}}', ["sweep", "--check"], "sweep"),
+    ],
+)
+def test_a_json_file_is_told_the_file_is_toml(tmp_path, capsys, name, text, argv, example):
+    """Check round 29 (cosmetic): a JSON tube file got "invalid TOML: Invalid statement",
+    with no word that tube files are TOML. One line naming the file, exit 2."""
+    path = tmp_path / name
+    path.write_text(text)
+    assert cli.main([*argv, str(path)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith(f"electrogrowth: error: {path}:1: invalid TOML")
+    assert f"this is JSON, and a {'sweep' if example == 'sweep' else 'tube'} file is TOML" in err
+    assert f"examples/{example}.toml" in err
+
+
+def test_a_toml_syntax_error_is_not_called_json(capsys, tmp_path):
+    path = tmp_path / "bad.toml"
+    path.write_text("length = \n")
+    assert cli.main(["state", "--tube", str(path)]) == 2
+    assert "JSON" not in capsys.readouterr().err

@@ -3,6 +3,7 @@ error as one ConfigError naming the file, the line and the key."""
 
 from __future__ import annotations
 
+import json
 import math
 import re
 import stat
@@ -49,9 +50,11 @@ def read_text(path: str | Path, what: str) -> str:
         raise ConfigError((), f"the {what} is not UTF-8 text", source=str(path)) from None
 
 
-def parse(text: str, source: str, build: Callable, line_of: Callable):
+def parse(text: str, source: str, build: Callable, line_of: Callable, *, what: str = "file",
+          example: str = ""):  # fmt: skip
     """``build(raw)`` of the TOML ``text``; its ConfigErrors (and TOML syntax errors) get the
-    ``source`` and the line ``line_of(text, key)`` of the offending key."""
+    ``source`` and the line ``line_of(text, key)`` of the offending key. A JSON text (``what``:
+    "tube file") is told that the file is TOML, as ``example`` is."""
     try:
         raw = tomllib.loads(text)
     except RecursionError:
@@ -65,6 +68,9 @@ def parse(text: str, source: str, build: Callable, line_of: Callable):
         hit = re.search(r"\(at line (\d+), column \d+\)", msg)
         line = int(hit.group(1)) if hit else text.count("\n") + 1
         reason = re.sub(r"\s*\(at (line \d+, column \d+|end of document)\)", "", msg)
+        if _is_json(text, source):  # "Invalid statement" alone did not say TOML was wanted
+            like = f", as {example}" if example else ""
+            reason += f"; this is JSON, and a {what} is TOML: key = value lines and [tables]{like}"
         raise ConfigError((), f"invalid TOML: {reason}", source=source, line=line) from None
     try:
         return build(raw)
@@ -72,6 +78,16 @@ def parse(text: str, source: str, build: Callable, line_of: Callable):
         raise ConfigError(
             exc.key, exc.reason, source=source, line=line_of(text, exc.key)
         ) from None
+
+
+def _is_json(text: str, source: str) -> bool:
+    """The text of a JSON object or array, or a file named .json (the TOML reader failed)."""
+    if source.lower().endswith(".json"):
+        return True
+    try:
+        return isinstance(json.loads(text), (dict, list))
+    except ValueError:  # not JSON either (a JSON number or string is no tube: TOML's error)
+        return False
 
 
 # -- typed values ------------------------------------------------------------------------------

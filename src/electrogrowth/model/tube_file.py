@@ -51,7 +51,9 @@ def load_tube(path: str | Path) -> Tube:
 
 def parse_tube(text: str, *, source: str = "<tube>") -> Tube:
     """Validate the TOML ``text`` of a tube file (see the module docstring)."""
-    return parse(text, source, tube_from_dict, line_of)
+    return parse(
+        text, source, tube_from_dict, line_of, what="tube file", example="examples/bilayer.toml"
+    )
 
 
 def tube_from_dict(raw: dict) -> Tube:

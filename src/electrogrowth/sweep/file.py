@@ -57,7 +57,8 @@ def parse_config(text: str, *, source: str = "<sweep>") -> SweepConfig:
     """Validate the TOML ``text`` of a sweep file (see the module docstring); a [tube] file
     is read relative to the sweep file's directory."""
     base = Path(source).parent if not source.startswith("<") else Path.cwd()
-    return parse(text, source, functools.partial(_from_raw, base=base), line_of)
+    build = functools.partial(_from_raw, base=base)
+    return parse(text, source, build, line_of, what="sweep file", example="examples/sweep.toml")
 
 
 def _from_raw(raw: dict, base: Path = Path()) -> SweepConfig:
