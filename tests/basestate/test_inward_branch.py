@@ -13,8 +13,10 @@ import dataclasses
 
 import numpy as np
 import pytest
+from scipy.optimize import minimize_scalar, root
 
-from electrogrowth import Layer, Material, Tube, solve_base_state
+from electrogrowth import Layer, Material, Tube, neo_hookean, solve_base_state
+from electrogrowth.basestate import thresholds
 from electrogrowth.basestate.thresholds import prepare
 from electrogrowth.basestate.tube import voltage_threshold
 
@@ -78,3 +80,67 @@ def test_below_the_crossing_the_branch_still_opens_outward():
     # P_i 4.448: uncharged r_i 9.0111 inside the limit; the check's Vbar 0.189 at 9.01202
     value, kind, lam = voltage_threshold(_stiffening_bilayer(4.448))
     assert kind == "locking" and lam == pytest.approx(9.0334, abs=1e-4)
+
+
+#: check round 28 (res_61 #12): coupi4 / i45 / NH under force control, closed ends, at an
+#: axial force of 247.25 (lambda_z 11.03), where the charge raises the residual of (*)
+I45 = Material("i45", "(I1-3)/2 + 0.3*I5 + 0.2*I4")
+PULLED = 247.25
+
+
+def _pulled_trilayer() -> Tube:
+    spec = (
+        (2.2272094425672435, COUPI4, 0.7976973554187421, 0.7977123344570403,
+         (1.197043200303482, 1.1742760992873587, 1.0352749947621513)),
+        (2.2695424970484774, I45, 0.48727914480018003, 0.8154810072400097,
+         (1.0904017401198194,) * 3),
+        (2.5921515867038627, neo_hookean(), 1.768769888669576, 1.6679836498529308, (1.0,) * 3),
+    )  # fmt: skip
+    layers = [Layer(R, m, shear_modulus=mu, permittivity=e, growth=g) for R, m, mu, e, g in spec]
+    return Tube(
+        layers,
+        length=5.397338671613563,
+        inner_pressure=0.08247930022284859,
+        closed_ends=True,
+        axial_force=PULLED,
+    )
+
+
+def _limit_point_by_root(wall, dp: float, thick: float) -> tuple[float, float]:
+    """(Vbar, lambda_z) at the top of the force-controlled branch by another route: at each
+    q = c^2, (r_i, lambda_z) from T = dp and N = F by scipy's hybr on the wall's integrals,
+    Vbar^2(q) maximised by bounded Brent (not the package's charts, walk or interpolant)."""
+
+    def state(q):
+        def res(y):
+            T, _, _, N = wall.integrals(y[:1], y[1:], np.sqrt([q]))
+            return [T[0] - dp, N[0] / PULLED - 1.0]
+
+        return root(res, [1.80, 7.50], method="hybr", options={"xtol": 1e-14}).x
+
+    def vbar2(q):
+        r, lz = state(q)
+        return (wall.integrals([r], [lz], np.sqrt([q]))[2][0] / thick) ** 2
+
+    top = minimize_scalar(lambda q: -vbar2(q), bounds=(2.5, 4.5), method="bounded")
+    return float(np.sqrt(-top.fun)), float(state(top.x)[1])
+
+
+def test_a_force_controlled_inward_branch_is_followed_past_its_fold_in_r_i():
+    # on main: "locking" at the start (value inf, the first cell bisected, ~2700 branch
+    # points, 77 s); with the start's probe alone (fix23f): "locking" at lambda_i 1.518,
+    # where r_i turns back (the walk in r_i found no state past it, read as a lock).
+    # The branch: r_i falls from 1.899 to 1.515 and rises again while lambda_z falls from
+    # 11.03 throughout, the voltage rising to a limit point at lambda_z 7.45
+    tube = _pulled_trilayer()
+    prep = prepare(tube, 1e-12)
+    x0, lz0 = prep.loaded
+    thr = thresholds.threshold(prep.branch, x0, lz0, "voltage")
+    assert thr.kind == "limit point" and thr.walked == "stretch"
+    r_i, lz, _ = thr.grid
+    k = int(np.argmin(r_i))  # r_i falls, then rises again: past its fold
+    assert np.all(np.diff(lz) < 0) and np.all(np.diff(r_i[: k + 1]) < 0)
+    assert 0 < k < len(r_i) - 1 and np.all(np.diff(r_i[k:]) > 0) and thr.lambda_i < x0
+    vbar, stretch = _limit_point_by_root(prep.wall, tube.inner_pressure, tube.outer_radius - 1)
+    assert thr.value == pytest.approx(vbar, rel=1e-10)
+    assert thr.stretch == pytest.approx(stretch, rel=1e-6)  # the top is flat: its place less so
