@@ -144,3 +144,22 @@ def test_a_force_controlled_inward_branch_is_followed_past_its_fold_in_r_i():
     vbar, stretch = _limit_point_by_root(prep.wall, tube.inner_pressure, tube.outer_radius - 1)
     assert thr.value == pytest.approx(vbar, rel=1e-10)
     assert thr.stretch == pytest.approx(stretch, rel=1e-6)  # the top is flat: its place less so
+
+
+def test_a_field_that_closes_the_bore_outward_is_read_without_doubling_the_charge(monkeypatch):
+    # outward of the uncharged state (T > dp at q = 0) the field raises T, linearly in q =
+    # c^2: no charge balances it. On main q was doubled 100 times before NaN, ~100 integrals
+    # a point, which made a threshold of this tube 12 s (its charts probe such points)
+    tube = _pulled_trilayer()
+    prep = prepare(tube, 1e-12)
+    x0, lz0 = prep.loaded
+    r, s = np.array([x0 * 1.01]), np.array([lz0])
+    # by the wall's integrals alone: T above dp, rising, linear in q (0, 1, 2, 4 x 1e-2)
+    T = np.array([prep.wall.integrals(r, s, np.sqrt(q))[0][0] for q in (0.0, 0.01, 0.02, 0.04)])
+    assert tube.inner_pressure < T[0] and np.all(np.diff(T) > 0)
+    assert T[3] - T[0] == pytest.approx(4.0 * (T[1] - T[0]), rel=1e-9)
+    calls = []
+    integrals = type(prep.wall).integrals
+    monkeypatch.setattr(type(prep.wall), "integrals", lambda *a: calls.append(1) or integrals(*a))
+    assert np.isnan(prep.branch.point(r, s)["voltage"][0])
+    assert len(calls) <= 4  # q = 0, two trial charges, and the state's integrals
