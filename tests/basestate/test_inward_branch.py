@@ -15,13 +15,14 @@ import numpy as np
 import pytest
 from scipy.optimize import minimize_scalar, root
 
-from electrogrowth import Layer, Material, Tube, neo_hookean, solve_base_state
+from electrogrowth import Layer, Material, Tube, solve_base_state
 from electrogrowth.basestate import thresholds
 from electrogrowth.basestate.thresholds import prepare
 from electrogrowth.basestate.tube import voltage_threshold
+from tests.tubes import COUPI4, PULLED_TRILAYER
 
 COUP = Material("coup", "(I1-3)/2 + I5/2*(1 + 0.1*(I1-3))")
-COUPI4 = Material("coupi4", "(I1-3)/2 + 0.45*I5 + 0.05*I4*(1 + 0.1*(I1-3))")
+
 VBAR = 0.1083518738228662
 
 #: the check's uncharged r_i at P_i 4.45, its inward states r0 (0.999 - 0.003 k), Vbar
@@ -82,28 +83,12 @@ def test_below_the_crossing_the_branch_still_opens_outward():
     assert kind == "locking" and lam == pytest.approx(9.0334, abs=1e-4)
 
 
-#: check round 28 (res_61 #12): coupi4 / i45 / NH under force control, closed ends, at an
-#: axial force of 247.25 (lambda_z 11.03), where the charge raises the residual of (*)
-I45 = Material("i45", "(I1-3)/2 + 0.3*I5 + 0.2*I4")
+#: check round 28 (res_61 #12)'s pulled trilayer at F 247.25 (lambda_z 11.03)
 PULLED = 247.25
 
 
 def _pulled_trilayer() -> Tube:
-    spec = (
-        (2.2272094425672435, COUPI4, 0.7976973554187421, 0.7977123344570403,
-         (1.197043200303482, 1.1742760992873587, 1.0352749947621513)),
-        (2.2695424970484774, I45, 0.48727914480018003, 0.8154810072400097,
-         (1.0904017401198194,) * 3),
-        (2.5921515867038627, neo_hookean(), 1.768769888669576, 1.6679836498529308, (1.0,) * 3),
-    )  # fmt: skip
-    layers = [Layer(R, m, shear_modulus=mu, permittivity=e, growth=g) for R, m, mu, e, g in spec]
-    return Tube(
-        layers,
-        length=5.397338671613563,
-        inner_pressure=0.08247930022284859,
-        closed_ends=True,
-        axial_force=PULLED,
-    )
+    return dataclasses.replace(PULLED_TRILAYER, axial_force=PULLED, voltage=0.0)
 
 
 def _limit_point_by_root(wall, dp: float, thick: float) -> tuple[float, float]:
