@@ -87,11 +87,11 @@ def test_below_the_crossing_the_branch_still_opens_outward():
 PULLED = 247.25
 
 
-def _pulled_trilayer() -> Tube:
-    return dataclasses.replace(PULLED_TRILAYER, axial_force=PULLED, voltage=0.0)
+def _pulled_trilayer(force: float = PULLED) -> Tube:
+    return dataclasses.replace(PULLED_TRILAYER, axial_force=force, voltage=0.0)
 
 
-def _limit_point_by_root(wall, dp: float, thick: float) -> tuple[float, float]:
+def _limit_point_by_root(wall, dp: float, thick: float, force: float) -> tuple[float, float]:
     """(Vbar, lambda_z) at the top of the force-controlled branch by another route: at each
     q = c^2, (r_i, lambda_z) from T = dp and N = F by scipy's hybr on the wall's integrals,
     Vbar^2(q) maximised by bounded Brent (not the package's charts, walk or interpolant)."""
@@ -99,7 +99,7 @@ def _limit_point_by_root(wall, dp: float, thick: float) -> tuple[float, float]:
     def state(q):
         def res(y):
             T, _, _, N = wall.integrals(y[:1], y[1:], np.sqrt([q]))
-            return [T[0] - dp, N[0] / PULLED - 1.0]
+            return [T[0] - dp, N[0] / force - 1.0]
 
         return root(res, [1.80, 7.50], method="hybr", options={"xtol": 1e-14}).x
 
@@ -111,13 +111,16 @@ def _limit_point_by_root(wall, dp: float, thick: float) -> tuple[float, float]:
     return float(np.sqrt(-top.fun)), float(state(top.x)[1])
 
 
-def test_a_force_controlled_inward_branch_is_followed_past_its_fold_in_r_i():
+@pytest.mark.parametrize("force", [PULLED, 248.2])
+def test_a_force_controlled_inward_branch_is_followed_past_its_fold_in_r_i(force):
     # on main: "locking" at the start (value inf, the first cell bisected, ~2700 branch
     # points, 77 s); with the start's probe alone (fix23f): "locking" at lambda_i 1.518,
     # where r_i turns back (the walk in r_i found no state past it, read as a lock).
     # The branch: r_i falls from 1.899 to 1.515 and rises again while lambda_z falls from
-    # 11.03 throughout, the voltage rising to a limit point at lambda_z 7.45
-    tube = _pulled_trilayer()
+    # 11.03 throughout, the voltage rising to a limit point at lambda_z 7.45. At F = 248.2
+    # the walk in r_i stepped to the far side (lambda_z 11.02 to 8.75 for r_i 1.79 to 1.65)
+    # and read a peak 5.4076 across the two sides, where the branch's is 5.4551
+    tube = _pulled_trilayer(force)
     prep = prepare(tube, 1e-12)
     x0, lz0 = prep.loaded
     thr = thresholds.threshold(prep.branch, x0, lz0, "voltage")
@@ -126,7 +129,9 @@ def test_a_force_controlled_inward_branch_is_followed_past_its_fold_in_r_i():
     k = int(np.argmin(r_i))  # r_i falls, then rises again: past its fold
     assert np.all(np.diff(lz) < 0) and np.all(np.diff(r_i[: k + 1]) < 0)
     assert 0 < k < len(r_i) - 1 and np.all(np.diff(r_i[k:]) > 0) and thr.lambda_i < x0
-    vbar, stretch = _limit_point_by_root(prep.wall, tube.inner_pressure, tube.outer_radius - 1)
+    vbar, stretch = _limit_point_by_root(
+        prep.wall, tube.inner_pressure, tube.outer_radius - 1, force
+    )
     assert thr.value == pytest.approx(vbar, rel=1e-10)
     assert thr.stretch == pytest.approx(stretch, rel=1e-6)  # the top is flat: its place less so
 

@@ -141,9 +141,11 @@ def _walk(chart: Chart, x0: float, lz0: float, *, sense: int = 1, target=None):
     first = clean(chart.point(u0, v0))
     us, vs, loads = [u0], [v0], [float(chart.branch.value(first)[0])]
     stop = _leg(chart, us, vs, loads, sense, target)
-    if stop == "nan" and (other := _past_fold(chart, us, vs)) is not None:
+    if stop in ("nan", "jump") and (other := _past_fold(chart, us, vs)) is not None:
         chart, us, vs, loads = other, vs[:-1], us[:-1], loads[:-1]
         stop = _leg(chart, us, vs, loads, sense, target)
+    if stop == "jump":  # no other chart to walk: the point stands
+        stop = _leg(chart, us, vs, loads, sense, target, jumps=False)
     if stop == "nan":
         if not _energy_ends(chart, us[-1], vs[-2]):
             name = "lambda_z" if chart.by == "r_i" else "r_i"
@@ -155,16 +157,24 @@ def _walk(chart: Chart, x0: float, lz0: float, *, sense: int = 1, target=None):
     return chart, np.array(us), np.array(vs), np.array(loads), stop
 
 
-def _leg(chart: Chart, us: list, vs: list, loads: list, sense: int, target) -> str:
+def _leg(chart: Chart, us: list, vs: list, loads: list, sense: int, target, jumps=True) -> str:
     """Walk on from the last of (us, vs, loads), appending to them, until the target, a peak,
-    the end of the grid, or a state not found ("nan", appended)."""
+    the end of the grid, a state not found ("nan", appended) or, with ``jumps`` under force
+    control, a step where the other coordinate moved more than the walked one ("jump",
+    appended): the chart is at or past a fold, and the other coordinate's solve can land on
+    the branch's far side (check round 28, res_61 #12 at F = 248.2: lambda_z 11.02 to 8.75
+    for r_i 1.786 to 1.653, then 10.20; a peak 5.4076 read across the two sides, where
+    the branch's is 5.4551)."""
     branch = chart.branch
+    jumps = jumps and branch.wall.tube.control == "force"
     for u in BRANCH_STEPS.batches(us[-1], chart.step):
         pt = clean(chart.at(u, vs[-1]))
         for uj, vj, lj in zip(u, chart.split(pt)[1], branch.value(pt)):
             us.append(float(uj)), vs.append(float(vj)), loads.append(float(lj))
             if not np.isfinite(lj):
                 return "nan"
+            if jumps and abs(math.log(vs[-1] / vs[-2])) > abs(math.log(us[-1] / us[-2])):
+                return "jump"
             if target is not None and reached(lj, target, sense):
                 return "target"
             if turned(loads[-2], lj, sense):
