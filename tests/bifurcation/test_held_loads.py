@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq, minimize_scalar
 
+from electrogrowth import critical_value
 from electrogrowth.basestate.thresholds import prepare
 from electrogrowth.bifurcation.along import LoadMargin, TubeAt
 from electrogrowth.bifurcation.state_loss import held_loads
@@ -47,3 +48,11 @@ def test_the_inflation_stage_is_read_before_the_voltage_branch():
     # the inflation stage's own margin changes sign at the other route's loss, to 1e-7
     inflation = LoadMargin(at, (("pressure", TUBE.inner_pressure),))
     assert inflation(LOST - 1e-7) > 0 > inflation(LOST + 1e-7)
+
+
+@pytest.mark.slow
+def test_the_force_march_ends_at_the_inflation_stages_loss():
+    # check round 28 doubt 1: past 400 s on main; 248.51907004635 "threshold ok" once its
+    # voltage thresholds were cheap (a loss read past the inflation stage's); ~25 s CPU now
+    found = critical_value(TUBE, 10, 0, "force", side="extension")
+    assert found.kind == "threshold" and found.value == pytest.approx(LOST, abs=1e-9)
