@@ -2,7 +2,7 @@
 conftest.py; tests that add their own tubes import TUBES from here)."""
 
 from electrogrowth.model.layers import Layer, LinearGrowth, Tube
-from electrogrowth.model.materials import Material, gent, mooney_rivlin
+from electrogrowth.model.materials import Material, gent, mooney_rivlin, neo_hookean
 
 #: one tube of every kind, for physics that holds for any tube (the ``tubes`` fixture)
 TUBES = {
@@ -58,3 +58,28 @@ FOUR_LAYERS = Tube(
     length=2.0,
     stretch=1.0,
 )
+
+
+COUPI4 = Material("coupi4", "(I1-3)/2 + 0.45*I5 + 0.05*I4*(1 + 0.1*(I1-3))")
+#: check round 28 (res_61 #12): coupi4 / i45 / NH, closed ends, force-controlled (the force
+#: march's start, F 0; at F 247.25 the charge raises the residual of (*) outward of the
+#: uncharged state and the voltage branch runs inward; the inflation threshold at V = 0
+#: falls to P_i at F 248.218)
+PULLED_TRILAYER = Tube(
+    [
+        Layer(R, m, shear_modulus=mu, permittivity=e, growth=g)
+        for R, m, mu, e, g in (
+            (2.2272094425672435, COUPI4,
+             0.7976973554187421, 0.7977123344570403,
+             (1.197043200303482, 1.1742760992873587, 1.0352749947621513)),
+            (2.2695424970484774, Material("i45", "(I1-3)/2 + 0.3*I5 + 0.2*I4"),
+             0.48727914480018003, 0.8154810072400097, (1.0904017401198194,) * 3),
+            (2.5921515867038627, neo_hookean(), 1.768769888669576, 1.6679836498529308, (1.0,) * 3),
+        )
+    ],
+    length=5.397338671613563,
+    voltage=0.36296408441732747,
+    inner_pressure=0.08247930022284859,
+    closed_ends=True,
+    axial_force=0.0,
+)  # fmt: skip

@@ -13,13 +13,16 @@ import dataclasses
 
 import numpy as np
 import pytest
+from scipy.optimize import minimize_scalar, root
 
 from electrogrowth import Layer, Material, Tube, solve_base_state
+from electrogrowth.basestate import thresholds
 from electrogrowth.basestate.thresholds import prepare
 from electrogrowth.basestate.tube import voltage_threshold
+from tests.tubes import COUPI4, PULLED_TRILAYER
 
 COUP = Material("coup", "(I1-3)/2 + I5/2*(1 + 0.1*(I1-3))")
-COUPI4 = Material("coupi4", "(I1-3)/2 + 0.45*I5 + 0.05*I4*(1 + 0.1*(I1-3))")
+
 VBAR = 0.1083518738228662
 
 #: the check's uncharged r_i at P_i 4.45, its inward states r0 (0.999 - 0.003 k), Vbar
@@ -78,3 +81,75 @@ def test_below_the_crossing_the_branch_still_opens_outward():
     # P_i 4.448: uncharged r_i 9.0111 inside the limit; the check's Vbar 0.189 at 9.01202
     value, kind, lam = voltage_threshold(_stiffening_bilayer(4.448))
     assert kind == "locking" and lam == pytest.approx(9.0334, abs=1e-4)
+
+
+#: check round 28 (res_61 #12)'s pulled trilayer at F 247.25 (lambda_z 11.03)
+PULLED = 247.25
+
+
+def _pulled_trilayer(force: float = PULLED) -> Tube:
+    return dataclasses.replace(PULLED_TRILAYER, axial_force=force, voltage=0.0)
+
+
+def _limit_point_by_root(wall, dp: float, thick: float, force: float) -> tuple[float, float]:
+    """(Vbar, lambda_z) at the top of the force-controlled branch by another route: at each
+    q = c^2, (r_i, lambda_z) from T = dp and N = F by scipy's hybr on the wall's integrals,
+    Vbar^2(q) maximised by bounded Brent (not the package's charts, walk or interpolant)."""
+
+    def state(q):
+        def res(y):
+            T, _, _, N = wall.integrals(y[:1], y[1:], np.sqrt([q]))
+            return [T[0] - dp, N[0] / force - 1.0]
+
+        return root(res, [1.80, 7.50], method="hybr", options={"xtol": 1e-14}).x
+
+    def vbar2(q):
+        r, lz = state(q)
+        return (wall.integrals([r], [lz], np.sqrt([q]))[2][0] / thick) ** 2
+
+    top = minimize_scalar(lambda q: -vbar2(q), bounds=(2.5, 4.5), method="bounded")
+    return float(np.sqrt(-top.fun)), float(state(top.x)[1])
+
+
+@pytest.mark.parametrize("force", [PULLED, 248.2])
+def test_a_force_controlled_inward_branch_is_followed_past_its_fold_in_r_i(force):
+    # on main: "locking" at the start (value inf, the first cell bisected, ~2700 branch
+    # points, 77 s); with the start's probe alone (fix23f): "locking" at lambda_i 1.518,
+    # where r_i turns back (the walk in r_i found no state past it, read as a lock).
+    # The branch: r_i falls from 1.899 to 1.515 and rises again while lambda_z falls from
+    # 11.03 throughout, the voltage rising to a limit point at lambda_z 7.45. At F = 248.2
+    # the walk in r_i stepped to the far side (lambda_z 11.02 to 8.75 for r_i 1.79 to 1.65)
+    # and read a peak 5.4076 across the two sides, where the branch's is 5.4551
+    tube = _pulled_trilayer(force)
+    prep = prepare(tube, 1e-12)
+    x0, lz0 = prep.loaded
+    thr = thresholds.threshold(prep.branch, x0, lz0, "voltage")
+    assert thr.kind == "limit point" and thr.walked == "stretch"
+    r_i, lz, _ = thr.grid
+    k = int(np.argmin(r_i))  # r_i falls, then rises again: past its fold
+    assert np.all(np.diff(lz) < 0) and np.all(np.diff(r_i[: k + 1]) < 0)
+    assert 0 < k < len(r_i) - 1 and np.all(np.diff(r_i[k:]) > 0) and thr.lambda_i < x0
+    vbar, stretch = _limit_point_by_root(
+        prep.wall, tube.inner_pressure, tube.outer_radius - 1, force
+    )
+    assert thr.value == pytest.approx(vbar, rel=1e-10)
+    assert thr.stretch == pytest.approx(stretch, rel=1e-6)  # the top is flat: its place less so
+
+
+def test_a_field_that_closes_the_bore_outward_is_read_without_doubling_the_charge(monkeypatch):
+    # outward of the uncharged state (T > dp at q = 0) the field raises T, linearly in q =
+    # c^2: no charge balances it. On main q was doubled 100 times before NaN, ~100 integrals
+    # a point, which made a threshold of this tube 12 s (its charts probe such points)
+    tube = _pulled_trilayer()
+    prep = prepare(tube, 1e-12)
+    x0, lz0 = prep.loaded
+    r, s = np.array([x0 * 1.01]), np.array([lz0])
+    # by the wall's integrals alone: T above dp, rising, linear in q (0, 1, 2, 4 x 1e-2)
+    T = np.array([prep.wall.integrals(r, s, np.sqrt(q))[0][0] for q in (0.0, 0.01, 0.02, 0.04)])
+    assert tube.inner_pressure < T[0] and np.all(np.diff(T) > 0)
+    assert T[3] - T[0] == pytest.approx(4.0 * (T[1] - T[0]), rel=1e-9)
+    calls = []
+    integrals = type(prep.wall).integrals
+    monkeypatch.setattr(type(prep.wall), "integrals", lambda *a: calls.append(1) or integrals(*a))
+    assert np.isnan(prep.branch.point(r, s)["voltage"][0])
+    assert len(calls) <= 4  # q = 0, two trial charges, and the state's integrals

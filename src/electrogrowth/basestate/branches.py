@@ -86,7 +86,8 @@ class Branch:
         exceeds dp (outward of the uncharged state); inward of it (T < dp) a field that
         raises T balances it (a coupling that stiffens with I1, check round 28 D1: the
         branch runs inward), NaN where none does, and where the field lowers T there too, except
-        within the rounding of the start (q = 0)."""
+        within the rounding of the start (q = 0); outward, NaN at once where T rises linearly
+        with the charge (:meth:`_lowered`)."""
         wall, thick = self.wall, self.wall.tube.outer_radius - 1.0
         M, scale, _, _ = wall.integrals(r_i, lz, 0.0, self.compiled)
         Q, Lam = wall.electric(r_i, lz)
@@ -96,9 +97,9 @@ class Branch:
             # the uncharged state to rounding (illinois's own zero, |f| <= 1e-15 scale): q = 0
             # whichever way the field moves T (a field that raises it found none there)
             start = abs(f0) <= 1e-15 * scale
-            up = (f0 > 0) & ~start
-            if up.any():
-                q[up] = self._balance(r_i[up], lz[up], f0[up], 2.0 * f0[up] / Q[up])
+            up = np.flatnonzero((f0 > 0) & ~start)
+            if up.size:
+                q[up] = self._lowered(r_i[up], lz[up], f0[up], 2.0 * f0[up] / Q[up])
             down = np.flatnonzero((f0 < 0) & ~start)
             if down.size:
                 f = self._traction(r_i[down], lz[down])
@@ -137,6 +138,21 @@ class Branch:
             return T - self.dp, s
 
         return f
+
+    def _lowered(self, r_i, lz, f0, hi):
+        """q where a field lowers T (f0 = T - dp > 0 at q = 0) to dp (:meth:`_balance`), NaN
+        at once where T rises linearly in q through hi and 2 hi (to the rounding of its
+        scale): the field closes the bore and doubling q 100 times cannot bracket (an
+        energy linear in I5, I6, such as check round 28's coupi4 / i45 trilayer, pulled to
+        F = 247: ~100 integrals a point, 12 s a threshold whose charts probe such points)."""
+        f = self._traction(r_i, lz)
+        f1, scale = f(hi)
+        f2 = f(2.0 * hi)[0]
+        closes = (f1 > f0) & (f2 > f1) & (abs(f2 - 2.0 * f1 + f0) <= 1e-13 * scale)
+        q = np.full_like(f0, np.nan)
+        if (k := np.flatnonzero(~closes)).size:
+            q[k] = self._balance(r_i[k], lz[k], f0[k], hi[k])
+        return q
 
     def _balance(self, r_i, lz, f0, hi):
         """q where T(q) = dp, from q = 0 (f = f0) towards hi, doubled until f changes sign

@@ -130,33 +130,76 @@ def chart(branch: Branch, x0: float, lz0: float, sense: int = 1) -> Chart:
 
 def _walk(chart: Chart, x0: float, lz0: float, *, sense: int = 1, target=None):
     """Follow the branch from (r_i, lambda_z) = (x0, lz0) on the chart's coordinate u0 1.08^(step
-    k) up to a factor 1e3; returns arrays (u, the other coordinate, analytic load) from the
-    start and why it stopped: "target" (sense (load - target) >= 0), "peak" (the load turned
-    back), "lock" (an energy ended: last entry NaN) or "end"."""
+    k) up to a factor 1e3; returns the chart walked, arrays (u, the other coordinate, analytic
+    load) from the start and why it stopped: "target" (sense (load - target) >= 0), "peak"
+    (the load turned back), "lock" (an energy ended: last entry NaN) or "end". A chart that
+    folds is exchanged once for the other one (:func:`_past_fold`), the grid read in it."""
     u0, v0 = chart.start(x0, lz0)
     # the start (x0, lz0) is a solved state: solved again for lambda_z, a charged tube's
     # voltage branch under suction found none (two lambda_z close by), and the grid began
     # with a NaN load (probe 12b, D7)
     first = clean(chart.point(u0, v0))
+    us, vs, loads = [u0], [v0], [float(chart.branch.value(first)[0])]
+    stop = _leg(chart, us, vs, loads, sense, target)
+    if stop in ("nan", "jump") and (other := _past_fold(chart, us, vs)) is not None:
+        chart, us, vs, loads = other, vs[:-1], us[:-1], loads[:-1]
+        stop = _leg(chart, us, vs, loads, sense, target)
+    if stop == "jump":  # no other chart to walk: the point stands
+        stop = _leg(chart, us, vs, loads, sense, target, jumps=False)
+    if stop == "nan":
+        if not _energy_ends(chart, us[-1], vs[-2]):
+            name = "lambda_z" if chart.by == "r_i" else "r_i"
+            fixed = "lambda_i" if chart.by == "r_i" else "lambda_z"
+            raise ConvergenceError(
+                f"no {name} balances the axial force at {fixed} = {us[-1]:.12g}"
+            )
+        stop = "lock"
+    return chart, np.array(us), np.array(vs), np.array(loads), stop
+
+
+def _leg(chart: Chart, us: list, vs: list, loads: list, sense: int, target, jumps=True) -> str:
+    """Walk on from the last of (us, vs, loads), appending to them, until the target, a peak,
+    the end of the grid, a state not found ("nan", appended) or, with ``jumps`` under force
+    control, a step where the other coordinate moved more than the walked one ("jump",
+    appended): the chart is at or past a fold, and the other coordinate's solve can land on
+    the branch's far side (check round 28, res_61 #12 at F = 248.2: lambda_z 11.02 to 8.75
+    for r_i 1.786 to 1.653, then 10.20; a peak 5.4076 read across the two sides, where
+    the branch's is 5.4551)."""
     branch = chart.branch
-    us, vs, loads = [u0], [v0], [float(branch.value(first)[0])]
-    for u in BRANCH_STEPS.batches(u0, chart.step):
+    jumps = jumps and branch.wall.tube.control == "force"
+    for u in BRANCH_STEPS.batches(us[-1], chart.step):
         pt = clean(chart.at(u, vs[-1]))
         for uj, vj, lj in zip(u, chart.split(pt)[1], branch.value(pt)):
             us.append(float(uj)), vs.append(float(vj)), loads.append(float(lj))
             if not np.isfinite(lj):
-                if not _energy_ends(chart, uj, vs[-2]):
-                    name = "lambda_z" if chart.by == "r_i" else "r_i"
-                    fixed = "lambda_i" if chart.by == "r_i" else "lambda_z"
-                    raise ConvergenceError(
-                        f"no {name} balances the axial force at {fixed} = {uj:.12g}"
-                    )
-                return np.array(us), np.array(vs), np.array(loads), "lock"
+                return "nan"
+            if jumps and abs(math.log(vs[-1] / vs[-2])) > abs(math.log(us[-1] / us[-2])):
+                return "jump"
             if target is not None and reached(lj, target, sense):
-                return np.array(us), np.array(vs), np.array(loads), "target"
+                return "target"
             if turned(loads[-2], lj, sense):
-                return np.array(us), np.array(vs), np.array(loads), "peak"
-    return np.array(us), np.array(vs), np.array(loads), "end"
+                return "peak"
+    return "end"
+
+
+def _past_fold(chart: Chart, us: list, vs: list) -> Chart | None:
+    """The other chart, walked the way its coordinate has moved, where the walk found no
+    state at its last step (us[-1]) but that coordinate has moved monotonically from the
+    start and the branch has a state one step further in it: the walked coordinate folds
+    (turns back) while the other keeps moving. Under force control a branch running inward
+    under a charge that lowers lambda_z turns in r_i (check round 28, res_61 #12: r_i falls
+    from 1.899 to 1.515 and rises again as lambda_z falls from 11.03, the voltage rising to
+    a limit point at lambda_z 7.5); walked in r_i it ended at the fold, read as a lock.
+    None under stretch control (one chart) or where the other coordinate has turned too."""
+    if chart.branch.wall.tube.control != "force" or len(vs) < 3:
+        return None
+    d = np.diff(vs[:-1])
+    if not (np.all(d > 0) or np.all(d < 0)):
+        return None
+    other = Chart(chart.branch, "stretch" if chart.by == "r_i" else "r_i", 1 if d[0] > 0 else -1)
+    u = vs[-2] * BRANCH_STEPS.ratio**other.step
+    ahead = chart.branch.value(clean(other.at([u], us[-2])))[0]
+    return other if np.isfinite(ahead) else None
 
 
 def opens(walk: Chart, x0: float, lz0: float) -> bool:
@@ -169,15 +212,20 @@ def opens(walk: Chart, x0: float, lz0: float) -> bool:
     start, as for one layer): the field closes the bore, the branch may run inward
     (:func:`inward`). T is a
     sum over the layers, so identical layers read exactly what one layer does. A point
-    that is not finite because the energy ends there (a Gent layer at its lock) or no
-    lambda_z balances the axial force is no closing field: the walk reads those."""
+    that is not finite because the energy ends there (a Gent layer at its lock) is no
+    closing field: the walk reads it.
+
+    The probe keeps the start's other coordinate (lambda_z moves by O(FIRST_STEP) along
+    the branch): under force control a field that closes the bore outward of the start
+    leaves no charge there at any lambda_z, and balancing the axial force found no residual
+    to balance; read as "no lambda_z", the walk then bisected its first cell for a lock,
+    every step a failed balance (check round 28, res_61 #12: F = 247, lambda_z = 11, 65 s
+    a threshold), where the branch runs inward (fix23f's probe)."""
     u0, v0 = walk.start(x0, lz0)
-    pt = clean(walk.at([u0 * (1.0 + walk.step * FIRST_STEP)], v0))
+    pt = walk.point(u0 * (1.0 + walk.step * FIRST_STEP), v0)
     if np.isfinite(walk.branch.value(pt)[0]):
         return True
     r_i, lz = pt["r_i"], pt["stretch"]
-    if not (np.isfinite(r_i[0]) and np.isfinite(lz[0])):
-        return True
     uncharged = Branch(walk.branch.wall, "pressure", vbar=0.0).point(r_i, lz)
     return not np.isfinite(uncharged["P_i"][0])  # the energy ends there: a lock
 
@@ -225,7 +273,7 @@ def threshold(
         if walk is None:
             start = (np.array([x0]), np.array([lz0]), np.zeros(1))
             return Threshold(control, 0.0, "closing", x0, lz0, 0.0, start, "r_i")
-    us, vs, loads, stop = _walk(walk, x0, lz0, sense=sign, target=target)
+    walk, us, vs, loads, stop = _walk(walk, x0, lz0, sense=sign, target=target)
     guess = _guess(us, vs)
     out = lambda v: math.sqrt(v) if control == "voltage" else v  # noqa: E731
 

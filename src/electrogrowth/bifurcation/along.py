@@ -231,14 +231,23 @@ class LoadMargin:
     the threshold of the tube at x minus the applied value: it falls to 0 where the state is
     lost. A state is reached by the pressure stage at no voltage, then the voltage branch
     (basestate/thresholds.prepare): "pressure" is that stage's inflation threshold,
-    "voltage" the voltage branch's at the tube's pressures."""
+    "voltage" the voltage branch's at the tube's pressures. They are read in that order, and
+    a stage whose margin is not positive ends the path there: the voltage branch of a tube
+    past its inflation threshold has no start (BaseStateError), which made the margin
+    unreadable past it and the loss a bisection of the states that solve, continued ones
+    among them (check round 28, res_61 #12: 248.519, not the inflation threshold's 248.22)."""
 
     at: TubeAt
     loads: tuple[tuple[str, float], ...]
 
     def __call__(self, x) -> float:
         tube = self.at(x)
-        return min(_load_threshold(tube, name) - applied for name, applied in self.loads)
+        least = math.inf
+        for name, applied in sorted(self.loads, key=lambda load: load[0] != "pressure"):
+            least = min(least, _load_threshold(tube, name) - applied)
+            if not least > 0:  # lost at this stage: the next one is not reached
+                break
+        return least
 
 
 def _load_threshold(tube: Tube, name: str) -> float:
