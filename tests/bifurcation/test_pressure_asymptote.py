@@ -28,6 +28,7 @@ import pytest
 from scipy.optimize import brentq
 
 from electrogrowth.basestate.tube import solve_base_state
+from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.bifurcation.surface import short_wave_limit
 from electrogrowth.continuation.path import ControlPath, Stepper, StepPolicy
 from electrogrowth.model.layers import Tube
@@ -80,6 +81,18 @@ def test_without_voltage_the_threshold_is_the_asymptote_to_rtol():
     assert res.value == pytest.approx(math.log(RO), abs=1e-15)
     assert res.error_estimate == pytest.approx(5e-12 * res.value, rel=1e-12)
     assert "asymptote" in res.message and "no face wrinkles up to" in res.message
+
+
+def test_a_mode_bifurcates_past_the_film_before_the_asymptote():
+    """Mode (0, 20) of the tube inflated without voltage was kind "threshold" at ln 1.4 by
+    both methods: it bifurcates at lambda_i = 84.8, 1.4e-8 below. The impedance and
+    collocation values (independent discretisations) agree."""
+    imp = critical_value(tube(0.0), 0, 20, "pressure")
+    col = critical_value(tube(0.0), 0, 20, "pressure", method="collocation")
+    assert imp.kind == col.kind == "bifurcation"
+    assert imp.value == pytest.approx(col.value, abs=1e-14)
+    assert 1e-8 < math.log(RO) - imp.value < 2e-8
+    assert solve_base_state(imp.params).lambda_i > 50.0  # past the old cap
 
 
 def test_the_approach_to_an_asymptote_doubles_the_monitor_each_step():
