@@ -230,6 +230,9 @@ def first_bifurcations(
             try:
                 state = at.state(x)
             except (BaseStateError, ConvergenceError):  # lost, or unresolved next to a lock
+                if step.asymptote is not None:  # established where the states run to:
+                    stop = True  # they are not resolved closer to it
+                    continue
                 value, edge, pending = _threshold_between(at, params, step.x, x)
                 if value is not None or threshold is None:  # an established loss stays
                     threshold, unresolved = value, pending

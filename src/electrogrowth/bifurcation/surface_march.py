@@ -78,6 +78,8 @@ def locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, unti
         try:
             state = state_at(x)
         except (BaseStateError, ConvergenceError) as exc:  # lost, or unresolved
+            if step.asymptote is not None:  # where the states run to is established:
+                break  # they are not resolved closer to it (a shear modulus ~1e-8)
             if _retry(exc) and step.unresolved():
                 continue  # the solver failed here, not next to a lock: step shorter first
             value, edge, pending = threshold_between(at, params, x_prev, x, rtol)
