@@ -59,7 +59,7 @@ def test_a_scan_reports_the_limit_point():
     assert scan.critical.value == pytest.approx(threshold(tube, "pressure").value, abs=1e-12)
 
 
-@pytest.mark.slow  # 10-25 s: make test-slow runs it
+@pytest.mark.slow  # 30-60 s (the approach past the film): make test-slow runs it
 def test_the_force_march_ends_where_the_inflation_threshold_falls_to_the_pressure():
     tube = pulled_at_a_pressure()
     c = critical_value(tube, 5, 0, "force", side="extension")  # (5, 0) never bifurcates
