@@ -59,7 +59,7 @@ def test_a_scan_reports_the_limit_point():
     assert scan.critical.value == pytest.approx(threshold(tube, "pressure").value, abs=1e-12)
 
 
-@pytest.mark.slow  # 10-25 s: make test-slow runs it
+@pytest.mark.slow  # 30-60 s (the approach past the film): make test-slow runs it
 def test_the_force_march_ends_where_the_inflation_threshold_falls_to_the_pressure():
     tube = pulled_at_a_pressure()
     c = critical_value(tube, 5, 0, "force", side="extension")  # (5, 0) never bifurcates
@@ -73,6 +73,9 @@ def test_the_force_march_ends_where_the_inflation_threshold_falls_to_the_pressur
         solve_base_state(tube.at("force", c.value + 1e-7))
     surface = short_wave_limit(tube, "force", side="extension")
     assert surface.kind == Kind.THRESHOLD and surface.value == pytest.approx(c.value, abs=1e-9)
+    # marched on past the film toward the asymptote until the states stop resolving (a shear
+    # modulus ~1e-8 of its own, lambda_i ~ 3.8e3, 2.1e-8 short): the estimate covers that gap
+    assert 1e-9 < surface.error_estimate < 1e-7 and "not excluded" in surface.message
 
 
 def test_a_mode_before_the_loss_still_wins():

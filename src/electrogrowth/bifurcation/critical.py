@@ -67,7 +67,7 @@ from .march import (
     first_bifurcations,
 )
 from .problem import Problem, as_problem
-from .state_loss import lost_note
+from .state_loss import asymptote_error, asymptote_note, lost_note
 from .torsion_onset import torsional_onset
 
 if TYPE_CHECKING:
@@ -345,6 +345,7 @@ def _solve(
                 stable_signs=np.array([sref]),  # the sign read above, not read again
                 steps=ONE_MODE_STEPS,
                 at=at,  # the error estimate's first state is the value's, solved by the march
+                rtol=acc.fine,
             )
         except NoBifurcationFound as exc:
             # a torsional mode first bifurcates where its moduli vanish: no window to look for
@@ -357,19 +358,7 @@ def _solve(
                 _no_bifurcation(exc, solve_for, m, n, fam)
             res = MarchResult([ModeValue(int(m), int(n), root, str(fam))], None)
         if not res.found:
-            return CriticalPoint(
-                solve_for,
-                res.threshold,
-                int(m),
-                int(n),
-                Kind.THRESHOLD,
-                0.0,
-                method,
-                side,
-                params.at(solve_for, res.threshold),
-                family=fam,
-                message=lost_note(at, res.threshold),
-            )
+            return _threshold_point(params, at, res, solve_for, (m, n), fam, method, side, acc)
         value = res.found[0].value
         if fam is Family.TORSIONAL and not onset_read:  # the march's root: the first?
             value, doubt = _torsional_first(params, at, solve_for, side, value)
@@ -392,6 +381,32 @@ def _solve(
         status=Status.INACCURATE if doubt else Status.OK,
         message=doubt or note,
         remedy=TORSION_REMEDY if doubt else "",
+    )
+
+
+def _threshold_point(params, at, res, solve_for, mn, fam, method, side, acc) -> CriticalPoint:
+    """The CriticalPoint of a mode whose march lost the state first (``res.threshold``).
+    Its error estimate: 0 where the loss was located, what rtol achieves where it is an
+    asymptote examined up to the value's tolerance short of it (a root there is it)."""
+    value, near = res.threshold, res.near
+    if near is None:
+        err, note = 0.0, lost_note(at, value)
+    else:
+        err = asymptote_error(value, near, acc.fine)
+        note = asymptote_note(solve_for, value, near, f"mode {mn} does not bifurcate")
+    m, n = mn
+    return CriticalPoint(
+        solve_for,
+        value,
+        int(m),
+        int(n),
+        Kind.THRESHOLD,
+        err,
+        method,
+        side,
+        params.at(solve_for, value),
+        family=fam,
+        message=note,
     )
 
 

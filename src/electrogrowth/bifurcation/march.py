@@ -57,7 +57,8 @@ from ..incremental.targets import ImpedanceTarget, Sample, natural_family, row_f
 from ..model.controls import KINDS
 from ..model.layers import Tube
 from .along import RootRows, Signed, TubeAt
-from .state_loss import box_note, loss_at_end
+from .problem import DEFAULT_RTOL
+from .state_loss import Approach, approach_film, box_note, loss_at_end
 from .state_loss import threshold_between as _threshold_between
 
 #: the mode march's step control: 0.4 % of the scale doubling up to 5 %, not below 1e-4
@@ -118,6 +119,8 @@ def _mode_value(modes, i, value) -> ModeValue:
 class MarchResult:
     found: list  # ModeValue, in the order reached
     threshold: float | None  # where the axisymmetric state is lost, if reached first
+    #: the threshold is an asymptote, examined up to this state (a root there is it to rtol)
+    near: Approach | None = None
 
 
 def control_path(tube: Tube, solve_for: str, side: str | None):
@@ -159,6 +162,7 @@ def first_bifurcations(
     steps: StepPolicy = MODE_STEPS,
     at: TubeAt | None = None,
     until: float | None = None,
+    rtol: float = DEFAULT_RTOL,
 ) -> MarchResult:
     """Critical values of the first ``top`` modes of ``modes`` reached by the march.
 
@@ -170,7 +174,8 @@ def first_bifurcations(
     solve_for), whose states the march then shares. ``until``: the march ends there if its
     path reaches it (roots beyond it are not wanted: a widened scan's new modes matter only
     before the top values the scan already has); reaching it with no root found returns an
-    empty result, not an error.
+    empty result, not an error. ``rtol``: the values' accuracy, how near an asymptote the
+    march goes where its wall becomes a film (state_loss.approach_film).
     """
     at = TubeAt(params, solve_for) if at is None else at
     if stable_signs is None:
@@ -225,6 +230,9 @@ def first_bifurcations(
             try:
                 state = at.state(x)
             except (BaseStateError, ConvergenceError):  # lost, or unresolved next to a lock
+                if step.asymptote is not None:  # established where the states run to:
+                    stop = True  # they are not resolved closer to it
+                    continue
                 value, edge, pending = _threshold_between(at, params, step.x, x)
                 if value is not None or threshold is None:  # an established loss stays
                     threshold, unresolved = value, pending
@@ -232,7 +240,9 @@ def first_bifurcations(
                 continue
             if step.jumped(state.lambda_i):
                 continue
-            done = film = step.film(state.lambda_i)  # the wall is a film: at the threshold
+            if step.film(state.lambda_i):  # the wall is a film: on toward its asymptote
+                film = True
+                done = approach_film(at, params, solve_for, side, step, rtol) is None
         if done:  # a last look at every mode not seen at step.x: nothing left behind
             x = step.x
             idx = np.nonzero(watch.alive & (watch.xa != x))[0]
@@ -247,12 +257,16 @@ def first_bifurcations(
                     )
                     found += more
             break
-        idx = np.nonzero(watch.needs(x))[0]
+        # on the approach to an asymptote every mode is sampled at every step: a step
+        # takes lambda_i twice as far, the watch's predictions do not reach there
+        idx = np.nonzero(watch.alive if step.asymptote is not None else watch.needs(x))[0]
         if idx.size:
             try:
                 g = failing.sample(targets, state, modes[idx], x) * sref[idx]
             except ConvergenceError as err:  # the state solves, its tables do not
-                unresolved, stop = err, True
+                # (on the approach to an asymptote: examined up to step.x, say how far)
+                unresolved = unresolved if step.asymptote is not None else err
+                stop = True
                 continue
             try:
                 found += _advance(watch, idx, x, g, views, top)
@@ -275,6 +289,10 @@ def first_bifurcations(
         raise err from unresolved
     if not found and threshold is None and cut:
         return MarchResult([], None)  # none before ``until``
+    near = None
+    if not found and threshold is None and step.asymptote is not None:
+        # approached to its tolerance: a root there is it
+        threshold, near = step.asymptote, Approach(step.x, step.monitor, step.at_end())
     if not found and threshold is None:  # lost at the path's end, or past its film?
         threshold = loss_at_end(at, params, solve_for, side, step.x, step.end, film)
         if threshold is None:
@@ -283,7 +301,7 @@ def first_bifurcations(
                 f"no mode bifurcates for {solve_for} between {x0:g} and {last:g}"
                 + (_film_note(step) if film else box_note(params, solve_for, side, step.end))
             )
-    return MarchResult(found[:top], threshold)
+    return MarchResult(found[:top], threshold, near)
 
 
 def _film_note(step: Stepper) -> str:

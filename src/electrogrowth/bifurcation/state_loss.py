@@ -6,7 +6,9 @@ ends between them, and whether that end is established. A march that loses no st
 way is lost at its end (:func:`loss_at_end`): a path that ends at the control's own threshold
 (:func:`own_threshold`: the voltage's, an inflation's pressure) ends there, and a wall thinned
 to a film runs to an asymptote, where the threshold of a load held fixed falls to that load
-(:func:`held_loads`: the inflation threshold of a tube pulled at a fixed inner pressure).
+(:func:`held_loads`: the inflation threshold of a tube pulled at a fixed inner pressure). Past
+a film the march goes on toward that asymptote (:func:`approach_film`), to the value's
+tolerance short of it: a root there (a face under voltage, a short mode) is found.
 
 A state that is lost (the state search fails: BaseStateError, from cold and continued from
 the march's nearest state) right after one that solves ends the path there; a search that
@@ -26,6 +28,7 @@ in I1 and I2 from above (Gent's, Gent-Gent's), the edge of its finite values, bi
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 
@@ -47,6 +50,7 @@ from ..model.controls import parse_control
 from ..model.layers import Tube
 from ..model.params import SUPPORTED
 from .along import LoadMargin, TubeAt, bounded_energy, clear_of_lock, has_lock
+from .error_estimate import achieved_floor
 
 #: the fates of a point where no state was found (_fate)
 _NO_STATE = ("lost", "locked")
@@ -125,6 +129,58 @@ def loss_at_end(
     except _UNREADABLE:
         return None
     return None
+
+
+class Approach(NamedTuple):
+    """The last state a march examined on its way to an asymptote, where it stopped:
+    ``resolved`` if within the value's tolerance of it (else the states closer failed)."""
+
+    x: float
+    lambda_i: float
+    resolved: bool
+
+
+def asymptote_note(solve_for: str, value: float, near: Approach, what: str) -> str:
+    """What a threshold at an asymptote stands for (a result's message): ``what`` (e.g. "no
+    face wrinkles") up to the last state the march examined; within the value's tolerance
+    of it, a root closer is the same value to rtol (under a voltage one is there: the field
+    at a face grows with lambda_i); else the states closer were not resolved (a half-space's
+    decay rates ~ 1 / lambda_i^2 below its split's margin) and a root in the gap is not
+    excluded (:func:`asymptote_error`)."""
+    where = f"up to {near.x:.15g} (lambda_i = {near.lambda_i:.4g})"
+    if near.resolved:
+        tail = "within the value's tolerance of it: a root closer to it, if any, is this value"
+        tail += " to rtol"
+    else:
+        gap = abs(value - near.x)
+        tail = f"not resolved closer to it: a root within {gap:.2g} of it is not excluded"
+    return (
+        f"the state runs to its asymptote {solve_for} = {value:.12g} (lambda_i -> inf);"
+        f" {what} {where}, {tail}"
+    )
+
+
+def asymptote_error(value: float, near: Approach, rtol: float) -> float:
+    """The error estimate of a threshold at an asymptote: what rtol achieves (the march came
+    that close), or the gap to the last state examined where it stopped short of it."""
+    return max(achieved_floor(value, rtol), abs(value - near.x))
+
+
+def approach_film(
+    at: TubeAt, params: Tube, solve_for: str, side: str | None, step, rtol: float
+) -> float | None:
+    """The wall became a film at ``step.x`` (lambda_i grown ``film``-fold): where its state
+    runs to (:func:`loss_at_end`, as the march would report it), with ``step`` sent on toward
+    it (Stepper.approach) up to the value's tolerance short of it, ACHIEVED rtol |x| (no
+    less than the path's edge gap): a root closer than that is the threshold to rtol (an
+    inflated tube under Vbar = 0.01 wrinkles at its inner face at lambda_i = 120, 3.4e-9
+    short of its pressure asymptote). None (the march stops there) where no loss is
+    established."""
+    asymptote = loss_at_end(at, params, solve_for, side, step.x, step.end, True)
+    if asymptote is not None:
+        gap = max(achieved_floor(asymptote, rtol), step.policy.edge_gap * step.scale)
+        step.approach(asymptote, gap)
+    return asymptote
 
 
 def threshold_between(

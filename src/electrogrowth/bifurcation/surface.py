@@ -28,11 +28,13 @@ kind "threshold" if the base state is lost first, located as the mode march loca
 (state_loss.py: the voltage threshold falls to the applied voltage, the state search fails,
 or a layer locks kinematically; a state that exists but does not resolve, or lies within
 along.LOCK_MARGIN of a lock, is no loss, and where nothing else is established the march
-raises ConvergenceError), and kind "ellipticity" if the half-space stops being strongly
-elliptic first (then there is no decaying split to impose the face conditions on; the value
-is where that happens). The error estimate is the distance to the root found at a second,
-coarser resolution (psi grid 13 instead of 25, psi tolerance 1e-7, base state at 100 rtol),
-at least the precision rtol achieves (error_estimate.achieved_floor).
+raises ConvergenceError; a wall become a film is marched on toward its asymptote, lambda_i
+doubling a step, to 5 rtol of it: a face wrinkles there under a voltage), and kind
+"ellipticity" if the half-space stops being strongly elliptic first (then there is no
+decaying split to impose the face conditions on; the value is where that happens). The
+error estimate is the distance to the root found at a second, coarser resolution (psi grid
+13 instead of 25, psi tolerance 1e-7, base state at 100 rtol), at least the precision rtol
+achieves (error_estimate.achieved_floor).
 Derivation and measured numbers: docs/derivation-surface.md.
 """
 
@@ -59,7 +61,9 @@ from .directions import (
     sampler,
 )
 from .error_estimate import achieved_floor
+from .march import control_path
 from .problem import DEFAULT_RTOL, Problem, as_problem
+from .state_loss import asymptote_error, asymptote_note
 from .surface_march import locate
 
 
@@ -76,12 +80,15 @@ class SurfaceLimit(Outcome):
         theta, pi/2: along z); ``ratio`` = k r / m = tan psi, None at psi = pi/2.
     error_estimate : |value - value at a second, coarser resolution|, at least the
         precision rtol achieves (error_estimate.achieved_floor: the two may agree to the
-        bit, which is no exactness); 0 if not a root, NaN if the base state is lost within
-        the search for the coarser root.
+        bit, which is no exactness); for a threshold at an asymptote (a film's state runs
+        to it: the march stops 5 rtol |value| short of it) that floor, 5 rtol |value| (a
+        root closer is the threshold to rtol); 0 for any other value that is not a root;
+        NaN if the base state is lost within the search for the coarser root.
     params : the parameters (Tube) at ``value``.
     face : the surface: "inner", "outer" or, in a layered tube, "interface-K" (between
         layers K and K + 1).
-    status, message, remedy : always OK, "" and "" (a failure raises); with them a
+    status, message, remedy : always OK and "" (a failure raises); the message "" but for
+        a threshold at an asymptote (how near it the faces were examined); with them a
         SurfaceLimit is an :class:`~electrogrowth.outcomes.Outcome` like every result.
     """
 
@@ -112,6 +119,10 @@ class SurfaceLimit(Outcome):
         }
 
 
+#: what a threshold at an asymptote says was examined up to the last state (its message)
+NO_FACE = "no face wrinkles"
+
+
 # -- input checks ---------------------------------------------------------------------------
 
 
@@ -135,10 +146,13 @@ def _check(params, solve_for, side, faces, rtol) -> tuple[str, str | None, tuple
     return solve_for, side, faces
 
 
-def _second_resolution(value_coarse, value: float) -> float:
-    """|root of the coarser h near value - value| (NaN if the base state is lost before
-    the coarse target changes sign: a surface instability at the threshold itself)."""
-    for lo, hi, _ in events.widening_windows(value, 1e-8 * max(1.0, abs(value)), 14):
+def _second_resolution(value_coarse, value: float, path: tuple[float, float]) -> float:
+    """|root of the coarser h near value - value|, looked for within the march's ``path``
+    (start, end): a root next to an asymptote has no states 1e-8 past it (NaN if the base
+    state is lost before the coarse target changes sign: a surface instability at the
+    threshold itself)."""
+    width, bounds = 1e-8 * max(1.0, abs(value)), tuple(sorted(path))
+    for lo, hi, _ in events.widening_windows(value, width, 14, bounds=bounds):
         try:
             flo, fhi = value_coarse(lo), value_coarse(hi)
         except (BaseStateError, ConvergenceError):
@@ -161,8 +175,10 @@ def _solve(
     hm = sampler(faces, signs, fine, direction, refine_below=MARCH_REFINE)
     hc = sampler(faces, signs, coarse, direction)
     at = TubeAt(params, solve_for, as_float=True)
-    kind, value, bracket = locate(params, solve_for, side, h, rtol, hm, until)
+    kind, value, bracket, near = locate(params, solve_for, side, h, rtol, hm, until)
     if kind in (Kind.THRESHOLD, Kind.NONE):
+        # at an asymptote, a root within the march's gap to it is this value to rtol
+        err = 0.0 if near is None else asymptote_error(value, near, rtol)
         return SurfaceLimit(
             solve_for,
             value,
@@ -170,9 +186,10 @@ def _solve(
             None,
             None,
             kind,
-            0.0,
+            err,
             at(value) if kind == Kind.THRESHOLD else params,
             side,
+            message="" if near is None else asymptote_note(solve_for, value, near, NO_FACE),
         )
     if kind == Kind.ELLIPTICITY:
         s = h(solve_base_state(at(value), rtol=rtol))
@@ -182,7 +199,8 @@ def _solve(
     value_of = SampleValue(h, StateAt(at, rtol))
     value = events.brent(value_of, *bracket, events.surface_tolerance(rtol))
     coarse_of = SampleValue(hc, StateAt(at, coarse.rtol))
-    err = _second_resolution(coarse_of, value) if estimate else math.nan
+    path = control_path(params, solve_for, side)[:2]
+    err = _second_resolution(coarse_of, value, path) if estimate else math.nan
     # the two resolutions can share their error (a closed-form state's roots agree to the
     # bit): never less than what rtol achieves, as every critical value (critical.py)
     err = max(err, achieved_floor(value, rtol)) if math.isfinite(err) else err

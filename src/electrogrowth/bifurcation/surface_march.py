@@ -6,8 +6,12 @@ h to zero (SURFACE_STEPS); a bounded minimisation where h dips between samples. 
 state fails, the loss is located as the mode march locates it (state_loss.py): a held load's
 threshold, the state search failing, or a kinematic lock, and at the path's end or past a
 film, the control's own threshold or a held load's; a state that exists but does not
-resolve, or lies within along.LOCK_MARGIN of a lock, is no loss. Where h turns NaN the
-half-space has stopped being strongly elliptic: that edge is bisected.
+resolve, or lies within along.LOCK_MARGIN of a lock, is no loss. A wall become a film runs to
+an asymptote (lambda_i -> inf): the march goes on toward it in steps that double lambda_i
+(state_loss.approach_film), up to the value's tolerance short of it, so that a face that
+wrinkles there (an inflated tube under Vbar = 0.01 at lambda_i = 120) is found, and a
+threshold reported there is right to that tolerance. Where h turns NaN the half-space has
+stopped being strongly elliptic: that edge is bisected.
 """
 
 from __future__ import annotations
@@ -22,7 +26,7 @@ from ..errors import BaseStateError, ConvergenceError, ParameterError, UnstableA
 from ..outcomes import Kind
 from .along import Elliptic, NearLock, SampleValue, StateAt, TubeAt
 from .march import control_path
-from .state_loss import loss_at_end, threshold_between
+from .state_loss import Approach, approach_film, loss_at_end, threshold_between
 
 #: the short-wave march's step control: as the mode march's, but down to 1e-6 of the scale
 #: (h is one continuous function: its zero may be approached closer)
@@ -31,7 +35,7 @@ SURFACE_STEPS = StepPolicy(smallest=1e-6)
 
 def locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, until=None):
     """March to the first zero of h (not past ``until``, if given); returns (kind, value,
-    bracket or None).
+    bracket or None, Approach or None: how near a threshold at an asymptote was examined).
 
     h_march (default h) is used for the steps: it may be cheaper where h is far from 0
     but must agree with h wherever either is <= MARCH_REFINE."""
@@ -74,6 +78,8 @@ def locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, unti
         try:
             state = state_at(x)
         except (BaseStateError, ConvergenceError) as exc:  # lost, or unresolved
+            if step.asymptote is not None:  # where the states run to is established:
+                break  # they are not resolved closer to it (a shear modulus ~1e-8)
             if _retry(exc) and step.unresolved():
                 continue  # the solver failed here, not next to a lock: step shorter first
             value, edge, pending = threshold_between(at, params, x_prev, x, rtol)
@@ -85,29 +91,31 @@ def locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, unti
         if step.jumped(state.lambda_i):
             continue
         s = h(state)
+        if math.isnan(s.value) and step.asymptote is not None:
+            break  # a face's decay rates ~ 1 / lambda_i^2 fall below the split's: unresolved
         if math.isnan(s.value):  # ellipticity lost in (x_prev, x]
             elliptic = Elliptic(value_of)
             edge = events.Tolerance(1e-13 * scale, maxiter=60, scale="absolute")
             lo, hi = events.bisect(elliptic, x_prev, x, edge)
             if fine_of(lo) <= 0:  # a surface instability just before
-                return Kind.SURFACE, None, _bracket(xs, lo, fine_of)
-            return Kind.ELLIPTICITY, 0.5 * (lo + hi), None
+                return Kind.SURFACE, None, _bracket(xs, lo, fine_of), None
+            return Kind.ELLIPTICITY, 0.5 * (lo + hi), None, None
         if s.value <= 0:
-            return Kind.SURFACE, None, _bracket(xs, x, fine_of)
+            return Kind.SURFACE, None, _bracket(xs, x, fine_of), None
         steps = (xs[-2] - xs[-1], xs[-1] - x) if len(hs) >= 2 else None
         if steps and events.dipped(hs[-2], hs[-1], s.value, steps):  # a dip between samples?
             dip = events.dip_bracket(value_of, xs[-2], x)
             if dip is not None:
-                return Kind.SURFACE, None, _bracket(xs[:-1], float(dip[1]), fine_of)
+                return Kind.SURFACE, None, _bracket(xs[:-1], float(dip[1]), fine_of), None
         xs.append(x)
         hs.append(s.value)
-        if step.film(state.lambda_i):  # the wall is a film: at the threshold
-            step.accept(x, state.lambda_i)
-            film = True
-            break
         slope = (hs[-1] - hs[-2]) / (xs[-1] - xs[-2]) * path.sense
         limit = SURFACE_STEPS.safety * hs[-1] / -slope / scale if slope < 0 else math.inf
         step.accept(x, state.lambda_i, limit)
+        if step.film(state.lambda_i):  # the wall is a film: on toward its asymptote
+            film = True
+            if approach_film(at, params, solve_for, side, step, rtol) is None:
+                break
     if threshold is None and unresolved is not None:  # neither a loss nor a root established
         err = ConvergenceError(
             f"no surface instability for {solve_for} from {x0:.12g} up to {step.x:.12g}, and"
@@ -115,11 +123,14 @@ def locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, unti
         )
         err.remedy = unresolved.remedy
         raise err from unresolved
+    near = None
+    if threshold is None and step.asymptote is not None:  # approached to its tolerance
+        threshold, near = step.asymptote, Approach(step.x, step.monitor, step.at_end())
     if threshold is None:  # lost at the path's end, or past its film?
         threshold = loss_at_end(at, params, solve_for, side, step.x, step.end, film)
     if threshold is not None:
-        return Kind.THRESHOLD, threshold, None
-    return Kind.NONE, math.nan, None
+        return Kind.THRESHOLD, threshold, None, near
+    return Kind.NONE, math.nan, None, None
 
 
 def _retry(exc: Exception) -> bool:

@@ -15,7 +15,11 @@ its linear prediction, and a step is proposed only as far as the prediction move
 ``max_change``): near the voltage threshold lambda_i runs away
 and modes lose and regain stability within a tiny interval. When the state is lost between
 two steps the threshold is located (continuation.events.threshold_between) and approached
-with shrinking steps; a wall thinned to a film (lambda_i grown ``film``-fold) is at it.
+with shrinking steps. A wall thinned to a film (lambda_i grown ``film``-fold) runs to an
+asymptote of the control (an inflation's pressure, a held voltage's threshold): the march
+goes on toward it (:meth:`Stepper.approach`) in steps that grow geometrically in lambda_i
+(``film_growth`` each, the gap to the asymptote falling by the power its observed order
+gives), until the gap is below what the value's tolerance can tell.
 :class:`Stepper` holds this, :class:`GeometricGrid` the fixed geometric steps of a
 base-state branch (in r_i, past its folds).
 
@@ -82,7 +86,10 @@ class StepPolicy:
     jump_floor: float = 1e-12  # a step this small is taken whatever the jump
     lost_shrink: float = 4.0  # after the state was lost within a step
     edge_gap: float = 1e-12  # stop this far (times the scale) before a lost state
-    film: float = 50.0  # lambda_i grown this much: the wall is a film, at its threshold
+    film: float = 50.0  # lambda_i grown this much: the wall is a film, near its asymptote
+    #: past a film, lambda_i grows this much per step toward the asymptote (a root there
+    #: lies at lambda_i ~ 1.2 / Vbar for an inflated tube under voltage: 50 .. 1e3)
+    film_growth: float = 2.0
     #: the state solver failed (not lost): retry shorter until the step is this small
     unresolved_floor: float = 1e-5
     #: predict the monitor linearly from the last accepted step: a jump is then a change
@@ -126,6 +133,10 @@ class Stepper:
         self.rate = 0.0  # d monitor / dx over the last accepted step (0: none yet)
         self.taken = self.step  # the step of the last proposal (a cap may shorten it)
         self.proposed = self.x  # the last proposal
+        #: past a film: the control's asymptote (lambda_i -> inf) and the observed order p
+        #: of the gap to it, asymptote - x ~ lambda_i^-p (approach)
+        self.asymptote: float | None = None
+        self.order = 2.0
 
     def at_end(self) -> bool:
         """Has the march reached the end of its path?"""
@@ -136,6 +147,11 @@ class Stepper:
         (where the caller next needs a state; a step still covers ``smallest``), nor where
         the monitor is predicted to jump (``jump_foresight``)."""
         sense, p = self.sense, self.policy
+        if self.asymptote is not None:  # lambda_i grows film_growth-fold
+            left = self.asymptote - self.x
+            x = self.asymptote - left * p.film_growth**-self.order
+            self.proposed = min(x, self.end, key=lambda v: sense * v)
+            return self.proposed
         step = self.step
         if until is not None:
             step = min(step, max(sense * (until - self.x) / self.scale, p.smallest))
@@ -156,7 +172,7 @@ class Stepper:
     def unresolved(self) -> bool:
         """The state solver failed at the proposed value: shorten the step (True), or
         False if it is already below ``unresolved_floor``."""
-        if self.step <= self.policy.unresolved_floor:
+        if self.step <= self.policy.unresolved_floor or self.asymptote is not None:
             return False
         self.step /= self.policy.lost_shrink
         return True
@@ -164,8 +180,11 @@ class Stepper:
     def jumped(self, monitor: float) -> bool:
         """Did the monitored unknown at the proposal jump (change by more than ``max_jump``,
         from its linear prediction with ``predict_monitor``)? Then the step is shortened and
-        the proposal should be dropped (True)."""
+        the proposal should be dropped (True). Never on the approach to an asymptote, whose
+        steps are meant to grow lambda_i."""
         p = self.policy
+        if self.asymptote is not None:
+            return False
         expected = self.monitor
         if p.predict_monitor:
             expected += self.rate * (self.proposed - self.x)
@@ -175,16 +194,38 @@ class Stepper:
         return False
 
     def film(self, monitor: float) -> bool:
-        """Has the monitored unknown grown ``film``-fold since the start?"""
-        return monitor > self.policy.film * self.monitor0
+        """Has the monitored unknown grown ``film``-fold since the start (and the march not
+        yet been sent on toward the asymptote)?"""
+        return self.asymptote is None and monitor > self.policy.film * self.monitor0
+
+    def approach(self, asymptote: float, gap: float) -> None:
+        """The wall is a film whose state runs to ``asymptote`` (lambda_i -> inf): march on
+        toward it, the path ending ``gap`` short of it (or where it ended before, if that is
+        nearer). A root within ``gap`` of the asymptote cannot be told from it: ``gap`` is
+        the value's tolerance. Each accepted step reads the order of the gap (accept; 2
+        until one is read)."""
+        self.asymptote = asymptote
+        near = asymptote - self.sense * gap
+        self.end = min(self.end, near, key=lambda v: self.sense * v)
 
     def accept(self, x: float, monitor: float, limit: float | None = None) -> None:
-        """Move to x; with a predictor's ``limit``, choose the next step."""
-        if limit is not None:
+        """Move to x; with a predictor's ``limit``, choose the next step (on the approach to
+        an asymptote: read the order of the gap to it instead)."""
+        if self.asymptote is not None:
+            self._read_order(x, monitor)
+        elif limit is not None:
             self.step = self.policy.next(self.step, limit)
         if x != self.x:
             self.rate = (monitor - self.monitor) / (x - self.x)
         self.x, self.monitor = x, monitor
+
+    def _read_order(self, x: float, monitor: float) -> None:
+        """p of asymptote - x ~ monitor^-p from the step to x, kept in [0.5, 8] (a step's
+        gap falls by at most film_growth^8: 256-fold for lambda_i doubling)."""
+        before, after = self.asymptote - self.x, self.asymptote - x
+        if before * after > 0 and abs(after) < abs(before) and monitor > self.monitor > 0:
+            p = math.log(before / after) / math.log(monitor / self.monitor)
+            self.order = min(max(p, 0.5), 8.0)
 
 
 @dataclasses.dataclass(frozen=True)
