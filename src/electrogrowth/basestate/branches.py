@@ -16,7 +16,7 @@ import math
 
 import numpy as np
 
-from ..continuation.events import BRANCH_STRETCH, brent
+from ..continuation.events import BRANCH, BRANCH_STRETCH, brent
 from .plies import Wall, illinois
 
 # -- the two branches -------------------------------------------------------------------------
@@ -86,17 +86,14 @@ class Branch:
         exceeds dp (outward of the uncharged state); inward of it (T < dp) a field that
         raises T balances it (a coupling that stiffens with I1, check round 28 D1: the
         branch runs inward), NaN where none does, and where the field lowers T there too, except
-        within the rounding of the start (q = 0); outward, NaN at once where T rises linearly
-        with the charge (:meth:`_lowered`)."""
+        at the uncharged state to rounding (q = 0: :meth:`_uncharged`); outward, NaN at once
+        where T rises linearly with the charge (:meth:`_lowered`)."""
         wall, thick = self.wall, self.wall.tube.outer_radius - 1.0
-        M, scale, _, _ = wall.integrals(r_i, lz, 0.0, self.compiled)
         Q, Lam = wall.electric(r_i, lz)
         if self.load == "voltage":
+            M, start = self._uncharged(r_i, lz)
             f0 = M - self.dp
-            q = np.zeros_like(M)
-            # the uncharged state to rounding (illinois's own zero, |f| <= 1e-15 scale): q = 0
-            # whichever way the field moves T (a field that raises it found none there)
-            start = abs(f0) <= 1e-15 * scale
+            q = np.zeros_like(M)  # q = 0 at the start, whichever way the field moves T
             up = np.flatnonzero((f0 > 0) & ~start)
             if up.size:
                 q[up] = self._lowered(r_i[up], lz[up], f0[up], 2.0 * f0[up] / Q[up])
@@ -111,6 +108,7 @@ class Branch:
                 q[down[~rises]] = np.nan
             with np.errstate(invalid="ignore"):
                 return np.where(np.isfinite(M), np.sqrt(q), np.nan)
+        M = wall.integrals(r_i, lz, 0.0, self.compiled)[0]
         target = self.vbar * thick
         if target == 0:
             return np.where(np.isfinite(M), 0.0, np.nan)
@@ -127,6 +125,24 @@ class Branch:
             hi = np.where(more, 2.0 * hi, hi)
             ghi = g(hi)[0]
         return illinois(g, np.zeros_like(hi), hi, np.full_like(hi, -target), ghi)
+
+    def _uncharged(self, r_i, lz):
+        """(T at q = 0, whether each point is the uncharged state to rounding): T = dp to the
+        charge solve's own zero (illinois's, 1e-15 of the stress scale), or T - dp changing
+        sign within the resolution of r_i to which the branch's start is solved (Brent,
+        BRANCH: |r_i - root| <= xtol + rtol r_i). Next to a Gent layer's lock T moves by
+        1e-14 .. 2e-13 per ulp of r_i (dT/d ln r_i 84 .. 1759, test_nan_charge's bilayer
+        grown g_theta 4.34 .. 5.5), and the solved start's T - dp, -2e-15 .. -9e-15 of the
+        scale, read as inward of the start where the field lowers T: NaN, the walk's first
+        load, and no state beside the start solved. Both sides in the same call of the
+        integrals (a call costs about as much for 3 points as for 1)."""
+        w = BRANCH.xtol + BRANCH.rtol  # relative (BRANCH.scale)
+        sides = np.concatenate((r_i, r_i * (1.0 - w), r_i * (1.0 + w)))
+        T, scale, _, _ = self.wall.integrals(sides, np.tile(lz, 3), 0.0, self.compiled)
+        M, below, above = np.split(T, 3)
+        f0 = M - self.dp
+        rounding = abs(f0) <= 1e-15 * scale[: M.size]
+        return M, rounding | ((below - self.dp) * (above - self.dp) <= 0.0)
 
     def _traction(self, r_i, lz):
         """f(q) = (T - dp, noise scale) at the points, q = c^2 (NaN where no charge
