@@ -20,6 +20,7 @@ from scipy.optimize import brentq
 
 from electrogrowth import Layer, Material, Tube, solve_base_state
 from electrogrowth.basestate import thresholds
+from electrogrowth.basestate.layered import solve_continued
 from electrogrowth.basestate.thresholds import prepare
 
 FOLD = Material("foldE", "(I1-3)/2 + I5/2*(1 + 2.0*(I1-3)) + 0.05*I5**2")
@@ -90,3 +91,11 @@ def test_a_lock_of_the_coupling_is_not_read_as_a_fold():
     assert thr.kind == "locking" and thr.walked == "r_i"
     assert thr.lambda_i == pytest.approx(1.2612165916, rel=1e-10)  # check round 30's table
 
+
+def test_a_state_on_an_inward_branch_is_continued_from_its_neighbour():
+    # main: refused (its load does not rise with r_i), every state of a march a cold walk
+    near = solve_base_state(_tube(LOCKS, voltage=1.0))
+    warm = solve_continued(_tube(LOCKS, voltage=1.05), near)
+    assert warm is not None
+    cold = solve_base_state(_tube(LOCKS, voltage=1.05))
+    assert warm.lambda_i == pytest.approx(cold.lambda_i, rel=1e-12)
