@@ -167,7 +167,8 @@ def _walk(chart: Chart, x0: float, lz0: float, *, sense: int = 1, target=None):
         before = chart, us, vs, loads
         chart, us, vs, loads = other
         stop = _leg(chart, us, vs, loads, sense, target)
-        if stop == "end" and chart.by == "charge" and before[0].step * (vs[-1] - vs[-2]) > 0:
+        turned_back = np.any(before[0].step * np.diff(vs) < 0)
+        if stop in ("end", "nan") and chart.by == "charge" and not turned_back:
             # r_i never turned: the charge grows without bound as r_i nears where the r_i
             # walk found no state, a lock of the coupling (check round 30, case A: Vbar
             # unbounded as r_i falls to 1.26122), read from that walk as before
@@ -228,7 +229,7 @@ def _past_fold(chart: Chart, us: list, vs: list, loads: list):
     if branch.wall.tube.control == "force" and len(vs) >= 3:
         other_us, other_vs, loads = vs[:-1], us[:-1], loads[:-1]
         by = "stretch" if chart.by == "r_i" else "r_i"
-    elif chart.by == "r_i" and branch.load == "voltage" and not branch.wall.ideal:
+    elif chart.by == "r_i" and branch.load == "voltage" and _no_charge(chart, us[-1]):
         other_us, other_vs, loads = _charges(chart, us)
         by = "charge"
     else:
@@ -242,6 +243,17 @@ def _past_fold(chart: Chart, us: list, vs: list, loads: list):
     u = other_us[-1] * BRANCH_STEPS.ratio**other.step
     ahead = branch.value(clean(other.at([u], other_vs[-1])))[0]
     return (other, list(other_us), list(other_vs), list(loads)) if np.isfinite(ahead) else None
+
+
+def _no_charge(chart: Chart, r_i: float) -> bool:
+    """Is the r_i walk's missing state at r_i one where no charge balances the traction,
+    the energy finite there uncharged (a general energy: an ideal one's charge is unique,
+    and a Gent layer past its lock ends the branch, test_nan_charge.py)?"""
+    branch = chart.branch
+    if branch.wall.ideal:
+        return False
+    uncharged = Branch(branch.wall, "pressure", vbar=0.0).point([r_i], [branch.wall.tube.stretch])
+    return bool(np.isfinite(uncharged["P_i"][0]))
 
 
 def _charges(chart: Chart, us: list) -> tuple[list, list, list]:
