@@ -209,18 +209,19 @@ class Branch:
             T = self.wall.integrals(np.array([x]), np.array([lz]), np.array([c]), self.compiled)[0]
         return float(T[0]) - self.dp
 
-    def lowers(self, r_i: float, lz: float) -> bool:
-        """Does a small charge lower T at (r_i, lambda_z): the sign of dT/dq at q = 0, read
-        at the ideal dielectric's balancing charge 2 |T - dp| / Q (the charge of a branch
-        leaving the uncharged state is of that order)? Always for an ideal dielectric
-        (T = M - q Q)."""
+    def leaves(self, r_i: float, lz: float) -> bool:
+        """Does a small charge move T towards dp at (r_i, lambda_z): the sign of dT/dq at
+        q = 0 against that of T - dp, read at the ideal dielectric's balancing charge
+        2 |T - dp| / Q (the charge of a branch leaving the uncharged state is of that
+        order, and vanishes with T - dp)? Always for an ideal dielectric (T = M - q Q, the
+        charge found where T > dp)."""
         if self.wall.ideal:
             return True
         r_i, lz = np.array([r_i]), np.array([lz])
         f = self._traction(r_i, lz)
-        f0 = f(np.zeros(1))[0]
+        f0 = f(np.zeros(1))[0][0]
         Q = self.wall.electric(r_i, lz)[0]
-        return bool(f(2.0 * abs(f0) / Q)[0][0] < f0[0])
+        return bool((f(2.0 * abs(f0) / Q)[0][0] - f0) * f0 < 0)
 
     def _residual(self, x: float, lz: float) -> float:
         return float(self.point(np.array([x]), np.array([lz]))["residual"][0])

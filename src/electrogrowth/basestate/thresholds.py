@@ -226,10 +226,11 @@ def _past_fold(chart: Chart, us: list, vs: list, loads: list):
     r0 = 1.28158 to 0.99826 r0 at c 0.575, then outward through r0 at Vbar 0.544). None
     where the other coordinate has turned too, or no state lies one step on in it."""
     branch = chart.branch
-    if branch.wall.tube.control == "force" and len(vs) >= 3:
+    force = branch.wall.tube.control == "force"
+    if force and len(vs) >= 3:
         other_us, other_vs, loads = vs[:-1], us[:-1], loads[:-1]
         by = "stretch" if chart.by == "r_i" else "r_i"
-    elif chart.by == "r_i" and branch.load == "voltage" and _no_charge(chart, us[-1]):
+    elif not force and branch.load == "voltage" and _no_charge(chart, us[-1]):
         other_us, other_vs, loads = _charges(chart, us)
         by = "charge"
     else:
@@ -294,11 +295,11 @@ def opens(walk: Chart, x0: float, lz0: float) -> bool:
     u0, v0 = walk.start(x0, lz0)
     pt = walk.point(u0 * (1.0 + walk.step * FIRST_STEP), v0)
     if np.isfinite(walk.branch.value(pt)[0]):
-        # the branch leaving the start has a charge that vanishes there, so the field
-        # lowers T at small charge; a charge found where it raises T is a root detached
+        # the branch leaving the start has a charge that vanishes there, so a small charge
+        # moves T towards P_i - P_o; a charge found where it moves T away is a root detached
         # from the start (an I5^2 term, check round 30 D2: c 0.847, Vbar 0.544 at r0 (1 +
         # 1e-5), where the branch runs inward; walked from it, every Vbar below was refused)
-        return walk.branch.lowers(float(pt["r_i"][0]), float(pt["stretch"][0]))
+        return walk.branch.leaves(float(pt["r_i"][0]), float(pt["stretch"][0]))
     r_i, lz = pt["r_i"], pt["stretch"]
     uncharged = Branch(walk.branch.wall, "pressure", vbar=0.0).point(r_i, lz)
     return not np.isfinite(uncharged["P_i"][0])  # the energy ends there: a lock
