@@ -35,17 +35,19 @@ class Branch:
     vbar: float = 0.0
     compiled: bool = False
 
-    def point(self, r_i, lz) -> dict:
+    def point(self, r_i, lz, charge=None) -> dict:
+        """The state at (r_i, lambda_z), its charge solved (:meth:`_charge`) or, for a general
+        energy, the given ``charge`` (a branch walked in its charge: :meth:`at_charge`)."""
         # an energy's own finite range (a Fung exponential, a Gent lock) ends in inf or
         # NaN, which marks the point as no state: not a numpy warning to the user
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
-            return self._point(r_i, lz)
+            return self._point(r_i, lz, charge)
 
-    def _point(self, r_i, lz) -> dict:
+    def _point(self, r_i, lz, charge=None) -> dict:
         wall, tube = self.wall, self.wall.tube
         r_i, lz = np.broadcast_arrays(np.asarray(r_i, float), np.asarray(lz, float))
         thick = tube.outer_radius - 1.0
-        if wall.ideal:
+        if wall.ideal and charge is None:
             M, scale, _, Nm = wall.integrals(r_i, lz, 0.0, self.compiled)
             Q, Lam = wall.electric(r_i, lz)
             if self.load == "voltage":
@@ -57,7 +59,7 @@ class Branch:
                 q, dp = c * c, M - c * c * Q
             V, N = c * Lam, Nm - math.pi * q * Lam
         else:
-            c = self._charge(r_i, lz)
+            c = self._charge(r_i, lz) if charge is None else np.broadcast_to(charge, r_i.shape)
             T, scale, V, N = wall.integrals(r_i, lz, c, self.compiled)
             dp = T if self.load == "pressure" else np.where(np.isfinite(T), self.dp, np.nan)
         P_o = tube.outer_pressure
@@ -205,6 +207,37 @@ class Branch:
         lz = np.atleast_1d(np.asarray(lz, float))
         r_i = _each(lz, r_guess, self._inner_radius)
         return self.point(np.where(np.isfinite(r_i), r_i, 1.0), lz) | _nan_where(~np.isfinite(r_i))
+
+    def at_charge(self, c, r_guess) -> dict:
+        """Points at the charges c (1-d, in order; stretch control), r_i solved at each from
+        the guess (continued as in :meth:`at`) where (*) holds, T(r_i, c) = P_i - P_o: the
+        chart of a voltage branch whose r_i turns while its charge rises (a field that
+        raises T at small charge and lowers it at large, check round 30 D2)."""
+        c = np.atleast_1d(np.asarray(c, float))
+        lz = self.wall.tube.stretch
+        r_i = _each(c, r_guess, lambda cj, x: _balance(lambda r: self._off(r, lz, cj), x))
+        ok = np.isfinite(r_i)
+        return self.point(np.where(ok, r_i, 1.0), lz, c) | _nan_where(~ok)
+
+    def _off(self, x: float, lz: float, c: float) -> float:
+        """T - (P_i - P_o) of (*) at r_i = x, lambda_z and the charge c."""
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            T = self.wall.integrals(np.array([x]), np.array([lz]), np.array([c]), self.compiled)[0]
+        return float(T[0]) - self.dp
+
+    def leaves(self, r_i: float, lz: float) -> bool:
+        """Does a small charge move T towards dp at (r_i, lambda_z): the sign of dT/dq at
+        q = 0 against that of T - dp, read at the ideal dielectric's balancing charge
+        2 |T - dp| / Q (the charge of a branch leaving the uncharged state is of that
+        order, and vanishes with T - dp)? Always for an ideal dielectric (T = M - q Q, the
+        charge found where T > dp)."""
+        if self.wall.ideal:
+            return True
+        r_i, lz = np.array([r_i]), np.array([lz])
+        f = self._traction(r_i, lz)
+        f0 = f(np.zeros(1))[0][0]
+        Q = self.wall.electric(r_i, lz)[0]
+        return bool((f(2.0 * abs(f0) / Q)[0][0] - f0) * f0 < 0)
 
     def _residual(self, x: float, lz: float) -> float:
         return float(self.point(np.array([x]), np.array([lz]))["residual"][0])

@@ -71,8 +71,10 @@ PROBE = 1e-6
 @dataclasses.dataclass(frozen=True)
 class Chart:
     """A branch's states along one coordinate: ``by`` "r_i" (lambda_z solved at each r_i,
-    Branch.at) or "stretch" (r_i solved at each lambda_z, Branch.at_stretch), walked in
-    direction ``step`` (+1 rising, -1 falling) as the load rises from the start."""
+    Branch.at), "stretch" (r_i solved at each lambda_z, Branch.at_stretch) or, under stretch
+    control, "charge" (r_i solved at each charge c, Branch.at_charge: the other coordinate
+    is r_i), walked in direction ``step`` (+1 rising, -1 falling) as the load rises from
+    the start."""
 
     branch: Branch
     by: str = "r_i"
@@ -82,17 +84,35 @@ class Chart:
         """Points at the walked coordinate's values u, the other one solved from guess."""
         if self.by == "r_i":
             return self.branch.at(u, guess)
+        if self.by == "charge":
+            return self.branch.at_charge(u, guess)
         return self.branch.at_stretch(u, guess)
 
     def point(self, u, other) -> dict:
         """The point at the walked coordinate u and the other one, as given."""
+        if self.by == "charge":
+            lz = np.full(np.shape(np.atleast_1d(other)), self.branch.wall.tube.stretch)
+            return self.branch.point(np.atleast_1d(other), lz, np.atleast_1d(u))
         r_i, lz = (u, other) if self.by == "r_i" else (other, u)
         return self.branch.point(np.atleast_1d(r_i), np.atleast_1d(lz))
 
     def split(self, pt: dict):
         """(walked coordinate, the other one) of points."""
+        if self.by == "charge":
+            return pt["charge"], pt["r_i"]
         r_i, lz = pt["r_i"], pt["stretch"]
         return (r_i, lz) if self.by == "r_i" else (lz, r_i)
+
+    def physical(self, us, vs, loads) -> tuple:
+        """A walked grid as (r_i, lambda_z, load), and the charge after them on the charge
+        chart (r_i is not monotone along it: it is read in the charge, :meth:`read`)."""
+        if self.by == "charge":
+            return vs, np.full_like(vs, self.branch.wall.tube.stretch), loads, us
+        return self.state(us, vs) + (loads,)
+
+    def read(self, grid) -> tuple:
+        """(walked coordinate, the other one) of a Threshold's grid (:meth:`physical`)."""
+        return (grid[3], grid[0]) if self.by == "charge" else self.start(grid[0], grid[1])
 
     def start(self, x0: float, lz0: float) -> tuple[float, float]:
         """(walked coordinate, the other one) of the start (r_i, lambda_z) = (x0, lz0)."""
@@ -100,6 +120,8 @@ class Chart:
 
     def state(self, u: float, other: float) -> tuple[float, float]:
         """(r_i, lambda_z) of the walked coordinate u and the other one."""
+        if self.by == "charge":
+            return other, self.branch.wall.tube.stretch
         return (u, other) if self.by == "r_i" else (other, u)
 
 
@@ -141,9 +163,16 @@ def _walk(chart: Chart, x0: float, lz0: float, *, sense: int = 1, target=None):
     first = clean(chart.point(u0, v0))
     us, vs, loads = [u0], [v0], [float(chart.branch.value(first)[0])]
     stop = _leg(chart, us, vs, loads, sense, target)
-    if stop in ("nan", "jump") and (other := _past_fold(chart, us, vs)) is not None:
-        chart, us, vs, loads = other, vs[:-1], us[:-1], loads[:-1]
+    if stop in ("nan", "jump") and (other := _past_fold(chart, us, vs, loads)) is not None:
+        before = chart, us, vs, loads
+        chart, us, vs, loads = other
         stop = _leg(chart, us, vs, loads, sense, target)
+        turned_back = np.any(before[0].step * np.diff(vs) < 0)
+        if stop in ("end", "nan") and chart.by == "charge" and not turned_back:
+            # r_i never turned: the charge grows without bound as r_i nears where the r_i
+            # walk found no state, a lock of the coupling (check round 30, case A: Vbar
+            # unbounded as r_i falls to 1.26122), read from that walk as before
+            (chart, us, vs, loads), stop = before, "nan"
     if stop == "jump":  # no other chart to walk: the point stands
         stop = _leg(chart, us, vs, loads, sense, target, jumps=False)
     if stop == "nan":
@@ -182,24 +211,66 @@ def _leg(chart: Chart, us: list, vs: list, loads: list, sense: int, target, jump
     return "end"
 
 
-def _past_fold(chart: Chart, us: list, vs: list) -> Chart | None:
-    """The other chart, walked the way its coordinate has moved, where the walk found no
-    state at its last step (us[-1]) but that coordinate has moved monotonically from the
-    start and the branch has a state one step further in it: the walked coordinate folds
-    (turns back) while the other keeps moving. Under force control a branch running inward
-    under a charge that lowers lambda_z turns in r_i (check round 28, res_61 #12: r_i falls
-    from 1.899 to 1.515 and rises again as lambda_z falls from 11.03, the voltage rising to
-    a limit point at lambda_z 7.5); walked in r_i it ended at the fold, read as a lock.
-    None under stretch control (one chart) or where the other coordinate has turned too."""
-    if chart.branch.wall.tube.control != "force" or len(vs) < 3:
+def _past_fold(chart: Chart, us: list, vs: list, loads: list):
+    """The other chart, walked the way its coordinate has moved, and the walk so far in it
+    (us, vs, loads without its last step), where the walk found no state at its last step
+    (us[-1]) but that coordinate has moved monotonically from the start and the branch has
+    a state one step further in it: the walked coordinate folds (turns back) while the other keeps
+    moving. Under force control a branch running inward under a charge that lowers lambda_z
+    turns in r_i (check round 28, res_61 #12: r_i falls from 1.899 to 1.515 and rises again
+    as lambda_z falls from 11.03, the voltage rising to a limit point at lambda_z 7.5);
+    walked in r_i it ended at the fold, read as a lock. Under stretch control the other
+    coordinate is the charge (a general energy's voltage branch: its r_i is a function of
+    c where T falls with r_i nowhere): a field that raises T at small charge and lowers it
+    at large turns the branch in r_i as the charge rises (check round 30 D2: inward from
+    r0 = 1.28158 to 0.99826 r0 at c 0.575, then outward through r0 at Vbar 0.544). None
+    where the other coordinate has turned too, or no state lies one step on in it."""
+    branch = chart.branch
+    force = branch.wall.tube.control == "force"
+    if force and len(vs) >= 3:
+        other_us, other_vs, loads = vs[:-1], us[:-1], loads[:-1]
+        by = "stretch" if chart.by == "r_i" else "r_i"
+    elif not force and branch.load == "voltage" and _no_charge(chart, us[-1]):
+        other_us, other_vs, loads = _charges(chart, us)
+        by = "charge"
+    else:
         return None
-    d = np.diff(vs[:-1])
+    if len(other_us) < 2:
+        return None
+    d = np.diff(other_us)
     if not (np.all(d > 0) or np.all(d < 0)):
         return None
-    other = Chart(chart.branch, "stretch" if chart.by == "r_i" else "r_i", 1 if d[0] > 0 else -1)
-    u = vs[-2] * BRANCH_STEPS.ratio**other.step
-    ahead = chart.branch.value(clean(other.at([u], us[-2])))[0]
-    return other if np.isfinite(ahead) else None
+    other = Chart(branch, by, 1 if d[0] > 0 else -1)
+    u = other_us[-1] * BRANCH_STEPS.ratio**other.step
+    ahead = branch.value(clean(other.at([u], other_vs[-1])))[0]
+    return (other, list(other_us), list(other_vs), list(loads)) if np.isfinite(ahead) else None
+
+
+def _no_charge(chart: Chart, r_i: float) -> bool:
+    """Is the r_i walk's missing state at r_i one where no charge balances the traction,
+    the energy finite there uncharged (a general energy: an ideal one's charge is unique,
+    and a Gent layer past its lock ends the branch, test_nan_charge.py)?"""
+    branch = chart.branch
+    if branch.wall.ideal:
+        return False
+    uncharged = Branch(branch.wall, "pressure", vbar=0.0).point([r_i], [branch.wall.tube.stretch])
+    return bool(np.isfinite(uncharged["P_i"][0]))
+
+
+def _charges(chart: Chart, us: list) -> tuple[list, list, list]:
+    """(c, r_i, load) of an r_i walk under stretch control up to its last finite state, with a
+    state found short of the step past it (the step's log shortened 2^-k, k < 50) where
+    the walk has no charged one: a fold 0.17 % inward of the start (check round 30 D2)
+    lies inside the first 8 % step."""
+    us = list(us[:-1])
+    if len(us) == 1:
+        for k in range(1, 50):
+            pt = clean(chart.at([us[0] * BRANCH_STEPS.ratio ** (chart.step * 0.5**k)], 1.0))
+            if np.isfinite(chart.branch.value(pt)[0]):
+                us.append(float(pt["r_i"][0]))
+                break
+    pt = clean(chart.point(np.array(us), np.full(len(us), chart.branch.wall.tube.stretch)))
+    return list(pt["charge"]), us, list(chart.branch.value(pt))
 
 
 def opens(walk: Chart, x0: float, lz0: float) -> bool:
@@ -224,7 +295,11 @@ def opens(walk: Chart, x0: float, lz0: float) -> bool:
     u0, v0 = walk.start(x0, lz0)
     pt = walk.point(u0 * (1.0 + walk.step * FIRST_STEP), v0)
     if np.isfinite(walk.branch.value(pt)[0]):
-        return True
+        # the branch leaving the start has a charge that vanishes there, so a small charge
+        # moves T towards P_i - P_o; a charge found where it moves T away is a root detached
+        # from the start (an I5^2 term, check round 30 D2: c 0.847, Vbar 0.544 at r0 (1 +
+        # 1e-5), where the branch runs inward; walked from it, every Vbar below was refused)
+        return walk.branch.leaves(float(pt["r_i"][0]), float(pt["stretch"][0]))
     r_i, lz = pt["r_i"], pt["stretch"]
     uncharged = Branch(walk.branch.wall, "pressure", vbar=0.0).point(r_i, lz)
     return not np.isfinite(uncharged["P_i"][0])  # the energy ends there: a lock
@@ -254,10 +329,12 @@ def _energy_ends(chart: Chart, u: float, v: float) -> bool:
 
 def _guess(us, vs):
     """The other coordinate's guesses at new values of the walked one, u, by interpolation
-    of a scanned branch (u, v) (log-linear)."""
+    of a scanned branch (u, v) (log-linear; linear in a charge, whose grid starts at 0)."""
     good = np.isfinite(vs)
     order = np.argsort(us[good])
-    return lambda u: np.interp(np.log(u), np.log(us[good][order]), vs[good][order])
+    u, v = us[good][order], vs[good][order]
+    axis = np.log if u[0] > 0 else np.asarray
+    return lambda x: np.interp(axis(x), axis(u), v)
 
 
 def threshold(
@@ -280,8 +357,7 @@ def threshold(
     def lost(kind, value, u, v, error=0.0, grid=None):
         x, lz = walk.state(u, v)
         grid = (us, vs, loads) if grid is None else grid
-        physical = walk.state(grid[0], grid[1]) + (grid[2],)
-        return Threshold(control, value, kind, x, lz, error, physical, walk.by)
+        return Threshold(control, value, kind, x, lz, error, walk.physical(*grid), walk.by)
 
     if stop == "target":
         return lost("", math.nan, math.nan, math.nan)
@@ -331,22 +407,26 @@ def threshold(
         a, _ = bisect(finite, us[-2], us[-1], LOCK, near_bad=True)  # the energy's domain ends
         grid = (us[:-1], vs[:-1], loads[:-1])
         return lost("locking", sign * math.inf, float(a), float(guess(a)), grid=grid)
-    if walk.by != "r_i" or walk.step != sign:  # the limits below are of r_i -> inf or 0
-        name = "lambda_i" if walk.by == "r_i" else "lambda_z"
+    # the limits below are of r_i -> inf or 0: of a walk in r_i, or in the charge with r_i
+    # moving the load's way at its end (past the fold of check round 30 D2)
+    charged = walk.by == "charge" and sign * (vs[-1] - vs[-2]) > 0
+    if not charged and (walk.by != "r_i" or walk.step != sign):
+        name = {"r_i": "lambda_i", "stretch": "lambda_z", "charge": "c"}[walk.by]
         raise ConvergenceError(
             f"the {control} branch walked in {name} from {us[0]:.12g} to {us[-1]:.12g} met"
             " no threshold (the load's limit at the end of that walk is not computed)"
         )
-    grid = (us, vs, loads)
+    grid = walk.physical(us, vs, loads)
+    lz_end = float(grid[1][-1])
     if sign < 0:
-        return Threshold(control, -math.inf, "none", 0.0, float(vs[-1]), 0.0, grid)
+        return Threshold(control, -math.inf, "none", 0.0, lz_end, 0.0, grid, walk.by)
     # Richardson: load = L_inf + a x^p + ..., x = lambda_i^-2, the order p measured
     far = x0 * 100.0 * 2.0 ** np.arange(5)
-    pt = clean(branch.at(far, guess(far[0])))
+    pt = clean(branch.at(far, guess(far[0]) if walk.by == "r_i" else lz_end))
     t = np.array([out(v) if np.isfinite(v) else np.nan for v in branch.value(pt)])
     d = np.diff(t)
     if not (np.all(np.isfinite(t)) and np.all(d > 0) and d[-2] > d[-1]):
-        return Threshold(control, math.inf, "none", math.inf, float(vs[-1]), 0.0, grid)
+        return Threshold(control, math.inf, "none", math.inf, lz_end, 0.0, grid, walk.by)
     p = math.log(d[-2] / d[-1], 4.0)
     p = round(p) if abs(p - round(p)) < 0.05 else p
     for j in range(3):
@@ -359,6 +439,7 @@ def threshold(
         float(pt["stretch"][-1]),
         abs(float(t[-1]) - prev),
         grid,
+        walk.by,
     )
 
 
@@ -374,15 +455,15 @@ def solve_on(branch: Branch, walked: Threshold, target: float, what: str, sign: 
     state's computed 3.8e-16 marched the wrong way and found no state, probe 9b D2)."""
     walk = Chart(branch, walked.walked)
     thr = walked if walked.kind else None
-    r_i, lz, loads = walked.grid
-    xs, lzs = walk.start(r_i, lz)  # the walked coordinate, the other one
+    r_i, lz, loads = walked.grid[:3]
+    xs, lzs = walk.read(walked.grid)  # the walked coordinate, the other one
     k = np.flatnonzero(sign * (loads - target) >= 0)
     if k.size and k[0] == 0:
         # the start's load is exactly the control's start value, so the target lies between
         # it and its computed value: within the rounding of the load, the start is the state
         return float(r_i[0]), float(lz[0])
     if not k.size and thr is not None:
-        far = walk.start(thr.lambda_i, thr.stretch)[0]
+        far = math.inf if walk.by == "charge" else walk.start(thr.lambda_i, thr.stretch)[0]
         tail = (
             xs[-1] * 4.0 ** (sign * np.arange(1, 21))
             if not 0 < far < math.inf
@@ -417,9 +498,10 @@ def solve_on(branch: Branch, walked: Threshold, target: float, what: str, sign: 
             f"{what} = {target:.12g} is within the accuracy of the threshold{near} of its"
             " branch (the load does not reach it in the scan's cell)"
         )
-    name = "lambda_i" if walk.by == "r_i" else "lambda_z"
-    try:
-        x = brent(f, *sorted((a, b)), BRANCH, named=False)
+    name = {"r_i": "lambda_i", "stretch": "lambda_z", "charge": "c"}[walk.by]
+    lo, hi = sorted((a, b))
+    try:  # tolerances relative to the cell's lower end, or to its upper one at c = 0
+        x = brent(f, lo, hi, BRANCH, ref=lo or hi, named=False)
     except ValueError as exc:  # a load NaN inside the cell: no state found there
         err = ConvergenceError(
             f"{what} is not resolved: the branch's load is not finite inside its scan's cell"

@@ -200,8 +200,11 @@ def _rising(rise, tube: Tube, force: bool, near) -> bool:
     ``rise`` (:func:`_rise` at the root) as on the walked part (the module docstring)?"""
     if rise is None:
         return False
-    if force and (near.tube.voltage == 0) == (tube.voltage == 0):  # the same stage
-        there = _near_rise(near)
+    if (near.tube.voltage == 0) == (tube.voltage == 0):  # the same stage
+        # as the neighbour's, not rising r_i: under stretch control too, a branch can run
+        # inward (fix23e), and every state continued on it was refused for a cold walk
+        # (check round 30 doubt 1: 0.1-1 s a state, against ~5 ms continued)
+        there = _near_rise(near, force)
         return there is not None and float(rise @ there) > 0
     return bool(rise[0] > 0)  # walked in rising r_i
 
@@ -232,16 +235,16 @@ def _rise(wall: Wall, tube: Tube, u, F, J, dp: float, force: bool) -> np.ndarray
     return t if np.all(np.isfinite(t)) and np.any(t != 0) else None
 
 
-def _near_rise(near) -> np.ndarray | None:
+def _near_rise(near, force: bool = True) -> np.ndarray | None:
     """:func:`_rise` at the neighbour's state on its own branch (kept by a continued one)."""
     if near._rise is not None:
         return near._rise
     old = near.tube
-    u = np.array([near.r_i, near.stretch])
+    u = np.array([near.r_i, near.stretch] if force else [near.r_i])
     branch = Branch(near._wall, "pressure", vbar=old.voltage, compiled=True)
     dp = old.inner_pressure - old.outer_pressure
-    F, J = _system(branch, u, dp, True)
-    return _rise(near._wall, old, u, F, J, dp, True)
+    F, J = _system(branch, u, dp, force)
+    return _rise(near._wall, old, u, F, J, dp, force)
 
 
 def _ideal_load_rate(wall: Wall, tube: Tube, r_i: float, lz: float) -> np.ndarray:
