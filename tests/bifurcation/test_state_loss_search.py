@@ -78,5 +78,8 @@ def test_no_loss_is_reported_where_states_exist():
         with pytest.raises(ConvergenceError, match="not established") as err:
             critical_value(TUBE, 6, 0, CONTROL)
     reached = float(err.value.args[0].split(" up to ")[1].split(",")[0])
-    assert 5.59 < reached < 5.6  # the last state resolved (margin 8.8e-4 there)
+    # where the states stop resolving (the face's margin ~8.8e-4 there): cold solves
+    # resolve at 5.6 and not at 5.6133; the march's search reads its boundary 5.6133 since
+    # fix23d's lock rule (below 5.6 before it, between cc5dcff and 9b2276c)
+    assert 5.59 < reached < 5.62
     assert not isinstance(err.value, BaseStateError)
