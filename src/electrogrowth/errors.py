@@ -140,6 +140,20 @@ class ConvergenceError(ElectrogrowthError, RuntimeError):
     )
 
 
+class StartUnresolved(ConvergenceError):
+    """Which way a voltage branch leaves its uncharged start is not resolved: within the
+    probe's reach (basestate/start_probe.py, 1e-2 of r_i) the wall's traction residual stays
+    within the rounding of the stresses that cancel in it (a state next to an inflation
+    asymptote, where the traction is flat). The state may exist: neither a loss nor a field
+    that closes the bore (a march reads it as unresolved, bifurcation/state_loss.py)."""
+
+    remedy = Remedy(
+        "none from a tolerance: the wall's traction is flat to rounding at this uncharged"
+        " state (next to the inner pressure's asymptote); a pressure farther from that"
+        " asymptote is resolved"
+    )
+
+
 #: a collocation value that is not certified: the other method checks it (ConvergenceError's
 #: own remedy names collocation, the method that was just used; probe 13a D2)
 CHECK_WITH_IMPEDANCE = Remedy(

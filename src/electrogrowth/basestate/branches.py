@@ -18,6 +18,7 @@ import numpy as np
 
 from ..continuation.events import BRANCH, BRANCH_STRETCH, brent
 from .plies import Wall, illinois
+from .start_probe import rounding
 
 # -- the two branches -------------------------------------------------------------------------
 
@@ -238,6 +239,15 @@ class Branch:
         f0 = f(np.zeros(1))[0][0]
         Q = self.wall.electric(r_i, lz)[0]
         return bool((f(2.0 * abs(f0) / Q)[0][0] - f0) * f0 < 0)
+
+    def unbalanced(self, r_i: float, lz: float) -> tuple[float, float]:
+        """(T - dp at q = 0, its rounding level: start_probe.rounding) at one point: what the
+        probe of the voltage branch's start reads (thresholds.opens, thresholds.inward)."""
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            T, scale, _, _ = self.wall.integrals(
+                np.array([r_i]), np.array([lz]), 0.0, self.compiled
+            )
+        return float(T[0]) - self.dp, float(rounding(scale[0], self.dp))
 
     def _residual(self, x: float, lz: float) -> float:
         return float(self.point(np.array([x]), np.array([lz]))["residual"][0])

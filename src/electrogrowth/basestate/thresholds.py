@@ -29,7 +29,7 @@ from ..model.layers import Tube
 from .branches import Branch, clean
 from .ellipticity import check_in_plane
 from .plies import Ply, Wall, choose_nodes, numeric_energy, start_guess
-from .voltage import FIRST_STEP
+from .start_probe import probe_step
 
 #: branch scans: r_start 1.08^k up to 1e3 r_start, eight points evaluated at a time
 BRANCH_STEPS = GeometricGrid(ratio=1.08, span=1e3, batch=8)
@@ -279,21 +279,29 @@ def opens(walk: Chart, x0: float, lz0: float) -> bool:
     residual T - (P_i - P_o) of (*) is 0 at q = c^2 = 0 and rises with r_i, so a charged
     state past the start needs T to fall with q. Where the energy's field raises it
     (dT/dq > 0: an I6 term with a negative weight, `(I1-3)/2 + 0.2*I4 + 0.4*I5 - 0.1*I6`
-    at lambda_z <= 0.49) no charge balances it (the load is NaN, read FIRST_STEP past the
-    start, as for one layer): the field closes the bore, the branch may run inward
-    (:func:`inward`). T is a
+    at lambda_z <= 0.49) no charge balances it (the load is NaN, read one probe step past
+    the start, as for one layer): the field closes the bore, the branch may run inward
+    (:func:`inward`). The step is the first of 1e-6, 1e-5, ... whose residual at q = 0 is
+    resolved (start_probe.probe_step): next to an inflation asymptote T is flat, and 1e-6
+    from the start it read ~6e-16 of a cancelling 1.39, noise taken for the start itself
+    (check round 32). T is a
     sum over the layers, so identical layers read exactly what one layer does. A point
     that is not finite because the energy ends there (a Gent layer at its lock) is no
     closing field: the walk reads it.
 
-    The probe keeps the start's other coordinate (lambda_z moves by O(FIRST_STEP) along
+    The probe keeps the start's other coordinate (lambda_z moves by O(the step) along
     the branch): under force control a field that closes the bore outward of the start
     leaves no charge there at any lambda_z, and balancing the axial force found no residual
     to balance; read as "no lambda_z", the walk then bisected its first cell for a lock,
     every step a failed balance (check round 28, res_61 #12: F = 247, lambda_z = 11, 65 s
     a threshold), where the branch runs inward (fix23f's probe)."""
     u0, v0 = walk.start(x0, lz0)
-    pt = walk.point(u0 * (1.0 + walk.step * FIRST_STEP), v0)
+
+    def read(h: float) -> tuple[float, float]:
+        return walk.branch.unbalanced(*walk.state(u0 * (1.0 + walk.step * h), v0))
+
+    h = probe_step(read, _start_named(x0, lz0))
+    pt = walk.point(u0 * (1.0 + walk.step * h), v0)
     if np.isfinite(walk.branch.value(pt)[0]):
         # the branch leaving the start has a charge that vanishes there, so a small charge
         # moves T towards P_i - P_o; a charge found where it moves T away is a root detached
@@ -313,8 +321,19 @@ def inward(walk: Chart, x0: float, lz0: float) -> Chart | None:
     None where no charge balances on that side either (the field closes the bore)."""
     back = dataclasses.replace(walk, step=-walk.step)
     u0, v0 = back.start(x0, lz0)
-    load = walk.branch.value(clean(back.at([u0 * (1.0 + back.step * FIRST_STEP)], v0)))[0]
+    probed: dict[float, dict] = {}  # the points read, by step
+
+    def read(h: float) -> tuple[float, float]:
+        probed[h] = pt = clean(back.at([u0 * (1.0 + back.step * h)], v0))
+        return walk.branch.unbalanced(float(pt["r_i"][0]), float(pt["stretch"][0]))
+
+    load = walk.branch.value(probed[probe_step(read, _start_named(x0, lz0))])[0]
     return back if np.isfinite(load) and load > 0 else None
+
+
+def _start_named(x0: float, lz0: float) -> str:
+    """The voltage branch's start, as an error names it."""
+    return f"its uncharged start r_i = {x0:.12g} (lambda_z = {lz0:.12g})"
 
 
 def _energy_ends(chart: Chart, u: float, v: float) -> bool:

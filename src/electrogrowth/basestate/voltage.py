@@ -33,6 +33,7 @@ from ..errors import OVERFLOW, BaseStateError, ConvergenceError, ParameterError
 from ..model.materials import Material, shorten
 from .ellipticity import check_in_plane
 from .neo_hookean import nh_asymptote
+from .start_probe import probe_step, rounding
 
 GAUSS_ORDERS = (16, 24, 32, 48, 64, 96, 128, 192, 256, 384)  # Gauss-Legendre node counts tried
 _SCAN_RATIO, _SCAN_SPAN = 1.08, 1e3  # threshold scan: lambda_i0 1.08^k up to 1e3 lambda_i0
@@ -426,10 +427,6 @@ def _threshold(material, outer_radius, growth, stretch, rtol) -> _Threshold:
     return _Threshold(value=float(t[-1]), kind="asymptote", lambda_i=math.inf, **out)
 
 
-#: the branch is read this far above lambda_i0 (relative) before the scan's first step (the
-#: layered walk's start too: thresholds.opens)
-FIRST_STEP = 1e-6
-
 #: why a "closing" threshold is 0 (:func:`_rises`, thresholds.opens)
 CLOSING = (
     "this energy's field closes the bore and no charge balances it inward either (threshold"
@@ -444,8 +441,9 @@ def _rises(tube: UniformWall, lam0: float) -> bool:
     rising in lambda_i does not exist; it may run inward (:func:`_runs_inward`), else the
     threshold is 0 (kind "closing"). The scan's steps of 8 % jumped that gap to states of
     another branch beyond it: a locking stretch, an unbounded branch, or a limit point
-    whose interpolant met the gap ("internal error: LinAlgError", check round 24)."""
-    near = np.array([lam0 * (1.0 + FIRST_STEP)])
+    whose interpolant met the gap ("internal error: LinAlgError", check round 24). Read
+    at the first step whose residual is resolved (start_probe.probe_step)."""
+    near = np.array([lam0 * (1.0 + _probe(tube, lam0, 1))])
     if not tube.in_domain(near)[0]:  # a lock right there (Gent), not a closing field
         return True
     return bool(np.isfinite(tube.voltage(near)[0]))
@@ -456,8 +454,24 @@ def _runs_inward(tube: UniformWall, lam0: float) -> bool:
     energy's field closes the bore above it (:func:`_rises`), a field that raises the
     residual of (*) balances it below (`(I1-3)/2 + 0.2*I4 + 0.4*I5 - 0.1*I6` at lambda_z
     0.45: Vbar rises as lambda_i falls, to a limit point 1.0309 at lambda_i 1.3193)."""
-    v = tube.voltage(np.array([lam0 * (1.0 - FIRST_STEP)]))[0]
+    v = tube.voltage(np.array([lam0 * (1.0 - _probe(tube, lam0, -1))]))[0]
     return bool(np.isfinite(v) and v > 0)
+
+
+def _probe(tube: UniformWall, lam0: float, side: int) -> float:
+    """The probe's step from lambda_i0 on ``side`` (+1 above, -1 below) whose residual M of
+    (*) at q = 0 is resolved against its stress scale (start_probe.probe_step; NaN past
+    the energy's domain, where the step stands)."""
+
+    def read(h: float) -> tuple[float, float]:
+        lam = np.array([lam0 * (1.0 + side * h)])
+        if not tube.in_domain(lam)[0]:
+            return math.nan, math.nan
+        with np.errstate(**_QUIET):
+            m, scale = tube._hoop_or_nan(lam, 0.0)
+        return float(m[0]), float(rounding(scale[0], 0.0))
+
+    return probe_step(read, f"lambda_i0 = {lam0:.12g}")
 
 
 def _limit_point(tube: UniformWall, lam0: float, lam: np.ndarray, v: np.ndarray) -> _Threshold:
