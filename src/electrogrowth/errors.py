@@ -143,14 +143,15 @@ class ConvergenceError(ElectrogrowthError, RuntimeError):
 class StartUnresolved(ConvergenceError):
     """Which way a voltage branch leaves its uncharged start is not resolved: within the
     probe's reach (basestate/start_probe.py, 1e-2 of r_i) the wall's traction residual stays
-    within the rounding of the stresses that cancel in it (a state next to an inflation
-    asymptote, where the traction is flat). The state may exist: neither a loss nor a field
-    that closes the bore (a march reads it as unresolved, bifurcation/state_loss.py)."""
+    within the rounding of the stresses that cancel in it (the traction is flat there: next
+    to an inflation asymptote, or where the wall's in-plane shear modulus nearly vanishes).
+    The threshold is then kind "unresolved"; a charged state may exist: neither a loss nor
+    a field that closes the bore (a march reads it as unresolved, bifurcation/state_loss.py)."""
 
     remedy = Remedy(
         "none from a tolerance: the wall's traction is flat to rounding at this uncharged"
-        " state (next to the inner pressure's asymptote); a pressure farther from that"
-        " asymptote is resolved"
+        " state (next to the inner pressure's asymptote, or to a loss of in-plane"
+        " ellipticity); loads farther from there are resolved"
     )
 
 

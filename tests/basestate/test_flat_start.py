@@ -144,3 +144,6 @@ def test_a_start_no_step_resolves_is_named_unresolved():
         solve_base_state(_tube(1e-13))
     assert isinstance(err.value, ConvergenceError) and not isinstance(err.value, BaseStateError)
     assert "closes the bore" not in str(err.value) and "tolerance" in err.value.remedy
+    # uncharged, that state solves, its threshold named unresolved (main: "closing")
+    state = solve_base_state(_tube(1e-13, 0.0))
+    assert (state.threshold_kind, state.voltage_threshold) == ("unresolved", 0.0)

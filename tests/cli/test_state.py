@@ -277,3 +277,16 @@ def test_a_state_whose_stresses_overflow_keeps_its_own_remedy(capsys):
     assert status == 2 and out == "" and err.count("\n") == 1, err
     assert "overflow a double" in err and "less load, growth or stretch" in err, err
     assert "rtol" not in err and "outside the domain" not in err, err
+
+
+def test_a_flat_start_is_named_unresolved(capsys):
+    # check round 32 D1's tube 1e-13 short of its inflation asymptote ln 2, where no probe
+    # step resolves the traction: uncharged it solves, its threshold named unresolved (main:
+    # "closing"); charged, a named error, not "closes the bore"
+    energy = "(I1-3)/2 + I5/2*(1 + 2.0*(I1-3)) + 0.05*I5**2"
+    tube = ["state", "--outer-radius", "2", "--energy", energy]
+    tube += ["--inner-pressure", repr(math.log(2) - 1e-13)]
+    status, out, _ = run(capsys, *tube)
+    assert status == 0 and "Vbar threshold               0 (unresolved:" in out
+    status, _, err = run(capsys, *tube, "--voltage", "0.3")
+    assert status == 2 and "is not resolved" in err and "closes the bore" not in err

@@ -18,12 +18,20 @@ import math
 
 import numpy as np
 
-from ..errors import BaseStateError, Beyond, BranchNotFollowed, ConvergenceError, ParameterError
+from ..errors import (
+    BaseStateError,
+    Beyond,
+    BranchNotFollowed,
+    ConvergenceError,
+    ParameterError,
+    StartUnresolved,
+)
 from ..model.layers import Tube
 from .branches import Branch, clean
 from .force_box import check_force_when_lost, check_solved_stretch
 from .layered_state import LayeredState
 from .plies import ORDERS
+from .start_probe import UNRESOLVED
 from .thresholds import LockedSearch, Threshold, prepare, solve_on, threshold
 from .voltage import CLOSING
 from .warm import continued
@@ -81,6 +89,8 @@ def solve_layered_state(tube: Tube, *, rtol: float = 1e-12, near=None, guess=Non
             thr = prep.voltage_to(tube.voltage)
             if thr.kind == "closing":  # as a uniform tube's (uniform.py)
                 raise BranchNotFollowed(f"Vbar = {tube.voltage:.12g} for this tube: {CLOSING}")
+            if thr.kind == "unresolved":  # the start's probe: as a uniform tube's
+                raise StartUnresolved(f"Vbar = {tube.voltage:.12g}: {UNRESOLVED}")
             if thr.kind and not tube.voltage < thr.value:
                 raise BaseStateError(
                     f"Vbar = {tube.voltage:.12g} is at or above the voltage threshold"

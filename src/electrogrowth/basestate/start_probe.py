@@ -8,9 +8,13 @@ where |f| stands well above the rounding of the magnitudes that cancel in it: th
 integral's scale int (|tau_1| + |tau_2|) dr / r and |P_i - P_o|, each carrying ~eps of its
 size. Next to an inflation asymptote the traction is flat: a neo-Hookean wall [1, 2] at
 P_i = ln 2 - d has dT/d ln r_i = 4 d, so at d = 1.6e-10 a step of 1e-6 reads f ~ 6e-16,
-two eps of the cancelling 1.39, whose sign is noise (check round 32). The step therefore
-grows tenfold from FIRST_STEP until the reading is resolved, up to REACH, still well inside
-the walk's first 8 % step; where it is not resolved even there, :class:`StartUnresolved`.
+two eps of the cancelling 1.39, whose sign is noise (check round 32); so is a uniform wall
+whose in-plane shear modulus nearly vanishes (lambda_z -> sqrt 6 for `(1.2 (I1-3) - 0.2
+(I2-3))/2 + I5/2`, tests/bifurcation/test_torsion_onset.py). The step therefore grows
+tenfold from FIRST_STEP until the reading is resolved, up to REACH, still well inside the
+walk's first 8 % step; where it is not resolved even there, StartUnresolved, which the
+thresholds turn into kind "unresolved" (value 0: no charged state followed, as "closing";
+a charged state asked for raises it, the uncharged one solves).
 """
 
 from __future__ import annotations
@@ -35,6 +39,13 @@ REACH = 1e-2
 RESOLVED = 1e3
 
 _EPS = float(np.finfo(float).eps)
+
+#: why an "unresolved" threshold is 0 (as CLOSING names a "closing" one)
+UNRESOLVED = (
+    "which way this tube's voltage branch leaves its uncharged state is not resolved: the"
+    f" wall's traction is flat to rounding within {REACH:g} of it (threshold 0, kind"
+    " unresolved): no charged state is followed"
+)
 
 
 def rounding(scale, dp) -> np.ndarray:

@@ -24,7 +24,15 @@ from numpy.polynomial import chebyshev as cheb
 
 from ..continuation.events import BRANCH, LOCK, Remembered, bisect, brent, reached, turned
 from ..continuation.path import GeometricGrid
-from ..errors import NEAR_LOCK, OVERFLOW, BaseStateError, Beyond, ConvergenceError, Remedy
+from ..errors import (
+    NEAR_LOCK,
+    OVERFLOW,
+    BaseStateError,
+    Beyond,
+    ConvergenceError,
+    Remedy,
+    StartUnresolved,
+)
 from ..model.layers import Tube
 from .branches import Branch, clean
 from .ellipticity import check_in_plane
@@ -47,7 +55,9 @@ class Threshold:
     ``value`` as lambda_i -> inf), "locking" (the energy ends at lambda_i, the load unbounded
     before it, value = inf), "none" (the load rises without bound, value = inf) or, for the
     voltage, "closing" (no charge balances the traction on either side of the start, value
-    0 there: :func:`opens`, :func:`inward`); lambda_i and stretch (lambda_z) at
+    0 there: :func:`opens`, :func:`inward`) or "unresolved" (which side a charge balances
+    it on is not resolved: the traction is flat to rounding at the start, start_probe.py;
+    value 0, no charged state followed); lambda_i and stretch (lambda_z) at
     the threshold (inf / the last scanned lambda_z for an asymptote).
     """
 
@@ -364,11 +374,16 @@ def threshold(
     the scan stops once it is crossed: kind "" (not lost before it), value nan, the grid
     brackets the target."""
     walk = chart(branch, x0, lz0, sign)
-    if control == "voltage" and sign > 0 and not opens(walk, x0, lz0):
-        walk = inward(walk, x0, lz0)
-        if walk is None:
+    if control == "voltage" and sign > 0:
+        try:
+            leaving = walk if opens(walk, x0, lz0) else inward(walk, x0, lz0)
+            kind = "closing"
+        except StartUnresolved:  # which side is not resolved: no charged state followed
+            leaving, kind = None, "unresolved"
+        if leaving is None:
             start = (np.array([x0]), np.array([lz0]), np.zeros(1))
-            return Threshold(control, 0.0, "closing", x0, lz0, 0.0, start, "r_i")
+            return Threshold(control, 0.0, kind, x0, lz0, 0.0, start, "r_i")
+        walk = leaving
     walk, us, vs, loads, stop = _walk(walk, x0, lz0, sense=sign, target=target)
     guess = _guess(us, vs)
     out = lambda v: math.sqrt(v) if control == "voltage" else v  # noqa: E731

@@ -48,7 +48,9 @@ def voltage_threshold(params: Tube) -> tuple[float, str, float]:
         or where the stresses exceed the largest double (an exponential energy); "none": Vbar
         rises without bound as lambda_i -> inf (lambda_i = inf); "closing": no charge
         balances the traction on either side of lambda_i0 (a branch that runs inward, Vbar
-        rising as lambda_i falls, is classified as any other): 0, lambda_i = lambda_i0.
+        rising as lambda_i falls, is classified as any other): 0, lambda_i = lambda_i0;
+        "unresolved": which side a charge balances it on is not resolved, the traction
+        flat to rounding at lambda_i0 (next to an inflation asymptote): 0, as closing.
         The kinds of a layered tube's :class:`~electrogrowth.basestate.thresholds.Threshold`.
         ``params.voltage`` is ignored.
 

@@ -26,9 +26,10 @@ import math
 
 import numpy as np
 
-from ..errors import BaseStateError, Beyond, BranchNotFollowed, ConvergenceError
+from ..errors import BaseStateError, Beyond, BranchNotFollowed, ConvergenceError, StartUnresolved
 from ..model.layers import Tube
 from . import neo_hookean
+from .start_probe import UNRESOLVED
 from .uniform_state import UniformState
 from .voltage import CLOSING, GAUSS_ORDERS, UniformWall, cell_root, threshold_info
 
@@ -50,6 +51,8 @@ def solve_uniform(tube: Tube, rtol: float) -> UniformState:
         )
         if info.kind == "closing":
             raise BranchNotFollowed(f"Vbar = {target:.12g} at {where}: {CLOSING}")
+        if info.kind == "unresolved":
+            raise StartUnresolved(f"Vbar = {target:.12g} at {where}: {UNRESOLVED}")
         raise BaseStateError(
             f"Vbar = {target:.12g} is at or above the threshold Vbar = {info.value:.12g}"
             f" ({info.kind}) for {where}; no axisymmetric state",

@@ -29,7 +29,7 @@ import numpy as np
 from numpy.polynomial import chebyshev as cheb
 
 from ..brent import brentq
-from ..errors import OVERFLOW, BaseStateError, ConvergenceError, ParameterError
+from ..errors import OVERFLOW, BaseStateError, ConvergenceError, ParameterError, StartUnresolved
 from ..model.materials import Material, shorten
 from .ellipticity import check_in_plane
 from .neo_hookean import nh_asymptote
@@ -262,6 +262,7 @@ class _Threshold:
     value: float  # Vbar threshold (inf if none)
     kind: str  # "asymptote", "limit point", "locking", "none" (as a layered Threshold) or
     # "closing" (no charged state on either side of lambda_i0: value 0, lambda_i = lambda_i0)
+    # or "unresolved" (which side is not resolved, start_probe.py: as closing otherwise)
     lambda_i: float  # lambda_i at the threshold (inf: asymptote; the branch's end: "locking")
     error: float  # estimated absolute error of value
     nodes: int  # Gauss-Legendre nodes meeting rtol (0: neo-Hookean closed form, no quadrature)
@@ -383,9 +384,12 @@ def _threshold(material, outer_radius, growth, stretch, rtol) -> _Threshold:
     where = f"g = {growth:g}, lambda_z = {stretch:g}, Rbar_o = {outer_radius:g}"
     check_in_plane(material, stretch / growth, where)
     tube = UniformWall(material, outer_radius, growth, stretch, nodes)
-    step = 1 if _rises(tube, lam0) else -1 if _runs_inward(tube, lam0) else 0
-    if not step:  # no charged state on either side of lambda_i0
-        return _Threshold(lam0, 0.0, "closing", lam0, 0.0, nodes, np.array([lam0]), np.zeros(1))
+    try:
+        step, kind = 1 if _rises(tube, lam0) else -1 if _runs_inward(tube, lam0) else 0, "closing"
+    except StartUnresolved:  # which side is not resolved: no charged state followed
+        step, kind = 0, "unresolved"
+    if not step:  # no charged state on either side of lambda_i0 (or not resolved)
+        return _Threshold(lam0, 0.0, kind, lam0, 0.0, nodes, np.array([lam0]), np.zeros(1))
     k = np.arange(0, math.ceil(math.log(_SCAN_SPAN, _SCAN_RATIO)) + 1)
     lam = lam0 * _SCAN_RATIO ** (step * k)
     v = np.concatenate([[0.0], tube.voltage(lam[1:])])

@@ -21,10 +21,11 @@ from collections.abc import Callable
 
 import numpy as np
 
+from ..basestate.start_probe import UNRESOLVED
 from ..basestate.tube import solve_base_state, threshold
 from ..basestate.voltage import CLOSING
 from ..continuation.events import scaled
-from ..errors import NEAR_LOCK, BranchNotFollowed, ConvergenceError
+from ..errors import NEAR_LOCK, BranchNotFollowed, ConvergenceError, StartUnresolved
 from ..model.builtin_energies import BuiltinEnergy
 from ..model.layers import Tube
 
@@ -255,6 +256,8 @@ def _load_threshold(tube: Tube, name: str) -> float:
         thr = threshold(tube, "voltage")
         if thr.kind == "closing":  # no charged state followed: not lost either
             raise BranchNotFollowed(f"Vbar = {tube.voltage:.12g}: {CLOSING}")
+        if thr.kind == "unresolved":  # nor where the start's side is not resolved
+            raise StartUnresolved(f"Vbar = {tube.voltage:.12g}: {UNRESOLVED}")
         return thr.value
     return threshold(dataclasses.replace(tube, voltage=0.0), "pressure").value
 

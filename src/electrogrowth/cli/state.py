@@ -101,6 +101,11 @@ def _threshold_text(rec: dict) -> str:
     thr, kind, lam = rec["voltage_threshold"], rec["threshold_kind"], rec["threshold_lambda_i"]
     if kind == "closing":
         return "0 (closing: this energy's field closes the bore; no charged state is followed)"
+    if kind == "unresolved":
+        return (
+            "0 (unresolved: the wall's traction is flat to rounding at the uncharged state;"
+            " which way a charge moves it is not resolved, no charged state is followed)"
+        )
     if kind == "locking":
         return f"none before the locking stretch lambda_i = {lam:.12g} (locking)"
     if thr is None:

@@ -47,7 +47,7 @@ def figure4(
         for color, g in zip(COLORS, growths):
             p = Tube.uniform(outer_radius=outer_radius, growth=g, stretch=lz, material=material)
             thr, kind, lam_thr = voltage_threshold(p)
-            if kind == "closing":  # no charged state on the branch followed: nothing to draw
+            if kind in ("closing", "unresolved"):  # no charged state followed: nothing to draw
                 continue
             lam0 = solve_base_state(p).lambda_i
             top = min(max_lambda_i, lam_thr * (1 - 1e-9))  # a limit point or locking
