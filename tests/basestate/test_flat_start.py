@@ -27,7 +27,7 @@ import pytest
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
-from electrogrowth import Layer, Material, Tube, solve_base_state
+from electrogrowth import Layer, Material, Tube, solve_base_state, threshold
 from electrogrowth.basestate import start_probe, thresholds, voltage
 from electrogrowth.basestate.start_probe import FIRST_STEP, RESOLVED
 from electrogrowth.basestate.thresholds import prepare
@@ -136,6 +136,17 @@ def test_an_ordinary_start_keeps_the_first_step():
     wall = voltage.UniformWall(i6, 2.0, 1.0, 0.45)
     lam0 = math.sqrt(1.0 / 0.45)
     assert voltage._probe(wall, lam0, 1) == voltage._probe(wall, lam0, -1) == FIRST_STEP
+
+
+def test_an_ideal_dielectric_keeps_the_first_step_where_its_wall_is_flat():
+    # its charge c^2 ~ M is finite whatever M reads, so the branch rises as it always read:
+    # at lambda_z = sqrt 6 (1 - 1e-13) this wall's in-plane modulus is ~0 and M is flat
+    # (no probe step resolves it), and the limit point on the scan's grid is main's
+    mrneg = Material("mrneg", "(1.2*(I1-3) - 0.2*(I2-3))/2 + I5/2")
+    tube = Tube((Layer(1.4, material=mrneg),), length=2.0)
+    thr = threshold(tube.at("stretch", math.sqrt(6.0) * (1 - 1e-13)), "voltage")
+    assert thr.kind == "limit point"
+    assert thr.value == pytest.approx(2.010101071345758e-07, rel=1e-9)  # main's
 
 
 def test_a_start_no_step_resolves_is_named_unresolved():

@@ -37,7 +37,7 @@ from ..model.layers import Tube
 from .branches import Branch, clean
 from .ellipticity import check_in_plane
 from .plies import Ply, Wall, choose_nodes, numeric_energy, start_guess
-from .start_probe import probe_step
+from .start_probe import FIRST_STEP, probe_step
 
 #: branch scans: r_start 1.08^k up to 1e3 r_start, eight points evaluated at a time
 BRANCH_STEPS = GeometricGrid(ratio=1.08, span=1e3, batch=8)
@@ -310,7 +310,7 @@ def opens(walk: Chart, x0: float, lz0: float) -> bool:
     def read(h: float) -> tuple[float, float]:
         return walk.branch.unbalanced(*walk.state(u0 * (1.0 + walk.step * h), v0))
 
-    h = probe_step(read, _start_named(x0, lz0))
+    h = _step(walk, read, x0, lz0)
     pt = walk.point(u0 * (1.0 + walk.step * h), v0)
     if np.isfinite(walk.branch.value(pt)[0]):
         # the branch leaving the start has a charge that vanishes there, so a small charge
@@ -337,13 +337,20 @@ def inward(walk: Chart, x0: float, lz0: float) -> Chart | None:
         probed[h] = pt = clean(back.at([u0 * (1.0 + back.step * h)], v0))
         return walk.branch.unbalanced(float(pt["r_i"][0]), float(pt["stretch"][0]))
 
-    load = walk.branch.value(probed[probe_step(read, _start_named(x0, lz0))])[0]
+    if (h := _step(walk, read, x0, lz0)) not in probed:
+        read(h)
+    load = walk.branch.value(probed[h])[0]
     return back if np.isfinite(load) and load > 0 else None
 
 
-def _start_named(x0: float, lz0: float) -> str:
-    """The voltage branch's start, as an error names it."""
-    return f"its uncharged start r_i = {x0:.12g} (lambda_z = {lz0:.12g})"
+def _step(walk: Chart, read, x0: float, lz0: float) -> float:
+    """The probe's step from the start (x0, lz0) (start_probe.probe_step); FIRST_STEP for
+    ideal dielectrics, whose answer does not hang on the reading: T = M - q Q, so a charge
+    balances wherever T > P_i - P_o and the branch opens (Branch.leaves), as it always
+    read (a neo-Hookean tube next to its inflation asymptote under a voltage: fix24d)."""
+    if walk.branch.wall.ideal:
+        return FIRST_STEP
+    return probe_step(read, f"its uncharged start r_i = {x0:.12g} (lambda_z = {lz0:.12g})")
 
 
 def _energy_ends(chart: Chart, u: float, v: float) -> bool:

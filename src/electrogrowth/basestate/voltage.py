@@ -33,7 +33,7 @@ from ..errors import OVERFLOW, BaseStateError, ConvergenceError, ParameterError,
 from ..model.materials import Material, shorten
 from .ellipticity import check_in_plane
 from .neo_hookean import nh_asymptote
-from .start_probe import probe_step, rounding
+from .start_probe import FIRST_STEP, probe_step, rounding
 
 GAUSS_ORDERS = (16, 24, 32, 48, 64, 96, 128, 192, 256, 384)  # Gauss-Legendre node counts tried
 _SCAN_RATIO, _SCAN_SPAN = 1.08, 1e3  # threshold scan: lambda_i0 1.08^k up to 1e3 lambda_i0
@@ -465,7 +465,13 @@ def _runs_inward(tube: UniformWall, lam0: float) -> bool:
 def _probe(tube: UniformWall, lam0: float, side: int) -> float:
     """The probe's step from lambda_i0 on ``side`` (+1 above, -1 below) whose residual M of
     (*) at q = 0 is resolved against its stress scale (start_probe.probe_step; NaN past
-    the energy's domain, where the step stands)."""
+    the energy's domain, where the step stands). FIRST_STEP for an ideal dielectric: its
+    charge, c^2 = 2 M r_i^2 r_o^2 / (r_o^2 - r_i^2), is finite whatever M reads, so the
+    branch rises as it always read (where the in-plane modulus vanishes, lambda_z -> sqrt 6
+    in tests/bifurcation/test_torsion_onset.py, M is flat and its limit point ~ sqrt of
+    the distance is read on the scan's grid, resolved there)."""
+    if energy_kind(tube.material) != "general":
+        return FIRST_STEP
 
     def read(h: float) -> tuple[float, float]:
         lam = np.array([lam0 * (1.0 + side * h)])
