@@ -21,6 +21,7 @@ import numpy as np
 
 from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError
+from ..incremental import direction_search
 from ..incremental.halfspace import (
     FaceProblem,
     InterfaceProblem,
@@ -28,9 +29,10 @@ from ..incremental.halfspace import (
     surface_radius,
     surfaces,
 )
+from ..incremental.stroh_limit import _weights
 
 HALF_PI = 0.5 * math.pi
-ENDPOINT_SLACK = 1e-14  # f (|f| <= 1) equal to rounding: keep the exact endpoint psi
+ENDPOINT_SLACK = direction_search.ENDPOINT_SLACK  # f equal to rounding: the exact endpoint
 MARCH_REFINE = 0.05  # march: refine the psi minimum only where the grid minimum is below
 FACE_TIE = 1e-13  # faces whose targets agree this closely (homogeneous tube): the first
 
@@ -108,15 +110,59 @@ def worst_direction(
     *,
     grid: int = 25,
     psi_tol: float | None = 1e-10,
+    refine_below: float = math.inf,
 ) -> tuple[float, float]:
     """(min over psi in [0, pi/2] of sign * f, its psi) at one face or interface.
 
     A grid of ``grid`` directions (both endpoints included), then a bounded minimisation
     between the neighbours of each of the (up to three) lowest grid minima; an endpoint
     minimum is kept exactly when no interior point is lower (psi_tol None: the grid
-    minimum alone). Returns (NaN, psi) if the half-space is not strongly elliptic in some
-    grid direction psi.
+    minimum alone; ``refine_below``: the grid minimum alone where it is above this).
+    Returns (NaN, psi) if the half-space is not strongly elliptic in some grid direction
+    psi. Compiled (incremental/direction_search.py); :func:`worst_direction_numpy` is its
+    twin, to the last bit.
     """
+    psi, w = _grid(grid)
+    if isinstance(problem, InterfaceProblem):
+        below, above, inner, pressure = problem.below, problem.above, False, 0.0
+    else:
+        below = above = problem.expansion
+        inner, pressure = problem.face == "inner", problem.pressure
+    v, p = direction_search.worst_direction(
+        below,
+        above,
+        isinstance(problem, InterfaceProblem),
+        inner,
+        float(pressure),
+        float(sign),
+        psi,
+        w,
+        0.0 if psi_tol is None else float(psi_tol),
+        float(refine_below),
+    )
+    return float(v), float(p)
+
+
+@functools.lru_cache(maxsize=8)
+def _grid(grid: int) -> tuple[np.ndarray, np.ndarray]:
+    """The grid of ``grid`` directions on [0, pi/2] and its weights (stroh_limit._weights),
+    computed as the twin computes them, once (read-only)."""
+    psi = np.linspace(0.0, HALF_PI, grid)
+    w = np.ascontiguousarray(_weights(psi))
+    psi.setflags(write=False)
+    w.setflags(write=False)
+    return psi, w
+
+
+def worst_direction_numpy(
+    problem: FaceProblem | InterfaceProblem,
+    sign: float = 1.0,
+    *,
+    grid: int = 25,
+    psi_tol: float | None = 1e-10,
+) -> tuple[float, float]:
+    """:func:`worst_direction` by NumPy on the grid and SciPy's bounded minimiser: the slow
+    twin the compiled route is tested against."""
     psi = np.linspace(0.0, HALF_PI, grid)
     F = sign * problem.target(psi)
     if np.isnan(F).any():
@@ -124,7 +170,7 @@ def worst_direction(
     lower = np.r_[True, F[1:] <= F[:-1]]  # F[i] <= left neighbour
     upper = np.r_[F[:-1] <= F[1:], True]  # F[i] <= right neighbour
     minima = np.nonzero(lower & upper)[0]
-    minima = minima[np.argsort(F[minima])][:3]
+    minima = minima[np.argsort(F[minima], kind="stable")][:3]  # ties: the first index
     best_v, best_p = float(F[minima[0]]), float(psi[minima[0]])
 
     if psi_tol is None:  # the grid alone
@@ -197,12 +243,14 @@ class Sampler:
         best = Sample(math.inf, None, None)
         for face in self.faces:
             problem = surface_problem(state, face)
-            if direction is None:
-                v, psi = worst_direction(problem, signs[face], grid=res.grid, psi_tol=None)
-                if not v > self.refine_below:  # close to zero (or NaN): refine
-                    v, psi = worst_direction(
-                        problem, signs[face], grid=res.grid, psi_tol=res.psi_tol
-                    )
+            if direction is None:  # refined where close to zero (or NaN)
+                v, psi = worst_direction(
+                    problem,
+                    signs[face],
+                    grid=res.grid,
+                    psi_tol=res.psi_tol,
+                    refine_below=self.refine_below,
+                )
             else:
                 psi = direction(state, face)
                 v = float(signs[face] * problem.target(psi))
