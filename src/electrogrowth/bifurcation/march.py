@@ -6,7 +6,8 @@ Shared by the single-mode solver (bifurcation.critical_value) and the mode scan
 target keeps that sign until the mode's first bifurcation.
 
 The control parameter x moves from its start in steps that grow geometrically (0.4 % of
-the scale, doubling up to 5 %) but never beyond 0.7 of the distance at which the linear
+the scale, doubling up to 5 %; from FAR_FROM scales on, up to FAR of the distance marched
+where every mode's own samples allow it) but never beyond 0.7 of the distance at which the linear
 extrapolation of any mode's target reaches zero (a mode can be unstable only in a narrow
 window, which a long step would jump over; once that zero's prediction has settled below the
 finest step, one step goes just past it: docs/derivation.md section 7), and shrink when the
@@ -61,8 +62,14 @@ from .problem import DEFAULT_RTOL
 from .state_loss import Approach, approach_film, box_note, loss_at_end
 from .state_loss import threshold_between as _threshold_between
 
+#: from FAR_FROM scales past the start on, a march's steps, and the waits between a mode's
+#: samples, may grow to FAR of the distance marched, as far as every mode's own samples allow
+#: (predict.far_waits): a path with no threshold (a stiffening energy's voltage) runs to 1e3
+#: scales, 2e4 steps of 5 % of the scale. Within FAR_FROM the steps are as before: a growth
+#: path ends 5 scales from its start, a stretch in compression within 1
+FAR, FAR_FROM = 0.1, 5.0
 #: the mode march's step control: 0.4 % of the scale doubling up to 5 %, not below 1e-4
-MODE_STEPS = StepPolicy(smallest=1e-4)
+MODE_STEPS = StepPolicy(smallest=1e-4, far=FAR, far_from=FAR_FROM)
 #: the march of a single mode (critical_value): lambda_i is predicted from the last step, a
 #: jump is a bend of 5 % away from that prediction, and no step is proposed over which the
 #: prediction moves lambda_i by more than 8 % (a layered state is continued from its
@@ -76,7 +83,12 @@ MODE_STEPS = StepPolicy(smallest=1e-4)
 #: (tests/bifurcation/test_march_first_root.py)
 ONE_MODE_WAIT = 0.05
 ONE_MODE_STEPS = StepPolicy(
-    smallest=1e-4, predict_monitor=True, max_change=0.08, max_wait=ONE_MODE_WAIT
+    smallest=1e-4,
+    predict_monitor=True,
+    max_change=0.08,
+    max_wait=ONE_MODE_WAIT,
+    far=FAR,
+    far_from=FAR_FROM,
 )
 #: a mode is sampled at most this far (times the scale) after it falls due: the largest
 #: step of MODE_STEPS, with which the march samples every mode due at its next step
@@ -215,7 +227,10 @@ def first_bifurcations(
     )
     signed = views.signed
 
-    watch = EventWatch(x0, g0, sense, path.scale, steps.max_wait)
+    watch = EventWatch(
+        x0, g0, sense, path.scale, steps.max_wait, far=steps.far, far_from=steps.far_from,
+        late=LATE,
+    )  # fmt: skip
     step = Stepper(path, steps, state.lambda_i)
     # unresolved: the error to raise if no mode is found (states past the path's end exist
     # but do not resolve, next to a lock); stop: it ended the path at step.x; film: the wall

@@ -20,17 +20,21 @@ import dataclasses
 import math
 from collections.abc import Callable
 
+import numpy as np
+
 from ..continuation import events
 from ..continuation.path import ControlPath, Stepper, StepPolicy
+from ..continuation.predict import far_waits
 from ..errors import BaseStateError, ConvergenceError, ParameterError, UnstableAtStart
 from ..outcomes import Kind
 from .along import Elliptic, NearLock, SampleValue, StateAt, TubeAt
-from .march import control_path
+from .march import FAR, FAR_FROM, control_path
 from .state_loss import Approach, approach_film, loss_at_end, threshold_between
 
 #: the short-wave march's step control: as the mode march's, but down to 1e-6 of the scale
-#: (h is one continuous function: its zero may be approached closer)
-SURFACE_STEPS = StepPolicy(smallest=1e-6)
+#: (h is one continuous function: its zero may be approached closer); from FAR_FROM scales
+#: on, steps up to FAR of the distance marched where h's last three samples allow it
+SURFACE_STEPS = StepPolicy(smallest=1e-6, far=FAR, far_from=FAR_FROM)
 
 
 def locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, until=None):
@@ -111,7 +115,7 @@ def locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, unti
         hs.append(s.value)
         slope = (hs[-1] - hs[-2]) / (xs[-1] - xs[-2]) * path.sense
         limit = SURFACE_STEPS.safety * hs[-1] / -slope / scale if slope < 0 else math.inf
-        step.accept(x, state.lambda_i, limit)
+        step.accept(x, state.lambda_i, min(limit, _far_room(xs, hs, path) / scale))
         if step.film(state.lambda_i):  # the wall is a film: on toward its asymptote
             film = True
             if approach_film(at, params, solve_for, side, step, rtol) is None:
@@ -131,6 +135,18 @@ def locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, unti
     if threshold is not None:
         return Kind.THRESHOLD, threshold, None, near
     return Kind.NONE, math.nan, None, None
+
+
+def _far_room(xs, hs, path: ControlPath) -> float:
+    """How far past its last sample h may go unsampled, from FAR_FROM scales on: FAR of the
+    distance marched as far as the parabola through its last three samples allows
+    (predict.far_waits, as a mode's far wait), else the largest step; inf before."""
+    marched = path.sense * (xs[-1] - path.start)
+    if len(xs) < 3 or marched < SURFACE_STEPS.far_from * path.scale:
+        return math.inf
+    x, h = np.array(xs[:-4:-1])[:, None], np.array(hs[:-4:-1])[:, None]
+    base = SURFACE_STEPS.largest * path.scale
+    return float(far_waits(x, h, path.sense, FAR * marched, base)[0])
 
 
 def _retry(exc: Exception) -> bool:

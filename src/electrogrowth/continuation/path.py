@@ -5,23 +5,26 @@ value, the unknowns solved there: a base state, the critical values of some mode
 branch's load). Every march of the package is natural-parameter continuation: the step is
 taken in the control, and the unknowns are solved at the new value (:class:`Path`).
 
-The step control is one object per march, :class:`StepPolicy`: steps start at ``first``
-of the path's scale and at most double (``growth``) up to ``largest``, never beyond
-``safety`` of the distance at which the march's predictor (continuation.predict) expects
-the next event, and never below ``smallest`` (1e-4 for the mode march, 1e-6 for the
-short-wave march). A step is halved when the monitored unknown (lambda_i, the inner
-stretch) changes by more than ``max_jump`` (with ``predict_monitor``: bends that far away from
-its linear prediction, and a step is proposed only as far as the prediction moves it by
-``max_change``): near the voltage threshold lambda_i runs away
-and modes lose and regain stability within a tiny interval. When the state is lost between
-two steps the threshold is located (continuation.events.threshold_between) and approached
-with shrinking steps. A wall thinned to a film (lambda_i grown ``film``-fold) runs to an
-asymptote of the control (an inflation's pressure, a held voltage's threshold): the march
-goes on toward it (:meth:`Stepper.approach`) in steps that grow geometrically in lambda_i
-(``film_growth`` each, the gap to the asymptote falling by the power its observed order
-gives), until the gap is below what the value's tolerance can tell.
-:class:`Stepper` holds this, :class:`GeometricGrid` the fixed geometric steps of a
-base-state branch (in r_i, past its folds).
+The step control is one object per march, :class:`StepPolicy`: steps start at ``first`` of
+the path's scale and at most double (``growth``) up to ``largest``, never beyond ``safety``
+of the distance at which the march's predictor (continuation.predict) expects the next
+event, and never below ``smallest`` (1e-4 for the mode march, 1e-6 for the short-wave
+march); from ``far_from`` scales past the start, ``largest`` grows to ``far`` of the
+distance marched (a path with no threshold runs to 1e3 scales), as far as the march's event
+functions allow (continuation.predict.far_waits). A step is halved when the monitored
+unknown (lambda_i, the inner stretch) changes by more than ``max_jump`` (with
+``predict_monitor``: bends that far away from its linear prediction, and a step is proposed
+only as far as the prediction moves it by ``max_change``): near the voltage threshold
+lambda_i runs away and modes lose and regain stability within a tiny interval. When the
+state is lost between two steps the threshold is located
+(continuation.events.threshold_between) and approached with shrinking steps. A wall thinned
+to a film (lambda_i grown ``film``-fold) runs to an asymptote of the control (an inflation's
+pressure, a held voltage's threshold): the march goes on toward it
+(:meth:`Stepper.approach`) in steps that grow geometrically in lambda_i (``film_growth``
+each, the gap to the asymptote falling by the power its observed order gives), until the gap
+is below what the value's tolerance can tell. :class:`Stepper` holds this,
+:class:`GeometricGrid` the fixed geometric steps of a base-state branch (in r_i, past its
+folds).
 
 Arc-length continuation (post-buckling branches, which turn back in the control) plugs in
 beside :class:`Stepper`: a stepper whose ``propose`` returns a predicted :class:`Point`
@@ -103,16 +106,31 @@ class StepPolicy:
     #: an event function is sampled at least this often (times the scale): see
     #: predict.EventWatch; a window of instability narrower than it may be missed
     max_wait: float = 0.25
+    #: from ``far_from`` scales past the start on, the largest step is ``far`` of the
+    #: distance marched, if that is more (0: never): a path with no threshold runs to 1e3
+    #: scales. The caller's event functions say how much of it a step may take (they fall
+    #: due no later than their own samples allow: predict.EventWatch far waits)
+    far: float = 0.0
+    far_from: float = math.inf
 
     def __post_init__(self):
         if not 0 < self.smallest <= self.first <= self.largest:
             raise ValueError(f"steps {self.smallest}, {self.first}, {self.largest} not ordered")
 
-    def next(self, step: float, limit: float) -> float:
-        """The step after an accepted one: ``limit`` (a predictor's, relative to the scale)
-        clipped to [smallest, min(growth step, largest)]."""
+    def next(self, step: float, limit: float, marched: float = 0.0) -> float:
+        """The step after an accepted one, ``marched`` scales from the start: ``limit`` (a
+        predictor's, relative to the scale) clipped to [smallest, min(growth step,
+        largest there)]."""
         # np.clip's minimum(maximum(...)) in plain floats (NaN stays NaN): one per step
-        return float(min(max(limit, self.smallest), min(self.growth * step, self.largest)))
+        top = min(self.growth * step, self.largest_at(marched))
+        return float(min(max(limit, self.smallest), top))
+
+    def largest_at(self, marched: float) -> float:
+        """The largest step ``marched`` scales from the start: ``largest``, and from
+        ``far_from`` on ``far`` of the distance marched if that is more."""
+        if marched >= self.far_from:
+            return max(self.largest, self.far * marched)
+        return self.largest
 
     def limit(self, distance: float, scale: float) -> float:
         """The step limit ``safety`` of a predicted distance to the next event."""
@@ -127,7 +145,7 @@ class Stepper:
 
     def __init__(self, path: ControlPath, policy: StepPolicy, monitor0: float):
         self.policy, self.scale, self.sense = policy, path.scale, path.sense
-        self.x, self.end = path.start, path.end
+        self.x, self.end, self.start = path.start, path.end, path.start
         self.step = policy.first
         self.monitor0 = self.monitor = monitor0
         self.rate = 0.0  # d monitor / dx over the last accepted step (0: none yet)
@@ -214,7 +232,8 @@ class Stepper:
         if self.asymptote is not None:
             self._read_order(x, monitor)
         elif limit is not None:
-            self.step = self.policy.next(self.step, limit)
+            marched = self.sense * (x - self.start) / self.scale
+            self.step = self.policy.next(self.step, limit, marched)
         if x != self.x:
             self.rate = (monitor - self.monitor) / (x - self.x)
         self.x, self.monitor = x, monitor

@@ -33,13 +33,21 @@ class EventWatch:
     targets fall like Vbar^2, which a line overestimates). The function is sampled again
     once the march has covered half that distance, and at least every MAX_WAIT of the
     scale (a function may dip below zero and return between two distant samples), so
-    functions far from zero cost a few evaluations, not one per step.
+    functions far from zero cost a few evaluations, not one per step. From ``far_from``
+    scales past the start, that wait grows to ``far`` of the distance marched where the
+    function's own last three samples allow it (:func:`far_waits`).
     """
 
-    def __init__(self, x0, g0, sense, scale, max_wait: float = MAX_WAIT):
+    def __init__(
+        self, x0, g0, sense, scale, max_wait: float = MAX_WAIT, *, far=0.0, far_from=np.inf,
+        late=0.0,
+    ):  # fmt: skip
         n = g0.size
         self.sense, self.scale = sense, scale
         self.wait = max_wait * scale  # the longest a function goes unsampled
+        # far waits (:meth:`_far_waits`): ``far`` of the distance marched, from ``far_from``
+        # scales on; a function due is sampled up to ``late`` (times the scale) after
+        self.far, self.far_from, self.late = far, far_from * scale, late * scale
         self.x = np.full((3, n), np.nan)  # rows: newest, previous, oldest
         self.g = np.full((3, n), np.nan)
         self.x[0], self.g[0] = x0, g0
@@ -106,18 +114,33 @@ class EventWatch:
         indices, or a mask) at x: each one's samples one row older, its zero extrapolated
         again, how far that moved and when it falls due."""
         kernel = _compiled()
-        if kernel is None:
-            return self._record_numpy(idx, x, g)
         idx = np.asarray(idx)
         idx = np.flatnonzero(idx) if idx.dtype == bool else idx.astype(np.int64, copy=False)
-        g = np.broadcast_to(np.asarray(g, dtype=float), idx.shape).copy()  # the kernel's type
-        dist = kernel.record(idx, float(x), g, self.x, self.g, float(self.sense),
-                             self.root_distance(), self.moved, self.due, self.wait)  # fmt: skip
-        dist.setflags(write=False)
-        self._distance = dist
+        if kernel is None:
+            self._record_numpy(idx, x, g)
+        else:
+            g = np.broadcast_to(np.asarray(g, dtype=float), idx.shape).copy()  # its type
+            dist = kernel.record(
+                idx, float(x), g, self.x, self.g, float(self.sense), self.root_distance(),
+                self.moved, self.due, self.wait,
+            )  # fmt: skip
+            dist.setflags(write=False)
+            self._distance = dist
+        if self.far and self.sense * (x - self.x0) >= self.far_from:
+            self._far_waits(idx, x)
+
+    def _far_waits(self, idx, x):
+        """The functions ``idx``, sampled at x far from the start, fall due up to ``far`` of
+        the distance marched later, as far as their own samples allow (:func:`far_waits`),
+        still at most half their predicted distance to zero. A path with no threshold runs
+        to 1e3 scales, which MAX_WAIT of the scale samples 4e3 times."""
+        longest = self.far * self.sense * (x - self.x0)
+        wait = far_waits(self.x[:, idx], self.g[:, idx], self.sense, longest, self.wait,
+                         self.late)  # fmt: skip
+        self.due[idx] = x + self.sense * np.minimum(0.5 * self.root_distance()[idx], wait)
 
     def _record_numpy(self, idx, x, g):
-        """:meth:`record` in NumPy."""
+        """:meth:`record` in NumPy (before the far waits)."""
         before = self.x[0, idx] + self.sense * self.root_distance()[idx]  # the zero predicted
         self._distance = None  # new samples, new extrapolation
         for rows in (self.x, self.g):  # each sample one row older
@@ -181,6 +204,40 @@ class EventWatch:
         """The smallest extrapolated distance to a zero of a live function (inf if none)."""
         dist = self.root_distance()[self.alive]
         return dist.min() if dist.size else np.inf
+
+
+def far_waits(x, g, sense, longest, base, late=0.0):
+    """How long each function (columns of its (3, k) samples x, g, newest first, g > 0) may
+    go unsampled: ``longest``, at most twice its last sample spacing (the parabola through
+    its samples is read no further than twice their span), halved while the parabola through
+    the three samples closes more than half the gap to zero over that wait (plus ``late``,
+    the march's lateness: :func:`closes_half`); ``base`` where it does down to ``base`` (and
+    where fewer than three samples say nothing). A target that turns back toward zero, or
+    curves toward it, is sampled at the old rate again."""
+    wait = np.minimum(longest, 2.0 * sense * (x[0] - x[1]))  # NaN: no second sample
+    ok = np.zeros(wait.shape, bool)
+    with np.errstate(invalid="ignore"):
+        trial = wait > base
+        while trial.any():
+            ok[trial] = ~closes_half(x[:, trial], g[:, trial], sense, wait[trial] + late)
+            wait[trial & ~ok] *= 0.5
+            trial = ~ok & (wait > base)
+    return np.where(ok, wait, base)
+
+
+def closes_half(x, g, sense, span):
+    """Does the parabola through the three samples (x, g) of each function (newest first)
+    come closer to zero than half its newest value anywhere within ``span`` ahead of its
+    newest sample (in ``sense``)? True also where the samples give no parabola (NaN)."""
+    t1, t0 = sense * (x[1] - x[0]), sense * (x[2] - x[0])  # t = sense (x - newest) < 0
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        a = (g[0] - g[1]) / -t1  # q(t) = g0 + a t + c t (t - t1) through all three
+        c = (a - (g[1] - g[2]) / (t1 - t0)) / -t0
+        at_end = a * span + c * span * (span - t1)
+        vertex = np.clip(0.5 * (t1 - a / c), 0.0, span)  # a minimum's, where c > 0
+        at_vertex = a * vertex + c * vertex * (vertex - t1)
+        lowest = np.where(c > 0, np.minimum(at_end, at_vertex), at_end)
+        return ~(lowest >= -0.5 * g[0])
 
 
 def _compiled():
