@@ -224,6 +224,7 @@ def first_bifurcations(
         Signed(at, fine, modes, sref),
         RootRows(at, fine, modes, sref),
         RootRows(at, targets, modes, sref),
+        np.zeros(len(modes), bool),
     )
     signed = views.signed
 
@@ -278,6 +279,8 @@ def first_bifurcations(
         if idx.size:
             try:
                 g = failing.sample(targets, state, modes[idx], x) * sref[idx]
+                if (doubted := views.doubted[idx]).any():  # their fine values instead
+                    g[doubted] = views.fine(x, idx[doubted])
             except ConvergenceError as err:  # the state solves, its tables do not
                 # (on the approach to an asymptote: examined up to step.x, say how far)
                 unresolved = unresolved if step.asymptote is not None else err
@@ -477,6 +480,12 @@ class Views(NamedTuple):
     fine: Signed
     root: RootRows
     loose_root: RootRows
+    #: the modes whose loose sign was once wrong (events.first_roots: None), sampled by
+    #: their fine values from then on: a target within the loose tolerance of zero reads
+    #: noise, and a negative sample's zero, behind x, held every later step at the
+    #: smallest (a stiffening tube's short wave along its voltage path: 1e-4 of the scale
+    #: from Vbar ~ 35 on); its parabola through noise held its wait at the scale's
+    doubted: np.ndarray
 
 
 def overstepped(watch, idx, x: float, g: np.ndarray) -> np.ndarray:
@@ -514,13 +523,19 @@ def _advance(watch, idx, x, g, views: Views, need=None) -> list:
             fine_many=signed_fine,
             loose_parts=views.loose_root.parts,
         )
+        wrong = []
         for j, root in zip(js, roots):
             if root is None:  # the loose sign was wrong: the mode is not past a root yet
                 hit[j] = False
+                wrong.append(j)
             elif root is LATER:  # crossed after the first ``need`` roots: not wanted
                 pass
             else:
                 found.append(_mode_value(modes, idx[j], root))
+        if wrong:  # recorded, and sampled from now on, by its fine value (doubted)
+            g = g.copy()
+            g[wrong] = signed_fine(x, idx[wrong])
+            views.doubted[idx[wrong]] = True
     mid, old = watch.g[0, idx], watch.g[1, idx]  # the two samples before x
     dip = dipped(old, mid, g, (watch.x[1, idx] - watch.x[0, idx], watch.x[0, idx] - x))
     dips = np.nonzero(~hit & (dip | passed))[0]
@@ -531,6 +546,12 @@ def _advance(watch, idx, x, g, views: Views, need=None) -> list:
         if bracket is not None:
             found.append(_mode_value(modes, i, brent(signed_root.row(i), *bracket)))
             hit[j] = True
+        elif not views.doubted[i]:  # the fine values have
+            # no zero where the loose ones dipped: fine samples from now on (as ``wrong``:
+            # a target at the loose noise dips at every few samples, ~25 states a look)
+            views.doubted[i] = True
+            g = g.copy()
+            g[j] = signed_fine(x, idx[[j]])[0]
     watch.alive[idx[hit]] = False
     watch.record(idx[~hit], x, g[~hit])
     return found
