@@ -97,17 +97,31 @@ class EventWatch:
         return np.fmin(np.where(np.isnan(line), np.inf, line), np.where(np.isnan(t), np.inf, t))
 
     def needs(self, x):
-        """Live functions to sample at x: due, or predicted to have reached zero by x."""
+        """Live functions to sample at x: due, or predicted to have reached zero by x; far
+        from the start, once half their wait has passed (:meth:`_due`)."""
+        due = self._due(x)
         kernel = _compiled()
         if kernel is None:
-            return self.needs_numpy(x)
+            return self.needs_numpy(x, due)
         dist = self.root_distance()
-        return kernel.needs(self.alive, self.due, dist, self.xa, float(x), float(self.sense))
+        return kernel.needs(self.alive, due, dist, self.xa, float(x), float(self.sense))
 
-    def needs_numpy(self, x):
-        """:meth:`needs` in NumPy."""
+    def _due(self, x):
+        """Where each function is sampled: its due point, and from ``far_from`` on the
+        midpoint of its wait. A sample taken early is never a risk, and it keeps the due
+        points together: a step ends at most ``late`` past the next one due, and a scan's
+        ~1000 modes, each falling due at its own point, ended a step each (3,000 steps from
+        300 to 1000 voltage scales of a stiffening tube). Half the wait, not more: a wait is
+        at most twice the last sample spacing (:func:`far_waits`), so it does not shrink."""
+        if self.far and self.sense * (x - self.x0) >= self.far_from:
+            return 0.5 * (self.xa + self.due)
+        return self.due
+
+    def needs_numpy(self, x, due=None):
+        """:meth:`needs` in NumPy (``due``: :meth:`_due`)."""
+        due = self.due if due is None else due
         reach = self.sense * (x - self.xa)
-        return self.alive & ((self.sense * (x - self.due) >= 0) | (reach >= self.root_distance()))
+        return self.alive & ((self.sense * (x - due) >= 0) | (reach >= self.root_distance()))
 
     def record(self, idx, x, g):
         """New samples g (one per function, or one for all) of the functions ``idx`` (their
