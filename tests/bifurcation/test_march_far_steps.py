@@ -174,3 +174,18 @@ def test_far_from_the_start_a_function_is_sampled_once_half_its_wait_has_passed(
     near.x[0], near.due, near.g[:] = 10.0, np.array([12.0]), 1.0
     near._distance = None
     assert near.needs(11.5).tolist() == [False]  # before far_from: at its due point
+
+
+def test_a_state_lost_within_a_far_step_is_approached_again_in_the_scale_s_steps():
+    """Stepper.far_lost: a far step (longer than ``largest``) that loses the state is not
+    bisected; the march goes on from its last state in the scale's steps, far ones no more.
+    A step of the old length is bisected as before (False)."""
+    from electrogrowth.continuation.path import ControlPath, Stepper
+
+    step = Stepper(ControlPath(0.0, 1e3, 1.0), MODE_STEPS, 1.0)
+    step.x, step.step = 100.0, 10.0  # 0.1 of 100 scales marched
+    assert step.propose() == pytest.approx(110.0)
+    assert step.far_lost() and step.step == MODE_STEPS.largest and step.policy.far == 0.0
+    step.propose()
+    assert not step.far_lost()  # a step of the old length: its loss is located
+    assert step.policy.largest_at(100.0) == MODE_STEPS.largest

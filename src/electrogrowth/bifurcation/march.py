@@ -66,8 +66,13 @@ from .state_loss import threshold_between as _threshold_between
 #: samples, may grow to FAR of the distance marched, as far as every mode's own samples allow
 #: (predict.far_waits): a path with no threshold (a stiffening energy's voltage) runs to 1e3
 #: scales, 2e4 steps of 5 % of the scale. Within FAR_FROM the steps are as before: a growth
-#: path ends 5 scales from its start, a stretch in compression within 1
+#: path ends 5 scales from its start, a stretch in compression within 1, a voltage with a
+#: threshold at 1 (its scale). Only along FAR_CONTROLS: a voltage path that goes past its
+#: scale has no threshold, and no state to lose; a pressure or force path may lose its state
+#: far out, and a far step past that loss put the loss's bisection deep in the lost range
+#: (a pulled trilayer's force march: its states by continuation, not by its loading path)
 FAR, FAR_FROM = 0.1, 5.0
+FAR_CONTROLS = ("voltage",)
 #: the mode march's step control: 0.4 % of the scale doubling up to 5 %, not below 1e-4
 MODE_STEPS = StepPolicy(smallest=1e-4, far=FAR, far_from=FAR_FROM)
 #: the march of a single mode (critical_value): lambda_i is predicted from the last step, a
@@ -201,6 +206,8 @@ def first_bifurcations(
     if cut:
         path = dataclasses.replace(path, end=until)
     x0, sense = path.start, path.sense
+    if solve_for not in FAR_CONTROLS:
+        steps = dataclasses.replace(steps, far=0.0)
     state = at.state(x0)
     raw = targets(state, modes)
     targets, raw = calibrated(targets, state, modes, raw)
@@ -248,6 +255,9 @@ def first_bifurcations(
             except (BaseStateError, ConvergenceError):  # lost, or unresolved next to a lock
                 if step.asymptote is not None:  # established where the states run to:
                     stop = True  # they are not resolved closer to it
+                    continue
+                if step.far_lost():  # on in the scale's steps, the loss located from there
+                    watch.far = 0.0
                     continue
                 value, edge, pending = _threshold_between(at, params, step.x, x)
                 if value is not None or threshold is None:  # an established loss stays

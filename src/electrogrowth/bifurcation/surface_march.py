@@ -28,7 +28,7 @@ from ..continuation.predict import far_waits
 from ..errors import BaseStateError, ConvergenceError, ParameterError, UnstableAtStart
 from ..outcomes import Kind
 from .along import Elliptic, NearLock, SampleValue, StateAt, TubeAt
-from .march import FAR, FAR_FROM, control_path
+from .march import FAR, FAR_CONTROLS, FAR_FROM, control_path
 from .state_loss import Approach, approach_film, loss_at_end, threshold_between
 
 #: the short-wave march's step control: as the mode march's, but down to 1e-6 of the scale
@@ -72,7 +72,10 @@ def locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, unti
         )
     value_of, fine_of = SampleValue(h, state_at), SampleValue(fine_h, state_at)
     xs, hs = [x0], [s0.value]
-    step = Stepper(path, SURFACE_STEPS, state.lambda_i)
+    policy = SURFACE_STEPS  # far steps only along a path with no state to lose (march.py)
+    if solve_for not in FAR_CONTROLS:
+        policy = dataclasses.replace(SURFACE_STEPS, far=0.0)
+    step = Stepper(path, policy, state.lambda_i)
     # unresolved: the error to raise if nothing is found (states past the path's end exist
     # but do not resolve, next to a lock: state_loss.threshold_between)
     threshold, unresolved, film = None, None, False
@@ -115,7 +118,7 @@ def locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, unti
         hs.append(s.value)
         slope = (hs[-1] - hs[-2]) / (xs[-1] - xs[-2]) * path.sense
         limit = SURFACE_STEPS.safety * hs[-1] / -slope / scale if slope < 0 else math.inf
-        step.accept(x, state.lambda_i, min(limit, _far_room(xs, hs, path) / scale))
+        step.accept(x, state.lambda_i, min(limit, _far_room(xs, hs, path, policy) / scale))
         if step.film(state.lambda_i):  # the wall is a film: on toward its asymptote
             film = True
             if approach_film(at, params, solve_for, side, step, rtol) is None:
@@ -137,12 +140,12 @@ def locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, unti
     return Kind.NONE, math.nan, None, None
 
 
-def _far_room(xs, hs, path: ControlPath) -> float:
+def _far_room(xs, hs, path: ControlPath, steps: StepPolicy) -> float:
     """How far past its last sample h may go unsampled, from FAR_FROM scales on: FAR of the
     distance marched as far as the parabola through its last three samples allows
     (predict.far_waits, as a mode's far wait), else the largest step; inf before."""
     marched = path.sense * (xs[-1] - path.start)
-    if len(xs) < 3 or marched < SURFACE_STEPS.far_from * path.scale:
+    if not steps.far or len(xs) < 3 or marched < steps.far_from * path.scale:
         return math.inf
     x, h = np.array(xs[:-4:-1])[:, None], np.array(hs[:-4:-1])[:, None]
     base = SURFACE_STEPS.largest * path.scale

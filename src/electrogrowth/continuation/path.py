@@ -187,6 +187,19 @@ class Stepper:
         self.step /= self.policy.lost_shrink
         return abs(self.end - self.x) <= self.policy.edge_gap * self.scale
 
+    def far_lost(self) -> bool:
+        """The state was lost within a far step (longer than ``largest``): the march goes on
+        from where it was in the scale's steps, far steps no more, and the loss is located
+        from a step of that length (True). False for a step of the old length, whose loss
+        is located now. A far step past a loss (a pulled trilayer's force march, 0.1 of 243
+        scales) put the bisection's points deep in the lost range, where each cold solve
+        walks a whole threshold (minutes, where the old steps took 25 s)."""
+        if self.taken <= self.policy.largest or self.asymptote is not None:
+            return False
+        self.policy = dataclasses.replace(self.policy, far=0.0)
+        self.step = self.policy.largest
+        return True
+
     def unresolved(self) -> bool:
         """The state solver failed at the proposed value: shorten the step (True), or
         False if it is already below ``unresolved_floor``."""
