@@ -288,11 +288,6 @@ def first_roots(
         near = _near_root(signed, fine, int(cand[0]), float(xa[0]), x, values, loose_parts)
         if near is not None:
             return [near]
-    if cand.size > 1 and fine_many is not None:
-        real = fine_many(x, cand) <= 0
-        if not real.all():  # misjudged: None at once, not bisected with the others
-            return _real_roots(real, signed, fine, cand, xa, x, x0, need, values,
-                               fine_many, loose_parts)  # fmt: skip
     lo, hi = np.array(xa, float), np.full(cand.size, x, float)
     out: list = [None] * cand.size
     keep = np.arange(cand.size)
@@ -325,21 +320,6 @@ def first_roots(
     if fine_many is None:
         fine_many = lambda y, idx: np.array([fine(y, int(i)) for i in idx])  # noqa: E731
     _later_before(signed, fine_many, cand, (xa, x), lo, hi, out, need, finish)
-    return out
-
-
-def _real_roots(real, signed, fine, cand, xa, x, x0, need, values, fine_many, loose_parts):
-    """:func:`first_roots` of the candidates ``real`` (fine value past zero at x), None for
-    the others: a target within the loose tolerance of zero (a stiffening tube's short
-    waves far along its voltage path, ~1e-7) reads noise, and its misjudged signs cost a
-    shared bisection each (~100 base states) before the fine value at x said so."""
-    out: list = [None] * cand.size
-    if real.any():
-        part = None if values is None else (values[0][real], values[1][real])
-        roots = first_roots(signed, fine, cand[real], xa[real], x, x0, need, part,
-                            fine_many, loose_parts)  # fmt: skip
-        for k, root in zip(np.nonzero(real)[0], roots):
-            out[k] = root
     return out
 
 
