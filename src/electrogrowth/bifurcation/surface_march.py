@@ -141,15 +141,15 @@ def locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, unti
 
 
 def _far_room(xs, hs, path: ControlPath, steps: StepPolicy) -> float:
-    """How far past its last sample h may go unsampled, from FAR_FROM scales on: FAR of the
-    distance marched as far as the parabola through its last three samples allows
+    """How far past its last sample h may go unsampled, from ``far_from`` scales on: ``far``
+    of the distance marched as far as the parabola through its last three samples allows
     (predict.far_waits, as a mode's far wait), else the largest step; inf before."""
     marched = path.sense * (xs[-1] - path.start)
     if not steps.far or len(xs) < 3 or marched < steps.far_from * path.scale:
         return math.inf
     x, h = np.array(xs[:-4:-1])[:, None], np.array(hs[:-4:-1])[:, None]
-    base = SURFACE_STEPS.largest * path.scale
-    return float(far_waits(x, h, path.sense, FAR * marched, base)[0])
+    base = steps.largest * path.scale
+    return float(far_waits(x, h, path.sense, steps.far * marched, base)[0])
 
 
 def _retry(exc: Exception) -> bool:
