@@ -19,6 +19,7 @@ Now every path goes through scan._folds_before_limit (both axes read at the limi
 import pytest
 
 from electrogrowth import Layer, ScanOptions, Tube, critical_value, scan_modes
+from electrogrowth.bifurcation.beyond import unstable_past_cap
 from electrogrowth.cli.app import main
 
 SOFT = Layer(1.01, shear_modulus=1e-2)
@@ -102,3 +103,44 @@ def test_cli_certify_no_longer_passes_the_limit(tmp_path, capsys):
     out = capsys.readouterr().out
     assert "(m, n) = (1028, 0)" in out and "1.82390957658" in out
     assert "certified by collocation: 1.8239095" in out
+
+
+#: check round 34: a lining 1e-3 thick and 1e4 times softer than its tube, grown in its hoop
+#: direction; and a three-layer tube with such a lining, grown isotropically
+THIN = Tube((Layer(1.001, shear_modulus=1e-4), Layer(2.0)), length=3.0, stretch=1.0)
+STACK = Tube(
+    (Layer(1.00104, shear_modulus=1e-4), Layer(1.34004), Layer(2.48, shear_modulus=10.0)),
+    length=3.59,
+    stretch=1.0,
+)
+
+
+@pytest.mark.parametrize(
+    ("tube", "solve_for", "limit"),
+    [(THIN, "growth[1].theta", 1.8377451822596504), (STACK, "growth[1]", 1.4987126069243817)],
+)
+def test_a_lining_too_thin_for_the_caps_is_not_ok_at_its_limit(tube, solve_for, limit):
+    """D4 (check round 34): the scan returned the inner face's limit, status ok, while an
+    independent solver (own base state, multi-domain collocation, converged in nodes and in
+    depth) puts folds beyond the cap first: (13000, 0) at 1.8376895409 (5.6e-5 earlier) and
+    (6000, 0) at 1.4986160054 (9.7e-5 earlier); the rows reach the limit from below like
+    1/m. The limit, still the face's exact one, is now INACCURATE, naming a mode past the cap
+    that is past its root there."""
+    c = scan_modes(tube, solve_for).critical
+    assert c.kind == "surface" and c.value == pytest.approx(limit, rel=1e-10)
+    assert c.status == "inaccurate" and "beyond the largest m = 2000" in c.message
+
+
+@pytest.mark.parametrize(
+    ("tube", "solve_for", "before", "past"),
+    [(THIN, "growth[1].theta", 1.8376, 1.8377), (STACK, "growth[1]", 1.4986, 1.49862)],
+)
+def test_the_ladder_past_the_caps_turns_where_the_independent_folds_are(
+    tube, solve_for, before, past
+):
+    """The samples beyond the caps (m and n to 64 times them) at a value just before the
+    independent solver's earliest fold (1.8376895409, 1.4986160054) are all stable, and one
+    is past its root just after it: the sign change is the folds', not the ladder's noise."""
+    assert unstable_past_cap(tube, solve_for, before, True) is None
+    m, n = unstable_past_cap(tube, solve_for, past, True)
+    assert m > 2000 or n > 2000

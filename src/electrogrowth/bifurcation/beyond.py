@@ -72,18 +72,60 @@ def unstable_beyond(
     rows = {axis: beyond_rows(m_range, n_range, prismatic, axis) for axis in axes}
     modes = np.vstack([rows[axis] for axis in axes])
     out = dict.fromkeys(axes, False)
-    if not modes.shape[0]:
+    turned = _turned(params, solve_for, value, modes)
+    if turned is None:
         return out
-    try:
-        state = solve_base_state(params.at(solve_for, value))
-        now = ImpedanceTarget(SCAN_STABLE_SIGNS)(state, modes)
-    except ElectrogrowthError:
-        return out
-    stable = _stable(np.ascontiguousarray(modes).tobytes(), modes.shape[0])
-    turned = np.isfinite(now) & (np.sign(now) != stable)
     start = 0
     for axis in axes:
         stop = start + rows[axis].shape[0]
         out[axis] = bool(turned[start:stop].any())
         start = stop
     return out
+
+
+def _turned(params, solve_for: str, value: float, modes: np.ndarray) -> np.ndarray | None:
+    """Which of ``modes`` are past their roots at ``value`` (their targets' signs there
+    against the unloaded tube's); None where there are none to read or the state at
+    ``value`` does not resolve (no evidence either way)."""
+    if not modes.shape[0]:
+        return None
+    try:
+        state = solve_base_state(params.at(solve_for, value))
+        now = ImpedanceTarget(SCAN_STABLE_SIGNS)(state, modes)
+    except ElectrogrowthError:
+        return None
+    stable = _stable(np.ascontiguousarray(modes).tobytes(), modes.shape[0])
+    return np.isfinite(now) & (np.sign(now) != stable)
+
+
+#: how far past the caps :func:`unstable_past_cap` reads: a soft lining 1e-3 thick folds
+#: at m ~ 6000 to 13000 (check round 34), and its rows reach the limit from below, so every
+#: m from there on is past its root at the limit
+PAST_CAP = 64
+
+
+def past_cap_rows(prismatic: bool) -> np.ndarray:
+    """Rows beyond the caps, geometric samples (ratio 1.25) from just past M_CAP (N_CAP) to
+    PAST_CAP times it: along m the prismatic folds (m, 0) and the wrinkles (m, 1), along n
+    the rings (0, n) and (1, n)."""
+    _wrinkle, _prismatic = Family.WRINKLE.code, Family.PRISMATIC.code
+    ms = geometric_samples(M_CAP + 1, PAST_CAP * M_CAP)
+    ns = geometric_samples(N_CAP + 1, PAST_CAP * N_CAP)
+    along_m = [(m, 1, _wrinkle) for m in ms] + [(m, 0, _prismatic) for m in ms if prismatic]
+    along_n = [(m, n, _wrinkle) for n in ns for m in (0, 1)]
+    return np.array(along_m + along_n, float)
+
+
+def unstable_past_cap(params, solve_for: str, value: float, prismatic: bool):
+    """The first sampled mode (m, n) beyond the caps that is past its root at ``value``,
+    else None. The scan resolves modes up to the caps only; where its result is a face's
+    short-wave limit, a lining too thin for the caps may fold beyond them first: its
+    rows tend to the limit from below (probe 13b's O(1/k) corrections), and a fold
+    near m = 13000 came 5.6e-5 before the limit of a lining 1e-3 thick, 1e4 times softer
+    than its tube, with status OK (check round 34). One state, ~80 modes."""
+    modes = past_cap_rows(prismatic)
+    turned = _turned(params, solve_for, value, modes)
+    if turned is None or not turned.any():
+        return None
+    m, n, _ = modes[int(np.argmax(turned))]
+    return int(m), int(n)

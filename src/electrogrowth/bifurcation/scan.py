@@ -41,7 +41,7 @@ from ..incremental.modes import row_family
 from ..incremental.targets import Family, impedance_targets
 from ..model.layers import Tube
 from ..outcomes import NO_MODE, Kind, Status
-from .beyond import unstable_beyond
+from .beyond import unstable_beyond, unstable_past_cap
 from .certify import kernel_signs
 from .critical import CriticalPoint, critical_value, no_bifurcation_remedy
 from .directions import past_surface, surface_past
@@ -427,6 +427,8 @@ def _with_short_waves(
     crit = _surface_point(limit, side)
     if turned:  # a mode beyond is past its root at the limit, yet no root was found before it
         crit = dataclasses.replace(crit, status=Status.INACCURATE, **_UNFOUND)
+    elif options.extend:  # the ranges reached their caps: is a fold beyond them first?
+        crit = _past_caps(params, solve_for, options, crit)
     return dataclasses.replace(
         result,
         critical=crit,
@@ -536,6 +538,26 @@ _UNFOUND = {
     " but the search beyond them found no root before it: a finite mode may come first",
     "remedy": "scan the single modes beyond the ranges (--mode M N) near the limit",
 }
+
+
+def _past_caps(params, solve_for, options, crit: CriticalPoint) -> CriticalPoint:
+    """``crit``, a face's short-wave limit about to be the result, INACCURATE where a mode
+    beyond the caps is past its root at it (beyond.unstable_past_cap): the tube then
+    wrinkles before the limit in waves shorter than the scan resolves, and the limit is
+    only an upper bound on its critical value."""
+    past = unstable_past_cap(params, solve_for, crit.value, options.prismatic)
+    if past is None:
+        return crit
+    message = (
+        f"mode {past}, beyond the largest m = {M_CAP} and n = {N_CAP} the scan resolves, is"
+        " past its root at this short-wave limit: the tube wrinkles before it, in shorter"
+        " waves than the scan resolves (the limit is an upper bound on the critical value)"
+    )
+    remedy = (
+        "take the limit as an upper bound; the folds of a layer this thin are those of the"
+        " flat layer on its substrate (docs/derivation-film.md)"
+    )
+    return dataclasses.replace(crit, status=Status.INACCURATE, message=message, remedy=remedy)
 
 
 def _before(c: CriticalPoint, value: float, side) -> bool:
