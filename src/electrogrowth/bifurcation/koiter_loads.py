@@ -21,6 +21,7 @@ from ..incremental.meridian_dielectric_forms import MeridianDielectricForms
 from ..incremental.meridian_forms import MeridianForms
 from ..incremental.polar_forms import PolarForms, rings
 from ..incremental.pressure_forms import FaceForms
+from ..incremental.ring_basis import nodal_values
 from ..incremental.wall_pressure_forms import WallFaceForms
 from ..model.layers import Tube
 from .control_derivative import reach
@@ -141,7 +142,8 @@ def loaded_expansion(
         where,
         along=lambda d: 2 * first.energy(d, f1, face1),
     )
-    radial = phi[first.wall.slices[0]]  # u_r on the rings, from R_i to R_N
+    # u_r at the nodes, from R_i to R_N (the unknowns are each ring's differences)
+    radial = nodal_values(first.wall.rings, phi[first.wall.slices[0]])
     return TubeExpansion(
         float(c),
         c2,

@@ -22,6 +22,7 @@ from ..incremental.dielectric_forms import DielectricForms
 from ..incremental.meridian_forms import MeridianForms
 from ..incremental.monomial_forms import Polynomial
 from ..incremental.polar_forms import PolarForms, rings
+from ..incremental.ring_basis import nodal_values
 from ..model.layers import Tube
 from ..outcomes import Kind
 from .control_derivative import Reach, derivative, derivative_and_noise, reach
@@ -282,7 +283,8 @@ def expand(tube, control, first, second, start, what) -> TubeExpansion:
         along=lambda d: 2 * first.energy(d.monomials(), f1),
     )
     error += abs(c2 * rounding / numerator) if numerator else 0.0
-    radial = phi[first.slices[0]]  # u_r on the rings, from R_i to R_N
+    # u_r at the nodes, from R_i to R_N (the unknowns are each ring's differences)
+    radial = nodal_values(first.rings, phi[first.slices[0]])
     inner, outer = float(radial[0]), float(radial[-1])
     return TubeExpansion(float(c), c2, float(start), inner, float(numerator), axial, outer, error)
 
