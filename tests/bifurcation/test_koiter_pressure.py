@@ -247,7 +247,11 @@ def test_the_estimate_covers_an_outer_film_s_fold_at_other_resolutions():
     halving's change of A': -1.30094635648, estimate 1.65e-8, while the expansion at
     32 / 40 / 48 nodes gave -1.30094629473 / ...30025 / ...34314 (6.2e-8 apart: the
     rounding of A(c), divided by A''s step, and of the correction's solve, wanders with the
-    node count). Now the spread of three resolutions and two samples of A''s rounding."""
+    node count). Then the spread of three resolutions and two samples of A''s rounding.
+    In ring_basis.py's unknowns, the singular point refined on the energy, 18 .. 48 nodes
+    agree to 3e-11 (32 / 40 / 48: -1.3009463606630 / ...6721 / ...6338); what scatters is
+    the numerator's rounding (~1e-11 relative), sampled by nudging c (2.1e-11 at 32, 6.5e-11
+    at 48): the estimate 2.7e-11 plus the other value's own sample covers it."""
     from electrogrowth.bifurcation.koiter import _expansion
 
     tube = Tube(
@@ -257,5 +261,6 @@ def test_the_estimate_covers_an_outer_film_s_fold_at_other_resolutions():
     )
     k = koiter_coefficient(tube, (57, 0), "pressure", side="compression")
     for nodes in (40, 48):
-        other = _expansion(tube, (57, 0), "pressure", nodes, "compression").coefficient
-        assert abs(k.coefficient - other) <= k.error_estimate, (nodes, k, other)
+        other = _expansion(tube, (57, 0), "pressure", nodes, "compression")
+        bound = k.error_estimate + other.derivative_error
+        assert abs(k.coefficient - other.coefficient) <= bound, (nodes, k, other)

@@ -22,8 +22,9 @@ so with p0 the base Lagrange multiplier (the state's ``pressure``) and q its inc
 per unit reference volume, integrated over R dR and averaged over Theta. Harmonics of
 m Theta with the reflection symmetry Theta -> -Theta: U_r = a_j cos(j m Theta),
 U_th = b_j sin(j m Theta), q = c_j cos(j m Theta); a, b on Chebyshev-Lobatto nodes of each
-segment (continuous across segments and layers: bonded), c on the interior nodes
-(P_N - P_{N-2}), as in plane_forms.py; no node is clamped (free faces).
+segment (continuous across segments and layers: bonded; their unknowns each ring's inner
+value and differences, ring_basis.py), c on the interior nodes (P_N - P_{N-2}), as in
+plane_forms.py; no node is clamped (free faces).
 """
 
 from __future__ import annotations
