@@ -7,26 +7,37 @@ from __future__ import annotations
 import numpy as np
 
 from electrogrowth.bifurcation.koiter_film import _nearest_zero
+from electrogrowth.incremental.ring_basis import nodal_values
+
+
+def peak_row(rings_, radial, start: int, size: int):
+    """The row that gives, from the full unknowns (``size`` of them), u_r of harmonic 1
+    (its unknowns from ``start``) at the node where the mode's u_r (``radial``, its
+    unknowns) is largest: the value Newton prescribes. The unknowns are each ring's inner
+    value and differences (ring_basis.py), so a nodal value is a sum of them."""
+    T = nodal_values(rings_, np.eye(len(radial)))
+    row = np.zeros(size)
+    row[start : start + len(radial)] = T[int(np.argmax(np.abs(T @ radial)))]
+    return row
 
 
 def mode_in_full(first, stiffness, one, size: int):
-    """(mode, node): the critical mode of the one-harmonic forms ``first`` (the null vector
+    """(mode, row): the critical mode of the one-harmonic forms ``first`` (the null vector
     of ``stiffness``, scaled to a unit peak |u_r|) placed in harmonic 1 of each field of the
-    full unknowns (``one``: harmonic -> slice, ``size`` of them), and the full index of its
-    largest u_r (the unknown Newton prescribes)."""
+    full unknowns (``one``: harmonic -> slice, ``size`` of them), and the row giving its
+    largest nodal u_r (:func:`peak_row`, the value Newton prescribes)."""
     phi = _nearest_zero(stiffness)[1]
     phi = phi / first.peak_radial(phi, first.slices[0])[1]
     mode = np.zeros(size)
     for f, sl in zip(range(3), first.slices):
         mode[one[(f, 1)]] = phi[sl]
-    node = one[(0, 1)].start + int(np.argmax(np.abs(phi[first.slices[0]])))
-    return mode, node
+    return mode, peak_row(first.rings, phi[first.slices[0]], one[(0, 1)].start, size)
 
 
-def branch_curvature(c_c, mode_vector, node, residual, jacobian, eps_values):
-    """(c(eps) - c_c) / eps^2 for each eps: Newton on residual(c, w) = 0 with the
-    unknown ``node`` (u_r of harmonic 1 where the mode, ``mode_vector`` in the full
-    unknowns, is largest) prescribed to eps times the mode's value, from w = eps mode,
+def branch_curvature(c_c, mode_vector, row, residual, jacobian, eps_values):
+    """(c(eps) - c_c) / eps^2 for each eps: Newton on residual(c, w) = 0 with ``row`` @ w
+    (u_r of harmonic 1 where the mode, ``mode_vector`` in the full unknowns, is largest:
+    :func:`peak_row`) prescribed to eps times the mode's value, from w = eps mode,
     c = c_c."""
     out = []
     for eps in eps_values:
@@ -36,8 +47,8 @@ def branch_curvature(c_c, mode_vector, node, residual, jacobian, eps_values):
             J = np.zeros((size + 1, size + 1))
             J[:size, :size] = jacobian(c, w)
             J[:size, size] = (residual(c + h, w) - residual(c - h, w)) / (2 * h)
-            J[size, node] = 1.0
-            rhs = np.concatenate([residual(c, w), [w[node] - eps * mode_vector[node]]])
+            J[size, :size] = row
+            rhs = np.concatenate([residual(c, w), [row @ (w - eps * mode_vector)]])
             step = np.linalg.solve(J, rhs)
             w, c = w - step[:size], c - step[size]
             if abs(step[size]) < 1e-14:

@@ -25,6 +25,7 @@ from electrogrowth.errors import NoBifurcationFound, ParameterError
 from electrogrowth.incremental.plane_forms import Forms, Segment, Space
 from electrogrowth.model.layer import Layer
 from electrogrowth.model.layers import Tube
+from tests.bifurcation.koiter_newton import peak_row
 
 FAST = {"nodes": 10, "substrate_nodes": 14}
 #: For checks of the discrete problem against itself (same discretisation on both sides).
@@ -379,9 +380,8 @@ def test_tube_branch_curvature_from_a_direct_nonlinear_solve():
     one = dict(zip(harmonics, full.slices))
     phi = _nearest_zero(first.stiffness(solve_base_state(tube.at(THETA, e.control_value))))[1]
     phi = phi / first.peak_radial(phi, first.slices[0])[1]
-    a = phi[first.slices[0]]
-    idx = int(np.argmax(np.abs(a)))
-    node = one[(0, 1)].start + idx
+    row = peak_row(first.rings, phi[first.slices[0]], one[(0, 1)].start, full.size)
+    peak = row[one[(0, 1)]] @ phi[first.slices[0]]  # the mode's u_r at that node
 
     def stiffness(c):
         return full.stiffness(solve_base_state(tube.at(THETA, c)))
@@ -398,9 +398,9 @@ def test_tube_branch_curvature_from_a_direct_nonlinear_solve():
             J = np.zeros((n + 1, n + 1))
             J[:n, :n] = A + full.cubic_hessian(fw, 1.0)
             J[:n, n] = dA @ w
-            J[n, node] = 1.0
+            J[n, :n] = row
             rhs = np.concatenate(
-                [A @ w + 0.5 * full.cubic_gradient(fw, fw, 1.0), [w[node] - eps * a[idx]]]
+                [A @ w + 0.5 * full.cubic_gradient(fw, fw, 1.0), [row @ w - eps * peak]]
             )
             step = np.linalg.solve(J, rhs)
             w, c = w - step[:n], c - step[n]

@@ -161,7 +161,7 @@ def test_branch_curvature_from_a_direct_nonlinear_solve():
     full = _forms(tube, n, harmonics, N, z_points=16)
     first = _forms(tube, n, MODE, N)
     one = dict(zip(harmonics, full.slices))
-    mode, node = mode_in_full(
+    mode, row = mode_in_full(
         first, first.stiffness(solve_base_state(tube.at(AXIAL, e.control_value))), one, full.size
     )
 
@@ -175,8 +175,8 @@ def test_branch_curvature_from_a_direct_nonlinear_solve():
             J = np.zeros((size + 1, size + 1))
             J[:size, :size] = _jacobian(full, state, w)
             J[:size, size] = (_residual(full, up, w) - _residual(full, down, w)) / (2 * h)
-            J[size, node] = 1.0
-            rhs = np.concatenate([_residual(full, state, w), [w[node] - eps * mode[node]]])
+            J[size, :size] = row
+            rhs = np.concatenate([_residual(full, state, w), [row @ (w - eps * mode)]])
             step = np.linalg.solve(J, rhs)
             w, c = w - step[:size], c - step[size]
             if abs(step[size]) < 1e-14:

@@ -29,6 +29,7 @@ from electrogrowth.incremental.meridian_forms import MeridianForms
 from electrogrowth.incremental.polar_forms import rings
 from electrogrowth.model.layer import Layer
 from electrogrowth.model.layers import Tube
+from tests.bifurcation.koiter_newton import peak_row
 from tests.bifurcation.test_koiter_axisymmetric import _jacobian, _residual
 
 
@@ -145,7 +146,8 @@ def _newton_curvature(name, residual, jacobian, full, first, eps_values):
     phi = _nearest_zero(first.stiffness(solve_base_state(tube.at(control, e.control_value))))[1]
     phi = phi / first.peak_radial(phi, first.slices[0])[1]
     a = phi[first.slices[0]]
-    node = one[(0, 1)].start + int(np.argmax(np.abs(a)))
+    row = peak_row(first.rings, a, one[(0, 1)].start, full.size)
+    peak = row[one[(0, 1)]] @ a  # the mode's u_r at that node
 
     def branch(eps):
         w = np.zeros(full.size)
@@ -157,8 +159,8 @@ def _newton_curvature(name, residual, jacobian, full, first, eps_values):
             J = np.zeros((size + 1, size + 1))
             J[:size, :size] = jacobian(c, w)
             J[:size, size] = (residual(c + h, w) - residual(c - h, w)) / (2 * h)
-            J[size, node] = 1.0
-            rhs = np.concatenate([residual(c, w), [w[node] - eps * np.abs(a).max()]])
+            J[size, :size] = row
+            rhs = np.concatenate([residual(c, w), [row @ w - eps * peak]])
             step = np.linalg.solve(J, rhs)
             w, c = w - step[:size], c - step[size]
             if abs(step[size]) < 1e-14:

@@ -124,7 +124,7 @@ def test_branch_curvature_with_the_stretch_free(axisymmetric_pair):
         return (4 * d[1] - d[0]) / 3
 
     target = force(gc, 1.0, np.zeros(full.size))
-    mode, node = mode_in_full(first, first.stiffness(state(gc, 1.0)), one, full.size)
+    mode, row = mode_in_full(first, first.stiffness(state(gc, 1.0)), one, full.size)
 
     def branch(eps):
         w = eps * mode
@@ -139,13 +139,13 @@ def test_branch_curvature_with_the_stretch_free(axisymmetric_pair):
                 2 * h
             )
             J[:size, size], J[:size, size + 1] = dc, dz
-            J[size, node] = 1.0
+            J[size, :size] = row
             J[size + 1, :size] = dz  # d2E / dlambda_z dw, symmetric
             f0 = force(c, lz, w)
             J[size + 1, size] = (force(c + h, lz, w) - f0) / h  # a chord: the limit is exact
             J[size + 1, size + 1] = (force(c, lz + h, w) - f0) / h
             rhs = np.concatenate(
-                [_residual(full, state(c, lz), w), [w[node] - eps * mode[node], f0 - target]]
+                [_residual(full, state(c, lz), w), [row @ (w - eps * mode), f0 - target]]
             )
             step = np.linalg.solve(J, rhs)
             w, c, lz = w - step[:size], c - step[size], lz - step[size + 1]

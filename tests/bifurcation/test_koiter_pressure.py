@@ -34,7 +34,7 @@ from electrogrowth.incremental.polar_forms import rings
 from electrogrowth.incremental.pressure_forms import FaceForms
 from electrogrowth.model.layer import Layer
 from electrogrowth.model.layers import Tube
-from tests.bifurcation.koiter_newton import branch_curvature, richardson
+from tests.bifurcation.koiter_newton import branch_curvature, peak_row, richardson
 from tests.bifurcation.test_koiter_axisymmetric import _jacobian, _residual
 
 
@@ -203,7 +203,8 @@ def test_branch_curvature_from_newton(name):
     mode_vector = np.zeros(full.wall.size)
     for (f, _), sl in zip(first.wall.harmonics, first.wall.slices):
         mode_vector[one[(f, 1)]] = phi[sl]
-    node = one[(0, 1)].start + int(np.argmax(np.abs(phi[first.wall.slices[0]])))
+    radial = phi[first.wall.slices[0]]
+    row = peak_row(first.wall.rings, radial, one[(0, 1)].start, full.wall.size)
     face = full.face
 
     def load(state, w, hessian=False):
@@ -225,7 +226,7 @@ def test_branch_curvature_from_newton(name):
             return sum(full.wall.hessian(L[k], f) for k in (2, 3, 4)) + load(state, w, True)
         return _jacobian(full.wall, state, w) + load(state, w, True)
 
-    D = branch_curvature(e.control_value, mode_vector, node, residual, jacobian, (0.002, 0.004))
+    D = branch_curvature(e.control_value, mode_vector, row, residual, jacobian, (0.002, 0.004))
     assert richardson(D) == pytest.approx(e.coefficient, rel=1e-6)
 
 
@@ -246,7 +247,11 @@ def test_the_estimate_covers_an_outer_film_s_fold_at_other_resolutions():
     halving's change of A': -1.30094635648, estimate 1.65e-8, while the expansion at
     32 / 40 / 48 nodes gave -1.30094629473 / ...30025 / ...34314 (6.2e-8 apart: the
     rounding of A(c), divided by A''s step, and of the correction's solve, wanders with the
-    node count). Now the spread of three resolutions and two samples of A''s rounding."""
+    node count). Then the spread of three resolutions and two samples of A''s rounding.
+    In ring_basis.py's unknowns, the singular point refined on the energy, 18 .. 48 nodes
+    agree to 3e-11 (32 / 40 / 48: -1.3009463606630 / ...6721 / ...6338); what scatters is
+    the numerator's rounding (~1e-11 relative), sampled by nudging c (2.1e-11 at 32, 6.5e-11
+    at 48): the estimate 2.7e-11 plus the other value's own sample covers it."""
     from electrogrowth.bifurcation.koiter import _expansion
 
     tube = Tube(
@@ -256,5 +261,6 @@ def test_the_estimate_covers_an_outer_film_s_fold_at_other_resolutions():
     )
     k = koiter_coefficient(tube, (57, 0), "pressure", side="compression")
     for nodes in (40, 48):
-        other = _expansion(tube, (57, 0), "pressure", nodes, "compression").coefficient
-        assert abs(k.coefficient - other) <= k.error_estimate, (nodes, k, other)
+        other = _expansion(tube, (57, 0), "pressure", nodes, "compression")
+        bound = k.error_estimate + other.derivative_error
+        assert abs(k.coefficient - other.coefficient) <= bound, (nodes, k, other)

@@ -9,6 +9,11 @@ modes have eigenvalues ~ -s_B^2 / |K|), not the fold, and it stepped from 1.032 
 The singular point is now that of K on ker B (`constrained_nearest_zero`), where the fold's
 eigenvalue crosses zero cleanly, and A'[phi, phi] is differenced term by term on the
 Lagrangian's coefficients (`koiter_tube.quadratic_part`), not on whole matrices of norm 2e9.
+Its rounding floor (~1e-5 of the coefficient, 3.2e-5 on a later install) was the nodal
+basis: the fold moves the film almost rigidly through its thickness, and each gradient
+cancelled ~1e9 to leave ~1e3; each ring's values are now its inner value and differences
+(incremental/ring_basis.py), and the singular point is refined on the energy
+(`koiter_tube._on_the_energy`): the floor is ~1e-10.
 """
 
 from __future__ import annotations
@@ -63,22 +68,27 @@ def _stiff_film() -> Tube:
 def test_thin_stiff_film_fold_is_singular_at_the_impedance_value():
     """The 24-node expansion of (70, 0) (before: ConvergenceError, Newton on a pressure
     mode; at 18 nodes the saddle's Newton happened to find the fold): A(g) singular within
-    1e-8 of the impedance route's critical value (measured 6.2e-10; 18 .. 48 nodes within
-    1.6e-9), and the coefficient g_2 = 1161.69 (18 .. 48 nodes 1161.686 .. 1161.705)."""
+    1e-12 of the impedance route's critical value (measured 2.4e-14, 18 .. 48 nodes 2.1e-14
+    .. 2.5e-14; in the nodal basis and on the matrices' eigenvalue 6.2e-10, up to 1.6e-9),
+    and the coefficient g_2 = 1161.6907319 (18 .. 48 nodes 1161.69073185 .. 1161.69073189;
+    in the nodal basis 1161.673 .. 1161.705) with its rounding sample `derivative_error`
+    1.0e-7 (nodal: 1.5e-3)."""
     e = tube_expansion(_stiff_film(), 70, THETA, nodes=24)
-    assert e.control_value == pytest.approx(e.impedance_value, rel=1e-8)
-    assert e.coefficient == pytest.approx(1161.69, abs=0.03)
+    assert e.control_value == pytest.approx(e.impedance_value, rel=1e-12)
+    assert e.coefficient == pytest.approx(1161.6907319, abs=1e-6)
+    assert e.derivative_error < 1e-6
     assert e.inner_face == pytest.approx(0.99942, abs=1e-5)  # the peak is inside the film
 
 
 @pytest.mark.slow
 def test_thin_stiff_film_coefficient_converges_within_its_estimate():
-    """koiter_coefficient (18, 24, 32 nodes: 1161.685932, estimate 0.0146) against 40 and
-    48 nodes (1161.688520, 1161.705340): within the door's estimate plus the other's own
-    rounding sample (its derivative_error: a value at 48 nodes is as noisy as the door's).
-    On this film the estimate is set by the numerator's rounding (A2 of condition ~1e10,
-    ~1e-5 relative), sampled by nudging the control; every critical value lies within 1e-8
-    of the impedance route's (measured 1.6e-9)."""
+    """koiter_coefficient (18, 24, 32 nodes: 1161.6907318522, estimate 1.1e-7, 1e-10 of
+    it) against 40 and 48 nodes (1161.6907318784, 1161.6907318885): within the door's
+    estimate plus the other's own rounding sample (its derivative_error). In the nodal basis
+    the estimate was set by the numerator's rounding (the energy 2 A2[psi, psi] of
+    componentwise condition 5e10: 0.0146, then 0.0369 = 3.2e-5 on a later install, over the
+    bound); every critical value lies within 1e-8 of the impedance route's (measured
+    2.5e-14)."""
     r = koiter_coefficient(_stiff_film(), (70, 0), THETA)
     assert r.branch == "supercritical"
     for nodes in (40, 48):

@@ -19,6 +19,7 @@ from electrogrowth.incremental.dielectric_forms import DielectricForms
 from electrogrowth.incremental.polar_forms import rings
 from electrogrowth.model.layer import Layer
 from electrogrowth.model.layers import Tube
+from tests.bifurcation.koiter_newton import peak_row
 
 THETA = "growth[1].theta"
 
@@ -82,8 +83,8 @@ def test_branch_curvature_from_a_direct_nonlinear_solve():
     phi = _nearest_zero(first.stiffness(solve_base_state(tube.at(THETA, e.control_value))))[1]
     phi = phi / first.peak_radial(phi, first.slices[0])[1]
     a = phi[first.slices[0]]
-    idx = int(np.argmax(np.abs(a)))
-    node = one[(0, 1)].start + idx
+    row = peak_row(first.rings, a, one[(0, 1)].start, full.size)
+    peak = row[one[(0, 1)]] @ a  # the mode's u_r at that node
     zero = {k: np.zeros_like(full.R) for k in full.maps}
 
     def residual(c, w):
@@ -101,8 +102,8 @@ def test_branch_curvature_from_a_direct_nonlinear_solve():
             J = np.zeros((size + 1, size + 1))
             J[:size, :size] = sum(full.hessian(L[k], f) for k in (2, 3, 4))
             J[:size, size] = (residual(c + h, w) - residual(c - h, w)) / (2 * h)
-            J[size, node] = 1.0
-            rhs = np.concatenate([residual(c, w), [w[node] - eps * a[idx]]])
+            J[size, :size] = row
+            rhs = np.concatenate([residual(c, w), [row @ w - eps * peak]])
             step = np.linalg.solve(J, rhs)
             w, c = w - step[:size], c - step[size]
             if abs(step[size]) < 1e-13:

@@ -38,7 +38,7 @@ from electrogrowth.model.layer import Layer
 from electrogrowth.model.layers import Tube
 from electrogrowth.model.materials import gent, mooney_rivlin, neo_hookean
 
-from .koiter_newton import branch_curvature, richardson
+from .koiter_newton import branch_curvature, peak_row, richardson
 from .test_koiter_energies import _base, _local_gradient
 
 THETA, AXIAL = "growth[1].theta", "growth[1].z"
@@ -246,10 +246,10 @@ def _newton(material):
     mode_vector = np.zeros(full.size)
     for h, sl in zip(MODE, first.slices):
         mode_vector[where[h]] = phi[sl]
-    node = where[0, 1, 1].start + int(np.argmax(np.abs(phi[first.slices[0]])))
+    row = peak_row(first.rings, phi[first.slices[0]], where[0, 1, 1].start, full.size)
     residual, jacobian = _full_equations(full, tube, THETA)
     D = branch_curvature(
-        e.control_value, mode_vector, node, residual, jacobian, (0.001, 0.002, 0.004)
+        e.control_value, mode_vector, row, residual, jacobian, (0.001, 0.002, 0.004)
     )
     return e.coefficient, richardson(D)
 

@@ -26,7 +26,7 @@ from electrogrowth.incremental.pressure_forms import FaceForms
 from electrogrowth.incremental.wall_forms import WallForms
 from electrogrowth.incremental.wall_pressure_forms import WallFaceForms
 
-from .koiter_newton import branch_curvature, onset_floor, richardson, richardson_floor
+from .koiter_newton import branch_curvature, onset_floor, peak_row, richardson, richardson_floor
 from .test_koiter_wrinkle import FULL, THETA, _film_tube, _full_equations, _meridian, _polar
 
 
@@ -122,7 +122,8 @@ def test_branch_curvature_from_a_direct_nonlinear_solve():
     mode_vector = np.zeros(full.size)
     for h, sl in zip(MODE, first.wall.slices):
         mode_vector[where[h]] = phi[sl]
-    node = where[0, 1, 1].start + int(np.argmax(np.abs(phi[first.wall.slices[0]])))
+    radial = phi[first.wall.slices[0]]
+    row = peak_row(first.wall.rings, radial, where[0, 1, 1].start, full.size)
     wall_residual, wall_jacobian = _full_equations(full, tube, THETA)
 
     def residual(c, w):  # both less their value at w = 0 (which cancel: the balance)
@@ -136,7 +137,7 @@ def test_branch_curvature_from_a_direct_nonlinear_solve():
         return wall_jacobian(c, w) + face.hessian(P[2]) + face.hessian(P[3], f)
 
     D = branch_curvature(
-        e.control_value, mode_vector, node, residual, jacobian, (0.001, 0.002, 0.004)
+        e.control_value, mode_vector, row, residual, jacobian, (0.001, 0.002, 0.004)
     )
     floor = onset_floor(
         lambda c: first.stiffness(solve_base_state(tube.at(THETA, c))), e.control_value

@@ -21,14 +21,18 @@ from ..incremental.meridian_dielectric_forms import MeridianDielectricForms
 from ..incremental.meridian_forms import MeridianForms
 from ..incremental.polar_forms import PolarForms, rings
 from ..incremental.pressure_forms import FaceForms
+from ..incremental.ring_basis import nodal_values
 from ..incremental.wall_pressure_forms import WallFaceForms
 from ..model.layers import Tube
 from .control_derivative import reach
 from .koiter_film import MODE
 from .koiter_tube import (
+    NUDGE,
     SECOND,
     TubeExpansion,
     axial_wavenumber,
+    null_vector,
+    on_the_energy,
     onset_value,
     quadratic_part,
     singular_point,
@@ -113,6 +117,21 @@ def energies(tube: Tube, mode, control: str, nodes: int) -> tuple[LoadedEnergy, 
     return first, second
 
 
+def _numerator(tube: Tube, control: str, forms, c: float, phi):
+    """(phi scaled to max |u_r| = R_i, its wall's and faces' fields, 2 A[psi, psi] - 4 E4)
+    at c, as koiter_tube._numerator with the load: once the wall's rounding is gone
+    (ring_basis.py) the numerator's rounding (~1e-11 relative on an outer film's fold,
+    (57, 0) under pressure) is what the node count scatters, and the expansion samples it
+    by nudging c, as koiter_tube's does."""
+    first, second = forms
+    phi = phi / first.wall.peak_radial(phi, first.wall.slices[0])[1]  # max |u_r| = R_i
+    state = solve_base_state(tube.at(control, c))
+    fields = first.wall.fields(phi), first.face.fields(phi)
+    A2 = second.stiffness(state)
+    psi = np.linalg.solve(A2, -second.third(state, *fields))
+    return phi, fields, float(2 * (psi @ A2 @ psi) - 4 * first.quartic(state, fields[0]))
+
+
 def loaded_expansion(
     tube: Tube, mode, control: str, *, nodes: int = 24, side: str | None = None
 ) -> TubeExpansion:
@@ -126,22 +145,28 @@ def loaded_expansion(
 
     start = onset_value(tube, mode, control, side)
     where = reach(tube, control)
-    c, phi = singular_point(A, start, f"{control} of mode {mode}", where)
-    phi = phi / first.wall.peak_radial(phi, first.wall.slices[0])[1]  # max |u_r| = R_i
-    state = solve_base_state(tube.at(control, c))
-    f1, face1 = first.wall.fields(phi), first.face.fields(phi)
-    A2 = second.stiffness(state)
-    psi = np.linalg.solve(A2, -second.third(state, f1, face1))
-    quartic = first.quartic(state, f1)
+    quadratic = quadratic_part(tube, control, first.quadratic)
+
+    def energy(polynomial, phi):  # at phi's local fields, the wall's and the faces'
+        return first.energy(polynomial, first.wall.fields(phi), first.face.fields(phi))
+
+    what = f"{control} of mode {mode}"
+    c, phi = singular_point(A, start, what, where)
+    c, phi = on_the_energy(A, quadratic, energy, c, phi, where, what)
+    phi, (f1, face1), numerator = _numerator(tube, control, (first, second), c, phi)
+    nudged = c + NUDGE * max(abs(c), where.scale)  # a sample of the numerator's rounding
+    again = _numerator(tube, control, (first, second), nudged, null_vector(A(nudged), phi))
     c2, error = slope_ratio(  # A' term by term, the wall's and the load's (koiter_tube.py)
-        2 * (psi @ A2 @ psi) - 4 * quartic,
-        quadratic_part(tube, control, first.quadratic),
+        numerator,
+        quadratic,
         c,
         phi,
         where,
         along=lambda d: 2 * first.energy(d, f1, face1),
     )
-    radial = phi[first.wall.slices[0]]  # u_r on the rings, from R_i to R_N
+    error += abs(c2 * (again[2] - numerator) / numerator) if numerator else 0.0
+    # u_r at the nodes, from R_i to R_N (the unknowns are each ring's differences)
+    radial = nodal_values(first.wall.rings, phi[first.wall.slices[0]])
     return TubeExpansion(
         float(c),
         c2,

@@ -22,6 +22,7 @@ from ..incremental.dielectric_forms import DielectricForms
 from ..incremental.meridian_forms import MeridianForms
 from ..incremental.monomial_forms import Polynomial
 from ..incremental.polar_forms import PolarForms, rings
+from ..incremental.ring_basis import nodal_values
 from ..model.layers import Tube
 from ..outcomes import Kind
 from .control_derivative import Reach, derivative, derivative_and_noise, reach
@@ -266,7 +267,13 @@ def expand(tube, control, first, second, start, what) -> TubeExpansion:
         return first.stiffness(solve_base_state(tube.at(control, c)))
 
     where = reach(tube, control)
+    quadratic = quadratic_part(tube, control, lambda state: first.lagrangian(state)[2])
+
+    def energy(polynomial, phi):  # at phi's local fields: E2(phi) = phi^T A phi / 2
+        return first.energy(polynomial.monomials(), first.fields(phi))
+
     c, phi = singular_point(A, start, what, where)
+    c, phi = on_the_energy(A, quadratic, energy, c, phi, where, what)
     phi, f1, numerator = _numerator(tube, control, first, second, c, phi)
     rounding = _numerator_rounding(tube, control, (first, second), A, c, phi, where, numerator)
     axial = None
@@ -275,16 +282,43 @@ def expand(tube, control, first, second, start, what) -> TubeExpansion:
         numerator += axial.term
     c2, error = slope_ratio(  # A' along the path (force or stretch), term by term
         numerator,
-        quadratic_part(tube, control, lambda state: first.lagrangian(state)[2]),
+        quadratic,
         c,
         phi,
         where,
         along=lambda d: 2 * first.energy(d.monomials(), f1),
     )
     error += abs(c2 * rounding / numerator) if numerator else 0.0
-    radial = phi[first.slices[0]]  # u_r on the rings, from R_i to R_N
+    # u_r at the nodes, from R_i to R_N (the unknowns are each ring's differences)
+    radial = nodal_values(first.rings, phi[first.slices[0]])
     inner, outer = float(radial[0]), float(radial[-1])
     return TubeExpansion(float(c), c2, float(start), inner, float(numerator), axial, outer, error)
+
+
+def on_the_energy(A, quadratic, energy, c: float, phi, where: Reach, what: str):
+    """(c, phi) refined by Newton's method on the Rayleigh quotient phi^T A(c) phi of the
+    null vector phi of A(c), evaluated as the energy 2 E2(phi) (``energy(quadratic(c),
+    phi)``: the quadratic part's Polynomial at phi's local fields) with the slope 2 E2'(phi)
+    from the Polynomial's differenced coefficients. The matrices' eigenvalue carries the
+    rounding of A (~eps |A|, |A| ~ 1e11 for a thin stiff film at 40 nodes), where
+    :func:`singular_point`'s Newton stops up to 1e-9 of the scale from the root (5e-10
+    there, which moved c_2 by 7e-10 relative); the energy's rounding is that of its fields
+    (docs/derivation-koiter.md, "The singular point on the energy"). A first step longer
+    than 1e-8 of the scale (10 times Newton's own tolerance) would not be the same root:
+    (c, phi) are kept as they came."""
+    start, first_phi, slope = c, phi, None
+    for _ in range(3):
+        phi = null_vector(A(c), phi)
+        if slope is None:
+            slope = 2 * energy(derivative(quadratic, c, where), phi)
+        step = 2 * energy(quadratic(c), phi) / slope if slope else 0.0
+        scale = max(where.scale, abs(c))
+        if abs(c - step - start) > 1e-8 * scale:
+            return start, first_phi
+        c = _inside(c, c - step, what, where)
+        if abs(step) <= 1e-13 * scale:
+            break  # phi, of c + step, is the null vector to ~1e-13
+    return c, phi
 
 
 def _numerator(tube, control, first, second, c, phi):
@@ -307,10 +341,10 @@ NUDGE = 1e-11
 
 def _numerator_rounding(tube, control, forms, A, c, phi, where, numerator) -> float:
     """The change of ``numerator`` (at c) when c is nudged by NUDGE: a sample of its
-    rounding. A thin stiff film's correction solves with A2 of condition ~1e10 (the
-    film's through-thickness stiffness against the substrate's breathing: 1e4 times as
-    stiff, 1e-3 thick), and its numerator wanders by ~1e-5 relative with the node count
-    and with c moved by 1e-11; for a thick tube the change is ~1e-14."""
+    rounding. In nodal unknowns a thin stiff film's numerator (1e4 times as stiff as its
+    substrate, 1e-3 thick) wandered by ~1e-5 relative with the node count and with c
+    moved by 1e-11; in ring_basis.py's unknowns the change is ~2e-11, N's true change
+    (d ln N / d ln c = -3), and for a thick tube ~1e-14."""
     nudged = c + NUDGE * max(abs(c), where.scale)
     phi = null_vector(A(nudged), phi)
     return abs(_numerator(tube, control, *forms, nudged, phi)[2] - numerator)

@@ -28,7 +28,8 @@ import numpy as np
 from .._types import FloatArray
 from ..errors import ParameterError
 from .monomial_forms import MonomialForms, by_degree, product
-from .polar_forms import Ring, peak_on_rings, radial_maps, unknown_slices
+from .polar_forms import Ring, peak_on_rings, unknown_slices
+from .ring_basis import potential_maps, radial_maps
 from .strain_energy_forms import strain_energy
 
 
@@ -55,6 +56,7 @@ class DielectricForms(MonomialForms):
             raise ParameterError(f"m = {m}: prismatic modes need m >= 2")
         theta = 2 * np.pi * np.arange(theta_points) / (theta_points * m)
         R, wR, layer, V, D, P = radial_maps(rings_)
+        E, DE = potential_maps(rings_)  # nodal: zero on the electrodes
         nR, n_disp, n_pres = len(R), V.shape[1], P.shape[1]
         sizes = {0: n_disp, 1: n_disp, 2: n_pres, 3: n_disp - 2}  # phi: interior nodes
         slices, at = unknown_slices([f for f, _ in harmonics], sizes)
@@ -76,8 +78,8 @@ class DielectricForms(MonomialForms):
             elif field == 2:
                 maps["q"][:, sl] += np.kron(c, P)
             else:  # phi = e cos, zero on the electrodes: E~_R = -e' cos, E~_T = n e / R sin
-                maps["ER"][:, sl] += np.kron(-c, D[:, 1:-1])
-                maps["ET"][:, sl] += np.kron(n * s, inv * V[:, 1:-1])
+                maps["ER"][:, sl] += np.kron(-c, DE)
+                maps["ET"][:, sl] += np.kron(n * s, inv * E)
         weight = np.tile(wR, theta_points) / theta_points
         tiled = np.tile(R, theta_points), np.tile(layer, theta_points)
         return cls(

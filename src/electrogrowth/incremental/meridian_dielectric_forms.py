@@ -25,7 +25,8 @@ from ..errors import ParameterError
 from .dielectric_forms import _sum
 from .meridian_forms import MeridianForms
 from .monomial_forms import by_degree, product
-from .polar_forms import radial_maps, unknown_slices
+from .polar_forms import unknown_slices
+from .ring_basis import potential_maps, radial_maps
 
 FIELDS = ("rR", "rZ", "zR", "zZ", "tT", "q", "ER", "EZ")
 
@@ -43,6 +44,7 @@ class MeridianDielectricForms(MeridianForms):
             raise ParameterError("U_z = b_0 sin(0) is no field: leave (1, 0) out")
         Z = 2 * np.pi * np.arange(z_points) / (z_points * K)
         R, wR, layer, V, D, P = radial_maps(rings_)
+        E, DE = potential_maps(rings_)  # nodal: zero on the electrodes
         nR, n_disp, n_pres = len(R), V.shape[1], P.shape[1]
         sizes = {0: n_disp, 1: n_disp, 2: n_pres, 3: n_disp - 2}  # phi: interior nodes
         slices, at = unknown_slices([f for f, _ in harmonics], sizes)
@@ -60,8 +62,8 @@ class MeridianDielectricForms(MeridianForms):
             elif field == 2:
                 maps["q"][:, sl] += np.kron(c, P)
             else:  # phi = e cos, zero on the electrodes: E~_R = -e' cos, E~_Z = k e sin
-                maps["ER"][:, sl] += np.kron(-c, D[:, 1:-1])
-                maps["EZ"][:, sl] += np.kron(k * s, V[:, 1:-1])
+                maps["ER"][:, sl] += np.kron(-c, DE)
+                maps["EZ"][:, sl] += np.kron(k * s, E)
         weight = np.tile(wR, z_points) / z_points
         tiled = np.tile(R, z_points), np.tile(layer, z_points)
         return cls(

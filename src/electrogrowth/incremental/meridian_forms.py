@@ -28,7 +28,8 @@ import numpy as np
 from .._types import FloatArray
 from ..errors import ParameterError
 from .monomial_forms import MonomialForms
-from .polar_forms import Ring, peak_on_rings, radial_maps, unknown_slices
+from .polar_forms import Ring, peak_on_rings, unknown_slices
+from .ring_basis import radial_maps
 from .strain_energy_forms import strain_energy
 
 #: the local fields of the energy: the displacement gradient and the pressure increment

@@ -22,8 +22,9 @@ so with p0 the base Lagrange multiplier (the state's ``pressure``) and q its inc
 per unit reference volume, integrated over R dR and averaged over Theta. Harmonics of
 m Theta with the reflection symmetry Theta -> -Theta: U_r = a_j cos(j m Theta),
 U_th = b_j sin(j m Theta), q = c_j cos(j m Theta); a, b on Chebyshev-Lobatto nodes of each
-segment (continuous across segments and layers: bonded), c on the interior nodes
-(P_N - P_{N-2}), as in plane_forms.py; no node is clamped (free faces).
+segment (continuous across segments and layers: bonded; their unknowns each ring's inner
+value and differences, ring_basis.py), c on the interior nodes (P_N - P_{N-2}), as in
+plane_forms.py; no node is clamped (free faces).
 """
 
 from __future__ import annotations
@@ -35,7 +36,8 @@ import numpy as np
 from .._types import FloatArray
 from ..errors import ParameterError
 from .monomial_forms import MonomialForms, by_degree
-from .plane_forms import _barycentric, _segment_maps
+from .plane_forms import _barycentric
+from .ring_basis import nodal_values, radial_maps
 from .strain_energy_forms import strain_energy, times
 
 _THETA_POINTS = 8
@@ -71,30 +73,6 @@ def rings(tube, m: float, nodes: int = 24) -> tuple[Ring, ...]:
         cuts = sorted(set(cuts))
         out += [Ring(x, y, k, nodes) for x, y in zip(cuts, cuts[1:])]
     return tuple(out)
-
-
-def radial_maps(rings_: tuple[Ring, ...]):
-    """The rings' quadrature points R, their weights times R, their layer, and the maps from
-    the nodal values to a displacement (V) and its R-derivative (D) at them (continuous
-    across the rings: neighbours share the interface node) and to a pressure (P, its own
-    interior nodes per ring): the radial half of every tube form (this module's, the
-    meridian's, the dielectric one)."""
-    per = [_segment_maps(_Seg(r.inner, r.outer, r.nodes), max(2 * r.nodes, 8)) for r in rings_]
-    nR = sum(len(p[0]) for p in per)
-    n_disp = sum(r.nodes - 1 for r in rings_) + 1
-    n_pres = sum(r.nodes - 2 for r in rings_)
-    V, D, P = np.zeros((nR, n_disp)), np.zeros((nR, n_disp)), np.zeros((nR, n_pres))
-    row, col_d, col_p = 0, 0, 0
-    for r, (Y, _w, Pm, PD, Pi) in zip(rings_, per):
-        rows = slice(row, row + len(Y))
-        V[rows, col_d : col_d + r.nodes] = Pm
-        D[rows, col_d : col_d + r.nodes] = PD
-        P[rows, col_p : col_p + r.nodes - 2] = Pi
-        row, col_d, col_p = row + len(Y), col_d + r.nodes - 1, col_p + r.nodes - 2
-    R = np.concatenate([p[0] for p in per])
-    wR = np.concatenate([p[1] for p in per]) * R
-    layer = np.concatenate([np.full(len(p[0]), r.layer) for r, p in zip(rings_, per)])
-    return R, wR, layer, V, D, P
 
 
 def unknown_slices(fields, sizes: dict) -> tuple[list[slice], int]:
@@ -263,9 +241,11 @@ def coefficient_arrays(forms, state) -> dict:
     return out
 
 
-def peak_on_rings(rings_, a_nodes: FloatArray) -> tuple[float, float]:
-    """(R, a(R)) where |a| of the nodal values ``a_nodes`` (continuous across ``rings_``) is
-    largest: on a dense grid of each ring, then a parabola through the best three points."""
+def peak_on_rings(rings_, unknowns: FloatArray) -> tuple[float, float]:
+    """(R, a(R)) where |a| of a displacement (its ``unknowns`` in ring_basis.radial_maps'
+    basis, continuous across ``rings_``) is largest: on a dense grid of each ring, then a
+    parabola through the best three points."""
+    a_nodes = nodal_values(rings_, unknowns)
     at, best = 0, (0.0, 0.0)
     for r in rings_:
         t = np.cos(np.pi * np.arange(r.nodes) / (r.nodes - 1))[::-1]
@@ -284,10 +264,3 @@ def peak_on_rings(rings_, a_nodes: FloatArray) -> tuple[float, float]:
             best = (r.inner + 0.5 * (xi + 1) * (r.outer - r.inner), float(peak))
         at += r.nodes - 1
     return best
-
-
-@dataclasses.dataclass(frozen=True)
-class _Seg:
-    bottom: float
-    top: float
-    nodes: int

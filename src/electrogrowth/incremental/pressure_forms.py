@@ -25,6 +25,7 @@ import numpy as np
 
 from .._types import FloatArray
 from .monomial_forms import MonomialForms
+from .ring_basis import face_rows
 
 #: the face fields: a = U_r, b the other component, t = b's derivative along the face,
 #: s = a's (prismatic only); suffix i inner, o outer
@@ -54,13 +55,13 @@ class FaceForms(MonomialForms):
                 continue
             k = j * wavenumber
             c, s = np.cos(k * x), np.sin(k * x)
-            for side, node in zip(FACES, (sl.start, sl.stop - 1)):
+            for side, row in zip(FACES, face_rows(forms.rings)):  # the face's value
                 if field == 0:  # a = a_j cos, a' = -k a_j sin
-                    maps["a" + side][:, node] += c
-                    maps["s" + side][:, node] += -k * s
+                    maps["a" + side][:, sl] += np.outer(c, row)
+                    maps["s" + side][:, sl] += np.outer(-k * s, row)
                 else:  # b = b_j sin, b' = k b_j cos
-                    maps["b" + side][:, node] += s
-                    maps["t" + side][:, node] += k * c
+                    maps["b" + side][:, sl] += np.outer(s, row)
+                    maps["t" + side][:, sl] += np.outer(k * c, row)
         return cls(family, maps, np.full(points, 1.0 / points), forms.size)
 
     def potential(self, state) -> dict[int, list]:

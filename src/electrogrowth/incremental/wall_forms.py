@@ -39,7 +39,8 @@ import numpy as np
 from .._types import FloatArray
 from ..errors import ParameterError
 from .monomial_forms import by_degree, pair_weights
-from .polar_forms import Ring, coefficient_arrays, peak_on_rings, radial_maps, unknown_slices
+from .polar_forms import Ring, coefficient_arrays, peak_on_rings, unknown_slices
+from .ring_basis import potential_maps, radial_maps
 from .strain_energy_forms import strain_energy, times
 
 #: the gradient's entries (i, J), i in (r, theta, z) = (0, 1, 2), J in (R, Theta, Z)
@@ -99,12 +100,14 @@ class WallForms:
                 raise ParameterError(f"harmonic {(field, j, l)} is sin(0): no field")
         T, Zg = angular_grid(m, K, angular_points)
         R, wR, layer, V, D, P = radial_maps(rings_)
+        potential = potential_maps(rings_)  # nodal: zero on the electrodes
         nV, nP = V.shape[1], P.shape[1]
         sizes = {0: nV, 1: nV, 2: nV, 3: nP, 4: nV - 2}  # phi: interior nodes
         slices, at = unknown_slices([h[0] for h in harmonics], sizes)
         blocks: dict = {k: [] for k in FIELDS}
         for (field, j, l), part in zip(harmonics, slices):
-            for name, angular, radial in _derivatives(field, j * m, l * K, T, Zg, R, V, D, P):
+            radials = (R, V, D, P, potential)
+            for name, angular, radial in _derivatives(field, j * m, l * K, T, Zg, *radials):
                 if np.any(angular) and np.any(radial):
                     blocks[name].append(Block(part, angular, radial))
         weight = np.outer(np.full(T.size, 1.0 / T.size), wR)
@@ -246,9 +249,10 @@ def _period(number: float, points: int) -> FloatArray:
     return 2 * np.pi * np.arange(points) / (points * number)
 
 
-def _derivatives(field, nt, nz, T, Z, R, V, D, P):
+def _derivatives(field, nt, nz, T, Z, R, V, D, P, potential):
     """(field name, angular factor, radial matrix) of one harmonic of one unknown field,
-    angular numbers nt = j m around and nz = l K along."""
+    angular numbers nt = j m around and nz = l K along; ``potential`` the potential's
+    (value, R-derivative) maps (ring_basis.potential_maps)."""
     ct, st, cz, sz = np.cos(nt * T), np.sin(nt * T), np.cos(nz * Z), np.sin(nz * Z)
     inv = (1.0 / R)[:, None]
     if field == 0:  # U_r = a cos cos
@@ -268,9 +272,9 @@ def _derivatives(field, nt, nz, T, Z, R, V, D, P):
     if field == 2:  # U_z = c cos sin
         return [("zR", ct * sz, D), ("zT", st * sz, -nt * inv * V), ("zZ", ct * cz, nz * V)]
     if field == 4:  # phi = e cos cos, zero on the electrodes (the faces): E~ = -Grad phi
-        E = V[:, 1:-1]
+        E, DE = potential
         return [
-            ("ER", ct * cz, -D[:, 1:-1]),
+            ("ER", ct * cz, -DE),
             ("ET", st * cz, nt * inv * E),
             ("EZ", ct * sz, nz * E),
         ]

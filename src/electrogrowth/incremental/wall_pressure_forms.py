@@ -21,6 +21,7 @@ from __future__ import annotations
 import numpy as np
 
 from .monomial_forms import by_degree
+from .ring_basis import face_rows
 from .strain_energy_forms import times
 from .wall_forms import Block, WallForms, angular_grid
 
@@ -30,7 +31,7 @@ FACE_FIELDS = ("a", "aT", "aZ", "b", "bT", "bZ", "c", "cT", "cZ")
 
 class WallFaceForms(WallForms):
     """The faces' fields of a WallForms' unknowns: the two "radial points" are the inner
-    and the outer face (the first and last Lobatto node of each displacement harmonic)."""
+    and the outer face (ring_basis.face_rows of each displacement harmonic)."""
 
     @classmethod
     def of(cls, wall: WallForms, *, angular_points: int = 8) -> WallFaceForms:
@@ -39,8 +40,7 @@ class WallFaceForms(WallForms):
         for (field, j, l), part in zip(wall.harmonics, wall.slices):
             if field > 2:
                 continue
-            face = np.zeros((2, part.stop - part.start))
-            face[0, 0] = face[1, -1] = 1.0
+            face = face_rows(wall.rings)  # the faces' values from the unknowns
             for name, angular in _face_factors(field, j * wall.m, l * wall.K, T, Z):
                 if np.any(angular):
                     blocks[name].append(Block(part, angular, face))
