@@ -427,7 +427,7 @@ def _with_short_waves(
     crit = _surface_point(limit, side)
     if turned:  # a mode beyond is past its root at the limit, yet no root was found before it
         crit = dataclasses.replace(crit, status=Status.INACCURATE, **_UNFOUND)
-    elif options.extend:  # the ranges reached their caps: is a fold beyond them first?
+    elif options.extend:  # modes are read up to the caps only: is a fold beyond them first?
         crit = _past_caps(params, solve_for, options, crit)
     return dataclasses.replace(
         result,
