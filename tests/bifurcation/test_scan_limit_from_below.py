@@ -144,3 +144,26 @@ def test_the_ladder_past_the_caps_turns_where_the_independent_folds_are(
     assert unstable_past_cap(tube, solve_for, before, True) is None
     m, n = unstable_past_cap(tube, solve_for, past, True)
     assert m > 2000 or n > 2000
+
+
+def test_a_layered_finite_mode_is_read_past_the_caps_and_a_uniform_one_is_not(monkeypatch):
+    """The routing of the check past the caps (its physics: the two tests above): a layered
+    tube's finite critical mode is read there (a fold beyond the caps before it makes it
+    INACCURATE, an upper bound), a uniform tube's is not (no layer thin against the caps;
+    its scans would pay for the read). The read is faked here to report a turned mode."""
+    import electrogrowth.bifurcation.scan as scan
+
+    calls = []
+
+    def turned(params, solve_for, value, prismatic):
+        calls.append(value)
+        return (4000, 0)
+
+    monkeypatch.setattr(scan, "unstable_past_cap", turned)
+    bilayer = Tube([Layer(1.1, shear_modulus=5.0), Layer(1.5)], stretch=1.0, length=2.0)
+    c = scan_modes(bilayer, "growth[1].theta", options=SHORT).critical
+    assert c.kind == "bifurcation" and calls == [c.value]
+    assert c.status == "inaccurate" and "mode (4000, 0), beyond the largest m" in c.message
+    calls.clear()
+    c = scan_modes(Tube.uniform(1.4, 1.0), "growth", options=SHORT).critical
+    assert c.kind == "bifurcation" and c.status == "ok" and calls == []

@@ -125,7 +125,8 @@ def scan_modes(
     else:
         result = _windows_without_surface(params, solve_for, side, result, options, rtol, limit)
     # the runners-up were the march's roots (max(rtol, 1e-9)): solved at rtol (runners.py)
-    return _capped(with_finished_runners(params, solve_for, side, rtol, result))
+    result = _capped(with_finished_runners(params, solve_for, side, rtol, result))
+    return _past_caps(params, solve_for, options, result)
 
 
 def _stable_short_waves_at_start(params, solve_for, side) -> None:
@@ -427,8 +428,6 @@ def _with_short_waves(
     crit = _surface_point(limit, side)
     if turned:  # a mode beyond is past its root at the limit, yet no root was found before it
         crit = dataclasses.replace(crit, status=Status.INACCURATE, **_UNFOUND)
-    elif options.extend:  # modes are read up to the caps only: is a fold beyond them first?
-        crit = _past_caps(params, solve_for, options, crit)
     return dataclasses.replace(
         result,
         critical=crit,
@@ -540,24 +539,32 @@ _UNFOUND = {
 }
 
 
-def _past_caps(params, solve_for, options, crit: CriticalPoint) -> CriticalPoint:
-    """``crit``, a face's short-wave limit about to be the result, INACCURATE where a mode
-    beyond the caps is past its root at it (beyond.unstable_past_cap): the tube then
-    wrinkles before the limit in waves shorter than the scan resolves, and the limit is
-    only an upper bound on its critical value."""
-    past = unstable_past_cap(params, solve_for, crit.value, options.prismatic)
+def _past_caps(params, solve_for, options, result: ScanResult) -> ScanResult:
+    """``result``, its critical point INACCURATE where a mode beyond the caps is past its
+    root at its value (beyond.unstable_past_cap): the tube then wrinkles first in waves
+    shorter than the scan resolves, and the value is only an upper bound on its critical
+    value. Read at a face's short-wave limit, and at a finite mode of a layered tube (a
+    thin layer's folds); not at a uniform tube's finite mode, whose wall has no layer thin
+    against the caps (and whose scans would pay ~25 ms for it)."""
+    c = result.critical
+    finite = c.kind == Kind.BIFURCATION and not params.is_uniform
+    if not options.extend or c.status != Status.OK or not (c.kind == Kind.SURFACE or finite):
+        return result
+    past = unstable_past_cap(params, solve_for, c.value, options.prismatic)
     if past is None:
-        return crit
+        return result
+    what = "short-wave limit" if c.kind == Kind.SURFACE else "value"
     message = (
         f"mode {past}, beyond the largest m = {M_CAP} and n = {N_CAP} the scan resolves, is"
-        " past its root at this short-wave limit: the tube wrinkles before it, in shorter"
-        " waves than the scan resolves (the limit is an upper bound on the critical value)"
+        f" past its root at this {what}: the tube wrinkles before it, in shorter waves than"
+        " the scan resolves (the value is an upper bound on the critical value)"
     )
     remedy = (
-        "take the limit as an upper bound; the folds of a layer this thin are those of the"
+        "take the value as an upper bound; the folds of a layer this thin are those of the"
         " flat layer on its substrate (docs/derivation-film.md)"
     )
-    return dataclasses.replace(crit, status=Status.INACCURATE, message=message, remedy=remedy)
+    crit = dataclasses.replace(c, status=Status.INACCURATE, message=message, remedy=remedy)
+    return dataclasses.replace(result, critical=crit)
 
 
 def _before(c: CriticalPoint, value: float, side) -> bool:
