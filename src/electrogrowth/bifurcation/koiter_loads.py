@@ -27,11 +27,10 @@ from ..model.layers import Tube
 from .control_derivative import reach
 from .koiter_film import MODE
 from .koiter_tube import (
-    NUDGE,
     SECOND,
     TubeExpansion,
     axial_wavenumber,
-    null_vector,
+    numerator_rounding,
     on_the_energy,
     onset_value,
     quadratic_part,
@@ -154,8 +153,10 @@ def loaded_expansion(
     c, phi = singular_point(A, start, what, where)
     c, phi = on_the_energy(A, quadratic, energy, c, phi, where, what)
     phi, (f1, face1), numerator = _numerator(tube, control, (first, second), c, phi)
-    nudged = c + NUDGE * max(abs(c), where.scale)  # a sample of the numerator's rounding
-    again = _numerator(tube, control, (first, second), nudged, null_vector(A(nudged), phi))
+    rounding = numerator_rounding(
+        lambda x, v: _numerator(tube, control, (first, second), x, v)[2],
+        *(numerator, A, c, phi, where),
+    )
     c2, error = slope_ratio(  # A' term by term, the wall's and the load's (koiter_tube.py)
         numerator,
         quadratic,
@@ -164,7 +165,7 @@ def loaded_expansion(
         where,
         along=lambda d: 2 * first.energy(d, f1, face1),
     )
-    error += abs(c2 * (again[2] - numerator) / numerator) if numerator else 0.0
+    error += abs(c2 * rounding / numerator) if numerator else 0.0
     # u_r at the nodes, from R_i to R_N (the unknowns are each ring's differences)
     radial = nodal_values(first.wall.rings, phi[first.wall.slices[0]])
     return TubeExpansion(

@@ -275,7 +275,10 @@ def expand(tube, control, first, second, start, what) -> TubeExpansion:
     c, phi = singular_point(A, start, what, where)
     c, phi = on_the_energy(A, quadratic, energy, c, phi, where, what)
     phi, f1, numerator = _numerator(tube, control, first, second, c, phi)
-    rounding = _numerator_rounding(tube, control, (first, second), A, c, phi, where, numerator)
+    rounding = numerator_rounding(
+        lambda x, v: _numerator(tube, control, first, second, x, v)[2],
+        *(numerator, A, c, phi, where),
+    )
     axial = None
     if tube.control == "force":  # the (0, 0) correction's freedom in lambda_z
         axial = axial_freedom(tube, control, c, first.stiffness, phi)
@@ -339,15 +342,15 @@ def _numerator(tube, control, first, second, c, phi):
 NUDGE = 1e-11
 
 
-def _numerator_rounding(tube, control, forms, A, c, phi, where, numerator) -> float:
-    """The change of ``numerator`` (at c) when c is nudged by NUDGE: a sample of its
-    rounding. In nodal unknowns a thin stiff film's numerator (1e4 times as stiff as its
-    substrate, 1e-3 thick) wandered by ~1e-5 relative with the node count and with c
-    moved by 1e-11; in ring_basis.py's unknowns the change is ~2e-11, N's true change
-    (d ln N / d ln c = -3), and for a thick tube ~1e-14."""
+def numerator_rounding(numerator, value: float, A, c: float, phi, where: Reach) -> float:
+    """The change of ``numerator(c, phi)`` (``value`` at c) when c is nudged by NUDGE,
+    phi then the null vector of A there: a sample of its rounding (the wall's expansion
+    and the loaded one, koiter_loads.py). In nodal unknowns a thin stiff film's numerator
+    (1e4 times as stiff as its substrate, 1e-3 thick) wandered by ~1e-5 relative with the
+    node count and with c moved by 1e-11; in ring_basis.py's unknowns the change is
+    ~2e-11, N's true change (d ln N / d ln c = -3), and for a thick tube ~1e-14."""
     nudged = c + NUDGE * max(abs(c), where.scale)
-    phi = null_vector(A(nudged), phi)
-    return abs(_numerator(tube, control, *forms, nudged, phi)[2] - numerator)
+    return abs(numerator(nudged, null_vector(A(nudged), phi)) - value)
 
 
 def quadratic_part(tube: Tube, control: str, monomials):

@@ -100,13 +100,12 @@ class WallForms:
                 raise ParameterError(f"harmonic {(field, j, l)} is sin(0): no field")
         T, Zg = angular_grid(m, K, angular_points)
         R, wR, layer, V, D, P = radial_maps(rings_)
-        potential = potential_maps(rings_)  # nodal: zero on the electrodes
+        radials = R, V, D, P, potential_maps(rings_)  # the potential nodal: zero on the faces
         nV, nP = V.shape[1], P.shape[1]
         sizes = {0: nV, 1: nV, 2: nV, 3: nP, 4: nV - 2}  # phi: interior nodes
         slices, at = unknown_slices([h[0] for h in harmonics], sizes)
         blocks: dict = {k: [] for k in FIELDS}
         for (field, j, l), part in zip(harmonics, slices):
-            radials = (R, V, D, P, potential)
             for name, angular, radial in _derivatives(field, j * m, l * K, T, Zg, *radials):
                 if np.any(angular) and np.any(radial):
                     blocks[name].append(Block(part, angular, radial))
