@@ -20,11 +20,12 @@ from ..errors import ParameterError
 #: wave starts near the outer end of each layer from its dominant subspace
 #: (short_wave_start.py), so its steps no longer grow with m: ~100 at rtol 1e-5 and
 #: 130-1400 at 1e-12 for every m from 2e3 to 1e10 through Rbar_o = 100 or a lining 1e-3
-#: thick (docs/derivation-film.md, "Large m"). The kernel's first failures are a step
-#: underflow where the decay rate |(m / r, k)| reaches ~1e10 (n = 1e8 of a tube L = 0.01,
-#: m = 1e10 at rtol 1e-5); a scan searches no further than the folds of its tube's
-#: thinnest layer need (bifurcation/options.mode_caps), and shorter waves tend to the exact
-#: short-wave limit (bifurcation/surface.py).
+#: thick (docs/derivation-film.md, "What a large m costs the kernel"). Its first failures
+#: are step underflows at decay rates |(m / r, k)| of 1e9 to 1e10 (n = 1e8 of tubes L =
+#: 0.01, (1e9, 0) in a march at 1e-12); below 1e6 only the loose 1e-5 of a march failed, for
+#: (1e5, 1e5) of a film L = 0.01 (k = 3e7), and its retry at a tighter rtol resolved it
+#: (targets._tighter). A scan searches no further than its tube's thinnest layer needs
+#: (bifurcation/options.mode_caps); shorter waves tend to the exact short-wave limit.
 MODE_MAX = 10**6
 
 #: Bits of the Stroh pairs (U_j, S_j): U_r / r Sigma_rr, U_th / r Sigma_rth,
