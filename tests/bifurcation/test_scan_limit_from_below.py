@@ -236,3 +236,23 @@ def test_a_layered_finite_mode_is_read_past_the_caps_and_a_uniform_one_is_not(mo
     calls.clear()
     c = scan_modes(Tube.uniform(1.4, 1.0), "growth", options=SHORT).critical
     assert c.kind == "bifurcation" and c.status == "ok" and calls == []
+
+
+def test_certify_reads_past_2000_on_the_searched_rows_only():
+    """A scan's ranges now reach its tube's caps (m to 64064 here), searched along a few
+    rows: certify's choice reads every mode up to 2000 as before, and past it those rows at
+    the search's samples and every m within 64 of the critical mode, not the 1.9 million
+    modes of the rectangle (an hour of reads)."""
+    from electrogrowth.bifurcation.certify import choice_modes
+    from electrogrowth.bifurcation.scan_grid import every_mode_ranges, scan_grid
+    from electrogrowth.bifurcation.scan_record import ScanResult
+
+    crit = critical_value(THIN, 12836, 0, "growth[1].theta", rtol=1e-8)
+    scan = ScanResult(crit, (), (0, 64064), (1, 30))
+    assert every_mode_ranges(scan.m_range, scan.n_range) == ((0, 2000), (1, 30))
+    modes = choice_modes(scan, crit, (True, True))
+    rows = {tuple(map(int, r)) for r in modes}
+    assert {tuple(map(int, r)) for r in scan_grid((0, 2000), (1, 30), False, (True, True))} <= rows
+    assert all((m, 0, 1) in rows for m in range(12836 - 64, 12836 + 65))  # prismatic row
+    assert (64064, 0, 1) in rows and (64064, 1, 0) in rows and (5000, 7, 0) not in rows
+    assert len(modes) < 63000
