@@ -195,7 +195,7 @@ def test_flat_film_limit_converges_like_h():
 
 
 @pytest.mark.parametrize(
-    "h, options, m, value",
+    "h, options, m, value, top",
     [
         # an m range asked for beyond 64: mode by mode to 64, searched beyond (no widening)
         (
@@ -203,6 +203,7 @@ def test_flat_film_limit_converges_like_h():
             ScanOptions(m_range=(60, 2000), n_range=(1, 1), extend=False, torsional=False),
             74,
             1.0293683530,
+            2000,
         ),
         # the probe m = 129 wins over the edge m = 64: searched from 64 (search_m alone
         # from 64 gives (146, 0) at 1.0171819372318)
@@ -211,14 +212,15 @@ def test_flat_film_limit_converges_like_h():
             ScanOptions(m_range=(60, 64), n_range=(1, 1), torsional=False),
             146,
             1.0171819372,
+            64064,  # the film's own cap (options.mode_caps: 64 R / h)
             marks=pytest.mark.slow,
         ),
     ],
 )
-def test_scan_beyond_64_is_the_search(h, options, m, value):
+def test_scan_beyond_64_is_the_search(h, options, m, value, top):
     s = scan_modes(film(h, 1e-3), THETA, options=options, rtol=RTOL)
     assert (s.critical.m, s.critical.n, s.critical.family) == (m, 0, "prismatic")
-    assert s.m_range == (60, 2000) and edge_warning(s) == ""
+    assert s.m_range == (60, top) and edge_warning(s) == ""
     assert s.critical.value == pytest.approx(value, abs=2e-9)
 
 
