@@ -8,6 +8,7 @@ collocation at m = 100 and 300, and the exact flat film-on-half-space limit
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import subprocess
 import sys
@@ -18,7 +19,7 @@ import pytest
 from electrogrowth import Layer, ScanOptions, Tube, critical_value, scan_modes, solve_base_state
 from electrogrowth.bifurcation.march import ModeValue
 from electrogrowth.bifurcation.msearch import geometric_samples, refine_samples, search_m
-from electrogrowth.bifurcation.scan import EVERY_M, M_CAP, N_CAP
+from electrogrowth.bifurcation.options import EVERY_M, M_CAP, N_CAP
 from electrogrowth.bifurcation.scan_record import ScanResult
 from electrogrowth.cli.report import edge_warning
 from electrogrowth.errors import ParameterError
@@ -61,14 +62,16 @@ def steps(tube, m, rtol, g=1.1):
 
 
 def test_caps_and_samples():
-    assert M_CAP == N_CAP == MODE_MAX == 2000 and EVERY_M == 64
-    ScanOptions(m_range=(0, 2000), n_range=(1, 2000))
-    for bad in ((0, 2001), (0, 10**6)):
-        with pytest.raises(ParameterError, match="2000"):
+    """The scans' smallest caps (2000) and the largest mode (10^6, what the kernel
+    resolves): ranges and single modes go to 10^6 and no further, saying why."""
+    assert M_CAP == N_CAP == 2000 and MODE_MAX == 10**6 and EVERY_M == 64
+    ScanOptions(m_range=(0, 10**6), n_range=(1, 10**6))
+    for bad in ((0, 10**6 + 1), (0, 10**9)):
+        with pytest.raises(ParameterError, match="m_max <= 1000000 .the kernel resolves"):
             ScanOptions(m_range=bad)
-    assert check_mode(2000, 0) is Family.PRISMATIC and check_mode(0, 2000) is Family.WRINKLE
-    with pytest.raises(ParameterError, match="m <= 2000"):
-        check_mode(2001, 0)
+    assert check_mode(10**6, 0) is Family.PRISMATIC and check_mode(0, 10**6) is Family.WRINKLE
+    with pytest.raises(ParameterError, match="m <= 1000000, 0 <= n <= 1000000 .* kernel"):
+        check_mode(10**6 + 1, 0)
     s = geometric_samples(64, 2000)
     assert s[0] == 64 and s[-1] == 2000 and all(b / a <= 1.26 for a, b in zip(s, s[1:]))
     assert refine_samples(10, 14) == [11, 12, 13]
@@ -77,22 +80,30 @@ def test_caps_and_samples():
 
 
 def test_cli_accepts_large_modes():
+    """--m-max, --n-max and --mode go to MODE_MAX = 10^6, and one past it is refused in one
+    line naming the range and why it ends there (exit 2)."""
     run = lambda *a: subprocess.run(  # noqa: E731
         [sys.executable, "-m", "electrogrowth", "critical", "--outer-radius", "1.5", *a],
         capture_output=True,
         text=True,
     )
-    bad = run("--m-max", "2001")
-    assert bad.returncode == 2 and "2001" in bad.stderr and "0 to 2000" in bad.stderr
-    bad = run("--mode", "2001", "0")
-    assert bad.returncode == 2 and "0 to 2000" in bad.stderr
+    for args in (["--m-max", "1000001"], ["--n-max", "1000001"], ["--mode", "1000001", "0"]):
+        bad = run("--solve-for", "growth", *args)
+        err = bad.stderr.strip()
+        assert bad.returncode == 2 and "'1000001' is not a whole number from" in err, err
+        assert " to 1000000 (the shortest waves the kernel resolves" in err
+        assert "\n" not in err and "kernel resolves" in err
 
 
 def test_edge_warning_at_the_cap_does_not_advise_raising():
+    """At MODE_MAX raising --m-max cannot help; below it (a tube's cap of 2000 included,
+    where the status would say it) the warning advises raising it."""
     tube = film(0.002, 1e-3)
     c = critical_value(tube, 2000, 0, THETA, rtol=RTOL)
-    text = edge_warning(ScanResult(c, (), (0, 2000), (1, 30)))
+    top = dataclasses.replace(c, m=MODE_MAX)  # the warning reads the mode, not its value
+    text = edge_warning(ScanResult(top, (), (0, MODE_MAX), (1, 30), caps=(MODE_MAX, 2000)))
     assert "largest supported" in text and "raise" not in text
+    assert "raise --m-max" in edge_warning(ScanResult(c, (), (0, 2000), (1, 30)))
     below = critical_value(tube, 90, 0, THETA, rtol=RTOL)
     assert "raise --m-max" in edge_warning(ScanResult(below, (), (0, 90), (1, 30)))
 
@@ -184,7 +195,7 @@ def test_flat_film_limit_converges_like_h():
 
 
 @pytest.mark.parametrize(
-    "h, options, m, value",
+    "h, options, m, value, top",
     [
         # an m range asked for beyond 64: mode by mode to 64, searched beyond (no widening)
         (
@@ -192,6 +203,7 @@ def test_flat_film_limit_converges_like_h():
             ScanOptions(m_range=(60, 2000), n_range=(1, 1), extend=False, torsional=False),
             74,
             1.0293683530,
+            2000,
         ),
         # the probe m = 129 wins over the edge m = 64: searched from 64 (search_m alone
         # from 64 gives (146, 0) at 1.0171819372318)
@@ -200,14 +212,15 @@ def test_flat_film_limit_converges_like_h():
             ScanOptions(m_range=(60, 64), n_range=(1, 1), torsional=False),
             146,
             1.0171819372,
+            64064,  # the film's own cap (options.mode_caps: 64 R / h)
             marks=pytest.mark.slow,
         ),
     ],
 )
-def test_scan_beyond_64_is_the_search(h, options, m, value):
+def test_scan_beyond_64_is_the_search(h, options, m, value, top):
     s = scan_modes(film(h, 1e-3), THETA, options=options, rtol=RTOL)
     assert (s.critical.m, s.critical.n, s.critical.family) == (m, 0, "prismatic")
-    assert s.m_range == (60, 2000) and edge_warning(s) == ""
+    assert s.m_range == (60, top) and edge_warning(s) == ""
     assert s.critical.value == pytest.approx(value, abs=2e-9)
 
 

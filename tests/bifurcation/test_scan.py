@@ -9,7 +9,8 @@ import pytest
 from electrogrowth import ParameterError, Tube
 from electrogrowth.bifurcation.critical import critical_value
 from electrogrowth.bifurcation.march import unloaded_signs
-from electrogrowth.bifurcation.scan import M_CAP, ScanOptions, scan_modes
+from electrogrowth.bifurcation.options import M_CAP
+from electrogrowth.bifurcation.scan import ScanOptions, scan_modes
 from electrogrowth.bifurcation.scan_grid import mode_grid, scan_grid, stable_signs
 from electrogrowth.bifurcation.surface import short_wave_limit
 from electrogrowth.errors import NoBifurcationFound

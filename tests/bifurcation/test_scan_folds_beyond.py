@@ -19,29 +19,62 @@ runner-up. Now, where the limit comes before the scanned modes, the folds beyond
 unstable there. About 7 s.
 
 Found by probing (2026-12-05): the result at the cap had status OK in Python, although
-the true first fold (near m = 3300) comes before it; only the CLI warned. Now its status
-is INACCURATE with a message saying why, and the CLI exits 3 with one warning.
+the true first fold (near m = 3300) comes before it; only the CLI warned. Then its status
+was INACCURATE with a message saying why, and the CLI exited 3 with one warning: the tests
+with every tube's caps at 2000 (``caps_of_2000``) keep that for a layer thinner than its
+caps. Now each tube's caps are chosen by its thinnest layer (options.mode_caps: 213397
+here), and the scan finds the fold (3018, 0) at 1.27921022715, status ok.
 """
 
+import numpy as np
+import pytest
+
 from electrogrowth import Layer, Tube, critical_value, scan_modes
+from electrogrowth.bifurcation.options import M_CAP, N_CAP, mode_caps
 from electrogrowth.cli.app import main
 from electrogrowth.cli.report import edge_warning
 
 FILM = Tube((Layer(1.0003, shear_modulus=3.0), Layer(1.5)), length=2.0, stretch=1.0)
 
 
-def test_scan_prefers_the_capped_fold_to_a_later_short_wave_limit():
+@pytest.fixture
+def caps_of_2000(monkeypatch):
+    """Every tube's caps at 2000, as before each tube had its own (options.mode_caps)."""
+    import electrogrowth.bifurcation.beyond as beyond
+    import electrogrowth.bifurcation.scan as scan
+
+    monkeypatch.setattr(scan, "mode_caps", lambda tube: (M_CAP, N_CAP))
+    monkeypatch.setattr(beyond, "mode_caps", lambda tube: (M_CAP, N_CAP))
+
+
+def test_the_film_is_scanned_to_its_fold_past_2000():
+    """The film's own caps (213397, 135812) take the search past 2000 to the least of the
+    prismatic row, (3018, 0), near the flat film's 1 / (h (3 / 3)^(1/3)) = 3333 (the tube's
+    curvature and pre-strain move it); its neighbours by single modes lie on a parabola
+    whose least integer it is, and (2000, 0) comes 0.027 later."""
+    scan = scan_modes(FILM, "growth[1].theta")
+    c = scan.critical
+    assert scan.caps == mode_caps(FILM) == (213397, 135812)
+    assert (c.kind, c.m, c.n, c.status) == ("bifurcation", 3018, 0, "ok")
+    assert c.value == pytest.approx(1.2792102271465, rel=1e-11)
+    ms = np.arange(3015, 3022)
+    vs = np.array([critical_value(FILM, int(m), 0, "growth[1].theta").value for m in ms])
+    assert ms[np.argmin(vs)] == 3018 and vs.min() == pytest.approx(c.value, rel=1e-12)
+    assert critical_value(FILM, 2000, 0, "growth[1].theta").value > c.value + 0.02
+
+
+def test_scan_prefers_the_capped_fold_to_a_later_short_wave_limit(caps_of_2000):
     cap = critical_value(FILM, 2000, 0, "growth[1].theta")
     scan = scan_modes(FILM, "growth[1].theta")
     assert scan.critical.value <= cap.value + 1e-9
     assert (scan.critical.kind, scan.critical.m, scan.critical.n) == ("bifurcation", 2000, 0)
     assert scan.critical.status == "inaccurate"  # the fold lies beyond the cap: said
-    assert "(2000, 0) sits at the largest m = 2000" in scan.critical.message
+    assert "(2000, 0) sits at the largest m = 2000 the scan searched" in scan.critical.message
     assert "1.84731" in scan.critical.message  # the limit, later
     assert edge_warning(scan) == ""  # the status says it, not a second warning
 
 
-def test_the_cli_exits_3_at_the_cap_with_one_warning(tmp_path, capsys):
+def test_the_cli_exits_3_at_the_cap_with_one_warning(tmp_path, capsys, caps_of_2000):
     tube = tmp_path / "film.toml"
     tube.write_text(
         "length = 2.0\nstretch = 1.0\n[[layers]]\nouter_radius = 1.0003\n"

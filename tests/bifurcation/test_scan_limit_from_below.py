@@ -16,11 +16,14 @@ folds unchecked, by three paths of bifurcation/scan.py (probe 13b):
 Now every path goes through scan._folds_before_limit (both axes read at the limit).
 """
 
+import numpy as np
 import pytest
 
 from electrogrowth import Layer, ScanOptions, Tube, critical_value, scan_modes
 from electrogrowth.bifurcation.beyond import unstable_past_cap
+from electrogrowth.bifurcation.options import M_CAP, N_CAP, mode_caps
 from electrogrowth.cli.app import main
+from electrogrowth.incremental.modes import MODE_MAX
 
 SOFT = Layer(1.01, shear_modulus=1e-2)
 SHORT = ScanOptions(m_range=(0, 12), n_range=(1, 2))
@@ -115,17 +118,82 @@ STACK = Tube(
 )
 
 
+@pytest.fixture
+def caps_of_2000(monkeypatch):
+    """Every tube's caps at 2000, as they were before each tube had its own
+    (options.mode_caps): these linings then stand for one thinner than its own caps."""
+    import electrogrowth.bifurcation.beyond as beyond
+    import electrogrowth.bifurcation.scan as scan
+
+    monkeypatch.setattr(scan, "mode_caps", lambda tube: (M_CAP, N_CAP))
+    monkeypatch.setattr(beyond, "mode_caps", lambda tube: (M_CAP, N_CAP))
+
+
+#: (tube, control, the fold, the independent solver's sample on its row (check round 34))
+FOLDS = [
+    (THIN, "growth[1].theta", (12836, 0), (13000, 1.8376895409025)),
+    (STACK, "growth[1]", (6107, 0), (6000, 1.4986160054)),
+]
+
+
+def test_the_caps_are_chosen_by_the_thinnest_layer():
+    """m = FOLD_KH R / h and n = FOLD_KH L / (pi h) of the thinnest layer, never below 2000
+    nor above MODE_MAX; a uniform tube and thick layers keep 2000."""
+    assert mode_caps(THIN) == (64064, 61115) and mode_caps(STACK) == (61602, 70322)
+    assert mode_caps(Tube.uniform(1.01, 100.0)) == (M_CAP, N_CAP)
+    assert mode_caps(Tube([Layer(1.1, shear_modulus=5.0), Layer(1.5)], length=2.0)) == (2000, 2000)
+    assert mode_caps(Tube([Layer(1 + 1e-7), Layer(2.0)])) == (MODE_MAX, MODE_MAX)
+
+
+def test_a_fold_past_2000_is_solved_alone():
+    """The single mode (13000, 0) of the lining 1e-3 thick (refused past m = 2000 before):
+    the independent solver's value to 1e-11 (own base state, multi-domain collocation)."""
+    c = critical_value(THIN, 13000, 0, "growth[1].theta")
+    assert c.status == "ok" and c.value == pytest.approx(1.8376895409025, rel=1e-11)
+
+
+@pytest.mark.parametrize(("tube", "solve_for", "fold", "sample"), FOLDS)
+def test_the_fold_is_the_least_of_its_neighbours(tube, solve_for, fold, sample):
+    """The fold numbers by brute force: the single modes m - 3 ... m + 3 at rtol 1e-13 lie
+    on a parabola (its vertex within half a step of m) whose least integer is the fold; the
+    neighbours differ by ~2e-12 (12836) and 1.5e-11 (6107), above the roots' errors."""
+    m0, n = fold
+    ms = np.arange(m0 - 3, m0 + 4)
+    vs = np.array([critical_value(tube, int(m), n, solve_for, rtol=1e-13).value for m in ms])
+    assert ms[np.argmin(vs)] == m0
+    a, b, _ = np.polyfit(ms - m0, vs - vs[3], 2)
+    assert a > 0 and abs(b / (2 * a)) < 0.5
+
+
+@pytest.mark.slow  # ~10 s each, and 20 s of it on a loaded machine
+@pytest.mark.parametrize(("tube", "solve_for", "fold", "sample"), FOLDS)
+def test_a_lining_1e3_thick_is_scanned_to_its_fold(tube, solve_for, fold, sample):
+    """D4 (check round 34): the scan returned the inner face's limit, status ok (then
+    INACCURATE), while an independent solver puts folds beyond m = 2000 first, (13000, 0)
+    5.6e-5 and (6000, 0) 9.7e-5 before the limit. With the tube's own caps (64064, 61603)
+    the search finds the least of their rows, (12836, 0) and (6107, 0), status ok, below the
+    independent samples (which match the single modes, test above) and the limit."""
+    scan = scan_modes(tube, solve_for)
+    c = scan.critical
+    assert (c.kind, c.m, c.n, c.status) == ("bifurcation", *fold, "ok")
+    alone = critical_value(tube, *fold, solve_for).value
+    assert c.value == pytest.approx(alone, rel=1e-12)
+    m, value = sample
+    assert critical_value(tube, m, 0, solve_for).value == pytest.approx(value, rel=1e-10)
+    assert value - 3e-7 < c.value < value and c.value < scan.short_wave_limit
+    assert scan.caps == mode_caps(tube)
+
+
 @pytest.mark.parametrize(
     ("tube", "solve_for", "limit"),
     [(THIN, "growth[1].theta", 1.8377451822596504), (STACK, "growth[1]", 1.4987126069243817)],
 )
-def test_a_lining_too_thin_for_the_caps_is_not_ok_at_its_limit(tube, solve_for, limit):
-    """D4 (check round 34): the scan returned the inner face's limit, status ok, while an
-    independent solver (own base state, multi-domain collocation, converged in nodes and in
-    depth) puts folds beyond the cap first: (13000, 0) at 1.8376895409 (5.6e-5 earlier) and
-    (6000, 0) at 1.4986160054 (9.7e-5 earlier); the rows reach the limit from below like
-    1/m. The limit, still the face's exact one, is now INACCURATE, naming a mode past the cap
-    that is past its root there."""
+def test_a_lining_too_thin_for_its_caps_is_not_ok_at_its_limit(
+    tube, solve_for, limit, caps_of_2000
+):
+    """The read past the caps, the safety net beyond them: with the caps faked at 2000 for
+    every tube (as before the caps were the tube's), the scan's limit is INACCURATE, naming
+    a mode past the caps that is past its root there (check round 34's D4 as it was)."""
     c = scan_modes(tube, solve_for).critical
     assert c.kind == "surface" and c.value == pytest.approx(limit, rel=1e-10)
     assert c.status == "inaccurate" and "beyond the largest m = 2000" in c.message
@@ -136,11 +204,12 @@ def test_a_lining_too_thin_for_the_caps_is_not_ok_at_its_limit(tube, solve_for, 
     [(THIN, "growth[1].theta", 1.8376, 1.8377), (STACK, "growth[1]", 1.4986, 1.49862)],
 )
 def test_the_ladder_past_the_caps_turns_where_the_independent_folds_are(
-    tube, solve_for, before, past
+    tube, solve_for, before, past, caps_of_2000
 ):
-    """The samples beyond the caps (m and n to 64 times them) at a value just before the
-    independent solver's earliest fold (1.8376895409, 1.4986160054) are all stable, and one
-    is past its root just after it: the sign change is the folds', not the ladder's noise."""
+    """The samples beyond the caps of 2000 (m and n to 64 times them) at a value just
+    before the independent solver's earliest fold (1.8376895409, 1.4986160054) are all
+    stable, and one is past its root just after it: the sign change is the folds', not the
+    ladder's noise."""
     assert unstable_past_cap(tube, solve_for, before, True) is None
     m, n = unstable_past_cap(tube, solve_for, past, True)
     assert m > 2000 or n > 2000
@@ -167,3 +236,23 @@ def test_a_layered_finite_mode_is_read_past_the_caps_and_a_uniform_one_is_not(mo
     calls.clear()
     c = scan_modes(Tube.uniform(1.4, 1.0), "growth", options=SHORT).critical
     assert c.kind == "bifurcation" and c.status == "ok" and calls == []
+
+
+def test_certify_reads_past_2000_on_the_searched_rows_only():
+    """A scan's ranges now reach its tube's caps (m to 64064 here), searched along a few
+    rows: certify's choice reads every mode up to 2000 as before, and past it those rows at
+    the search's samples and every m within 64 of the critical mode, not the 1.9 million
+    modes of the rectangle (an hour of reads)."""
+    from electrogrowth.bifurcation.certify import choice_modes
+    from electrogrowth.bifurcation.scan_grid import every_mode_ranges, scan_grid
+    from electrogrowth.bifurcation.scan_record import ScanResult
+
+    crit = critical_value(THIN, 12836, 0, "growth[1].theta", rtol=1e-8)
+    scan = ScanResult(crit, (), (0, 64064), (1, 30))
+    assert every_mode_ranges(scan.m_range, scan.n_range) == ((0, 2000), (1, 30))
+    modes = choice_modes(scan, crit, (True, True))
+    rows = {tuple(map(int, r)) for r in modes}
+    assert {tuple(map(int, r)) for r in scan_grid((0, 2000), (1, 30), False, (True, True))} <= rows
+    assert all((m, 0, 1) in rows for m in range(12836 - 64, 12836 + 65))  # prismatic row
+    assert (64064, 0, 1) in rows and (64064, 1, 0) in rows and (5000, 7, 0) not in rows
+    assert len(modes) < 63000

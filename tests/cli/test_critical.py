@@ -154,10 +154,10 @@ def test_a_runner_up_at_the_mode_cap_says_a_shorter_wave_may_come_first(monkeypa
     assert main(argv) == 0
     nxt = [x for x in capsys.readouterr().out.splitlines() if x.startswith("  next:")]
     assert nxt[0].endswith(
-        "(at the largest n = 2000 supported: a mode beyond it may come before it)"
+        "(at the largest n = 2000 its scan searched: a mode beyond it may come first)"
     ), nxt
-    assert nxt[1].startswith("  next: (m, n) = (0, 1999)") and "supported" not in nxt[1]
+    assert nxt[1].startswith("  next: (m, n) = (0, 1999)") and "searched" not in nxt[1]
     assert main(argv + ["--json"]) == 0
     rec = json.loads(capsys.readouterr().out)
-    assert rec["runners_up"][0]["note"].startswith("at the largest n = 2000 supported")
+    assert rec["runners_up"][0]["note"].startswith("at the largest n = 2000 its scan")
     assert rec["runners_up"][1]["note"] is None and rec["status"] == "ok"

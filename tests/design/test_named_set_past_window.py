@@ -85,6 +85,9 @@ class _Parabola:
         self.solved += 1
         return 1.0 + ((mode[1] - self.low) / 1000.0) ** 2
 
+    def caps(self, x):  # those of a tube with no thin layer (options.mode_caps)
+        return (2000, 2000)
+
 
 @pytest.mark.parametrize("low", [5, 37, 182, 1999])
 def test_a_sets_member_is_followed_to_its_minimum(low):
@@ -96,22 +99,36 @@ def test_a_sets_member_is_followed_to_its_minimum(low):
     goal = check_target("axisymmetric")
     mode, v = _past_window((0, 4), v, 0.0, goal, margins)
     assert mode == (0, low)
-    assert cap_note(mode, goal) == ""
+    assert cap_note(mode, goal, margins.caps(0.0)) == ""
     assert margins.solved < 60  # geometric steps and a refined bracket, not every n
 
 
 def test_a_member_at_the_mode_cap_is_said_to_be():
     from electrogrowth.design.prescribe import _past_window, cap_note
     from electrogrowth.design.targets import check_target
-    from electrogrowth.incremental.modes import MODE_MAX
 
     margins = _Parabola(5000)  # the minimum lies beyond the cap
     v = margins.value((0, 4), 0.0)
     goal = check_target("axisymmetric")
     mode, _ = _past_window((0, 4), v, 0.0, goal, margins)
-    assert mode == (0, MODE_MAX)
-    assert str(MODE_MAX) in cap_note(mode, goal)
-    assert cap_note(mode, check_target([(0, MODE_MAX)])) == ""  # a listed mode: no set
+    assert mode == (0, 2000)
+    assert "at the mode cap 2000" in cap_note(mode, goal, margins.caps(0.0))
+    assert cap_note(mode, check_target([(0, 2000)]), margins.caps(0.0)) == ""  # a listed mode
+
+
+def test_a_thin_layers_caps_take_the_members_past_2000():
+    """The members go on as far as the scans of the design's tube do (its caps, chosen by
+    its thinnest layer, options.mode_caps): a lining 1e-3 thick on a tube L = 3 reaches
+    n = 61115, and its minimum (0, 5000) is found, not the cap 2000 of every tube before."""
+    from electrogrowth.design.prescribe import _past_window, cap_note
+    from electrogrowth.design.targets import check_target
+
+    margins = _Parabola(5000)
+    margins.caps = lambda x: (64064, 61115)
+    v = margins.value((0, 4), 0.0)
+    goal = check_target("axisymmetric")
+    mode, _ = _past_window((0, 4), v, 0.0, goal, margins)
+    assert mode == (0, 5000) and cap_note(mode, goal, margins.caps(0.0)) == ""
 
 
 def test_members_that_turn_away_at_once_stay():

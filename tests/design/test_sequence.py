@@ -194,9 +194,9 @@ def test_target_sets():
     assert (4, 0) in check_target("prismatic") and (4, 1) not in check_target("prismatic")
     assert (1, 2) in check_target([(0, 1), (1, 2)])
     assert (2, 1) in check_target(lambda m, n: m == 2)
-    # beyond the mode cap, as the command line refuses it (probe round 6b: (2001, 0) was
-    # accepted and reported not reached)
-    for bad in ("helical", (1, -1), [], 3, (2001, 0), [(0, 1), (0, 2001)]):
+    # beyond the largest mode, as the command line refuses it (probe round 6b: (2001, 0) was
+    # accepted and reported not reached when that was 2000)
+    for bad in ("helical", (1, -1), [], 3, (10**6 + 1, 0), [(0, 1), (0, 10**6 + 1)]):
         with pytest.raises(ParameterError):
             check_target(bad)
 
@@ -319,13 +319,13 @@ def test_a_wider_map_every_switch_agrees_with_collocation():
 
 
 def test_cli_design_target_takes_the_package_mode_range(capsys):
-    """--target M N accepts every mode the scans reach (bifurcation.options M_CAP, N_CAP),
-    and names that range when a number is beyond it."""
-    from electrogrowth.bifurcation.options import M_CAP, N_CAP
+    """--target M N accepts every mode the scans reach (incremental.modes.MODE_MAX, the
+    kernel's), and names that range when a number is beyond it."""
     from electrogrowth.cli.app import build_parser
+    from electrogrowth.incremental.modes import MODE_MAX
 
     base = ["design", "--solve-for", "stretch", "--vary", "outer_radius", "1.2", "1.3"]
-    top = min(M_CAP, N_CAP)
+    top = MODE_MAX
     args = build_parser("design").parse_args([*base, "--target", str(top), "0"])
     assert args.target == [[top, 0]]
     for bad in ([str(top + 1), "0"], ["0", str(top + 1)], ["-1", "0"]):

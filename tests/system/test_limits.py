@@ -60,10 +60,10 @@ def test_the_largest_sweep_is_accepted():
          " 10000 radii"),
         ("critical --solve-for growth --outer-radius 1.4 --top 1000000", "argument --top:"
          " '1000000' is not a whole number from 1 to 1000"),
-        ("critical --solve-for growth --outer-radius 1.4 --m-max 1000000", "argument --m-max:"
-         " '1000000' is not a whole number from 0 to 2000"),
+        ("critical --solve-for growth --outer-radius 1.4 --m-max 1000001", "argument --m-max:"
+         " '1000001' is not a whole number from 0 to 1000000"),
         ("critical --solve-for growth --outer-radius 1.4 --n-max 99999999999999999999999",
-         "argument --n-max: '99999999999999999...' is not a whole number from 1 to 2000"),
+         "argument --n-max: '99999999999999999...' is not a whole number from 1 to 1000000"),
         ("reproduce --gallery --workers 1000000", "--workers 1000000 is out of range; need 1"
          " to"),
     ],

@@ -30,28 +30,33 @@ import numpy as np
 from ..basestate.tube import solve_base_state
 from ..errors import ElectrogrowthError
 from ..incremental.accuracy import SCAN_STABLE_SIGNS
+from ..incremental.modes import MODE_MAX
 from ..incremental.targets import Family, ImpedanceTarget
 from .march import SIGN_TUBE, unloaded_signs
 from .msearch import geometric_samples
-from .options import EVERY_M, M_CAP, N_CAP
+from .options import EVERY_M, M_CAP, N_CAP, mode_caps
 
 
-def beyond_rows(m_range, n_range, prismatic: bool, axis: str) -> np.ndarray:
-    """Rows (m, n, family code) sampled beyond the ranges along ``axis`` (module docstring);
-    empty when that range already reaches its cap."""
+def beyond_rows(
+    m_range, n_range, prismatic: bool, axis: str, caps: tuple[int, int] = (M_CAP, N_CAP)
+) -> np.ndarray:
+    """Rows (m, n, family code) sampled beyond the ranges along ``axis`` up to its cap
+    (``caps``: the tube's, options.mode_caps; module docstring); empty when that range
+    already reaches its cap."""
     (m_lo, m_hi), (n_lo, n_hi) = m_range, n_range
+    m_cap, n_cap = caps
     _wrinkle, _prismatic = Family.WRINKLE.code, Family.PRISMATIC.code
     if axis == "m":
-        if m_hi >= M_CAP:
+        if m_hi >= m_cap:
             return np.zeros((0, 3))
         rows = [(max(n_lo, 1), _wrinkle)] + ([(0, _prismatic)] if prismatic else [])
         # every m up to EVERY_M (the scan's own rule: small m are irregular), then samples
-        every = list(range(m_hi + 1, min(EVERY_M, M_CAP) + 1))
-        ms = every + geometric_samples(max(m_hi + 1, EVERY_M + 1), M_CAP)
+        every = list(range(m_hi + 1, min(EVERY_M, m_cap) + 1))
+        ms = every + geometric_samples(max(m_hi + 1, EVERY_M + 1), m_cap)
         return np.array([(m, n, code) for m in ms for n, code in rows], float)
-    if n_hi >= N_CAP:
+    if n_hi >= n_cap:
         return np.zeros((0, 3))
-    ns = geometric_samples(max(n_hi + 1, 1), N_CAP)
+    ns = geometric_samples(max(n_hi + 1, 1), n_cap)
     return np.array([(m, n, _wrinkle) for n in ns for m in (m_lo, m_lo + 1)], float)
 
 
@@ -69,7 +74,8 @@ def unstable_beyond(
     """For each axis of ``axes``: is a sampled mode beyond the ranges past its root at
     ``value`` (its target's sign there against the unloaded tube's)? False where the state
     at ``value`` does not resolve (no evidence either way: the result stands)."""
-    rows = {axis: beyond_rows(m_range, n_range, prismatic, axis) for axis in axes}
+    caps = mode_caps(params)
+    rows = {axis: beyond_rows(m_range, n_range, prismatic, axis, caps) for axis in axes}
     modes = np.vstack([rows[axis] for axis in axes])
     out = dict.fromkeys(axes, False)
     turned = _turned(params, solve_for, value, modes)
@@ -98,22 +104,24 @@ def _turned(params, solve_for: str, value: float, modes: np.ndarray) -> np.ndarr
     return np.isfinite(now) & (np.sign(now) != stable)
 
 
-#: how far past the caps :func:`unstable_past_cap` reads: a soft lining 1e-3 thick folds
-#: at m ~ 6000 to 13000 (check round 34), and its rows reach the limit from below, so every
-#: m from there on is past its root at the limit
+#: how far past the caps :func:`unstable_past_cap` reads (at most to MODE_MAX): a layer's
+#: rows reach its face's limit from below past its folds, so a fold beyond the caps turns
+#: every sample from there on at the limit (a lining 1e-3 thick: m ~ 6000 to 13000, check
+#: round 34, when the caps were 2000 for every tube)
 PAST_CAP = 64
 
 
-def past_cap_rows(prismatic: bool) -> np.ndarray:
-    """Rows beyond the caps, geometric samples (ratio 1.25) from just past M_CAP (N_CAP) to
-    PAST_CAP times it: along m the prismatic folds (m, 0) and the wrinkles (m, 1), along n
-    the rings (0, n) and (1, n)."""
+def past_cap_rows(prismatic: bool, caps: tuple[int, int] = (M_CAP, N_CAP)) -> np.ndarray:
+    """Rows beyond the caps (``caps``: the tube's, options.mode_caps), geometric samples
+    (ratio 1.25) from just past each to PAST_CAP times it (at most MODE_MAX): along m the
+    prismatic folds (m, 0) and the wrinkles (m, 1), along n the rings (0, n) and (1, n)."""
     _wrinkle, _prismatic = Family.WRINKLE.code, Family.PRISMATIC.code
-    ms = geometric_samples(M_CAP + 1, PAST_CAP * M_CAP)
-    ns = geometric_samples(N_CAP + 1, PAST_CAP * N_CAP)
+    m_cap, n_cap = caps
+    ms = geometric_samples(m_cap + 1, min(PAST_CAP * m_cap, MODE_MAX)) if m_cap < MODE_MAX else []
+    ns = geometric_samples(n_cap + 1, min(PAST_CAP * n_cap, MODE_MAX)) if n_cap < MODE_MAX else []
     along_m = [(m, 1, _wrinkle) for m in ms] + [(m, 0, _prismatic) for m in ms if prismatic]
     along_n = [(m, n, _wrinkle) for n in ns for m in (0, 1)]
-    return np.array(along_m + along_n, float)
+    return np.array(along_m + along_n, float).reshape(-1, 3)
 
 
 def unstable_past_cap(params, solve_for: str, value: float, prismatic: bool):
@@ -122,8 +130,10 @@ def unstable_past_cap(params, solve_for: str, value: float, prismatic: bool):
     short-wave limit, a lining too thin for the caps may fold beyond them first: its
     rows tend to the limit from below (probe 13b's O(1/k) corrections), and a fold
     near m = 13000 came 5.6e-5 before the limit of a lining 1e-3 thick, 1e4 times softer
-    than its tube, with status OK (check round 34). One state, ~80 modes."""
-    modes = past_cap_rows(prismatic)
+    than its tube, with status OK (check round 34, when every tube's caps were 2000; its
+    caps are now its own, options.mode_caps, and the search finds the fold). One state,
+    ~80 modes."""
+    modes = past_cap_rows(prismatic, mode_caps(params))
     turned = _turned(params, solve_for, value, modes)
     if turned is None or not turned.any():
         return None

@@ -31,7 +31,7 @@ import numpy as np
 from ..basestate.tube import solve_base_state
 from ..errors import CollocationTooLarge, ConvergenceError, ParameterError, Remedy
 from ..incremental.accuracy import CERTIFY_RTOL
-from ..incremental.modes import ALL_PAIRS, U_Z, mode_pairs
+from ..incremental.modes import ALL_PAIRS, U_Z, Family, mode_pairs
 from ..incremental.targets import (
     collocation_targets,
     impedance_targets,
@@ -43,8 +43,10 @@ from ..outcomes import Kind, Status
 from .critical import NoSignChange, critical_value
 from .error_estimate import achieved_floor
 from .march import control_path
+from .msearch import geometric_samples
+from .options import EVERY_M
 from .problem import Problem
-from .scan_grid import scan_grid
+from .scan_grid import every_mode_ranges, scan_grid
 from .surface import short_wave_limit
 
 SURFACE_RTOL = 1e-14  # the half-space value is recomputed at this tolerance
@@ -251,7 +253,7 @@ def _certify_choice(params, crit, scan, families, progress, disagreement: float)
     sense = 1.0 if end > start else -1.0
     gap = max(disagreement, crit.error_estimate, 1e-13 * max(1.0, abs(crit.value)))
     before = crit.value - sense * CHOICE_MARGIN * gap
-    modes = scan_grid(scan.m_range, scan.n_range, False, families)
+    modes = choice_modes(scan, crit, families)
     state = solve_base_state(params.at(crit.solve_for, before))
     reference = solve_base_state(params.reference())
     stable = unloaded_signs(reference, modes)
@@ -269,6 +271,43 @@ def _certify_choice(params, crit, scan, families, progress, disagreement: float)
         err.remedy = choice_remedy(crit, m, n, str(row_family(modes[i])))
         raise err
     return int(len(modes))
+
+
+def choice_modes(scan, crit, families) -> np.ndarray:
+    """The modes whose signs certify a scan's choice: every mode of its ranges up to M_CAP,
+    N_CAP (scan_grid.every_mode_ranges) and, where the ranges reach beyond (a thin layer's
+    caps, options.mode_caps), the rows its searches follow (msearch.py: the prismatic (m,
+    0), the wrinkles of the smallest n and the critical mode's row along m; (m_lo, n),
+    (m_lo + 1, n) and the critical mode's row along n) at their geometric samples and every
+    index within EVERY_M of the critical mode's. Every mode to 64064 of 30 rows would be
+    1.9 million reads (an hour); these are a few hundred."""
+    ranges = every_mode_ranges(scan.m_range, scan.n_range)
+    grid = [scan_grid(*ranges, False, families)]
+    (m_lo, m_hi), (n_lo, n_hi) = scan.m_range, scan.n_range
+    finite = crit.kind == Kind.BIFURCATION
+    wrinkle = Family.WRINKLE.code
+    if m_hi > ranges[0][1]:
+        rows = {(max(n_lo, 1), wrinkle)} | ({(0, Family.PRISMATIC.code)} if families[0] else set())
+        if finite and crit.family != Family.TORSIONAL:
+            rows.add((crit.n, Family(crit.family).code))
+        ms = _past_every_mode(ranges[0][1], m_hi, crit.m if finite else None)
+        grid.append(np.array([(m, n, c) for m in ms for n, c in sorted(rows)], float))
+    if n_hi > ranges[1][1]:
+        rows = {(m_lo, wrinkle), (m_lo + 1, wrinkle)}
+        if finite and crit.family != Family.PRISMATIC:
+            rows.add((crit.m, Family(crit.family).code))
+        ns = _past_every_mode(ranges[1][1], n_hi, crit.n if finite else None)
+        grid.append(np.array([(m, n, c) for n in ns for m, c in sorted(rows)], float))
+    return np.unique(np.vstack([g.reshape(-1, 3) for g in grid]), axis=0)
+
+
+def _past_every_mode(edge: int, top: int, at: int | None) -> list[int]:
+    """Indices past ``edge`` up to ``top``: geometric samples, and every one within EVERY_M
+    of ``at`` (the critical mode's, if finite)."""
+    out = set(geometric_samples(edge + 1, top))
+    if at is not None:
+        out |= set(range(max(edge + 1, at - EVERY_M), min(top, at + EVERY_M) + 1))
+    return sorted(out)
 
 
 def choice_remedy(crit, m: int, n: int, family: str) -> Remedy:

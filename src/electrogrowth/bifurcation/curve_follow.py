@@ -31,7 +31,7 @@ from .curve_record import CurvePoint, _accuracy, _failed_point, _scan_point
 from .directions import past_surface, surface_past
 from .march import calibrated, control_path
 from .scan import ScanOptions
-from .scan_grid import scan_grid, stable_signs
+from .scan_grid import every_mode_ranges, scan_grid, stable_signs
 
 CHECK_EVERY = 8  # when following modes, a full scan at least every this many points
 
@@ -148,8 +148,9 @@ class _Follower:
         ``x`` (:meth:`_all_stable`)."""
         o = self.options
         families = (o.prismatic, o.torsional)
-        grid = scan_grid(*self.ranges, o.extend, families)
-        signs = stable_signs(*self.ranges, o.extend, families)
+        ranges = every_mode_ranges(*self.ranges)  # beyond 2000 the scan searched rows only
+        grid = scan_grid(*ranges, o.extend, families)
+        signs = stable_signs(*ranges, o.extend, families)
         other = np.ones(len(grid), bool)
         if best is not None:
             other = ~((grid[:, 0] == best[0]) & (grid[:, 1] == best[1]))

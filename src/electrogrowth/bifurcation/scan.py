@@ -17,8 +17,10 @@ finished by Brent's method at full accuracy. Marching on yields the runner-up mo
 When the best mode sits on the edge of the range the range is doubled in that direction
 (every m up to EVERY_M = 64, n up to the cap). Beyond m = 64 (an optimum on that edge, a
 probe beyond it, or an m range asked for beyond it) the best m is searched coarse-to-
-fine along family rows up to M_CAP = 2000 (msearch.py, docs/derivation-film.md): a thin
-stiff film folds at a finite m of tens to hundreds, which the search brackets. The
+fine along family rows up to the tube's m cap (options.mode_caps: M_CAP = 2000, or the
+folds of its thinnest layer, m ~ FOLD_KH R / h; msearch.py, docs/derivation-film.md): a
+thin stiff film folds at a finite m of tens to hundreds, a soft lining 1e-3 thick at m in
+the thousands to ten thousands, which the search brackets. The
 infimum over all modes may be the short-wave limit m, k -> infinity, a surface
 instability of a face: it is computed exactly from the half-space problem (surface.py)
 when the best finite mode sits on the edge at the cap, when no finite mode bifurcates
@@ -37,7 +39,7 @@ import numpy as np
 
 from ..basestate.tube import solve_base_state
 from ..errors import ConvergenceError, ElectrogrowthError, NoBifurcationFound, UnstableAtStart
-from ..incremental.modes import row_family
+from ..incremental.modes import MODE_MAX, row_family
 from ..incremental.targets import Family, impedance_targets
 from ..model.layers import Tube
 from ..outcomes import NO_MODE, Kind, Status
@@ -48,7 +50,7 @@ from .directions import past_surface, surface_past
 from .grid_scan import finished, scan_once
 from .march import ModeValue, control_path
 from .msearch import search_m, search_n
-from .options import EVERY_M, M_CAP, N_CAP, ScanOptions
+from .options import EVERY_M, ScanOptions, mode_caps
 from .options import TOP_MAX as TOP_MAX  # re-exported: the CLI checks --top against it
 from .problem import Problem, as_problem
 from .runners import with_finished_runners
@@ -56,8 +58,8 @@ from .scan_grid import scan_grid, stable_signs
 from .scan_record import ScanResult
 from .surface import short_wave_limit
 
-# widen a range mode by mode at most this often (m up to EVERY_M, n up to N_CAP); an m
-# optimum still on its edge is then searched for up to M_CAP (msearch.py)
+# widen a range mode by mode at most this often (m up to EVERY_M, n up to the n cap); an m
+# optimum still on its edge is then searched for up to the m cap (msearch.py, scan_caps)
 DOUBLINGS = 2
 
 
@@ -125,8 +127,16 @@ def scan_modes(
     else:
         result = _windows_without_surface(params, solve_for, side, result, options, rtol, limit)
     # the runners-up were the march's roots (max(rtol, 1e-9)): solved at rtol (runners.py)
-    result = _capped(with_finished_runners(params, solve_for, side, rtol, result))
-    return _past_caps(params, solve_for, options, result)
+    caps = scan_caps(params, options)
+    result = _capped(with_finished_runners(params, solve_for, side, rtol, result), caps)
+    return dataclasses.replace(_past_caps(params, solve_for, options, result), caps=caps)
+
+
+def scan_caps(params, options: ScanOptions) -> tuple[int, int]:
+    """The largest m and n the scan of ``params`` searches: the tube's (options.mode_caps,
+    chosen by its thinnest layer), or the ranges asked for where they reach beyond."""
+    m_cap, n_cap = mode_caps(params)
+    return max(m_cap, options.m_range[1]), max(n_cap, options.n_range[1])
 
 
 def _stable_short_waves_at_start(params, solve_for, side) -> None:
@@ -149,29 +159,30 @@ def _stable_short_waves_at_start(params, solve_for, side) -> None:
         )
 
 
-def _capped(result: ScanResult) -> ScanResult:
-    """``result``, its critical point INACCURATE where the mode sits at M_CAP or N_CAP:
-    the scan cannot look beyond, and a film too thin for the cap folds there with a lower
-    value (a film 2e-4 thick, 10 times stiffer, under hoop growth: (2000, 0) at 1.13838
-    while its flat film's folds are near m = 3300). The value is that mode's, exact; it
-    is the tube's critical value only if no mode beyond the cap comes first."""
+def _capped(result: ScanResult, caps: tuple[int, int]) -> ScanResult:
+    """``result``, its critical point INACCURATE where the mode sits at a cap (``caps``,
+    scan_caps): the scan did not look beyond, and a layer folding past the cap does so
+    with a lower value (when every cap was 2000, a film 2e-4 thick, 10 times stiffer,
+    under hoop growth: (2000, 0) at 1.13838 while its flat film's folds are near m = 3300;
+    its own cap is now 320000). The value is that mode's, exact; it is the tube's critical
+    value only if no mode beyond the cap comes first."""
     c = result.critical
     over = [
         f"{name} = {cap}"
-        for name, value, cap in (("m", c.m, M_CAP), ("n", c.n, N_CAP))
+        for name, value, cap in (("m", c.m, caps[0]), ("n", c.n, caps[1]))
         if value >= cap
     ]
     if c.kind != Kind.BIFURCATION or not over or c.status != Status.OK:
         return result
     message = (
-        f"the critical mode ({c.m}, {c.n}) sits at the largest {' and '.join(over)} supported:"
-        " a mode beyond it may bifurcate first"
+        f"the critical mode ({c.m}, {c.n}) sits at the largest {' and '.join(over)} the scan"
+        " searched: a mode beyond it may bifurcate first"
     )
     if result.short_wave_limit is not None:  # computed, and later (else it is the result)
         message += f" (the exact short-wave limit comes later, at {result.short_wave_limit:.6g})"
     remedy = (
-        "the folds are shorter than the scan resolves: a film this thin is its flat"
-        " film-on-substrate limit (docs/derivation-film.md)"
+        f"scan further (--m-max / --n-max, up to {MODE_MAX}); a film this thin folds as"
+        " the flat film on its substrate (docs/derivation-film.md)"
     )
     crit = dataclasses.replace(c, status=Status.INACCURATE, message=message, remedy=remedy)
     return dataclasses.replace(result, critical=crit)
@@ -189,9 +200,10 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
     Every m is scanned up to EVERY_M (or m_max, if smaller); m beyond it, of an m range
     reaching past EVERY_M or of an optimum on the m edge there (or a probe beyond it), are
     examined by the coarse-to-fine search along family rows (:func:`_searched`), which
-    brackets the best m or ends at m_max (M_CAP when extending)."""
+    brackets the best m or ends at m_max (the m cap, scan_caps, when extending)."""
     n_range, top, extend = options.n_range, options.top, options.extend
     m_lo, m_max = options.m_range
+    cap_m, cap_n = scan_caps(params, options)  # this tube's (its thinnest layer's)
     m_range = (m_lo, min(m_max, max(m_lo, EVERY_M)))  # scanned mode by mode
     grown = {"m": 0, "n": 0}
     probes = extend
@@ -213,14 +225,14 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
         assert limit is not None  # limit_first computed it
         return result, True
 
-    def search(result, m_top=M_CAP, axis="m"):
+    def search(result, m_top=cap_m, axis="m"):
         return _searched(params, solve_for, side, result, options, rtol, m_top, axis)
 
     def search_beyond(result, beyond):
         """Searched along n, then m, from the edges the doublings left the optimum on."""
         at_n = at_m = False
         if beyond["n"]:
-            result, at_n = search(result, N_CAP, "n")
+            result, at_n = search(result, cap_n, "n")
         if beyond["m"]:
             result, at_m = search(result)
         return result, at_n or at_m
@@ -251,11 +263,11 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
         }
         grow = {
             "m": edge["m"] and m_range[1] < EVERY_M and grown["m"] < DOUBLINGS,
-            "n": edge["n"] and n_range[1] < N_CAP and grown["n"] < DOUBLINGS,
+            "n": edge["n"] and n_range[1] < cap_n and grown["n"] < DOUBLINGS,
         }
         beyond = {
-            "m": extend and edge["m"] and not grow["m"] and m_range[1] < M_CAP,
-            "n": extend and edge["n"] and not grow["n"] and n_range[1] < N_CAP,
+            "m": extend and edge["m"] and not grow["m"] and m_range[1] < cap_m,
+            "n": extend and edge["n"] and not grow["n"] and n_range[1] < cap_n,
         }
         if not extend or not (any(grow.values()) or any(beyond.values())):
             break
@@ -266,12 +278,12 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
         if grow["m"]:
             m_range, grown["m"] = (m_range[0], min(2 * m_range[1] + 1, EVERY_M)), grown["m"] + 1
         if grow["n"]:
-            n_range, grown["n"] = (n_range[0], min(2 * n_range[1], N_CAP)), grown["n"] + 1
+            n_range, grown["n"] = (n_range[0], min(2 * n_range[1], cap_n)), grown["n"] + 1
     at_cap = extend and any(edge.values()) and not (c.m == 0 and not edge["n"])
     if m_max > m_range[1]:  # the m asked for beyond the mode-by-mode scan
-        result, m_cap = search(result, M_CAP if extend else m_max)
+        result, at_m_cap = search(result, cap_m if extend else m_max)
         c = result.critical
-        at_cap = m_cap or (extend and c.kind == Kind.BIFURCATION and c.n == n_range[1])
+        at_cap = at_m_cap or (extend and c.kind == Kind.BIFURCATION and c.n == n_range[1])
     return result, at_cap, limit
 
 
@@ -290,7 +302,7 @@ def _beyond_searched(params, solve_for, side, result, options, rtol, at_cap, lim
         turned = unstable_beyond(
             params, solve_for, value, result.m_range, result.n_range, options.prismatic
         )
-        for axis, cap in (("n", N_CAP), ("m", M_CAP)):
+        for axis, cap in zip(("n", "m"), reversed(scan_caps(params, options)), strict=True):
             if not turned[axis]:
                 continue
             try:
@@ -554,8 +566,9 @@ def _past_caps(params, solve_for, options, result: ScanResult) -> ScanResult:
     if past is None:
         return result
     what = "short-wave limit" if c.kind == Kind.SURFACE else "value"
+    m_cap, n_cap = scan_caps(params, options)
     message = (
-        f"mode {past}, beyond the largest m = {M_CAP} and n = {N_CAP} the scan resolves, is"
+        f"mode {past}, beyond the largest m = {m_cap} and n = {n_cap} the scan resolves, is"
         f" past its root at this {what}: the tube wrinkles before it, in shorter waves than"
         " the scan resolves (the value is an upper bound on the critical value)"
     )
@@ -590,7 +603,7 @@ def _folds_before_limit(params, solve_for, side, result: ScanResult, options, rt
     )
     if not any(turned.values()):
         return result, False
-    for axis, cap in (("n", N_CAP), ("m", M_CAP)):
+    for axis, cap in zip(("n", "m"), reversed(scan_caps(params, options)), strict=True):
         if turned[axis]:  # a mode at the cap is then the result: _capped says so
             result, _ = _searched(params, solve_for, side, result, options, rtol, cap, axis)
     # the search's result is a scan's: the limit computed is kept (a finite mode leads)

@@ -22,6 +22,16 @@ from .march import SIGN_TUBE, unloaded_signs
 from .options import M_CAP, N_CAP
 
 
+def every_mode_ranges(m_range, n_range) -> tuple[tuple[int, int], tuple[int, int]]:
+    """The ranges clipped to M_CAP and N_CAP: where a scan's result is read mode by mode
+    afterwards (a curve's check that its grid is still stable, certify's choice). A scan's
+    ranges reach a thin layer's caps (options.mode_caps, m to 64064 for a lining 1e-3
+    thick), which it searched along a few rows, not mode by mode: their rectangle, 64064 x
+    30 modes, would take an hour to read at every check."""
+    (m0, m1), (n0, n1) = m_range, n_range
+    return (m0, min(m1, max(m0, M_CAP))), (n0, min(n1, max(n0, N_CAP)))
+
+
 def mode_grid(m_range, n_range) -> np.ndarray:
     """All (m, n) pairs, rows, as floats (the paper's ansatz: the wrinkle family)."""
     m, n = np.meshgrid(

@@ -36,6 +36,9 @@ class ScanResult:
     surface_instability: bool = False  # the critical point is the short-wave limit
     short_wave_limit: float | None = None  # the exact limit m, k -> inf, where computed
     short_wave_error: float | None = None
+    #: the largest m and n its searches reached: the tube's (scan.scan_caps), past which a
+    #: mode at them may hide a shorter wave that comes first
+    caps: tuple[int, int] = (M_CAP, N_CAP)
 
     @functools.cached_property
     def verdict(self) -> Verdict:
@@ -48,7 +51,7 @@ class ScanResult:
 
     def as_dict(self) -> dict:
         out = self.critical.as_dict()
-        out["runners_up"] = [runner_record(r) for r in self.runners_up]
+        out["runners_up"] = [runner_record(r, self.caps) for r in self.runners_up]
         out["m_range"], out["n_range"] = list(self.m_range), list(self.n_range)
         out["surface_instability"] = self.surface_instability
         out["short_wave_limit"] = self.short_wave_limit
@@ -64,16 +67,16 @@ class ScanResult:
         return scan_html(self)
 
 
-def runner_record(r: ModeValue) -> dict:
+def runner_record(r: ModeValue, caps: tuple[int, int] = (M_CAP, N_CAP)) -> dict:
     """A runner-up's JSON record: its fields and ``note``, which says where it sits at the
-    largest m or n supported (None elsewhere). A scan does not look beyond the caps, so
-    shorter waves may come before such a runner-up: a long film's rings (0, 2000) and
+    largest m or n its scan reached (``caps``; None elsewhere). A scan does not look beyond
+    its caps, so shorter waves may come before such a runner-up: a long film's rings (0, 2000) and
     (0, 1999) were listed next with no word while their optimum lies near n = 2056 (probe
     12b); the critical mode at a cap says so in its status (scan._capped)."""
     out = dataclasses.asdict(r)
-    over = [f"{k} = {cap}" for k, v, cap in (("m", r.m, M_CAP), ("n", r.n, N_CAP)) if v >= cap]
+    over = [f"{k} = {cap}" for k, v, cap in zip("mn", (r.m, r.n), caps, strict=True) if v >= cap]
     out["note"] = (
-        f"at the largest {' and '.join(over)} supported: a mode beyond it may come before it"
+        f"at the largest {' and '.join(over)} its scan searched: a mode beyond it may come first"
         if over
         else None
     )

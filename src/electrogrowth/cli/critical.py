@@ -122,7 +122,7 @@ def run_critical(args) -> int:
                 "a mode scan uses --method impedance; give --mode M N for"
                 " collocation (or use --certify)"
             )
-        # a thin film's scan searches its folds up to m, n = 2000: tens of seconds
+        # a thin layer's scan searches its folds up to its caps (m ~ 64 R / h): tens of seconds
         with stage(args, "scanning the modes (m, n) for the first bifurcation", tick=True):
             result = scan_modes(
                 params,

@@ -49,7 +49,7 @@ MAP_NODES = 101  # grid points along each variable of a map, at most
 
 
 def configure_design(parser: argparse.ArgumentParser) -> None:
-    from ..bifurcation.options import M_CAP, N_CAP  # the package's mode range
+    from ..incremental.modes import MODE_MAX  # the package's mode range
 
     what = parser.add_argument_group("what to design")
     add_control_options(what)
@@ -57,10 +57,10 @@ def configure_design(parser: argparse.ArgumentParser) -> None:
         "--target",
         nargs=2,
         action="append",
-        type=bounded_int(0, min(M_CAP, N_CAP), SHORT_WAVES),
+        type=bounded_int(0, MODE_MAX, SHORT_WAVES),
         metavar=("M", "N"),
         help="the pattern wanted: mode (m, n) = (M, N), each from 0 to"
-        f" {min(M_CAP, N_CAP)} (repeat for a set of modes)",
+        f" {MODE_MAX} (repeat for a set of modes)",
     )
     what.add_argument(
         "--target-set",

@@ -74,12 +74,12 @@ def bounded_int(lowest: int, highest: int, why: str = ""):
 KOITER_COST = "adds ~3-7 s on the paper's tube, ~12 s on a layered tube; ~10 s more the first time"
 
 
-#: Why the largest m and n a scan may start from, and of one --mode, are bifurcation.scan's
-#: M_CAP and N_CAP (the kernel's step budget, incremental.modes.MODE_MAX); shorter
+#: Why the largest m and n of a scan's ranges and of one --mode are
+#: incremental.modes.MODE_MAX (what the kernel resolves, with a decade to spare); shorter
 #: waves tend to the exact short-wave (half-space) limit, which every scan computes.
 SHORT_WAVES = (
-    "the kernel's step budget; shorter waves tend to the exact short-wave limit,"
-    " which every scan computes"
+    "the shortest waves the kernel resolves; shorter ones tend to the exact short-wave"
+    " limit, which every scan computes"
 )
 
 
@@ -268,19 +268,21 @@ MODE_COVERAGE = (
 def add_mode_range_options(group, *, top: bool = False) -> None:
     """--m-max and --n-max (and --top): the ScanOptions of a scan, defaults from it."""
     # start-up speed (see top)
-    from ..bifurcation.options import EVERY_M, M_CAP, N_CAP, TOP_MAX, ScanOptions
+    from ..bifurcation.options import EVERY_M, M_CAP, TOP_MAX, ScanOptions
+    from ..incremental.modes import MODE_MAX
 
     default = ScanOptions()
     group.add_argument(
         "--m-max",
-        type=bounded_int(0, M_CAP, SHORT_WAVES),
+        type=bounded_int(0, MODE_MAX, SHORT_WAVES),
         default=default.m_range[1],
         metavar="M_MAX",
         help="largest circumferential wavenumber m of the scan, from 0"
         f" (default {default.m_range[1]}; widened automatically when the"
         " critical mode sits on the edge, and probed beyond for short"
-        f" waves; every m is scanned up to {EVERY_M}, larger m up to {M_CAP} are"
-        " searched coarse-to-fine for the best m). The scan covers the"
+        f" waves; every m is scanned up to {EVERY_M}, larger m up to {M_CAP} (more for a"
+        " thin layer: its folds' m) are searched coarse-to-fine for the best m). The"
+        " scan covers the"
         " wrinkles (m, n), n >= 1, the"
         " prismatic modes (m, 0), m >= 2, and the torsional modes (0, n);"
         " the short-wave limit m, n -> infinity comes exactly from the"
@@ -288,7 +290,7 @@ def add_mode_range_options(group, *, top: bool = False) -> None:
     )
     group.add_argument(
         "--n-max",
-        type=bounded_int(1, N_CAP, SHORT_WAVES),
+        type=bounded_int(1, MODE_MAX, SHORT_WAVES),
         default=default.n_range[1],
         metavar="N_MAX",
         help="largest axial half-wavenumber n of the scan, from 1 (default"
@@ -306,13 +308,12 @@ def add_mode_range_options(group, *, top: bool = False) -> None:
 
 def add_mode_option(group) -> None:
     """--mode M N and --family: one mode instead of a scan."""
-    from ..bifurcation.options import N_CAP  # start-up speed (see top)
-    from ..incremental.modes import FAMILIES
+    from ..incremental.modes import FAMILIES, MODE_MAX  # start-up speed (see top)
 
     group.add_argument(
         "--mode",
         nargs=2,
-        type=bounded_int(0, N_CAP, SHORT_WAVES),
+        type=bounded_int(0, MODE_MAX, SHORT_WAVES),
         metavar=("M", "N"),
         help="one mode instead of a scan: circumferential wavenumber m >= 0"
         " (lobes around) and axial half-wavenumber n >= 0 (half-waves"

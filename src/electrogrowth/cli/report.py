@@ -131,23 +131,24 @@ def physical_line(physical: dict) -> list[str]:
 def edge_warning(result) -> str:
     """A one-line warning when the critical mode of a scan (a ScanResult) sits on the upper
     edge of the final m or n range, else "" (the scan widens a range and searches m up to
-    the cap; a mode on the edge may still hide a lower one beyond). At the cap itself
-    raising --m-max / --n-max cannot help, and the warning says so, unless the scan's
-    status (INACCURATE at the cap, bifurcation/scan.py) says it already."""
-    from ..bifurcation.options import M_CAP, N_CAP  # start-up speed: `state` loads no kernel
+    the tube's cap; a mode on the edge may still hide a lower one beyond). At the tube's
+    cap the scan's status says it (INACCURATE, bifurcation/scan.py); at the largest mode
+    the kernel resolves (MODE_MAX) raising --m-max / --n-max cannot help, and the warning
+    says so."""
+    from ..incremental.modes import MODE_MAX  # start-up speed: `state` loads no kernel
 
     c = result.critical
     if c.kind != "bifurcation":
         return ""
     edges, capped = [], []
     for name, value, top, cap in (
-        ("m", c.m, result.m_range[1], M_CAP),
-        ("n", c.n, result.n_range[1], N_CAP),
+        ("m", c.m, result.m_range[1], result.caps[0]),
+        ("n", c.n, result.n_range[1], result.caps[1]),
     ):
         if value >= cap and c.status == "inaccurate":  # said by the status's own message
             continue
         if value == top:
-            (capped if value >= cap else edges).append(
+            (capped if value >= MODE_MAX else edges).append(
                 f"{name} = {value} is the largest {name} scanned"
             )
     if not edges and not capped:

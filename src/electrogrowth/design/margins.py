@@ -51,6 +51,7 @@ import math
 
 from ..bifurcation.critical import critical_value
 from ..bifurcation.march import control_path
+from ..bifurcation.options import mode_caps
 from ..errors import ElectrogrowthError
 from ..outcomes import Kind
 from . import onset
@@ -87,6 +88,10 @@ class Margins:
     def crease(self, x: float, until: float | None = None) -> float:
         """Where a face creases at x, looked for before ``until`` (design/onset.py)."""
         return self.creases.value(x, until)
+
+    def caps(self, x: float) -> tuple[int, int]:
+        """The largest m and n the scans of the tube at x search (options.mode_caps)."""
+        return mode_caps(self.tube.at(self.key, x))
 
     def value(self, mode, x: float) -> float:
         """The first critical value of ``mode`` at x; +-inf (never) if the threshold or no

@@ -38,7 +38,6 @@ from ..bifurcation.scan_grid import scan_grid
 from ..continuation.events import SWITCH, brent, widening_windows
 from ..errors import ElectrogrowthError, Remedy
 from ..incremental.accuracy import check_rtol
-from ..incremental.modes import MODE_MAX
 from ..outcomes import Kind, Status, json_number
 from . import onset
 from .margins import Margins
@@ -257,7 +256,7 @@ def prescribe(
         failed = any(iv.kind == Status.FAILED for iv in sequence.intervals)
         return _unreached(goal, key, sequence, region, unreached_note(goal, failed))
     x, mode, others = best
-    note = cap_note(mode, goal) if status == NOT_FIRST else ""
+    note = cap_note(mode, goal, margins.caps(x)) if status == NOT_FIRST else ""
     span = _span(region, x)
     edge = _touches(span, edges)
     m_x, nxt = margins.best_margin(mode, others, x, edge)
@@ -503,13 +502,15 @@ def best_member(x, goal: Target, margins, scan, members):
     return ranked, mode, v
 
 
-def cap_note(mode, goal: Target) -> str:
-    """``note`` where a set's closest member found sits at the mode cap (whether the scan
-    or :func:`_past_window` reached it there), else empty."""
-    if goal.modes or max(mode) < MODE_MAX:
+def cap_note(mode, goal: Target, caps: tuple[int, int]) -> str:
+    """``note`` where a set's closest member found sits at a mode cap of its design's tube
+    (``caps``, bifurcation.options.mode_caps; whether the scan or :func:`_past_window`
+    reached it there), else empty."""
+    at = [cap for k, cap in zip(mode, caps, strict=True) if k >= cap]
+    if goal.modes or not at:
         return ""
     return (
-        f"the closest member found, {mode}, is at the mode cap {MODE_MAX}: a member of the"
+        f"the closest member found, {mode}, is at the mode cap {at[0]}: a member of the"
         " set beyond it may come closer"
     )
 
@@ -543,12 +544,12 @@ def _along_axis(mode, v: float, x: float, axis: int, goal: Target, margins: Marg
     def later(a, b):  # is member a reached after member b (or with it)?
         return margins.sense * seen[a] >= margins.sense * seen[b]
 
-    k0 = mode[axis]
-    if k0 >= MODE_MAX or margins.sense * value(k0 + 1) >= margins.sense * v:
+    k0, cap = mode[axis], margins.caps(x)[axis]  # as far as the scans of the tube at x go
+    if k0 >= cap or margins.sense * value(k0 + 1) >= margins.sense * v:
         return mode, v  # they turn away at once: no edge to go past
     seen = {k0: v, k0 + 1: value(k0 + 1)}  # (cached)
     best = k0 + 1
-    for k in geometric_samples(max(k0, 1), MODE_MAX):  # from 1: 0 x RATIO stays 0
+    for k in geometric_samples(max(k0, 1), cap):  # from 1: 0 x RATIO stays 0
         if k <= best:
             continue
         seen[k] = value(k)

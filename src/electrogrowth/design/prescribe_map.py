@@ -25,6 +25,7 @@ import math
 import numpy as np
 from scipy.optimize import minimize, minimize_scalar
 
+from ..bifurcation.options import mode_caps
 from ..bifurcation.scan import ScanOptions, scan_modes
 from ..errors import ElectrogrowthError
 from ..incremental.accuracy import check_rtol
@@ -206,6 +207,10 @@ class _Margins:
 
     def at(self, u):
         return self.values.tube_at(u)
+
+    def caps(self, u) -> tuple[int, int]:
+        """The largest m and n the scans of the tube at u search (options.mode_caps)."""
+        return mode_caps(self.at(u))
 
     def value(self, mode, u) -> float:
         """The first critical value of ``mode`` at u (followed from its last value, as on a
@@ -470,7 +475,7 @@ def prescribe_map(
         if best is None:
             return _unreached(goal, mmap, region)
         _, u0, mode, others = best
-        note = cap_note(mode, goal)
+        note = cap_note(mode, goal, margins.caps(u0))
         region_crease = {}
     u, others = _maximise(margins, mode, others, u0, goal)
     m_u, nxt = margins.margin(mode, others, u)

@@ -16,11 +16,17 @@ import numpy as np
 
 from ..errors import ParameterError
 
-#: The largest m and n of a mode: the kernel's steps grow like the decay rate integrated
-#: through the wall, ~1.1 max(m ln(r_o / r_i), k (r_o - r_i)) at rtol 1e-12, so m = 2000
-#: keeps every Rbar_o <= 100 well inside the 20000-step budget (docs/derivation-film.md,
-#: "Large m"); shorter waves tend to the exact short-wave limit (bifurcation/surface.py).
-MODE_MAX = 2000
+#: The largest m and n of a mode: what the kernel resolves, with a decade to spare. A short
+#: wave starts near the outer end of each layer from its dominant subspace
+#: (short_wave_start.py), so its steps no longer grow with m: ~100 at rtol 1e-5 and
+#: 130-1400 at 1e-12 for every m from 2e3 to 1e10 through Rbar_o = 100 or a lining 1e-3
+#: thick (docs/derivation-film.md, "What a large m costs the kernel"). Its first failures
+#: are step underflows at decay rates |(m / r, k)| of 1e9 to 1e10 (n = 1e8 of tubes L =
+#: 0.01, (1e9, 0) in a march at 1e-12); below 1e6 only the loose 1e-5 of a march failed, for
+#: (1e5, 1e5) of a film L = 0.01 (k = 3e7), and its retry at a tighter rtol resolved it
+#: (targets._tighter). A scan searches no further than its tube's thinnest layer needs
+#: (bifurcation/options.mode_caps); shorter waves tend to the exact short-wave limit.
+MODE_MAX = 10**6
 
 #: Bits of the Stroh pairs (U_j, S_j): U_r / r Sigma_rr, U_th / r Sigma_rth,
 #: U_z / r Sigma_rz, r Delta_r / -Phi (collocation: U_r and P, U_th, U_z, Phi).
@@ -106,8 +112,8 @@ def check_mode(m, n, family: str | None = None) -> Family:
     if not whole or m < 0 or n < 0 or m > MODE_MAX or n > MODE_MAX:
         raise ParameterError(
             f"mode (m, n) = ({m}, {n}) is invalid; need integers 0 <= m <= {MODE_MAX},"
-            f" 0 <= n <= {MODE_MAX} (n = 0: prismatic, m >= 2; shorter waves tend to the"
-            " exact short-wave limit, which every scan computes)"
+            f" 0 <= n <= {MODE_MAX} (n = 0: prismatic, m >= 2; the kernel resolves no"
+            " shorter waves, which tend to the exact short-wave limit every scan computes)"
         )
     fam = natural_family(m, n) if family is None else check_family(family)
     where = f"mode (m, n) = ({m:g}, {n:g})"
