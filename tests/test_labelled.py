@@ -98,15 +98,19 @@ def test_help_piped_into_a_closed_reader_ends_quietly():
         assert proc.wait() == 0 and err == ""
 
 
-def _scan(m, n, m_range=(0, 12), n_range=(1, 30)):
-    crit = types.SimpleNamespace(kind="bifurcation", m=m, n=n)
-    return types.SimpleNamespace(critical=crit, m_range=m_range, n_range=n_range)
+def _scan(m, n, m_range=(0, 12), n_range=(1, 30), caps=(2000, 2000), status="ok"):
+    crit = types.SimpleNamespace(kind="bifurcation", m=m, n=n, status=status)
+    return types.SimpleNamespace(critical=crit, m_range=m_range, n_range=n_range, caps=caps)
 
 
 def test_edge_warning():
     assert edge_warning(_scan(3, 1)) == ""
     assert "m = 12 is the largest m scanned" in edge_warning(_scan(12, 1))
     assert "n = 30" in edge_warning(_scan(0, 30))
+    # at the tube's cap an INACCURATE status already says it: no second warning
+    at_cap = _scan(6464, 0, m_range=(0, 6464), caps=(6464, 2037), status="inaccurate")
+    assert edge_warning(at_cap) == ""
+    assert "m = 6464" in edge_warning(_scan(6464, 0, m_range=(0, 6464), caps=(6464, 2037)))
     threshold = types.SimpleNamespace(critical=types.SimpleNamespace(kind="threshold", m=-1, n=-1))
     assert edge_warning(threshold) == ""
 
