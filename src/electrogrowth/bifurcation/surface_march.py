@@ -81,8 +81,8 @@ def locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, unti
     threshold, unresolved, film = None, None, False
     # on the way to the control's own lock (its load unbounded) a state that fails is next
     # to it, as the mode march reads it: no shorter steps, each a walk of seconds that
-    # fails (a three-layer tube inflated towards a Gent layer's lock: 15 of them, 65 s)
-    bound = has_lock(params) and own_lock(params, solve_for, side) is not None
+    # fails (a three-layer tube inflated towards a Gent layer's lock: 18 of them, 70 s)
+    bound = None  # read at the first failure: a walk of the control's threshold
     while not step.at_end():
         x_prev = step.x
         x = step.propose()
@@ -91,6 +91,8 @@ def locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, unti
         except (BaseStateError, ConvergenceError) as exc:  # lost, or unresolved
             if step.asymptote is not None:  # where the states run to is established:
                 break  # they are not resolved closer to it (a shear modulus ~1e-8)
+            if bound is None:
+                bound = has_lock(params) and own_lock(params, solve_for, side) is not None
             if _retry(exc) and not bound and step.unresolved():
                 continue  # the solver failed here, not next to a lock: step shorter first
             value, edge, pending = threshold_between(at, params, x_prev, x, rtol, side=side)
