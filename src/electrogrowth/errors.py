@@ -207,10 +207,10 @@ class NoBifurcationBeforeLock(NoBifurcationFound):
     the state is never lost, and the states closer to the lock are not resolved."""
 
     remedy = Remedy(
-        "the states closer to the lock are not resolved, and no mode is computable there:"
-        " give the layer a larger jm to look further, or scan every mode (leave out --mode)",
-        python="the states closer to the lock are not resolved, and no mode is computable"
-        " there: give the layer a larger jm to look further, or scan every mode (scan_modes)",
+        "no mode is computable closer to the lock: give the layer a larger jm to look"
+        " further, or scan every mode (leave out --mode)",
+        python="no mode is computable closer to the lock: give the layer a larger jm to look"
+        " further, or scan every mode (scan_modes)",
     )
 
 

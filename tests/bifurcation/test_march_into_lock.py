@@ -77,7 +77,7 @@ def test_an_inflation_to_a_lock_ends_without_looking_past_its_last_state(monkeyp
     # before: 37 looks at the edge, each a failed cold solve (and the short-wave march's
     # retries); now none, and one failed state in each march
     assert counts.looks == 0
-    assert counts.failed <= 4
+    assert 1 <= counts.failed <= 4  # the state past the last one failed, and was counted
     assert counts.states < 400
 
 
@@ -89,7 +89,7 @@ def test_growth_towards_a_lock_looks_at_few_states_past_the_last(monkeypatch):
     assert said.startswith("no mode bifurcates for growth[2] from 1 up to 2.97")
     assert "the Gent layer 1 is next to its lock, 1 - (I1 - 3)/jm = " in said
     # before: the edge bisected to 1e-13, ~40 looks
-    assert counts.looks <= state_loss.LOCK_LOOKS + 1
+    assert 1 <= counts.looks <= state_loss.LOCK_LOOKS + 1
 
 
 def test_a_profile_not_finite_fails_at_once():
@@ -103,3 +103,12 @@ def test_a_profile_not_finite_fails_at_once():
     with pytest.raises(ConvergenceError, match="not finite"):
         plies.chebyshev(nan, 1.0, 1.1, 1e-14, "base-state profile")
     assert degrees == [17, 33]
+
+
+def test_a_curve_point_records_the_lock_as_no_bifurcation():
+    # a design sequence reads "NoBifurcationFound" as no mode before the control's end, not
+    # as the edge of the valid range (design/sequence.py)
+    from electrogrowth.bifurcation.curve_record import _failed_point
+
+    point = _failed_point(1.0, NoBifurcationBeforeLock("no mode bifurcates ... lock"))
+    assert point.failure == "NoBifurcationFound"
