@@ -201,6 +201,19 @@ class NoBifurcationFound(ElectrogrowthError, RuntimeError):
     )
 
 
+class NoBifurcationBeforeLock(NoBifurcationFound):
+    """No mode bifurcates up to the last state a march resolves on its way to its control's
+    own threshold, a layer's lock whose load grows without bound (Threshold kind "locking"):
+    the state is never lost, and the states closer to the lock are not resolved."""
+
+    remedy = Remedy(
+        "no mode is computable closer to the lock: give the layer a larger jm to look"
+        " further, or scan every mode (leave out --mode)",
+        python="no mode is computable closer to the lock: give the layer a larger jm to look"
+        " further, or scan every mode (scan_modes)",
+    )
+
+
 class MissingDependencyError(ElectrogrowthError, ImportError):
     """An optional package (an extra such as ``vtk`` or ``sweep``) is not installed."""
 

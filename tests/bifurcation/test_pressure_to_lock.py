@@ -12,7 +12,9 @@ P_i = 4.0794 with status OK, "the axisymmetric state is lost (pressure threshold
 march stopped resolving states, not a property of the tube (the same tube with the Gent
 layer's shear modulus 3 gave 11.3415 with the built-in energy and 11.3617 with the identical
 energy text). The march now says that no mode bifurcates up to there and that the states
-past it are not resolved, without claiming a loss.
+past it are not resolved, without claiming a loss: since the pressure's own threshold is
+that lock (the state is never lost), as NoBifurcationBeforeLock, a NoBifurcationFound that
+names the layer and the lock (check round 35b; tests/bifurcation/test_march_into_lock.py).
 """
 
 import math
@@ -20,16 +22,17 @@ import math
 import pytest
 
 from electrogrowth import Layer, Material, Tube, critical_value, gent, threshold
-from electrogrowth.errors import ConvergenceError
+from electrogrowth.errors import NoBifurcationBeforeLock
 
 GENT_INSIDE = Tube((Layer(1.4, gent(45.0)), Layer(2.2)), length=5.0, stretch=1.0)
 
 
 def test_no_threshold_where_the_branch_only_locks():
     assert math.isinf(threshold(GENT_INSIDE, "pressure").value)
-    with pytest.raises(ConvergenceError, match="not established") as err:
+    with pytest.raises(NoBifurcationBeforeLock, match="grows without bound") as err:
         critical_value(GENT_INSIDE, 3, 1, "pressure")
     assert "no mode bifurcates for pressure" in str(err.value)
+    assert "the Gent layer 1 is next to its lock" in str(err.value)
 
 
 @pytest.mark.slow
@@ -38,7 +41,7 @@ def test_energy_text_gives_the_builtin_outcome():
     builtin = Tube((Layer(1.4, gent(45.0), shear_modulus=3.0), Layer(2.2)), length=5.0)
     written = Tube((Layer(1.4, text), Layer(2.2)), length=5.0)
     for tube in (builtin, written):
-        with pytest.raises(ConvergenceError, match="not established"):
+        with pytest.raises(NoBifurcationBeforeLock, match="grows without bound"):
             critical_value(tube, 3, 1, "pressure")
 
 

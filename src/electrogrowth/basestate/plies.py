@@ -72,6 +72,13 @@ def chebyshev(f, a: float, b: float, tol, what: str, unit=1.0) -> np.ndarray:
         coef = chebinterpolate(lambda x: f(a + 0.5 * (b - a) * (x + 1.0)), deg)
         size = np.maximum(abs(coef).max(0), unit)
         tail = abs(coef[-3:]).max(0) / size
+        if last is not None and (~np.isfinite(tail) & ~np.isfinite(last)).any():
+            # NaN at nodes of two rules: the state lies outside the energy's domain (a
+            # root past a lock), no degree resolves it (degrees to 4096 cost seconds)
+            raise ConvergenceError(
+                f"{what} on [{a:g}, {b:g}] is not finite at the Chebyshev points of degrees"
+                f" {deg // 2} and {deg}: the state lies where the energy is not defined"
+            )
         if np.all(tail <= tol) or (
             last is not None
             and np.all(tail <= 1e-8)

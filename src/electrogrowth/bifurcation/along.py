@@ -343,6 +343,22 @@ def lock_margin(state) -> float:
     return worst
 
 
+def nearest_lock(state) -> tuple[int, float] | None:
+    """(the number, from 1 at the bore, of the Gent layer of ``state`` nearest to its lock,
+    its least 1 - (I1 - 3)/jm), or None without a Gent layer: what a march next to a lock
+    names where its states stop resolving."""
+    tube, margins = state.tube, []
+    for k, (layer, a, b) in enumerate(zip(tube.layers, tube.radii, tube.radii[1:]), 1):
+        energy = layer.material.definition
+        if getattr(energy, "family", None) == "gent":
+            i1, _ = _invariants_at(state, layer, a, b)
+            margins.append((float(np.min(1.0 - (i1 - 3.0) / energy.parameter)), k))
+    if not margins:
+        return None
+    margin, k = min(margins)
+    return k, margin
+
+
 def clear_of_domain_edge(state, margin: float = LOCK_MARGIN) -> bool:
     """Is every energy text of ``state`` finite (with no field) at its layer's I1 - 3 and
     I2 - 3 scaled by 1 / (1 - margin), at 9 Chebyshev points of each (for Gent's energy,

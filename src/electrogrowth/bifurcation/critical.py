@@ -37,6 +37,7 @@ from ..errors import (
     CHECK_WITH_IMPEDANCE,
     ConvergenceError,
     ElectrogrowthError,
+    NoBifurcationBeforeLock,
     NoBifurcationFound,
     Remedy,
 )
@@ -458,8 +459,10 @@ def _after_start(bracket: tuple[float, float], path: tuple[float, float]):
 
 
 def _no_bifurcation(exc: NoBifurcationFound, solve_for: str, m: int, n: int, fam) -> None:
-    """Raise the march's ``exc`` with its remedy (and why, for a torsional mode)."""
-    exc.remedy = no_bifurcation_remedy(solve_for, mode=(m, n))
+    """Raise the march's ``exc`` with its remedy (and why, for a torsional mode); one that
+    stopped next to its control's lock keeps its own."""
+    if not isinstance(exc, NoBifurcationBeforeLock):
+        exc.remedy = no_bifurcation_remedy(solve_for, mode=(m, n))
     if fam is not Family.TORSIONAL:
         raise exc
     stop = NoBifurcationFound(

@@ -178,6 +178,14 @@ _OPTIONAL = {"unstable_row", "face"}
 _FIELDS = {f.name for f in dataclasses.fields(CurvePoint)} - _OPTIONAL
 
 
+def _failure_kind(exc: Exception) -> str:
+    """``failure`` of a point that raised ``exc``: its class, "NoBifurcationFound" for every
+    kind of it (one that stopped next to its control's lock, NoBifurcationBeforeLock, is
+    a "no bifurcation" answer too: design/sequence.py reads the name)."""
+    kind = NoBifurcationFound if isinstance(exc, NoBifurcationFound) else type(exc)
+    return kind.__name__
+
+
 def _failed_point(x: float, exc: Exception) -> CurvePoint:
     """The grid point at x whose scan raised ``exc``: FAILED (an electrogrowth error) or
     ERROR (a bug, its traceback kept)."""
@@ -193,7 +201,7 @@ def _failed_point(x: float, exc: Exception) -> CurvePoint:
         message=message,
         remedy=remedy(exc),
         traceback=traceback_of(exc),
-        failure=type(exc).__name__,
+        failure=_failure_kind(exc),
         unstable_row=getattr(exc, "row", None) or (),
     )
 

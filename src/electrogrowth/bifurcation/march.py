@@ -49,6 +49,7 @@ from ..continuation.predict import EventWatch
 from ..errors import (
     BaseStateError,
     ConvergenceError,
+    NoBifurcationBeforeLock,
     NoBifurcationFound,
     Remedy,
     UnstableAtStart,
@@ -59,7 +60,7 @@ from ..model.controls import KINDS
 from ..model.layers import Tube
 from .along import RootRows, Signed, TubeAt
 from .problem import DEFAULT_RTOL
-from .state_loss import Approach, approach_film, box_note, loss_at_end
+from .state_loss import Approach, LockAhead, approach_film, box_note, loss_at_end
 from .state_loss import threshold_between as _threshold_between
 
 #: from FAR_FROM scales past the start on, a march's steps, and the waits between a mode's
@@ -259,7 +260,7 @@ def first_bifurcations(
                 if step.far_lost():  # on in the scale's steps, the loss located from there
                     watch.far = 0.0
                     continue
-                value, edge, pending = _threshold_between(at, params, step.x, x)
+                value, edge, pending = _threshold_between(at, params, step.x, x, side=side)
                 if value is not None or threshold is None:  # an established loss stays
                     threshold, unresolved = value, pending
                 step.lost(edge)
@@ -279,7 +280,7 @@ def first_bifurcations(
                 except ConvergenceError as err:  # as below: the path's end next to a lock
                     where = (idx, watch.xa[idx][np.argmax(sense * watch.xa[idx])], x)
                     more, threshold, unresolved = _unresolved_tables(
-                        at, params, views, watch, where, err, top, threshold
+                        at, (params, side), views, watch, where, err, top, threshold
                     )
                     found += more
             break
@@ -300,7 +301,7 @@ def first_bifurcations(
                 found += _advance(watch, idx, x, g, views, top)
             except ConvergenceError as err:  # a root's refinement met unresolved tables
                 more, threshold, unresolved = _unresolved_tables(
-                    at, params, views, watch, (idx, step.x, x), err, top, threshold
+                    at, (params, side), views, watch, (idx, step.x, x), err, top, threshold
                 )
                 found, stop = found + more, True
                 continue
@@ -311,6 +312,13 @@ def first_bifurcations(
     found.sort(key=lambda mv: sense * mv.value)
     if not found and cut and unresolved is not None and sense * (x - asked) >= 0:
         return MarchResult([], None)  # resolved up to ``until``: only its margin was not
+    if not found and isinstance(unresolved, LockAhead) and unresolved.unbounded and x != x0:
+        # the control's own threshold is a lock: no state is lost before it (state_loss.py)
+        stop = NoBifurcationBeforeLock(
+            f"no mode bifurcates for {solve_for} from {x0:.12g} up to {x:.12g}, where"
+            f" {unresolved.args[0]}"
+        )
+        raise stop from unresolved
     if not found and unresolved is not None:  # neither a loss nor a wrinkle is established
         err = ConvergenceError(f"{_unexamined(solve_for, x0, x)}: {unresolved.args[0]}")
         err.remedy = unresolved.remedy if isinstance(unresolved, ConvergenceError) else ""
@@ -458,7 +466,7 @@ def _last_look(signed: Signed, watch, idx, x: float):
     return good, g
 
 
-def _unresolved_tables(at: TubeAt, params: Tube, views, watch, where, err, top, known=None):
+def _unresolved_tables(at: TubeAt, tube_side, views, watch, where, err, top, known=None):
     """(roots, threshold, unresolved) where the refinement of a sign change of the modes
     ``idx`` between their last samples (the latest x_ok) and x met a state whose radial
     tables do not resolve (``err``; next to a lock, where a loose sign jumps: check round 28
@@ -467,7 +475,7 @@ def _unresolved_tables(at: TubeAt, params: Tube, views, watch, where, err, top, 
     there; else the states end at the ``known`` threshold (a loss the march established
     past x), or where :func:`state_loss.threshold_between` says (a layer's kinematic lock),
     or, where neither is, nothing is established and ``err`` is raised."""
-    idx, x_ok, x = where
+    (params, side), (idx, x_ok, x) = tube_side, where
     try:
         good, g = _last_look(views.fine, watch, idx, x)
         if (g <= 0).any():
@@ -475,7 +483,7 @@ def _unresolved_tables(at: TubeAt, params: Tube, views, watch, where, err, top, 
     except ConvergenceError:
         pass  # not even the fine signs resolve: the states alone decide
     if known is None:
-        known, _, _ = _threshold_between(at, params, x_ok, x, tables=True)
+        known, _, _ = _threshold_between(at, params, x_ok, x, side=side, tables=True)
     return [], known, None if known is not None else err
 
 

@@ -38,7 +38,13 @@ import dataclasses
 import numpy as np
 
 from ..basestate.tube import solve_base_state
-from ..errors import ConvergenceError, ElectrogrowthError, NoBifurcationFound, UnstableAtStart
+from ..errors import (
+    ConvergenceError,
+    ElectrogrowthError,
+    NoBifurcationBeforeLock,
+    NoBifurcationFound,
+    UnstableAtStart,
+)
 from ..incremental.modes import MODE_MAX, row_family
 from ..incremental.targets import Family, impedance_targets
 from ..model.layers import Tube
@@ -120,7 +126,8 @@ def scan_modes(
             found = _beyond_searched(params, solve_for, side, result, options, rtol, at_cap, limit)
             result, at_cap = found
     except NoBifurcationFound as exc:
-        exc.remedy = no_bifurcation_remedy(solve_for)  # not the remedy of one mode's solve
+        if not isinstance(exc, NoBifurcationBeforeLock):  # the lock's own stands
+            exc.remedy = no_bifurcation_remedy(solve_for)  # not the remedy of one mode's solve
         result, at_cap, limit = _no_scanned_mode(params, solve_for, side, options, rtol, exc)
     if options.surface:
         result = _with_short_waves(params, solve_for, side, result, options, rtol, at_cap, limit)

@@ -35,7 +35,7 @@ import numpy as np
 from ..basestate.ellipticity import softest, wall_shear, why_lost
 from ..basestate.thresholds import LockedSearch, Threshold
 from ..basestate.tube import load_in_box, solve_base_state, threshold
-from ..continuation.events import EDGE, FULL, LOCK, THRESHOLD, bisect, brent
+from ..continuation.events import EDGE, FULL, LOCK, THRESHOLD, Tolerance, bisect, brent
 from ..continuation.events import threshold_between as _lost_between
 from ..errors import (
     NEAR_LOCK,
@@ -49,7 +49,14 @@ from ..errors import (
 from ..model.controls import parse_control
 from ..model.layers import Tube
 from ..model.params import SUPPORTED
-from .along import LoadMargin, TubeAt, bounded_energy, clear_of_lock, has_lock
+from .along import (
+    LoadMargin,
+    TubeAt,
+    bounded_energy,
+    clear_of_lock,
+    has_lock,
+    nearest_lock,
+)
 from .error_estimate import achieved_floor
 
 #: the fates of a point where no state was found (_fate)
@@ -183,8 +190,69 @@ def approach_film(
     return asymptote
 
 
+class LockAhead(ConvergenceError):
+    """The states past a march's last one are next to a layer's lock and not resolved.
+    ``unbounded``: the control's own threshold is that lock (kind "locking": its load grows
+    without bound towards it), so no state is lost on the way: the march's answer is that
+    no mode bifurcates up to its last state (march.py), not that the loss is unknown."""
+
+    def __init__(self, *args, unbounded: bool = False):
+        super().__init__(*args)
+        self.unbounded = unbounded
+        self.remedy = NEAR_LOCK
+
+
+#: next to a lock the states past a march's last one may exist and not resolve, and every
+#: look at one is a cold solve that walks its branch for seconds before it fails: their
+#: edge is bisected this many times at most (to 2^-LOCK_LOOKS of the step), not to EDGE
+#: (37 looks, 383 s: check round 35b); a look that finds the state lost is still located
+#: to EDGE, a loss's exact value
+LOCK_LOOKS = 4
+
+
+def lock_note(at: TubeAt, x: float) -> str:
+    """How near the Gent layer nearest its lock is at the march's last state x, in words;
+    "" where no Gent layer is (an energy text's edge has no such margin)."""
+    try:
+        near = nearest_lock(at.solved(x))
+    except ElectrogrowthError:
+        near = None
+    if near is None:
+        return ""
+    k, margin = near
+    return f"the Gent layer {k} is next to its lock, 1 - (I1 - 3)/jm = {margin:.2g}"
+
+
+def own_lock(params: Tube, solve_for: str, side: str | None) -> Threshold | None:
+    """The control's own threshold where it is a lock whose load grows without bound
+    (kind "locking", value inf: the state is never lost on the way), else None."""
+    own = own_threshold(params, solve_for, side)
+    if own is None or own.kind != "locking" or math.isfinite(own.value):
+        return None
+    return own
+
+
+def _lock_ahead(at: TubeAt, x_ok: float, lock: Threshold) -> LockAhead:
+    """The answer of a march whose states stop resolving at x_ok on the way to its
+    control's own lock (:func:`own_lock`)."""
+    where = lock_note(at, x_ok) or "a layer is next to its lock"
+    return LockAhead(
+        f"{where}, and the {lock.control} grows without bound towards the lock at lambda_i ="
+        f" {lock.lambda_i:.6g} (the {lock.control}'s threshold is that lock: no state is lost"
+        " before it); the states closer to it are not resolved",
+        unbounded=True,
+    )
+
+
 def threshold_between(
-    at: TubeAt, params: Tube, x_ok: float, x_bad: float, rtol=1e-12, *, tables: bool = False
+    at: TubeAt,
+    params: Tube,
+    x_ok: float,
+    x_bad: float,
+    rtol=1e-12,
+    *,
+    side: str | None = None,
+    tables: bool = False,
 ):
     """Where the base state is lost between x_ok and x_bad (no state, or none resolved, at
     x_bad): (value, the last x the march may step to, None). Where the voltage threshold
@@ -199,14 +267,28 @@ def threshold_between(
     is lost, or within one more step of it (the search failed within LOCK_MARGIN of the
     lock), or, where x_bad is not lost, within one more step of x_bad (the march came
     within LOCK_MARGIN of the lock), and the value is that lock. Else the answer is (None,
-    the last resolved x, the error to raise if nothing is found before it)."""
+    the last resolved x, the error to raise if nothing is found before it). Where the
+    control's own threshold (on ``side``, None the control's default) is a lock with its
+    load unbounded (:func:`own_lock`), no state is lost: nothing is looked at, the answer
+    is (None, x_ok, :class:`LockAhead`). Next to a lock, the edge of the states that
+    resolve is bisected LOCK_LOOKS times only, unless a look finds the state lost."""
     margin = held_loads(at, params, at.control)
     if margin is not None:
         # no sign change (ValueError), or no branch to read at x_bad: bisect instead
         x = _lost_between(x_ok, x_bad, margin=margin, tolerate=_UNREADABLE)
         if x is not None:
             return x, x, None
-    fate_bad = "unresolved" if tables else _fate(at, x_bad, rtol)
+    own = own_lock(params, at.control, side) if has_lock(params) else None
+    if own is not None:
+        return None, x_ok, _lock_ahead(at, x_ok, own)
+    fates: dict[float, str] = {}
+
+    def fate(x: float) -> str:  # each look once: a cold solve next to a lock costs seconds
+        if x not in fates:
+            fates[x] = _fate(at, x, rtol)
+        return fates[x]
+
+    fate_bad = "unresolved" if tables else fate(x_bad)
     if fate_bad == "solved":  # the failure was the march's alone: no edge here
         return (
             None,
@@ -219,13 +301,14 @@ def threshold_between(
     if tables:  # every state up to x_bad solves: the edge is where the tables fail
         ok, bad = x_ok, x_bad
     else:
-        ok, bad = bisect(lambda x: _fate(at, x, rtol) == "solved", x_ok, x_bad, EDGE)
-        if _fate(at, bad, rtol) == "lost":
+        few = fate_bad == "unresolved" and has_lock(params) and not _lock_ahead_of(at, x_ok, x_bad)
+        ok, bad = _edge(fate, x_ok, x_bad, few)
+        if fate(bad) == "lost":
             return ok, ok, None
     beyond = x_bad if fate_bad in _NO_STATE else _lost_past_lock(at, x_ok, x_bad, rtol)
     lost_from = ""
     if beyond is not None:
-        _, lost = bisect(lambda x: _fate(at, x, rtol) not in _NO_STATE, bad, beyond, EDGE)
+        _, lost = bisect(lambda x: fate(x) not in _NO_STATE, bad, beyond, EDGE)
         # the search may fail short of the lock, within LOCK_MARGIN of it: one more step on
         ahead = _lost_past_lock(at, ok, lost, rtol)
         lock = kinematic_lock(at, ok, lost if ahead is None else ahead)
@@ -233,7 +316,11 @@ def threshold_between(
             return lock, ok, None
         lost_from = f", and the state search fails from {lost:.12g}"
     locks = has_lock(at(x_ok))
-    near = "a layer next to its locking stretch?" if locks else _why_unresolved(at, ok, bad, rtol)
+    if locks:
+        note = lock_note(at, ok)
+        near = f"{note} at {ok:.12g}" if note else "a layer next to its locking stretch?"
+    else:
+        near = _why_unresolved(at, ok, bad, rtol)
     unresolved = ConvergenceError(
         f"the states from {bad:.12g} are not resolved ({near}){lost_from}: whether the"
         " state is lost there is not established"
@@ -243,6 +330,34 @@ def threshold_between(
     # probe 12b D7)
     unresolved.remedy = NEAR_LOCK if locks else Remedy("")
     return None, ok, unresolved
+
+
+def _lock_ahead_of(at: TubeAt, x_ok: float, x_bad: float) -> bool:
+    """Does a layer lock kinematically within one more step past x_bad? Then the edge of the
+    states that solve is where the march's path ends, next to that lock (a loss): bisected
+    to EDGE, not LOCK_LOOKS times."""
+    try:
+        return kinematic_lock(at, x_ok, x_bad + (x_bad - x_ok)) is not None
+    except ParameterError:  # one more step leaves the control's range
+        return kinematic_lock(at, x_ok, x_bad) is not None
+
+
+def _edge(fate, x_ok: float, x_bad: float, near_lock: bool) -> tuple[float, float]:
+    """(ok, bad): the edge of the states that solve between x_ok and x_bad, bisected to EDGE;
+    ``near_lock`` (x_bad unresolved next to a lock no kinematic loss is near), LOCK_LOOKS
+    times only, unless a look finds the state lost (a loss is located to EDGE)."""
+    looks: list[str] = []
+
+    def solved(x: float) -> bool:
+        looks.append(fate(x))
+        return looks[-1] == "solved"
+
+    if near_lock:
+        few = Tolerance(abs(x_bad - x_ok) * 2.0**-LOCK_LOOKS, maxiter=LOCK_LOOKS, scale="absolute")
+        x_ok, x_bad = bisect(solved, x_ok, x_bad, few)
+        if "lost" not in looks:
+            return x_ok, x_bad
+    return bisect(solved, x_ok, x_bad, EDGE)
 
 
 #: a wall whose smallest shear modulus (basestate/ellipticity.py) is below this share of its

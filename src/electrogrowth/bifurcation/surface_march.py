@@ -27,9 +27,9 @@ from ..continuation.path import ControlPath, Stepper, StepPolicy
 from ..continuation.predict import far_waits
 from ..errors import BaseStateError, ConvergenceError, ParameterError, UnstableAtStart
 from ..outcomes import Kind
-from .along import Elliptic, NearLock, SampleValue, StateAt, TubeAt
+from .along import Elliptic, NearLock, SampleValue, StateAt, TubeAt, has_lock
 from .march import FAR, FAR_CONTROLS, FAR_FROM, control_path
-from .state_loss import Approach, approach_film, loss_at_end, threshold_between
+from .state_loss import Approach, approach_film, loss_at_end, own_lock, threshold_between
 
 #: the short-wave march's step control: as the mode march's, but down to 1e-6 of the scale
 #: (h is one continuous function: its zero may be approached closer); from FAR_FROM scales
@@ -79,6 +79,10 @@ def locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, unti
     # unresolved: the error to raise if nothing is found (states past the path's end exist
     # but do not resolve, next to a lock: state_loss.threshold_between)
     threshold, unresolved, film = None, None, False
+    # on the way to the control's own lock (its load unbounded) a state that fails is next
+    # to it, as the mode march reads it: no shorter steps, each a walk of seconds that
+    # fails (a three-layer tube inflated towards a Gent layer's lock: 18 of them, 70 s)
+    bound = None  # read at the first failure: a walk of the control's threshold
     while not step.at_end():
         x_prev = step.x
         x = step.propose()
@@ -87,9 +91,11 @@ def locate(params, solve_for, side, h: Callable, rtol: float, h_march=None, unti
         except (BaseStateError, ConvergenceError) as exc:  # lost, or unresolved
             if step.asymptote is not None:  # where the states run to is established:
                 break  # they are not resolved closer to it (a shear modulus ~1e-8)
-            if _retry(exc) and step.unresolved():
+            if bound is None:
+                bound = has_lock(params) and own_lock(params, solve_for, side) is not None
+            if _retry(exc) and not bound and step.unresolved():
                 continue  # the solver failed here, not next to a lock: step shorter first
-            value, edge, pending = threshold_between(at, params, x_prev, x, rtol)
+            value, edge, pending = threshold_between(at, params, x_prev, x, rtol, side=side)
             if value is not None or threshold is None:  # an established loss stays
                 threshold, unresolved = value, pending
             if step.lost(edge):
