@@ -285,3 +285,45 @@ def test_search_along_n_marches_the_neighbouring_m_rows(monkeypatch):
         ((m, n) for m in range(0, 31) for n in range(240, 2001)), key=lambda mode: value(*mode)
     )
     assert [(v.m, v.n) for v in found.found[:4]] == ranked[:4]
+
+
+def test_each_row_is_searched_for_its_own_minimum(monkeypatch):
+    """Rows have their own minima (check round 35d, Q3): a wrinkle row lowest at the search's
+    edge and a fold row with a narrow dip between two geometric samples, below the wrinkle
+    row's minimum. One march over both rows took the wrinkle row's first sample for the best
+    and never refined the fold row; each row searched alone finds the dip."""
+    from electrogrowth.bifurcation import msearch
+
+    fold, wrinkle = Family.PRISMATIC.code, Family.WRINKLE.code
+
+    def value(m, code):  # the dip at 66.3 is below 1.6 only for m in 64..68
+        return 1.5 + 0.03 * (m - 66.3) ** 2 if code == fold else 1.6 + 1e-4 * (m - 11) ** 2
+
+    def first(params, solve_for, side, rows, rtol, ms, only=None, **kw):
+        modes = sorted(
+            ((m, n, c) for m in ms for n, c in only or rows), key=lambda x: value(x[0], x[2])
+        )
+        return [ModeValue(m, n, value(m, c)) for m, n, c in modes[:3]]  # natural families
+
+    monkeypatch.setattr(msearch, "_first", first)
+    rows = [(0, fold), (5, wrinkle)]
+    found = search_m(None, THETA, None, rows, 12, 2000, RTOL, 5)
+    assert (found.best.m, found.best.n) == (66, 0)
+    assert [v.m for v in found.found[:3]] == [66, 67, 65]  # the dip's neighbours next
+
+
+def test_a_fold_between_samples_is_found_past_a_wrinkle_inside_the_scan():
+    """Check round 35d, Q3: a film [1, 1.00462] (mu 529.19) grown in hoop inside a wall to
+    R_o = 1.0893631 (L = 1, lambda_z = 1). The scan reported (11, 5) at 1.61335, status ok,
+    while (66, 0) folds at 1.61108 (1.4e-3 earlier): its search marched all rows at once and
+    refined the wrinkle row's first sample. Now the scan's mode is the least of the fold row
+    and of the wrinkles it was compared with, each solved alone."""
+    tube = Tube(
+        [Layer(1.00462, shear_modulus=529.192723), Layer(1.3)], length=1.0, stretch=1.0
+    ).at("outer_radius", 1.0893631)
+    c = scan_modes(tube, THETA).critical
+    assert (c.m, c.n) == (66, 0)
+    alone = critical_value(tube, 66, 0, THETA).value
+    assert c.value == pytest.approx(alone, rel=1e-12, abs=0)
+    for mode in [(65, 0), (67, 0), (11, 5), (12, 5), (65, 1), (66, 1)]:
+        assert critical_value(tube, *mode, THETA).value > c.value

@@ -13,6 +13,13 @@ minimum (the film's bending cost falls and the substrate's rises with m), so it 
    the bracket narrowed to the neighbours of the best, until it holds at most ``SPLIT + 2``
    integers, which are marched all together.
 
+Each family row is searched on its own, and the earliest of their bests wins: rows have
+their own minima. A film inside a thin wall (check round 35d, Q3) has its wrinkle row
+(m, 5) lowest at m = 11, inside the scan, and its fold row (m, 0) at m = 66, in a dip
+narrower than the samples' spacing; one march over all rows took the wrinkle row's first
+sample (13, 5) for the best, refined next to it and never looked at the fold, which comes
+1.4e-3 earlier.
+
 Every march shares its base states among the batch (march.first_bifurcations), and the
 roots that decide are finished at the scan's own rtol, so neighbouring m (whose critical
 values differ by ~ (g - 1) / m^2 near the minimum) are ordered correctly. Small m, where
@@ -100,26 +107,16 @@ def search_n(
 
 
 def _search(params, solve_for, side, rows, span, rtol, top, axis, m_span=None) -> SearchResult:
-    edge, cap = span
     march = functools.partial(_first, params, solve_for, side, rows, rtol, axis=axis)
-    samples = geometric_samples(edge, cap)
-    seen = list(march(samples))
-    best = seen[0]
-    row = [(_fixed(best, axis), _code(best))]
-    lo, hi = neighbours(samples, _index(best, axis))
-    while hi - lo > 1:  # (at the cap too: the minimum may lie just below it)
-        inner = refine_samples(lo, hi)
-        complete = len(inner) == hi - lo - 1  # every integer of the bracket is marched
+    seen, missed = [], None
+    for row in sorted(rows):  # each row has its own minimum (module docstring)
         try:
-            got = list(march(inner, row))
-        except NoBifurcationFound:  # none of them before the end of the march: best stands
-            break
-        seen += got
-        if _earlier(got[0], best, side):
-            best = got[0]
-        lo, hi = neighbours([lo, *inner, _index(best, axis), hi], _index(best, axis))
-        if complete:
-            break
+            seen += _row_search(march, row, span, side, axis)
+        except NoBifurcationFound as exc:  # none of this row's samples: the others may
+            missed = exc
+    if not seen:
+        raise missed
+    best = min(seen, key=lambda v: _sense(side) * v.value)
     near = rows if m_span is None else _near_rows(rows, best, m_span, top)
     seen += _neighbourhood(march, near, seen, best, span, top, axis)
     key = {(v.m, v.n, v.family): v for v in seen}
@@ -128,7 +125,31 @@ def _search(params, solve_for, side, rows, span, rtol, top, axis, m_span=None) -
     # row found there may come first ((17, 0) before the refined (16, 1), probe 8b D2), and
     # the best is the earliest of all the search found.
     best = ordered[0]
-    return SearchResult(best, tuple(ordered), _index(best, axis) == cap)
+    return SearchResult(best, tuple(ordered), _index(best, axis) == span[1])
+
+
+def _row_search(march, row, span, side, axis) -> list[ModeValue]:
+    """The modes one family row's geometric sampling and refinement marched, its best
+    first among them (NoBifurcationFound where none of its samples bifurcates)."""
+    edge, cap = span
+    samples = geometric_samples(edge, cap)
+    seen = list(march(samples, [row]))
+    best = seen[0]
+    lo, hi = neighbours(samples, _index(best, axis))
+    while hi - lo > 1:  # (at the cap too: the minimum may lie just below it)
+        inner = refine_samples(lo, hi)
+        complete = len(inner) == hi - lo - 1  # every integer of the bracket is marched
+        try:
+            got = list(march(inner, [row]))
+        except NoBifurcationFound:  # none of them before the end of the march: best stands
+            break
+        seen += got
+        if _earlier(got[0], best, side):
+            best = got[0]
+        lo, hi = neighbours([lo, *inner, _index(best, axis), hi], _index(best, axis))
+        if complete:
+            break
+    return seen
 
 
 def _neighbourhood(march, rows, seen, best, span, top, axis) -> list[ModeValue]:
