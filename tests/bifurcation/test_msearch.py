@@ -327,23 +327,3 @@ def test_a_fold_between_samples_is_found_past_a_wrinkle_inside_the_scan():
     assert c.value == pytest.approx(alone, rel=1e-12, abs=0)
     for mode in [(65, 0), (67, 0), (11, 5), (12, 5), (65, 1), (66, 1)]:
         assert critical_value(tube, *mode, THETA).value > c.value
-
-
-def test_a_thin_films_rows_are_searched_though_no_sample_has_turned():
-    """Check round 35d, Q7: an outer film [1.5, 1.503023] (mu 510.95) grown isotropically
-    on a wall from 1, L = 0.0243163 (lambda_z = 1), next to the switch (89, 0) -> (0, 1).
-    The ring (0, 1) is critical; the fold (89, 0) comes 1.8e-9 after it, but the read
-    beyond the ranges samples m = 81 and 101 only, both stable there: the runners-up were
-    (1, 1), (2, 1), ... and `prescribe` reported a margin 276 times too large. A tube with a
-    layer this thin has its rows searched whatever the read says."""
-    tube = Tube(
-        [Layer(1.5), Layer(1.503023, shear_modulus=510.954039)],
-        length=0.024316287421031473,
-        stretch=1.0,
-    )
-    res = scan_modes(tube, "growth[2]")
-    c, first = res.critical, res.runners_up[0]
-    assert (c.m, c.n) == (0, 1) and (first.m, first.n) == (89, 0)
-    alone = critical_value(tube, 89, 0, "growth[2]").value
-    assert first.value == pytest.approx(alone, rel=1e-12, abs=0)
-    assert 0 < first.value - c.value < 1e-8

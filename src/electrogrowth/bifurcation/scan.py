@@ -56,7 +56,7 @@ from .directions import past_surface, surface_past
 from .grid_scan import finished, scan_once
 from .march import ModeValue, control_path
 from .msearch import search_m, search_n
-from .options import EVERY_M, M_CAP, N_CAP, ScanOptions, mode_caps
+from .options import EVERY_M, ScanOptions, mode_caps
 from .options import TOP_MAX as TOP_MAX  # re-exported: the CLI checks --top against it
 from .problem import Problem, as_problem
 from .runners import with_finished_runners
@@ -301,14 +301,7 @@ def _beyond_searched(params, solve_for, side, result, options, rtol, at_cap, lim
     to, come before a low mode of the whole tube (Euler buckling, a collapse). And whether
     the search ended at its cap. Where the search for runners-up runs into states that do
     not resolve (next to a lock), the list stands as scanned; for the critical mode that is
-    an error (:func:`_beyond_value` says when the check applies).
-
-    Where the tube has a layer thin enough for caps past M_CAP, N_CAP (options.mode_caps),
-    the critical mode is searched along every axis not yet searched, whatever the read
-    says: a fold row's dip narrower than the read's spacing (ratio 1.25 past m = 64) is
-    past its root between two samples only ((66, 0), 1.4e-3 before the wrinkle (11, 5) the
-    scan reported, between the samples 62 and 77: check round 35d, Q3)."""
-    caps = scan_caps(params, options)
+    an error (:func:`_beyond_value` says when the check applies)."""
     for runner in (False, True):
         value = _beyond_value(params, side, result, options, limit, runner)
         if value is None:
@@ -316,11 +309,8 @@ def _beyond_searched(params, solve_for, side, result, options, rtol, at_cap, lim
         turned = unstable_beyond(
             params, solve_for, value, result.m_range, result.n_range, options.prismatic
         )
-        # a thin layer's rows dip between the read's samples: search them all the same
-        thin = not runner and mode_caps(params) != (M_CAP, N_CAP)
-        for axis, cap in zip(("n", "m"), reversed(caps), strict=True):
-            searched = (result.m_range if axis == "m" else result.n_range)[1] >= cap
-            if not (turned[axis] or (thin and not searched)):
+        for axis, cap in zip(("n", "m"), reversed(scan_caps(params, options)), strict=True):
+            if not turned[axis]:
                 continue
             try:
                 result, top = _searched(params, solve_for, side, result, options, rtol, cap, axis)
