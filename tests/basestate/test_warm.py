@@ -13,8 +13,9 @@ import dataclasses
 import numpy as np
 import pytest
 
-from electrogrowth.basestate import warm
+from electrogrowth.basestate import layered, warm
 from electrogrowth.basestate.layered import solve_layered_state
+from electrogrowth.bifurcation.along import TubeAt
 from electrogrowth.errors import BaseStateError
 from electrogrowth.model.layers import Layer, Tube
 from electrogrowth.model.materials import gent, mooney_rivlin
@@ -137,3 +138,64 @@ def test_ideal_load_rate_is_the_finite_difference_direction(tube):
     assert np.dot(rate, fd) > 0
     cos = np.dot(rate, fd) / (np.linalg.norm(rate) * np.linalg.norm(fd))
     assert cos == pytest.approx(1.0, abs=1e-9)
+
+
+#: check round 35b's P17: a stiff Mooney-Rivlin film grown inside a Gent tube (jm = 0.6)
+#: under pressure and a compressive axial force; as the Gent layer nears its lock the Gauss
+#: rule its states need grows from 16 nodes (g = 1.31) to 128 (g = 1.46)
+LOCKING = Tube(
+    (
+        Layer(1.05, shear_modulus=20.0, material=mooney_rivlin(0.7)),
+        Layer(1.8, material=gent(0.6)),
+    ),
+    length=3.0,
+    axial_force=-0.3,
+    inner_pressure=0.02,
+    closed_ends=True,
+)
+#: the growth values its march (critical_value of (12, 2) for growth[1]) solves
+LOCKING_MARCH = (1.0, 1.004, 1.012, 1.028, 1.06, 1.11, 1.16, 1.21, 1.26, 1.31, 1.36, 1.41, 1.46)
+
+
+def _march_to_lock(monkeypatch, until: float):
+    """The states of LOCKING's march up to ``until`` as a march solves them (each continued
+    from its neighbours), and the number of walks from the unloaded tube after the first."""
+    at = TubeAt(LOCKING, "growth[1]")
+    states = {LOCKING_MARCH[0]: at.solved(LOCKING_MARCH[0])}  # walked: no neighbour yet
+    walks = []
+    real = layered._prepare
+
+    def counted(*args):
+        walks.append(args)
+        return real(*args)
+
+    monkeypatch.setattr(layered, "_prepare", counted)
+    states.update({g: at.solved(g) for g in LOCKING_MARCH[1:] if g <= until})
+    return at, states, len(walks)
+
+
+def test_a_march_next_to_a_lock_refines_its_rule_without_walking(monkeypatch):
+    """Where the neighbour's Gauss rule does not resolve the next state, the continuation
+    is made again with a finer rule instead of walking the loading branches from the
+    unloaded tube (5-20 s a state against ~50 ms; before: a walk at 1.36, 1.41 and 1.46).
+    The state is the walk's (its own rule, 24 nodes, agrees with 32 to 7e-14)."""
+    at, states, walks = _march_to_lock(monkeypatch, 1.46)
+    assert walks == 0
+    assert [states[g]._wall.nodes for g in (1.31, 1.36, 1.46)] == [16, 32, 128]
+    cold = solve_layered_state(at(1.36))
+    _close(states[1.36], cold, 1e-10)
+    R = np.linspace(1.0, 1.8, 9)
+    assert np.allclose(states[1.36].sigma_rr(R), cold.sigma_rr(R), rtol=0, atol=1e-10)
+    assert states[1.36].quadrature_error <= 1e-12
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("g", [1.41, 1.46])
+def test_the_refined_continuation_is_the_walks_state_next_to_the_lock(monkeypatch, g):
+    """Closer to the lock (the Gent layer 1.1e-3 from it at 1.46), by the cold walk (~10 s
+    each): 48 and 128 nodes against the continuation's 64 and 128."""
+    at, states, _ = _march_to_lock(monkeypatch, g)
+    cold = solve_layered_state(at(g))
+    _close(states[g], cold, 1e-10)
+    R = np.linspace(1.0, 1.8, 9)
+    assert np.allclose(states[g].sigma_rr(R), cold.sigma_rr(R), rtol=0, atol=1e-10)

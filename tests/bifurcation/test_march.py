@@ -60,8 +60,8 @@ def test_a_march_to_a_limit_point_continues_its_states(monkeypatch):
     walked = []
     continued = layered.continued
 
-    def counting(tube, near, rtol, guess=None):
-        out = continued(tube, near, rtol, guess)
+    def counting(tube, near, rtol, guess=None, nodes=None):
+        out = continued(tube, near, rtol, guess, nodes)
         walked.extend([tube.voltage] if out is None else [])
         return out
 

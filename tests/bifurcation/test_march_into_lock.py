@@ -4,8 +4,11 @@ base states, and says so in the terms of the lock (bifurcation/state_loss.py).
 P6 of check round 35b: a three-layer tube (a neo-Hookean core grown 1.05, a Gent layer jm
 1.979, a soft neo-Hookean sleeve), closed, free ends, inflated. ``threshold(tube,
 "pressure")`` is a lock (value inf, kind "locking", lambda_i 1.90522): the pressure grows
-without bound towards it, the state is never lost. Past P ~ 1.467 the states do not resolve
-(continued from the march's, nor from cold). Before, the march bisected the edge of the
+without bound towards it, the state is never lost. The march's states are continued with
+the Gauss rule each needs (basestate/layered.solve_continued: 48 nodes at P = 1.4, 256 from
+2.5) up to P = 2.6108 (1 - (I1 - 3)/jm = 1.9e-4), each confirmed by an adaptive quadrature
+to ~1e-11 (fix28a); with the neighbour's rule alone they stopped resolving past P ~ 1.467,
+and the cold walk fails from P = 1.4. Before that, the march bisected the edge of the
 states that solve to 1e-13 from cold, 37 looks of 5-12 s each, and raised a ConvergenceError
 "whether the state is lost there is not established" after 383-439 s. The check's own solver
 kept (0, 1) stable up to P ~ 1.479, where it stopped resolving too.
@@ -71,7 +74,8 @@ def test_an_inflation_to_a_lock_ends_without_looking_past_its_last_state(monkeyp
         critical_value(P6, 0, 1, "pressure")
     said = str(err.value)
     assert isinstance(err.value, NoBifurcationFound)  # the "no bifurcation" answer
-    assert said.startswith("no mode bifurcates for pressure from 0 up to 1.46")
+    # up to 1.4667 while the continuation kept the neighbour's Gauss rule
+    assert said.startswith("no mode bifurcates for pressure from 0 up to 2.61")
     assert "the Gent layer 2 is next to its lock" in said
     assert "grows without bound towards the lock at lambda_i = 1.90522" in said
     # before: 37 looks at the edge, each a failed cold solve (and the short-wave march's

@@ -81,13 +81,15 @@ class LazyPrepared:
         return prepare(self.tube, self.rtol).voltage
 
 
-def continued(tube: Tube, near, rtol: float, guess=None):
+def continued(tube: Tube, near, rtol: float, guess=None, nodes: int | None = None):
     """(key, wall, prep, r_i, lambda_z, c, rise) of ``tube``'s state continued from the
     solved state ``near`` of a neighbouring tube, or None where that is not the walk's root
     (see the module docstring); ``rise`` is the direction of rising load there
     (:func:`_rise`), which the state keeps for its own continuation. ``guess``: a better
     Newton start (r_i, lambda_z) than the neighbour's own, e.g. extrapolated from two
-    neighbours (the checks still compare with ``near``)."""
+    neighbours (the checks still compare with ``near``). ``nodes``: the Gauss rule of the
+    equations, the neighbour's when None (a finer one where the neighbour's rule does not
+    resolve this state: layered.solve_continued)."""
     old = near.tube
     if (
         near._wall is None
@@ -96,11 +98,12 @@ def continued(tube: Tube, near, rtol: float, guess=None):
         or any(a.material != b.material for a, b in zip(old.layers, tube.layers))
     ):
         return None
-    if _same_wall(tube, near._wall.tube):  # the same wall and preparation (a voltage march)
-        key, wall, prep = near._wall.tube, near._wall, near._prep
+    nodes = near._wall.nodes if nodes is None else nodes
+    if _same_wall(tube, near._wall.tube) and nodes == near._wall.nodes:
+        key, wall, prep = near._wall.tube, near._wall, near._prep  # a voltage march's
     else:
         key = dataclasses.replace(tube, voltage=0.0)
-        wall, prep = Wall.build(key, near._wall.nodes), LazyPrepared(key, rtol)
+        wall, prep = Wall.build(key, nodes), LazyPrepared(key, rtol)
     branch = Branch(wall, "pressure", vbar=tube.voltage, compiled=True)
     force = tube.control == "force"
     dp = tube.inner_pressure - tube.outer_pressure
