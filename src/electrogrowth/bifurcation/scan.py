@@ -307,13 +307,21 @@ def _beyond_searched(params, solve_for, side, result, options, rtol, at_cap, lim
         if value is None:
             break
         turned = unstable_beyond(
-            params, solve_for, value, result.m_range, result.n_range, options.prismatic
+            params,
+            solve_for,
+            value,
+            result.m_range,
+            result.n_range,
+            options.prismatic,
+            critical=result.critical,
         )
         for axis, cap in zip(("n", "m"), reversed(scan_caps(params, options)), strict=True):
             if not turned[axis]:
                 continue
             try:
-                result, top = _searched(params, solve_for, side, result, options, rtol, cap, axis)
+                result, top = _searched(
+                    params, solve_for, side, result, options, rtol, cap, axis, turned[axis]
+                )
             except ConvergenceError:
                 if not runner:
                     raise
@@ -345,13 +353,23 @@ def _beyond_value(params, side, result, options, limit, runner: bool) -> float |
 
 
 def _searched(
-    params, solve_for, side, result: ScanResult, options: ScanOptions, rtol, top: int, axis="m"
+    params,
+    solve_for,
+    side,
+    result: ScanResult,
+    options: ScanOptions,
+    rtol,
+    top: int,
+    axis="m",
+    turned=(),
 ):
     """``result`` merged with the coarse-to-fine search (msearch.py) of m (or n, ``axis``)
-    from the scanned edge up to ``top`` along the critical mode's family row and, for m, the
-    prismatic row and the wrinkles of the smallest n, for n, the modes of the smallest m
-    (axisymmetric rings at m = 0): the earlier of the two is the critical mode, the others
-    the runners-up; and whether the critical index is ``top`` (the edge of the search)."""
+    from the scanned edge up to ``top`` along the critical mode's family row, the rows
+    ``turned`` (those whose modes beyond the ranges were read past their roots, beyond.py)
+    and, for m, the prismatic row and the wrinkles of the smallest n, for n, the modes of
+    the smallest m (axisymmetric rings at m = 0): the earlier of the two is the critical
+    mode, the others the runners-up; and whether the critical index is ``top`` (the edge
+    of the search)."""
     c, sense = result.critical, -1.0 if side == "compression" else 1.0
     if axis == "m":
         rows = {(max(options.n_range[0], 1), Family.WRINKLE.code)}
@@ -365,6 +383,7 @@ def _searched(
         if c.kind == Kind.BIFURCATION and c.family != Family.PRISMATIC:  # prismatic: n = 0
             rows.add((c.m, Family(c.family).code))
         searcher, edge = search_n, result.n_range[1]
+    rows |= set(turned)  # a wrinkle (15, 4) of a film in a thin wall: neither row above
     ranges = {"m": result.m_range, "n": result.n_range}
     ranges[axis] = (ranges[axis][0], top)
     # along n, the runners-up include the neighbouring m rows of the scanned m range
@@ -605,14 +624,23 @@ def _folds_before_limit(params, solve_for, side, result: ScanResult, options, rt
     only (probe 13b, D1-D3). Not without ``options.extend``: the ranges are then as asked."""
     if not options.extend:
         return result, False
+    finite = result.critical if result.critical.kind == Kind.BIFURCATION else None
     turned = unstable_beyond(
-        params, solve_for, limit.value, result.m_range, result.n_range, options.prismatic
+        params,
+        solve_for,
+        limit.value,
+        result.m_range,
+        result.n_range,
+        options.prismatic,
+        critical=finite,
     )
     if not any(turned.values()):
         return result, False
     for axis, cap in zip(("n", "m"), reversed(scan_caps(params, options)), strict=True):
         if turned[axis]:  # a mode at the cap is then the result: _capped says so
-            result, _ = _searched(params, solve_for, side, result, options, rtol, cap, axis)
+            result, _ = _searched(
+                params, solve_for, side, result, options, rtol, cap, axis, turned[axis]
+            )
     # the search's result is a scan's: the limit computed is kept (a finite mode leads)
     limit_kept = {"short_wave_limit": limit.value, "short_wave_error": limit.error_estimate}
     return dataclasses.replace(result, surface_instability=False, **limit_kept), True
