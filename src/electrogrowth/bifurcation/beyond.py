@@ -73,6 +73,26 @@ def read_rows(critical, m_range, n_range, prismatic: bool, axis: str) -> list[tu
     return rows + [(k, wrinkle) for k in _between(first, top)]
 
 
+def searched_rows(critical, m_range, n_range, prismatic: bool, axis: str) -> set:
+    """The family rows a search beyond the ranges follows whatever the read turned
+    (scan._searched; certify reads them too): along m the wrinkles of the smallest n, the
+    prismatic row and the critical mode's own row, along n the rows of the smallest m
+    (axisymmetric rings at m = 0) and the critical mode's own. ``critical`` as in
+    :func:`read_rows`."""
+    code = None if critical is None else Family(critical.family).code
+    if axis == "m":
+        rows = {(max(n_range[0], 1), Family.WRINKLE.code)}
+        if prismatic:
+            rows.add((0, Family.PRISMATIC.code))
+        if critical is not None and critical.family != Family.TORSIONAL:  # torsion: m = 0
+            rows.add((critical.n, code))
+        return rows
+    rows = {(m_range[0], Family.WRINKLE.code)}
+    if critical is not None and critical.family != Family.PRISMATIC:  # prismatic: n = 0
+        rows.add((critical.m, code))
+    return rows
+
+
 def _between(lo: int, hi: int) -> list[int]:
     """lo..hi, or where that is more than ROWS_MAX, its ends and geometric samples between:
     the rows next to the critical mode's matter most (their optima lie nearest its)."""

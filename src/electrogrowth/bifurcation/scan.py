@@ -46,10 +46,10 @@ from ..errors import (
     UnstableAtStart,
 )
 from ..incremental.modes import MODE_MAX, row_family
-from ..incremental.targets import Family, impedance_targets
+from ..incremental.targets import impedance_targets
 from ..model.layers import Tube
 from ..outcomes import NO_MODE, Kind, Status
-from .beyond import unstable_beyond, unstable_past_cap
+from .beyond import searched_rows, unstable_beyond, unstable_past_cap
 from .certify import kernel_signs
 from .critical import CriticalPoint, critical_value, no_bifurcation_remedy
 from .directions import past_surface, surface_past
@@ -371,18 +371,10 @@ def _searched(
     mode, the others the runners-up; and whether the critical index is ``top`` (the edge
     of the search)."""
     c, sense = result.critical, -1.0 if side == "compression" else 1.0
-    if axis == "m":
-        rows = {(max(options.n_range[0], 1), Family.WRINKLE.code)}
-        if options.prismatic:
-            rows.add((0, Family.PRISMATIC.code))
-        if c.kind == Kind.BIFURCATION and c.family != Family.TORSIONAL:  # torsion: m = 0
-            rows.add((c.n, Family(c.family).code))
-        searcher, edge = search_m, result.m_range[1]
-    else:
-        rows = {(options.m_range[0], Family.WRINKLE.code)}
-        if c.kind == Kind.BIFURCATION and c.family != Family.PRISMATIC:  # prismatic: n = 0
-            rows.add((c.m, Family(c.family).code))
-        searcher, edge = search_n, result.n_range[1]
+    finite = c if c.kind == Kind.BIFURCATION else None
+    rows = searched_rows(finite, options.m_range, options.n_range, options.prismatic, axis)
+    searcher = search_m if axis == "m" else search_n
+    edge = result.m_range[1] if axis == "m" else result.n_range[1]
     rows |= set(turned)  # a wrinkle (15, 4) of a film in a thin wall: neither row above
     ranges = {"m": result.m_range, "n": result.n_range}
     ranges[axis] = (ranges[axis][0], top)
@@ -624,15 +616,10 @@ def _folds_before_limit(params, solve_for, side, result: ScanResult, options, rt
     only (probe 13b, D1-D3). Not without ``options.extend``: the ranges are then as asked."""
     if not options.extend:
         return result, False
-    finite = result.critical if result.critical.kind == Kind.BIFURCATION else None
+    # the fold rows only (beyond.read_rows without a critical mode): at the limit every
+    # short wave of every row is past its root, and each row read would be searched
     turned = unstable_beyond(
-        params,
-        solve_for,
-        limit.value,
-        result.m_range,
-        result.n_range,
-        options.prismatic,
-        critical=finite,
+        params, solve_for, limit.value, result.m_range, result.n_range, options.prismatic
     )
     if not any(turned.values()):
         return result, False
