@@ -233,7 +233,9 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
         return result, True
 
     def search(result, m_top=cap_m, axis="m"):
-        return _searched(params, solve_for, side, result, options, rtol, m_top, axis)
+        rows = _search_rows(result, options, axis, ())
+        edge = result.m_range[1] if axis == "m" else result.n_range[1]
+        return _searched(params, solve_for, side, result, options, rtol, m_top, axis, rows, edge)
 
     def search_beyond(result, beyond):
         """Searched along n, then m, from the edges the doublings left the optimum on."""
@@ -302,32 +304,49 @@ def _beyond_searched(params, solve_for, side, result, options, rtol, at_cap, lim
     the search ended at its cap. Where the search for runners-up runs into states that do
     not resolve (next to a lock), the list stands as scanned; for the critical mode that is
     an error (:func:`_beyond_value` says when the check applies)."""
+    scanned = {"m": result.m_range, "n": result.n_range}  # marched mode by mode
+    searched: dict[str, set] = {"m": set(), "n": set()}
     for runner in (False, True):
         value = _beyond_value(params, side, result, options, limit, runner)
         if value is None:
             break
+        # read beyond the ranges scanned, not those a search widened: the search followed
+        # some rows to the cap, and the runners-up may lie on others (check round 36a:
+        # (16, 3), tied with (11, 5), after the search for (15, 4) on the row n = 4)
         turned = unstable_beyond(
             params,
             solve_for,
             value,
-            result.m_range,
-            result.n_range,
+            scanned["m"],
+            scanned["n"],
             options.prismatic,
             critical=result.critical,
         )
         for axis, cap in zip(("n", "m"), reversed(scan_caps(params, options)), strict=True):
-            if not turned[axis]:
+            rows = _search_rows(result, options, axis, turned[axis]) - searched[axis]
+            if not turned[axis] or not rows:
                 continue
+            edge = scanned[axis][1]
             try:
                 result, top = _searched(
-                    params, solve_for, side, result, options, rtol, cap, axis, turned[axis]
+                    params, solve_for, side, result, options, rtol, cap, axis, rows, edge
                 )
             except ConvergenceError:
                 if not runner:
                     raise
                 continue
+            searched[axis] |= rows
             at_cap = at_cap or top
     return result, at_cap
+
+
+def _search_rows(result: ScanResult, options: ScanOptions, axis: str, turned) -> set:
+    """The rows searched along ``axis``: those ``turned`` (read past their roots beyond
+    the ranges, beyond.py) and those every search follows (beyond.searched_rows)."""
+    c = result.critical
+    finite = c if c.kind == Kind.BIFURCATION else None
+    rows = searched_rows(finite, options.m_range, options.n_range, options.prismatic, axis)
+    return rows | set(turned)  # a wrinkle (15, 4) of a film in a thin wall: neither row
 
 
 def _beyond_value(params, side, result, options, limit, runner: bool) -> float | None:
@@ -360,22 +379,16 @@ def _searched(
     options: ScanOptions,
     rtol,
     top: int,
-    axis="m",
-    turned=(),
+    axis: str,
+    rows: set,
+    edge: int,
 ):
     """``result`` merged with the coarse-to-fine search (msearch.py) of m (or n, ``axis``)
-    from the scanned edge up to ``top`` along the critical mode's family row, the rows
-    ``turned`` (those whose modes beyond the ranges were read past their roots, beyond.py)
-    and, for m, the prismatic row and the wrinkles of the smallest n, for n, the modes of
-    the smallest m (axisymmetric rings at m = 0): the earlier of the two is the critical
-    mode, the others the runners-up; and whether the critical index is ``top`` (the edge
-    of the search)."""
+    from ``edge`` up to ``top`` along the family ``rows`` (:func:`_search_rows`): the
+    earlier of the two is the critical mode, the others the runners-up; and whether the
+    critical index is ``top`` (the edge of the search)."""
     c, sense = result.critical, -1.0 if side == "compression" else 1.0
-    finite = c if c.kind == Kind.BIFURCATION else None
-    rows = searched_rows(finite, options.m_range, options.n_range, options.prismatic, axis)
     searcher = search_m if axis == "m" else search_n
-    edge = result.m_range[1] if axis == "m" else result.n_range[1]
-    rows |= set(turned)  # a wrinkle (15, 4) of a film in a thin wall: neither row above
     ranges = {"m": result.m_range, "n": result.n_range}
     ranges[axis] = (ranges[axis][0], top)
     # along n, the runners-up include the neighbouring m rows of the scanned m range
@@ -625,8 +638,10 @@ def _folds_before_limit(params, solve_for, side, result: ScanResult, options, rt
         return result, False
     for axis, cap in zip(("n", "m"), reversed(scan_caps(params, options)), strict=True):
         if turned[axis]:  # a mode at the cap is then the result: _capped says so
+            rows = _search_rows(result, options, axis, turned[axis])
+            edge = result.m_range[1] if axis == "m" else result.n_range[1]
             result, _ = _searched(
-                params, solve_for, side, result, options, rtol, cap, axis, turned[axis]
+                params, solve_for, side, result, options, rtol, cap, axis, rows, edge
             )
     # the search's result is a scan's: the limit computed is kept (a finite mode leads)
     limit_kept = {"short_wave_limit": limit.value, "short_wave_error": limit.error_estimate}
