@@ -318,7 +318,10 @@ def _solve(
     fine, coarse = targets_for(method, acc.fine), coarse_targets_for(method, acc.fine)
     sref = stable_sign(m, n, params, method, family=fam)
     at = TubeAt(params, solve_for)
-    g = root_mode(at, fine, mode, sref)  # along the control, stable > 0
+    along = root_mode(at, fine, mode, sref)  # along the control, stable > 0
+    # remembered: Brent's method starts from a bracket's ends, which the check of its sign
+    # change (here, or _root_before's) has just paid for; the same values, the same root
+    g = Remembered(along)
     note = ""
     if bracket is not None:
         bracket = _after_start(bracket, control_path(params, solve_for, side)[:2])
@@ -366,7 +369,7 @@ def _solve(
     path = control_path(params, solve_for, side)[:2]
     estimate = second_resolution(root_mode(at, coarse, mode, sref), value, path)
     if check_method(method) is Method.COLLOCATION:
-        estimate = max(estimate, collocation_floor(Remembered(g), value, path))
+        estimate = max(estimate, collocation_floor(Remembered(along), value, path))
     estimate = max(estimate, achieved_floor(value, acc.fine))  # the two may share an error
     return CriticalPoint(
         solve_for,

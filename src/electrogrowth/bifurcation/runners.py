@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import dataclasses
 
-from ..continuation.events import brent, widening_windows
+from ..continuation.events import Remembered, brent, widening_windows
 from ..errors import BaseStateError, ConvergenceError
 from ..incremental.accuracy import Accuracy
 from ..incremental.targets import Family, coarse_targets_for, targets_for, with_family
@@ -126,7 +126,10 @@ def fine_runner(at: TubeAt, side, rtol: float, mv: ModeValue) -> ModeValue | Non
 def _root_near(g, value: float, width: float, path) -> float | None:
     """The root of ``g`` (stable > 0) in the first of the windows about ``value`` (half-width
     ``width``, widened ROUNDS times, clipped to the march's ``path``) where g changes sign,
-    or None."""
+    or None. Brent's method starts from the window's ends, whose values the sign check has
+    just paid for: remembered, not computed again (two fine solves of the mode's det(M2)
+    per runner-up, the same values, so the same root to the bit)."""
+    g = Remembered(g)
     bounds = (min(path), max(path))
     for lo, hi, _ in widening_windows(value, width, ROUNDS, bounds=bounds):
         if lo < hi and g(lo) * g(hi) < 0:

@@ -45,6 +45,7 @@ import math
 
 from ..basestate.tube import solve_base_state
 from ..continuation import events
+from ..continuation.events import Remembered
 from ..errors import BaseStateError, ConvergenceError, ParameterError
 from ..incremental.halfspace import surfaces
 from ..model.controls import KINDS, check_side
@@ -150,7 +151,9 @@ def _second_resolution(value_coarse, value: float, path: tuple[float, float]) ->
     """|root of the coarser h near value - value|, looked for within the march's ``path``
     (start, end): a root next to an asymptote has no states 1e-8 past it (NaN if the base
     state is lost before the coarse target changes sign: a surface instability at the
-    threshold itself)."""
+    threshold itself). Brent's method starts from the window's ends, whose coarse samples
+    (a state and a direction search each) the sign check has just paid for: remembered."""
+    value_coarse = Remembered(value_coarse)
     width, bounds = 1e-8 * max(1.0, abs(value)), tuple(sorted(path))
     for lo, hi, _ in events.widening_windows(value, width, 14, bounds=bounds):
         try:
