@@ -82,20 +82,24 @@ def test_a_narrow_fold_before_the_runners_up_is_listed():
     assert 0 < fold.value - scan.critical.value < 1e-8
 
 
-def test_the_rows_read_reach_the_critical_modes_neighbours():
-    """Along m: the fold rows, then every n up to the critical n + 1; along n: m_lo, m_lo + 1,
-    then every m up to the critical m + 1 (at most ROWS_MAX besides the first two, always
-    the critical mode's own row and its neighbours)."""
-    rows = read_rows(_Mode(11, 5), (0, 12), (1, 30), True, "m")
+def test_the_rows_read_reach_the_first_modes_neighbours():
+    """Along m: the fold rows, then every n up to the largest n of the first modes + 1;
+    along n: m_lo, m_lo + 1, then every m up to their largest m + 1; where those are many,
+    the rows next to each mode and ROWS_MAX - 3 samples between."""
+    rows = read_rows([_Mode(11, 5)], (0, 12), (1, 30), True, "m")
     assert rows == [(1, WRINKLE), (0, PRISMATIC)] + [(n, WRINKLE) for n in range(2, 7)]
-    assert read_rows(_Mode(7, 0, "prismatic"), (0, 12), (1, 30), True, "m") == rows[:2]
-    assert read_rows(None, (0, 12), (2, 30), False, "m") == [(2, WRINKLE)]
-    along_n = read_rows(_Mode(11, 5), (0, 12), (1, 30), True, "n")
+    # W1t: its runner-up (11, 6) takes the rows to n = 7, (14, 5) among them
+    more = read_rows([_Mode(15, 3), _Mode(11, 6)], (0, 12), (1, 30), True, "m")
+    assert more == rows + [(7, WRINKLE)]
+    assert read_rows([_Mode(7, 0, "prismatic")], (0, 12), (1, 30), True, "m") == rows[:2]
+    assert read_rows((), (0, 12), (2, 30), False, "m") == [(2, WRINKLE)]
+    along_n = read_rows([_Mode(11, 5)], (0, 12), (1, 30), True, "n")
     assert along_n[:2] == [(0, WRINKLE), (1, WRINKLE)]
-    assert len(along_n) - 2 <= ROWS_MAX
     assert {(10, WRINKLE), (11, WRINKLE), (12, WRINKLE)} <= set(along_n)
-    many = read_rows(_Mode(3, 40), (0, 12), (1, 50), True, "m")
-    assert len(many) - 2 <= ROWS_MAX and many[-3:] == [(n, WRINKLE) for n in (39, 40, 41)]
+    assert len(along_n) - 2 <= ROWS_MAX
+    many = read_rows([_Mode(3, 40), _Mode(4, 20)], (0, 12), (1, 50), True, "m")
+    near = {(n, WRINKLE) for n in (19, 20, 21, 39, 40, 41)}
+    assert near <= set(many) and len(many) - 2 <= ROWS_MAX - 3 + len(near)
 
 
 def test_fold_windows_hold_the_films_folds():

@@ -12,14 +12,14 @@ ratio 1.25) from the edge of the range to the cap, on the rows where a film's fo
 * along m: the wrinkles (m, n_lo) of the smallest n and the prismatic modes (m, 0), every
   m up to EVERY_M = 64 (a skin's folds (35, 0) 2.6e-4 before its rings, unstable between
   the samples m = 29 and 37 only, were missed: probe round 6b), and the wrinkles of every
-  n up to the critical mode's n + 1: a film's first modes lie about a circle (m / R)^2 +
-  (n pi / L)^2 ~ k^2 of its own wavenumber, so a row of smaller n has its least m beyond
-  the critical mode's (a film in a thin wall: (15, 4) 3.8e-4 before the scanned (11, 5),
-  on neither row above, check round 35d Q3);
+  n up to the largest n of the scan's first modes (its critical mode and runners-up) + 1:
+  a film's first modes lie about a circle (m / R)^2 + (n pi / L)^2 ~ k^2 of its own
+  wavenumber, so a row of smaller n has its least m beyond theirs (a film in a thin wall:
+  (15, 4) 3.8e-4 before the scanned (11, 5), on neither row above, check round 35d Q3);
 * along n: the rings (m_lo, n) of the smallest m (axisymmetric at m = 0) and (m_lo + 1, n),
-  and likewise the rows of every m up to the critical mode's m + 1;
+  and likewise the rows of every m up to their largest m + 1;
 
-at most ROWS_MAX rows besides the first two (the ends and geometric samples between), their
+where those are many, the rows next to each of those modes and geometric samples between; their
 targets at that one state against their signs on the unloaded tube, where every mode is
 stable (docs/derivation.md section 3). A row with a sample past its root is searched
 (msearch.py), with the rows the search follows anyway. A fold's dip is narrow when its
@@ -45,7 +45,7 @@ from .march import SIGN_TUBE, unloaded_signs
 from .msearch import geometric_samples
 from .options import EVERY_M, M_CAP, N_CAP, mode_caps
 
-#: rows read besides the fold rows, at most, along an axis (module docstring)
+#: rows read besides the fold rows and those next to the scan's first modes, at most
 ROWS_MAX = 8
 #: a layer's fold window: its flat film's fold number times 1 / WINDOW to WINDOW
 WINDOW = 2.5
@@ -53,32 +53,33 @@ WINDOW = 2.5
 DENSE = 1.01
 
 
-def read_rows(critical, m_range, n_range, prismatic: bool, axis: str) -> list[tuple[int, int]]:
+def read_rows(modes, m_range, n_range, prismatic: bool, axis: str) -> list[tuple[int, int]]:
     """The family rows read beyond the ranges along ``axis`` ((n, code) along m, (m, code)
     along n), the fold rows first (module docstring): along m the wrinkles of the smallest
-    n and the prismatic row, then the wrinkles of every n up to the critical mode's n + 1;
-    along n the rows of the smallest m and the next, then every m up to the critical
-    mode's m + 1 (at most ROWS_MAX of these: the ends and geometric samples between).
-    ``critical`` is the scan's critical point, or None where it is no finite mode."""
-    wrinkle, finite = Family.WRINKLE.code, critical is not None
+    n and the prismatic row, then the wrinkles of every n up to the largest n of the
+    wrinkles among ``modes`` (the scan's critical mode and runners-up) + 1; along n the rows
+    of the smallest m and the next, then every m up to their largest m + 1. Where those
+    are more than ROWS_MAX: the rows next to each of ``modes`` and ROWS_MAX - 3 geometric
+    samples between."""
+    wrinkle = Family.WRINKLE.code
+    own = [(v.n if axis == "m" else v.m) for v in modes if v.family == Family.WRINKLE]
     if axis == "m":
         low = max(n_range[0], 1)
         rows = [(low, wrinkle)] + ([(0, Family.PRISMATIC.code)] if prismatic else [])
-        top = critical.n + 1 if finite and critical.family == Family.WRINKLE else low
+        first = low + 1
     else:
         low = m_range[0]
         rows = [(low, wrinkle), (low + 1, wrinkle)]
-        top = critical.m + 1 if finite and critical.family == Family.WRINKLE else low + 1
-    first = low + 1 if axis == "m" else low + 2
-    return rows + [(k, wrinkle) for k in _between(first, top)]
+        first = low + 2
+    return rows + [(k, wrinkle) for k in _between(first, own)]
 
 
 def searched_rows(critical, m_range, n_range, prismatic: bool, axis: str) -> set:
     """The family rows a search beyond the ranges follows whatever the read turned
     (scan._searched; certify reads them too): along m the wrinkles of the smallest n, the
     prismatic row and the critical mode's own row, along n the rows of the smallest m
-    (axisymmetric rings at m = 0) and the critical mode's own. ``critical`` as in
-    :func:`read_rows`."""
+    (axisymmetric rings at m = 0) and the critical mode's own. ``critical`` is the scan's
+    critical point, or None where it is no finite mode."""
     code = None if critical is None else Family(critical.family).code
     if axis == "m":
         rows = {(max(n_range[0], 1), Family.WRINKLE.code)}
@@ -93,13 +94,17 @@ def searched_rows(critical, m_range, n_range, prismatic: bool, axis: str) -> set
     return rows
 
 
-def _between(lo: int, hi: int) -> list[int]:
-    """lo..hi, or where that is more than ROWS_MAX, its ends and geometric samples between:
-    the rows next to the critical mode's matter most (their optima lie nearest its)."""
+def _between(lo: int, own: list[int]) -> list[int]:
+    """lo up to max(own) + 1, or where that is more than ROWS_MAX, the indices next to each
+    of ``own`` (their optima lie nearest the modes found) and geometric samples between."""
+    if not own or max(own) + 1 < lo:
+        return []
+    hi = max(own) + 1
     if hi - lo + 1 <= ROWS_MAX:
         return list(range(lo, hi + 1))
-    inner = np.geomspace(lo, hi - 3, ROWS_MAX - 3).round().astype(int)
-    return sorted({*inner.tolist(), hi - 2, hi - 1, hi})
+    inner = np.geomspace(lo, hi, ROWS_MAX - 3).round().astype(int).tolist()
+    near = [k + d for k in own for d in (-1, 0, 1) if k + d >= lo]
+    return sorted({*inner, *near, hi})
 
 
 def fold_windows(tube, axis: str) -> list[tuple[int, int]]:
@@ -150,10 +155,10 @@ def beyond_rows(
 ) -> np.ndarray:
     """Modes (m, n, family code) read beyond the ranges along ``axis`` up to its cap
     (``caps``: the tube's, options.mode_caps): on each of ``rows`` (default :func:`read_rows`
-    without a critical mode) every index to EVERY_M along m, then geometric samples; on the
+    of no modes: the fold rows) every index to EVERY_M along m, then geometric samples; on the
     two fold rows (the first two of ``rows``) also the indices of the fold ``windows``
     (:func:`window_samples`). Empty when that range already reaches its cap."""
-    rows = read_rows(None, m_range, n_range, prismatic, axis) if rows is None else rows
+    rows = read_rows((), m_range, n_range, prismatic, axis) if rows is None else rows
     edge, cap = (m_range[1], caps[0]) if axis == "m" else (n_range[1], caps[1])
     if edge >= cap:
         return np.zeros((0, 3))
@@ -200,29 +205,30 @@ def unstable_beyond(
     n_range,
     prismatic: bool,
     axes=("m", "n"),
-    critical=None,
+    modes=(),
 ) -> dict[str, list[tuple[int, int]]]:
-    """For each axis of ``axes``: the family rows (:func:`read_rows` of ``critical``, the
-    scan's critical point or None) with a mode beyond the ranges past its root at ``value``
+    """For each axis of ``axes``: the family rows (:func:`read_rows` of ``modes``, the
+    scan's critical mode and runners-up, if any) with a mode beyond the ranges past its
+    root at ``value``
     (its target's sign there against the unloaded tube's), empty where none is, or where
     the state at ``value`` does not resolve (no evidence either way: the result stands)."""
     caps = mode_caps(params)
-    rows = {axis: read_rows(critical, m_range, n_range, prismatic, axis) for axis in axes}
-    modes = {
+    rows = {axis: read_rows(modes, m_range, n_range, prismatic, axis) for axis in axes}
+    read = {
         axis: beyond_rows(
             m_range, n_range, prismatic, axis, caps, rows[axis], fold_windows(params, axis)
         )
         for axis in axes
     }
     out: dict[str, list[tuple[int, int]]] = {axis: [] for axis in axes}
-    turned = _turned(params, solve_for, value, np.vstack([modes[axis] for axis in axes]))
+    turned = _turned(params, solve_for, value, np.vstack([read[axis] for axis in axes]))
     if turned is None:
         return out
     start = 0
     for axis in axes:
-        read = modes[axis]
-        past = read[turned[start : start + read.shape[0]]]
-        start += read.shape[0]
+        count = read[axis].shape[0]
+        past = read[axis][turned[start : start + count]]
+        start += count
         fixed = 1 if axis == "m" else 0  # the row's own index: n along m, m along n
         out[axis] = sorted({(int(mode[fixed]), int(mode[2])) for mode in past})
     return out

@@ -297,7 +297,8 @@ def _rows_past(scan, finite, prismatic: bool, axis: str, edge: int) -> np.ndarra
     if top <= edge:
         return np.zeros((0, 3))
     rows = searched_rows(finite, scan.m_range, scan.n_range, prismatic, axis)
-    rows |= set(read_rows(finite, scan.m_range, scan.n_range, prismatic, axis))
+    first = ((finite,) if finite is not None else ()) + tuple(scan.runners_up)
+    rows |= set(read_rows(first, scan.m_range, scan.n_range, prismatic, axis))
     ks = _past_every_mode(edge, top, None if finite is None else getattr(finite, axis))
     if axis == "m":
         return np.array([(k, n, code) for k in ks for n, code in sorted(rows)], float)

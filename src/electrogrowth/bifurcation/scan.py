@@ -307,37 +307,60 @@ def _beyond_searched(params, solve_for, side, result, options, rtol, at_cap, lim
     scanned = {"m": result.m_range, "n": result.n_range}  # marched mode by mode
     searched: dict[str, set] = {"m": set(), "n": set()}
     for runner in (False, True):
-        value = _beyond_value(params, side, result, options, limit, runner)
-        if value is None:
-            break
-        # read beyond the ranges scanned, not those a search widened: the search followed
-        # some rows to the cap, and the runners-up may lie on others (check round 36a:
-        # (16, 3), tied with (11, 5), after the search for (15, 4) on the row n = 4)
-        turned = unstable_beyond(
-            params,
-            solve_for,
-            value,
-            scanned["m"],
-            scanned["n"],
-            options.prismatic,
-            critical=result.critical,
-        )
-        for axis, cap in zip(("n", "m"), reversed(scan_caps(params, options)), strict=True):
-            rows = _search_rows(result, options, axis, turned[axis]) - searched[axis]
-            if not turned[axis] or not rows:
-                continue
-            edge = scanned[axis][1]
-            try:
-                result, top = _searched(
-                    params, solve_for, side, result, options, rtol, cap, axis, rows, edge
-                )
-            except ConvergenceError:
-                if not runner:
-                    raise
-                continue
-            searched[axis] |= rows
+        for _ in range(READS):
+            value = _beyond_value(params, side, result, options, limit, runner)
+            if value is None:
+                break
+            read = (value, runner)
+            found = _rows_searched(
+                params, solve_for, side, result, options, rtol, read, scanned, searched
+            )
+            if found is None:
+                break
+            result, top = found
             at_cap = at_cap or top
     return result, at_cap
+
+
+#: reads beyond the ranges at most, at each value (critical, last runner-up): each search
+#: changes the scan's first modes, and with them the rows read next (module docstring)
+READS = 4
+
+
+def _rows_searched(params, solve_for, side, result, options, rtol, read, scanned, searched):
+    """``result`` searched along the rows beyond the ``scanned`` ranges that are past their
+    roots at the value of ``read`` (value, whether it is the last runner-up's) and not yet
+    ``searched`` (updated), and whether the search ended at
+    its cap; None where no such row turned. The rows are read beyond the ranges scanned,
+    not those a search widened: a search follows some rows to the cap, and the runners-up
+    may lie on others (check round 36a: (16, 3), tied with (11, 5), after the search for
+    (15, 4) on the row n = 4). They are those of the scan's first modes (beyond.read_rows):
+    after a search its critical mode (15, 3) has another n than the (11, 1) scanned, and
+    (15, 4), (14, 5) lie on rows read only then (round 36a's W1t). Where the search for
+    runners-up runs into states that do not resolve, the list stands; for the critical
+    mode that is an error."""
+    value, runner = read
+    first = (result.critical, *result.runners_up)  # a finite critical mode (_beyond_value)
+    turned = unstable_beyond(
+        params, solve_for, value, scanned["m"], scanned["n"], options.prismatic, modes=first
+    )
+    at_cap, any_searched = False, False
+    for axis, cap in zip(("n", "m"), reversed(scan_caps(params, options)), strict=True):
+        if not set(turned[axis]) - searched[axis]:
+            continue
+        rows = _search_rows(result, options, axis, turned[axis]) - searched[axis]
+        try:
+            result, top = _searched(
+                params, solve_for, side, result, options, rtol, cap, axis, rows, scanned[axis][1]
+            )
+        except ConvergenceError:
+            if not runner:
+                raise
+            continue
+        finally:
+            searched[axis] |= rows
+        at_cap, any_searched = at_cap or top, True
+    return (result, at_cap) if any_searched else None
 
 
 def _search_rows(result: ScanResult, options: ScanOptions, axis: str, turned) -> set:
