@@ -40,6 +40,23 @@ Q7 = Tube(
     length=0.024316287421031473,
     stretch=1.0,
 )
+#: check round 36a's W1t: a film in a thin wall whose first modes lie on rows n = 2 ... 5,
+#: all beyond m <= 12; the scan of m <= 12 puts (11, 1) first
+W1T = Tube(
+    (Layer(1.005411, shear_modulus=621.894), Layer(1.05273)),
+    length=1.30134731463049,
+    stretch=1.0,
+)
+#: its first five modes by the checker's own solver (a first-order compound-matrix
+#: integration, two tolerances agreeing to 5e-13; the rectangle m <= 2 m*, n <= 40 of all
+#: three families read by sign with an own collocation)
+W1T_FIRST = {
+    (15, 3): 1.8539003284137825,
+    (15, 4): 1.85390032891339,
+    (14, 2): 1.8542436237987643,
+    (14, 5): 1.854617273975306,
+    (16, 4): 1.8546504699831132,
+}
 WRINKLE, PRISMATIC = Family.WRINKLE.code, Family.PRISMATIC.code
 
 
@@ -80,6 +97,20 @@ def test_a_narrow_fold_before_the_runners_up_is_listed():
     alone = critical_value(Q7, 89, 0, "growth[2]").value
     assert fold.value == pytest.approx(alone, rel=1e-12)
     assert 0 < fold.value - scan.critical.value < 1e-8
+
+
+def test_rows_turned_after_a_search_are_read_and_searched():
+    """W1t: the first read (around the scanned (11, 1)) turns the row n = 2, whose search
+    gives (14, 2); read again, the row n = 3 gives (15, 3); read at the last runner-up's,
+    the rows n = 4 and 5 give (15, 4), (14, 5), (16, 4). Before, the scan put (11, 1)
+    first, 1.2e-3 late, and missed all five."""
+    scan = scan_modes(W1T, "growth[1].theta")
+    assert scan.critical.status == "ok"
+    got = {(v.m, v.n): v.value for v in (scan.critical, *scan.runners_up)}
+    assert set(got) == set(W1T_FIRST)
+    assert _modes(scan)[:3] == [(15, 3), (15, 4), (14, 2)]  # gaps 2.7e-10, 1.9e-4
+    for mode, value in W1T_FIRST.items():
+        assert got[mode] == pytest.approx(value, rel=1e-11)
 
 
 def test_the_rows_read_reach_the_first_modes_neighbours():
