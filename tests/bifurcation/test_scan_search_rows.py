@@ -46,6 +46,10 @@ def test_a_family_row_is_searched_only_along_its_own_axis(
     monkeypatch.setattr(scan, f"search_{axis}", search)
     crit = dataclasses.replace(onset, m=mode[0], n=mode[1], family=family)
     result = ScanResult(crit, (), (0, 12), (1, 30))
-    out, at_top = scan._searched(TUBE, "growth", None, result, ScanOptions(), 1e-12, cap, axis)
+    rows = scan._search_rows(result, ScanOptions(), axis, ())
+    edge = 12 if axis == "m" else 30
+    out, at_top = scan._searched(
+        TUBE, "growth", None, result, ScanOptions(), 1e-12, cap, axis, rows, edge
+    )
     assert searched and all(code != family.code for _, code in searched)
     assert out.critical is crit and not at_top  # nothing beyond: the scan stands

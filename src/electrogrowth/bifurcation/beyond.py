@@ -9,21 +9,30 @@ under an external pressure), nothing in the ranges points beyond them. So the sc
 here, at the value it is about to report: along each axis, geometric samples (msearch's,
 ratio 1.25) from the edge of the range to the cap, on the rows where a film's folds lie
 
-* along m: the prismatic modes (m, 0) and the wrinkles (m, n_lo) of the smallest n, every
+* along m: the wrinkles (m, n_lo) of the smallest n and the prismatic modes (m, 0), every
   m up to EVERY_M = 64 (a skin's folds (35, 0) 2.6e-4 before its rings, unstable between
-  the samples m = 29 and 37 only, were missed: probe round 6b);
-* along n: the rings (m_lo, n) of the smallest m (axisymmetric at m = 0) and (m_lo + 1, n);
+  the samples m = 29 and 37 only, were missed: probe round 6b), and the wrinkles of every
+  n up to the largest n of the scan's first modes (its critical mode and runners-up) + 1:
+  a film's first modes lie about a circle (m / R)^2 + (n pi / L)^2 ~ k^2 of its own
+  wavenumber, so a row of smaller n has its least m beyond theirs (a film in a thin wall:
+  (15, 4) 3.8e-4 before the scanned (11, 5), on neither row above, check round 35d Q3);
+* along n: the rings (m_lo, n) of the smallest m (axisymmetric at m = 0) and (m_lo + 1, n),
+  and likewise the rows of every m up to their largest m + 1;
 
-their targets at that one state against their signs on the unloaded tube, where every
-mode is stable (docs/derivation.md section 3). A sample past its root starts the search
-of that axis (msearch.py). One base state and a batch of ~60 loose modes (~30 ms); it
-reads a band of unstable folds, which near a film's optimum spans many samples, not a
-single mode unstable alone between two samples.
+where those are many, the rows next to each of those modes and geometric samples between; their
+targets at that one state against their signs on the unloaded tube, where every mode is
+stable (docs/derivation.md section 3). A row with a sample past its root is searched
+(msearch.py), with the rows the search follows anyway. A fold's dip is narrow when its
+mode comes just before the value read (the fold (89, 0) 1.8e-9 before a runner-up of its
+ring (0, 1), unstable at m = 88, 89 only, between the samples 81 and 101: check round
+35d Q7), so the two fold rows are also read densely (relative spacing DENSE = 1 %, every
+index where that is below one) inside each stiff layer's fold window: its flat film's
+fold number k h ~ (3 mu_s / mu_f)^(1/3) (k = m / R, or n pi / L) times 1 / WINDOW to
+WINDOW. One base state and a batch of ~100-1000 loose modes (~0.2 ms each); a band of
+unstable modes narrower than those spacings is still not seen (docs/reliability.md).
 """
 
 from __future__ import annotations
-
-import functools
 
 import numpy as np
 
@@ -36,56 +45,192 @@ from .march import SIGN_TUBE, unloaded_signs
 from .msearch import geometric_samples
 from .options import EVERY_M, M_CAP, N_CAP, mode_caps
 
+#: rows read besides the fold rows and those next to the scan's first modes, at most
+ROWS_MAX = 8
+#: a layer's fold window: its flat film's fold number times 1 / WINDOW to WINDOW
+WINDOW = 2.5
+#: the relative spacing of the samples inside a fold window (every index where it is < 1)
+DENSE = 1.01
+
+
+def read_rows(modes, m_range, n_range, prismatic: bool, axis: str) -> list[tuple[int, int]]:
+    """The family rows read beyond the ranges along ``axis`` ((n, code) along m, (m, code)
+    along n), the fold rows first (module docstring): along m the wrinkles of the smallest
+    n and the prismatic row, then the wrinkles of every n up to the largest n of the
+    wrinkles among ``modes`` (the scan's critical mode and runners-up) + 1; along n the rows
+    of the smallest m and the next, then every m up to their largest m + 1. Where those
+    are more than ROWS_MAX: the rows next to each of ``modes`` and ROWS_MAX - 3 geometric
+    samples between."""
+    wrinkle = Family.WRINKLE.code
+    own = [(v.n if axis == "m" else v.m) for v in modes if v.family == Family.WRINKLE]
+    if axis == "m":
+        low = max(n_range[0], 1)
+        rows = [(low, wrinkle)] + ([(0, Family.PRISMATIC.code)] if prismatic else [])
+        first = low + 1
+    else:
+        low = m_range[0]
+        rows = [(low, wrinkle), (low + 1, wrinkle)]
+        first = low + 2
+    return rows + [(k, wrinkle) for k in _between(first, own)]
+
+
+def searched_rows(critical, m_range, n_range, prismatic: bool, axis: str) -> set:
+    """The family rows a search beyond the ranges follows whatever the read turned
+    (scan._searched; certify reads them too): along m the wrinkles of the smallest n, the
+    prismatic row and the critical mode's own row, along n the rows of the smallest m
+    (axisymmetric rings at m = 0) and the critical mode's own. ``critical`` is the scan's
+    critical point, or None where it is no finite mode."""
+    code = None if critical is None else Family(critical.family).code
+    if axis == "m":
+        rows = {(max(n_range[0], 1), Family.WRINKLE.code)}
+        if prismatic:
+            rows.add((0, Family.PRISMATIC.code))
+        if critical is not None and critical.family != Family.TORSIONAL:  # torsion: m = 0
+            rows.add((critical.n, code))
+        return rows
+    rows = {(m_range[0], Family.WRINKLE.code)}
+    if critical is not None and critical.family != Family.PRISMATIC:  # prismatic: n = 0
+        rows.add((critical.m, code))
+    return rows
+
+
+def _between(lo: int, own: list[int]) -> list[int]:
+    """lo up to max(own) + 1, or where that is more than ROWS_MAX, the indices next to each
+    of ``own`` (their optima lie nearest the modes found) and geometric samples between."""
+    if not own or max(own) + 1 < lo:
+        return []
+    hi = max(own) + 1
+    if hi - lo + 1 <= ROWS_MAX:
+        return list(range(lo, hi + 1))
+    inner = np.geomspace(lo, hi, ROWS_MAX - 3).round().astype(int).tolist()
+    near = [k + d for k in own for d in (-1, 0, 1) if k + d >= lo]
+    return sorted({*inner, *near, hi})
+
+
+def fold_windows(tube, axis: str) -> list[tuple[int, int]]:
+    """The index windows (m along m, n along n) about the flat-film folds of each layer
+    stiffer than a neighbour (module docstring): k h ~ (3 mu_s / mu_f)^(1/3), k = m / R
+    across the tube and n pi / L along it, for a layer of thickness h at mid-radius R,
+    within a factor WINDOW either way (the exact flat film, curvature and growth move it
+    by less: docs/derivation-film.md). None for a uniform tube."""
+    if tube.is_uniform:
+        return []
+    radii, layers = tube.radii, tube.layers
+    out = []
+    for i, layer in enumerate(layers):
+        h, mid = radii[i + 1] - radii[i], 0.5 * (radii[i + 1] + radii[i])
+        for j in (i - 1, i + 1):
+            if not 0 <= j < len(layers) or layers[j].shear_modulus >= layer.shear_modulus:
+                continue
+            k = (3.0 * layers[j].shear_modulus / layer.shear_modulus) ** (1.0 / 3.0) / h
+            at = k * mid if axis == "m" else k * tube.length / np.pi
+            out.append((max(1, int(at / WINDOW)), int(np.ceil(at * WINDOW))))
+    return out
+
+
+def window_samples(windows, edge: int, cap: int) -> list[int]:
+    """The indices of ``windows`` in (edge, cap], at relative spacing DENSE (every one
+    where that spacing is below one)."""
+    out: set[int] = set()
+    for lo, hi in windows:
+        lo, hi = max(lo, edge + 1), min(hi, cap)
+        if lo > hi:
+            continue
+        k = lo
+        out.add(k)
+        while k < hi:
+            k = min(hi, max(k + 1, int(k * DENSE)))
+            out.add(k)
+    return sorted(out)
+
 
 def beyond_rows(
-    m_range, n_range, prismatic: bool, axis: str, caps: tuple[int, int] = (M_CAP, N_CAP)
+    m_range,
+    n_range,
+    prismatic: bool,
+    axis: str,
+    caps: tuple[int, int] = (M_CAP, N_CAP),
+    rows=None,
+    windows=(),
 ) -> np.ndarray:
-    """Rows (m, n, family code) sampled beyond the ranges along ``axis`` up to its cap
-    (``caps``: the tube's, options.mode_caps; module docstring); empty when that range
-    already reaches its cap."""
-    (m_lo, m_hi), (n_lo, n_hi) = m_range, n_range
-    m_cap, n_cap = caps
-    _wrinkle, _prismatic = Family.WRINKLE.code, Family.PRISMATIC.code
-    if axis == "m":
-        if m_hi >= m_cap:
-            return np.zeros((0, 3))
-        rows = [(max(n_lo, 1), _wrinkle)] + ([(0, _prismatic)] if prismatic else [])
-        # every m up to EVERY_M (the scan's own rule: small m are irregular), then samples
-        every = list(range(m_hi + 1, min(EVERY_M, m_cap) + 1))
-        ms = every + geometric_samples(max(m_hi + 1, EVERY_M + 1), m_cap)
-        return np.array([(m, n, code) for m in ms for n, code in rows], float)
-    if n_hi >= n_cap:
+    """Modes (m, n, family code) read beyond the ranges along ``axis`` up to its cap
+    (``caps``: the tube's, options.mode_caps): on each of ``rows`` (default :func:`read_rows`
+    of no modes: the fold rows) every index to EVERY_M along m, then geometric samples; on the
+    two fold rows (the first two of ``rows``) also the indices of the fold ``windows``
+    (:func:`window_samples`). Empty when that range already reaches its cap."""
+    rows = read_rows((), m_range, n_range, prismatic, axis) if rows is None else rows
+    edge, cap = (m_range[1], caps[0]) if axis == "m" else (n_range[1], caps[1])
+    if edge >= cap:
         return np.zeros((0, 3))
-    ns = geometric_samples(max(n_hi + 1, 1), n_cap)
-    return np.array([(m, n, _wrinkle) for n in ns for m in (m_lo, m_lo + 1)], float)
+    if axis == "m":  # every m up to EVERY_M (the scan's own rule: small m are irregular)
+        every = list(range(edge + 1, min(EVERY_M, cap) + 1))
+        ks = every + geometric_samples(max(edge + 1, EVERY_M + 1), cap)
+    else:
+        ks = geometric_samples(edge + 1, cap)
+    dense = sorted(set(window_samples(windows, edge, cap)) - set(ks))
+    modes = [(k, *row) for k in ks for row in rows]
+    modes += [(k, *row) for k in dense for row in rows[:2]]  # the fold rows
+    if axis == "n":
+        modes = [(m, k, code) for k, m, code in modes]
+    else:
+        modes = [(k, n, code) for k, n, code in modes]
+    return np.array(modes, float).reshape(-1, 3)
 
 
-@functools.lru_cache(maxsize=64)
-def _stable(rows: bytes, count: int) -> np.ndarray:
-    """The signs of the rows (their float64 bytes, ``count`` of them) on the unloaded tube,
-    remembered: they are the same for every tube (scan_grid.stable_signs)."""
-    modes = np.frombuffer(rows, dtype=float).reshape(count, 3)
-    return unloaded_signs(SIGN_TUBE, modes, ImpedanceTarget(SCAN_STABLE_SIGNS))
+#: the signs of modes on the unloaded tube, remembered mode by mode (at most SIGNS_KEPT):
+#: they are the same for every tube (scan_grid.stable_signs), and the rows read change
+#: with the critical mode from one scan of a sequence to the next
+_SIGNS: dict[tuple[float, float, float], float] = {}
+SIGNS_KEPT = 200_000
+
+
+def _stable(modes: np.ndarray) -> np.ndarray:
+    """The signs of ``modes`` on the unloaded tube, those not yet known computed together."""
+    keys = [tuple(row) for row in modes.tolist()]
+    todo = [key for key in dict.fromkeys(keys) if key not in _SIGNS]
+    if todo:
+        if len(_SIGNS) + len(todo) > SIGNS_KEPT:
+            _SIGNS.clear()
+        target = ImpedanceTarget(SCAN_STABLE_SIGNS)
+        signs = unloaded_signs(SIGN_TUBE, np.array(todo, float), target)
+        _SIGNS.update(zip(todo, signs.tolist(), strict=True))
+    return np.array([_SIGNS[key] for key in keys], float)
 
 
 def unstable_beyond(
-    params, solve_for: str, value: float, m_range, n_range, prismatic: bool, axes=("m", "n")
-) -> dict[str, bool]:
-    """For each axis of ``axes``: is a sampled mode beyond the ranges past its root at
-    ``value`` (its target's sign there against the unloaded tube's)? False where the state
-    at ``value`` does not resolve (no evidence either way: the result stands)."""
+    params,
+    solve_for: str,
+    value: float,
+    m_range,
+    n_range,
+    prismatic: bool,
+    axes=("m", "n"),
+    modes=(),
+) -> dict[str, list[tuple[int, int]]]:
+    """For each axis of ``axes``: the family rows (:func:`read_rows` of ``modes``, the
+    scan's critical mode and runners-up, if any) with a mode beyond the ranges past its
+    root at ``value``
+    (its target's sign there against the unloaded tube's), empty where none is, or where
+    the state at ``value`` does not resolve (no evidence either way: the result stands)."""
     caps = mode_caps(params)
-    rows = {axis: beyond_rows(m_range, n_range, prismatic, axis, caps) for axis in axes}
-    modes = np.vstack([rows[axis] for axis in axes])
-    out = dict.fromkeys(axes, False)
-    turned = _turned(params, solve_for, value, modes)
+    rows = {axis: read_rows(modes, m_range, n_range, prismatic, axis) for axis in axes}
+    read = {
+        axis: beyond_rows(
+            m_range, n_range, prismatic, axis, caps, rows[axis], fold_windows(params, axis)
+        )
+        for axis in axes
+    }
+    out: dict[str, list[tuple[int, int]]] = {axis: [] for axis in axes}
+    turned = _turned(params, solve_for, value, np.vstack([read[axis] for axis in axes]))
     if turned is None:
         return out
     start = 0
     for axis in axes:
-        stop = start + rows[axis].shape[0]
-        out[axis] = bool(turned[start:stop].any())
-        start = stop
+        count = read[axis].shape[0]
+        past = read[axis][turned[start : start + count]]
+        start += count
+        fixed = 1 if axis == "m" else 0  # the row's own index: n along m, m along n
+        out[axis] = sorted({(int(mode[fixed]), int(mode[2])) for mode in past})
     return out
 
 
@@ -100,7 +245,7 @@ def _turned(params, solve_for: str, value: float, modes: np.ndarray) -> np.ndarr
         now = ImpedanceTarget(SCAN_STABLE_SIGNS)(state, modes)
     except ElectrogrowthError:
         return None
-    stable = _stable(np.ascontiguousarray(modes).tobytes(), modes.shape[0])
+    stable = _stable(modes)
     return np.isfinite(now) & (np.sign(now) != stable)
 
 

@@ -31,7 +31,7 @@ import numpy as np
 from ..basestate.tube import solve_base_state
 from ..errors import CollocationTooLarge, ConvergenceError, ParameterError, Remedy
 from ..incremental.accuracy import CERTIFY_RTOL
-from ..incremental.modes import ALL_PAIRS, U_Z, Family, mode_pairs
+from ..incremental.modes import ALL_PAIRS, U_Z, mode_pairs
 from ..incremental.targets import (
     collocation_targets,
     impedance_targets,
@@ -40,6 +40,7 @@ from ..incremental.targets import (
     row_family,
 )
 from ..outcomes import Kind, Status
+from .beyond import read_rows, searched_rows
 from .critical import NoSignChange, critical_value
 from .error_estimate import achieved_floor
 from .march import control_path
@@ -276,29 +277,32 @@ def _certify_choice(params, crit, scan, families, progress, disagreement: float)
 def choice_modes(scan, crit, families) -> np.ndarray:
     """The modes whose signs certify a scan's choice: every mode of its ranges up to M_CAP,
     N_CAP (scan_grid.every_mode_ranges) and, where the ranges reach beyond (a thin layer's
-    caps, options.mode_caps), the rows its searches follow (msearch.py: the prismatic (m,
-    0), the wrinkles of the smallest n and the critical mode's row along m; (m_lo, n),
-    (m_lo + 1, n) and the critical mode's row along n) at their geometric samples and every
-    index within EVERY_M of the critical mode's. Every mode to 64064 of 30 rows would be
+    caps, options.mode_caps), the rows its searches follow and its read beyond the ranges
+    reads (beyond.searched_rows, read_rows) at their geometric samples and every index
+    within EVERY_M of the critical mode's. Every mode to 64064 of 30 rows would be
     1.9 million reads (an hour); these are a few hundred."""
     ranges = every_mode_ranges(scan.m_range, scan.n_range)
     grid = [scan_grid(*ranges, False, families)]
-    (m_lo, m_hi), (n_lo, n_hi) = scan.m_range, scan.n_range
-    finite = crit.kind == Kind.BIFURCATION
-    wrinkle = Family.WRINKLE.code
-    if m_hi > ranges[0][1]:
-        rows = {(max(n_lo, 1), wrinkle)} | ({(0, Family.PRISMATIC.code)} if families[0] else set())
-        if finite and crit.family != Family.TORSIONAL:
-            rows.add((crit.n, Family(crit.family).code))
-        ms = _past_every_mode(ranges[0][1], m_hi, crit.m if finite else None)
-        grid.append(np.array([(m, n, c) for m in ms for n, c in sorted(rows)], float))
-    if n_hi > ranges[1][1]:
-        rows = {(m_lo, wrinkle), (m_lo + 1, wrinkle)}
-        if finite and crit.family != Family.PRISMATIC:
-            rows.add((crit.m, Family(crit.family).code))
-        ns = _past_every_mode(ranges[1][1], n_hi, crit.n if finite else None)
-        grid.append(np.array([(m, n, c) for n in ns for m, c in sorted(rows)], float))
+    finite = crit if crit.kind == Kind.BIFURCATION else None
+    for axis, (_, edge) in zip("mn", ranges, strict=True):
+        grid.append(_rows_past(scan, finite, families[0], axis, edge))
     return np.unique(np.vstack([g.reshape(-1, 3) for g in grid]), axis=0)
+
+
+def _rows_past(scan, finite, prismatic: bool, axis: str, edge: int) -> np.ndarray:
+    """The modes past ``edge`` along ``axis`` up to the scan's range on the rows its search
+    follows and its read (beyond.searched_rows, read_rows) reads, at the indices of
+    :func:`_past_every_mode` (``finite``: the critical mode, or None)."""
+    top = scan.m_range[1] if axis == "m" else scan.n_range[1]
+    if top <= edge:
+        return np.zeros((0, 3))
+    rows = searched_rows(finite, scan.m_range, scan.n_range, prismatic, axis)
+    first = ((finite,) if finite is not None else ()) + tuple(scan.runners_up)
+    rows |= set(read_rows(first, scan.m_range, scan.n_range, prismatic, axis))
+    ks = _past_every_mode(edge, top, None if finite is None else getattr(finite, axis))
+    if axis == "m":
+        return np.array([(k, n, code) for k in ks for n, code in sorted(rows)], float)
+    return np.array([(m, k, code) for k in ks for m, code in sorted(rows)], float)
 
 
 def _past_every_mode(edge: int, top: int, at: int | None) -> list[int]:

@@ -46,10 +46,10 @@ from ..errors import (
     UnstableAtStart,
 )
 from ..incremental.modes import MODE_MAX, row_family
-from ..incremental.targets import Family, impedance_targets
+from ..incremental.targets import impedance_targets
 from ..model.layers import Tube
 from ..outcomes import NO_MODE, Kind, Status
-from .beyond import unstable_beyond, unstable_past_cap
+from .beyond import searched_rows, unstable_beyond, unstable_past_cap
 from .certify import kernel_signs
 from .critical import CriticalPoint, critical_value, no_bifurcation_remedy
 from .directions import past_surface, surface_past
@@ -233,7 +233,9 @@ def _widened_scan(params, solve_for, side, options: ScanOptions, rtol):
         return result, True
 
     def search(result, m_top=cap_m, axis="m"):
-        return _searched(params, solve_for, side, result, options, rtol, m_top, axis)
+        rows = _search_rows(result, options, axis, ())
+        edge = result.m_range[1] if axis == "m" else result.n_range[1]
+        return _searched(params, solve_for, side, result, options, rtol, m_top, axis, rows, edge)
 
     def search_beyond(result, beyond):
         """Searched along n, then m, from the edges the doublings left the optimum on."""
@@ -302,24 +304,72 @@ def _beyond_searched(params, solve_for, side, result, options, rtol, at_cap, lim
     the search ended at its cap. Where the search for runners-up runs into states that do
     not resolve (next to a lock), the list stands as scanned; for the critical mode that is
     an error (:func:`_beyond_value` says when the check applies)."""
+    scanned = {"m": result.m_range, "n": result.n_range}  # marched mode by mode
+    searched: dict[str, set] = {"m": set(), "n": set()}
     for runner in (False, True):
-        value = _beyond_value(params, side, result, options, limit, runner)
-        if value is None:
-            break
-        turned = unstable_beyond(
-            params, solve_for, value, result.m_range, result.n_range, options.prismatic
-        )
-        for axis, cap in zip(("n", "m"), reversed(scan_caps(params, options)), strict=True):
-            if not turned[axis]:
-                continue
-            try:
-                result, top = _searched(params, solve_for, side, result, options, rtol, cap, axis)
-            except ConvergenceError:
-                if not runner:
-                    raise
-                continue
+        for _ in range(READS):
+            value = _beyond_value(params, side, result, options, limit, runner)
+            if value is None:
+                break
+            read = (value, runner)
+            found = _rows_searched(
+                params, solve_for, side, result, options, rtol, read, scanned, searched
+            )
+            if found is None:
+                break
+            result, top = found
             at_cap = at_cap or top
     return result, at_cap
+
+
+#: reads beyond the ranges at most, at each value (critical, last runner-up): each search
+#: changes the scan's first modes, and with them the rows read next (module docstring)
+READS = 4
+
+
+def _rows_searched(params, solve_for, side, result, options, rtol, read, scanned, searched):
+    """``result`` searched along the rows beyond the ``scanned`` ranges that are past their
+    roots at the value of ``read`` (value, whether it is the last runner-up's) and not yet
+    ``searched`` (updated), and whether the search ended at
+    its cap; None where no such row turned. The rows are read beyond the ranges scanned,
+    not those a search widened: a search follows some rows to the cap, and the runners-up
+    may lie on others (check round 36a: (16, 3), tied with (11, 5), after the search for
+    (15, 4) on the row n = 4). They are those of the scan's first modes (beyond.read_rows):
+    after a search its critical mode (15, 3) has another n than the (11, 1) scanned, and
+    (15, 4), (14, 5) lie on rows read only then (round 36a's W1t). Where the search for
+    runners-up runs into states that do not resolve, the list stands; for the critical
+    mode that is an error."""
+    value, runner = read
+    first = (result.critical, *result.runners_up)  # a finite critical mode (_beyond_value)
+    turned = unstable_beyond(
+        params, solve_for, value, scanned["m"], scanned["n"], options.prismatic, modes=first
+    )
+    at_cap, any_searched = False, False
+    for axis, cap in zip(("n", "m"), reversed(scan_caps(params, options)), strict=True):
+        if not set(turned[axis]) - searched[axis]:
+            continue
+        rows = _search_rows(result, options, axis, turned[axis]) - searched[axis]
+        try:
+            result, top = _searched(
+                params, solve_for, side, result, options, rtol, cap, axis, rows, scanned[axis][1]
+            )
+        except ConvergenceError:
+            if not runner:
+                raise
+            continue
+        finally:
+            searched[axis] |= rows
+        at_cap, any_searched = at_cap or top, True
+    return (result, at_cap) if any_searched else None
+
+
+def _search_rows(result: ScanResult, options: ScanOptions, axis: str, turned) -> set:
+    """The rows searched along ``axis``: those ``turned`` (read past their roots beyond
+    the ranges, beyond.py) and those every search follows (beyond.searched_rows)."""
+    c = result.critical
+    finite = c if c.kind == Kind.BIFURCATION else None
+    rows = searched_rows(finite, options.m_range, options.n_range, options.prismatic, axis)
+    return rows | set(turned)  # a wrinkle (15, 4) of a film in a thin wall: neither row
 
 
 def _beyond_value(params, side, result, options, limit, runner: bool) -> float | None:
@@ -345,26 +395,23 @@ def _beyond_value(params, side, result, options, limit, runner: bool) -> float |
 
 
 def _searched(
-    params, solve_for, side, result: ScanResult, options: ScanOptions, rtol, top: int, axis="m"
+    params,
+    solve_for,
+    side,
+    result: ScanResult,
+    options: ScanOptions,
+    rtol,
+    top: int,
+    axis: str,
+    rows: set,
+    edge: int,
 ):
     """``result`` merged with the coarse-to-fine search (msearch.py) of m (or n, ``axis``)
-    from the scanned edge up to ``top`` along the critical mode's family row and, for m, the
-    prismatic row and the wrinkles of the smallest n, for n, the modes of the smallest m
-    (axisymmetric rings at m = 0): the earlier of the two is the critical mode, the others
-    the runners-up; and whether the critical index is ``top`` (the edge of the search)."""
+    from ``edge`` up to ``top`` along the family ``rows`` (:func:`_search_rows`): the
+    earlier of the two is the critical mode, the others the runners-up; and whether the
+    critical index is ``top`` (the edge of the search)."""
     c, sense = result.critical, -1.0 if side == "compression" else 1.0
-    if axis == "m":
-        rows = {(max(options.n_range[0], 1), Family.WRINKLE.code)}
-        if options.prismatic:
-            rows.add((0, Family.PRISMATIC.code))
-        if c.kind == Kind.BIFURCATION and c.family != Family.TORSIONAL:  # torsion: m = 0
-            rows.add((c.n, Family(c.family).code))
-        searcher, edge = search_m, result.m_range[1]
-    else:
-        rows = {(options.m_range[0], Family.WRINKLE.code)}
-        if c.kind == Kind.BIFURCATION and c.family != Family.PRISMATIC:  # prismatic: n = 0
-            rows.add((c.m, Family(c.family).code))
-        searcher, edge = search_n, result.n_range[1]
+    searcher = search_m if axis == "m" else search_n
     ranges = {"m": result.m_range, "n": result.n_range}
     ranges[axis] = (ranges[axis][0], top)
     # along n, the runners-up include the neighbouring m rows of the scanned m range
@@ -605,6 +652,8 @@ def _folds_before_limit(params, solve_for, side, result: ScanResult, options, rt
     only (probe 13b, D1-D3). Not without ``options.extend``: the ranges are then as asked."""
     if not options.extend:
         return result, False
+    # the fold rows only (beyond.read_rows without a critical mode): at the limit every
+    # short wave of every row is past its root, and each row read would be searched
     turned = unstable_beyond(
         params, solve_for, limit.value, result.m_range, result.n_range, options.prismatic
     )
@@ -612,7 +661,11 @@ def _folds_before_limit(params, solve_for, side, result: ScanResult, options, rt
         return result, False
     for axis, cap in zip(("n", "m"), reversed(scan_caps(params, options)), strict=True):
         if turned[axis]:  # a mode at the cap is then the result: _capped says so
-            result, _ = _searched(params, solve_for, side, result, options, rtol, cap, axis)
+            rows = _search_rows(result, options, axis, turned[axis])
+            edge = result.m_range[1] if axis == "m" else result.n_range[1]
+            result, _ = _searched(
+                params, solve_for, side, result, options, rtol, cap, axis, rows, edge
+            )
     # the search's result is a scan's: the limit computed is kept (a finite mode leads)
     limit_kept = {"short_wave_limit": limit.value, "short_wave_error": limit.error_estimate}
     return dataclasses.replace(result, surface_instability=False, **limit_kept), True
