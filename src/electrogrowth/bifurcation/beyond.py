@@ -19,8 +19,8 @@ ratio 1.25) from the edge of the range to the cap, on the rows where a film's fo
 * along n: the rings (m_lo, n) of the smallest m (axisymmetric at m = 0) and (m_lo + 1, n),
   and likewise the rows of every m up to their largest m + 1;
 
-where those are many, the rows next to each of those modes and geometric samples between; their
-targets at that one state against their signs on the unloaded tube, where every mode is
+where those are many, the rows next to each of those modes and geometric samples between;
+their targets at that one state against their signs on the unloaded tube, where every mode is
 stable (docs/derivation.md section 3). A row with a sample past its root is searched
 (msearch.py), with the rows the search follows anyway. A fold's dip is narrow when its
 mode comes just before the value read (the fold (89, 0) 1.8e-9 before a runner-up of its
@@ -112,7 +112,7 @@ def fold_windows(tube, axis: str) -> list[tuple[int, int]]:
     stiffer than a neighbour (module docstring): k h ~ (3 mu_s / mu_f)^(1/3), k = m / R
     across the tube and n pi / L along it, for a layer of thickness h at mid-radius R,
     within a factor WINDOW either way (the exact flat film, curvature and growth move it
-    by less: docs/derivation-film.md). None for a uniform tube."""
+    by less: docs/derivation-film.md). None for a uniform tube: it has no layer."""
     if tube.is_uniform:
         return []
     radii, layers = tube.radii, tube.layers
@@ -156,7 +156,7 @@ def beyond_rows(
     """Modes (m, n, family code) read beyond the ranges along ``axis`` up to its cap
     (``caps``: the tube's, options.mode_caps): on each of ``rows`` (default :func:`read_rows`
     of no modes: the fold rows) every index to EVERY_M along m, then geometric samples; on the
-    two fold rows (the first two of ``rows``) also the indices of the fold ``windows``
+    fold rows (the first of ``rows``: read_rows) also the indices of the fold ``windows``
     (:func:`window_samples`). Empty when that range already reaches its cap."""
     rows = read_rows((), m_range, n_range, prismatic, axis) if rows is None else rows
     edge, cap = (m_range[1], caps[0]) if axis == "m" else (n_range[1], caps[1])
@@ -169,7 +169,8 @@ def beyond_rows(
         ks = geometric_samples(edge + 1, cap)
     dense = sorted(set(window_samples(windows, edge, cap)) - set(ks))
     modes = [(k, *row) for k in ks for row in rows]
-    modes += [(k, *row) for k in dense for row in rows[:2]]  # the fold rows
+    folds = rows[:2] if axis == "n" or prismatic else rows[:1]
+    modes += [(k, *row) for k in dense for row in folds]
     if axis == "n":
         modes = [(m, k, code) for k, m, code in modes]
     else:
@@ -209,9 +210,9 @@ def unstable_beyond(
 ) -> dict[str, list[tuple[int, int]]]:
     """For each axis of ``axes``: the family rows (:func:`read_rows` of ``modes``, the
     scan's critical mode and runners-up, if any) with a mode beyond the ranges past its
-    root at ``value``
-    (its target's sign there against the unloaded tube's), empty where none is, or where
-    the state at ``value`` does not resolve (no evidence either way: the result stands)."""
+    root at ``value`` (its target's sign there against the unloaded tube's), empty where
+    none is, or where the state at ``value`` does not resolve (no evidence either way: the
+    result stands)."""
     caps = mode_caps(params)
     rows = {axis: read_rows(modes, m_range, n_range, prismatic, axis) for axis in axes}
     read = {

@@ -330,8 +330,8 @@ READS = 4
 def _rows_searched(params, solve_for, side, result, options, rtol, read, scanned, searched):
     """``result`` searched along the rows beyond the ``scanned`` ranges that are past their
     roots at the value of ``read`` (value, whether it is the last runner-up's) and not yet
-    ``searched`` (updated), and whether the search ended at
-    its cap; None where no such row turned. The rows are read beyond the ranges scanned,
+    ``searched`` (updated), and whether the search ended at its cap; None where no such
+    row turned. The rows are read beyond the ranges scanned,
     not those a search widened: a search follows some rows to the cap, and the runners-up
     may lie on others (check round 36a: (16, 3), tied with (11, 5), after the search for
     (15, 4) on the row n = 4). They are those of the scan's first modes (beyond.read_rows):
@@ -408,8 +408,9 @@ def _searched(
 ):
     """``result`` merged with the coarse-to-fine search (msearch.py) of m (or n, ``axis``)
     from ``edge`` up to ``top`` along the family ``rows`` (:func:`_search_rows`): the
-    earlier of the two is the critical mode, the others the runners-up; and whether the
-    critical index is ``top`` (the edge of the search)."""
+    earlier of the search's best and the scan's critical mode is the critical mode, the
+    others the runners-up; and whether the critical index is ``top`` (the edge of the
+    search)."""
     c, sense = result.critical, -1.0 if side == "compression" else 1.0
     searcher = search_m if axis == "m" else search_n
     ranges = {"m": result.m_range, "n": result.n_range}
@@ -652,7 +653,7 @@ def _folds_before_limit(params, solve_for, side, result: ScanResult, options, rt
     only (probe 13b, D1-D3). Not without ``options.extend``: the ranges are then as asked."""
     if not options.extend:
         return result, False
-    # the fold rows only (beyond.read_rows without a critical mode): at the limit every
+    # the fold rows only (beyond.read_rows of no modes): at the limit every
     # short wave of every row is past its root, and each row read would be searched
     turned = unstable_beyond(
         params, solve_for, limit.value, result.m_range, result.n_range, options.prismatic
