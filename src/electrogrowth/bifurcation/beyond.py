@@ -112,7 +112,8 @@ def fold_windows(tube, axis: str) -> list[tuple[int, int]]:
     stiffer than a neighbour (module docstring): k h ~ (3 mu_s / mu_f)^(1/3), k = m / R
     across the tube and n pi / L along it, for a layer of thickness h at mid-radius R,
     within a factor WINDOW either way (the exact flat film, curvature and growth move it
-    by less: docs/derivation-film.md). None for a uniform tube: it has no layer."""
+    by less: docs/derivation-film.md). None for a uniform tube, nor where no layer is
+    stiffer than a neighbour."""
     if tube.is_uniform:
         return []
     radii, layers = tube.radii, tube.layers
